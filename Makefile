@@ -1,0 +1,47 @@
+# parse3d — set-up and checks. `make demo` and `make test` work on a fresh machine.
+PY ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+SYSTEM_PACKAGES := libegl1 libegl-mesa0 libgl1-mesa-dri libvulkan1
+
+.PHONY: demo test lint system venv install-main install-all bench gallery clean
+
+demo: install-main
+	$(BIN)/parse3d demo --out out/demo
+
+test: install-all
+	$(BIN)/ruff check src tests benchmarks
+	$(BIN)/python -m pytest -n 2 -q
+
+lint: install-all
+	$(BIN)/ruff check src tests benchmarks
+
+# System libraries for headless rendering (Mesa EGL) and for SAPIEN (Vulkan loader).
+system:
+	@missing=""; for p in $(SYSTEM_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	if [ -n "$$missing" ]; then \
+	  echo "installing system packages:$$missing"; \
+	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
+	  $$SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y -qq $$missing; \
+	fi
+
+$(BIN)/python:
+	$(PY) -m venv $(VENV)
+	$(BIN)/pip install -q --upgrade pip
+
+venv: $(BIN)/python
+
+install-main: system venv
+	$(BIN)/pip install -q -e ".[physics,render]"
+
+install-all: system venv
+	$(BIN)/pip install -q -e ".[all]"
+
+bench: install-all
+	$(BIN)/python benchmarks/run_all.py
+
+gallery: install-main
+	$(BIN)/parse3d assets gallery --out docs/gallery.png
+
+clean:
+	rm -rf $(VENV) out .pytest_cache .ruff_cache

@@ -1,0 +1,40 @@
+"""parse3d: Part-centric Assembly Graphs to collision-free, physically settled 3D scenes.
+
+The main entry points::
+
+    import parse3d
+    pag = parse3d.load_pag("examples/study.json")
+    scene = parse3d.solve(pag, seed=0)
+
+See the README for the command line.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any
+
+from .errors import InfeasibleError, InputError, Parse3dError
+
+__version__ = "0.1.0"
+
+__all__ = ["__version__", "InputError", "InfeasibleError", "Parse3dError", "PAG", "load_pag", "solve"]
+
+if TYPE_CHECKING:  # pragma: no cover
+    from .pag.model import PAG
+
+
+def __getattr__(name: str) -> Any:
+    # Lazy: importing parse3d stays cheap; heavy parts load when first used.
+    if name == "PAG":
+        from .pag.model import PAG
+
+        return PAG
+    if name == "load_pag":
+        from .pag.io import load_pag
+
+        return load_pag
+    if name == "solve":
+        from .solver import solve
+
+        return solve
+    raise AttributeError(f"module 'parse3d' has no attribute {name!r}")

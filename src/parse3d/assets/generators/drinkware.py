@@ -1,0 +1,76 @@
+"""Mugs, cups and tea cups: revolved walls with a swept handle.
+
+Mugs come round (revolved, optionally bellied) or square (bevelled box walls).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+
+
+def _handle(rng, r_out: float, h: float, thick: float) -> S.Shape:
+    span = h * rng.uniform(0.45, 0.65)
+    z0 = h * 0.5 - span / 2
+    reach = rng.uniform(0.022, 0.032)
+    t = np.linspace(0, np.pi, 9)
+    path = np.c_[r_out - 0.002 + reach * np.sin(t), np.zeros_like(t), z0 + span * (1 - np.cos(t)) / 2][::-1]
+    # the handle sticks out to the asset's right (+X)
+    return S.tube(path, thick, sections=10)
+
+
+def _square_mug(rng, w: float, h: float, t: float) -> S.Shape:
+    walls = [
+        S.box((w, t, h), center=(0, w / 2 - t / 2, h / 2)),
+        S.box((w, t, h), center=(0, -w / 2 + t / 2, h / 2)),
+        S.box((t, w - 2 * t, h), center=(w / 2 - t / 2, 0, h / 2)),
+        S.box((t, w - 2 * t, h), center=(-w / 2 + t / 2, 0, h / 2)),
+        S.box((w - 2 * t, w - 2 * t, t), center=(0, 0, t / 2)),
+    ]
+    return S.union(walls)
+
+
+@register("mug", parts=("body", "handle"), size_range=(0.10, 0.14), density=900,
+          variants=("round", "belly", "square"), placement="surface")
+def mug(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.036, 0.045)
+    h = rng.uniform(0.085, 0.11)
+    t = rng.uniform(0.0035, 0.005)
+    mat = M.ceramic(rng)
+    if variant == "square":
+        body = _square_mug(rng, 2 * r, h, t)
+    elif variant == "belly":
+        body = S.vessel([(r * 0.85, 0.0), (r * 1.05, h * 0.35), (r * 1.0, h * 0.75), (r * 0.92, h)], t)
+    else:
+        body = S.vessel([(r * 0.96, 0.0), (r, h)], t, piece_sections=16)
+    handle = _handle(rng, r, h, rng.uniform(0.005, 0.007))
+    return [make_part("body", "body", body, mat), make_part("handle", "handle", handle, mat)]
+
+
+@register("cup", parts=("body",), size_range=(0.08, 0.14), density=900,
+          variants=("tumbler", "tapered"), placement="surface")
+def cup(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.03, 0.04)
+    h = rng.uniform(0.08, 0.13)
+    t = rng.uniform(0.0025, 0.004)
+    mat = M.glass(rng) if rng.random() < 0.5 else M.plastic(rng)
+    prof = [(r * 0.8, 0.0), (r, h)] if variant == "tapered" else [(r, 0.0), (r, h)]
+    return [make_part("body", "body", S.vessel(prof, t, bottom=t * 2), mat)]
+
+
+@register("tea_cup", parts=("body",), extra_parts=("handle",), size_range=(0.07, 0.11), density=900,
+          variants=("bowl", "handled"), placement="surface")
+def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.03, 0.042)
+    h = rng.uniform(0.045, 0.065)
+    t = 0.003
+    mat = M.ceramic(rng)
+    body = S.vessel([(r * 0.5, 0.0), (r * 0.55, 0.006), (r * 0.9, h * 0.5), (r, h)], t)
+    parts = [make_part("body", "body", body, mat)]
+    if variant == "handled":
+        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004), mat))
+    return parts

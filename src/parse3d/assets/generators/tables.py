@@ -1,0 +1,130 @@
+"""Tables and desks: four-leg, pedestal and trestle variants sharing one builder.
+
+Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
+``handle`` and a ``modesty_panel``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+
+
+def _top(rng, w, d, h, thick, mat, round_top: bool = False) -> Part:
+    if round_top:
+        shape = S.cylinder(w / 2, thick, center=(0, 0, h - thick / 2), sections=48)
+    else:
+        shape = S.box((w, d, thick), center=(0, 0, h - thick / 2), bevel=min(0.006, thick / 4))
+    return make_part("tabletop", "tabletop", shape, mat)
+
+
+def _four_legs(rng, w, d, h_leg, leg_mat, inset: float, leg: float, tapered: bool) -> list[Part]:
+    parts = []
+    xs = (-w / 2 + inset, w / 2 - inset)
+    ys = (-d / 2 + inset, d / 2 - inset)
+    i = 0
+    for y in ys:
+        for x in xs:
+            if tapered:
+                shape = S.frustum(leg / 2 * 0.65, leg / 2, h_leg, center=(x, y, 0), sections=12)
+            else:
+                shape = S.box((leg, leg, h_leg), center=(x, y, h_leg / 2), bevel=leg * 0.12)
+            parts.append(make_part(f"leg_{i}", "leg", shape, leg_mat))
+            i += 1
+    return parts
+
+
+def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
+    col = S.lathe([(r_base, 0.0), (r_base, 0.025), (r_base * 0.35, 0.06), (r_base * 0.22, 0.12),
+                   (r_base * 0.2, h_leg - 0.05), (r_base * 0.45, h_leg)], sections=32)
+    return [make_part("leg_0", "leg", col, leg_mat)]
+
+
+def _trestle(rng, w, d, h_leg, leg_mat, leg: float) -> list[Part]:
+    parts = []
+    for i, x in enumerate((-w / 2 + 0.12, w / 2 - 0.12)):
+        upright = S.box((leg, leg * 1.4, h_leg - 0.05), center=(x, 0, (h_leg - 0.05) / 2 + 0.05))
+        foot = S.box((leg * 1.2, d * 0.8, 0.05), center=(x, 0, 0.025), bevel=0.008)
+        cap = S.box((leg * 1.2, d * 0.8, 0.04), center=(x, 0, h_leg - 0.02), bevel=0.006)
+        parts.append(make_part(f"leg_{i}", "leg", [upright, foot, cap], leg_mat))
+    bar = S.box((w - 0.24 - leg, 0.04, 0.06), center=(0, 0, 0.25))
+    parts.append(make_part("stretcher", "stretcher", bar, leg_mat))
+    return parts
+
+
+def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
+           desk: bool = False) -> list[Part]:
+    w = rng.uniform(*w_rng)
+    d = rng.uniform(*d_rng)
+    h = rng.uniform(*h_rng)
+    thick = rng.uniform(0.025, 0.045)
+    top_mat = M.wood(rng) if rng.random() < 0.8 else M.stone(rng)
+    leg_mat = top_mat if rng.random() < 0.6 else M.metal(rng)
+    round_top = round_ok and variant == "pedestal" and rng.random() < 0.6
+    if round_top:
+        d = w
+    parts = [_top(rng, w, d, h, thick, top_mat, round_top)]
+    h_leg = h - thick
+    leg = rng.uniform(0.04, 0.06)
+    if variant == "four_leg":
+        parts += _four_legs(rng, w, d, h_leg, leg_mat, inset=leg / 2 + rng.uniform(0.01, 0.05),
+                            leg=leg, tapered=rng.random() < 0.4)
+    elif variant == "pedestal":
+        parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
+    elif variant == "trestle":
+        parts += _trestle(rng, w, d, h_leg, leg_mat, leg)
+    if desk and variant == "four_leg":
+        panel = S.box((w - 2 * leg - 0.06, 0.018, h_leg * 0.4),
+                      center=(0, -d / 2 + leg / 2 + 0.02, h_leg - h_leg * 0.2 - 0.01))
+        parts.append(make_part("modesty_panel", "modesty_panel", panel, top_mat))
+        if rng.random() < 0.7:
+            dw, dh = min(0.45, w * 0.35), 0.09
+            x = w / 2 - leg - dw / 2 - 0.03
+            front = S.box((dw, 0.02, dh), center=(x, d / 2 - 0.03, h_leg - dh / 2 - 0.005), bevel=0.003)
+            box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - dh / 2 - 0.005))
+            parts.append(make_part("drawer_0", "drawer", [front, box_], top_mat))
+            handle = S.tube([[x - 0.05, d / 2 - 0.02, h_leg - dh / 2], [x - 0.05, d / 2 + 0.005, h_leg - dh / 2],
+                             [x + 0.05, d / 2 + 0.005, h_leg - dh / 2], [x + 0.05, d / 2 - 0.02, h_leg - dh / 2]],
+                            0.005, sections=8)
+            parts.append(make_part("handle_0", "handle", handle, M.metal(rng)))
+    return parts
+
+
+@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher"),
+          size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
+def desk(rng: np.random.Generator, variant: str) -> list[Part]:
+    return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
+
+
+@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+          size_range=(1.2, 2.2), density=600, variants=("four_leg", "pedestal", "trestle"))
+def dining_table(rng: np.random.Generator, variant: str) -> list[Part]:
+    return _table(rng, variant, w_rng=(1.3, 2.0), d_rng=(0.8, 1.0), h_rng=(0.73, 0.77), round_ok=True)
+
+
+@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+          size_range=(0.8, 1.4), density=600, variants=("four_leg", "pedestal"))
+def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
+    return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
+
+
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+          size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
+def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
+    return _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True)
+
+
+@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+          size_range=(0.6, 1.2), density=650, variants=("four_leg", "pedestal"))
+def tea_table(rng: np.random.Generator, variant: str) -> list[Part]:
+    return _table(rng, variant, w_rng=(0.7, 1.1), d_rng=(0.5, 0.7), h_rng=(0.32, 0.5), round_ok=True)
+
+
+@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+          size_range=(2.0, 4.0), density=600, variants=("four_leg", "trestle"))
+def conference_table(rng: np.random.Generator, variant: str) -> list[Part]:
+    return _table(rng, variant, w_rng=(2.2, 3.6), d_rng=(1.0, 1.4), h_rng=(0.73, 0.76))

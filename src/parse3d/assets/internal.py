@@ -1,0 +1,150 @@
+"""Internal support surfaces for ``IN``: upward surfaces inside an object's volume.
+
+A shelf inside a bookcase or a cabinet, a refrigerator shelf, the inside bottom of a bowl, a
+basket, a bucket, a pot or a bathtub. Found geometrically, so loaded assets get them too: an
+upward-facing patch is *internal* when, seen from just above it,
+
+* something of the asset covers it (an upward ray hits) and the asset surrounds it on at least
+  three of eight horizontal directions (a shelf in an open-fronted bookcase), or
+* nothing covers it but the asset surrounds it on at least seven of eight horizontal directions
+  (an open container such as a bowl).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+import trimesh
+
+from ..geometry.surfaces import SURFACE_BASIS, Surface, plane_polygon
+
+__all__ = ["find_internal_surfaces", "MIN_INTERNAL_AREA"]
+
+MIN_INTERNAL_AREA = 6e-4  # m^2 (6 cm^2): smaller patches hold nothing
+MIN_CLEARANCE = 0.04  # m: less free height above a surface holds nothing either
+_UP_COS = np.cos(np.deg2rad(12.0))
+_DIRS = np.array([[np.cos(a), np.sin(a), 0.0] for a in np.linspace(0, 2 * np.pi, 8, endpoint=False)])
+
+
+def _intersector(mesh: trimesh.Trimesh):
+    try:
+        from trimesh.ray.ray_pyembree import RayMeshIntersector
+
+        return RayMeshIntersector(mesh)
+    except Exception:  # embree missing: fall back to the slow pure-numpy caster
+        from trimesh.ray.ray_triangle import RayMeshIntersector
+
+        return RayMeshIntersector(mesh)
+
+
+def _first_hit(caster, normals, origins: np.ndarray, dirs: np.ndarray):
+    """Distance to the first hit for each ray (inf when it misses), and whether that hit was
+    a back face (the ray started inside a solid)."""
+    locs, ray_idx, tri = caster.intersects_location(origins, dirs, multiple_hits=False)
+    dist = np.full(len(origins), np.inf)
+    inside = np.zeros(len(origins), bool)
+    if len(ray_idx):
+        d = np.linalg.norm(locs - origins[ray_idx], axis=1)
+        dist[ray_idx] = d
+        inside[ray_idx] = np.einsum("ij,ij->i", normals[tri], dirs[ray_idx]) > 0
+    return dist, inside
+
+
+def _exit_distances(hull, xy: np.ndarray, reach: float) -> np.ndarray:
+    """(N, 8) distance from each point to where each horizontal direction leaves ``hull``."""
+    out = np.zeros((len(xy), len(_DIRS)))
+    for i, p in enumerate(xy):
+        ends = p + _DIRS[:, :2] * reach
+        lines = shapely.linestrings([[p, e] for e in ends])
+        out[i] = shapely.length(shapely.intersection(lines, hull))
+    return out
+
+
+def _inside_pieces(planes, pts: np.ndarray) -> np.ndarray:
+    """Whether each point lies strictly inside any convex piece (given by its face planes)."""
+    inside = np.zeros(len(pts), bool)
+    for n, d in planes:
+        inside |= ((pts @ n.T) - d < -1e-6).all(axis=1)
+    return inside
+
+
+def find_internal_surfaces(asset) -> list:
+    """Internal support surfaces of an asset (see the module docstring).
+
+    Returns
+    -------
+    list of InternalSurface
+        In the asset frame, ordered bottom-to-top.
+    """
+    from .model import InternalSurface
+
+    whole = asset.mesh()
+    if len(whole.faces) == 0:
+        return []
+    caster = _intersector(whole)
+    normals = whole.face_normals
+    planes = [(pc.face_normals, np.einsum("ij,ij->i", pc.face_normals, pc.triangles[:, 0]))
+              for p in asset.parts for pc in p.pieces]
+    top_z = float(whole.bounds[1, 2])
+    reach = float(np.linalg.norm(whole.extents)) * 2 + 0.1
+    u, v = (np.array(a) for a in SURFACE_BASIS["top"])
+    found = []
+    for part in asset.parts:
+        m = part.mesh
+        up = m.face_normals[:, 2] > _UP_COS
+        if not up.any():
+            continue
+        idx = np.nonzero(up)[0]
+        adj = m.face_adjacency
+        keep = up[adj[:, 0]] & up[adj[:, 1]]
+        for comp in trimesh.graph.connected_components(adj[keep], nodes=idx, min_len=1):
+            comp = np.asarray(comp)
+            area = m.area_faces[comp].sum()
+            if area < MIN_INTERNAL_AREA:
+                continue
+            z = float((m.triangles_center[comp, 2] * m.area_faces[comp]).sum() / area)
+            if top_z - z < 0.02:
+                continue
+            tri = m.triangles[comp]
+            poly = plane_polygon(np.stack([tri @ u, tri @ v], axis=-1))
+            if poly.is_empty:
+                continue
+            samples = [np.asarray(poly.representative_point().coords[0])]
+            c = np.asarray(poly.centroid.coords[0])
+            if poly.contains(shapely.Point(c)):
+                samples.append(c)
+            pts = np.array([[x, y, z] for x, y in samples])
+            lift = 0.01
+            o_up = pts + [0, 0, lift]
+            h_up, inside = _first_hit(caster, normals, o_up, np.tile([0, 0, 1.0], (len(pts), 1)))
+            if inside.any() or _inside_pieces(planes, o_up).any():
+                continue  # the patch is covered by a solid standing on it
+            o_h = np.repeat(pts + [0, 0, lift], len(_DIRS), axis=0)
+            d_h = np.tile(_DIRS, (len(pts), 1))
+            hh, _ = _first_hit(caster, normals, o_h, d_h)
+            hh = hh.reshape(len(pts), len(_DIRS))
+            # a horizontal hit counts only where the patch ends: a wall around the surface, not
+            # an obstacle standing on it (a pedestal's column, a trestle's upright)
+            edge = _exit_distances(poly.convex_hull, pts[:, :2], reach)
+            hits = (hh >= edge - 0.01) & (hh < reach)
+            hits = hits.sum(axis=1)
+            covered = np.isfinite(h_up)
+            if covered.all() and (hits >= 3).all():
+                clearance = float(h_up.min()) + lift
+                depth = clearance
+            elif (~covered).all() and (hits >= 7).all():
+                clearance = float("inf")
+                depth = top_z - z
+            else:
+                continue
+            if clearance < MIN_CLEARANCE:
+                continue
+            if depth < 0.02:
+                continue
+            c2 = np.asarray(poly.centroid.coords[0])
+            origin = np.array([c2[0], c2[1], z])
+            surf = Surface("top", origin, np.array([0, 0, 1.0]), u, v,
+                           shapely.affinity.translate(poly, -c2[0], -c2[1]), "mesh")
+            found.append(InternalSurface(part.name, surf, clearance, float(depth)))
+    found.sort(key=lambda s: (round(float(s.surface.origin[2]), 4), s.part))
+    return found

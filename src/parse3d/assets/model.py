@@ -1,0 +1,241 @@
+"""The asset model: a part-labelled object in its canonical frame.
+
+Canonical frame (DESIGN §3): +Z up, the asset's front faces +Y, its right-hand side is +X, the
+origin is the centre of the bottom face of its bounding box. Every part has a unique ``name``
+(``leg_2``), a ``label`` from its category's part vocabulary (``leg``), a triangle mesh, a
+material, convex collision pieces that cover it, and its six directional surfaces.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import trimesh
+
+from ..geometry.surfaces import Surface, resolve_surfaces
+from ..geometry.shapes import Shape
+
+__all__ = ["Material", "Part", "InternalSurface", "Asset", "make_part", "finalize_asset"]
+
+
+@dataclass(frozen=True)
+class Material:
+    """A simple PBR material.
+
+    Attributes
+    ----------
+    color : (4,) float in [0, 1]
+        Base colour RGBA.
+    roughness, metallic : float in [0, 1]
+    name : str
+        Material family (``wood``, ``metal``, ``fabric``, ``ceramic``, ``glass``, ``plastic``,
+        ``paper``, ``stone``, ``plant``, ``food``, ``leather``); physics reads friction and
+        restitution from it.
+    texture : str or None
+        Reserved for an image texture path.
+    """
+
+    color: tuple[float, float, float, float] = (0.7, 0.7, 0.7, 1.0)
+    roughness: float = 0.6
+    metallic: float = 0.0
+    name: str = "plastic"
+    texture: str | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "color": [round(float(c), 4) for c in self.color],
+            "roughness": self.roughness,
+            "metallic": self.metallic,
+            "name": self.name,
+            "texture": self.texture,
+        }
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> Material:
+        return cls(tuple(d["color"]), d["roughness"], d["metallic"], d["name"], d.get("texture"))
+
+
+@dataclass
+class Part:
+    """One part of an asset.
+
+    Attributes
+    ----------
+    name : str
+        Unique within the asset (``leg_0``, ``shelf_2``).
+    label : str
+        From the category's part vocabulary (``leg``, ``shelf``).
+    mesh : trimesh.Trimesh
+        Visual mesh in the asset frame, metres.
+    material : Material
+    pieces : list of trimesh.Trimesh
+        Convex collision pieces covering the mesh; every piece belongs to this part only.
+    surfaces : dict of str to Surface
+        The six directional surfaces (filled in by :func:`finalize_asset`).
+    watertight : bool
+        Whether the part is meant to be a closed solid (cloth, cards and open sheets are not).
+    """
+
+    name: str
+    label: str
+    mesh: trimesh.Trimesh
+    material: Material = field(default_factory=Material)
+    pieces: list[trimesh.Trimesh] = field(default_factory=list)
+    surfaces: dict[str, Surface] = field(default_factory=dict)
+    watertight: bool = True
+
+    @property
+    def bounds(self) -> np.ndarray:
+        return np.asarray(self.mesh.bounds)
+
+
+@dataclass
+class InternalSurface:
+    """An upward-facing support surface inside an object's volume, for ``IN``.
+
+    Attributes
+    ----------
+    part : str
+        Name of the part the surface belongs to.
+    surface : Surface
+        The patch (normal +Z) in the asset frame.
+    clearance : float
+        Free height above the surface before the asset is hit again, metres (``inf`` when the
+        container is open at the top, like a bowl).
+    depth : float
+        Height of the surrounding walls above the surface, metres (how deep the container is).
+    """
+
+    part: str
+    surface: Surface
+    clearance: float
+    depth: float
+
+
+@dataclass
+class Asset:
+    """A part-labelled 3D asset in its canonical frame.
+
+    Attributes
+    ----------
+    category : str
+    asset_id : str
+        Unique and stable: ``<category>-<variant>-<seed>`` for generated assets.
+    parts : list of Part
+    size_range : (2,) float
+        The category's real-world range of the largest bbox extent, metres.
+    density : float
+        kg / m^3 for physics.
+    internal : list of InternalSurface
+    meta : dict
+        Provenance: generator, variant, seed, source file.
+    """
+
+    category: str
+    asset_id: str
+    parts: list[Part]
+    size_range: tuple[float, float] = (0.1, 1.0)
+    density: float = 500.0
+    internal: list[InternalSurface] = field(default_factory=list)
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def bounds(self) -> np.ndarray:
+        """(2, 3) axis-aligned bounds over all parts."""
+        b = np.array([p.bounds for p in self.parts])
+        return np.array([b[:, 0].min(axis=0), b[:, 1].max(axis=0)])
+
+    @property
+    def extents(self) -> np.ndarray:
+        b = self.bounds
+        return b[1] - b[0]
+
+    @property
+    def size(self) -> float:
+        """The largest bbox extent, metres (what ``size_range`` bounds)."""
+        return float(self.extents.max())
+
+    @property
+    def labels(self) -> list[str]:
+        return sorted({p.label for p in self.parts})
+
+    def part(self, name: str) -> Part:
+        for p in self.parts:
+            if p.name == name:
+                return p
+        raise KeyError(f"{self.asset_id} has no part {name!r}")
+
+    def parts_by_label(self, label: str) -> list[Part]:
+        """Parts with ``label``, ordered bottom-to-top, then left-to-right, then back-to-front
+        (the order ``#k`` indexes)."""
+        ps = [p for p in self.parts if p.label == label]
+
+        def key(p: Part):
+            c = p.mesh.bounds.mean(axis=0)
+            return (round(float(p.mesh.bounds[0, 2]), 3), round(float(c[0]), 3), round(float(c[1]), 3))
+
+        return sorted(ps, key=key)
+
+    def mesh(self) -> trimesh.Trimesh:
+        """All parts as one mesh (a fresh copy)."""
+        return trimesh.util.concatenate([p.mesh for p in self.parts])
+
+    @property
+    def volume(self) -> float:
+        """Collision volume (sum of convex pieces), m^3."""
+        return float(sum(pc.volume for p in self.parts for pc in p.pieces))
+
+    @property
+    def mass(self) -> float:
+        return self.volume * self.density
+
+    def summary(self) -> dict[str, Any]:
+        return {
+            "category": self.category,
+            "asset_id": self.asset_id,
+            "extents": [round(float(x), 4) for x in self.extents],
+            "parts": [{"name": p.name, "label": p.label,
+                       "surfaces": {k: s.to_dict() for k, s in p.surfaces.items()},
+                       "pieces": len(p.pieces)} for p in self.parts],
+            "internal": [{"part": s.part, "surface": s.surface.to_dict(),
+                          "clearance": None if np.isinf(s.clearance) else round(s.clearance, 4),
+                          "depth": round(s.depth, 4)} for s in self.internal],
+            "size_range": list(self.size_range),
+            "density": self.density,
+            "meta": self.meta,
+        }
+
+
+def make_part(name: str, label: str, shapes: Shape | list[Shape], material: Material,
+              *, watertight: bool = True) -> Part:
+    """Build a Part from one or more shapes (meshes concatenated, pieces kept)."""
+    if isinstance(shapes, Shape):
+        shapes = [shapes]
+    mesh = trimesh.util.concatenate([s.mesh for s in shapes]) if len(shapes) > 1 else shapes[0].mesh.copy()
+    pieces = [p for s in shapes for p in s.pieces]
+    return Part(name, label, mesh, material, pieces, watertight=watertight)
+
+
+def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True) -> Asset:
+    """Put an asset into canonical form and compute its derived geometry, in place.
+
+    Moves it so the bottom face of its bbox is centred on the origin, resolves the six
+    directional surfaces of every part, and finds internal support surfaces.
+    """
+    if recenter:
+        b = asset.bounds
+        shift = -np.array([(b[0, 0] + b[1, 0]) / 2, (b[0, 1] + b[1, 1]) / 2, b[0, 2]])
+        if np.abs(shift).max() > 1e-9:
+            for p in asset.parts:
+                p.mesh.apply_translation(shift)
+                for pc in p.pieces:
+                    pc.apply_translation(shift)
+    for p in asset.parts:
+        p.surfaces = resolve_surfaces(p.mesh)
+    if internal:
+        from .internal import find_internal_surfaces
+
+        asset.internal = find_internal_surfaces(asset)
+    return asset

@@ -1,0 +1,207 @@
+"""The category registry: every asset category, its part vocabulary, size range and generator.
+
+Procedural generators register themselves with :func:`register`; modules under
+``parse3d.assets.generators`` are imported on first use. Categories added from folders of real
+assets (``parse3d assets add``) are registered through :func:`register_loaded`. The PAG
+validator reads category names and part labels from here (:func:`vocabulary`).
+
+Examples
+--------
+>>> from parse3d.assets import registry
+>>> asset = registry.generate("mug", seed=3)
+>>> sorted({p.label for p in asset.parts}) >= ["body", "handle"]
+True
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import zlib
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import AssetError
+from .model import Asset, Part, finalize_asset
+
+__all__ = [
+    "Category",
+    "register",
+    "register_loaded",
+    "categories",
+    "get",
+    "generate",
+    "vocabulary",
+    "Vocabulary",
+    "category_rng",
+]
+
+Generator = Callable[[np.random.Generator, str], list[Part]]
+
+#: Typical supports of a category, used by templates and the demo (not a constraint).
+PLACEMENTS = ("floor", "surface", "wall", "ceiling", "inside")
+
+
+@dataclass(frozen=True)
+class Category:
+    """An asset category.
+
+    Attributes
+    ----------
+    name : str
+    parts : tuple of str
+        Part labels every asset of the category has (what PAGs may refer to).
+    vocabulary : tuple of str
+        Every part label an asset of the category may have (a superset of ``parts``).
+    size_range : (low, high), metres
+        Real-world range of the asset's largest bbox extent.
+    density : float
+        kg / m^3 of the solid collision volume.
+    variants : tuple of str
+        Structural variants of the generator.
+    placement : str
+        Typical support: ``floor``, ``surface``, ``wall``, ``ceiling`` or ``inside``.
+    generator : callable or None
+        ``generator(rng, variant) -> list[Part]``; None for loaded categories.
+    source : str
+        ``procedural`` or the folder a loaded category came from.
+    """
+
+    name: str
+    parts: tuple[str, ...]
+    vocabulary: tuple[str, ...]
+    size_range: tuple[float, float]
+    density: float
+    variants: tuple[str, ...] = ("default",)
+    placement: str = "floor"
+    generator: Generator | None = field(default=None, compare=False, repr=False)
+    source: str = "procedural"
+    loaded_assets: tuple = field(default=(), compare=False, repr=False)
+
+
+_REGISTRY: dict[str, Category] = {}
+_DISCOVERED = False
+
+
+def register(
+    name: str,
+    *,
+    parts: tuple[str, ...],
+    size_range: tuple[float, float],
+    density: float,
+    variants: tuple[str, ...] = ("default",),
+    placement: str = "floor",
+    extra_parts: tuple[str, ...] = (),
+) -> Callable[[Generator], Generator]:
+    """Decorator registering a procedural generator for a category.
+
+    The generator takes ``(rng, variant)`` and returns the asset's parts in any placement; the
+    registry recentres the asset, resolves surfaces and finds internal support surfaces.
+    """
+    if placement not in PLACEMENTS:
+        raise ValueError(f"placement must be one of {PLACEMENTS}")
+
+    def deco(fn: Generator) -> Generator:
+        vocab = tuple(dict.fromkeys(parts + extra_parts))
+        _REGISTRY[name] = Category(name, tuple(parts), vocab, tuple(size_range), float(density),
+                                   tuple(variants), placement, fn)
+        return fn
+
+    return deco
+
+
+def register_loaded(category: Category) -> None:
+    """Register (or replace) a category whose assets were loaded from files."""
+    _REGISTRY[category.name] = category
+
+
+def _discover() -> None:
+    global _DISCOVERED
+    if _DISCOVERED:
+        return
+    _DISCOVERED = True
+    from . import generators
+
+    for mod in pkgutil.iter_modules(generators.__path__):
+        importlib.import_module(f"{generators.__name__}.{mod.name}")
+    from .library import load_user_library
+
+    load_user_library()
+
+
+def categories() -> dict[str, Category]:
+    """All registered categories by name, sorted."""
+    _discover()
+    return dict(sorted(_REGISTRY.items()))
+
+
+def get(name: str) -> Category:
+    """A category by name; KeyError with suggestions when unknown."""
+    _discover()
+    try:
+        return _REGISTRY[name]
+    except KeyError:
+        import difflib
+
+        close = difflib.get_close_matches(name, list(_REGISTRY), n=1)
+        hint = f" — did you mean {close[0]!r}?" if close else ""
+        raise KeyError(f"unknown category {name!r}{hint}") from None
+
+
+def category_rng(category: str, seed: int, stage: str = "asset") -> np.random.Generator:
+    """The generator for (category, seed, stage): stable across runs and platforms."""
+    return np.random.default_rng([int(seed), zlib.crc32(category.encode()), zlib.crc32(stage.encode())])
+
+
+def generate(category: str, seed: int = 0, variant: str | None = None) -> Asset:
+    """Generate one asset of ``category`` from ``seed`` (and optionally a fixed variant).
+
+    The same (category, seed, variant) always gives the same asset.
+    """
+    cat = get(category)
+    if cat.generator is None:
+        if not cat.loaded_assets:
+            raise AssetError(f"category {category!r} has no generator and no loaded assets")
+        from .cache import load_asset
+
+        path = cat.loaded_assets[int(seed) % len(cat.loaded_assets)]
+        return load_asset(path)
+    rng = category_rng(category, seed)
+    if variant is None:
+        variant = str(cat.variants[int(rng.integers(len(cat.variants)))])
+    elif variant not in cat.variants:
+        raise AssetError(f"category {category!r} has no variant {variant!r} "
+                         f"(variants: {', '.join(cat.variants)})")
+    try:
+        parts = cat.generator(rng, variant)
+    except Exception as e:  # a generator bug must say which asset broke
+        raise AssetError(f"generating {category} (variant {variant}, seed {seed}) failed: {e}") from e
+    names = [p.name for p in parts]
+    if len(set(names)) != len(names):
+        raise AssetError(f"{category}: duplicate part names {names}")
+    asset = Asset(category, f"{category}-{variant}-{seed}", parts, cat.size_range, cat.density,
+                  meta={"generator": "procedural", "variant": variant, "seed": int(seed)})
+    return finalize_asset(asset)
+
+
+class Vocabulary:
+    """What the PAG validator checks category names and part labels against."""
+
+    def __init__(self, cats: dict[str, Category]):
+        self._cats = cats
+
+    def categories(self) -> list[str]:
+        return list(self._cats)
+
+    def has_category(self, name: str) -> bool:
+        return name in self._cats
+
+    def parts(self, category: str) -> tuple[str, ...]:
+        return self._cats[category].vocabulary
+
+
+def vocabulary() -> Vocabulary:
+    """The current vocabulary (procedural and loaded categories)."""
+    return Vocabulary(categories())

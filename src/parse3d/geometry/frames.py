@@ -1,0 +1,137 @@
+"""Rigid frames: rotations, quaternions (w, x, y, z) and 4x4 transforms.
+
+Conventions: world +Z up; quaternions are scalar-first ``[w, x, y, z]`` as in scene.json.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "rot_z",
+    "rot_x",
+    "rot_y",
+    "axis_angle",
+    "matrix_to_quat",
+    "quat_to_matrix",
+    "make_transform",
+    "transform_points",
+    "transform_vectors",
+    "yaw_of",
+    "rotation_between",
+    "angle_between",
+]
+
+
+def rot_z(theta: float) -> np.ndarray:
+    """(3, 3) rotation by ``theta`` radians about +Z."""
+    c, s = np.cos(theta), np.sin(theta)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+def rot_x(theta: float) -> np.ndarray:
+    """(3, 3) rotation by ``theta`` radians about +X."""
+    c, s = np.cos(theta), np.sin(theta)
+    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+
+
+def rot_y(theta: float) -> np.ndarray:
+    """(3, 3) rotation by ``theta`` radians about +Y."""
+    c, s = np.cos(theta), np.sin(theta)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
+def axis_angle(axis, theta: float) -> np.ndarray:
+    """(3, 3) rotation by ``theta`` radians about the unit vector ``axis`` (Rodrigues)."""
+    a = np.asarray(axis, dtype=float)
+    a = a / np.linalg.norm(a)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + np.sin(theta) * k + (1 - np.cos(theta)) * (k @ k)
+
+
+def rotation_between(a, b) -> np.ndarray:
+    """(3, 3) smallest rotation taking unit vector ``a`` onto unit vector ``b``."""
+    a = np.asarray(a, float) / np.linalg.norm(a)
+    b = np.asarray(b, float) / np.linalg.norm(b)
+    v = np.cross(a, b)
+    c = float(np.dot(a, b))
+    if np.linalg.norm(v) < 1e-12:
+        if c > 0:
+            return np.eye(3)
+        # 180 degrees about any axis orthogonal to a
+        perp = np.array([1.0, 0, 0]) if abs(a[0]) < 0.9 else np.array([0, 1.0, 0])
+        axis = np.cross(a, perp)
+        return axis_angle(axis, np.pi)
+    return axis_angle(v, np.arctan2(np.linalg.norm(v), c))
+
+
+def angle_between(a, b) -> float:
+    """Angle in radians between two vectors."""
+    a = np.asarray(a, float)
+    b = np.asarray(b, float)
+    c = np.dot(a, b) / (np.linalg.norm(a) * np.linalg.norm(b))
+    return float(np.arccos(np.clip(c, -1.0, 1.0)))
+
+
+def matrix_to_quat(R: np.ndarray) -> np.ndarray:
+    """(4,) unit quaternion ``[w, x, y, z]`` with w >= 0 from a (3, 3) rotation matrix."""
+    R = np.asarray(R, dtype=float)
+    t = np.trace(R)
+    if t > 0:
+        s = np.sqrt(t + 1.0) * 2
+        q = [0.25 * s, (R[2, 1] - R[1, 2]) / s, (R[0, 2] - R[2, 0]) / s, (R[1, 0] - R[0, 1]) / s]
+    elif R[0, 0] > R[1, 1] and R[0, 0] > R[2, 2]:
+        s = np.sqrt(1.0 + R[0, 0] - R[1, 1] - R[2, 2]) * 2
+        q = [(R[2, 1] - R[1, 2]) / s, 0.25 * s, (R[0, 1] + R[1, 0]) / s, (R[0, 2] + R[2, 0]) / s]
+    elif R[1, 1] > R[2, 2]:
+        s = np.sqrt(1.0 + R[1, 1] - R[0, 0] - R[2, 2]) * 2
+        q = [(R[0, 2] - R[2, 0]) / s, (R[0, 1] + R[1, 0]) / s, 0.25 * s, (R[1, 2] + R[2, 1]) / s]
+    else:
+        s = np.sqrt(1.0 + R[2, 2] - R[0, 0] - R[1, 1]) * 2
+        q = [(R[1, 0] - R[0, 1]) / s, (R[0, 2] + R[2, 0]) / s, (R[1, 2] + R[2, 1]) / s, 0.25 * s]
+    q = np.asarray(q)
+    q /= np.linalg.norm(q)
+    return q if q[0] >= 0 else -q
+
+
+def quat_to_matrix(q) -> np.ndarray:
+    """(3, 3) rotation matrix from a quaternion ``[w, x, y, z]``."""
+    w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+            [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+            [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def make_transform(R=None, t=None, scale: float = 1.0) -> np.ndarray:
+    """(4, 4) homogeneous transform ``x -> R @ (scale * x) + t``."""
+    T = np.eye(4)
+    if R is not None:
+        T[:3, :3] = np.asarray(R, float) * scale
+    else:
+        T[:3, :3] *= scale
+    if t is not None:
+        T[:3, 3] = t
+    return T
+
+
+def transform_points(T: np.ndarray, pts) -> np.ndarray:
+    """Apply a (4, 4) transform to (N, 3) points."""
+    pts = np.asarray(pts, dtype=float)
+    return pts @ T[:3, :3].T + T[:3, 3]
+
+
+def transform_vectors(T: np.ndarray, vecs) -> np.ndarray:
+    """Rotate (N, 3) direction vectors by a (4, 4) transform and renormalise."""
+    v = np.asarray(vecs, dtype=float) @ T[:3, :3].T
+    n = np.linalg.norm(v, axis=-1, keepdims=True)
+    return v / np.where(n > 0, n, 1.0)
+
+
+def yaw_of(R: np.ndarray) -> float:
+    """Yaw (radians about +Z) of the rotated +Y (front) axis, measured from +Y."""
+    f = np.asarray(R)[:, 1]
+    return float(np.arctan2(-f[0], f[1]))

@@ -1,0 +1,237 @@
+"""The Scene: a solved (and possibly settled) PAG.
+
+A :class:`Scene` holds the room shell, one :class:`PlacedObject` per PAG object (with its asset,
+uniform scale and world pose), the per-relation check results, timings and, once extracted,
+the part-level contacts. It is the data the renderer, physics and exporters consume.
+
+World frame: +Z up, metres. An object's world transform maps asset-frame points ``x`` to
+``R @ (scale * x) + t``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import trimesh
+
+from ..assets.model import Asset, Part
+from ..geometry.frames import make_transform
+from ..geometry.surfaces import Surface
+from ..pag.model import PAG
+
+__all__ = ["PlacedObject", "ShellElement", "RoomShell", "RelationCheck", "Contact", "Scene"]
+
+
+@dataclass
+class PlacedObject:
+    """One object of a scene.
+
+    Attributes
+    ----------
+    id : str
+        The PAG object id.
+    category : str
+        The category chosen among the node's candidates.
+    asset : Asset or None
+        The asset instance (None when the object failed before an asset was chosen).
+    scale : float
+        Uniform scale applied to the asset.
+    rotation : (3, 3) float
+        World rotation of the solved pose.
+    position : (3,) float
+        World position of the asset origin (centre of its bbox bottom), metres.
+    status : str
+        ``placed`` or ``failed``.
+    reason : str or None
+        For failed objects: which constraint could not be met.
+    trials : int
+        Pose samples drawn before one validated.
+    support : str or None
+        The part-level support actually used, as ``parent:part_name@surface`` (or
+        ``room:floor``).
+    fixed : bool
+        Held in place during settling (SECURED_TO and HANGING_BELOW objects).
+    settled_rotation, settled_position : array or None
+        The pose after physics, when settled.
+    """
+
+    id: str
+    category: str
+    asset: Asset | None
+    scale: float = 1.0
+    rotation: np.ndarray = field(default_factory=lambda: np.eye(3))
+    position: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    status: str = "placed"
+    reason: str | None = None
+    trials: int = 0
+    support: str | None = None
+    fixed: bool = False
+    settled_rotation: np.ndarray | None = None
+    settled_position: np.ndarray | None = None
+    flags: list[str] = field(default_factory=list)
+
+    @property
+    def placed(self) -> bool:
+        return self.status == "placed"
+
+    def transform(self, settled: bool | None = None) -> np.ndarray:
+        """(4, 4) asset-to-world transform (scale included).
+
+        ``settled=None`` uses the settled pose when there is one, else the solved pose.
+        """
+        use_settled = self.settled_position is not None if settled is None else settled
+        if use_settled and self.settled_position is not None:
+            return make_transform(self.settled_rotation, self.settled_position, self.scale)
+        return make_transform(self.rotation, self.position, self.scale)
+
+    def part_mesh(self, part: Part, settled: bool | None = None) -> trimesh.Trimesh:
+        """A world-frame copy of one part's mesh."""
+        m = part.mesh.copy()
+        m.apply_transform(self.transform(settled))
+        return m
+
+    def mesh(self, settled: bool | None = None) -> trimesh.Trimesh:
+        """The whole object as one world-frame mesh."""
+        m = self.asset.mesh()
+        m.apply_transform(self.transform(settled))
+        return m
+
+    def world_surface(self, part: Part, label: str, settled: bool | None = None) -> Surface:
+        return part.surfaces[label].transformed(self.transform(settled))
+
+    def world_bounds(self, settled: bool | None = None) -> np.ndarray:
+        """(2, 3) world AABB of the object's visual mesh."""
+        T = self.transform(settled)
+        pts = np.vstack([p.mesh.vertices for p in self.asset.parts]) @ T[:3, :3].T + T[:3, 3]
+        return np.array([pts.min(axis=0), pts.max(axis=0)])
+
+
+@dataclass
+class ShellElement:
+    """A static element of the room shell: the floor, a wall or the ceiling.
+
+    Attributes
+    ----------
+    name : str
+        ``floor``, ``ceiling`` or ``wall_i``.
+    mesh : trimesh.Trimesh
+        World-frame slab (walls and floor have thickness, outside the room volume).
+    surface : Surface
+        The surface facing into the room (floor: up, ceiling: down, wall: inward).
+    """
+
+    name: str
+    mesh: trimesh.Trimesh
+    surface: Surface
+
+
+@dataclass
+class RoomShell:
+    """The room: footprint polygon (counter-clockwise), height, wall thickness and elements."""
+
+    footprint: np.ndarray
+    height: float
+    wall_thickness: float
+    elements: dict[str, ShellElement]
+
+    @property
+    def walls(self) -> list[ShellElement]:
+        return [e for n, e in self.elements.items() if n.startswith("wall_")]
+
+    @property
+    def area(self) -> float:
+        x, y = self.footprint[:, 0], self.footprint[:, 1]
+        return float(0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))))
+
+
+@dataclass
+class RelationCheck:
+    """Whether one PAG relation holds, measured on the geometry.
+
+    Attributes
+    ----------
+    index : int
+        Position of the edge in the PAG's ``relations``.
+    relation, child, parent : str
+        As written in the PAG.
+    holds : bool or None
+        After solving (None when the child failed).
+    residual : dict
+        Measured quantities (``distance`` m, ``angle_deg``, ``enclosure``, ``height`` ...).
+    holds_settled : bool or None
+        After settling (None until settled).
+    residual_settled : dict or None
+    """
+
+    index: int
+    relation: str
+    child: str
+    parent: str
+    holds: bool | None
+    residual: dict[str, float] = field(default_factory=dict)
+    holds_settled: bool | None = None
+    residual_settled: dict[str, float] | None = None
+    detail: str = ""
+
+
+@dataclass(frozen=True)
+class Contact:
+    """One edge of the part-level contact graph.
+
+    ``a`` and ``b`` are ``<object_id>:<part_name>`` (``room:floor`` for the shell), sorted.
+    """
+
+    a: str
+    b: str
+    samples: int
+    min_distance: float
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"a": self.a, "b": self.b, "samples": int(self.samples),
+                "min_distance": round(float(self.min_distance), 6)}
+
+
+@dataclass
+class Scene:
+    """A solved PAG.
+
+    Attributes
+    ----------
+    pag : PAG
+        The graph as given.
+    seed : int
+    room : RoomShell
+    objects : dict of str to PlacedObject
+        In assembly order.
+    relations : list of RelationCheck
+    timings : dict of str to float
+        Seconds per stage (``solve``, ``settle``, ``contacts``, ...).
+    contacts : list of Contact or None
+    settled : bool
+    meta : dict
+        Solver configuration and statistics.
+    """
+
+    pag: PAG
+    seed: int
+    room: RoomShell
+    objects: dict[str, PlacedObject] = field(default_factory=dict)
+    relations: list[RelationCheck] = field(default_factory=list)
+    timings: dict[str, float] = field(default_factory=dict)
+    contacts: list[Contact] | None = None
+    settled: bool = False
+    meta: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def placed(self) -> list[PlacedObject]:
+        return [o for o in self.objects.values() if o.placed]
+
+    @property
+    def failed(self) -> list[PlacedObject]:
+        return [o for o in self.objects.values() if not o.placed]
+
+    @property
+    def ok(self) -> bool:
+        return not self.failed
