@@ -62,7 +62,7 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     return [make_part("body", "body", S.vessel(prof, t, bottom=t * 2), mat)]
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle",), size_range=(0.07, 0.11), density=900,
+@register("tea_cup", parts=("body",), extra_parts=("handle",), size_range=(0.06, 0.11), density=900,
           variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
