@@ -1,0 +1,572 @@
+"""Validation of ``pag/1`` documents: the schema layer, then the meaning layer.
+
+:func:`validate_data` reports every problem of a document in one pass. The schema layer
+(:func:`parse3d.pag.schema.schema_problems`) catches structural mistakes; the meaning layer
+then checks whatever parts of the document are well-formed, even where the schema layer found
+errors elsewhere:
+
+* references: syntax, unknown objects (with the closest id as a suggestion), unknown surface
+  labels, parts or ``#k`` on room elements, ``wall_i`` beyond the footprint's walls, parts or
+  surfaces on object-level relations, an object related to itself;
+* parameters: type, range, ``[low, high]`` order, parameters the relation does not take,
+  required parameters that are missing (``side`` of ``SIDE_OF`` and ``ALONG``);
+* the graph: duplicate ids, room elements as children, parents a relation cannot use (the
+  ceiling under ``ON``), objects with no supporter or with two, cycles over all relations;
+* the room: footprint a simple counter-clockwise polygon with area, positive height;
+* the vocabulary, when one is given: category names and part labels.
+
+A document that passes is solvable in principle: no later stage fails for a reason these
+checks could have caught.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from collections import defaultdict
+from collections.abc import Sequence
+from typing import Any, Protocol
+
+from ..errors import (
+    GeometryInputError,
+    GraphError,
+    InputError,
+    ParameterError,
+    Problem,
+    ReferenceError,
+    SchemaError,
+    VocabularyError,
+)
+from ..relations import RELATIONS, SURFACES, Param, Relation
+from .refs import Ref, RefSyntaxError, is_room_element, parse_ref, wall_index
+from .schema import schema_problems, suggest
+
+__all__ = ["Vocabulary", "validate_data", "error_for", "ROOM_PARENTS", "ROOM_SURFACES"]
+
+_IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-]*$")
+
+#: The surface each room element offers to relations.
+ROOM_SURFACES = {"floor": "top", "ceiling": "bottom", "wall": "front"}
+
+_WALLS = "walls"
+#: Which room elements may be the parent of each relation ("walls" is ``wall`` and ``wall_i``).
+ROOM_PARENTS: dict[str, frozenset[str]] = {
+    "ON": frozenset({"floor"}),
+    "IN": frozenset(),
+    "HANGING_BELOW": frozenset({"ceiling"}),
+    "SECURED_TO": frozenset({_WALLS}),
+    **{n: frozenset({_WALLS}) for n, r in RELATIONS.items() if not r.is_support},
+}
+
+_ROOM_HINT = {
+    "floor": "the floor carries objects through ON",
+    "ceiling": "use HANGING_BELOW to hang an object from the ceiling",
+    _WALLS: "use SECURED_TO to mount an object on a wall",
+}
+
+_ERROR_OF_KIND = {
+    "schema": SchemaError,
+    "syntax": SchemaError,
+    "reference": ReferenceError,
+    "graph": GraphError,
+    "parameter": ParameterError,
+    "geometry": GeometryInputError,
+    "vocabulary": VocabularyError,
+}
+
+_SUPPORT_NAMES = ", ".join(n for n, r in RELATIONS.items() if r.is_support)
+
+
+class Vocabulary(Protocol):
+    """What the validator asks of a category vocabulary (see ``parse3d.assets.registry``)."""
+
+    def has_category(self, name: str) -> bool: ...
+
+    def categories(self) -> list[str]: ...
+
+    def parts(self, category: str) -> tuple[str, ...]: ...
+
+
+def error_for(problems: Sequence[Problem], *, file: str | None = None) -> InputError:
+    """The :class:`InputError` for some problems: the most specific subclass they all share."""
+    kinds = {p.kind for p in problems}
+    cls = _ERROR_OF_KIND.get(kinds.pop(), InputError) if len(kinds) == 1 else InputError
+    return cls(list(problems), file=file)
+
+
+def validate_data(
+    data: Any,
+    *,
+    file: str | None = None,
+    vocabulary: Vocabulary | None = None,
+    raise_errors: bool = False,
+) -> list[Problem]:
+    """Every problem of a ``pag/1`` document, schema and meaning, in one pass.
+
+    Parameters
+    ----------
+    data : any
+        The parsed document (a dict for anything close to valid). Never raises on malformed
+        input other than through ``raise_errors``.
+    file : str, optional
+        Recorded in each problem.
+    vocabulary : Vocabulary, optional
+        Category names and part labels to check against, e.g.
+        ``parse3d.assets.registry.vocabulary()``. Without it, categories and part labels are
+        not checked.
+    raise_errors : bool
+        Raise an :class:`InputError` (the most specific subclass shared by all problems)
+        instead of returning a non-empty list.
+
+    Returns
+    -------
+    list of Problem
+        Schema problems first, then meaning problems in document order; empty when valid.
+    """
+    problems = schema_problems(data, file=file)
+    if isinstance(data, dict):
+        seen = {p.pointer for p in problems}
+        for p in _Checker(data, vocabulary).run():
+            if p.pointer not in seen:
+                problems.append(Problem(p.pointer, p.message, file, p.kind))
+    if raise_errors and problems:
+        raise error_for(problems, file=file)
+    return problems
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _fmt(x: float) -> str:
+    return f"{x:g}"
+
+
+class _Checker:
+    """One pass of meaning checks over a (possibly malformed) document."""
+
+    def __init__(self, data: dict[str, Any], vocabulary: Vocabulary | None):
+        self.data = data
+        self.vocab = vocabulary
+        self.problems: list[Problem] = []
+        self.n_walls: int | None = None
+        self.ids: dict[str, int] = {}
+        self.candidates: dict[str, tuple[str, ...]] = {}
+        self._vocab_names: list[str] | None = None
+        self.objects_known = True  # False when the object list is unreadable
+
+    def add(self, pointer: str, message: str, kind: str) -> None:
+        self.problems.append(Problem(pointer, message, None, kind))
+
+    def run(self) -> list[Problem]:
+        self.check_room(self.data.get("room"))
+        self.check_objects(self.data.get("objects"))
+        self.check_relations(self.data.get("relations"))
+        return self.problems
+
+    # ------------------------------------------------------------------ room
+    def check_room(self, room: Any) -> None:
+        if not isinstance(room, dict):
+            return
+        fp = room.get("footprint")
+        if isinstance(fp, list):
+            self.n_walls = len(fp)
+            pts = []
+            for v in fp:
+                if not (isinstance(v, list) and len(v) == 2 and all(_is_number(c) for c in v)):
+                    pts = None
+                    break
+                pts.append((float(v[0]), float(v[1])))
+            if pts is not None:
+                self.check_footprint(pts)
+        h = room.get("height")
+        if _is_number(h) and not (math.isfinite(h) and h > 0):
+            self.add("/room/height", f"the room height must be a positive number of metres, "
+                     f"got {h}", "geometry")
+
+    def check_footprint(self, pts: list[tuple[float, float]]) -> None:
+        ptr = "/room/footprint"
+        if len(pts) < 3:
+            self.add(ptr, f"a footprint needs at least 3 vertices, got {len(pts)}", "geometry")
+            return
+        if not all(math.isfinite(c) for p in pts for c in p):
+            self.add(ptr, "footprint coordinates must be finite numbers", "geometry")
+            return
+        n = len(pts)
+        for i in range(n):
+            j = (i + 1) % n
+            if pts[i] == pts[j]:
+                extra = (" (do not repeat the first vertex at the end: the polygon closes "
+                         "itself)" if j == 0 else "")
+                self.add(f"{ptr}/{j}", f"vertices {i} and {j} coincide, so wall_{i} would have "
+                         f"zero length{extra}", "geometry")
+                return
+        area2 = sum(pts[i][0] * pts[(i + 1) % n][1] - pts[(i + 1) % n][0] * pts[i][1]
+                    for i in range(n))
+        scale = max(max(abs(c) for c in p) for p in pts) or 1.0
+        x0, y0 = pts[0]
+        ux, uy = max(((x - x0, y - y0) for x, y in pts), key=lambda d: abs(d[0]) + abs(d[1]))
+        if all(abs(ux * (y - y0) - uy * (x - x0)) <= 1e-9 * scale * scale for x, y in pts):
+            self.add(ptr, "the footprint encloses no area (its vertices are collinear)",
+                     "geometry")
+            return
+        crossing = _self_crossing(pts)
+        if crossing is not None:
+            a, b = crossing
+            self.add(ptr, f"the footprint is not a simple polygon: wall_{a} crosses wall_{b}",
+                     "geometry")
+            return
+        if abs(area2) <= 1e-9 * scale * scale:
+            self.add(ptr, "the footprint encloses no area", "geometry")
+            return
+        if area2 < 0:
+            self.add(ptr, "the footprint is clockwise: list the vertices counter-clockwise "
+                     "(seen from above), so that wall_i runs from vertex i to vertex i+1 with "
+                     "the room on its left", "geometry")
+
+    # --------------------------------------------------------------- objects
+    def check_objects(self, objects: Any) -> None:
+        if not isinstance(objects, list):
+            self.objects_known = False
+            return
+        for j, o in enumerate(objects):
+            if not isinstance(o, dict):
+                continue
+            base = f"/objects/{j}"
+            oid = o.get("id")
+            valid_id = isinstance(oid, str) and _IDENT.match(oid) is not None
+            if valid_id:
+                if is_room_element(oid):
+                    self.add(f"{base}/id", f"{oid!r} names a room element; choose another id",
+                             "reference")
+                    valid_id = False
+                elif oid in self.ids:
+                    self.add(f"{base}/id", f"duplicate object id {oid!r} (first declared at "
+                             f"/objects/{self.ids[oid]})", "reference")
+                    valid_id = False
+                else:
+                    self.ids[oid] = j
+            cands = self.check_category(base, o.get("category"))
+            if valid_id:
+                self.candidates[oid] = cands
+            self.check_scale(base, o.get("scale"))
+
+    def check_category(self, base: str, cat: Any) -> tuple[str, ...]:
+        if isinstance(cat, str):
+            items = [(f"{base}/category", cat)]
+        elif isinstance(cat, list):
+            items = [(f"{base}/category/{k}", c) for k, c in enumerate(cat) if isinstance(c, str)]
+        else:
+            return ()
+        known = []
+        for ptr, c in items:
+            if not c:
+                continue
+            if self.vocab is None or self.vocab.has_category(c):
+                known.append(c)
+                continue
+            self.add(ptr, f"unknown category {c!r}{suggest(c, self.vocab_names())}",
+                     "vocabulary")
+        return tuple(known)
+
+    def vocab_names(self) -> list[str]:
+        if self._vocab_names is None:
+            self._vocab_names = list(self.vocab.categories()) if self.vocab is not None else []
+        return self._vocab_names
+
+    def check_scale(self, base: str, scale: Any) -> None:
+        if not (isinstance(scale, list) and len(scale) == 2 and all(map(_is_number, scale))):
+            return
+        lo, hi = scale
+        if not (math.isfinite(lo) and math.isfinite(hi)) or lo <= 0 or hi <= 0:
+            self.add(f"{base}/scale", f"scale factors must be positive, got [{lo}, {hi}]",
+                     "parameter")
+        elif lo > hi:
+            self.add(f"{base}/scale", f"scale low {_fmt(lo)} is above high {_fmt(hi)}: write "
+                     "[low, high]", "parameter")
+
+    # ------------------------------------------------------------- relations
+    def check_relations(self, relations: Any) -> None:
+        supports: dict[str, list[tuple[int, str, str]]] = defaultdict(list)
+        unsure: set[str] = set()  # children of relations whose name is unreadable
+        edges: list[tuple[str, str, int]] = []
+        if isinstance(relations, list):
+            for i, r in enumerate(relations):
+                if isinstance(r, dict):
+                    self.check_relation(i, r, supports, unsure, edges)
+        for oid, j in self.ids.items():
+            sup = supports.get(oid)
+            if not sup:
+                if oid not in unsure:
+                    self.add(f"/objects/{j}", f"object {oid!r} has no supporter: give it exactly "
+                             f"one relation {_SUPPORT_NAMES} with child {oid!r} (e.g. ON floor)",
+                             "graph")
+            elif len(sup) > 1:
+                (i0, r0, p0), (i1, r1, p1) = sup[0], sup[1]
+                more = f" (and {len(sup) - 2} more)" if len(sup) > 2 else ""
+                self.add(f"/relations/{i1}", f"object {oid!r} has two supporters: /relations/"
+                         f"{i0} ({r0} {p0}) and /relations/{i1} ({r1} {p1}){more}; keep "
+                         "exactly one support relation per object", "graph")
+        for cycle, idx in _cycles(list(self.ids), edges):
+            path = " -> ".join(cycle + [cycle[0]])
+            where = ", ".join(f"/relations/{i}" for i in idx)
+            self.add(f"/relations/{max(idx)}", f"the relations form a cycle: {path} (each arrow "
+                     f"goes from child to parent, and a parent is placed before its children); "
+                     f"remove or reverse one of {where}", "graph")
+
+    def check_relation(self, i, r, supports, unsure, edges) -> None:
+        base = f"/relations/{i}"
+        name = r.get("relation")
+        spec: Relation | None = RELATIONS.get(name) if isinstance(name, str) else None
+        if isinstance(name, str) and spec is None:
+            self.add(f"{base}/relation", f"unknown relation {name!r}"
+                     f"{suggest(name.upper(), RELATIONS)} (one of: {', '.join(RELATIONS)})",
+                     "reference")
+        refs: dict[str, Ref] = {}
+        for side in ("child", "parent"):
+            text = r.get(side)
+            if not isinstance(text, str):
+                continue
+            try:
+                ref = parse_ref(text)
+            except RefSyntaxError as e:
+                self.add(f"{base}/{side}", str(e), "reference")
+                continue
+            if self.check_ref(f"{base}/{side}", side, ref, spec):
+                refs[side] = ref
+        child, parent = refs.get("child"), refs.get("parent")
+        if spec is None:
+            if child is not None and child.object in self.ids:
+                unsure.add(child.object)
+            return
+        self.check_params(base, r, spec)
+        if child is None or parent is None:
+            if spec.is_support and child is not None:
+                supports[child.object].append((i, name, str(r.get("parent"))))
+            return
+        if child.object == parent.object:
+            if spec.is_support:
+                supports[child.object].append((i, name, str(parent)))
+            self.add(base, f"{child.object!r} cannot be related to itself: child and parent "
+                     "must be different objects", "graph")
+            return
+        if parent.is_room_element:
+            self.check_room_parent(f"{base}/parent", spec, parent)
+        if spec.is_support:
+            supports[child.object].append((i, name, str(parent)))
+        if not parent.is_room_element:
+            edges.append((child.object, parent.object, i))
+
+    def check_ref(self, ptr: str, side: str, ref: Ref, spec: Relation | None) -> bool:
+        """Check one reference; True when it names a real object or room element."""
+        ok = True
+        obj = ref.object
+        if ref.surface is not None and ref.surface not in SURFACES:
+            self.add(ptr, f"unknown surface {ref.surface!r}{suggest(ref.surface, SURFACES)} "
+                     f"(surfaces: {', '.join(SURFACES)})", "reference")
+        if is_room_element(obj):
+            if side == "child":
+                self.add(ptr, f"room element {obj!r} cannot be a child: the room is fixed; "
+                         "objects are children of room elements (swap child and parent?)",
+                         "graph")
+                return False
+            if ref.part is not None:
+                self.add(ptr, f"room element {obj!r} has no parts: write {obj!r} without "
+                         f"':{ref.part}'", "reference")
+            k = wall_index(obj)
+            if k is not None and self.n_walls is not None and k >= self.n_walls:
+                self.add(ptr, f"there is no {obj!r}: the footprint has {self.n_walls} walls "
+                         f"(wall_0 … wall_{self.n_walls - 1})", "reference")
+                ok = False
+            face = ROOM_SURFACES["wall" if obj.startswith("wall") else obj]
+            if ref.surface in SURFACES and ref.surface != face:
+                self.add(ptr, f"room element {obj!r} offers only its {face!r} surface, not "
+                         f"{ref.surface!r}", "reference")
+            return ok
+        if obj not in self.ids:
+            if not self.objects_known:
+                return False
+            pool = list(self.ids) + ["floor", "ceiling", "wall"]
+            self.add(ptr, f"unknown object {obj!r}{suggest(obj, pool)}", "reference")
+            return False
+        if spec is not None and spec.is_object_level and (ref.part or ref.surface):
+            self.add(ptr, f"{spec.name} relates whole objects: write {obj!r} without a part or "
+                     "surface", "reference")
+        if ref.part is not None and self.vocab is not None:
+            for cat in self.candidates.get(obj, ()):
+                parts = tuple(self.vocab.parts(cat))
+                if ref.part not in parts:
+                    self.add(ptr, f"category {cat!r} has no part {ref.part!r}"
+                             f"{suggest(ref.part, parts)} (parts: {', '.join(parts)})",
+                             "vocabulary")
+        return ok
+
+    def check_room_parent(self, ptr: str, spec: Relation, parent: Ref) -> None:
+        obj = parent.object
+        key = _WALLS if obj.startswith("wall") else obj
+        allowed = ROOM_PARENTS[spec.name]
+        if key in allowed:
+            return
+        if allowed:
+            names = " or ".join("a wall" if a == _WALLS else a for a in sorted(allowed))
+            what = f"among room elements only {names} can be its parent"
+        else:
+            what = "its parent must be an object (a container), not a room element"
+        hint = _ROOM_HINT[key] if spec.is_support else ""
+        self.add(ptr, f"{spec.name} cannot use {obj!r} as parent: {what}"
+                 + (f"; {hint}" if hint else ""), "reference")
+
+    def check_params(self, base: str, r: dict[str, Any], spec: Relation) -> None:
+        allowed = spec.param_names
+        for key, value in r.items():
+            if key in ("relation", "child", "parent"):
+                continue
+            if key not in allowed:
+                if key in _ALL_PARAMS:
+                    takes = (f"allowed: {', '.join(allowed)}" if allowed
+                             else f"{spec.name} takes no parameters")
+                    self.add(f"{base}/{key}", f"parameter {key!r} is not allowed for "
+                             f"{spec.name} ({takes})", "parameter")
+                continue
+            msg = _param_problem(spec.param(key), value)
+            if msg:
+                self.add(f"{base}/{key}", msg, "parameter")
+        for p in spec.params:
+            if p.required and p.name not in r:
+                choices = f" (one of {', '.join(p.choices)})" if p.choices else ""
+                self.add(base, f"{spec.name} needs the parameter {p.name!r}{choices}",
+                         "parameter")
+
+
+_ALL_PARAMS = frozenset(p.name for r in RELATIONS.values() for p in r.params)
+
+
+def _param_problem(p: Param, value: Any) -> str | None:
+    unit = f" {p.unit}" if p.unit in ("m", "deg") else ""
+    bounds = f"[{_fmt(p.low)}, {_fmt(p.high)}]{unit}" if p.low is not None else ""
+    if p.type == "enum":
+        if not isinstance(value, str) or value not in p.choices:
+            hint = suggest(value, p.choices) if isinstance(value, str) else ""
+            return f"{p.name} must be one of {', '.join(p.choices)}, got {value!r}{hint}"
+        return None
+    if p.type == "range" and isinstance(value, list):
+        if len(value) != 2 or not all(map(_is_number, value)):
+            return f"{p.name} must be a number or [low, high], got {value!r}"
+        lo, hi = value
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            return f"{p.name} must be finite, got {value!r}"
+        if lo > hi:
+            return f"{p.name} low {_fmt(lo)} is above high {_fmt(hi)}: write [low, high]"
+        for v in (lo, hi):
+            if p.low is not None and not (p.low <= v <= p.high):
+                return f"{p.name} {_fmt(v)}{unit} is out of range {bounds}"
+        return None
+    if not _is_number(value):
+        form = "a number or [low, high]" if p.type == "range" else "a number"
+        return f"{p.name} must be {form}, got {value!r}"
+    if not math.isfinite(value):
+        return f"{p.name} must be finite, got {value!r}"
+    if p.low is not None and not (p.low <= value <= p.high):
+        return f"{p.name} {_fmt(value)}{unit} is out of range {bounds}"
+    return None
+
+
+def _self_crossing(pts: list[tuple[float, float]]) -> tuple[int, int] | None:
+    """The first pair of non-adjacent walls that intersect, else None."""
+    from shapely.geometry import LinearRing, LineString
+
+    n = len(pts)
+    if LinearRing(pts).is_simple:
+        return None
+    segs = [LineString([pts[i], pts[(i + 1) % n]]) for i in range(n)]
+    for a in range(n):
+        for b in range(a + 1, n):
+            adjacent = b == a + 1 or (a == 0 and b == n - 1)
+            inter = segs[a].intersection(segs[b])
+            if inter.is_empty:
+                continue
+            if adjacent and inter.geom_type == "Point":
+                continue
+            return a, b
+    return 0, 1
+
+
+def _cycles(nodes: list[str], edges: list[tuple[str, str, int]]):
+    """Yield (cycle, relation indices) for each strongly connected group of objects.
+
+    The cycle lists objects in order, each depending on the next; it starts at the group's
+    first declared object. Iterative Tarjan: linear in the graph size.
+    """
+    adj: dict[str, list[tuple[str, int]]] = defaultdict(list)
+    for c, p, i in edges:
+        adj[c].append((p, i))
+    order = {n: k for k, n in enumerate(nodes)}
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    on_stack: set[str] = set()
+    stack: list[str] = []
+    comps: list[list[str]] = []
+    counter = 0
+    for root in nodes:
+        if root in index:
+            continue
+        work = [(root, 0)]
+        while work:
+            v, k = work.pop()
+            if k == 0:
+                index[v] = low[v] = counter
+                counter += 1
+                stack.append(v)
+                on_stack.add(v)
+            nbrs = adj.get(v, ())
+            if k < len(nbrs):
+                work.append((v, k + 1))
+                w = nbrs[k][0]
+                if w not in index:
+                    work.append((w, 0))
+                elif w in on_stack:
+                    low[v] = min(low[v], index[w])
+                continue
+            if work:
+                u = work[-1][0]
+                low[u] = min(low[u], low[v])
+            if low[v] == index[v]:
+                comp = []
+                while True:
+                    w = stack.pop()
+                    on_stack.discard(w)
+                    comp.append(w)
+                    if w == v:
+                        break
+                if len(comp) > 1:
+                    comps.append(comp)
+    for comp in sorted(comps, key=lambda c: min(order[n] for n in c)):
+        members = set(comp)
+        start = min(comp, key=order.__getitem__)
+        # Breadth-first search for the shortest way back to start inside the group.
+        prev: dict[str, tuple[str, int]] = {}
+        frontier = [start]
+        found = None
+        while frontier and found is None:
+            nxt = []
+            for v in frontier:
+                for w, i in adj.get(v, ()):
+                    if w not in members:
+                        continue
+                    if w == start:
+                        found = (v, i)
+                        break
+                    if w not in prev:
+                        prev[w] = (v, i)
+                        nxt.append(w)
+                if found:
+                    break
+            frontier = nxt
+        v, i = found
+        path, idx = [], [i]
+        while v != start:
+            path.append(v)
+            v, i = prev[v]
+            idx.append(i)
+        path.append(start)
+        yield path[::-1], sorted(idx)
