@@ -14,8 +14,8 @@ from typing import Any
 import numpy as np
 import trimesh
 
-from ..geometry.surfaces import Surface, resolve_surfaces
 from ..geometry.shapes import Shape
+from ..geometry.surfaces import Surface, resolve_surfaces
 
 __all__ = ["Material", "Part", "InternalSurface", "Asset", "make_part", "finalize_asset"]
 

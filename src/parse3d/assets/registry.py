@@ -161,16 +161,19 @@ def generate(category: str, seed: int = 0, variant: str | None = None) -> Asset:
     The same (category, seed, variant) always gives the same asset.
     """
     cat = get(category)
-    if cat.generator is None:
+    # a procedural category with added real assets mixes them: odd seeds draw a loaded asset
+    if cat.generator is None or (cat.loaded_assets and int(seed) % 2 == 1):
         if not cat.loaded_assets:
             raise AssetError(f"category {category!r} has no generator and no loaded assets")
         from .cache import load_asset
 
-        path = cat.loaded_assets[int(seed) % len(cat.loaded_assets)]
-        return load_asset(path)
+        k = int(seed) if cat.generator is None else int(seed) // 2
+        return load_asset(cat.loaded_assets[k % len(cat.loaded_assets)])
     rng = category_rng(category, seed)
+    # the variant is always drawn, so naming the drawn variant gives the same asset (scene.json)
+    drawn = str(cat.variants[int(rng.integers(len(cat.variants)))])
     if variant is None:
-        variant = str(cat.variants[int(rng.integers(len(cat.variants)))])
+        variant = drawn
     elif variant not in cat.variants:
         raise AssetError(f"category {category!r} has no variant {variant!r} "
                          f"(variants: {', '.join(cat.variants)})")

@@ -17,7 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 import trimesh
-from shapely.geometry import MultiPolygon, Polygon, box as shapely_box
+from shapely.geometry import MultiPolygon, Polygon
+from shapely.geometry import box as shapely_box
 
 from ..relations import SURFACES
 
@@ -144,6 +145,31 @@ def surface_from_bbox(label: str, bounds: np.ndarray) -> Surface:
     return Surface(label, c, n, u, v, shapely_box(-hu, -hv, hu, hv), "bbox")
 
 
+def _patches(face_bin: np.ndarray, adjacency: np.ndarray, nbins: int) -> list[list[np.ndarray]]:
+    """Connected patches of faces sharing a bin, per bin, each ordered by its lowest face index
+    (bins < 0 are ignored)."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    out: list[list[np.ndarray]] = [[] for _ in range(nbins)]
+    idx = np.nonzero(face_bin >= 0)[0]
+    if len(idx) == 0:
+        return out
+    a, b = adjacency[:, 0], adjacency[:, 1]
+    keep = (face_bin[a] == face_bin[b]) & (face_bin[a] >= 0)
+    n = len(face_bin)
+    g = coo_matrix((np.ones(int(keep.sum()), bool), (a[keep], b[keep])), shape=(n, n))
+    _, comp = connected_components(g, directed=False)
+    comp = comp[idx]
+    order = np.argsort(comp, kind="stable")
+    cuts = np.nonzero(np.diff(comp[order]))[0] + 1
+    groups = np.split(idx[order], cuts)
+    groups.sort(key=lambda g_: int(g_[0]))
+    for g_ in groups:
+        out[int(face_bin[g_[0]])].append(g_)
+    return out
+
+
 def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -> dict[str, Surface]:
     """The six directional surfaces of a part mesh (in its own frame).
 
@@ -166,16 +192,21 @@ def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -
     areas = mesh.area_faces
     centers = mesh.triangles_center
     adjacency = mesh.face_adjacency
+    # The six directions are 90 degrees apart, so a face aligns with at most one of them: label
+    # every face once, then find the patches of all six labels in a single graph pass.
+    labels = list(SURFACES)
+    dirs = np.array([SURFACES[k] for k in labels], float)
+    align = normals @ dirs.T
+    best_dir = np.argmax(align, axis=1)
+    face_bin = np.where(align[np.arange(len(align)), best_dir] > _ALIGN_COS, best_dir, -1)
+    comps_by_bin = _patches(face_bin, adjacency, len(labels))
     out: dict[str, Surface] = {}
-    for label, nrm in SURFACES.items():
+    for li, (label, nrm) in enumerate(SURFACES.items()):
         n = np.array(nrm)
-        sel = (normals @ n) > _ALIGN_COS
-        if not sel.any():
+        comps = comps_by_bin[li]
+        if not comps:
             out[label] = surface_from_bbox(label, bounds)
             continue
-        idx = np.nonzero(sel)[0]
-        keep = sel[adjacency[:, 0]] & sel[adjacency[:, 1]]
-        comps = trimesh.graph.connected_components(adjacency[keep], nodes=idx, min_len=1)
         axis = int(np.argmax(np.abs(n)))
         face_coord = bounds[1, axis] if n[axis] > 0 else bounds[0, axis]
         extent = bounds[1, axis] - bounds[0, axis]

@@ -1,0 +1,194 @@
+"""Beds and bunk beds.
+
+A ``bed`` lies along Y with its ``headboard`` at -Y and its foot at +Y; the ``mattress`` top is
+where pillows go. Variants: a low upholstered ``platform``, a ``four_poster`` with posts, canopy
+rails and a footboard, and a ``storage`` bed whose base holds drawers at the foot.
+
+A ``bunk_bed`` lies along X with its open, accessible side at +Y: ``mattress_0`` (lower) and
+``mattress_1`` (upper), a guard rail around the upper bunk and a ``ladder`` at the front or at
+the +X end.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._bedbath_common import bar_handle, bevel_box, cushion, drawer_shape, post
+
+_MATTRESS_WIDTHS = (0.9, 1.2, 1.4, 1.6, 1.8)
+
+
+def _mattress(name: str, w: float, d: float, t: float, center, mat) -> Part:
+    shape = cushion(w, d, t, center, round_xy=0.05, round_z=min(0.04, t * 0.3))
+    return make_part(name, "mattress", shape, mat)
+
+
+def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: float) -> S.Shape:
+    """Four rails around a w x d opening whose tops are at ``z_top``, plus support slats."""
+    zc = z_top - rail_h / 2
+    rails = [
+        bevel_box((rail_t, d, rail_h), center=(-w / 2 - rail_t / 2, 0, zc), bevel=0.004),
+        bevel_box((rail_t, d, rail_h), center=(w / 2 + rail_t / 2, 0, zc), bevel=0.004),
+        bevel_box((w + 2 * rail_t, rail_t, rail_h), center=(0, d / 2 + rail_t / 2, zc), bevel=0.004),
+    ]
+    # the deck the mattress rests on, a little below the rail tops
+    rails.append(bevel_box((w, d, 0.02), center=(0, 0, z_top - 0.05)))
+    return S.union(rails)
+
+
+@register("bed", parts=("frame", "mattress", "headboard"),
+          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle"),
+          size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
+def bed(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
+    d = rng.uniform(1.95, 2.08)
+    t_mat = rng.uniform(0.18, 0.28)
+    wood = M.wood(rng)
+    cloth = M.fabric(rng)
+    ticking = M.solid((0.93, 0.92, 0.9), "fabric", roughness=0.95)
+    upholstered = variant == "platform" or (variant == "storage" and rng.random() < 0.5)
+    head_mat = cloth if upholstered else wood
+    rail_t = rng.uniform(0.04, 0.07)
+    parts: list[Part] = []
+    head_t = rng.uniform(0.06, 0.1)
+    y_head = -d / 2 - head_t / 2
+    if variant == "platform":
+        z_top = rng.uniform(0.16, 0.28)
+        plinth_h = z_top * 0.35
+        base = S.box((w + 2 * rail_t - 0.16, d - 0.16, plinth_h), center=(0, 0, plinth_h / 2))
+        deck = cushion(w + 2 * rail_t, d + rail_t, z_top - plinth_h,
+                       (0, rail_t / 2, (z_top + plinth_h) / 2), round_xy=0.03, round_z=0.015)
+        parts.append(make_part("frame", "frame", [base, deck], cloth))
+        head_h = rng.uniform(0.9, 1.25)
+        parts.append(make_part("headboard", "headboard", cushion(
+            w + 2 * rail_t + 0.04, head_t, head_h, (0, y_head, head_h / 2),
+            round_xy=0.02, round_z=0.04), head_mat))
+    elif variant == "four_poster":
+        z_top = rng.uniform(0.35, 0.45)
+        rail_h = rng.uniform(0.14, 0.2)
+        parts.append(make_part("frame", "frame", _bed_frame_rails(w, d, z_top, rail_h, rail_t),
+                               wood))
+        top = rng.uniform(1.9, 2.2)
+        ps = rng.uniform(0.07, 0.1)
+        turned = rng.random() < 0.5
+        xs = (-w / 2 - rail_t - ps / 2, w / 2 + rail_t + ps / 2)
+        ys = (-d / 2 - head_t - ps / 2, d / 2 + rail_t + ps / 2)
+        i = 0
+        for y in ys:
+            for x in xs:
+                shp = post(x, y, 0.0, top, ps, turned=turned)
+                parts.append(make_part(f"post_{i}", "post", shp, wood))
+                i += 1
+        cr = 0.035
+        canopy = [S.box((xs[1] - xs[0] + ps, cr * 1.6, cr), center=(0, y, top - cr / 2))
+                  for y in ys]
+        canopy += [S.box((cr * 1.6, ys[1] - ys[0] - ps, cr), center=(x, 0, top - cr / 2 - 0.002))
+                   for x in xs]
+        parts.append(make_part("canopy", "canopy", canopy, wood))
+        head_h = rng.uniform(1.0, 1.3)
+        head = bevel_box((xs[1] - xs[0] - ps, head_t, head_h - 0.1),
+                     center=(0, y_head, 0.1 + (head_h - 0.1) / 2), bevel=0.008)
+        parts.append(make_part("headboard", "headboard", head, wood))
+        foot_h = rng.uniform(0.55, 0.75)
+        foot = bevel_box((xs[1] - xs[0] - ps, 0.05, foot_h - 0.12),
+                     center=(0, ys[1], 0.12 + (foot_h - 0.12) / 2), bevel=0.006)
+        parts.append(make_part("footboard", "footboard", foot, wood))
+    else:  # storage
+        z_top = rng.uniform(0.38, 0.48)
+        base = bevel_box((w + 2 * rail_t, d + rail_t, z_top - 0.03),
+                     center=(0, rail_t / 2 - 0.025, (z_top - 0.03) / 2), bevel=0.006)
+        base_mat = cloth if upholstered else wood
+        parts.append(make_part("frame", "frame", base, base_mat))
+        y_face = d / 2 + rail_t - 0.025
+        n_dr = 2
+        dw = (w + 2 * rail_t - 0.12) / n_dr
+        dh = (z_top - 0.03) * 0.62
+        zc = 0.05 + dh / 2
+        for k in range(n_dr):
+            x = -(w + 2 * rail_t) / 2 + 0.06 + dw * (k + 0.5)
+            parts.append(make_part(f"drawer_{k}", "drawer", drawer_shape(
+                x, zc, dw - 0.02, dh, y_face + 0.02, 0.5), base_mat))
+            parts.append(make_part(f"handle_{k}", "handle",
+                                   bar_handle((x, y_face + 0.02, zc + dh * 0.25), 0.16),
+                                   M.metal(rng)))
+        head_h = rng.uniform(1.0, 1.3)
+        head = cushion(w + 2 * rail_t + 0.04, head_t, head_h, (0, y_head, head_h / 2),
+                       round_xy=0.02, round_z=0.03 if upholstered else 0.008)
+        parts.append(make_part("headboard", "headboard", head, head_mat))
+    parts.append(_mattress("mattress", w - 0.01, d - 0.02, t_mat,
+                           (0, 0, z_top - 0.04 + t_mat / 2), ticking))
+    return parts
+
+
+@register("bunk_bed", parts=("frame", "mattress", "ladder"),
+          extra_parts=("guard_rail", "end_panel", "drawer", "handle"),
+          size_range=(1.9, 2.4), density=300,
+          variants=("front_ladder", "end_ladder", "trundle"))
+def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
+    length = rng.uniform(1.95, 2.05)  # mattress, along X
+    width = rng.uniform(0.88, 1.0)  # mattress, along Y
+    t_mat = rng.uniform(0.12, 0.16)
+    wood = M.wood(rng) if rng.random() < 0.7 else M.metal(rng)
+    ps = rng.uniform(0.06, 0.08)
+    top = rng.uniform(1.6, 1.8)
+    z_low = rng.uniform(0.28, 0.36) if variant == "trundle" else rng.uniform(0.22, 0.32)
+    z_up = rng.uniform(1.15, 1.3)
+    rail_h, rail_t = 0.12, 0.035
+    xs = (-length / 2 - ps / 2, length / 2 + ps / 2)
+    ys = (-width / 2 - ps / 2, width / 2 + ps / 2)
+    frame = [post(x, y, 0.0, top, ps, bevel=0.006) for y in ys for x in xs]
+    for z in (z_low, z_up):
+        for y in ys:
+            frame.append(bevel_box((length, rail_t, rail_h), center=(0, y, z - rail_h / 2)))
+        frame.append(S.box((length, width, 0.018), center=(0, 0, z - 0.05)))
+    parts = [make_part("frame", "frame", frame, wood)]
+    for i, x in enumerate(xs):
+        panels = [bevel_box((0.03, width, h), center=(x, 0, z0 + h / 2), bevel=0.005)
+                  for z0, h in ((z_low - 0.05, 0.3), (z_up - 0.05, top - z_up - 0.02))]
+        parts.append(make_part(f"end_panel_{i}", "end_panel", panels, wood))
+    mat = M.solid((0.93, 0.92, 0.9), "fabric", roughness=0.95)
+    parts.append(_mattress("mattress_0", length - 0.01, width - 0.01, t_mat,
+                           (0, 0, z_low - 0.04 + t_mat / 2), mat))
+    parts.append(_mattress("mattress_1", length - 0.01, width - 0.01, t_mat,
+                           (0, 0, z_up - 0.04 + t_mat / 2), mat))
+    # guard rails of the upper bunk: full length at the back, leaving a gap for the ladder
+    g_z = z_up + rng.uniform(0.28, 0.34)
+    gap = 0.5
+    back = bevel_box((length, rail_t, 0.08), center=(0, ys[0], g_z))
+    front_len = length - gap if variant != "end_ladder" else length
+    x_front = xs[0] + ps / 2 + front_len / 2
+    front = S.box((front_len, rail_t, 0.08), center=(x_front, ys[1], g_z))
+    parts.append(make_part("guard_rail_0", "guard_rail", back, wood))
+    parts.append(make_part("guard_rail_1", "guard_rail", front, wood))
+    # ladder: two stiles and round rungs
+    rung_r = 0.015
+    z_rungs = np.linspace(z_low + 0.15, z_up + 0.2, 4)
+    if variant == "end_ladder":
+        lx = xs[1] + ps / 2 + 0.03
+        lw = min(width * 0.55, 0.45)
+        stiles = [bevel_box((0.035, 0.05, z_up + 0.3), center=(lx, y, (z_up + 0.3) / 2), bevel=0.004)
+                  for y in (-lw / 2, lw / 2)]
+        rungs = [S.cylinder(rung_r, lw, center=(lx, 0, z), axis=(0, 1, 0), sections=10)
+                 for z in z_rungs]
+    else:
+        ly = ys[1] + ps / 2 + 0.03
+        lw = 0.42
+        x0 = xs[1] - ps / 2 - gap / 2
+        stiles = [bevel_box((0.05, 0.035, z_up + 0.3), center=(x, ly, (z_up + 0.3) / 2), bevel=0.004)
+                  for x in (x0 - lw / 2, x0 + lw / 2)]
+        rungs = [S.cylinder(rung_r, lw, center=(x0, ly, z), axis=(1, 0, 0), sections=10)
+                 for z in z_rungs]
+    parts.append(make_part("ladder", "ladder", stiles + rungs, wood))
+    if variant == "trundle":
+        dh = z_low - 0.1
+        dw = length * 0.9
+        y_face = ys[1] - ps / 2 + 0.01
+        parts.append(make_part("drawer", "drawer", drawer_shape(
+            0, 0.025 + dh / 2, dw, dh, y_face, width * 0.85), wood))
+        parts.append(make_part("handle", "handle",
+                               bar_handle((0, y_face, 0.025 + dh * 0.6), 0.2), M.metal(rng)))
+    return parts

@@ -1,0 +1,109 @@
+"""Wall-mounted boards and shelves: whiteboards and wall shelves.
+
+Both hang on a wall: their flat back lies in the plane y = min y (−Y, pressed against the wall)
+and their face looks toward +Y.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._casework import white
+
+
+def _frame_loop(w: float, h: float, y: float, zc: float, r: float) -> S.Shape:
+    """A closed round-profile frame tracing a ``w x h`` rectangle in the plane y, centred at zc."""
+    hw, hh = w / 2, h / 2
+    path = [[-hw, y, zc - hh], [hw, y, zc - hh], [hw, y, zc + hh], [-hw, y, zc + hh]]
+    return S.tube(path, r, sections=8, closed=True)
+
+
+@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff"),
+          size_range=(0.6, 2.45), density=700, variants=("framed", "frameless", "wood_frame"), placement="wall")
+def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.6, 2.4)
+    h = float(np.clip(w * rng.uniform(0.5, 0.75), 0.45, 1.2))
+    t = 0.015
+    face = white(rng, "plastic") if variant != "frameless" else M.glass(rng)
+    alu = M.solid((0.78, 0.79, 0.8), "metal", 0.35, 0.9)
+    parts = []
+    gap = 0.02 if variant == "frameless" else 0.0  # glass boards stand off the wall on pins
+    y_board = gap + t / 2
+    zc = h / 2 + 0.06
+    if variant == "frameless":
+        parts.append(make_part("board", "board", S.box((w, t, h), center=(0, y_board, zc), bevel=0.003), face))
+        for i, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            x, z = sx * (w / 2 - 0.05), zc + sz * (h / 2 - 0.05)
+            pin = S.cylinder(0.012, gap + t + 0.01, center=(x, (gap + t + 0.01) / 2, z), axis=(0, 1, 0), sections=12)
+            parts.append(make_part(f"standoff_{i}", "standoff", pin, alu))
+    else:
+        parts.append(make_part("board", "board", S.box((w, t, h), center=(0, y_board, zc)), face))
+        if variant == "framed":
+            parts.append(make_part("frame", "frame", _frame_loop(w, h, y_board, zc, 0.012), alu))
+        else:
+            fw = 0.04
+            wood = M.wood(rng)
+            bars = [S.box((w + 2 * fw, 0.025, fw), center=(0, 0.0125, zc - h / 2 - fw / 2), bevel=0.004),
+                    S.box((w + 2 * fw, 0.025, fw), center=(0, 0.0125, zc + h / 2 + fw / 2), bevel=0.004),
+                    S.box((fw, 0.025, h), center=(-w / 2 - fw / 2, 0.0125, zc), bevel=0.004),
+                    S.box((fw, 0.025, h), center=(w / 2 + fw / 2, 0.0125, zc), bevel=0.004)]
+            parts.append(make_part("frame", "frame", bars, wood))
+    # the marker tray: a ledge with a lip along the bottom front edge
+    tw = min(w * 0.6, 0.8) if variant == "frameless" else w * 0.9
+    z_tray = zc - h / 2 - 0.02
+    y0 = gap + t if variant == "frameless" else 0.0
+    tray = [S.box((tw, 0.07, 0.008), center=(0, y0 + 0.035, z_tray)),
+            S.box((tw, 0.006, 0.022), center=(0, y0 + 0.067, z_tray + 0.011)),
+            S.box((tw, 0.006, 0.04), center=(0, y0 + 0.003, z_tray))]
+    parts.append(make_part("tray", "tray", tray, alu))
+    for i in range(int(rng.integers(0, 3))):
+        mx = -tw / 2 + 0.1 + i * 0.05
+        cap = M.solid([(0.1, 0.1, 0.1), (0.8, 0.15, 0.15), (0.15, 0.3, 0.8)][i], "plastic")
+        parts.append(make_part(f"marker_{i}", "marker",
+                               S.cylinder(0.009, 0.13, center=(mx, y0 + 0.035, z_tray + 0.004 + 0.009), axis=(1, 0, 0),
+                                          sections=10), cap))
+    return parts
+
+
+@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=(), size_range=(0.4, 1.6), density=600,
+          variants=("bracketed", "floating", "two_tier"), placement="wall")
+def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.45, 1.2)
+    d, t = rng.uniform(0.18, 0.3), rng.uniform(0.018, 0.035)
+    wood = M.wood(rng)
+    steel = M.metal(rng) if rng.random() < 0.7 else M.solid((0.08, 0.08, 0.09), "metal", 0.5, 0.6)
+    parts = []
+    if variant == "floating":
+        # a hidden cleat: a wall plate behind the board (its back is the wall plane)
+        zt = rng.uniform(0.05, 0.08)
+        parts.append(make_part("shelf", "shelf", S.box((w, d, t), center=(0, d / 2, zt + t / 2), bevel=0.002), wood))
+        parts.append(make_part("bracket", "bracket",
+                               S.box((w * 0.8, 0.006, zt + t * 0.6), center=(0, -0.003, (zt + t * 0.6) / 2)), steel))
+        return parts
+    levels = [0.2] if variant == "bracketed" else [0.2, 0.2 + rng.uniform(0.25, 0.35)]
+    if variant == "two_tier":
+        d = min(d, 0.22)
+    arm = d * 0.8
+    n_br = 2 if w < 1.0 else 3
+    xs = np.linspace(-w / 2 + 0.08, w / 2 - 0.08, n_br)
+    lh = rng.uniform(0.12, 0.16)
+    for k, zt in enumerate(levels):
+        name = "shelf" if len(levels) == 1 else f"shelf_{k}"
+        parts.append(make_part(name, "shelf", S.box((w, d, t), center=(0, d / 2, zt - t / 2), bevel=0.002), wood))
+    z_low = levels[0] - t
+    for i, x in enumerate(xs):
+        if variant == "two_tier":  # side standards carrying both boards
+            z_top = levels[-1] - t
+            shapes = [S.box((0.02, 0.02, z_top - z_low + 0.1), center=(x, 0.01, (z_low + z_top) / 2 - 0.05))]
+            for zt in levels:
+                shapes.append(S.box((0.015, arm, 0.02), center=(x, 0.02 + arm / 2, zt - t - 0.01)))
+        else:  # an L bracket with a diagonal brace swept as a tube
+            shapes = [S.box((0.02, 0.005, lh), center=(x, 0.0025, z_low - lh / 2)),
+                      S.box((0.02, arm, 0.005), center=(x, arm / 2, z_low - 0.0025)),
+                      S.tube([[x, 0.008, z_low - lh * 0.85], [x, arm * 0.85, z_low - 0.008]], 0.005, sections=8)]
+        parts.append(make_part(f"bracket_{i}", "bracket", shapes, steel))
+    return parts

@@ -1,0 +1,230 @@
+"""Containers: baskets, storage boxes, buckets, trash cans and laundry baskets.
+
+Every container is built so that :func:`parse3d.assets.internal.find_internal_surfaces` finds a
+support surface on its ``body`` (the inner floor): open containers wall it on every side,
+lidded ones (storage box, pedal bin) cover it with the ``lid`` part.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+from ._household import arc, open_box, ring, shell
+
+
+def _wicker(rng: np.random.Generator) -> Material:
+    rgb = [(0.72, 0.58, 0.38), (0.55, 0.40, 0.25), (0.82, 0.72, 0.55), (0.35, 0.25, 0.18)]
+    return Material(M.jitter(rng, rgb[int(rng.integers(len(rgb)))], 0.03), 0.9, 0.0, "wood")
+
+
+def _hoops(r_at, zs, *, bulge: float, width: float, sections: int = 20) -> list[S.Shape]:
+    """Horizontal hoops (woven bands) around a round wall whose outer radius at height z is
+    ``r_at(z)``; each hoop overlaps the wall by half its bulge so it reads as woven rows."""
+    out = []
+    for z in zs:
+        r0 = r_at(z) - bulge
+        out.append(ring([(r0, z - width / 2), (r0 + 2 * bulge, z - width / 4),
+                         (r0 + 2 * bulge, z + width / 4), (r0, z + width / 2)],
+                        sections=sections))
+    return out
+
+
+@register("basket", parts=("body",), extra_parts=("handle",), size_range=(0.18, 0.46),
+          density=500, variants=("round", "rectangular", "handled"), placement="surface")
+def basket(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = _wicker(rng)
+    parts = []
+    if variant == "rectangular":
+        w, d = rng.uniform(0.26, 0.38), rng.uniform(0.18, 0.26)
+        h = rng.uniform(0.1, 0.16)
+        t = 0.008
+        flare = rng.uniform(0.01, 0.02)
+        shapes = open_box(w, d, h, t, taper=flare)
+        # woven rows: thin bevelled slats proud of the front and back walls
+        for k, z in enumerate(np.linspace(0.025, h - 0.02, 3)):
+            g = flare * z / h
+            for sy in (1, -1):
+                shapes.append(S.box((w + 2 * g - 0.01, 0.006, 0.018),
+                                    center=(0, sy * (d / 2 + g + 0.001), z), bevel=0.002))
+            del k
+        parts.append(make_part("body", "body", shapes, mat))
+        top = h
+        span = d / 2 + flare - 0.01
+    else:
+        r = rng.uniform(0.1, 0.16)
+        h = r * rng.uniform(0.6, 0.9)
+        prof = [(r * 0.78, 0.0), (r, h)]
+
+        def r_at(z: float) -> float:
+            return float(np.interp(z, [0.0, h], [r * 0.78, r]))
+
+        body = shell(prof, 0.007, bottom=0.01, sections=16)
+        hoops = _hoops(r_at, np.linspace(h * 0.25, h * 0.65, 2), bulge=0.003, width=0.025,
+                       sections=16)
+        rim = ring([(r - 0.01, h - 0.004), (r + 0.004, h - 0.004), (r + 0.004, h + 0.006),
+                    (r - 0.01, h + 0.006)], sections=16)
+        parts.append(make_part("body", "body", [body, *hoops, rim], mat))
+        top = h + 0.006
+        span = r - 0.01
+    if variant == "handled" or (variant == "rectangular" and rng.random() < 0.5):
+        rise = rng.uniform(0.12, 0.18)
+        # the handle arches from the front rim to the back rim, straight over the middle
+        path = arc((0, 0, top - 0.03), span, 0.0, np.pi, n=9, u=(0, 1, 0),
+                   squash=(rise + 0.03) / span)
+        parts.append(make_part("handle", "handle", S.tube(path, 0.008, sections=8), mat))
+    return parts
+
+
+@register("storage_box", parts=("body", "lid"), extra_parts=("handle",), size_range=(0.2, 0.7),
+          density=700, variants=("plastic_bin", "wooden", "cardboard"), placement="surface")
+def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.3, 0.6)
+    d = w * rng.uniform(0.6, 0.8)
+    h = rng.uniform(0.16, 0.32)
+    if variant == "plastic_bin":
+        mat, lid_mat = M.plastic(rng), M.plastic(rng)
+        t, taper = 0.004, rng.uniform(0.01, 0.02)
+        walls = open_box(w, d, h, t, taper=taper)
+        tw, td = w + 2 * taper, d + 2 * taper
+    else:
+        mat = M.wood(rng) if variant == "wooden" else M.paper(rng)
+        lid_mat = mat
+        t = 0.012 if variant == "wooden" else 0.004
+        walls = open_box(w, d, h, t, bevel=0.002 if variant == "wooden" else 0.0)
+        tw, td = w, d
+    parts = [make_part("body", "body", walls, mat)]
+    # the lid overhangs the walls a little and drops a skirt around them
+    lt = 0.008 if variant != "cardboard" else 0.004
+    ov = 0.004
+    lid = [S.box((tw + 2 * ov, td + 2 * ov, lt), center=(0, 0, h + lt / 2), bevel=lt / 4)]
+    skirt = 0.025 if variant != "wooden" else 0.0
+    if skirt:
+        st = 0.003
+        lid += [S.box((tw + 2 * ov, st, skirt), center=(0, s * (td / 2 + ov - st / 2), h - skirt / 2))
+                for s in (1, -1)]
+        lid += [S.box((st, td + 2 * ov - 2 * st, skirt),
+                      center=(s * (tw / 2 + ov - st / 2), 0, h - skirt / 2)) for s in (1, -1)]
+    parts.append(make_part("lid", "lid", lid, lid_mat))
+    if variant != "cardboard":
+        # a grip on each side (x), below the lid
+        for i, sx in enumerate((1, -1)):
+            x = sx * (tw / 2 + (ov + 0.003 if skirt else 0.0))
+            zg = h - skirt - 0.03
+            grip = S.box((0.02, min(0.12, d * 0.4), 0.014), center=(x + sx * 0.008, 0, zg), bevel=0.003)
+            parts.append(make_part(f"handle_{i}", "handle", grip, lid_mat if variant == "plastic_bin" else M.metal(rng)))
+    return parts
+
+
+@register("bucket", parts=("body", "handle"), extra_parts=("grip",), size_range=(0.22, 0.42),
+          density=900, variants=("metal", "plastic"), placement="surface")
+def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.12, 0.15)
+    h = rng.uniform(0.24, 0.3)
+    rb = r * rng.uniform(0.75, 0.85)
+    mat = M.metal(rng) if variant == "metal" else M.plastic(rng)
+    t = 0.002 if variant == "metal" else 0.004
+
+    def r_at(z: float) -> float:
+        return float(np.interp(z, [0.0, h], [rb, r]))
+
+    shapes = [shell([(rb, 0.0), (r, h)], t, bottom=0.004, sections=20)]
+    # a rolled rim and, on metal buckets, pressed hoops
+    shapes.append(ring([(r - t, h - 0.008), (r + 0.004, h - 0.006), (r + 0.004, h + 0.002),
+                        (r - t, h + 0.002)], sections=20))
+    if variant == "metal":
+        shapes += _hoops(r_at, [h * 0.45], bulge=0.002, width=0.014)
+    ear = [S.box((0.012, 0.03, 0.03), center=(s * (r_at(h - 0.03) + 0.004), 0, h - 0.03))
+           for s in (1, -1)]
+    parts = [make_part("body", "body", shapes + ear, mat)]
+    # the wire handle pivots on the ears and has fallen towards the back (-Y), so the opening
+    # stays free
+    tilt = np.deg2rad(rng.uniform(40, 70))
+    span = r_at(h - 0.03) + 0.012
+    up = np.array([0.0, -np.sin(tilt), np.cos(tilt)])
+    path = arc((0, 0, h - 0.03), span, 0.0, np.pi, n=11, u=(1, 0, 0), v=up, squash=0.9)
+    parts.append(make_part("handle", "handle", S.tube(path, 0.0025, sections=8), M.metal(rng)))
+    mid = path[len(path) // 2]
+    grip = S.cylinder(0.008, 0.1, center=mid, axis=(1, 0, 0), sections=10)
+    parts.append(make_part("grip", "grip", grip, M.plastic(rng)))
+    return parts
+
+
+@register("trash_can", parts=("body",), extra_parts=("lid", "pedal"), size_range=(0.28, 0.8),
+          density=900, variants=("round", "square", "pedal"), placement="floor")
+def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = M.metal(rng) if variant == "pedal" or rng.random() < 0.4 else M.plastic(rng)
+    parts = []
+    if variant == "square":
+        w = rng.uniform(0.26, 0.34)
+        h = rng.uniform(0.4, 0.65)
+        d = w * rng.uniform(0.7, 0.9)
+        taper = rng.uniform(0.01, 0.025)
+        body = open_box(w, d, h, 0.004, bottom=0.008, taper=taper)
+        parts.append(make_part("body", "body", body, mat))
+        return parts
+    r = rng.uniform(0.13, 0.18)
+    h = rng.uniform(0.35, 0.6) if variant == "round" else rng.uniform(0.4, 0.65)
+    rb = r * (rng.uniform(0.8, 0.9) if variant == "round" else 1.0)
+    body = [shell([(rb, 0.0), (r, h)], 0.004, bottom=0.008, sections=20)]
+    body.append(ring([(r - 0.004, h - 0.012), (r + 0.004, h - 0.01), (r + 0.004, h),
+                      (r - 0.004, h)], sections=20))
+    parts.append(make_part("body", "body", body, mat))
+    if variant == "pedal":
+        lid = S.lathe([(r + 0.006, h), (r + 0.006, h + 0.008), (r * 0.9, h + r * 0.2),
+                       (r * 0.3, h + r * 0.27)], sections=28)
+        parts.append(make_part("lid", "lid", lid, mat))
+        pedal = S.box((0.1, 0.06, 0.02), center=(0, r + 0.025, 0.03), bevel=0.004)
+        parts.append(make_part("pedal", "pedal", pedal, M.plastic(rng)))
+    return parts
+
+
+@register("laundry_basket", parts=("body",), extra_parts=("handle",), size_range=(0.35, 0.72),
+          density=900, variants=("rectangular", "round"), placement="floor")
+def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = M.plastic(rng) if rng.random() < 0.6 else _wicker(rng)
+    parts = []
+    if variant == "rectangular":
+        w, d = rng.uniform(0.5, 0.62), rng.uniform(0.36, 0.44)
+        h = rng.uniform(0.25, 0.32)
+        t = 0.006
+        slot_w, slot_h = 0.11, 0.035
+        z_slot = h - 0.025 - slot_h / 2
+        shapes = [S.box((w, t, h), center=(0, s * (d / 2 - t / 2), h / 2), bevel=0.002)
+                  for s in (1, -1)]
+        shapes.append(S.box((w - 2 * t, d - 2 * t, t), center=(0, 0, t / 2)))
+        # the side walls (x) have a hand-hold slot cut through them near the top
+        inner_d = d - 2 * t
+        for s in (1, -1):
+            x = s * (w / 2 - t / 2)
+            z_lo, z_hi = z_slot - slot_h / 2, z_slot + slot_h / 2
+            side = (inner_d - slot_w) / 2
+            for sy in (1, -1):
+                shapes.append(S.box((t, side, h), center=(x, sy * (slot_w + side) / 2, h / 2)))
+            # below the slot: chamfered so the slot's sill is no shelf of its own
+            shapes.append(S.box((t, slot_w, z_lo), center=(x, 0, z_lo / 2), bevel=0.002))
+            shapes.append(S.box((t, slot_w, h - z_hi), center=(x, 0, (h + z_hi) / 2)))
+        # moulded vertical ribs on the front and back
+        for s in (1, -1):
+            for x in np.linspace(-w * 0.38, w * 0.38, 6):
+                shapes.append(S.box((0.014, 0.004, h * 0.7), center=(x, s * (d / 2 + 0.002), h * 0.45)))
+        parts.append(make_part("body", "body", shapes, mat))
+        return parts
+    r = rng.uniform(0.2, 0.26)
+    h = rng.uniform(0.3, 0.45)
+    rb = r * 0.88
+
+    def r_at(z: float) -> float:
+        return float(np.interp(z, [0.0, h], [rb, r]))
+
+    body = [shell([(rb, 0.0), (r, h)], 0.006, bottom=0.008, sections=20)]
+    body += _hoops(r_at, np.linspace(h * 0.25, h * 0.7, 2), bulge=0.003, width=0.03, sections=20)
+    parts.append(make_part("body", "body", body, mat))
+    for i, sx in enumerate((1, -1)):
+        grip = S.tube(arc((sx * (r - 0.002), 0, h - 0.05), 0.06, 0.0, np.pi, n=7,
+                          u=(0, 1, 0), v=(sx, 0, 0), squash=0.45), 0.008, sections=8)
+        parts.append(make_part(f"handle_{i}", "handle", grip, mat))
+    return parts

@@ -1,0 +1,280 @@
+"""Wall decor and plants: picture frames, mirrors, wall clocks and potted plants.
+
+Wall items are built with their flat back on the plane y = 0 and their face towards +Y, so the
+back (−Y) can be pressed against a wall. Frames are four mitred bars with a chamfered front;
+round rims are revolved rings (:func:`parse3d.assets.generators.lamps.shell`) turned to face +Y.
+Pictures, mirror glass and clock dials fill most of their frame's depth, so no ledge inside a
+frame is mistaken for an internal support surface.
+
+Potted plants are one category with one placement, ``floor``: the ``bush`` and ``leafy``
+variants (0.3–0.8 m) also suit a low table, the ``tree`` variant (1.1–1.6 m) only the floor.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from ...geometry.frames import make_transform, rot_x, rot_y, rot_z
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+from .lamps import shell
+
+#: Turns a shape built along +Z (from z = 0) so that it points along +Y (from y = 0).
+_FACE_FRONT = rot_x(-np.pi / 2)
+
+
+def _mitred_frame(w: float, h: float, bar: float, depth: float, chamfer: float,
+                  backing: float = 0.0) -> list[S.Shape]:
+    """Four mitred bars of a ``w`` x ``h`` frame in the XZ plane (centred at x = 0, z = h / 2),
+    from y = ``backing`` to y = ``depth`` (front), each bar's front chamfered by ``chamfer``;
+    with ``backing`` > 0 a full board closes the back from y = 0, so the whole back is one flat
+    patch (what is pressed against the wall)."""
+    def rect(hw, hh):
+        return np.array([(-hw, -hh), (hw, -hh), (hw, hh), (-hw, hh)]) + (0, h / 2)
+
+    outer, inner = rect(w / 2, h / 2), rect(w / 2 - bar, h / 2 - bar)
+    outer_f = rect(w / 2 - chamfer, h / 2 - chamfer)
+    inner_f = rect(w / 2 - bar + chamfer, h / 2 - bar + chamfer)
+    bars = []
+    for i in range(4):
+        j = (i + 1) % 4
+        back = np.array([outer[i], outer[j], inner[j], inner[i]])
+        front = np.array([outer_f[i], outer_f[j], inner_f[j], inner_f[i]])
+        pts = np.vstack([np.c_[back[:, 0], np.full(4, backing), back[:, 1]],
+                         np.c_[front[:, 0], np.full(4, depth), front[:, 1]]])
+        bars.append(S.hull(pts))
+    if backing > 0:
+        bars.append(S.box((w, backing, h), center=(0, backing / 2, h / 2)))
+    return bars
+
+
+def _ring(r_out: float, width: float, depth: float, *, cz: float = 0.0, stretch: float = 1.0,
+          sections: int = 28) -> S.Shape:
+    """A flat ring facing +Y, back on y = 0, centred at (0, cz) in XZ; ``stretch`` scales it
+    along z (an oval)."""
+    lin = np.diag([1.0, 1.0, stretch]) @ _FACE_FRONT
+    return shell([(r_out, 0.0), (r_out, depth)], width, sections=sections, linear=lin,
+                 offset=(0, 0, cz))
+
+
+def _disc(r: float, y0: float, y1: float, *, cz: float = 0.0, stretch: float = 1.0,
+          sections: int = 28) -> S.Shape:
+    """A disc facing +Y between y0 and y1, centred at (0, cz) in XZ, scaled by ``stretch``
+    along z."""
+    a = np.linspace(0, 2 * np.pi, sections, endpoint=False)
+    xz = np.c_[r * np.cos(a), cz + stretch * r * np.sin(a)]
+    return S.hull(np.vstack([np.c_[xz[:, 0], np.full(sections, y), xz[:, 1]] for y in (y0, y1)]))
+
+
+def _frame_material(rng) -> Material:
+    r = rng.random()
+    if r < 0.55:
+        return M.wood(rng)
+    if r < 0.8:
+        return M.metal(rng)
+    return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
+
+
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat",), size_range=(0.2, 1.2),
+          density=500, variants=("landscape", "portrait", "square"), placement="wall")
+def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
+    long = rng.uniform(0.25, 1.1)
+    ratio = 1.0 if variant == "square" else rng.uniform(1.25, 1.6)
+    w, h = (long, long / ratio) if variant == "landscape" else (long / ratio, long)
+    bar = min(w, h) * rng.uniform(0.06, 0.12)
+    depth = rng.uniform(0.018, 0.035)
+    bk = rng.uniform(0.003, 0.005)
+    parts = [make_part("frame", "frame", _mitred_frame(w, h, bar, depth, bar * 0.25, bk),
+                       _frame_material(rng))]
+    iw, ih = w - 2 * bar, h - 2 * bar
+    # the canvas (and the mat in front of it) fill most of the frame depth in front of the
+    # backing board, so no ledge is left inside the frame
+    t = (depth - bk) * rng.uniform(0.65, 0.8)
+    if rng.random() < 0.5:  # a passe-partout board around a smaller picture
+        m = min(iw, ih) * rng.uniform(0.1, 0.18)
+        mat_c = M.solid(M.jitter(rng, (0.95, 0.94, 0.9), 0.01), "paper", 0.9)
+        yc = bk + t / 2
+        board = [S.box((iw, t, m), center=(0, yc, bar + m / 2)),
+                 S.box((iw, t, m), center=(0, yc, h - bar - m / 2)),
+                 S.box((m, t, ih - 2 * m), center=(-iw / 2 + m / 2, yc, h / 2)),
+                 S.box((m, t, ih - 2 * m), center=(iw / 2 - m / 2, yc, h / 2))]
+        parts.append(make_part("mat", "mat", board, mat_c))
+        iw, ih = iw - 2 * m, ih - 2 * m
+    canvas = S.box((iw, t * 0.9, ih), center=(0, bk + t * 0.45, h / 2))
+    parts.append(make_part("canvas", "canvas", canvas, M.paper(rng)))
+    return parts
+
+
+def _mirror_glass() -> Material:
+    return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
+
+
+@register("mirror", parts=("frame", "glass"), size_range=(0.3, 1.8), density=1200,
+          variants=("rectangular", "round", "oval"), placement="wall")
+def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
+    depth = rng.uniform(0.02, 0.04)
+    # the glass part is the mirror glass on its backing board, nearly flush with the frame
+    t_glass = depth * rng.uniform(0.65, 0.8)
+    mat = _frame_material(rng)
+    if variant == "rectangular":
+        w = rng.uniform(0.4, 0.8)
+        h = w * rng.uniform(1.2, 2.2) if rng.random() < 0.8 else w * rng.uniform(0.6, 0.8)
+        bar = rng.uniform(0.03, 0.07)
+        bk = 0.004
+        frame = _mitred_frame(w, h, bar, depth, bar * 0.3, bk)
+        glass = S.box((w - 2 * bar, t_glass - bk, h - 2 * bar), center=(0, (t_glass + bk) / 2, h / 2))
+        return [make_part("frame", "frame", frame, mat), make_part("glass", "glass", glass,
+                                                                   _mirror_glass())]
+    r = rng.uniform(0.2, 0.45)
+    width = r * rng.uniform(0.08, 0.18)
+    k = rng.uniform(1.3, 1.7) if variant == "oval" else 1.0
+    frame = _ring(r, width, depth, stretch=k)
+    glass = _disc(r - width, 0.0, t_glass, stretch=k)
+    return [make_part("frame", "frame", frame, mat), make_part("glass", "glass", glass,
+                                                               _mirror_glass())]
+
+
+def _hands(rng, r_face: float, y: float, cz: float) -> Part:
+    """Hour, minute and (sometimes) second hands on a face of radius ``r_face`` whose front is
+    at ``y``, centred at (0, cz); angles run clockwise as seen from the front."""
+    dark = M.solid((0.08, 0.08, 0.08), "metal", 0.4, 0.6)
+    specs = [(0.5, 0.06, 0.002), (0.78, 0.04, 0.002)]
+    if rng.random() < 0.6:
+        specs.append((0.88, 0.012, 0.0015))
+    hands = []
+    for k, (length, width, thick) in enumerate(specs):
+        theta = rng.uniform(0, 2 * np.pi)
+        L = r_face * length
+        tail = L * 0.15
+        d = np.array([-np.sin(theta), np.cos(theta)])  # viewer's clockwise is towards -X
+        c = (L / 2 - tail) * d
+        yk = y + thick / 2 + k * 0.0025
+        hands.append(S.box((max(width * r_face, 0.002), thick, L), center=(c[0], yk, cz + c[1]),
+                           R=rot_y(-theta)))
+    hands.append(_disc(0.008, y, y + 0.003 * len(specs) + 0.002, cz=cz, sections=12))
+    return make_part("hands", "hand", hands, dark)
+
+
+def _ticks(r: float, y: float, cz: float) -> Part:
+    marks = []
+    for k in range(12):
+        a = 2 * np.pi * k / 12
+        L = r * (0.12 if k % 3 == 0 else 0.07)
+        c = (r * 0.9 - L / 2) * np.array([-np.sin(a), np.cos(a)])
+        marks.append(S.box((0.006 if k % 3 == 0 else 0.004, 0.0015, L),
+                           center=(c[0], y + 0.00075, cz + c[1]), R=rot_y(-a)))
+    return make_part("markers", "marker", marks, M.solid((0.1, 0.1, 0.1), "plastic"))
+
+
+@register("wall_clock", parts=("body", "face"), extra_parts=("hand", "marker"),
+          size_range=(0.2, 0.6), density=600, variants=("round", "square"), placement="wall")
+def wall_clock(rng: np.random.Generator, variant: str) -> list[Part]:
+    depth = rng.uniform(0.035, 0.06)
+    back = rng.uniform(0.005, 0.01)
+    rim = rng.uniform(0.01, 0.03)
+    face_mat = M.solid(M.jitter(rng, (0.96, 0.95, 0.92), 0.02), "paper", 0.7)
+    body_mat = _frame_material(rng)
+    # the dial plate fills most of the body's depth (no ledge inside the rim), hands in front
+    face_y = depth * rng.uniform(0.6, 0.7)
+    if variant == "round":
+        r = rng.uniform(0.12, 0.25)
+        ring = shell([(r, back), (r, depth)], rim, sections=28,
+                     linear=_FACE_FRONT, offset=(0, 0, r))
+        body = [ring, _disc(r, 0.0, back, cz=r)]
+        face = _disc(r - rim, back, face_y, cz=r)
+        r_face, cz = r - rim, r
+    else:
+        a = rng.uniform(0.22, 0.45)
+        body = _mitred_frame(a, a, rim, depth, rim * 0.2, back)
+        face = S.box((a - 2 * rim, face_y - back, a - 2 * rim), center=(0, (face_y + back) / 2, a / 2))
+        r_face, cz = a / 2 - rim, a / 2
+    parts = [make_part("body", "body", body, body_mat), make_part("face", "face", face, face_mat),
+             _ticks(r_face, face_y, cz), _hands(rng, r_face, face_y, cz)]
+    return parts
+
+
+def _soil() -> Material:
+    return Material((0.24, 0.17, 0.11, 1.0), 0.95, 0.0, "plant")
+
+
+def _pot(rng, r_top: float, h: float) -> tuple[list[Part], float, float]:
+    """A plant pot with soil; returns its parts, the soil's top z and its radius."""
+    t = rng.uniform(0.008, 0.014)
+    mat = M.ceramic(rng) if rng.random() < 0.6 else M.solid(M.jitter(rng, (0.72, 0.38, 0.24)),
+                                                            "ceramic", 0.8)
+    z_soil = h - rng.uniform(0.025, 0.045)
+    if rng.random() < 0.7:
+        r_bot = r_top * rng.uniform(0.7, 0.85)
+        h_rim = h * rng.uniform(0.1, 0.18)
+        r_rim = r_top - h_rim * (r_top - r_bot) / h
+        wall = shell([(r_bot, 0.0), (r_rim, h - h_rim)], t, sections=16)
+        lip = shell([(r_top, h - h_rim), (r_top, h)], r_top - r_rim + t, sections=16)
+        floor = S.cylinder(r_bot - t * 0.5, t, center=(0, 0, t / 2), sections=16)
+        pot = [wall, lip, floor]
+        r_in = r_bot + (r_rim - r_bot) * min(z_soil / (h - h_rim), 1.0) - t - 0.002
+        soil = S.lathe([(r_bot - t - 0.002, t), (r_in, z_soil)], sections=16)
+    else:  # square planter
+        a = r_top * 2
+        pot = [S.box((a, t, h), center=(0, a / 2 - t / 2, h / 2), bevel=0.002),
+               S.box((a, t, h), center=(0, -a / 2 + t / 2, h / 2), bevel=0.002),
+               S.box((t, a - 2 * t, h), center=(a / 2 - t / 2, 0, h / 2)),
+               S.box((t, a - 2 * t, h), center=(-a / 2 + t / 2, 0, h / 2)),
+               S.box((a - 2 * t, a - 2 * t, t), center=(0, 0, t / 2))]
+        r_in = a / 2 - t
+        soil = S.box((a - 2 * t, a - 2 * t, z_soil - t), center=(0, 0, (z_soil + t) / 2))
+    return ([make_part("pot", "pot", pot, mat), make_part("soil", "soil", soil, _soil())],
+            z_soil, r_in)
+
+
+def _blobs(rng, n: int, center, spread, size) -> list[S.Shape]:
+    """``n`` overlapping ellipsoids scattered around ``center`` (3,) within ``spread`` (3,)."""
+    out = []
+    for _ in range(n):
+        c = np.asarray(center) + rng.uniform(-1, 1, 3) * spread
+        r = size * rng.uniform(0.7, 1.2, 3) * (1, 1, 0.8)
+        out.append(S.ellipsoid(r, center=c, subdivisions=1))
+    return out
+
+
+@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk"), size_range=(0.3, 1.8),
+          density=400, variants=("bush", "tree", "leafy"))
+def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
+    green = M.plant(rng)
+    if variant == "tree":
+        r_top, h_pot = rng.uniform(0.16, 0.24), rng.uniform(0.28, 0.42)
+        parts, z0, r_in = _pot(rng, r_top, h_pot)
+        top = rng.uniform(1.1, 1.6)
+        crown = rng.uniform(0.3, 0.45)
+        bend = rng.uniform(-0.04, 0.04, 2)
+        zs = np.linspace(z0 - 0.02, top - crown * 1.1, 5)
+        path = np.c_[bend[0] * np.sin(np.linspace(0, np.pi, 5)), bend[1] * np.sin(np.linspace(0, np.pi, 5)), zs]
+        trunk = S.tube(path, rng.uniform(0.015, 0.025), sections=8)
+        leaves = _blobs(rng, int(rng.integers(7, 11)), path[-1] + (0, 0, crown * 0.45),
+                        (crown * 0.55, crown * 0.55, crown * 0.35), crown * 0.5)
+        parts.append(make_part("trunk", "trunk", trunk, M.solid(M.jitter(rng, (0.38, 0.27, 0.18)),
+                                                                "wood", 0.8)))
+    elif variant == "bush":
+        r_top, h_pot = rng.uniform(0.1, 0.2), rng.uniform(0.14, 0.3)
+        parts, z0, r_in = _pot(rng, r_top, h_pot)
+        size = r_top * rng.uniform(0.7, 1.0)
+        leaves = _blobs(rng, int(rng.integers(6, 10)), (0, 0, z0 + size * 0.9),
+                        (r_top * 0.8, r_top * 0.8, size * 0.5), size * 0.6)
+    else:
+        r_top, h_pot = rng.uniform(0.09, 0.17), rng.uniform(0.15, 0.3)
+        parts, z0, r_in = _pot(rng, r_top, h_pot)
+        n = int(rng.integers(7, 12))
+        leaves = []
+        for k in range(n):
+            L = rng.uniform(0.25, 0.7)
+            tilt = rng.uniform(0.05, 0.45)
+            yaw = 2 * np.pi * k / n + rng.uniform(-0.3, 0.3)
+            leaf = S.ellipsoid((rng.uniform(0.025, 0.045), 0.006, L / 2), center=(0, 0, L / 2),
+                               subdivisions=1)
+            base = np.array([np.cos(yaw), np.sin(yaw)]) * r_in * 0.4
+            T = make_transform(rot_z(yaw) @ rot_y(tilt), (base[0], base[1], z0 - 0.03))
+            leaves.append(leaf.apply(T))
+    parts.append(make_part("plant", "plant", leaves, green))
+    return parts
+

@@ -1,0 +1,252 @@
+"""Electronics: televisions, monitors, laptops, keyboards, speakers and remote controls.
+
+Screens and speaker drivers face +Y. Displays are a bevelled housing (``body``) with a glass
+``screen`` panel standing 1–2 mm proud of it, so the screen's front surface is the part's +Y face.
+
+Speakers are registered with placement ``floor``: a bookshelf speaker is at home on the floor or a
+shelf, a floor-standing one only on the floor.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from ...geometry.frames import rot_x, rot_z
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+
+
+def _screen_glass() -> Material:
+    return Material((0.03, 0.035, 0.045, 1.0), 0.08, 0.0, "glass")
+
+
+def _housing(rng) -> Material:
+    c = [(0.08, 0.08, 0.09), (0.15, 0.15, 0.16), (0.75, 0.76, 0.78), (0.93, 0.93, 0.93)]
+    return M.solid(M.jitter(rng, c[int(rng.integers(len(c)))], 0.01), "plastic", 0.45)
+
+
+def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> list[Part]:
+    """A housing of ``w`` x ``depth`` x ``h`` whose bottom is at ``z0`` (front face at
+    y = depth / 2) with a rear bump, and its screen panel."""
+    mat = _housing(rng)
+    body = [S.box((w, depth, h), center=(0, 0, z0 + h / 2), bevel=min(0.004, depth / 4))]
+    bump_d = depth * rng.uniform(0.4, 1.0)
+    body.append(S.box((w * rng.uniform(0.4, 0.7), bump_d, h * rng.uniform(0.4, 0.6)),
+                      center=(0, -depth / 2 - bump_d / 2, z0 + h * 0.45), bevel=0.004))
+    screen = S.box((w - 2 * bezel, 0.002, h - 2 * bezel), center=(0, depth / 2 + 0.001, z0 + h / 2))
+    return [make_part("body", "body", body, mat), make_part("screen", "screen", screen, _screen_glass())]
+
+
+@register("tv", parts=("screen", "stand"), extra_parts=("body",), size_range=(0.7, 1.75),
+          density=350, variants=("feet", "pedestal"))
+def tv(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.72, 1.65)
+    bezel = rng.uniform(0.006, 0.015)
+    h = w * 9 / 16 + 2 * bezel
+    depth = rng.uniform(0.025, 0.05)
+    metal = M.metal(rng) if rng.random() < 0.5 else _housing(rng)
+    if variant == "feet":
+        z0 = rng.uniform(0.04, 0.09)
+        reach = rng.uniform(0.16, 0.26)
+        inset = rng.uniform(0.06, 0.22) * w
+        parts = _display(rng, w, h, depth, z0, bezel)
+        for k, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - inset)
+            top = [(x + dx, dy, z0 + 0.03) for dx in (-0.02, 0.02) for dy in (-0.01, 0.01)]
+            bot = [(x + dx, dy, z) for dx in (-0.02, 0.02) for dy in (-reach / 2, reach / 2)
+                   for z in (0.0, 0.012)]
+            parts.append(make_part(f"stand_{k}", "stand", S.hull(np.array(top + bot)), metal))
+        return parts
+    z0 = rng.uniform(0.06, 0.12)
+    parts = _display(rng, w, h, depth, z0, bezel)
+    plate_w, plate_d, plate_t = w * rng.uniform(0.28, 0.42), rng.uniform(0.2, 0.28), rng.uniform(0.012, 0.022)
+    neck_w = rng.uniform(0.06, 0.1)
+    # the neck's top is buried in the housing; the plate is centred under the neck
+    neck = S.box((neck_w, 0.03, z0 + 0.08 - plate_t), center=(0, -0.01, (z0 + 0.08 + plate_t) / 2))
+    plate = S.box((plate_w, plate_d, plate_t), center=(0, -0.01, plate_t / 2), bevel=0.004)
+    parts.append(make_part("stand", "stand", [neck, plate], metal))
+    return parts
+
+
+@register("monitor", parts=("screen", "stand", "base"), extra_parts=("body",), size_range=(0.45, 0.85),
+          density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
+def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.48, 0.8)
+    bezel = rng.uniform(0.006, 0.014)
+    h = w * rng.uniform(0.54, 0.62)
+    depth = rng.uniform(0.015, 0.03)
+    z0 = rng.uniform(0.08, 0.16)
+    parts = _display(rng, w, h, depth, z0, bezel)
+    mat = _housing(rng) if rng.random() < 0.6 else M.metal(rng)
+    t = rng.uniform(0.008, 0.016)
+    yb = -depth / 2 - rng.uniform(0.03, 0.06)
+    arm_w, arm_d = rng.uniform(0.035, 0.07), rng.uniform(0.02, 0.03)
+    arm_top = z0 + h * 0.55
+    arm = S.box((arm_w, arm_d, arm_top - t), center=(0, -depth / 2 - arm_d / 2 - 0.02, (arm_top + t) / 2),
+                bevel=0.003)
+    hinge = S.box((arm_w * 1.2, 0.025, 0.05), center=(0, -depth / 2 - 0.0125, arm_top - 0.04), bevel=0.003)
+    if variant == "rect_base":
+        base = S.box((w * rng.uniform(0.3, 0.42), rng.uniform(0.17, 0.23), t), center=(0, yb, t / 2),
+                     bevel=0.003)
+    elif variant == "round_base":
+        r = rng.uniform(0.09, 0.13)
+        base = S.frustum(r, r * 0.93, t, center=(0, yb, 0), sections=28)
+    else:
+        L, a = rng.uniform(0.18, 0.26), np.deg2rad(rng.uniform(20, 35))
+        base = []
+        for s in (-1, 1):
+            R = rot_z(s * a)
+            c = np.array([0.0, yb - 0.03, t / 2]) + R @ np.array([0.0, L / 2, 0.0])
+            base.append(S.box((0.03, L, t), center=c, R=R, bevel=0.003))
+    parts += [make_part("stand", "stand", [arm, hinge], mat), make_part("base", "base", base, mat)]
+    return parts
+
+
+@register("laptop", parts=("base", "screen"), extra_parts=("keyboard", "display"),
+          size_range=(0.26, 0.42), density=900, variants=("thin", "standard", "compact"),
+          placement="surface")
+def laptop(rng: np.random.Generator, variant: str) -> list[Part]:
+    if variant == "compact":
+        w, d, hb = rng.uniform(0.27, 0.3), rng.uniform(0.19, 0.21), rng.uniform(0.016, 0.022)
+    elif variant == "thin":
+        w, d, hb = rng.uniform(0.3, 0.36), rng.uniform(0.21, 0.245), rng.uniform(0.01, 0.015)
+    else:
+        w, d, hb = rng.uniform(0.33, 0.385), rng.uniform(0.23, 0.26), rng.uniform(0.018, 0.026)
+    mat = M.metal(rng) if variant == "thin" else _housing(rng)
+    dark = M.solid((0.1, 0.1, 0.11), "plastic", 0.6)
+    base = S.box((w, d, hb), center=(0, 0, hb / 2), bevel=0.003)
+    keys = S.box((w * 0.86, d * 0.42, 0.0012), center=(0, -d * 0.12, hb + 0.0006))
+    pad = S.box((w * rng.uniform(0.3, 0.4), d * 0.24, 0.0008), center=(0, d * 0.3, hb + 0.0004))
+    tl = rng.uniform(0.004, 0.007) if variant == "thin" else rng.uniform(0.006, 0.009)
+    L = d * rng.uniform(0.92, 1.0)
+    beta = np.deg2rad(rng.uniform(100, 115) - 90)  # lid leans back past vertical
+    R = rot_x(beta)
+    p0 = np.array([0.0, -d / 2 + tl + 0.002, hb])
+    lid = S.box((w, tl, L), center=p0 + R @ np.array([0, -tl / 2, L / 2]), R=R, bevel=0.0015)
+    glass = S.box((w - 0.024, 0.001, L - 0.03), center=p0 + R @ np.array([0, 0.0005, L / 2 + 0.004]), R=R)
+    return [make_part("base", "base", base, mat), make_part("keyboard", "keyboard", [keys, pad], dark),
+            make_part("screen", "screen", lid, mat),
+            make_part("display", "display", glass, _screen_glass())]
+
+
+@register("keyboard", parts=("body",), extra_parts=("keys",), size_range=(0.28, 0.48), density=600,
+          variants=("full", "tenkeyless", "compact"), placement="surface")
+def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = {"full": rng.uniform(0.43, 0.46), "tenkeyless": rng.uniform(0.35, 0.37),
+         "compact": rng.uniform(0.29, 0.31)}[variant]
+    d = rng.uniform(0.12, 0.15)
+    hf, hb = rng.uniform(0.012, 0.018), rng.uniform(0.022, 0.032)
+    b = 0.004
+    pts = [(x, y, 0.0) for x in (-w / 2, w / 2) for y in (-d / 2, d / 2)]
+    pts += [(sx * (w / 2 - b), sy * (d / 2 - b), hb if sy < 0 else hf) for sx in (-1, 1) for sy in (-1, 1)]
+    pts += [(sx * w / 2, sy * d / 2, (hb if sy < 0 else hf) - b) for sx in (-1, 1) for sy in (-1, 1)]
+    mat = _housing(rng)
+    parts = [make_part("body", "body", S.hull(np.array(pts)), mat)]
+    key_mat = M.solid(M.jitter(rng, (0.2, 0.2, 0.22) if rng.random() < 0.6 else (0.9, 0.9, 0.9), 0.01),
+                      "plastic", 0.5)
+    n_rows = 5 if variant == "compact" else 6
+    margin = 0.012
+    pitch = (d - 2 * margin) / n_rows
+    main_w = 0.29 if variant != "compact" else w - 2 * margin
+    x_main = -w / 2 + margin + main_w / 2
+    rows = []
+    for i in range(n_rows):
+        y = d / 2 - margin - pitch * (i + 0.5)
+        z = hf + (hb - hf) * (d / 2 - y) / d  # the top slopes up towards the back
+        blocks = [S.box((main_w, pitch * 0.78, 0.008), center=(x_main, y, z + 0.002), bevel=0.0015)]
+        if variant != "compact":
+            nav_x0 = x_main + main_w / 2 + 0.012
+            blocks.append(S.box((0.055, pitch * 0.78, 0.008), center=(nav_x0 + 0.0275, y, z + 0.002),
+                                bevel=0.0015))
+            if variant == "full":
+                blocks.append(S.box((0.075, pitch * 0.78, 0.008),
+                                    center=(w / 2 - margin - 0.0375, y, z + 0.002), bevel=0.0015))
+        rows += blocks
+    parts.append(make_part("keys", "keys", rows, key_mat))
+    return parts
+
+
+def _driver(k: int, r: float, x: float, z: float, y: float, tweeter: bool) -> Part:
+    """A driver of radius ``r`` on the front face (y) of a cabinet: surround ring and dust cap."""
+    dark = M.solid((0.06, 0.06, 0.07), "plastic", 0.7)
+    rim = S.cylinder(r, 0.006, center=(x, y + 0.003, z), axis=(0, 1, 0), sections=20)
+    cap_r = r * (0.6 if tweeter else 0.32)
+    cap = S.ellipsoid((cap_r, cap_r * 0.5, cap_r), center=(x, y + 0.006, z), subdivisions=1)
+    return make_part(f"driver_{k}", "driver", [rim, cap], dark)
+
+
+@register("speaker", parts=("body",), extra_parts=("driver", "plinth"), size_range=(0.2, 1.2),
+          density=500, variants=("bookshelf", "floor_standing"))
+def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = M.wood(rng) if rng.random() < 0.5 else _housing(rng)
+    if variant == "bookshelf":
+        w, d, h = rng.uniform(0.15, 0.22), rng.uniform(0.18, 0.27), rng.uniform(0.24, 0.36)
+        z0 = 0.0
+    else:
+        w, d, h = rng.uniform(0.18, 0.26), rng.uniform(0.24, 0.34), rng.uniform(0.85, 1.1)
+        z0 = rng.uniform(0.02, 0.035)
+    parts = [make_part("body", "body", S.box((w, d, h - z0), center=(0, 0, z0 + (h - z0) / 2),
+                                              bevel=0.005), mat)]
+    if z0 > 0:
+        plinth = S.box((w + 0.04, d + 0.04, z0), center=(0, 0, z0 / 2), bevel=0.004)
+        parts.append(make_part("plinth", "plinth", plinth, M.solid((0.1, 0.1, 0.1), "plastic")))
+    y = d / 2
+    r_tw = w * 0.12
+    z_tw = h - max(0.05, w * 0.3)
+    parts.append(_driver(0, r_tw, 0.0, z_tw, y, tweeter=True))
+    r_wf = w * rng.uniform(0.33, 0.4)
+    n_wf = 1 if variant == "bookshelf" else int(rng.integers(2, 4))
+    # every woofer fits on the baffle above the cabinet's bottom edge
+    r_wf = min(r_wf, ((z_tw - r_tw - 0.02 - z0 - 0.03) / n_wf - 0.02) / 2)
+    z = z_tw - r_tw - 0.02 - r_wf
+    for k in range(n_wf):
+        parts.append(_driver(k + 1, r_wf, 0.0, z, y, tweeter=False))
+        z -= 2 * r_wf + 0.02
+    return parts
+
+
+def _rounded_slab(length: float, width: float, height: float, r: float, b: float) -> S.Shape:
+    """A slab with rounded corners (radius ``r`` in plan) and chamfered top and bottom edges
+    (``b``), long axis along y, bottom on z = 0."""
+    a = np.linspace(0, np.pi / 2, 5)
+    corners = []
+    for sx, sy, a0 in ((1, 1, 0), (-1, 1, np.pi / 2), (-1, -1, np.pi), (1, -1, 1.5 * np.pi)):
+        c = (sx * (width / 2 - r), sy * (length / 2 - r))
+        corners.append(np.c_[c[0] + r * np.cos(a + a0), c[1] + r * np.sin(a + a0)])
+    ring = np.concatenate(corners)
+    shrink = np.c_[ring[:, 0] * (1 - 2 * b / width), ring[:, 1] * (1 - 2 * b / length)]
+    pts = [np.c_[shrink, np.zeros(len(ring))], np.c_[ring, np.full(len(ring), b)],
+           np.c_[ring, np.full(len(ring), height - b)], np.c_[shrink, np.full(len(ring), height)]]
+    return S.hull(np.concatenate(pts))
+
+
+@register("remote_control", parts=("body",), extra_parts=("button",), size_range=(0.1, 0.25),
+          density=700, variants=("tv", "slim"), placement="surface")
+def remote_control(rng: np.random.Generator, variant: str) -> list[Part]:
+    if variant == "tv":
+        L, W, H = rng.uniform(0.17, 0.22), rng.uniform(0.045, 0.055), rng.uniform(0.018, 0.024)
+    else:
+        L, W, H = rng.uniform(0.12, 0.16), rng.uniform(0.034, 0.04), rng.uniform(0.011, 0.015)
+    body = _rounded_slab(L, W, H, W * 0.3, H * 0.25)
+    dark = rng.random() < 0.7
+    parts = [make_part("body", "body", body, M.solid((0.1, 0.1, 0.11) if dark else (0.85, 0.85, 0.86),
+                                                     "plastic", 0.5))]
+    btn = M.solid((0.35, 0.35, 0.37) if dark else (0.2, 0.2, 0.22), "plastic", 0.5)
+
+    def button(r, x, y):
+        return S.cylinder(r, 0.0025, center=(x, y, H + 0.00075), sections=10)
+
+    # the end that points at the device is +Y: power button and d-pad sit towards it
+    power = button(0.0045, -W * 0.25, L / 2 - 0.015)
+    parts.append(make_part("power_button", "button", power, M.solid((0.8, 0.15, 0.12), "plastic", 0.5)))
+    dpad_y = L / 2 - (0.05 if variant == "tv" else 0.035)
+    keys = [button(W * 0.28, 0.0, dpad_y)]
+    keys += [button(0.0038, x, dpad_y - W * 0.45) for x in (-W * 0.25, W * 0.25)]
+    if variant == "tv":
+        for i in range(4):
+            for j in range(3):
+                keys.append(button(0.0038, (j - 1) * W * 0.28, dpad_y - W * 0.95 - i * 0.014))
+    parts.append(make_part("buttons", "button", keys, btn))
+    return parts

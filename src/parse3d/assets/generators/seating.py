@@ -1,0 +1,348 @@
+"""Seating: office chairs, dining chairs, armchairs, sofas and bar stools.
+
+Everything faces +Y: the ``back`` (or the back cushions) sits at -Y, the sitter's right is +X,
+``armrest_0`` is the left arm (-X) and ``armrest_1`` the right arm (+X). Seats and cushions are
+rounded, with real thickness; backs lean back a few degrees.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from ...geometry.frames import make_transform, rot_x, rot_z
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+from ._bedbath_common import bevel_box, cushion
+
+_UP = np.array([0.0, 0.0, 1.0])
+
+
+def _leaning(shape: S.Shape, angle: float, pivot) -> S.Shape:
+    """``shape`` built around the origin, tilted back (top towards -Y) by ``angle`` radians,
+    then moved so the origin lands on ``pivot``."""
+    return shape.apply(make_transform(rot_x(angle), pivot))
+
+
+def _leg(foot, top, r_foot: float, r_top: float) -> S.Shape:
+    foot, top = np.asarray(foot, float), np.asarray(top, float)
+    return S.frustum(r_foot, r_top, float(np.linalg.norm(top - foot)), center=foot,
+                     axis=top - foot, sections=10)
+
+
+def _upholstery(rng: np.random.Generator) -> Material:
+    return M.fabric(rng) if rng.random() < 0.75 else M.leather(rng)
+
+
+@register("office_chair", parts=("seat", "back", "base"),
+          extra_parts=("column", "caster", "armrest", "headrest"), size_range=(0.8, 1.35),
+          density=400, variants=("task", "arms", "executive"))
+def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
+    sw, sd = rng.uniform(0.46, 0.52), rng.uniform(0.44, 0.5)
+    st = rng.uniform(0.07, 0.09)
+    z_seat = rng.uniform(0.45, 0.5)  # top of the seat
+    pad = _upholstery(rng)
+    shell = M.solid((0.12, 0.12, 0.13), "plastic", roughness=0.5)
+    chrome = M.metal(rng)
+    r_star = rng.uniform(0.3, 0.34)
+    wheel_r = 0.025
+    z_spoke = 2 * wheel_r + 0.035
+    parts: list[Part] = []
+    # five-star base: hub and five spokes dipping towards their tips
+    base = [S.cylinder(0.045, 0.06, center=(0, 0, z_spoke + 0.015), sections=16)]
+    for k in range(5):
+        a = 2 * np.pi * k / 5 + np.pi / 2
+        mid = np.array([np.cos(a), np.sin(a), 0.0]) * r_star / 2
+        base.append(S.box((r_star, 0.045, 0.03), center=mid + [0, 0, z_spoke], R=rot_z(a)))
+    parts.append(make_part("base", "base", base, chrome if rng.random() < 0.5 else shell))
+    for k in range(5):
+        a = 2 * np.pi * k / 5 + np.pi / 2
+        tip = np.array([np.cos(a), np.sin(a), 0.0]) * (r_star - 0.02)
+        tangent = (-np.sin(a), np.cos(a), 0.0)
+        fork = S.box((0.03, 0.03, 0.03), center=tip + [0, 0, z_spoke - 0.025])
+        wheel = S.cylinder(wheel_r, 0.022, center=tip + [0, 0, wheel_r], axis=tangent, sections=12)
+        parts.append(make_part(f"caster_{k}", "caster", [fork, wheel], shell))
+    z_under = z_seat - st - 0.05
+    col = [S.cylinder(0.034, 0.16, center=(0, 0, z_spoke + 0.045 + 0.08), sections=14),
+           S.cylinder(0.014, z_under - z_spoke - 0.1, center=(0, 0, (z_under + z_spoke + 0.1) / 2),
+                      sections=12),
+           bevel_box((0.2, 0.22, 0.05), center=(0, 0, z_under + 0.025), bevel=0.01)]
+    parts.append(make_part("column", "column", col, shell))
+    parts.append(make_part("seat", "seat", cushion(sw, sd, st, (0, 0.01, z_seat - st / 2),
+                                                   round_xy=0.06, round_z=0.025), pad))
+    # back: a padded panel on an L-shaped spine from under the seat
+    bh = rng.uniform(0.45, 0.58) if variant != "executive" else rng.uniform(0.52, 0.6)
+    bw = sw * rng.uniform(0.88, 0.98)
+    lean = np.deg2rad(rng.uniform(8, 14))
+    y_back = -sd / 2 - 0.04
+    z_back0 = z_seat + 0.06
+    panel = _leaning(cushion(bw, 0.07, bh, (0, 0, bh / 2), round_xy=0.06, round_z=0.025),
+                     lean, (0, y_back, z_back0))
+    spine_top = np.array([0, y_back - 0.045, z_back0 + 0.12])
+    spine = S.tube([[0, -sd / 2 + 0.08, z_under + 0.02], [0, y_back - 0.04, z_under + 0.02],
+                    spine_top], 0.016, sections=8)
+    parts.append(make_part("back", "back", [panel, spine], pad))
+    if variant == "executive":
+        hz = z_back0 + bh * np.cos(lean) + 0.04
+        hy = y_back - bh * np.sin(lean) - 0.01
+        head = _leaning(cushion(bw * 0.6, 0.08, 0.14, (0, 0, 0.07), round_xy=0.05, round_z=0.03),
+                        lean, (0, hy, hz))
+        parts.append(make_part("headrest", "headrest", head, pad))
+    if variant != "task":
+        arm_z = z_seat + rng.uniform(0.19, 0.24)
+        for i, sx in enumerate((-1, 1)):
+            x = sx * (sw / 2 + 0.035)
+            post = S.tube([[sx * (sw / 2 - 0.08), -0.05, z_under + 0.02],
+                           [x, -0.05, z_under + 0.02], [x, -0.03, arm_z - 0.02]], 0.014, sections=8)
+            pad_ = bevel_box((0.07, 0.25, 0.03), center=(x, -0.03, arm_z), bevel=0.01)
+            parts.append(make_part(f"armrest_{i}", "armrest", [post, pad_], shell))
+    return parts
+
+
+@register("dining_chair", parts=("seat", "back", "leg"), extra_parts=("stretcher",),
+          size_range=(0.75, 1.1), density=550, variants=("spindle", "solid", "upholstered"))
+def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
+    sw, sd = rng.uniform(0.42, 0.5), rng.uniform(0.42, 0.48)
+    z_seat = rng.uniform(0.44, 0.48)
+    wood = M.wood(rng)
+    upholstered = variant == "upholstered"
+    st = rng.uniform(0.06, 0.08) if upholstered else rng.uniform(0.025, 0.04)
+    seat_mat = _upholstery(rng) if upholstered else wood
+    leg = rng.uniform(0.032, 0.042)
+    z_leg = z_seat - st
+    parts: list[Part] = []
+    if upholstered:
+        seat = cushion(sw, sd, st, (0, 0, z_seat - st / 2), round_xy=0.03, round_z=0.02)
+    else:
+        seat = bevel_box((sw, sd, st), center=(0, 0, z_seat - st / 2), bevel=0.006)
+    parts.append(make_part("seat", "seat", seat, seat_mat))
+    tapered = rng.random() < 0.5
+    i = 0
+    for sy in (-1, 1):
+        for sx in (-1, 1):
+            top = np.array([sx * (sw / 2 - leg / 2 - 0.01), sy * (sd / 2 - leg / 2 - 0.01), z_leg])
+            foot = top * [1.0, 1.0, 0.0] + [sx * 0.01, sy * 0.015, 0.0]
+            if tapered:
+                shape = _leg(foot, top, leg * 0.32, leg * 0.55)
+            else:
+                shape = bevel_box((leg, leg, z_leg), center=(top[0], top[1], z_leg / 2),
+                                  bevel=0.004)
+            parts.append(make_part(f"leg_{i}", "leg", shape, wood))
+            i += 1
+    if rng.random() < 0.5:
+        z_st = z_leg * 0.3
+        bars = [S.cylinder(0.011, sd - 2 * leg, center=(sx * (sw / 2 - leg / 2 - 0.01), 0, z_st),
+                           axis=(0, 1, 0), sections=8) for sx in (-1, 1)]
+        parts.append(make_part("stretcher", "stretcher", bars, wood))
+    # back
+    bh = rng.uniform(0.38, 0.5)
+    lean = np.deg2rad(rng.uniform(6, 12))
+    y0 = -sd / 2 + leg / 2 + 0.01
+    pivot = (0, y0, z_seat)
+    back: list[S.Shape] = []
+    if upholstered:
+        back.append(cushion(sw * 0.94, 0.07, bh, (0, 0, bh / 2 - 0.02), round_xy=0.03,
+                            round_z=0.025))
+        mat = seat_mat
+    else:
+        post_w = leg * 0.9
+        for sx in (-1, 1):
+            back.append(bevel_box((post_w, post_w, bh), center=(sx * (sw / 2 - post_w / 2 - 0.01),
+                                                                0, bh / 2), bevel=0.004))
+        rail_h = rng.uniform(0.06, 0.1)
+        inner = sw - 2 * post_w - 0.02
+        back.append(bevel_box((inner + 0.01, 0.025, rail_h), center=(0, 0, bh - rail_h / 2),
+                              bevel=0.005))
+        if variant == "spindle":
+            n = int(rng.integers(3, 7))
+            span = bh - rail_h
+            for x in np.linspace(-inner / 2, inner / 2, n + 2)[1:-1]:
+                back.append(S.cylinder(0.009, span, center=(x, 0, span / 2), sections=8))
+        else:
+            ph = (bh - rail_h) * rng.uniform(0.45, 0.7)
+            back.append(bevel_box((inner + 0.01, 0.018, ph), center=(0, 0, bh - rail_h - ph / 2),
+                                  bevel=0.004))
+        mat = wood
+    parts.append(make_part("back", "back", [_leaning(s, lean, pivot) for s in back], mat))
+    return parts
+
+
+def _arm_block(name: str, x: float, w: float, d: float, z0: float, z1: float, y: float,
+               mat: Material, roll: float) -> Part:
+    return make_part(name, "armrest", cushion(w, d, z1 - z0, (x, y, (z0 + z1) / 2),
+                                             round_xy=min(roll, w / 2.2), round_z=roll), mat)
+
+
+def _short_legs(rng, xs, ys, h: float, mat: Material, start: int = 0) -> list[Part]:
+    r = rng.uniform(0.017, 0.025)
+    parts = []
+    i = start
+    for y in ys:
+        for x in xs:
+            parts.append(make_part(f"leg_{i}", "leg", S.frustum(r * 0.7, r, h, center=(x, y, 0),
+                                                                sections=10), mat))
+            i += 1
+    return parts
+
+
+@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing"),
+          size_range=(0.7, 1.25), density=250, variants=("club", "wingback", "mid_century"))
+def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.75, 0.95)
+    d = rng.uniform(0.78, 0.92)
+    h_leg = rng.uniform(0.06, 0.1) if variant == "club" else rng.uniform(0.12, 0.2)
+    z_seat = rng.uniform(0.42, 0.47)
+    pad = _upholstery(rng)
+    wood = M.wood(rng)
+    arm_w = rng.uniform(0.16, 0.22) if variant == "club" else rng.uniform(0.1, 0.14)
+    arm_h = z_seat + rng.uniform(0.17, 0.24)
+    back_t = rng.uniform(0.14, 0.2)
+    deck_z = z_seat - rng.uniform(0.1, 0.14)
+    inner_w = w - 2 * arm_w
+    parts: list[Part] = []
+    parts += _short_legs(rng, (-w / 2 + 0.05, w / 2 - 0.05), (-d / 2 + 0.05, d / 2 - 0.05),
+                         h_leg, wood)
+    if variant == "mid_century":
+        # open wooden arms on the frame; the base is a slim rail box
+        parts.append(make_part("frame", "frame", bevel_box(
+            (w, d, deck_z - h_leg), center=(0, 0, (deck_z + h_leg) / 2), bevel=0.008), wood))
+        for i, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - arm_w / 2)
+            bar = bevel_box((arm_w * 0.6, d * 0.9, 0.035), center=(x, 0.0, arm_h - 0.0175),
+                            bevel=0.008)
+            post = bevel_box((0.035, 0.04, arm_h - deck_z), center=(x, d * 0.35,
+                                                                    (arm_h + deck_z) / 2))
+            parts.append(make_part(f"armrest_{i}", "armrest", [bar, post], wood))
+        back_h = rng.uniform(0.75, 0.85)
+    else:
+        parts.append(make_part("frame", "frame", cushion(
+            w, d, deck_z - h_leg, (0, 0, (deck_z + h_leg) / 2), round_xy=0.03, round_z=0.02), pad))
+        for i, sx in enumerate((-1, 1)):
+            parts.append(_arm_block(f"armrest_{i}", sx * (w / 2 - arm_w / 2), arm_w, d - back_t * 0.5,
+                                    deck_z - 0.001, arm_h, back_t * 0.25, pad, 0.04))
+        back_h = rng.uniform(0.78, 0.9) if variant == "club" else rng.uniform(1.0, 1.15)
+    parts.append(make_part("seat", "seat", cushion(
+        inner_w - 0.01, d - back_t - 0.02, z_seat - deck_z, (0, back_t / 2, (z_seat + deck_z) / 2),
+        round_xy=0.04, round_z=0.03), pad))
+    lean = np.deg2rad(rng.uniform(5, 10))
+    bh = back_h - deck_z
+    back = cushion(inner_w if variant != "mid_century" else w - 0.02, back_t, bh, (0, 0, bh / 2),
+                   round_xy=0.04, round_z=0.04)
+    parts.append(make_part("back", "back", _leaning(back, lean, (0, -d / 2 + back_t / 2, deck_z)),
+                           pad))
+    if variant == "wingback":
+        for i, sx in enumerate((-1, 1)):
+            wing = cushion(0.08, d * 0.35, back_h - arm_h, (0, 0, (back_h - arm_h) / 2),
+                           round_xy=0.03, round_z=0.03)
+            wing = _leaning(wing, lean * 0.5, (sx * (w / 2 - 0.04), -d / 2 + d * 0.175, arm_h))
+            parts.append(make_part(f"wing_{i}", "wing", wing, pad))
+    return parts
+
+
+@register("sofa", parts=("seat_cushion", "back_cushion", "armrest"), extra_parts=("frame", "leg"),
+          size_range=(1.4, 3.3), density=200, variants=("two_seat", "three_seat", "sectional"))
+def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
+    n = 2 if variant == "two_seat" else 3
+    cw = rng.uniform(0.55, 0.68)
+    arm_w = rng.uniform(0.12, 0.24)
+    w = n * cw + 2 * arm_w
+    d = rng.uniform(0.85, 0.98)
+    h_leg = rng.uniform(0.05, 0.14)
+    z_seat = rng.uniform(0.42, 0.47)
+    deck_z = z_seat - rng.uniform(0.12, 0.16)
+    back_z = rng.uniform(0.78, 0.9)
+    arm_h = z_seat + rng.uniform(0.14, 0.22)
+    back_t = rng.uniform(0.14, 0.2)
+    pad = _upholstery(rng)
+    wood = M.wood(rng)
+    chaise = rng.uniform(0.6, 0.75) if variant == "sectional" else 0.0
+    depth_r = d + chaise  # the right end is deeper on a sectional
+    parts: list[Part] = []
+    frame = [cushion(w, d, deck_z - h_leg, (0, 0, (deck_z + h_leg) / 2), round_xy=0.03,
+                     round_z=0.02),
+             cushion(w - 2 * arm_w + 0.02, back_t, back_z - deck_z,
+                     (0, -d / 2 + back_t / 2, (back_z + deck_z) / 2), round_xy=0.03,
+                     round_z=0.05)]
+    if chaise:
+        cx = w / 2 - arm_w - cw / 2
+        frame.append(cushion(cw + arm_w, chaise + 0.02, deck_z - h_leg,
+                             (cx + arm_w / 2, d / 2 + chaise / 2 - 0.01, (deck_z + h_leg) / 2),
+                             round_xy=0.03, round_z=0.02))
+    parts.append(make_part("frame", "frame", frame, pad))
+    ys = (-d / 2 + 0.05, d / 2 - 0.05)
+    parts += _short_legs(rng, (-w / 2 + 0.06, w / 2 - 0.06), ys, h_leg, wood)
+    if chaise:
+        parts += _short_legs(rng, (w / 2 - arm_w - cw, w / 2 - 0.06), (depth_r - d / 2 - 0.05,),
+                             h_leg, wood, start=4)
+    roll = rng.uniform(0.03, 0.06)
+    parts.append(_arm_block("armrest_0", -w / 2 + arm_w / 2, arm_w, d, deck_z - 0.001, arm_h, 0,
+                            pad, roll))
+    parts.append(_arm_block("armrest_1", w / 2 - arm_w / 2, arm_w, depth_r, deck_z - 0.001, arm_h,
+                            (depth_r - d) / 2, pad, roll))
+    sd = d - back_t - 0.01
+    ct = z_seat - deck_z
+    x0 = -w / 2 + arm_w
+    for k in range(n):
+        x = x0 + cw * (k + 0.5)
+        depth = sd + (chaise if (chaise and k == n - 1) else 0.0)
+        y = -d / 2 + back_t + depth / 2 + 0.005
+        seat = cushion(cw - 0.008, depth, ct, (x, y, deck_z + ct / 2), round_xy=0.05,
+                       round_z=ct * 0.35)
+        parts.append(make_part(f"seat_cushion_{k}", "seat_cushion", seat, pad))
+    # back cushions lean on the back frame, above the seat cushions
+    lean = np.deg2rad(rng.uniform(10, 16))
+    bc_t = rng.uniform(0.15, 0.2)
+    bc_h = back_z - z_seat + rng.uniform(0.0, 0.06)
+    for k in range(n):
+        x = x0 + cw * (k + 0.5)
+        c = cushion(cw - 0.012, bc_t, bc_h, (0, 0, bc_h / 2), round_xy=0.05, round_z=0.05)
+        c = _leaning(c, lean, (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean),
+                               z_seat + 0.005))
+        parts.append(make_part(f"back_cushion_{k}", "back_cushion", c, pad))
+    return parts
+
+
+@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base"),
+          size_range=(0.6, 1.0), density=600, variants=("four_leg", "three_leg", "pedestal"))
+def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
+    z_seat = rng.uniform(0.63, 0.78)
+    r = rng.uniform(0.17, 0.2)
+    st = rng.uniform(0.04, 0.07)
+    frame_mat = M.metal(rng) if rng.random() < 0.6 else M.wood(rng)
+    seat_mat = _upholstery(rng) if rng.random() < 0.5 else M.wood(rng)
+    seat = S.lathe([(r * 0.8, 0), (r, st * 0.35), (r, st * 0.65), (r * 0.9, st)], sections=28)
+    parts = [make_part("seat", "seat", seat.moved((0, 0, z_seat - st)), seat_mat)]
+    z_ring = rng.uniform(0.24, 0.32)
+    if variant == "pedestal":
+        rb = rng.uniform(0.2, 0.24)
+        base = S.lathe([(rb, 0.0), (rb, 0.012), (rb * 0.5, 0.04), (0.04, 0.06)], sections=28)
+        parts.append(make_part("base", "base", base, frame_mat))
+        col = S.union([S.cylinder(0.025, z_seat - st - 0.06, center=(0, 0, (z_seat - st + 0.06) / 2),
+                                  sections=14),
+                       S.cylinder(0.07, 0.02, center=(0, 0, z_seat - st - 0.01), sections=20)])
+        parts.append(make_part("leg_0", "leg", col, frame_mat))
+        rr = rng.uniform(0.15, 0.18)
+        a = np.linspace(0, 2 * np.pi, 20, endpoint=False)
+        ring = S.tube(np.c_[rr * np.cos(a), rr * np.sin(a), np.full(20, z_ring)], 0.011,
+                      sections=8, closed=True)
+        spokes = [S.tube([[0, 0, z_ring], [sx * rr, 0, z_ring]], 0.009, sections=8)
+                  for sx in (-1, 1)]
+        parts.append(make_part("footrest", "footrest", [ring, *spokes], frame_mat))
+        return parts
+    n = 4 if variant == "four_leg" else 3
+    r_top, r_foot = r * 0.62, r * rng.uniform(1.05, 1.25)
+    phase = np.pi / 4 if n == 4 else np.pi / 2
+    lr = rng.uniform(0.013, 0.02)
+    for k in range(n):
+        a = phase + 2 * np.pi * k / n
+        d = np.array([np.cos(a), np.sin(a), 0.0])
+        foot, top = d * r_foot, d * r_top + [0, 0, z_seat - st]
+        parts.append(make_part(f"leg_{k}", "leg", _leg(foot, top, lr * 0.85, lr), frame_mat))
+    # the footrest ring runs through the legs at z_ring
+    rr = r_foot + (r_top - r_foot) * z_ring / (z_seat - st)
+    a = np.linspace(0, 2 * np.pi, 24, endpoint=False)
+    ring = S.tube(np.c_[rr * np.cos(a), rr * np.sin(a), np.full(24, z_ring)], 0.01, sections=8,
+                  closed=True)
+    parts.append(make_part("footrest", "footrest", ring, frame_mat))
+    return parts

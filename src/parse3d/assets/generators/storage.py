@@ -1,0 +1,284 @@
+"""Storage furniture: bookcases, cabinets, media consoles, wall cabinets, racks and gondolas.
+
+Shelves are separate parts (``shelf_0`` at the bottom, upward), sized to the carcass interior
+so that :mod:`parse3d.assets.internal` finds an internal support surface on each one: covered
+by the next shelf or the top, walled by the sides and the back. Open racks get a lip (its own
+``beam`` part) around every shelf so the same holds without side panels.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_heights
+
+
+def _carcass(w: float, d: float, h: float, t: float, *, z0: float = 0.0, back: float = 0.008,
+             bottom: bool = True, top: bool = True) -> list[S.Shape]:
+    """Sides, optional top/bottom and a back panel of a box carcass spanning ``[z0, h]``."""
+    hs = h - z0
+    out = [S.box((t, d, hs), center=(-w / 2 + t / 2, 0, z0 + hs / 2), bevel=0.002),
+           S.box((t, d, hs), center=(w / 2 - t / 2, 0, z0 + hs / 2), bevel=0.002)]
+    iw = w - 2 * t
+    z_in0, z_in1 = z0 + (t if bottom else 0.0), h - (t if top else 0.0)
+    if bottom:
+        out.append(S.box((iw, d, t), center=(0, 0, z0 + t / 2)))
+    if top:
+        out.append(S.box((iw, d, t), center=(0, 0, h - t / 2)))
+    out.append(S.box((iw, back, z_in1 - z_in0), center=(0, -d / 2 + back / 2, (z_in0 + z_in1) / 2)))
+    return out
+
+
+def _shelves(levels, *, iw: float, y0: float, y1: float, t: float, mat, start: int = 0) -> list[Part]:
+    """Shelf boards of inner width ``iw`` from ``y0`` (back) to ``y1`` (front), tops at ``levels``."""
+    sd = y1 - y0
+    return [make_part(f"shelf_{start + i}", "shelf",
+                      S.box((iw, sd, t), center=(0, (y0 + y1) / 2, z - t / 2), bevel=0.002), mat)
+            for i, z in enumerate(levels)]
+
+
+def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: int, mat, hmat,
+              style: str, glass=None, start: int = 0, gap: float = 0.003) -> list[Part]:
+    parts = []
+    dw = w / n
+    for i in range(n):
+        x0, x1 = -w / 2 + i * dw + gap, -w / 2 + (i + 1) * dw - gap
+        hinge_left = i < n / 2 if n > 1 else True
+        parts += door_parts(f"{prefix}_{start + i}", x0=x0, x1=x1, z0=z0 + gap, z1=z1 - gap,
+                            y_back=y_back, thick=0.018, mat=mat, handle_mat=hmat,
+                            hinge_left=hinge_left, style=style, glass=glass)
+    return parts
+
+
+@register("bookcase", parts=("shelf", "side_panel", "back_panel"),
+          extra_parts=("top_panel", "base", "door", "handle", "glass"), size_range=(0.9, 2.3),
+          density=550, variants=("open", "doored", "glass_doored"))
+def bookcase(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
+    t, bt, plinth = rng.uniform(0.018, 0.025), 0.008, rng.uniform(0.05, 0.09)
+    mat = M.wood(rng)
+    hmat = M.metal(rng)
+    oh = rng.uniform(0.0, 0.015)
+    h_side = h - t
+    parts = [
+        make_part("side_panel_0", "side_panel",
+                  S.box((t, d, h_side), center=(-w / 2 + t / 2, 0, h_side / 2), bevel=0.002), mat),
+        make_part("side_panel_1", "side_panel",
+                  S.box((t, d, h_side), center=(w / 2 - t / 2, 0, h_side / 2), bevel=0.002), mat),
+        make_part("top_panel", "top_panel",
+                  S.box((w + 2 * oh, d + oh, t), center=(0, oh / 2, h - t / 2), bevel=0.003), mat),
+        make_part("back_panel", "back_panel",
+                  S.box((w - 2 * t, bt, h_side - plinth), center=(0, -d / 2 + bt / 2, (plinth + h_side) / 2)),
+                  mat),
+        make_part("base", "base", S.box((w - 2 * t, t, plinth), center=(0, d / 2 - t / 2 - 0.01, plinth / 2)),
+                  mat),
+    ]
+    inner = h_side - plinth
+    n = int(np.clip(np.floor(inner / 0.3), 3, 6))
+    levels = plinth + t + shelf_heights(0.0, inner, n)
+    parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t, mat=mat)
+    if variant == "doored":
+        k = max(1, n // 2)
+        z_top = plinth + k * inner / n + t
+        parts += _door_row("door", w=w, z0=plinth, z1=z_top, y_back=d / 2, n=2, mat=mat, hmat=hmat,
+                           style="shaker" if rng.random() < 0.6 else "flat")
+    elif variant == "glass_doored":
+        parts += _door_row("door", w=w, z0=plinth, z1=h_side, y_back=d / 2, n=2, mat=mat, hmat=hmat,
+                           style="glass", glass=glass_pane(rng))
+    return parts
+
+
+@register("storage_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "drawer", "glass"),
+          size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
+def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
+    d, h = rng.uniform(0.4, 0.6), rng.uniform(0.8, 2.0)
+    t, plinth = 0.018, rng.uniform(0.06, 0.1)
+    mat = M.wood(rng) if rng.random() < 0.7 else M.metal(rng)
+    hmat = M.metal(rng)
+    body = _carcass(w, d, h, t, z0=plinth)
+    body.append(S.box((w - 2 * t, d - 0.03, plinth), center=(0, -0.015, plinth / 2)))
+    z_door_top = h
+    drawers = []
+    if variant == "drawer_top":
+        z_door_top = h - rng.uniform(0.14, 0.2)
+        body.append(S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, z_door_top - t / 2)))
+        for i in range(2):
+            x0, x1 = -w / 2 + i * w / 2 + 0.003, -w / 2 + (i + 1) * w / 2 - 0.003
+            drawers += drawer_parts(f"drawer_{i}", x0=x0, x1=x1, z0=z_door_top + 0.003, z1=h - 0.003,
+                                    y_front=d / 2 + 0.018, depth=d - 0.06, thick=0.018, mat=mat,
+                                    handle_mat=hmat)
+    parts = [make_part("body", "body", body, mat), *drawers]
+    n_door = 1 if variant == "single_door" else 2
+    parts += _door_row("door", w=w, z0=plinth, z1=z_door_top, y_back=d / 2, n=n_door, mat=mat, hmat=hmat,
+                       style="shaker" if rng.random() < 0.5 else "flat")
+    inner = z_door_top - t - (plinth + t)
+    n = int(np.clip(np.floor(inner / 0.32), 1, 5))
+    levels = plinth + t + shelf_heights(0.0, inner, n + 1)[1:] + t
+    parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t, mat=mat)
+    return parts
+
+
+@register("tv_stand", parts=("top_panel", "body"), extra_parts=("drawer", "handle", "shelf", "leg", "door"),
+          size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
+def tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
+    t = rng.uniform(0.018, 0.025)
+    mat = M.wood(rng)
+    hmat = M.metal(rng)
+    z0 = rng.uniform(0.12, 0.2) if variant == "legged" else rng.uniform(0.03, 0.06)
+    h_body = h - t
+    parts = []
+    n_bays = 3 if w > 1.4 else 2
+    bay = (w - 2 * t) / n_bays
+    body = _carcass(w, d, h_body, t, z0=z0, top=False)
+    for i in range(1, n_bays):
+        x = -w / 2 + t + i * bay
+        body.append(S.box((t, d - 0.008, h_body - z0 - t), center=(x, 0.004, (z0 + t + h_body) / 2)))
+    if variant != "legged":
+        body.append(S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)))
+    parts.append(make_part("body", "body", body, mat))
+    parts.append(make_part("top_panel", "top_panel",
+                           S.box((w, d + 0.01, t), center=(0, 0.005, h - t / 2), bevel=0.004), mat))
+    mid = (z0 + t + h_body) / 2
+    if variant == "legged":
+        leg = rng.uniform(0.03, 0.045)
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            x, y = sx * (w / 2 - 0.06), sy * (d / 2 - 0.05)
+            parts.append(make_part(f"leg_{i}", "leg", S.frustum(leg / 2 * 0.6, leg / 2, z0, center=(x, y, 0),
+                                                                 sections=12), mat))
+    for b in range(n_bays):
+        # the bay's opening between the dividers (dividers are centred on the bay boundaries)
+        sx0 = -w / 2 + t + b * bay + (t / 2 if b > 0 else 0)
+        sx1 = -w / 2 + t + (b + 1) * bay - (t / 2 if b < n_bays - 1 else 0)
+        x0, x1 = sx0 + 0.002, sx1 - 0.002
+        if (variant == "drawers" and b != n_bays // 2) or (variant == "legged" and b == 0):
+            parts += drawer_parts(f"drawer_{b}", x0=x0, x1=x1, z0=z0 + t + 0.003, z1=h_body - 0.003,
+                                  y_front=d / 2, depth=d - 0.05, thick=0.018, mat=mat, handle_mat=hmat,
+                                  knob_style=variant == "legged")
+        elif variant == "legged":
+            parts += door_parts(f"door_{b}", x0=x0, x1=x1, z0=z0 + t + 0.003, z1=h_body - 0.003,
+                                y_back=d / 2 - 0.018, thick=0.018, mat=mat, handle_mat=hmat,
+                                hinge_left=b % 2 == 1, style="flat", handle_len=0.08)
+        else:
+            parts.append(make_part(f"shelf_{b}", "shelf",
+                                   S.box((sx1 - sx0, d - 0.03, t), center=((sx0 + sx1) / 2, -0.011, mid)),
+                                   mat))
+    return parts
+
+
+@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass"),
+          size_range=(0.45, 1.1), density=550, variants=("solid", "glass", "lift_up"), placement="wall")
+def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.4, 1.0), rng.uniform(0.28, 0.36), rng.uniform(0.5, 0.9)
+    if variant == "lift_up":
+        w, h = rng.uniform(0.6, 1.0), rng.uniform(0.35, 0.45)
+    t = 0.018
+    mat = M.wood(rng) if rng.random() < 0.6 else M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "wood")
+    hmat = M.metal(rng)
+    db = d - 0.02  # carcass depth; the doors bring the front flush with the asset's +Y face
+    body = _carcass(w, db, h, t, back=0.01)
+    parts = [make_part("body", "body", [s.moved((0, -0.01, 0)) for s in body], mat)]
+    yf = d / 2 - 0.02
+    n = max(1, int(np.floor((h - 2 * t) / 0.22)) - 1)
+    levels = t + shelf_heights(0.0, h - 2 * t, n + 1)[1:] + t
+    parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t, mat=mat)
+    if variant == "lift_up":
+        return parts + door_parts("door", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y_back=yf, thick=0.018,
+                                  mat=mat, handle_mat=hmat, hinge_left=True, style="flat",
+                                  handle_len=0.3, handle_at="bottom")
+    n_door = 1 if w < 0.55 else 2
+    style = "glass" if variant == "glass" else ("shaker" if rng.random() < 0.5 else "flat")
+    parts += _door_row("door", w=w, z0=0.0, z1=h, y_back=yf, n=n_door, mat=mat, hmat=hmat, style=style,
+                       glass=glass_pane(rng))
+    return parts
+
+
+def _lip(w: float, d: float, z: float, hgt: float, t: float) -> list[S.Shape]:
+    """Four bars of height ``hgt`` standing on level ``z`` just outside a ``w x d`` deck."""
+    zc = z + hgt / 2 - 0.015
+    hh = hgt + 0.015
+    return [S.box((w + 2 * t, t, hh), center=(0, d / 2 + t / 2, zc)),
+            S.box((w + 2 * t, t, hh), center=(0, -d / 2 - t / 2, zc)),
+            S.box((t, d, hh), center=(w / 2 + t / 2, 0, zc)),
+            S.box((t, d, hh), center=(-w / 2 - t / 2, 0, zc))]
+
+
+@register("storage_rack", parts=("shelf", "post"), extra_parts=("beam", "foot"), size_range=(1.0, 2.1),
+          density=900, variants=("wire", "industrial"))
+def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.35, 0.6), rng.uniform(1.2, 2.0)
+    n = int(rng.integers(3, 6))
+    steel = M.metal(rng)
+    deck = steel if variant == "wire" else M.wood(rng)
+    lip_h = 0.03 if variant == "wire" else 0.04
+    z_first = rng.uniform(0.12, 0.2)
+    levels = np.linspace(z_first, h - 0.06, n)
+    parts = []
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        x, y = sx * (w / 2 + 0.01), sy * (d / 2 + 0.01)
+        if variant == "wire":
+            post = S.cylinder(0.0125, h - 0.02, center=(x, y, 0.01 + (h - 0.02) / 2), sections=12)
+            parts.append(make_part(f"foot_{i}", "foot", S.frustum(0.016, 0.013, 0.02, center=(x, y, 0),
+                                                                    sections=12), black()))
+        else:
+            a, th = 0.04, 0.004
+            post = S.union([S.box((a, th, h), center=(x - sx * (a / 2 - 0.01), y + sy * (0.01 - th / 2), h / 2)),
+                            S.box((th, a, h), center=(x + sx * (0.01 - th / 2), y - sy * (a / 2 - 0.01), h / 2))])
+        parts.append(make_part(f"post_{i}", "post", post, steel))
+    for i, z in enumerate(levels):
+        tk = 0.008 if variant == "wire" else 0.016
+        top = z + (0.0 if variant == "wire" else -0.02)
+        parts.append(make_part(f"shelf_{i}", "shelf", S.box((w, d, tk), center=(0, 0, top - tk / 2)), deck))
+        parts.append(make_part(f"beam_{i}", "beam", _lip(w, d, top, lip_h, 0.01 if variant == "wire" else 0.02),
+                               steel))
+    return parts
+
+
+@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail"),
+          size_range=(1.3, 2.3), density=800, variants=("single_sided", "double_sided"))
+def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, h = rng.uniform(0.9, 1.33), rng.uniform(1.4, 2.2)
+    sd = rng.uniform(0.3, 0.45)
+    n = int(rng.integers(4, 7))
+    steel = M.metal(rng) if rng.random() < 0.3 else M.solid(M.jitter(rng, (0.9, 0.9, 0.88), 0.02)[:3], "metal",
+                                                             0.4, 0.3)
+    sides = (1, -1) if variant == "double_sided" else (1,)
+    pt = 0.05  # upright / back-panel assembly depth
+    parts = [make_part("back_panel", "back_panel", S.box((w - 0.08, 0.012, h - 0.15), center=(0, 0, 0.15 + (h - 0.15) / 2)),
+                       steel)]
+    for i, x in enumerate((-w / 2 + 0.02, w / 2 - 0.02)):
+        parts.append(make_part(f"post_{i}", "post", S.box((0.04, pt, h), center=(x, 0, h / 2), bevel=0.003), steel))
+    base_h = rng.uniform(0.1, 0.15)
+    bd = sd + 0.1
+    z_top = h - rng.uniform(0.1, 0.2)
+    levels = np.linspace(base_h, z_top, n)
+    k = 0
+    for si, s in enumerate(sides):
+        y_in = s * 0.006
+        kick = S.box((w - 0.08, 0.02, base_h - 0.02), center=(0, s * (bd - 0.004), (base_h - 0.02) / 2))
+        parts.append(make_part(f"base_{si}", "base", kick, steel))
+        for j, z in enumerate(levels):
+            dd = bd if j == 0 else sd
+            y0, y1 = sorted((y_in, y_in + s * dd))
+            deck = S.box((w - 0.08, dd, 0.02), center=(0, (y0 + y1) / 2, z - 0.01))
+            shapes = [deck]
+            if j > 0:
+                for x in (-w / 2 + 0.06, w / 2 - 0.06):
+                    yb = y_in + s * 0.002
+                    shapes.append(S.hull([[x - 0.005, yb, z - 0.02], [x + 0.005, yb, z - 0.02],
+                                          [x - 0.005, y_in + s * dd * 0.8, z - 0.02],
+                                          [x + 0.005, y_in + s * dd * 0.8, z - 0.02],
+                                          [x - 0.005, yb, z - 0.14], [x + 0.005, yb, z - 0.14]]))
+            parts.append(make_part(f"shelf_{k}", "shelf", shapes, steel))
+            y_rail = y_in + s * (dd + 0.006)
+            rail_mat = M.solid((0.85, 0.2, 0.15) if s > 0 else (0.2, 0.35, 0.7), "plastic")
+            parts.append(make_part(f"price_rail_{k}", "price_rail",
+                                   S.box((w - 0.08, 0.012, 0.045), center=(0, y_rail, z + 0.045 / 2 - 0.025)),
+                                   rail_mat))
+            k += 1
+    return parts

@@ -1,0 +1,275 @@
+"""Shared steps of every loader: source frames, part labels, and canonicalisation.
+
+A loader reads a file into a :class:`RawAsset` (part meshes already in the canonical
+orientation and in metres, labels resolved), then :func:`finish_asset` fits the size range,
+recentres, computes convex pieces and resolves surfaces.
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from ...errors import InputError, Problem
+from ..collision import convex_pieces
+from ..model import Asset, Material, Part, finalize_asset
+
+__all__ = ["SourceFrame", "RawPart", "RawAsset", "frame_rotation", "default_label", "read_mapping",
+           "label_for", "finish_asset", "material_of", "GLTF_FRAME", "PARTNET_FRAME"]
+
+_AXES = {"x": (1.0, 0.0, 0.0), "y": (0.0, 1.0, 0.0), "z": (0.0, 0.0, 1.0)}
+
+
+@dataclass(frozen=True)
+class SourceFrame:
+    """How a source file's coordinates relate to parse3d's canonical asset frame.
+
+    Attributes
+    ----------
+    up : str
+        The source axis that points up: ``"+z"``, ``"+y"``, ``"-x"``... (a bare ``"z"`` means
+        ``"+z"``).
+    front : str
+        The source axis the object's front faces; must be perpendicular to ``up``.
+    unit_scale : float
+        Metres per source unit (``0.01`` for centimetres).
+    """
+
+    up: str = "+z"
+    front: str = "+y"
+    unit_scale: float = 1.0
+
+    def rotation(self) -> np.ndarray:
+        """(3, 3) rotation taking source coordinates to the canonical frame."""
+        return frame_rotation(self.up, self.front)
+
+
+#: glTF 2.0: +Y up, the front of an asset faces +Z, metres (the glTF specification).
+GLTF_FRAME = SourceFrame(up="+y", front="+z", unit_scale=1.0)
+#: PartNet-Mobility after applying the URDF's joints: the root joint of every mobility.urdf
+#: rotates the raw Y-up, front -Z meshes (rpy = 90 deg, 0, -90 deg) so objects stand on +Z and
+#: face +X. Units are normalised, not metres: the category size range sets the scale.
+PARTNET_FRAME = SourceFrame(up="+z", front="+x", unit_scale=1.0)
+
+
+def _axis(spec: str, what: str) -> np.ndarray:
+    s = spec.strip().lower()
+    sign = -1.0 if s.startswith("-") else 1.0
+    s = s.lstrip("+-")
+    if s not in _AXES:
+        raise InputError(Problem("", f"{what} axis {spec!r} is not one of +x, -x, +y, -y, +z, -z",
+                                 None, "parameter"))
+    return sign * np.array(_AXES[s])
+
+
+def frame_rotation(up: str, front: str) -> np.ndarray:
+    """(3, 3) rotation mapping the source ``up`` axis to +Z and ``front`` to +Y.
+
+    The source's right-hand side (``front x up``) goes to +X, so the rotation is proper.
+    """
+    u = _axis(up, "up")
+    f = _axis(front, "front")
+    if abs(float(u @ f)) > 1e-9:
+        raise InputError(Problem("", f"front axis {front!r} must be perpendicular to up axis {up!r}",
+                                 None, "parameter"))
+    r = np.cross(f, u)
+    return np.stack([r, f, u])
+
+
+_TRAILING = re.compile(r"(?:[._\-\s]*\d+)+$")
+
+
+def default_label(name: str) -> str:
+    """A part label from a node or link name: lower case, trailing indices stripped.
+
+    ``"leg_0"``, ``"Leg.001"`` and ``"leg 2"`` all give ``"leg"``; spaces become ``_``.
+    """
+    s = _TRAILING.sub("", name.strip())
+    s = re.sub(r"[\s\-]+", "_", s).lower().strip("_")
+    return s or name.strip().lower()
+
+
+def read_mapping(mapping: Mapping[str, str | None] | str | Path | None) -> tuple[dict, str | None]:
+    """A name-to-label mapping from a dict or a JSON/YAML file.
+
+    Values are part labels, or ``null`` to drop the node or link.
+
+    Returns
+    -------
+    (dict, str or None)
+        The mapping and the file it came from.
+    """
+    if mapping is None:
+        return {}, None
+    if isinstance(mapping, Mapping):
+        return dict(mapping), None
+    path = Path(mapping)
+    if not path.is_file():
+        raise InputError(Problem("", "mapping file not found", str(path), "io"))
+    text = path.read_text(encoding="utf-8")
+    try:
+        if path.suffix.lower() in (".yaml", ".yml"):
+            import yaml
+
+            data = yaml.safe_load(text)
+        else:
+            data = json.loads(text)
+    except (ValueError, ImportError) as e:
+        raise InputError(Problem("", f"cannot parse the mapping: {e}", str(path), "syntax")) from None
+    if not isinstance(data, dict):
+        raise InputError(Problem("", "a mapping must be an object {name: part label}", str(path), "schema"))
+    bad = [k for k, v in data.items() if v is not None and not isinstance(v, str)]
+    if bad:
+        raise InputError([Problem(f"/{k}", "must be a part label (string) or null", str(path), "schema")
+                          for k in bad])
+    return data, str(path)
+
+
+def check_mapping_labels(mapping: dict, vocabulary: tuple[str, ...] | None, file: str | None) -> None:
+    """InputError for mapping values outside ``vocabulary`` (when one is known)."""
+    if not vocabulary:
+        return
+    import difflib
+
+    probs = []
+    for k, v in mapping.items():
+        if v is not None and v not in vocabulary:
+            close = difflib.get_close_matches(v, vocabulary, n=1)
+            hint = f" — did you mean {close[0]!r}?" if close else f" (labels: {', '.join(vocabulary)})"
+            probs.append(Problem(f"/{k}", f"unknown part label {v!r}{hint}", file or "<mapping>",
+                                 "vocabulary"))
+    if probs:
+        raise InputError(probs)
+
+
+def label_for(names: tuple[str, ...], mapping: dict) -> str | None:
+    """The label of a node: the first of ``names`` found in ``mapping`` decides (``None`` drops
+    it); otherwise the default label of the last name."""
+    for n in names:
+        if n in mapping:
+            return mapping[n]
+    for n in names:
+        d = default_label(n)
+        if d in mapping:
+            return mapping[d]
+    return default_label(names[-1])
+
+
+def material_of(mesh: trimesh.Trimesh) -> Material:
+    """The base colour of a loaded mesh's visual (grey when it has none)."""
+    color = None
+    vis = mesh.visual
+    mat = getattr(vis, "material", None)
+    try:
+        if mat is not None:
+            color = np.asarray(mat.main_color, float)
+        elif vis is not None and vis.kind in ("vertex", "face"):
+            color = np.asarray(vis.main_color, float)
+    except (AttributeError, ValueError, IndexError):
+        color = None
+    if color is None or color.size < 3:
+        return Material()
+    c = color / 255.0 if color.max() > 1.0 else color
+    rgba = (float(c[0]), float(c[1]), float(c[2]), float(c[3]) if c.size > 3 else 1.0)
+    return Material(rgba, 0.6, 0.0, "plastic")
+
+
+@dataclass
+class RawPart:
+    """A loaded part before canonicalisation: mesh in the canonical orientation, metres."""
+
+    source: str
+    label: str
+    mesh: trimesh.Trimesh
+    material: Material = field(default_factory=Material)
+
+
+@dataclass
+class RawAsset:
+    """A loaded file's parts plus provenance, not yet recentred, fitted or decomposed."""
+
+    source: str
+    parts: list[RawPart]
+    meta: dict = field(default_factory=dict)
+
+    @property
+    def size(self) -> float:
+        b = np.array([p.mesh.bounds for p in self.parts])
+        return float((b[:, 1].max(axis=0) - b[:, 0].min(axis=0)).max())
+
+    @property
+    def labels(self) -> set[str]:
+        return {p.label for p in self.parts}
+
+
+def clean_mesh(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
+    """Merge duplicate vertices and drop degenerate faces (files often carry both)."""
+    m = trimesh.Trimesh(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64),
+                        process=True)
+    m.update_faces(m.nondegenerate_faces())
+    m.update_faces(m.unique_faces())
+    m.remove_unreferenced_vertices()
+    if m.is_watertight and m.volume < 0:
+        m.invert()
+    return m
+
+
+def finish_asset(raw: RawAsset, *, category: str, asset_id: str,
+                 size_range: tuple[float, float] | None, density: float,
+                 coacd_threshold: float = 0.05, cache_dir: str | Path | None = None) -> Asset:
+    """Canonicalise a raw asset into an :class:`Asset`.
+
+    Scales it uniformly into ``size_range`` when its largest extent falls outside (the factor
+    goes into ``meta["fit_scale"]``), recentres it (bbox bottom centre at the origin), names
+    parts (``label`` when unique, else ``label_k`` in the ``#k`` order: bottom-to-top,
+    left-to-right, back-to-front), decomposes every part into convex pieces and resolves
+    surfaces and internal surfaces.
+    """
+    meshes = [p.mesh.copy() for p in raw.parts]
+    b = np.array([m.bounds for m in meshes])
+    lo, hi = b[:, 0].min(axis=0), b[:, 1].max(axis=0)
+    size = float((hi - lo).max())
+    fit = 1.0
+    if size_range is not None and size > 0:
+        target = float(np.clip(size, size_range[0], size_range[1]))
+        fit = target / size
+    shift = -np.array([(lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2]])
+    for m in meshes:
+        m.apply_translation(shift)
+        if fit != 1.0:
+            m.apply_scale(fit)
+    counts: dict[str, int] = {}
+    for p in raw.parts:
+        counts[p.label] = counts.get(p.label, 0) + 1
+
+    def order_key(i: int):
+        m = meshes[i]
+        c = m.bounds.mean(axis=0)
+        return (round(float(m.bounds[0, 2]), 3), round(float(c[0]), 3), round(float(c[1]), 3), i)
+
+    names = [""] * len(meshes)
+    seen: dict[str, int] = {}
+    for i in sorted(range(len(meshes)), key=order_key):
+        label = raw.parts[i].label
+        if counts[label] == 1:
+            names[i] = label
+        else:
+            k = seen.get(label, 0)
+            seen[label] = k + 1
+            names[i] = f"{label}_{k}"
+    parts = []
+    for i, (rp, m) in enumerate(zip(raw.parts, meshes, strict=True)):
+        pieces = convex_pieces(m, threshold=coacd_threshold, cache_dir=cache_dir)
+        parts.append(Part(names[i], rp.label, m, rp.material, pieces, watertight=bool(m.is_watertight)))
+    meta = dict(raw.meta)
+    meta.update({"generator": "loaded", "source": raw.source, "fit_scale": fit})
+    asset = Asset(category, asset_id, parts,
+                  tuple(size_range) if size_range else (size * fit, size * fit), float(density),
+                  meta=meta)
+    return finalize_asset(asset)

@@ -1,0 +1,233 @@
+"""PartNet-Mobility-style folders: ``mobility.urdf`` + ``textured_objs/*.obj`` + ``semantics.txt``.
+
+Every URDF link with ``<visual>`` meshes becomes one part, in the rest pose (each joint at 0,
+clipped into its limits). ``semantics.txt`` has one line per link, ``link_name joint_type
+semantic_label``; the semantic label, passed through an optional mapping (a mapping entry for
+the link name wins over one for its semantic label), is the part label.
+
+Frame: the URDF's joint and visual origins are applied, so coordinates are those of the URDF's
+root link. In PartNet-Mobility the root joint rotates the raw Y-up, front -Z meshes upright
+(rpy = 90 deg, 0, -90 deg), leaving objects +Z up and facing +X, in normalised units
+(:data:`PARTNET_FRAME`); the category's size range sets the metric scale.
+"""
+
+from __future__ import annotations
+
+import os
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import numpy as np
+import trimesh
+
+from ...errors import InputError, Problem
+from ...geometry.frames import axis_angle, rot_x, rot_y, rot_z
+from ..model import Asset
+from ._canon import (
+    PARTNET_FRAME,
+    RawAsset,
+    RawPart,
+    SourceFrame,
+    check_mapping_labels,
+    clean_mesh,
+    default_label,
+    finish_asset,
+    material_of,
+    read_mapping,
+)
+
+__all__ = ["read_partnet_mobility", "load_partnet_mobility", "is_partnet_folder"]
+
+
+def is_partnet_folder(path: str | os.PathLike) -> bool:
+    """Whether ``path`` is a folder holding a ``mobility.urdf``."""
+    return (Path(path) / "mobility.urdf").is_file()
+
+
+def _floats(s: str | None, n: int) -> np.ndarray:
+    if not s:
+        return np.zeros(n)
+    v = np.array([float(x) for x in s.split()])
+    if len(v) != n:
+        raise ValueError(f"expected {n} numbers, got {s!r}")
+    return v
+
+
+def _origin(el) -> np.ndarray:
+    """(4, 4) transform of an URDF ``<origin xyz rpy>`` (fixed-axis roll, pitch, yaw)."""
+    T = np.eye(4)
+    if el is None:
+        return T
+    r, p, y = _floats(el.get("rpy"), 3)
+    T[:3, :3] = rot_z(y) @ rot_y(p) @ rot_x(r)
+    T[:3, 3] = _floats(el.get("xyz"), 3)
+    return T
+
+
+def _joint_motion(joint) -> np.ndarray:
+    """(4, 4) motion of a joint at its rest value: 0 clipped into its limits."""
+    kind = joint.get("type", "fixed")
+    T = np.eye(4)
+    if kind in ("fixed", "floating", "planar"):
+        return T
+    lim = joint.find("limit")
+    q = 0.0
+    if lim is not None and kind != "continuous":
+        lo = float(lim.get("lower", "0") or 0)
+        hi = float(lim.get("upper", "0") or 0)
+        if lo <= hi:
+            q = float(np.clip(0.0, lo, hi))
+    if q == 0.0:
+        return T
+    ax_el = joint.find("axis")
+    axis = _floats(ax_el.get("xyz") if ax_el is not None else "1 0 0", 3)
+    axis = axis / (np.linalg.norm(axis) or 1.0)
+    if kind in ("revolute", "continuous"):
+        T[:3, :3] = axis_angle(axis, q)
+    elif kind == "prismatic":
+        T[:3, 3] = axis * q
+    return T
+
+
+def _read_semantics(path: Path) -> dict[str, str]:
+    out = {}
+    if not path.is_file():
+        return out
+    for line in path.read_text(encoding="utf-8").splitlines():
+        f = line.split()
+        if len(f) >= 3:
+            out[f[0]] = f[2]
+    return out
+
+
+def read_partnet_mobility(folder: str | os.PathLike, *, mapping=None,
+                          frame: SourceFrame = PARTNET_FRAME,
+                          vocabulary: tuple[str, ...] | None = None) -> RawAsset:
+    """Read a PartNet-Mobility-style folder into a :class:`RawAsset`.
+
+    Raises
+    ------
+    InputError
+        Missing folder or ``mobility.urdf``, malformed URDF, a missing mesh file, a link with
+        geometry but no label, fewer than two parts, or a label outside ``vocabulary``.
+    """
+    folder = Path(folder)
+    urdf = folder / "mobility.urdf"
+    if not folder.is_dir():
+        raise InputError(Problem("", "folder not found", str(folder), "io"))
+    if not urdf.is_file():
+        raise InputError(Problem("", "not a PartNet-Mobility folder (no mobility.urdf)", str(folder), "io"))
+    mapping, mfile = read_mapping(mapping)
+    check_mapping_labels(mapping, vocabulary, mfile)
+    file = str(urdf)
+    try:
+        root = ET.parse(urdf).getroot()
+    except ET.ParseError as e:
+        raise InputError(Problem("", f"malformed URDF: {e}", file, "syntax")) from None
+    links = {ln.get("name"): ln for ln in root.findall("link")}
+    children: dict[str, list] = {}
+    child_of = set()
+    for j in root.findall("joint"):
+        p, c = j.find("parent"), j.find("child")
+        if p is None or c is None:
+            raise InputError(Problem(f"/joint/{j.get('name')}", "joint without parent or child", file, "schema"))
+        children.setdefault(p.get("link"), []).append(j)
+        child_of.add(c.get("link"))
+    world: dict[str, np.ndarray] = {}
+    stack = [(name, np.eye(4)) for name in links if name not in child_of]
+    try:
+        while stack:
+            name, T = stack.pop()
+            world[name] = T
+            for j in children.get(name, []):
+                stack.append((j.find("child").get("link"), T @ _origin(j.find("origin")) @ _joint_motion(j)))
+    except ValueError as e:
+        raise InputError(Problem("", f"bad joint origin: {e}", file, "syntax")) from None
+    semantics = _read_semantics(folder / "semantics.txt")
+    S = np.eye(4)
+    S[:3, :3] = frame.rotation() * float(frame.unit_scale)
+    parts, unlabelled, probs = [], [], []
+    for name in sorted(links, key=_natural):
+        link = links[name]
+        meshes = []
+        mat = None
+        for vis in link.findall("visual"):
+            m_el = vis.find("geometry/mesh")
+            if m_el is None:
+                continue
+            mpath = folder / m_el.get("filename", "")
+            if not mpath.is_file():
+                probs.append(Problem(f"/link/{name}/visual", f"mesh file {m_el.get('filename')!r} not found",
+                                     file, "io"))
+                continue
+            try:
+                mesh = trimesh.load(str(mpath), force="mesh")
+            except Exception as e:  # trimesh raises many types for a broken file
+                probs.append(Problem(f"/link/{name}/visual", f"cannot read {mpath.name}: {e}", file, "syntax"))
+                continue
+            if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
+                continue
+            scale = _floats(m_el.get("scale"), 3) if m_el.get("scale") else np.ones(3)
+            mat = mat or material_of(mesh)
+            m = mesh.copy()
+            if not np.allclose(scale, 1.0):
+                m.apply_transform(np.diag([*scale, 1.0]))
+            m.apply_transform(S @ world.get(name, np.eye(4)) @ _origin(vis.find("origin")))
+            meshes.append(m)
+        if not meshes:
+            continue
+        if name in mapping:
+            label = mapping[name]
+        elif name in semantics:
+            sem = semantics[name]
+            label = mapping.get(sem, mapping.get(default_label(sem), default_label(sem)))
+        else:
+            unlabelled.append(name)
+            continue
+        if label is None:
+            continue
+        mesh = clean_mesh(trimesh.util.concatenate(meshes))
+        parts.append(RawPart(name, label, mesh, mat or material_of(mesh)))
+    if unlabelled:
+        probs.append(Problem("", f"links {unlabelled} have geometry but no line in semantics.txt and no "
+                             "mapping entry", file, "vocabulary"))
+    if vocabulary:
+        import difflib
+
+        for p in parts:
+            if p.label not in vocabulary:
+                close = difflib.get_close_matches(p.label, vocabulary, n=1)
+                hint = f" — did you mean {close[0]!r}? (add it to the mapping)" if close else \
+                    f" (labels: {', '.join(vocabulary)}; map it with --mapping)"
+                probs.append(Problem(f"/link/{p.source}", f"unknown part label {p.label!r}{hint}",
+                                     file, "vocabulary"))
+    if probs:
+        raise InputError(probs)
+    if len(parts) < 2:
+        raise InputError(Problem("", f"found {len(parts)} labelled link(s) with geometry; a part-split "
+                                 "asset needs at least two", file, "geometry"))
+    return RawAsset(str(folder), parts, {"source_format": "partnet-mobility",
+                                         "frame": frame.__dict__.copy()})
+
+
+def _natural(name: str):
+    import re
+
+    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", name)]
+
+
+def load_partnet_mobility(folder: str | os.PathLike, *, category: str, mapping=None,
+                          frame: SourceFrame = PARTNET_FRAME,
+                          size_range: tuple[float, float] | None = None,
+                          density: float | None = None, asset_id: str | None = None,
+                          cache_dir: str | os.PathLike | None = None) -> Asset:
+    """Load a PartNet-Mobility folder as an asset of ``category`` (see :func:`load_glb` for the
+    parameters; ``frame`` defaults to :data:`PARTNET_FRAME`)."""
+    from .glb import _category_defaults
+
+    vocab, sr, dens = _category_defaults(category)
+    raw = read_partnet_mobility(folder, mapping=mapping, frame=frame, vocabulary=vocab)
+    return finish_asset(raw, category=category,
+                        asset_id=asset_id or f"{category}-{Path(folder).name}",
+                        size_range=size_range or sr, density=density or dens or 500.0,
+                        cache_dir=cache_dir)

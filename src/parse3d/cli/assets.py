@@ -1,0 +1,225 @@
+"""``parse3d assets``: list, inspect, picture, pre-build and extend the asset library."""
+
+from __future__ import annotations
+
+import difflib
+from pathlib import Path
+
+import typer
+
+from ..errors import InputError, Problem, VocabularyError
+from ._common import console, print_json
+
+__all__ = ["register"]
+
+assets_app = typer.Typer(
+    name="assets",
+    help="The asset library: categories, their parts, pictures, the pre-built pool, user assets.",
+    no_args_is_help=True,
+)
+
+
+def _category(name: str):
+    from ..assets import registry
+
+    cats = registry.categories()
+    if name in cats:
+        return cats[name]
+    close = difflib.get_close_matches(name, list(cats), n=1)
+    hint = f" — did you mean {close[0]!r}?" if close else " (see `parse3d assets list`)"
+    raise VocabularyError(Problem("", f"unknown category {name!r}{hint}", "<command line>", "vocabulary"))
+
+
+def _generate(category: str, seed: int):
+    from ..assets import registry
+
+    _category(category)
+    return registry.generate(category, seed)
+
+
+@assets_app.command("list")
+def list_(json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
+    """List categories with their part vocabulary and size range.
+
+    Example: parse3d assets list --json
+    """
+    from ..assets import registry
+
+    rows = [{"category": c.name, "parts": list(c.vocabulary), "required": list(c.parts),
+             "size_range": [float(c.size_range[0]), float(c.size_range[1])],
+             "placement": c.placement, "variants": list(c.variants), "source": c.source}
+            for c in registry.categories().values()]
+    if json_:
+        print_json(rows)
+        return
+    from rich.table import Table
+
+    t = Table("category", "parts (required in bold)", "size (m)", "placement", "variants")
+    for r in rows:
+        parts = ", ".join(f"[bold]{p}[/bold]" if p in r["required"] else p for p in r["parts"])
+        t.add_row(r["category"], parts, f"{r['size_range'][0]:.2f}–{r['size_range'][1]:.2f}",
+                  r["placement"], ", ".join(r["variants"]))
+    console.print(t)
+    console.print(f"{len(rows)} categories")
+
+
+@assets_app.command("show")
+def show(category: str = typer.Argument(..., help="Category name."),
+         seed: int = typer.Option(0, "--seed", help="Asset seed."),
+         json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
+    """Show one asset: parts, their surfaces (normal, area), internal surfaces, size.
+
+    Example: parse3d assets show mug --seed 3
+    """
+    asset = _generate(category, seed)
+    summary = asset.summary()
+    summary["size"] = round(asset.size, 4)
+    if json_:
+        print_json(summary)
+        return
+    from rich.table import Table
+
+    console.print(f"[bold]{asset.asset_id}[/bold]  size {asset.size:.3f} m  extents "
+                  f"{[round(float(x), 3) for x in asset.extents]}  mass {asset.mass:.2f} kg")
+    t = Table("part", "label", "material", "pieces", "surfaces (normal, area m²)")
+    for p in asset.parts:
+        surf = "  ".join(f"{k}{'*' if s.source == 'bbox' else ''} {s.area:.4f}"
+                         for k, s in p.surfaces.items())
+        t.add_row(p.name, p.label, p.material.name, str(len(p.pieces)), surf)
+    console.print(t)
+    console.print("(* = bounding-box fallback)")
+    if asset.internal:
+        t2 = Table("internal surface of", "height (m)", "area (m²)", "clearance (m)", "depth (m)")
+        for s in asset.internal:
+            t2.add_row(s.part, f"{s.surface.origin[2]:.3f}", f"{s.surface.area:.4f}",
+                       "open" if s.clearance == float("inf") else f"{s.clearance:.3f}", f"{s.depth:.3f}")
+        console.print(t2)
+
+
+@assets_app.command("render")
+def render(category: str = typer.Argument(..., help="Category name."),
+           seed: int = typer.Option(0, "--seed", help="Asset seed."),
+           out: Path = typer.Option(..., "-o", "--out", help="PNG file to write.")) -> None:
+    """Draw one asset, parts coloured by material, seen from the front-right.
+
+    Example: parse3d assets render desk --seed 2 -o desk.png
+    """
+    from ..assets.preview import render_asset
+
+    asset = _generate(category, seed)
+    render_asset(asset, out)
+    console.print(f"wrote {out}")
+
+
+@assets_app.command("gallery")
+def gallery(out: Path = typer.Option(Path("docs/gallery.png"), "--out", "-o", help="PNG file."),
+            seeds: int = typer.Option(3, "--seeds", min=1, help="Assets per category."),
+            categories: str = typer.Option("", "--categories", help="Comma-separated subset.")) -> None:
+    """A contact sheet of every category (or a subset) over a few seeds.
+
+    Example: parse3d assets gallery --out docs/gallery.png --seeds 3
+    """
+    from rich.progress import track
+
+    from ..assets import registry
+    from ..assets.preview import contact_sheet
+
+    names = [c.strip() for c in categories.split(",") if c.strip()] or list(registry.categories())
+    for n in names:
+        _category(n)
+    rows = [(n, [registry.generate(n, s) for s in range(seeds)])
+            for n in track(names, description="generating", console=console)]
+    contact_sheet(rows, out)
+    console.print(f"wrote {out} ({len(rows)} categories x {seeds} seeds)")
+
+
+@assets_app.command("build")
+def build(per_category: int = typer.Option(20, "--per-category", min=1, help="Assets per category (K)."),
+          workers: int = typer.Option(2, "--workers", min=1, help="Worker processes."),
+          categories: str = typer.Option("", "--categories", help="Comma-separated subset."),
+          json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
+    """Pre-generate the asset pool (K assets per category) into the cache.
+
+    Example: parse3d assets build --per-category 20 --workers 2
+    """
+    from ..assets.pool import AssetPool
+
+    names = [c.strip() for c in categories.split(",") if c.strip()] or None
+    for n in names or []:
+        _category(n)
+    pool = AssetPool(per_category=per_category)
+    rep = pool.build(names, workers=workers, progress=not json_)
+    data = {"root": str(pool.root), "generated": rep.generated, "cached": rep.cached,
+            "seconds": round(rep.seconds, 2),
+            "median_seconds_per_category": {k: round(v, 4) for k, v in rep.per_category.items()},
+            "failures": rep.failures}
+    if json_:
+        print_json(data)
+    else:
+        console.print(f"pool {pool.root}: {rep.generated} generated, {rep.cached} already cached, "
+                      f"{rep.seconds:.1f} s")
+        for k, v in rep.failures.items():
+            console.print(f"[red]failed[/red] {k}: {v}")
+    if rep.failures:
+        raise typer.Exit(1)
+
+
+def _parse_range(text: str | None) -> tuple[float, float] | None:
+    if not text:
+        return None
+    try:
+        lo, hi = (float(x) for x in text.split(","))
+    except ValueError:
+        raise InputError(Problem("", f"--size-range {text!r} must be two numbers 'low,high' in metres",
+                                 "<command line>", "parameter")) from None
+    return lo, hi
+
+
+@assets_app.command("add")
+def add(src: Path = typer.Argument(..., help="Folder of .glb/.gltf files and/or PartNet-Mobility folders."),
+        category: str = typer.Option(..., "--category", help="Category to create or extend."),
+        mapping: Path = typer.Option(None, "--mapping", help="JSON/YAML {node or link name: part label}."),
+        parts: str = typer.Option("", "--parts", help="Part vocabulary of a new category, comma-separated."),
+        size_range: str = typer.Option("", "--size-range", help="'low,high': largest extent in metres."),
+        up: str = typer.Option("", "--up", help="Source up axis (z, y, -y...); default per format."),
+        front: str = typer.Option("", "--front", help="Source front axis (+z, -x...); default per format."),
+        scale: float = typer.Option(1.0, "--scale", help="Metres per source unit."),
+        placement: str = typer.Option("", "--placement", help="floor, surface, wall, ceiling or inside."),
+        json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
+    """Add real part-split assets to the user library.
+
+    Example: parse3d assets add ./my_chairs --category armchair --mapping map.json --up y --front +z
+    """
+    from ..assets.loaders import GLTF_FRAME, PARTNET_FRAME, SourceFrame, add_assets, find_sources
+
+    if not src.exists():
+        raise InputError(Problem("", "folder not found", str(src), "io"))
+    frame = None
+    if up or front or scale != 1.0:
+        # fill what was not given from the format's own convention
+        sources = find_sources(src) if src.exists() else []
+        base = PARTNET_FRAME if sources and sources[0].is_dir() else GLTF_FRAME
+        if up and not front:
+            raise InputError(Problem("", "--up needs --front as well (the front axis must be "
+                                     "perpendicular to the up axis)", "<command line>", "parameter"))
+        frame = SourceFrame(up or base.up, front or base.front, scale if scale > 0 else 1.0)
+        if scale <= 0:
+            raise InputError(Problem("", f"--scale {scale} must be positive", "<command line>", "parameter"))
+    cat = add_assets(src, category=category, mapping=mapping,
+                     parts=tuple(p.strip() for p in parts.split(",") if p.strip()) or None,
+                     size_range=_parse_range(size_range), frame=frame,
+                     placement=placement or None)
+    data = {"category": cat.name, "parts": list(cat.vocabulary), "required": list(cat.parts),
+            "size_range": list(cat.size_range), "assets": list(cat.loaded_assets),
+            "procedural": cat.generator is not None}
+    if json_:
+        print_json(data)
+    else:
+        kind = "added to procedural category" if cat.generator is not None else "category"
+        console.print(f"{kind} {cat.name!r}: {len(cat.loaded_assets)} loaded asset(s), parts "
+                      f"{', '.join(cat.vocabulary)}; size {cat.size_range[0]:.2f}–{cat.size_range[1]:.2f} m")
+
+
+def register(app: typer.Typer) -> None:
+    """Add the ``assets`` command group to the ``parse3d`` app."""
+    app.add_typer(assets_app, name="assets")
