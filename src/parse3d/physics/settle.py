@@ -1,0 +1,328 @@
+"""Settling a solved scene under gravity in SAPIEN 3 (PhysX, CPU).
+
+The paper (supplementary, "Scene Simulation Procedure") simulates every scene for 1000 steps
+of 0.01 s with a linear damping of 0.05 and an angular damping of 0.5 on every object, using
+convex collision pieces; those are the defaults of :class:`SettleConfig`.
+
+Choices of this implementation (see ``docs/physics.md``):
+
+- objects with ``fixed`` set (the solver sets it for ``SECURED_TO`` a wall and
+  ``HANGING_BELOW`` something) are kinematic: they hold their pose and push, but are not
+  pushed; real wall anchors and cords are not simulated;
+- the run stops early once every dynamic body sleeps (checked every ``check_every`` steps):
+  PhysX does not move sleeping bodies and nothing can wake them (no kinematic body moves and
+  no force is applied), so the remaining steps would not change any pose;
+- PhysX runs on the calling thread (``cpu_workers=0``): one core per scene, deterministic.
+
+After the run every object gets its settled pose and, in ``PlacedObject.flags``, ``fell``
+(dropped more than 5 cm), ``tipped`` (its up axis tilted more than 15 degrees) and
+``left_support`` (no longer within the contact threshold of the part that supported it).
+Every PAG relation is re-checked on the settled poses.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ..geometry.frames import quat_to_matrix
+from ..scene.model import Scene
+from .bodies import build_world
+from .collision import ROOM
+
+__all__ = ["SettleConfig", "ObjectMotion", "SettleReport", "settle", "PHYSICS_FLAGS"]
+
+#: Flags that settling owns in ``PlacedObject.flags`` (replaced on every run).
+PHYSICS_FLAGS = ("fell", "tipped", "left_support")
+
+
+@dataclass(frozen=True)
+class SettleConfig:
+    """Parameters of a settling run (saved into ``scene.meta["settle"]``).
+
+    Attributes
+    ----------
+    dt : float
+        Time step, seconds (paper: 0.01).
+    steps : int
+        Steps to simulate at most (paper: 1000).
+    linear_damping, angular_damping : float
+        Per dynamic body (paper: 0.05 and 0.5).
+    early_exit : bool
+        Stop once every dynamic body sleeps.
+    check_every : int
+        Steps between sleep checks.
+    sleep_threshold : float
+        PhysX's mass-normalised kinetic energy below which a body may sleep.
+    max_depenetration_velocity : float
+        m/s; how fast PhysX may push interpenetrating bodies apart.
+    solver_position_iterations, solver_velocity_iterations : int
+    fall_distance : float
+        A drop larger than this (m) flags ``fell``.
+    tip_angle_deg : float
+        A tilt of the up axis larger than this flags ``tipped``.
+    contact_threshold : float
+        Distance (m) within which an object still touches its supporter.
+    """
+
+    dt: float = 0.01
+    steps: int = 1000
+    linear_damping: float = 0.05
+    angular_damping: float = 0.5
+    early_exit: bool = True
+    check_every: int = 10
+    sleep_threshold: float = 0.005
+    max_depenetration_velocity: float = 0.5
+    solver_position_iterations: int = 10
+    solver_velocity_iterations: int = 1
+    fall_distance: float = 0.05
+    tip_angle_deg: float = 15.0
+    contact_threshold: float = 0.001
+
+    def __post_init__(self):
+        if self.dt <= 0 or self.steps < 0 or self.check_every < 1:
+            raise ValueError("dt must be > 0, steps >= 0 and check_every >= 1")
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+@dataclass
+class ObjectMotion:
+    """How one object moved while settling.
+
+    Attributes
+    ----------
+    id : str
+    displacement : float
+        Distance between the solved and settled asset origins, metres.
+    drop : float
+        Fall of the origin (positive = lower), metres.
+    rotation_deg : float
+        Angle of the rotation between the solved and settled orientations.
+    tilt_deg : float
+        Angle between the solved and settled up (+Z) axes.
+    fixed : bool
+        Held kinematic.
+    flags : list of str
+        Subset of :data:`PHYSICS_FLAGS`.
+    """
+
+    id: str
+    displacement: float
+    drop: float
+    rotation_deg: float
+    tilt_deg: float
+    fixed: bool = False
+    flags: list[str] = field(default_factory=list)
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"id": self.id, "displacement": round(self.displacement, 6),
+                "drop": round(self.drop, 6), "rotation_deg": round(self.rotation_deg, 4),
+                "tilt_deg": round(self.tilt_deg, 4), "fixed": self.fixed, "flags": self.flags}
+
+
+@dataclass
+class SettleReport:
+    """The outcome of :func:`settle`.
+
+    Attributes
+    ----------
+    config : SettleConfig
+    steps : int
+        Steps actually simulated.
+    early_exit : bool
+        Whether the run stopped because everything slept.
+    seconds : float
+        Wall time of the whole call (building the world, stepping, measuring).
+    build_seconds, step_seconds : float
+        Building the PhysX world; stepping it.
+    objects : dict of str to ObjectMotion
+    relations_checked : bool
+        Whether the PAG relations were re-checked on the settled poses.
+    """
+
+    config: SettleConfig
+    steps: int
+    early_exit: bool
+    seconds: float
+    build_seconds: float
+    step_seconds: float
+    objects: dict[str, ObjectMotion]
+    relations_checked: bool = False
+
+    def moved(self, *, distance: float = 0.01, angle_deg: float = 2.0) -> list[str]:
+        """Ids of objects that moved more than ``distance`` (m) or rotated more than
+        ``angle_deg``."""
+        return [m.id for m in self.objects.values()
+                if m.displacement > distance or m.rotation_deg > angle_deg]
+
+    def flagged(self, flag: str) -> list[str]:
+        return [m.id for m in self.objects.values() if flag in m.flags]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"config": self.config.to_dict(), "steps": self.steps,
+                "early_exit": self.early_exit, "seconds": round(self.seconds, 4),
+                "build_seconds": round(self.build_seconds, 4),
+                "step_seconds": round(self.step_seconds, 4),
+                "relations_checked": self.relations_checked,
+                "objects": {k: v.to_dict() for k, v in self.objects.items()}}
+
+
+def _angle_deg(R: np.ndarray) -> float:
+    c = (np.trace(R) - 1.0) / 2.0
+    return float(np.degrees(np.arccos(np.clip(c, -1.0, 1.0))))
+
+
+def _support_key(support: str | None) -> tuple[str, str | None] | None:
+    """``parent:part@surface`` -> ``(parent, part)``; ``floor``, ``room:floor`` ->
+    ``("room", "floor")``; ``wall`` (any wall) -> ``("room", None)``."""
+    if not support:
+        return None
+    ref = support.split("@", 1)[0]
+    obj, _, part = ref.partition(":")
+    part = part.split("#", 1)[0] or None
+    if obj in ("floor", "ceiling") or obj.startswith("wall_"):
+        return ROOM, obj
+    if obj == "wall":
+        return ROOM, None
+    return obj, part
+
+
+def _left_support(scene: Scene, ids: list[str], threshold: float) -> set[str]:
+    """Objects among ``ids`` no longer within ``threshold`` of the part that supported them."""
+    from .contacts import extract_contacts
+
+    wanted: dict[str, tuple[str, str | None]] = {}
+    for oid in ids:
+        key = _support_key(scene.objects[oid].support)
+        if key is None:
+            continue
+        parent = key[0]
+        if parent != ROOM and (parent not in scene.objects or not scene.objects[parent].placed):
+            continue
+        wanted[oid] = key
+    if not wanted:
+        return set()
+    # only whether a pair touches matters here, so a sparser sampling will do
+    contacts = extract_contacts(scene, threshold=threshold, settled=True, samples_per_m2=2000.0,
+                                pairs=[(c, p) for c, (p, _) in wanted.items()])
+    touching: dict[str, set[str]] = {}
+    for c in contacts:
+        for x, y in ((c.a, c.b), (c.b, c.a)):
+            touching.setdefault(x.split(":", 1)[0], set()).add(y)
+    out = set()
+    for oid, (parent, part) in wanted.items():
+        other = touching.get(oid, set())
+        if part is None:
+            ok = any(k.split(":", 1)[0] == parent for k in other)
+        else:
+            ok = f"{parent}:{part}" in other
+        if not ok:
+            out.add(oid)
+    return out
+
+
+def _recheck_relations(scene: Scene) -> bool:
+    """Re-check every PAG relation on the settled poses (``holds_settled``/``residual_settled``)."""
+    if not scene.pag.relations:
+        return False
+    from ..solver.checks import check_relations
+
+    checks = check_relations(scene, settled=True)
+    have = {c.index for c in scene.relations}
+    for c in checks:
+        if c.index not in have:
+            scene.relations.append(c)
+    scene.relations.sort(key=lambda c: c.index)
+    return True
+
+
+def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None = None,
+           steps: int | None = None, linear_damping: float | None = None,
+           angular_damping: float | None = None) -> SettleReport:
+    """Simulate ``scene`` under gravity and write the settled poses into it.
+
+    Parameters
+    ----------
+    scene : Scene
+        Modified in place: ``settled_rotation``/``settled_position`` and physics flags of every
+        placed object, ``holds_settled``/``residual_settled`` of every relation,
+        ``settled = True``, ``timings["settle"]`` and ``meta["settle"]`` (config and summary).
+    config : SettleConfig, optional
+        All parameters (defaults: the paper's).
+    dt, steps, linear_damping, angular_damping : optional
+        Override the paper's four parameters of ``config``.
+
+    Returns
+    -------
+    SettleReport
+    """
+    from dataclasses import replace
+
+    cfg = config or SettleConfig()
+    over = {k: v for k, v in (("dt", dt), ("steps", steps), ("linear_damping", linear_damping),
+                              ("angular_damping", angular_damping)) if v is not None}
+    if over:
+        cfg = replace(cfg, **over)
+    t0 = time.perf_counter()
+    world = build_world(scene, timestep=cfg.dt, linear_damping=cfg.linear_damping,
+                        angular_damping=cfg.angular_damping,
+                        max_depenetration_velocity=cfg.max_depenetration_velocity,
+                        sleep_threshold=cfg.sleep_threshold,
+                        solver_position_iterations=cfg.solver_position_iterations,
+                        solver_velocity_iterations=cfg.solver_velocity_iterations)
+    t1 = time.perf_counter()
+    dyn = [world.bodies[i] for i in world.dynamic]
+    n = 0
+    early = False
+    step = world.sapien_scene.step
+    while n < cfg.steps:
+        k = min(cfg.check_every, cfg.steps - n)
+        for _ in range(k):
+            step()
+        n += k
+        if cfg.early_exit and n < cfg.steps and all(b.is_sleeping for b in dyn):
+            early = True
+            break
+    t2 = time.perf_counter()
+
+    motions: dict[str, ObjectMotion] = {}
+    for oid, ent in world.entities.items():
+        if oid == ROOM:
+            continue
+        obj = scene.objects[oid]
+        pose = ent.get_pose()
+        R = quat_to_matrix(np.asarray(pose.q, float))
+        t = np.asarray(pose.p, float)
+        if obj.fixed:  # kinematic: exactly where the solver put it
+            R, t = np.array(obj.rotation, float), np.array(obj.position, float)
+        obj.settled_rotation, obj.settled_position = R, t
+        dR = R @ np.asarray(obj.rotation).T
+        tilt = float(np.degrees(np.arccos(np.clip(R[:, 2] @ np.asarray(obj.rotation)[:, 2], -1, 1))))
+        m = ObjectMotion(oid, float(np.linalg.norm(t - obj.position)),
+                         float(obj.position[2] - t[2]), _angle_deg(dR), tilt, obj.fixed)
+        if m.drop > cfg.fall_distance:
+            m.flags.append("fell")
+        if m.tilt_deg > cfg.tip_angle_deg:
+            m.flags.append("tipped")
+        motions[oid] = m
+    for lost in _left_support(scene, [k for k, m in motions.items() if not m.fixed],
+                              cfg.contact_threshold):
+        motions[lost].flags.append("left_support")
+    for oid, m in motions.items():
+        o = scene.objects[oid]
+        o.flags = [f for f in o.flags if f not in PHYSICS_FLAGS] + m.flags
+    scene.settled = True
+    checked = _recheck_relations(scene)
+    t3 = time.perf_counter()
+    report = SettleReport(cfg, n, early, t3 - t0, t1 - t0, t2 - t1, motions, checked)
+    scene.timings["settle"] = round(t3 - t0, 4)
+    scene.meta["settle"] = {"config": cfg.to_dict(), "steps": n, "early_exit": early,
+                            "moved": report.moved(), "fell": report.flagged("fell"),
+                            "tipped": report.flagged("tipped"),
+                            "left_support": report.flagged("left_support")}
+    return report
