@@ -1,0 +1,3 @@
+from parse3d.cli import main
+
+main()

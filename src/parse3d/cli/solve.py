@@ -1,0 +1,114 @@
+"""``parse3d solve`` and ``parse3d generate``."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import typer
+
+from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InputError, Problem
+from ._common import console, print_json
+
+
+def _summary(scene, out: Path | None) -> dict:
+    s = {
+        "name": scene.pag.name,
+        "room": scene.pag.room.type,
+        "seed": scene.seed,
+        "objects": len(scene.objects),
+        "placed": len(scene.placed),
+        "failed": [{"id": o.id, "reason": o.reason} for o in scene.failed],
+        "relations_holding": sum(1 for c in scene.relations if c.holds),
+        "relations": len(scene.relations),
+        "relations_holding_settled": (sum(1 for c in scene.relations if c.holds_settled)
+                                      if scene.settled else None),
+        "contacts": None if scene.contacts is None else len(scene.contacts),
+        "timings": {k: round(v, 4) for k, v in scene.timings.items()},
+        "out": str(out) if out else None,
+    }
+    return s
+
+
+def _print_summary(s: dict) -> None:
+    console.print(f"[bold]{s['name']}[/] ({s['room']}, seed {s['seed']}): "
+                  f"{s['placed']}/{s['objects']} objects placed, "
+                  f"{s['relations_holding']}/{s['relations']} relations hold after solving"
+                  + (f", {s['relations_holding_settled']} after settling"
+                     if s["relations_holding_settled"] is not None else "")
+                  + (f", {s['contacts']} part-level contacts" if s["contacts"] is not None else ""))
+    t = s["timings"]
+    console.print("  time: " + ", ".join(f"{k} {v:.3f} s" for k, v in t.items()))
+    for f in s["failed"]:
+        console.print(f"  [red]failed[/] {f['id']}: {f['reason']}")
+    if s["out"]:
+        console.print(f"  wrote {s['out']}/scene.json, scene.glb"
+                      + (", contacts.json" if s["contacts"] is not None else "")
+                      + (", preview.png" if (Path(s['out']) / 'preview.png').exists() else ""))
+
+
+def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
+    from ..pipeline import PipelineOptions, run_pipeline
+    from ..solver import SolverConfig
+
+    if strategy not in ("constrained", "rejection"):
+        raise InputError(Problem("", f"unknown strategy {strategy!r} (use constrained or rejection)",
+                                 "--strategy", "parameter"))
+    opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
+                           solver=SolverConfig(strategy=strategy))
+    scene = run_pipeline(pag, seed=seed, out=out, options=opts)
+    s = _summary(scene, out)
+    if as_json:
+        print_json(s)
+    else:
+        _print_summary(s)
+    if not scene.ok:
+        sys.exit(EXIT_INFEASIBLE)
+
+
+def register(app: typer.Typer) -> None:
+    @app.command("solve")
+    def solve_cmd(
+        pag_file: Path = typer.Argument(..., help="PAG file (.json or .yaml)."),
+        seed: int = typer.Option(0, "--seed", help="Scene seed."),
+        out: Path = typer.Option(None, "--out", "-o", help="Output folder (default: out/<name>-<seed>)."),
+        strategy: str = typer.Option("constrained", help="constrained (Algorithm 1) or rejection (baseline)."),
+        no_settle: bool = typer.Option(False, "--no-settle", help="Skip physics settling and contacts."),
+        no_preview: bool = typer.Option(False, "--no-preview", help="Skip preview.png."),
+        as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON."),
+    ) -> None:
+        """Solve a PAG into a settled scene: scene.json, scene.glb, contacts.json, preview.png.
+
+        Exit codes: 0 all objects placed, 2 invalid PAG, 3 some objects could not be placed
+        (the scene is still written, failed objects marked).
+
+        Example: parse3d solve examples/study.json --seed 3 --out out/study
+        """
+        from ..assets.registry import vocabulary
+        from ..pag.io import load_pag
+
+        pag = load_pag(pag_file, vocabulary=vocabulary())
+        out = out or Path("out") / f"{pag.name or pag_file.stem}-{seed}"
+        _run(pag, seed, out, strategy, no_settle, no_preview, as_json)
+
+    @app.command("generate")
+    def generate_cmd(
+        room_type: str = typer.Argument(..., help="Room type, e.g. bedroom, kitchen, study."),
+        seed: int = typer.Option(0, "--seed"),
+        out: Path = typer.Option(None, "--out", "-o"),
+        no_settle: bool = typer.Option(False, "--no-settle"),
+        no_preview: bool = typer.Option(False, "--no-preview"),
+        as_json: bool = typer.Option(False, "--json"),
+    ) -> None:
+        """Generate a scene of a room type from the bundled PAGs (and templates, when present).
+
+        Example: parse3d generate bedroom --seed 7 --out out/bedroom-7
+        """
+        from ..scenes import bundled_pag
+
+        pag = bundled_pag(room_type, seed)
+        out = out or Path("out") / f"{room_type}-{seed}"
+        _run(pag, seed, out, "constrained", no_settle, no_preview, as_json)
+
+
+__all__ = ["register", "EXIT_INPUT"]

@@ -1,0 +1,212 @@
+"""2D feasible regions in a support plane: Minkowski erosion, clipping and uniform sampling.
+
+Regions are shapely geometries in a plane's (u, v) coordinates. A region may be polygonal
+(2D), a set of segments (after a line constraint) or a set of points (after two).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+from scipy.spatial import ConvexHull, QhullError
+from shapely.geometry import LineString, MultiPoint, Point, Polygon
+from shapely.geometry import box as shapely_box
+from shapely.geometry.base import BaseGeometry
+
+__all__ = [
+    "minkowski_convex",
+    "erode",
+    "half_plane",
+    "strip",
+    "line",
+    "disk",
+    "sample_uniform",
+    "convex_footprint",
+]
+
+
+def convex_footprint(points2d: np.ndarray) -> np.ndarray:
+    """(K, 2) convex hull vertices of (N, 2) points, counter-clockwise."""
+    pts = np.asarray(points2d, float)
+    try:
+        h = ConvexHull(pts)
+        return pts[h.vertices]  # qhull gives 2D hulls counter-clockwise
+    except (QhullError, ValueError):  # degenerate (collinear) point sets
+        hull = MultiPoint(pts).convex_hull.buffer(1e-4)
+        return np.asarray(hull.exterior.coords)[:-1]
+
+
+def minkowski_sum_convex(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """(K, 2) vertices of the Minkowski sum of two convex CCW polygons, by merging edges."""
+    a = np.asarray(a, float)
+    b = np.asarray(b, float)
+    a = np.roll(a, -int(np.lexsort((a[:, 0], a[:, 1]))[0]), axis=0)
+    b = np.roll(b, -int(np.lexsort((b[:, 0], b[:, 1]))[0]), axis=0)
+    ea = np.roll(a, -1, axis=0) - a
+    eb = np.roll(b, -1, axis=0) - b
+    e = np.vstack([ea, eb])
+    ang = np.mod(np.arctan2(e[:, 1], e[:, 0]), 2 * np.pi)
+    order = np.argsort(ang, kind="stable")
+    pts = (a[0] + b[0]) + np.vstack([[0.0, 0.0], np.cumsum(e[order], axis=0)[:-1]])
+    return pts
+
+
+def minkowski_convex(a: np.ndarray, b: np.ndarray) -> Polygon:
+    """Minkowski sum of two convex point sets (N, 2) and (M, 2) as a polygon."""
+    return Polygon(minkowski_sum_convex(convex_footprint(a), convex_footprint(b)))
+
+
+def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
+    """Erosion of a convex polygon by a footprint: each edge moves in by the footprint's
+    support along the edge's outward normal."""
+    c = np.asarray(poly.exterior.coords)[:-1]
+    if not Polygon(c).exterior.is_ccw:
+        c = c[::-1]
+    e = np.roll(c, -1, axis=0) - c
+    n = np.c_[e[:, 1], -e[:, 0]]  # outward normal of a CCW ring
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    shift = np.max(-neg @ n.T, axis=0)  # support of the footprint (F = -neg) along n
+    off = np.einsum("ij,ij->i", c, n) - shift
+    # clip a big box by every half-plane {x : x . n <= off}
+    x0, y0, x1, y1 = poly.bounds
+    pts = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], float)
+    for ni, oi in zip(n, off, strict=True):
+        if len(pts) == 0:
+            break
+        d = pts @ ni - oi
+        nxt = []
+        for k in range(len(pts)):
+            p, q = pts[k], pts[(k + 1) % len(pts)]
+            dp, dq = d[k], d[(k + 1) % len(pts)]
+            if dp <= 0:
+                nxt.append(p)
+            if (dp < 0) != (dq < 0) and abs(dp - dq) > 1e-15:
+                nxt.append(p + (q - p) * (dp / (dp - dq)))
+        pts = np.array(nxt)
+    if len(pts) < 3:
+        return Polygon()
+    out = Polygon(pts)
+    return out if out.is_valid and out.area > 0 else Polygon()
+
+
+def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarray) -> BaseGeometry:
+    """Positions ``p`` where ``p + footprint`` lies inside ``region`` and misses every obstacle.
+
+    Parameters
+    ----------
+    region : shapely Polygon or MultiPolygon
+        Where the footprint must stay.
+    obstacles : list of (K, 2) arrays
+        Convex obstacles (occupied footprints).
+    footprint : (F, 2) array
+        Convex footprint of the object relative to its reference point (which should lie
+        inside the footprint, so that the boundary sweep below is exact).
+
+    Returns
+    -------
+    shapely geometry
+        The feasible set of reference points (possibly empty).
+    """
+    neg = -np.asarray(footprint, float)
+    cut = []
+    polys = list(region.geoms) if hasattr(region, "geoms") else [region]
+    if (len(polys) == 1 and isinstance(polys[0], Polygon) and not polys[0].interiors
+            and len(polys[0].exterior.coords) <= 64
+            and polys[0].convex_hull.area - polys[0].area < 1e-9 * max(polys[0].area, 1.0)):
+        inner = _erode_convex(polys[0], neg)
+        polys = []
+    else:
+        inner = None
+    for poly in polys:
+        if poly.is_empty or not isinstance(poly, Polygon):
+            continue
+        for ring in [poly.exterior, *poly.interiors]:
+            c = np.asarray(ring.coords)
+            seg = np.stack([c[:-1], c[1:]], axis=1)  # (E, 2, 2)
+            pts = (seg[:, :, None, :] + neg[None, None, :, :]).reshape(len(seg), -1, 2)
+            cut.extend(shapely.convex_hull(shapely.multipoints(pts)))
+    if obstacles:
+        negf = convex_footprint(neg)
+        sums = [minkowski_sum_convex(ob, negf) for ob in obstacles]
+        sums = [np.vstack([m, m[:1]]) for m in sums]  # closed rings
+        idx = np.repeat(np.arange(len(sums)), [len(x) for x in sums])
+        cut.extend(shapely.polygons(shapely.linearrings(np.vstack(sums), indices=idx)))
+    base = inner if inner is not None else region
+    if not cut:
+        return base
+    return shapely.difference(base, shapely.union_all(cut))
+
+
+def half_plane(point, normal, extent: float = 1e3) -> Polygon:
+    """{x : (x - point) . normal > 0} clipped to a large square."""
+    p = np.asarray(point, float)
+    n = np.asarray(normal, float)
+    n = n / np.linalg.norm(n)
+    t = np.array([-n[1], n[0]])
+    q = [p + t * extent, p - t * extent, p - t * extent + n * extent, p + t * extent + n * extent]
+    return Polygon(q)
+
+
+def strip(point, normal, lo: float, hi: float, extent: float = 1e3) -> Polygon:
+    """{x : lo < (x - point) . normal < hi}."""
+    p = np.asarray(point, float)
+    n = np.asarray(normal, float)
+    n = n / np.linalg.norm(n)
+    t = np.array([-n[1], n[0]])
+    a, b = p + n * lo, p + n * hi
+    return Polygon([a + t * extent, a - t * extent, b - t * extent, b + t * extent])
+
+
+def line(point, normal, offset: float, extent: float = 1e3) -> LineString:
+    """{x : (x - point) . normal = offset} as a long segment."""
+    p = np.asarray(point, float)
+    n = np.asarray(normal, float)
+    n = n / np.linalg.norm(n)
+    t = np.array([-n[1], n[0]])
+    c = p + n * offset
+    return LineString([c - t * extent, c + t * extent])
+
+
+def disk(center, radius: float, resolution: int = 32) -> Polygon:
+    return Point(center).buffer(radius, resolution // 4)
+
+
+def sample_uniform(region: BaseGeometry, rng: np.random.Generator, n: int = 1) -> np.ndarray:
+    """(n, 2) points uniformly distributed over ``region`` (by area, length or count)."""
+    if region.is_empty:
+        return np.zeros((0, 2))
+    parts = list(region.geoms) if hasattr(region, "geoms") else [region]
+    areal = [g for g in parts if g.area > 1e-12]
+    if areal:
+        tris = []
+        for g in areal:
+            t = shapely.constrained_delaunay_triangles(g)
+            tris.extend(t.geoms)
+        coords = np.array([np.asarray(t.exterior.coords)[:3] for t in tris])
+        a = np.abs(np.cross(coords[:, 1] - coords[:, 0], coords[:, 2] - coords[:, 0])) / 2
+        k = rng.choice(len(coords), size=n, p=a / a.sum())
+        r1, r2 = rng.random(n), rng.random(n)
+        flip = r1 + r2 > 1
+        r1[flip], r2[flip] = 1 - r1[flip], 1 - r2[flip]
+        c = coords[k]
+        return c[:, 0] + r1[:, None] * (c[:, 1] - c[:, 0]) + r2[:, None] * (c[:, 2] - c[:, 0])
+    linear = [g for g in parts if g.length > 1e-12]
+    if linear:
+        segs = []
+        for g in linear:
+            ls = list(g.geoms) if hasattr(g, "geoms") else [g]
+            for s in ls:
+                c = np.asarray(s.coords)
+                segs.extend(zip(c[:-1], c[1:], strict=True))
+        segs = np.array(segs)
+        ln = np.linalg.norm(segs[:, 1] - segs[:, 0], axis=1)
+        k = rng.choice(len(segs), size=n, p=ln / ln.sum())
+        t = rng.random(n)[:, None]
+        return segs[k, 0] + t * (segs[k, 1] - segs[k, 0])
+    pts = np.array([np.asarray(g.coords)[0] for g in parts if not g.is_empty])
+    return pts[rng.integers(len(pts), size=n)]
+
+
+def bounding_square(region: BaseGeometry, pad: float = 1.0) -> Polygon:
+    x0, y0, x1, y1 = region.bounds
+    return shapely_box(x0 - pad, y0 - pad, x1 + pad, y1 + pad)

@@ -1,0 +1,87 @@
+"""Mesh-level collision checking with FCL: persistent BVHs moved by ``set_transform``."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import fcl
+import numpy as np
+import trimesh
+
+__all__ = ["CollisionWorld", "Body", "bvh_from_mesh", "cached_body"]
+
+
+def bvh_from_mesh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
+    m = fcl.BVHModel()
+    m.beginModel(len(mesh.vertices), len(mesh.faces))
+    m.addSubModel(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces, dtype=np.int32))
+    m.endModel()
+    return m
+
+
+@dataclass
+class Body:
+    """An FCL collision object and the geometry it wraps (contacts name the geometry)."""
+
+    obj: fcl.CollisionObject
+    geom: fcl.BVHModel
+
+    @classmethod
+    def from_mesh(cls, mesh: trimesh.Trimesh) -> Body:
+        g = bvh_from_mesh(mesh)
+        return cls(fcl.CollisionObject(g, fcl.Transform()), g)
+
+    def move(self, R: np.ndarray, t: np.ndarray) -> None:
+        self.obj.setTransform(fcl.Transform(np.asarray(R, float), np.asarray(t, float)))
+
+
+_BVH_CACHE: dict[tuple[str, float], fcl.BVHModel] = {}
+
+
+def cached_body(key: str, scale: float, mesh_fn) -> Body:
+    """A Body for an asset at a scale, sharing one BVH per (asset, scale) in this process."""
+    k = (key, round(float(scale), 9))
+    g = _BVH_CACHE.get(k)
+    if g is None:
+        if len(_BVH_CACHE) > 2048:
+            _BVH_CACHE.clear()
+        g = bvh_from_mesh(mesh_fn())
+        _BVH_CACHE[k] = g
+    return Body(fcl.CollisionObject(g, fcl.Transform()), g)
+
+
+class CollisionWorld:
+    """Static world of placed objects in an FCL broadphase manager.
+
+    Each placed object is registered once (its scaled mesh as a BVH, in its asset frame) with
+    its pose; a candidate is tested by moving its own persistent body.
+    """
+
+    def __init__(self):
+        self.manager = fcl.DynamicAABBTreeCollisionManager()
+        self._names: dict[int, list[str]] = {}
+        self._bodies: list[Body] = []
+        self._dirty = False
+
+    def add(self, name: str, body: Body) -> None:
+        self._names.setdefault(id(body.geom), []).append(name)
+        self._bodies.append(body)
+        self.manager.registerObject(body.obj)
+        self._dirty = True
+
+    def collides(self, body: Body, ignore: frozenset[str] = frozenset()) -> str | None:
+        """Name of a registered object that ``body`` collides with (None when free)."""
+        if self._dirty:
+            self.manager.setup()
+            self._dirty = False
+        req = fcl.CollisionRequest(num_max_contacts=16, enable_contact=True)
+        data = fcl.CollisionData(request=req)
+        self.manager.collide(body.obj, data, fcl.defaultCollisionCallback)
+        for c in data.result.contacts:
+            for g in (c.o1, c.o2):
+                if g is body.geom:
+                    continue
+                for name in self._names.get(id(g), ()):
+                    if name not in ignore:
+                        return name
+        return None

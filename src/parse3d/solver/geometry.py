@@ -1,0 +1,92 @@
+"""Per-asset geometry the solver needs, cached per (asset, scale): hull points, centroid, BVH."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+import trimesh
+
+from ..assets.model import Asset, Part
+from ..relations import SURFACES
+
+__all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster"]
+
+
+@dataclass
+class AssetGeometry:
+    """Scale-free geometry of an asset in its own frame.
+
+    Attributes
+    ----------
+    hull : (N, 3) float
+        Vertices of the convex hull of all collision pieces.
+    com : (3,) float
+        Centre of mass (collision volume).
+    center : (3,) float
+        Bounding-box centre.
+    """
+
+    hull: np.ndarray
+    com: np.ndarray
+    center: np.ndarray
+
+
+_GEOM: dict[str, AssetGeometry] = {}
+
+
+def asset_geometry(asset: Asset) -> AssetGeometry:
+    g = _GEOM.get(asset.asset_id)
+    if g is None or len(_GEOM) > 4096:
+        if len(_GEOM) > 4096:
+            _GEOM.clear()
+        pts = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces] or
+                        [p.mesh.vertices for p in asset.parts])
+        hull = trimesh.convex.convex_hull(pts).vertices
+        vols = np.array([abs(pc.volume) for p in asset.parts for pc in p.pieces])
+        cents = np.array([pc.center_mass if pc.is_volume else pc.bounds.mean(axis=0)
+                          for p in asset.parts for pc in p.pieces])
+        com = (cents * vols[:, None]).sum(0) / vols.sum() if len(vols) and vols.sum() > 0 \
+            else asset.bounds.mean(axis=0)
+        g = AssetGeometry(np.asarray(hull), np.asarray(com), asset.bounds.mean(axis=0))
+        _GEOM[asset.asset_id] = g
+    return g
+
+
+def part_points(parts: list[Part]) -> np.ndarray:
+    """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
+    pts = [pc.vertices for p in parts for pc in p.pieces] or [p.mesh.vertices for p in parts]
+    return np.vstack(pts)
+
+
+def surface_normal(parts: list[Part], label: str) -> np.ndarray:
+    """Outward normal of ``label`` in the asset frame (the canonical axis of that face)."""
+    return np.array(SURFACES[label], float)
+
+
+_CASTERS: dict[str, object] = {}
+
+
+def ray_caster(asset: Asset):
+    """A cached ray intersector over the asset's mesh (asset frame, unit scale)."""
+    c = _CASTERS.get(asset.asset_id)
+    if c is None:
+        if len(_CASTERS) > 512:
+            _CASTERS.clear()
+        m = asset.mesh()
+        try:
+            from trimesh.ray.ray_pyembree import RayMeshIntersector
+        except ImportError:  # pragma: no cover - embree is a declared dependency
+            from trimesh.ray.ray_triangle import RayMeshIntersector
+        c = RayMeshIntersector(m)
+        _CASTERS[asset.asset_id] = c
+    return c
+
+
+@lru_cache(maxsize=1)
+def enclosure_directions() -> np.ndarray:
+    """(9, 3) unit rays for the IN enclosure test: 8 horizontal and straight up."""
+    a = np.linspace(0, 2 * np.pi, 8, endpoint=False)
+    d = np.c_[np.cos(a), np.sin(a), np.zeros(8)]
+    return np.vstack([d, [0, 0, 1.0]])

@@ -1,0 +1,44 @@
+"""Where the solver gets assets: a deterministic pool of generated assets per category."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..assets.model import Asset
+
+__all__ = ["AssetLibrary", "DEFAULT_PER_CATEGORY"]
+
+DEFAULT_PER_CATEGORY = 20
+
+
+class AssetLibrary:
+    """A pool of ``per_category`` assets per category, generated on demand and kept in memory.
+
+    ``get(category, rng)`` draws an index in ``[0, per_category)`` from ``rng`` and returns the
+    asset generated with that seed, so results do not depend on what was generated before.
+    The on-disk :class:`parse3d.assets.pool.AssetPool` offers the same ``get``.
+    """
+
+    def __init__(self, per_category: int = DEFAULT_PER_CATEGORY):
+        self.per_category = int(per_category)
+        self._cache: dict[tuple[str, int], Asset] = {}
+
+    def get(self, category: str, rng: np.random.Generator) -> Asset:
+        from ..assets import registry
+
+        idx = int(rng.integers(self.per_category))
+        key = (category, idx)
+        if key not in self._cache:
+            self._cache[key] = registry.generate(category, seed=idx)
+        return self._cache[key]
+
+
+_DEFAULT: AssetLibrary | None = None
+
+
+def default_library() -> AssetLibrary:
+    """The process-wide library used when ``solve`` is given none."""
+    global _DEFAULT
+    if _DEFAULT is None:
+        _DEFAULT = AssetLibrary()
+    return _DEFAULT
