@@ -240,11 +240,42 @@ def test_read_scene_round_trip(solved):
         assert np.allclose(p.transform(), o.transform(), atol=1e-5)
 
 
-@pytest.mark.parametrize("path", EXAMPLES, ids=lambda p: p.name)
-def test_examples_solve(path):
-    scene = solve(load_pag(path), seed=0)
+@pytest.fixture(scope="module")
+def example_scenes():
+    """Every example room solved (seed 0), then settled, with its settle report."""
+    from parse3d.physics import settle
+
+    out = {}
+    for path in EXAMPLES:
+        scene = solve(load_pag(path), seed=0)
+        solved = {c.index: (c.holds, c.detail) for c in scene.relations}
+        out[path.name] = (scene, solved, settle(scene))
+    return out
+
+
+@pytest.mark.parametrize("name", [p.name for p in EXAMPLES])
+def test_examples_solve(example_scenes, name):
+    scene, solved, _ = example_scenes[name]
     assert [(o.id, o.reason) for o in scene.failed] == []
-    assert all(c.holds for c in scene.relations)
+    assert [d for holds, d in solved.values() if not holds] == []
+
+
+def test_examples_barely_move_when_settled(example_scenes):
+    """Over the example rooms at least 95% of objects move < 1 cm and < 2 degrees."""
+    total = moved = 0
+    for scene, _, report in example_scenes.values():
+        total += len(scene.placed)
+        moved += len(report.moved(distance=0.01, angle_deg=2.0))
+    assert moved <= 0.05 * total, (moved, total)
+
+
+def test_examples_have_contacts(example_scenes):
+    from parse3d.physics import extract_contacts
+
+    scene, _, _ = example_scenes["study.json"]
+    contacts = extract_contacts(scene)
+    touching = {c.a.split(":")[0] for c in contacts} | {c.b.split(":")[0] for c in contacts}
+    assert {o.id for o in scene.placed} <= touching  # every object touches something
 
 
 def test_rejection_baseline_runs_and_is_worse_at_part_constraints():

@@ -39,7 +39,7 @@ from . import registry
 from .cache import FORMAT, load_asset, save_asset
 from .model import Asset
 
-__all__ = ["AssetPool", "BuildReport", "DEFAULT_PER_CATEGORY", "category_fingerprint"]
+__all__ = ["AssetPool", "BuildReport", "DEFAULT_PER_CATEGORY", "category_fingerprint", "default_pool"]
 
 #: Pool slots per category: the asset variety a scene can draw from.
 DEFAULT_PER_CATEGORY = 20
@@ -261,3 +261,14 @@ class AssetPool:
         med = {c: float(np.median(v)) for c, v in sorted(times.items())}
         return BuildReport(sum(len(v) for v in times.values()), cached, time.perf_counter() - t0,
                            med, failures)
+
+
+_DEFAULT_POOL: AssetPool | None = None
+
+
+def default_pool() -> AssetPool:
+    """The process-wide pool under ``cache_dir()/pool`` (what the solver uses by default)."""
+    global _DEFAULT_POOL
+    if _DEFAULT_POOL is None:
+        _DEFAULT_POOL = AssetPool()
+    return _DEFAULT_POOL

@@ -183,7 +183,8 @@ def sample_uniform(region: BaseGeometry, rng: np.random.Generator, n: int = 1) -
             t = shapely.constrained_delaunay_triangles(g)
             tris.extend(t.geoms)
         coords = np.array([np.asarray(t.exterior.coords)[:3] for t in tris])
-        a = np.abs(np.cross(coords[:, 1] - coords[:, 0], coords[:, 2] - coords[:, 0])) / 2
+        e1, e2 = coords[:, 1] - coords[:, 0], coords[:, 2] - coords[:, 0]
+        a = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) / 2
         k = rng.choice(len(coords), size=n, p=a / a.sum())
         r1, r2 = rng.random(n), rng.random(n)
         flip = r1 + r2 > 1

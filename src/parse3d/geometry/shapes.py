@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import trimesh
+from scipy.spatial import ConvexHull, QhullError
 
 from .frames import make_transform, rotation_between
 
@@ -66,8 +67,23 @@ class Shape:
 
 
 def _convex(points: np.ndarray) -> trimesh.Trimesh:
-    """Convex hull of points as a watertight mesh."""
-    return trimesh.convex.convex_hull(np.asarray(points, dtype=float))
+    """Convex hull of points as a watertight mesh with outward faces.
+
+    qhull directly (with faces oriented by its plane equations) is several times faster than
+    building the hull through trimesh's processing pipeline, and gives the same solid.
+    """
+    pts = np.asarray(points, dtype=float)
+    try:
+        h = ConvexHull(pts)
+    except (QhullError, ValueError):  # flat or degenerate: let trimesh thicken it
+        return trimesh.convex.convex_hull(pts)
+    faces = h.simplices.copy()
+    tri = pts[faces]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    flip = np.einsum("ij,ij->i", n, h.equations[:, :3]) < 0
+    faces[flip] = faces[flip][:, ::-1]
+    used, inv = np.unique(faces, return_inverse=True)
+    return trimesh.Trimesh(pts[used], inv.reshape(-1, 3), process=False)
 
 
 def _single(mesh: trimesh.Trimesh) -> Shape:

@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 import trimesh
+from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import MultiPolygon, Polygon
 from shapely.geometry import box as shapely_box
 
@@ -117,15 +118,28 @@ class Surface:
 
 def plane_polygon(tri2d: np.ndarray) -> Polygon | MultiPolygon:
     """Union of (M, 3, 2) triangles as a cleaned shapely geometry."""
+    tri2d = np.asarray(tri2d, float)
     if len(tri2d) == 0:
         return Polygon()
-    polys = shapely.polygons(np.concatenate([tri2d, tri2d[:, :1]], axis=1))
-    areas = shapely.area(polys)
-    polys = polys[areas > 1e-12]
-    if len(polys) == 0:
+    e1 = tri2d[:, 1] - tri2d[:, 0]
+    e2 = tri2d[:, 2] - tri2d[:, 0]
+    areas = 0.5 * np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0])
+    tri2d = tri2d[areas > 1e-12]
+    areas = areas[areas > 1e-12]
+    if len(tri2d) == 0:
         return Polygon()
-    if len(polys) == 1:
-        return polys[0]
+    if len(tri2d) == 1:
+        return Polygon(tri2d[0])
+    # fast path: a convex patch (a box face, a disc, a tabletop) is its vertices' hull, which
+    # we recognise by the triangles' areas adding up to the hull's area
+    pts = tri2d.reshape(-1, 2)
+    try:
+        h = ConvexHull(pts)
+        if abs(h.volume - float(areas.sum())) <= 1e-6 * max(h.volume, 1e-12):
+            return Polygon(pts[h.vertices])
+    except (QhullError, ValueError):
+        pass
+    polys = shapely.polygons(np.concatenate([tri2d, tri2d[:, :1]], axis=1))
     u = shapely.union_all(shapely.buffer(polys, 1e-7, join_style="mitre"))
     u = shapely.buffer(u, -1e-7, join_style="mitre")
     return u.simplify(1e-6)

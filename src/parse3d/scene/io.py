@@ -138,13 +138,14 @@ def scene_schema() -> dict[str, Any]:
 
 
 def _load_asset(ref: dict[str, Any]):
-    from ..assets import registry
-
     if ref.get("path"):
         from ..assets.cache import load_asset
 
         return load_asset(ref["path"])
-    return registry.generate(ref["category"], seed=int(ref["seed"]), variant=ref.get("variant"))
+    from ..assets.pool import default_pool
+
+    # pool slot i holds generate(category, seed=i), read back from its file
+    return default_pool().load(ref["category"], int(ref["seed"]))
 
 
 def read_scene(path: str | Path) -> Scene:

@@ -18,7 +18,13 @@ from ..pag.model import Edge
 from ..pag.refs import Ref
 from ..relations import SURFACES
 from ..scene.model import PlacedObject, RelationCheck, Scene
-from .geometry import asset_geometry, enclosure_directions, part_points, ray_caster
+from .geometry import (
+    asset_geometry,
+    drop_distance,
+    enclosure_directions,
+    part_points,
+    ray_caster,
+)
 
 __all__ = ["EPS", "DIST_TOL", "ANGLE_TOL_DEG", "check_edge", "check_relations",
            "object_centroid", "world_points"]
@@ -84,7 +90,17 @@ def _child_normal(obj: PlacedObject, ref: Ref, label: str, settled) -> np.ndarra
     return obj.transform(settled)[:3, :3] @ np.array(SURFACES[label]) / obj.scale
 
 
-def _frame(scene: Scene, name: str, settled) -> tuple[np.ndarray, np.ndarray]:
+def _nearest_wall(scene: Scene, p: np.ndarray) -> str:
+    """The wall whose inner plane is closest to the point ``p`` (resolves ``wall``)."""
+    return min((n for n in scene.room.elements if n.startswith("wall_")),
+               key=lambda n: abs(float((p - scene.room.elements[n].surface.origin)
+                                       @ scene.room.elements[n].surface.normal)))
+
+
+def _frame(scene: Scene, name: str, settled, near: np.ndarray | None = None
+           ) -> tuple[np.ndarray, np.ndarray]:
+    if name == "wall" and near is not None:
+        name = _nearest_wall(scene, near)
     if name in scene.room.elements:
         s = scene.room.elements[name].surface
         up = np.array([0, 0, 1.0]) if abs(s.normal[2]) < 0.9 else np.array([0, 1.0, 0])
@@ -99,10 +115,14 @@ def _plane_dist(pts: np.ndarray, s: Surface) -> np.ndarray:
 
 
 def _in_polygon(s: Surface, p3: np.ndarray) -> bool:
-    from shapely.geometry import Point
+    from shapely.geometry import Point, Polygon
 
     d = p3 - s.origin
-    return bool(s.polygon.distance(Point(float(d @ s.u), float(d @ s.v))) <= 1e-3)
+    poly = s.polygon
+    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    pt = Point(float(d @ s.u), float(d @ s.v))
+    # holes do not count: an object on a rim spans the hole
+    return any(Polygon(p.exterior).distance(pt) <= 1e-3 for p in parts if not p.is_empty)
 
 
 def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict | None = None,
@@ -123,9 +143,12 @@ def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict 
     res: dict[str, float] = {}
     if spec.kind == "object":
         xA = object_centroid(child, settled)
-        xB, RB = _frame(scene, edge.parent.object, settled)
+        xB, RB = _frame(scene, edge.parent.object, settled, near=xA)
         if rel in ("NEAR", "FAR_FROM"):
-            d = float(np.linalg.norm((xA - xB)[:2]))
+            if edge.parent.is_room_element:  # a wall: distance to its plane
+                d = abs(float((xA - xB) @ RB[:, 1]))
+            else:
+                d = float(np.linalg.norm((xA - xB)[:2]))
             res["distance"] = round(d, 5)
             lim = edge.param("distance")
             ok = d <= lim + 1e-6 if rel == "NEAR" else d >= lim - 1e-6
@@ -195,6 +218,15 @@ def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict 
 
     if rel in ("ON", "IN", "HANGING_BELOW", "SECURED_TO", "AGAINST"):
         gap = float(dist.min())
+        if rel == "ON" and pobj is not None and gap < -PENETRATION_TOL:
+            # resting below the surface plane, inside the parent's hollow (a plate in a
+            # plate): the contact is the free drop onto the parent's geometry
+            d = drop_distance(world_points(child, hull_only=True, settled=settled), child.asset,
+                              child.transform(settled),
+                              world_points(pobj, hull_only=True, settled=settled), pobj.asset,
+                              pobj.transform(settled), -sB.normal)
+            if np.isfinite(d):
+                gap = d
         target = 0.0
         lo_t, hi_t = -PENETRATION_TOL, DIST_TOL
         if rel == "AGAINST":

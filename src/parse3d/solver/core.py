@@ -48,7 +48,7 @@ from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .checks import EPS, check_edge, object_centroid, world_points
 from .collision import Body, CollisionWorld, cached_body
-from .geometry import asset_geometry, part_points
+from .geometry import asset_geometry, drop_distance, part_points
 
 __all__ = ["SolverConfig", "solve_scene", "stage_rng"]
 
@@ -136,6 +136,13 @@ def _plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
     return np.c_[d @ surf.u, d @ surf.v]
 
 
+def _filled(poly: BaseGeometry) -> BaseGeometry:
+    """The polygon without its holes."""
+    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    filled = [Polygon(p.exterior) for p in parts if isinstance(p, Polygon) and not p.is_empty]
+    return shapely.union_all(filled) if len(filled) > 1 else (filled[0] if filled else poly)
+
+
 def _shrink(region: BaseGeometry, margin: float) -> BaseGeometry:
     return region.buffer(-margin, join_style="mitre") if margin > 0 else region
 
@@ -212,7 +219,9 @@ def _support_candidates(st: _State, edge: Edge, child_h: float) -> list[_Support
             s = p.surfaces[lb].transformed(T)
             if want is not None and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
                 continue
-            out.append(_Support(s, parent.id, p.name, lb, s.polygon))
+            # an object ON a rim spans its hole (a plate on a plate): fill the holes
+            region = _filled(s.polygon) if rel == "ON" else s.polygon
+            out.append(_Support(s, parent.id, p.name, lb, region))
     if not out:
         raise _Fail(f"{rel}: no surface of {ref} faces the right way for {rel}")
     if rel == "ON" and ref.surface is None and len(out) > 1:
@@ -353,7 +362,14 @@ def _object_regions(st: _State, edges: list[Edge], sup: _Support, off: np.ndarra
             continue
         xB, frame, hull = _parent_frame(st, e.parent.object)
         cB = _plane_coords(s, xB[None])[0] - off
-        if rel in ("NEAR", "FAR_FROM"):
+        if rel in ("NEAR", "FAR_FROM") and hull is None:
+            # a wall: distance to its plane
+            nw = frame[:, 1]
+            g = np.array([nw @ s.u, nw @ s.v])
+            g /= max(np.linalg.norm(g), 1e-9)
+            dist = e.param("distance")
+            clip = RG.strip(cB, g, -1e-3, dist) if rel == "NEAR" else RG.strip(cB, g, dist, 1e3)
+        elif rel in ("NEAR", "FAR_FROM"):
             d = RG.disk(cB, e.param("distance"), 48)
             clip = d if rel == "NEAR" else RG.bounding_square(region).difference(d)
         else:
@@ -389,6 +405,16 @@ def _parent_frame(st: _State, name: str) -> tuple[np.ndarray, np.ndarray, np.nda
     if not o.placed:
         raise _Fail(f"parent {name!r} was not placed")
     return object_centroid(o), o.rotation, st.hulls[name]
+
+
+def _support_chain(pag: PAG, oid: str) -> set[str]:
+    """``oid`` and the objects below it in the support tree."""
+    out = set()
+    while oid is not None and oid not in out and oid in pag.objects:
+        out.add(oid)
+        e = pag.supporter(oid)
+        oid = e.parent.object if e is not None else None
+    return out
 
 
 def _sup_name(sup: _Support) -> str:
@@ -556,7 +582,8 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
     region0 = sup.region if sup.owner == "room" else _shrink(sup.region, cfg.margin)
     if region0.is_empty:
         region0 = sup.region  # tiny supports (a burner) keep their polygon; see overhang below
-    exclude = {sup.owner} if sup.owner != "room" else set()
+    # the support's owner and everything holding it up (a cabinet around a stack of plates)
+    exclude = _support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
     overhang = False
     if strategy == "constrained":
@@ -573,7 +600,7 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
             region = RG.erode(region0, obst, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                     and sup.owner != "room" and RG.erode(region0, [], F).is_empty \
-                    and Polygon(F).area <= Polygon(st.xy[sup.owner]).area:
+                    and Polygon(F).area <= 1.5 * Polygon(st.xy[sup.owner]).area:
                 # a support smaller than the child (a pot on a burner, an apple in a bowl):
                 # the paper's stability rule, centre of mass over the support polygon, decides;
                 # only for children no bigger than the parent object (no wardrobe on a mug)
@@ -613,6 +640,14 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
                 h = -float(hN2.min()) + EPS + drop
         t = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        if rel == "ON" and sup.owner != "room":
+            # settle onto the parent's actual geometry: a plate on a plate sits in its well
+            parent = st.scene.objects[sup.owner]
+            d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
+                              st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+            if np.isfinite(d) and d > 2 * EPS:
+                t = t - (d - EPS) * s.normal
+                cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         # footprint inside the support polygon (for tilted TOWARD turns and rejection samples)
         Fw = _plane_coords(s, world_points(cand, hull_only=True))
         if not overhang and not region0.contains(Polygon(RG.convex_footprint(Fw))):

@@ -90,3 +90,28 @@ def enclosure_directions() -> np.ndarray:
     a = np.linspace(0, 2 * np.pi, 8, endpoint=False)
     d = np.c_[np.cos(a), np.sin(a), np.zeros(8)]
     return np.vstack([d, [0, 0, 1.0]])
+
+
+def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray,
+                  parent_pts: np.ndarray, parent_asset: Asset, T_parent: np.ndarray,
+                  down: np.ndarray) -> float:
+    """How far the child can move along ``down`` before touching the parent (inf: never).
+
+    Rays from the child's points along ``down`` against the parent's mesh, and from the
+    parent's points against ``-down`` against the child's mesh (both exact, by ray casting).
+    Points are world-frame; ``T_*`` are asset-to-world similarity transforms.
+    """
+    best = np.inf
+    for pts, d, asset, T in ((child_pts, down, parent_asset, T_parent),
+                             (parent_pts, -down, child_asset, T_child)):
+        Ti = np.linalg.inv(T)
+        o = pts @ Ti[:3, :3].T + Ti[:3, 3]
+        v = Ti[:3, :3] @ d
+        scale = np.linalg.norm(v)
+        v = v / scale
+        locs, idx, _ = ray_caster(asset).intersects_location(o, np.tile(v, (len(o), 1)),
+                                                             multiple_hits=False)
+        if len(idx):
+            dist = np.linalg.norm(locs - o[idx], axis=1) / scale
+            best = min(best, float(dist.min()))
+    return best

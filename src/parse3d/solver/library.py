@@ -33,12 +33,9 @@ class AssetLibrary:
         return self._cache[key]
 
 
-_DEFAULT: AssetLibrary | None = None
+def default_library():
+    """The library used when ``solve`` is given none: the on-disk asset pool
+    (:func:`parse3d.assets.pool.default_pool`), so each asset is generated once per machine."""
+    from ..assets.pool import default_pool
 
-
-def default_library() -> AssetLibrary:
-    """The process-wide library used when ``solve`` is given none."""
-    global _DEFAULT
-    if _DEFAULT is None:
-        _DEFAULT = AssetLibrary()
-    return _DEFAULT
+    return default_pool()
