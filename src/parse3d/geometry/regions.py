@@ -51,6 +51,47 @@ def minkowski_sum_convex(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return pts
 
 
+def minkowski_many(polys: list[np.ndarray], b: np.ndarray) -> list[np.ndarray]:
+    """Minkowski sums of many convex CCW polygons with one convex CCW polygon ``b``.
+
+    Vectorised edge merge: every sum's edges are its polygon's edges and ``b``'s, sorted by
+    angle, walked from the sum of the two bottom-most vertices.
+    """
+    if not polys:
+        return []
+    b = np.asarray(b, float)
+    ib = int(np.lexsort((b[:, 0], b[:, 1]))[0])
+    b = np.concatenate([b[ib:], b[:ib]])
+    eb = np.concatenate([b[1:], b[:1]]) - b
+    ab = np.mod(np.arctan2(eb[:, 1], eb[:, 0]), 2 * np.pi)
+    counts = np.array([len(p) for p in polys])
+    A = np.vstack(polys).astype(float)
+    gid = np.repeat(np.arange(len(polys)), counts)
+    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    # next vertex within each polygon
+    nxt = np.arange(len(A)) + 1
+    nxt[starts + counts - 1] = starts
+    ea = A[nxt] - A
+    aa = np.mod(np.arctan2(ea[:, 1], ea[:, 0]), 2 * np.pi)
+    # bottom-most vertex of each polygon (min y, then min x)
+    order = np.lexsort((A[:, 0], A[:, 1], gid))
+    first = order[np.searchsorted(gid[order], np.arange(len(polys)))]
+    # angles measured from each polygon's start so the walk begins at its bottom vertex
+    m = len(b)
+    E = np.vstack([ea, np.tile(eb, (len(polys), 1))])
+    ang = np.concatenate([aa, np.tile(ab, len(polys))])
+    g = np.concatenate([gid, np.repeat(np.arange(len(polys)), m)])
+    srt = np.lexsort((ang, g))
+    E = E[srt]
+    g = g[srt]
+    csum = np.cumsum(E, axis=0)
+    total = counts + m
+    gstart = np.concatenate([[0], np.cumsum(total)[:-1]])
+    base = np.where(gstart[:, None] > 0, csum[np.maximum(gstart - 1, 0)], 0.0)
+    pts = csum - base[g] - E + (A[first] + b[0])[g]
+    return np.split(pts, np.cumsum(total)[:-1])
+
+
 def minkowski_convex(a: np.ndarray, b: np.ndarray) -> Polygon:
     """Minkowski sum of two convex point sets (N, 2) and (M, 2) as a polygon."""
     return Polygon(minkowski_sum_convex(convex_footprint(a), convex_footprint(b)))
@@ -127,7 +168,14 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
             cut.extend(shapely.convex_hull(shapely.multipoints(pts)))
     if obstacles:
         negf = convex_footprint(neg)
-        sums = [minkowski_sum_convex(ob, negf) for ob in obstacles]
+        # only obstacles whose sum can reach the region matter (others on a far-away table)
+        x0, y0, x1, y1 = region.bounds
+        lo, hi = negf.min(axis=0), negf.max(axis=0)
+        obstacles = [ob for ob in obstacles
+                     if ob[:, 0].min() + lo[0] <= x1 and ob[:, 0].max() + hi[0] >= x0
+                     and ob[:, 1].min() + lo[1] <= y1 and ob[:, 1].max() + hi[1] >= y0]
+    if obstacles:
+        sums = minkowski_many(obstacles, negf)
         sums = [np.vstack([m, m[:1]]) for m in sums]  # closed rings
         idx = np.repeat(np.arange(len(sums)), [len(x) for x in sums])
         cut.extend(shapely.polygons(shapely.linearrings(np.vstack(sums), indices=idx)))

@@ -74,7 +74,7 @@ class SolverConfig:
     """
 
     max_trials: int = 30
-    asset_attempts: int = 3
+    asset_attempts: int = 4
     strategy: str = "constrained"
     margin: float = 0.003
     wall_thickness: float = 0.12
@@ -114,6 +114,7 @@ class _State:
     hulls: dict[str, np.ndarray] = field(default_factory=dict)  # world hull points per object
     xy: dict[str, np.ndarray] = field(default_factory=dict)  # world xy convex footprint
     zr: dict[str, tuple[float, float]] = field(default_factory=dict)  # world z range
+    pieces: dict[str, list] = field(default_factory=dict)  # world convex pieces, lazily
     resolved: dict[int, dict] = field(default_factory=dict)
 
 
@@ -333,23 +334,50 @@ def _obstacles(st: _State, sup: _Support, exclude: set[str], height: float) -> l
     out = []
     n = sup.surface.normal
     horizontal = abs(n[2]) > 0.999
-    for oid, pts in st.hulls.items():
-        if oid in exclude:
-            continue
-        if horizontal:  # footprints precomputed in world xy; the slab test is a z-range test
-            z0, z1 = st.zr[oid]
-            sz = float(sup.surface.origin[2])
-            lo_h, hi_h = sorted(((z0 - sz) * n[2], (z1 - sz) * n[2]))
-            if hi_h <= 1e-3 or lo_h >= height - 1e-3:
+    if horizontal:  # footprints precomputed in world xy; the slab test is a z-range test
+        sz = float(sup.surface.origin[2])
+        keep = []
+        for oid in st.hulls:
+            if oid in exclude:
                 continue
-            xy = st.xy[oid]
-            out.append(_plane_coords(sup.surface, np.c_[xy, np.full(len(xy), sz)]))
+            z0, z1 = st.zr[oid]
+            lo_h, hi_h = sorted(((z0 - sz) * n[2], (z1 - sz) * n[2]))
+            if hi_h > 1e-3 and lo_h < height - 1e-3:
+                keep.append(st.xy[oid])
+        if keep:
+            allxy = np.vstack(keep)
+            uv = _plane_coords(sup.surface, np.c_[allxy, np.full(len(allxy), sz)])
+            out.extend(np.split(uv, np.cumsum([len(k) for k in keep])[:-1]))
+    for oid, pts in ([] if horizontal else st.hulls.items()):
+        if oid in exclude:
             continue
         h = (pts - sup.surface.origin) @ n
         if h.max() <= 1e-3 or h.min() >= height - 1e-3:
             continue
         out.append(RG.convex_footprint(_plane_coords(sup.surface, pts)))
+    # the supporting objects themselves are not whole obstacles, but their other parts are:
+    # a cabinet's sides and back around its shelf, the other burners of a stove
+    for oid in exclude:
+        for part_name, pts in _world_pieces(st, oid):
+            if oid == sup.owner and part_name == sup.part:
+                continue
+            h = (pts - sup.surface.origin) @ n
+            if h.max() <= 1e-3 or h.min() >= height - 1e-3:
+                continue
+            out.append(RG.convex_footprint(_plane_coords(sup.surface, pts)))
     return out
+
+
+def _world_pieces(st: _State, oid: str) -> list[tuple[str, np.ndarray]]:
+    """(part name, world vertices) of every convex piece of a placed object (cached)."""
+    got = st.pieces.get(oid)
+    if got is None:
+        o = st.scene.objects[oid]
+        T = o.transform()
+        got = [(p.name, pc.vertices @ T[:3, :3].T + T[:3, 3]) for p in o.asset.parts
+               for pc in p.pieces]
+        st.pieces[oid] = got
+    return got
 
 
 def _object_regions(st: _State, edges: list[Edge], sup: _Support, off: np.ndarray,
@@ -607,6 +635,10 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
                 com = (asset_geometry(asset).com * scale) @ R.T
                 region = shapely.affinity.translate(region0, -float(com @ s.u), -float(com @ s.v))
                 region = region.intersection(RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+                # and stay inside the room
+                room = st.scene.room.elements["floor"].surface
+                fp = Polygon(_plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
+                region = region.intersection(RG.erode(fp, [], F))
                 overhang = True
         if region.is_empty or region.area < 1e-10:
             raise _Fail(f"no free space on {_sup_name(sup)} for a "
@@ -621,13 +653,14 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
         region = region0
     trials = 0
     last = "no sample"
-    for _ in range(cfg.max_trials):
+    samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    for k in range(cfg.max_trials):
         trials += 1
         if strategy == "rejection":
             R, toward, lean = _solve_rotation(st, oid, asset, sup, support_edge, others, rng, strategy)
             hN = (hull @ R.T) @ s.normal
             h = -float(hN.min()) + EPS + drop
-        ab = RG.sample_uniform(region, rng, 1)[0]
+        ab = samples[k]
         Rt = R
         if toward is not None and strategy == "constrained":
             t0 = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
@@ -648,11 +681,13 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
             if np.isfinite(d) and d > 2 * EPS:
                 t = t - (d - EPS) * s.normal
                 cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-        # footprint inside the support polygon (for tilted TOWARD turns and rejection samples)
-        Fw = _plane_coords(s, world_points(cand, hull_only=True))
-        if not overhang and not region0.contains(Polygon(RG.convex_footprint(Fw))):
-            last = f"footprint leaves {_sup_name(sup)}"
-            continue
+        # footprint inside the support polygon: the region guarantees it, except after a TOWARD
+        # turn and for rejection samples
+        if not overhang and (Rt is not R or strategy == "rejection"):
+            Fw = _plane_coords(s, world_points(cand, hull_only=True))
+            if not region0.contains(Polygon(RG.convex_footprint(Fw))):
+                last = f"footprint leaves {_sup_name(sup)}"
+                continue
         ok, why = _validate(st, cand, support_edge, others, sup)
         if not ok:
             last = why
