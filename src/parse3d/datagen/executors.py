@@ -1,0 +1,322 @@
+"""Where scenes are built: a pool of local worker processes, or tasks on a Ray cluster.
+
+Both executors run the same task, :func:`parse3d.datagen.build.build_scene`, and hand its
+:class:`~parse3d.datagen.build.SceneOutcome` back to the driver, which alone writes to the
+dataset folder. A scene therefore comes out the same whatever the executor or the number of
+workers.
+
+:class:`LocalExecutor`
+    ``workers`` processes forked from the driver. Each creates its own OpenGL (EGL) context
+    after the fork, builds at most ``max_tasks`` scenes and is then replaced, so memory stays
+    bounded over long runs (caches of assets and collision shapes grow with every new asset).
+    A worker that dies is replaced and its scene tried once more in the new worker (the death
+    may have come from outside: the OOM killer, a signal); a scene whose worker dies twice (a
+    crash in native code) is recorded as ``failed``, one that runs past the hard time limit is
+    killed and recorded as ``timeout``, and the build goes on.
+:class:`RayExecutor`
+    Tasks of one CPU each on ``ray.init(address=...)``, or on a local Ray instance when no
+    address is given. Files travel back to the driver through the object store, so the
+    cluster's nodes need no shared file system.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import signal
+import time
+from collections import deque
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from typing import Any
+
+from ..errors import InputError, Problem
+from .build import (
+    BuildConfig,
+    SceneOutcome,
+    SceneSource,
+    _base_record,
+    make_source,
+    plan_scene,
+)
+
+__all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit"]
+
+#: Scenes a local worker builds before it is replaced.
+DEFAULT_MAX_TASKS = 20
+
+
+def hard_limit(config: BuildConfig) -> float | None:
+    """Seconds after which the driver kills a scene that its worker has not returned.
+
+    The worker's own timer (``config.time_limit``) stops pure-Python stages; this backstop
+    catches native code that does not return.
+    """
+    if config.time_limit is None:
+        return None
+    return float(config.time_limit) * 1.25 + 15.0
+
+
+def _lost(config: BuildConfig, index: int, status: str, reason: str,
+          source: SceneSource | None = None) -> SceneOutcome:
+    """The outcome of a scene whose worker never answered."""
+    plan = plan_scene(config, source if source is not None else make_source(config), index)
+    rec = _base_record(plan, config)
+    rec.update({"status": status, "reason": reason})
+    return SceneOutcome(rec)
+
+
+# --------------------------------------------------------------------------------------------
+# per-process state of a worker (created on first use, after the fork)
+
+_PROCESS: dict[str, Any] = {}
+
+
+def _process_state(config: BuildConfig) -> tuple[Any, Any]:
+    """This process's scene source and renderer (None when no GL context can be created: the
+    scenes then fail with the renderer's DependencyError, recorded in the manifest)."""
+    key = repr(config.source)
+    if _PROCESS.get("key") != key:
+        _PROCESS["key"] = key
+        _PROCESS["source"] = make_source(config)
+    if "renderer" not in _PROCESS:
+        from ..errors import DependencyError
+        from ..render import Renderer
+
+        try:
+            _PROCESS["renderer"] = Renderer()
+        except DependencyError:
+            _PROCESS["renderer"] = None
+    return _PROCESS["source"], _PROCESS["renderer"]
+
+
+def run_task(config: BuildConfig, index: int) -> SceneOutcome:
+    """Build one scene with this process's source and renderer (the task of every executor)."""
+    from .build import build_scene
+
+    source, renderer = _process_state(config)
+    return build_scene(config, index, source=source, renderer=renderer)
+
+
+# --------------------------------------------------------------------------------------------
+# local processes
+
+
+def _worker_main(conn, config: BuildConfig, max_tasks: int, source) -> None:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver handles Ctrl-C and stops us
+    _PROCESS.clear()  # nothing of the driver's (a GL context above all) survives the fork
+    if source is not None:  # inherited through the fork: templates are not loaded again
+        _PROCESS.update(key=repr(config.source), source=source)
+    for _ in range(max_tasks):
+        try:
+            index = conn.recv()
+        except (EOFError, OSError):
+            return
+        if index is None:
+            return
+        outcome = run_task(config, index)
+        try:
+            conn.send(outcome)
+        except (BrokenPipeError, OSError):
+            return
+
+
+@dataclass
+class _Slot:
+    proc: Any
+    conn: Any
+    tasks: int = 0
+    index: int | None = None
+    started: float = 0.0
+
+
+class LocalExecutor:
+    """A pool of forked worker processes on this machine.
+
+    Parameters
+    ----------
+    workers : int
+        Processes building scenes at once.
+    max_tasks : int
+        Scenes per worker process before it is replaced (bounds memory).
+    """
+
+    def __init__(self, *, workers: int = 2, max_tasks: int = DEFAULT_MAX_TASKS) -> None:
+        self.workers = max(1, int(workers))
+        self.max_tasks = max(1, int(max_tasks))
+
+    def _spawn(self, ctx, config: BuildConfig, source) -> _Slot:
+        parent, child = ctx.Pipe(duplex=True)
+        proc = ctx.Process(target=_worker_main, args=(child, config, self.max_tasks, source),
+                           daemon=True)
+        proc.start()
+        child.close()
+        return _Slot(proc, parent)
+
+    @staticmethod
+    def _stop(slot: _Slot, *, kill: bool) -> None:
+        if kill and slot.proc.is_alive():
+            slot.proc.kill()
+        else:
+            with contextlib.suppress(BrokenPipeError, OSError):
+                slot.conn.send(None)
+        slot.proc.join(timeout=10)
+        if slot.proc.is_alive():
+            slot.proc.kill()
+            slot.proc.join()
+        slot.conn.close()
+
+    def run(self, config: BuildConfig, indices: Iterable[int], *,
+            source: SceneSource | None = None) -> Iterator[SceneOutcome]:
+        """Build ``indices``; yields each outcome as it finishes (not in index order).
+
+        ``source``: the driver's :class:`SceneSource` of ``config``, handed to the workers
+        through the fork (None: each worker makes its own).
+        """
+        import multiprocessing as mp
+        from multiprocessing.connection import wait
+
+        ctx = mp.get_context("fork")
+        pending = deque(int(i) for i in indices)
+        limit = hard_limit(config)
+        slots: list[_Slot] = []
+        died: dict[int, int] = {}
+        try:
+            while pending or any(s.index is not None for s in slots):
+                while pending and len(slots) < self.workers:
+                    slots.append(self._spawn(ctx, config, source))
+                for s in slots:
+                    if s.index is None and pending:
+                        s.index, s.started = pending.popleft(), time.perf_counter()
+                        s.conn.send(s.index)
+                busy = [s for s in slots if s.index is not None]
+                ready = wait([s.conn for s in busy], timeout=0.5)
+                for s in busy:
+                    outcome, replace = None, False
+                    if s.conn in ready:
+                        try:
+                            outcome = s.conn.recv()
+                            s.tasks += 1
+                            replace = s.tasks >= self.max_tasks
+                        except (EOFError, OSError):
+                            s.proc.join(timeout=5)
+                            replace = True
+                            if died.get(s.index, 0) < 1:
+                                # once more in a fresh worker: the process may have been
+                                # killed from outside (OOM killer, a signal to the group)
+                                died[s.index] = died.get(s.index, 0) + 1
+                                pending.appendleft(s.index)
+                                s.index = None
+                                self._stop(s, kill=True)
+                                slots.remove(s)
+                                continue
+                            msg = (f"worker process died twice (exit code {s.proc.exitcode})"
+                                   " while building this scene")
+                            outcome = _lost(config, s.index, "failed", msg, source)
+                    elif limit is not None and time.perf_counter() - s.started > limit:
+                        msg = (f"killed after {limit:g} s: the worker did not return "
+                               f"(time limit {config.time_limit:g} s)")
+                        outcome = _lost(config, s.index, "timeout", msg, source)
+                        self._stop(s, kill=True)
+                        slots.remove(s)
+                        s.index = None
+                        yield outcome
+                        continue
+                    if outcome is None:
+                        continue
+                    s.index = None
+                    if replace:
+                        self._stop(s, kill=not s.proc.is_alive())
+                        slots.remove(s)
+                    yield outcome
+        finally:
+            for s in slots:
+                self._stop(s, kill=s.index is not None)
+
+
+# --------------------------------------------------------------------------------------------
+# Ray
+
+
+class RayExecutor:
+    """Scene tasks on a Ray cluster (one CPU each).
+
+    Parameters
+    ----------
+    address : str or None
+        Passed to ``ray.init``; None connects to the running Ray instance of this process, or
+        starts a local one with ``workers`` CPUs.
+    workers : int
+        Scenes in flight at once.
+    """
+
+    def __init__(self, *, address: str | None = None, workers: int = 2) -> None:
+        self.address = address
+        self.workers = max(1, int(workers))
+
+    def run(self, config: BuildConfig, indices: Iterable[int], *,
+            source: SceneSource | None = None) -> Iterator[SceneOutcome]:
+        """Build ``indices``; yields each outcome as it finishes (not in index order).
+
+        ``source`` is unused: every Ray worker process makes its own, once.
+        """
+        try:
+            import ray
+        except ImportError:
+            from ..errors import DependencyError
+
+            raise DependencyError("the Ray executor needs the Python package 'ray': "
+                                  "pip install 'parse3d[cluster]'") from None
+        started = False
+        if not ray.is_initialized():
+            if self.address:
+                ray.init(address=self.address, log_to_driver=False)
+            else:
+                ray.init(num_cpus=self.workers, include_dashboard=False, log_to_driver=False)
+            started = True
+        task = ray.remote(num_cpus=1, max_retries=0)(run_task)
+        pending = deque(int(i) for i in indices)
+        limit = hard_limit(config)
+        cfg_ref = ray.put(config)
+        flight: dict[Any, tuple[int, float]] = {}
+        try:
+            while pending or flight:
+                while pending and len(flight) < self.workers:
+                    i = pending.popleft()
+                    flight[task.remote(cfg_ref, i)] = (i, time.perf_counter())
+                done, _ = ray.wait(list(flight), num_returns=1, timeout=0.5)
+                for ref in done:
+                    i, _t = flight.pop(ref)
+                    try:
+                        yield ray.get(ref)
+                    except ray.exceptions.RayError as e:
+                        msg = str(e).strip().splitlines()
+                        yield _lost(config, i, "failed", f"{type(e).__name__}: "
+                                                         f"{msg[0] if msg else ''}"[:500])
+                if limit is not None:
+                    now = time.perf_counter()
+                    for ref, (i, t) in list(flight.items()):
+                        if now - t > limit:
+                            ray.cancel(ref, force=True)
+                            flight.pop(ref)
+                            yield _lost(config, i, "timeout",
+                                        f"cancelled after {limit:g} s: the task did not return "
+                                        f"(time limit {config.time_limit:g} s)")
+        finally:
+            for ref in flight:
+                ray.cancel(ref, force=True)
+            if started:
+                ray.shutdown()
+
+
+def make_executor(kind: str, *, workers: int = 2, address: str | None = None,
+                  max_tasks: int = DEFAULT_MAX_TASKS):
+    """``LocalExecutor`` or ``RayExecutor`` by name (``max_tasks``: local only)."""
+    if kind == "local":
+        if address:
+            raise InputError(Problem("", "--ray-address needs --executor ray", "--ray-address",
+                                     "parameter"))
+        return LocalExecutor(workers=workers, max_tasks=max_tasks)
+    if kind == "ray":
+        return RayExecutor(address=address, workers=workers)
+    raise InputError(Problem("", f"unknown executor {kind!r} (use local or ray)", "--executor",
+                             "parameter"))
