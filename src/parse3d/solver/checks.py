@@ -252,6 +252,11 @@ def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict 
             ok = inside
             if not inside:
                 detail = "centre of mass outside the support polygon"
+            elif ang_tol == ANGLE_TOL_DEG and not _stands(child, com[:3], sB.normal, settled):
+                # and over the child's own footprint on it, or it would tip (an arc lamp)
+                ok = False
+                res["com_inside"] = 0.0
+                detail = "centre of mass outside the object's own base: it would tip over"
         if ok and rel == "IN" and pobj is not None:
             enc = _enclosure(child, pobj, settled)
             res["enclosure"] = round(enc, 4)
@@ -288,6 +293,21 @@ def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict 
         ok = ang <= ANGLE_TOL_DEG and abs(off) <= DIST_TOL
         return ok, res, f"planes {off * 1000:.2f} mm apart, normals off by {ang:.2f} deg"
     return False, res, f"unknown relation {rel}"
+
+
+def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> bool:
+    """Whether the centre of mass projects inside the convex hull of the child's lowest
+    points (its base), along the support normal ``n``."""
+    from shapely.geometry import MultiPoint, Point
+
+    pts = world_points(child, settled=settled)
+    h = pts @ n
+    base = pts[h <= h.min() + 3e-3]
+    u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    hull = MultiPoint(np.c_[base @ u, base @ v]).convex_hull
+    return bool(hull.buffer(2e-3).contains(Point(float(com @ u), float(com @ v))))
 
 
 def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
