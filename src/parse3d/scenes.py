@@ -30,12 +30,24 @@ def bundled_room_types() -> list[str]:
 
 
 def bundled_pag(room_type: str, seed: int = 0) -> PAG:
-    """One of the bundled PAGs of ``room_type``, chosen by ``seed``."""
+    """A PAG of ``room_type`` for ``seed``: one of the room templates of that type, expanded
+    with the seed (or, for a room type with no templates, one of the bundled example PAGs)."""
+    import zlib
+
+    import numpy as np
+
+    from .datagen.templates import ROOM_TYPES, expand_template, list_templates
+
+    if room_type in ROOM_TYPES:
+        templates = list_templates(room_type)
+        if templates:
+            rng = np.random.default_rng([int(seed), zlib.crc32(room_type.encode())])
+            return expand_template(templates[int(rng.integers(len(templates)))], int(seed))
     pags = [p for p in _load_all() if p.room.type == room_type]
     if not pags:
         import difflib
 
-        types = bundled_room_types()
+        types = sorted(set(bundled_room_types()) | set(ROOM_TYPES))
         close = difflib.get_close_matches(room_type, types, n=1)
         hint = f" — did you mean {close[0]!r}?" if close else ""
         raise InputError(Problem("", f"no bundled PAG of room type {room_type!r}{hint} "

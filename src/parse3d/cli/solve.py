@@ -100,7 +100,10 @@ def register(app: typer.Typer) -> None:
         no_preview: bool = typer.Option(False, "--no-preview"),
         as_json: bool = typer.Option(False, "--json"),
     ) -> None:
-        """Generate a scene of a room type from the bundled PAGs (and templates, when present).
+        """Generate a scene of a room type: a room template of that type expanded with the seed.
+
+        Room types: bedroom, living_room, office, study, laundry, storage, dining_room, bathroom,
+        tea_house, game_room, kitchen, music_room, bar, dormitory, meeting_room, hotel, grocery.
 
         Example: parse3d generate bedroom --seed 7 --out out/bedroom-7
         """
