@@ -100,14 +100,14 @@ def show(category: str = typer.Argument(..., help="Category name."),
 def render(category: str = typer.Argument(..., help="Category name."),
            seed: int = typer.Option(0, "--seed", help="Asset seed."),
            out: Path = typer.Option(..., "-o", "--out", help="PNG file to write.")) -> None:
-    """Draw one asset, parts coloured by material, seen from the front-right.
+    """Render one asset with its materials, seen from the front-right (a thumbnail).
 
     Example: parse3d assets render desk --seed 2 -o desk.png
     """
-    from ..assets.preview import render_asset
+    from ..render.gallery import save_thumbnail
 
     asset = _generate(category, seed)
-    render_asset(asset, out)
+    save_thumbnail(asset, out)
     console.print(f"wrote {out}")
 
 
@@ -122,7 +122,7 @@ def gallery(out: Path = typer.Option(Path("docs/gallery.png"), "--out", "-o", he
     from rich.progress import track
 
     from ..assets import registry
-    from ..assets.preview import contact_sheet
+    from ..render.gallery import contact_sheet
 
     names = [c.strip() for c in categories.split(",") if c.strip()] or list(registry.categories())
     for n in names:
