@@ -13,7 +13,13 @@ from shapely.geometry import LineString, MultiPoint, Point, Polygon
 from shapely.geometry import box as shapely_box
 from shapely.geometry.base import BaseGeometry
 
+#: Precision grid (m) of region overlays: snapping makes GEOS's overlay robust to nearly
+#: coincident vertices that different computations of the same edge produce.
+GRID = 1e-9
+
 __all__ = [
+    "GRID",
+    "clip",
     "minkowski_convex",
     "erode",
     "half_plane",
@@ -115,15 +121,20 @@ def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
         if len(pts) == 0:
             break
         d = pts @ ni - oi
+        inside = d <= 1e-12
         nxt = []
-        for k in range(len(pts)):
-            p, q = pts[k], pts[(k + 1) % len(pts)]
-            dp, dq = d[k], d[(k + 1) % len(pts)]
-            if dp <= 0:
-                nxt.append(p)
-            if (dp < 0) != (dq < 0) and abs(dp - dq) > 1e-15:
-                nxt.append(p + (q - p) * (dp / (dp - dq)))
-        pts = np.array(nxt)
+        for k in range(len(pts)):  # Sutherland-Hodgman against one half-plane
+            j = k - 1
+            if inside[k]:
+                if not inside[j]:
+                    nxt.append(pts[j] + (pts[k] - pts[j]) * (d[j] / (d[j] - d[k])))
+                nxt.append(pts[k])
+            elif inside[j]:
+                nxt.append(pts[j] + (pts[k] - pts[j]) * (d[j] / (d[j] - d[k])))
+        pts = np.array(nxt).reshape(-1, 2)
+        if len(pts):  # drop repeated vertices
+            keep = np.linalg.norm(pts - np.roll(pts, 1, axis=0), axis=1) > 1e-12
+            pts = pts[keep] if keep.any() else pts[:1]
     if len(pts) < 3:
         return Polygon()
     out = Polygon(pts)
@@ -182,7 +193,12 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
     base = inner if inner is not None else region
     if not cut:
         return base
-    return shapely.difference(base, shapely.union_all(cut))
+    return shapely.difference(base, shapely.union_all(cut, grid_size=GRID), grid_size=GRID)
+
+
+def clip(a: BaseGeometry, b: BaseGeometry) -> BaseGeometry:
+    """``a`` intersected with ``b`` on the precision grid."""
+    return shapely.intersection(a, b, grid_size=GRID)
 
 
 def half_plane(point, normal, extent: float = 1e3) -> Polygon:

@@ -20,6 +20,13 @@ def _extrude(poly2d: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
     return trimesh.creation.extrude_polygon(Polygon(poly2d), z1 - z0).apply_translation([0, 0, z0])
 
 
+def _convex_corner(fp: np.ndarray, i: int) -> bool:
+    """Whether vertex ``i`` of a counter-clockwise polygon is convex."""
+    p, c, n = fp[i - 1], fp[i], fp[(i + 1) % len(fp)]
+    d1, d2 = c - p, n - c
+    return float(d1[0] * d2[1] - d1[1] * d2[0]) > 0
+
+
 def build_shell(room: Room, *, wall_thickness: float = DEFAULT_WALL_THICKNESS) -> RoomShell:
     """Floor, walls and ceiling of ``room`` as static world-frame slabs with inward surfaces.
 
@@ -47,9 +54,13 @@ def build_shell(room: Room, *, wall_thickness: float = DEFAULT_WALL_THICKNESS) -
         length = float(np.linalg.norm(d))
         t = d / length
         inward = np.array([-t[1], t[0]])  # left of a->b is inside for a CCW polygon
-        quad = np.array([a - t * wall_thickness, b + t * wall_thickness,
-                         b + t * wall_thickness - inward * wall_thickness,
-                         a - t * wall_thickness - inward * wall_thickness])
+        # slabs overlap at convex corners; at a reflex corner (an L-shaped room's inner corner)
+        # an extended slab would poke into the room, so it stops at the corner there
+        ea = wall_thickness if _convex_corner(fp, i) else 0.0
+        eb = wall_thickness if _convex_corner(fp, (i + 1) % len(fp)) else 0.0
+        quad = np.array([a - t * ea, b + t * eb,
+                         b + t * eb - inward * wall_thickness,
+                         a - t * ea - inward * wall_thickness])
         mesh = _extrude(quad, -_SLAB, h + _SLAB)
         mid = (a + b) / 2
         n = np.array([inward[0], inward[1], 0.0])

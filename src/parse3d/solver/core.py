@@ -381,16 +381,53 @@ def _world_pieces(st: _State, oid: str) -> list[tuple[str, np.ndarray]]:
 
 
 def _object_regions(st: _State, edges: list[Edge], sup: _Support, off: np.ndarray,
-                    region: BaseGeometry) -> BaseGeometry:
-    """Clip ``region`` (positions of the child origin) by the object-level relations."""
+                    region: BaseGeometry, off3: np.ndarray) -> BaseGeometry:
+    """Clip ``region`` (positions of the child origin) by the object-level relations.
+
+    ``off`` is the child's centroid relative to its origin in plane coordinates, ``off3`` the
+    same offset in the world (including the height above the plane).
+    """
     s = sup.surface
+    vertical = abs(float(s.normal[2])) < 0.5 and abs(float(s.v[2])) > 0.99
     for e in edges:
         rel = e.relation
         if rel not in ("SIDE_OF", "ALONG", "NEAR", "FAR_FROM"):
             continue
         xB, frame, hull = _parent_frame(st, e.parent.object)
         cB = _plane_coords(s, xB[None])[0] - off
-        if rel in ("NEAR", "FAR_FROM") and hull is None:
+        if rel in ("NEAR", "FAR_FROM") and vertical:
+            # on a wall the plane's v axis is vertical: the horizontal distance (or the distance
+            # to a wall's plane) depends on the position a along the wall only
+            dist = e.param("distance")
+            c = s.origin + off3 - xB
+            uh = s.u
+            if hull is None:  # parent is a wall: distance to its plane, linear in a
+                nB = frame[:, 1]
+                k, c0 = float(uh @ nB), float(c @ nB)
+                lo, hi = (-dist, dist) if rel == "NEAR" else (dist, 1e3)
+                if abs(k) < 1e-9:
+                    ok = (abs(c0) <= dist) if rel == "NEAR" else (abs(c0) >= dist)
+                    clip = RG.bounding_square(region) if ok else shapely.Polygon()
+                else:
+                    a1, a2 = sorted(((lo - c0) / k, (hi - c0) / k))
+                    clip = shapely.box(a1, -1e3, a2, 1e3)
+                    if rel == "FAR_FROM":
+                        b1, b2 = sorted(((-hi - c0) / k, (-lo - c0) / k))
+                        clip = clip.union(shapely.box(b1, -1e3, b2, 1e3))
+            else:  # |c_xy + a u_xy| <= d: an interval of a
+                cxy, uxy = c[:2], uh[:2]
+                A = float(uxy @ uxy)
+                B = 2 * float(cxy @ uxy)
+                C = float(cxy @ cxy) - dist ** 2
+                disc = B * B - 4 * A * C
+                if A < 1e-9 or disc < 0:
+                    clip = shapely.Polygon() if rel == "NEAR" else RG.bounding_square(region)
+                else:
+                    a1 = (-B - np.sqrt(disc)) / (2 * A)
+                    a2 = (-B + np.sqrt(disc)) / (2 * A)
+                    near = shapely.box(a1, -1e3, a2, 1e3)
+                    clip = near if rel == "NEAR" else RG.bounding_square(region).difference(near)
+        elif rel in ("NEAR", "FAR_FROM") and hull is None:
             # a wall: distance to its plane
             nw = frame[:, 1]
             g = np.array([nw @ s.u, nw @ s.v])
@@ -412,7 +449,7 @@ def _object_regions(st: _State, edges: list[Edge], sup: _Support, off: np.ndarra
             else:
                 hB = 0.0 if hull is None else float(np.max(_plane_coords(s, hull) @ g - (cB + off) @ g))
                 clip = RG.strip(cB, g, max(hB, 0.0), max(hB, 0.0) + e.param("width"))
-        new = region.intersection(clip)
+        new = RG.clip(region, clip)
         if new.is_empty or new.area < 1e-10:
             raise _Fail(f"{rel} {e.child} -> {e.parent}"
                         f"{' side ' + e.param('side') if rel in ('SIDE_OF', 'ALONG') else ''}"
@@ -492,7 +529,7 @@ def _part_lines(st: _State, oid: str, asset: Asset, scale: float, R: np.ndarray,
             gg = g
         nrm = np.linalg.norm(gg)
         ln = RG.line(np.zeros(2), gg / nrm, c / nrm)
-        new = region.intersection(ln)
+        new = RG.clip(region, ln)
         if new.is_empty:
             raise _Fail(f"{rel} {e.child} -> {e.parent} emptied the feasible region on {_sup_name(sup)}")
         region = new
@@ -607,7 +644,8 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
         drop = rng.uniform(lo, hi)
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
-    region0 = sup.region if sup.owner == "room" else _shrink(sup.region, cfg.margin)
+    # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
+    region0 = _shrink(sup.region, EPS / 2) if sup.owner == "room" else _shrink(sup.region, cfg.margin)
     if region0.is_empty:
         region0 = sup.region  # tiny supports (a burner) keep their polygon; see overhang below
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
@@ -622,8 +660,8 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
             top = Y[hN <= hN.min() + 2e-3]
             Fc = RG.convex_footprint(np.vstack([np.c_[top @ s.u, top @ s.v],
                                                 np.c_[top @ s.u, top @ s.v] + 1e-4]))
-            region = RG.erode(region0, [], Fc).intersection(
-                RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+            region = RG.clip(RG.erode(region0, [], Fc),
+                             RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
         else:
             region = RG.erode(region0, obst, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
@@ -634,18 +672,19 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
                 # only for children no bigger than the parent object (no wardrobe on a mug)
                 com = (asset_geometry(asset).com * scale) @ R.T
                 region = shapely.affinity.translate(region0, -float(com @ s.u), -float(com @ s.v))
-                region = region.intersection(RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+                region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
                 # and stay inside the room
                 room = st.scene.room.elements["floor"].surface
                 fp = Polygon(_plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
-                region = region.intersection(RG.erode(fp, [], F))
+                region = RG.clip(region, RG.erode(fp, [], F))
                 overhang = True
         if region.is_empty or region.area < 1e-10:
             raise _Fail(f"no free space on {_sup_name(sup)} for a "
                         f"{np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m footprint")
         c_off = np.array([(geom_center(asset) * scale) @ R.T @ s.u,
                           (geom_center(asset) * scale) @ R.T @ s.v])
-        region = _object_regions(st, others, sup, c_off, region)
+        off3 = (geom_center(asset) * scale) @ R.T + h * s.normal
+        region = _object_regions(st, others, sup, c_off, region, off3)
         if rel == "SECURED_TO":
             region = _height_band(asset, scale, R, s, support_edge, region, sup)
         region = _part_lines(st, oid, asset, scale, R, h, others, sup, lean, region)
@@ -711,7 +750,7 @@ def _height_band(asset: Asset, scale: float, R: np.ndarray, s: Surface, edge: Ed
     c_off = float(((geom_center(asset) * scale) @ R.T)[2])
     v_lo = (lo - c_off - s.origin[2]) / vz
     v_hi = (hi - c_off - s.origin[2]) / vz
-    out = region.intersection(shapely.box(-1e3, min(v_lo, v_hi), 1e3, max(v_lo, v_hi)))
+    out = RG.clip(region, shapely.box(-1e3, min(v_lo, v_hi), 1e3, max(v_lo, v_hi)))
     if out.is_empty:
         raise _Fail(f"SECURED_TO height {lo}-{hi} m: no free space at that height on {_sup_name(sup)}")
     return out
