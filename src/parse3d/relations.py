@@ -243,7 +243,7 @@ _RELATIONS = (
             ),
         ),
         "leans against",
-        "contact dist(S_A, S_B) ~ 0; the child's up axis tilted by angle_deg from vertical",
+        "the named surface faces the parent; the object touches it (dist ~ 0) with its up axis tilted by angle_deg",
         "leaning against",
     ),
     Relation(
@@ -306,7 +306,7 @@ _RELATIONS = (
         None,
         (Param("distance", "float", "m", 0.0, 50.0, 1.0, doc="largest centroid distance"),),
         "is near",
-        "|x_A - x_B| < distance",
+        "horizontal |x_A - x_B| < distance (to a wall: distance to its plane)",
         "near",
     ),
     Relation(
@@ -316,7 +316,7 @@ _RELATIONS = (
         None,
         (Param("distance", "float", "m", 0.0, 50.0, 2.0, doc="smallest centroid distance"),),
         "is far from",
-        "|x_A - x_B| > distance",
+        "horizontal |x_A - x_B| > distance (to a wall: distance to its plane)",
         "far from",
     ),
     Relation(

@@ -28,7 +28,16 @@ __all__ = [
     "disk",
     "sample_uniform",
     "convex_footprint",
+    "inside_convex",
 ]
+
+
+def inside_convex(poly: np.ndarray, p, tol: float = 0.0) -> bool:
+    """Whether point ``p`` lies in the convex CCW polygon ``poly`` (K, 2), within ``tol``."""
+    e = np.roll(poly, -1, axis=0) - poly
+    d = p - poly
+    cross = e[:, 0] * d[:, 1] - e[:, 1] * d[:, 0]
+    return bool(np.all(cross >= -tol * np.linalg.norm(e, axis=1)))
 
 
 def convex_footprint(points2d: np.ndarray) -> np.ndarray:
@@ -193,7 +202,7 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
     base = inner if inner is not None else region
     if not cut:
         return base
-    return shapely.difference(base, shapely.union_all(cut, grid_size=GRID), grid_size=GRID)
+    return shapely.difference(base, shapely.union_all(cut), grid_size=GRID)
 
 
 def clip(a: BaseGeometry, b: BaseGeometry) -> BaseGeometry:

@@ -298,7 +298,7 @@ def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict 
 def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> bool:
     """Whether the centre of mass projects inside the convex hull of the child's lowest
     points (its base), along the support normal ``n``."""
-    from shapely.geometry import MultiPoint, Point
+    from ..geometry.regions import convex_footprint, inside_convex
 
     pts = world_points(child, settled=settled)
     h = pts @ n
@@ -306,8 +306,8 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
     u /= np.linalg.norm(u)
     v = np.cross(n, u)
-    hull = MultiPoint(np.c_[base @ u, base @ v]).convex_hull
-    return bool(hull.buffer(2e-3).contains(Point(float(com @ u), float(com @ v))))
+    hull = convex_footprint(np.c_[base @ u, base @ v])
+    return inside_convex(hull, np.array([com @ u, com @ v]), tol=2e-3)
 
 
 def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
@@ -322,11 +322,13 @@ def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
     return float(np.mean(hit))
 
 
-def check_relations(scene: Scene, *, settled: bool = False) -> list[RelationCheck]:
+def check_relations(scene: Scene, *, settled: bool = False,
+                    known: dict[int, tuple] | None = None) -> list[RelationCheck]:
     """Check every PAG relation on the solved (or settled) poses.
 
     When ``settled`` is True the results go into ``holds_settled`` / ``residual_settled`` of
-    the scene's existing checks (created if missing) and the list is returned.
+    the scene's existing checks (created if missing) and the list is returned. ``known`` maps
+    relation indices to results already measured on the same poses (the solver's own).
     """
     resolved = {int(k): v for k, v in scene.meta.get("resolved", {}).items()}
     existing = {c.index: c for c in scene.relations}
@@ -336,6 +338,8 @@ def check_relations(scene: Scene, *, settled: bool = False) -> list[RelationChec
         c = existing.get(i) or RelationCheck(i, e.relation, str(e.child), str(e.parent), None)
         if child is None or not child.placed:
             holds, res, detail = None, {}, "child not placed"
+        elif known is not None and i in known:  # measured already, on the same pose
+            holds, res, detail = known[i]
         else:
             holds, res, detail = check_edge(scene, e, child, resolved=resolved.get(i),
                                             settled=settled)

@@ -115,6 +115,8 @@ class _State:
     xy: dict[str, np.ndarray] = field(default_factory=dict)  # world xy convex footprint
     zr: dict[str, tuple[float, float]] = field(default_factory=dict)  # world z range
     pieces: dict[str, list] = field(default_factory=dict)  # world convex pieces, lazily
+    accepted: list = field(default_factory=list)  # checks of the last accepted pose
+    known: dict[int, tuple] = field(default_factory=dict)  # relation index -> check result
     resolved: dict[int, dict] = field(default_factory=dict)
 
 
@@ -762,10 +764,13 @@ def geom_center(asset: Asset) -> np.ndarray:
 
 def _validate(st: _State, cand: PlacedObject, support_edge: Edge, others: list[Edge],
               sup: _Support) -> tuple[bool, str]:
+    results = []
     for e in [support_edge, *others]:
-        holds, _, detail = check_edge(st.scene, e, cand, resolved=_resolution(e, sup))
+        holds, res, detail = check_edge(st.scene, e, cand, resolved=_resolution(e, sup))
         if not holds:
             return False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
+        results.append((holds, res, detail))
+    st.accepted = results  # the checks of the pose that will be kept, in edge order
     return True, ""
 
 
@@ -793,6 +798,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
         world.add(f"room:{name}", Body.from_mesh(el.mesh))
     st = _State(pag, scene, world)
     order = assembly_order(pag)
+    edge_index = {id(e): i for i, e in enumerate(pag.relations)}
     failed: dict[str, str] = {}
     for oid in order:
         node = pag.objects[oid]
@@ -812,6 +818,9 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
                                               reason=str(f), trials=cfg.max_trials * cfg.asset_attempts)
             continue
         scene.objects[oid] = obj
+        # the checks computed when the pose was accepted are final: parents never move later
+        for e, r in zip(pag.edges_of(oid), st.accepted, strict=False):
+            st.known[edge_index[id(e)]] = r
         st.hulls[oid] = world_points(obj, hull_only=True)
         st.xy[oid] = RG.convex_footprint(st.hulls[oid][:, :2])
         st.zr[oid] = (float(st.hulls[oid][:, 2].min()), float(st.hulls[oid][:, 2].max()))
@@ -822,7 +831,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
     scene.meta["resolved"] = {str(k): v for k, v in st.resolved.items()}
     scene.timings["solve"] = time.perf_counter() - t0
     t1 = time.perf_counter()
-    scene.relations = check_relations(scene)
+    scene.relations = check_relations(scene, known=st.known)
     scene.timings["check"] = time.perf_counter() - t1
     scene.meta["trials"] = {o.id: o.trials for o in scene.objects.values()}
     return scene
