@@ -132,7 +132,7 @@ class AssetPool:
     """
 
     def __init__(self, root: str | os.PathLike | None = None, *,
-                 per_category: int = DEFAULT_PER_CATEGORY, memory: int = 256):
+                 per_category: int = DEFAULT_PER_CATEGORY, memory: int = 1024):
         if root is None:
             from .library import cache_dir
 

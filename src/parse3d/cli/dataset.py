@@ -74,7 +74,7 @@ def register(app: typer.Typer) -> None:
                                        help="Skip settling and contact extraction."),
         retry_failed: bool = typer.Option(False, "--retry-failed",
                                           help="Run failed and timed-out scenes again."),
-        max_tasks: int = typer.Option(20, "--max-tasks",
+        max_tasks: int = typer.Option(200, "--max-tasks",
                                       help="Scenes per local worker before it is replaced."),
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:

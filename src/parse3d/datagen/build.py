@@ -676,7 +676,7 @@ def _commit(out: Path, outcome: SceneOutcome) -> None:
 
 def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "local",
                   workers: int = 2, ray_address: str | None = None,
-                  retry_failed: bool = False, max_tasks: int = 20, flush_every: float = 2.0,
+                  retry_failed: bool = False, max_tasks: int = 200, flush_every: float = 2.0,
                   progress: Callable[[BuildEvent], None] | None = None) -> BuildReport:
     """Build (or resume) a dataset of ``config.scenes`` scenes in ``out``.
 

@@ -42,7 +42,7 @@ from .build import (
 __all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit"]
 
 #: Scenes a local worker builds before it is replaced.
-DEFAULT_MAX_TASKS = 20
+DEFAULT_MAX_TASKS = 200
 
 
 def hard_limit(config: BuildConfig) -> float | None:

@@ -6,7 +6,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-import trimesh
+from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import Asset, Part
 from ..relations import SURFACES
@@ -43,12 +43,21 @@ def asset_geometry(asset: Asset) -> AssetGeometry:
             _GEOM.clear()
         pts = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces] or
                         [p.mesh.vertices for p in asset.parts])
-        hull = trimesh.convex.convex_hull(pts).vertices
-        vols = np.array([abs(pc.volume) for p in asset.parts for pc in p.pieces])
-        cents = np.array([pc.center_mass if pc.is_volume else pc.bounds.mean(axis=0)
-                          for p in asset.parts for pc in p.pieces])
-        com = (cents * vols[:, None]).sum(0) / vols.sum() if len(vols) and vols.sum() > 0 \
-            else asset.bounds.mean(axis=0)
+        try:
+            hull = pts[ConvexHull(pts).vertices]
+        except (QhullError, ValueError):  # flat assets (a rug's outline): keep every point
+            hull = pts
+        # centre of mass of the closed pieces by the divergence theorem, all in one pass:
+        # each triangle with the origin spans a signed tetrahedron
+        tris = [pc.vertices[pc.faces] for p in asset.parts for pc in p.pieces]
+        if tris:
+            T = np.concatenate(tris)
+            v = np.einsum("ij,ij->i", T[:, 0], np.cross(T[:, 1], T[:, 2])) / 6.0
+            vol = float(v.sum())
+            com = (v[:, None] * T.sum(axis=1) / 4.0).sum(axis=0) / vol if abs(vol) > 1e-12 \
+                else asset.bounds.mean(axis=0)
+        else:
+            com = asset.bounds.mean(axis=0)
         g = AssetGeometry(np.asarray(hull), np.asarray(com), asset.bounds.mean(axis=0))
         _GEOM[asset.asset_id] = g
     return g
