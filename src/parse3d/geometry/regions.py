@@ -116,6 +116,15 @@ def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
     """Erosion of a convex polygon by a footprint: each edge moves in by the footprint's
     support along the edge's outward normal."""
     c = np.asarray(poly.exterior.coords)[:-1]
+    if len(c) == 4:  # an axis-aligned rectangle (a floor, a tabletop, a shelf) shrinks per axis
+        e = np.roll(c, -1, axis=0) - c
+        if np.all(np.min(np.abs(e), axis=1) < 1e-12):
+            lo, hi = c.min(axis=0), c.max(axis=0)
+            f = -neg  # the footprint
+            lo2, hi2 = lo - f.min(axis=0), hi - f.max(axis=0)
+            if (hi2 > lo2).all():
+                return shapely_box(lo2[0], lo2[1], hi2[0], hi2[1])
+            return Polygon()
     if not Polygon(c).exterior.is_ccw:
         c = c[::-1]
     e = np.roll(c, -1, axis=0) - c

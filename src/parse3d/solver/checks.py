@@ -82,7 +82,7 @@ def _surface(scene: Scene, obj: PlacedObject | None, ref: Ref, label: str,
     if not parts:
         return None
     if ref.part is None:
-        return surface_from_bbox(label, obj.asset.bounds).transformed(T)
+        return surface_from_bbox(label, asset_geometry(obj.asset).bounds).transformed(T)
     return parts[0].surfaces[label].transformed(T)
 
 

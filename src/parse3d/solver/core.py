@@ -262,7 +262,7 @@ def _part_surface_world(st: _State, ref: Ref, default_label: str) -> tuple[Surfa
         # the whole object's face: the bbox face of the asset
         from ..geometry.surfaces import surface_from_bbox
 
-        s = surface_from_bbox(label, parent.asset.bounds)
+        s = surface_from_bbox(label, asset_geometry(parent.asset).bounds)
         return s.transformed(parent.transform()), "", label
     p = parts[0]
     return p.surfaces[label].transformed(parent.transform()), p.name, label
@@ -567,7 +567,8 @@ def _place_object(st: _State, oid: str, rng: np.random.Generator, cfg: SolverCon
         # clamped so the size stays in the category's range (this normalises loaded assets)
         lo, hi = asset.size_range
         s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
-        scale = s_node * float(np.clip(1.0, lo / max(asset.size, 1e-6), hi / max(asset.size, 1e-6)))
+        size = asset_geometry(asset).size
+        scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
         scale *= 0.92 ** attempt  # retries try a smaller instance
         try:
             pose, trials = _place_asset(st, oid, asset, scale, support_edge, others, rng, cfg)
@@ -588,7 +589,8 @@ def _place_asset(st: _State, oid: str, asset: Asset, scale: float, support_edge:
                  others: list[Edge], rng: np.random.Generator, cfg: SolverConfig):
     geom = asset_geometry(asset)
     hull = geom.hull * scale
-    sups = _support_candidates(st, support_edge, child_h=float(asset.extents[2] * scale))
+    b = asset_geometry(asset).bounds
+    sups = _support_candidates(st, support_edge, child_h=float((b[1, 2] - b[0, 2]) * scale))
     order = rng.permutation(len(sups)) if len(sups) > 1 and support_edge.parent.surface is None \
         and support_edge.relation != "ON" else np.arange(len(sups))
     if support_edge.relation == "ON" and len(sups) > 1:

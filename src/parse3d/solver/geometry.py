@@ -26,11 +26,18 @@ class AssetGeometry:
         Centre of mass (collision volume).
     center : (3,) float
         Bounding-box centre.
+    bounds : (2, 3) float
+        Bounding box of the visual mesh.
     """
 
     hull: np.ndarray
     com: np.ndarray
     center: np.ndarray
+    bounds: np.ndarray
+
+    @property
+    def size(self) -> float:
+        return float((self.bounds[1] - self.bounds[0]).max())
 
 
 _GEOM: dict[str, AssetGeometry] = {}
@@ -58,7 +65,8 @@ def asset_geometry(asset: Asset) -> AssetGeometry:
                 else asset.bounds.mean(axis=0)
         else:
             com = asset.bounds.mean(axis=0)
-        g = AssetGeometry(np.asarray(hull), np.asarray(com), asset.bounds.mean(axis=0))
+        b = asset.bounds
+        g = AssetGeometry(np.asarray(hull), np.asarray(com), b.mean(axis=0), b)
         _GEOM[asset.asset_id] = g
     return g
 
