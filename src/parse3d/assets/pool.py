@@ -248,7 +248,11 @@ class AssetPool:
                     if bar is not None:
                         bar.update(task, advance=1, description=a[1])
             else:
-                with ProcessPoolExecutor(max_workers=int(workers)) as ex:
+                import multiprocessing as mp
+
+                # fork server: never fork a process whose threads may hold locks
+                with ProcessPoolExecutor(max_workers=int(workers),
+                                         mp_context=mp.get_context("forkserver")) as ex:
                     futs = [ex.submit(_build_one, *a) for a in args]
                     for f in as_completed(futs):
                         r = f.result()

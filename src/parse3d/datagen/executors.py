@@ -6,8 +6,8 @@ dataset folder. A scene therefore comes out the same whatever the executor or th
 workers.
 
 :class:`LocalExecutor`
-    ``workers`` processes forked from the driver. Each creates its own OpenGL (EGL) context
-    after the fork, builds at most ``max_tasks`` scenes and is then replaced, so memory stays
+    ``workers`` processes started through a fork server (so no thread lock of the driver is
+    inherited). Each creates its own OpenGL (EGL) context, builds at most ``max_tasks`` scenes and is then replaced, so memory stays
     bounded over long runs (caches of assets and collision shapes grow with every new asset).
     A worker that dies is replaced and its scene tried once more in the new worker (the death
     may have come from outside: the OOM killer, a signal); a scene whose worker dies twice (a
@@ -103,8 +103,8 @@ def run_task(config: BuildConfig, index: int) -> SceneOutcome:
 
 def _worker_main(conn, config: BuildConfig, max_tasks: int, source) -> None:
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver handles Ctrl-C and stops us
-    _PROCESS.clear()  # nothing of the driver's (a GL context above all) survives the fork
-    if source is not None:  # inherited through the fork: templates are not loaded again
+    _PROCESS.clear()  # nothing of the driver's (a GL context above all) is reused
+    if source is not None:  # handed over by the driver: templates are not loaded again
         _PROCESS.update(key=repr(config.source), source=source)
     for _ in range(max_tasks):
         try:
@@ -170,12 +170,14 @@ class LocalExecutor:
         """Build ``indices``; yields each outcome as it finishes (not in index order).
 
         ``source``: the driver's :class:`SceneSource` of ``config``, handed to the workers
-        through the fork (None: each worker makes its own).
+        (None: each worker makes its own).
         """
         import multiprocessing as mp
         from multiprocessing.connection import wait
 
-        ctx = mp.get_context("fork")
+        # forkserver: workers fork from a fresh single-threaded server, never from a driver that
+        # may hold thread locks (a test runner's I/O thread, native thread pools) at fork time
+        ctx = mp.get_context("forkserver")
         pending = deque(int(i) for i in indices)
         limit = hard_limit(config)
         slots: list[_Slot] = []
