@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.console import Console
 from rich.table import Table
 
 from ._common import console
@@ -42,6 +43,7 @@ def register(app: typer.Typer) -> None:
                           "-" if scene.contacts is None else str(len(scene.contacts)),
                           f"{scene.timings.get('solve', 0):.2f}",
                           f"{scene.timings.get('settle', 0):.2f}", str(folder))
-        console.print(table)
+        # a wide console even when the output is not a terminal (make demo, CI logs)
+        Console(highlight=False, width=max(console.width, 140)).print(table)
         console.print(f"Open the .glb files in Blender or any glTF viewer; preview.png shows each room. "
                       f"Files are in {out}/")
