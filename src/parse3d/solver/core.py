@@ -90,6 +90,10 @@ def stage_rng(seed: int, stage: str) -> np.random.Generator:
     return np.random.default_rng([int(seed), zlib.crc32(stage.encode())])
 
 
+#: Consecutive validation failures of the same relation after which an asset is given up.
+STRUCTURAL_FAILURES = 8
+
+
 class _Fail(Exception):
     """An object could not be placed; the message names the constraint."""
 
@@ -360,9 +364,9 @@ def _obstacles(st: _State, sup: _Support, exclude: set[str], height: float) -> l
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
     for oid in exclude:
-        for part_name, pts in _world_pieces(st, oid):
-            if oid == sup.owner and part_name == sup.part:
-                continue
+        for _, pts in _world_pieces(st, oid):
+            # the supporting piece itself lies below the plane and drops out of the slab test;
+            # the rest of the support part (a cabinet body's sides) stays an obstacle
             h = (pts - sup.surface.origin) @ n
             if h.max() <= 1e-3 or h.min() >= height - 1e-3:
                 continue
@@ -697,6 +701,7 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
     trials = 0
     last = "no sample"
     samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    same = 0
     for k in range(cfg.max_trials):
         trials += 1
         if strategy == "rejection":
@@ -733,7 +738,14 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
                 continue
         ok, why = _validate(st, cand, support_edge, others, sup)
         if not ok:
+            # the region makes relations hold by construction; the same relation failing
+            # again and again is structural (a pan that would tip, a part that is not the
+            # lowest one): stop wasting samples on this asset
+            rel_of = why.split(":")[0]
+            same = same + 1 if rel_of == last.split(":")[0] else 1
             last = why
+            if same >= STRUCTURAL_FAILURES:
+                break
             continue
         body.move(Rt, t)
         hit = st.world.collides(body)
@@ -741,7 +753,7 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
             last = f"collides with {hit}"
             continue
         return (Rt, t, sup, body), trials
-    raise _Fail(f"no valid pose on {_sup_name(sup)} in {cfg.max_trials} trials (last: {last})")
+    raise _Fail(f"no valid pose on {_sup_name(sup)} in {trials} trials (last: {last})")
 
 
 def _height_band(asset: Asset, scale: float, R: np.ndarray, s: Surface, edge: Edge,
