@@ -254,3 +254,13 @@ def test_cli_input_mistakes(reference, pags, capsys):
         main(["dataset", "stats", str(pags)])
     assert e.value.code == 2
     assert "no manifest.parquet" in capsys.readouterr().err
+
+
+def test_template_build_with_local_workers(tmp_path):
+    """The default source (room templates) reaches the local worker processes."""
+    cfg = BuildConfig(scenes=2, seed=3, rooms=("bathroom", "laundry"), views=0, settle=False)
+    report = build_dataset(cfg, tmp_path / "ds", workers=2)
+    rows = read_manifest(tmp_path / "ds" / "manifest.parquet")
+    assert sorted(r["room_type"] for r in rows) == ["bathroom", "laundry"]
+    assert [r["status"] for r in rows] == ["ok", "ok"], [r["reason"] for r in rows]
+    assert report is not None

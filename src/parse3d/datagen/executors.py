@@ -173,11 +173,17 @@ class LocalExecutor:
         (None: each worker makes its own).
         """
         import multiprocessing as mp
+        import pickle
         from multiprocessing.connection import wait
 
         # forkserver: workers fork from a fresh single-threaded server, never from a driver that
         # may hold thread locks (a test runner's I/O thread, native thread pools) at fork time
         ctx = mp.get_context("forkserver")
+        if source is not None:  # handed over by pickling; a source that cannot be is rebuilt
+            try:
+                pickle.dumps(source)
+            except (TypeError, AttributeError, pickle.PicklingError):
+                source = None
         pending = deque(int(i) for i in indices)
         limit = hard_limit(config)
         slots: list[_Slot] = []
