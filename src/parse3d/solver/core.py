@@ -237,13 +237,6 @@ def _support_candidates(st: _State, edge: Edge, child_h: float) -> list[_Support
 
 
 # --------------------------------------------------------------------- rotations
-@dataclass
-class _Pose:
-    R: np.ndarray
-    free: bool  # whether the angle about the support normal is still free
-    toward: str | None = None  # object id the child must face
-
-
 def _contact_normal(asset: Asset, ref: Ref, default_label: str) -> np.ndarray:
     return np.array(SURFACES[ref.surface or default_label], float)
 
@@ -495,7 +488,7 @@ def _sup_name(sup: _Support) -> str:
 
 
 def _part_lines(st: _State, oid: str, asset: Asset, scale: float, R: np.ndarray, h: float,
-                edges: list[Edge], sup: _Support, lean: list, region: BaseGeometry) -> BaseGeometry:
+                edges: list[Edge], sup: _Support, region: BaseGeometry) -> BaseGeometry:
     """Intersect the region with the lines of part-level contact constraints."""
     s = sup.surface
     for e in edges:
@@ -695,7 +688,7 @@ def _place_on(st: _State, oid: str, asset: Asset, scale: float, hull: np.ndarray
         region = _object_regions(st, others, sup, c_off, region, off3)
         if rel == "SECURED_TO":
             region = _height_band(asset, scale, R, s, support_edge, region, sup)
-        region = _part_lines(st, oid, asset, scale, R, h, others, sup, lean, region)
+        region = _part_lines(st, oid, asset, scale, R, h, others, sup, region)
     else:
         region = region0
     trials = 0

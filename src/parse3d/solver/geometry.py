@@ -9,7 +9,6 @@ import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import Asset, Part
-from ..relations import SURFACES
 
 __all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster"]
 
@@ -75,11 +74,6 @@ def part_points(parts: list[Part]) -> np.ndarray:
     """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
     pts = [pc.vertices for p in parts for pc in p.pieces] or [p.mesh.vertices for p in parts]
     return np.vstack(pts)
-
-
-def surface_normal(parts: list[Part], label: str) -> np.ndarray:
-    """Outward normal of ``label`` in the asset frame (the canonical axis of that face)."""
-    return np.array(SURFACES[label], float)
 
 
 _CASTERS: dict[str, object] = {}

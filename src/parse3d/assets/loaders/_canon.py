@@ -148,6 +148,25 @@ def check_mapping_labels(mapping: dict, vocabulary: tuple[str, ...] | None, file
         raise InputError(probs)
 
 
+def part_label_problems(parts, vocabulary: tuple[str, ...] | None, file: str | None,
+                        pointer: str) -> list[Problem]:
+    """A problem for every part whose label is outside ``vocabulary`` (pointer
+    ``<pointer>/<source name>``), with the closest label as a suggestion."""
+    if not vocabulary:
+        return []
+    import difflib
+
+    probs = []
+    for p in parts:
+        if p.label not in vocabulary:
+            close = difflib.get_close_matches(p.label, vocabulary, n=1)
+            hint = f" — did you mean {close[0]!r}? (add it to the mapping)" if close else \
+                f" (labels: {', '.join(vocabulary)}; map it with --mapping)"
+            probs.append(Problem(f"{pointer}/{p.source}", f"unknown part label {p.label!r}{hint}",
+                                 file, "vocabulary"))
+    return probs
+
+
 def label_for(names: tuple[str, ...], mapping: dict) -> str | None:
     """The label of a node: the first of ``names`` found in ``mapping`` decides (``None`` drops
     it); otherwise the default label of the last name."""

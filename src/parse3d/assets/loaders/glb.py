@@ -27,6 +27,7 @@ from ._canon import (
     finish_asset,
     label_for,
     material_of,
+    part_label_problems,
     read_mapping,
 )
 
@@ -72,19 +73,9 @@ def read_glb(path: str | os.PathLike, *, mapping=None, frame: SourceFrame = GLTF
     if len(parts) < 2:
         raise InputError(Problem("", f"found {len(parts)} mesh node(s); a part-split asset has one "
                                  "mesh node per part (at least two)", file, "geometry"))
-    if vocabulary:
-        import difflib
-
-        probs = []
-        for p in parts:
-            if p.label not in vocabulary:
-                close = difflib.get_close_matches(p.label, vocabulary, n=1)
-                hint = f" — did you mean {close[0]!r}? (add it to the mapping)" if close else \
-                    f" (labels: {', '.join(vocabulary)}; map it with --mapping)"
-                probs.append(Problem(f"/nodes/{p.source}", f"unknown part label {p.label!r}{hint}",
-                                     file, "vocabulary"))
-        if probs:
-            raise InputError(probs)
+    probs = part_label_problems(parts, vocabulary, file, "/nodes")
+    if probs:
+        raise InputError(probs)
     return RawAsset(file, parts, {"source_format": "gltf", "frame": frame.__dict__.copy()})
 
 

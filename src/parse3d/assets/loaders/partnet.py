@@ -33,6 +33,7 @@ from ._canon import (
     default_label,
     finish_asset,
     material_of,
+    part_label_problems,
     read_mapping,
 )
 
@@ -191,16 +192,7 @@ def read_partnet_mobility(folder: str | os.PathLike, *, mapping=None,
     if unlabelled:
         probs.append(Problem("", f"links {unlabelled} have geometry but no line in semantics.txt and no "
                              "mapping entry", file, "vocabulary"))
-    if vocabulary:
-        import difflib
-
-        for p in parts:
-            if p.label not in vocabulary:
-                close = difflib.get_close_matches(p.label, vocabulary, n=1)
-                hint = f" — did you mean {close[0]!r}? (add it to the mapping)" if close else \
-                    f" (labels: {', '.join(vocabulary)}; map it with --mapping)"
-                probs.append(Problem(f"/link/{p.source}", f"unknown part label {p.label!r}{hint}",
-                                     file, "vocabulary"))
+    probs += part_label_problems(parts, vocabulary, file, "/link")
     if probs:
         raise InputError(probs)
     if len(parts) < 2:
