@@ -186,3 +186,17 @@ def test_garbage_gives_problems_not_crashes(data):
     assert problems
     with pytest.raises(InputError):
         validate_data(data, raise_errors=True)
+
+
+def test_unhashable_enum_value_is_a_problem_not_a_crash():
+    from parse3d.pag.validate import validate_data
+
+    doc = {"format": "pag/1", "name": "x",
+           "room": {"type": "study", "footprint": [[0, 0], [4, 0], [4, 3], [0, 3]], "height": 2.7},
+           "objects": [{"id": "desk", "category": "desk"}, {"id": "mug", "category": "mug"}],
+           "relations": [{"relation": "ON", "child": "desk", "parent": "floor"},
+                         {"relation": "ON", "child": "mug", "parent": "desk"},
+                         {"relation": "SIDE_OF", "child": "mug", "parent": "desk", "side": []}]}
+    problems = validate_data(doc)
+    assert [p.pointer for p in problems] == ["/relations/2/side"]
+    assert "unknown side" in problems[0].message

@@ -246,12 +246,17 @@ def _relation_rules() -> tuple[frozenset, frozenset, dict]:
         if key in ("relation", "child", "parent"):
             continue
         if "enum" in sub:
-            rules[key] = frozenset(sub["enum"]).__contains__
+            rules[key] = _enum_rule(frozenset(sub["enum"]))
         elif sub.get("type") == "number":
             rules[key] = _num
         else:
             rules[key] = _num_or_pair
     return frozenset(props), frozenset(props["relation"]["enum"]), rules
+
+
+def _enum_rule(allowed: frozenset):
+    """A check that a value is one of ``allowed`` (any unhashable value is not)."""
+    return lambda v: isinstance(v, str) and v in allowed
 
 
 def _fast_relation(r: Any) -> bool:
