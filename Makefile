@@ -3,8 +3,10 @@ PY ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
 SYSTEM_PACKAGES := libegl1 libegl-mesa0 libgl1-mesa-dri libvulkan1
+# The browser for the PAG designer's tests (Debian's build; never a downloaded one).
+TEST_SYSTEM_PACKAGES := $(SYSTEM_PACKAGES) chromium
 
-.PHONY: demo test lint system venv install-main install-all bench gallery clean
+.PHONY: demo test lint system system-test _apt venv install-main install-all bench gallery clean
 
 demo: install-main
 	$(BIN)/parse3d demo --out out/demo
@@ -18,7 +20,13 @@ lint: install-all
 
 # System libraries for headless rendering (Mesa EGL) and for SAPIEN (Vulkan loader).
 system:
-	@missing=""; for p in $(SYSTEM_PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
+	@$(MAKE) --no-print-directory _apt PACKAGES="$(SYSTEM_PACKAGES)"
+
+system-test:
+	@$(MAKE) --no-print-directory _apt PACKAGES="$(TEST_SYSTEM_PACKAGES)"
+
+_apt:
+	@missing=""; for p in $(PACKAGES); do dpkg -s $$p >/dev/null 2>&1 || missing="$$missing $$p"; done; \
 	if [ -n "$$missing" ]; then \
 	  echo "installing system packages:$$missing"; \
 	  SUDO=""; [ "$$(id -u)" = 0 ] || SUDO=sudo; \
@@ -34,7 +42,7 @@ venv: $(BIN)/python
 install-main: system venv
 	$(BIN)/pip install -q -e ".[physics,render]"
 
-install-all: system venv
+install-all: system-test venv
 	$(BIN)/pip install -q -e ".[all]"
 
 bench: install-all

@@ -46,7 +46,7 @@ import trimesh
 
 from ..errors import AssetError
 from ..geometry.surfaces import Surface
-from .model import Asset, InternalSurface, Material, Part
+from .model import Asset, InternalSurface, Joint, Material, Part
 
 __all__ = ["FORMAT", "save_asset", "load_asset", "asset_digest"]
 
@@ -120,6 +120,8 @@ def _asset_arrays(asset: Asset) -> dict[str, np.ndarray]:
         "surfaces": [{"label": s.label, "source": s.source} for s in surfaces],
         "internal": internal_h,
     }
+    if asset.joints:  # rigid assets keep the header (and digest) they always had
+        header["joints"] = [j.to_dict() for j in asset.joints]
     arrays["header"] = np.frombuffer(json.dumps(header).encode("utf-8"), np.uint8)
     return arrays
 
@@ -223,7 +225,8 @@ def _asset_from(header: dict, data: dict[str, np.ndarray]) -> Asset:
         for h in header["internal"]
     ]
     return Asset(header["category"], header["asset_id"], parts, tuple(header["size_range"]),
-                 float(header["density"]), internal, header["meta"])
+                 float(header["density"]), internal, header["meta"],
+                 [Joint.from_dict(j) for j in header.get("joints", [])])
 
 
 def asset_digest(asset: Asset) -> str:

@@ -17,7 +17,8 @@ import trimesh
 from ..geometry.shapes import Shape
 from ..geometry.surfaces import Surface, resolve_surfaces
 
-__all__ = ["Material", "Part", "InternalSurface", "Asset", "make_part", "finalize_asset"]
+__all__ = ["Material", "Part", "InternalSurface", "Joint", "JOINT_TYPES", "Asset", "make_part",
+           "finalize_asset"]
 
 
 @dataclass(frozen=True)
@@ -114,6 +115,64 @@ class InternalSurface:
     depth: float
 
 
+#: The kinds of articulation an asset can record.
+JOINT_TYPES = ("revolute", "prismatic")
+
+
+@dataclass(frozen=True)
+class Joint:
+    """An articulation between two parts of an asset (a door hinge, a drawer slide, a lid).
+
+    Attributes
+    ----------
+    name : str
+        Unique within the asset (``door_0_hinge``).
+    type : str
+        ``revolute`` (angle, radians) or ``prismatic`` (travel, metres).
+    parent_part, child_part : str
+        Part names; the child moves relative to the parent.
+    axis : (3,) float
+        Unit axis in the asset frame.
+    origin : (3,) float
+        A point on the axis in the asset frame, metres (the hinge line for revolute joints).
+    limits : (2,) float
+        Lower and upper joint value; 0 is the pose the part meshes are modelled in (closed).
+    """
+
+    name: str
+    type: str
+    parent_part: str
+    child_part: str
+    axis: tuple[float, float, float]
+    origin: tuple[float, float, float]
+    limits: tuple[float, float]
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"name": self.name, "type": self.type, "parent_part": self.parent_part,
+                "child_part": self.child_part, "axis": [float(x) for x in self.axis],
+                "origin": [float(x) for x in self.origin],
+                "limits": [float(x) for x in self.limits]}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> Joint:
+        return cls(d["name"], d["type"], d["parent_part"], d["child_part"],
+                   tuple(float(x) for x in d["axis"]), tuple(float(x) for x in d["origin"]),
+                   tuple(float(x) for x in d["limits"]))
+
+    def transform(self, value: float) -> np.ndarray:
+        """(4, 4) motion of the child part, in the asset frame, at joint ``value``."""
+        T = np.eye(4)
+        axis = np.asarray(self.axis, float)
+        if self.type == "prismatic":
+            T[:3, 3] = axis * value
+            return T
+        origin = np.asarray(self.origin, float)
+        R = trimesh.transformations.rotation_matrix(value, axis)[:3, :3]
+        T[:3, :3] = R
+        T[:3, 3] = origin - R @ origin
+        return T
+
+
 @dataclass
 class Asset:
     """A part-labelled 3D asset in its canonical frame.
@@ -131,6 +190,8 @@ class Asset:
     internal : list of InternalSurface
     meta : dict
         Provenance: generator, variant, seed, source file.
+    joints : list of Joint
+        Articulations between parts (doors, drawers, lids); empty for rigid assets.
     """
 
     category: str
@@ -140,6 +201,7 @@ class Asset:
     density: float = 500.0
     internal: list[InternalSurface] = field(default_factory=list)
     meta: dict[str, Any] = field(default_factory=dict)
+    joints: list[Joint] = field(default_factory=list)
 
     @property
     def bounds(self) -> np.ndarray:
@@ -205,6 +267,7 @@ class Asset:
             "size_range": list(self.size_range),
             "density": self.density,
             "meta": self.meta,
+            "joints": [j.to_dict() for j in self.joints],
         }
 
 

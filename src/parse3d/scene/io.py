@@ -71,6 +71,8 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
             d["trials"] = int(o.trials)
             if o.flags:
                 d["flags"] = list(o.flags)
+            if o.joints:
+                d["joints"] = {k: float(v) for k, v in o.joints.items()}
         else:
             d["reason"] = o.reason
         objects.append(d)
@@ -181,6 +183,7 @@ def read_scene(path: str | Path) -> Scene:
             o.settled_rotation = quat_to_matrix(od["settled_pose"]["quaternion"])
             o.settled_position = np.array(od["settled_pose"]["position"], float)
         o.flags = list(od.get("flags", []))
+        o.joints = {str(k): float(v) for k, v in od.get("joints", {}).items()}
         scene.objects[o.id] = o
     for r in d.get("relations", []):
         scene.relations.append(RelationCheck(r["index"], r["relation"], r["child"], r["parent"],

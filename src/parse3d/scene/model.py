@@ -55,6 +55,9 @@ class PlacedObject:
         Held in place during settling (SECURED_TO and HANGING_BELOW objects).
     settled_rotation, settled_position : array or None
         The pose after physics, when settled.
+    joints : dict of str to float
+        Joint values by joint name (radians or metres) for articulated assets; a joint not
+        listed is at 0 (closed).
     """
 
     id: str
@@ -71,6 +74,7 @@ class PlacedObject:
     settled_rotation: np.ndarray | None = None
     settled_position: np.ndarray | None = None
     flags: list[str] = field(default_factory=list)
+    joints: dict[str, float] = field(default_factory=dict)
 
     @property
     def placed(self) -> bool:
