@@ -189,7 +189,8 @@ def test_failing_and_timed_out_scenes_are_recorded(tmp_path, pags):
     report = build_dataset(slow, tmp_path / "slow", workers=1)
     (row,) = read_manifest(tmp_path / "slow" / "manifest.parquet")
     assert report.timeout == 1 and row["status"] == "timeout"
-    assert "0.05 s time limit" in row["reason"]
+    # the soft limit ("ran past the 0.05 s time limit") or, on a loaded machine, the hard kill
+    assert "time limit" in row["reason"] and "0.05 s" in row["reason"]
 
 
 def test_ray_executor_matches_local(reference, pags, tmp_path):
