@@ -196,6 +196,8 @@ def scene_payload(scene: Scene, *, out: str | None = None) -> dict[str, Any]:
                  for c in scene.relations]
     return {
         "name": scene.pag.name, "seed": int(scene.seed), "settled": bool(scene.settled),
+        "room": {"footprint": [[float(x), float(y)] for x, y in scene.room.footprint],
+                 "height": float(scene.room.height)},
         "ok": scene.ok, "objects": objects, "relations": relations,
         "contacts": None if scene.contacts is None else [c.to_dict() for c in scene.contacts],
         "timings": {k: round(float(v), 4) for k, v in scene.timings.items()},

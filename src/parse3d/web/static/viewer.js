@@ -50,9 +50,23 @@ export class SceneViewer {
     this._pending = true;
     requestAnimationFrame(() => {
       this._pending = false;
+      this._cutaway();
       this.renderer.render(this.scene, this.camera);
       this.rendered = (this.rendered || 0) + 1;
     });
+  }
+
+  // Hide the walls the camera is behind, so the room is seen from inside: the camera is outside
+  // wall_i when it is on the outer side of the line from footprint vertex i to vertex i+1.
+  _cutaway() {
+    const fp = this.result && this.result.room && this.result.room.footprint;
+    if (!fp || !this.walls) return;
+    const cx = this.camera.position.x, cy = -this.camera.position.z; // glTF (x, z) -> world (x, -y)
+    for (const [i, meshes] of this.walls) {
+      const [x1, y1] = fp[i], [x2, y2] = fp[(i + 1) % fp.length];
+      const inside = (cx - x1) * -(y2 - y1) + (cy - y1) * (x2 - x1) > 0;
+      for (const m of meshes) m.visible = inside;
+    }
   }
 
   // Load scene.glb and the job's results ({objects, relations, contacts}).
@@ -66,7 +80,14 @@ export class SceneViewer {
       for (const p of o.parts || []) names.set(sanitize(`${o.id}:${p.name}`), { object: o.id, part: p.name });
     }
     this.meshes = [];
+    this.walls = new Map();
     this.root.traverse((node) => {
+      const wall = /^roomwall_(\d+)/.exec(node.name);
+      if (wall && node.isMesh) {
+        const i = Number(wall[1]);
+        if (!this.walls.has(i)) this.walls.set(i, []);
+        this.walls.get(i).push(node);
+      }
       const x = node.userData || {};
       const key = x.object_id ? { object: x.object_id, part: x.part || x.name } : names.get(node.name) || names.get(node.name.replace(/_\d+$/, ""));
       if (node.name.startsWith(sanitize("room:ceiling"))) node.visible = false;
@@ -79,12 +100,12 @@ export class SceneViewer {
     });
     this.scene.add(this.root);
     const box = new THREE.Box3();
-    for (const m of this.meshes) if (m.userData.room && m.visible) box.expandByObject(m);
+    for (const m of this.meshes) if (m.userData.room && !m.name.startsWith("roomceiling")) box.expandByObject(m);
     if (box.isEmpty()) box.setFromObject(this.root);
     const c = box.getCenter(new THREE.Vector3()), s = box.getSize(new THREE.Vector3());
-    const d = Math.max(s.x, s.z) * 1.05 + 1;
+    const d = Math.max(s.x, s.z) * 0.75 + 0.8;
     if (!this._framed) {
-      this.camera.position.set(c.x + d * 0.35, c.y + d * 0.95, c.z + d * 0.85);
+      this.camera.position.set(c.x + d * 0.45, c.y + d * 0.9, c.z + d * 0.9);
       this.controls.target.copy(c);
       this._framed = true;
     }
