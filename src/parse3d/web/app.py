@@ -104,8 +104,8 @@ async def _send_json(send, status: int, body: dict) -> None:
 
 def _problem_response(e: InputError) -> JSONResponse:
     status = 409 if isinstance(e, F.FileExistsProblem) else 400
-    if any(p.kind == "vocabulary" for p in e.problems) and status == 400 and all(
-            p.pointer in ("/category", "/variant", "/template") for p in e.problems):
+    if isinstance(e, F.MissingFileProblem) or (e.problems and all(
+            p.kind == "vocabulary" and p.pointer in ("/category", "/variant") for p in e.problems)):
         status = 404
     first = e.problems[0].message if e.problems else str(e)
     return JSONResponse({"error": first, "problems": [p.to_dict() for p in e.problems]},
@@ -388,8 +388,10 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
                 "problems": [q.to_dict() for q in problems]}
 
     # ------------------------------------------------------------------ front end
-    @app.get("/api/{rest:path}")
+    @app.api_route("/api/{rest:path}", methods=["GET", "POST", "PUT", "DELETE", "PATCH"])
     async def unknown_api(rest: str):
+        if rest.startswith("files/"):  # a name with a slash, once the URL was decoded
+            F.check_name(rest[len("files/"):])
         raise HTTPException(404, f"no API endpoint /api/{rest}")
 
     @app.get("/")

@@ -17,7 +17,7 @@ from ..errors import InputError, Problem
 from ..pag.io import dumps_pag, loads_document, read_document, save_pag
 
 __all__ = ["PAG_SUFFIXES", "check_name", "list_pag_files", "read_pag_file", "write_pag_file",
-           "FileExistsProblem", "yaml_text", "parse_text"]
+           "FileExistsProblem", "MissingFileProblem", "yaml_text", "parse_text"]
 
 PAG_SUFFIXES = (".json", ".yaml", ".yml")
 _NAME = re.compile(r"^[A-Za-z0-9_\-][A-Za-z0-9_.\-]{0,99}$")
@@ -25,6 +25,10 @@ _NAME = re.compile(r"^[A-Za-z0-9_\-][A-Za-z0-9_.\-]{0,99}$")
 
 class FileExistsProblem(InputError):
     """The file exists and the caller did not ask to replace it."""
+
+
+class MissingFileProblem(InputError):
+    """No such file in the working folder."""
 
 
 def check_name(name: str) -> str:
@@ -68,7 +72,8 @@ def read_pag_file(workdir: Path, name: str) -> Any:
     """The parsed document of a PAG file of the working folder (not validated)."""
     p = _path(workdir, name)
     if not p.is_file():
-        raise InputError(Problem("/name", f"no file {name!r} in the working folder", None, "io"))
+        raise MissingFileProblem(Problem("/name", f"no file {name!r} in the working folder",
+                                         None, "io"))
     try:
         return read_document(p)
     except InputError as e:  # name the file as the user knows it, not its absolute path
