@@ -4,7 +4,7 @@ import { api, follow } from "./api.js";
 import { AssetPicker } from "./picker.js";
 import { SceneViewer } from "./viewer.js";
 import { drawGraph, KIND_COLOURS } from "./graph.js";
-import { FootprintPad, formatFootprint, parseFootprint, signedArea } from "./room.js";
+import { counterClockwise, FootprintPad, formatFootprint, parseFootprint, signedArea } from "./room.js";
 
 const $ = (sel, root = document) => root.querySelector(sel);
 const h = (tag, attrs = {}, ...kids) => {
@@ -116,7 +116,7 @@ function setupRoom() {
   $("#draw").addEventListener("click", () => { pad.start(); say("click the corners on the grid; click the first corner again to close"); });
   $("#draw-done").addEventListener("click", () => pad.finish());
   $("#reverse").addEventListener("click", () => {
-    state.doc.room.footprint = [...state.doc.room.footprint].reverse();
+    state.doc.room.footprint = counterClockwise(state.doc.room.footprint);
     renderRoom(); renderEditorChoices(); changed({ structure: false });
   });
   for (const t of state.vocab.room_types) $("#room-types").append(h("option", { value: t }));

@@ -112,6 +112,9 @@ export class AssetPicker {
   }
 
   _hit(e) {
+    // matrices are otherwise only brought up to date by a render, which may not have happened yet
+    this.scene.updateMatrixWorld();
+    this.camera.updateMatrixWorld();
     this.raycaster.setFromCamera(this._ndc(e), this.camera);
     // arrow heads only: a line's pick threshold is in world units and would swallow clicks
     const arrowHit = this.raycaster.intersectObjects(this.arrows.children.map((a) => a.cone), false)[0];
@@ -212,6 +215,7 @@ export class AssetPicker {
       if (!mesh) return null;
       p = new THREE.Box3().setFromObject(mesh).getCenter(new THREE.Vector3());
     }
+    this.camera.updateMatrixWorld();
     p.project(this.camera);
     const r = this.renderer.domElement.getBoundingClientRect();
     return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };

@@ -18,6 +18,9 @@ export function signedArea(pts) {
   return a / 2;
 }
 
+// The same outline the other way round, from the same first vertex.
+export const counterClockwise = (pts) => [pts[0], ...pts.slice(1).reverse()];
+
 export function parseFootprint(text) {
   const pts = [];
   for (const line of text.split(/\n|;/)) {
@@ -55,7 +58,7 @@ export class FootprintPad {
     let pts = this.drawing;
     this.drawing = null;
     if (pts.length >= 3) {
-      if (signedArea(pts) < 0) pts = pts.reverse(); // walls are numbered counter-clockwise
+      if (signedArea(pts) < 0) pts = counterClockwise(pts); // walls are numbered counter-clockwise
       this.points = pts;
       this.onChange(pts);
     }

@@ -170,6 +170,9 @@ export class SceneViewer {
     if (moved > 4) return;
     const r = this.renderer.domElement.getBoundingClientRect();
     const ndc = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+    // matrices are otherwise only brought up to date by a render, which may not have happened yet
+    this.scene.updateMatrixWorld();
+    this.camera.updateMatrixWorld();
     this.raycaster.setFromCamera(ndc, this.camera);
     const hit = this.raycaster.intersectObjects(this.meshes.filter((m) => m.visible && m.userData.ref), false)[0];
     this.select(hit ? hit.object.userData.ref.object : null);
@@ -194,6 +197,7 @@ export class SceneViewer {
 
   // Page coordinates of an object's centre (for tests and the benchmark).
   screenPoint(objectId) {
+    this.camera.updateMatrixWorld();
     const p = this._partBox({ object: objectId }).getCenter(new THREE.Vector3()).project(this.camera);
     const r = this.renderer.domElement.getBoundingClientRect();
     return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
