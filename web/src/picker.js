@@ -6,6 +6,7 @@ import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { api } from "./api.js";
+import { antialias } from "./gl.js";
 
 export const SURFACE_COLOURS = {
   top: 0xe53e3e, bottom: 0x3182ce, front: 0x38a169, back: 0xd69e2e, right: 0x805ad5, left: 0xdd6b20,
@@ -18,7 +19,7 @@ export class AssetPicker {
     this.container = container;
     this.onPick = onPick || (() => {});
     this.onHover = onHover || (() => {});
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({ antialias: antialias(), preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(1);
     this.renderer.setClearColor(0xf4f5f7);
     container.appendChild(this.renderer.domElement);
@@ -62,6 +63,7 @@ export class AssetPicker {
     requestAnimationFrame(() => {
       this._pending = false;
       this.renderer.render(this.scene, this.camera);
+      this.lastFrame = performance.now();
     });
   }
 
@@ -151,6 +153,7 @@ export class AssetPicker {
     const moved = Math.hypot(e.clientX - this._down[0], e.clientY - this._down[1]);
     this._down = null;
     if (moved > 4) return; // an orbit drag, not a click
+    this.lastClick = e.timeStamp; // click-to-feedback latency: lastFrame - lastClick
     const h = this._hit(e);
     if (!h) return;
     if (h.arrow) {

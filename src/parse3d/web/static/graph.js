@@ -16,6 +16,12 @@ function parseRef(text) {
   const m = /^([^:@#]+)(?::([^@#]+)(?:#(\d+))?)?(?:@(\w+))?$/.exec(String(text || ""));
   return m ? { object: m[1], part: m[2] || null, k: m[3], surface: m[4] || null } : null;
 }
+const MAX_ROW = 8;
+const roomOrder = (a, b) => {
+  const key = (id) => (id === "floor" ? [0, 0] : id === "wall" ? [1, -1] : id.startsWith("wall_") ? [1, Number(id.slice(5))] : [2, 0]);
+  const [x, y] = [key(a), key(b)];
+  return x[0] - y[0] || x[1] - y[1];
+};
 const isRoom = (id) => id === "floor" || id === "ceiling" || id === "wall" || /^wall_\d+$/.test(id);
 
 export function drawGraph(svg, doc, relations) {
@@ -35,21 +41,26 @@ export function drawGraph(svg, doc, relations) {
     seen.add(id);
     return (depth[id] = depthOf(supporter[id], seen) + 1);
   };
-  const rooms = [...new Set(rels.filter((r) => isRoom(r.p.object)).map((r) => r.p.object))].sort();
-  const rows = {};
-  for (const id of objects) (rows[depthOf(id)] ||= []).push(id);
-  const maxDepth = Math.max(1, ...Object.keys(rows).map(Number));
-  const W = Math.max(420, 90 * Math.max(rooms.length, ...Object.values(rows).map((r) => r.length))), rowH = 92;
-  const H = rowH * (maxDepth + 1) + 40;
-  svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
+  const rooms = [...new Set(rels.filter((r) => isRoom(r.p.object)).map((r) => r.p.object))].sort(roomOrder);
+  const byDepth = {};
+  for (const id of objects) (byDepth[depthOf(id)] ||= []).push(id);
+  // long layers wrap onto several rows, so a 50-object room stays legible
+  const rows = [rooms];
   const pos = {};
-  const place = (ids, y) => ids.forEach((id, k) => { pos[id] = [((k + 0.5) * W) / ids.length, y]; });
-  place(rooms, H - 30);
-  for (let d = 1; d <= maxDepth; d++) {
-    const row = rows[d] || [];
-    row.sort((a, b) => ((pos[supporter[a]] || [W / 2])[0]) - ((pos[supporter[b]] || [W / 2])[0]));
-    place(row, H - 30 - d * rowH);
+  const place = (ids, y, W) => ids.forEach((id, k) => { pos[id] = [((k + 0.5) * W) / ids.length, y]; });
+  const layers = Object.keys(byDepth).map(Number).sort((a, b) => a - b);
+  for (const d of layers) {
+    const ids = byDepth[d];
+    for (let k = 0; k < ids.length; k += MAX_ROW) rows.push(ids.slice(k, k + MAX_ROW));
   }
+  const W = Math.max(420, 92 * Math.max(...rows.map((r) => r.length))), rowH = 78;
+  const H = rowH * rows.length + 30;
+  svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
+  svg.style.height = `${Math.min(720, Math.max(220, ((svg.clientWidth || 420) * H) / W))}px`;
+  rows.forEach((row, r) => {
+    if (r > 0) row.sort((a, b) => ((pos[supporter[a]] || [W / 2])[0]) - ((pos[supporter[b]] || [W / 2])[0]));
+    place(row, H - 24 - r * rowH, W);
+  });
   // part nodes: beside their object, fanned out
   const partPos = {};
   const parts = {};

@@ -602,6 +602,7 @@ async function main() {
   renderRoom();
   changed();
   document.body.dataset.ready = "1";
+  window.designer.readyAt = performance.now();
 }
 
 main().catch((e) => say(`could not start: ${e.message}`, "bad"));

@@ -3,6 +3,7 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+import { antialias } from "./gl.js";
 
 // three.js strips these characters from node names ("desk:leg_0" becomes "deskleg_0")
 const sanitize = (name) => name.replace(/\s/g, "_").replace(/[[\]./:]/g, "");
@@ -11,7 +12,7 @@ export class SceneViewer {
   constructor(container, { onSelect } = {}) {
     this.container = container;
     this.onSelect = onSelect || (() => {});
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({ antialias: antialias(), preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(1);
     this.renderer.setClearColor(0xe8ebef);
     container.appendChild(this.renderer.domElement);
