@@ -160,7 +160,7 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     shot = canvas_pixels(page, "#viewer canvas")
     assert len(np.unique(blank.reshape(-1, 3), axis=0)) <= 2  # the empty viewer: background only
     colours = np.unique(shot.reshape(-1, 3), axis=0)
-    assert len(colours) > 100, "the scene canvas is blank"
+    assert len(colours) > 30, "the scene canvas is blank"
     background = np.all(shot == blank[blank.shape[0] // 2, blank.shape[1] // 2], axis=-1).mean()
     assert background < 0.6, f"{background:.0%} of the canvas is background"
 
