@@ -279,3 +279,20 @@ def test_serve_command_help_and_bad_workdir(tmp_path):
     with pytest.raises(SystemExit) as e:
         main(["serve", "--workdir", str(tmp_path / "missing")])
     assert e.value.code == 2
+
+
+def test_committed_front_end_is_the_build_of_its_sources():
+    """static/ holds web/src/ as built by web/build.mjs, with three.js at the pinned version."""
+    from pathlib import Path
+
+    from parse3d.web.app import STATIC_DIR
+
+    src = Path(__file__).resolve().parents[1] / "web"
+    if not (src / "src").is_dir():
+        pytest.skip("the front-end sources are not in this installation (an sdist or wheel)")
+    for f in (src / "src").iterdir():
+        assert (STATIC_DIR / f.name).read_bytes() == f.read_bytes(), \
+            f"static/{f.name} differs from web/src/{f.name}: run `node web/build.mjs`"
+    pinned = json.loads((src / "package.json").read_text())["dependencies"]["three"]
+    three = (STATIC_DIR / "vendor" / "three.module.min.js").read_text()
+    assert f'const t="{pinned.split(".")[1]}"' in three[:1000], "vendored three.js is not the pinned one"

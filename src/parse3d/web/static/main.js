@@ -450,10 +450,19 @@ async function refreshFiles() {
 }
 
 function setDoc(doc) {
+  const shape = (k, ok) => doc[k] === undefined || ok(doc[k]);
+  if (!shape("objects", Array.isArray) || !shape("relations", Array.isArray) ||
+      !shape("room", (r) => r && typeof r === "object" && !Array.isArray(r)) ||
+      (doc.room && doc.room.footprint !== undefined && !Array.isArray(doc.room.footprint))) {
+    throw new Error("this file's objects, relations or room are not shaped like a PAG: fix it in a text editor (parse3d validate FILE says where)");
+  }
   state.doc = doc;
   state.doc.objects ||= [];
   state.doc.relations ||= [];
   state.doc.room ||= { type: "", footprint: [], height: 2.7 };
+  state.doc.room.footprint ||= [];
+  for (const o of state.doc.objects) if (!o || typeof o !== "object") throw new Error("an object of this file is not a JSON object");
+  for (const r of state.doc.relations) if (!r || typeof r !== "object") throw new Error("a relation of this file is not a JSON object");
   state.ed = { child: {}, parent: {}, relation: state.ed.relation };
   setSide("child", ""); setSide("parent", "");
   renderRoom();
