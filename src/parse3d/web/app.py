@@ -205,7 +205,8 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
     if not root.is_dir():
         raise InputError(Problem("", "the working folder does not exist: create it or pass "
                                  "another --workdir", str(workdir), "io"))
-    app = FastAPI(title="parse3d PAG designer", docs_url="/api/docs", redoc_url=None,
+    # no Swagger page: it would load its scripts from a CDN; the schema is at /api/openapi.json
+    app = FastAPI(title="parse3d PAG designer", docs_url=None, redoc_url=None,
                   openapi_url="/api/openapi.json")
     app.add_middleware(_BodyLimit, max_bytes=max_body)
     jobs: OrderedDict[str, Job] = OrderedDict()
@@ -399,5 +400,11 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
         return FileResponse(STATIC_DIR / "index.html", media_type="text/html")
 
     app.mount("/", StaticFiles(directory=STATIC_DIR), name="static")
+    def warm_up() -> None:  # the first page load should not wait for the asset registry
+        cached("vocabulary", vocabulary_payload)
+        cached("vocab", vocab)
+
+    app.router.on_startup.append(
+        lambda: threading.Thread(target=warm_up, name="parse3d-warm-up", daemon=True).start())
     app.router.on_shutdown.append(lambda: executor.shutdown(wait=False, cancel_futures=True))
     return app
