@@ -61,6 +61,8 @@ def test_vocabulary_lists_categories_parts_and_relation_parameters(client):
     side = rel["SIDE_OF"]["params"][0]
     assert side["required"] and side["choices"] == ["left", "right", "front", "back"]
     assert rel["LEANING_AGAINST"]["params"][0]["default"] == [8.0, 16.0]
+    assert rel["ON"]["room_parents"] == ["floor"] and rel["IN"]["room_parents"] == []
+    assert rel["AGAINST"]["room_parents"] == ["wall", "wall_i"]
     assert v["surfaces"]["top"] == [0.0, 0.0, 1.0]
     assert "study" in v["room_types"]
     assert v["stages"] == ["validate", "solve", "settle", "contacts", "export"]

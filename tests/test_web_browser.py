@@ -105,6 +105,7 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     # desk ON floor: the desk's problem disappears
     page.select_option("#child-object", "desk")
     page.select_option("#relation", "ON")
+    assert page.locator("#parent-object option[value='ceiling']").is_disabled()  # not for ON
     page.select_option("#parent-object", "floor")
     page.click("#add-relation")
     page.locator(".problem[data-for='/objects/0']").wait_for(state="detached")

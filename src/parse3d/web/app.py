@@ -159,7 +159,8 @@ def vocabulary_payload() -> dict[str, Any]:
             for c in categories().values()]
     relations = []
     for r in RELATIONS.values():
-        parents = sorted("wall, wall_i" if e == "walls" else e for e in ROOM_PARENTS[r.name])
+        parents = sorted(x for e in ROOM_PARENTS[r.name]
+                         for x in (("wall", "wall_i") if e == "walls" else (e,)))
         relations.append({
             "name": r.name, "kind": r.kind, "child_surface": r.child_surface,
             "parent_surface": r.parent_surface, "meaning": r.meaning,
@@ -293,7 +294,7 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
         jobs[job.id] = job
         while len(jobs) > _MAX_JOBS:
             jobs.popitem(last=False)
-        voc = cached("vocab", vocab)
+        voc = await run_in_threadpool(cached, "vocab", vocab)
         executor.submit(run_job, job, body["pag"], workdir=root, vocabulary=voc, library=library)
         return {"job": job.id, "events": f"/api/jobs/{job.id}/events",
                 "status": f"/api/jobs/{job.id}"}
@@ -384,7 +385,8 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
             raise InputError(Problem("/overwrite", "overwrite must be true or false", None,
                                      "parameter"))
         p = F.write_pag_file(root, name, body["pag"], overwrite=overwrite)
-        problems = validate_data(body["pag"], file=name, vocabulary=cached("vocab", vocab))
+        problems = await run_in_threadpool(
+            lambda: validate_data(body["pag"], file=name, vocabulary=cached("vocab", vocab)))
         return {"name": p.name, "bytes": p.stat().st_size, "valid": not problems,
                 "problems": [q.to_dict() for q in problems]}
 

@@ -35,7 +35,7 @@ def check_name(name: str) -> str:
     """``name`` if it is a safe PAG file name, else an InputError saying how to fix it."""
     if not isinstance(name, str) or not name:
         raise InputError(Problem("/name", "give a file name such as 'my-room.json'", None, "io"))
-    if "/" in name or "\\" in name or name in (".", "..") or ".." in name.split("."):
+    if "/" in name or "\\" in name or name in (".", ".."):
         raise InputError(Problem("/name", f"{name!r} is not a plain file name: the designer only "
                                  "reads and writes files directly in its working folder (use "
                                  "e.g. 'my-room.json')", None, "io"))

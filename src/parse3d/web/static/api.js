@@ -22,7 +22,14 @@ async function call(method, url, body) {
 export const api = {
   vocabulary: () => call("GET", "/api/vocabulary"),
   validate: (pag) => call("POST", "/api/validate", pag),
-  convert: (pag, to) => call("POST", `/api/convert?to=${to}`, pag),
+  // the text a saved file would hold (JSON one object or relation per line, or YAML)
+  convert: async (pag, to) => {
+    const res = await fetch(`/api/convert?to=${to}`, {
+      method: "POST", headers: { "Content-Type": "application/json" }, body: JSON.stringify(pag),
+    });
+    if (!res.ok) throw new Error((await res.json()).error || res.statusText);
+    return res.text();
+  },
   solve: (pag, seed, settle) => call("POST", "/api/solve", { pag, seed, settle }),
   job: (id) => call("GET", `/api/jobs/${id}`),
   templates: () => call("GET", "/api/templates"),

@@ -333,7 +333,15 @@ function updateReadouts() {
   $("#kind-note").textContent = rel ? `${rel.kind}: ${rel.meaning} — ${rel.constraints}` +
     (objectLevel ? " (relates whole objects: parts and surfaces are not used)" : "") +
     (rel.child_surface ? ` · default surfaces ${rel.child_surface} → ${rel.parent_surface}` : "") : "";
-  $("#add-relation").disabled = !(state.ed.child.object && state.ed.parent.object);
+  // room elements the relation cannot use as parent are greyed out (ON: only the floor, ...)
+  const allowed = new Set(rel ? rel.room_parents : []);
+  for (const opt of document.querySelectorAll("#parent-object optgroup[label='room'] option")) {
+    const key = /^wall_\d+$/.test(opt.value) ? "wall_i" : opt.value;
+    opt.disabled = !allowed.has(key);
+  }
+  const parentOk = !isRoom(state.ed.parent.object || "") || allowed.has(/^wall_\d+$/.test(state.ed.parent.object) ? "wall_i" : state.ed.parent.object);
+  $("#add-relation").disabled = !(state.ed.child.object && state.ed.parent.object && parentOk);
+  $("#add-relation").title = parentOk ? "" : `${state.ed.relation} cannot use ${state.ed.parent.object} as parent`;
 }
 
 function renderParams() {
@@ -499,7 +507,7 @@ function setupFiles() {
     $(`#download-${fmt}`).addEventListener("click", async () => {
       try {
         const text = await api.convert(state.doc, fmt);
-        download(`${state.doc.name || "pag"}.${fmt}`, typeof text === "string" ? text : JSON.stringify(text, null, 1), fmt === "json" ? "application/json" : "application/yaml");
+        download(`${state.doc.name || "pag"}.${fmt}`, text, fmt === "json" ? "application/json" : "application/yaml");
       } catch (e) { say(`download: ${e.message}`, "bad"); }
     });
   }
