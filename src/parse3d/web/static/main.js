@@ -417,8 +417,9 @@ function setupEditor() {
         updateReadouts();
         sel.pickedAt = performance.now();
       },
-      onHover: (info, arrow) => {
-        $(`#${side}-hint`).textContent = arrow ? `surface: ${arrow}` : info ? `${info.label}${info.count > 1 ? ` (${info.part})` : ""}` :
+      onHover: (info, arrow, surface) => {
+        $(`#${side}-hint`).textContent = arrow ? `surface: ${arrow}` :
+          info ? `${info.label}${info.count > 1 ? ` (${info.part})` : ""} · ${surface}` :
           "click a part; click an arrow to choose another surface";
       },
     });

@@ -127,16 +127,27 @@ export class AssetPicker {
 
   _move(e) {
     const h = this._hit(e);
-    this._hover(h && h.mesh ? h.mesh : null, h && h.arrow);
+    this._hover(h && h.mesh ? h.mesh : null, h && h.arrow, h && h.mesh ? this._faceSurface(h) : null);
   }
 
-  _hover(mesh, arrow) {
+  _hover(mesh, arrow, surface) {
     if (this.hovered !== mesh) {
       this.hovered = mesh;
       this._paint();
     }
     this.renderer.domElement.style.cursor = mesh || arrow ? "pointer" : "grab";
-    this.onHover(mesh ? mesh.userData : null, arrow || null);
+    this.onHover(mesh ? mesh.userData : null, arrow || null, surface || null);
+  }
+
+  // The surface label whose normal is closest to the normal of the triangle hit.
+  _faceSurface(hit) {
+    const n = hit.face.normal.clone().transformDirection(hit.mesh.matrixWorld);
+    let best = null, bestDot = -2;
+    for (const [label, s] of Object.entries(hit.mesh.userData.surfaces || {})) {
+      const d = n.dot(new THREE.Vector3(...s.normal));
+      if (d > bestDot) { bestDot = d; best = label; }
+    }
+    return best;
   }
 
   _paint() {
@@ -160,14 +171,7 @@ export class AssetPicker {
       if (this.selected) this.select(this.selected.mesh.userData.part, h.arrow);
       return;
     }
-    // the surface whose normal is closest to the clicked face's normal
-    const n = h.face.normal.clone().transformDirection(h.mesh.matrixWorld);
-    let best = null, bestDot = -2;
-    for (const [label, s] of Object.entries(h.mesh.userData.surfaces || {})) {
-      const d = n.dot(new THREE.Vector3(...s.normal));
-      if (d > bestDot) { bestDot = d; best = label; }
-    }
-    this.select(h.mesh.userData.part, best);
+    this.select(h.mesh.userData.part, this._faceSurface(h));
   }
 
   // Select a part by name (and a surface label, or null); shows its arrows; calls onPick.
