@@ -129,6 +129,9 @@ def test_validation_gives_the_cli_problems_and_pointers(client, workdir):
     ("post", "/api/validate", b"", 400, "needs a JSON body"),
     ("post", "/api/validate", b"\xff\xfe", 400, "not UTF-8"),
     ("post", "/api/validate", b'{"height": NaN}', 400, "NaN is not a number"),
+    ("post", "/api/validate", b"[" * 100_000 + b"]" * 100_000, 400, "nested more than 64"),
+    ("post", "/api/convert?to=yaml", b'{"meta": ' + b"[" * 500 + b"]" * 500 + b"}", 400,
+     "nested more than 64"),
     ("post", "/api/solve", b"[1, 2]", 400, "must be a JSON object"),
     ("post", "/api/solve", b'{"seed": 1}', 400, "needs the key 'pag'"),
     ("post", "/api/solve", b'{"pag": {}, "seed": -3}', 400, "non-negative integer"),
@@ -197,6 +200,15 @@ def test_save_list_open_and_never_overwrite_by_accident(client, workdir):
     r = client.put("/api/files/draft.json", json={"pag": bad}).json()
     assert not r["valid"] and r["problems"][0]["pointer"] == "/objects/1"
     assert not list(workdir.glob(".*"))  # no temporary files left
+
+
+def test_files_that_are_not_pags_open_with_a_message(client, workdir):
+    (workdir / "broken.json").write_text('{"format": "pag/1",\n  "name": }')
+    r = client.get("/api/files/broken.json")
+    assert r.status_code == 400 and r.json()["error"].startswith("invalid JSON at line 2")
+    (workdir / "deep.yaml").write_text("a: " + "[" * 3000 + "]" * 3000 + "\n")
+    r = client.get("/api/files/deep.yaml")
+    assert r.status_code == 400 and "nested" in r.json()["error"]
 
 
 def test_convert_gives_the_text_of_a_saved_file(client):

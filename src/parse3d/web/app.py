@@ -52,6 +52,9 @@ __all__ = ["create_app", "MAX_BODY_BYTES", "STATIC_DIR"]
 #: Largest request body accepted, bytes.
 MAX_BODY_BYTES = 5 * 1024 * 1024
 
+#: Deepest nesting of lists and objects accepted in a request (a PAG needs five or so).
+MAX_DEPTH = 64
+
 #: The built front end (index.html, modules, three.js under vendor/).
 STATIC_DIR = Path(__file__).parent / "static"
 
@@ -117,7 +120,7 @@ async def _json_body(request: Request) -> Any:
     if not raw:
         raise InputError(Problem("", "the request needs a JSON body", None, "syntax"))
     try:
-        return json.loads(raw.decode("utf-8"), parse_constant=_no_constant)
+        data = json.loads(raw.decode("utf-8"), parse_constant=_no_constant)
     except UnicodeDecodeError:
         raise InputError(Problem("", "the request body is not UTF-8 text", None, "syntax")) from None
     except json.JSONDecodeError as e:
@@ -125,6 +128,28 @@ async def _json_body(request: Request) -> Any:
                                  f"{e.msg}", None, "syntax")) from None
     except ValueError as e:
         raise InputError(Problem("", f"invalid JSON: {e}", None, "syntax")) from None
+    except RecursionError:
+        raise InputError(Problem("", f"the JSON is nested more than {MAX_DEPTH} levels deep: "
+                                 "a PAG never is", None,
+                                 "syntax")) from None
+    if _depth(data) > MAX_DEPTH:
+        raise InputError(Problem("", f"the JSON is nested more than {MAX_DEPTH} levels deep: "
+                                 "a PAG never is", None, "syntax"))
+    return data
+
+
+def _depth(value: Any) -> int:
+    """Nesting depth of lists and dicts, without recursion."""
+    deepest, stack = 0, [(value, 1)]
+    while stack:
+        v, d = stack.pop()
+        if isinstance(v, dict):
+            v = list(v.values())
+        if isinstance(v, list):
+            deepest = max(deepest, d)
+            if d <= MAX_DEPTH:
+                stack.extend((x, d + 1) for x in v)
+    return deepest
 
 
 def _no_constant(name: str) -> Any:
@@ -372,7 +397,10 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
 
     @app.get("/api/files/{name}")
     async def get_file(name: str):
-        data = F.read_pag_file(root, name)
+        data = await run_in_threadpool(F.read_pag_file, root, name)
+        if _depth(data) > MAX_DEPTH:
+            raise InputError(Problem("", f"the file is nested more than {MAX_DEPTH} levels "
+                                     "deep: a PAG never is", name, "syntax"))
         problems = await run_in_threadpool(
             lambda: validate_data(data, file=name, vocabulary=cached("vocab", vocab)))
         return {"name": name, "pag": data, "problems": [p.to_dict() for p in problems]}

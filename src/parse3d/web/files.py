@@ -78,6 +78,9 @@ def read_pag_file(workdir: Path, name: str) -> Any:
         return read_document(p)
     except InputError as e:  # name the file as the user knows it, not its absolute path
         raise InputError([Problem(q.pointer, q.message, name, q.kind) for q in e.problems]) from None
+    except RecursionError:
+        raise InputError(Problem("", "the file is nested too deeply to be a PAG", name,
+                                 "syntax")) from None
 
 
 def write_pag_file(workdir: Path, name: str, data: dict[str, Any], *,
