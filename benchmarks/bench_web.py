@@ -71,6 +71,7 @@ def study_25() -> dict:
 
 def open_page(browser, url: str, query: str = ""):
     page = browser.new_page(viewport=VIEWPORT, accept_downloads=True)
+    page.on("dialog", lambda d: d.accept())  # "discard unsaved changes?" on reload
     page.goto(url + "/" + query)
     page.wait_for_selector("body[data-ready='1']", timeout=60_000)
     return page

@@ -234,3 +234,12 @@ def test_footprint_drawn_clockwise_is_turned_counter_clockwise(page):
     page.click("#reverse")
     problem.wait_for(state="detached")
     assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [3, 0], [3, 3], [0, 3]]
+    # unsaved edits are not dropped without asking: dismissing keeps them, accepting drops them
+    messages = []
+    page.once("dialog", lambda d: (messages.append(d.message), d.dismiss()))
+    page.click("#new")
+    assert "unsaved changes" in messages[0]
+    assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [3, 0], [3, 3], [0, 3]]
+    page.once("dialog", lambda d: d.accept())
+    page.click("#new")
+    assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [4, 0], [4, 3.5], [0, 3.5]]

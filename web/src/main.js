@@ -44,6 +44,7 @@ function say(text, kind = "info") {
 // ------------------------------------------------------------------ validation
 let validateTimer = null;
 function changed({ structure = true } = {}) {
+  state.dirty = true;
   if (structure) { renderObjects(); renderRelations(); renderEditorChoices(); }
   drawGraph($("#graph"), state.doc, state.vocab.relations);
   clearTimeout(validateTimer);
@@ -476,7 +477,11 @@ function setDoc(doc) {
   setSide("child", ""); setSide("parent", "");
   renderRoom();
   changed();
+  state.dirty = false;
 }
+
+// Unsaved edits are never dropped silently.
+const discardOk = () => !state.dirty || confirm("The PAG has unsaved changes. Discard them?");
 
 function setupFiles() {
   $("#save").addEventListener("click", async () => {
@@ -489,13 +494,14 @@ function setupFiles() {
         if (e.status !== 409 || !confirm(`${name} exists. Replace it?`)) throw e;
         res = await api.save(name, state.doc, true);
       }
+      state.dirty = false;
       say(`saved ${res.name} (${res.bytes} bytes)${res.valid ? "" : ` — it has ${res.problems.length} problem(s)`}`, res.valid ? "good" : "bad");
       refreshFiles();
     } catch (e) { say(`save: ${e.message}`, "bad"); }
   });
   $("#open").addEventListener("click", async () => {
     const name = $("#files").value;
-    if (!name) return;
+    if (!name || !discardOk()) return;
     try {
       const res = await api.load(name);
       if (!res.pag || typeof res.pag !== "object" || Array.isArray(res.pag)) throw new Error("the file does not hold a PAG object");
@@ -512,7 +518,8 @@ function setupFiles() {
       } catch (e) { say(`download: ${e.message}`, "bad"); }
     });
   }
-  $("#new").addEventListener("click", () => { if (!state.doc.objects.length || confirm("Start a new PAG? Unsaved changes are lost.")) setDoc(newDoc()); });
+  $("#new").addEventListener("click", () => { if (discardOk()) setDoc(newDoc()); });
+  window.addEventListener("beforeunload", (e) => { if (state.dirty) { e.preventDefault(); e.returnValue = ""; } });
   $("#load-templates").addEventListener("click", async () => {
     const ts = await api.templates();
     const groups = {};
@@ -526,7 +533,7 @@ function setupFiles() {
     const name = $("#templates").value;
     try {
       const doc = await api.expand(name, Number($("#template-seed").value || 0));
-      if (state.doc.objects.length && !confirm("Replace the current PAG with the template's?")) return;
+      if (!discardOk()) return;
       setDoc(doc);
       $("#file-name").value = `${doc.name}.json`;
       say(`expanded ${name}: ${doc.objects.length} objects, ${doc.relations.length} relations`);
@@ -619,6 +626,7 @@ async function main() {
   $("#add-category").addEventListener("keydown", (e) => { if (e.key === "Enter") addObject(e.target.value); });
   renderRoom();
   changed();
+  state.dirty = false;
   document.body.dataset.ready = "1";
   window.designer.readyAt = performance.now();
 }
