@@ -8,6 +8,24 @@ import { antialias } from "./gl.js";
 // three.js strips these characters from node names ("desk:leg_0" becomes "deskleg_0")
 const sanitize = (name) => name.replace(/\s/g, "_").replace(/[[\]./:]/g, "");
 
+// Which object and part a mesh shows: from the node's extras when the exporter writes them
+// (object id and part name), else from its name, "<object_id>:<part_name>" with the colon
+// stripped by three.js; a mesh under a part node inherits the part.
+function refOf(node, names) {
+  for (let n = node; n; n = n.parent) {
+    const x = n.userData || {};
+    const object = x.object_id || x.object;
+    if (object && object !== "room") {
+      let part = x.part_name || x.part || x.name || null;
+      if (part && part.includes(":")) part = part.slice(part.indexOf(":") + 1);
+      return { object, part };
+    }
+    const key = names.get(n.name) || names.get(n.name.replace(/_\d+$/, ""));
+    if (key) return key;
+  }
+  return null;
+}
+
 export class SceneViewer {
   constructor(container, { onSelect } = {}) {
     this.container = container;
@@ -83,25 +101,27 @@ export class SceneViewer {
     this.meshes = [];
     this.walls = new Map();
     this.root.traverse((node) => {
+      // the shell: "room:floor", "room:wall_3", "room:ceiling" (an object may be called "roomba")
+      const shell = node.userData.object_id === "room" || /^room(floor|ceiling|wall_\d+)(_\d+)?$/.test(node.name);
+      const inRoom = shell || (node.parent && node.parent.userData.room);
+      node.userData.room = !!inRoom;
       const wall = /^roomwall_(\d+)/.exec(node.name);
-      if (wall && node.isMesh) {
+      if (wall) {
         const i = Number(wall[1]);
         if (!this.walls.has(i)) this.walls.set(i, []);
-        this.walls.get(i).push(node);
+        this.walls.get(i).push(node); // a node or its mesh: children follow their parent
       }
-      const x = node.userData || {};
-      const key = x.object_id ? { object: x.object_id, part: x.part || x.name } : names.get(node.name) || names.get(node.name.replace(/_\d+$/, ""));
       if (node.name.startsWith(sanitize("room:ceiling"))) node.visible = false;
       if (node.isMesh) {
         node.material = node.material.clone();
-        node.userData.ref = key || null;
-        node.userData.room = node.name.startsWith("room");
+        node.userData.ref = inRoom ? null : refOf(node, names);
         this.meshes.push(node);
       }
     });
     this.scene.add(this.root);
     const box = new THREE.Box3();
-    for (const m of this.meshes) if (m.userData.room && !m.name.startsWith("roomceiling")) box.expandByObject(m);
+    const shown = (o) => { for (; o; o = o.parent) if (!o.visible) return false; return true; };
+    for (const m of this.meshes) if (m.userData.room && shown(m)) box.expandByObject(m);
     if (box.isEmpty()) box.setFromObject(this.root);
     const c = box.getCenter(new THREE.Vector3()), s = box.getSize(new THREE.Vector3());
     const d = Math.max(s.x, s.z) * 0.75 + 0.8;
