@@ -1,0 +1,245 @@
+"""The PAG designer in a real browser: Debian's Chromium driven by Playwright against a live server.
+
+Builds a small room by clicking (a desk, a table lamp whose base's bottom goes ON the desk's
+tabletop top), watches validation problems appear and disappear next to their fields, solves,
+checks that the scene canvas shows a rendered room, and saves a PAG that the CLI validates.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import socket
+import subprocess
+import sys
+import threading
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+import uvicorn
+from PIL import Image
+from playwright.sync_api import sync_playwright
+
+from parse3d.web import create_app
+
+CHROMIUM = "/usr/bin/chromium"
+CHROMIUM_ARGS = ["--no-sandbox", "--disable-background-networking", "--disable-component-update",
+                 "--disable-sync", "--disable-quic", "--no-first-run", "--headless",
+                 "--use-gl=angle", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"]
+
+pytestmark = pytest.mark.skipif(
+    not os.path.exists(CHROMIUM),
+    reason=f"the browser tests need Debian's Chromium at {CHROMIUM} "
+           "(make system-test installs it: apt-get install chromium)")
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory):
+    workdir = tmp_path_factory.mktemp("designer-browser")
+    port = free_port()
+    srv = uvicorn.Server(uvicorn.Config(create_app(workdir), host="127.0.0.1", port=port,
+                                        log_level="warning"))
+    thread = threading.Thread(target=srv.run, daemon=True)
+    thread.start()
+    deadline = time.time() + 30
+    while not srv.started:
+        if time.time() > deadline or not thread.is_alive():
+            pytest.fail("the designer server did not start")
+        time.sleep(0.05)
+    yield f"http://127.0.0.1:{port}", workdir
+    srv.should_exit = True
+    thread.join(10)
+
+
+@pytest.fixture(scope="module")
+def page(server):
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=CHROMIUM_ARGS)
+        pg = browser.new_page(viewport={"width": 1500, "height": 1000}, accept_downloads=True)
+        errors: list[str] = []
+        pg.on("pageerror", lambda e: errors.append(str(e)))
+        pg.goto(server[0] + "/")
+        pg.wait_for_selector("body[data-ready='1']", timeout=30_000)
+        pg.errors = errors
+        yield pg
+        browser.close()
+
+
+def click_at(page, point: dict) -> None:
+    assert point is not None
+    page.mouse.click(point["x"], point["y"])
+
+
+def wait_preview(page, side: str, category: str) -> None:
+    page.wait_for_function(
+        f"(window.designer.pickers.{side}.loaded || '').startsWith('{category}/')", timeout=30_000)
+
+
+def canvas_pixels(page, selector: str) -> np.ndarray:
+    """(H, W, 3) uint8 pixels of an element, without a 4 px rim (borders, antialiasing)."""
+    png = page.locator(selector).screenshot()
+    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB"))[4:-4, 4:-4]
+
+
+def test_build_validate_solve_and_save_by_clicking(page, server):
+    url, workdir = server
+    # add a desk: it has no supporter yet, said next to its row
+    page.fill("#add-category", "desk")
+    page.click("#add-object")
+    problem = page.locator(".problem[data-for='/objects/0']")
+    problem.wait_for()
+    assert "object 'desk' has no supporter" in problem.inner_text()
+    page.fill("#add-category", "table_lamp")
+    page.click("#add-object")
+    page.locator(".problem[data-for='/objects/1']").wait_for()
+
+    # desk ON floor: the desk's problem disappears
+    page.select_option("#child-object", "desk")
+    page.select_option("#relation", "ON")
+    assert page.locator("#parent-object option[value='ceiling']").is_disabled()  # not for ON
+    page.select_option("#parent-object", "floor")
+    page.click("#add-relation")
+    page.locator(".problem[data-for='/objects/0']").wait_for(state="detached")
+
+    # the lamp's base, then the arrow of its bottom surface, in the child preview
+    page.select_option("#child-object", "table_lamp")
+    wait_preview(page, "child", "table_lamp")
+    click_at(page, page.evaluate("window.designer.pickers.child.screenPoint('base')"))
+    assert page.inner_text("#child-ref").startswith("table_lamp:base@")
+    assert page.locator("#child-preview").get_attribute("class") == "preview"
+    click_at(page, page.evaluate("window.designer.pickers.child.screenPoint('base', 'bottom')"))
+    assert page.inner_text("#child-ref") == "table_lamp:base@bottom"
+    assert "on" in page.locator("#child-surfaces button[data-surface='bottom']").get_attribute("class")
+
+    # the desk's tabletop, clicked from above: its top surface
+    page.select_option("#parent-object", "desk")
+    wait_preview(page, "parent", "desk")
+    click_at(page, page.evaluate("window.designer.pickers.parent.screenPoint('tabletop')"))
+    assert page.inner_text("#parent-ref") == "desk:tabletop@top"
+    page.select_option("#relation", "ON")
+    page.click("#add-relation")
+    page.locator(".problem").first.wait_for(state="detached")
+    page.wait_for_function("document.querySelector('#validity').textContent === 'valid'")
+    rel = page.locator("#relations .row").nth(1)
+    assert rel.locator(".rel-child").input_value() == "table_lamp:base@bottom"
+    assert rel.locator(".rel-parent").input_value() == "desk:tabletop@top"
+
+    # a bad room height: the problem shows next to the field, and goes when fixed
+    page.fill("#room-height", "-2")
+    height_problem = page.locator(".problem[data-for='/room/height']")
+    height_problem.wait_for()
+    assert "positive number of metres" in height_problem.inner_text()
+    assert "has-problem" in page.locator("#room-height").get_attribute("class")
+    page.fill("#room-height", "2.6")
+    height_problem.wait_for(state="detached")
+
+    # the graph: two objects, the floor, two part nodes, two support edges
+    assert page.locator("#graph .node.object").count() == 2
+    assert page.locator("#graph .node.room").count() == 1
+    assert sorted(page.locator("#graph .node.part").evaluate_all(
+        "ns => ns.map(n => n.dataset.id)")) == ["desk:tabletop", "table_lamp:base"]
+    assert page.locator("#graph .edge-support").count() == 2
+
+    # solve: stage progress, then the scene on the canvas
+    blank = canvas_pixels(page, "#viewer canvas")
+    page.click("#solve")
+    page.wait_for_selector("#solve-status[data-done='1']", timeout=120_000)
+    assert page.inner_text("#solve-status").startswith("2/2 objects placed")
+    states = page.locator("#stages li").evaluate_all("ls => ls.map(l => l.className)")
+    assert states == ["done"] * 5
+    page.wait_for_function("window.designer.viewer.rendered > 0")
+    page.wait_for_timeout(200)
+    shot = canvas_pixels(page, "#viewer canvas")
+    assert len(np.unique(blank.reshape(-1, 3), axis=0)) <= 2  # the empty viewer: background only
+    colours = np.unique(shot.reshape(-1, 3), axis=0)
+    assert len(colours) > 30, "the scene canvas is blank"
+    background = np.all(shot == blank[blank.shape[0] // 2, blank.shape[1] // 2], axis=-1).mean()
+    assert background < 0.6, f"{background:.0%} of the canvas is background"
+
+    # click the lamp in the scene: its relation held after settling
+    click_at(page, page.evaluate("window.designer.viewer.screenPoint('table_lamp')"))
+    info = page.locator("#scene-info")
+    info.locator("h4").wait_for()
+    assert info.locator("h4").inner_text().startswith("table_lamp")
+    row = info.locator("tr", has_text="table_lamp:base@bottom ON desk:tabletop@top")
+    assert row.locator("td").nth(2).inner_text() == "✓"
+    page.check("#contacts")
+    assert page.evaluate("window.designer.viewer.overlay.visible")
+
+    # the scene files can be downloaded
+    links = page.locator("#downloads a").evaluate_all("as => as.map(a => a.getAttribute('href'))")
+    assert [link.rsplit("/", 1)[1] for link in links] == ["scene.json", "scene.glb", "contacts.json"]
+    assert all(page.request.get(url + link).ok for link in links)
+
+    # save into the working folder; the CLI validates the file
+    page.fill("#file-name", "corner.json")
+    page.click("#save")
+    page.wait_for_function("document.querySelector('#message').textContent.startsWith('saved')")
+    saved = workdir / "corner.json"
+    data = json.loads(saved.read_text())
+    assert data["relations"][1] == {"relation": "ON", "child": "table_lamp:base@bottom",
+                                    "parent": "desk:tabletop@top"}
+    env = {**os.environ, "PYTHONPATH": str(Path(__file__).parents[1] / "src")}
+    cli = subprocess.run([sys.executable, "-m", "parse3d", "validate", str(saved)],
+                         capture_output=True, text=True, env=env, timeout=120)
+    assert cli.returncode == 0, cli.stderr
+
+    # and downloads the same PAG as YAML
+    with page.expect_download() as dl:
+        page.click("#download-yaml")
+    import yaml
+
+    assert yaml.safe_load(Path(dl.value.path()).read_text()) == data
+    assert page.errors == []
+
+
+def test_footprint_drawn_clockwise_is_turned_counter_clockwise(page):
+    page.click("#draw")
+    # clicks in the pad's viewBox, clockwise seen from above (y up): go round the square
+    corners = page.evaluate("""() => {
+        const svg = document.querySelector('#pad');
+        const m = svg.getScreenCTM();
+        const vb = svg.viewBox.baseVal;
+        const flip = (x, y) => [x, 2 * vb.y + vb.height - y];
+        return [[1, 1], [1, 4], [4, 4], [4, 1]].map(([x, y]) => {
+            const [sx, sy] = flip(x, y);
+            const p = svg.createSVGPoint(); p.x = sx; p.y = sy;
+            const q = p.matrixTransform(m);
+            return {x: q.x, y: q.y};
+        });
+    }""")
+    for c in corners:
+        click_at(page, c)
+    click_at(page, corners[0])  # close the outline
+    fp = page.evaluate("window.designer.state.doc.room.footprint")
+    assert len(fp) == 4
+    area = sum(x1 * y2 - x2 * y1 for (x1, y1), (x2, y2) in zip(fp, fp[1:] + fp[:1], strict=True)) / 2
+    assert area == pytest.approx(9.0)
+    assert page.input_value("#footprint").splitlines() == ["1, 1", "4, 1", "4, 4", "1, 4"]
+    # typed clockwise: the validator's message shows next to the footprint
+    page.fill("#footprint", "0, 0\n0, 3\n3, 3\n3, 0")
+    page.locator("#footprint").blur()
+    problem = page.locator(".problem[data-for='/room/footprint']")
+    problem.wait_for()
+    assert "clockwise" in problem.inner_text()
+    page.click("#reverse")
+    problem.wait_for(state="detached")
+    assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [3, 0], [3, 3], [0, 3]]
+    # unsaved edits are not dropped without asking: dismissing keeps them, accepting drops them
+    messages = []
+    page.once("dialog", lambda d: (messages.append(d.message), d.dismiss()))
+    page.click("#new")
+    assert "unsaved changes" in messages[0]
+    assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [3, 0], [3, 3], [0, 3]]
+    page.once("dialog", lambda d: d.accept())
+    page.click("#new")
+    assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [4, 0], [4, 3.5], [0, 3.5]]
