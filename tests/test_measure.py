@@ -1,0 +1,208 @@
+"""Relation checks (parse3d.measure) on hand-built poses: each relation holds where it should
+and fails where it should not, measured on real generated assets in a real room shell."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from parse3d.assets import registry
+from parse3d.geometry.frames import axis_angle
+from parse3d.measure import CHECK_RULES, check_edge, check_rule, object_centroid, world_points
+from parse3d.pag import PAG, Room
+from parse3d.relations import RELATIONS
+from parse3d.scene.model import PlacedObject, Scene
+from parse3d.scene.shell import build_shell
+
+#: A 4 x 3 m room: wall_0 runs along y = 0 (its inside faces +Y), wall_1 along x = 4.
+ROOM = Room("study", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7)
+GAP = 5e-4  # the contact gap the solver leaves
+
+
+@pytest.fixture(scope="module")
+def assets():
+    cats = ["desk", "mug", "wall_cabinet", "grocery_shelf", "pendant_lamp", "picture_frame",
+            "mirror", "guitar", "storage_box", "stove", "cup"]
+    return {c: registry.generate(c, seed=0) for c in cats}
+
+
+def rot_z(deg: float) -> np.ndarray:
+    return axis_angle(np.array([0, 0, 1.0]), np.deg2rad(deg))
+
+
+class Room1:
+    """A scene under construction: objects placed by hand, relations checked one by one."""
+
+    def __init__(self, assets):
+        self.assets = assets
+        self.pag = PAG("hand-built", ROOM)
+        self.scene = Scene(self.pag, 0, build_shell(ROOM))
+
+    def put(self, oid: str, category: str, t, R=None) -> PlacedObject:
+        if oid not in self.pag.objects:
+            self.pag.add(oid, category)
+        o = PlacedObject(oid, category, self.assets[category], 1.0,
+                         np.eye(3) if R is None else np.asarray(R, float), np.asarray(t, float))
+        self.scene.objects[oid] = o
+        return o
+
+    def check(self, child: str, rel: str, parent: str, **params):
+        self.pag.relations.clear()
+        self.pag.relate(child, rel, parent, **params)
+        e = self.pag.relations[0]
+        return check_edge(self.scene, e, self.scene.objects[e.child.object])
+
+
+def top_z(asset, part: str) -> float:
+    return float(asset.part(part).surfaces["top"].origin[2])
+
+
+@pytest.fixture()
+def room(assets):
+    r = Room1(assets)
+    r.put("desk", "desk", (2.0, 1.5, GAP))
+    return r
+
+
+# ---------------------------------------------------------------------------- the registry
+def test_every_relation_has_exactly_one_check_rule():
+    assert set(CHECK_RULES) == set(RELATIONS)
+    for name, rule in CHECK_RULES.items():
+        assert rule.__doc__, f"the rule for {name} documents its test"
+
+
+def test_registering_an_unknown_or_second_rule_is_refused():
+    with pytest.raises(ValueError, match="unknown relation"):
+        check_rule("HOVERING")(lambda ctx: None)
+    with pytest.raises(ValueError, match="already has a check rule"):
+        check_rule("ON")(lambda ctx: None)
+
+
+# ------------------------------------------------------------------------- support relations
+def test_on(room, assets):
+    z = top_z(assets["desk"], "tabletop") + 1.5 * GAP + GAP
+    room.put("mug", "mug", (2.0, 1.5, z))
+    assert room.check("mug", "ON", "floor").holds is False
+    c = room.check("mug", "ON", "desk:tabletop")
+    assert c.holds, c.detail
+    assert abs(c.residual["distance"]) < 2e-3
+    room.put("mug", "mug", (2.0, 1.5, z + 0.05))  # hovering 5 cm above
+    c = room.check("mug", "ON", "desk:tabletop")
+    assert not c.holds and c.residual["distance"] > 0.04
+    room.put("mug", "mug", (2.0 + 0.75, 1.5, z))  # beyond the edge of the top
+    c = room.check("mug", "ON", "desk:tabletop")
+    assert not c.holds and "centre of mass" in c.detail
+    assert room.check("desk", "ON", "floor").holds
+    room.put("desk", "desk", (2.0, 1.5, GAP), R=axis_angle(np.array([1.0, 0, 0]), 0.3))
+    assert not room.check("desk", "ON", "floor").holds  # tilted: normals not anti-parallel
+
+
+def test_in_a_closed_cabinet(room, assets):
+    cab = assets["wall_cabinet"]
+    room.put("cab", "wall_cabinet", (1.0, 0.01, 1.5))
+    shelf = next(s for s in cab.internal if s.part == "body")
+    z = 1.5 + float(shelf.surface.origin[2]) + GAP
+    xy = shelf.surface.origin[:2] + np.array([1.0, 0.01])
+    room.put("cup", "cup", (xy[0], xy[1], z))
+    c = room.check("cup", "IN", "cab:body")
+    assert c.holds, c.detail
+    assert c.residual["enclosure"] >= 0.5
+    room.put("cup", "cup", (xy[0], xy[1], z + 0.03))
+    assert not room.check("cup", "IN", "cab:body").holds
+
+
+def test_hanging_below(room, assets):
+    lamp = assets["pendant_lamp"]
+    h = float(lamp.bounds[1, 2])
+    room.put("lamp", "pendant_lamp", (2.0, 1.5, ROOM.height - h - GAP))
+    c = room.check("lamp", "HANGING_BELOW", "ceiling")
+    assert c.holds, c.detail
+    room.put("lamp", "pendant_lamp", (2.0, 1.5, ROOM.height - h - 0.1))
+    assert not room.check("lamp", "HANGING_BELOW", "ceiling").holds
+    assert room.check("lamp", "HANGING_BELOW", "ceiling", drop=[0.05, 0.2]).holds
+
+
+def test_secured_to_a_wall(room, assets):
+    pic = assets["picture_frame"]
+    y = -float(pic.bounds[0, 1]) + GAP
+    zc = float(pic.bounds.mean(axis=0)[2])
+    room.put("pic", "picture_frame", (2.0, y, 1.5 - zc))
+    c = room.check("pic", "SECURED_TO", "wall_0", height=[1.4, 1.6])
+    assert c.holds, c.detail
+    assert abs(c.residual["height"] - 1.5) < 1e-6
+    assert not room.check("pic", "SECURED_TO", "wall_0", height=[1.7, 1.9]).holds
+    assert not room.check("pic", "SECURED_TO", "wall_1").holds  # not on that wall
+
+
+def test_against_names_the_part(room, assets):
+    desk = assets["desk"]
+    back = float(desk.part("tabletop").mesh.bounds[0, 1])
+    room.put("desk", "desk", (2.0, -back + GAP, GAP))
+    c = room.check("desk:tabletop@back", "AGAINST", "wall_0")
+    assert c.holds, c.detail
+    assert not room.check("desk:tabletop@back", "AGAINST", "wall_0", gap=0.05).holds
+    room.put("desk", "desk", (2.0, -back + 0.05, GAP))
+    assert room.check("desk:tabletop@back", "AGAINST", "wall_0", gap=0.05).holds
+    assert not room.check("desk:tabletop@back", "AGAINST", "wall_0").holds
+    room.put("desk", "desk", (2.0, -back + GAP, GAP), R=rot_z(10))
+    assert not room.check("desk:tabletop@back", "AGAINST", "wall_0").holds
+
+
+# ---------------------------------------------------------------------------- planes
+def test_aligned_opposite_parallel(room, assets):
+    box = assets["storage_box"]
+    room.put("a", "storage_box", (1.0, 1.0, GAP))
+    room.put("b", "storage_box", (2.0, 1.0, GAP))
+    assert room.check("b@front", "ALIGNED_WITH", "a@front").holds
+    assert room.check("b@front", "PARALLEL_TO", "a@front").holds
+    assert not room.check("b@front", "OPPOSITE_TO", "a@front").holds
+    room.put("b", "storage_box", (2.0, 1.05, GAP))  # 5 cm forward: parallel, not flush
+    assert not room.check("b@front", "ALIGNED_WITH", "a@front").holds
+    assert room.check("b@front", "PARALLEL_TO", "a@front").holds
+    room.put("b", "storage_box", (2.0, 1.0, GAP), R=rot_z(90))
+    assert not room.check("b@front", "PARALLEL_TO", "a@front").holds
+    # turned around with its front in the plane of a's front: back to back
+    yf = float(box.bounds[1, 1])
+    room.put("b", "storage_box", (1.0, 1.0 + 2 * yf, GAP), R=rot_z(180))
+    c = room.check("b@front", "OPPOSITE_TO", "a@front")
+    assert c.holds, c.detail
+
+
+# --------------------------------------------------------------------------- object level
+def test_side_of_near_far(room, assets):
+    room.put("box", "storage_box", (3.2, 1.3, GAP))
+    assert room.check("box", "SIDE_OF", "desk", side="right").holds
+    assert not room.check("box", "SIDE_OF", "desk", side="left").holds
+    assert not room.check("box", "SIDE_OF", "desk", side="front").holds
+    c = room.check("box", "NEAR", "desk", distance=1.3)
+    assert c.holds and abs(c.residual["distance"] - np.hypot(1.2, 0.2)) < 2e-2
+    assert not room.check("box", "NEAR", "desk", distance=1.0).holds
+    assert room.check("box", "FAR_FROM", "desk", distance=1.0).holds
+    assert not room.check("box", "FAR_FROM", "desk", distance=1.3).holds
+    # to a wall: the distance to its plane
+    c = room.check("box", "NEAR", "wall_1", distance=1.0)
+    assert c.holds and abs(c.residual["distance"] - 0.8) < 1e-6
+    # the desk turned by 90 degrees: its right side now points along +Y
+    room.put("desk", "desk", (2.0, 1.5, GAP), R=rot_z(90))
+    assert not room.check("box", "SIDE_OF", "desk", side="right").holds
+    assert room.check("box", "SIDE_OF", "desk", side="back").holds
+
+
+def test_toward(room, assets):
+    room.put("box", "storage_box", (2.0, 0.5, GAP))  # 1 m in front of the desk's back
+    assert room.check("box", "TOWARD", "desk").holds  # its front (+Y) points at the desk
+    room.put("box", "storage_box", (2.0, 0.5, GAP), R=rot_z(30))
+    c = room.check("box", "TOWARD", "desk")
+    assert not c.holds and abs(c.residual["angle_deg"] - 30) < 0.5
+    assert room.check("box", "TOWARD", "desk", tolerance_deg=35).holds
+    room.put("box", "storage_box", (2.0, 0.5, GAP), R=rot_z(180))
+    assert room.check("box", "TOWARD", "desk", tolerance_deg=180).holds
+    assert not room.check("box", "TOWARD", "desk", tolerance_deg=170).holds
+
+
+def test_centroid_and_points_follow_the_pose(room, assets):
+    o = room.scene.objects["desk"]
+    c = object_centroid(o)
+    assert np.allclose(c[:2], [2.0, 1.5], atol=0.05)
+    pts = world_points(o, hull_only=True)
+    assert pts[:, 2].min() == pytest.approx(GAP, abs=1e-6)
