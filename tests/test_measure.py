@@ -8,8 +8,16 @@ import pytest
 
 from parse3d.assets import registry
 from parse3d.geometry.frames import axis_angle
-from parse3d.measure import CHECK_RULES, check_edge, check_rule, object_centroid, world_points
+from parse3d.measure import (
+    CHECK_RULES,
+    check_edge,
+    check_rule,
+    object_centroid,
+    select_parts,
+    world_points,
+)
 from parse3d.pag import PAG, Room
+from parse3d.pag.refs import parse_ref
 from parse3d.relations import RELATIONS
 from parse3d.scene.model import PlacedObject, Scene
 from parse3d.scene.shell import build_shell
@@ -22,7 +30,7 @@ GAP = 5e-4  # the contact gap the solver leaves
 @pytest.fixture(scope="module")
 def assets():
     cats = ["desk", "mug", "wall_cabinet", "grocery_shelf", "pendant_lamp", "picture_frame",
-            "mirror", "guitar", "storage_box", "stove", "cup"]
+            "mirror", "guitar", "storage_box", "stove", "cup", "canned_food"]
     return {c: registry.generate(c, seed=0) for c in cats}
 
 
@@ -206,3 +214,122 @@ def test_centroid_and_points_follow_the_pose(room, assets):
     assert np.allclose(c[:2], [2.0, 1.5], atol=0.05)
     pts = world_points(o, hull_only=True)
     assert pts[:, 2].min() == pytest.approx(GAP, abs=1e-6)
+
+
+# ------------------------------------------------------------------ semantics (issue class 8)
+def test_along_is_the_strip_beside_the_face(room, assets):
+    """ALONG: 0 <= (x_A - x_B) . n_side - h_B <= width and |(x_A - x_B) . n_perp| <= e / 2,
+    with h_B the distance from the parent's centroid to its side face, e its extent along it."""
+    desk = assets["desk"]
+    box = assets["storage_box"]
+    front = float(desk.bounds[1, 1]) - float(desk.bounds.mean(axis=0)[1])  # h_B, side front
+    half = 0.5 * float(desk.bounds[1, 0] - desk.bounds[0, 0])  # e / 2
+    cy = 1.5 + float(desk.bounds.mean(axis=0)[1])  # the desk's centroid y
+    by = float(box.bounds.mean(axis=0)[1])  # the box's centroid offset from its origin
+
+    def at(out, lateral=0.0):
+        room.put("box", "storage_box", (2.0 + lateral, cy + front + out - by, GAP))
+        return room.check("box", "ALONG", "desk", side="front", width=0.5)
+
+    c = at(0.25)
+    assert c.holds, c.detail
+    assert c.residual["offset"] == pytest.approx(0.25, abs=1e-4)
+    assert at(0.49).holds and at(0.01).holds
+    assert not at(0.55).holds  # beyond the strip
+    assert not at(-0.2).holds  # over the desk itself: not beside its face
+    assert at(0.25, lateral=half - 0.02).holds
+    c = at(0.25, lateral=half + 0.05)  # past the end of the face
+    assert not c.holds and c.residual["lateral"] == pytest.approx(half + 0.05, abs=1e-3)
+    assert not room.check("box", "ALONG", "desk", side="back", width=0.5).holds
+    # along a wall: measured from its inner face
+    room.put("box", "storage_box", (2.0, 0.3 - by, GAP))
+    c = room.check("box", "ALONG", "wall_0", side="front", width=0.5)
+    assert c.holds and c.residual["offset"] == pytest.approx(0.3, abs=1e-6)
+    assert not room.check("box", "ALONG", "wall_0", side="front", width=0.2).holds
+
+
+def test_in_an_open_shelf_needs_no_enclosure(room, assets):
+    """IN on a shelf part: supported on its internal surface and inside the parent's bbox
+    footprint; the enclosure threshold applies to other containers only."""
+    gs = assets["grocery_shelf"]
+    room.put("gs", "grocery_shelf", (1.0, 1.5, 0.0))
+    shelf = gs.parts_by_label("shelf")[1]
+    surf = next(s for s in gs.internal if s.part == shelf.name).surface
+    z = float(surf.origin[2]) + GAP
+    x0, y0 = 1.0 + float(surf.origin[0]), 1.5 + float(surf.origin[1])
+    room.put("can", "canned_food", (x0, y0, z))
+    c = room.check("can", "IN", "gs:shelf")
+    assert c.holds, c.detail
+    assert c.residual["inside_footprint"] == 1.0
+    assert "open shelf" in c.detail
+    assert room.check("can", "IN", "gs:shelf", min_enclosure=0.9).holds
+    # at the shelf's height but beside the rack: not in it
+    room.put("can", "canned_food", (x0 + 1.0, y0, z))
+    c = room.check("can", "IN", "gs:shelf")
+    assert not c.holds and c.residual["inside_footprint"] == 0.0
+    # a second can resting on the first is in a pile on the shelf
+    h = float(assets["canned_food"].bounds[1, 2])
+    room.put("can", "canned_food", (x0, y0, z))
+    room.put("can2", "canned_food", (x0 + 0.005, y0, z + h + GAP))
+    room.pag.relations.clear()
+    room.pag.relate("can", "IN", "gs:shelf")
+    room.pag.relate("can2", "IN", "gs:shelf")
+    c = check_edge(room.scene, room.pag.relations[1], room.scene.objects["can2"])
+    assert c.holds, c.detail
+    assert "resting on can" in c.detail
+    room.put("can2", "canned_food", (x0 + 0.005, y0, z + h + 0.03))  # hovering above it
+    assert not check_edge(room.scene, room.pag.relations[1], room.scene.objects["can2"]).holds
+
+
+def test_part_index_follows_the_documented_order(assets):
+    """#k: bottom-to-top, then left-to-right (+X), then back-to-front (+Y), 0-based."""
+    stove = assets["stove"]
+    burners = stove.parts_by_label("burner")
+    centres = np.array([p.mesh.bounds.mean(axis=0) for p in burners])
+    assert len(burners) == 4
+    # two left burners (back, then front), then two right ones (back, then front)
+    assert centres[0, 0] < 0 and centres[1, 0] < 0 and centres[2, 0] > 0 and centres[3, 0] > 0
+    assert centres[0, 1] < centres[1, 1] and centres[2, 1] < centres[3, 1]
+    o = PlacedObject("stove", "stove", stove)
+    assert select_parts(o, parse_ref("stove:burner#2")) == [burners[2]]
+    assert select_parts(o, parse_ref("stove:burner#9")) == []
+    shelves = assets["grocery_shelf"].parts_by_label("shelf")
+    bottoms = [p.mesh.bounds[0, 2] for p in shelves]
+    assert bottoms == sorted(bottoms) and len(set(np.round(bottoms, 3))) == len(bottoms)
+
+
+def lean(asset, theta_deg: float, away: float = 0.0, part: str | None = None):
+    """A pose tilting ``asset`` back toward wall_0 (y = 0) by ``theta_deg``, standing on the
+    floor, with ``part`` (or the whole object) touching the wall, ``away`` metres off it."""
+    R = axis_angle(np.array([1.0, 0, 0]), np.deg2rad(theta_deg))
+    parts = [asset.part(part)] if part else asset.parts
+    pts = np.vstack([pc.vertices for p in parts for pc in p.pieces] or
+                    [p.mesh.vertices for p in parts]) @ R.T
+    allp = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces]) @ R.T
+    return R, np.array([2.0, -pts[:, 1].min() + GAP + away, -allp[:, 2].min() + GAP])
+
+
+def test_leaning_against_means_the_named_part_touches(room, assets):
+    R, t = lean(assets["mirror"], 12, part="frame")
+    room.put("mirror", "mirror", t, R)
+    c = room.check("mirror:frame@back", "LEANING_AGAINST", "wall_0")
+    assert c.holds, c.detail
+    assert c.residual["angle_deg"] == pytest.approx(12, abs=1e-6)
+    room.pag.relate("mirror", "ON", "floor")  # stands on the floor, tilted by its lean
+    assert check_edge(room.scene, room.pag.relations[1], room.scene.objects["mirror"]).holds
+    assert not room.check("mirror:frame@back", "LEANING_AGAINST", "wall_0",
+                          angle_deg=[20, 30]).holds
+    assert not room.check("mirror:frame@back", "LEANING_AGAINST", "wall_1").holds
+    R, t = lean(assets["mirror"], 12, away=0.05, part="frame")
+    room.put("mirror", "mirror", t, R)
+    assert not room.check("mirror:frame@back", "LEANING_AGAINST", "wall_0").holds
+    # turned about the vertical: the named back no longer faces the wall
+    R, t = lean(assets["mirror"], 12, part="frame")
+    room.put("mirror", "mirror", t + [0, 0.2, 0], rot_z(40) @ R)
+    assert not room.check("mirror@back", "LEANING_AGAINST", "wall_0").holds
+    # a guitar leaning on its head: guitar:body@back does not hold, and says why
+    R, t = lean(assets["guitar"], 12)
+    room.put("guitar", "guitar", t, R)
+    c = room.check("guitar:body@back", "LEANING_AGAINST", "wall_0")
+    assert not c.holds and "another part touches it" in c.detail
+    assert room.check("guitar@back", "LEANING_AGAINST", "wall_0").holds

@@ -291,14 +291,37 @@ def _check_side_of(ctx: CheckContext) -> Check:
 
 @check_rule("ALONG")
 def _check_along(ctx: CheckContext) -> Check:
-    """The child's centroid in the strip from the parent's ``side`` face outwards by ``width``."""
-    _, xB, n, proj = _side_offset(ctx)
-    hB = 0.0
-    if ctx.parent is not None:
-        hB = float(np.max((world_points(ctx.parent, hull_only=True, settled=ctx.settled) - xB) @ n))
+    """The child's centroid lies in the strip beside the parent's ``side`` face: from the face
+    outwards up to ``width`` along n_side, and within the parent's extent along the face,
+    ``|(x_A - x_B) . n_side^perp| <= e / 2`` (both horizontal; e the parent's extent along
+    n_side^perp)."""
+    xA, xB, n, proj = _side_offset(ctx)
+    pts = _parent_outline(ctx, xA)
+    hB = float(np.max((pts - xB) @ n))  # the face: the parent's extreme along n_side
+    perp = np.array([n[1], -n[0], 0.0])  # n_side x up
+    along = (pts - xB) @ perp
+    mid = 0.5 * float(along.max() + along.min())
+    half = 0.5 * float(along.max() - along.min())
+    lat = float((xA - xB) @ perp) - mid
     w = ctx.param("width")
-    ok = hB - 1e-3 <= proj <= hB + w + 1e-3
-    return Check(ok, {"offset": round(proj, 5)}, f"offset {proj:.3f} m, strip [{hB:.3f}, {hB + w:.3f}]")
+    out = proj - hB
+    ok = -1e-3 <= out <= w + 1e-3 and abs(lat) <= half + 1e-3
+    return Check(ok, {"offset": round(out, 5), "lateral": round(lat, 5)},
+                 f"{out:.3f} m out from the {ctx.param('side')} face (strip 0-{w:.3f} m), "
+                 f"{abs(lat):.3f} m along it (half extent {half:.3f} m)")
+
+
+def _parent_outline(ctx: CheckContext, near: np.ndarray) -> np.ndarray:
+    """(N, 3) world points spanning the parent: its hull, or a wall's corners."""
+    if ctx.parent is not None:
+        return world_points(ctx.parent, hull_only=True, settled=ctx.settled)
+    name = ctx.edge.parent.object
+    if name == "wall":
+        name = _nearest_wall(ctx.scene, near)
+    s = ctx.scene.room.elements[name].surface
+    poly = s.polygon
+    geoms = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    return s.to_3d(np.vstack([np.asarray(g.exterior.coords) for g in geoms]))
 
 
 # ------------------------------------------------------------ part-level and support rules
@@ -307,22 +330,23 @@ def _lowest(ctx: CheckContext) -> np.ndarray:
     return pts[np.argmin(pts[:, 2])]
 
 
-def _internal_surface(ctx: CheckContext) -> Surface | str:
-    """The parent's internal support surface nearest the child's lowest point (IN), or why
-    there is none."""
+def _internal_surface(ctx: CheckContext) -> tuple[Surface, str] | str:
+    """The parent's internal support surface nearest the child's lowest point (IN) and the
+    part it belongs to, or why there is none."""
     pobj, r = ctx.parent, ctx.resolved
     T = pobj.transform(ctx.settled)
     if r.get("parent_part"):
-        cands = [s.surface.transformed(T) for s in pobj.asset.internal if s.part == r["parent_part"]]
+        cands = [(s.surface.transformed(T), s.part) for s in pobj.asset.internal
+                 if s.part == r["parent_part"]]
         if not cands:
             return "internal surface missing"
     else:
         names = {p.name for p in select_parts(pobj, ctx.edge.parent)}
-        cands = [s.surface.transformed(T) for s in pobj.asset.internal if s.part in names]
+        cands = [(s.surface.transformed(T), s.part) for s in pobj.asset.internal if s.part in names]
         if not cands:
             return "no internal surface"
     low = _lowest(ctx)
-    return min(cands, key=lambda s: abs(float((low - s.origin) @ s.normal)))
+    return min(cands, key=lambda c: abs(float((low - c[0].origin) @ c[0].normal)))
 
 
 def _parent_surface(ctx: CheckContext) -> Surface | str:
@@ -342,7 +366,8 @@ def _parent_surface(ctx: CheckContext) -> Surface | str:
 
 def _target_surface(ctx: CheckContext) -> Surface | str:
     if ctx.edge.relation == "IN" and ctx.parent is not None:
-        return _internal_surface(ctx)
+        got = _internal_surface(ctx)
+        return got if isinstance(got, str) else got[0]
     return _parent_surface(ctx)
 
 
@@ -370,6 +395,11 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
                           pobj.transform(settled), -sB.normal)
         if np.isfinite(d):
             gap = d
+    pile = None
+    if rel in ("ON", "IN") and pobj is not None and gap > DIST_TOL:
+        pile = _resting_on_sibling(ctx, -sB.normal)
+        if pile is not None:
+            pile, gap = pile
     target = 0.0
     lo_t, hi_t = -PENETRATION_TOL, DIST_TOL
     if rel == "AGAINST":
@@ -388,7 +418,31 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
     ok = ok and ang <= ang_tol
     detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
+    if pile is not None:
+        detail += f", resting on {pile}"
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
+
+
+def _resting_on_sibling(ctx: CheckContext, down: np.ndarray) -> tuple[str, float] | None:
+    """A pile: the placed object with the same support parent that the child rests on (the
+    free drop along ``down`` onto it is within contact distance), and that drop."""
+    child, settled, scene = ctx.child, ctx.settled, ctx.scene
+    pts = world_points(child, hull_only=True, settled=settled)
+    lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+    for oid, o in scene.objects.items():
+        if oid == child.id or not o.placed or o.asset is None:
+            continue
+        sup = scene.pag.supporter(oid)
+        if sup is None or sup.parent.object != ctx.edge.parent.object:
+            continue
+        q = world_points(o, hull_only=True, settled=settled)
+        if np.any(q[:, :2].min(axis=0) > hi) or np.any(q[:, :2].max(axis=0) < lo):
+            continue
+        d = drop_distance(pts, child.asset, child.transform(settled), q, o.asset,
+                          o.transform(settled), down)
+        if -PENETRATION_TOL <= d <= DIST_TOL:
+            return oid, float(d)
+    return None
 
 
 def _resolve_or_fail(ctx: CheckContext) -> Surface | Check:
@@ -419,18 +473,38 @@ def _check_on(ctx: CheckContext) -> Check:
     return Check(True, res, c.detail)
 
 
+#: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.
+OPEN_SUPPORT_LABELS = frozenset({"shelf"})
+
+
 @check_rule("IN")
 def _check_in(ctx: CheckContext) -> Check:
-    """Contact with an internal support surface and ray-cast enclosure >= ``min_enclosure``."""
-    sB = _resolve_or_fail(ctx)
-    if isinstance(sB, Check):
-        return sB
+    """Contact with an internal support surface of the parent (or a pile on it); then, on a
+    shelf part, the child's centroid inside the parent's bounding-box footprint, and in any
+    other container a ray-cast enclosure >= ``min_enclosure``."""
+    pobj = ctx.parent
+    if pobj is None:
+        return Check(False, {}, "IN needs an object parent")
+    got = _internal_surface(ctx)
+    if isinstance(got, str):
+        return Check(False, {}, got)
+    sB, part = got
     c, _ = _contact(ctx, sB)
-    if not c.holds or ctx.parent is None:
+    if not c.holds:
         return c
-    enc = _enclosure(ctx.child, ctx.parent, ctx.settled)
+    label = next((p.label for p in pobj.asset.parts if p.name == part), part)
+    if label in OPEN_SUPPORT_LABELS:
+        Ti = np.linalg.inv(pobj.transform(ctx.settled))
+        x = Ti[:3, :3] @ object_centroid(ctx.child, ctx.settled) + Ti[:3, 3]
+        b = asset_geometry(pobj.asset).bounds
+        tol = 1e-3 / pobj.scale
+        inside = bool(np.all(x[:2] >= b[0, :2] - tol) and np.all(x[:2] <= b[1, :2] + tol))
+        res = dict(c.residual, inside_footprint=float(inside))
+        return Check(inside, res, f"{c.detail}; on the open {label} {part}, centroid "
+                     f"{'inside' if inside else 'outside'} {ctx.edge.parent.object}'s footprint")
+    enc = _enclosure(ctx.child, pobj, ctx.settled)
     res = dict(c.residual, enclosure=round(enc, 4))
-    return Check(enc >= ctx.param("min_enclosure") - 1e-9, res, f"enclosure {enc:.2f}")
+    return Check(enc >= ctx.param("min_enclosure") - 1e-9, res, f"{c.detail}; enclosure {enc:.2f}")
 
 
 @check_rule("HANGING_BELOW", "AGAINST")
@@ -460,18 +534,30 @@ def _check_secured(ctx: CheckContext) -> Check:
 
 @check_rule("LEANING_AGAINST")
 def _check_leaning(ctx: CheckContext) -> Check:
-    """The object touches the parent plane; its up axis tilted within ``angle_deg``."""
+    """The named part touches the parent plane (-1...+2 mm), its named surface faces the
+    parent (normals anti-parallel within the tilt + 2 deg), and the up axis is tilted from
+    vertical by ``angle_deg`` (+-1 deg)."""
     sB = _resolve_or_fail(ctx)
     if isinstance(sB, Check):
         return sB
     child, settled = ctx.child, ctx.settled
-    gap = float(_plane_dist(world_points(child, settled=settled), sB).min())
+    parts = select_parts(child, ctx.edge.child)
+    if not parts:
+        return Check(False, {}, f"child has no part {ctx.edge.child.part!r}")
+    gap = float(_plane_dist(world_points(child, settled=settled, parts=parts), sB).min())
+    whole = float(_plane_dist(world_points(child, settled=settled), sB).min())
     up = child.transform(settled)[:3, :3] @ np.array([0, 0, 1.0]) / child.scale
     tilt = float(np.degrees(angle_between(up, [0, 0, 1.0])))
+    face = float(np.degrees(angle_between(_child_normal(child, _child_label(ctx), settled),
+                                          -sB.normal)))
     lo, hi = ctx.param("angle_deg")
-    ok = -PENETRATION_TOL <= gap <= DIST_TOL and lo - 1.0 <= tilt <= hi + 1.0
-    return Check(ok, {"distance": round(gap, 6), "angle_deg": round(tilt, 4)},
-                 f"gap {gap * 1000:.2f} mm, tilt {tilt:.1f} deg")
+    res = {"distance": round(gap, 6), "angle_deg": round(tilt, 4), "facing_deg": round(face, 4)}
+    touches = -PENETRATION_TOL <= gap <= DIST_TOL
+    ok = touches and lo - 1.0 <= tilt <= hi + 1.0 and face <= hi + ANGLE_TOL_DEG
+    detail = f"{ctx.edge.child} {gap * 1000:.2f} mm from the parent, tilt {tilt:.1f} deg"
+    if not touches and gap > DIST_TOL and whole < gap - DIST_TOL:
+        detail += f" (another part touches it; the named part is {1000 * (gap - whole):.0f} mm off)"
+    return Check(ok, res, detail)
 
 
 @check_rule("ALIGNED_WITH", "OPPOSITE_TO", "PARALLEL_TO")
