@@ -14,6 +14,7 @@ from parse3d.measure import (
     check_rule,
     object_centroid,
     select_parts,
+    verify_settled,
     world_points,
 )
 from parse3d.pag import PAG, Room
@@ -333,3 +334,46 @@ def test_leaning_against_means_the_named_part_touches(room, assets):
     c = room.check("guitar:body@back", "LEANING_AGAINST", "wall_0")
     assert not c.holds and "another part touches it" in c.detail
     assert room.check("guitar@back", "LEANING_AGAINST", "wall_0").holds
+
+
+# ------------------------------------------------------------------- after settling
+def test_verify_settled_reports_each_cause(room, assets):
+    ztop = top_z(assets["desk"], "tabletop") + GAP
+    pag = room.pag
+    for oid, cat in (("mug", "mug"), ("cup", "cup"), ("box", "storage_box"), ("pic", "picture_frame")):
+        room.put(oid, cat, (2.0 + 0.2 * len(pag.objects), 1.5, ztop))
+    room.put("box", "storage_box", (0.8, 2.0, GAP))
+    room.put("pic", "picture_frame", (2.0, 0.02, 1.0))
+    room.scene.objects["pic"].fixed = True
+    pag.relations.clear()
+    pag.relate("desk", "ON", "floor")
+    pag.relate("mug", "ON", "desk:tabletop")
+    pag.relate("cup", "ON", "desk:tabletop")
+    pag.relate("box", "ON", "floor")
+    pag.relate("pic", "SECURED_TO", "wall_0")
+    with pytest.raises(ValueError, match="settled scene"):
+        verify_settled(room.scene)
+    for o in room.scene.objects.values():
+        o.settled_rotation, o.settled_position = o.rotation.copy(), o.position.copy()
+    room.scene.settled = True
+    assert verify_settled(room.scene) == []
+    mug, cup, box, desk = (room.scene.objects[k] for k in ("mug", "cup", "box", "desk"))
+    mug.settled_position = np.array([3.3, 1.5, GAP])  # fell off the desk onto the floor
+    mug.flags = ["left_support"]
+    cup.settled_position = cup.position + [0, 0, 0.02]  # lifted 2 cm: still close, relation broken
+    box.settled_rotation = axis_angle(np.array([1.0, 0, 0]), np.deg2rad(30))  # on its side
+    room.scene.objects["pic"].settled_position = np.array([2.0, 0.5, 0.0])  # fixed: ignored
+    got = {(i.object_id, i.cause) for i in verify_settled(room.scene)}
+    assert got == {("mug", "fell"), ("mug", "left_support"), ("cup", "broke_support"),
+                   ("box", "tipped"), ("box", "broke_support")}
+    by = {(i.object_id, i.cause): i for i in verify_settled(room.scene)}
+    assert by[("mug", "fell")].value == pytest.approx(ztop - GAP)
+    assert by[("box", "tipped")].value == pytest.approx(30.0)
+    assert "gap 20" in by[("cup", "broke_support")].detail
+    assert by[("cup", "broke_support")].relation == 2
+    assert verify_settled(room.scene, tip_angle_deg=45) and \
+        ("box", "tipped") not in {(i.object_id, i.cause) for i in verify_settled(room.scene, tip_angle_deg=45)}
+    # what the desk carries moves with it
+    desk.settled_position = desk.position - [0, 0, 0.1]
+    d = next(i for i in verify_settled(room.scene) if i.object_id == "desk")
+    assert d.cause == "fell" and set(d.carries) == {"mug", "cup"}
