@@ -28,9 +28,16 @@ from .checks import (
     select_parts,
     world_points,
 )
-from .stability import INSTABILITY_CAUSES, Instability, supported_by, verify_settled
+from .stability import (
+    INSTABILITY_CAUSES,
+    Instability,
+    SettledSummary,
+    summarize_settled,
+    supported_by,
+    verify_settled,
+)
 
 __all__ = ["ANGLE_TOL_DEG", "CHECK_RULES", "DIST_TOL", "EPS", "PENETRATION_TOL", "Check",
            "CheckContext", "check_edge", "check_relations", "check_rule", "object_centroid",
            "select_parts", "world_points", "INSTABILITY_CAUSES", "Instability", "supported_by",
-           "verify_settled"]
+           "verify_settled", "SettledSummary", "summarize_settled"]

@@ -34,7 +34,8 @@ import numpy as np
 from ..scene.model import Scene
 from .checks import check_edge
 
-__all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by"]
+__all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by",
+           "SettledSummary", "summarize_settled"]
 
 #: The causes :func:`verify_settled` reports, in the order it reports them per object.
 INSTABILITY_CAUSES = ("fell", "tipped", "left_support", "broke_support")
@@ -172,3 +173,60 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
             out.extend(Instability(f.object_id, f.cause, f.detail, f.value, f.relation, carries)
                        for f in found)
     return out
+
+
+@dataclass(frozen=True)
+class SettledSummary:
+    """Counts that say whether a solved and settled scene is what its PAG asked for.
+
+    Attributes
+    ----------
+    objects, placed : int
+    support_total, support_held : int
+        Support relations (ON, IN, HANGING_BELOW, SECURED_TO) of placed children, and those
+        that hold on the settled poses.
+    other_total, other_held : int
+        The same for every other relation.
+    unstable : int
+        Objects :func:`verify_settled` reports (any cause).
+    """
+
+    objects: int
+    placed: int
+    support_total: int
+    support_held: int
+    other_total: int
+    other_held: int
+    unstable: int
+
+    @property
+    def complete(self) -> bool:
+        """Every object placed."""
+        return self.placed == self.objects
+
+    @property
+    def other_fraction(self) -> float:
+        return self.other_held / self.other_total if self.other_total else 1.0
+
+    def keeps_relations(self, other: float = 0.95) -> bool:
+        """Every support relation and at least ``other`` of the rest hold after settling."""
+        return self.support_held == self.support_total and self.other_fraction >= other
+
+
+def summarize_settled(scene: Scene) -> SettledSummary:
+    """Count placed objects, relations holding after settling and unstable objects.
+
+    A relation of an unplaced child counts as not holding.
+    """
+    if not scene.settled:
+        raise ValueError("summarize_settled needs a settled scene: run parse3d.physics.settle first")
+    held = {c.index: c.holds_settled for c in scene.relations}
+    st, sh, ot, oh = 0, 0, 0, 0
+    for i, e in enumerate(scene.pag.relations):
+        ok = held.get(i) is True
+        if e.is_support:
+            st, sh = st + 1, sh + ok
+        else:
+            ot, oh = ot + 1, oh + ok
+    return SettledSummary(len(scene.objects), sum(o.placed for o in scene.objects.values()),
+                          st, sh, ot, oh, len({i.object_id for i in verify_settled(scene)}))
