@@ -3,6 +3,11 @@ and fails where it should not, measured on real generated assets in a real room 
 
 from __future__ import annotations
 
+import importlib.util
+import os
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 
@@ -78,6 +83,15 @@ def test_every_relation_has_exactly_one_check_rule():
     assert set(CHECK_RULES) == set(RELATIONS)
     for name, rule in CHECK_RULES.items():
         assert rule.__doc__, f"the rule for {name} documents its test"
+
+
+def test_measure_stands_below_the_solver():
+    """Physics and evaluations import parse3d.measure without the solver; the old module is gone."""
+    code = ("import sys, parse3d.measure, parse3d.physics; "
+            "bad = sorted(m for m in sys.modules if m.startswith('parse3d.solver')); "
+            "assert not bad, bad")
+    subprocess.run([sys.executable, "-c", code], check=True, env={**os.environ})
+    assert importlib.util.find_spec("parse3d.solver.checks") is None
 
 
 def test_registering_an_unknown_or_second_rule_is_refused():
