@@ -3,8 +3,9 @@
 This mirrors the paper's supplementary table "Dictionary of Spatial Relations". Each relation is
 a :class:`Relation` with its kind (``support``, ``part`` or ``object``), its default child and
 parent surfaces, its parameters (type, unit, allowed range and default) and a one-line meaning
-used in documentation and generated text. What a relation *does* geometrically is registered in
-:mod:`parse3d.solver`, not here.
+used in documentation and generated text. What a relation *means* geometrically is one check
+rule per relation family in :mod:`parse3d.measure` (``CHECK_RULES``, the exact tests are in
+docs/pag.md); how the solver constructs poses that satisfy it lives in :mod:`parse3d.solver`.
 
 Examples
 --------
@@ -169,11 +170,13 @@ _RELATIONS = (
                 0.0,
                 1.0,
                 0.5,
-                doc="least fraction of rays from the child's centroid that must hit the parent",
+                doc="least fraction of rays from the child's centroid that must hit the parent "
+                "(containers; open shelves need none)",
             ),
         ),
         "is contained inside",
-        "contact with an internal upward support surface; ray-cast enclosure > min_enclosure",
+        "contact with an internal upward support surface (or a pile on it); on a shelf part the child's "
+        "centroid inside the parent's bbox footprint, in other containers ray-cast enclosure >= min_enclosure",
         "in",
     ),
     Relation(
@@ -243,7 +246,8 @@ _RELATIONS = (
             ),
         ),
         "leans against",
-        "the named surface faces the parent; the object touches it (dist ~ 0) with its up axis tilted by angle_deg",
+        "the named part touches the parent surface (dist ~ 0), its named surface facing it, with the "
+        "up axis tilted from vertical by angle_deg",
         "leaning against",
     ),
     Relation(
@@ -296,7 +300,8 @@ _RELATIONS = (
             Param("width", "float", "m", 0.01, 20.0, 0.6, doc="depth of the strip along that side"),
         ),
         "is lined up along",
-        "0 < (x_A - x_B) . n_side < width: a strip along the parent's side",
+        "0 <= (x_A - x_B) . n_side - h_B <= width and |(x_A - x_B) . n_side^perp| <= e/2: the strip "
+        "beside the parent's side face (h_B from the centroid to that face, e the face's extent)",
         "along",
     ),
     Relation(
@@ -336,7 +341,7 @@ _RELATIONS = (
             ),
         ),
         "faces",
-        "the child's front points at the parent's centroid within tolerance_deg",
+        "horizontal angle between the child's front and x_B - x_A <= tolerance_deg (180: always holds)",
         "facing",
     ),
 )

@@ -230,15 +230,22 @@ class Asset:
         raise KeyError(f"{self.asset_id} has no part {name!r}")
 
     def parts_by_label(self, label: str) -> list[Part]:
-        """Parts with ``label``, ordered bottom-to-top, then left-to-right, then back-to-front
-        (the order ``#k`` indexes)."""
+        """Parts with ``label`` in the order ``#k`` indexes (0-based).
+
+        Lexicographic: by the bottom of the part's bounding box (bottom-to-top), then by its
+        centre's x (left-to-right, the asset's own +X is its right), then by its centre's y
+        (back-to-front). Values within 1 cm count as equal, so parts of one row or level share
+        a rank however they are modelled. A 2 x 2 cooktop: back-left, front-left, back-right,
+        front-right.
+        """
         ps = [p for p in self.parts if p.label == label]
-
-        def key(p: Part):
-            c = p.mesh.bounds.mean(axis=0)
-            return (round(float(p.mesh.bounds[0, 2]), 3), round(float(c[0]), 3), round(float(c[1]), 3))
-
-        return sorted(ps, key=key)
+        if len(ps) < 2:
+            return ps
+        b = np.array([p.mesh.bounds for p in ps])
+        keys = np.c_[b[:, 0, 2], b.mean(axis=1)[:, :2]]
+        ranks = np.stack([_tolerant_ranks(keys[:, j], 0.01) for j in range(3)], axis=1)
+        order = sorted(range(len(ps)), key=lambda i: (*ranks[i], i))
+        return [ps[i] for i in order]
 
     def mesh(self) -> trimesh.Trimesh:
         """All parts as one mesh (a fresh copy)."""
@@ -302,3 +309,15 @@ def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True
 
         asset.internal = find_internal_surfaces(asset)
     return asset
+
+
+def _tolerant_ranks(values: np.ndarray, tol: float) -> np.ndarray:
+    """Rank of each value, where sorted neighbours closer than ``tol`` share a rank."""
+    order = np.argsort(values, kind="stable")
+    ranks = np.empty(len(values), int)
+    r = 0
+    for k, i in enumerate(order):
+        if k and values[i] - values[order[k - 1]] > tol:
+            r += 1
+        ranks[i] = r
+    return ranks

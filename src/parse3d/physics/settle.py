@@ -230,7 +230,7 @@ def _recheck_relations(scene: Scene) -> bool:
     """Re-check every PAG relation on the settled poses (``holds_settled``/``residual_settled``)."""
     if not scene.pag.relations:
         return False
-    from ..solver.checks import check_relations
+    from ..measure.checks import check_relations
 
     checks = check_relations(scene, settled=True)
     have = {c.index for c in scene.relations}

@@ -6,9 +6,9 @@
 
 from __future__ import annotations
 
+from ..measure.checks import check_relations
 from ..pag.model import PAG
 from ..scene.model import Scene
-from .checks import check_relations
 from .core import SolverConfig, solve_scene
 from .library import AssetLibrary
 

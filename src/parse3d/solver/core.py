@@ -40,13 +40,13 @@ from ..assets.model import Asset, Part
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle, rotation_between
 from ..geometry.surfaces import Surface
+from ..measure.checks import EPS, check_edge, object_centroid, world_points
 from ..pag.algorithms import assembly_order
 from ..pag.model import PAG, Edge
 from ..pag.refs import Ref
 from ..relations import SURFACES
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
-from .checks import EPS, check_edge, object_centroid, world_points
 from .collision import Body, CollisionWorld, cached_body
 from .geometry import asset_geometry, drop_distance, part_points
 
@@ -792,7 +792,7 @@ def _resolution(edge: Edge, sup: _Support) -> dict | None:
 # ------------------------------------------------------------------------ driver
 def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig | None = None) -> Scene:
     """Solve a validated PAG into a Scene (failed objects are marked, never raised)."""
-    from .checks import check_relations
+    from ..measure.checks import check_relations
     from .library import default_library
 
     cfg = config or SolverConfig()

@@ -1,0 +1,302 @@
+"""Solver robustness: PAGs the project has not seen must solve, and stay solved after physics.
+
+Usage::
+
+    python benchmarks/bench_robustness.py [--quick] [--baseline-rev REV] [--json FILE]
+
+Prints one table with a row per corpus, each scene run through the project's per-scene path
+(``parse3d.pipeline.run_pipeline``: solve, settle and whatever repair it does; nothing written):
+
+``templates``
+    every bundled room template expanded at 10 random seeds. Per template and k:
+    ``rng = numpy.random.default_rng([crc32(template_name), k])`` draws, in this order, the
+    expansion seed, the footprint scale per axis (uniform in x0.8-1.2), whether the room gets an
+    L-cut (probability 0.3, rectangular rooms only), the corner, the cut's fraction of each of
+    the two sides at that corner (uniform in 25-40%), and the solver seed. ``wall_i`` references
+    are remapped after a cut (the shortened walls keep their role, the two new walls get new
+    numbers). Rooms with a scale below x0.9 on either axis have their own row (some templates
+    cannot fit there).
+``examples``
+    the bundled example rooms at seeds 0-19.
+``rooms``
+    the hand-written rooms of ``tests/data/rooms/`` at seeds 0-9.
+``cost of failure``
+    a scene (examples/study.json) and the same scene plus one wardrobe ON a mug: the ratio of
+    their solve times (goal: at most 3).
+
+Columns: scenes; objects; placed (% of objects); complete (% of scenes with every object
+placed); support and all (% of relations holding after settling, a relation of an unplaced
+object counts as broken); fallen (placed objects still flagged fell / tipped / left_support after
+settling); obj/s (placed objects per second of solve time). Goals from the issue: templates
+>= 99.5% placed, >= 95% complete, >= 99% support, >= 95% all, 0 fallen; examples >= 95% complete;
+rooms 100% complete and keeping their relations; cost of failure <= 3; obj/s not below the
+baseline.
+
+``--quick`` runs one seed (k = 0) of every 16th template, seeds 0-1 of the examples and of the
+rooms (about 50 scenes); the full run is about 2,300 scenes (hours on one core).
+``--baseline-rev REV`` also runs the same corpus (built once, here) with the package of git
+revision REV, checked out in a temporary worktree that is removed afterwards, and prints its
+figures under each row. Times are wall seconds of the solve stage; on a shared machine they are
+noisy.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import time
+import zlib
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+ROOMS = ROOT / "tests" / "data" / "rooms"
+EXAMPLES = ROOT / "examples"
+FALLEN = ("fell", "tipped", "left_support")
+SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+_WALL = re.compile(r"^wall_(\d+)(?=$|[:@])")
+
+
+# ----------------------------------------------------------------------------- the corpus
+def l_cut(footprint: list, corner: int, fa: float, fb: float) -> tuple[list, dict[int, int]]:
+    """Cut a rectangle out of ``corner`` of a counter-clockwise quadrilateral.
+
+    ``fa`` is the fraction of the incoming wall (``corner - 1`` -> ``corner``) and ``fb`` of the
+    outgoing wall removed. Returns the new footprint and the map old wall index -> new index.
+    """
+    n = len(footprint)
+    P = [np.asarray(p, float) for p in footprint]
+    prev, nxt = P[(corner - 1) % n], P[(corner + 1) % n]
+    c = P[corner]
+    a = c + fa * (prev - c)  # on the incoming wall
+    b = c + fb * (nxt - c)  # on the outgoing wall
+    q = a + (b - c)  # the inner corner
+    pts: list[np.ndarray] = []
+    start: dict[int, int] = {}
+    for i in range(n):
+        if i == corner:
+            pts += [a, q]
+            start[i] = len(pts)
+            pts.append(b)
+        else:
+            start[i] = len(pts)
+            pts.append(P[i])
+    return [[round(float(x), 4), round(float(y), 4)] for x, y in pts], start
+
+
+def remap_walls(doc: dict, mapping: dict[int, int]) -> None:
+    """Rewrite ``wall_i`` references of a PAG document in place."""
+    def sub(ref: str) -> str:
+        return _WALL.sub(lambda m: f"wall_{mapping[int(m.group(1))]}", ref)
+
+    for r in doc["relations"]:
+        r["child"], r["parent"] = sub(r["child"]), sub(r["parent"])
+
+
+def template_cases(seeds: int, every: int = 1) -> list[dict]:
+    """Cases of every ``every``-th bundled template at ``seeds`` corpus seeds each."""
+    from parse3d.datagen.templates import expand_template, list_templates
+
+    out = []
+    for t in list_templates()[::every]:
+        for k in range(seeds):
+            rng = np.random.default_rng([zlib.crc32(t.name.encode()), k])
+            doc = expand_template(t, int(rng.integers(2 ** 31))).to_dict()
+            s = rng.uniform(0.8, 1.2, 2)
+            fp = [[round(float(x * s[0]), 4), round(float(y * s[1]), 4)]
+                  for x, y in doc["room"]["footprint"]]
+            cut = bool(rng.random() < 0.3) and len(fp) == 4
+            corner = int(rng.integers(4))
+            fa, fb = rng.uniform(0.25, 0.40, 2)
+            if cut:
+                fp, mapping = l_cut(fp, corner, float(fa), float(fb))
+                remap_walls(doc, mapping)
+            doc["room"]["footprint"] = fp
+            doc["name"] = f"{t.name}-k{k}"
+            row = "templates" if s.min() >= 0.9 else "templates <x0.9"
+            out.append({"row": row, "name": doc["name"], "pag": doc,
+                        "seed": int(rng.integers(2 ** 31)), "lcut": cut})
+    return out
+
+
+def file_cases(row: str, paths: list[Path], seeds: range) -> list[dict]:
+    from parse3d.pag import load_pag
+
+    out = []
+    for p in paths:
+        doc = load_pag(p).to_dict()
+        out += [{"row": row, "name": p.stem, "pag": doc, "seed": s} for s in seeds]
+    return out
+
+
+def corpus(quick: bool) -> list[dict]:
+    examples = sorted(EXAMPLES.glob("*.json")) + sorted(EXAMPLES.glob("*.yaml"))
+    return ((template_cases(1, every=16) if quick else template_cases(10))
+            + file_cases("examples", examples, range(2 if quick else 20))
+            + file_cases("rooms", sorted(ROOMS.glob("*.json")), range(2 if quick else 10)))
+
+
+# -------------------------------------------------------------------------- measuring
+def measure(case: dict) -> dict:
+    """Run one case through the pipeline and count what the table needs (works with any
+    revision of the package: only the Scene model is read)."""
+    from parse3d.pag import PAG
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    pag = PAG.from_dict(case["pag"])
+    t0 = time.process_time()
+    try:
+        scene = run_pipeline(pag, seed=case["seed"], out=None,
+                             options=PipelineOptions(settle=True, preview=False))
+    except Exception as e:  # noqa: BLE001 - a crash is a result the table must show
+        return {"row": case["row"], "name": case["name"], "seed": case["seed"],
+                "objects": len(pag.objects), "placed": 0, "error": f"{type(e).__name__}: {e}"}
+    cpu = time.process_time() - t0
+    held = {c.index: c.holds_settled if scene.settled else c.holds for c in scene.relations}
+    sup = [i for i, e in enumerate(pag.relations) if e.relation in SUPPORT]
+    other = [i for i, e in enumerate(pag.relations) if e.relation not in SUPPORT]
+    placed = [o for o in scene.objects.values() if o.placed]
+    return {"row": case["row"], "name": case["name"], "seed": case["seed"],
+            "objects": len(pag.objects), "placed": len(placed),
+            "support": len(sup), "support_held": sum(held.get(i) is True for i in sup),
+            "relations": len(sup) + len(other),
+            "held": sum(held.get(i) is True for i in sup + other),
+            "fallen": sum(any(f in o.flags for f in FALLEN) for o in placed),
+            "solve_s": float(scene.timings.get("solve", 0.0)), "cpu_s": cpu,
+            "failed": [f"{o.id}: {o.reason}" for o in scene.objects.values() if not o.placed]}
+
+
+def cost_of_failure(seeds: range) -> dict:
+    """Solve times of study.json with and without one wardrobe ON its mug."""
+    from parse3d.pag import PAG
+    from parse3d.solver import solve
+
+    doc = json.loads((EXAMPLES / "study.json").read_text())
+    mug = next(o["id"] for o in doc["objects"] if o["category"] == "mug")
+    bad = json.loads(json.dumps(doc))
+    bad["objects"].append({"id": "impossible_wardrobe", "category": "wardrobe"})
+    bad["relations"].append({"relation": "ON", "child": "impossible_wardrobe", "parent": mug})
+    times = {"base": [], "impossible": []}
+    for name, d in (("base", doc), ("impossible", bad)):
+        pag = PAG.from_dict(d)
+        solve(pag, seed=seeds[0])  # warm-up: assets into memory
+        for s in seeds:
+            t = time.process_time()
+            solve(pag, seed=s)
+            times[name].append(time.process_time() - t)
+    b, i = float(np.mean(times["base"])), float(np.mean(times["impossible"]))
+    return {"base_s": b, "impossible_s": i, "ratio": i / b if b else float("nan")}
+
+
+def run_all(cases: list[dict], cof_seeds: range, progress: bool = True) -> dict:
+    out = []
+    for k, c in enumerate(cases):
+        m = measure(c)
+        out.append(m)
+        if progress:  # one line per case, so that a long run can be followed
+            print(f"{k + 1}/{len(cases)} {c['row']:16s} {c['name'][:36]:36s} seed {c['seed']}: "
+                  f"{m['placed']}/{m['objects']} placed, {m.get('fallen', 0)} fallen, "
+                  f"{m.get('cpu_s', 0):.1f} s", file=sys.stderr, flush=True)
+    return {"cases": out, "cost_of_failure": cost_of_failure(cof_seeds)}
+
+
+# ----------------------------------------------------------------------------- reporting
+ROWS = ("templates", "templates <x0.9", "examples", "rooms")
+
+
+def summarize(cases: list[dict]) -> dict[str, dict]:
+    out = {}
+    for row in ROWS:
+        rs = [c for c in cases if c["row"] == row]
+        if not rs:
+            continue
+        def g(key: str, rs=rs) -> float:
+            return sum(c.get(key, 0) for c in rs)
+
+        solve_s = g("solve_s")
+        out[row] = {"scenes": len(rs), "objects": g("objects"),
+                    "placed": 100.0 * g("placed") / max(g("objects"), 1),
+                    "complete": 100.0 * sum(c["placed"] == c["objects"] for c in rs) / len(rs),
+                    "support": 100.0 * g("support_held") / max(g("support"), 1),
+                    "all": 100.0 * g("held") / max(g("relations"), 1),
+                    "fallen": g("fallen"), "errors": sum("error" in c for c in rs),
+                    "obj_s": g("placed") / solve_s if solve_s else float("nan")}
+    return out
+
+
+def print_table(now: dict, before: dict | None, rev: str | None) -> None:
+    head = (f"{'corpus':18s} {'run':>8s} {'scenes':>6s} {'objects':>7s} {'placed%':>8s} "
+            f"{'complete%':>9s} {'support%':>8s} {'all%':>6s} {'fallen':>6s} {'obj/s':>7s}")
+    print(head)
+    print("-" * len(head))
+    for row in ROWS:
+        for label, res in (("now", now), (rev or "", before)):
+            if res is None or row not in summarize(res["cases"]):
+                continue
+            s = summarize(res["cases"])[row]
+            err = f"  ({s['errors']} crashed)" if s["errors"] else ""
+            print(f"{row if label == 'now' else '':18s} {label[:8]:>8s} {s['scenes']:6d} "
+                  f"{s['objects']:7d} {s['placed']:8.2f} {s['complete']:9.1f} {s['support']:8.2f} "
+                  f"{s['all']:6.2f} {s['fallen']:6d} {s['obj_s']:7.1f}{err}")
+    for label, res in (("now", now), (rev or "", before)):
+        if res is None:
+            continue
+        c = res["cost_of_failure"]
+        print(f"{'cost of failure' if label == 'now' else '':18s} {label[:8]:>8s}  "
+              f"study {c['base_s']:.2f} s, + wardrobe ON mug {c['impossible_s']:.2f} s: "
+              f"x{c['ratio']:.2f} (goal <= 3)")
+
+
+def baseline(rev: str, cases: list[dict], quick: bool) -> dict:
+    """Run the corpus with the package of ``rev`` (a temporary git worktree)."""
+    with tempfile.TemporaryDirectory(prefix="parse3d-baseline-") as tmp:
+        wt = Path(tmp) / "tree"
+        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), rev],
+                       check=True, capture_output=True)
+        try:
+            spec = Path(tmp) / "corpus.json"
+            spec.write_text(json.dumps({"cases": cases, "quick": quick}))
+            res = Path(tmp) / "result.json"
+            env = {**os.environ, "PYTHONPATH": str(wt / "src")}
+            subprocess.run([sys.executable, __file__, "--_run-corpus", str(spec), "--json",
+                            str(res)], check=True, env=env, cwd=str(wt))
+            return json.loads(res.read_text())
+        finally:
+            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)],
+                           check=False, capture_output=True)
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="a small corpus (minutes, not hours)")
+    ap.add_argument("--baseline-rev", metavar="REV",
+                    help="also run the same corpus with git revision REV, e.g. main")
+    ap.add_argument("--json", metavar="FILE", help="write every case's figures to FILE")
+    ap.add_argument("--failures", action="store_true", help="list every failed object")
+    ap.add_argument("--_run-corpus", dest="run_corpus", help=argparse.SUPPRESS)
+    args = ap.parse_args()
+    if args.run_corpus:  # the baseline's side: measure the given corpus with this package
+        spec = json.loads(Path(args.run_corpus).read_text())
+        res = run_all(spec["cases"], range(2) if spec["quick"] else range(5))
+        Path(args.json).write_text(json.dumps(res))
+        return
+    cases = corpus(args.quick)
+    now = run_all(cases, range(2) if args.quick else range(5))
+    before = baseline(args.baseline_rev, cases, args.quick) if args.baseline_rev else None
+    print_table(now, before, args.baseline_rev)
+    if args.failures:
+        for c in now["cases"]:
+            for f in c.get("failed", []) + ([c["error"]] if "error" in c else []):
+                print(f"{c['row']:16s} {c['name']:32s} seed {c['seed']}: {f}")
+    if args.json:
+        Path(args.json).write_text(json.dumps({"now": now, "before": before}, indent=1))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,642 @@
+"""Geometric checks of every relation, measured on posed geometry.
+
+One *check rule* per relation family, registered by relation name in :data:`CHECK_RULES`
+(:func:`check_rule`). The solver validates candidate poses with :func:`check_edge`, and the same
+rules re-check a scene after solving and after settling (``check_relations(scene,
+settled=True)``). Each check returns a :class:`Check`: whether the relation holds, the measured
+residuals and a short explanation.
+
+Tolerances (documented in docs/solver.md): contact distance within 2 mm (1 mm below), normal
+angles within 2 degrees, heights within 1 cm.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from types import MappingProxyType
+from typing import NamedTuple
+
+import numpy as np
+
+from ..geometry.frames import angle_between
+from ..geometry.surfaces import Surface, surface_from_bbox
+from ..pag.model import Edge
+from ..pag.refs import Ref
+from ..relations import RELATIONS, SURFACES
+from ..scene.model import PlacedObject, RelationCheck, Scene
+from .geometry import (
+    asset_geometry,
+    drop_distance,
+    enclosure_directions,
+    part_points,
+    ray_caster,
+)
+
+__all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "Check", "CheckContext",
+           "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
+           "world_points", "select_parts"]
+
+#: Gap left between surfaces in contact when placing (m): FCL then sees no collision.
+EPS = 5e-4
+#: Largest gap (m) that still counts as contact.
+DIST_TOL = 2e-3
+#: Deepest penetration (m) that still counts as contact.
+PENETRATION_TOL = 1e-3
+#: Largest angle (degrees) between normals that counts as parallel.
+ANGLE_TOL_DEG = 2.0
+_SIDE = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0), "right": (1.0, 0.0, 0.0),
+         "left": (-1.0, 0.0, 0.0)}
+
+
+class Check(NamedTuple):
+    """The result of checking one relation.
+
+    Attributes
+    ----------
+    holds : bool
+    residual : dict of str to float
+        What was measured (``distance`` in m, ``angle_deg``, ``offset``, ``enclosure``, ...).
+    detail : str
+        One line saying what was measured against what.
+    """
+
+    holds: bool
+    residual: dict
+    detail: str
+
+
+@dataclass(frozen=True)
+class CheckContext:
+    """What a check rule sees.
+
+    Attributes
+    ----------
+    scene : Scene
+        The scene the child is checked in (its placed objects and room).
+    edge : Edge
+        The relation.
+    child : PlacedObject
+        The child, placed or a candidate pose.
+    parent : PlacedObject or None
+        The parent object (None for room elements).
+    resolved : dict
+        The support the solver chose for a support relation (``parent_part``,
+        ``parent_element``, ``parent_surface``), empty when unknown.
+    settled : bool or None
+        Measure the settled poses (True), the solved ones (False) or whichever is newer (None).
+    """
+
+    scene: Scene
+    edge: Edge
+    child: PlacedObject
+    parent: PlacedObject | None
+    resolved: dict
+    settled: bool | None
+
+    def param(self, name: str):
+        return self.edge.param(name)
+
+
+CheckRule = Callable[[CheckContext], Check]
+_RULES: dict[str, CheckRule] = {}
+#: Relation name -> the rule that checks it (one rule per relation family).
+CHECK_RULES: MappingProxyType[str, CheckRule] = MappingProxyType(_RULES)
+
+
+def check_rule(*names: str) -> Callable[[CheckRule], CheckRule]:
+    """Register a check rule for the relations ``names`` (a decorator).
+
+    Raises
+    ------
+    ValueError
+        A name is not in the relation dictionary, or already has a rule.
+    """
+    def deco(fn: CheckRule) -> CheckRule:
+        for n in names:
+            if n not in RELATIONS:
+                raise ValueError(f"check rule {fn.__name__}: unknown relation {n!r}")
+            if n in _RULES:
+                raise ValueError(f"relation {n} already has a check rule ({_RULES[n].__name__})")
+            _RULES[n] = fn
+        return fn
+    return deco
+
+
+# ------------------------------------------------------------------------ geometry helpers
+def world_points(obj: PlacedObject, *, hull_only: bool = False, settled: bool | None = None,
+                 parts=None) -> np.ndarray:
+    """(N, 3) world points of an object (its convex hull, or its parts' piece vertices)."""
+    T = obj.transform(settled)
+    if hull_only and parts is None:
+        pts = asset_geometry(obj.asset).hull
+    else:
+        pts = part_points(parts if parts is not None else obj.asset.parts)
+    return pts @ T[:3, :3].T + T[:3, 3]
+
+
+def object_centroid(obj: PlacedObject, settled: bool | None = None) -> np.ndarray:
+    """World centre of the object's bounding box."""
+    T = obj.transform(settled)
+    return T[:3, :3] @ asset_geometry(obj.asset).center + T[:3, 3]
+
+
+def select_parts(obj: PlacedObject, ref: Ref) -> list:
+    """The parts a reference names: all parts without ``:part``, the label's parts in ``#k``
+    order (:meth:`parse3d.assets.model.Asset.parts_by_label`), or just the k-th."""
+    if ref.part is None:
+        return list(obj.asset.parts)
+    ps = obj.asset.parts_by_label(ref.part)
+    if ref.index is not None:
+        ps = ps[ref.index:ref.index + 1]
+    return ps
+
+
+def _surface(scene: Scene, obj: PlacedObject | None, ref: Ref, label: str,
+             settled: bool | None, part_name: str | None = None) -> Surface | None:
+    """World surface for a reference; None when it cannot be resolved."""
+    if ref.is_room_element:
+        el = scene.room.elements.get(part_name or ref.object)
+        return None if el is None else el.surface
+    if obj is None or obj.asset is None:
+        return None
+    T = obj.transform(settled)
+    if part_name is not None:
+        try:
+            return obj.asset.part(part_name).surfaces[label].transformed(T)
+        except KeyError:
+            return None
+    parts = select_parts(obj, ref)
+    if not parts:
+        return None
+    if ref.part is None:
+        return surface_from_bbox(label, asset_geometry(obj.asset).bounds).transformed(T)
+    return parts[0].surfaces[label].transformed(T)
+
+
+def _child_normal(obj: PlacedObject, label: str, settled) -> np.ndarray:
+    return obj.transform(settled)[:3, :3] @ np.array(SURFACES[label]) / obj.scale
+
+
+def _nearest_wall(scene: Scene, p: np.ndarray) -> str:
+    """The wall whose inner plane is closest to the point ``p`` (resolves ``wall``)."""
+    return min((n for n in scene.room.elements if n.startswith("wall_")),
+               key=lambda n: abs(float((p - scene.room.elements[n].surface.origin)
+                                       @ scene.room.elements[n].surface.normal)))
+
+
+def _frame(scene: Scene, name: str, settled, near: np.ndarray | None = None
+           ) -> tuple[np.ndarray, np.ndarray]:
+    """Centroid and frame (columns: right, front, up) of an object or room element."""
+    if name == "wall" and near is not None:
+        name = _nearest_wall(scene, near)
+    if name in scene.room.elements:
+        s = scene.room.elements[name].surface
+        up = np.array([0, 0, 1.0]) if abs(s.normal[2]) < 0.9 else np.array([0, 1.0, 0])
+        return s.origin, np.c_[np.cross(s.normal, up), s.normal, up]
+    o = scene.objects[name]
+    R = o.settled_rotation if (settled is not False and o.settled_rotation is not None) else o.rotation
+    return object_centroid(o, settled), R
+
+
+def _plane_dist(pts: np.ndarray, s: Surface) -> np.ndarray:
+    return (pts - s.origin) @ s.normal
+
+
+def _in_polygon(s: Surface, p3: np.ndarray) -> bool:
+    from shapely.geometry import Point, Polygon
+
+    d = p3 - s.origin
+    poly = s.polygon
+    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    pt = Point(float(d @ s.u), float(d @ s.v))
+    # holes do not count: an object on a rim spans the hole
+    return any(Polygon(p.exterior).distance(pt) <= 1e-3 for p in parts if not p.is_empty)
+
+
+def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> bool:
+    """Whether the centre of mass projects inside the convex hull of the child's lowest
+    points (its base), along the support normal ``n``."""
+    from ..geometry.regions import convex_footprint, inside_convex
+
+    pts = world_points(child, settled=settled)
+    h = pts @ n
+    base = pts[h <= h.min() + 3e-3]
+    u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
+    u /= np.linalg.norm(u)
+    v = np.cross(n, u)
+    hull = convex_footprint(np.c_[base @ u, base @ v])
+    return inside_convex(hull, np.array([com @ u, com @ v]), tol=2e-3)
+
+
+def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
+    """Fraction of rays from the child's centroid that hit the parent."""
+    T = parent.transform(settled)
+    Tinv = np.linalg.inv(T)
+    c = object_centroid(child, settled)
+    o = Tinv[:3, :3] @ c + Tinv[:3, 3]
+    dirs = enclosure_directions() @ Tinv[:3, :3].T
+    dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
+    hit = ray_caster(parent.asset).intersects_any(np.tile(o, (len(dirs), 1)), dirs)
+    return float(np.mean(hit))
+
+
+# ------------------------------------------------------------------- object-level rules
+@check_rule("NEAR", "FAR_FROM")
+def _check_distance(ctx: CheckContext) -> Check:
+    """Horizontal centroid distance (to a wall: distance to its plane) vs ``distance``."""
+    e = ctx.edge
+    xA = object_centroid(ctx.child, ctx.settled)
+    xB, RB = _frame(ctx.scene, e.parent.object, ctx.settled, near=xA)
+    if e.parent.is_room_element:
+        d = abs(float((xA - xB) @ RB[:, 1]))
+    else:
+        d = float(np.linalg.norm((xA - xB)[:2]))
+    lim = ctx.param("distance")
+    ok = d <= lim + 1e-6 if e.relation == "NEAR" else d >= lim - 1e-6
+    return Check(ok, {"distance": round(d, 5)}, f"centroid distance {d:.3f} m vs {lim} m")
+
+
+@check_rule("TOWARD")
+def _check_toward(ctx: CheckContext) -> Check:
+    """Horizontal angle between the child's front and the direction to the parent."""
+    xA = object_centroid(ctx.child, ctx.settled)
+    xB, _ = _frame(ctx.scene, ctx.edge.parent.object, ctx.settled, near=xA)
+    R = ctx.child.transform(ctx.settled)[:3, :3] / ctx.child.scale
+    f = (R @ np.array([0, 1.0, 0]))[:2]
+    to = (xB - xA)[:2]
+    ang = float(np.degrees(angle_between(np.r_[f, 0], np.r_[to, 0]))) \
+        if np.linalg.norm(to) > 1e-6 else 0.0
+    return Check(ang <= ctx.param("tolerance_deg") + 1e-6, {"angle_deg": round(ang, 3)},
+                 f"facing off by {ang:.1f} deg")
+
+
+def _side_offset(ctx: CheckContext) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """Child centroid, parent centroid, horizontal unit n_side and the offset along it."""
+    xA = object_centroid(ctx.child, ctx.settled)
+    xB, RB = _frame(ctx.scene, ctx.edge.parent.object, ctx.settled, near=xA)
+    n = RB @ np.array(_SIDE[ctx.param("side")])
+    n[2] = 0
+    n /= max(np.linalg.norm(n), 1e-9)
+    return xA, xB, n, float((xA - xB) @ n)
+
+
+@check_rule("SIDE_OF")
+def _check_side_of(ctx: CheckContext) -> Check:
+    """(x_A - x_B) . n_side > 0."""
+    _, _, _, proj = _side_offset(ctx)
+    side = ctx.param("side")
+    return Check(proj > 0, {"offset": round(proj, 5)}, f"offset {proj:.3f} m toward {side}")
+
+
+@check_rule("ALONG")
+def _check_along(ctx: CheckContext) -> Check:
+    """The child's centroid lies in the strip beside the parent's ``side`` face: from the face
+    outwards up to ``width`` along n_side, and within the parent's extent along the face,
+    ``|(x_A - x_B) . n_side^perp| <= e / 2`` (both horizontal; e the parent's extent along
+    n_side^perp)."""
+    xA, xB, n, proj = _side_offset(ctx)
+    pts = _parent_outline(ctx, xA)
+    hB = float(np.max((pts - xB) @ n))  # the face: the parent's extreme along n_side
+    perp = np.array([n[1], -n[0], 0.0])  # n_side x up
+    along = (pts - xB) @ perp
+    mid = 0.5 * float(along.max() + along.min())
+    half = 0.5 * float(along.max() - along.min())
+    lat = float((xA - xB) @ perp) - mid
+    w = ctx.param("width")
+    out = proj - hB
+    ok = -1e-3 <= out <= w + 1e-3 and abs(lat) <= half + 1e-3
+    return Check(ok, {"offset": round(out, 5), "lateral": round(lat, 5)},
+                 f"{out:.3f} m out from the {ctx.param('side')} face (strip 0-{w:.3f} m), "
+                 f"{abs(lat):.3f} m along it (half extent {half:.3f} m)")
+
+
+def _parent_outline(ctx: CheckContext, near: np.ndarray) -> np.ndarray:
+    """(N, 3) world points spanning the parent: its hull, or a wall's corners."""
+    if ctx.parent is not None:
+        return world_points(ctx.parent, hull_only=True, settled=ctx.settled)
+    name = ctx.edge.parent.object
+    if name == "wall":
+        name = _nearest_wall(ctx.scene, near)
+    s = ctx.scene.room.elements[name].surface
+    poly = s.polygon
+    geoms = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    return s.to_3d(np.vstack([np.asarray(g.exterior.coords) for g in geoms]))
+
+
+# ------------------------------------------------------------ part-level and support rules
+def _lowest(ctx: CheckContext) -> np.ndarray:
+    pts = world_points(ctx.child, settled=ctx.settled, parts=select_parts(ctx.child, ctx.edge.child))
+    return pts[np.argmin(pts[:, 2])]
+
+
+def _internal_surface(ctx: CheckContext) -> tuple[Surface, str] | str:
+    """The parent's internal support surface nearest the child's lowest point (IN) and the
+    part it belongs to, or why there is none."""
+    pobj, r = ctx.parent, ctx.resolved
+    T = pobj.transform(ctx.settled)
+    if r.get("parent_part"):
+        cands = [(s.surface.transformed(T), s.part) for s in pobj.asset.internal
+                 if s.part == r["parent_part"]]
+        if not cands:
+            return "internal surface missing"
+    else:
+        names = {p.name for p in select_parts(pobj, ctx.edge.parent)}
+        cands = [(s.surface.transformed(T), s.part) for s in pobj.asset.internal if s.part in names]
+        if not cands:
+            return "no internal surface"
+    low = _lowest(ctx)
+    return min(cands, key=lambda c: abs(float((low - c[0].origin) @ c[0].normal)))
+
+
+def _parent_surface(ctx: CheckContext) -> Surface | str:
+    """The parent surface a part-level or support relation (other than IN) refers to."""
+    e, r, scene = ctx.edge, ctx.resolved, ctx.scene
+    label = r.get("parent_surface") or e.parent.surface or e.spec.parent_surface
+    part_name = r.get("parent_part") or r.get("parent_element")
+    if e.parent.is_room_element:
+        part_name = r.get("parent_element") or (None if e.parent.object == "wall" else e.parent.object)
+        if part_name is None:  # "wall": the wall the child is closest to
+            pts = world_points(ctx.child, hull_only=True, settled=ctx.settled)
+            part_name = min((n for n in scene.room.elements if n.startswith("wall_")),
+                            key=lambda n: float(np.min(_plane_dist(pts, scene.room.elements[n].surface))))
+    sB = _surface(scene, ctx.parent, e.parent, label, ctx.settled, part_name)
+    return f"cannot resolve {e.parent}" if sB is None else sB
+
+
+def _target_surface(ctx: CheckContext) -> Surface | str:
+    if ctx.edge.relation == "IN" and ctx.parent is not None:
+        got = _internal_surface(ctx)
+        return got if isinstance(got, str) else got[0]
+    return _parent_surface(ctx)
+
+
+def _child_label(ctx: CheckContext) -> str:
+    return ctx.edge.child.surface or ctx.edge.spec.child_surface
+
+
+def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
+    """Contact of the child's named parts with ``sB``: the family ON, IN, HANGING_BELOW,
+    SECURED_TO and AGAINST (distance band and anti-parallel normals). Also returns whether
+    the normal tolerance was widened for a leaning object."""
+    e, child, pobj, settled = ctx.edge, ctx.child, ctx.parent, ctx.settled
+    rel = e.relation
+    parts = select_parts(child, e.child)
+    if not parts:
+        return Check(False, {}, f"child has no part {e.child.part!r}"), False
+    pts = world_points(child, settled=settled, parts=parts)
+    gap = float(_plane_dist(pts, sB).min())
+    if rel == "ON" and pobj is not None and gap < -PENETRATION_TOL:
+        # resting below the surface plane, inside the parent's hollow (a plate in a
+        # plate): the contact is the free drop onto the parent's geometry
+        d = drop_distance(world_points(child, hull_only=True, settled=settled), child.asset,
+                          child.transform(settled),
+                          world_points(pobj, hull_only=True, settled=settled), pobj.asset,
+                          pobj.transform(settled), -sB.normal)
+        if np.isfinite(d):
+            gap = d
+    pile = None
+    if rel in ("ON", "IN") and pobj is not None and gap > DIST_TOL:
+        pile = _resting_on_sibling(ctx, -sB.normal)
+        if pile is not None:
+            pile, gap = pile
+    target = 0.0
+    lo_t, hi_t = -PENETRATION_TOL, DIST_TOL
+    if rel == "AGAINST":
+        target = ctx.param("gap")
+    elif rel == "HANGING_BELOW":
+        lo_d, hi_d = ctx.param("drop")
+        lo_t, hi_t = lo_d - PENETRATION_TOL, hi_d + DIST_TOL
+    nA = _child_normal(child, _child_label(ctx), settled)
+    ang = float(np.degrees(angle_between(nA, -sB.normal)))
+    ang_tol = ANGLE_TOL_DEG
+    if rel == "ON":  # a leaning object stands on its support tilted by its lean angle
+        for le in ctx.scene.pag.edges_of(e.child.object):
+            if le.relation == "LEANING_AGAINST":
+                ang_tol = max(ang_tol, le.param("angle_deg")[1] + 1.0)
+    res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
+    ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
+    ok = ok and ang <= ang_tol
+    detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
+    if pile is not None:
+        detail += f", resting on {pile}"
+    return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
+
+
+def _resting_on_sibling(ctx: CheckContext, down: np.ndarray) -> tuple[str, float] | None:
+    """A pile: the placed object with the same support parent that the child rests on (the
+    free drop along ``down`` onto it is within contact distance), and that drop."""
+    child, settled, scene = ctx.child, ctx.settled, ctx.scene
+    pts = world_points(child, hull_only=True, settled=settled)
+    lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+    for oid, o in scene.objects.items():
+        if oid == child.id or not o.placed or o.asset is None:
+            continue
+        sup = scene.pag.supporter(oid)
+        if sup is None or sup.parent.object != ctx.edge.parent.object:
+            continue
+        q = world_points(o, hull_only=True, settled=settled)
+        if np.any(q[:, :2].min(axis=0) > hi) or np.any(q[:, :2].max(axis=0) < lo):
+            continue
+        d = drop_distance(pts, child.asset, child.transform(settled), q, o.asset,
+                          o.transform(settled), down)
+        if -PENETRATION_TOL <= d <= DIST_TOL:
+            return oid, float(d)
+    return None
+
+
+def _resolve_or_fail(ctx: CheckContext) -> Surface | Check:
+    sB = _target_surface(ctx)
+    return Check(False, {}, sB) if isinstance(sB, str) else sB
+
+
+@check_rule("ON")
+def _check_on(ctx: CheckContext) -> Check:
+    """Contact, anti-parallel normals, centre of mass over the support polygon and over the
+    child's own base."""
+    sB = _resolve_or_fail(ctx)
+    if isinstance(sB, Check):
+        return sB
+    c, leaning = _contact(ctx, sB)
+    if not c.holds:
+        return c
+    res = dict(c.residual)
+    com = ctx.child.transform(ctx.settled) @ np.r_[asset_geometry(ctx.child.asset).com, 1.0]
+    inside = _in_polygon(sB, com[:3])
+    res["com_inside"] = float(inside)
+    if not inside:
+        return Check(False, res, "centre of mass outside the support polygon")
+    if not leaning and not _stands(ctx.child, com[:3], sB.normal, ctx.settled):
+        # and over the child's own footprint on it, or it would tip (an arc lamp)
+        res["com_inside"] = 0.0
+        return Check(False, res, "centre of mass outside the object's own base: it would tip over")
+    return Check(True, res, c.detail)
+
+
+#: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.
+OPEN_SUPPORT_LABELS = frozenset({"shelf"})
+
+
+@check_rule("IN")
+def _check_in(ctx: CheckContext) -> Check:
+    """Contact with an internal support surface of the parent (or a pile on it); then, on a
+    shelf part, the child's centroid inside the parent's bounding-box footprint, and in any
+    other container a ray-cast enclosure >= ``min_enclosure``."""
+    pobj = ctx.parent
+    if pobj is None:
+        return Check(False, {}, "IN needs an object parent")
+    got = _internal_surface(ctx)
+    if isinstance(got, str):
+        return Check(False, {}, got)
+    sB, part = got
+    c, _ = _contact(ctx, sB)
+    if not c.holds:
+        return c
+    label = next((p.label for p in pobj.asset.parts if p.name == part), part)
+    if label in OPEN_SUPPORT_LABELS:
+        Ti = np.linalg.inv(pobj.transform(ctx.settled))
+        x = Ti[:3, :3] @ object_centroid(ctx.child, ctx.settled) + Ti[:3, 3]
+        b = asset_geometry(pobj.asset).bounds
+        tol = 1e-3 / pobj.scale
+        inside = bool(np.all(x[:2] >= b[0, :2] - tol) and np.all(x[:2] <= b[1, :2] + tol))
+        res = dict(c.residual, inside_footprint=float(inside))
+        return Check(inside, res, f"{c.detail}; on the open {label} {part}, centroid "
+                     f"{'inside' if inside else 'outside'} {ctx.edge.parent.object}'s footprint")
+    enc = _enclosure(ctx.child, pobj, ctx.settled)
+    res = dict(c.residual, enclosure=round(enc, 4))
+    return Check(enc >= ctx.param("min_enclosure") - 1e-9, res, f"{c.detail}; enclosure {enc:.2f}")
+
+
+@check_rule("HANGING_BELOW", "AGAINST")
+def _check_contact(ctx: CheckContext) -> Check:
+    """The named part at ``drop`` (HANGING_BELOW) or ``gap`` (AGAINST) from the parent
+    surface, normals anti-parallel."""
+    sB = _resolve_or_fail(ctx)
+    if isinstance(sB, Check):
+        return sB
+    return _contact(ctx, sB)[0]
+
+
+@check_rule("SECURED_TO")
+def _check_secured(ctx: CheckContext) -> Check:
+    """Contact, anti-parallel normals and the centre's height within ``height``."""
+    sB = _resolve_or_fail(ctx)
+    if isinstance(sB, Check):
+        return sB
+    c, _ = _contact(ctx, sB)
+    if not c.holds:
+        return c
+    zc = float(object_centroid(ctx.child, ctx.settled)[2])
+    lo, hi = ctx.param("height")
+    return Check(lo - 0.01 <= zc <= hi + 0.01, dict(c.residual, height=round(zc, 4)),
+                 f"centre at {zc:.2f} m")
+
+
+@check_rule("LEANING_AGAINST")
+def _check_leaning(ctx: CheckContext) -> Check:
+    """The named part touches the parent plane (-1...+2 mm), its named surface faces the
+    parent (normals anti-parallel within the tilt + 2 deg), and the up axis is tilted from
+    vertical by ``angle_deg`` (+-1 deg)."""
+    sB = _resolve_or_fail(ctx)
+    if isinstance(sB, Check):
+        return sB
+    child, settled = ctx.child, ctx.settled
+    parts = select_parts(child, ctx.edge.child)
+    if not parts:
+        return Check(False, {}, f"child has no part {ctx.edge.child.part!r}")
+    gap = float(_plane_dist(world_points(child, settled=settled, parts=parts), sB).min())
+    whole = float(_plane_dist(world_points(child, settled=settled), sB).min())
+    up = child.transform(settled)[:3, :3] @ np.array([0, 0, 1.0]) / child.scale
+    tilt = float(np.degrees(angle_between(up, [0, 0, 1.0])))
+    face = float(np.degrees(angle_between(_child_normal(child, _child_label(ctx), settled),
+                                          -sB.normal)))
+    lo, hi = ctx.param("angle_deg")
+    res = {"distance": round(gap, 6), "angle_deg": round(tilt, 4), "facing_deg": round(face, 4)}
+    touches = -PENETRATION_TOL <= gap <= DIST_TOL
+    ok = touches and lo - 1.0 <= tilt <= hi + 1.0 and face <= hi + ANGLE_TOL_DEG
+    detail = f"{ctx.edge.child} {gap * 1000:.2f} mm from the parent, tilt {tilt:.1f} deg"
+    if not touches and gap > DIST_TOL and whole < gap - DIST_TOL:
+        detail += f" (another part touches it; the named part is {1000 * (gap - whole):.0f} mm off)"
+    return Check(ok, res, detail)
+
+
+@check_rule("ALIGNED_WITH", "OPPOSITE_TO", "PARALLEL_TO")
+def _check_planes(ctx: CheckContext) -> Check:
+    """Normals parallel (anti-parallel for OPPOSITE_TO); coplanar except PARALLEL_TO."""
+    sB = _resolve_or_fail(ctx)
+    if isinstance(sB, Check):
+        return sB
+    rel = ctx.edge.relation
+    label = _child_label(ctx)
+    nA = _child_normal(ctx.child, label, ctx.settled)
+    sign = 1.0 if rel in ("ALIGNED_WITH", "PARALLEL_TO") else -1.0
+    ang = float(np.degrees(angle_between(nA, sign * sB.normal)))
+    res = {"angle_deg": round(ang, 4)}
+    if rel == "PARALLEL_TO":
+        return Check(ang <= ANGLE_TOL_DEG, res, f"normals off by {ang:.2f} deg")
+    # coplanar: the child's surface plane passes through the parent's plane
+    sA = _surface(ctx.scene, ctx.child, ctx.edge.child, label, ctx.settled)
+    off = float((sA.origin - sB.origin) @ sB.normal) if sA is not None else float("inf")
+    res["distance"] = round(off, 6)
+    ok = ang <= ANGLE_TOL_DEG and abs(off) <= DIST_TOL
+    return Check(ok, res, f"planes {off * 1000:.2f} mm apart, normals off by {ang:.2f} deg")
+
+
+# ------------------------------------------------------------------------------ entry points
+def check_edge(scene: Scene, edge: Edge, child: PlacedObject, *, resolved: dict | None = None,
+               settled: bool | None = None) -> Check:
+    """Check one relation of ``child`` (a placed or candidate object).
+
+    Parameters
+    ----------
+    scene : Scene
+    edge : Edge
+    child : PlacedObject
+        Placed, or a candidate pose the solver is validating.
+    resolved : dict, optional
+        The support chosen for a support relation (keys ``parent_part``, ``parent_element``,
+        ``parent_surface``).
+    settled : bool, optional
+        True: the settled poses; False: the solved ones; None: whichever is newer.
+
+    Returns
+    -------
+    Check
+        ``(holds, residual, detail)``.
+    """
+    pobj = None if edge.parent.is_room_element else scene.objects.get(edge.parent.object)
+    if pobj is not None and not pobj.placed:
+        return Check(False, {}, "parent not placed")
+    rule = _RULES.get(edge.relation)
+    if rule is None:
+        return Check(False, {}, f"unknown relation {edge.relation}")
+    return rule(CheckContext(scene, edge, child, pobj, resolved or {}, settled))
+
+
+def check_relations(scene: Scene, *, settled: bool = False,
+                    known: dict[int, tuple] | None = None) -> list[RelationCheck]:
+    """Check every PAG relation on the solved (or settled) poses.
+
+    When ``settled`` is True the results go into ``holds_settled`` / ``residual_settled`` of
+    the scene's existing checks (created if missing) and the list is returned. ``known`` maps
+    relation indices to results already measured on the same poses (the solver's own).
+    """
+    resolved = {int(k): v for k, v in scene.meta.get("resolved", {}).items()}
+    existing = {c.index: c for c in scene.relations}
+    out = []
+    for i, e in enumerate(scene.pag.relations):
+        child = scene.objects.get(e.child.object)
+        c = existing.get(i) or RelationCheck(i, e.relation, str(e.child), str(e.parent), None)
+        if child is None or not child.placed:
+            holds, res, detail = None, {}, "child not placed"
+        elif known is not None and i in known:  # measured already, on the same pose
+            holds, res, detail = known[i]
+        else:
+            holds, res, detail = check_edge(scene, e, child, resolved=resolved.get(i),
+                                            settled=settled)
+        if settled:
+            c.holds_settled, c.residual_settled = holds, res
+        else:
+            c.holds, c.residual, c.detail = holds, res, detail
+        out.append(c)
+    return out

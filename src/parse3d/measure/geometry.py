@@ -1,0 +1,130 @@
+"""Per-asset geometry that relation checks and the solver need, cached per asset: hull points,
+centre of mass, bounds, ray casters."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from scipy.spatial import ConvexHull, QhullError
+
+from ..assets.model import Asset, Part
+
+__all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster", "enclosure_directions",
+           "drop_distance"]
+
+
+@dataclass
+class AssetGeometry:
+    """Scale-free geometry of an asset in its own frame.
+
+    Attributes
+    ----------
+    hull : (N, 3) float
+        Vertices of the convex hull of all collision pieces.
+    com : (3,) float
+        Centre of mass (collision volume).
+    center : (3,) float
+        Bounding-box centre.
+    bounds : (2, 3) float
+        Bounding box of the visual mesh.
+    """
+
+    hull: np.ndarray
+    com: np.ndarray
+    center: np.ndarray
+    bounds: np.ndarray
+
+    @property
+    def size(self) -> float:
+        return float((self.bounds[1] - self.bounds[0]).max())
+
+
+_GEOM: dict[str, AssetGeometry] = {}
+
+
+def asset_geometry(asset: Asset) -> AssetGeometry:
+    g = _GEOM.get(asset.asset_id)
+    if g is None or len(_GEOM) > 4096:
+        if len(_GEOM) > 4096:
+            _GEOM.clear()
+        pts = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces] or
+                        [p.mesh.vertices for p in asset.parts])
+        try:
+            hull = pts[ConvexHull(pts).vertices]
+        except (QhullError, ValueError):  # flat assets (a rug's outline): keep every point
+            hull = pts
+        # centre of mass of the closed pieces by the divergence theorem, all in one pass:
+        # each triangle with the origin spans a signed tetrahedron
+        tris = [pc.vertices[pc.faces] for p in asset.parts for pc in p.pieces]
+        if tris:
+            T = np.concatenate(tris)
+            v = np.einsum("ij,ij->i", T[:, 0], np.cross(T[:, 1], T[:, 2])) / 6.0
+            vol = float(v.sum())
+            com = (v[:, None] * T.sum(axis=1) / 4.0).sum(axis=0) / vol if abs(vol) > 1e-12 \
+                else asset.bounds.mean(axis=0)
+        else:
+            com = asset.bounds.mean(axis=0)
+        b = asset.bounds
+        g = AssetGeometry(np.asarray(hull), np.asarray(com), b.mean(axis=0), b)
+        _GEOM[asset.asset_id] = g
+    return g
+
+
+def part_points(parts: list[Part]) -> np.ndarray:
+    """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
+    pts = [pc.vertices for p in parts for pc in p.pieces] or [p.mesh.vertices for p in parts]
+    return np.vstack(pts)
+
+
+_CASTERS: dict[str, object] = {}
+
+
+def ray_caster(asset: Asset):
+    """A cached ray intersector over the asset's mesh (asset frame, unit scale)."""
+    c = _CASTERS.get(asset.asset_id)
+    if c is None:
+        if len(_CASTERS) > 512:
+            _CASTERS.clear()
+        m = asset.mesh()
+        try:
+            from trimesh.ray.ray_pyembree import RayMeshIntersector
+        except ImportError:  # pragma: no cover - embree is a declared dependency
+            from trimesh.ray.ray_triangle import RayMeshIntersector
+        c = RayMeshIntersector(m)
+        _CASTERS[asset.asset_id] = c
+    return c
+
+
+@lru_cache(maxsize=1)
+def enclosure_directions() -> np.ndarray:
+    """(9, 3) unit rays for the IN enclosure test: 8 horizontal and straight up."""
+    a = np.linspace(0, 2 * np.pi, 8, endpoint=False)
+    d = np.c_[np.cos(a), np.sin(a), np.zeros(8)]
+    return np.vstack([d, [0, 0, 1.0]])
+
+
+def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray,
+                  parent_pts: np.ndarray, parent_asset: Asset, T_parent: np.ndarray,
+                  down: np.ndarray) -> float:
+    """How far the child can move along ``down`` before touching the parent (inf: never).
+
+    Rays from the child's points along ``down`` against the parent's mesh, and from the
+    parent's points against ``-down`` against the child's mesh (both exact, by ray casting).
+    Points are world-frame; ``T_*`` are asset-to-world similarity transforms.
+    """
+    best = np.inf
+    for pts, d, asset, T in ((child_pts, down, parent_asset, T_parent),
+                             (parent_pts, -down, child_asset, T_child)):
+        Ti = np.linalg.inv(T)
+        o = pts @ Ti[:3, :3].T + Ti[:3, 3]
+        v = Ti[:3, :3] @ d
+        scale = np.linalg.norm(v)
+        v = v / scale
+        locs, idx, _ = ray_caster(asset).intersects_location(o, np.tile(v, (len(o), 1)),
+                                                             multiple_hits=False)
+        if len(idx):
+            dist = np.linalg.norm(locs - o[idx], axis=1) / scale
+            best = min(best, float(dist.min()))
+    return best

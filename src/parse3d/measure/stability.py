@@ -1,0 +1,232 @@
+"""Post-settle verification: which objects fell, tipped, left their support or broke their
+support relation while the scene settled.
+
+The definitions (docs/solver.md, "Verification after settling"), for every placed object that
+settling moved freely (``fixed`` objects are held kinematic and never reported):
+
+``fell``
+    its origin dropped more than ``fall_distance`` (default 5 cm);
+``tipped``
+    its up axis turned more than ``tip_angle_deg`` (default 15 degrees) away from its solved up
+    axis;
+``left_support``
+    settling found no contact within ``contact_threshold`` (default 1 mm) between it and the
+    part that supported it (the ``left_support`` flag :func:`parse3d.physics.settle` sets from
+    its part-level contact extraction);
+``broke_support``
+    it still touches its supporter, but its support relation no longer holds on the settled
+    poses (centre of mass off the support polygon, tilted off the surface, out of the
+    enclosure, ...), measured by the relation's check rule.
+
+The thresholds default to the ones the scene was settled with (``scene.meta["settle"]``).
+
+>>> from parse3d.measure import INSTABILITY_CAUSES
+>>> INSTABILITY_CAUSES
+('fell', 'tipped', 'left_support', 'broke_support')
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..scene.model import Scene
+from .checks import check_edge
+
+__all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by",
+           "SettledSummary", "summarize_settled"]
+
+#: The causes :func:`verify_settled` reports, in the order it reports them per object.
+INSTABILITY_CAUSES = ("fell", "tipped", "left_support", "broke_support")
+_DEFAULTS = {"fall_distance": 0.05, "tip_angle_deg": 15.0}
+
+
+@dataclass(frozen=True)
+class Instability:
+    """One way one object did not stay where the solver put it.
+
+    Attributes
+    ----------
+    object_id : str
+    cause : str
+        One of :data:`INSTABILITY_CAUSES`.
+    detail : str
+        One line with what was measured, e.g. ``"dropped 0.412 m (more than 0.05 m)"``.
+    value : float
+        The measured quantity: the drop (m) for ``fell``, the tilt (degrees) for ``tipped``,
+        NaN otherwise.
+    relation : int or None
+        Index of the broken support relation in ``scene.pag.relations`` (``broke_support``).
+    carries : tuple of str
+        Placed objects it supports, directly or through others (they move with it).
+    """
+
+    object_id: str
+    cause: str
+    detail: str
+    value: float = float("nan")
+    relation: int | None = None
+    carries: tuple[str, ...] = ()
+
+    def to_dict(self) -> dict:
+        d = {"object": self.object_id, "cause": self.cause, "detail": self.detail}
+        if np.isfinite(self.value):
+            d["value"] = round(float(self.value), 6)
+        if self.relation is not None:
+            d["relation"] = self.relation
+        if self.carries:
+            d["carries"] = list(self.carries)
+        return d
+
+
+def supported_by(scene: Scene, object_id: str) -> tuple[str, ...]:
+    """Placed objects whose chain of support relations passes through ``object_id``, in
+    scene order."""
+    out = []
+    for oid, o in scene.objects.items():
+        if oid == object_id or not o.placed:
+            continue
+        seen = {oid}
+        e = scene.pag.supporter(oid)
+        while e is not None and not e.parent.is_room_element:
+            p = e.parent.object
+            if p == object_id:
+                out.append(oid)
+                break
+            if p in seen:
+                break
+            seen.add(p)
+            e = scene.pag.supporter(p)
+    return tuple(out)
+
+
+def verify_settled(scene: Scene, *, fall_distance: float | None = None,
+                   tip_angle_deg: float | None = None) -> list[Instability]:
+    """Report every object that fell, tipped, left its support or broke its support relation.
+
+    Parameters
+    ----------
+    scene : Scene
+        A settled scene (``parse3d.physics.settle`` has run: settled poses and flags are set).
+    fall_distance : float, optional
+        Metres; default: the settling run's ``fall_distance`` (0.05).
+    tip_angle_deg : float, optional
+        Degrees; default: the settling run's ``tip_angle_deg`` (15).
+
+    Returns
+    -------
+    list of Instability
+        In scene order, causes per object in :data:`INSTABILITY_CAUSES` order; empty when the
+        scene stayed as solved.
+
+    Raises
+    ------
+    ValueError
+        The scene has not been settled.
+    """
+    if not scene.settled:
+        raise ValueError("verify_settled needs a settled scene: run parse3d.physics.settle first")
+    cfg = dict(_DEFAULTS)
+    cfg.update({k: v for k, v in scene.meta.get("settle", {}).get("config", {}).items()
+                if k in cfg})
+    fall = cfg["fall_distance"] if fall_distance is None else float(fall_distance)
+    tip = cfg["tip_angle_deg"] if tip_angle_deg is None else float(tip_angle_deg)
+    resolved = {int(k): v for k, v in scene.meta.get("resolved", {}).items()}
+    settled_checks = {c.index: c for c in scene.relations}
+    index = {id(e): i for i, e in enumerate(scene.pag.relations)}
+    out: list[Instability] = []
+    for oid, o in scene.objects.items():
+        if not o.placed or o.fixed or o.settled_position is None:
+            continue
+        found: list[Instability] = []
+        drop = float(o.position[2] - o.settled_position[2])
+        if drop > fall:
+            found.append(Instability(oid, "fell", f"dropped {drop:.3f} m (more than {fall} m)",
+                                     drop))
+        up0 = np.asarray(o.rotation)[:, 2]
+        up1 = np.asarray(o.settled_rotation)[:, 2]
+        tilt = float(np.degrees(np.arccos(np.clip(up0 @ up1 / (np.linalg.norm(up0) *
+                                                              np.linalg.norm(up1)), -1, 1))))
+        if tilt > tip:
+            found.append(Instability(oid, "tipped", f"up axis turned {tilt:.1f} deg "
+                                     f"(more than {tip} deg)", tilt))
+        edge = scene.pag.supporter(oid)
+        if "left_support" in o.flags:
+            found.append(Instability(oid, "left_support",
+                                     f"no longer touches {edge.parent if edge else 'its support'}"))
+        elif edge is not None:
+            i = index[id(edge)]
+            parent = scene.objects.get(edge.parent.object)
+            if parent is None or parent.placed:
+                c = settled_checks.get(i)
+                holds, detail = True, ""
+                if c is None or c.holds_settled is not True:  # measure it (and say why)
+                    holds, _, detail = check_edge(scene, edge, o, resolved=resolved.get(i),
+                                                  settled=True)
+                if not holds:
+                    found.append(Instability(oid, "broke_support",
+                                             f"{edge.relation} {edge.child} -> {edge.parent}: "
+                                             f"{detail}", relation=i))
+        if found:
+            carries = supported_by(scene, oid)
+            out.extend(Instability(f.object_id, f.cause, f.detail, f.value, f.relation, carries)
+                       for f in found)
+    return out
+
+
+@dataclass(frozen=True)
+class SettledSummary:
+    """Counts that say whether a solved and settled scene is what its PAG asked for.
+
+    Attributes
+    ----------
+    objects, placed : int
+    support_total, support_held : int
+        Support relations (ON, IN, HANGING_BELOW, SECURED_TO) of placed children, and those
+        that hold on the settled poses.
+    other_total, other_held : int
+        The same for every other relation.
+    unstable : int
+        Objects :func:`verify_settled` reports (any cause).
+    """
+
+    objects: int
+    placed: int
+    support_total: int
+    support_held: int
+    other_total: int
+    other_held: int
+    unstable: int
+
+    @property
+    def complete(self) -> bool:
+        """Every object placed."""
+        return self.placed == self.objects
+
+    @property
+    def other_fraction(self) -> float:
+        return self.other_held / self.other_total if self.other_total else 1.0
+
+    def keeps_relations(self, other: float = 0.95) -> bool:
+        """Every support relation and at least ``other`` of the rest hold after settling."""
+        return self.support_held == self.support_total and self.other_fraction >= other
+
+
+def summarize_settled(scene: Scene) -> SettledSummary:
+    """Count placed objects, relations holding after settling and unstable objects.
+
+    A relation of an unplaced child counts as not holding.
+    """
+    if not scene.settled:
+        raise ValueError("summarize_settled needs a settled scene: run parse3d.physics.settle first")
+    held = {c.index: c.holds_settled for c in scene.relations}
+    st, sh, ot, oh = 0, 0, 0, 0
+    for i, e in enumerate(scene.pag.relations):
+        ok = held.get(i) is True
+        if e.is_support:
+            st, sh = st + 1, sh + ok
+        else:
+            ot, oh = ot + 1, oh + ok
+    return SettledSummary(len(scene.objects), sum(o.placed for o in scene.objects.values()),
+                          st, sh, ot, oh, len({i.object_id for i in verify_settled(scene)}))
