@@ -91,3 +91,61 @@ def register(app: typer.Typer) -> None:
         if res.rendered:
             console.print(f"  rendered views for {res.rendered} scenes into {out}/renders/")
         console.print(f"  card: {out}/vlm.json")
+
+    @vlm.command("eval")
+    def eval_cmd(
+        gt: Path = typer.Option(..., "--gt", help="Benchmark split (VLM_DIR/test.jsonl)."),
+        pred: list[Path] = typer.Option(..., "--pred",
+                                        help="Prediction JSONL ({id, response} per line); "
+                                             "repeat to compare several."),
+        allow_missing: bool = typer.Option(False, "--allow-missing",
+                                           help="Score missing ids as wrong instead of "
+                                                "refusing."),
+        iou: float = typer.Option(0.5, "--iou", help="IoU threshold of SGG box matching."),
+        as_json: bool = typer.Option(False, "--json", help="Print the metrics as JSON."),
+    ) -> None:
+        """Score predictions: MCQ accuracy, SGG recall/precision/F1 with and without box
+        matching, as the paper's Table 2 (Markdown), or --json.
+
+        Example: parse3d vlm eval --gt out/mini-vlm/test.jsonl --pred out/qwen3vl.jsonl
+        """
+        from ..vlm.build import read_jsonl
+        from ..vlm.evaluate import evaluate, evaluate_files, markdown_table, read_predictions
+
+        if not 0 < iou <= 1:
+            raise InputError(Problem("", "--iou must be in (0, 1]", "--iou", "parameter"))
+        reports = []
+        for p in pred:
+            if iou == 0.5:
+                reports.append(evaluate_files(gt, p, allow_missing=allow_missing))
+            else:
+                rep = evaluate(read_jsonl(gt), read_predictions(p), model=p.stem, iou=iou)
+                reports.append(rep)
+        if as_json:
+            print_json([r.to_dict() for r in reports] if len(reports) > 1
+                       else reports[0].to_dict())
+            return
+        typer.echo(markdown_table(reports))
+
+    @vlm.command("baseline")
+    def baseline_cmd(
+        name: str = typer.Argument(..., help="random, prior, blind, oracle or perturbed."),
+        data: Path = typer.Option(..., "--data", help="Benchmark split (VLM_DIR/test.jsonl)."),
+        out: Path = typer.Option(..., "--out", "-o", help="Prediction JSONL to write."),
+        seed: int = typer.Option(0, "--seed", help="Seed (random, perturbed)."),
+        dataset: Path = typer.Option(None, "--dataset",
+                                     help="The dataset folder if it moved (oracle)."),
+    ) -> None:
+        """Write a baseline's predictions for a split; score them with parse3d vlm eval.
+
+        Example: parse3d vlm baseline oracle --data out/mini-vlm/test.jsonl --out oracle.jsonl
+        """
+        import json
+
+        from ..vlm.baselines import run_baseline
+
+        answers = run_baseline(name, data, seed=seed, dataset=dataset)
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text("".join(json.dumps({"id": k, "response": v}) + "\n"
+                               for k, v in answers.items()))
+        console.print(f"{name}: {len(answers)} predictions -> {out}")
