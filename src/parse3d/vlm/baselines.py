@@ -15,7 +15,8 @@ prediction JSONL a model produces, so ``parse3d vlm eval`` scores them like any 
   with boxes projected from the 3-D boxes. Scores 100% on every task when every question
   has exactly one true option.
 * ``perturbed`` — the oracle with 20% of MCQ answers changed to a wrong letter, 20% of
-  SGG boxes shifted by 60% of their width (IoU < 0.5) and 20% of triplets dropped.
+  SGG boxes shifted right by 60% of their width (IoU < 0.5) and 20% of triplets dropped
+  (exactly ``ceil(0.2 n)`` of each, drawn over the whole file).
 """
 
 from __future__ import annotations
@@ -163,23 +164,37 @@ def _oracle(rows, data: Path, dataset: Path | None) -> dict[str, str]:
     return out
 
 
-def _perturb(rows, answers: dict[str, str], rng: np.random.Generator) -> dict[str, str]:
+def _pick(n: int, share: float, rng: np.random.Generator) -> set[int]:
+    """Exactly ``ceil(share * n)`` of ``range(n)``."""
+    k = int(math.ceil(share * n)) if n else 0
+    return {int(i) for i in rng.choice(n, k, replace=False)} if k else set()
+
+
+def _perturb(rows, answers: dict[str, str], rng: np.random.Generator,
+             share: float = 0.2) -> dict[str, str]:
+    mcq = [r["id"] for r in rows if r["task"] != "sgg" and answers[r["id"]] in LETTERS]
+    flip = {mcq[i] for i in _pick(len(mcq), share, rng)}
+    graphs = {r["id"]: parse_scene_graph(answers[r["id"]]) for r in rows if r["task"] == "sgg"}
+    boxes = [(k, i) for k, (objs, _) in graphs.items() for i in range(len(objs))]
+    trips = [(k, i) for k, (_, t) in graphs.items() for i in range(len(t))]
+    jitter = {boxes[i] for i in _pick(len(boxes), share, rng)}
+    drop = {trips[i] for i in _pick(len(trips), share, rng)}
     out = {}
     for r in rows:
         a = answers[r["id"]]
         if r["task"] != "sgg":
-            if a in LETTERS and rng.random() < 0.2:
+            if r["id"] in flip:
                 a = LETTERS[(LETTERS.index(a) + int(rng.integers(1, 4))) % 4]
             out[r["id"]] = a
             continue
-        objs, trip = parse_scene_graph(a)
-        for o in objs:
-            if rng.random() < 0.2:
+        objs, trip = graphs[r["id"]]
+        for i, o in enumerate(objs):
+            if (r["id"], i) in jitter:
                 x1, y1, x2, y2 = o["box"]
                 dx = 0.6 * (x2 - x1) + 1
                 o["box"] = [x1 + dx, y1, x2 + dx, y2]
             o["box"] = [int(round(v)) for v in o["box"]]
-        trip = [t for t in trip if rng.random() >= 0.2]
+        trip = [t for i, t in enumerate(trip) if (r["id"], i) not in drop]
         out[r["id"]] = _sgg_text(objs, trip)
     return out
 
