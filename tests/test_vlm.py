@@ -6,11 +6,17 @@ session and turned into a benchmark once; every test reads those files.
 
 from __future__ import annotations
 
+import base64
+import io
 import json
 import shutil
+import socket
+import threading
 from collections import Counter
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 
+import numpy as np
 import pytest
 from PIL import Image
 from typer.testing import CliRunner
@@ -304,3 +310,155 @@ def test_eval_bad_predictions(bench, tmp_path, capsys):
     pred.write_text("{not json\n")
     code, out = _main(capsys, "vlm", "eval", "--gt", test, "--pred", pred)
     assert code == 2 and "not valid JSON" in out
+
+
+# -- model client ------------------------------------------------------------------------
+
+
+class _Chat(BaseHTTPRequestHandler):
+    """An OpenAI-compatible chat endpoint: checks the request, fails the first calls (503)."""
+
+    state: dict = {}
+
+    def log_message(self, *args):  # keep the test output clean
+        pass
+
+    def do_POST(self):  # noqa: N802 - http.server's name
+        st = self.state
+        body = json.loads(self.rfile.read(int(self.headers["Content-Length"])))
+        with st["lock"]:
+            st["calls"] += 1
+            fail = st["fail"] > 0
+            st["fail"] -= 1 if fail else 0
+        if self.path != "/v1/chat/completions" or body.get("model") != "tiny-vl":
+            return self._send(404, {"error": {"message": "no such model"}})
+        if fail:
+            return self._send(503, {"error": {"message": "overloaded"}})
+        (msg,) = body["messages"]
+        kinds = [p["type"] for p in msg["content"]]
+        assert msg["role"] == "user" and kinds == ["image_url", "text"]
+        url = msg["content"][0]["image_url"]["url"]
+        head, data = url.split(",", 1)
+        assert head == "data:image/jpeg;base64"
+        Image.open(io.BytesIO(base64.b64decode(data))).verify()
+        text = msg["content"][1]["text"]
+        with st["lock"]:
+            st["answered"].append(text)
+        reply = ("Objects:\ndesk#1 <|box_start|>0, 0, 500, 500<|box_end|>\nRelations:\n"
+                 if text.startswith("Detect") else "The answer is (B).")
+        self._send(200, {"id": "x", "object": "chat.completion", "model": body["model"],
+                         "choices": [{"index": 0, "finish_reason": "stop",
+                                      "message": {"role": "assistant", "content": reply}}],
+                         "usage": {"prompt_tokens": 100, "completion_tokens": 5,
+                                   "total_tokens": 105}})
+
+    def _send(self, code, doc):
+        data = json.dumps(doc).encode()
+        self.send_response(code)
+        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Length", str(len(data)))
+        self.end_headers()
+        self.wfile.write(data)
+
+
+@pytest.fixture
+def server():
+    _Chat.state = {"calls": 0, "fail": 2, "answered": [], "lock": threading.Lock()}
+    httpd = ThreadingHTTPServer(("127.0.0.1", 0), _Chat)
+    t = threading.Thread(target=httpd.serve_forever, daemon=True)
+    t.start()
+    yield f"http://127.0.0.1:{httpd.server_address[1]}/v1", _Chat.state
+    httpd.shutdown()
+    httpd.server_close()
+
+
+def test_ask_endpoint_retries_resumes_and_scores(bench, server, tmp_path, capsys):
+    url, state = server
+    test = bench / "test.jsonl"
+    rows = read_jsonl(test)
+    out = tmp_path / "pred.jsonl"
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl", "--data",
+                       test, "--out", out, "--limit", 3, "--backoff", 0.01, "-j", 2, "--json")
+    assert code == 0, text
+    first = json.loads(text[text.index("{"):])
+    assert first["answered"] == 3 and first["retries"] >= 2
+    assert first["prompt_tokens"] == 300 and first["latency_s"]["p95"] > 0
+    # an interrupted run (here: --limit) resumes: only the rest is asked
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl", "--data",
+                       test, "--out", out, "--backoff", 0.01, "--price-in", 1.0)
+    assert code == 0, text
+    assert f"{len(rows) - 3} answered, 3 already there" in text and "cost $" in text
+    preds = read_jsonl(out)
+    assert sorted(p["id"] for p in preds) == sorted(r["id"] for r in rows)
+    assert len(state["answered"]) == len(rows)
+    # the prompt went without the answer, and the predictions score
+    assert all("Your answer should only be" in t or t.startswith("Detect")
+               for t in state["answered"])
+    code, text = _main(capsys, "vlm", "eval", "--gt", test, "--pred", out, "--json")
+    assert code == 0
+    d = json.loads(text)
+    assert d["unparseable"]["count"] == 0 and d["relation_mcq"]["n"] > 0
+
+
+def test_ask_bad_endpoint_and_arguments(bench, server, tmp_path, capsys):
+    url, _ = server
+    test = bench / "test.jsonl"
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        closed = s.getsockname()[1]
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", f"http://127.0.0.1:{closed}/v1",
+                       "--model", "m", "--data", test, "--out", tmp_path / "p.jsonl",
+                       "--retries", 1, "--backoff", 0.01)
+    assert code == 2 and "Traceback" not in text
+    assert "cannot connect" in text and "--endpoint" in text
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "wrong", "--data",
+                       test, "--out", tmp_path / "p.jsonl")
+    assert code == 2 and "404" in text
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl",
+                       "--local", tmp_path, "--data", test, "--out", tmp_path / "p.jsonl")
+    assert code == 2 and "exactly one of" in text
+    code, text = _main(capsys, "vlm", "ask", "--local", tmp_path, "--data", test,
+                       "--out", tmp_path / "p.jsonl")
+    assert code == 2 and "not a model folder" in text
+
+
+# -- fine-tuning a tiny offline Qwen3-VL ---------------------------------------------------------
+
+
+def test_finetune_tiny_qwen3vl_then_ask_local_and_eval(bench, tmp_path, capsys):
+    from parse3d.vlm.finetune import FinetuneOptions, lr_at
+    from parse3d.vlm.tiny import make_tiny_qwen3vl
+
+    texts = [m["content"] for r in read_jsonl(bench / "train.jsonl") for m in r["messages"]]
+    model = make_tiny_qwen3vl(tmp_path / "tiny", texts, vocab_size=400)
+    adapter = tmp_path / "lora"
+    code, text = _main(capsys, "vlm", "finetune", "--model", model, "--data", bench, "--out",
+                       adapter, "--max-items", 8, "--epochs", 3, "--global-batch", 4,
+                       "--micro-batch", 2, "--lr", 3e-3, "--min-lr", 3e-4,
+                       "--ratios", "relation_mcq=1,contact_mcq=1,sgg=0", "--json")
+    assert code == 0, text
+    rec = json.loads((adapter / "finetune.json").read_text())
+    losses = rec["losses"]
+    assert rec["updates"] == 6 and rec["accumulation"] == 2
+    assert rec["recipe"]["rank"] == 8 and rec["recipe"]["alpha"] == 32
+    assert np.mean(losses[-2:]) < losses[0] - 0.3  # the loss falls
+    assert (adapter / "adapter_config.json").exists()
+    cfg = json.loads((adapter / "adapter_config.json").read_text())
+    assert cfg["r"] == 8 and cfg["lora_alpha"] == 32
+    assert all("language_model" in t for t in cfg["target_modules"])
+    assert any(t.endswith("down_proj") for t in cfg["target_modules"])
+    # the recipe's schedule: linear warm-up, then down to the minimum
+    o = FinetuneOptions()
+    assert lr_at(0, 100, o) == pytest.approx(2e-5) and lr_at(4, 100, o) == pytest.approx(1e-4)
+    assert lr_at(99, 100, o) == pytest.approx(1e-5, rel=0.05)
+    # reload the adapter, answer the test split, score it
+    pred = tmp_path / "pred.jsonl"
+    code, text = _main(capsys, "vlm", "ask", "--local", model, "--adapter", adapter, "--data",
+                       bench / "test.jsonl", "--out", pred, "--max-tokens", 4)
+    assert code == 0, text
+    assert len(read_jsonl(pred)) == len(read_jsonl(bench / "test.jsonl"))
+    code, text = _main(capsys, "vlm", "eval", "--gt", bench / "test.jsonl", "--pred", pred,
+                       "--json")
+    assert code == 0, text
+    d = json.loads(text)
+    assert d["missing"]["count"] == 0 and d["relation_mcq"]["accuracy"] is not None

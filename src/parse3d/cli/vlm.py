@@ -149,3 +149,137 @@ def register(app: typer.Typer) -> None:
         out.write_text("".join(json.dumps({"id": k, "response": v}) + "\n"
                                for k, v in answers.items()))
         console.print(f"{name}: {len(answers)} predictions -> {out}")
+
+    @vlm.command("ask")
+    def ask_cmd(
+        data: Path = typer.Option(..., "--data", help="Benchmark split (VLM_DIR/test.jsonl)."),
+        out: Path = typer.Option(..., "--out", "-o",
+                                 help="Prediction JSONL (appended; answered ids are skipped)."),
+        endpoint: str = typer.Option(None, "--endpoint",
+                                     help="OpenAI-compatible base URL, e.g. "
+                                          "http://127.0.0.1:8000/v1."),
+        model: str = typer.Option(None, "--model", help="Model name at the endpoint."),
+        local: Path = typer.Option(None, "--local", help="Local model folder instead."),
+        adapter: Path = typer.Option(None, "--adapter",
+                                     help="LoRA adapter folder (with --local)."),
+        concurrency: int = typer.Option(4, "--concurrency", "-j", help="Requests in flight."),
+        retries: int = typer.Option(4, "--retries", help="Retries per item (backoff doubles)."),
+        backoff: float = typer.Option(1.0, "--backoff", help="Seconds before the first retry."),
+        timeout: float = typer.Option(120.0, "--timeout", help="Seconds per request."),
+        max_tokens: int = typer.Option(1024, "--max-tokens", help="Longest answer (tokens)."),
+        api_key_env: str = typer.Option("OPENAI_API_KEY", "--api-key-env",
+                                        help="Environment variable holding the API key."),
+        price_in: float = typer.Option(0.0, "--price-in",
+                                       help="USD per million prompt tokens (cost line)."),
+        price_out: float = typer.Option(0.0, "--price-out",
+                                        help="USD per million completion tokens."),
+        limit: int = typer.Option(None, "--limit", help="Ask only the first N items."),
+        as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON."),
+    ) -> None:
+        """Run a model on benchmark items: an OpenAI-compatible endpoint or a local folder.
+
+        Exactly one of --endpoint/--model or --local [--adapter]. Interrupted runs resume.
+
+        Example: parse3d vlm ask --endpoint http://127.0.0.1:8000/v1 --model Qwen3-VL-8B-Instruct --data out/mini-vlm/test.jsonl --out qwen.jsonl
+        """
+        from ..vlm.build import read_jsonl
+        from ..vlm.client import EndpointOptions, api_key_from_env, ask_endpoint, ask_local
+
+        remote = endpoint is not None or model is not None
+        if remote == (local is not None) or (remote and (endpoint is None or model is None)):
+            raise InputError(Problem("", "give exactly one of --endpoint URL --model NAME, or "
+                                         "--local MODEL_DIR [--adapter DIR]", "--endpoint",
+                                     "parameter"))
+        if adapter is not None and local is None:
+            raise InputError(Problem("", "--adapter needs --local MODEL_DIR", "--adapter",
+                                     "parameter"))
+        if endpoint is not None and not endpoint.startswith(("http://", "https://")):
+            raise InputError(Problem("", f"--endpoint must be an http(s) URL, got {endpoint!r}",
+                                     "--endpoint", "parameter"))
+        rows = read_jsonl(data)
+        if limit is not None:
+            rows = rows[:limit]
+        if local is not None:
+            s = ask_local(rows, data.parent, out, model_dir=local, adapter=adapter,
+                          max_new_tokens=max_tokens)
+        else:
+            opts = EndpointOptions(concurrency=concurrency, retries=retries, backoff=backoff,
+                                   timeout=timeout, max_tokens=max_tokens,
+                                   api_key=api_key_from_env(api_key_env),
+                                   price_in=price_in, price_out=price_out)
+            s = ask_endpoint(rows, data.parent, out, endpoint=endpoint, model=model,
+                             options=opts)
+        d = s.to_dict()
+        if as_json:
+            print_json(d)
+        else:
+            console.print(f"{out}: {d['answered']} answered, {d['resumed']} already there, "
+                          f"{d['failed']} failed in {d['wall_s']} s "
+                          f"({d['items_per_s']} items/s; latency mean {d['latency_s']['mean']} "
+                          f"s, p95 {d['latency_s']['p95']} s; {d['retries']} retries); tokens "
+                          f"{d['prompt_tokens']} in / {d['completion_tokens']} out"
+                          + (f"; cost ${d['cost_usd']:.4f}" if d["cost_usd"] else ""))
+            for f in d["failed_ids"]:
+                err_console.print(f"  failed: {f}")
+        if s.failed:
+            raise typer.Exit(1)
+
+    @vlm.command("finetune")
+    def finetune_cmd(
+        model: Path = typer.Option(..., "--model", help="Local Qwen2.5-VL / Qwen3-VL folder."),
+        data: Path = typer.Option(..., "--data", help="Benchmark folder (uses train.jsonl)."),
+        out: Path = typer.Option(..., "--out", "-o", help="Adapter folder to write."),
+        rank: int = typer.Option(8, "--rank", help="LoRA rank."),
+        alpha: int = typer.Option(32, "--alpha", help="LoRA alpha."),
+        lr: float = typer.Option(1e-4, "--lr", help="Peak learning rate (AdamW)."),
+        min_lr: float = typer.Option(1e-5, "--min-lr", help="Final learning rate."),
+        warmup: float = typer.Option(0.05, "--warmup", help="Share of updates warming up."),
+        global_batch: int = typer.Option(16, "--global-batch", help="Items per update."),
+        micro_batch: int = typer.Option(2, "--micro-batch", help="Items per device and pass."),
+        epochs: float = typer.Option(1.0, "--epochs", help="Passes over the mixed set."),
+        max_image_tokens: int = typer.Option(1024, "--max-image-tokens",
+                                             help="Merged image tokens per image at most."),
+        ratios: str = typer.Option("relation_mcq=1,contact_mcq=1,sgg=1", "--ratios",
+                                   help="Task sampling ratios."),
+        max_items: int = typer.Option(None, "--max-items", help="Train on the first N items."),
+        seed: int = typer.Option(0, "--seed", help="Seed of mixing and initialisation."),
+        as_json: bool = typer.Option(False, "--json", help="Print the result as JSON."),
+    ) -> None:
+        """Fine-tune a LoRA adapter with the paper's recipe (rank 8, alpha 32, lr 1e-4, ...).
+
+        Example: parse3d vlm finetune --model models/Qwen3-VL-8B-Instruct --data out/mini-vlm --out out/lora
+        """
+        from ..vlm.finetune import FinetuneOptions, finetune
+
+        mix = {}
+        for part in ratios.split(","):
+            k, sep, v = part.partition("=")
+            try:
+                mix[k.strip()] = float(v)
+            except ValueError:
+                sep = ""
+            if not sep:
+                raise InputError(Problem("", f"--ratios wants task=ratio pairs, e.g. "
+                                             f"relation_mcq=1,contact_mcq=1,sgg=0.5; got "
+                                             f"{ratios!r}", "--ratios", "parameter"))
+        opts = FinetuneOptions(rank=rank, alpha=alpha, lr=lr, min_lr=min_lr, warmup=warmup,
+                               global_batch=global_batch, micro_batch=micro_batch,
+                               epochs=epochs, max_image_tokens=max_image_tokens, ratios=mix,
+                               max_items=max_items, seed=seed)
+
+        def show(step: int, total: int, loss: float, rate: float) -> None:
+            if not as_json:
+                err_console.print(f"update {step}/{total}: loss {loss:.4f}, lr {rate:.2e}")
+
+        res = finetune(model, data, out, opts, progress=show)
+        d = {"out": str(res.out), "updates": res.steps, "first_loss": res.losses[0],
+             "last_loss": res.losses[-1], "val_loss": res.val_loss, "devices": res.devices,
+             "accumulation": res.accumulation, "wall_s": round(res.wall, 2)}
+        if as_json:
+            print_json(d)
+            return
+        console.print(f"{out}: {res.steps} updates on {res.devices} device(s) (accumulation "
+                      f"{res.accumulation}), loss {res.losses[0]:.4f} -> {res.losses[-1]:.4f}"
+                      + (f", val loss {res.val_loss:.4f}" if res.val_loss is not None else "")
+                      + f" in {res.wall:.1f} s; use it with parse3d vlm ask --local {model} "
+                        f"--adapter {out}")
