@@ -109,18 +109,13 @@ def register(app: typer.Typer) -> None:
 
         Example: parse3d vlm eval --gt out/mini-vlm/test.jsonl --pred out/qwen3vl.jsonl
         """
-        from ..vlm.build import read_jsonl
-        from ..vlm.evaluate import evaluate, evaluate_files, markdown_table, read_predictions
+        from ..vlm.evaluate import evaluate_files, markdown_table
 
         if not 0 < iou <= 1:
             raise InputError(Problem("", "--iou must be in (0, 1]", "--iou", "parameter"))
         reports = []
         for p in pred:
-            if iou == 0.5:
-                reports.append(evaluate_files(gt, p, allow_missing=allow_missing))
-            else:
-                rep = evaluate(read_jsonl(gt), read_predictions(p), model=p.stem, iou=iou)
-                reports.append(rep)
+            reports.append(evaluate_files(gt, p, allow_missing=allow_missing, iou=iou))
         if as_json:
             print_json([r.to_dict() for r in reports] if len(reports) > 1
                        else reports[0].to_dict())

@@ -171,6 +171,9 @@ def _render_missing(scene_dir: Path, out: Path, n: int, seed: int) -> Path:
 
     scene = read_scene(scene_dir)
     size = (640, 480)
+    card = scene_dir.parent.parent / "dataset.json"
+    if card.exists():  # the dataset's own view size
+        size = tuple(int(v) for v in json.loads(card.read_text()).get("view_size", size))
     r = Renderer()
     rng = np.random.default_rng([int(seed), 0x56494557])
     cams = sample_views(scene, n, rng, width=size[0], height=size[1], renderer=r)

@@ -300,7 +300,7 @@ def evaluate(gt: list[dict[str, Any]], pred: dict[str, str], *, model: str = "mo
 
 
 def evaluate_files(gt_path: str | Path, pred_path: str | Path, *, allow_missing: bool = False,
-                   model: str | None = None) -> EvalReport:
+                   model: str | None = None, iou: float = 0.5) -> EvalReport:
     """Score a prediction file; missing or unknown ids are an error unless allowed."""
     gt = read_jsonl(gt_path)
     if not gt:
@@ -311,7 +311,7 @@ def evaluate_files(gt_path: str | Path, pred_path: str | Path, *, allow_missing:
                                                   "pass a split written by parse3d vlm build",
                                      str(gt_path), "schema"))
     pred = read_predictions(pred_path)
-    rep = evaluate(gt, pred, model=model or Path(pred_path).stem)
+    rep = evaluate(gt, pred, model=model or Path(pred_path).stem, iou=iou)
     if (rep.missing or rep.unknown) and not allow_missing:
         parts = []
         if rep.missing:

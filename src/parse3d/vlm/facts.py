@@ -46,7 +46,6 @@ from .vocab import (
 
 __all__ = [
     "VisibilityRule",
-    "Geometry",
     "ObjectFacts",
     "ViewFacts",
     "SceneFacts",
@@ -83,13 +82,6 @@ class VisibilityRule:
     min_share: float = 0.30
     lateral_margin: float = 0.15
     depth_margin: float = 0.30
-
-
-@dataclass
-class Geometry:
-    """World vertices of one object or part: ``vertices`` (N, 3) float, metres, Z-up."""
-
-    vertices: np.ndarray
 
 
 @dataclass

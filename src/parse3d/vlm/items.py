@@ -150,7 +150,7 @@ def option_holds(scene: SceneFacts, view: ViewFacts, red: str, blue: str,
     return (opt["subject_part"], opt["object_part"]) in _label_contacts(scene, red, blue)
 
 
-def _finish_mcq(task: str, template: str, correct: dict[str, Any],
+def _finish_mcq(template: str, correct: dict[str, Any],
                 distractors: list[dict[str, Any]], counts: dict[str, int],
                 rng: np.random.Generator, meta: dict[str, Any]) -> tuple[str, str, dict]:
     k = _pick_letter(counts, rng)
@@ -250,7 +250,7 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
         if len(dis) < 3:
             continue
         prompt, letter, meta = _finish_mcq(
-            "relation_mcq", RELATION_PROMPT, correct, dis, counts, rng,
+            RELATION_PROMPT, correct, dis, counts, rng,
             {"red": a, "blue": b, "relation": rel, "phrase": RELATION_PHRASES[rel]})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
@@ -339,7 +339,7 @@ def contact_items(scene: SceneFacts, view: ViewFacts, part_map: dict[str, list[s
         if len(uniq) < 3:
             continue
         prompt, letter, meta = _finish_mcq(
-            "contact_mcq", CONTACT_PROMPT, correct, uniq[:3], counts, rng,
+            CONTACT_PROMPT, correct, uniq[:3], counts, rng,
             {"red": a, "blue": b, "relation": "no contact" if pairs is None else "contact"})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
