@@ -79,22 +79,22 @@ def load_processor(model_dir: str | Path, *, max_image_tokens: int = 1024) -> VL
 def load_model(model_dir: str | Path, *, adapter: str | Path | None = None,
                device: str | None = None, max_image_tokens: int = 1024):
     """The model (with a LoRA adapter merged in when given) and its :class:`VLProcessor`."""
+    d = Path(model_dir)
+    _check_model_dir(d)  # before the heavy imports: a wrong path fails at once
+    if adapter is not None and not (Path(adapter) / "adapter_config.json").exists():
+        raise InputError(Problem("", "not a LoRA adapter folder (no adapter_config.json) — "
+                                     "pass the --out of parse3d vlm finetune", str(adapter),
+                                 "io"))
     import torch
     from transformers import AutoModelForImageTextToText
 
-    d = Path(model_dir)
-    _check_model_dir(d)
     dev = device or ("cuda" if torch.cuda.is_available() else "cpu")
     dtype = torch.bfloat16 if dev.startswith("cuda") else torch.float32
     model = AutoModelForImageTextToText.from_pretrained(d, dtype=dtype)
     if adapter is not None:
         from peft import PeftModel
 
-        a = Path(adapter)
-        if not (a / "adapter_config.json").exists():
-            raise InputError(Problem("", "not a LoRA adapter folder (no adapter_config.json) — "
-                                         "pass the --out of parse3d vlm finetune", str(a), "io"))
-        model = PeftModel.from_pretrained(model, a).merge_and_unload()
+        model = PeftModel.from_pretrained(model, Path(adapter)).merge_and_unload()
     model.to(dev).eval()
     return model, load_processor(d, max_image_tokens=max_image_tokens)
 
