@@ -16,6 +16,7 @@ from collections import Counter
 from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
 from pathlib import Path
 
+import jsonschema
 import numpy as np
 import pytest
 from PIL import Image
@@ -23,7 +24,7 @@ from typer.testing import CliRunner
 
 from parse3d.cli import app, main
 from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
-from parse3d.vlm.build import read_jsonl
+from parse3d.vlm.build import read_jsonl, record_schema
 from parse3d.vlm.evaluate import evaluate, parse_choice, parse_scene_graph, score_sgg
 from parse3d.vlm.facts import VisibilityRule, load_scene_facts, view_facts
 from parse3d.vlm.items import option_holds
@@ -119,6 +120,9 @@ def test_build_records_splits_and_card(bench, dataset):
     assert not (scenes["train"] & scenes["test"]) and not (scenes["train"] & scenes["val"])
     assert not (scenes["val"] & scenes["test"])
     assert all(scenes.values())
+    validator = jsonschema.Draft202012Validator(record_schema())
+    for r in rows:
+        validator.validate(r)
     card = json.loads((bench / "vlm.json").read_text())
     assert card["format"] == "parse3d-vlm/1"
     assert card["counts"]["all"]["tasks"] == dict(sorted(tasks.items()))

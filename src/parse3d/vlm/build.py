@@ -47,7 +47,8 @@ from .items import (
 from .vocab import NO_CONTACT, RELATION_PHRASES, object_label, part_label
 
 __all__ = ["VLM_FORMAT", "TASKS", "BuildOptions", "BuildResult", "build_benchmark",
-           "scene_folders", "split_scenes", "read_jsonl", "candidate_objects", "part_map"]
+           "scene_folders", "split_scenes", "read_jsonl", "candidate_objects", "part_map",
+           "record_schema"]
 
 VLM_FORMAT = "parse3d-vlm/1"
 TASKS = ("relation_mcq", "contact_mcq", "sgg")
@@ -92,6 +93,11 @@ class BuildResult:
     card: dict[str, Any]
     wall: float
     rendered: int = 0
+
+
+def record_schema() -> dict[str, Any]:
+    """The JSON Schema of one benchmark record (``vlm-record-1.schema.json``)."""
+    return json.loads((Path(__file__).parent / "vlm-record-1.schema.json").read_text())
 
 
 def read_jsonl(path: str | Path) -> list[dict[str, Any]]:
