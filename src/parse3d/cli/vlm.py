@@ -194,16 +194,21 @@ def register(app: typer.Typer) -> None:
         rows = read_jsonl(data)
         if limit is not None:
             rows = rows[:limit]
-        if local is not None:
-            s = ask_local(rows, data.parent, out, model_dir=local, adapter=adapter,
-                          max_new_tokens=max_tokens)
-        else:
-            opts = EndpointOptions(concurrency=concurrency, retries=retries, backoff=backoff,
-                                   timeout=timeout, max_tokens=max_tokens,
-                                   api_key=api_key_from_env(api_key_env),
-                                   price_in=price_in, price_out=price_out)
-            s = ask_endpoint(rows, data.parent, out, endpoint=endpoint, model=model,
-                             options=opts)
+        try:
+            if local is not None:
+                s = ask_local(rows, data.parent, out, model_dir=local, adapter=adapter,
+                              max_new_tokens=max_tokens)
+            else:
+                opts = EndpointOptions(concurrency=concurrency, retries=retries,
+                                       backoff=backoff, timeout=timeout, max_tokens=max_tokens,
+                                       api_key=api_key_from_env(api_key_env),
+                                       price_in=price_in, price_out=price_out)
+                s = ask_endpoint(rows, data.parent, out, endpoint=endpoint, model=model,
+                                 options=opts)
+        except KeyboardInterrupt:
+            err_console.print(f"interrupted: the answers so far are in {out}; run the same "
+                              "command again to ask only the rest")
+            raise typer.Exit(130) from None
         d = s.to_dict()
         if as_json:
             print_json(d)

@@ -253,18 +253,21 @@ def ask_endpoint(records: list[dict[str, Any]], base: Path, out: Path, *, endpoi
         with httpx.Client() as client, \
                 ThreadPoolExecutor(max(1, options.concurrency)) as pool:
             futures = [pool.submit(one, r, client) for r in todo]
-            for fut in as_completed(futures):
-                try:
+            try:
+                for fut in as_completed(futures):
                     fut.result()
-                except _Fatal as e:
-                    stop.set()
-                    for other in futures:
-                        other.cancel()
+            except (_Fatal, KeyboardInterrupt) as e:
+                # stop queued items and retries; requests in flight finish and are kept
+                stop.set()
+                for other in futures:
+                    other.cancel()
+                if isinstance(e, _Fatal):
                     raise InputError(Problem(
                         "", f"{e} — is the server running, and are --endpoint (e.g. "
                             "http://127.0.0.1:8000/v1), --model and the API key right? "
                             f"{summary.answered} answers were kept in {out}; run again to "
                             "resume", endpoint, "io")) from None
+                raise
     finally:
         f.close()
         summary.wall = time.perf_counter() - t0
