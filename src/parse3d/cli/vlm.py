@@ -104,8 +104,10 @@ def register(app: typer.Typer) -> None:
         iou: float = typer.Option(0.5, "--iou", help="IoU threshold of SGG box matching."),
         as_json: bool = typer.Option(False, "--json", help="Print the metrics as JSON."),
     ) -> None:
-        """Score predictions: MCQ accuracy, SGG recall/precision/F1 with and without box
-        matching, as the paper's Table 2 (Markdown), or --json.
+        """Score predictions as the paper's Table 2 (Markdown), or --json.
+
+        MCQ accuracy (per relation and room type); SGG recall, precision and F1 with and
+        without box matching, and the average number of predicted relations.
 
         Example: parse3d vlm eval --gt out/mini-vlm/test.jsonl --pred out/qwen3vl.jsonl
         """
