@@ -46,7 +46,7 @@ LETTERS = "ABCD"
 SUPPORT_RELATIONS = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
 #: "A REL B" and "B REL A" say the same: never offered as a swapped-order distractor.
 SYMMETRIC_RELATIONS = ("NO_CONTACT", "NEAR", "FAR_FROM", "AGAINST", "ALIGNED_WITH",
-                       "OPPOSITE_TO", "PARALLEL_TO")
+                       "OPPOSITE_TO", "PARALLEL_TO", "SIDE_OF")
 
 RELATION_PROMPT = (
     "The image displays two objects highlighted with a red and a blue bounding box. Your task "
@@ -301,7 +301,10 @@ def contact_items(scene: SceneFacts, view: ViewFacts, part_map: dict[str, list[s
         no_contact = {"kind": "no_contact", "subject": oa.label, "object": ob.label}
         la_parts = sorted(set(oa.parts.values()))
         lb_parts = sorted(set(ob.parts.values()))
-        wrong = [(p, q) for p in la_parts for q in lb_parts if (p, q) not in truth]
+        # two objects of one category: a part pair that touches the other way round would
+        # read as true, so it is no distractor
+        wrong = [(p, q) for p in la_parts for q in lb_parts if (p, q) not in truth
+                 and (oa.label != ob.label or (q, p) not in truth)]
         rng.shuffle(wrong)
         swaps = []
         present = {o.label for o in scene.objects.values()}
