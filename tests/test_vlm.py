@@ -19,6 +19,8 @@ from pathlib import Path
 import jsonschema
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from PIL import Image
 from typer.testing import CliRunner
 
@@ -228,6 +230,22 @@ def test_build_renders_missing_views_outside_the_dataset(dataset, tmp_path):
 ])
 def test_parse_choice(text, letter):
     assert parse_choice(text) == letter
+
+
+_PIECES = ["<|box_start|>", "<|box_end|>", "mug#1", "mug", "#2", "(", ")", ", ", " on ",
+           "12", "-3", "1000", "Objects:\n", "\nRelations:\n", "right of", "couch", "C", "."]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.one_of(st.lists(st.sampled_from(_PIECES), max_size=30).map("".join), st.text()))
+def test_parsers_take_any_text(text):
+    assert parse_choice(text) in (None, "A", "B", "C", "D")
+    objs, trip = parse_scene_graph(text)
+    gt = {"objects": [{"name": "mug#1", "label": "mug", "box": [0, 0, 10, 10]}],
+          "triplets": [["mug#1", "on", "mug#1"]]}
+    s = score_sgg(gt, text)
+    assert s.correct_matched <= min(s.pred, s.gt) and s.correct_unmatched <= min(s.pred, s.gt)
+    assert all(len(o["box"]) == 4 for o in objs) and all(len(t) == 3 for t in trip)
 
 
 def test_sgg_scoring_matches_boxes_per_class():
