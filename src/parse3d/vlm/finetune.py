@@ -157,7 +157,7 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
         Called with ``(step, total, loss, lr)`` after every update.
     """
     import torch
-    from accelerate import Accelerator
+    from accelerate import Accelerator, PartialState
     from peft import LoraConfig, get_peft_model
     from transformers import AutoModelForImageTextToText
 
@@ -177,8 +177,8 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
         mixed = mixed[: options.max_items]
     torch.manual_seed(options.seed)
 
-    acc_probe = Accelerator()
-    world = acc_probe.num_processes
+    # processes only (PartialState fixes no precision), so the Accelerator below is the first
+    world = PartialState().num_processes
     per_update = options.micro_batch * world
     accumulation = max(1, options.global_batch // per_update)
     accelerator = Accelerator(gradient_accumulation_steps=accumulation,
