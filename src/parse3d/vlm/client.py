@@ -26,7 +26,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InputError, Parse3dError, Problem
+from ..errors import DependencyError, InputError, Parse3dError, Problem
 
 __all__ = ["EndpointOptions", "AskSummary", "openai_messages", "ask_endpoint", "ask_local",
            "done_ids", "prompt_messages"]
@@ -181,7 +181,11 @@ def ask_endpoint(records: list[dict[str, Any]], base: Path, out: Path, *, endpoi
         reason retrying cannot fix (401/403/404: key, model or URL). Answers written so far
         are kept; running again resumes.
     """
-    import httpx
+    try:
+        import httpx
+    except ImportError:
+        raise DependencyError("parse3d vlm ask --endpoint needs httpx: pip install httpx "
+                              "(or parse3d[web])") from None
 
     summary = AskSummary(requested=len(records))
     have = done_ids(out)
