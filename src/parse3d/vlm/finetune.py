@@ -156,6 +156,9 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
     progress : callable, optional
         Called with ``(step, total, loss, lr)`` after every update.
     """
+    from .local import require_ml
+
+    require_ml()
     import torch
     from accelerate import Accelerator, PartialState
     from peft import LoraConfig, get_peft_model

@@ -20,12 +20,23 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputError, Problem
+from ..errors import DependencyError, InputError, Problem
 
 __all__ = ["VLProcessor", "load_processor", "load_model", "encode", "collate", "generate",
            "IGNORE"]
 
 IGNORE = -100
+
+
+def require_ml() -> None:
+    """Raise :class:`DependencyError` naming the extra when torch / transformers / peft lack."""
+    import importlib.util
+
+    missing = [m for m in ("torch", "transformers", "peft", "accelerate")
+               if importlib.util.find_spec(m) is None]
+    if missing:
+        raise DependencyError(f"local models need {', '.join(missing)}: pip install "
+                              "'parse3d[ml]'")
 
 
 @dataclass
@@ -55,6 +66,7 @@ def _check_model_dir(model_dir: Path) -> None:
 
 def load_processor(model_dir: str | Path, *, max_image_tokens: int = 1024) -> VLProcessor:
     """Read the tokenizer and image processor of a model folder; cap the image tokens."""
+    require_ml()
     from transformers import AutoTokenizer, Qwen2VLImageProcessorPil
 
     d = Path(model_dir)
@@ -85,6 +97,7 @@ def load_model(model_dir: str | Path, *, adapter: str | Path | None = None,
         raise InputError(Problem("", "not a LoRA adapter folder (no adapter_config.json) — "
                                      "pass the --out of parse3d vlm finetune", str(adapter),
                                  "io"))
+    require_ml()
     import torch
     from transformers import AutoModelForImageTextToText
 
