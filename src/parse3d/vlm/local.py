@@ -22,7 +22,7 @@ from typing import Any
 
 from ..errors import DependencyError, InputError, Problem
 
-__all__ = ["VLProcessor", "load_processor", "load_model", "encode", "collate", "generate",
+__all__ = ["VLProcessor", "load_processor", "load_model", "encode", "collate", "generate", "require_ml",
            "IGNORE"]
 
 IGNORE = -100
