@@ -1,0 +1,426 @@
+"""What the benchmark knows about one scene and one view: the 3-D ground truth.
+
+Everything comes from the dataset's own files, so a dataset can be turned into a benchmark
+on any machine, without the asset library: ``scene.json`` (objects, settled poses, PAG
+relations and whether they hold after settling), ``contacts.json`` (the part-level contact
+graph), ``scene.glb`` (every part's world mesh) and ``views.json`` with the masks' pixel
+counts and boxes.
+
+Visibility (the issue's rule): an object is visible in a view when its instance mask has at
+least ``min_pixels`` pixels and covers at least ``min_share`` of its *projected hull* — the
+convex hull of its mesh projected into the image, clipped to the image; a part likewise from
+the part mask.
+
+Examples
+--------
+>>> import numpy as np
+>>> float(hull_area(np.array([[0, 0], [10, 0], [10, 10], [0, 10], [5, 5]]), 640, 480))
+100.0
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import trimesh
+from scipy.spatial import ConvexHull, QhullError
+from shapely.geometry import Polygon, box
+
+from ..errors import InputError, Problem
+from ..geometry.frames import quat_to_matrix
+from ..pag.refs import RefSyntaxError, parse_ref, wall_index
+from ..render.camera import Camera
+from ..scene.export import Z_UP_TO_Y_UP
+from .vocab import (
+    CAMERA_RELATIONS,
+    CONTACT_RELATIONS,
+    NO_CONTACT,
+    RELATION_PHRASES,
+    object_label,
+    part_label,
+)
+
+__all__ = [
+    "VisibilityRule",
+    "ObjectFacts",
+    "ViewFacts",
+    "SceneFacts",
+    "load_scene_facts",
+    "hull_area",
+    "view_facts",
+    "pair_truth",
+    "projected_box",
+    "to_grid",
+]
+
+_Y_UP_TO_Z_UP = np.linalg.inv(Z_UP_TO_Y_UP)[:3, :3]
+
+
+@dataclass(frozen=True)
+class VisibilityRule:
+    """When an object or part counts as visible, and the camera-frame relation margins.
+
+    Attributes
+    ----------
+    min_pixels : int
+        Least mask pixels.
+    min_share : float
+        Least fraction of the projected hull (clipped to the image) the mask covers.
+    lateral_margin : float
+        Metres: ``A left of B`` holds when A's centroid is at least this much further left
+        than B's in the camera frame (camera x); within the margin neither holds nor is
+        offered as a distractor.
+    depth_margin : float
+        Metres, the same for ``in front of`` / ``behind`` along the optical axis.
+    """
+
+    min_pixels: int = 400
+    min_share: float = 0.30
+    lateral_margin: float = 0.15
+    depth_margin: float = 0.30
+
+
+@dataclass
+class ObjectFacts:
+    """One placed object.
+
+    Attributes
+    ----------
+    id, category, label : str
+        PAG id, category and the label used in text (``office chair``).
+    corners : (8, 3) float
+        World corners of the object's oriented box (its settled rotation), metres.
+    centroid : (3,) float
+        Centre of that box, metres.
+    vertices : (N, 3) float
+        World vertices of all its parts.
+    parts : dict of str to str
+        Part name -> part label (``leg_0`` -> ``leg``).
+    part_vertices : dict of str to (M, 3) float
+    """
+
+    id: str
+    category: str
+    label: str
+    corners: np.ndarray
+    centroid: np.ndarray
+    vertices: np.ndarray
+    parts: dict[str, str]
+    part_vertices: dict[str, np.ndarray]
+
+
+@dataclass
+class ViewFacts:
+    """One rendered view and what is visible in it.
+
+    Attributes
+    ----------
+    index : int
+    camera : Camera
+    rgb : Path
+        The view's colour image.
+    objects : dict of str to dict
+        Visible objects: id -> ``{"pixels", "bbox", "share"}`` (bbox inclusive pixels).
+    parts : dict of str to dict
+        Visible parts: ``object:part`` -> the same.
+    """
+
+    index: int
+    camera: Camera
+    rgb: Path
+    objects: dict[str, dict[str, Any]]
+    parts: dict[str, dict[str, Any]]
+
+
+@dataclass
+class SceneFacts:
+    """The ground truth of one scene.
+
+    Attributes
+    ----------
+    name : str
+        Folder name under ``scenes/`` (``00012``).
+    index : int
+    room_type : str
+    objects : dict of str to ObjectFacts
+        Placed objects in scene order.
+    pag : set of (str, str, str)
+        ``(child, RELATION, parent)`` between two objects that holds after settling.
+    contacts : dict of (str, str) to set of (str, str)
+        Ordered object pair -> contacting ``(part of first, part of second)`` names; both
+        orders are present.
+    views : list of dict
+        The ``views.json`` entries.
+    views_folder : Path
+        The folder the view images are in.
+    """
+
+    name: str
+    index: int
+    room_type: str
+    objects: dict[str, ObjectFacts]
+    pag: set[tuple[str, str, str]]
+    contacts: dict[tuple[str, str], set[tuple[str, str]]]
+    views: list[dict[str, Any]]
+    views_folder: Path
+    meta: dict[str, Any] = field(default_factory=dict)
+
+
+def _read_json(path: Path) -> Any:
+    try:
+        return json.loads(path.read_text())
+    except FileNotFoundError:
+        raise InputError(Problem("", "missing file — is this a scene folder of a dataset built "
+                                     "by parse3d dataset build?", str(path), "io")) from None
+    except json.JSONDecodeError as e:
+        raise InputError(Problem("", f"not valid JSON ({e}); rebuild this scene", str(path),
+                                 "syntax")) from None
+
+
+def _object_of(ref: str) -> str | None:
+    """The object id of a PAG reference, or None for a room element."""
+    try:
+        r = parse_ref(ref)
+    except RefSyntaxError:
+        return None
+    if r.is_room_element or wall_index(r.object) is not None:
+        return None
+    return r.object
+
+
+def _glb_vertices(path: Path) -> dict[str, np.ndarray]:
+    ts = trimesh.load(str(path), force="scene")
+    out: dict[str, np.ndarray] = {}
+    for node in ts.graph.nodes_geometry:
+        T, gname = ts.graph[node]
+        v = np.asarray(ts.geometry[gname].vertices, float)
+        v = v @ T[:3, :3].T + T[:3, 3]
+        out[str(node)] = v @ _Y_UP_TO_Z_UP.T
+    return out
+
+
+def load_scene_facts(scene_dir: str | Path, *, views_folder: str | Path | None = None
+                     ) -> SceneFacts:
+    """Read one scene folder of a dataset.
+
+    Parameters
+    ----------
+    scene_dir : path
+        ``DATASET/scenes/NNNNN``.
+    views_folder : path, optional
+        Where ``views.json`` and the view images are (default: the scene folder; the
+        benchmark's own renders live under its output folder).
+    """
+    d = Path(scene_dir)
+    sj = _read_json(d / "scene.json")
+    contacts = _read_json(d / "contacts.json")
+    vf = Path(views_folder) if views_folder is not None else d
+    views_doc = _read_json(vf / "views.json") if (vf / "views.json").exists() else {"views": []}
+    if not (d / "scene.glb").exists():
+        raise InputError(Problem("", "missing scene.glb — rebuild this scene", str(d), "io"))
+    verts = _glb_vertices(d / "scene.glb")
+    objects: dict[str, ObjectFacts] = {}
+    for od in sj["objects"]:
+        if od.get("status") != "placed":
+            continue
+        oid = od["id"]
+        parts = {p["name"]: part_label(p.get("label", p["name"])) for p in od.get("parts", [])}
+        pv = {n: verts[f"{oid}:{n}"] for n in parts if f"{oid}:{n}" in verts}
+        if not pv:
+            continue
+        allv = np.vstack(list(pv.values()))
+        pose = od.get("settled_pose") or od["pose"]
+        R = quat_to_matrix(pose["quaternion"])
+        local = allv @ R  # rows: R.T @ v
+        lo, hi = local.min(axis=0), local.max(axis=0)
+        grid = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                         for z in (lo[2], hi[2])])
+        corners = grid @ R.T
+        objects[oid] = ObjectFacts(oid, od["category"], object_label(od["category"]), corners,
+                                   corners.mean(axis=0), allv, parts, pv)
+    pag: set[tuple[str, str, str]] = set()
+    for r in sj.get("relations", []):
+        held = r.get("holds_settled")
+        if held is None:
+            held = r.get("holds")
+        if not held or r["relation"] not in RELATION_PHRASES:
+            continue
+        c, p = _object_of(r["child"]), _object_of(r["parent"])
+        if c in objects and p in objects and c != p:
+            pag.add((c, r["relation"], p))
+    pairs: dict[tuple[str, str], set[tuple[str, str]]] = {}
+    for c in contacts:
+        a, _, pa = c["a"].partition(":")
+        b, _, pb = c["b"].partition(":")
+        if a == b or a not in objects or b not in objects:
+            continue
+        pairs.setdefault((a, b), set()).add((pa, pb))
+        pairs.setdefault((b, a), set()).add((pb, pa))
+    return SceneFacts(d.name, int(d.name) if d.name.isdigit() else 0,
+                      sj.get("pag", {}).get("room", {}).get("type", sj["room"].get("type", "")),
+                      objects, pag, pairs, list(views_doc.get("views", [])), vf,
+                      {"seed": sj.get("seed")})
+
+
+def hull_area(uv: np.ndarray, width: int, height: int) -> float:
+    """Area (pixels²) of the convex hull of image points, clipped to the image.
+
+    Parameters
+    ----------
+    uv : (N, 2) float
+        Pixel coordinates (OpenCV: u right, v down).
+    width, height : int
+        Image size; the image covers ``[-0.5, width - 0.5] x [-0.5, height - 0.5]``.
+    """
+    uv = np.asarray(uv, float)
+    uv = uv[np.isfinite(uv).all(axis=1)]
+    if len(uv) < 3:
+        return 0.0
+    try:
+        hull = ConvexHull(uv)
+    except QhullError:
+        return 0.0
+    poly = Polygon(uv[hull.vertices])
+    if not poly.is_valid:
+        poly = poly.buffer(0)
+    return float(poly.intersection(box(-0.5, -0.5, width - 0.5, height - 0.5)).area)
+
+
+def _project_front(cam: Camera, pts: np.ndarray) -> np.ndarray:
+    uv, z = cam.project(pts)
+    return uv[z > cam.near]
+
+
+def view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) -> ViewFacts:
+    """Visible objects and parts of one ``views.json`` entry."""
+    cam = Camera.from_dict(view["camera"])
+    w, h = cam.width, cam.height
+    objs: dict[str, dict[str, Any]] = {}
+    for rec in view.get("objects", []):
+        oid = rec["object"]
+        o = scene.objects.get(oid)
+        if rec.get("room") or o is None or rec["pixels"] < rule.min_pixels:
+            continue
+        area = hull_area(_project_front(cam, o.vertices), w, h)
+        share = rec["pixels"] / area if area > 0 else 0.0
+        if share >= rule.min_share:
+            objs[oid] = {"pixels": int(rec["pixels"]), "bbox": list(rec["bbox"]),
+                         "share": round(min(share, 1.0), 3)}
+    parts: dict[str, dict[str, Any]] = {}
+    for rec in view.get("parts", []):
+        oid, _, pname = rec["part"].partition(":")
+        o = scene.objects.get(oid)
+        if rec.get("room") or o is None or pname not in o.part_vertices:
+            continue
+        if rec["pixels"] < rule.min_pixels:
+            continue
+        area = hull_area(_project_front(cam, o.part_vertices[pname]), w, h)
+        share = rec["pixels"] / area if area > 0 else 0.0
+        if share >= rule.min_share:
+            parts[rec["part"]] = {"pixels": int(rec["pixels"]), "bbox": list(rec["bbox"]),
+                                  "share": round(min(share, 1.0), 3)}
+    rgb = scene.views_folder / view["files"]["rgb"]
+    return ViewFacts(int(view["index"]), cam, rgb, objs, parts)
+
+
+def _horizontal_distance(a: ObjectFacts, b: ObjectFacts) -> float:
+    return float(np.linalg.norm(a.centroid[:2] - b.centroid[:2]))
+
+
+def pair_truth(scene: SceneFacts, cam: Camera, a: str, b: str, rule: VisibilityRule
+               ) -> tuple[set[str], set[str]]:
+    """Which vocabulary relations hold for "``a`` REL ``b``", and which are undecided.
+
+    Returns
+    -------
+    true : set of str
+        Relations that hold: PAG relations stated between the pair that hold after
+        settling; the camera-frame relations beyond their margins; ``NO_CONTACT`` when the
+        two share no part-level contact; ``NEAR`` / ``FAR_FROM`` from the horizontal centroid
+        distance when clearly inside / beyond the relation's default distance.
+    undecided : set of str
+        Relations that may or may not hold (a PAG relation not stated between two objects
+        that touch, a camera-frame relation inside its margin, a relation that cannot be
+        measured here): never used as a distractor for this pair.
+    """
+    oa, ob = scene.objects[a], scene.objects[b]
+    true: set[str] = set()
+    undecided: set[str] = set()
+    pa = cam.R @ oa.centroid + cam.t
+    pb = cam.R @ ob.centroid + cam.t
+    dx, dz = pa[0] - pb[0], pa[2] - pb[2]
+    for rel, val, margin in (("LEFT_OF", -dx, rule.lateral_margin),
+                             ("RIGHT_OF", dx, rule.lateral_margin),
+                             ("IN_FRONT_OF", -dz, rule.depth_margin),
+                             ("BEHIND", dz, rule.depth_margin)):
+        if val > margin:
+            true.add(rel)
+        elif val > -margin:
+            undecided.add(rel)
+    touching = (a, b) in scene.contacts
+    if not touching:
+        true.add(NO_CONTACT)
+    dist = _horizontal_distance(oa, ob)
+    if dist < 0.9:
+        true.add("NEAR")
+    elif dist <= 1.1:
+        undecided.add("NEAR")
+    if dist > 2.2:
+        true.add("FAR_FROM")
+    elif dist >= 1.8:
+        undecided.add("FAR_FROM")
+    for rel in RELATION_PHRASES:
+        if rel in CAMERA_RELATIONS or rel in ("NEAR", "FAR_FROM", NO_CONTACT):
+            continue
+        if (a, rel, b) in scene.pag:
+            true.add(rel)
+        elif rel in CONTACT_RELATIONS and not touching:
+            pass  # cannot hold without contact: decidably false
+        else:
+            undecided.add(rel)
+    for rel in ("NEAR", "FAR_FROM"):
+        if (a, rel, b) in scene.pag:
+            true.add(rel)
+            undecided.discard(rel)
+    undecided -= true
+    return true, undecided
+
+
+def projected_box(cam: Camera, corners: np.ndarray) -> list[float] | None:
+    """2-D box ``[x1, y1, x2, y2]`` (pixels) of projected 3-D box corners, clipped to the image.
+
+    Corners behind the camera are replaced by the box's points on the near plane (the edges
+    of the box are clipped), so a box that reaches behind the camera still gets a box.
+    """
+    pc = np.asarray(corners, float) @ cam.R.T + cam.t
+    near = cam.near + 1e-6
+    pts = [p for p in pc if p[2] > near]
+    if not pts:
+        return None
+    edges = [(i, j) for i in range(8) for j in range(i + 1, 8) if bin(i ^ j).count("1") == 1]
+    for i, j in edges:
+        zi, zj = pc[i, 2], pc[j, 2]
+        if (zi - near) * (zj - near) < 0:
+            s = (near - zi) / (zj - zi)
+            pts.append(pc[i] + s * (pc[j] - pc[i]))
+    p = np.array(pts)
+    uv = p[:, :2] / p[:, 2:3] * [cam.fx, cam.fy] + [cam.cx, cam.cy]
+    x1, y1 = np.clip(uv.min(axis=0), [0, 0], [cam.width - 1, cam.height - 1])
+    x2, y2 = np.clip(uv.max(axis=0), [0, 0], [cam.width - 1, cam.height - 1])
+    if x2 <= x1 or y2 <= y1:
+        return None
+    return [float(x1), float(y1), float(x2), float(y2)]
+
+
+def to_grid(bbox: list[float], width: int, height: int) -> list[int]:
+    """Pixel box -> the paper's 0-1000 grid: ``x / width`` and ``y / height``, rounded.
+
+    Inclusive pixel boxes (masks) cover ``[x1, x2 + 1)``; pass them with ``x2 + 1``.
+    """
+    x1, y1, x2, y2 = bbox
+    g = [x1 / width, y1 / height, x2 / width, y2 / height]
+    return [int(round(min(max(v, 0.0), 1.0) * 1000)) for v in g]

@@ -1,0 +1,432 @@
+"""The three tasks of one view: relation MCQ, part-contact MCQ and scene-graph generation.
+
+Each function takes the scene's ground truth, one view's visibility and an explicit random
+generator, and returns :class:`Item` objects (question, answer, structured metadata and
+how to draw the image). Nothing here writes files; :mod:`parse3d.vlm.build` does.
+
+Every MCQ option is structured data (``meta["options"]``) as well as text, and
+:func:`option_holds` decides it from the 3-D ground truth: the builder keeps a question only
+when exactly one of its four options holds, and the oracle baseline answers with the same
+function from the files alone.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .facts import SceneFacts, ViewFacts, VisibilityRule, pair_truth, projected_box, to_grid
+from .vocab import (
+    CAMERA_RELATIONS,
+    INVERSE_RELATIONS,
+    NO_CONTACT,
+    RELATION_PHRASES,
+    relation_sentence,
+)
+
+__all__ = [
+    "LETTERS",
+    "RELATION_PROMPT",
+    "CONTACT_PROMPT",
+    "SGG_PROMPT",
+    "Item",
+    "TaskLimits",
+    "relation_items",
+    "contact_items",
+    "sgg_item",
+    "option_holds",
+    "option_text",
+    "format_box",
+    "SUPPORT_RELATIONS",
+]
+
+LETTERS = "ABCD"
+SUPPORT_RELATIONS = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+#: "A REL B" and "B REL A" say the same: never offered as a swapped-order distractor.
+SYMMETRIC_RELATIONS = ("NO_CONTACT", "NEAR", "FAR_FROM", "AGAINST", "ALIGNED_WITH",
+                       "OPPOSITE_TO", "PARALLEL_TO", "SIDE_OF")
+
+RELATION_PROMPT = (
+    "The image displays two objects highlighted with a red and a blue bounding box. Your task "
+    "is to identify the object within the red box, the object within the blue box, and the "
+    "spatial relationship between them. From the options below, choose the one that correctly "
+    "describes this scene (each option names the object in the red box first). {options}. "
+    "Your answer should only be the letter of the correct option.")
+
+CONTACT_PROMPT = (
+    "The image displays two objects highlighted with a red and a blue bounding box. Your task "
+    "is to identify the object within the red box, the object within the blue box, and "
+    "whether they are in contact with each other. From the options below, choose the one that "
+    "correctly describes this scene (each option names the object in the red box first). "
+    "{options}. Your answer should only be the letter of the correct option.")
+
+SGG_PROMPT = (
+    "Detect and localize all objects in the image, then identify the spatial relationships "
+    "between the detected objects. Candidate object names: {objects}. Candidate relations: "
+    "{relations}. Answer with a line 'Objects:' followed by one line per object, "
+    "'name#k <|box_start|>x1, y1, x2, y2<|box_end|>' (k numbers objects of the same name "
+    "from 1; coordinates on a 0-1000 grid of the image width and height), then a line "
+    "'Relations:' followed by one line per relation, '(subject#k, relation, object#k)'.")
+
+
+@dataclass(frozen=True)
+class TaskLimits:
+    """How many questions one view may give.
+
+    Attributes
+    ----------
+    relation : int
+        Relation MCQs per view (pairs with a PAG relation first).
+    contact : int
+        Part-contact MCQs per view about touching object pairs.
+    no_contact_ratio : float
+        Extra part-contact MCQs about pairs that do not touch ("no contact" is the answer),
+        as a fraction of the touching ones (at least one when a view has any such pair).
+    """
+
+    relation: int = 8
+    contact: int = 6
+    no_contact_ratio: float = 0.34
+
+
+@dataclass
+class Item:
+    """One question before it is written.
+
+    Attributes
+    ----------
+    task : str
+        ``relation_mcq``, ``contact_mcq`` or ``sgg``.
+    prompt, answer : str
+        The user text (without the image token) and the assistant's target.
+    meta : dict
+        Structured ground truth (options, answer letter, relation, objects, triplets, ...).
+    marks : list of (str, list of int)
+        Boxes to draw on the image: ``("red" | "blue", [x1, y1, x2, y2])`` in pixels.
+    """
+
+    task: str
+    prompt: str
+    answer: str
+    meta: dict[str, Any]
+    marks: list[tuple[str, list[int]]] = field(default_factory=list)
+
+
+def _pick_letter(counts: dict[str, int], rng: np.random.Generator) -> int:
+    low = min(counts[c] for c in LETTERS)
+    choices = [i for i, c in enumerate(LETTERS) if counts[c] == low]
+    return int(choices[int(rng.integers(len(choices)))])
+
+
+def option_text(opt: dict[str, Any]) -> str:
+    """The text of a structured option."""
+    if opt["kind"] == "relation":
+        return relation_sentence(opt["subject"], opt["relation"], opt["object"])
+    if opt["kind"] == "no_contact":
+        return f"the {opt['subject']} and the {opt['object']} are not in contact"
+    return (f"the {opt['subject_part']} of the {opt['subject']} contacts the "
+            f"{opt['object_part']} of the {opt['object']}")
+
+
+def _label_contacts(scene: SceneFacts, a: str, b: str) -> set[tuple[str, str]]:
+    oa, ob = scene.objects[a], scene.objects[b]
+    return {(oa.parts.get(pa, pa), ob.parts.get(pb, pb))
+            for pa, pb in scene.contacts.get((a, b), set())}
+
+
+def option_holds(scene: SceneFacts, view: ViewFacts, red: str, blue: str,
+                 opt: dict[str, Any], rule: VisibilityRule) -> bool:
+    """Whether an option is true of the red and blue objects, from the 3-D ground truth."""
+    oa, ob = scene.objects[red], scene.objects[blue]
+    if opt["subject"] != oa.label or opt["object"] != ob.label:
+        return False
+    if opt["kind"] == "relation":
+        true, _ = pair_truth(scene, view.camera, red, blue, rule)
+        return opt["relation"] in true
+    if opt["kind"] == "no_contact":
+        return (red, blue) not in scene.contacts
+    return (opt["subject_part"], opt["object_part"]) in _label_contacts(scene, red, blue)
+
+
+def _finish_mcq(template: str, correct: dict[str, Any],
+                distractors: list[dict[str, Any]], counts: dict[str, int],
+                rng: np.random.Generator, meta: dict[str, Any]) -> tuple[str, str, dict]:
+    k = _pick_letter(counts, rng)
+    opts = list(distractors)
+    rng.shuffle(opts)
+    opts.insert(k, correct)
+    counts[LETTERS[k]] += 1
+    text = ", ".join(f"({LETTERS[i]}) {option_text(o)}" for i, o in enumerate(opts))
+    meta = {**meta, "options": opts, "answer": LETTERS[k]}
+    return template.format(options=text), LETTERS[k], meta
+
+
+def _relation_distractors(scene: SceneFacts, a: str, b: str, answer: str, true: set[str],
+                          undecided: set[str], labels: list[str],
+                          rng: np.random.Generator) -> list[dict[str, Any]]:
+    la, lb = scene.objects[a].label, scene.objects[b].label
+    wrong_rel = [r for r in RELATION_PHRASES if r not in true and r not in undecided]
+    rng.shuffle(wrong_rel)
+    others = [x for x in labels if x not in (la, lb)]
+    rng.shuffle(others)
+    pool: list[dict[str, Any]] = []
+    # one of each kind first (relation replaced, object replaced, order swapped), then more
+    # replaced relations: the options stay hard, and none of them holds
+    if wrong_rel:
+        pool.append({"kind": "relation", "subject": la, "relation": wrong_rel[0], "object": lb})
+    if others:
+        if rng.random() < 0.5:
+            pool.append({"kind": "relation", "subject": others[0], "relation": answer,
+                         "object": lb})
+        else:
+            pool.append({"kind": "relation", "subject": la, "relation": answer,
+                         "object": others[0]})
+    if la != lb and answer not in SYMMETRIC_RELATIONS:
+        pool.append({"kind": "relation", "subject": lb, "relation": answer, "object": la})
+    for r in wrong_rel[1:]:
+        pool.append({"kind": "relation", "subject": la, "relation": r, "object": lb})
+    for o in others[1:]:
+        pool.append({"kind": "relation", "subject": la, "relation": answer, "object": o})
+    seen: set[str] = {option_text({"kind": "relation", "subject": la, "relation": answer,
+                                   "object": lb})}
+    out = []
+    for p in pool:
+        t = option_text(p)
+        if t not in seen:
+            seen.add(t)
+            out.append(p)
+        if len(out) == 3:
+            break
+    return out
+
+
+def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits: TaskLimits,
+                   rule: VisibilityRule, counts: dict[str, int], rng: np.random.Generator
+                   ) -> list[Item]:
+    """Relation MCQs of one view: a pair of visible objects and one relation that holds.
+
+    ``labels`` are the object labels distractors may substitute: the builder passes the
+    vocabulary's labels of categories absent from the scene, so a distractor with a replaced
+    object is false of the whole scene, not only of the marked boxes.
+
+    Pairs with a PAG relation come first and ask about it; the other pairs ask about a
+    relation drawn among those that hold (camera-frame, near / far, no contact).
+    """
+    vis = list(view.objects)
+    stated = [(c, r, p) for (c, r, p) in sorted(scene.pag) if c in view.objects
+              and p in view.objects]
+    rng.shuffle(stated)
+    chosen: list[tuple[str, str, str]] = []
+    used: set[frozenset[str]] = set()
+    for c, r, p in stated:
+        key = frozenset((c, p))
+        if key not in used:
+            used.add(key)
+            chosen.append((c, r, p))
+    rest = [(a, b) for i, a in enumerate(vis) for b in vis[i + 1:]
+            if frozenset((a, b)) not in used]
+    order = rng.permutation(len(rest)) if rest else []
+    for i in order:
+        if len(chosen) >= limits.relation:
+            break
+        a, b = rest[int(i)]
+        if rng.random() < 0.5:
+            a, b = b, a
+        true, _ = pair_truth(scene, view.camera, a, b, rule)
+        cands = sorted(true)
+        if not cands:
+            continue
+        chosen.append((a, cands[int(rng.integers(len(cands)))], b))
+    items = []
+    for a, rel, b in chosen[: limits.relation]:
+        true, undecided = pair_truth(scene, view.camera, a, b, rule)
+        if rel not in true:
+            continue
+        la, lb = scene.objects[a].label, scene.objects[b].label
+        correct = {"kind": "relation", "subject": la, "relation": rel, "object": lb}
+        dis = _relation_distractors(scene, a, b, rel, true, undecided, labels, rng)
+        if len(dis) < 3:
+            continue
+        prompt, letter, meta = _finish_mcq(
+            RELATION_PROMPT, correct, dis, counts, rng,
+            {"red": a, "blue": b, "relation": rel, "phrase": RELATION_PHRASES[rel]})
+        if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
+            counts[letter] -= 1
+            continue
+        items.append(Item("relation_mcq", prompt, letter, meta,
+                          [("red", view.objects[a]["bbox"]), ("blue", view.objects[b]["bbox"])]))
+    return items
+
+
+def _visible_parts(scene: SceneFacts, view: ViewFacts, oid: str) -> set[str]:
+    return {n for n in scene.objects[oid].parts if f"{oid}:{n}" in view.parts}
+
+
+def contact_items(scene: SceneFacts, view: ViewFacts, part_map: dict[str, list[str]],
+                  limits: TaskLimits, rule: VisibilityRule, counts: dict[str, int],
+                  rng: np.random.Generator) -> list[Item]:
+    """Part-contact MCQs of one view.
+
+    A question about touching objects asks which parts touch; its answer is a contact of
+    two visible parts from ``contacts.json``. A question about visible objects that do not
+    touch has "not in contact" as its answer. Every question offers the "not in contact"
+    option; the other distractors change the parts (through the object's own parts) or the
+    object (through ``part_map``, category label -> part labels).
+    """
+    vis = list(view.objects)
+    touching, apart = [], []
+    for i, a in enumerate(vis):
+        for b in vis[i + 1:]:
+            if (a, b) in scene.contacts:
+                va, vb = _visible_parts(scene, view, a), _visible_parts(scene, view, b)
+                pairs = sorted((pa, pb) for pa, pb in scene.contacts[(a, b)]
+                               if pa in va and pb in vb)
+                if pairs:
+                    touching.append((a, b, pairs))
+            else:
+                apart.append((a, b))
+    rng.shuffle(touching)
+    touching = touching[: limits.contact]
+    n_apart = min(len(apart), max(1, int(round(limits.no_contact_ratio * len(touching)))))
+    picked_apart = [apart[int(i)] for i in rng.permutation(len(apart))[:n_apart]]
+    items = []
+    for a, b, pairs in touching + [(a, b, None) for a, b in picked_apart]:
+        if rng.random() < 0.5:
+            a, b = b, a
+            pairs = None if pairs is None else [(q, p) for p, q in pairs]
+        oa, ob = scene.objects[a], scene.objects[b]
+        truth = _label_contacts(scene, a, b)
+        no_contact = {"kind": "no_contact", "subject": oa.label, "object": ob.label}
+        la_parts = sorted(set(oa.parts.values()))
+        lb_parts = sorted(set(ob.parts.values()))
+        # two objects of one category: a part pair that touches the other way round would
+        # read as true, so it is no distractor
+        wrong = [(p, q) for p in la_parts for q in lb_parts if (p, q) not in truth
+                 and (oa.label != ob.label or (q, p) not in truth)]
+        rng.shuffle(wrong)
+        swaps = []
+        present = {o.label for o in scene.objects.values()}
+        for lab, parts in part_map.items():
+            if lab not in present and parts:
+                swaps.append((lab, parts))
+        if pairs is None:
+            correct = no_contact
+            dis = [{"kind": "contact", "subject": oa.label, "subject_part": p,
+                    "object": ob.label, "object_part": q} for p, q in wrong[:3]]
+        else:
+            pa, pb = pairs[int(rng.integers(len(pairs)))]
+            correct = {"kind": "contact", "subject": oa.label, "subject_part": oa.parts[pa],
+                       "object": ob.label, "object_part": ob.parts[pb]}
+            dis = [no_contact]
+            dis += [{"kind": "contact", "subject": oa.label, "subject_part": p,
+                     "object": ob.label, "object_part": q} for p, q in wrong[:1]]
+        while len(dis) < 3 and swaps:
+            lab, parts = swaps.pop(int(rng.integers(len(swaps))))
+            part = parts[int(rng.integers(len(parts)))]
+            if rng.random() < 0.5 and correct["kind"] == "contact":
+                dis.append({**correct, "object": lab, "object_part": part})
+            else:
+                base = correct if correct["kind"] == "contact" else {
+                    "kind": "contact", "subject": oa.label, "subject_part": la_parts[0],
+                    "object": ob.label, "object_part": lb_parts[0]}
+                dis.append({**base, "subject": lab, "subject_part": part})
+        texts = {option_text(correct)}
+        uniq = []
+        for d in dis:
+            t = option_text(d)
+            if t not in texts:
+                texts.add(t)
+                uniq.append(d)
+        if len(uniq) < 3:
+            continue
+        prompt, letter, meta = _finish_mcq(
+            CONTACT_PROMPT, correct, uniq[:3], counts, rng,
+            {"red": a, "blue": b, "relation": "no contact" if pairs is None else "contact"})
+        if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
+            counts[letter] -= 1
+            continue
+        items.append(Item("contact_mcq", prompt, letter, meta,
+                          [("red", view.objects[a]["bbox"]), ("blue", view.objects[b]["bbox"])]))
+    return items
+
+
+def format_box(box: list[int]) -> str:
+    """``<|box_start|>x1, y1, x2, y2<|box_end|>`` (0-1000 grid)."""
+    return "<|box_start|>" + ", ".join(str(int(v)) for v in box) + "<|box_end|>"
+
+
+def sgg_triplets(scene: SceneFacts, view: ViewFacts, rule: VisibilityRule
+                 ) -> list[tuple[str, str, str]]:
+    """The scene graph of a view: object ids and vocabulary relations.
+
+    PAG relations that hold after settling between two visible objects, plus ``left of``
+    between neighbours (in camera x) among the visible objects that stand on the same
+    supporting object (a mug and a book on one desk), where it is decided. Camera-frame relations are given in their canonical
+    direction (``left of``, ``in front of``).
+    """
+    out = {(c, r, p) for c, r, p in scene.pag if c in view.objects and p in view.objects}
+    support: dict[str, str] = {c: p for c, r, p in scene.pag if r in SUPPORT_RELATIONS}
+    groups: dict[str, list[tuple[float, str]]] = {}
+    for oid in sorted(view.objects):
+        if support.get(oid) is not None:
+            x = float((view.camera.R @ scene.objects[oid].centroid + view.camera.t)[0])
+            groups.setdefault(support[oid], []).append((x, oid))
+    for members in groups.values():
+        members.sort()
+        for (_, a), (_, b) in zip(members, members[1:], strict=False):
+            true, _ = pair_truth(scene, view.camera, a, b, rule)
+            if "LEFT_OF" in true:
+                out.add((a, "LEFT_OF", b))
+    canon = set()
+    for s, r, o in out:
+        if r in INVERSE_RELATIONS:
+            s, r, o = o, INVERSE_RELATIONS[r], s
+        canon.add((s, r, o))
+    return sorted(canon)
+
+
+def sgg_item(scene: SceneFacts, view: ViewFacts, candidates: list[str], rule: VisibilityRule,
+             *, boxes: str = "projected") -> Item | None:
+    """The scene-graph item of a view (None when no object is visible).
+
+    Parameters
+    ----------
+    boxes : str
+        ``projected`` (the paper: the 3-D oriented box projected into the image) or ``mask``
+        (the tight box of the visible mask).
+    """
+    if not view.objects:
+        return None
+    cam = view.camera
+    rows = []
+    for oid, rec in view.objects.items():
+        if boxes == "mask":
+            x1, y1, x2, y2 = rec["bbox"]
+            px = [x1, y1, x2 + 1, y2 + 1]
+        else:
+            px = projected_box(cam, scene.objects[oid].corners)
+            if px is None:
+                continue
+        rows.append((oid, to_grid(px, cam.width, cam.height)))
+    if not rows:
+        return None
+    rows.sort(key=lambda r: (scene.objects[r[0]].label, r[1][0], r[1][1], r[0]))
+    names: dict[str, str] = {}
+    seen: dict[str, int] = {}
+    objects = []
+    for oid, g in rows:
+        lab = scene.objects[oid].label
+        seen[lab] = seen.get(lab, 0) + 1
+        names[oid] = f"{lab}#{seen[lab]}"
+        objects.append({"name": names[oid], "label": lab, "object": oid, "box": g})
+    triplets = [[names[s], RELATION_PHRASES[r], names[o]]
+                for s, r, o in sgg_triplets(scene, view, rule) if s in names and o in names]
+    answer = "Objects:\n" + "\n".join(f"{o['name']} {format_box(o['box'])}" for o in objects)
+    answer += "\nRelations:\n" + "\n".join(f"({s}, {r}, {o})" for s, r, o in triplets)
+    rels = [RELATION_PHRASES[r] for r in RELATION_PHRASES
+            if r not in CAMERA_RELATIONS[1::2] and r != NO_CONTACT]
+    prompt = SGG_PROMPT.format(objects=", ".join(candidates), relations=", ".join(rels))
+    return Item("sgg", prompt, answer.rstrip(), {"objects": objects, "triplets": triplets,
+                                                  "boxes": boxes})

@@ -1,0 +1,486 @@
+"""The VLM benchmark: building items from a dataset, scoring, baselines, clients, fine-tuning.
+
+One tiny dataset (4 scenes of two small rooms, 2 views each at 320x240) is built per
+session and turned into a benchmark once; every test reads those files.
+"""
+
+from __future__ import annotations
+
+import base64
+import io
+import json
+import shutil
+import socket
+import threading
+from collections import Counter
+from http.server import BaseHTTPRequestHandler, ThreadingHTTPServer
+from pathlib import Path
+
+import jsonschema
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+from PIL import Image
+from typer.testing import CliRunner
+
+from parse3d.cli import app, main
+from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
+from parse3d.vlm.build import read_jsonl, record_schema
+from parse3d.vlm.evaluate import evaluate, parse_choice, parse_scene_graph, score_sgg
+from parse3d.vlm.facts import VisibilityRule, load_scene_facts, view_facts
+from parse3d.vlm.items import option_holds
+
+runner = CliRunner()
+MIN_PIXELS = 150
+
+
+def _pag(name, room_type, objects, relations, size):
+    w, d = size
+    return {"format": "pag/1", "name": name,
+            "room": {"type": room_type, "footprint": [[0, 0], [w, 0], [w, d], [0, d]],
+                     "height": 2.6},
+            "objects": [{"id": i, "category": c} for i, c in objects], "relations": relations}
+
+
+def _on(child, parent):
+    return {"relation": "ON", "child": child, "parent": parent}
+
+
+PAGS = [
+    _pag("tiny-study", "study",
+         [("desk", "desk"), ("mug", "mug"), ("book", "book"), ("chair", "office_chair")],
+         [_on("desk", "floor"), {"relation": "AGAINST", "child": "desk:tabletop@back",
+                                 "parent": "wall_0"},
+          _on("mug", "desk:tabletop"), _on("book", "desk:tabletop"), _on("chair", "floor"),
+          {"relation": "NEAR", "child": "chair", "parent": "desk", "distance": 1.0}],
+         (3.0, 3.0)),
+    _pag("tiny-bedroom", "bedroom", [("ns", "nightstand"), ("lamp", "table_lamp"), ("bed", "bed")],
+         [_on("bed", "floor"), _on("ns", "floor"),
+          {"relation": "AGAINST", "child": "ns@back", "parent": "wall_0"},
+          _on("lamp", "ns:top_panel"), {"relation": "AGAINST", "child": "bed@back",
+                                        "parent": "wall_0"}],
+         (3.5, 3.5)),
+]
+
+
+@pytest.fixture(scope="session")
+def dataset(tmp_path_factory) -> Path:
+    pags = tmp_path_factory.mktemp("vlm-pags")
+    for p in PAGS:
+        (pags / f"{p['name']}.json").write_text(json.dumps(p))
+    out = tmp_path_factory.mktemp("vlm-ds") / "ds"
+    cfg = BuildConfig(scenes=4, seed=0, views=2, view_size=(320, 240),
+                      source=resolve_pag_paths([pags]))
+    report = build_dataset(cfg, out, workers=1)
+    assert report.ok == 4
+    return out
+
+
+@pytest.fixture(scope="session")
+def bench(dataset, tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("vlm-bench") / "vlm"
+    r = runner.invoke(app, ["vlm", "build", str(dataset), "--out", str(out),
+                            "--min-pixels", str(MIN_PIXELS)])
+    assert r.exit_code == 0, r.output
+    return out
+
+
+def _main(capsys, *args) -> tuple[int, str]:
+    """Run the real entry point (input errors -> exit 2); returns the code and all output."""
+    with pytest.raises(SystemExit) as e:
+        main([str(a) for a in args])
+    out = capsys.readouterr()
+    return e.value.code, out.out + out.err
+
+
+def _all(bench: Path) -> list[dict]:
+    return [r for s in ("train", "val", "test") for r in read_jsonl(bench / f"{s}.jsonl")]
+
+
+def test_build_records_splits_and_card(bench, dataset):
+    rows = _all(bench)
+    tasks = Counter(r["task"] for r in rows)
+    assert tasks["relation_mcq"] >= 8 and tasks["contact_mcq"] >= 2 and tasks["sgg"] >= 6
+    ids = [r["id"] for r in rows]
+    assert len(ids) == len(set(ids))
+    for r in rows:
+        assert {"id", "task", "scene", "view", "messages", "images"} <= set(r)
+        user, assistant = r["messages"]
+        assert user["role"] == "user" and user["content"].startswith("<image>")
+        assert assistant["role"] == "assistant" and assistant["content"]
+        assert len(r["images"]) == 1
+        img = bench / r["images"][0]  # relative to the JSONL folder
+        assert img.exists() and Image.open(img).size == (320, 240)
+        if r["task"] != "sgg":
+            assert assistant["content"] in "ABCD" and assistant["content"] == r["meta"]["answer"]
+            assert len(r["meta"]["options"]) == 4
+            assert "(A) " in user["content"] and "(D) " in user["content"]
+    # whole scenes per split
+    scenes = {s: {r["scene"] for r in read_jsonl(bench / f"{s}.jsonl")}
+              for s in ("train", "val", "test")}
+    assert not (scenes["train"] & scenes["test"]) and not (scenes["train"] & scenes["val"])
+    assert not (scenes["val"] & scenes["test"])
+    assert all(scenes.values())
+    validator = jsonschema.Draft202012Validator(record_schema())
+    for r in rows:
+        validator.validate(r)
+    card = json.loads((bench / "vlm.json").read_text())
+    assert card["format"] == "parse3d-vlm/1"
+    assert card["counts"]["all"]["tasks"] == dict(sorted(tasks.items()))
+    letters = card["counts"]["all"]["answer_letters"]["relation_mcq"]
+    assert sum(letters.values()) == tasks["relation_mcq"]
+    assert max(letters.values()) - min(letters.values()) <= 4  # balanced per scene
+    assert set(card["counts"]["all"]["room_types"]) == {"study", "bedroom"}
+    assert 0 <= card["counts"]["all"]["no_contact_share"]["contact_mcq"] <= 1
+    # nothing was written into the dataset
+    assert not any(p.suffix == ".jpg" for p in dataset.rglob("*"))
+
+
+def test_questions_ask_about_visible_things_and_have_one_true_option(bench, dataset):
+    rule = VisibilityRule(min_pixels=MIN_PIXELS)
+    facts = {}
+    for r in _all(bench):
+        if r["task"] == "sgg":
+            continue
+        scene = facts.setdefault(r["scene"], load_scene_facts(dataset / "scenes" / r["scene"]))
+        view = view_facts(scene, next(v for v in scene.views if v["index"] == r["view"]), rule)
+        red, blue = r["meta"]["red"], r["meta"]["blue"]
+        assert view.objects[red]["pixels"] >= MIN_PIXELS
+        assert view.objects[blue]["share"] >= 0.3
+        holds = [option_holds(scene, view, red, blue, o, rule) for o in r["meta"]["options"]]
+        assert holds.count(True) == 1
+        assert "ABCD"[holds.index(True)] == r["meta"]["answer"]
+        if r["task"] == "contact_mcq":
+            assert any(o["kind"] == "no_contact" for o in r["meta"]["options"])
+
+
+def test_sgg_boxes_and_relations(bench):
+    sgg = [r for r in _all(bench) if r["task"] == "sgg"]
+    assert any(r["meta"]["triplets"] for r in sgg)
+    for r in sgg:
+        text = r["messages"][1]["content"]
+        assert "<|box_start|>" in text
+        objs, trip = parse_scene_graph(text)
+        assert [o["name"] for o in objs] == [o["name"] for o in r["meta"]["objects"]]
+        for o in objs:
+            x1, y1, x2, y2 = o["box"]
+            assert 0 <= x1 < x2 <= 1000 and 0 <= y1 < y2 <= 1000
+        assert [list(t) for t in trip] == r["meta"]["triplets"]
+        assert "on" in r["messages"][0]["content"] and "left of" in r["messages"][0]["content"]
+
+
+def test_build_is_deterministic_and_mask_boxes(bench, dataset, tmp_path):
+    again = tmp_path / "again"
+    r = runner.invoke(app, ["vlm", "build", str(dataset), "--out", str(again),
+                            "--min-pixels", str(MIN_PIXELS), "--boxes", "mask"])
+    assert r.exit_code == 0, r.output
+    a, b = read_jsonl(bench / "test.jsonl"), read_jsonl(again / "test.jsonl")
+    assert [x["id"] for x in a] == [x["id"] for x in b]
+    assert [x["messages"] for x in a if x["task"] != "sgg"] == \
+        [x["messages"] for x in b if x["task"] != "sgg"]
+    # mask boxes are the tight boxes of the visible masks: inside the projected ones' image
+    sa = [x for x in a if x["task"] == "sgg"]
+    sb = [x for x in b if x["task"] == "sgg"]
+    assert sa and [x["meta"]["boxes"] for x in sb] == ["mask"] * len(sb)
+    assert [x["meta"]["objects"] for x in sa] != [x["meta"]["objects"] for x in sb]
+
+
+def test_build_bad_input(dataset, tmp_path, capsys):
+    # a dataset whose scenes have no views
+    bare = tmp_path / "bare"
+    (bare / "scenes").mkdir(parents=True)
+    src = dataset / "scenes" / "00000"
+    dst = bare / "scenes" / "00000"
+    dst.mkdir()
+    for f in ("scene.json", "contacts.json", "scene.glb"):
+        shutil.copy(src / f, dst / f)
+    code, out = _main(capsys, "vlm", "build", bare, "--out", tmp_path / "o")
+    assert code == 2 and "Traceback" not in out
+    assert "no rendered views" in out and "--views" in out
+    code, out = _main(capsys, "vlm", "build", dataset, "--out", dataset / "vlm")
+    assert code == 2 and "outside the dataset" in out
+    code, out = _main(capsys, "vlm", "build", src, "--out", tmp_path / "o2")
+    assert code == 2 and "not a dataset folder" in out
+
+
+def test_build_renders_missing_views_outside_the_dataset(dataset, tmp_path):
+    bare = tmp_path / "bare"
+    (bare / "scenes").mkdir(parents=True)
+    src, dst = dataset / "scenes" / "00001", bare / "scenes" / "00001"
+    dst.mkdir()
+    for f in ("scene.json", "contacts.json", "scene.glb"):
+        shutil.copy(src / f, dst / f)
+    before = sorted(p.name for p in dst.iterdir())
+    out = tmp_path / "vlm"
+    r = runner.invoke(app, ["vlm", "build", str(bare), "--out", str(out), "--views", "1",
+                            "--min-pixels", str(MIN_PIXELS), "--json"])
+    assert r.exit_code == 0, r.output
+    assert sorted(p.name for p in dst.iterdir()) == before
+    assert (out / "renders" / "00001" / "views.json").exists()
+    assert json.loads(r.stdout)["rendered_scenes"] == 1
+    rows = read_jsonl(out / "test.jsonl") + read_jsonl(out / "train.jsonl")
+    assert rows and all(x["view"] == 0 for x in rows)
+
+
+@pytest.mark.parametrize("text, letter", [
+    ("C", "C"), ("(C)", "C"), ("The answer is C.", "C"), ("answer: (b)", "B"), ("D.", "D"),
+    ("(A) the mug is on the desk", "A"), ("**B**", "B"), ("I think it is C", "C"),
+    ("none of them", None), ("A or B", None), ("", None),
+])
+def test_parse_choice(text, letter):
+    assert parse_choice(text) == letter
+
+
+_PIECES = ["<|box_start|>", "<|box_end|>", "mug#1", "mug", "#2", "(", ")", ", ", " on ",
+           "12", "-3", "1000", "Objects:\n", "\nRelations:\n", "right of", "couch", "C", "."]
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.one_of(st.lists(st.sampled_from(_PIECES), max_size=30).map("".join), st.text()))
+def test_parsers_take_any_text(text):
+    assert parse_choice(text) in (None, "A", "B", "C", "D")
+    objs, trip = parse_scene_graph(text)
+    gt = {"objects": [{"name": "mug#1", "label": "mug", "box": [0, 0, 10, 10]}],
+          "triplets": [["mug#1", "on", "mug#1"]]}
+    s = score_sgg(gt, text)
+    assert s.correct_matched <= min(s.pred, s.gt) and s.correct_unmatched <= min(s.pred, s.gt)
+    assert all(len(o["box"]) == 4 for o in objs) and all(len(t) == 3 for t in trip)
+
+
+def test_sgg_scoring_matches_boxes_per_class():
+    gt = {"objects": [{"name": "mug#1", "label": "mug", "box": [100, 100, 200, 200]},
+                      {"name": "mug#2", "label": "mug", "box": [400, 100, 500, 200]},
+                      {"name": "desk#1", "label": "desk", "box": [50, 150, 900, 900]}],
+          "triplets": [["mug#1", "on", "desk#1"], ["mug#2", "on", "desk#1"],
+                       ["mug#1", "left of", "mug#2"]]}
+    # mugs predicted in the other order, a synonym, an inverse relation, one box off
+    pred = ("Objects:\nmug#1 <|box_start|>405, 100, 500, 205<|box_end|>\n"
+            "mug#2 <|box_start|>100, 95, 200, 200<|box_end|>\n"
+            "table#1 <|box_start|>50, 150, 900, 900<|box_end|>\n"
+            "Relations:\n(mug#2, on top of, table#1)\n(mug#1, right of, mug#2)\n"
+            "(mug#1, under, mug#2)")
+    s = score_sgg(gt, pred)
+    # "table" is not "desk": no box match for the desk, so only the left-of triplet counts
+    assert (s.pred, s.gt, s.correct_matched) == (3, 3, 1)
+    assert s.correct_unmatched == 1
+    pred_ok = pred.replace("table#1", "desk#1")
+    s = score_sgg(gt, pred_ok)
+    assert (s.correct_matched, s.correct_unmatched, s.matched_objects) == (2, 2, 3)
+    m = s.metrics()
+    assert m["precision"] == pytest.approx(200 / 3) and m["recall"] == pytest.approx(200 / 3)
+
+
+def test_baselines_and_eval(bench, tmp_path):
+    test = bench / "test.jsonl"
+    scores = {}
+    for name in ("random", "prior", "blind", "oracle", "perturbed"):
+        pred = tmp_path / f"{name}.jsonl"
+        r = runner.invoke(app, ["vlm", "baseline", name, "--data", str(test),
+                                "--out", str(pred)])
+        assert r.exit_code == 0, r.output
+        r = runner.invoke(app, ["vlm", "eval", "--gt", str(test), "--pred", str(pred),
+                                "--json"])
+        assert r.exit_code == 0, r.output
+        scores[name] = json.loads(r.stdout)
+    o = scores["oracle"]
+    assert o["relation_mcq"]["accuracy"] == 100.0
+    if o["contact_mcq"]["n"]:
+        assert o["contact_mcq"]["accuracy"] == 100.0
+    assert o["sgg"]["f1"] == 100.0 and o["sgg"]["f1_nomatch"] == 100.0
+    assert o["unparseable"]["count"] == 0
+    p = scores["perturbed"]
+    assert p["sgg"]["recall_nomatch"] < 100.0 or p["sgg"]["recall"] < 100.0
+    assert p["sgg"]["precision_nomatch"] == 100.0
+    assert p["sgg"]["recall"] <= p["sgg"]["recall_nomatch"]
+    assert scores["random"]["sgg"]["f1"] < 50
+    # the oracle also answers every training question
+    pred = tmp_path / "oracle-train.jsonl"
+    assert runner.invoke(app, ["vlm", "baseline", "oracle", "--data",
+                               str(bench / "train.jsonl"), "--out", str(pred)]).exit_code == 0
+    rep = evaluate(read_jsonl(bench / "train.jsonl"),
+                   {x["id"]: x["response"] for x in read_jsonl(pred)})
+    assert rep.relation["accuracy"] == 100.0 and rep.sgg["f1"] == 100.0
+    r = runner.invoke(app, ["vlm", "eval", "--gt", str(test), "--pred",
+                            str(tmp_path / "oracle.jsonl"), "--pred",
+                            str(tmp_path / "random.jsonl")])
+    assert r.exit_code == 0 and "| oracle | 100.0 |" in r.output and "Visual Relation" in r.output
+
+
+def test_eval_bad_predictions(bench, tmp_path, capsys):
+    test = bench / "test.jsonl"
+    rows = read_jsonl(test)
+    pred = tmp_path / "p.jsonl"
+    lines = [{"id": r["id"], "response": "no idea"} for r in rows[1:]] + [
+        {"id": "nope", "response": "A"}]
+    pred.write_text("".join(json.dumps(x) + "\n" for x in lines))
+    code, out = _main(capsys, "vlm", "eval", "--gt", test, "--pred", pred)
+    assert code == 2 and "Traceback" not in out
+    assert "1 benchmark ids have no prediction" in out and rows[0]["id"] in out
+    assert "not in test.jsonl" in out
+    r = runner.invoke(app, ["vlm", "eval", "--gt", str(test), "--pred", str(pred),
+                            "--allow-missing", "--json"])
+    assert r.exit_code == 0, r.output
+    d = json.loads(r.stdout)
+    assert d["missing"]["count"] == 1 and d["unknown"]["count"] == 1
+    n_mcq = sum(r["task"] != "sgg" for r in rows[1:])
+    assert d["unparseable"]["count"] == n_mcq
+    assert d["relation_mcq"]["accuracy"] == 0.0
+    pred.write_text('{"id": "x"}\n')
+    code, out = _main(capsys, "vlm", "eval", "--gt", test, "--pred", pred)
+    assert code == 2 and "line 1" in out and "response" in out
+    pred.write_text("{not json\n")
+    code, out = _main(capsys, "vlm", "eval", "--gt", test, "--pred", pred)
+    assert code == 2 and "not valid JSON" in out
+
+
+# -- model client ------------------------------------------------------------------------
+
+
+class _Chat(BaseHTTPRequestHandler):
+    """An OpenAI-compatible chat endpoint: checks the request, fails the first calls (503)."""
+
+    state: dict = {}
+
+    def log_message(self, *args):  # keep the test output clean
+        pass
+
+    def do_POST(self):  # noqa: N802 - http.server's name
+        st = self.state
+        body = json.loads(self.rfile.read(int(self.headers["Content-Length"])))
+        with st["lock"]:
+            st["calls"] += 1
+            fail = st["fail"] > 0
+            st["fail"] -= 1 if fail else 0
+        if self.path != "/v1/chat/completions" or body.get("model") != "tiny-vl":
+            return self._send(404, {"error": {"message": "no such model"}})
+        if fail:
+            return self._send(503, {"error": {"message": "overloaded"}})
+        (msg,) = body["messages"]
+        kinds = [p["type"] for p in msg["content"]]
+        assert msg["role"] == "user" and kinds == ["image_url", "text"]
+        url = msg["content"][0]["image_url"]["url"]
+        head, data = url.split(",", 1)
+        assert head == "data:image/jpeg;base64"
+        Image.open(io.BytesIO(base64.b64decode(data))).verify()
+        text = msg["content"][1]["text"]
+        with st["lock"]:
+            st["answered"].append(text)
+        reply = ("Objects:\ndesk#1 <|box_start|>0, 0, 500, 500<|box_end|>\nRelations:\n"
+                 if text.startswith("Detect") else "The answer is (B).")
+        self._send(200, {"id": "x", "object": "chat.completion", "model": body["model"],
+                         "choices": [{"index": 0, "finish_reason": "stop",
+                                      "message": {"role": "assistant", "content": reply}}],
+                         "usage": {"prompt_tokens": 100, "completion_tokens": 5,
+                                   "total_tokens": 105}})
+
+    def _send(self, code, doc):
+        data = json.dumps(doc).encode()
+        self.send_response(code)
+        self.send_header("Content-Type", "application/json")
+        self.send_header("Content-Length", str(len(data)))
+        self.end_headers()
+        self.wfile.write(data)
+
+
+@pytest.fixture
+def server():
+    _Chat.state = {"calls": 0, "fail": 2, "answered": [], "lock": threading.Lock()}
+    httpd = ThreadingHTTPServer(("127.0.0.1", 0), _Chat)
+    t = threading.Thread(target=httpd.serve_forever, daemon=True)
+    t.start()
+    yield f"http://127.0.0.1:{httpd.server_address[1]}/v1", _Chat.state
+    httpd.shutdown()
+    httpd.server_close()
+
+
+def test_ask_endpoint_retries_resumes_and_scores(bench, server, tmp_path, capsys):
+    url, state = server
+    test = bench / "test.jsonl"
+    rows = read_jsonl(test)
+    out = tmp_path / "pred.jsonl"
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl", "--data",
+                       test, "--out", out, "--limit", 3, "--backoff", 0.01, "-j", 2, "--json")
+    assert code == 0, text
+    first = json.loads(text[text.index("{"):])
+    assert first["answered"] == 3 and first["retries"] >= 2
+    assert first["prompt_tokens"] == 300 and first["latency_s"]["p95"] > 0
+    # an interrupted run (here: --limit) resumes: only the rest is asked
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl", "--data",
+                       test, "--out", out, "--backoff", 0.01, "--price-in", 1.0)
+    assert code == 0, text
+    assert f"{len(rows) - 3} answered, 3 already there" in text and "cost $" in text
+    preds = read_jsonl(out)
+    assert sorted(p["id"] for p in preds) == sorted(r["id"] for r in rows)
+    assert len(state["answered"]) == len(rows)
+    # the prompt went without the answer, and the predictions score
+    assert all("Your answer should only be" in t or t.startswith("Detect")
+               for t in state["answered"])
+    code, text = _main(capsys, "vlm", "eval", "--gt", test, "--pred", out, "--json")
+    assert code == 0
+    d = json.loads(text)
+    assert d["unparseable"]["count"] == 0 and d["relation_mcq"]["n"] > 0
+
+
+def test_ask_bad_endpoint_and_arguments(bench, server, tmp_path, capsys):
+    url, _ = server
+    test = bench / "test.jsonl"
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        closed = s.getsockname()[1]
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", f"http://127.0.0.1:{closed}/v1",
+                       "--model", "m", "--data", test, "--out", tmp_path / "p.jsonl",
+                       "--retries", 1, "--backoff", 0.01)
+    assert code == 2 and "Traceback" not in text
+    assert "cannot connect" in text and "--endpoint" in text
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "wrong", "--data",
+                       test, "--out", tmp_path / "p.jsonl")
+    assert code == 2 and "404" in text
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl",
+                       "--local", tmp_path, "--data", test, "--out", tmp_path / "p.jsonl")
+    assert code == 2 and "exactly one of" in text
+    code, text = _main(capsys, "vlm", "ask", "--local", tmp_path, "--data", test,
+                       "--out", tmp_path / "p.jsonl")
+    assert code == 2 and "not a model folder" in text
+
+
+# -- fine-tuning a tiny offline Qwen3-VL ---------------------------------------------------------
+
+
+def test_finetune_tiny_qwen3vl_then_ask_local_and_eval(bench, tmp_path, capsys):
+    from parse3d.vlm.finetune import FinetuneOptions, lr_at
+    from parse3d.vlm.tiny import make_tiny_qwen3vl
+
+    texts = [m["content"] for r in read_jsonl(bench / "train.jsonl") for m in r["messages"]]
+    model = make_tiny_qwen3vl(tmp_path / "tiny", texts, vocab_size=400)
+    adapter = tmp_path / "lora"
+    code, text = _main(capsys, "vlm", "finetune", "--model", model, "--data", bench, "--out",
+                       adapter, "--max-items", 8, "--epochs", 3, "--global-batch", 4,
+                       "--micro-batch", 2, "--lr", 3e-3, "--min-lr", 3e-4,
+                       "--ratios", "relation_mcq=1,contact_mcq=1,sgg=0", "--json")
+    assert code == 0, text
+    rec = json.loads((adapter / "finetune.json").read_text())
+    losses = rec["losses"]
+    assert rec["updates"] == 6 and rec["accumulation"] == 2
+    assert rec["recipe"]["rank"] == 8 and rec["recipe"]["alpha"] == 32
+    assert np.mean(losses[-2:]) < losses[0] - 0.3  # the loss falls
+    assert (adapter / "adapter_config.json").exists()
+    cfg = json.loads((adapter / "adapter_config.json").read_text())
+    assert cfg["r"] == 8 and cfg["lora_alpha"] == 32
+    assert all("language_model" in t for t in cfg["target_modules"])
+    assert any(t.endswith("down_proj") for t in cfg["target_modules"])
+    # the recipe's schedule: linear warm-up, then down to the minimum
+    o = FinetuneOptions()
+    assert lr_at(0, 100, o) == pytest.approx(2e-5) and lr_at(4, 100, o) == pytest.approx(1e-4)
+    assert lr_at(99, 100, o) == pytest.approx(1e-5, rel=0.05)
+    # reload the adapter, answer the test split, score it
+    pred = tmp_path / "pred.jsonl"
+    code, text = _main(capsys, "vlm", "ask", "--local", model, "--adapter", adapter, "--data",
+                       bench / "test.jsonl", "--out", pred, "--max-tokens", 4)
+    assert code == 0, text
+    assert len(read_jsonl(pred)) == len(read_jsonl(bench / "test.jsonl"))
+    code, text = _main(capsys, "vlm", "eval", "--gt", bench / "test.jsonl", "--pred", pred,
+                       "--json")
+    assert code == 0, text
+    d = json.loads(text)
+    assert d["missing"]["count"] == 0 and d["relation_mcq"]["accuracy"] is not None
