@@ -30,14 +30,10 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError, Problem
-from .build import (
-    BuildConfig,
-    SceneOutcome,
-    SceneSource,
-    _base_record,
-    make_source,
-    plan_scene,
-)
+from .build_config import BuildConfig
+from .planning import plan_scene
+from .sources import SceneSource, make_source
+from .task import SceneOutcome, _base_record, build_scene
 
 __all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit"]
 
@@ -91,8 +87,6 @@ def _process_state(config: BuildConfig) -> tuple[Any, Any]:
 
 def run_task(config: BuildConfig, index: int) -> SceneOutcome:
     """Build one scene with this process's source and renderer (the task of every executor)."""
-    from .build import build_scene
-
     source, renderer = _process_state(config)
     return build_scene(config, index, source=source, renderer=renderer)
 
