@@ -40,9 +40,19 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
+from .._deps import require
+from .._files import FolderLock, check_output_dir
 from ..errors import InputError, Problem
 from .build_config import DATASET_FORMAT, BuildConfig
-from .commit import _check_config, _commit, _recover, _write_json
+from .commit import (
+    LOCK_NAME,
+    _check_config,
+    _clean_journal,
+    _commit,
+    _recover,
+    _write_json,
+    check_out_folder,
+)
 from .executors import make_executor
 from .manifest import write_manifest
 from .planning import ScenePlan, plan_scene, scene_folder
@@ -57,6 +67,9 @@ from .sources import (
 )
 from .task import SceneOutcome, build_scene
 from .template_model import ROOM_TYPES
+
+#: Most worker processes (or Ray tasks in flight) a build may ask for.
+MAX_WORKERS = 512
 
 __all__ = [
     "ROOM_TYPES",
@@ -129,7 +142,8 @@ class BuildReport:
 def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "local",
                   workers: int = 2, ray_address: str | None = None,
                   retry_failed: bool = False, max_tasks: int = 200, flush_every: float = 2.0,
-                  progress: Callable[[BuildEvent], None] | None = None) -> BuildReport:
+                  progress: Callable[[BuildEvent], None] | None = None,
+                  warn: Callable[[str], None] | None = None) -> BuildReport:
     """Build (or resume) a dataset of ``config.scenes`` scenes in ``out``.
 
     Parameters
@@ -153,24 +167,56 @@ def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "loca
         own records; the manifest is always rewritten at the end).
     progress : callable or None
         Called with a :class:`BuildEvent` for every finished scene.
+    warn : callable or None
+        Called with a one-line message for every damaged file found on resume (the scene is
+        built again; a damaged manifest is rebuilt from the per-scene records).
 
     Raises
     ------
     InputError
-        Unknown room types or executor, an empty source, or a folder built with other
-        settings.
+        Unknown room types or executor, an empty source, a folder built with other settings,
+        a non-empty folder that is not a dataset (nothing is touched), or a folder another
+        build is writing (its lock is held by a live process).
+    DependencyError
+        A package the build needs is not installed (checked before the disk is touched).
     """
     out = Path(out)
-    source = make_source(config)
-    rooms = select_rooms(config, source)
+    # everything that can refuse the build does so before the disk is touched
+    require("pyarrow", feature="a dataset build (manifest.parquet)")
+    if config.settle:
+        require("sapien", feature="settling (drop --no-settle to skip it)")
+    require("moderngl", feature="rendering previews")
+    if executor == "ray":
+        require("ray", feature="the Ray executor")
     if executor not in ("local", "ray"):
         raise InputError(Problem("", f"unknown executor {executor!r} (use local or ray)",
                                  "--executor", "parameter"))
-    if int(workers) < 1:
-        raise InputError(Problem("", f"--workers must be >= 1, got {workers}", "--workers",
-                                 "parameter"))
-    out.mkdir(parents=True, exist_ok=True)
+    if not 1 <= int(workers) <= MAX_WORKERS:
+        raise InputError(Problem("", f"--workers must be in 1..{MAX_WORKERS}, got {workers}",
+                                 "--workers", "parameter"))
+    if not 1 <= int(max_tasks) <= 1_000_000:
+        raise InputError(Problem("", f"--max-tasks must be in 1..1000000, got {max_tasks}",
+                                 "--max-tasks", "parameter"))
+    check_out_folder(out)
+    source = make_source(config)
+    rooms = select_rooms(config, source)
     config_run = replace(config, rooms=tuple(rooms))
+    _check_config(out, config_run)
+    check_output_dir(out)
+    with FolderLock(out, name=LOCK_NAME, what="this dataset folder"):
+        return _build_locked(config, config_run, out, source, executor=executor,
+                             workers=workers, ray_address=ray_address,
+                             retry_failed=retry_failed, max_tasks=max_tasks,
+                             flush_every=flush_every, progress=progress, warn=warn)
+
+
+def _build_locked(config: BuildConfig, config_run: BuildConfig, out: Path, source: SceneSource,
+                  *, executor: str, workers: int, ray_address: str | None, retry_failed: bool,
+                  max_tasks: int, flush_every: float,
+                  progress: Callable[[BuildEvent], None] | None,
+                  warn: Callable[[str], None] | None) -> BuildReport:
+    """:func:`build_dataset` once the folder is checked and locked."""
+    check_out_folder(out)  # again under the lock: nothing foreign slipped in meanwhile
     _check_config(out, config_run)
     cfg_file = out / "dataset.json"
     stored = json.loads(cfg_file.read_text()) if cfg_file.exists() else {}
@@ -178,7 +224,7 @@ def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "loca
                            "scenes": max(int(stored.get("scenes", 0)), int(config.scenes)),
                            "rooms_requested": list(config.rooms)})
 
-    rows = _recover(out, config.scenes)
+    rows = _recover(out, config.scenes, warn=warn)
     if retry_failed:
         rows = {i: r for i, r in rows.items() if r["status"] == "ok"}
     resumed = sum(1 for i in rows if i < config.scenes)
@@ -209,6 +255,7 @@ def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "loca
                     last_flush = time.perf_counter()
     finally:
         write_manifest(out / "manifest.parquet", list(rows.values()))
+        _clean_journal(out)
     mine = [r for i, r in rows.items() if i < config.scenes]
     return BuildReport(out=out, total=len(mine),
                        ok=sum(1 for r in mine if r["status"] == "ok"),

@@ -388,7 +388,5 @@ def write_stats(stats: DatasetStats, out: str | Path, *, top_categories: int = 4
     atomic_write_text(md, stats.markdown())
     js = out / "stats.json"
     atomic_write_text(js, json.dumps(stats.table(), indent=1) + "\n")
-    for p in (md, js):
-        p.chmod(0o644)
     files += [md, js]
     return files

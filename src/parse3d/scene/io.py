@@ -12,13 +12,12 @@ Writes are atomic: files go to a temporary name in the folder and are renamed in
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .._files import atomic_write_bytes, atomic_write_text
 from ..errors import InputError, Problem
 from ..geometry.frames import matrix_to_quat, quat_to_matrix
 from ..pag.model import PAG
@@ -26,7 +25,7 @@ from .model import Contact, PlacedObject, RelationCheck, Scene
 from .shell import build_shell
 
 __all__ = ["SCENE_FORMAT", "scene_to_dict", "write_scene", "read_scene", "scene_schema",
-           "atomic_write_text", "atomic_write_bytes"]
+           "atomic_write_text", "atomic_write_bytes", "clear_scene_outputs", "OUTPUT_PATTERNS"]
 
 SCENE_FORMAT = "parse3d-scene/1"
 
@@ -101,24 +100,6 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
     }
 
 
-def atomic_write_bytes(path: Path, data: bytes) -> None:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-
-
-def atomic_write_text(path: Path, text: str) -> None:
-    atomic_write_bytes(path, text.encode("utf-8"))
-
-
 def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
     """Write ``scene.json``, ``scene.glb`` and (when extracted) ``contacts.json``."""
     from .export import export_glb
@@ -132,6 +113,37 @@ def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
     if glb:
         atomic_write_bytes(out / "scene.glb", export_glb(scene))
     return out
+
+
+#: Files a solve, settle or render writes into a scene folder (``*`` is a view index).
+OUTPUT_PATTERNS = ("scene.json", "scene.glb", "contacts.json", "preview.png", "views.json",
+                   "rgb_*.png", "depth_*.png", "instance_*.png", "part_*.png")
+
+
+def clear_scene_outputs(out_dir: str | Path) -> list[Path]:
+    """Remove the outputs of an earlier solve from ``out_dir`` (and nothing else).
+
+    A solve owns its folder's outputs: without this, a new ``scene.json`` would sit beside the
+    previous seed's ``contacts.json``, preview and views. Only regular files whose names match
+    :data:`OUTPUT_PATTERNS` are removed; any other file is left alone.
+
+    Returns
+    -------
+    list of Path
+        The files removed.
+    """
+    import re
+
+    out = Path(out_dir)
+    if not out.is_dir():
+        return []
+    rx = re.compile("|".join(re.escape(p).replace(r"\*", r"\d+") for p in OUTPUT_PATTERNS))
+    gone = []
+    for f in sorted(out.iterdir()):
+        if rx.fullmatch(f.name) and f.is_file() and not f.is_symlink():
+            f.unlink()
+            gone.append(f)
+    return gone
 
 
 def scene_schema() -> dict[str, Any]:
@@ -191,7 +203,8 @@ def read_scene(path: str | Path) -> Scene:
                                              r.get("holds_settled"), r.get("residual_settled"),
                                              r.get("detail", "")))
     cf = f.parent / "contacts.json"
-    if cf.exists():
+    n_contacts = (d.get("summary") or {}).get("contacts")
+    if cf.exists() and n_contacts is not None:  # None: the contacts.json is not this scene's
         scene.contacts = [Contact(c["a"], c["b"], int(c["samples"]), float(c["min_distance"]))
                           for c in json.loads(cf.read_text())]
     return scene
