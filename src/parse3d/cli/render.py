@@ -9,7 +9,7 @@ from pathlib import Path
 import typer
 
 from ..errors import InputError, Problem
-from ._common import console, print_json
+from ._common import check_seed, console, print_json
 
 _SIZE = re.compile(r"^\s*(\d+)\s*[xX]\s*(\d+)\s*$")
 
@@ -23,11 +23,15 @@ def parse_size(text: str) -> tuple[int, int]:
     return int(m.group(1)), int(m.group(2))
 
 
+#: Most views one ``parse3d render`` call may ask for.
+MAX_VIEWS = 1000
+
+
 def register(app: typer.Typer) -> None:
     @app.command("render")
     def render_cmd(
         scene_dir: Path = typer.Argument(..., help="Folder holding scene.json (from parse3d solve)."),
-        views: int = typer.Option(4, "--views", "-n", help="Number of sampled views."),
+        views: int = typer.Option(4, "--views", "-n", help="Number of sampled views, 0..1000."),
         size: str = typer.Option("640x480", "--size", help="Image size WIDTHxHEIGHT."),
         seed: int = typer.Option(0, "--seed", help="Seed of the view sampling."),
         overview: bool = typer.Option(False, "--overview",
@@ -46,9 +50,10 @@ def register(app: typer.Typer) -> None:
         from ..render import Renderer, overview_camera, sample_views, write_views
         from ..scene.io import read_scene
 
-        if views < 0:
-            raise InputError(Problem("", f"--views must be >= 0, got {views}", "--views",
-                                     "parameter"))
+        if not 0 <= views <= MAX_VIEWS:
+            raise InputError(Problem("", f"--views must be in 0..{MAX_VIEWS}, got {views}",
+                                     "--views", "parameter"))
+        check_seed(seed)
         width, height = parse_size(size)
         scene = read_scene(scene_dir)
         settled = False if solved else None
