@@ -70,7 +70,7 @@ def register(app: typer.Typer) -> None:
                       + (", all asleep early" if report.early_exit else "") + f"); "
                       f"{len(moved)} moved more than 1 cm or 2 deg; "
                       f"{len(scene.contacts)} part-level contacts ({scene.timings['contacts']:.3f} s)")
-        for flag in ("fell", "tipped", "left_support"):
+        for flag in ("fell", "tipped", "left_support", "sank"):
             ids = report.flagged(flag)
             if ids:
                 console.print(f"  [yellow]{flag}[/]: {', '.join(ids)}")

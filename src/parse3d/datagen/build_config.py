@@ -2,10 +2,17 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError, Problem
+
+#: Bounds of a build's settings (``--scenes``, ``--views``, ``--seed``, ``--time-limit`` s).
+MAX_SCENES = 10_000_000
+MAX_VIEWS = 100
+MAX_SEED = 2**32 - 1
+MAX_TIME_LIMIT = 86_400.0
 
 DATASET_FORMAT = "parse3d-dataset/1"
 
@@ -48,15 +55,18 @@ class BuildConfig:
     time_limit: float | None = 600.0
 
     def __post_init__(self) -> None:
-        if int(self.scenes) < 0:
-            raise InputError(Problem("", f"--scenes must be >= 0, got {self.scenes}",
-                                     "--scenes", "parameter"))
-        if int(self.views) < 0:
-            raise InputError(Problem("", f"--views must be >= 0, got {self.views}",
-                                     "--views", "parameter"))
-        if self.time_limit is not None and not float(self.time_limit) > 0:
-            raise InputError(Problem("", f"--time-limit must be > 0 seconds, got "
-                                         f"{self.time_limit}", "--time-limit", "parameter"))
+        for option, value, hi in (("--scenes", self.scenes, MAX_SCENES),
+                                  ("--views", self.views, MAX_VIEWS),
+                                  ("--seed", self.seed, MAX_SEED)):
+            if not 0 <= int(value) <= hi:
+                raise InputError(Problem("", f"{option} must be an integer in 0..{hi}, got "
+                                             f"{value}", option, "parameter"))
+        if self.time_limit is not None and not (
+                math.isfinite(float(self.time_limit))
+                and 0 < float(self.time_limit) <= MAX_TIME_LIMIT):
+            raise InputError(Problem("", f"--time-limit must be a number of seconds in (0, "
+                                         f"{MAX_TIME_LIMIT:g}], got {self.time_limit}",
+                                     "--time-limit", "parameter"))
         w, h = self.view_size
         if int(w) < 1 or int(h) < 1:
             raise InputError(Problem("", f"view size must be positive, got {w}x{h}",

@@ -29,6 +29,15 @@ def _schema_validator(fmt: str):
     return cls(schema)
 
 
+#: Most copies a ``count`` may make (the schemas' maximum).
+MAX_COUNT = 100
+
+
+def _too_many(v: Any) -> bool:
+    vals = v if isinstance(v, list) else [v]
+    return any(isinstance(x, int) and not isinstance(x, bool) and x > MAX_COUNT for x in vals)
+
+
 def _schema_problems(data: Any, fmt: str, file: str | None) -> list[Problem]:
     errors = sorted(_schema_validator(fmt).iter_errors(data),
                     key=lambda e: [str(p) for p in e.absolute_path])
@@ -38,6 +47,9 @@ def _schema_problems(data: Any, fmt: str, file: str | None) -> list[Problem]:
         for ptr, msg in _messages(err):
             if err.validator == "enum" and ptr == "/room_type":
                 msg = msg.replace("unknown room_type", "unknown room type")
+            if ptr.endswith("/count") and _too_many(err.instance):
+                msg = (f"count {err.instance} is too large: a count is at most {MAX_COUNT} "
+                       "copies (an integer or [low, high])")
             if (ptr, msg) not in seen:
                 seen.add((ptr, msg))
                 out.append(Problem(ptr, msg, file, "schema"))

@@ -21,7 +21,7 @@ Examples
 >>> t = list_templates("study")[0]                                    # doctest: +SKIP
 >>> pag = expand_template(t, seed=3)                                  # doctest: +SKIP
 >>> pag.name                                                          # doctest: +SKIP
-'study-reading-01-s3'
+'study-reading-02-s3'
 """
 
 from __future__ import annotations

@@ -322,13 +322,13 @@ def _after_value(stack: list[list[Any]]) -> None:
 
 
 def _reject_constant(name: str) -> Any:
-    raise ValueError(f"{name} is not a number a PAG may contain")
+    raise ValueError(f"{name} is not a number (JSON has no NaN or Infinity)")
 
 
 def _finite_float(text: str) -> float:
     v = float(text)
     if not math.isfinite(v):
-        raise ValueError(f"{text} is too large to be a number a PAG may contain")
+        raise ValueError(f"{text} is too large to be a finite number")
     return v
 
 

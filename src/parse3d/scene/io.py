@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from .._files import atomic_write_bytes, atomic_write_text
+from .._files import atomic_write_bytes, atomic_write_text, read_input_text
 from ..errors import InputError, Problem
 from ..geometry.frames import matrix_to_quat, quat_to_matrix
 from ..pag.model import PAG
@@ -100,13 +100,26 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
     }
 
 
+def _finite(v: Any) -> Any:
+    """``v`` with every non-finite float replaced by None: JSON has no NaN, and a bare ``NaN``
+    would make the file unreadable (reading then reports the pointer of the null)."""
+    if isinstance(v, float):
+        return v if np.isfinite(v) else None
+    if isinstance(v, dict):
+        return {k: _finite(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_finite(x) for x in v]
+    return v
+
+
 def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
     """Write ``scene.json``, ``scene.glb`` and (when extracted) ``contacts.json``."""
     from .export import export_glb
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    atomic_write_text(out / "scene.json", json.dumps(scene_to_dict(scene), indent=1) + "\n")
+    atomic_write_text(out / "scene.json",
+                      json.dumps(_finite(scene_to_dict(scene)), indent=1, allow_nan=False) + "\n")
     if scene.contacts is not None:
         atomic_write_text(out / "contacts.json",
                           json.dumps([c.to_dict() for c in scene.contacts], indent=1) + "\n")
@@ -162,20 +175,29 @@ def _load_asset(ref: dict[str, Any]):
     return default_pool().load(ref["category"], int(ref["seed"]))
 
 
+def _support_ref(support: Any) -> str | None:
+    """The supporting reference of an object record: a string, or an object naming it under
+    ``ref`` or ``parent`` (newer scene files)."""
+    if isinstance(support, dict):
+        support = support.get("ref") or support.get("parent")
+    return support if isinstance(support, str) else None
+
+
 def read_scene(path: str | Path) -> Scene:
     """Rebuild a Scene from a folder (or a ``scene.json`` path) written by :func:`write_scene`."""
+    from ..assets.registry import categories
+    from ..pag.io import loads_document
+    from .validate import contacts_problems, scene_problems
+
     p = Path(path)
     f = p / "scene.json" if p.is_dir() else p
     if not f.exists():
         raise InputError(Problem("", f"no scene.json here — solve a PAG first "
                                      f"(parse3d solve PAG --out {p})", str(f), "io"))
-    try:
-        d = json.loads(f.read_text())
-    except json.JSONDecodeError as e:
-        raise InputError(Problem("", f"not valid JSON: {e}", str(f), "syntax")) from None
-    if d.get("format") != SCENE_FORMAT:
-        raise InputError(Problem("/format", f"expected format {SCENE_FORMAT!r}, got "
-                                            f"{d.get('format')!r}", str(f), "schema"))
+    d = loads_document(read_input_text(f, what="scene file"), kind="json", file=str(f))
+    problems = scene_problems(d, file=str(f), categories=set(categories()))
+    if problems:
+        raise InputError(problems)
     pag = PAG.from_dict(d["pag"])
     shell = build_shell(pag.room, wall_thickness=float(d["room"].get("wall_thickness", 0.12)))
     scene = Scene(pag, int(d["seed"]), shell, timings=dict(d.get("timings", {})),
@@ -189,7 +211,7 @@ def read_scene(path: str | Path) -> Scene:
         pose = od["pose"]
         o = PlacedObject(od["id"], od["category"], asset, float(od["scale"]),
                          quat_to_matrix(pose["quaternion"]), np.array(pose["position"], float),
-                         "placed", None, int(od.get("trials", 0)), od.get("support"),
+                         "placed", None, int(od.get("trials", 0)), _support_ref(od.get("support")),
                          bool(od.get("fixed", False)))
         if "settled_pose" in od:
             o.settled_rotation = quat_to_matrix(od["settled_pose"]["quaternion"])
@@ -205,6 +227,11 @@ def read_scene(path: str | Path) -> Scene:
     cf = f.parent / "contacts.json"
     n_contacts = (d.get("summary") or {}).get("contacts")
     if cf.exists() and n_contacts is not None:  # None: the contacts.json is not this scene's
+        cd = loads_document(read_input_text(cf, what="contacts file"), kind="json",
+                            file=str(cf))
+        problems = contacts_problems(cd, file=str(cf))
+        if problems:
+            raise InputError(problems)
         scene.contacts = [Contact(c["a"], c["b"], int(c["samples"]), float(c["min_distance"]))
-                          for c in json.loads(cf.read_text())]
+                          for c in cd]
     return scene
