@@ -131,7 +131,7 @@ def check_output_dir(path: str | Path, *, option: str = "--out") -> Path:
                                      "path", str(path), "io"))
     try:
         path.mkdir(parents=True, exist_ok=True)
-    except FileExistsError:
+    except (FileExistsError, NotADirectoryError):
         raise InputError(Problem("", f"a part of the {option} path is a file, not a folder",
                                  str(path), "io")) from None
     except OSError as e:

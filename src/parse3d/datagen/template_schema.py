@@ -8,6 +8,7 @@ the expanded PAG live in :mod:`parse3d.datagen.template_load`.
 from __future__ import annotations
 
 import json
+import re
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
@@ -47,7 +48,7 @@ def _schema_problems(data: Any, fmt: str, file: str | None) -> list[Problem]:
         for ptr, msg in _messages(err):
             if err.validator == "enum" and ptr == "/room_type":
                 msg = msg.replace("unknown room_type", "unknown room type")
-            if ptr.endswith("/count") and _too_many(err.instance):
+            if re.search(r"/count(/[01])?$", ptr) and _too_many(err.instance):
                 msg = (f"count {err.instance} is too large: a count is at most {MAX_COUNT} "
                        "copies (an integer or [low, high])")
             if (ptr, msg) not in seen:

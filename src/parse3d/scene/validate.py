@@ -141,9 +141,6 @@ def scene_problems(data: Any, *, file: str | None = None,
             c.opt(room, "wall_thickness", "/room",
                   lambda v: _num(v) and 0 <= v <= 1.0, "a wall thickness in [0, 1] m")
     objs = c.need(data, "objects", "", lambda v: isinstance(v, list), "a list of objects")
-    pag_ids = None
-    if pag is not None and isinstance(pag.get("objects"), list):
-        pag_ids = {o.get("id") for o in pag["objects"] if isinstance(o, dict)}
     seen: dict[str, int] = {}
     for j, o in enumerate(objs or []):
         base = f"/objects/{j}"
@@ -155,8 +152,6 @@ def scene_problems(data: Any, *, file: str | None = None,
             if oid in seen:
                 c.add(f"{base}/id", f"duplicate object id {oid!r} (also /objects/{seen[oid]})")
             seen[oid] = j
-            if pag_ids is not None and oid not in pag_ids:
-                c.add(f"{base}/id", f"object {oid!r} is not in the scene's PAG (/pag/objects)")
         c.need(o, "category", base, lambda v: isinstance(v, str) and v, "a category name")
         status = c.need(o, "status", base, lambda v: v in _STATUSES,
                         f"one of {', '.join(_STATUSES)}")
