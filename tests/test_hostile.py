@@ -300,6 +300,10 @@ def test_a_room_settles_the_same_one_kilometre_away(tmp_path):
         if not o.placed:
             continue
         f = far.objects[oid]
-        assert np.linalg.norm(f.settled_position - shift - o.settled_position) < 1e-3, oid
+        err = np.linalg.norm(f.settled_position - shift - o.settled_position)
+        assert err < 1e-3, oid  # the bound
+        # in a local frame the two runs are the same simulation; in the world frame float32
+        # rounding at 1 km already moves this small scene by ~0.07 mm
+        assert err < 1e-6, oid
         assert np.allclose(f.settled_rotation, o.settled_rotation, atol=1e-3)
         assert "sank" not in o.flags and "sank" not in f.flags

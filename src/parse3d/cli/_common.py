@@ -55,7 +55,7 @@ def check_range(option: str, value: float, low: float, high: float, *, unit: str
 def safe_name(text: str | None, fallback: str) -> str:
     """A folder name made from data (a PAG's ``name``): no separators, ``..``, NUL or control
     characters, at most :data:`MAX_NAME` characters; ``fallback`` when nothing is left."""
-    name = _UNSAFE.sub("_", str(text or "")).strip("._-")
+    name = re.sub(r"\.{2,}", ".", _UNSAFE.sub("_", str(text or ""))).strip("._-")
     name = name[:MAX_NAME].strip("._-")
     if not name or set(name) <= {"."}:
         name = _UNSAFE.sub("_", fallback).strip("._-")[:MAX_NAME] or "scene"
