@@ -8,6 +8,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
 from ._common import check_seed, console, print_json
 
@@ -55,6 +56,7 @@ def register(app: typer.Typer) -> None:
                                      "--views", "parameter"))
         check_seed(seed)
         width, height = parse_size(size)
+        require("moderngl", feature="rendering")
         scene = read_scene(scene_dir)
         settled = False if solved else None
         t0 = time.perf_counter()

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
 from ._common import check_range, console, print_json
 
@@ -49,6 +50,7 @@ def register(app: typer.Typer) -> None:
         check_range("--linear-damping", linear_damping, 0.0, MAX_DAMPING)
         check_range("--angular-damping", angular_damping, 0.0, MAX_DAMPING)
         check_range("--threshold", threshold, 0.0, MAX_THRESHOLD, unit="m", low_open=True)
+        require("sapien", feature="settling")
         scene = read_scene(scene_dir)
         report = settle(scene, config=SettleConfig(
             dt=dt, steps=steps, linear_damping=linear_damping, angular_damping=angular_damping,

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InputError, Problem
 from ._common import check_seed, console, print_json, safe_name
 
@@ -56,6 +57,10 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
                                  "--strategy", "parameter"))
     opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
                            solver=SolverConfig(strategy=strategy))
+    if not no_settle:
+        require("sapien", feature="settling (or pass --no-settle)")
+    if not no_preview:
+        require("moderngl", feature="the preview (or pass --no-preview)")
     _prepare_out(out)
     scene = run_pipeline(pag, seed=seed, out=out, options=opts)
     s = _summary(scene, out)
