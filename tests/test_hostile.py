@@ -307,3 +307,22 @@ def test_a_room_settles_the_same_one_kilometre_away(tmp_path):
         assert err < 1e-6, oid
         assert np.allclose(f.settled_rotation, o.settled_rotation, atol=1e-3)
         assert "sank" not in o.flags and "sank" not in f.flags
+
+
+def test_preview_camera_keeps_every_object_below_a_third_of_the_frame():
+    """The kitchen example once had a cabinet covering 43% of its preview."""
+    pytest.importorskip("moderngl")
+    from parse3d.pag.io import load_pag
+    from parse3d.render import Renderer, preview_camera
+    from parse3d.render.camera import MAX_OBJECT_SHARE
+    from parse3d.solver import solve
+
+    scene = solve(load_pag(HERE.parent / "examples" / "kitchen.json"), seed=0)
+    r = Renderer()
+    res = r.render(scene, preview_camera(scene, width=160, height=120, renderer=r))
+    ids, counts = np.unique(res.instance, return_counts=True)
+    share = {res.instances.get(int(i)): n / res.instance.size
+             for i, n in zip(ids, counts, strict=True) if i > 0}
+    objects = {k: v for k, v in share.items() if k in scene.objects}
+    assert max(objects.values()) <= MAX_OBJECT_SHARE
+    assert len(objects) >= 0.5 * len(scene.placed)  # the old corner view showed 11 of 26
