@@ -326,3 +326,40 @@ def test_preview_camera_keeps_every_object_below_a_third_of_the_frame():
     objects = {k: v for k, v in share.items() if k in scene.objects}
     assert max(objects.values()) <= MAX_OBJECT_SHARE
     assert len(objects) >= 0.5 * len(scene.placed)  # the old corner view showed 11 of 26
+
+
+def test_dataset_resume_rebuilds_damaged_scenes_and_index_and_keeps_user_files(tmp_path):
+    """Damaged scene files, manifest and failure records: resume verifies every finished
+    scene (size + hash recorded at commit), rebuilds what is damaged, and removes nothing
+    it did not write."""
+    pytest.importorskip("pyarrow")
+    from parse3d.datagen.build import BuildConfig, build_dataset
+    from parse3d.datagen.manifest import read_manifest
+
+    pag_file = tmp_path / "one.json"
+    pag_file.write_text(json.dumps(__import__("cases").one_object()))
+    cfg = BuildConfig(scenes=2, seed=0, settle=False, view_size=(64, 48),
+                      source=(str(pag_file),))
+    out = tmp_path / "ds"
+    first = build_dataset(cfg, out, workers=1)
+    assert first.ok == 2
+    rec = json.loads((out / "scenes" / "00000" / "record.json").read_text())
+    assert set(rec["files"]) >= {"scene.json", "preview.png"}
+    good = (out / "scenes" / "00001" / "scene.json").read_bytes()
+    # damage: a truncated scene file, a garbage manifest, a broken failure record, user files
+    f0 = out / "scenes" / "00000" / "scene.json"
+    f0.write_bytes(f0.read_bytes()[:100])
+    (out / "manifest.parquet").write_text("garbage")
+    (out / "failures").mkdir(exist_ok=True)
+    (out / "failures" / "00001.json").write_text("{")
+    (out / "notes.md").write_text("mine")
+    (out / ".tmp-not-ours").mkdir()
+    warnings = []
+    again = build_dataset(cfg, out, workers=1, warn=warnings.append)
+    assert again.ok == 2 and again.built == 1 and again.resumed == 1
+    assert any("00000" in w for w in warnings) and any("manifest" in w for w in warnings)
+    assert json.loads(f0.read_text())["format"].startswith("parse3d-scene/")
+    assert (out / "scenes" / "00001" / "scene.json").read_bytes() == good
+    assert [r["index"] for r in read_manifest(out / "manifest.parquet")] == [0, 1]
+    assert (out / "notes.md").read_text() == "mine" and (out / ".tmp-not-ours").is_dir()
+    assert not (out / ".parse3d-build.lock").exists()

@@ -45,9 +45,10 @@ def user_library_dir() -> Path:
 
 
 def load_user_library() -> None:
-    """Register every category found in the user library (no-op until loaders exist)."""
-    try:
-        from .loaders import register_library
-    except ImportError:
-        return
+    """Register every category found in the user library.
+
+    A folder with a broken ``category.json`` is skipped with a warning naming the file.
+    """
+    from .loaders import register_library  # the loaders import the registry, which calls us
+
     register_library(user_library_dir())
