@@ -59,6 +59,10 @@ def _materialise(root: Path, case: dict) -> None:
             p.mkdir()
         elif content.startswith("@link:"):
             p.symlink_to(content[len("@link:"):])
+        elif content == "@manifest":
+            from parse3d.datagen.manifest import write_manifest
+
+            write_manifest(p, [])
         elif content.startswith("@glb:"):
             p.write_bytes(_glb(content[len("@glb:"):]))
         else:

@@ -312,6 +312,13 @@ def _cases() -> list[dict]:
             [word],
             absent=["new"])
 
+    add("dataset-stats-damaged-manifest", ["dataset", "stats", "d"], 2, ["manifest"],
+        files={"d/manifest.parquet": "garbage", "d/dataset.json": "{}"})
+    add("dataset-stats-damaged-config", ["dataset", "stats", "d"], 2, ["dataset.json"],
+        files={"d/manifest.parquet": "@manifest", "d/dataset.json": "{"})
+    add("dataset-stats-not-a-dataset", ["dataset", "stats", "d"], 2, ["no manifest"],
+        files={"d/x.txt": "x"})
+
     # ---------------------------------------------------------------- 10. assets
     add("assets-placeholder-labels", ["assets", "add", "src", "--category", "thing"], 2,
         ["placeholder"], files={"src/a.glb": "@glb:node_0,geometry"})
