@@ -97,8 +97,9 @@ def register(app: typer.Typer) -> None:
                                        help="Skip settling and contact extraction."),
         retry_failed: bool = typer.Option(False, "--retry-failed",
                                           help="Run failed and timed-out scenes again."),
-        max_tasks: int = typer.Option(200, "--max-tasks",
-                                      help="Scenes per local worker before it is replaced."),
+        max_tasks: int = typer.Option(None, "--max-tasks",
+                                      help="Scenes per local worker before it is replaced "
+                                           "(default 200)."),
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:
         """Build (or resume) a dataset: DIR/scenes/<index>/, DIR/manifest.parquet, DIR/dataset.json.
@@ -109,6 +110,7 @@ def register(app: typer.Typer) -> None:
         Example: parse3d dataset build --scenes 100 --out out/mini --rooms bedroom,kitchen --workers 2
         """
         from ..datagen.build import (
+            DEFAULT_MAX_TASKS,
             BuildConfig,
             build_dataset,
             default_source_paths,
@@ -151,7 +153,8 @@ def register(app: typer.Typer) -> None:
         try:
             report = build_dataset(cfg, out, executor=executor, workers=workers,
                                    ray_address=ray_address, retry_failed=retry_failed,
-                                   max_tasks=max_tasks, progress=on_event,
+                                   max_tasks=DEFAULT_MAX_TASKS if max_tasks is None else max_tasks,
+                                   progress=on_event,
                                    warn=lambda msg: err_console.print(f"warning: {msg}",
                                                                       markup=False))
         except KeyboardInterrupt:

@@ -46,9 +46,9 @@ def register(app: typer.Typer) -> None:
 
         Example: parse3d render out/study-0 --views 4 --size 640x480 --seed 0
         """
-        import numpy as np
 
         from ..render import Renderer, overview_camera, sample_views, write_views
+        from ..render.camera import view_rng
         from ..scene.io import read_scene
 
         if not 0 <= views <= MAX_VIEWS:
@@ -61,7 +61,7 @@ def register(app: typer.Typer) -> None:
         settled = False if solved else None
         t0 = time.perf_counter()
         renderer = Renderer()
-        rng = np.random.default_rng([int(seed), 0x52454E44])  # "REND": the view-sampling stage
+        rng = view_rng(seed)
         cams = sample_views(scene, views, rng, width=width, height=height, settled=settled,
                             renderer=renderer)
         if overview:

@@ -43,7 +43,7 @@ from typing import Any
 from .._deps import require
 from .._files import FolderLock, check_output_dir
 from ..errors import InputError, Problem
-from .build_config import DATASET_FORMAT, BuildConfig
+from .build_config import DATASET_FORMAT, DEFAULT_MAX_TASKS, BuildConfig
 from .commit import (
     LOCK_NAME,
     _check_config,
@@ -74,6 +74,7 @@ MAX_WORKERS = 512
 __all__ = [
     "ROOM_TYPES",
     "DATASET_FORMAT",
+    "DEFAULT_MAX_TASKS",
     "BuildConfig",
     "SceneSource",
     "TemplateSource",
@@ -141,7 +142,7 @@ class BuildReport:
 
 def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "local",
                   workers: int = 2, ray_address: str | None = None,
-                  retry_failed: bool = False, max_tasks: int = 200, flush_every: float = 2.0,
+                  retry_failed: bool = False, max_tasks: int = DEFAULT_MAX_TASKS, flush_every: float = 2.0,
                   progress: Callable[[BuildEvent], None] | None = None,
                   warn: Callable[[str], None] | None = None) -> BuildReport:
     """Build (or resume) a dataset of ``config.scenes`` scenes in ``out``.

@@ -14,6 +14,9 @@ MAX_VIEWS = 100
 MAX_SEED = 2**32 - 1
 MAX_TIME_LIMIT = 86_400.0
 
+#: Scenes a local worker process builds before it is replaced (bounds its memory).
+DEFAULT_MAX_TASKS = 200
+
 DATASET_FORMAT = "parse3d-dataset/1"
 
 

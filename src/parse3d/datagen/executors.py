@@ -30,15 +30,13 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError, Problem
-from .build_config import BuildConfig
+from .build_config import DEFAULT_MAX_TASKS, BuildConfig
 from .planning import plan_scene
 from .sources import SceneSource, make_source
 from .task import SceneOutcome, _base_record, build_scene
 
 __all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit"]
 
-#: Scenes a local worker builds before it is replaced.
-DEFAULT_MAX_TASKS = 200
 
 
 def hard_limit(config: BuildConfig) -> float | None:

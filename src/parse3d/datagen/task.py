@@ -12,8 +12,6 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 from ..errors import InputError
 from .build_config import BuildConfig
 from .planning import ScenePlan, plan_scene, scene_folder
@@ -182,12 +180,13 @@ def _run_stages(pag, seed: int, config: BuildConfig, stage: _Stage):
 
 def _render(scene, out: Path, config: BuildConfig, plan: ScenePlan, renderer) -> None:
     from ..render import Renderer, sample_views, save_preview, write_views
+    from ..render.camera import view_rng
 
     r = renderer if renderer is not None else Renderer()
     w, h = (int(v) for v in config.view_size)
     save_preview(scene, out / "preview.png", width=w, height=h, renderer=r)
     if config.views > 0:
-        rng = np.random.default_rng([int(plan.seed), 0x52454E44])  # "REND", as parse3d render
+        rng = view_rng(plan.seed)  # as parse3d render --seed
         cams = sample_views(scene, int(config.views), rng, width=w, height=h, renderer=r)
         write_views(scene, cams, out, renderer=r,
                     meta={"seed": int(plan.seed), "requested_views": int(config.views),

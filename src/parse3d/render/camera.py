@@ -35,6 +35,8 @@ __all__ = [
     "look_at",
     "intrinsics_from_fov",
     "overview_camera",
+    "view_rng",
+    "VIEW_STAGE",
     "overview_candidates",
     "plan_camera",
     "asset_camera",
@@ -332,6 +334,15 @@ def _frame_shares(cam: Camera, boxes: np.ndarray) -> tuple[np.ndarray, np.ndarra
     inside = (cz > cam.near) & (cuv[:, 0] >= 0) & (cuv[:, 0] < cam.width) \
         & (cuv[:, 1] >= 0) & (cuv[:, 1] < cam.height)
     return share, inside
+
+
+#: Stage tag of the view-sampling generator (``"REND"``): ``default_rng([seed, VIEW_STAGE])``.
+VIEW_STAGE = 0x52454E44
+
+
+def view_rng(seed: int) -> np.random.Generator:
+    """The generator ``parse3d render --seed S`` and dataset builds sample views with."""
+    return np.random.default_rng([int(seed), VIEW_STAGE])
 
 
 def overview_candidates(scene: Scene, *, width: int = 640, height: int = 480,
