@@ -300,6 +300,7 @@ def test_a_room_settles_the_same_one_kilometre_away(tmp_path):
         settle(scene)
         results.append(scene)
     near, far = results
+    assert len(repr(near)) < 300 and "placed" in repr(near)  # not every mesh of every asset
     for oid, o in near.objects.items():
         if not o.placed:
             continue
@@ -367,3 +368,14 @@ def test_dataset_resume_rebuilds_damaged_scenes_and_index_and_keeps_user_files(t
     assert [r["index"] for r in read_manifest(out / "manifest.parquet")] == [0, 1]
     assert (out / "notes.md").read_text() == "mine" and (out / ".tmp-not-ours").is_dir()
     assert not (out / ".parse3d-build.lock").exists()
+
+
+def test_plain_progress_lines_show_rate_and_eta(monkeypatch):
+    from parse3d.cli import dataset
+
+    clock = iter([100.0, 110.0, 130.0])
+    monkeypatch.setattr("time.monotonic", lambda: next(clock))
+    rate = dataset._LineRate()
+    assert "ETA --" in rate.tick(1, 10)
+    assert rate.tick(2, 10) == "360 scenes/h, ETA 0:01:20"
+    assert rate.tick(4, 10) == "360 scenes/h, ETA 0:01:00"
