@@ -200,12 +200,16 @@ def _cases() -> list[dict]:
         present=["out/a_" + "x" * 98 + "-0/scene.json"])
     add("stale-outputs", ["solve", "p.json", "--no-settle", "--no-preview", "--out", "o"], 0,
         ["placed"], files={"p.json": J(one_object()), "o/contacts.json": "[]",
+                           "o/scene.json": scene(),
                            "o/preview.png": "old", "o/rgb_0.png": "old", "o/views.json": "{}",
                            "o/notes.txt": "mine"},
         outputs=["o/scene.json", "o/scene.glb", "o/contacts.json", "o/preview.png",
                  "o/rgb_0.png", "o/views.json"],
         absent=["o/contacts.json", "o/preview.png", "o/rgb_0.png", "o/views.json"],
         present=["o/notes.txt", "o/scene.json"])
+    add("solve-foreign-scene-json", ["solve", "p.json", "--out", "o"], 2, ["not a parse3d"],
+        files={"p.json": J(one_object()), "o/scene.json": '{"mine": true}',
+               "o/preview.png": "mine"})
     add("generate-unknown-room", ["generate", "spaceship"], 2, ["room type"])
     add("generate-seed-negative", ["generate", "bedroom", "--seed", "-5"], 2, ["--seed"])
 

@@ -137,19 +137,34 @@ def clear_scene_outputs(out_dir: str | Path) -> list[Path]:
     """Remove the outputs of an earlier solve from ``out_dir`` (and nothing else).
 
     A solve owns its folder's outputs: without this, a new ``scene.json`` would sit beside the
-    previous seed's ``contacts.json``, preview and views. Only regular files whose names match
+    previous seed's ``contacts.json``, preview and views. Only a folder holding a parse3d
+    ``scene.json`` is cleared, and only regular files whose names match
     :data:`OUTPUT_PATTERNS` are removed; any other file is left alone.
 
     Returns
     -------
     list of Path
         The files removed.
+
+    Raises
+    ------
+    InputError
+        The folder holds a ``scene.json`` that parse3d did not write (nothing is removed).
     """
     import re
 
     out = Path(out_dir)
-    if not out.is_dir():
+    sj = out / "scene.json"
+    if not out.is_dir() or not sj.exists():
         return []
+    try:
+        fmt = json.loads(read_input_text(sj, what="scene file")).get("format", "")
+    except (InputError, ValueError, AttributeError):
+        fmt = ""
+    if not (isinstance(fmt, str) and fmt.startswith("parse3d-scene/")):
+        raise InputError(Problem("", "this folder holds a scene.json that is not a parse3d "
+                                     "scene: choose another --out folder (nothing was changed)",
+                                 str(sj), "io"))
     rx = re.compile("|".join(re.escape(p).replace(r"\*", r"\d+") for p in OUTPUT_PATTERNS))
     gone = []
     for f in sorted(out.iterdir()):
