@@ -115,20 +115,15 @@ def _run_group(root: Path, cases: list[dict], cache: Path, tag: str) -> tuple[li
     return results, peak
 
 
-@pytest.fixture(scope="session")
-def corpus(tmp_path_factory, request):
-    # only the cases this session selected (``-k``) are run
-    wanted = {item.callspec.params["case"]["id"] for item in request.session.items
-              if getattr(item, "callspec", None) and "case" in item.callspec.params}
-    selected = [c for c in CASES if c["id"] in wanted]
-    base = tmp_path_factory.mktemp("hostile")
+def _run_corpus(base: Path, selected: list[dict]) -> tuple[dict, dict]:
     root = base / "cases"
     root.mkdir()
     (root / "sentinel").mkdir()
     (root / "sentinel" / "precious.txt").write_text("do not touch")
     for case in selected:
         _materialise(root, case)
-    cache = tmp_path_factory.mktemp("hostile-cache")
+    cache = base / "cache"
+    cache.mkdir()
     groups: dict[str, list[dict]] = {}
     for case in selected:
         groups.setdefault(case.get("group", "main") if case.get("group") != "env"
@@ -140,6 +135,30 @@ def corpus(tmp_path_factory, request):
             results[r["id"]] = r
             peaks[r["id"]] = peak
     return results, peaks
+
+
+@pytest.fixture(scope="session")
+def corpus(tmp_path_factory, request):
+    """Results of the selected cases (``-k``), computed once per test run: under
+    pytest-xdist the first worker runs them and the others read its results."""
+    import fcntl
+
+    wanted = {item.callspec.params["case"]["id"] for item in request.session.items
+              if getattr(item, "callspec", None) and "case" in item.callspec.params}
+    selected = [c for c in CASES if c["id"] in wanted]
+    if not os.environ.get("PYTEST_XDIST_WORKER"):
+        return _run_corpus(tmp_path_factory.mktemp("hostile"), selected)
+    shared = tmp_path_factory.getbasetemp().parent  # common to every worker of this run
+    done = shared / "hostile-results.json"
+    with open(shared / "hostile.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not done.exists():
+            base = shared / "hostile"
+            base.mkdir()
+            results, peaks = _run_corpus(base, selected)
+            done.write_text(json.dumps({"results": results, "peaks": peaks}))
+    d = json.loads(done.read_text())
+    return d["results"], d["peaks"]
 
 
 def test_corpus_is_large_and_covers_every_command():
