@@ -146,6 +146,11 @@ def validate_data(
     list of Problem
         Schema problems first, then meaning problems in document order; empty when valid.
     """
+    problems = _size_problems(data, file)
+    if problems:  # checked first: the schema layer's time grows with the document
+        if raise_errors:
+            raise error_for(problems, file=file)
+        return problems
     problems = schema_problems(data, file=file)
     if isinstance(data, dict):
         seen = {p.pointer for p in problems}
@@ -155,6 +160,18 @@ def validate_data(
     if raise_errors and problems:
         raise error_for(problems, file=file)
     return problems
+
+
+def _size_problems(data: Any, file: str | None) -> list[Problem]:
+    out = []
+    if isinstance(data, dict):
+        for key, limit in (("objects", MAX_OBJECTS), ("relations", MAX_RELATIONS)):
+            items = data.get(key)
+            if isinstance(items, list) and len(items) > limit:
+                out.append(Problem(f"/{key}", f"{len(items)} {key}: a PAG may have at most "
+                                   f"{limit} (split the scene into several PAGs)", file,
+                                   "parameter"))
+    return out
 
 
 def _is_number(v: Any) -> bool:
@@ -182,12 +199,6 @@ class _Checker:
         self.problems.append(Problem(pointer, message, None, kind))
 
     def run(self) -> list[Problem]:
-        for key, limit in (("objects", MAX_OBJECTS), ("relations", MAX_RELATIONS)):
-            items = self.data.get(key)
-            if isinstance(items, list) and len(items) > limit:
-                self.add(f"/{key}", f"{len(items)} {key}: a PAG may have at most {limit} "
-                         "(split the scene into several PAGs)", "parameter")
-                return self.problems
         self.check_room(self.data.get("room"))
         self.check_objects(self.data.get("objects"))
         self.check_relations(self.data.get("relations"))
