@@ -39,11 +39,12 @@ $(BIN)/python:
 
 venv: $(BIN)/python
 
+# What the README's documented commands need (solve, settle, render, dataset build), pinned.
 install-main: system venv
-	$(BIN)/pip install -q -e ".[physics,render]"
+	$(BIN)/pip install -q -c constraints.txt -e ".[physics,render,dataset]"
 
 install-all: system-test venv
-	$(BIN)/pip install -q -e ".[all]"
+	$(BIN)/pip install -q -c constraints.txt -e ".[all]"
 
 bench: install-all
 	$(BIN)/python benchmarks/run_all.py

@@ -44,6 +44,7 @@ import numpy as np
 import shapely
 import trimesh
 
+from .._files import user_mode
 from ..errors import AssetError
 from ..geometry.surfaces import Surface
 from .model import Asset, InternalSurface, Joint, Material, Part
@@ -144,6 +145,7 @@ def save_asset(asset: Asset, path: str | os.PathLike) -> Path:
     try:
         with os.fdopen(fd, "wb") as fh:
             np.savez_compressed(fh, **arrays)
+        os.chmod(tmp, user_mode())
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)

@@ -18,6 +18,7 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
+from .._files import user_mode
 from ..errors import AssetError, DependencyError
 
 __all__ = ["convex_pieces", "CONVEX_TOLERANCE"]
@@ -66,6 +67,7 @@ def _write_cached(path: Path, pieces: list[trimesh.Trimesh]) -> None:
     fd, tmp = tempfile.mkstemp(prefix=".coacd-", suffix=".npz", dir=path.parent)
     with os.fdopen(fd, "wb") as fh:
         np.savez(fh, v=v, f=f, n=n)
+    os.chmod(tmp, user_mode())
     os.replace(tmp, path)
 
 

@@ -7,6 +7,7 @@ infeasible scenes exit 3 (DESIGN §6). No traceback reaches the user for an inpu
 
 from __future__ import annotations
 
+import errno
 import importlib
 import importlib.util
 import sys
@@ -34,6 +35,41 @@ for _name in _MODULES:
         importlib.import_module(f"{__name__}.{_name}").register(app)
 
 
+def _version(value: bool) -> None:
+    if value:
+        from importlib.metadata import PackageNotFoundError, version
+
+        try:
+            v = version("parse3d")
+        except PackageNotFoundError:
+            v = "unknown (not installed)"
+        typer.echo(f"parse3d {v}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    show_version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                      help="Print the version and exit."),
+) -> None:
+    """Part-aware relational spatial modelling: PAG files to settled 3D scenes.
+
+    Example: parse3d solve examples/study.json --seed 0 --out out/study
+    """
+
+
+def _os_message(e: OSError) -> str:
+    where = e.filename if e.filename is not None else "<output>"
+    what = e.strerror or str(e)
+    hint = {errno.EACCES: "check the permissions or choose another folder",
+            errno.EROFS: "the file system is read-only; choose another folder",
+            errno.ENOSPC: "the disk is full; free space or choose another folder",
+            errno.EISDIR: "a folder is in the way; give a file path",
+            errno.ENOTDIR: "a file is in the way; give a folder path",
+            errno.EEXIST: "something is in the way; choose another path"}.get(e.errno, "")
+    return f"{where}:/: {what}" + (f" ({hint})" if hint else "")
+
+
 def main(argv: list[str] | None = None) -> None:
     """Entry point of the ``parse3d`` console script."""
     try:
@@ -42,6 +78,14 @@ def main(argv: list[str] | None = None) -> None:
         for p in e.problems:
             typer.echo(str(p), err=True)
         sys.exit(EXIT_INPUT)
+    except OSError as e:
+        # the disk or environment refused (read-only folder, a file where a folder is
+        # expected, a full disk): one line naming the path, as for an input mistake
+        typer.echo(_os_message(e), err=True)
+        sys.exit(EXIT_INPUT)
+    except KeyboardInterrupt:
+        typer.echo("interrupted", err=True)
+        sys.exit(130)
     except InfeasibleError as e:
         typer.echo(f"infeasible: {e}", err=True)
         sys.exit(EXIT_INFEASIBLE)

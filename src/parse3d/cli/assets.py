@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import math
 from pathlib import Path
 
 import typer
@@ -65,7 +66,7 @@ def list_(json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> No
 
 @assets_app.command("show")
 def show(category: str = typer.Argument(..., help="Category name."),
-         seed: int = typer.Option(0, "--seed", help="Asset seed."),
+         seed: int = typer.Option(0, "--seed", min=0, max=2**32 - 1, help="Asset seed."),
          json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
     """Show one asset: parts, their surfaces (normal, area), internal surfaces, size.
 
@@ -98,7 +99,7 @@ def show(category: str = typer.Argument(..., help="Category name."),
 
 @assets_app.command("render")
 def render(category: str = typer.Argument(..., help="Category name."),
-           seed: int = typer.Option(0, "--seed", help="Asset seed."),
+           seed: int = typer.Option(0, "--seed", min=0, max=2**32 - 1, help="Asset seed."),
            out: Path = typer.Option(..., "-o", "--out", help="PNG file to write.")) -> None:
     """Render one asset with its materials, seen from the front-right (a thumbnail).
 
@@ -112,12 +113,14 @@ def render(category: str = typer.Argument(..., help="Category name."),
 
 
 @assets_app.command("gallery")
-def gallery(out: Path = typer.Option(Path("docs/gallery.png"), "--out", "-o", help="PNG file."),
-            seeds: int = typer.Option(3, "--seeds", min=1, help="Assets per category."),
+def gallery(out: Path = typer.Option(Path("gallery.png"), "--out", "-o",
+                                     help="PNG file (default: gallery.png here)."),
+            seeds: int = typer.Option(3, "--seeds", min=1, max=20,
+                                      help="Assets per category, 1..20."),
             categories: str = typer.Option("", "--categories", help="Comma-separated subset.")) -> None:
     """A contact sheet of every category (or a subset) over a few seeds.
 
-    Example: parse3d assets gallery --out docs/gallery.png --seeds 3
+    Example: parse3d assets gallery --out gallery.png --seeds 3
     """
     from rich.progress import track
 
@@ -134,8 +137,9 @@ def gallery(out: Path = typer.Option(Path("docs/gallery.png"), "--out", "-o", he
 
 
 @assets_app.command("build")
-def build(per_category: int = typer.Option(20, "--per-category", min=1, help="Assets per category (K)."),
-          workers: int = typer.Option(2, "--workers", min=1, help="Worker processes."),
+def build(per_category: int = typer.Option(20, "--per-category", min=1, max=10_000,
+                                          help="Assets per category (K), 1..10000."),
+          workers: int = typer.Option(2, "--workers", min=1, max=512, help="Worker processes."),
           categories: str = typer.Option("", "--categories", help="Comma-separated subset."),
           json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
     """Pre-generate the asset pool (K assets per category) into the cache.
@@ -169,6 +173,8 @@ def _parse_range(text: str | None) -> tuple[float, float] | None:
         return None
     try:
         lo, hi = (float(x) for x in text.split(","))
+        if not (math.isfinite(lo) and math.isfinite(hi)):
+            raise ValueError
     except ValueError:
         raise InputError(Problem("", f"--size-range {text!r} must be two numbers 'low,high' in metres",
                                  "<command line>", "parameter")) from None
@@ -202,9 +208,10 @@ def add(src: Path = typer.Argument(..., help="Folder of .glb/.gltf files and/or 
         if up and not front:
             raise InputError(Problem("", "--up needs --front as well (the front axis must be "
                                      "perpendicular to the up axis)", "<command line>", "parameter"))
-        frame = SourceFrame(up or base.up, front or base.front, scale if scale > 0 else 1.0)
-        if scale <= 0:
-            raise InputError(Problem("", f"--scale {scale} must be positive", "<command line>", "parameter"))
+        if not (math.isfinite(scale) and 1e-6 <= scale <= 1e6):
+            raise InputError(Problem("", f"--scale {scale} must be a finite number of metres per "
+                                     "source unit in [1e-6, 1e6]", "--scale", "parameter"))
+        frame = SourceFrame(up or base.up, front or base.front, scale)
     cat = add_assets(src, category=category, mapping=mapping,
                      parts=tuple(p.strip() for p in parts.split(",") if p.strip()) or None,
                      size_range=_parse_range(size_range), frame=frame,

@@ -46,6 +46,29 @@ def _progress_columns():
             TimeElapsedColumn(), TextColumn("ETA"), TimeRemainingColumn())
 
 
+class _LineRate:
+    """Rate and ETA for plain progress lines (no TTY), counted from this run's first scene."""
+
+    def __init__(self) -> None:
+        self.t0: float | None = None
+        self.done0 = 0
+
+    def tick(self, done: int, total: int) -> str:
+        import time
+
+        now = time.monotonic()
+        if self.t0 is None:
+            self.t0, self.done0 = now, done
+            return "-- scenes/h, ETA --"
+        n, el = done - self.done0, now - self.t0
+        if n <= 0 or el <= 0:
+            return "-- scenes/h, ETA --"
+        per = el / n
+        eta = max(0.0, (total - done) * per)
+        h, rem = divmod(int(round(eta)), 3600)
+        return f"{3600.0 / per:,.0f} scenes/h, ETA {h}:{rem // 60:02d}:{rem % 60:02d}"
+
+
 def register(app: typer.Typer) -> None:
     ds = typer.Typer(name="dataset", help="Build PARSE-10K-like datasets and their statistics.",
                      no_args_is_help=True)
@@ -74,8 +97,9 @@ def register(app: typer.Typer) -> None:
                                        help="Skip settling and contact extraction."),
         retry_failed: bool = typer.Option(False, "--retry-failed",
                                           help="Run failed and timed-out scenes again."),
-        max_tasks: int = typer.Option(200, "--max-tasks",
-                                      help="Scenes per local worker before it is replaced."),
+        max_tasks: int = typer.Option(None, "--max-tasks",
+                                      help="Scenes per local worker before it is replaced "
+                                           "(default 200)."),
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:
         """Build (or resume) a dataset: DIR/scenes/<index>/, DIR/manifest.parquet, DIR/dataset.json.
@@ -86,6 +110,7 @@ def register(app: typer.Typer) -> None:
         Example: parse3d dataset build --scenes 100 --out out/mini --rooms bedroom,kitchen --workers 2
         """
         from ..datagen.build import (
+            DEFAULT_MAX_TASKS,
             BuildConfig,
             build_dataset,
             default_source_paths,
@@ -117,16 +142,21 @@ def register(app: typer.Typer) -> None:
                 built[0] += 1
         else:
             prog = None
+            rate = _LineRate()
 
             def on_event(ev) -> None:
                 r = ev.record
                 extra = f" — {r['reason']}" if r.get("reason") else ""
                 err_console.print(f"[{ev.done}/{ev.total}] scene {r['index']:05d} "
-                                  f"{r['room_type']}/{r['template']}: {r['status']}{extra}")
+                                  f"{r['room_type']}/{r['template']}: {r['status']}{extra}"
+                                  f" · {rate.tick(ev.done, ev.total)}", markup=False)
         try:
             report = build_dataset(cfg, out, executor=executor, workers=workers,
                                    ray_address=ray_address, retry_failed=retry_failed,
-                                   max_tasks=max_tasks, progress=on_event)
+                                   max_tasks=DEFAULT_MAX_TASKS if max_tasks is None else max_tasks,
+                                   progress=on_event,
+                                   warn=lambda msg: err_console.print(f"warning: {msg}",
+                                                                      markup=False))
         except KeyboardInterrupt:
             if prog is not None:
                 prog.stop()

@@ -8,15 +8,16 @@ import typer
 from rich.console import Console
 from rich.table import Table
 
-from ._common import console
+from ._common import check_seed, console, safe_name
 
 
 def register(app: typer.Typer) -> None:
     @app.command("demo")
     def demo_cmd(
         out: Path = typer.Option(Path("out/demo"), "--out", "-o", help="Output folder."),
-        seed: int = typer.Option(0, "--seed"),
-        no_settle: bool = typer.Option(False, "--no-settle"),
+        seed: int = typer.Option(0, "--seed", help="Scene seed of every room."),
+        no_settle: bool = typer.Option(False, "--no-settle",
+                                       help="Skip physics settling and contacts."),
     ) -> None:
         """Solve, settle and render every bundled example room into OUT/<name>/.
 
@@ -26,15 +27,18 @@ def register(app: typer.Typer) -> None:
         from ..pag.io import load_pag
         from ..pipeline import PipelineOptions, run_pipeline
         from ..scenes import bundled_paths
+        from .solve import _prepare_out
 
+        check_seed(seed)
         vocab = vocabulary()
         table = Table(title="parse3d demo")
         for col in ("room", "objects", "placed", "relations hold", "contacts", "solve s", "settle s", "folder"):
             table.add_column(col)
         for path in bundled_paths():
             pag = load_pag(path, vocabulary=vocab)
-            folder = out / (pag.name or path.stem)
+            folder = out / safe_name(pag.name, path.stem)
             console.print(f"solving {path.name} ...")
+            _prepare_out(folder)
             scene = run_pipeline(pag, seed=seed, out=folder,
                                  options=PipelineOptions(settle=not no_settle))
             hold = sum(1 for c in scene.relations if (c.holds_settled if scene.settled else c.holds))

@@ -91,8 +91,12 @@ def register(app: typer.Typer) -> None:
 
             parse3d pag draw examples/kitchen.json -o kitchen_pag.png
         """
+        from ..errors import InputError
         from ..pag.draw import draw_pag
 
         pag = _load(file, not no_vocabulary)
-        path = draw_pag(pag, out)
+        try:
+            path = draw_pag(pag, out)
+        except InputError as e:
+            raise InputError(e.problems, file=str(file)) from None
         typer.echo(f"wrote {path}")

@@ -8,8 +8,9 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
-from ._common import console, print_json
+from ._common import check_seed, console, print_json
 
 _SIZE = re.compile(r"^\s*(\d+)\s*[xX]\s*(\d+)\s*$")
 
@@ -23,11 +24,15 @@ def parse_size(text: str) -> tuple[int, int]:
     return int(m.group(1)), int(m.group(2))
 
 
+#: Most views one ``parse3d render`` call may ask for.
+MAX_VIEWS = 1000
+
+
 def register(app: typer.Typer) -> None:
     @app.command("render")
     def render_cmd(
         scene_dir: Path = typer.Argument(..., help="Folder holding scene.json (from parse3d solve)."),
-        views: int = typer.Option(4, "--views", "-n", help="Number of sampled views."),
+        views: int = typer.Option(4, "--views", "-n", help="Number of sampled views, 0..1000."),
         size: str = typer.Option("640x480", "--size", help="Image size WIDTHxHEIGHT."),
         seed: int = typer.Option(0, "--seed", help="Seed of the view sampling."),
         overview: bool = typer.Option(False, "--overview",
@@ -41,20 +46,22 @@ def register(app: typer.Typer) -> None:
 
         Example: parse3d render out/study-0 --views 4 --size 640x480 --seed 0
         """
-        import numpy as np
 
         from ..render import Renderer, overview_camera, sample_views, write_views
+        from ..render.camera import view_rng
         from ..scene.io import read_scene
 
-        if views < 0:
-            raise InputError(Problem("", f"--views must be >= 0, got {views}", "--views",
-                                     "parameter"))
+        if not 0 <= views <= MAX_VIEWS:
+            raise InputError(Problem("", f"--views must be in 0..{MAX_VIEWS}, got {views}",
+                                     "--views", "parameter"))
+        check_seed(seed)
         width, height = parse_size(size)
+        require("moderngl", feature="rendering")
         scene = read_scene(scene_dir)
         settled = False if solved else None
         t0 = time.perf_counter()
         renderer = Renderer()
-        rng = np.random.default_rng([int(seed), 0x52454E44])  # "REND": the view-sampling stage
+        rng = view_rng(seed)
         cams = sample_views(scene, views, rng, width=width, height=height, settled=settled,
                             renderer=renderer)
         if overview:

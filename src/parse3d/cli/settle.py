@@ -7,20 +7,32 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
-from ._common import console, print_json
+from ._common import check_range, console, print_json
+
+#: Bounds of the settle options (documented in docs/physics.md).
+MAX_STEPS = 100_000
+MAX_DT = 0.1
+MAX_DAMPING = 100.0
+MAX_THRESHOLD = 0.05
 
 
 def register(app: typer.Typer) -> None:
     @app.command("settle")
     def settle_cmd(
         scene_dir: Path = typer.Argument(..., help="Folder holding scene.json (from parse3d solve)."),
-        steps: int = typer.Option(1000, "--steps", help="Simulation steps (paper: 1000)."),
-        dt: float = typer.Option(0.01, "--dt", help="Time step in seconds (paper: 0.01)."),
-        linear_damping: float = typer.Option(0.05, "--linear-damping", help="Paper: 0.05."),
-        angular_damping: float = typer.Option(0.5, "--angular-damping", help="Paper: 0.5."),
+        steps: int = typer.Option(1000, "--steps",
+                                  help="Simulation steps, 1..100000 (paper: 1000)."),
+        dt: float = typer.Option(0.01, "--dt",
+                                 help="Time step in seconds, (0, 0.1] (paper: 0.01)."),
+        linear_damping: float = typer.Option(0.05, "--linear-damping",
+                                             help="0..100 (paper: 0.05)."),
+        angular_damping: float = typer.Option(0.5, "--angular-damping",
+                                              help="0..100 (paper: 0.5)."),
         full: bool = typer.Option(False, "--full", help="Run every step (no early exit once all bodies sleep)."),
-        threshold: float = typer.Option(0.001, "--threshold", help="Contact distance in metres."),
+        threshold: float = typer.Option(0.001, "--threshold",
+                                        help="Contact distance in metres, (0, 0.05]."),
         no_glb: bool = typer.Option(False, "--no-glb", help="Do not rewrite scene.glb."),
         as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
     ) -> None:
@@ -31,11 +43,14 @@ def register(app: typer.Typer) -> None:
         from ..physics import SettleConfig, extract_contacts, settle
         from ..scene.io import read_scene, write_scene
 
-        for name, value, ok in (("--steps", steps, steps >= 0), ("--dt", dt, dt > 0),
-                                ("--threshold", threshold, threshold > 0)):
-            if not ok:
-                raise InputError(Problem("", f"{name} must be positive, got {value}", name,
-                                         "parameter"))
+        if not 1 <= steps <= MAX_STEPS:
+            raise InputError(Problem("", f"--steps must be an integer in 1..{MAX_STEPS}, got "
+                                         f"{steps}", "--steps", "parameter"))
+        check_range("--dt", dt, 0.0, MAX_DT, unit="s", low_open=True)
+        check_range("--linear-damping", linear_damping, 0.0, MAX_DAMPING)
+        check_range("--angular-damping", angular_damping, 0.0, MAX_DAMPING)
+        check_range("--threshold", threshold, 0.0, MAX_THRESHOLD, unit="m", low_open=True)
+        require("sapien", feature="settling")
         scene = read_scene(scene_dir)
         report = settle(scene, config=SettleConfig(
             dt=dt, steps=steps, linear_damping=linear_damping, angular_damping=angular_damping,
@@ -57,7 +72,7 @@ def register(app: typer.Typer) -> None:
                       + (", all asleep early" if report.early_exit else "") + f"); "
                       f"{len(moved)} moved more than 1 cm or 2 deg; "
                       f"{len(scene.contacts)} part-level contacts ({scene.timings['contacts']:.3f} s)")
-        for flag in ("fell", "tipped", "left_support"):
+        for flag in ("fell", "tipped", "left_support", "sank"):
             ids = report.flagged(flag)
             if ids:
                 console.print(f"  [yellow]{flag}[/]: {', '.join(ids)}")

@@ -7,8 +7,9 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InputError, Problem
-from ._common import console, print_json
+from ._common import check_seed, console, print_json, safe_name
 
 
 def _summary(scene, out: Path | None) -> dict:
@@ -56,6 +57,11 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
                                  "--strategy", "parameter"))
     opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
                            solver=SolverConfig(strategy=strategy))
+    if not no_settle:
+        require("sapien", feature="settling (or pass --no-settle)")
+    if not no_preview:
+        require("moderngl", feature="the preview (or pass --no-preview)")
+    _prepare_out(out)
     scene = run_pipeline(pag, seed=seed, out=out, options=opts)
     s = _summary(scene, out)
     if as_json:
@@ -64,6 +70,16 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
         _print_summary(s)
     if not scene.ok:
         sys.exit(EXIT_INFEASIBLE)
+
+
+def _prepare_out(out: Path) -> None:
+    """Check that ``out`` can hold a scene (exit 2 otherwise) and remove the outputs of an
+    earlier solve there (a solve owns its folder's outputs; other files are kept)."""
+    from .._files import check_output_dir
+    from ..scene.io import clear_scene_outputs
+
+    check_output_dir(out)
+    clear_scene_outputs(out)
 
 
 def register(app: typer.Typer) -> None:
@@ -87,18 +103,22 @@ def register(app: typer.Typer) -> None:
         from ..assets.registry import vocabulary
         from ..pag.io import load_pag
 
+        check_seed(seed)
         pag = load_pag(pag_file, vocabulary=vocabulary())
-        out = out or Path("out") / f"{pag.name or pag_file.stem}-{seed}"
+        out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
         _run(pag, seed, out, strategy, no_settle, no_preview, as_json)
 
     @app.command("generate")
     def generate_cmd(
         room_type: str = typer.Argument(..., help="Room type, e.g. bedroom, kitchen, study."),
-        seed: int = typer.Option(0, "--seed"),
-        out: Path = typer.Option(None, "--out", "-o"),
-        no_settle: bool = typer.Option(False, "--no-settle"),
-        no_preview: bool = typer.Option(False, "--no-preview"),
-        as_json: bool = typer.Option(False, "--json"),
+        seed: int = typer.Option(0, "--seed", help="Scene seed: picks the template and seeds "
+                                                    "its expansion and the solver."),
+        out: Path = typer.Option(None, "--out", "-o",
+                                 help="Output folder (default: out/<room_type>-<seed>)."),
+        no_settle: bool = typer.Option(False, "--no-settle",
+                                       help="Skip physics settling and contacts."),
+        no_preview: bool = typer.Option(False, "--no-preview", help="Skip preview.png."),
+        as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON."),
     ) -> None:
         """Generate a scene of a room type: a room template of that type expanded with the seed.
 
@@ -109,8 +129,9 @@ def register(app: typer.Typer) -> None:
         """
         from ..scenes import bundled_pag
 
+        check_seed(seed)
         pag = bundled_pag(room_type, seed)
-        out = out or Path("out") / f"{room_type}-{seed}"
+        out = out or Path("out") / f"{safe_name(room_type, 'room')}-{seed}"
         _run(pag, seed, out, "constrained", no_settle, no_preview, as_json)
 
 

@@ -42,7 +42,8 @@ def register(app: typer.Typer) -> None:
     @group.command("expand")
     def expand_cmd(
         template: str = typer.Argument(..., help="A bundled template name or a template file."),
-        seed: int = typer.Option(0, "--seed", min=0, help="Expansion seed."),
+        seed: int = typer.Option(0, "--seed", min=0, max=2**32 - 1,
+                                  help="Expansion seed, 0..4294967295."),
         out: Path = typer.Option(None, "-o", "--out", help="Write the PAG here (.json/.yaml)."),
         json_out: bool = typer.Option(False, "--json", help="Print the PAG as JSON on stdout."),
     ) -> None:
@@ -50,7 +51,7 @@ def register(app: typer.Typer) -> None:
 
         Example:
 
-            parse3d template expand study-reading-01 --seed 3 -o room.json
+            parse3d template expand study-reading-02 --seed 3 -o room.json
         """
         from ..datagen.templates import expand_template, load_template
         from ..pag.io import dumps_pag, save_pag
@@ -70,7 +71,8 @@ def register(app: typer.Typer) -> None:
     @group.command("check")
     def check_cmd(
         templates: list[str] = typer.Argument(..., help="Template names or files."),
-        seeds: int = typer.Option(2, "--seeds", min=1, help="Seeds 0..K-1 to expand and solve."),
+        seeds: int = typer.Option(2, "--seeds", min=1, max=100,
+                                   help="Seeds 0..K-1 to expand and solve (K at most 100)."),
         json_out: bool = typer.Option(False, "--json", help="Print results as JSON on stdout."),
         threshold: float = typer.Option(0.9, "--threshold", min=0.0, max=1.0,
                                         help="Least mean placed fraction per template."),
@@ -82,7 +84,7 @@ def register(app: typer.Typer) -> None:
 
         Example:
 
-            parse3d template check study-reading-01 bedroom-master-01 --seeds 2
+            parse3d template check study-reading-02 bedroom-master-01 --seeds 2
         """
         from ..datagen.templates import check_template, load_template
 

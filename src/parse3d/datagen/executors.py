@@ -30,19 +30,13 @@ from dataclasses import dataclass
 from typing import Any
 
 from ..errors import InputError, Problem
-from .build import (
-    BuildConfig,
-    SceneOutcome,
-    SceneSource,
-    _base_record,
-    make_source,
-    plan_scene,
-)
+from .build_config import DEFAULT_MAX_TASKS, BuildConfig
+from .planning import plan_scene
+from .sources import SceneSource, make_source
+from .task import SceneOutcome, _base_record, build_scene
 
 __all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit"]
 
-#: Scenes a local worker builds before it is replaced.
-DEFAULT_MAX_TASKS = 200
 
 
 def hard_limit(config: BuildConfig) -> float | None:
@@ -91,8 +85,6 @@ def _process_state(config: BuildConfig) -> tuple[Any, Any]:
 
 def run_task(config: BuildConfig, index: int) -> SceneOutcome:
     """Build one scene with this process's source and renderer (the task of every executor)."""
-    from .build import build_scene
-
     source, renderer = _process_state(config)
     return build_scene(config, index, source=source, renderer=renderer)
 

@@ -49,6 +49,8 @@ import tempfile
 from pathlib import Path
 from typing import Any
 
+from .._files import user_mode
+
 __all__ = ["COLUMNS", "TIMING_COLUMNS", "STATUSES", "manifest_schema", "write_manifest",
            "read_manifest"]
 
@@ -111,7 +113,7 @@ def write_manifest(path: str | Path, records: list[dict[str, Any]]) -> Path:
     os.close(fd)
     try:
         pq.write_table(table, tmp)
-        os.chmod(tmp, 0o644)
+        os.chmod(tmp, user_mode())
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):

@@ -228,9 +228,21 @@ def dataset_stats(path: str | Path) -> DatasetStats:
         raise InputError(Problem("", "no manifest.parquet here — build a dataset first "
                                      f"(parse3d dataset build --scenes N --out {path})",
                                  str(path), "io"))
-    rows = read_manifest(man)
+    try:
+        rows = read_manifest(man)
+    except Exception as e:  # noqa: BLE001 - any damage to the file: one line, not a traceback
+        raise InputError(Problem("", f"cannot read the manifest ({type(e).__name__}): run the "
+                                     f"same parse3d dataset build again to rebuild it from the "
+                                     "per-scene records", str(man), "io")) from None
     cfg_file = path / "dataset.json"
-    config = json.loads(cfg_file.read_text()) if cfg_file.exists() else {}
+    try:
+        config = json.loads(cfg_file.read_text()) if cfg_file.exists() else {}
+    except (OSError, ValueError) as e:
+        raise InputError(Problem("", f"cannot read the build configuration: {e}",
+                                 str(cfg_file), "io")) from None
+    if not isinstance(config, dict):
+        raise InputError(Problem("", "the build configuration is not a JSON object",
+                                 str(cfg_file), "schema"))
     status = Counter(r["status"] for r in rows)
     return DatasetStats(name=path.resolve().name, config=config, status=dict(status),
                         rows=[r for r in rows if r["status"] == "ok"])
@@ -388,7 +400,5 @@ def write_stats(stats: DatasetStats, out: str | Path, *, top_categories: int = 4
     atomic_write_text(md, stats.markdown())
     js = out / "stats.json"
     atomic_write_text(js, json.dumps(stats.table(), indent=1) + "\n")
-    for p in (md, js):
-        p.chmod(0o644)
     files += [md, js]
     return files

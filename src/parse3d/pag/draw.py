@@ -69,6 +69,13 @@ def layout_pag(pag: PAG, *, max_row: int = 14) -> dict[str, tuple[float, float]]
     return pos
 
 
+#: Largest PAG :func:`draw_pag` draws: objects, and support layers (depth of the support tree).
+MAX_DRAW_OBJECTS = 300
+MAX_DRAW_DEPTH = 40
+#: Largest image :func:`draw_pag` writes, pixels.
+MAX_DRAW_PIXELS = 40_000_000
+
+
 def draw_pag(pag: PAG, path: str | Path, *, title: str | None = None, dpi: int = 110) -> Path:
     """Draw ``pag`` to a PNG or SVG file (chosen by the extension of ``path``).
 
@@ -87,6 +94,12 @@ def draw_pag(pag: PAG, path: str | Path, *, title: str | None = None, dpi: int =
     Path
         The file written. The figure grows with the widest layer and the number of layers,
         so that 50 objects stay readable.
+
+    Raises
+    ------
+    InputError
+        A PAG too large to draw legibly: more than :data:`MAX_DRAW_OBJECTS` objects, a support
+        chain deeper than :data:`MAX_DRAW_DEPTH`, or an image above :data:`MAX_DRAW_PIXELS`.
     """
     path = Path(path)
     if path.suffix.lower() not in (".png", ".svg"):
@@ -99,13 +112,25 @@ def draw_pag(pag: PAG, path: str | Path, *, title: str | None = None, dpi: int =
     from matplotlib.lines import Line2D
     from matplotlib.patches import Circle, FancyArrowPatch, Rectangle
 
-    pos = layout_pag(pag)
+    if len(pag.objects) > MAX_DRAW_OBJECTS:
+        raise InputError(Problem("/objects", f"{len(pag.objects)} objects are too many to draw "
+                                 f"legibly (at most {MAX_DRAW_OBJECTS}); use parse3d pag show",
+                                 None, "parameter"))
     depth = support_depth(pag)
     max_depth = max(list(depth.values()) + [1])
+    if max_depth > MAX_DRAW_DEPTH:
+        raise InputError(Problem("/relations", f"a support chain {max_depth} objects deep is too "
+                                 f"deep to draw (at most {MAX_DRAW_DEPTH}); use parse3d pag show",
+                                 None, "parameter"))
+    pos = layout_pag(pag)
     width = max([x for x, _ in pos.values()] + [1.0]) + 0.5
     top = max([y for _, y in pos.values()] + [1.0])
     fig_w = max(8.0, 1.7 * width + 1.5)
     fig_h = max(5.0, 2.3 * (top + 1) + 1.5)
+    if fig_w * fig_h * dpi * dpi > MAX_DRAW_PIXELS:
+        raise InputError(Problem("", f"the drawing would be {fig_w * dpi:.0f}x{fig_h * dpi:.0f} "
+                                 f"pixels (at most {MAX_DRAW_PIXELS:,}); lower the dpi or draw "
+                                 "a smaller PAG", str(path), "parameter"))
     fig, ax = plt.subplots(figsize=(fig_w, fig_h))
     ax.set_xlim(-0.2, width + 0.2)
     ax.set_ylim(-0.6, top + 0.7)

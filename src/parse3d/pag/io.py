@@ -7,6 +7,19 @@
 
 YAML is read with the YAML 1.2 core rules for scalars: only ``true``/``false`` are booleans
 (so ``relation: ON`` stays the string ``"ON"``) and dates stay strings.
+
+Parsing is bounded before any object is built (hostile files cannot crash or hang a command):
+
+* the input must be a regular file of at most :data:`~parse3d._files.MAX_INPUT_BYTES`
+  (a FIFO or device is refused without being opened for a blocking read);
+* nesting is at most :data:`MAX_DEPTH` levels (checked on the token or event stream, so deep
+  nesting never reaches a recursive parser);
+* YAML aliases may expand the document to at most :data:`MAX_NODES` nodes in all;
+* YAML tags are limited to the plain JSON types (``!!str``, ``!!int``, ``!!float``,
+  ``!!bool``, ``!!null``, ``!!map``, ``!!seq``): a timestamp, set, binary or any other tag is
+  an error with the pointer of the tagged node;
+* a repeated key in a JSON object or YAML mapping is an error with the pointer of the repeat;
+* numbers must be finite (``NaN``, ``Infinity``, ``1e400``, ``.inf`` are errors).
 """
 
 from __future__ import annotations
@@ -19,11 +32,18 @@ from typing import Any
 
 import yaml
 
+from .._files import read_input_text
 from ..errors import InputError, Problem, SchemaError
 from .model import PAG
 from .validate import Vocabulary, validate_data
 
-__all__ = ["load_pag", "save_pag", "read_document", "dumps_pag", "loads_document"]
+__all__ = ["load_pag", "save_pag", "read_document", "dumps_pag", "loads_document", "MAX_DEPTH",
+           "MAX_NODES"]
+
+#: Deepest nesting of lists and objects a document may have (a PAG needs 4).
+MAX_DEPTH = 64
+#: Most nodes (scalars, lists, objects) a document may expand to, YAML aliases included.
+MAX_NODES = 2_000_000
 
 _JSON_EXT = (".json",)
 _YAML_EXT = (".yaml", ".yml")
@@ -63,7 +83,7 @@ def _kind(path: Path) -> str:
 
 
 def loads_document(text: str, *, kind: str, file: str | None = None) -> Any:
-    """Parse JSON or YAML text; malformed text raises :class:`SchemaError` with line/column.
+    """Parse JSON or YAML text, bounded; malformed text raises :class:`SchemaError`.
 
     Parameters
     ----------
@@ -71,26 +91,245 @@ def loads_document(text: str, *, kind: str, file: str | None = None) -> Any:
     kind : {"json", "yaml"}
     file : str, optional
         Named in the error.
+
+    Raises
+    ------
+    SchemaError
+        Syntax errors (with line and column), nesting deeper than :data:`MAX_DEPTH`, YAML
+        aliases expanding past :data:`MAX_NODES`, tags that are not plain JSON types, repeated
+        keys and non-finite numbers (each with the JSON pointer of the offending node).
     """
     if kind == "json":
+        _json_depth(text, file)
         try:
-            return json.loads(text, parse_constant=_reject_constant)
+            data = json.loads(text, parse_constant=_reject_constant, parse_float=_finite_float,
+                              object_pairs_hook=_pairs)
         except json.JSONDecodeError as e:
             raise SchemaError(Problem("", f"invalid JSON at line {e.lineno}, column {e.colno}: "
                                       f"{e.msg}", file, "syntax")) from None
-        except ValueError as e:
+        except (ValueError, RecursionError) as e:
             raise SchemaError(Problem("", f"invalid JSON: {e}", file, "syntax")) from None
+        dups = _duplicates(data, "")
+        if dups:
+            raise SchemaError([Problem(ptr, f"the key {key!r} is repeated in this object "
+                                            "(JSON keeps only one): remove or rename it",
+                                       file, "syntax") for ptr, key in dups])
+        return data
+    _yaml_precheck(text, file)
     try:
-        return yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
+        data = yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
     except yaml.YAMLError as e:
         mark = getattr(e, "problem_mark", None)
         where = f" at line {mark.line + 1}, column {mark.column + 1}" if mark else ""
         what = getattr(e, "problem", None) or str(e)
         raise SchemaError(Problem("", f"invalid YAML{where}: {what}", file, "syntax")) from None
+    except RecursionError:
+        raise SchemaError(Problem("", "invalid YAML: nested too deeply", file, "syntax")
+                          ) from None
+    bad = _non_finite(data, "")
+    if bad:
+        raise SchemaError(Problem(bad, "not a finite number (.nan and .inf are not allowed)",
+                                  file, "syntax"))
+    return data
+
+
+class _DupDict(dict):
+    """A JSON object that had repeated keys (``dups`` lists them, in order)."""
+
+    dups: list[str]
+
+
+def _pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    d: dict[str, Any] = {}
+    dups = []
+    for k, v in pairs:
+        if k in d:
+            dups.append(k)
+        d[k] = v
+    if dups:
+        d = _DupDict(d)
+        d.dups = dups
+    return d
+
+
+def _duplicates(v: Any, ptr: str) -> list[tuple[str, str]]:
+    out: list[tuple[str, str]] = []
+    stack = [(v, ptr)]
+    while stack:
+        v, ptr = stack.pop()
+        if isinstance(v, dict):
+            if isinstance(v, _DupDict):
+                out += [(f"{ptr}/{_esc(k)}", k) for k in v.dups]
+            stack += [(x, f"{ptr}/{_esc(k)}") for k, x in v.items()]
+        elif isinstance(v, list):
+            stack += [(x, f"{ptr}/{i}") for i, x in enumerate(v)]
+    return sorted(out)
+
+
+def _non_finite(v: Any, ptr: str) -> str | None:
+    stack = [(v, ptr)]
+    while stack:
+        v, ptr = stack.pop()
+        if isinstance(v, float) and not math.isfinite(v):
+            return ptr or "/"
+        if isinstance(v, dict):
+            stack += [(x, f"{ptr}/{_esc(str(k))}") for k, x in v.items()]
+        elif isinstance(v, list):
+            stack += [(x, f"{ptr}/{i}") for i, x in enumerate(v)]
+    return None
+
+
+def _esc(key: str) -> str:
+    return str(key).replace("~", "~0").replace("/", "~1")
+
+
+_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
+
+
+def _json_depth(text: str, file: str | None) -> None:
+    """Refuse nesting deeper than MAX_DEPTH before the recursive JSON decoder sees it."""
+    depth = 0
+    for m in _JSON_TOKENS.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            if depth > MAX_DEPTH:
+                line = text.count("\n", 0, m.start()) + 1
+                raise SchemaError(Problem("", f"nested more than {MAX_DEPTH} levels deep (at "
+                                              f"line {line}): a PAG needs only a few",
+                                          file, "syntax"))
+        elif c in "]}":
+            depth -= 1
+
+
+_PLAIN_TAGS = frozenset("tag:yaml.org,2002:" + t
+                        for t in ("str", "int", "float", "bool", "null", "map", "seq"))
+
+
+def _yaml_precheck(text: str, file: str | None) -> None:
+    """Walk the YAML event stream (iterative, no object built): depth, expanded size, tags and
+    repeated keys, each reported with the JSON pointer of the node."""
+    loader = _Loader(text)
+    # stack of [kind, pointer, key-expected flag or index, current key, keys seen, size]
+    stack: list[list[Any]] = []
+    anchors: dict[str, int] = {}
+    open_anchors: list[tuple[str, int, int]] = []  # (anchor, stack depth, nodes at start)
+    nodes = 0
+    problems: list[Problem] = []
+
+    def fail(ptr: str, msg: str) -> None:
+        problems.append(Problem(ptr or "/", msg, file, "syntax"))
+
+    try:
+        while True:
+            ev = loader.get_event()
+            if ev is None:
+                break
+            if isinstance(ev, (yaml.MappingEndEvent, yaml.SequenceEndEvent)):
+                stack.pop()
+                while open_anchors and open_anchors[-1][1] == len(stack) + 1:
+                    name, _d, start = open_anchors.pop()
+                    anchors[name] = nodes - start
+                _after_value(stack)
+                continue
+            if not isinstance(ev, (yaml.ScalarEvent, yaml.MappingStartEvent,
+                                   yaml.SequenceStartEvent, yaml.AliasEvent)):
+                continue
+            # where this node sits
+            ptr, is_key = "", False
+            if stack:
+                top = stack[-1]
+                if top[0] == "map":
+                    if top[2]:
+                        is_key = True
+                        ptr = top[1]
+                    else:
+                        ptr = f"{top[1]}/{_esc(str(top[3]))}"
+                else:
+                    top[2] += 1
+                    ptr = f"{top[1]}/{top[2]}"
+            if isinstance(ev, yaml.AliasEvent):
+                nodes += anchors.get(ev.anchor, 1)
+                if nodes > MAX_NODES:
+                    raise _Stop(Problem(ptr or "/", f"YAML aliases expand the document past "
+                                        f"{MAX_NODES:,} nodes: write the values out instead",
+                                        file, "syntax"))
+                if is_key:
+                    top[2], top[3] = False, "?"
+                else:
+                    _after_value(stack)
+                continue
+            nodes += 1
+            if nodes > MAX_NODES:
+                raise _Stop(Problem("/", f"the document has more than {MAX_NODES:,} nodes",
+                                    file, "syntax"))
+            tag = getattr(ev, "tag", None)
+            if tag and tag != "!" and tag not in _PLAIN_TAGS:
+                fail(ptr, f"the YAML tag {tag.replace('tag:yaml.org,2002:', '!!')} is not a "
+                          "plain JSON type (string, number, boolean, null, list, mapping): "
+                          "remove it, or quote the value")
+            if isinstance(ev, yaml.ScalarEvent):
+                if is_key:
+                    top[2], top[3] = False, ev.value
+                    if ev.value in top[4]:
+                        fail(f"{top[1]}/{_esc(ev.value)}", f"the key {ev.value!r} is repeated "
+                                 "in this mapping (only one would be kept): remove or rename it")
+                    top[4].add(ev.value)
+                else:
+                    if ev.anchor:
+                        anchors[ev.anchor] = 1
+                    _after_value(stack)
+                continue
+            # a collection starts
+            if is_key:
+                fail(ptr, "a list or mapping used as a mapping key: keys must be strings")
+                top[2], top[3] = False, "?"
+                child_ptr = ptr + "/?"
+            else:
+                child_ptr = ptr
+            if len(stack) >= MAX_DEPTH:
+                raise _Stop(Problem(ptr[:60] + "..." if len(ptr) > 60 else ptr or "/",
+                                    f"nested more than {MAX_DEPTH} levels deep: "
+                                    "a PAG needs only a few", file, "syntax"))
+            if ev.anchor:
+                open_anchors.append((ev.anchor, len(stack) + 1, nodes))
+            if isinstance(ev, yaml.MappingStartEvent):
+                stack.append(["map", child_ptr, True, None, set()])
+            else:
+                stack.append(["seq", child_ptr, -1, None, None])
+            if len(problems) > 50:
+                break
+    except _Stop as e:
+        problems.append(e.problem)
+    except yaml.YAMLError:
+        return  # the real loader reports syntax errors with their position
+    finally:
+        loader.dispose()
+    if problems:
+        raise SchemaError(problems)
+
+
+class _Stop(Exception):
+    def __init__(self, problem: Problem) -> None:
+        super().__init__(str(problem))
+        self.problem = problem
+
+
+def _after_value(stack: list[list[Any]]) -> None:
+    """A value (scalar, alias or whole collection) ended: a mapping expects its next key."""
+    if stack and stack[-1][0] == "map":
+        stack[-1][2] = True
 
 
 def _reject_constant(name: str) -> Any:
-    raise ValueError(f"{name} is not a number a PAG may contain")
+    raise ValueError(f"{name} is not a number (JSON has no NaN or Infinity)")
+
+
+def _finite_float(text: str) -> float:
+    v = float(text)
+    if not math.isfinite(v):
+        raise ValueError(f"{text} is too large to be a finite number")
+    return v
 
 
 def read_document(path: str | Path) -> dict[str, Any]:
@@ -99,17 +338,13 @@ def read_document(path: str | Path) -> dict[str, Any]:
     Raises
     ------
     InputError
-        The file is missing or unreadable (kind ``io``), or is not well-formed JSON/YAML
-        (:class:`SchemaError`, kind ``syntax``, with the line and column).
+        The file is missing, not a regular file (a folder, FIFO or device: never read), too
+        large or unreadable (kind ``io``), or is not well-formed JSON/YAML within the bounds of
+        :func:`loads_document` (:class:`SchemaError`, kind ``syntax``).
     """
     path = Path(path)
     kind = _kind(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(Problem("", "no such file", str(path), "io")) from None
-    except (OSError, UnicodeDecodeError) as e:
-        raise InputError(Problem("", f"cannot read the file: {e}", str(path), "io")) from None
+    text = read_input_text(path)
     return loads_document(text, kind=kind, file=str(path))
 
 

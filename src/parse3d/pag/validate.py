@@ -13,6 +13,11 @@ errors elsewhere:
 * the graph: duplicate ids, room elements as children, parents a relation cannot use (the
   ceiling under ``ON``), objects with no supporter or with two, cycles over all relations;
 * the room: footprint a simple counter-clockwise polygon with area, positive height;
+* sizes (finite, documented bounds, so that no input can make later stages run away):
+  the footprint fits in a :data:`MAX_ROOM_EXTENT` square with coordinates within
+  :data:`MAX_COORDINATE` of the origin and at most :data:`MAX_WALLS` vertices, the height is at
+  most :data:`MAX_ROOM_HEIGHT`, scale factors lie in [:data:`MIN_SCALE`, :data:`MAX_SCALE`],
+  and a PAG has at most :data:`MAX_OBJECTS` objects and :data:`MAX_RELATIONS` relations;
 * the vocabulary, when one is given: category names and part labels.
 
 A document that passes is solvable in principle: no later stage fails for a reason these
@@ -41,7 +46,25 @@ from ..relations import RELATIONS, SURFACES, Param, Relation
 from .refs import Ref, RefSyntaxError, is_room_element, parse_ref, wall_index
 from .schema import schema_problems, suggest
 
-__all__ = ["Vocabulary", "validate_data", "error_for", "ROOM_PARENTS", "ROOM_SURFACES"]
+__all__ = ["Vocabulary", "validate_data", "error_for", "ROOM_PARENTS", "ROOM_SURFACES",
+           "MAX_ROOM_EXTENT", "MAX_COORDINATE", "MAX_WALLS", "MAX_ROOM_HEIGHT", "MIN_SCALE",
+           "MAX_SCALE", "MAX_OBJECTS", "MAX_RELATIONS", "MAX_ID_LENGTH"]
+
+#: Largest footprint, metres: it must fit in a square of this side (1 km).
+MAX_ROOM_EXTENT = 1000.0
+#: Footprint coordinates lie within this distance of the origin, metres (10 km).
+MAX_COORDINATE = 10_000.0
+#: Most footprint vertices (walls) a room may have.
+MAX_WALLS = 256
+#: Highest room, metres.
+MAX_ROOM_HEIGHT = 100.0
+#: Range of an object's ``scale`` factors.
+MIN_SCALE, MAX_SCALE = 0.01, 100.0
+#: Most objects and relations of one PAG (PARSE-10K scenes have about 50 objects).
+MAX_OBJECTS = 1000
+MAX_RELATIONS = 10_000
+#: Longest object id, characters.
+MAX_ID_LENGTH = 100
 
 _IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_\-]*$")
 
@@ -123,6 +146,11 @@ def validate_data(
     list of Problem
         Schema problems first, then meaning problems in document order; empty when valid.
     """
+    problems = _size_problems(data, file)
+    if problems:  # checked first: the schema layer's time grows with the document
+        if raise_errors:
+            raise error_for(problems, file=file)
+        return problems
     problems = schema_problems(data, file=file)
     if isinstance(data, dict):
         seen = {p.pointer for p in problems}
@@ -132,6 +160,18 @@ def validate_data(
     if raise_errors and problems:
         raise error_for(problems, file=file)
     return problems
+
+
+def _size_problems(data: Any, file: str | None) -> list[Problem]:
+    out = []
+    if isinstance(data, dict):
+        for key, limit in (("objects", MAX_OBJECTS), ("relations", MAX_RELATIONS)):
+            items = data.get(key)
+            if isinstance(items, list) and len(items) > limit:
+                out.append(Problem(f"/{key}", f"{len(items)} {key}: a PAG may have at most "
+                                   f"{limit} (split the scene into several PAGs)", file,
+                                   "parameter"))
+    return out
 
 
 def _is_number(v: Any) -> bool:
@@ -180,9 +220,9 @@ class _Checker:
             if pts is not None:
                 self.check_footprint(pts)
         h = room.get("height")
-        if _is_number(h) and not (math.isfinite(h) and h > 0):
-            self.add("/room/height", f"the room height must be a positive number of metres, "
-                     f"got {h}", "geometry")
+        if _is_number(h) and not (math.isfinite(h) and 0 < h <= MAX_ROOM_HEIGHT):
+            self.add("/room/height", f"the room height must be a positive number of metres up "
+                     f"to {MAX_ROOM_HEIGHT:g}, got {h}", "geometry")
 
     def check_footprint(self, pts: list[tuple[float, float]]) -> None:
         ptr = "/room/footprint"
@@ -191,6 +231,23 @@ class _Checker:
             return
         if not all(math.isfinite(c) for p in pts for c in p):
             self.add(ptr, "footprint coordinates must be finite numbers", "geometry")
+            return
+        if len(pts) > MAX_WALLS:
+            self.add(ptr, f"a footprint may have at most {MAX_WALLS} vertices, got {len(pts)}",
+                     "geometry")
+            return
+        far = next((k for k, p in enumerate(pts) if max(abs(p[0]), abs(p[1])) > MAX_COORDINATE),
+                   None)
+        if far is not None:
+            self.add(f"{ptr}/{far}", f"footprint coordinates must lie within "
+                     f"{MAX_COORDINATE:g} m of the origin, got {list(pts[far])}: move the room "
+                     "nearer to (0, 0)", "geometry")
+            return
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        extent = max(max(xs) - min(xs), max(ys) - min(ys))
+        if extent > MAX_ROOM_EXTENT:
+            self.add(ptr, f"the footprint spans {extent:g} m: a room must fit in a "
+                     f"{MAX_ROOM_EXTENT:g} m square", "geometry")
             return
         n = len(pts)
         for i in range(n):
@@ -235,6 +292,10 @@ class _Checker:
             base = f"/objects/{j}"
             oid = o.get("id")
             valid_id = isinstance(oid, str) and _IDENT.match(oid) is not None
+            if valid_id and len(oid) > MAX_ID_LENGTH:
+                self.add(f"{base}/id", f"object ids may have at most {MAX_ID_LENGTH} "
+                         f"characters, got {len(oid)}", "reference")
+                valid_id = False
             if valid_id:
                 if is_room_element(oid):
                     self.add(f"{base}/id", f"{oid!r} names a room element; choose another id",
@@ -281,6 +342,9 @@ class _Checker:
         if not (math.isfinite(lo) and math.isfinite(hi)) or lo <= 0 or hi <= 0:
             self.add(f"{base}/scale", f"scale factors must be positive, got [{lo}, {hi}]",
                      "parameter")
+        elif not (MIN_SCALE <= lo <= MAX_SCALE and MIN_SCALE <= hi <= MAX_SCALE):
+            self.add(f"{base}/scale", f"scale factors must lie in [{MIN_SCALE:g}, "
+                     f"{MAX_SCALE:g}], got [{_fmt(lo)}, {_fmt(hi)}]", "parameter")
         elif lo > hi:
             self.add(f"{base}/scale", f"scale low {_fmt(lo)} is above high {_fmt(hi)}: write "
                      "[low, high]", "parameter")

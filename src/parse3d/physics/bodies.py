@@ -100,23 +100,29 @@ class PhysxWorld:
     dynamic: list[str] = field(default_factory=list)
     shape_owner: dict[int, tuple[str, str]] = field(default_factory=dict)
     shapes: list = field(default_factory=list)
+    origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
 
     def pose(self, object_id: str) -> tuple[np.ndarray, np.ndarray]:
-        """World ``(R (3, 3), t (3,))`` of an object's asset frame now."""
+        """World ``(R (3, 3), t (3,))`` of an object's asset frame now (the simulation runs in
+        a local frame at ``origin``; this adds it back, in float64)."""
         from ..geometry.frames import quat_to_matrix
 
         p = self.entities[object_id].get_pose()
-        return quat_to_matrix(np.asarray(p.q, float)), np.asarray(p.p, float)
+        return quat_to_matrix(np.asarray(p.q, float)), np.asarray(p.p, float) + self.origin
 
     def owner(self, shape) -> tuple[str, str] | None:
         """``(object id, part name)`` of a collision shape, None for an unknown shape."""
         return self.shape_owner.get(id(shape))
 
 
-def _shapes(physx, pieces: ConvexSet, materials: list, scale: float, density: float | None):
+def _shapes(physx, pieces: ConvexSet, materials: list, scale: float, density: float | None,
+            offset: np.ndarray | None = None):
     out = []
     for i in range(len(pieces)):
-        v = np.ascontiguousarray(pieces.piece_vertices(i), np.float32)
+        v = np.asarray(pieces.piece_vertices(i), np.float64)
+        if offset is not None:
+            v = v - offset  # in float64, before PhysX's float32
+        v = np.ascontiguousarray(v, np.float32)
         sh = physx.PhysxCollisionShapeConvexMesh(vertices=v, scale=[scale] * 3,
                                                  material=materials[i])
         if density is not None:
@@ -128,7 +134,7 @@ def _shapes(physx, pieces: ConvexSet, materials: list, scale: float, density: fl
 def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular_damping: float,
                 max_depenetration_velocity: float, sleep_threshold: float,
                 solver_position_iterations: int, solver_velocity_iterations: int,
-                settled: bool = False) -> PhysxWorld:
+                settled: bool = False, origin: np.ndarray | None = None) -> PhysxWorld:
     """Build the PhysX (CPU) world of ``scene``.
 
     Parameters
@@ -145,6 +151,10 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
     solver_position_iterations, solver_velocity_iterations : int
     settled : bool
         Start from the settled poses (True) or the solved ones.
+    origin : (3,) float, metres, world frame, optional
+        Where the simulation's local frame sits: PhysX works in float32, so the room is moved
+        near the origin (results then do not depend on where the room is); read poses back
+        with :meth:`PhysxWorld.pose`. Default: the world origin.
 
     Returns
     -------
@@ -157,6 +167,8 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
     physx.set_scene_config(gravity=np.array([0.0, 0.0, -9.81], np.float32), cpu_workers=0)
     system = physx.PhysxCpuSystem()
     world = PhysxWorld(sapien.Scene(systems=[system]), system)
+    o = np.zeros(3) if origin is None else np.asarray(origin, np.float64).reshape(3)
+    world.origin = o
     system.timestep = float(timestep)
     mats: dict[str, object] = {}
 
@@ -172,8 +184,8 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
     ent = sapien.Entity()
     ent.set_name(ROOM)
     static = physx.PhysxRigidStaticComponent()
-    for sh, part in zip(_shapes(physx, shell, [shell_mat] * len(shell), 1.0, None), shell.parts,
-                        strict=True):
+    for sh, part in zip(_shapes(physx, shell, [shell_mat] * len(shell), 1.0, None, o),
+                        shell.parts, strict=True):
         static.attach(sh)
         world.shape_owner[id(sh)] = (ROOM, part)
         world.shapes.append(sh)
@@ -206,7 +218,7 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
         R, t = obj.rotation, obj.position
         if settled and obj.settled_position is not None:
             R, t = obj.settled_rotation, obj.settled_position
-        ent.set_pose(sapien.Pose(np.asarray(t, np.float32),
+        ent.set_pose(sapien.Pose(np.asarray(np.asarray(t, np.float64) - o, np.float32),
                                  np.asarray(matrix_to_quat(R), np.float32)))
         world.sapien_scene.add_entity(ent)
         world.entities[obj.id] = ent

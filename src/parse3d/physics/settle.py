@@ -15,8 +15,12 @@ Choices of this implementation (see ``docs/physics.md``):
 - PhysX runs on the calling thread (``cpu_workers=0``): one core per scene, deterministic.
 
 After the run every object gets its settled pose and, in ``PlacedObject.flags``, ``fell``
-(dropped more than 5 cm), ``tipped`` (its up axis tilted more than 15 degrees) and
-``left_support`` (no longer within the contact threshold of the part that supported it).
+(dropped more than 5 cm), ``tipped`` (its up axis tilted more than 15 degrees),
+``left_support`` (no longer within the contact threshold of the part that supported it) and
+``sank`` (a collision vertex ends more than the contact tolerance below the floor).
+
+The simulation runs in a local frame centred on the room (:func:`local_origin`): PhysX is
+single precision, and a room 1 km from the origin must settle as it does at the origin.
 Every PAG relation is re-checked on the settled poses.
 """
 
@@ -28,15 +32,17 @@ from typing import Any
 
 import numpy as np
 
-from ..geometry.frames import quat_to_matrix
 from ..scene.model import Scene
 from .bodies import build_world
 from .collision import ROOM
 
-__all__ = ["SettleConfig", "ObjectMotion", "SettleReport", "settle", "PHYSICS_FLAGS"]
+__all__ = ["SettleConfig", "ObjectMotion", "SettleReport", "settle", "local_origin",
+           "PHYSICS_FLAGS"]
 
 #: Flags that settling owns in ``PlacedObject.flags`` (replaced on every run).
-PHYSICS_FLAGS = ("fell", "tipped", "left_support")
+PHYSICS_FLAGS = ("fell", "tipped", "left_support", "sank")
+#: Depth (m) below the floor beyond which a settled object is flagged ``sank``.
+SINK_TOLERANCE = 0.001
 
 
 @dataclass(frozen=True)
@@ -83,8 +89,16 @@ class SettleConfig:
     contact_threshold: float = 0.001
 
     def __post_init__(self):
-        if self.dt <= 0 or self.steps < 0 or self.check_every < 1:
-            raise ValueError("dt must be > 0, steps >= 0 and check_every >= 1")
+        import math
+
+        if not (math.isfinite(self.dt) and 0 < self.dt <= 1.0) or self.steps < 0 \
+                or self.check_every < 1:
+            raise ValueError("dt must be in (0, 1] s, steps >= 0 and check_every >= 1")
+        for name in ("linear_damping", "angular_damping", "contact_threshold", "fall_distance",
+                     "tip_angle_deg", "sleep_threshold", "max_depenetration_velocity"):
+            v = float(getattr(self, name))
+            if not (math.isfinite(v) and v >= 0):
+                raise ValueError(f"{name} must be a finite number >= 0, got {v}")
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -241,6 +255,32 @@ def _recheck_relations(scene: Scene) -> bool:
     return True
 
 
+def _floor_sink(obj) -> float:
+    """How far (m) the lowest collision vertex of a settled object lies below the floor."""
+    from .collision import asset_collision
+
+    if obj.asset is None or obj.settled_position is None:
+        return 0.0
+    data = asset_collision(obj.asset)
+    if not len(data.pieces):
+        return 0.0
+    v = np.asarray(data.pieces.vertices, float) * float(obj.scale)
+    z = v @ np.asarray(obj.settled_rotation, float)[2] + float(obj.settled_position[2])
+    return float(max(0.0, -z.min()))
+
+
+def local_origin(scene: Scene) -> np.ndarray:
+    """Origin of the local frame a scene is simulated in: the centre of the footprint's
+    bounding box, on the floor ((3,) float, metres, world frame).
+
+    PhysX stores poses and collision vertices in float32 (about 0.1 mm of resolution 1 km
+    from the origin); simulating near the origin makes a room settle the same wherever it is.
+    """
+    fp = np.asarray(scene.room.footprint, np.float64)
+    c = 0.5 * (fp.min(axis=0) + fp.max(axis=0))
+    return np.array([c[0], c[1], 0.0])
+
+
 def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None = None,
            steps: int | None = None, linear_damping: float | None = None,
            angular_damping: float | None = None) -> SettleReport:
@@ -274,7 +314,8 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
                         max_depenetration_velocity=cfg.max_depenetration_velocity,
                         sleep_threshold=cfg.sleep_threshold,
                         solver_position_iterations=cfg.solver_position_iterations,
-                        solver_velocity_iterations=cfg.solver_velocity_iterations)
+                        solver_velocity_iterations=cfg.solver_velocity_iterations,
+                        origin=local_origin(scene))
     t1 = time.perf_counter()
     dyn = [world.bodies[i] for i in world.dynamic]
     n = 0
@@ -291,13 +332,11 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
     t2 = time.perf_counter()
 
     motions: dict[str, ObjectMotion] = {}
-    for oid, ent in world.entities.items():
+    for oid in world.entities:
         if oid == ROOM:
             continue
         obj = scene.objects[oid]
-        pose = ent.get_pose()
-        R = quat_to_matrix(np.asarray(pose.q, float))
-        t = np.asarray(pose.p, float)
+        R, t = world.pose(oid)
         if obj.fixed:  # kinematic: exactly where the solver put it
             R, t = np.array(obj.rotation, float), np.array(obj.position, float)
         obj.settled_rotation, obj.settled_position = R, t
@@ -309,6 +348,8 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
             m.flags.append("fell")
         if m.tilt_deg > cfg.tip_angle_deg:
             m.flags.append("tipped")
+        if not obj.fixed and _floor_sink(obj) > max(cfg.contact_threshold, SINK_TOLERANCE):
+            m.flags.append("sank")
         motions[oid] = m
     for lost in _left_support(scene, [k for k, m in motions.items() if not m.fixed],
                               cfg.contact_threshold):

@@ -22,7 +22,7 @@ from .camera import (
     plan_camera,
     sample_views,
 )
-from .io import VIEWS_FORMAT, save_preview, write_views
+from .io import VIEWS_FORMAT, preview_camera, save_preview, write_views
 from .renderer import (
     SYSTEM_PACKAGES,
     Lighting,
@@ -47,6 +47,7 @@ __all__ = [
     "sample_views",
     "VIEWS_FORMAT",
     "save_preview",
+    "preview_camera",
     "write_views",
     "SYSTEM_PACKAGES",
     "Lighting",

@@ -35,6 +35,9 @@ __all__ = [
     "look_at",
     "intrinsics_from_fov",
     "overview_camera",
+    "view_rng",
+    "VIEW_STAGE",
+    "overview_candidates",
     "plan_camera",
     "asset_camera",
     "sample_views",
@@ -306,43 +309,108 @@ def _box_distance(p: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     return np.linalg.norm(d, axis=1)
 
 
-def overview_camera(scene: Scene, *, width: int = 640, height: int = 480,
-                    fov_deg: float = 75.0, eye_height: float = 1.6,
-                    settled: bool | None = None) -> Camera:
-    """A view from a room corner at eye height towards the room centre.
+#: Largest share of the frame one object may cover in the overview (its projected box).
+MAX_OBJECT_SHARE = 0.30
+#: Where overview candidates stand: metres from a corner towards the centroid.
+_INSETS = (0.35, 0.9, 1.5)
 
-    The camera stands 0.35 m from a footprint corner towards the centroid, at ``eye_height``
-    (capped below the ceiling), and looks at the centroid at 0.5 m height. Of the corners, the
-    one whose camera is farthest from every object's bounding box is used (furniture right in
-    front of the lens hides the room), clearances beyond 1.5 m counting as equal; among those
-    the corner farthest from the centroid wins (ties: the lowest index).
+
+def _frame_shares(cam: Camera, boxes: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per box: the share of the frame its projected bounding box covers (1 when the box
+    reaches behind the camera), and whether its centre projects inside the frame."""
+    n = len(boxes)
+    if n == 0:
+        return np.zeros(0), np.zeros(0, bool)
+    idx = np.array([[i >> 2 & 1, i >> 1 & 1, i & 1] for i in range(8)])
+    corners = boxes[:, idx, [0, 1, 2]]                       # (N, 8, 3)
+    uv, z = cam.project(corners.reshape(-1, 3))
+    uv, z = uv.reshape(n, 8, 2), z.reshape(n, 8)
+    behind = (z <= cam.near).any(axis=1)
+    lo = np.clip(np.nan_to_num(uv.min(axis=1)), 0, [cam.width, cam.height])
+    hi = np.clip(np.nan_to_num(uv.max(axis=1)), 0, [cam.width, cam.height])
+    share = np.prod(np.maximum(hi - lo, 0), axis=1) / float(cam.width * cam.height)
+    share = np.where(behind, 1.0, share)
+    cuv, cz = cam.project(boxes.mean(axis=1))
+    inside = (cz > cam.near) & (cuv[:, 0] >= 0) & (cuv[:, 0] < cam.width) \
+        & (cuv[:, 1] >= 0) & (cuv[:, 1] < cam.height)
+    return share, inside
+
+
+#: Stage tag of the view-sampling generator (``"REND"``): ``default_rng([seed, VIEW_STAGE])``.
+VIEW_STAGE = 0x52454E44
+
+
+def view_rng(seed: int) -> np.random.Generator:
+    """The generator ``parse3d render --seed S`` and dataset builds sample views with."""
+    return np.random.default_rng([int(seed), VIEW_STAGE])
+
+
+def overview_candidates(scene: Scene, *, width: int = 640, height: int = 480,
+                        fov_deg: float = 75.0, eye_height: float = 1.6,
+                        settled: bool | None = None) -> list[Camera]:
+    """Overview viewpoints, best first by what their frames are expected to show.
+
+    Candidates stand 0.35, 0.9 or 1.5 m from each footprint corner towards the centroid, at
+    ``eye_height`` (capped 0.15 m below the ceiling), and look at the centroid at 0.5 m
+    height. They are ordered by projecting every object's bounding box: first those where no
+    object covers more than :data:`MAX_OBJECT_SHARE` of the frame (a near object hides the
+    room), then by the objects whose centre falls in the frame, then by the clearance to the
+    nearest object (beyond 1.5 m all equal), then by the distance to the centroid (ties:
+    corner order, then the nearest inset). ``meta["share"]`` and ``meta["in_frame"]`` hold
+    the estimates.
     """
     fp = scene.room.footprint
     poly = Polygon(fp)
     c = np.asarray(poly.centroid.coords[0])
-    z = min(eye_height, scene.room.height - 0.15)
     boxes = np.array([o.world_bounds(settled) for o in scene.placed
                       if o.asset is not None]).reshape(-1, 2, 3)
-    best, best_key = None, None
-    for corner in fp:
+    K = intrinsics_from_fov(width, height, fov_deg)
+    far = _scene_far(scene)
+    target = [c[0], c[1], 0.5]
+    z = min(eye_height, scene.room.height - 0.15)
+    scored = []
+    for i, corner in enumerate(fp):
         inward = c - corner
         dist = float(np.linalg.norm(inward))
         if dist < 1e-9:
             continue
-        xy = corner + 0.35 * inward / dist
-        if not poly.contains(_point(xy)):
-            continue
-        eye = np.array([xy[0], xy[1], z])
-        clear = float(_box_distance(eye, boxes).min()) if len(boxes) else np.inf
-        key = (round(min(clear, 1.5), 3), round(dist, 6))
-        if best_key is None or key > best_key:
-            best, best_key = eye, key
-    if best is None:
-        best = np.array([c[0], c[1], z]) + [0.01, 0.01, 0.0]
-    R, t = look_at(best, [c[0], c[1], 0.5])
-    K = intrinsics_from_fov(width, height, fov_deg)
-    return Camera(K, R, t, width, height, 0.05, _scene_far(scene), "perspective",
-                  {"preset": "overview"})
+        for j, inset in enumerate(_INSETS):
+            if j and inset >= 0.8 * dist:
+                continue
+            xy = corner + inset * inward / dist
+            if not poly.contains(_point(xy)):
+                continue
+            eye = np.array([xy[0], xy[1], z])
+            R, t = look_at(eye, target)
+            share, inside = _frame_shares(Camera(K, R, t, width, height, 0.05, far), boxes)
+            top = float(share.max()) if len(share) else 0.0
+            clear = float(_box_distance(eye, boxes).min()) if len(boxes) else np.inf
+            ok = top <= MAX_OBJECT_SHARE
+            key = (ok, int(inside.sum()) if ok else -round(top, 3),
+                   round(min(clear, 1.5), 3), round(float(np.linalg.norm(c - xy)), 6),
+                   -i, -j)
+            cam = Camera(K, R, t, width, height, 0.05, far, "perspective",
+                         {"preset": "overview", "share": round(top, 4),
+                          "in_frame": int(inside.sum())})
+            scored.append((key, cam))
+    if not scored:
+        eye = np.array([c[0], c[1], z]) + [0.01, 0.01, 0.0]
+        R, t = look_at(eye, target)
+        return [Camera(K, R, t, width, height, 0.05, far, "perspective",
+                       {"preset": "overview"})]
+    scored.sort(key=lambda kc: kc[0], reverse=True)
+    return [cam for _, cam in scored]
+
+
+def overview_camera(scene: Scene, *, width: int = 640, height: int = 480,
+                    fov_deg: float = 75.0, eye_height: float = 1.6,
+                    settled: bool | None = None) -> Camera:
+    """The best of :func:`overview_candidates` (chosen without rendering).
+
+    :func:`parse3d.render.preview_camera` refines the choice by rendering the candidates.
+    """
+    return overview_candidates(scene, width=width, height=height, fov_deg=fov_deg,
+                               eye_height=eye_height, settled=settled)[0]
 
 
 def plan_camera(scene: Scene, *, width: int = 640, height: int = 480,

@@ -23,11 +23,11 @@ from PIL import Image
 
 from ..errors import InputError
 from ..scene.model import Scene
-from .camera import Camera, overview_camera
+from .camera import MAX_OBJECT_SHARE, Camera, overview_candidates
 from .renderer import Renderer, default_renderer, scene_id_tables
 from .result import RenderResult, view_record
 
-__all__ = ["VIEWS_FORMAT", "write_views", "save_preview", "save_png16", "load_views_schema"]
+__all__ = ["VIEWS_FORMAT", "write_views", "save_preview", "preview_camera", "save_png16", "load_views_schema"]
 
 VIEWS_FORMAT = "parse3d-views/1"
 
@@ -104,13 +104,49 @@ def write_views(scene: Scene, cameras: list[Camera], out_dir: str | Path, *,
     return doc
 
 
+#: Size of the masks the preview viewpoint is chosen on, pixels.
+_PROBE = (96, 72)
+#: Candidate viewpoints the preview renders at most.
+_PROBES = 16
+
+
+def preview_camera(scene: Scene, *, width: int = 640, height: int = 480,
+                   settled: bool | None = None, renderer: Renderer | None = None) -> Camera:
+    """The overview viewpoint chosen by what it sees.
+
+    The best :func:`~parse3d.render.camera.overview_candidates` are rendered as small
+    instance masks (no colour); the preview is the candidate where no object covers more
+    than :data:`~parse3d.render.camera.MAX_OBJECT_SHARE` of the frame and the most objects
+    are visible (ties: the candidates' own order). When every candidate has an object above
+    the share, the one with the smallest largest share is used.
+    """
+    r = renderer if renderer is not None else default_renderer()
+    cands = overview_candidates(scene, width=width, height=height, settled=settled)
+    ids = {o.id for o in scene.placed}
+    best, best_key = cands[0], None
+    for k, cam in enumerate(cands[:_PROBES]):
+        res = r.render(scene, cam.resized(*_PROBE), settled=settled, color=False,
+                       shadows=False)
+        vals, counts = np.unique(res.instance, return_counts=True)
+        share = {res.instances.get(int(v)): n / res.instance.size
+                 for v, n in zip(vals, counts, strict=True) if v > 0}
+        objs = [s for name, s in share.items() if name in ids]
+        top = max(objs, default=0.0)
+        ok = top <= MAX_OBJECT_SHARE
+        key = (ok, len(objs) if ok else -top, -k)
+        if best_key is None or key > best_key:
+            best, best_key = cam, key
+    return best
+
+
 def save_preview(scene: Scene, path: str | Path, *, width: int = 640, height: int = 480,
                  settled: bool | None = None, renderer: Renderer | None = None) -> Path:
-    """Render the overview view (:func:`overview_camera`) of ``scene`` to a PNG at ``path``."""
+    """Render the overview view (:func:`preview_camera`) of ``scene`` to a PNG at ``path``."""
     if width < 1 or height < 1:
         raise InputError(f"preview size must be positive, got {width}x{height}")
     r = renderer if renderer is not None else default_renderer()
-    res = r.render(scene, overview_camera(scene, width=width, height=height), settled=settled)
+    res = r.render(scene, preview_camera(scene, width=width, height=height, settled=settled,
+                                         renderer=r), settled=settled)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     Image.fromarray(res.rgb).save(path)

@@ -12,13 +12,12 @@ Writes are atomic: files go to a temporary name in the folder and are renamed in
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .._files import atomic_write_bytes, atomic_write_text, read_input_text
 from ..errors import InputError, Problem
 from ..geometry.frames import matrix_to_quat, quat_to_matrix
 from ..pag.model import PAG
@@ -26,7 +25,7 @@ from .model import Contact, PlacedObject, RelationCheck, Scene
 from .shell import build_shell
 
 __all__ = ["SCENE_FORMAT", "scene_to_dict", "write_scene", "read_scene", "scene_schema",
-           "atomic_write_text", "atomic_write_bytes"]
+           "atomic_write_text", "atomic_write_bytes", "clear_scene_outputs", "OUTPUT_PATTERNS"]
 
 SCENE_FORMAT = "parse3d-scene/1"
 
@@ -101,22 +100,16 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
     }
 
 
-def atomic_write_bytes(path: Path, data: bytes) -> None:
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-
-
-def atomic_write_text(path: Path, text: str) -> None:
-    atomic_write_bytes(path, text.encode("utf-8"))
+def _finite(v: Any) -> Any:
+    """``v`` with every non-finite float replaced by None: JSON has no NaN, and a bare ``NaN``
+    would make the file unreadable (reading then reports the pointer of the null)."""
+    if isinstance(v, float):
+        return v if np.isfinite(v) else None
+    if isinstance(v, dict):
+        return {k: _finite(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple)):
+        return [_finite(x) for x in v]
+    return v
 
 
 def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
@@ -125,13 +118,60 @@ def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
 
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    atomic_write_text(out / "scene.json", json.dumps(scene_to_dict(scene), indent=1) + "\n")
+    atomic_write_text(out / "scene.json",
+                      json.dumps(_finite(scene_to_dict(scene)), indent=1, allow_nan=False) + "\n")
     if scene.contacts is not None:
         atomic_write_text(out / "contacts.json",
                           json.dumps([c.to_dict() for c in scene.contacts], indent=1) + "\n")
     if glb:
         atomic_write_bytes(out / "scene.glb", export_glb(scene))
     return out
+
+
+#: Files a solve, settle or render writes into a scene folder (``*`` is a view index).
+OUTPUT_PATTERNS = ("scene.json", "scene.glb", "contacts.json", "preview.png", "views.json",
+                   "rgb_*.png", "depth_*.png", "instance_*.png", "part_*.png")
+
+
+def clear_scene_outputs(out_dir: str | Path) -> list[Path]:
+    """Remove the outputs of an earlier solve from ``out_dir`` (and nothing else).
+
+    A solve owns its folder's outputs: without this, a new ``scene.json`` would sit beside the
+    previous seed's ``contacts.json``, preview and views. Only a folder holding a parse3d
+    ``scene.json`` is cleared, and only regular files whose names match
+    :data:`OUTPUT_PATTERNS` are removed; any other file is left alone.
+
+    Returns
+    -------
+    list of Path
+        The files removed.
+
+    Raises
+    ------
+    InputError
+        The folder holds a ``scene.json`` that parse3d did not write (nothing is removed).
+    """
+    import re
+
+    out = Path(out_dir)
+    sj = out / "scene.json"
+    if not out.is_dir() or not sj.exists():
+        return []
+    try:
+        fmt = json.loads(read_input_text(sj, what="scene file")).get("format", "")
+    except (InputError, ValueError, AttributeError):
+        fmt = ""
+    if not (isinstance(fmt, str) and fmt.startswith("parse3d-scene/")):
+        raise InputError(Problem("", "this folder holds a scene.json that is not a parse3d "
+                                     "scene: choose another --out folder (nothing was changed)",
+                                 str(sj), "io"))
+    rx = re.compile("|".join(re.escape(p).replace(r"\*", r"\d+") for p in OUTPUT_PATTERNS))
+    gone = []
+    for f in sorted(out.iterdir()):
+        if rx.fullmatch(f.name) and f.is_file() and not f.is_symlink():
+            f.unlink()
+            gone.append(f)
+    return gone
 
 
 def scene_schema() -> dict[str, Any]:
@@ -150,20 +190,29 @@ def _load_asset(ref: dict[str, Any]):
     return default_pool().load(ref["category"], int(ref["seed"]))
 
 
+def _support_ref(support: Any) -> str | None:
+    """The supporting reference of an object record: a string, or an object naming it under
+    ``ref`` or ``parent`` (newer scene files)."""
+    if isinstance(support, dict):
+        support = support.get("ref") or support.get("parent")
+    return support if isinstance(support, str) else None
+
+
 def read_scene(path: str | Path) -> Scene:
     """Rebuild a Scene from a folder (or a ``scene.json`` path) written by :func:`write_scene`."""
+    from ..assets.registry import categories
+    from ..pag.io import loads_document
+    from .validate import contacts_problems, scene_problems
+
     p = Path(path)
     f = p / "scene.json" if p.is_dir() else p
     if not f.exists():
         raise InputError(Problem("", f"no scene.json here — solve a PAG first "
                                      f"(parse3d solve PAG --out {p})", str(f), "io"))
-    try:
-        d = json.loads(f.read_text())
-    except json.JSONDecodeError as e:
-        raise InputError(Problem("", f"not valid JSON: {e}", str(f), "syntax")) from None
-    if d.get("format") != SCENE_FORMAT:
-        raise InputError(Problem("/format", f"expected format {SCENE_FORMAT!r}, got "
-                                            f"{d.get('format')!r}", str(f), "schema"))
+    d = loads_document(read_input_text(f, what="scene file"), kind="json", file=str(f))
+    problems = scene_problems(d, file=str(f), categories=set(categories()))
+    if problems:
+        raise InputError(problems)
     pag = PAG.from_dict(d["pag"])
     shell = build_shell(pag.room, wall_thickness=float(d["room"].get("wall_thickness", 0.12)))
     scene = Scene(pag, int(d["seed"]), shell, timings=dict(d.get("timings", {})),
@@ -177,7 +226,7 @@ def read_scene(path: str | Path) -> Scene:
         pose = od["pose"]
         o = PlacedObject(od["id"], od["category"], asset, float(od["scale"]),
                          quat_to_matrix(pose["quaternion"]), np.array(pose["position"], float),
-                         "placed", None, int(od.get("trials", 0)), od.get("support"),
+                         "placed", None, int(od.get("trials", 0)), _support_ref(od.get("support")),
                          bool(od.get("fixed", False)))
         if "settled_pose" in od:
             o.settled_rotation = quat_to_matrix(od["settled_pose"]["quaternion"])
@@ -191,7 +240,13 @@ def read_scene(path: str | Path) -> Scene:
                                              r.get("holds_settled"), r.get("residual_settled"),
                                              r.get("detail", "")))
     cf = f.parent / "contacts.json"
-    if cf.exists():
+    n_contacts = (d.get("summary") or {}).get("contacts")
+    if cf.exists() and n_contacts is not None:  # None: the contacts.json is not this scene's
+        cd = loads_document(read_input_text(cf, what="contacts file"), kind="json",
+                            file=str(cf))
+        problems = contacts_problems(cd, file=str(cf))
+        if problems:
+            raise InputError(problems)
         scene.contacts = [Contact(c["a"], c["b"], int(c["samples"]), float(c["min_distance"]))
-                          for c in json.loads(cf.read_text())]
+                          for c in cd]
     return scene

@@ -239,3 +239,10 @@ class Scene:
     @property
     def ok(self) -> bool:
         return not self.failed
+
+    def __repr__(self) -> str:
+        # the dataclass repr would print every mesh of every asset (hundreds of kB)
+        n_c = "not extracted" if self.contacts is None else len(self.contacts)
+        return (f"Scene({self.pag.name!r}, room={self.pag.room.type!r}, seed={self.seed}, "
+                f"objects={len(self.objects)} ({len(self.placed)} placed), "
+                f"relations={len(self.relations)}, contacts={n_c}, settled={self.settled})")

@@ -15,6 +15,7 @@ assets are all loaded.
 from __future__ import annotations
 
 import json
+import math
 import os
 import re
 import warnings
@@ -32,6 +33,35 @@ __all__ = ["CATEGORY_FORMAT", "register_library", "add_assets", "find_sources"]
 
 CATEGORY_FORMAT = "parse3d-category/1"
 _NAME = re.compile(r"^[a-z][a-z0-9_]*$")
+_FILE = re.compile(r"^[A-Za-z0-9_][A-Za-z0-9_.-]{0,120}\.npz$")
+
+#: Node names that exporters invent; as part labels they say nothing about the part.
+PLACEHOLDER_LABELS = frozenset({
+    "gltf", "glb", "geometry", "mesh", "meshes", "node", "nodes", "object", "objects", "scene",
+    "root", "group", "primitive", "default", "untitled", "model", "component", "shape", "obj",
+    "polysurface", "cube", "plane", "cylinder", "sphere", "empty", "unnamed", "none", "null",
+})
+#: Sizes (largest extent, metres) an added asset or a ``--size-range`` may have.
+MIN_ASSET_SIZE, MAX_ASSET_SIZE = 0.005, 30.0
+
+
+def label_problems(raws, file_of) -> list[Problem]:
+    """A problem for every part label that is not an identifier or is a placeholder name
+    (``gltf``, ``geometry``, ``mesh``, ``node_0``, ...): map such parts with ``--mapping``."""
+    probs = []
+    for s, raw in raws:
+        for lab in sorted(raw.labels):
+            base = re.sub(r"(_?\d+)+$", "", lab)
+            if not _NAME.match(lab):
+                probs.append(Problem(f"/{lab}", f"part label {lab!r} is not an identifier "
+                                     "(lower case letters, digits, '_'): name the part with "
+                                     "--mapping", file_of(s), "vocabulary"))
+            elif lab in PLACEHOLDER_LABELS or base in PLACEHOLDER_LABELS:
+                probs.append(Problem(f"/{lab}", f"part label {lab!r} is an exporter's "
+                                     "placeholder, not a part name: map the node to a real part "
+                                     "label with --mapping (e.g. {\"" + lab + "\": \"seat\"})",
+                                     file_of(s), "vocabulary"))
+    return probs
 
 
 def _read_category_json(path: Path) -> dict:
@@ -65,34 +95,59 @@ def register_library(root: str | os.PathLike) -> list[str]:
         if not cj.is_file():
             continue
         try:
-            data = _read_category_json(cj)
-        except (ValueError, OSError) as e:
-            warnings.warn(f"{cj}: skipped ({e})", stacklevel=2)
+            cat = _category_of(sub, cj, procedural)
+        except (ValueError, TypeError, KeyError, OSError, InputError) as e:
+            msg = str(e).splitlines()[0] if str(e) else type(e).__name__
+            warnings.warn(f"{cj}: skipped ({msg})", stacklevel=2)
             continue
-        paths = []
-        for a in data["assets"]:
-            p = sub / a
-            if p.is_file():
-                paths.append(str(p))
-            else:
-                warnings.warn(f"{cj}: asset file {a!r} is missing; skipped", stacklevel=2)
-        name = data["name"]
-        base = procedural.get(name)
-        if base is not None:
-            cat = Category(base.name, base.parts, base.vocabulary, base.size_range, base.density,
-                           base.variants, base.placement, base.generator, "procedural+" + str(sub),
-                           tuple(paths))
-        else:
-            if not paths:
-                continue
-            parts = tuple(data["parts"])
-            cat = Category(name, parts, tuple(data.get("vocabulary", parts)),
-                           tuple(float(x) for x in data["size_range"]),
-                           float(data.get("density", 500.0)), ("loaded",),
-                           data.get("placement", "floor"), None, str(sub), tuple(paths))
+        if cat is None:
+            continue
         registry.register_loaded(cat)
-        done.append(name)
+        done.append(cat.name)
     return done
+
+
+def _category_of(sub: Path, cj: Path, procedural: dict) -> Category | None:
+    """The category a library folder declares (None: nothing to register); raises on any
+    damage so that :func:`register_library` can skip the folder with a warning."""
+    data = _read_category_json(cj)
+    name = data["name"]
+    if not isinstance(name, str) or not _NAME.match(name):
+        raise ValueError(f"name {name!r} is not a lower-case identifier")
+    if not isinstance(data["assets"], list):
+        raise ValueError("assets must be a list of file names")
+    paths = []
+    for a in data["assets"]:
+        if not (isinstance(a, str) and _FILE.match(a)):
+            raise ValueError(f"asset {a!r} is not a .npz file name in the folder")
+        p = sub / a
+        if p.is_file():
+            paths.append(str(p))
+        else:
+            warnings.warn(f"{cj}: asset file {a!r} is missing; skipped", stacklevel=3)
+    base = procedural.get(name)
+    if base is not None:
+        return Category(base.name, base.parts, base.vocabulary, base.size_range, base.density,
+                        base.variants, base.placement, base.generator, "procedural+" + str(sub),
+                        tuple(paths))
+    if not paths:
+        return None
+    parts = tuple(data["parts"])
+    vocab = tuple(data.get("vocabulary", parts))
+    if not all(isinstance(x, str) and _NAME.match(x) for x in parts + vocab):
+        raise ValueError("parts and vocabulary must be lists of lower-case identifiers")
+    lo, hi = (float(x) for x in data["size_range"])
+    if not (MIN_ASSET_SIZE <= lo <= hi <= MAX_ASSET_SIZE):
+        raise ValueError(f"size_range {[lo, hi]} is outside [{MIN_ASSET_SIZE}, "
+                         f"{MAX_ASSET_SIZE}] m")
+    density = float(data.get("density", 500.0))
+    if not 1.0 <= density <= 30000.0:
+        raise ValueError(f"density {density} is outside 1..30000 kg/m^3")
+    placement = data.get("placement", "floor")
+    if placement not in PLACEMENTS:
+        raise ValueError(f"placement {placement!r} is not one of {', '.join(PLACEMENTS)}")
+    return Category(name, parts, vocab, (lo, hi), density, ("loaded",), placement, None,
+                    str(sub), tuple(paths))
 
 
 def find_sources(src: Path) -> list[Path]:
@@ -161,9 +216,14 @@ def add_assets(src: str | os.PathLike, *, category: str, mapping=None,
     if not _NAME.match(category):
         raise InputError(Problem("", f"category name {category!r} must be lower case letters, digits "
                                  "and '_', starting with a letter", None, "parameter"))
-    if size_range is not None and not (0 < size_range[0] <= size_range[1]):
-        raise InputError(Problem("", f"size range {list(size_range)} must be 0 < low <= high", None,
-                                 "parameter"))
+    if size_range is not None and not (
+            MIN_ASSET_SIZE <= size_range[0] <= size_range[1] <= MAX_ASSET_SIZE):
+        raise InputError(Problem("", f"size range {list(size_range)} must satisfy "
+                                 f"{MIN_ASSET_SIZE} <= low <= high <= {MAX_ASSET_SIZE} (metres)",
+                                 "--size-range", "parameter"))
+    if density is not None and not (math.isfinite(density) and 1.0 <= density <= 30000.0):
+        raise InputError(Problem("", f"density {density} must be in 1..30000 kg/m^3",
+                                 "--density", "parameter"))
     if placement is not None and placement not in PLACEMENTS:
         raise InputError(Problem("", f"placement {placement!r} is not one of {', '.join(PLACEMENTS)}",
                                  None, "parameter"))
@@ -199,6 +259,14 @@ def add_assets(src: str | os.PathLike, *, category: str, mapping=None,
         else:
             raws.append((s, read_glb(s, mapping=mapping_d, vocabulary=vocab,
                                      **({"frame": frame} if frame else {}))))
+    probs = label_problems(raws, str)
+    if size_range is None and old is None:
+        probs += [Problem("", f"the asset is {r.size:g} m across: give --size-range (metres) "
+                          f"to scale it, or fix its units (sizes {MIN_ASSET_SIZE}..{MAX_ASSET_SIZE}"
+                          " m)", str(s), "parameter")
+                  for s, r in raws if not (MIN_ASSET_SIZE <= r.size <= MAX_ASSET_SIZE)]
+    if probs:
+        raise InputError(probs)
     if procedural:
         missing = [(s, sorted(set(existing.parts) - r.labels)) for s, r in raws
                    if set(existing.parts) - r.labels]
