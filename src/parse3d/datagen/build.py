@@ -457,11 +457,13 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         tmp = Path(tempfile.mkdtemp(prefix="parse3d-scene-"))
         _render(scene, tmp, config, plan, renderer)
         stage.enter("write")
+        from ..export import export_scene
         from ..scene.io import write_scene
 
         scene.timings.update({k: round(stage.times.get(k, 0.0), 6)
                               for k in ("expand", "render")})
         write_scene(scene, tmp)
+        export_scene(scene, tmp, ["glb"])
         files = {p.name: p.read_bytes() for p in sorted(tmp.iterdir()) if p.is_file()}
         stage.enter("done")
         record["status"] = "ok"
