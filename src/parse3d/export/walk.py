@@ -66,10 +66,10 @@ class _HullCache:
     """Convex pieces per asset part, computed once per walk (objects share assets)."""
 
     def __init__(self) -> None:
-        self._by_part: dict[int, tuple[list[np.ndarray], float]] = {}
+        self._by_part: dict[int, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = {}
         self._keep: list[Part] = []  # keeps ids valid while the cache lives
 
-    def get(self, part: Part) -> tuple[list[np.ndarray], float]:
+    def get(self, part: Part) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
         hit = self._by_part.get(id(part))
         if hit is None:
             hit = self._by_part[id(part)] = convex_pieces(part.pieces)
@@ -112,9 +112,10 @@ class PartRecord:
     _hulls: _HullCache = field(repr=False, default=None)
 
     @property
-    def pieces(self) -> list[np.ndarray]:
-        """Vertices of the convex collision pieces, asset frame, unscaled (flat pieces
-        dropped); computed on first use and shared by parts of the same asset."""
+    def pieces(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Convex collision pieces as hull ``(vertices (V, 3), triangles (F, 3))``, asset
+        frame, unscaled (flat pieces dropped); computed on first use and shared by the parts
+        of objects that share an asset."""
         return self._hulls.get(self.source)[0]
 
     @property
@@ -251,15 +252,16 @@ class ShellRecord:
     mesh : trimesh.Trimesh
         World-frame slab.
     material : Material
-    pieces : list of (V, 3) float
-        Convex pieces, world frame (the floor and ceiling of a non-convex room are split).
+    pieces : list of ((V, 3) float, (F, 3) int)
+        Convex pieces as hulls, world frame (the floor and ceiling of a non-convex room are
+        split into convex prisms).
     """
 
     name: str
     key: str
     mesh: trimesh.Trimesh
     material: Material
-    pieces: list[np.ndarray]
+    pieces: list[tuple[np.ndarray, np.ndarray]]
 
 
 @dataclass
@@ -294,8 +296,8 @@ class SceneRecord:
         return out
 
 
-def convex_pieces(meshes) -> tuple[list[np.ndarray], float]:
-    """Hull vertices of each convex piece and their total volume; flat pieces are dropped.
+def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
+    """The convex hull of each collision piece and their total volume; flat pieces dropped.
 
     Parameters
     ----------
@@ -303,8 +305,8 @@ def convex_pieces(meshes) -> tuple[list[np.ndarray], float]:
 
     Returns
     -------
-    pieces : list of (V_i, 3) float
-        The hull vertices of every piece with volume.
+    hulls : list of ((V_i, 3) float, (F_i, 3) int)
+        Hull vertices and outward-wound triangles of every piece with volume.
     volume : float
         m^3.
     """
@@ -319,7 +321,17 @@ def convex_pieces(meshes) -> tuple[list[np.ndarray], float]:
             continue
         if h.volume <= 1e-12:
             continue
-        out.append(pts[np.sort(h.vertices)])
+        used = np.unique(h.simplices)
+        remap = np.full(len(pts), -1)
+        remap[used] = np.arange(len(used))
+        faces = remap[h.simplices]
+        v = pts[used]
+        tri = v[faces]
+        # qhull does not wind its simplices consistently: turn each one outward
+        normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+        flip = np.einsum("ij,ij->i", normal, h.equations[:, :3]) < 0
+        faces[flip] = faces[flip][:, ::-1]
+        out.append((v, faces))
         vol += float(h.volume)
     return out, vol
 
@@ -404,7 +416,8 @@ def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
                         [r[0] for r in mine])
 
 
-def _shell_pieces(scene: Scene, name: str, mesh: trimesh.Trimesh) -> list[np.ndarray]:
+def _shell_pieces(scene: Scene, name: str,
+                  mesh: trimesh.Trimesh) -> list[tuple[np.ndarray, np.ndarray]]:
     if name not in ("floor", "ceiling"):
         return convex_pieces([mesh])[0]
     from shapely.geometry import Polygon
