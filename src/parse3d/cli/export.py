@@ -56,11 +56,13 @@ def register(app: typer.Typer) -> None:
         Example: parse3d export out/study-0 --format usd,mjcf --no-ceiling
         """
         from ..export import ExportOptions, check_formats, export_scene
+        from ..physics.mujoco import settling_friction
         from ..scene.io import read_scene
 
         formats = check_formats(fmt, where="--format")
         dirs = _scene_dirs(scene_dir)
-        opts = ExportOptions(settled=settled, ceiling=not no_ceiling, open_ratio=open_ratio)
+        opts = ExportOptions(settled=settled, ceiling=not no_ceiling, open_ratio=open_ratio,
+                             friction=settling_friction())
         rows = []
         for d in dirs:
             scene = read_scene(d)

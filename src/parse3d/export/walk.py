@@ -16,6 +16,7 @@ World frame: +Z up, metres. An object's ``transform`` maps asset-frame points ``
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -55,11 +56,17 @@ class ExportOptions:
     open_ratio : float or None
         Set every joint to this fraction (0 closed .. 1 fully open) of its travel, instead of
         the joint values stored with the scene.
+    friction : mapping of str to float, or None
+        Static friction coefficient per material family (``Material.name``), plus ``room``
+        for the shell, written into the simulator formats; families not listed use
+        ``plastic``. None leaves each simulator's default. The command line passes the table
+        settling uses (``parse3d.physics.bodies.MATERIALS``).
     """
 
     settled: bool | None = None
     ceiling: bool = True
     open_ratio: float | None = None
+    friction: Mapping[str, float] | None = None
 
 
 class _HullCache:
@@ -280,6 +287,8 @@ class SceneRecord:
         Floor, walls, then the ceiling (when included).
     meta : dict
         Scene-level facts for the files' metadata (name, seed, room type, pose used).
+    friction_table : mapping of str to float, or None
+        As :attr:`ExportOptions.friction`.
     """
 
     name: str
@@ -287,6 +296,14 @@ class SceneRecord:
     objects: list[ObjectRecord]
     shell: list[ShellRecord]
     meta: dict[str, Any]
+    friction_table: Mapping[str, float] | None = None
+
+    def friction(self, family: str) -> float | None:
+        """Static friction of a material family (``room`` for the shell), or None."""
+        t = self.friction_table
+        if t is None:
+            return None
+        return float(t.get(family, t.get("plastic", 0.5)))
 
     def assets(self) -> dict[str, Asset]:
         """Distinct assets by asset id, in first-use order."""
@@ -469,4 +486,5 @@ def walk_scene(scene: Scene, options: ExportOptions = ExportOptions()) -> SceneR
                                  _shell_pieces(scene, n, el.mesh)))
     meta = {"name": scene.pag.name, "seed": int(scene.seed), "room": scene.pag.room.type,
             "pose": "settled" if settled else "solved", "generator": "parse3d"}
-    return SceneRecord(scene.pag.name, settled, objects, shell, meta)
+    return SceneRecord(scene.pag.name, settled, objects, shell, meta,
+                       None if options.friction is None else dict(options.friction))
