@@ -19,7 +19,6 @@ import importlib
 from collections.abc import Iterable
 from pathlib import Path
 from types import ModuleType
-from typing import Any
 
 from ..errors import InputError, Problem
 from ..scene.model import Scene
@@ -103,15 +102,18 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
     return written
 
 
-def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), **kwargs: Any):
-    """A live SAPIEN scene of ``scene`` (see :func:`parse3d.export.sapien.to_sapien`)."""
+def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,
+              timestep: float = 0.01, render: bool | None = None):
+    """A live SAPIEN scene of ``scene``: see :func:`parse3d.export.sapien.to_sapien`."""
     from .sapien import to_sapien as _to_sapien
 
-    return _to_sapien(scene, options, **kwargs)
+    return _to_sapien(scene, options, timestep=timestep, render=render)
 
 
-def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), **kwargs: Any):
-    """A compiled ``(MjModel, MjData)`` of ``scene`` (see :func:`parse3d.export.mjcf.to_mujoco`)."""
+def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,
+              timestep: float = 0.002, visual: bool = True, lock_joints: bool = True):
+    """A compiled ``(MjModel, MjData)`` of ``scene``: see :func:`parse3d.export.mjcf.to_mujoco`."""
     from .mjcf import to_mujoco as _to_mujoco
 
-    return _to_mujoco(scene, options, **kwargs)
+    return _to_mujoco(scene, options, timestep=timestep, visual=visual,
+                      lock_joints=lock_joints)

@@ -21,7 +21,6 @@ Meshes are inline in the spec for :func:`to_mujoco`; :func:`write` puts them as 
 
 from __future__ import annotations
 
-import re
 from pathlib import Path
 
 import numpy as np
@@ -30,9 +29,10 @@ from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
 from ..scene.model import Scene
+from ._files import MeshFiles, safe_name
 from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
 
-__all__ = ["NAME", "FILES", "build_spec", "write", "to_mujoco", "obj_text"]
+__all__ = ["NAME", "FILES", "build_spec", "write", "to_mujoco"]
 
 NAME = "mjcf"
 FILES = ("scene.xml", "meshes/")
@@ -48,26 +48,13 @@ def _mujoco():
     return mujoco
 
 
-def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
-    """A Wavefront OBJ document of one triangle mesh (vertices in metres)."""
-    v = np.asarray(vertices, float)
-    f = np.asarray(faces, int) + 1
-    return ("".join(f"v {a:.7g} {b:.7g} {c:.7g}\n" for a, b, c in v)
-            + "".join(f"f {a} {b} {c}\n" for a, b, c in f))
-
-
-def _safe(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]", "_", name)
-
-
 class _Meshes:
-    """Mesh assets of a spec: inline, or files under ``meshes/`` (each written once)."""
+    """Mesh assets of a spec: inline, or OBJ files under ``meshes/`` (each written once)."""
 
     def __init__(self, spec, out: Path | None) -> None:
         self.spec = spec
-        self.out = out
+        self.files = None if out is None else MeshFiles(out)
         self.names: set[str] = set()
-        self.files: dict[str, Path] = {}
 
     def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0) -> str:
         key = name if abs(scale - 1.0) < 1e-12 else f"{name}@{scale:.9g}"
@@ -75,17 +62,11 @@ class _Meshes:
             return key
         m = self.spec.add_mesh()
         m.name = key
-        if self.out is None:
+        if self.files is None:
             m.uservert = np.asarray(vertices, float).ravel().tolist()
             m.userface = np.asarray(faces, int).ravel().tolist()
         else:
-            rel = f"meshes/{_safe(file_stem)}.obj"
-            if rel not in self.files:
-                path = self.out / rel
-                path.parent.mkdir(parents=True, exist_ok=True)
-                path.write_text(obj_text(vertices, faces))
-                self.files[rel] = path
-            m.file = rel
+            m.file = self.files.get(file_stem, vertices, faces)
         m.scale = [scale] * 3
         self.names.add(key)
         return key
@@ -158,14 +139,18 @@ def _add_object(spec, meshes: _Meshes, rec: SceneRecord, o: ObjectRecord, *,
             jt.range = [lo * k, hi * k]
             jt.limited = mujoco.mjtLimited.mjLIMITED_TRUE
             jt.ref = j.value * k
-            jt.damping = 0.1
+            jt.damping = [0.1, 0.0, 0.0]
             if lock_joints:
                 eq = spec.add_equality()
                 eq.name = f"{o.id}:{j.name}:lock"
                 eq.type = mujoco.mjtEq.mjEQ_JOINT
                 eq.objtype = mujoco.mjtObj.mjOBJ_JOINT
                 eq.name1 = jt.name
-                eq.data[:5] = [j.value * k, 0, 0, 0, 0]
+                data = np.array(eq.data, float)
+                # MuJoCo measures joint equalities from the reference configuration (``ref``,
+                # the exported value): a zero polynomial holds the joint there
+                data[:5] = 0.0
+                eq.data = data
         bodies[lk.name] = body
         for p in lk.parts:
             stem = f"{o.asset_id}__{p.name}"
@@ -201,7 +186,7 @@ def build_spec(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0
     """
     mujoco = _mujoco()
     spec = mujoco.MjSpec()
-    spec.modelname = _safe(rec.name or "parse3d")
+    spec.modelname = safe_name(rec.name or "parse3d")
     spec.compiler.degree = False
     spec.compiler.boundmass = 1e-5
     spec.compiler.boundinertia = 1e-10
