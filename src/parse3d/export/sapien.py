@@ -32,13 +32,17 @@ class SapienScene:
     ----------
     scene : sapien.Scene
     articulations : dict of str to sapien.physx.PhysxArticulation
-        Per object id (and ``room``).
+        Per object id (and ``room``) for multi-part objects.
+    actors : dict of str to sapien.Entity
+        Per object id for one-part objects (SAPIEN's loader makes a single-link URDF a plain
+        rigid body: dynamic, or static when fixed).
     rendered : bool
         Whether visual shapes were loaded (a rendering device was found).
     """
 
     scene: object
     articulations: dict[str, object] = field(default_factory=dict)
+    actors: dict[str, object] = field(default_factory=dict)
     rendered: bool = False
 
 
@@ -88,12 +92,21 @@ def load_urdf_scene(folder: str | Path, *, timestep: float = 0.01,
     for r in rows:
         loader = scene.create_urdf_loader()
         builders, actors, _ = loader.parse(str(folder / r["urdf"]))
+        pose = sapien.Pose(np.asarray(r["position"], np.float32),
+                           np.asarray(r["quaternion"], np.float32))
+        if not builders:
+            b = actors[0]
+            if not rendered:
+                b.visual_records = []
+            b.initial_pose = pose
+            b.set_physx_body_type("static" if r["fixed"] else "dynamic")
+            out.actors[r["id"]] = b.build(name=r["id"])
+            continue
         b = builders[0]
         if not rendered:
             for lb in b.link_builders:
                 lb.visual_records = []
-        b.initial_pose = sapien.Pose(np.asarray(r["position"], np.float32),
-                                     np.asarray(r["quaternion"], np.float32))
+        b.initial_pose = pose
         art = b.build(fix_root_link=bool(r["fixed"]))
         art.name = r["id"]
         if r["joints"]:
