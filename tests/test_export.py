@@ -440,3 +440,36 @@ def test_load_scene_reads_what_solve_wrote(rooms):
     back = parse3d.load_scene(d)
     assert [o.id for o in back.placed] == [o.id for o in scene.placed]
     assert back.settled
+
+
+# -- datasets -----------------------------------------------------------------------------
+
+def test_dataset_formats_are_written_and_part_of_its_identity(tmp_path, capsys):
+    from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
+    from parse3d.errors import InputError
+
+    pag = {"format": "pag/1", "name": "tiny",
+           "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]], "height": 2.6},
+           "objects": [{"id": "desk", "category": "desk"}, {"id": "mug", "category": "mug"}],
+           "relations": [{"relation": "ON", "child": "desk", "parent": "floor"},
+                         {"relation": "ON", "child": "mug", "parent": "desk:tabletop"}]}
+    (tmp_path / "pags").mkdir()
+    (tmp_path / "pags" / "tiny.json").write_text(json.dumps(pag))
+    source = resolve_pag_paths([tmp_path / "pags"])
+    cfg = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb", "mjcf"))
+    out = tmp_path / "ds"
+    report = build_dataset(cfg, out, workers=1)
+    assert report.ok == 1
+    scene = out / "scenes" / "00000"
+    assert (scene / "scene.glb").is_file() and (scene / "scene.xml").is_file()
+    assert any((scene / "meshes").glob("*.obj"))
+    assert json.loads((out / "dataset.json").read_text())["formats"] == ["glb", "mjcf"]
+    other = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb",))
+    with pytest.raises(InputError, match="formats"):
+        build_dataset(other, out, workers=1)
+    with pytest.raises(InputError, match="unknown format 'fbx'"):
+        BuildConfig(scenes=1, formats=("fbx",))
+    # a finished dataset gets more formats through parse3d export
+    assert _cli(["export", str(out), "--format", "obj"]) == 0
+    capsys.readouterr()
+    assert (scene / "scene.obj").is_file()

@@ -77,7 +77,7 @@ DATASET_FORMAT = "parse3d-dataset/1"
 
 # Settings that change what a scene index produces: a folder built with other values of these
 # cannot be resumed (workers, executor and the time limit may change between runs).
-_IDENTITY = ("seed", "rooms", "views", "view_size", "settle", "source")
+_IDENTITY = ("seed", "rooms", "views", "view_size", "settle", "source", "formats")
 
 
 # --------------------------------------------------------------------------------------------
@@ -107,6 +107,8 @@ class BuildConfig:
         files to draw from (absolute paths; their room type is read from each file).
     time_limit : float or None
         Seconds one scene may take before it is recorded as ``timeout``.
+    formats : tuple of str
+        Export formats written into every scene folder (``parse3d.export.FORMATS`` names).
     """
 
     scenes: int
@@ -117,8 +119,12 @@ class BuildConfig:
     settle: bool = True
     source: tuple[str, ...] = ()
     time_limit: float | None = 600.0
+    formats: tuple[str, ...] = ("glb",)
 
     def __post_init__(self) -> None:
+        from ..export import check_formats
+
+        object.__setattr__(self, "formats", check_formats(self.formats, where="--formats"))
         if int(self.scenes) < 0:
             raise InputError(Problem("", f"--scenes must be >= 0, got {self.scenes}",
                                      "--scenes", "parameter"))
@@ -139,7 +145,8 @@ class BuildConfig:
                 "view_size": [int(v) for v in self.view_size], "settle": bool(self.settle),
                 "source": ({"kind": "templates"} if not self.source
                            else {"kind": "pags", "paths": list(self.source)}),
-                "time_limit": None if self.time_limit is None else float(self.time_limit)}
+                "time_limit": None if self.time_limit is None else float(self.time_limit),
+                "formats": list(self.formats)}
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> BuildConfig:
@@ -149,7 +156,7 @@ class BuildConfig:
                    view_size=tuple(d.get("view_size", (640, 480))),
                    settle=bool(d.get("settle", True)),
                    source=tuple(src.get("paths", ())) if src.get("kind") == "pags" else (),
-                   time_limit=d.get("time_limit"))
+                   time_limit=d.get("time_limit"), formats=tuple(d.get("formats", ("glb",))))
 
 
 # --------------------------------------------------------------------------------------------
@@ -463,8 +470,9 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         scene.timings.update({k: round(stage.times.get(k, 0.0), 6)
                               for k in ("expand", "render")})
         write_scene(scene, tmp)
-        export_scene(scene, tmp, ["glb"])
-        files = {p.name: p.read_bytes() for p in sorted(tmp.iterdir()) if p.is_file()}
+        export_scene(scene, tmp, config.formats)
+        files = {p.relative_to(tmp).as_posix(): p.read_bytes() for p in sorted(tmp.rglob("*"))
+                 if p.is_file()}
         stage.enter("done")
         record["status"] = "ok"
         record["scene"] = scene_folder(plan.index)
@@ -660,6 +668,7 @@ def _commit(out: Path, outcome: SceneOutcome) -> None:
         t = time.perf_counter()
         tmp = Path(tempfile.mkdtemp(prefix=f".tmp-{name}-", dir=out))
         for fname, data in outcome.files.items():
+            (tmp / fname).parent.mkdir(parents=True, exist_ok=True)  # meshes/, urdf/
             (tmp / fname).write_bytes(data)
         final = out / "scenes" / name
         if final.exists():  # a stale folder of a scene being rebuilt (--retry-failed)
