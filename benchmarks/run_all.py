@@ -20,6 +20,7 @@ BENCHES = {
     "physics": [],
     "render": [],
     "dataset": ["--scenes", "12"],
+    "export": ["--repeats", "1"],
 }
 
 
