@@ -55,11 +55,12 @@ def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
         scene.contacts = extract_contacts(scene)
         scene.timings["contacts"] = time.perf_counter() - t
     if out is not None:
-        from .export import export_scene
+        from .export import ExportOptions, export_scene
+        from .physics.mujoco import settling_friction
         from .scene.io import write_scene
 
         write_scene(scene, out)
-        export_scene(scene, out, options.formats)
+        export_scene(scene, out, options.formats, ExportOptions(friction=settling_friction()))
         if options.preview:
             from .render import save_preview
 
