@@ -29,7 +29,7 @@ from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
 from ..scene.model import Scene
-from ._files import MeshFiles, safe_name
+from ._files import MeshFiles, mesh_digest, safe_name
 from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
 
 __all__ = ["NAME", "FILES", "build_spec", "write", "to_mujoco"]
@@ -55,11 +55,18 @@ class _Meshes:
         self.spec = spec
         self.files = None if out is None else MeshFiles(out)
         self.names: set[str] = set()
+        self._by_content: dict[tuple[str, float], str] = {}
 
     def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0) -> str:
+        """The name of the mesh asset (added on first request; an equal mesh at the same scale,
+        such as a box part and its one collision piece, reuses the asset)."""
         key = name if abs(scale - 1.0) < 1e-12 else f"{name}@{scale:.9g}"
         if key in self.names:
             return key
+        content = (mesh_digest(vertices, faces), round(float(scale), 9))
+        if content in self._by_content:
+            return self._by_content[content]
+        self._by_content[content] = key
         m = self.spec.add_mesh()
         m.name = key
         if self.files is None:

@@ -332,14 +332,6 @@ def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
         pts = np.asarray(getattr(m, "vertices", m), float)
         if len(pts) < 4:
             continue
-        if isinstance(m, trimesh.Trimesh) and m.is_watertight and m.is_winding_consistent:
-            # pieces are built as convex hulls already (shapes, CoACD): take them as they
-            # are, which is much cheaper than running qhull again
-            v = float(m.volume)
-            if v > 1e-12:
-                out.append((pts, np.asarray(m.faces)))
-                vol += v
-            continue
         try:
             h = ConvexHull(pts)
         except QhullError:  # a flat piece has no volume to collide
