@@ -323,7 +323,8 @@ def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
     Returns
     -------
     hulls : list of ((V_i, 3) float, (F_i, 3) int)
-        Hull vertices and outward-wound triangles of every piece with volume.
+        Vertices and triangles of every piece with volume: a mesh's own triangles, or the
+        outward-wound hull of bare points.
     volume : float
         m^3.
     """
@@ -337,6 +338,12 @@ def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
         except QhullError:  # a flat piece has no volume to collide
             continue
         if h.volume <= 1e-12:
+            continue
+        if isinstance(m, trimesh.Trimesh) and len(m.faces):
+            # a piece is convex by contract: keep its own triangles (then a box part and its
+            # one piece are the same mesh, and writers store it once)
+            out.append((pts, np.asarray(m.faces)))
+            vol += float(h.volume)
             continue
         used = np.unique(h.simplices)
         remap = np.full(len(pts), -1)
