@@ -234,6 +234,10 @@ def test_usd_stage_has_bodies_colliders_and_metadata(exported, room):
     assert "room:ceiling" in keys
     visual = stage.GetPrimAtPath(str(parts[-1].GetPath()) + "/visual")
     assert UsdShade.MaterialBindingAPI(visual).ComputeBoundMaterial()[0]
+    floor = stage.GetPrimAtPath("/World/Room/floor/collision/piece_0")
+    bound = UsdShade.MaterialBindingAPI(floor).ComputeBoundMaterial("physics")[0]
+    assert UsdPhysics.MaterialAPI(bound.GetPrim()).GetStaticFrictionAttr().Get() == \
+        pytest.approx(settling_friction()["room"])
 
 
 # -- MJCF ---------------------------------------------------------------------------------

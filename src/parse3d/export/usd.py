@@ -12,7 +12,9 @@ Stage: Z-up, ``metersPerUnit = 1``, default prim ``/World``.
   SECURED_TO and HANGING_BELOW objects are welded to the world by a ``PhysicsFixedJoint``.
 - One Xform per part under its body, holding a ``visual`` mesh (display colour and a
   ``UsdPreviewSurface`` material) and a ``collision`` scope with one guide-purpose mesh per
-  convex piece (``PhysicsCollisionAPI``, approximation ``convexHull``). Part geometry is
+  convex piece (``PhysicsCollisionAPI``, approximation ``convexHull``), bound to a physics
+  material with the part material's friction when the export has a friction table
+  (``/World/PhysicsMaterials``; static and dynamic friction alike). Part geometry is
   written once per asset under the abstract ``/Prototypes`` class and referenced by every
   object using it.
 - Custom attributes ``parse3d:objectId``, ``parse3d:category``, ``parse3d:assetId``,
@@ -82,6 +84,7 @@ class _Writer:
         self.rec = rec
         self.lock = lock_joints
         self.looks: dict[tuple, object] = {}
+        self.physics_materials: dict[float, object] = {}
         self.protos: dict[tuple[str, str], str] = {}
         self.proto_names: set[str] = set()
 
@@ -122,9 +125,24 @@ class _Writer:
             m.CreateDisplayOpacityAttr([float(mat.color[3])])
         self.UsdShade.MaterialBindingAPI.Apply(m.GetPrim()).Bind(self._look(mat))
 
-    def _colliders(self, scope: str, pieces) -> None:
+    def _physics_material(self, friction: float):
+        key = round(float(friction), 6)
+        if key not in self.physics_materials:
+            path = f"/World/PhysicsMaterials/friction_{len(self.physics_materials)}"
+            mat = self.UsdShade.Material.Define(self.stage, path)
+            api = self.UsdPhysics.MaterialAPI.Apply(mat.GetPrim())
+            api.CreateStaticFrictionAttr(key)
+            api.CreateDynamicFrictionAttr(key)
+            self.physics_materials[key] = mat
+        return self.physics_materials[key]
+
+    def _colliders(self, scope: str, pieces, friction: float | None = None) -> None:
         UsdGeom, UsdPhysics = self.UsdGeom, self.UsdPhysics
-        UsdGeom.Scope.Define(self.stage, scope)
+        sc = UsdGeom.Scope.Define(self.stage, scope)
+        if friction is not None:
+            self.UsdShade.MaterialBindingAPI.Apply(sc.GetPrim()).Bind(
+                self._physics_material(friction), self.UsdShade.Tokens.weakerThanDescendants,
+                "physics")
         for i, (v, f) in enumerate(pieces):
             m = self._mesh(f"{scope}/piece_{i}", v, f)
             m.CreatePurposeAttr(UsdGeom.Tokens.guide)
@@ -155,7 +173,8 @@ class _Writer:
             path = f"{root}/{_ident(part.name, set())}"
             self._xform(path)
             self._visual(f"{path}/visual", part.mesh.vertices, part.mesh.faces, part.material)
-            self._colliders(f"{path}/collision", part.pieces)
+            self._colliders(f"{path}/collision", part.pieces,
+                            self.rec.friction(part.material.name))
             self.protos[key] = path
         return self.protos[key]
 
@@ -169,7 +188,8 @@ class _Writer:
             self._attrs(x.GetPrim(), objectId="room", partName=s.key,
                         partLabel=s.name.split("_")[0])
             self._visual(f"{path}/visual", s.mesh.vertices, s.mesh.faces, s.material)
-            self._colliders(f"{path}/collision", s.pieces)  # colliders, no body: static
+            # colliders and no body: static
+            self._colliders(f"{path}/collision", s.pieces, self.rec.friction("room"))
 
     def obj(self, o: ObjectRecord, taken: set[str]) -> None:
         UsdPhysics, Gf = self.UsdPhysics, self.Gf
