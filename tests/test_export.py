@@ -240,6 +240,17 @@ def test_usd_stage_has_bodies_colliders_and_metadata(exported, room):
         pytest.approx(settling_friction()["room"])
 
 
+def test_usd_passes_the_usd_validators(exported, cabinets):
+    from pxr import Usd, UsdValidation
+
+    validators = UsdValidation.ValidationRegistry().GetOrLoadAllValidators()
+    assert len(validators) > 10
+    context = UsdValidation.ValidationContext(validators)
+    for path in (exported["study"][1] / "scene.usd", cabinets[1] / "scene.usd"):
+        errors = context.Validate(Usd.Stage.Open(str(path)))
+        assert [e.GetMessage() for e in errors] == []
+
+
 # -- MJCF ---------------------------------------------------------------------------------
 
 def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported):
