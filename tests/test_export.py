@@ -448,6 +448,13 @@ def test_cli_bad_input_exits_2(rooms, tmp_path, capsys):
     assert _cli(["export", str(d), "--format", "glb", "--out", str(blocker / "x")]) == 2
     assert "cannot create the output folder" in capsys.readouterr().err
     assert blocker.read_text() == "not a folder"
+    unsettled = tmp_path / "unsettled"
+    unsettled.mkdir()
+    doc = json.loads((d / "scene.json").read_text())
+    doc["settled"] = False
+    (unsettled / "scene.json").write_text(json.dumps(doc))
+    assert _cli(["export", str(unsettled), "--format", "glb", "--settled"]) == 2
+    assert "was not settled" in capsys.readouterr().err
 
 
 def test_load_scene_reads_what_solve_wrote(rooms):

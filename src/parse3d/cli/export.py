@@ -66,6 +66,10 @@ def register(app: typer.Typer) -> None:
         rows = []
         for d in dirs:
             scene = read_scene(d)
+            if settled and not scene.settled:
+                raise InputError(Problem("", "--settled: this scene was not settled — run "
+                                             f"parse3d settle {d} first, or export --solved",
+                                         str(d), "parameter"))
             target = out if out is not None else (d if d.is_dir() else d.parent)
             if out is not None and len(dirs) > 1:
                 target = out / d.name
