@@ -49,6 +49,7 @@ class MeshFiles:
         self.written: dict[str, Path] = {}
         self._by_content: dict[tuple[str, object], str] = {}
         self._any: dict[str, str] = {}
+        self._made = False
 
     def get(self, stem: str, vertices, faces, material=None) -> str:
         """The path of the mesh file relative to ``root`` (written on first request; a mesh
@@ -66,7 +67,9 @@ class MeshFiles:
         rel = f"{self.folder}/{stem}.obj"
         if rel not in self.written:
             path = self.root / rel
-            path.parent.mkdir(parents=True, exist_ok=True)
+            if not self._made:
+                path.parent.mkdir(parents=True, exist_ok=True)
+                self._made = True
             head = ""
             if material is not None:
                 mtl = path.with_suffix(".mtl")

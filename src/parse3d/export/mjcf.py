@@ -224,7 +224,7 @@ def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path
     xml = spec.to_xml()
     path = out / "scene.xml"
     atomic_write_text(path, xml)
-    return [path, *sorted({out / m.file for m in spec.meshes if m.file})]
+    return [path, *(out / f for f in sorted({m.file for m in spec.meshes if m.file}))]
 
 
 def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,

@@ -16,6 +16,8 @@ World frame: +Z up, metres. An object's ``transform`` maps asset-frame points ``
 
 from __future__ import annotations
 
+import hashlib
+from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -31,7 +33,7 @@ from ..scene.model import PlacedObject, Scene
 
 __all__ = ["ExportOptions", "PartRecord", "LinkRecord", "JointRecord", "ObjectRecord",
            "ShellRecord", "SceneRecord", "walk_scene", "SHELL_MATERIALS", "BASE_LINK",
-           "convex_pieces"]
+           "convex_pieces", "clear_cache"]
 
 #: Name of the link holding every part that no joint moves.
 BASE_LINK = "base"
@@ -69,8 +71,26 @@ class ExportOptions:
     friction: Mapping[str, float] | None = None
 
 
+_HULLS: OrderedDict[str, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = OrderedDict()
+_HULLS_SIZE = 8192
+
+
+def _piece_key(part: Part) -> str:
+    h = hashlib.blake2b(digest_size=16)
+    for pc in part.pieces:
+        h.update(np.ascontiguousarray(pc.vertices, np.float64).tobytes())
+        h.update(np.ascontiguousarray(pc.faces, np.int64).tobytes())
+    return h.hexdigest()
+
+
+def clear_cache() -> None:
+    """Forget the convex pieces cached in this process."""
+    _HULLS.clear()
+
+
 class _HullCache:
-    """Convex pieces per asset part, computed once per walk (objects share assets)."""
+    """Convex pieces per asset part: computed once per part object in a walk, and once per
+    piece content in the process (scenes of a dataset share assets)."""
 
     def __init__(self) -> None:
         self._by_part: dict[int, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = {}
@@ -79,7 +99,15 @@ class _HullCache:
     def get(self, part: Part) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
         hit = self._by_part.get(id(part))
         if hit is None:
-            hit = self._by_part[id(part)] = convex_pieces(part.pieces)
+            key = _piece_key(part)
+            hit = _HULLS.get(key)
+            if hit is None:
+                hit = _HULLS[key] = convex_pieces(part.pieces)
+                if len(_HULLS) > _HULLS_SIZE:
+                    _HULLS.popitem(last=False)
+            else:
+                _HULLS.move_to_end(key)
+            self._by_part[id(part)] = hit
             self._keep.append(part)
         return hit
 
