@@ -21,6 +21,7 @@ BENCHES = {
     "render": [],
     "dataset": ["--scenes", "12"],
     "robustness": ["--quick"],
+    "export": ["--repeats", "1"],
 }
 
 

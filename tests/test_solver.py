@@ -12,9 +12,10 @@ import pytest
 import trimesh
 
 import parse3d
+from parse3d.export import export_scene
+from parse3d.export.gltf import Z_UP_TO_Y_UP
 from parse3d.geometry.frames import quat_to_matrix
 from parse3d.pag import PAG, Room, load_pag
-from parse3d.scene.export import Z_UP_TO_Y_UP
 from parse3d.scene.io import read_scene, scene_schema, scene_to_dict, write_scene
 from parse3d.solver import SolverConfig, solve
 
@@ -77,6 +78,7 @@ def solved(tmp_path_factory):
     out = tmp_path_factory.mktemp("solved")
     scene = solve(relations_pag(), seed=1)
     write_scene(scene, out)
+    export_scene(scene, out, ["glb"])
     return scene, out
 
 

@@ -5,6 +5,7 @@ The main entry points::
     import parse3d
     pag = parse3d.load_pag("examples/study.json")
     scene = parse3d.solve(pag, seed=0)
+    scene = parse3d.load_scene("out/study-0")   # a folder written by parse3d solve
 
 See the README for the command line.
 """
@@ -17,7 +18,8 @@ from .errors import InfeasibleError, InputError, Parse3dError
 
 __version__ = "0.1.0"
 
-__all__ = ["__version__", "InputError", "InfeasibleError", "Parse3dError", "PAG", "load_pag", "solve"]
+__all__ = ["__version__", "InputError", "InfeasibleError", "Parse3dError", "PAG", "load_pag", "solve",
+           "load_scene"]
 
 if TYPE_CHECKING:  # pragma: no cover
     from .pag.model import PAG
@@ -37,4 +39,8 @@ def __getattr__(name: str) -> Any:
         from .solver import solve
 
         return solve
+    if name == "load_scene":
+        from .scene.io import read_scene
+
+        return read_scene
     raise AttributeError(f"module 'parse3d' has no attribute {name!r}")

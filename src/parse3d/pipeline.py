@@ -28,11 +28,14 @@ class PipelineOptions:
     preview : bool
         Render ``preview.png``.
     solver : SolverConfig
+    formats : tuple of str
+        Export formats written next to ``scene.json`` (names of ``parse3d.export.FORMATS``).
     """
 
     settle: bool = True
     preview: bool = True
     solver: SolverConfig = SolverConfig()
+    formats: tuple[str, ...] = ("glb",)
 
 
 def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
@@ -52,14 +55,17 @@ def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
         scene.contacts = extract_contacts(scene)
         scene.timings["contacts"] = time.perf_counter() - t
     if out is not None:
+        from .export import ExportOptions, export_scene
+        from .physics.mujoco import settling_friction
         from .scene.io import write_scene
 
         write_scene(scene, out)
+        export_scene(scene, out, options.formats, ExportOptions(friction=settling_friction()))
         if options.preview:
             from .render import save_preview
 
             t = time.perf_counter()
             save_preview(scene, Path(out) / "preview.png")
             scene.timings["preview"] = time.perf_counter() - t
-            write_scene(scene, out, glb=False)
+            write_scene(scene, out)
     return scene

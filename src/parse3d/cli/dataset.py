@@ -95,6 +95,9 @@ def register(app: typer.Typer) -> None:
                                              "the templates (repeatable)."),
         no_settle: bool = typer.Option(False, "--no-settle",
                                        help="Skip settling and contact extraction."),
+        formats: str = typer.Option("glb", "--formats",
+                                    help="Export formats per scene: glb, usd, mjcf, urdf, obj "
+                                         "(comma-separated; part of the dataset's identity)."),
         retry_failed: bool = typer.Option(False, "--retry-failed",
                                           help="Run failed and timed-out scenes again."),
         max_tasks: int = typer.Option(None, "--max-tasks",
@@ -121,7 +124,7 @@ def register(app: typer.Typer) -> None:
         source = resolve_pag_paths(pags) if pags else default_source_paths()
         cfg = BuildConfig(scenes=scenes, seed=seed, rooms=_rooms(rooms), views=views,
                           view_size=parse_size(size), settle=not no_settle, source=source,
-                          time_limit=time_limit)
+                          time_limit=time_limit, formats=tuple(formats.split(",")))
         interactive = not as_json and sys.stderr.isatty()
         if interactive:
             from rich.progress import Progress

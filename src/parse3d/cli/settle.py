@@ -58,7 +58,11 @@ def register(app: typer.Typer) -> None:
         t = time.perf_counter()
         scene.contacts = extract_contacts(scene, threshold=threshold)
         scene.timings["contacts"] = round(time.perf_counter() - t, 4)
-        out = write_scene(scene, scene_dir, glb=not no_glb)
+        out = write_scene(scene, scene_dir)
+        if not no_glb:
+            from ..export import export_scene
+
+            export_scene(scene, scene_dir, ["glb"])
         if as_json:
             d = report.to_dict()
             d["contacts"] = len(scene.contacts)

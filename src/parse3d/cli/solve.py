@@ -43,12 +43,14 @@ def _print_summary(s: dict) -> None:
     for f in s["failed"]:
         console.print(f"  [red]failed[/] {f['id']}: {f['reason']}")
     if s["out"]:
-        console.print(f"  wrote {s['out']}/scene.json, scene.glb"
+        console.print(f"  wrote {s['out']}/scene.json"
+                      + (", scene.glb" if (Path(s['out']) / 'scene.glb').exists() else "")
                       + (", contacts.json" if s["contacts"] is not None else "")
                       + (", preview.png" if (Path(s['out']) / 'preview.png').exists() else ""))
 
 
-def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
+def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb") -> None:
+    from ..export import check_formats
     from ..pipeline import PipelineOptions, run_pipeline
     from ..solver import SolverConfig
 
@@ -56,7 +58,8 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
         raise InputError(Problem("", f"unknown strategy {strategy!r} (use constrained or rejection)",
                                  "--strategy", "parameter"))
     opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
-                           solver=SolverConfig(strategy=strategy))
+                           solver=SolverConfig(strategy=strategy),
+                           formats=check_formats(formats, where="--formats"))
     if not no_settle:
         require("sapien", feature="settling (or pass --no-settle)")
     if not no_preview:
@@ -91,6 +94,9 @@ def register(app: typer.Typer) -> None:
         strategy: str = typer.Option("constrained", help="constrained (Algorithm 1) or rejection (baseline)."),
         no_settle: bool = typer.Option(False, "--no-settle", help="Skip physics settling and contacts."),
         no_preview: bool = typer.Option(False, "--no-preview", help="Skip preview.png."),
+        formats: str = typer.Option("glb", "--formats",
+                                    help="Export formats: glb, usd, mjcf, urdf, obj "
+                                         "(comma-separated)."),
         as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON."),
     ) -> None:
         """Solve a PAG into a settled scene: scene.json, scene.glb, contacts.json, preview.png.
@@ -106,7 +112,7 @@ def register(app: typer.Typer) -> None:
         check_seed(seed)
         pag = load_pag(pag_file, vocabulary=vocabulary())
         out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
-        _run(pag, seed, out, strategy, no_settle, no_preview, as_json)
+        _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats)
 
     @app.command("generate")
     def generate_cmd(

@@ -20,7 +20,7 @@ DEFAULT_MAX_TASKS = 200
 DATASET_FORMAT = "parse3d-dataset/1"
 
 
-_IDENTITY = ("seed", "rooms", "views", "view_size", "settle", "source")
+_IDENTITY = ("seed", "rooms", "views", "view_size", "settle", "source", "formats")
 
 
 @dataclass(frozen=True)
@@ -46,6 +46,8 @@ class BuildConfig:
         files to draw from (absolute paths; their room type is read from each file).
     time_limit : float or None
         Seconds one scene may take before it is recorded as ``timeout``.
+    formats : tuple of str
+        Export formats written into every scene folder (``parse3d.export.FORMATS`` names).
     """
 
     scenes: int
@@ -56,8 +58,12 @@ class BuildConfig:
     settle: bool = True
     source: tuple[str, ...] = ()
     time_limit: float | None = 600.0
+    formats: tuple[str, ...] = ("glb",)
 
     def __post_init__(self) -> None:
+        from ..export import check_formats
+
+        object.__setattr__(self, "formats", check_formats(self.formats, where="--formats"))
         for option, value, hi in (("--scenes", self.scenes, MAX_SCENES),
                                   ("--views", self.views, MAX_VIEWS),
                                   ("--seed", self.seed, MAX_SEED)):
@@ -81,7 +87,8 @@ class BuildConfig:
                 "view_size": [int(v) for v in self.view_size], "settle": bool(self.settle),
                 "source": ({"kind": "templates"} if not self.source
                            else {"kind": "pags", "paths": list(self.source)}),
-                "time_limit": None if self.time_limit is None else float(self.time_limit)}
+                "time_limit": None if self.time_limit is None else float(self.time_limit),
+                "formats": list(self.formats)}
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> BuildConfig:
@@ -91,4 +98,4 @@ class BuildConfig:
                    view_size=tuple(d.get("view_size", (640, 480))),
                    settle=bool(d.get("settle", True)),
                    source=tuple(src.get("paths", ())) if src.get("kind") == "pags" else (),
-                   time_limit=d.get("time_limit"))
+                   time_limit=d.get("time_limit"), formats=tuple(d.get("formats", ("glb",))))

@@ -206,6 +206,7 @@ def _commit(out: Path, outcome: SceneOutcome) -> None:
         tmp.mkdir()
         rec["files"] = {}
         for fname, data in outcome.files.items():
+            (tmp / fname).parent.mkdir(parents=True, exist_ok=True)  # meshes/, urdf/
             (tmp / fname).write_bytes(data)
             rec["files"][fname] = file_digest(data)
         final = out / "scenes" / name

@@ -123,12 +123,16 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         tmp = Path(tempfile.mkdtemp(prefix="parse3d-scene-"))
         _render(scene, tmp, config, plan, renderer)
         stage.enter("write")
+        from ..export import ExportOptions, export_scene
+        from ..physics.mujoco import settling_friction
         from ..scene.io import write_scene
 
         scene.timings.update({k: round(stage.times.get(k, 0.0), 6)
                               for k in ("expand", "render")})
         write_scene(scene, tmp)
-        files = {p.name: p.read_bytes() for p in sorted(tmp.iterdir()) if p.is_file()}
+        export_scene(scene, tmp, config.formats, ExportOptions(friction=settling_friction()))
+        files = {p.relative_to(tmp).as_posix(): p.read_bytes() for p in sorted(tmp.rglob("*"))
+                 if p.is_file()}
         stage.enter("done")
         record["status"] = "ok"
         record["scene"] = scene_folder(plan.index)

@@ -1,9 +1,11 @@
 """The same scene in MuJoCo: an independent engine to check that a settled scene is at rest.
 
-:func:`scene_to_mjcf` writes an MJCF model from the collision pieces that settling used (one
-mesh geom per convex piece, inline vertices; MuJoCo takes their convex hulls), with a free
-joint per dynamic object, fixed objects welded to the world and the room shell as static world
-geoms. :func:`mujoco_motion` simulates it and reports how far every object moved.
+:func:`scene_to_mjcf` writes an MJCF model from the collision pieces that settling used,
+through the MJCF exporter (:mod:`parse3d.export.mjcf`, built on ``mujoco.MjSpec``): one mesh
+geom per convex piece (MuJoCo takes their convex hulls), a free joint per dynamic object,
+fixed objects welded to the world and the room shell as static world geoms, with the
+friction of every part's material family as settling uses it. :func:`mujoco_motion`
+simulates it and reports how far every object moved.
 
 The solver options follow MuJoCo's advice for resting contact: elliptic friction cones, a high
 ``impratio`` and a few no-slip iterations, so objects do not creep on inclined or light
@@ -13,30 +15,31 @@ contacts.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
 from ..errors import DependencyError
-from ..geometry.frames import matrix_to_quat, quat_to_matrix
+from ..geometry.frames import quat_to_matrix
 from ..scene.model import Scene
-from .bodies import SHELL_MATERIAL, material_physics
-from .collision import ConvexSet, asset_collision, shell_collision
+from .bodies import MATERIALS, SHELL_MATERIAL
 
-__all__ = ["scene_to_mjcf", "mujoco_motion", "MujocoMotion"]
-
-
-def _fmt(a) -> str:
-    return " ".join(f"{float(x):.7g}" for x in np.asarray(a).ravel())
+__all__ = ["scene_to_mjcf", "mujoco_motion", "MujocoMotion", "settling_friction"]
 
 
-def _mesh_assets(prefix: str, pieces: ConvexSet, scale: float) -> tuple[list[str], list[str]]:
-    names, xml = [], []
-    for i in range(len(pieces)):
-        name = f"{prefix}_{i}"
-        names.append(name)
-        xml.append(f'<mesh name={quoteattr(name)} vertex="{_fmt(pieces.piece_vertices(i) * scale)}"/>')
-    return names, xml
+def settling_friction() -> dict[str, float]:
+    """Static friction per material family as settling uses it, plus ``room`` for the shell
+    (the table exporters write into simulator formats)."""
+    table = {k: m.static_friction for k, m in MATERIALS.items()}
+    table["room"] = SHELL_MATERIAL.static_friction
+    return table
+
+
+def _spec(scene: Scene, settled: bool, timestep: float):
+    from ..export.mjcf import build_spec
+    from ..export.walk import ExportOptions, walk_scene
+
+    rec = walk_scene(scene, ExportOptions(settled=settled, friction=settling_friction()))
+    return build_spec(rec, timestep=timestep, visual=False)
 
 
 def scene_to_mjcf(scene: Scene, *, settled: bool = True, timestep: float = 0.002) -> str:
@@ -53,40 +56,9 @@ def scene_to_mjcf(scene: Scene, *, settled: bool = True, timestep: float = 0.002
     Returns
     -------
     str
-        The MJCF XML; bodies are named by object id.
+        The MJCF XML (meshes inline); bodies are named by object id.
     """
-    assets, world, bodies = [], [], []
-    shell = shell_collision(scene.room)
-    names, xml = _mesh_assets("room", shell, 1.0)
-    assets += xml
-    sm = SHELL_MATERIAL
-    for n in names:
-        world.append(f'<geom type="mesh" mesh="{n}" friction="{sm.static_friction} 0.005 0.0001"/>')
-    for k, obj in enumerate(scene.placed):
-        if obj.asset is None:
-            continue
-        data = asset_collision(obj.asset)
-        names, xml = _mesh_assets(f"o{k}", data.pieces, obj.scale)
-        assets += xml
-        R, t = obj.rotation, obj.position
-        if settled and obj.settled_position is not None:
-            R, t = obj.settled_rotation, obj.settled_position
-        geoms = []
-        for n, mat in zip(names, data.materials, strict=True):
-            mu = material_physics(mat).static_friction
-            geoms.append(f'<geom type="mesh" mesh="{n}" density="{data.density:.6g}" '
-                         f'friction="{mu} 0.005 0.0001"/>')
-        joint = "" if obj.fixed else "<freejoint/>"
-        bodies.append(f'<body name={quoteattr(obj.id)} pos="{_fmt(t)}" quat="{_fmt(matrix_to_quat(R))}">'
-                      f'{joint}{"".join(geoms)}</body>')
-    return (
-        '<mujoco model="parse3d">'
-        '<compiler angle="radian" boundmass="1e-5" boundinertia="1e-10"/>'
-        f'<option timestep="{timestep}" cone="elliptic" impratio="10" noslip_iterations="3"/>'
-        f'<asset>{"".join(assets)}</asset>'
-        f'<worldbody>{"".join(world)}{"".join(bodies)}</worldbody>'
-        '</mujoco>'
-    )
+    return _spec(scene, settled, timestep).to_xml()
 
 
 @dataclass
@@ -111,8 +83,7 @@ def mujoco_motion(scene: Scene, *, seconds: float = 1.0, timestep: float = 0.002
         import mujoco
     except ImportError as e:  # pragma: no cover - mujoco is a declared dependency
         raise DependencyError("the MuJoCo check needs mujoco: pip install 'parse3d[check]'") from e
-    model = mujoco.MjModel.from_xml_string(scene_to_mjcf(scene, settled=settled,
-                                                         timestep=timestep))
+    model = _spec(scene, settled, timestep).compile()
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     ids = [o.id for o in scene.placed if o.asset is not None]

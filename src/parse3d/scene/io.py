@@ -1,4 +1,4 @@
-"""Reading and writing solved scenes: ``scene.json``, ``scene.glb``, ``contacts.json``.
+"""Reading and writing solved scenes: ``scene.json`` and ``contacts.json``.
 
 ``scene.json`` (``format: "parse3d-scene/1"``, schema ``scene-1.schema.json`` in this package)
 holds the PAG as given, the seed, the room, every object's chosen category, asset, scale and
@@ -112,10 +112,15 @@ def _finite(v: Any) -> Any:
     return v
 
 
-def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
-    """Write ``scene.json``, ``scene.glb`` and (when extracted) ``contacts.json``."""
-    from .export import export_glb
+def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = False) -> Path:
+    """Write ``scene.json`` and (when extracted) ``contacts.json``.
 
+    ``scene.glb`` and the other formats come from :func:`parse3d.export.export_scene` (the
+    layer above); ``glb`` is accepted for older callers and must stay False.
+    """
+    if glb:
+        raise ValueError("write_scene no longer writes scene.glb: call "
+                         "parse3d.export.export_scene(scene, out, ['glb'])")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
     atomic_write_text(out / "scene.json",
@@ -123,8 +128,6 @@ def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = True) -> Path:
     if scene.contacts is not None:
         atomic_write_text(out / "contacts.json",
                           json.dumps([c.to_dict() for c in scene.contacts], indent=1) + "\n")
-    if glb:
-        atomic_write_bytes(out / "scene.glb", export_glb(scene))
     return out
 
 

@@ -1,0 +1,92 @@
+"""Export speed: a 50-object scene to each format (glb, usd, mjcf, urdf, obj).
+
+The scene is laid out directly (no solving): 50 generated assets of ten categories, five of
+each, on a grid in a 12 m x 10 m room, so the figure is the exporter's alone. Each format is
+written to a fresh folder ``--repeats`` times and the best time is reported, with the walk of
+the scene (the shared part: records, convex hulls) included, as ``parse3d export`` runs it;
+the CPU time of the process is printed beside the wall time (on a shared machine the wall
+time also counts waiting for the disk and the other processes).
+
+Goal (issue 15): each format in <= 1 s.
+
+    python benchmarks/bench_export.py                 # every format
+    python benchmarks/bench_export.py --formats usd --profile
+"""
+
+from __future__ import annotations
+
+import argparse
+import cProfile
+import pstats
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from parse3d.assets import registry
+from parse3d.export import FORMATS, ExportOptions, export_scene
+from parse3d.export.walk import clear_cache
+from parse3d.geometry.frames import rot_z
+from parse3d.pag.model import PAG, Room
+from parse3d.physics.mujoco import settling_friction
+from parse3d.scene.model import PlacedObject, Scene
+from parse3d.scene.shell import build_shell
+
+CATEGORIES = ("desk", "office_chair", "bookcase", "book", "mug", "table_lamp", "potted_plant",
+              "sofa", "nightstand", "plate")
+
+
+def big_scene(n: int = 50) -> Scene:
+    """``n`` objects of :data:`CATEGORIES` on a grid (five seeds per category, reused)."""
+    room = Room("office", ((0.0, 0.0), (12.0, 0.0), (12.0, 10.0), (0.0, 10.0)), 2.8)
+    scene = Scene(PAG("bench-export", room), 0, build_shell(room))
+    cols = 10
+    for i in range(n):
+        cat = CATEGORIES[i % len(CATEGORIES)]
+        asset = registry.generate(cat, (i // len(CATEGORIES)) % 5)
+        pos = np.array([0.6 + 1.2 * (i % cols), 0.8 + 1.9 * (i // cols), 0.0])
+        scene.objects[f"{cat}_{i}"] = PlacedObject(f"{cat}_{i}", cat, asset, 1.0,
+                                                   rot_z(0.3 * i), pos)
+    return scene
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--objects", type=int, default=50)
+    ap.add_argument("--formats", default=",".join(FORMATS))
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--profile", action="store_true", help="profile one export per format")
+    args = ap.parse_args()
+    t = time.perf_counter()
+    scene = big_scene(args.objects)
+    parts = sum(len(o.asset.parts) for o in scene.placed)
+    print(f"scene: {len(scene.placed)} objects, {parts} parts, "
+          f"{len({o.asset.asset_id for o in scene.placed})} distinct assets "
+          f"(generated in {time.perf_counter() - t:.2f} s)")
+    opts = ExportOptions(friction=settling_friction())
+    export_scene(scene, tempfile.mkdtemp(), ["glb"], opts)  # warm imports
+    print(f"{'format':<6} {'best s':>8} {'cpu s':>8} {'files':>6} {'MB':>7}")
+    for fmt in args.formats.split(","):
+        best, cpu, files, size = float("inf"), float("inf"), 0, 0.0
+        for _ in range(args.repeats):
+            clear_cache()  # cold: the convex hulls of the pieces are part of the cost
+            with tempfile.TemporaryDirectory() as d:
+                t, c = time.perf_counter(), time.process_time()
+                written = export_scene(scene, Path(d), [fmt], opts)
+                best = min(best, time.perf_counter() - t)
+                cpu = min(cpu, time.process_time() - c)
+                files = len(written)
+                size = sum(p.stat().st_size for p in written) / 1e6
+        print(f"{fmt:<6} {best:8.3f} {cpu:8.3f} {files:6d} {size:7.2f}", flush=True)
+        if args.profile:
+            with tempfile.TemporaryDirectory() as d:
+                prof = cProfile.Profile()
+                prof.enable()
+                export_scene(scene, Path(d), [fmt], opts)
+                prof.disable()
+                pstats.Stats(prof).sort_stats("cumulative").print_stats(12)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,119 @@
+"""Exports to viewers and simulators: structured glTF, USD, MJCF, URDF, OBJ.
+
+Every format is one module of this package with the same small surface — ``NAME`` (the
+format's name on the command line), ``FILES`` (what it creates in the output folder) and
+``write(record, out) -> list[Path]`` — over one walk of the scene
+(:func:`~parse3d.export.walk.walk_scene`). Adding a format is adding a module and its name
+to :data:`FORMATS`.
+
+- :func:`export_scene` — write one or more formats of a scene into a folder;
+- :func:`to_sapien`, :func:`to_mujoco` — live simulator objects for a scene;
+- :data:`FORMATS` — format name to module name.
+
+Formats that need optional packages (usd-core, mujoco) import them only when used.
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Iterable
+from pathlib import Path
+from types import ModuleType
+
+from ..errors import InputError, Problem
+from ..scene.model import Scene
+from .walk import ExportOptions, SceneRecord, walk_scene
+
+__all__ = ["FORMATS", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
+           "format_module", "check_formats", "to_sapien", "to_mujoco"]
+
+#: Format name -> module of this package.
+FORMATS: dict[str, str] = {"glb": "gltf", "usd": "usd", "mjcf": "mjcf", "urdf": "urdf",
+                           "obj": "obj"}
+
+
+def format_module(name: str) -> ModuleType:
+    """The writer module of format ``name``."""
+    return importlib.import_module(f"{__name__}.{FORMATS[name]}")
+
+
+def check_formats(formats: str | Iterable[str], *, where: str = "--formats") -> tuple[str, ...]:
+    """Parse and check a format list (``"glb,usd"`` or a sequence), keeping the given order.
+
+    Raises
+    ------
+    InputError
+        For an unknown or repeated format, naming ``where`` and the known formats.
+    """
+    items = [f.strip() for f in formats.split(",")] if isinstance(formats, str) else list(formats)
+    out: list[str] = []
+    for f in items:
+        if f not in FORMATS:
+            raise InputError(Problem("", f"unknown format {f!r}: use one or more of "
+                                         f"{', '.join(FORMATS)}", where, "parameter"))
+        if f not in out:
+            out.append(f)
+    if not out:
+        raise InputError(Problem("", f"no format given: use one or more of {', '.join(FORMATS)}",
+                                 where, "parameter"))
+    return tuple(out)
+
+
+def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = ("glb",),
+                 options: ExportOptions = ExportOptions()) -> list[Path]:
+    """Write ``scene`` in each of ``formats`` into the folder ``out``.
+
+    Parameters
+    ----------
+    scene : Scene
+    out : path
+        Output folder (created when missing). Each format writes its own fixed file names in
+        it (``scene.glb``, ``scene.usd``, ``scene.xml`` + ``meshes/``, ``urdf/``,
+        ``scene.obj`` + ``scene.mtl``); nothing is written outside it.
+    formats : str or sequence of str
+        Names from :data:`FORMATS`.
+    options : ExportOptions
+
+    Returns
+    -------
+    list of Path
+        Every file written.
+
+    Raises
+    ------
+    InputError
+        For an unknown format or an output folder that cannot be written.
+    """
+    names = check_formats(formats, where="formats")
+    out = Path(out)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise InputError(Problem("", f"cannot create the output folder: {e.strerror} — choose "
+                                     "a writable folder with --out", str(out), "io")) from None
+    rec = walk_scene(scene, options)
+    written: list[Path] = []
+    for name in names:
+        try:
+            written += format_module(name).write(rec, out)
+        except PermissionError as e:
+            raise InputError(Problem("", f"cannot write {name} output: {e.strerror} — choose "
+                                         "a writable folder with --out", str(out), "io")) from None
+    return written
+
+
+def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,
+              timestep: float = 0.01, render: bool | None = None):
+    """A live SAPIEN scene of ``scene``: see :func:`parse3d.export.sapien.to_sapien`."""
+    from .sapien import to_sapien as _to_sapien
+
+    return _to_sapien(scene, options, timestep=timestep, render=render)
+
+
+def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,
+              timestep: float = 0.002, visual: bool = True, lock_joints: bool = True):
+    """A compiled ``(MjModel, MjData)`` of ``scene``: see :func:`parse3d.export.mjcf.to_mujoco`."""
+    from .mjcf import to_mujoco as _to_mujoco
+
+    return _to_mujoco(scene, options, timestep=timestep, visual=visual,
+                      lock_joints=lock_joints)

@@ -1,0 +1,252 @@
+"""MJCF for MuJoCo (``scene.xml`` + ``meshes/``), built as objects with ``mujoco.MjSpec``.
+
+- One body per object at its world pose: a free joint for a loose object, none for a fixed
+  one (SECURED_TO, HANGING_BELOW: welded to the world by being a plain child of it).
+- Per part a visual mesh geom (group 1, the part's colour, no collisions, no mass) and a
+  collision mesh geom per convex piece (group 3, the asset's density, the part material's
+  friction); MuJoCo takes a mesh geom's convex hull for collisions, which the pieces are.
+- Articulated parts are child bodies with a ``hinge`` or ``slide`` joint (axis, anchor,
+  range, ``ref`` = the stored value, so the model's initial configuration is the exported
+  one); each is locked at that value by a joint equality unless ``lock_joints=False``, so a
+  closed door does not swing open while the scene is simulated.
+- The room shell: static world geoms (visual and convex collision pieces).
+- Options for resting contact: elliptic friction cones, ``impratio`` 10, 3 no-slip
+  iterations.
+
+Meshes are inline in the spec for :func:`to_mujoco`; :func:`write` puts them as OBJ files in
+``meshes/`` (one per part and per piece, shared by objects using the same asset) and writes
+``scene.xml`` next to it. Body names are object ids; part geoms are named
+``<object_id>:<part_name>`` and pieces ``<object_id>:<part_name>:c<i>``.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import DependencyError
+from ..geometry.frames import matrix_to_quat
+from ..scene.io import atomic_write_text
+from ..scene.model import Scene
+from ._files import MeshFiles, mesh_digest, safe_name
+from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
+
+__all__ = ["NAME", "FILES", "build_spec", "write", "to_mujoco"]
+
+NAME = "mjcf"
+FILES = ("scene.xml", "meshes/")
+
+_VISUAL_GROUP, _COLLISION_GROUP = 1, 3
+
+
+def _mujoco():
+    try:
+        import mujoco
+    except ImportError as e:  # pragma: no cover - mujoco is a declared dependency
+        raise DependencyError("MJCF export needs mujoco: pip install 'parse3d[export]'") from e
+    return mujoco
+
+
+class _Meshes:
+    """Mesh assets of a spec: inline, or OBJ files under ``meshes/`` (each written once)."""
+
+    def __init__(self, spec, out: Path | None) -> None:
+        self.spec = spec
+        self.files = None if out is None else MeshFiles(out)
+        self.names: set[str] = set()
+        self._by_content: dict[tuple[str, float], str] = {}
+
+    def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0) -> str:
+        """The name of the mesh asset (added on first request; an equal mesh at the same scale,
+        such as a box part and its one collision piece, reuses the asset)."""
+        key = name if abs(scale - 1.0) < 1e-12 else f"{name}@{scale:.9g}"
+        if key in self.names:
+            return key
+        content = (mesh_digest(vertices, faces), round(float(scale), 9))
+        if content in self._by_content:
+            return self._by_content[content]
+        self._by_content[content] = key
+        m = self.spec.add_mesh()
+        m.name = key
+        if self.files is None:
+            m.uservert = np.asarray(vertices, float).ravel().tolist()
+            m.userface = np.asarray(faces, int).ravel().tolist()
+        else:
+            m.file = self.files.get(file_stem, vertices, faces)
+        m.scale = [scale] * 3
+        self.names.add(key)
+        return key
+
+
+def _rgba(mat) -> list[float]:
+    return [float(c) for c in mat.color]
+
+
+def _collision_geom(body, mesh: str, name: str, density: float, friction: float | None):
+    mujoco = _mujoco()
+    g = body.add_geom()
+    g.name = name
+    g.type = mujoco.mjtGeom.mjGEOM_MESH
+    g.meshname = mesh
+    g.group = _COLLISION_GROUP
+    g.density = density
+    g.rgba = [0.5, 0.5, 0.5, 0.4]
+    if friction is not None:
+        g.friction = [friction, 0.005, 0.0001]
+    return g
+
+
+def _visual_geom(body, mesh: str, name: str, mat):
+    mujoco = _mujoco()
+    g = body.add_geom()
+    g.name = name
+    g.type = mujoco.mjtGeom.mjGEOM_MESH
+    g.meshname = mesh
+    g.group = _VISUAL_GROUP
+    g.contype = 0
+    g.conaffinity = 0
+    g.density = 0.0
+    g.mass = 0.0
+    g.rgba = _rgba(mat)
+    return g
+
+
+def _add_object(spec, meshes: _Meshes, rec: SceneRecord, o: ObjectRecord, *,
+                visual: bool, lock_joints: bool) -> None:
+    mujoco = _mujoco()
+    s = o.scale
+    root = spec.worldbody.add_body()
+    root.name = o.id
+    root.pos = [float(x) for x in o.position]
+    root.quat = [float(x) for x in matrix_to_quat(o.rotation)]
+    if not o.fixed:
+        root.add_freejoint().name = f"{o.id}:free"
+    bodies = {}
+    motion = {lk.name: lk.motion for lk in o.links}
+    parent_of = {j.child_link: j for j in o.joints}
+    for lk in o.links:
+        if lk.name not in parent_of:
+            body = root
+        else:
+            j = parent_of[lk.name]
+            body = bodies[j.parent_link].add_body()
+            body.name = f"{o.id}:{lk.name}"
+            rel = np.linalg.inv(motion[j.parent_link]) @ motion[lk.name]
+            body.pos = [float(x) * s for x in rel[:3, 3]]
+            body.quat = [float(x) for x in matrix_to_quat(rel[:3, :3])]
+            jt = body.add_joint()
+            jt.name = f"{o.id}:{j.name}"
+            hinge = j.joint.type == "revolute"
+            jt.type = mujoco.mjtJoint.mjJNT_HINGE if hinge else mujoco.mjtJoint.mjJNT_SLIDE
+            jt.axis = [float(x) for x in j.joint.axis]
+            jt.pos = [float(x) * s for x in j.joint.origin]
+            k = 1.0 if hinge else s
+            lo, hi = sorted(float(v) for v in j.joint.limits)
+            jt.range = [lo * k, hi * k]
+            jt.limited = mujoco.mjtLimited.mjLIMITED_TRUE
+            jt.ref = j.value * k
+            jt.damping = [0.1, 0.0, 0.0]
+            if lock_joints:
+                eq = spec.add_equality()
+                eq.name = f"{o.id}:{j.name}:lock"
+                eq.type = mujoco.mjtEq.mjEQ_JOINT
+                eq.objtype = mujoco.mjtObj.mjOBJ_JOINT
+                eq.name1 = jt.name
+                data = np.array(eq.data, float)
+                # MuJoCo measures joint equalities from the reference configuration (``ref``,
+                # the exported value): a zero polynomial holds the joint there
+                data[:5] = 0.0
+                eq.data = data
+        bodies[lk.name] = body
+        for p in lk.parts:
+            stem = f"{o.asset_id}__{p.name}"
+            if visual:
+                vm = meshes.get(f"{o.asset_id}:{p.name}", stem, p.mesh.vertices, p.mesh.faces, s)
+                _visual_geom(body, vm, p.key, p.material)
+            fr = rec.friction(p.material.name)
+            for i, (v, f) in enumerate(p.pieces):
+                cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s)
+                _collision_geom(body, cm, f"{p.key}:c{i}", o.density, fr)
+
+
+def build_spec(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0.002,
+               visual: bool = True, lock_joints: bool = True):
+    """An ``mujoco.MjSpec`` of a walked scene.
+
+    Parameters
+    ----------
+    rec : SceneRecord
+    out : Path or None
+        Folder whose ``meshes/`` receives the mesh files (written now); None keeps every
+        mesh inline in the spec.
+    timestep : float
+        Seconds.
+    visual : bool
+        Add the visual mesh geoms (the collision geoms are always there).
+    lock_joints : bool
+        Hold every articulation at its exported value with a joint equality.
+
+    Returns
+    -------
+    mujoco.MjSpec
+    """
+    mujoco = _mujoco()
+    spec = mujoco.MjSpec()
+    spec.modelname = safe_name(rec.name or "parse3d")
+    spec.compiler.degree = False
+    spec.compiler.boundmass = 1e-5
+    spec.compiler.boundinertia = 1e-10
+    spec.option.timestep = float(timestep)
+    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
+    spec.option.impratio = 10.0
+    spec.option.noslip_iterations = 3
+    meshes = _Meshes(spec, out)
+    fr = rec.friction("room")
+    for s in rec.shell:
+        if visual:
+            vm = meshes.get(s.key, f"room__{s.name}", s.mesh.vertices, s.mesh.faces)
+            _visual_geom(spec.worldbody, vm, s.key, s.material)
+        for i, (v, f) in enumerate(s.pieces):
+            cm = meshes.get(f"{s.key}:c{i}", f"room__{s.name}_c{i}", v, f)
+            g = _collision_geom(spec.worldbody, cm, f"{s.key}:c{i}", 0.0, fr)
+            g.rgba = [0.8, 0.8, 0.8, 0.2]
+    for o in rec.objects:
+        _add_object(spec, meshes, rec, o, visual=visual, lock_joints=lock_joints)
+    return spec
+
+
+def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path]:
+    """Write ``scene.xml`` and ``meshes/*.obj`` into the folder ``out``; returns the paths."""
+    out = Path(out)
+    spec = build_spec(rec, out=out, lock_joints=lock_joints)
+    spec.modelfiledir = str(out)  # mesh files resolve against the model's folder
+    xml = spec.to_xml()
+    path = out / "scene.xml"
+    atomic_write_text(path, xml)
+    return [path, *(out / f for f in sorted({m.file for m in spec.meshes if m.file}))]
+
+
+def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,
+              timestep: float = 0.002, visual: bool = True, lock_joints: bool = True):
+    """A live MuJoCo model of ``scene``: ``(MjModel, MjData)`` after ``mj_forward``.
+
+    Parameters
+    ----------
+    scene : Scene
+    options : ExportOptions
+        Pose, ceiling, joint opening and friction table (see :class:`ExportOptions`).
+    timestep : float
+        Seconds.
+    visual : bool
+        Include the visual geoms.
+    lock_joints : bool
+        Hold articulations at their exported values.
+    """
+    mujoco = _mujoco()
+    spec = build_spec(walk_scene(scene, options), timestep=timestep, visual=visual,
+                      lock_joints=lock_joints)
+    model = spec.compile()
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    return model, data

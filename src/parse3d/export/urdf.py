@@ -1,0 +1,169 @@
+"""URDF (``urdf/<object_id>.urdf`` + ``urdf/scene.json``) for SAPIEN, ManiSkill, PyBullet.
+
+URDF describes one robot, not a scene, so every object is its own file and
+``urdf/scene.json`` places them::
+
+    [{"id": "desk", "urdf": "desk.urdf", "position": [x, y, z],
+      "quaternion": [w, x, y, z], "fixed": false, "joints": {"door_0_hinge": 0.0}}, ...]
+
+(world frame, +Z up; ``fixed``: load with the root link fixed, for SECURED_TO and
+HANGING_BELOW objects; ``joints``: the joint values to set after loading). The room shell is
+``urdf/room.urdf``, one link per element, to be loaded fixed at the origin (listed with id
+``room``).
+
+In an object's file every part is a link named after the part. The first part of the rigid
+base is the root; the other base parts hang from it by ``fixed`` joints; a part moved by an
+asset joint hangs from its parent part by a ``revolute`` or ``prismatic`` joint with axis and
+limits. Link frames sit on the asset origin (the root and fixed parts) or on the joint's
+anchor (moving parts), so meshes, written once per asset part in the asset frame to
+``urdf/meshes/``, are placed with a visual/collision origin offset; the object's scale is
+baked in (mesh ``scale``, offsets, prismatic limits). Each link carries its visual mesh (an
+OBJ whose ``.mtl`` holds the part's colour: URDF ``<material>`` tags would make SAPIEN's
+loader ask for a rendering device even for physics-only use), one collision mesh per convex
+piece, and its mass with the inertia of a solid box over its pieces.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from xml.sax.saxutils import quoteattr
+
+import numpy as np
+
+from ..geometry.frames import matrix_to_quat
+from ..scene.io import atomic_write_text
+from ._files import MeshFiles, safe_name
+from .walk import ObjectRecord, PartRecord, SceneRecord
+
+__all__ = ["NAME", "FILES", "write", "object_urdf"]
+
+NAME = "urdf"
+FILES = ("urdf/",)
+
+
+def _f(a) -> str:
+    return " ".join(f"{float(x):.7g}" for x in np.asarray(a, float).ravel())
+
+
+def _inertial(pieces: list[tuple[np.ndarray, np.ndarray]], mass: float, scale: float,
+              offset: np.ndarray) -> str:
+    """``<inertial>`` of a solid box over the pieces (link frame = asset frame + offset)."""
+    if not pieces or mass <= 0:
+        return ('<inertial><origin xyz="0 0 0"/><mass value="0.001"/>'
+                '<inertia ixx="1e-06" iyy="1e-06" izz="1e-06" ixy="0" ixz="0" iyz="0"/>'
+                '</inertial>')
+    pts = np.vstack([v for v, _ in pieces]) * scale
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    c = (lo + hi) / 2 + offset
+    e = np.maximum(hi - lo, 1e-4)
+    ixx = mass * (e[1] ** 2 + e[2] ** 2) / 12
+    iyy = mass * (e[0] ** 2 + e[2] ** 2) / 12
+    izz = mass * (e[0] ** 2 + e[1] ** 2) / 12
+    return (f'<inertial><origin xyz="{_f(c)}"/><mass value="{mass:.7g}"/>'
+            f'<inertia ixx="{ixx:.7g}" iyy="{iyy:.7g}" izz="{izz:.7g}" ixy="0" ixz="0" '
+            'iyz="0"/></inertial>')
+
+
+def _link(name: str, part: PartRecord | None, visual_mesh: str | None, piece_meshes: list[str],
+          mass: float, scale: float, offset: np.ndarray) -> str:
+    xml = [f"<link name={quoteattr(name)}>"]
+    sc = _f([scale] * 3)
+    o = f'<origin xyz="{_f(offset)}"/>'
+    if part is not None:
+        xml.append(_inertial(part.pieces, mass, scale, offset))
+    if visual_mesh:
+        xml.append(f"<visual>{o}<geometry><mesh filename={quoteattr(visual_mesh)} "
+                   f'scale="{sc}"/></geometry></visual>')
+    for m in piece_meshes:
+        xml.append(f"<collision>{o}<geometry><mesh filename={quoteattr(m)} scale=\"{sc}\"/>"
+                   "</geometry></collision>")
+    xml.append("</link>")
+    return "".join(xml)
+
+
+def object_urdf(o: ObjectRecord, meshes: MeshFiles) -> str:
+    """The URDF document of one object (meshes written through ``meshes``)."""
+    s = o.scale
+    joint_of = {j.child_link: j for j in o.joints}
+    # the frame of each link, in the asset frame at the modelled (closed) pose: the asset
+    # origin for rigid parts, the joint anchor for moving ones
+    anchor = {p.name: (np.asarray(joint_of[p.name].joint.origin, float) if p.name in joint_of
+                       else np.zeros(3)) for p in o.parts}
+    links, joints = [], []
+    base = o.link("base").parts
+    root = base[0].name if base else o.parts[0].name
+    for p in o.parts:
+        stem = f"{o.asset_id}__{p.name}"
+        vm = meshes.get(stem, p.mesh.vertices, p.mesh.faces, p.material)
+        pm = [meshes.get(f"{stem}_c{i}", v, f) for i, (v, f) in enumerate(p.pieces)]
+        mass = o.density * s**3 * p.volume
+        links.append(_link(p.name, p, vm, pm, mass, s, -anchor[p.name] * s))
+        if p.name == root:
+            continue
+        if p.name in joint_of:
+            j = joint_of[p.name]
+            parent = j.joint.parent_part if j.joint.parent_part in anchor else root
+            xyz = (anchor[p.name] - anchor[parent]) * s
+            lo, hi = sorted(float(v) for v in j.joint.limits)
+            k = 1.0 if j.joint.type == "revolute" else s
+            joints.append(
+                f'<joint name={quoteattr(j.name)} type="{j.joint.type}">'
+                f"<parent link={quoteattr(parent)}/><child link={quoteattr(p.name)}/>"
+                f'<origin xyz="{_f(xyz)}"/><axis xyz="{_f(j.joint.axis)}"/>'
+                f'<limit lower="{lo * k:.7g}" upper="{hi * k:.7g}" effort="100" velocity="1"/>'
+                '<dynamics damping="0.1"/></joint>')
+        else:
+            joints.append(f'<joint name={quoteattr(f"{root}__{p.name}")} type="fixed">'
+                          f"<parent link={quoteattr(root)}/><child link={quoteattr(p.name)}/>"
+                          f'<origin xyz="{_f(-anchor[root] * s)}"/></joint>')
+    # URDF needs the root link first and parents before children in no particular order
+    return (f'<?xml version="1.0"?>\n<robot name={quoteattr(o.id)}>' + "".join(links) + "".join(joints) + "</robot>\n")
+
+
+def _room_urdf(rec: SceneRecord, meshes: MeshFiles) -> str:
+    links, joints = [], []
+    root = rec.shell[0].name
+    for s in rec.shell:
+        vm = meshes.get(f"room__{s.name}", s.mesh.vertices, s.mesh.faces, s.material)
+        pm = [meshes.get(f"room__{s.name}_c{i}", v, f) for i, (v, f) in enumerate(s.pieces)]
+        links.append(_link(s.name, None, vm, pm, 0.0, 1.0, np.zeros(3)))
+        if s.name != root:
+            joints.append(f'<joint name="{root}__{s.name}" type="fixed"><parent link="{root}"/>'
+                          f'<child link="{s.name}"/></joint>')
+    return ('<?xml version="1.0"?>\n<robot name="room">' + "".join(links) + "".join(joints)
+            + "</robot>\n")
+
+
+def write(rec: SceneRecord, out: Path) -> list[Path]:
+    """Write ``urdf/<object_id>.urdf``, ``urdf/room.urdf``, ``urdf/meshes/`` and
+    ``urdf/scene.json`` into the folder ``out``; returns the paths written."""
+    folder = Path(out) / "urdf"
+    folder.mkdir(parents=True, exist_ok=True)
+    meshes = MeshFiles(folder)
+    written, rows = [], []
+    taken: set[str] = set()
+    for o in rec.objects:
+        name = safe_name(o.id)
+        while name in taken or name == "room":
+            name += "_"
+        taken.add(name)
+        path = folder / f"{name}.urdf"
+        atomic_write_text(path, object_urdf(o, meshes))
+        written.append(path)
+        rows.append({"id": o.id, "urdf": path.name,
+                     "position": [round(float(x), 7) for x in o.position],
+                     "quaternion": [round(float(x), 9) for x in matrix_to_quat(o.rotation)],
+                     "fixed": bool(o.fixed),
+                     "joints": {j.name: round(float(j.value) * (1.0 if j.joint.type == "revolute"
+                                                                  else o.scale), 9)
+                                for j in o.joints}})
+    if rec.shell:
+        path = folder / "room.urdf"
+        atomic_write_text(path, _room_urdf(rec, meshes))
+        written.append(path)
+        rows.append({"id": "room", "urdf": "room.urdf", "position": [0.0, 0.0, 0.0],
+                     "quaternion": [1.0, 0.0, 0.0, 0.0], "fixed": True, "joints": {}})
+    index = folder / "scene.json"
+    atomic_write_text(index, json.dumps(rows, indent=1) + "\n")
+    return [index, *written, *meshes.written.values()]

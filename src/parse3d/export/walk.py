@@ -1,0 +1,525 @@
+"""The one walk over a scene that every exporter reads.
+
+:func:`walk_scene` turns a :class:`~parse3d.scene.model.Scene` into plain export records:
+objects → links → parts, with meshes and convex collision pieces in the **asset frame** (so two
+objects sharing an asset share geometry), the object's world pose and uniform scale, material,
+mass, joints with their values, fixed or loose, a relation summary, and the room shell.
+
+Links: an asset without joints is one rigid link (``base``). With joints, every joint's child
+part is a link of its own, hanging from the link that holds the joint's parent part; all other
+parts form the ``base`` link. A part's ``motion`` is where its link sits at the exported joint
+values, as a (4, 4) transform in the asset frame (identity for the base link).
+
+World frame: +Z up, metres. An object's ``transform`` maps asset-frame points ``x`` to
+``R @ (scale * x) + t``.
+"""
+
+from __future__ import annotations
+
+import hashlib
+from collections import OrderedDict
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import trimesh
+from scipy.spatial import ConvexHull, QhullError
+
+from ..assets.model import Asset, Joint, Material, Part
+from ..geometry.frames import make_transform
+from ..pag.refs import RefSyntaxError, parse_ref
+from ..scene.model import PlacedObject, Scene
+
+__all__ = ["ExportOptions", "PartRecord", "LinkRecord", "JointRecord", "ObjectRecord",
+           "ShellRecord", "SceneRecord", "walk_scene", "SHELL_MATERIALS", "BASE_LINK",
+           "convex_pieces", "clear_cache"]
+
+#: Name of the link holding every part that no joint moves.
+BASE_LINK = "base"
+
+#: Display materials of the room shell, by element kind.
+SHELL_MATERIALS = {"floor": Material((0.78, 0.74, 0.68, 1.0), 0.8, 0.0, "wood"),
+                   "wall": Material((0.93, 0.92, 0.89, 1.0), 0.9, 0.0, "stone"),
+                   "ceiling": Material((0.97, 0.97, 0.96, 1.0), 0.9, 0.0, "stone")}
+
+
+@dataclass(frozen=True)
+class ExportOptions:
+    """What an export shows.
+
+    Attributes
+    ----------
+    settled : bool or None
+        Pose to export: the settled pose (True), the solved one (False), or None for the
+        scene's own state (settled when the scene was settled, else solved).
+    ceiling : bool
+        Include the ceiling (it stays a separate node or prim that viewers can hide).
+    open_ratio : float or None
+        Set every joint to this fraction (0 closed .. 1 fully open) of its travel, instead of
+        the joint values stored with the scene.
+    friction : mapping of str to float, or None
+        Static friction coefficient per material family (``Material.name``), plus ``room``
+        for the shell, written into the simulator formats; families not listed use
+        ``plastic``. None leaves each simulator's default. The command line passes the table
+        settling uses (``parse3d.physics.bodies.MATERIALS``).
+    """
+
+    settled: bool | None = None
+    ceiling: bool = True
+    open_ratio: float | None = None
+    friction: Mapping[str, float] | None = None
+
+
+_HULLS: OrderedDict[str, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = OrderedDict()
+_HULLS_SIZE = 8192
+
+
+def _piece_key(part: Part) -> str:
+    h = hashlib.blake2b(digest_size=16)
+    for pc in part.pieces:
+        h.update(np.ascontiguousarray(pc.vertices, np.float64).tobytes())
+        h.update(np.ascontiguousarray(pc.faces, np.int64).tobytes())
+    return h.hexdigest()
+
+
+def clear_cache() -> None:
+    """Forget the convex pieces cached in this process."""
+    _HULLS.clear()
+
+
+class _HullCache:
+    """Convex pieces per asset part: computed once per part object in a walk, and once per
+    piece content in the process (scenes of a dataset share assets)."""
+
+    def __init__(self) -> None:
+        self._by_part: dict[int, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = {}
+        self._keep: list[Part] = []  # keeps ids valid while the cache lives
+
+    def get(self, part: Part) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
+        hit = self._by_part.get(id(part))
+        if hit is None:
+            key = _piece_key(part)
+            hit = _HULLS.get(key)
+            if hit is None:
+                hit = _HULLS[key] = convex_pieces(part.pieces)
+                if len(_HULLS) > _HULLS_SIZE:
+                    _HULLS.popitem(last=False)
+            else:
+                _HULLS.move_to_end(key)
+            self._by_part[id(part)] = hit
+            self._keep.append(part)
+        return hit
+
+
+@dataclass
+class PartRecord:
+    """One part of an exported object.
+
+    Attributes
+    ----------
+    name, label : str
+        Unique part name (``leg_0``) and vocabulary label (``leg``).
+    key : str
+        ``<object_id>:<part_name>``, the name every format gives the part.
+    mesh : trimesh.Trimesh
+        Visual mesh, asset frame, unscaled (shared with the asset: do not modify).
+    material : Material
+    link : str
+        The link the part belongs to.
+    relations : list of dict
+        PAG relations naming this part's label on this object.
+    contacts : list of str
+        Parts (``object:part``) this part touches in the contact graph.
+    source : Part
+        The asset's part.
+    """
+
+    name: str
+    label: str
+    key: str
+    mesh: trimesh.Trimesh
+    material: Material
+    link: str
+    relations: list[dict[str, Any]]
+    contacts: list[str]
+    source: Part
+    _hulls: _HullCache = field(repr=False, default=None)
+
+    @property
+    def pieces(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        """Convex collision pieces as hull ``(vertices (V, 3), triangles (F, 3))``, asset
+        frame, unscaled (flat pieces dropped); computed on first use and shared by the parts
+        of objects that share an asset."""
+        return self._hulls.get(self.source)[0]
+
+    @property
+    def volume(self) -> float:
+        """Collision volume of the pieces, m^3, unscaled."""
+        return self._hulls.get(self.source)[1]
+
+
+@dataclass
+class LinkRecord:
+    """A rigid group of parts of one object.
+
+    Attributes
+    ----------
+    name : str
+        ``base`` or the joint child part's name.
+    parts : list of PartRecord
+    motion : (4, 4) float
+        Pose of the link relative to the asset frame at the exported joint values (identity
+        for ``base``), unscaled.
+    density : float
+        kg / m^3.
+    scale : float
+        The object's uniform scale.
+    """
+
+    name: str
+    parts: list[PartRecord]
+    motion: np.ndarray
+    density: float
+    scale: float
+
+    @property
+    def mass(self) -> float:
+        """kg: the pieces' volume at the object's scale times the density."""
+        return self.density * self.scale**3 * sum(p.volume for p in self.parts)
+
+
+@dataclass
+class JointRecord:
+    """An articulation of an exported object.
+
+    Attributes
+    ----------
+    joint : Joint
+        As stored with the asset (axis and origin in the asset frame, unscaled).
+    parent_link, child_link : str
+    value : float
+        Exported joint value (radians or metres, unscaled).
+    """
+
+    joint: Joint
+    parent_link: str
+    child_link: str
+    value: float
+
+    @property
+    def name(self) -> str:
+        return self.joint.name
+
+
+@dataclass
+class ObjectRecord:
+    """One placed object, ready for a writer.
+
+    Attributes
+    ----------
+    id, category, asset_id : str
+    asset : Asset
+    scale : float
+    rotation : (3, 3) float
+        World rotation of the exported pose.
+    position : (3,) float
+        World position of the asset origin, metres.
+    fixed : bool
+        Held in place (SECURED_TO and HANGING_BELOW objects): welded to the world.
+    support : str or None
+        The part-level support used (``desk:tabletop_0@top``).
+    density : float
+        kg / m^3.
+    parts : list of PartRecord
+    links : list of LinkRecord
+        ``base`` first, then parents before children.
+    joints : list of JointRecord
+    relations : list of dict
+        Every PAG relation with this object as child or parent: relation, child, parent and
+        whether it holds (after settling when settled).
+    """
+
+    id: str
+    category: str
+    asset_id: str
+    asset: Asset
+    scale: float
+    rotation: np.ndarray
+    position: np.ndarray
+    fixed: bool
+    support: str | None
+    density: float
+    parts: list[PartRecord]
+    links: list[LinkRecord]
+    joints: list[JointRecord]
+    relations: list[dict[str, Any]]
+
+    @property
+    def transform(self) -> np.ndarray:
+        """(4, 4) asset-to-world transform, scale included."""
+        return make_transform(self.rotation, self.position, self.scale)
+
+    @property
+    def mass(self) -> float:
+        return float(sum(lk.mass for lk in self.links))
+
+    def link(self, name: str) -> LinkRecord:
+        for lk in self.links:
+            if lk.name == name:
+                return lk
+        raise KeyError(name)
+
+    def link_parts(self, name: str) -> list[PartRecord]:
+        return self.link(name).parts
+
+
+@dataclass
+class ShellRecord:
+    """A room shell element (world frame, static).
+
+    Attributes
+    ----------
+    name : str
+        ``floor``, ``wall_i`` or ``ceiling``.
+    key : str
+        ``room:<name>``.
+    mesh : trimesh.Trimesh
+        World-frame slab.
+    material : Material
+    pieces : list of ((V, 3) float, (F, 3) int)
+        Convex pieces as hulls, world frame (the floor and ceiling of a non-convex room are
+        split into convex prisms).
+    """
+
+    name: str
+    key: str
+    mesh: trimesh.Trimesh
+    material: Material
+    pieces: list[tuple[np.ndarray, np.ndarray]]
+
+
+@dataclass
+class SceneRecord:
+    """A walked scene: what every exporter writes.
+
+    Attributes
+    ----------
+    name : str
+        The PAG's name.
+    settled : bool
+        Whether the exported poses are settled ones.
+    objects : list of ObjectRecord
+        Placed objects in the scene's order.
+    shell : list of ShellRecord
+        Floor, walls, then the ceiling (when included).
+    meta : dict
+        Scene-level facts for the files' metadata (name, seed, room type, pose used).
+    friction_table : mapping of str to float, or None
+        As :attr:`ExportOptions.friction`.
+    """
+
+    name: str
+    settled: bool
+    objects: list[ObjectRecord]
+    shell: list[ShellRecord]
+    meta: dict[str, Any]
+    friction_table: Mapping[str, float] | None = None
+
+    def friction(self, family: str) -> float | None:
+        """Static friction of a material family (``room`` for the shell), or None."""
+        t = self.friction_table
+        if t is None:
+            return None
+        return float(t.get(family, t.get("plastic", 0.5)))
+
+    def assets(self) -> dict[str, Asset]:
+        """Distinct assets by asset id, in first-use order."""
+        out: dict[str, Asset] = {}
+        for o in self.objects:
+            out.setdefault(o.asset_id, o.asset)
+        return out
+
+
+def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
+    """The convex hull of each collision piece and their total volume; flat pieces dropped.
+
+    Parameters
+    ----------
+    meshes : iterable of trimesh.Trimesh or (V, 3) arrays
+
+    Returns
+    -------
+    hulls : list of ((V_i, 3) float, (F_i, 3) int)
+        Vertices and triangles of every piece with volume: a mesh's own triangles, or the
+        outward-wound hull of bare points.
+    volume : float
+        m^3.
+    """
+    out, vol = [], 0.0
+    for m in meshes:
+        pts = np.asarray(getattr(m, "vertices", m), float)
+        if len(pts) < 4:
+            continue
+        try:
+            h = ConvexHull(pts)
+        except QhullError:  # a flat piece has no volume to collide
+            continue
+        if h.volume <= 1e-12:
+            continue
+        if isinstance(m, trimesh.Trimesh) and len(m.faces):
+            # a piece is convex by contract: keep its own triangles (then a box part and its
+            # one piece are the same mesh, and writers store it once)
+            out.append((pts, np.asarray(m.faces)))
+            vol += float(h.volume)
+            continue
+        used = np.unique(h.simplices)
+        remap = np.full(len(pts), -1)
+        remap[used] = np.arange(len(used))
+        faces = remap[h.simplices]
+        v = pts[used]
+        tri = v[faces]
+        # qhull does not wind its simplices consistently: turn each one outward
+        normal = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+        flip = np.einsum("ij,ij->i", normal, h.equations[:, :3]) < 0
+        faces[flip] = faces[flip][:, ::-1]
+        out.append((v, faces))
+        vol += float(h.volume)
+    return out, vol
+
+
+def _ref_key(text: str) -> tuple[str, str | None]:
+    try:
+        r = parse_ref(text)
+    except RefSyntaxError:
+        return text, None
+    return r.object, r.part
+
+
+def _relation_rows(scene: Scene, settled: bool) -> list[tuple[dict[str, Any], tuple, tuple]]:
+    """Each relation's summary row with its parsed child and parent ``(object, part)``."""
+    rows = []
+    for c in scene.relations:
+        holds = c.holds_settled if settled and c.holds_settled is not None else c.holds
+        rows.append(({"relation": c.relation, "child": c.child, "parent": c.parent,
+                      "holds": holds}, _ref_key(c.child), _ref_key(c.parent)))
+    return rows
+
+
+def _joint_value(j: Joint, stored: dict[str, float], open_ratio: float | None) -> float:
+    lo, hi = float(j.limits[0]), float(j.limits[1])
+    if open_ratio is not None:
+        # the fully open end is the limit farther from the modelled (closed) pose at 0
+        far = hi if abs(hi) >= abs(lo) else lo
+        return float(open_ratio) * far
+    return float(np.clip(stored.get(j.name, 0.0), min(lo, hi), max(lo, hi)))
+
+
+def _links(asset: Asset, values: dict[str, float]) -> tuple[dict[str, str], list[tuple[str, np.ndarray]],
+                                                           list[tuple[Joint, str, str]]]:
+    """Part -> link, links (parents first) with their motion, joints with their link pair."""
+    child_of = {j.child_part: j for j in asset.joints}
+    part_link = {p.name: (p.name if p.name in child_of else BASE_LINK) for p in asset.parts}
+    motion: dict[str, np.ndarray] = {BASE_LINK: np.eye(4)}
+    order = [BASE_LINK]
+    joints = []
+    pending = list(asset.joints)
+    while pending:
+        progressed = False
+        for j in list(pending):
+            parent = part_link.get(j.parent_part, BASE_LINK)
+            if parent not in motion:
+                continue
+            motion[j.child_part] = motion[parent] @ j.transform(values[j.name])
+            order.append(j.child_part)
+            joints.append((j, parent, j.child_part))
+            pending.remove(j)
+            progressed = True
+        if not progressed:  # a joint loop: the rest stay rigid with the base
+            for j in pending:
+                part_link[j.child_part] = BASE_LINK
+            break
+    return part_link, [(n, motion[n]) for n in order], joints
+
+
+def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
+                   relations: list[tuple[dict[str, Any], tuple, tuple]],
+                   touching: dict[str, list[str]], hulls: _HullCache) -> ObjectRecord:
+    asset = o.asset
+    values = {j.name: _joint_value(j, o.joints, opts.open_ratio) for j in asset.joints}
+    part_link, links, joints = _links(asset, values)
+    mine = [r for r in relations if r[1][0] == o.id or r[2][0] == o.id]
+    parts = []
+    for p in asset.parts:
+        prel = [r[0] for r in mine if (o.id, p.label) in (r[1], r[2])]
+        key = f"{o.id}:{p.name}"
+        parts.append(PartRecord(p.name, p.label, key, p.mesh, p.material, part_link[p.name],
+                                prel, touching.get(key, []), p, hulls))
+    density = float(asset.density)
+    link_recs = [LinkRecord(n, [p for p in parts if p.link == n], T, density, float(o.scale))
+                 for n, T in links]
+    use_settled = settled and o.settled_position is not None
+    R = o.settled_rotation if use_settled else o.rotation
+    t = o.settled_position if use_settled else o.position
+    return ObjectRecord(o.id, o.category, asset.asset_id, asset, float(o.scale),
+                        np.asarray(R, float), np.asarray(t, float), bool(o.fixed), o.support,
+                        density, parts, link_recs,
+                        [JointRecord(j, a, b, values[j.name]) for j, a, b in joints],
+                        [r[0] for r in mine])
+
+
+def _shell_pieces(scene: Scene, name: str,
+                  mesh: trimesh.Trimesh) -> list[tuple[np.ndarray, np.ndarray]]:
+    if name not in ("floor", "ceiling"):
+        return convex_pieces([mesh])[0]
+    from shapely.geometry import Polygon
+
+    room = scene.room
+    z0, z1 = float(mesh.bounds[0, 2]), float(mesh.bounds[1, 2])
+    outline = Polygon(room.footprint).buffer(room.wall_thickness, join_style="mitre")
+    if outline.convex_hull.area - outline.area <= 1e-9 * max(outline.area, 1.0):
+        rings = [np.asarray(outline.exterior.coords)[:-1]]
+    else:
+        v, f = trimesh.creation.triangulate_polygon(outline, engine="earcut")
+        rings = [v[tri] for tri in f]
+    prisms = [np.vstack([np.c_[r, np.full(len(r), z0)], np.c_[r, np.full(len(r), z1)]])
+              for r in rings]
+    return convex_pieces(prisms)[0]
+
+
+def walk_scene(scene: Scene, options: ExportOptions = ExportOptions()) -> SceneRecord:
+    """Walk ``scene`` into the records every exporter writes.
+
+    Parameters
+    ----------
+    scene : Scene
+    options : ExportOptions
+
+    Returns
+    -------
+    SceneRecord
+        Placed objects only (failed objects have no geometry); the room shell with the
+        ceiling last, or without it when ``options.ceiling`` is False.
+    """
+    settled = scene.settled if options.settled is None else bool(options.settled)
+    relations = _relation_rows(scene, settled)
+    touching: dict[str, list[str]] = {}
+    for c in scene.contacts or []:
+        touching.setdefault(c.a, []).append(c.b)
+        touching.setdefault(c.b, []).append(c.a)
+    hulls = _HullCache()
+    objects = [_object_record(o, settled, options, relations, touching, hulls)
+               for o in scene.placed if o.asset is not None]
+    shell = []
+    names = [n for n in scene.room.elements if n != "ceiling"]
+    if options.ceiling and "ceiling" in scene.room.elements:
+        names.append("ceiling")
+    for n in names:
+        el = scene.room.elements[n]
+        kind = "wall" if n.startswith("wall_") else n
+        shell.append(ShellRecord(n, f"room:{n}", el.mesh, SHELL_MATERIALS[kind],
+                                 _shell_pieces(scene, n, el.mesh)))
+    meta = {"name": scene.pag.name, "seed": int(scene.seed), "room": scene.pag.room.type,
+            "pose": "settled" if settled else "solved", "generator": "parse3d"}
+    return SceneRecord(scene.pag.name, settled, objects, shell, meta,
+                       None if options.friction is None else dict(options.friction))

@@ -1,0 +1,497 @@
+"""Exports to viewers and simulators, each checked by loading it in its consumer.
+
+Two example rooms are solved and settled once; every format of both is written once and read
+back by the library that users would open it with (trimesh, the Khronos glTF validator, pxr,
+MuJoCo, yourdfpy, SAPIEN's URDF loader). A small cabinet with a hinged door and a drawer,
+built here, checks that joints reach every format and put the door in the same place.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+import trimesh
+
+import parse3d
+from parse3d.assets.model import Asset, Joint, Material, finalize_asset, make_part
+from parse3d.cli import main
+from parse3d.export import ExportOptions, export_scene, to_mujoco, to_sapien, walk_scene
+from parse3d.export.gltf import Z_UP_TO_Y_UP
+from parse3d.geometry import shapes
+from parse3d.geometry.frames import make_transform, quat_to_matrix, rot_z
+from parse3d.pag import load_pag
+from parse3d.pag.model import PAG, Room
+from parse3d.physics.mujoco import settling_friction
+from parse3d.pipeline import PipelineOptions, run_pipeline
+from parse3d.scene.model import PlacedObject, Scene
+from parse3d.scene.shell import build_shell
+
+ROOT = Path(__file__).resolve().parents[1]
+VALIDATOR = ROOT / "tests" / "gltf_validator"
+FORMATS = ["glb", "usd", "mjcf", "urdf", "obj"]
+ROOMS = ["bathroom.yaml", "study.json"]
+
+
+def cabinet_asset() -> Asset:
+    """A cabinet: a body, a door on a vertical hinge at its left edge and a sliding drawer."""
+    wood = Material((0.6, 0.4, 0.25, 1.0), 0.6, 0.0, "wood")
+    w, d, h, t = 0.6, 0.4, 0.8, 0.02
+    body = make_part("body", "body", [
+        shapes.box((w, d, t), (0, 0, t / 2)), shapes.box((w, d, t), (0, 0, h - t / 2)),
+        shapes.box((t, d, h - 2 * t), (-w / 2 + t / 2, 0, h / 2)),
+        shapes.box((t, d, h - 2 * t), (w / 2 - t / 2, 0, h / 2)),
+        shapes.box((w - 2 * t, t, h - 2 * t), (0, -d / 2 + t / 2, h / 2))], wood)
+    door = make_part("door", "door", shapes.box((w, t, h / 2), (0, d / 2 + t / 2, 3 * h / 4)),
+                     Material((0.8, 0.2, 0.2, 1.0), 0.5, 0.0, "wood"))
+    drawer = make_part("drawer", "drawer",
+                       shapes.box((w - 2 * t, d - t, h / 2 - 2 * t), (0, t / 2, h / 4)),
+                       Material((0.2, 0.2, 0.8, 1.0), 0.5, 0.0, "wood"))
+    joints = [Joint("door_hinge", "revolute", "body", "door", (0, 0, 1), (-w / 2, d / 2 + t, 0),
+                    (0.0, 1.6)),
+              Joint("drawer_slide", "prismatic", "body", "drawer", (0, 1, 0), (0, 0, 0),
+                    (0.0, 0.3))]
+    asset = Asset("cabinet", "cabinet-test-0", [body, door, drawer], (0.5, 1.0), 500.0,
+                  joints=joints)
+    return finalize_asset(asset, internal=False)
+
+
+def cabinet_scene(door: float = 0.5, drawer: float = 0.1) -> Scene:
+    """Two cabinets sharing one asset: a scaled, turned, loose one with its door and drawer
+    ajar, and a fixed one with everything closed."""
+    room = Room("study", ((0.0, 0.0), (3.0, 0.0), (3.0, 3.0), (0.0, 3.0)), 2.5)
+    scene = Scene(PAG("cabinets", room), 0, build_shell(room))
+    asset = cabinet_asset()
+    scene.objects["cab"] = PlacedObject("cab", "cabinet", asset, 1.2, rot_z(0.4),
+                                        np.array([1.5, 1.5, 0.0]),
+                                        joints={"door_hinge": door, "drawer_slide": drawer})
+    scene.objects["cab2"] = PlacedObject("cab2", "cabinet", asset, 1.0, np.eye(3),
+                                         np.array([0.6, 0.6, 0.0]), fixed=True)
+    return scene
+
+
+def door_centre(scene: Scene, oid: str = "cab") -> np.ndarray:
+    """World centre of the door's bounding box at the scene's joint values."""
+    o = scene.objects[oid]
+    j = {j.name: j for j in o.asset.joints}["door_hinge"]
+    m = o.asset.part("door").mesh.copy()
+    m.apply_transform(o.transform() @ j.transform(o.joints.get("door_hinge", 0.0)))
+    return m.bounds.mean(axis=0)
+
+
+@pytest.fixture(scope="session")
+def cabinets(tmp_path_factory):
+    scene = cabinet_scene()
+    out = tmp_path_factory.mktemp("cabinets")
+    export_scene(scene, out, FORMATS, ExportOptions(friction=settling_friction()))
+    return scene, out
+
+
+@pytest.fixture(scope="session")
+def rooms(tmp_path_factory):
+    """Two example rooms, solved and settled, written as solve writes them."""
+    from parse3d.assets.registry import vocabulary
+
+    out = {}
+    for name in ROOMS:
+        d = tmp_path_factory.mktemp(Path(name).stem)
+        pag = load_pag(ROOT / "examples" / name, vocabulary=vocabulary())
+        scene = run_pipeline(pag, seed=0, out=d, options=PipelineOptions(preview=False))
+        assert scene.settled and scene.placed
+        out[Path(name).stem] = (scene, d)
+    return out
+
+
+@pytest.fixture(scope="session")
+def exported(rooms, tmp_path_factory):
+    """Every format of both rooms, read back from disk as a user would."""
+    out = {}
+    for name, (_, d) in rooms.items():
+        scene = parse3d.load_scene(d)
+        target = tmp_path_factory.mktemp(f"{name}-export")
+        files = export_scene(scene, target, FORMATS, ExportOptions(friction=settling_friction()))
+        out[name] = (scene, target, files)
+    return out
+
+
+def _world_part_meshes(scene: Scene) -> dict[str, trimesh.Trimesh]:
+    meshes = {}
+    for o in scene.placed:
+        for p in o.asset.parts:
+            meshes[f"{o.id}:{p.name}"] = o.part_mesh(p)
+    return meshes
+
+
+# -- glTF ---------------------------------------------------------------------------------
+
+def _glb_json(path: Path) -> dict:
+    data = path.read_bytes()
+    n = int.from_bytes(data[12:16], "little")
+    return json.loads(data[20:20 + n])
+
+
+@pytest.mark.parametrize("room", [Path(r).stem for r in ROOMS])
+def test_glb_has_object_and_part_nodes_with_extras(exported, room):
+    scene, out, _ = exported[room]
+    sc = trimesh.load(out / "scene.glb", force="scene")
+    back = np.linalg.inv(Z_UP_TO_Y_UP)
+    expected = _world_part_meshes(scene)
+    for o in scene.placed:
+        assert o.id in sc.graph.nodes
+        for p in o.asset.parts:
+            key = f"{o.id}:{p.name}"
+            T, geom = sc.graph[key]
+            m = sc.geometry[geom].copy()
+            m.apply_transform(back @ T)
+            assert np.allclose(m.bounds, expected[key].bounds, atol=1e-4), key
+            meta = sc.graph.transforms.edge_data[(o.id, key)]["metadata"]
+            assert meta["name"] == key and meta["object_id"] == o.id
+            assert meta["category"] == o.category and meta["asset_id"] == o.asset.asset_id
+            assert meta["label"] == p.label
+    for el in ("floor", "wall_0", "ceiling"):
+        assert f"room:{el}" in sc.graph.nodes
+    doc = _glb_json(out / "scene.glb")
+    roots = {doc["nodes"][i]["name"] for i in doc["scenes"][0]["nodes"]}
+    assert "room:ceiling" in roots and {o.id for o in scene.placed} <= roots
+    # a mesh per distinct (asset, part), not per object: shared assets are instanced
+    distinct = {(o.asset.asset_id, p.name) for o in scene.placed for p in o.asset.parts}
+    assert len(doc["meshes"]) == len(distinct) + len(scene.room.elements)
+    # relation summary: the desk's tabletop names the relations that use it
+    objs = {doc["nodes"][i]["name"]: doc["nodes"][i] for i in doc["scenes"][0]["nodes"]}
+    o = scene.placed[-1]
+    assert any(r["child"].split(":")[0].split("@")[0] == o.id
+               for r in objs[o.id]["extras"]["relations"])
+
+
+def test_solve_writes_the_structured_glb(rooms):
+    _, d = rooms["study"]
+    doc = _glb_json(d / "scene.glb")
+    names = {n["name"] for n in doc["nodes"]}
+    assert "desk" in names and "desk:tabletop" in names and "room:ceiling" in names
+
+
+def test_no_ceiling_leaves_the_ceiling_out(rooms, tmp_path):
+    scene, _ = rooms["bathroom"]
+    export_scene(scene, tmp_path, ["glb", "obj"], ExportOptions(ceiling=False))
+    names = {n["name"] for n in _glb_json(tmp_path / "scene.glb")["nodes"]}
+    assert "room:floor" in names and "room:ceiling" not in names
+    assert "o room:ceiling" not in (tmp_path / "scene.obj").read_text()
+
+
+def _validate(paths: list[Path]) -> list[dict]:
+    proc = subprocess.run(["node", str(VALIDATOR / "validate.mjs"), *map(str, paths)],
+                          capture_output=True, text=True, timeout=120, check=True)
+    return json.loads(proc.stdout)
+
+
+@pytest.mark.skipif(shutil.which("node") is None
+                    or not (VALIDATOR / "node_modules" / "gltf-validator").is_dir(),
+                    reason="needs node and `npm ci` in tests/gltf_validator")
+def test_gltf_validator_reports_no_errors(exported, cabinets):
+    paths = [out / "scene.glb" for _, out, _ in exported.values()] + [cabinets[1] / "scene.glb"]
+    reports = _validate(paths)
+    assert len(reports) == len(paths)
+    for r in reports:
+        assert r["issues"]["numErrors"] == 0, r["issues"]["messages"][:5]
+        assert r["issues"]["numWarnings"] == 0, r["issues"]["messages"][:5]
+
+
+# -- USD ----------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("room", [Path(r).stem for r in ROOMS])
+def test_usd_stage_has_bodies_colliders_and_metadata(exported, room):
+    from pxr import Usd, UsdGeom, UsdPhysics, UsdShade
+
+    scene, out, _ = exported[room]
+    stage = Usd.Stage.Open(str(out / "scene.usd"))
+    assert UsdGeom.GetStageUpAxis(stage) == UsdGeom.Tokens.z
+    assert UsdGeom.GetStageMetersPerUnit(stage) == 1.0
+    prims = list(stage.Traverse())
+    objects = [p for p in prims if p.GetParent().GetPath() == "/World/Objects"]
+    assert sorted(p.GetAttribute("parse3d:objectId").Get() for p in objects) == \
+        sorted(o.id for o in scene.placed)
+    bodies = [p for p in prims if p.HasAPI(UsdPhysics.RigidBodyAPI)]
+    assert len(bodies) == len(scene.placed)  # the example rooms have no articulations
+    rec = walk_scene(scene)
+    want = {o.id: o.mass for o in rec.objects}
+    for b in bodies:
+        assert UsdPhysics.MassAPI(b).GetMassAttr().Get() == pytest.approx(
+            want[b.GetAttribute("parse3d:objectId").Get()], rel=1e-5)
+    colliders = [p for p in prims if p.HasAPI(UsdPhysics.CollisionAPI)]
+    pieces = sum(len(p.pieces) for o in rec.objects for p in o.parts)
+    assert len(colliders) == pieces + sum(len(s.pieces) for s in rec.shell)
+    assert all(UsdPhysics.MeshCollisionAPI(c).GetApproximationAttr().Get() == "convexHull"
+               for c in colliders)
+    welds = [p for p in prims if p.IsA(UsdPhysics.FixedJoint)]
+    assert len(welds) == sum(o.fixed for o in scene.placed)
+    parts = [p for p in prims if p.GetAttribute("parse3d:partName").IsValid()]
+    keys = {p.GetAttribute("parse3d:partName").Get() for p in parts}
+    assert {f"{o.id}:{p.name}" for o in scene.placed for p in o.asset.parts} <= keys
+    assert "room:ceiling" in keys
+    visual = stage.GetPrimAtPath(str(parts[-1].GetPath()) + "/visual")
+    assert UsdShade.MaterialBindingAPI(visual).ComputeBoundMaterial()[0]
+    floor = stage.GetPrimAtPath("/World/Room/floor/collision/piece_0")
+    bound = UsdShade.MaterialBindingAPI(floor).ComputeBoundMaterial("physics")[0]
+    assert UsdPhysics.MaterialAPI(bound.GetPrim()).GetStaticFrictionAttr().Get() == \
+        pytest.approx(settling_friction()["room"])
+
+
+def test_usd_passes_the_usd_validators(exported, cabinets):
+    from pxr import Usd, UsdValidation
+
+    validators = UsdValidation.ValidationRegistry().GetOrLoadAllValidators()
+    assert len(validators) > 10
+    context = UsdValidation.ValidationContext(validators)
+    for path in (exported["study"][1] / "scene.usd", cabinets[1] / "scene.usd"):
+        errors = context.Validate(Usd.Stage.Open(str(path)))
+        assert [e.GetMessage() for e in errors] == []
+
+
+# -- MJCF ---------------------------------------------------------------------------------
+
+def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported):
+    import mujoco
+
+    scene, out, _ = exported["study"]
+    model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    assert model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC and model.opt.noslip_iterations == 3
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    ids = [o.id for o in scene.placed]
+    body = {i: mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, i) for i in ids}
+    assert min(body.values()) > 0
+    free = sum(1 for o in scene.placed if not o.fixed)
+    assert sum(model.jnt_type == mujoco.mjtJoint.mjJNT_FREE) == free
+    p0 = data.xpos.copy()
+    for _ in range(int(round(1.0 / model.opt.timestep))):
+        mujoco.mj_step(model, data)
+    moved = {i: float(np.linalg.norm(data.xpos[b] - p0[b])) for i, b in body.items()}
+    assert max(moved.values()) < 0.01, sorted(moved.items(), key=lambda kv: -kv[1])[:3]
+
+
+def test_mjcf_of_the_other_room_loads_with_colours(exported):
+    import mujoco
+
+    scene, out, _ = exported["bathroom"]
+    model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    o = scene.placed[0]
+    g = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, f"{o.id}:{o.asset.parts[0].name}")
+    assert np.allclose(model.geom_rgba[g], o.asset.parts[0].material.color, atol=1e-6)
+    assert model.geom_contype[g] == 0  # visual only
+    assert (out / "meshes").is_dir()
+
+
+# -- URDF ---------------------------------------------------------------------------------
+
+def test_urdf_loads_in_yourdfpy_and_sapien(exported):
+    import yourdfpy
+
+    from parse3d.export.sapien import load_urdf_scene
+
+    scene, out, _ = exported["bathroom"]
+    rows = json.loads((out / "urdf" / "scene.json").read_text())
+    assert [r["id"] for r in rows] == [o.id for o in scene.placed] + ["room"]
+    for r in rows[:4]:
+        u = yourdfpy.URDF.load(str(out / "urdf" / r["urdf"]), load_collision_meshes=True)
+        o = scene.objects.get(r["id"])
+        assert {lk for lk in u.link_map} == {p.name for p in o.asset.parts}
+        assert u.scene is not None and len(u.scene.geometry) == len(o.asset.parts)
+    sim = load_urdf_scene(out / "urdf", render=False)
+    mass = {o.id: o.mass for o in walk_scene(scene).objects}
+    for o in scene.placed:
+        if len(o.asset.parts) == 1:
+            entity = sim.actors[o.id]
+            assert np.allclose(entity.pose.p, o.settled_position, atol=1e-5)
+            continue
+        art = sim.articulations[o.id]
+        assert {lk.name for lk in art.links} == {p.name for p in o.asset.parts}
+        assert np.allclose(art.root_pose.p, o.settled_position, atol=1e-5)
+        assert sum(lk.mass for lk in art.links) == pytest.approx(mass[o.id], rel=1e-3, abs=0.01)
+    assert "room" in sim.articulations
+
+
+# -- OBJ ----------------------------------------------------------------------------------
+
+def test_obj_has_a_group_per_part(exported):
+    scene, out, _ = exported["study"]
+    sc = trimesh.load(out / "scene.obj", force="scene", group_material=False, split_groups=True)
+    expected = _world_part_meshes(scene)
+    assert set(expected) | {f"room:{n}" for n in scene.room.elements} == set(sc.geometry)
+    back = np.linalg.inv(Z_UP_TO_Y_UP[:3, :3])
+    for key, mesh in expected.items():
+        world = np.asarray(sc.geometry[key].vertices) @ back.T
+        assert np.allclose([world.min(0), world.max(0)], mesh.bounds, atol=1e-5), key
+    assert "newmtl" in (out / "scene.mtl").read_text()
+
+
+# -- joints -------------------------------------------------------------------------------
+
+def test_joints_put_the_door_in_the_same_place_in_every_format(cabinets):
+    import mujoco
+    import yourdfpy
+    from pxr import Usd, UsdGeom, UsdPhysics
+
+    scene, out = cabinets
+    want = door_centre(scene)
+    # glTF
+    sc = trimesh.load(out / "scene.glb", force="scene")
+    T, geom = sc.graph["cab:door"]
+    m = sc.geometry[geom].copy()
+    m.apply_transform(np.linalg.inv(Z_UP_TO_Y_UP) @ T)
+    assert np.allclose(m.bounds.mean(0), want, atol=1e-5)
+    # MJCF
+    model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    g = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "cab:door")
+    mid = model.geom_dataid[g]
+    v = model.mesh_vert[model.mesh_vertadr[mid]:model.mesh_vertadr[mid] + model.mesh_vertnum[mid]]
+    v = v @ data.geom_xmat[g].reshape(3, 3).T + data.geom_xpos[g]
+    assert np.allclose((v.min(0) + v.max(0)) / 2, want, atol=1e-5)
+    hinge = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, "cab:door_hinge")
+    assert model.jnt_type[hinge] == mujoco.mjtJoint.mjJNT_HINGE
+    assert np.allclose(model.jnt_range[hinge], [0.0, 1.6])
+    # URDF in yourdfpy, at the joint values of urdf/scene.json
+    rows = {r["id"]: r for r in json.loads((out / "urdf" / "scene.json").read_text())}
+    r = rows["cab"]
+    assert r["joints"] == {"door_hinge": 0.5, "drawer_slide": pytest.approx(0.12)}
+    u = yourdfpy.URDF.load(str(out / "urdf" / r["urdf"]))
+    assert u.joint_map["door_hinge"].type == "revolute"
+    assert u.joint_map["drawer_slide"].type == "prismatic"
+    assert u.joint_map["drawer_slide"].limit.upper == pytest.approx(0.36)
+    u.update_cfg(r["joints"])
+    vis = u.link_map["door"].visuals[0]
+    mesh = trimesh.load(out / "urdf" / vis.geometry.mesh.filename, force="mesh")
+    mesh.apply_scale(vis.geometry.mesh.scale[0])
+    world = make_transform(quat_to_matrix(r["quaternion"]), r["position"])
+    mesh.apply_transform(world @ u.get_transform("door", u.base_link) @ vis.origin)
+    assert np.allclose(mesh.bounds.mean(0), want, atol=1e-5)
+    # SAPIEN, through to_sapien
+    sim = to_sapien(scene, render=False)
+    art = sim.articulations["cab"]
+    assert np.allclose(art.get_qpos(), [0.5, 0.12], atol=1e-6)
+    link = next(lk for lk in art.links if lk.name == "door")
+    mesh = trimesh.load(out / "urdf" / vis.geometry.mesh.filename, force="mesh")
+    mesh.apply_scale(1.2)
+    pose = link.entity.pose
+    mesh.apply_transform(make_transform(quat_to_matrix(pose.q), pose.p) @ vis.origin)
+    assert np.allclose(mesh.bounds.mean(0), want, atol=1e-5)
+    # USD
+    stage = Usd.Stage.Open(str(out / "scene.usd"))
+    p = stage.GetPrimAtPath("/World/Objects/cab/Links/door/door/visual")
+    M = np.array(UsdGeom.XformCache().GetLocalToWorldTransform(p)).T
+    pts = np.array(UsdGeom.Mesh(p).GetPointsAttr().Get()) @ M[:3, :3].T + M[:3, 3]
+    assert np.allclose((pts.min(0) + pts.max(0)) / 2, want, atol=1e-5)
+    rev = UsdPhysics.RevoluteJoint(stage.GetPrimAtPath("/World/Objects/cab/Joints/door_hinge"))
+    assert rev.GetUpperLimitAttr().Get() == pytest.approx(np.degrees(1.6), rel=1e-6)
+    assert rev.GetBody1Rel().GetTargets()[0] == "/World/Objects/cab/Links/door"
+    assert stage.GetPrimAtPath("/World/Objects/cab").HasAPI(UsdPhysics.ArticulationRootAPI)
+    assert stage.GetPrimAtPath("/World/Objects/cab2/Joints/weld_to_world").IsA(
+        UsdPhysics.FixedJoint)
+
+
+def test_mujoco_locks_joints_by_default(cabinets):
+    import mujoco
+
+    scene, _ = cabinets
+    model, data = to_mujoco(scene, visual=False)
+    q0 = data.qpos.copy()
+    for _ in range(250):
+        mujoco.mj_step(model, data)
+    assert np.abs(data.qpos - q0).max() < 2e-3
+    hinge = model.jnt_qposadr[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT,
+                                                "cab:door_hinge")]
+    assert q0[hinge] == pytest.approx(0.5)
+
+
+def test_open_ratio_opens_every_joint_to_its_far_limit():
+    scene = cabinet_scene(door=0.0, drawer=0.0)
+    rec = walk_scene(scene, ExportOptions(open_ratio=1.0))
+    cab = next(o for o in rec.objects if o.id == "cab")
+    assert {j.name: j.value for j in cab.joints} == {"door_hinge": 1.6,
+                                                     "drawer_slide": pytest.approx(0.3)}
+    closed = walk_scene(scene)
+    assert {j.name: j.value for j in closed.objects[0].joints} == {"door_hinge": 0.0,
+                                                                   "drawer_slide": 0.0}
+
+
+# -- command line -------------------------------------------------------------------------
+
+def _cli(args: list[str]) -> int:
+    with pytest.raises(SystemExit) as e:
+        main(args)
+    return int(e.value.code or 0)
+
+
+def test_cli_exports_a_scene_folder(rooms, tmp_path, capsys):
+    _, d = rooms["bathroom"]
+    assert _cli(["export", str(d), "--format", "obj,urdf", "--out", str(tmp_path),
+                 "--no-ceiling", "--solved", "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["formats"] == ["obj", "urdf"]
+    assert (tmp_path / "scene.obj").is_file() and (tmp_path / "urdf" / "scene.json").is_file()
+    assert "room:ceiling" not in (tmp_path / "scene.obj").read_text()
+
+
+def test_cli_bad_input_exits_2(rooms, tmp_path, capsys):
+    _, d = rooms["bathroom"]
+    assert _cli(["export", str(tmp_path), "--format", "glb"]) == 2
+    assert "not a scene folder" in capsys.readouterr().err
+    assert _cli(["export", str(d), "--format", "fbx"]) == 2
+    assert "unknown format 'fbx'" in capsys.readouterr().err
+    blocker = tmp_path / "file"
+    blocker.write_text("not a folder")
+    assert _cli(["export", str(d), "--format", "glb", "--out", str(blocker / "x")]) == 2
+    assert "cannot create the output folder" in capsys.readouterr().err
+    assert blocker.read_text() == "not a folder"
+    unsettled = tmp_path / "unsettled"
+    unsettled.mkdir()
+    doc = json.loads((d / "scene.json").read_text())
+    doc["settled"] = False
+    (unsettled / "scene.json").write_text(json.dumps(doc))
+    assert _cli(["export", str(unsettled), "--format", "glb", "--settled"]) == 2
+    assert "was not settled" in capsys.readouterr().err
+
+
+def test_load_scene_reads_what_solve_wrote(rooms):
+    scene, d = rooms["study"]
+    back = parse3d.load_scene(d)
+    assert [o.id for o in back.placed] == [o.id for o in scene.placed]
+    assert back.settled
+
+
+# -- datasets -----------------------------------------------------------------------------
+
+def test_dataset_formats_are_written_and_part_of_its_identity(tmp_path, capsys):
+    from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
+    from parse3d.errors import InputError
+
+    pag = {"format": "pag/1", "name": "tiny",
+           "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]], "height": 2.6},
+           "objects": [{"id": "desk", "category": "desk"}, {"id": "mug", "category": "mug"}],
+           "relations": [{"relation": "ON", "child": "desk", "parent": "floor"},
+                         {"relation": "ON", "child": "mug", "parent": "desk:tabletop"}]}
+    (tmp_path / "pags").mkdir()
+    (tmp_path / "pags" / "tiny.json").write_text(json.dumps(pag))
+    source = resolve_pag_paths([tmp_path / "pags"])
+    cfg = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb", "mjcf"))
+    out = tmp_path / "ds"
+    report = build_dataset(cfg, out, workers=1)
+    assert report.ok == 1
+    scene = out / "scenes" / "00000"
+    assert (scene / "scene.glb").is_file() and (scene / "scene.xml").is_file()
+    assert any((scene / "meshes").glob("*.obj"))
+    assert json.loads((out / "dataset.json").read_text())["formats"] == ["glb", "mjcf"]
+    other = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb",))
+    with pytest.raises(InputError, match="formats"):
+        build_dataset(other, out, workers=1)
+    with pytest.raises(InputError, match="unknown format 'fbx'"):
+        BuildConfig(scenes=1, formats=("fbx",))
+    # a finished dataset gets more formats through parse3d export
+    assert _cli(["export", str(out), "--format", "obj"]) == 0
+    capsys.readouterr()
+    assert (scene / "scene.obj").is_file()
