@@ -144,7 +144,8 @@ def corpus(tmp_path_factory, request):
     import fcntl
 
     wanted = {item.callspec.params["case"]["id"] for item in request.session.items
-              if getattr(item, "callspec", None) and "case" in item.callspec.params}
+              if getattr(item, "callspec", None)
+              and isinstance(item.callspec.params.get("case"), dict)}
     selected = [c for c in CASES if c["id"] in wanted]
     if not os.environ.get("PYTEST_XDIST_WORKER"):
         return _run_corpus(tmp_path_factory.mktemp("hostile"), selected)

@@ -34,7 +34,7 @@ from ..errors import InputError, Problem
 from ..geometry.frames import quat_to_matrix
 from ..pag.refs import RefSyntaxError, parse_ref, wall_index
 from ..render.camera import Camera
-from ..scene.export import Z_UP_TO_Y_UP
+from ..export.gltf import Z_UP_TO_Y_UP
 from .vocab import (
     CAMERA_RELATIONS,
     CONTACT_RELATIONS,
