@@ -31,10 +31,10 @@ from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import Polygon, box
 
 from ..errors import InputError, Problem
+from ..export.gltf import Z_UP_TO_Y_UP
 from ..geometry.frames import quat_to_matrix
 from ..pag.refs import RefSyntaxError, parse_ref, wall_index
 from ..render.camera import Camera
-from ..export.gltf import Z_UP_TO_Y_UP
 from .vocab import (
     CAMERA_RELATIONS,
     CONTACT_RELATIONS,
