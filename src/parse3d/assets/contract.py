@@ -9,7 +9,11 @@
 * closed parts watertight;
 * convex pieces convex, inside the part's bbox (with a small margin) and covering the part:
   total piece volume within 10% of the part's volume;
-* size (largest extent) within the category's size range.
+* size (largest extent) within the category's size range;
+* joints (:func:`check_joints`): unique names, known types, existing and distinct parts, a tree
+  (each part moved by at most one joint, no cycles), unit axes, ordered limits with 0 (the
+  modelled, closed pose) at one end, the moved part attached to its parent at 0 and at both
+  limits (no flying parts), and opening moving it out of its parent, not into it.
 """
 
 from __future__ import annotations
@@ -17,11 +21,13 @@ from __future__ import annotations
 import numpy as np
 
 from ..relations import SURFACES
-from .model import Asset
+from .model import JOINT_TYPES, Asset
 
-__all__ = ["check_asset", "VOLUME_TOLERANCE"]
+__all__ = ["check_asset", "check_joints", "VOLUME_TOLERANCE", "ATTACH_TOLERANCE"]
 
 VOLUME_TOLERANCE = 0.10
+#: Largest gap, metres, between a moved part and the part it hangs on (hinge gaps, drawer runners).
+ATTACH_TOLERANCE = 0.006
 
 
 def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
@@ -101,4 +107,75 @@ def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
             if mv > 1e-9 and abs(vol - mv) > VOLUME_TOLERANCE * mv:
                 problems.append(f"part {p.name!r} pieces cover {vol / mv:.0%} of its volume "
                                 f"(must be within {VOLUME_TOLERANCE:.0%})")
+    problems += check_joints(asset)
+    return problems
+
+
+def _depth_inside(point: np.ndarray, bounds: np.ndarray) -> float:
+    """How far ``point`` lies inside the box ``bounds`` (negative outside), metres."""
+    return float(np.min(np.r_[point - bounds[0], bounds[1] - point]))
+
+
+def check_joints(asset: Asset) -> list[str]:
+    """Problems with ``asset.joints`` (an empty list for a sound or a rigid asset)."""
+    if not asset.joints:
+        return []
+    import trimesh
+
+    problems: list[str] = []
+    names = {p.name for p in asset.parts}
+    jn = [j.name for j in asset.joints]
+    if len(set(jn)) != len(jn):
+        problems.append(f"duplicate joint names: {sorted(n for n in set(jn) if jn.count(n) > 1)}")
+    seen_child: dict[str, str] = {}
+    for j in asset.joints:
+        where = f"joint {j.name!r}"
+        if j.type not in JOINT_TYPES:
+            problems.append(f"{where} has type {j.type!r}, expected one of {list(JOINT_TYPES)}")
+        for role, part in (("parent", j.parent_part), ("child", j.child_part)):
+            if part not in names:
+                problems.append(f"{where} names {role} part {part!r}, which the asset does not have")
+        if j.parent_part == j.child_part:
+            problems.append(f"{where} moves part {j.child_part!r} relative to itself")
+        if j.child_part in seen_child:
+            problems.append(f"part {j.child_part!r} is moved by two joints ({seen_child[j.child_part]!r}, {j.name!r})")
+        seen_child[j.child_part] = j.name
+        if abs(float(np.linalg.norm(j.axis)) - 1.0) > 1e-6:
+            problems.append(f"{where} axis {list(j.axis)} is not a unit vector")
+        lo, hi = j.limits
+        if lo > hi:
+            problems.append(f"{where} limits {list(j.limits)} are not ordered")
+        elif not (lo == 0.0 or hi == 0.0):
+            problems.append(f"{where} limits {list(j.limits)} do not have the closed pose 0 at one end")
+    if problems:
+        return problems
+    by_child = {j.child_part: j for j in asset.joints}
+    for j in asset.joints:  # a tree: walking up from any joint ends at a part no joint moves
+        up, steps = j.parent_part, 0
+        while up in by_child and steps <= len(asset.joints):
+            up, steps = by_child[up].parent_part, steps + 1
+        if steps > len(asset.joints):
+            problems.append(f"joint {j.name!r} is part of a cycle of joints")
+            return problems
+    meshes = {p.name: p.mesh for p in asset.parts}
+    for j in asset.joints:
+        values = [0.0] if j.is_mount else [0.0, *(v for v in j.limits if v != 0.0)]
+        closed_depth = None
+        for v in values:
+            T = asset.part_transforms({j.name: v})
+            child = meshes[j.child_part].copy()
+            child.apply_transform(T.get(j.child_part, np.eye(4)))
+            parent = meshes[j.parent_part].copy()
+            parent.apply_transform(T.get(j.parent_part, np.eye(4)))
+            cm = trimesh.collision.CollisionManager()
+            cm.add_object("parent", parent)
+            gap = cm.min_distance_single(child)
+            if gap > ATTACH_TOLERANCE:
+                problems.append(f"joint {j.name!r} at {v:.3f}: part {j.child_part!r} is {gap * 1000:.1f} mm away from "
+                                f"{j.parent_part!r} (must stay attached, within {ATTACH_TOLERANCE * 1000:.0f} mm)")
+            depth = _depth_inside(child.bounds.mean(axis=0), parent.bounds)
+            if closed_depth is None:
+                closed_depth = depth
+            elif depth > closed_depth + 1e-3:
+                problems.append(f"joint {j.name!r} at {v:.3f} moves {j.child_part!r} into {j.parent_part!r}, not out of it")
     return problems

@@ -176,7 +176,7 @@ def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
     w, h = x1 - x0, z1 - z0
     cx, cz = (x0 + x1) / 2, (z0 + z1) / 2
     ft, t = 0.02, 0.01
-    bw, bh = w - 0.03, h - 0.04
+    bw, bh = w - 0.022, h - 0.04  # 2 mm runner gap to the carcass sides
     yb = y_front - ft
     box = [S.box((bw, depth, t), center=(cx, yb - depth / 2, z0 + 0.01 + t / 2)),
            S.box((t, depth, bh), center=(cx - bw / 2 + t / 2, yb - depth / 2, z0 + 0.01 + bh / 2)),
