@@ -12,6 +12,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
+from ._kit import DRAWER_TRAVEL, mount, prismatic
 
 
 def _top(rng, w, d, h, thick, mat, round_top: bool = False) -> Part:
@@ -85,8 +86,12 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
             dw, dh = min(0.45, w * 0.35), 0.09
             x = w / 2 - leg - dw / 2 - 0.03
             front = S.box((dw, 0.02, dh), center=(x, d / 2 - 0.03, h_leg - dh / 2 - 0.005), bevel=0.003)
-            box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - dh / 2 - 0.005))
-            parts.append(make_part("drawer_0", "drawer", [front, box_], top_mat))
+            # the box runs just under the top, which carries its slides
+            box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - 0.003 - (dh - 0.02) / 2))
+            parts.append(make_part("drawer_0", "drawer", box_, top_mat))
+            parts.append(make_part("drawer_0_front", "drawer_front", front, top_mat))
+            parts += [prismatic("drawer_0_slide", "tabletop", "drawer_0", travel=DRAWER_TRAVEL * d * 0.6),
+                      mount("drawer_0", "drawer_0_front"), mount("drawer_0_front", "handle_0")]
             handle = S.tube([[x - 0.05, d / 2 - 0.02, h_leg - dh / 2], [x - 0.05, d / 2 + 0.005, h_leg - dh / 2],
                              [x + 0.05, d / 2 + 0.005, h_leg - dh / 2], [x + 0.05, d / 2 - 0.02, h_leg - dh / 2]],
                             0.005, sections=8)
@@ -94,7 +99,7 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
     return parts
 
 
-@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher"),
+@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_front"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
