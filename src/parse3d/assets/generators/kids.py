@@ -1,7 +1,7 @@
 """Children's things: picture books and toy blocks.
 
-A picture book lies closed on its back cover (like ``book``, whose labels it shares: ``cover``,
-``pages``, ``spine``); a set of toy blocks is a small stack or scatter of cubes, each its own
+A picture book stands like ``book`` and shares its labels (``front_cover``, ``back_cover``,
+``spine``, ``pages``), so the two can be candidates of one PAG object; a set of toy blocks is a small stack or scatter of cubes, each its own
 ``block`` part.
 """
 
@@ -16,19 +16,21 @@ from ..registry import register
 from ._kit import rot
 
 
-@register("picture_book", parts=("cover", "pages"), extra_parts=("spine",), size_range=(0.15, 0.36), density=650,
+@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), size_range=(0.15, 0.36), density=650,
           variants=("square", "landscape", "board_book"), placement="surface")
 def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
-    w, d = {"square": (rng.uniform(0.2, 0.26),) * 2, "landscape": (rng.uniform(0.28, 0.34), rng.uniform(0.2, 0.24)),
+    """Standing upright like ``book`` (same labels and frame): front cover at +Y, spine at -X."""
+    w, h = {"square": (rng.uniform(0.2, 0.26),) * 2, "landscape": (rng.uniform(0.28, 0.34), rng.uniform(0.2, 0.24)),
             "board_book": (rng.uniform(0.15, 0.18), rng.uniform(0.15, 0.18))}[variant]
-    t = rng.uniform(0.006, 0.012) if variant != "board_book" else rng.uniform(0.015, 0.025)
-    ct = 0.003 if variant != "board_book" else 0.004
+    t = rng.uniform(0.008, 0.014) if variant != "board_book" else rng.uniform(0.02, 0.03)
+    c = 0.003 if variant != "board_book" else 0.004
     art = M.paper(rng)
     pages = M.solid((0.96, 0.95, 0.9), "paper", 0.9)
-    return [make_part("cover_0", "cover", S.box((w, d, ct), center=(0, 0, ct / 2)), art),
-            make_part("pages", "pages", S.box((w - 0.006, d - 0.006, t), center=(0.001, 0, ct + t / 2)), pages),
-            make_part("cover_1", "cover", S.box((w, d, ct), center=(0, 0, 1.5 * ct + t)), art),
-            make_part("spine", "spine", S.box((ct, d, t + 2 * ct), center=(-w / 2 - ct / 2, 0, (t + 2 * ct) / 2)), art)]
+    return [make_part("front_cover", "front_cover", S.box((w - c, c, h), center=(c / 2, t / 2 - c / 2, h / 2)), art),
+            make_part("back_cover", "back_cover", S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2)), art),
+            make_part("spine", "spine", S.box((c, t, h), center=(-w / 2 + c / 2, 0, h / 2)), art),
+            make_part("pages", "pages", S.box((w - c - 0.003, t - 2 * c, h - 0.006), center=(-w / 2 + c + (w - c - 0.003) / 2, 0, h / 2)),
+                      pages)]
 
 
 @register("toy_blocks", parts=("block",), size_range=(0.08, 0.4), density=600, variants=("tower", "scatter", "pyramid"),
