@@ -19,8 +19,8 @@ _BLACK_KEYS = (1, 3, 6, 8, 10)  # semitones of an octave that are black keys
 
 
 def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivory, ebony) -> list[Part]:
-    """The keys: a white key bed (``keyboard``) and the raised black keys (``black_keys``,
-    also labelled ``keyboard``); ``z`` is the top of the white keys, ``y_front`` their front."""
+    """The keys: a white key bed (``keyboard``) and the raised black keys, each its own part
+    (``black_key_k``, label ``key``); ``z`` is the top of the white keys, ``y_front`` their front."""
     w = x1 - x0
     shapes = [S.box((w, depth, 0.025), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.0125), bevel=0.002)]
     n_white = 52
@@ -36,8 +36,7 @@ def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivor
             shapes.append(S.box((kw * 0.55, depth * 0.62, 0.012),
                                 center=(x, y_front - depth + depth * 0.31, z + 0.006)))
     white = make_part("keyboard", "keyboard", shapes[0], ivory)
-    keys = make_part("black_keys", "keyboard", shapes[1:], ebony)
-    return [white, keys]
+    return [white] + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
 
 
 def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -52,7 +51,7 @@ def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndar
     return ys, xs
 
 
-@register("piano", parts=("body", "keyboard", "lid"), extra_parts=("leg", "pedal", "music_rest", "prop"),
+@register("piano", parts=("body", "keyboard", "lid"), extra_parts=("leg", "pedal", "music_rest", "prop", "key"),
           size_range=(1.2, 2.9), density=700, variants=("upright", "grand", "baby_grand"))
 def piano(rng: np.random.Generator, variant: str) -> list[Part]:
     case = M.Material((0.03, 0.03, 0.035, 1.0), 0.15, 0.0, "wood") if rng.random() < 0.6 else M.wood(rng)
