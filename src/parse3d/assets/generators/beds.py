@@ -35,13 +35,18 @@ def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: fl
         bevel_box((rail_t, d, rail_h), center=(w / 2 + rail_t / 2, 0, zc), bevel=0.004),
         bevel_box((w + 2 * rail_t, rail_t, rail_h), center=(0, d / 2 + rail_t / 2, zc), bevel=0.004),
     ]
-    # the deck the mattress rests on, a little below the rail tops
-    rails.append(bevel_box((w, d, 0.02), center=(0, 0, z_top - 0.05)))
     return S.union(rails)
 
 
+def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Part]:
+    """Bed slats across the frame (``slat_k``, along X) whose tops are at ``z``."""
+    n = max(6, int(d / pitch))
+    return [make_part(f"slat_{k}", "slat", S.box((w, 0.07, 0.02), center=(0, -d / 2 + d * (k + 0.5) / n, z - 0.01)), mat)
+            for k in range(n)]
+
+
 @register("bed", parts=("frame", "mattress", "headboard"),
-          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle"),
+          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat"),
           size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
@@ -72,6 +77,8 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         rail_h = rng.uniform(0.14, 0.2)
         parts.append(make_part("frame", "frame", _bed_frame_rails(w, d, z_top, rail_h, rail_t),
                                wood))
+        # the slats the mattress rests on, a little below the rail tops
+        parts += _slats(w, d, z_top - 0.03, wood)
         top = rng.uniform(1.9, 2.2)
         ps = rng.uniform(0.07, 0.1)
         turned = rng.random() < 0.5
