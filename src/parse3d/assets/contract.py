@@ -12,8 +12,8 @@
 * size (largest extent) within the category's size range;
 * joints (:func:`check_joints`): unique names, known types, existing and distinct parts, a tree
   (each part moved by at most one joint, no cycles), unit axes, ordered limits with 0 (the
-  modelled, closed pose) at one end, the moved part attached to its parent at 0 and at both
-  limits (no flying parts), and opening moving it out of its parent, not into it.
+  modelled, closed pose) at one end, the moved part attached to the rest of the asset at 0 and
+  at both limits (no flying parts), and opening moving it out of its parent, not into it.
 """
 
 from __future__ import annotations
@@ -159,21 +159,43 @@ def check_joints(asset: Asset) -> list[str]:
             problems.append(f"joint {j.name!r} is part of a cycle of joints")
             return problems
     meshes = {p.name: p.mesh for p in asset.parts}
+    children: dict[str, list[str]] = {}
     for j in asset.joints:
+        children.setdefault(j.parent_part, []).append(j.child_part)
+
+    def subtree(part: str) -> set[str]:
+        out, todo = set(), [part]
+        while todo:
+            p = todo.pop()
+            if p not in out:
+                out.add(p)
+                todo += children.get(p, [])
+        return out
+
+    for j in asset.joints:
+        moving = subtree(j.child_part)
         values = [0.0] if j.is_mount else [0.0, *(v for v in j.limits if v != 0.0)]
         closed_depth = None
         for v in values:
             T = asset.part_transforms({j.name: v})
-            child = meshes[j.child_part].copy()
-            child.apply_transform(T.get(j.child_part, np.eye(4)))
-            parent = meshes[j.parent_part].copy()
-            parent.apply_transform(T.get(j.parent_part, np.eye(4)))
-            cm = trimesh.collision.CollisionManager()
-            cm.add_object("parent", parent)
-            gap = cm.min_distance_single(child)
+
+            def posed(name: str, T: dict = T):
+                m = meshes[name].copy()
+                m.apply_transform(T.get(name, np.eye(4)))
+                return m
+
+            child = posed(j.child_part)
+            parent = posed(j.parent_part)
+            # attached: the moved part touches the rest of the asset (its parent, or the runners
+            # and neighbours it rides on), within the tolerance
+            rest = trimesh.collision.CollisionManager()
+            for name in meshes:
+                if name not in moving:
+                    rest.add_object(name, posed(name))
+            gap = rest.min_distance_single(child)
             if gap > ATTACH_TOLERANCE:
                 problems.append(f"joint {j.name!r} at {v:.3f}: part {j.child_part!r} is {gap * 1000:.1f} mm away from "
-                                f"{j.parent_part!r} (must stay attached, within {ATTACH_TOLERANCE * 1000:.0f} mm)")
+                                f"the rest of the asset (must stay attached, within {ATTACH_TOLERANCE * 1000:.0f} mm)")
             depth = _depth_inside(child.bounds.mean(axis=0), parent.bounds)
             if closed_depth is None:
                 closed_depth = depth

@@ -146,14 +146,15 @@ def door_parts(name: str, *, x0: float, x1: float, z0: float, z1: float, y_back:
 def drawer_parts(name: str, *, x0: float, x1: float, z0: float, z1: float, y_front: float,
                  depth: float, thick: float, mat: Material, handle_mat: Material,
                  knob_style: bool = False, parent: str | None = "body") -> list[Part | Joint]:
-    """A drawer: a front panel (``<name>_front``, label ``drawer_front``) in
+    """A drawer: its front panel (``<name>``, label ``drawer``: it carries the drawer's front
+    face, as the whole drawer did before the box was a part of its own) in
     ``[x0, x1] x [z0, z1]`` whose front face is at ``y_front``, the open-topped box behind it
-    ``depth`` deep (``<name>``, label ``drawer``: its floor is the internal support for ``IN``),
-    and a pull (``<name>_handle``).
+    ``depth`` deep (``<name>_box``, label ``drawer_box``: its floor is the internal support for
+    ``IN``), and a pull (``<name>_handle``).
 
-    With a ``parent`` part name the drawer slides out along +Y on a prismatic joint
-    ``<name>_slide`` (0 closed, ``DRAWER_TRAVEL`` of its depth open) with the front and pull
-    mounted on the box.
+    With a ``parent`` part name the box slides out along +Y on a prismatic joint
+    ``<name>_slide`` (0 closed, ``DRAWER_TRAVEL`` of its depth open) with the front mounted on
+    the box and the pull on the front.
     """
     w, h = x1 - x0, z1 - z0
     cx, cz = (x0 + x1) / 2, (z0 + z1) / 2
@@ -169,16 +170,16 @@ def drawer_parts(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
         S.box((bw - 2 * t, t, bh - t), center=(cx, y_end + t / 2, bz0 + t + (bh - t) / 2)),
     ]
     front = S.box((w, thick, h), center=(cx, y_front - thick / 2, cz), bevel=min(0.004, thick / 4))
-    parts: list[Part | Joint] = [make_part(name, "drawer", walls, mat),
-                                 make_part(f"{name}_front", "drawer_front", front, mat)]
+    parts: list[Part | Joint] = [make_part(name, "drawer", front, mat),
+                                 make_part(f"{name}_box", "drawer_box", walls, mat)]
     if knob_style:
         pull = knob((cx, y_front, cz), 0.014, 0.025)
     else:
         pull = bar_pull((cx, y_front, cz), min(0.16, w * 0.5), vertical=False)
     parts.append(make_part(f"{name}_handle", "handle", pull, handle_mat))
     if parent is not None:
-        parts += [prismatic(f"{name}_slide", parent, name, travel=DRAWER_TRAVEL * depth),
-                  mount(name, f"{name}_front"), mount(f"{name}_front", f"{name}_handle")]
+        parts += [prismatic(f"{name}_slide", parent, f"{name}_box", travel=DRAWER_TRAVEL * depth),
+                  mount(f"{name}_box", name), mount(name, f"{name}_handle")]
     return parts
 
 

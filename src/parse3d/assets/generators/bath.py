@@ -176,7 +176,7 @@ def _holed_top(w: float, d: float, t: float, z: float, hole_w: float, hole_d: fl
 
 
 @register("bathroom_vanity", parts=("countertop", "basin", "faucet"),
-          extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_front", "hinge"),
+          extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_box", "hinge"),
           size_range=(0.7, 1.4), density=500, variants=("vessel", "undermount", "drawers"))
 def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 1.2)
@@ -202,14 +202,14 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(rows):
             zc = z + hs * (k + 0.5)
             dw_, dh_, ft, bd = w - 2 * t - 0.006, hs - 0.006, 0.018, d - 0.06 - 0.018
-            parts.append(make_part(f"drawer_{k}", "drawer", S.box((dw_ - 0.014, bd, dh_ - 0.02),
-                                                                  center=(0, y_face - ft - bd / 2, zc)), wood))
-            parts.append(make_part(f"drawer_{k}_front", "drawer_front",
+            parts.append(make_part(f"drawer_{k}", "drawer",
                                    bevel_box((dw_, ft, dh_), center=(0, y_face - ft / 2, zc), bevel=0.004), wood))
+            parts.append(make_part(f"drawer_{k}_box", "drawer_box", S.box((dw_ - 0.014, bd, dh_ - 0.02),
+                                                                          center=(0, y_face - ft - bd / 2, zc)), wood))
             parts.append(make_part(f"handle_{k}", "handle", bar_handle(
                 (0, y_face, zc + hs * 0.15), min(0.3, w * 0.35)), chrome))
-            parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}", travel=DRAWER_TRAVEL * bd),
-                      mount(f"drawer_{k}", f"drawer_{k}_front"), mount(f"drawer_{k}_front", f"handle_{k}")]
+            parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}_box", travel=DRAWER_TRAVEL * bd),
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}")]
     else:
         n = 1 if w < 0.75 else 2
         dw = (w - 2 * t) / n

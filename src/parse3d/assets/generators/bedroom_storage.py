@@ -31,9 +31,9 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
     """Drawers filling the front rectangle [x0, x1] x [z0, z1], row by row from the bottom.
 
     ``rows[i]`` is the number of drawers side by side in row ``i``; ``weights`` the relative
-    row heights. Each drawer is a closed box (``drawer_k``, label ``drawer``) behind its front
-    (``drawer_k_front``, label ``drawer_front``), sliding out of the ``body`` on a prismatic
-    joint with the front and the handle mounted on it.
+    row heights. Each drawer is its front (``drawer_k``, label ``drawer``) on a closed box
+    (``drawer_k_box``, label ``drawer_box``) sliding out of the ``body`` on a prismatic joint,
+    the front mounted on the box and the handle on the front.
     """
     weights = weights or [1.0] * len(rows)
     hs = np.asarray(weights) / np.sum(weights) * (z1 - z0)
@@ -48,14 +48,14 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
             dw, dh, ft = w - gap, h - gap, 0.018
             front = bevel_box((dw, ft, dh), center=(x, y_face - ft / 2, zc), bevel=0.004)
             bd = max(depth - ft, 0.05)
-            box_ = S.box((dw - 0.014, bd, dh - 0.02), center=(x, y_face - ft - bd / 2, zc))  # slide clearance
-            parts.append(make_part(f"drawer_{k}", "drawer", box_, mat))
-            parts.append(make_part(f"drawer_{k}_front", "drawer_front", front, mat))
+            box_ = S.box((dw - 0.006, bd, dh - 0.02), center=(x, y_face - ft - bd / 2, zc))  # slide clearance
+            parts.append(make_part(f"drawer_{k}", "drawer", front, mat))
+            parts.append(make_part(f"drawer_{k}_box", "drawer_box", box_, mat))
             pull_z = zc + (h * 0.2 if h > 0.22 else 0.0)
             parts.append(make_part(f"handle_{k}", "handle",
                                    _pull(rng, (x, y_face, pull_z), w, style), pull_mat))
-            parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}", travel=DRAWER_TRAVEL * bd),
-                      mount(f"drawer_{k}", f"drawer_{k}_front"), mount(f"drawer_{k}_front", f"handle_{k}")]
+            parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}_box", travel=DRAWER_TRAVEL * bd),
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}")]
             k += 1
         z += h
     return parts
@@ -81,7 +81,7 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 
 
 @register("nightstand", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_front"), size_range=(0.4, 0.75),
+          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box"), size_range=(0.4, 0.75),
           density=450, variants=("two_drawer", "drawer_shelf", "legged"))
 def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
@@ -121,7 +121,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("dresser", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "leg", "plinth", "drawer_front"), size_range=(0.75, 1.8), density=450,
+          extra_parts=("handle", "leg", "plinth", "drawer_box"), size_range=(0.75, 1.8), density=450,
           variants=("wide", "tall", "mixed"))
 def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":

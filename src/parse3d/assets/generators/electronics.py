@@ -166,8 +166,8 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
     for i in range(n_rows):
         y = d / 2 - margin - pitch * (i + 0.5)
         z = hf + (hb - hf) * (d / 2 - y) / d  # the top slopes up towards the back
-        # the main block key by key (the front row: modifiers and the space bar)
-        widths = [1.0] * 14 if i > 0 else [1.25, 1.25, 1.25, 6.0, 1.25, 1.25, 1.25, 1.25]
+        # the main block key by key, in groups of keycaps (the front row: modifiers and the space bar)
+        widths = [1.5] * 9 if i > 0 else [1.25, 1.25, 1.25, 6.0, 1.25, 1.25, 1.25, 1.25]
         unit = main_w / sum(widths)
         x = x_main - main_w / 2
         for kwid in widths:

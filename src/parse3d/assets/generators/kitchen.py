@@ -49,7 +49,7 @@ def _basin(x0: float, x1: float, y0: float, y1: float, z_top: float, depth: floa
 
 
 @register("kitchen_counter", parts=("countertop", "body", "door"),
-          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_front"), size_range=(0.85, 2.5),
+          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_box"), size_range=(0.85, 2.5),
           density=600, variants=("doors", "drawer_bank", "sink"))
 def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     n_bays = int(rng.integers(2, 5)) if variant == "drawer_bank" else int(rng.integers(1, 5))
@@ -230,7 +230,7 @@ def _ring_path(center, radius: float, n: int, *, plane: str = "xy") -> np.ndarra
 
 
 @register("stove", parts=("body", "cooktop", "burner"),
-          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_front"), size_range=(0.85, 1.15),
+          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box"), size_range=(0.85, 1.15),
           density=400, variants=("gas", "electric", "double_oven"))
 def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.5, 0.76), rng.uniform(0.6, 0.66)

@@ -1,9 +1,9 @@
 """Meeting rooms and offices: projectors and screens, conference phones, lecterns, desk
 organisers and filing cabinets.
 
-A filing cabinet's drawers are prismatic joints sliding out along +Y; each drawer is an open box
-(label ``drawer``, its floor an internal support for ``IN``) behind its own front panel
-(``drawer_front``), with the handle and label holder mounted on the front.
+A filing cabinet's drawers are prismatic joints sliding out along +Y; each drawer is its front
+panel (label ``drawer``) on an open box (``drawer_box``, its floor an internal support for
+``IN``), with the handle and label holder mounted on the front.
 """
 
 from __future__ import annotations
@@ -172,7 +172,8 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
 def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_front: float, depth: float,
                  mat: Material, handle_mat: Material, parent: str) -> list[Part | Joint]:
     """A drawer of a filing cabinet: front panel, open box, bar pull and label holder, sliding out
-    on a prismatic joint (the box is the joint's child; the rest is mounted on it)."""
+    on a prismatic joint (the box is the joint's child; the front is mounted on it, the pull and
+    the label holder on the front)."""
     w, h = x1 - x0, z1 - z0
     cx, cz = (x0 + x1) / 2, (z0 + z1) / 2
     ft, t = 0.02, 0.01
@@ -183,19 +184,19 @@ def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
            S.box((t, depth, bh), center=(cx + bw / 2 - t / 2, yb - depth / 2, z0 + 0.01 + bh / 2)),
            S.box((bw - 2 * t, t, bh), center=(cx, yb - depth + t / 2, z0 + 0.01 + bh / 2))]
     out: list[Part | Joint] = [
-        make_part(name, "drawer", box, mat),
-        make_part(f"{name}_front", "drawer_front", S.box((w, ft, h), center=(cx, y_front - ft / 2, cz), bevel=0.003), mat),
+        make_part(name, "drawer", S.box((w, ft, h), center=(cx, y_front - ft / 2, cz), bevel=0.003), mat),
+        make_part(f"{name}_box", "drawer_box", box, mat),
         make_part(f"{name}_handle", "handle", bar_pull((cx, y_front, cz + h * 0.15), min(0.16, w * 0.4), vertical=False),
                   handle_mat),
         make_part(f"{name}_label", "label_holder", S.box((0.08, 0.004, 0.04), center=(cx, y_front + 0.002, cz + h * 0.33)),
                   handle_mat),
-        prismatic(f"{name}_slide", parent, name, travel=DRAWER_TRAVEL * depth),
-        mount(name, f"{name}_front"), mount(f"{name}_front", f"{name}_handle"), mount(f"{name}_front", f"{name}_label"),
+        prismatic(f"{name}_slide", parent, f"{name}_box", travel=DRAWER_TRAVEL * depth),
+        mount(f"{name}_box", name), mount(name, f"{name}_handle"), mount(name, f"{name}_label"),
     ]
     return out
 
 
-@register("filing_cabinet", parts=("body", "drawer"), extra_parts=("drawer_front", "handle", "label_holder", "top_panel",
+@register("filing_cabinet", parts=("body", "drawer"), extra_parts=("drawer_box", "handle", "label_holder", "top_panel",
                                                                     "caster"),
           size_range=(0.45, 1.45), density=400, variants=("vertical", "lateral", "mobile_pedestal"))
 def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:

@@ -97,7 +97,7 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("storage_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "drawer", "glass", "hinge", "drawer_front"),
+@register("storage_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
 def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
@@ -128,7 +128,7 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
     return parts
 
 
-@register("tv_stand", parts=("top_panel", "body"), extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_front"),
+@register("tv_stand", parts=("top_panel", "body"), extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
 def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)

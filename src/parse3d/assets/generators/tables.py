@@ -52,7 +52,7 @@ def _aprons(w, d, h_leg, inset: float, leg: float, mat, *, sides: str = "xy") ->
     """Apron rails under the top between the legs: along x at the front and back (``x`` in
     ``sides``) and along y at the ends (``y``)."""
     ah = min(0.09, h_leg * 0.14)
-    t = 0.02
+    t = 0.03
     lx, ly = w - 2 * inset - leg, d - 2 * inset - leg
     out = []
     if "x" in sides:
@@ -115,10 +115,10 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
             front = S.box((dw, 0.02, dh), center=(x, d / 2 - 0.03, h_leg - dh / 2 - 0.005), bevel=0.003)
             # the box runs just under the top, which carries its slides
             box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - 0.003 - (dh - 0.02) / 2))
-            parts.append(make_part("drawer_0", "drawer", box_, top_mat))
-            parts.append(make_part("drawer_0_front", "drawer_front", front, top_mat))
-            parts += [prismatic("drawer_0_slide", "tabletop", "drawer_0", travel=DRAWER_TRAVEL * d * 0.6),
-                      mount("drawer_0", "drawer_0_front"), mount("drawer_0_front", "handle_0")]
+            parts.append(make_part("drawer_0", "drawer", front, top_mat))
+            parts.append(make_part("drawer_0_box", "drawer_box", box_, top_mat))
+            parts += [prismatic("drawer_0_slide", "tabletop", "drawer_0_box", travel=DRAWER_TRAVEL * d * 0.6),
+                      mount("drawer_0_box", "drawer_0"), mount("drawer_0", "handle_0")]
             handle = S.tube([[x - 0.05, d / 2 - 0.02, h_leg - dh / 2], [x - 0.05, d / 2 + 0.005, h_leg - dh / 2],
                              [x + 0.05, d / 2 + 0.005, h_leg - dh / 2], [x + 0.05, d / 2 - 0.02, h_leg - dh / 2]],
                             0.005, sections=8)
@@ -126,7 +126,7 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
     return parts
 
 
-@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_front", "apron", "foot"),
+@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
