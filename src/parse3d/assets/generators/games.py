@@ -141,9 +141,10 @@ def foosball_table(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"handle_{k}", "handle", S.cylinder(0.018, 0.09, center=(x, hy + side * 0.045, zr),
                                                                    axis=(0, 1, 0), sections=10), black()))
         m = [1, 2, 5, 3][k % 4]
-        men = [S.box((0.025, 0.02, 0.1), center=(x, side * 0.12 + (j - (m - 1) / 2) * (W - 0.1) / max(m, 2) * 0.8,
-                                                 zr - 0.03)) for j in range(m)]
-        parts.append(make_part(f"player_{k}", "player", men, red if side > 0 else blue))
+        for j in range(m):
+            y = side * 0.12 + (j - (m - 1) / 2) * (W - 0.1) / max(m, 2) * 0.8
+            parts.append(make_part(f"player_{k}_{j}", "player", S.box((0.025, 0.02, 0.1), center=(x, y, zr - 0.03)),
+                                   red if side > 0 else blue))
     return parts
 
 
