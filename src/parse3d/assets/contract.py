@@ -13,7 +13,7 @@
 * joints (:func:`check_joints`): unique names, known types, existing and distinct parts, a tree
   (each part moved by at most one joint, no cycles), unit axes, ordered limits with 0 (the
   modelled, closed pose) at one end, the moved part attached to the rest of the asset at 0 and
-  at both limits (no flying parts), and opening moving it out of its parent, not into it.
+  at both limits (no flying parts), and hinged parts opening out of the asset, not into it.
 """
 
 from __future__ import annotations
@@ -112,11 +112,6 @@ def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
     return problems
 
 
-def _depth_inside(point: np.ndarray, bounds: np.ndarray) -> float:
-    """How far ``point`` lies inside the box ``bounds`` (negative outside), metres."""
-    return float(np.min(np.r_[point - bounds[0], bounds[1] - point]))
-
-
 def check_joints(asset: Asset) -> list[str]:
     """Problems with ``asset.joints`` (an empty list for a sound or a rigid asset)."""
     if not asset.joints:
@@ -175,7 +170,9 @@ def check_joints(asset: Asset) -> list[str]:
     for j in asset.joints:
         moving = subtree(j.child_part)
         values = [0.0] if j.is_mount else [0.0, *(v for v in j.limits if v != 0.0)]
-        closed_depth = None
+        if j.type == "revolute" and not j.is_mount:  # the first tenth shows which way it swings
+            values.insert(1, 0.1 * j.at_ratio(1.0))
+        closed_reach = None
         for v in values:
             T = asset.part_transforms({j.name: v})
 
@@ -185,7 +182,6 @@ def check_joints(asset: Asset) -> list[str]:
                 return m
 
             child = posed(j.child_part)
-            parent = posed(j.parent_part)
             # attached: the moved part touches the rest of the asset (its parent, or the runners
             # and neighbours it rides on), within the tolerance
             rest = trimesh.collision.CollisionManager()
@@ -196,9 +192,19 @@ def check_joints(asset: Asset) -> list[str]:
             if gap > ATTACH_TOLERANCE:
                 problems.append(f"joint {j.name!r} at {v:.3f}: part {j.child_part!r} is {gap * 1000:.1f} mm away from "
                                 f"the rest of the asset (must stay attached, within {ATTACH_TOLERANCE * 1000:.0f} mm)")
-            depth = _depth_inside(child.bounds.mean(axis=0), parent.bounds)
-            if closed_depth is None:
-                closed_depth = depth
-            elif depth > closed_depth + 1e-3:
-                problems.append(f"joint {j.name!r} at {v:.3f} moves {j.child_part!r} into {j.parent_part!r}, not out of it")
+            # a hinged part opens out of the asset, never into it: its centre gets no closer to the
+            # centre of the rest of the asset than it is when closed (slides run along a face or
+            # out of it; the attachment check above keeps them on their runners)
+            if j.type != "revolute":
+                continue
+            rest_bounds = np.array([[np.inf] * 3, [-np.inf] * 3])
+            for name in meshes:
+                if name not in moving:
+                    b = posed(name).bounds
+                    rest_bounds = np.array([np.minimum(rest_bounds[0], b[0]), np.maximum(rest_bounds[1], b[1])])
+            reach = float(np.linalg.norm(child.bounds.mean(axis=0) - rest_bounds.mean(axis=0)))
+            if closed_reach is None:
+                closed_reach = reach
+            elif reach < closed_reach - 1e-3:
+                problems.append(f"joint {j.name!r} at {v:.3f} moves {j.child_part!r} into the asset, not out of it")
     return problems
