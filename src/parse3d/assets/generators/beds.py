@@ -132,7 +132,7 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("bunk_bed", parts=("frame", "mattress", "ladder"),
-          extra_parts=("guard_rail", "end_panel", "drawer", "handle"),
+          extra_parts=("guard_rail", "end_panel", "drawer", "handle", "slat"),
           size_range=(1.9, 2.4), density=300,
           variants=("front_ladder", "end_ladder", "trundle"))
 def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -151,8 +151,13 @@ def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     for z in (z_low, z_up):
         for y in ys:
             frame.append(bevel_box((length, rail_t, rail_h), center=(0, y, z - rail_h / 2)))
-        frame.append(S.box((length, width, 0.018), center=(0, 0, z - 0.05)))
     parts = [make_part("frame", "frame", frame, wood)]
+    # each bunk's mattress rests on slats across the width
+    n_slat = 12
+    for b, z in enumerate((z_low, z_up)):
+        parts += [make_part(f"slat_{b}_{k}", "slat", S.box((length / n_slat * 0.55, width, 0.018),
+                                                            center=(-length / 2 + length * (k + 0.5) / n_slat, 0, z - 0.05)),
+                            wood) for k in range(n_slat)]
     for i, x in enumerate(xs):
         panels = [bevel_box((0.03, width, h), center=(x, 0, z0 + h / 2), bevel=0.005)
                   for z0, h in ((z_low - 0.05, 0.3), (z_up - 0.05, top - z_up - 0.02))]

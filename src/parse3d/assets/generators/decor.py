@@ -275,6 +275,7 @@ def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
             base = np.array([np.cos(yaw), np.sin(yaw)]) * r_in * 0.4
             T = make_transform(rot_z(yaw) @ rot_y(tilt), (base[0], base[1], z0 - 0.03))
             leaves.append(leaf.apply(T))
-    parts.append(make_part("plant", "plant", leaves, green))
+    # every leaf or foliage clump is a part of its own, all labelled ``plant``
+    parts += [make_part(f"plant_{k}", "plant", leaf, green) for k, leaf in enumerate(leaves)]
     return parts
 

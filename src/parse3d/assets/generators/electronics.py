@@ -36,10 +36,20 @@ def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> 
     body.append(S.box((w * rng.uniform(0.4, 0.7), bump_d, h * rng.uniform(0.4, 0.6)),
                       center=(0, -depth / 2 - bump_d / 2, z0 + h * 0.45), bevel=0.004))
     screen = S.box((w - 2 * bezel, 0.002, h - 2 * bezel), center=(0, depth / 2 + 0.001, z0 + h / 2))
-    return [make_part("body", "body", body, mat), make_part("screen", "screen", screen, _screen_glass())]
+    parts = [make_part("body", "body", body[0], mat), make_part("back_cover", "back_cover", body[1], mat),
+             make_part("screen", "screen", screen, _screen_glass())]
+    # control buttons under the bottom edge at the right, and the power light in the bezel
+    dark = M.solid((0.05, 0.05, 0.06), "plastic", 0.5)
+    for k in range(4):
+        parts.append(make_part(f"button_{k}", "button", S.box((0.012, 0.008, 0.004), center=(w / 2 - 0.04 - 0.02 * k, depth / 2 - 0.006,
+                                                                                           z0 - 0.002)), dark))
+    parts.append(make_part("indicator", "indicator", S.cylinder(0.002, 0.002, center=(w / 2 - bezel / 2 - 0.01, depth / 2 + 0.001,
+                                                                                     z0 + bezel / 2), axis=(0, 1, 0), sections=8),
+                           M.solid((0.2, 0.8, 0.3), "plastic", 0.3)))
+    return parts
 
 
-@register("tv", parts=("screen", "stand"), extra_parts=("body",), size_range=(0.7, 1.75),
+@register("tv", parts=("screen", "stand"), extra_parts=("body", "back_cover", "button", "indicator"), size_range=(0.7, 1.75),
           density=350, variants=("feet", "pedestal"))
 def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.72, 1.65)
@@ -70,7 +80,7 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("monitor", parts=("screen", "stand", "base"), extra_parts=("body",), size_range=(0.45, 0.85),
+@register("monitor", parts=("screen", "stand", "base"), extra_parts=("body", "back_cover", "button", "indicator"), size_range=(0.45, 0.85),
           density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
 def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.48, 0.8)
