@@ -167,28 +167,30 @@ def check_joints(asset: Asset) -> list[str]:
                 todo += children.get(p, [])
         return out
 
+    # with every other joint closed, the parts a joint does not move stay where they are modelled:
+    # one collision manager over all parts serves every joint (its moving parts taken out)
+    everything = trimesh.collision.CollisionManager()
+    for name, m in meshes.items():
+        everything.add_object(name, m)
+    part_bounds = {name: np.asarray(m.bounds) for name, m in meshes.items()}
     for j in asset.joints:
         moving = subtree(j.child_part)
+        static = [n for n in meshes if n not in moving]
+        if not static:
+            continue
         values = [0.0] if j.is_mount else [0.0, *(v for v in j.limits if v != 0.0)]
         if j.type == "revolute" and not j.is_mount:  # the first tenth shows which way it swings
             values.insert(1, 0.1 * j.at_ratio(1.0))
+        rb = np.array([part_bounds[n] for n in static])
+        rest_centre = (rb[:, 0].min(axis=0) + rb[:, 1].max(axis=0)) / 2
+        for n in moving:
+            everything.remove_object(n)
         closed_reach = None
         for v in values:
-            T = asset.part_transforms({j.name: v})
-
-            def posed(name: str, T: dict = T):
-                m = meshes[name].copy()
-                m.apply_transform(T.get(name, np.eye(4)))
-                return m
-
-            child = posed(j.child_part)
+            T = asset.part_transforms({j.name: v}).get(j.child_part, np.eye(4))
             # attached: the moved part touches the rest of the asset (its parent, or the runners
             # and neighbours it rides on), within the tolerance
-            rest = trimesh.collision.CollisionManager()
-            for name in meshes:
-                if name not in moving:
-                    rest.add_object(name, posed(name))
-            gap = rest.min_distance_single(child)
+            gap = everything.min_distance_single(meshes[j.child_part], transform=T)
             if gap > ATTACH_TOLERANCE:
                 problems.append(f"joint {j.name!r} at {v:.3f}: part {j.child_part!r} is {gap * 1000:.1f} mm away from "
                                 f"the rest of the asset (must stay attached, within {ATTACH_TOLERANCE * 1000:.0f} mm)")
@@ -197,14 +199,12 @@ def check_joints(asset: Asset) -> list[str]:
             # out of it; the attachment check above keeps them on their runners)
             if j.type != "revolute":
                 continue
-            rest_bounds = np.array([[np.inf] * 3, [-np.inf] * 3])
-            for name in meshes:
-                if name not in moving:
-                    b = posed(name).bounds
-                    rest_bounds = np.array([np.minimum(rest_bounds[0], b[0]), np.maximum(rest_bounds[1], b[1])])
-            reach = float(np.linalg.norm(child.bounds.mean(axis=0) - rest_bounds.mean(axis=0)))
+            c = T[:3, :3] @ part_bounds[j.child_part].mean(axis=0) + T[:3, 3]
+            reach = float(np.linalg.norm(c - rest_centre))
             if closed_reach is None:
                 closed_reach = reach
             elif reach < closed_reach - 1e-3:
                 problems.append(f"joint {j.name!r} at {v:.3f} moves {j.child_part!r} into the asset, not out of it")
+        for n in moving:
+            everything.add_object(n, meshes[n])
     return problems
