@@ -19,16 +19,12 @@ _BLACK_KEYS = (1, 3, 6, 8, 10)  # semitones of an octave that are black keys
 
 
 def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivory, ebony) -> list[Part]:
-    """The keys: the key bed (``keyboard``) under the white keys (one part, ``white_keys``) and
-    the 36 black keys, each its own part (``black_key_k``); keys are labelled ``key``. ``z`` is
-    the top of the white keys, ``y_front`` their front."""
+    """The keys: the white key bed (``keyboard``) and the 36 raised black keys, each its own part
+    (``black_key_k``, label ``key``); ``z`` is the top of the white keys, ``y_front`` their front."""
     w = x1 - x0
-    # the key bed under the white keys
-    shapes = [S.box((w, depth, 0.015), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.0175), bevel=0.002)]
+    shapes = [S.box((w, depth, 0.025), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.0125), bevel=0.002)]
     n_white = 52
     kw = w / n_white
-    whites = [S.box((kw * 0.94, depth, 0.01), center=(x0 + kw * (i + 0.5), y_front - depth / 2, z - 0.005))
-              for i in range(n_white)]
     octave_w = 7 * kw
     for o in range(int(np.ceil(n_white / 7))):
         for s in _BLACK_KEYS:
@@ -39,10 +35,8 @@ def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivor
                 continue
             shapes.append(S.box((kw * 0.55, depth * 0.62, 0.012),
                                 center=(x, y_front - depth + depth * 0.31, z + 0.006)))
-    bed = make_part("keyboard", "keyboard", shapes[0], ivory)
-    # the white keys stay one part (52 more parts would cost seconds per asset)
-    return [bed, make_part("white_keys", "key", whites, ivory)] + [
-        make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
+    white = make_part("keyboard", "keyboard", shapes[0], ivory)
+    return [white] + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
 
 
 def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndarray]:
