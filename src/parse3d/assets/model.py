@@ -283,6 +283,36 @@ class Asset:
 
         return sorted(ps, key=key)
 
+    def mesh(self) -> trimesh.Trimesh:
+        """All parts as one mesh (a fresh copy)."""
+        return trimesh.util.concatenate([p.mesh for p in self.parts])
+
+    @property
+    def volume(self) -> float:
+        """Collision volume (sum of convex pieces), m^3."""
+        return float(sum(pc.volume for p in self.parts for pc in p.pieces))
+
+    @property
+    def mass(self) -> float:
+        return self.volume * self.density
+
+    def summary(self) -> dict[str, Any]:
+        return {
+            "category": self.category,
+            "asset_id": self.asset_id,
+            "extents": [round(float(x), 4) for x in self.extents],
+            "parts": [{"name": p.name, "label": p.label,
+                       "surfaces": {k: s.to_dict() for k, s in p.surfaces.items()},
+                       "pieces": len(p.pieces)} for p in self.parts],
+            "internal": [{"part": s.part, "surface": s.surface.to_dict(),
+                          "clearance": None if np.isinf(s.clearance) else round(s.clearance, 4),
+                          "depth": round(s.depth, 4)} for s in self.internal],
+            "size_range": list(self.size_range),
+            "density": self.density,
+            "meta": self.meta,
+            "joints": [j.to_dict() for j in self.joints],
+        }
+
     def part_transforms(self, values: dict[str, float] | None = None, *,
                         ratio: float | None = None) -> dict[str, np.ndarray]:
         """(4, 4) motion of every part moved by a joint, in the asset frame.
@@ -317,36 +347,6 @@ class Asset:
     def articulated(self) -> bool:
         """Whether any joint of the asset can move (mounts alone do not count)."""
         return any(not j.is_mount for j in self.joints)
-
-    def mesh(self) -> trimesh.Trimesh:
-        """All parts as one mesh (a fresh copy)."""
-        return trimesh.util.concatenate([p.mesh for p in self.parts])
-
-    @property
-    def volume(self) -> float:
-        """Collision volume (sum of convex pieces), m^3."""
-        return float(sum(pc.volume for p in self.parts for pc in p.pieces))
-
-    @property
-    def mass(self) -> float:
-        return self.volume * self.density
-
-    def summary(self) -> dict[str, Any]:
-        return {
-            "category": self.category,
-            "asset_id": self.asset_id,
-            "extents": [round(float(x), 4) for x in self.extents],
-            "parts": [{"name": p.name, "label": p.label,
-                       "surfaces": {k: s.to_dict() for k, s in p.surfaces.items()},
-                       "pieces": len(p.pieces)} for p in self.parts],
-            "internal": [{"part": s.part, "surface": s.surface.to_dict(),
-                          "clearance": None if np.isinf(s.clearance) else round(s.clearance, 4),
-                          "depth": round(s.depth, 4)} for s in self.internal],
-            "size_range": list(self.size_range),
-            "density": self.density,
-            "meta": self.meta,
-            "joints": [j.to_dict() for j in self.joints],
-        }
 
 
 def make_part(name: str, label: str, shapes: Shape | list[Shape], material: Material,
