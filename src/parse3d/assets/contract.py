@@ -9,7 +9,11 @@
 * closed parts watertight;
 * convex pieces convex, inside the part's bbox (with a small margin) and covering the part:
   total piece volume within 10% of the part's volume;
-* size (largest extent) within the category's size range.
+* size (largest extent) within the category's size range;
+* joints (:func:`check_joints`): unique names, known types, existing and distinct parts, a tree
+  (each part moved by at most one joint, no cycles), unit axes, ordered limits with 0 (the
+  modelled, closed pose) at one end, the moved part attached to the rest of the asset at 0 and
+  at both limits (no flying parts), and hinged parts opening out of the asset, not into it.
 """
 
 from __future__ import annotations
@@ -17,11 +21,14 @@ from __future__ import annotations
 import numpy as np
 
 from ..relations import SURFACES
-from .model import Asset
+from .model import JOINT_TYPES, Asset
 
-__all__ = ["check_asset", "VOLUME_TOLERANCE"]
+__all__ = ["check_asset", "check_joints", "VOLUME_TOLERANCE", "ATTACH_TOLERANCE"]
 
 VOLUME_TOLERANCE = 0.10
+#: Largest gap, metres, between a moved part and the part it hangs on: a drawer slide's side
+#: clearance is 12.7 mm (half an inch); hinged parts touch their hinge line.
+ATTACH_TOLERANCE = 0.015
 
 
 def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
@@ -101,4 +108,103 @@ def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
             if mv > 1e-9 and abs(vol - mv) > VOLUME_TOLERANCE * mv:
                 problems.append(f"part {p.name!r} pieces cover {vol / mv:.0%} of its volume "
                                 f"(must be within {VOLUME_TOLERANCE:.0%})")
+    problems += check_joints(asset)
+    return problems
+
+
+def check_joints(asset: Asset) -> list[str]:
+    """Problems with ``asset.joints`` (an empty list for a sound or a rigid asset)."""
+    if not asset.joints:
+        return []
+    import trimesh
+
+    problems: list[str] = []
+    names = {p.name for p in asset.parts}
+    jn = [j.name for j in asset.joints]
+    if len(set(jn)) != len(jn):
+        problems.append(f"duplicate joint names: {sorted(n for n in set(jn) if jn.count(n) > 1)}")
+    seen_child: dict[str, str] = {}
+    for j in asset.joints:
+        where = f"joint {j.name!r}"
+        if j.type not in JOINT_TYPES:
+            problems.append(f"{where} has type {j.type!r}, expected one of {list(JOINT_TYPES)}")
+        for role, part in (("parent", j.parent_part), ("child", j.child_part)):
+            if part not in names:
+                problems.append(f"{where} names {role} part {part!r}, which the asset does not have")
+        if j.parent_part == j.child_part:
+            problems.append(f"{where} moves part {j.child_part!r} relative to itself")
+        if j.child_part in seen_child:
+            problems.append(f"part {j.child_part!r} is moved by two joints ({seen_child[j.child_part]!r}, {j.name!r})")
+        seen_child[j.child_part] = j.name
+        if abs(float(np.linalg.norm(j.axis)) - 1.0) > 1e-6:
+            problems.append(f"{where} axis {list(j.axis)} is not a unit vector")
+        lo, hi = j.limits
+        if lo > hi:
+            problems.append(f"{where} limits {list(j.limits)} are not ordered")
+        elif not (lo == 0.0 or hi == 0.0):
+            problems.append(f"{where} limits {list(j.limits)} do not have the closed pose 0 at one end")
+    if problems:
+        return problems
+    by_child = {j.child_part: j for j in asset.joints}
+    for j in asset.joints:  # a tree: walking up from any joint ends at a part no joint moves
+        up, steps = j.parent_part, 0
+        while up in by_child and steps <= len(asset.joints):
+            up, steps = by_child[up].parent_part, steps + 1
+        if steps > len(asset.joints):
+            problems.append(f"joint {j.name!r} is part of a cycle of joints")
+            return problems
+    meshes = {p.name: p.mesh for p in asset.parts}
+    children: dict[str, list[str]] = {}
+    for j in asset.joints:
+        children.setdefault(j.parent_part, []).append(j.child_part)
+
+    def subtree(part: str) -> set[str]:
+        out, todo = set(), [part]
+        while todo:
+            p = todo.pop()
+            if p not in out:
+                out.add(p)
+                todo += children.get(p, [])
+        return out
+
+    # with every other joint closed, the parts a joint does not move stay where they are modelled:
+    # one collision manager over all parts serves every joint (its moving parts taken out)
+    everything = trimesh.collision.CollisionManager()
+    for name, m in meshes.items():
+        everything.add_object(name, m)
+    part_bounds = {name: np.asarray(m.bounds) for name, m in meshes.items()}
+    for j in asset.joints:
+        moving = subtree(j.child_part)
+        static = [n for n in meshes if n not in moving]
+        if not static:
+            continue
+        values = [0.0] if j.is_mount else [0.0, *(v for v in j.limits if v != 0.0)]
+        if j.type == "revolute" and not j.is_mount:  # the first tenth shows which way it swings
+            values.insert(1, 0.1 * j.at_ratio(1.0))
+        rb = np.array([part_bounds[n] for n in static])
+        rest_centre = (rb[:, 0].min(axis=0) + rb[:, 1].max(axis=0)) / 2
+        for n in moving:
+            everything.remove_object(n)
+        closed_reach = None
+        for v in values:
+            T = asset.part_transforms({j.name: v}).get(j.child_part, np.eye(4))
+            # attached: the moved part touches the rest of the asset (its parent, or the runners
+            # and neighbours it rides on), within the tolerance
+            gap = everything.min_distance_single(meshes[j.child_part], transform=T)
+            if gap > ATTACH_TOLERANCE:
+                problems.append(f"joint {j.name!r} at {v:.3f}: part {j.child_part!r} is {gap * 1000:.1f} mm away from "
+                                f"the rest of the asset (must stay attached, within {ATTACH_TOLERANCE * 1000:.0f} mm)")
+            # a hinged part opens out of the asset, never into it: its centre gets no closer to the
+            # centre of the rest of the asset than it is when closed (slides run along a face or
+            # out of it; the attachment check above keeps them on their runners)
+            if j.type != "revolute":
+                continue
+            c = T[:3, :3] @ part_bounds[j.child_part].mean(axis=0) + T[:3, 3]
+            reach = float(np.linalg.norm(c - rest_centre))
+            if closed_reach is None:
+                closed_reach = reach
+            elif reach < closed_reach - 1e-3:
+                problems.append(f"joint {j.name!r} at {v:.3f} moves {j.child_part!r} into the asset, not out of it")
+        for n in moving:
+            everything.add_object(n, meshes[n])
     return problems

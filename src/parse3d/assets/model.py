@@ -18,7 +18,7 @@ from ..geometry.shapes import Shape
 from ..geometry.surfaces import Surface, resolve_surfaces
 
 __all__ = ["Material", "Part", "InternalSurface", "Joint", "JOINT_TYPES", "Asset", "make_part",
-           "finalize_asset"]
+           "finalize_asset", "joint_order"]
 
 
 @dataclass(frozen=True)
@@ -172,6 +172,49 @@ class Joint:
         T[:3, 3] = origin - R @ origin
         return T
 
+    @property
+    def is_mount(self) -> bool:
+        """A joint with no travel (limits ``(0, 0)``) rigidly mounts a part on a moving one (the
+        handle on a door), so the part follows its parent when the parent's joint moves."""
+        return self.limits[0] == 0.0 and self.limits[1] == 0.0
+
+    def at_ratio(self, ratio: float) -> float:
+        """The joint value ``ratio`` of the way from closed (0) to fully open (the limit away
+        from 0), clipped to ``[0, 1]``."""
+        r = float(np.clip(ratio, 0.0, 1.0))
+        far = self.limits[1] if abs(self.limits[1]) >= abs(self.limits[0]) else self.limits[0]
+        return r * float(far)
+
+    def moved(self, offset) -> Joint:
+        """The same joint with its origin translated by ``offset`` (3,), metres."""
+        o = np.asarray(self.origin, float) + np.asarray(offset, float)
+        return Joint(self.name, self.type, self.parent_part, self.child_part, self.axis,
+                     tuple(float(x) for x in o), self.limits)
+
+
+def joint_order(joints: list[Joint]) -> list[Joint]:
+    """Joints ordered parents first, so that composing their motions in order poses a tree.
+
+    Joints form a tree over parts: each part is the child of at most one joint. A joint whose
+    parent part is itself moved by another joint comes after that joint.
+    """
+    by_child = {j.child_part: j for j in joints}
+    done: set[str] = set()
+    out: list[Joint] = []
+
+    def visit(j: Joint, stack: tuple[str, ...] = ()) -> None:
+        if j.name in done or j.name in stack:
+            return
+        up = by_child.get(j.parent_part)
+        if up is not None:
+            visit(up, stack + (j.name,))
+        done.add(j.name)
+        out.append(j)
+
+    for j in joints:
+        visit(j)
+    return out
+
 
 @dataclass
 class Asset:
@@ -277,6 +320,41 @@ class Asset:
             "joints": [j.to_dict() for j in self.joints],
         }
 
+    def part_transforms(self, values: dict[str, float] | None = None, *,
+                        ratio: float | None = None) -> dict[str, np.ndarray]:
+        """(4, 4) motion of every part moved by a joint, in the asset frame.
+
+        Parameters
+        ----------
+        values : dict of joint name to value, optional
+            Radians (revolute) or metres (prismatic); missing joints stay at 0 (closed).
+            Values are clipped into the joint's limits.
+        ratio : float in [0, 1], optional
+            Instead of ``values``: every joint opened this far (``Joint.at_ratio``).
+
+        Returns
+        -------
+        dict of part name to (4, 4) float
+            Only parts below a joint appear; a part mounted on a moved part (a handle on a
+            door) follows it. Apply ``T`` to the part's mesh in the asset frame.
+        """
+        values = values or {}
+        out: dict[str, np.ndarray] = {}
+        for j in joint_order(self.joints):
+            if ratio is not None:
+                v = j.at_ratio(ratio)
+            else:
+                v = float(np.clip(values.get(j.name, 0.0), j.limits[0], j.limits[1]))
+            T = j.transform(v)
+            up = out.get(j.parent_part)
+            out[j.child_part] = T if up is None else up @ T
+        return out
+
+    @property
+    def articulated(self) -> bool:
+        """Whether any joint of the asset can move (mounts alone do not count)."""
+        return any(not j.is_mount for j in self.joints)
+
 
 def make_part(name: str, label: str, shapes: Shape | list[Shape], material: Material,
               *, watertight: bool = True) -> Part:
@@ -302,6 +380,7 @@ def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True
                 p.mesh.apply_translation(shift)
                 for pc in p.pieces:
                     pc.apply_translation(shift)
+            asset.joints = [j.moved(shift) for j in asset.joints]
     for p in asset.parts:
         p.surfaces = resolve_surfaces(p.mesh)
     if internal:

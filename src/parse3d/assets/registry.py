@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..errors import AssetError
-from .model import Asset, Part, finalize_asset
+from .model import Asset, Joint, Part, finalize_asset
 
 __all__ = [
     "Category",
@@ -38,7 +38,9 @@ __all__ = [
     "category_rng",
 ]
 
-Generator = Callable[[np.random.Generator, str], list[Part]]
+#: ``generator(rng, variant)`` returns the asset's parts, each optionally followed by the
+#: :class:`~parse3d.assets.model.Joint` objects articulating them (doors, drawers, lids).
+Generator = Callable[[np.random.Generator, str], list[Part | Joint]]
 
 #: Typical supports of a category, used by templates and the demo (not a constraint).
 PLACEMENTS = ("floor", "surface", "wall", "ceiling", "inside")
@@ -97,8 +99,10 @@ def register(
 ) -> Callable[[Generator], Generator]:
     """Decorator registering a procedural generator for a category.
 
-    The generator takes ``(rng, variant)`` and returns the asset's parts in any placement; the
-    registry recentres the asset, resolves surfaces and finds internal support surfaces.
+    The generator takes ``(rng, variant)`` and returns the asset's parts in any placement, with
+    the joints that articulate them mixed in (a door's revolute joint after the door); the
+    registry recentres the asset (joints too), resolves surfaces and finds internal support
+    surfaces.
     """
     if placement not in PLACEMENTS:
         raise ValueError(f"placement must be one of {PLACEMENTS}")
@@ -178,14 +182,17 @@ def generate(category: str, seed: int = 0, variant: str | None = None) -> Asset:
         raise AssetError(f"category {category!r} has no variant {variant!r} "
                          f"(variants: {', '.join(cat.variants)})")
     try:
-        parts = cat.generator(rng, variant)
+        built = cat.generator(rng, variant)
     except Exception as e:  # a generator bug must say which asset broke
         raise AssetError(f"generating {category} (variant {variant}, seed {seed}) failed: {e}") from e
+    parts = [x for x in built if isinstance(x, Part)]
+    joints = [x for x in built if isinstance(x, Joint)]
     names = [p.name for p in parts]
     if len(set(names)) != len(names):
         raise AssetError(f"{category}: duplicate part names {names}")
     asset = Asset(category, f"{category}-{variant}-{seed}", parts, cat.size_range, cat.density,
-                  meta={"generator": "procedural", "variant": variant, "seed": int(seed)})
+                  meta={"generator": "procedural", "variant": variant, "seed": int(seed)},
+                  joints=joints)
     return finalize_asset(asset)
 
 

@@ -11,7 +11,8 @@ from __future__ import annotations
 import numpy as np
 
 from ...geometry import shapes as S
-from ..model import Material, Part, make_part
+from ..model import Joint, Material, Part, make_part
+from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 __all__ = ["bar_pull", "knob", "door_parts", "drawer_parts", "shelf_heights", "felt", "white",
            "black", "glass_pane"]
@@ -75,15 +76,21 @@ def knob(center, radius: float, depth: float, *, axis=(0.0, 1.0, 0.0)) -> S.Shap
 def door_parts(name: str, *, x0: float, x1: float, z0: float, z1: float, y_back: float,
                thick: float, mat: Material, handle_mat: Material, hinge_left: bool,
                style: str = "shaker", glass: Material | None = None,
-               handle_len: float = 0.12, handle_at: str = "side", label: str = "door") -> list[Part]:
+               handle_len: float = 0.12, handle_at: str = "side", label: str = "door",
+               parent: str | None = "body", hinge_mat: Material | None = None) -> list[Part | Joint]:
     """A hinged door filling ``[x0, x1] x [z0, z1]`` whose back face is at ``y_back``.
 
     ``style``: ``flat`` (slab), ``shaker`` (slab with a raised centre panel) or ``glass``
     (a frame around a glass pane; the pane is its own part ``<name>_glass`` labelled ``glass``).
     The handle (``<name>_handle``, label ``handle``) sits on the side away from the hinge
-    (``handle_at="side"``) or runs along the bottom or top edge (``"bottom"``: lift-up flaps;
-    ``"top"``: oven doors).
-    Returns the door part(s) followed by the handle part.
+    (``handle_at="side"``) or runs along the bottom or top edge (``"bottom"``: lift-up flaps
+    hinged at the top; ``"top"``: oven doors hinged at the bottom, dropping open).
+
+    With a ``parent`` part name the door is articulated: two hinge barrels (``<name>_hinge_k``,
+    label ``hinge``) on the hinge line at the door's back edge, a revolute joint
+    ``<name>_hinge`` (0 closed, opening outward by about 100 degrees; drop-down and lift-up
+    doors 90 degrees) and mounts carrying the handle and pane with the door.
+    Returns the door part(s), the handle part, then the hinges and joints.
     """
     w, h = x1 - x0, z1 - z0
     cx, cz = (x0 + x1) / 2, (z0 + z1) / 2
@@ -115,34 +122,64 @@ def door_parts(name: str, *, x0: float, x1: float, z0: float, z1: float, y_back:
         hx = (x1 - 0.045) if hinge_left else (x0 + 0.045)
         pull = bar_pull((hx, y_front, cz), min(handle_len, h * 0.6), vertical=True)
     parts.append(make_part(f"{name}_handle", "handle", pull, handle_mat))
-    return parts
+    if parent is None:
+        return parts
+    hm = hinge_mat or handle_mat
+    out: list[Part | Joint] = list(parts)
+    r = min(0.006, thick / 3)
+    if handle_at == "side":
+        xh = x0 if hinge_left else x1
+        out += hinge_parts(f"{name}_hinge", x=xh, y=y_back, z0=z0, z1=z1, mat=hm, radius=r,
+                           length=min(0.06, h * 0.15))
+        out.append(revolute(f"{name}_hinge", parent, name, axis=(0, 0, 1), origin=(xh, y_back, z0),
+                            opens=OPEN_DOOR if hinge_left else -OPEN_DOOR))
+    else:
+        zh = z0 if handle_at == "top" else z1
+        out += hinge_parts(f"{name}_hinge", x=zh, y=y_back, z0=x0, z1=x1, mat=hm, radius=r,
+                           length=min(0.06, w * 0.15), axis="x")
+        out.append(revolute(f"{name}_hinge", parent, name, axis=(1, 0, 0), origin=(x0, y_back, zh),
+                            opens=-np.pi / 2 if handle_at == "top" else np.pi / 2))
+    out += [mount(name, p.name) for p in parts[1:]]
+    return out
 
 
 def drawer_parts(name: str, *, x0: float, x1: float, z0: float, z1: float, y_front: float,
                  depth: float, thick: float, mat: Material, handle_mat: Material,
-                 knob_style: bool = False) -> list[Part]:
-    """A drawer: a front panel in ``[x0, x1] x [z0, z1]`` whose front face is at ``y_front``,
-    an open-topped box behind it ``depth`` deep, and a pull (``<name>_handle``)."""
+                 knob_style: bool = False, parent: str | None = "body") -> list[Part | Joint]:
+    """A drawer: its front panel (``<name>``, label ``drawer``: it carries the drawer's front
+    face, as the whole drawer did before the box was a part of its own) in
+    ``[x0, x1] x [z0, z1]`` whose front face is at ``y_front``, the open-topped box behind it
+    ``depth`` deep (``<name>_box``, label ``drawer_box``: its floor is the internal support for
+    ``IN``), and a pull (``<name>_handle``).
+
+    With a ``parent`` part name the box slides out along +Y on a prismatic joint
+    ``<name>_slide`` (0 closed, ``DRAWER_TRAVEL`` of its depth open) with the front mounted on
+    the box and the pull on the front.
+    """
     w, h = x1 - x0, z1 - z0
     cx, cz = (x0 + x1) / 2, (z0 + z1) / 2
     yb = y_front - thick
     t = 0.012
-    bw, bh = w - 0.04, h - 0.03
+    bw, bh = w - 0.02, h - 0.03
     bz0 = z0 + 0.01
     y_end = yb - depth
     walls = [
-        S.box((w, thick, h), center=(cx, y_front - thick / 2, cz), bevel=min(0.004, thick / 4)),
         S.box((bw, depth, t), center=(cx, yb - depth / 2, bz0 + t / 2)),
         S.box((t, depth, bh - t), center=(cx - bw / 2 + t / 2, yb - depth / 2, bz0 + t + (bh - t) / 2)),
         S.box((t, depth, bh - t), center=(cx + bw / 2 - t / 2, yb - depth / 2, bz0 + t + (bh - t) / 2)),
         S.box((bw - 2 * t, t, bh - t), center=(cx, y_end + t / 2, bz0 + t + (bh - t) / 2)),
     ]
-    parts = [make_part(name, "drawer", walls, mat)]
+    front = S.box((w, thick, h), center=(cx, y_front - thick / 2, cz), bevel=min(0.004, thick / 4))
+    parts: list[Part | Joint] = [make_part(name, "drawer", front, mat),
+                                 make_part(f"{name}_box", "drawer_box", walls, mat)]
     if knob_style:
         pull = knob((cx, y_front, cz), 0.014, 0.025)
     else:
         pull = bar_pull((cx, y_front, cz), min(0.16, w * 0.5), vertical=False)
     parts.append(make_part(f"{name}_handle", "handle", pull, handle_mat))
+    if parent is not None:
+        parts += [prismatic(f"{name}_slide", parent, f"{name}_box", travel=DRAWER_TRAVEL * depth),
+                  mount(f"{name}_box", name), mount(name, f"{name}_handle")]
     return parts
 
 

@@ -16,7 +16,8 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._bedbath_common import bar_handle, bevel_box, carcass, drawer_shape, knob, scaled
+from ._bedbath_common import bar_handle, bevel_box, carcass, knob, scaled
+from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 _WHITE = (0.96, 0.96, 0.95)
 
@@ -175,7 +176,7 @@ def _holed_top(w: float, d: float, t: float, z: float, hole_w: float, hole_d: fl
 
 
 @register("bathroom_vanity", parts=("countertop", "basin", "faucet"),
-          extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash"),
+          extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_box", "hinge"),
           size_range=(0.7, 1.4), density=500, variants=("vessel", "undermount", "drawers"))
 def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 1.2)
@@ -200,10 +201,15 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
         hs = (h - top_t - z) / rows
         for k in range(rows):
             zc = z + hs * (k + 0.5)
-            parts.append(make_part(f"drawer_{k}", "drawer", drawer_shape(
-                0, zc, w - 2 * t - 0.006, hs - 0.006, y_face, d - 0.06), wood))
+            dw_, dh_, ft, bd = w - 2 * t - 0.006, hs - 0.006, 0.018, d - 0.06 - 0.018
+            parts.append(make_part(f"drawer_{k}", "drawer",
+                                   bevel_box((dw_, ft, dh_), center=(0, y_face - ft / 2, zc), bevel=0.004), wood))
+            parts.append(make_part(f"drawer_{k}_box", "drawer_box", S.box((dw_ - 0.014, bd, dh_ - 0.02),
+                                                                          center=(0, y_face - ft - bd / 2, zc)), wood))
             parts.append(make_part(f"handle_{k}", "handle", bar_handle(
                 (0, y_face, zc + hs * 0.15), min(0.3, w * 0.35)), chrome))
+            parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}_box", travel=DRAWER_TRAVEL * bd),
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}")]
     else:
         n = 1 if w < 0.75 else 2
         dw = (w - 2 * t) / n
@@ -213,11 +219,17 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
             door = bevel_box((dw - 0.005, 0.018, dz1 - dz0),
                              center=(x, y_face - 0.009, (dz0 + dz1) / 2), bevel=0.004)
             parts.append(make_part(f"door_{i}", "door", door, wood))
-            hx = x + (dw / 2 - 0.05) * (1 if (n == 2 and i == 0) else -1)
+            side = 1 if (n == 2 and i == 0) else -1
+            hx = x + (dw / 2 - 0.05) * side
             parts.append(make_part(f"handle_{i}", "handle",
                                    knob((hx, y_face, dz1 - 0.08)) if rng.random() < 0.3 else
                                    bar_handle((hx, y_face, dz1 - 0.12), 0.12, vertical=True),
                                    chrome))
+            xh = x - side * (dw - 0.005) / 2  # hinged on the edge away from the handle
+            parts += hinge_parts(f"door_{i}_hinge", x=xh, y=y_face - 0.018, z0=dz0, z1=dz1, mat=chrome)
+            parts += [revolute(f"door_{i}_hinge", "body", f"door_{i}", axis=(0, 0, 1), origin=(xh, y_face - 0.018, dz0),
+                               opens=OPEN_DOOR if side == 1 else -OPEN_DOOR),
+                      mount(f"door_{i}", f"handle_{i}")]
     ct_w, ct_d = w + 0.02, d + 0.02
     basin_y = 0.03
     rb = min(0.2, w * 0.3, d * 0.38)

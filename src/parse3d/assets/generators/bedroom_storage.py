@@ -12,9 +12,10 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Material, Part, make_part
+from ..model import Joint, Material, Part, make_part
 from ..registry import register
-from ._bedbath_common import bar_handle, bevel_box, carcass, drawer_shape, knob
+from ._bedbath_common import bar_handle, bevel_box, carcass, knob
+from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 
 def _pull(rng: np.random.Generator, center, width: float, style: str) -> S.Shape:
@@ -26,15 +27,17 @@ def _pull(rng: np.random.Generator, center, width: float, style: str) -> S.Shape
 def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z1: float,
                  rows: list[int], y_face: float, depth: float, mat: Material,
                  pull_mat: Material, style: str, start: int = 0, gap: float = 0.006,
-                 weights: list[float] | None = None) -> list[Part]:
+                 weights: list[float] | None = None) -> list[Part | Joint]:
     """Drawers filling the front rectangle [x0, x1] x [z0, z1], row by row from the bottom.
 
     ``rows[i]`` is the number of drawers side by side in row ``i``; ``weights`` the relative
-    row heights.
+    row heights. Each drawer is its front (``drawer_k``, label ``drawer``) on a closed box
+    (``drawer_k_box``, label ``drawer_box``) sliding out of the ``body`` on a prismatic joint,
+    the front mounted on the box and the handle on the front.
     """
     weights = weights or [1.0] * len(rows)
     hs = np.asarray(weights) / np.sum(weights) * (z1 - z0)
-    parts: list[Part] = []
+    parts: list[Part | Joint] = []
     k = start
     z = z0
     for n, h in zip(rows, hs, strict=True):
@@ -42,11 +45,17 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
         for j in range(n):
             x = x0 + w * (j + 0.5)
             zc = z + h / 2
-            shape = drawer_shape(x, zc, w - gap, h - gap, y_face, depth)
-            parts.append(make_part(f"drawer_{k}", "drawer", shape, mat))
+            dw, dh, ft = w - gap, h - gap, 0.018
+            front = bevel_box((dw, ft, dh), center=(x, y_face - ft / 2, zc), bevel=0.004)
+            bd = max(depth - ft, 0.05)
+            box_ = S.box((dw - 0.006, bd, dh - 0.02), center=(x, y_face - ft - bd / 2, zc))  # slide clearance
+            parts.append(make_part(f"drawer_{k}", "drawer", front, mat))
+            parts.append(make_part(f"drawer_{k}_box", "drawer_box", box_, mat))
             pull_z = zc + (h * 0.2 if h > 0.22 else 0.0)
             parts.append(make_part(f"handle_{k}", "handle",
                                    _pull(rng, (x, y_face, pull_z), w, style), pull_mat))
+            parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}_box", travel=DRAWER_TRAVEL * bd),
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}")]
             k += 1
         z += h
     return parts
@@ -72,9 +81,9 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 
 
 @register("nightstand", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "shelf", "leg", "plinth"), size_range=(0.4, 0.75),
+          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box"), size_range=(0.4, 0.75),
           density=450, variants=("two_drawer", "drawer_shelf", "legged"))
-def nightstand(rng: np.random.Generator, variant: str) -> list[Part]:
+def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
     d = rng.uniform(0.35, 0.45)
     h = rng.uniform(0.5, 0.66)
@@ -112,9 +121,9 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("dresser", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "leg", "plinth"), size_range=(0.75, 1.8), density=450,
+          extra_parts=("handle", "leg", "plinth", "drawer_box"), size_range=(0.75, 1.8), density=450,
           variants=("wide", "tall", "mixed"))
-def dresser(rng: np.random.Generator, variant: str) -> list[Part]:
+def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":
         w, h = rng.uniform(0.7, 0.95), rng.uniform(1.1, 1.35)
         rows = [1] * int(rng.integers(5, 7))
@@ -149,9 +158,9 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth"),
+@register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track"),
           size_range=(1.7, 2.3), density=300, variants=("two_door", "three_door", "sliding"))
-def wardrobe(rng: np.random.Generator, variant: str) -> list[Part]:
+def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n_doors = {"two_door": 2, "three_door": 3, "sliding": 2}[variant]
     w = {"two_door": rng.uniform(0.9, 1.2), "three_door": rng.uniform(1.35, 1.75),
          "sliding": rng.uniform(1.5, 2.0)}[variant]
@@ -202,6 +211,13 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"handle_{i}", "handle", bar_handle(
                 (hx, y + door_t / 2, (dz0 + dz1) / 2), 0.35, vertical=True, standoff=0.02),
                 pull_mat))
+            # the back door slides right, the front one left, each along its own track
+            parts += [prismatic(f"door_{i}_slide", "track", f"door_{i}", travel=w / 2 - overlap,
+                                axis=(1.0, 0.0, 0.0) if i == 0 else (-1.0, 0.0, 0.0)),
+                      mount(f"door_{i}", f"handle_{i}")]
+        parts.append(make_part("track", "track", S.box((w, 2 * door_t + 0.004, 0.004),
+                                                       center=(0, y_front + door_t + 0.002, dz1 + 0.002)),
+                               pull_mat))
     else:
         gap = 0.004
         dw = w / n_doors
@@ -216,4 +232,11 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"handle_{i}", "handle", bar_handle(
                 (hx, y_front + door_t, (dz0 + dz1) / 2 + 0.05), 0.3, vertical=True),
                 pull_mat))
+            # hinged on the edge away from the handle, opening outward
+            xh = x - side * (dw - gap) / 2
+            parts += hinge_parts(f"door_{i}_hinge", x=xh, y=y_front, z0=dz0, z1=dz1, mat=pull_mat, n=3,
+                                 radius=0.006, length=0.06)
+            parts += [revolute(f"door_{i}_hinge", "body", f"door_{i}", axis=(0, 0, 1), origin=(xh, y_front, dz0),
+                               opens=OPEN_DOOR if side == 1 else -OPEN_DOOR),
+                      mount(f"door_{i}", f"handle_{i}")]
     return parts

@@ -35,13 +35,18 @@ def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: fl
         bevel_box((rail_t, d, rail_h), center=(w / 2 + rail_t / 2, 0, zc), bevel=0.004),
         bevel_box((w + 2 * rail_t, rail_t, rail_h), center=(0, d / 2 + rail_t / 2, zc), bevel=0.004),
     ]
-    # the deck the mattress rests on, a little below the rail tops
-    rails.append(bevel_box((w, d, 0.02), center=(0, 0, z_top - 0.05)))
     return S.union(rails)
 
 
+def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Part]:
+    """Bed slats across the frame (``slat_k``, along X) whose tops are at ``z``."""
+    n = max(6, int(d / pitch))
+    return [make_part(f"slat_{k}", "slat", S.box((w, 0.07, 0.02), center=(0, -d / 2 + d * (k + 0.5) / n, z - 0.01)), mat)
+            for k in range(n)]
+
+
 @register("bed", parts=("frame", "mattress", "headboard"),
-          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle"),
+          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat"),
           size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
@@ -72,6 +77,8 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         rail_h = rng.uniform(0.14, 0.2)
         parts.append(make_part("frame", "frame", _bed_frame_rails(w, d, z_top, rail_h, rail_t),
                                wood))
+        # the slats the mattress rests on, a little below the rail tops
+        parts += _slats(w, d, z_top - 0.03, wood)
         top = rng.uniform(1.9, 2.2)
         ps = rng.uniform(0.07, 0.1)
         turned = rng.random() < 0.5
@@ -125,7 +132,7 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("bunk_bed", parts=("frame", "mattress", "ladder"),
-          extra_parts=("guard_rail", "end_panel", "drawer", "handle"),
+          extra_parts=("guard_rail", "end_panel", "drawer", "handle", "slat"),
           size_range=(1.9, 2.4), density=300,
           variants=("front_ladder", "end_ladder", "trundle"))
 def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -144,8 +151,13 @@ def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     for z in (z_low, z_up):
         for y in ys:
             frame.append(bevel_box((length, rail_t, rail_h), center=(0, y, z - rail_h / 2)))
-        frame.append(S.box((length, width, 0.018), center=(0, 0, z - 0.05)))
     parts = [make_part("frame", "frame", frame, wood)]
+    # each bunk's mattress rests on slats across the width
+    n_slat = 12
+    for b, z in enumerate((z_low, z_up)):
+        parts += [make_part(f"slat_{b}_{k}", "slat", S.box((length / n_slat * 0.55, width, 0.018),
+                                                            center=(-length / 2 + length * (k + 0.5) / n_slat, 0, z - 0.05)),
+                            wood) for k in range(n_slat)]
     for i, x in enumerate(xs):
         panels = [bevel_box((0.03, width, h), center=(x, 0, z0 + h / 2), bevel=0.005)
                   for z0, h in ((z_low - 0.05, 0.3), (z_up - 0.05, top - z_up - 0.02))]

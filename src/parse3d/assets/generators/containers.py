@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import arc, open_box, ring, shell
+from ._kit import OPEN_DOOR, revolute
 
 
 def _wicker(rng: np.random.Generator) -> Material:
@@ -109,6 +110,8 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
         lid += [S.box((st, td + 2 * ov - 2 * st, skirt),
                       center=(s * (tw / 2 + ov - st / 2), 0, h - skirt / 2)) for s in (1, -1)]
     parts.append(make_part("lid", "lid", lid, lid_mat))
+    # the lid lifts on its back edge (the box's hinge line or, for a loose lid, where it pivots)
+    parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -(td / 2 + ov), h), opens=OPEN_DOOR))
     if variant != "cardboard":
         # a grip on each side (x), below the lid
         for i, sx in enumerate((1, -1)):

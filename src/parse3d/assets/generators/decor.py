@@ -157,7 +157,7 @@ def _hands(rng, r_face: float, y: float, cz: float) -> Part:
     return make_part("hands", "hand", hands, dark)
 
 
-def _ticks(r: float, y: float, cz: float) -> Part:
+def _ticks(r: float, y: float, cz: float) -> list[Part]:
     marks = []
     for k in range(12):
         a = 2 * np.pi * k / 12
@@ -165,7 +165,7 @@ def _ticks(r: float, y: float, cz: float) -> Part:
         c = (r * 0.9 - L / 2) * np.array([-np.sin(a), np.cos(a)])
         marks.append(S.box((0.006 if k % 3 == 0 else 0.004, 0.0015, L),
                            center=(c[0], y + 0.00075, cz + c[1]), R=rot_y(-a)))
-    return make_part("markers", "marker", marks, M.solid((0.1, 0.1, 0.1), "plastic"))
+    return [make_part(f"marker_{k}", "marker", m, M.solid((0.1, 0.1, 0.1), "plastic")) for k, m in enumerate(marks)]
 
 
 @register("wall_clock", parts=("body", "face"), extra_parts=("hand", "marker"),
@@ -191,7 +191,7 @@ def wall_clock(rng: np.random.Generator, variant: str) -> list[Part]:
         face = S.box((a - 2 * rim, face_y - back, a - 2 * rim), center=(0, (face_y + back) / 2, a / 2))
         r_face, cz = a / 2 - rim, a / 2
     parts = [make_part("body", "body", body, body_mat), make_part("face", "face", face, face_mat),
-             _ticks(r_face, face_y, cz), _hands(rng, r_face, face_y, cz)]
+             *_ticks(r_face, face_y, cz), _hands(rng, r_face, face_y, cz)]
     return parts
 
 
@@ -275,6 +275,7 @@ def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
             base = np.array([np.cos(yaw), np.sin(yaw)]) * r_in * 0.4
             T = make_transform(rot_z(yaw) @ rot_y(tilt), (base[0], base[1], z0 - 0.03))
             leaves.append(leaf.apply(T))
-    parts.append(make_part("plant", "plant", leaves, green))
+    # every leaf or foliage clump is a part of its own, all labelled ``plant``
+    parts += [make_part(f"plant_{k}", "plant", leaf, green) for k, leaf in enumerate(leaves)]
     return parts
 

@@ -36,10 +36,20 @@ def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> 
     body.append(S.box((w * rng.uniform(0.4, 0.7), bump_d, h * rng.uniform(0.4, 0.6)),
                       center=(0, -depth / 2 - bump_d / 2, z0 + h * 0.45), bevel=0.004))
     screen = S.box((w - 2 * bezel, 0.002, h - 2 * bezel), center=(0, depth / 2 + 0.001, z0 + h / 2))
-    return [make_part("body", "body", body, mat), make_part("screen", "screen", screen, _screen_glass())]
+    parts = [make_part("body", "body", body[0], mat), make_part("back_cover", "back_cover", body[1], mat),
+             make_part("screen", "screen", screen, _screen_glass())]
+    # control buttons under the bottom edge at the right, and the power light in the bezel
+    dark = M.solid((0.05, 0.05, 0.06), "plastic", 0.5)
+    for k in range(4):
+        parts.append(make_part(f"button_{k}", "button", S.box((0.012, 0.008, 0.004), center=(w / 2 - 0.04 - 0.02 * k, depth / 2 - 0.006,
+                                                                                           z0 - 0.002)), dark))
+    parts.append(make_part("indicator", "indicator", S.cylinder(0.002, 0.002, center=(w / 2 - bezel / 2 - 0.01, depth / 2 + 0.001,
+                                                                                     z0 + bezel / 2), axis=(0, 1, 0), sections=8),
+                           M.solid((0.2, 0.8, 0.3), "plastic", 0.3)))
+    return parts
 
 
-@register("tv", parts=("screen", "stand"), extra_parts=("body",), size_range=(0.7, 1.75),
+@register("tv", parts=("screen", "stand"), extra_parts=("body", "back_cover", "button", "indicator"), size_range=(0.7, 1.75),
           density=350, variants=("feet", "pedestal"))
 def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.72, 1.65)
@@ -70,7 +80,7 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("monitor", parts=("screen", "stand", "base"), extra_parts=("body",), size_range=(0.45, 0.85),
+@register("monitor", parts=("screen", "stand", "base"), extra_parts=("body", "back_cover", "button", "indicator"), size_range=(0.45, 0.85),
           density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
 def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.48, 0.8)
@@ -104,7 +114,7 @@ def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("laptop", parts=("base", "screen"), extra_parts=("keyboard", "display"),
+@register("laptop", parts=("base", "screen"), extra_parts=("keyboard", "display", "touchpad", "key"),
           size_range=(0.26, 0.42), density=900, variants=("thin", "standard", "compact"),
           placement="surface")
 def laptop(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -126,12 +136,22 @@ def laptop(rng: np.random.Generator, variant: str) -> list[Part]:
     p0 = np.array([0.0, -d / 2 + tl + 0.002, hb])
     lid = S.box((w, tl, L), center=p0 + R @ np.array([0, -tl / 2, L / 2]), R=R, bevel=0.0015)
     glass = S.box((w - 0.024, 0.001, L - 0.03), center=p0 + R @ np.array([0, 0.0005, L / 2 + 0.004]), R=R)
-    return [make_part("base", "base", base, mat), make_part("keyboard", "keyboard", [keys, pad], dark),
-            make_part("screen", "screen", lid, mat),
-            make_part("display", "display", glass, _screen_glass())]
+    parts = [make_part("base", "base", base, mat), make_part("keyboard", "keyboard", keys, dark),
+             make_part("touchpad", "touchpad", pad, dark), make_part("screen", "screen", lid, mat),
+             make_part("display", "display", glass, _screen_glass())]
+    # individual keycaps on the key bed, five rows of thirteen
+    kw, kd = w * 0.86, d * 0.42
+    cap = M.solid((0.16, 0.16, 0.17), "plastic", 0.5)
+    for r in range(5):
+        for c in range(13):
+            x = -kw / 2 + kw * (c + 0.5) / 13
+            y = -d * 0.12 + kd / 2 - kd * (r + 0.5) / 5
+            parts.append(make_part(f"key_{13 * r + c}", "key", S.box((kw / 13 * 0.82, kd / 5 * 0.8, 0.0008),
+                                                                     center=(x, y, hb + 0.0012 + 0.0004)), cap))
+    return parts
 
 
-@register("keyboard", parts=("body",), extra_parts=("keys",), size_range=(0.28, 0.48), density=600,
+@register("keyboard", parts=("body", "keys"), extra_parts=(), size_range=(0.28, 0.48), density=600,
           variants=("full", "tenkeyless", "compact"), placement="surface")
 def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
     w = {"full": rng.uniform(0.43, 0.46), "tenkeyless": rng.uniform(0.35, 0.37),
@@ -152,10 +172,21 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
     main_w = 0.29 if variant != "compact" else w - 2 * margin
     x_main = -w / 2 + margin + main_w / 2
     rows = []
+    k = 0
     for i in range(n_rows):
         y = d / 2 - margin - pitch * (i + 0.5)
         z = hf + (hb - hf) * (d / 2 - y) / d  # the top slopes up towards the back
-        blocks = [S.box((main_w, pitch * 0.78, 0.008), center=(x_main, y, z + 0.002), bevel=0.0015)]
+        # the main block key by key, in groups of keycaps (the front row: modifiers and the space bar)
+        widths = [1.5] * 9 if i > 0 else [1.25, 1.25, 1.25, 6.0, 1.25, 1.25, 1.25, 1.25]
+        unit = main_w / sum(widths)
+        x = x_main - main_w / 2
+        for kwid in widths:
+            parts.append(make_part(f"key_{k}", "keys", S.box((kwid * unit - 0.003, pitch * 0.78, 0.008),
+                                                             center=(x + kwid * unit / 2, y, z + 0.002), bevel=0.0015),
+                                   key_mat))
+            x += kwid * unit
+            k += 1
+        blocks = []
         if variant != "compact":
             nav_x0 = x_main + main_w / 2 + 0.012
             blocks.append(S.box((0.055, pitch * 0.78, 0.008), center=(nav_x0 + 0.0275, y, z + 0.002),
@@ -164,7 +195,8 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
                 blocks.append(S.box((0.075, pitch * 0.78, 0.008),
                                     center=(w / 2 - margin - 0.0375, y, z + 0.002), bevel=0.0015))
         rows += blocks
-    parts.append(make_part("keys", "keys", rows, key_mat))
+    if rows:  # navigation and number blocks, one part per row
+        parts += [make_part(f"key_block_{i}", "keys", b, key_mat) for i, b in enumerate(rows)]
     return parts
 
 
@@ -248,5 +280,5 @@ def remote_control(rng: np.random.Generator, variant: str) -> list[Part]:
         for i in range(4):
             for j in range(3):
                 keys.append(button(0.0038, (j - 1) * W * 0.28, dpad_y - W * 0.95 - i * 0.014))
-    parts.append(make_part("buttons", "button", keys, btn))
+    parts += [make_part(f"button_{k}", "button", key, btn) for k, key in enumerate(keys)]
     return parts

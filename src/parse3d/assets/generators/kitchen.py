@@ -13,6 +13,7 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, knob, white
+from ._kit import OPEN_DOOR, mount, revolute
 
 H_COUNTER = 0.9
 KICK_H, KICK_D = 0.1, 0.07
@@ -48,7 +49,7 @@ def _basin(x0: float, x1: float, y0: float, y1: float, z_top: float, depth: floa
 
 
 @register("kitchen_counter", parts=("countertop", "body", "door"),
-          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet"), size_range=(0.85, 2.5),
+          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_box"), size_range=(0.85, 2.5),
           density=600, variants=("doors", "drawer_bank", "sink"))
 def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     n_bays = int(rng.integers(2, 5)) if variant == "drawer_bank" else int(rng.integers(1, 5))
@@ -164,7 +165,7 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer"),
+@register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -229,7 +230,7 @@ def _ring_path(center, radius: float, n: int, *, plane: str = "xy") -> np.ndarra
 
 
 @register("stove", parts=("body", "cooktop", "burner"),
-          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard"), size_range=(0.85, 1.15),
+          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box"), size_range=(0.85, 1.15),
           density=400, variants=("gas", "electric", "double_oven"))
 def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.5, 0.76), rng.uniform(0.6, 0.66)
@@ -277,7 +278,7 @@ def stove(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("washing_machine", parts=("body", "door"), extra_parts=("control_panel", "knob", "window", "drawer",
-                                                                   "display", "foot"),
+                                                                   "display", "foot", "hinge"),
           size_range=(0.8, 1.0), density=250, variants=("front_loader", "top_loader"))
 def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.58, 0.62), rng.uniform(0.52, 0.64), rng.uniform(0.82, 0.88)
@@ -303,6 +304,10 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("door", "door", ring, trim))
         parts.append(make_part("window", "window", S.cylinder(r - 0.01, 0.02, center=(0, yf + 0.015, zc), axis=(0, 1, 0),
                                                                sections=24), glass_pane(rng)))
+        xh = -r - 0.025  # the porthole swings open on its left edge
+        parts += [make_part("hinge", "hinge", S.box((0.03, 0.03, 0.08), center=(xh, yf + 0.012, zc)), trim),
+                  revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(xh, yf, zc), opens=OPEN_DOOR),
+                  mount("door", "window")]
     else:
         console = S.box((w, 0.11, 0.12), center=(0, -d / 2 + 0.055, h + 0.06 - 0.01), bevel=0.01)
         parts.append(make_part("control_panel", "control_panel", console, enamel))
@@ -313,4 +318,7 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("door", "door", lid, trim))
         parts.append(make_part("window", "window", S.box((w * 0.5, (d - 0.16) * 0.5, 0.004), center=(0, 0.04, h + 0.021)),
                                glass_pane(rng)))
+        yh = 0.04 - (d - 0.16) / 2  # the lid lifts on its back edge, against the console
+        parts += [revolute("door_hinge", "body", "door", axis=(1, 0, 0), origin=(0, yh, h), opens=np.pi / 2),
+                  mount("door", "window")]
     return parts

@@ -19,8 +19,8 @@ _BLACK_KEYS = (1, 3, 6, 8, 10)  # semitones of an octave that are black keys
 
 
 def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivory, ebony) -> list[Part]:
-    """The keys: a white key bed (``keyboard``) and the raised black keys (``black_keys``,
-    also labelled ``keyboard``); ``z`` is the top of the white keys, ``y_front`` their front."""
+    """The keys: the white key bed (``keyboard``) and the 36 raised black keys, each its own part
+    (``black_key_k``, label ``key``); ``z`` is the top of the white keys, ``y_front`` their front."""
     w = x1 - x0
     shapes = [S.box((w, depth, 0.025), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.0125), bevel=0.002)]
     n_white = 52
@@ -36,8 +36,7 @@ def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivor
             shapes.append(S.box((kw * 0.55, depth * 0.62, 0.012),
                                 center=(x, y_front - depth + depth * 0.31, z + 0.006)))
     white = make_part("keyboard", "keyboard", shapes[0], ivory)
-    keys = make_part("black_keys", "keyboard", shapes[1:], ebony)
-    return [white, keys]
+    return [white] + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
 
 
 def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -52,7 +51,7 @@ def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndar
     return ys, xs
 
 
-@register("piano", parts=("body", "keyboard", "lid"), extra_parts=("leg", "pedal", "music_rest", "prop"),
+@register("piano", parts=("body", "keyboard", "lid"), extra_parts=("leg", "pedal", "music_rest", "prop", "key"),
           size_range=(1.2, 2.9), density=700, variants=("upright", "grand", "baby_grand"))
 def piano(rng: np.random.Generator, variant: str) -> list[Part]:
     case = M.Material((0.03, 0.03, 0.035, 1.0), 0.15, 0.0, "wood") if rng.random() < 0.6 else M.wood(rng)
@@ -116,7 +115,7 @@ def piano(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pool_table", parts=("playing_surface", "rail", "leg"), extra_parts=("pocket", "body"),
+@register("pool_table", parts=("playing_surface", "rail", "leg"), extra_parts=("pocket", "body", "ball"),
           size_range=(1.8, 3.0), density=700, variants=("four_leg", "six_leg", "pedestal"))
 def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     pl = rng.uniform(1.8, 2.54) if variant != "four_leg" else rng.uniform(1.6, 2.0)  # play field length
@@ -151,6 +150,20 @@ def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, (x, y) in enumerate([(sx * pl / 2, sy * pw / 2) for sy in (-1, 1) for sx in (-1, 0, 1)]):
         cup = S.cylinder(pr, 0.1, center=(x, y, z_play + 0.001 - 0.05), sections=16)
         parts.append(make_part(f"pocket_{i}", "pocket", cup, pocket_m))
+    # a racked set of sixteen balls: fifteen in the triangle at the foot spot, the cue ball
+    br = 0.0286
+    ball_cols = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.8, 0.1, 0.1), (0.4, 0.1, 0.5), (0.95, 0.45, 0.1),
+                 (0.1, 0.5, 0.2), (0.5, 0.15, 0.1), (0.05, 0.05, 0.05)]
+    k = 0
+    for row in range(5):
+        for j in range(row + 1):
+            x = pl / 4 + row * br * 1.74
+            y = (j - row / 2) * br * 2.01
+            parts.append(make_part(f"ball_{k}", "ball", S.ellipsoid((br, br, br), center=(x, y, z_play + br), subdivisions=1),
+                                   M.solid(ball_cols[k % 8], "plastic", 0.15)))
+            k += 1
+    parts.append(make_part("ball_cue", "ball", S.ellipsoid((br, br, br), center=(-pl / 4, 0.0, z_play + br), subdivisions=1),
+                           M.solid((0.96, 0.95, 0.9), "plastic", 0.15)))
     z_leg = z_play - slab_t - apron
     if variant == "pedestal":
         for i, x in enumerate((-W * 0.28, W * 0.28)):

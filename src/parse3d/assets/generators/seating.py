@@ -100,7 +100,7 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dining_chair", parts=("seat", "back", "leg"), extra_parts=("stretcher",),
+@register("dining_chair", parts=("seat", "back", "leg"), extra_parts=("stretcher", "back_post", "spindle", "splat"),
           size_range=(0.75, 1.1), density=550, variants=("spindle", "solid", "upholstered"))
 def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     sw, sd = rng.uniform(0.42, 0.5), rng.uniform(0.42, 0.48)
@@ -132,9 +132,9 @@ def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
             i += 1
     if rng.random() < 0.5:
         z_st = z_leg * 0.3
-        bars = [S.cylinder(0.011, sd - 2 * leg, center=(sx * (sw / 2 - leg / 2 - 0.01), 0, z_st),
-                           axis=(0, 1, 0), sections=8) for sx in (-1, 1)]
-        parts.append(make_part("stretcher", "stretcher", bars, wood))
+        parts += [make_part(f"stretcher_{i}", "stretcher",
+                            S.cylinder(0.011, sd - 2 * leg, center=(sx * (sw / 2 - leg / 2 - 0.01), 0, z_st),
+                                       axis=(0, 1, 0), sections=8), wood) for i, sx in enumerate((-1, 1))]
     # back
     bh = rng.uniform(0.38, 0.5)
     lean = np.deg2rad(rng.uniform(6, 12))
@@ -164,7 +164,16 @@ def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
             back.append(bevel_box((inner + 0.01, 0.018, ph), center=(0, 0, bh - rail_h - ph / 2),
                                   bevel=0.004))
         mat = wood
-    parts.append(make_part("back", "back", [_leaning(s, lean, pivot) for s in back], mat))
+    if upholstered:
+        parts.append(make_part("back", "back", [_leaning(s, lean, pivot) for s in back], mat))
+        return parts
+    # the crest rail keeps the ``back`` label (it carries the back's front face); posts, spindles
+    # and the splat are parts of their own
+    posts, rail, rest = back[:2], back[2], back[3:]
+    parts.append(make_part("back", "back", _leaning(rail, lean, pivot), mat))
+    parts += [make_part(f"back_post_{i}", "back_post", _leaning(p, lean, pivot), mat) for i, p in enumerate(posts)]
+    label = "spindle" if variant == "spindle" else "splat"
+    parts += [make_part(f"{label}_{i}", label, _leaning(p, lean, pivot), mat) for i, p in enumerate(rest)]
     return parts
 
 

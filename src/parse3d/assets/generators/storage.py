@@ -12,7 +12,7 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Part, make_part
+from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_heights
 
@@ -42,7 +42,10 @@ def _shelves(levels, *, iw: float, y0: float, y1: float, t: float, mat, start: i
 
 
 def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: int, mat, hmat,
-              style: str, glass=None, start: int = 0, gap: float = 0.003) -> list[Part]:
+              style: str, glass=None, start: int = 0, gap: float = 0.003,
+              parents: tuple[str, str] = ("body", "body")) -> list[Part | Joint]:
+    """``n`` doors side by side; ``parents`` names the part a left- and a right-hinged door hangs
+    on."""
     parts = []
     dw = w / n
     for i in range(n):
@@ -50,14 +53,15 @@ def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: 
         hinge_left = i < n / 2 if n > 1 else True
         parts += door_parts(f"{prefix}_{start + i}", x0=x0, x1=x1, z0=z0 + gap, z1=z1 - gap,
                             y_back=y_back, thick=0.018, mat=mat, handle_mat=hmat,
-                            hinge_left=hinge_left, style=style, glass=glass)
+                            hinge_left=hinge_left, style=style, glass=glass,
+                            parent=parents[0] if hinge_left else parents[1])
     return parts
 
 
 @register("bookcase", parts=("shelf", "side_panel", "back_panel"),
-          extra_parts=("top_panel", "base", "door", "handle", "glass"), size_range=(0.9, 2.3),
+          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge"), size_range=(0.9, 2.3),
           density=550, variants=("open", "doored", "glass_doored"))
-def bookcase(rng: np.random.Generator, variant: str) -> list[Part]:
+def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
     t, bt, plinth = rng.uniform(0.018, 0.025), 0.008, rng.uniform(0.05, 0.09)
     mat = M.wood(rng)
@@ -85,16 +89,17 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part]:
         k = max(1, n // 2)
         z_top = plinth + k * inner / n + t
         parts += _door_row("door", w=w, z0=plinth, z1=z_top, y_back=d / 2, n=2, mat=mat, hmat=hmat,
-                           style="shaker" if rng.random() < 0.6 else "flat")
+                           style="shaker" if rng.random() < 0.6 else "flat",
+                           parents=("side_panel_0", "side_panel_1"))
     elif variant == "glass_doored":
         parts += _door_row("door", w=w, z0=plinth, z1=h_side, y_back=d / 2, n=2, mat=mat, hmat=hmat,
-                           style="glass", glass=glass_pane(rng))
+                           style="glass", glass=glass_pane(rng), parents=("side_panel_0", "side_panel_1"))
     return parts
 
 
-@register("storage_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "drawer", "glass"),
+@register("storage_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
-def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
+def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
     d, h = rng.uniform(0.4, 0.6), rng.uniform(0.8, 2.0)
     t, plinth = 0.018, rng.uniform(0.06, 0.1)
@@ -123,9 +128,9 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tv_stand", parts=("top_panel", "body"), extra_parts=("drawer", "handle", "shelf", "leg", "door"),
+@register("tv_stand", parts=("top_panel", "body"), extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
-def tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
+def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
     t = rng.uniform(0.018, 0.025)
     mat = M.wood(rng)
@@ -171,9 +176,9 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass"),
+@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge"),
           size_range=(0.45, 1.1), density=550, variants=("solid", "glass", "lift_up"), placement="wall")
-def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
+def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.4, 1.0), rng.uniform(0.28, 0.36), rng.uniform(0.5, 0.9)
     if variant == "lift_up":
         w, h = rng.uniform(0.6, 1.0), rng.uniform(0.35, 0.45)

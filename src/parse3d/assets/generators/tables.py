@@ -12,6 +12,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
+from ._kit import DRAWER_TRAVEL, mount, prismatic
 
 
 def _top(rng, w, d, h, thick, mat, round_top: bool = False) -> Part:
@@ -22,20 +23,46 @@ def _top(rng, w, d, h, thick, mat, round_top: bool = False) -> Part:
     return make_part("tabletop", "tabletop", shape, mat)
 
 
-def _four_legs(rng, w, d, h_leg, leg_mat, inset: float, leg: float, tapered: bool) -> list[Part]:
+def _four_legs(rng, w, d, h_leg, leg_mat, inset: float, leg: float, tapered: bool,
+               glide: float = 0.008) -> list[Part]:
+    """Four legs standing on floor glides (``foot``, ``glide`` tall) at ``inset`` from the edges."""
     parts = []
+    feet = []
     xs = (-w / 2 + inset, w / 2 - inset)
     ys = (-d / 2 + inset, d / 2 - inset)
     i = 0
+    hl = h_leg - glide
+    glide_mat = M.solid((0.08, 0.08, 0.08), "plastic", 0.7)
     for y in ys:
         for x in xs:
             if tapered:
-                shape = S.frustum(leg / 2 * 0.65, leg / 2, h_leg, center=(x, y, 0), sections=12)
+                shape = S.frustum(leg / 2 * 0.65, leg / 2, hl, center=(x, y, glide), sections=12)
+                r = leg / 2 * 0.6
             else:
-                shape = S.box((leg, leg, h_leg), center=(x, y, h_leg / 2), bevel=leg * 0.12)
+                shape = S.box((leg, leg, hl), center=(x, y, glide + hl / 2), bevel=leg * 0.12)
+                r = leg * 0.4
             parts.append(make_part(f"leg_{i}", "leg", shape, leg_mat))
+            feet.append(make_part(f"foot_{i}", "foot", S.cylinder(r, glide, center=(x, y, glide / 2), sections=12),
+                                  glide_mat))
             i += 1
-    return parts
+    return parts + feet
+
+
+def _aprons(w, d, h_leg, inset: float, leg: float, mat, *, sides: str = "xy") -> list[Part]:
+    """Apron rails under the top between the legs: along x at the front and back (``x`` in
+    ``sides``) and along y at the ends (``y``)."""
+    ah = min(0.09, h_leg * 0.14)
+    t = 0.03
+    lx, ly = w - 2 * inset - leg, d - 2 * inset - leg
+    out = []
+    if "x" in sides:
+        out += [make_part(f"apron_{i}", "apron", S.box((lx, t, ah), center=(0, s * (d / 2 - inset), h_leg - ah / 2)), mat)
+                for i, s in enumerate((-1, 1))]
+    if "y" in sides:
+        k = len(out)
+        out += [make_part(f"apron_{k + i}", "apron", S.box((t, ly, ah), center=(s * (w / 2 - inset), 0, h_leg - ah / 2)), mat)
+                for i, s in enumerate((-1, 1))]
+    return out
 
 
 def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
@@ -71,8 +98,9 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
     h_leg = h - thick
     leg = rng.uniform(0.04, 0.06)
     if variant == "four_leg":
-        parts += _four_legs(rng, w, d, h_leg, leg_mat, inset=leg / 2 + rng.uniform(0.01, 0.05),
-                            leg=leg, tapered=rng.random() < 0.4)
+        inset = leg / 2 + rng.uniform(0.01, 0.05)
+        parts += _four_legs(rng, w, d, h_leg, leg_mat, inset=inset, leg=leg, tapered=rng.random() < 0.4)
+        parts += _aprons(w, d, h_leg, inset, leg, top_mat, sides="y" if desk else "xy")
     elif variant == "pedestal":
         parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
     elif variant == "trestle":
@@ -85,8 +113,12 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
             dw, dh = min(0.45, w * 0.35), 0.09
             x = w / 2 - leg - dw / 2 - 0.03
             front = S.box((dw, 0.02, dh), center=(x, d / 2 - 0.03, h_leg - dh / 2 - 0.005), bevel=0.003)
-            box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - dh / 2 - 0.005))
-            parts.append(make_part("drawer_0", "drawer", [front, box_], top_mat))
+            # the box runs just under the top, which carries its slides
+            box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - 0.003 - (dh - 0.02) / 2))
+            parts.append(make_part("drawer_0", "drawer", front, top_mat))
+            parts.append(make_part("drawer_0_box", "drawer_box", box_, top_mat))
+            parts += [prismatic("drawer_0_slide", "tabletop", "drawer_0_box", travel=DRAWER_TRAVEL * d * 0.6),
+                      mount("drawer_0_box", "drawer_0"), mount("drawer_0", "handle_0")]
             handle = S.tube([[x - 0.05, d / 2 - 0.02, h_leg - dh / 2], [x - 0.05, d / 2 + 0.005, h_leg - dh / 2],
                              [x + 0.05, d / 2 + 0.005, h_leg - dh / 2], [x + 0.05, d / 2 - 0.02, h_leg - dh / 2]],
                             0.005, sections=8)
@@ -94,37 +126,37 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
     return parts
 
 
-@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher"),
+@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
 
 
-@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
           size_range=(1.2, 2.2), density=600, variants=("four_leg", "pedestal", "trestle"))
 def dining_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.3, 2.0), d_rng=(0.8, 1.0), h_rng=(0.73, 0.77), round_ok=True)
 
 
-@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
           size_range=(0.8, 1.4), density=600, variants=("four_leg", "pedestal"))
 def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
 
 
-@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
           size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
 def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True)
 
 
-@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
           size_range=(0.6, 1.2), density=650, variants=("four_leg", "pedestal"))
 def tea_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.7, 1.1), d_rng=(0.5, 0.7), h_rng=(0.32, 0.5), round_ok=True)
 
 
-@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher",),
+@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
           size_range=(2.0, 4.0), density=600, variants=("four_leg", "trestle"))
 def conference_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(2.2, 3.6), d_rng=(1.0, 1.4), h_rng=(0.73, 0.76))

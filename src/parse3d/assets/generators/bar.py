@@ -1,0 +1,122 @@
+"""The bar: liquor bottles, wine racks, cocktail shakers and ice buckets.
+
+Liquor bottles are closed solids like the grocery bottles (contents not modelled) but with the
+shapes of spirits: square whisky bottles, tall round gin bottles and squat flasks. A wine rack
+holds bottles lying in rows of cradles; each row is its own ``shelf`` part so ``IN`` finds a
+support on it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+from ._household import ring
+from ._kit import feet4
+
+
+@register("liquor_bottle", parts=("body", "cap"), extra_parts=("label", "neck", "shoulder_label"),
+          size_range=(0.15, 0.36), density=1000, variants=("square", "round", "flask"), placement="surface")
+def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
+    tint = [(0.75, 0.45, 0.15), (0.85, 0.88, 0.9), (0.2, 0.35, 0.2), (0.35, 0.2, 0.1)][int(rng.integers(4))]
+    glass = Material((*M.jitter(rng, tint, 0.04)[:3], 0.55), 0.08, 0.0, "glass")
+    cap_mat = Material(M.jitter(rng, [(0.1, 0.1, 0.1), (0.7, 0.55, 0.3), (0.6, 0.1, 0.1)][int(rng.integers(3))], 0.03),
+                       0.4, 0.5, "metal")
+    parts = []
+    if variant == "square":
+        w, h = rng.uniform(0.075, 0.09), rng.uniform(0.2, 0.26)
+        hb = h * 0.72
+        parts.append(make_part("body", "body", S.box((w, w, hb), center=(0, 0, hb / 2), bevel=0.006), glass))
+        parts.append(make_part("label", "label", S.box((w * 0.8, 0.002, hb * 0.45), center=(0, w / 2 + 0.0005, hb * 0.45)),
+                               M.paper(rng)))
+        nz0, nr = hb, 0.014
+    elif variant == "round":
+        r, h = rng.uniform(0.036, 0.045), rng.uniform(0.26, 0.32)
+        hb = h * 0.66
+        parts.append(make_part("body", "body", S.lathe([(r * 0.95, 0), (r, 0.005), (r, hb - 0.02), (r * 0.9, hb)],
+                                                       sections=24), glass))
+        parts.append(make_part("label", "label", ring([(r - 0.0005, hb * 0.25), (r + 0.0008, hb * 0.25),
+                                                       (r + 0.0008, hb * 0.7), (r - 0.0005, hb * 0.7)], sections=24),
+                               M.paper(rng)))
+        nz0, nr = hb, 0.013
+    else:
+        w, d, h = rng.uniform(0.09, 0.11), rng.uniform(0.035, 0.045), rng.uniform(0.15, 0.2)
+        hb = h * 0.75
+        parts.append(make_part("body", "body", S.box((w, d, hb), center=(0, 0, hb / 2), bevel=0.012), glass))
+        parts.append(make_part("label", "label", S.box((w * 0.7, 0.002, hb * 0.4), center=(0, d / 2 + 0.0005, hb * 0.5)),
+                               M.paper(rng)))
+        nz0, nr = hb, 0.011
+    nh = h - nz0 - 0.025
+    parts.append(make_part("neck", "neck", S.frustum(nr * 1.6, nr, nh, center=(0, 0, nz0 - 0.002), sections=16), glass))
+    parts.append(make_part("shoulder_label", "shoulder_label",
+                           ring([(nr * 1.2, nz0 + nh * 0.45), (nr * 1.35, nz0 + nh * 0.45), (nr * 1.3, nz0 + nh * 0.6),
+                                 (nr * 1.15, nz0 + nh * 0.6)], sections=16), M.paper(rng)))
+    parts.append(make_part("cap", "cap", S.cylinder(nr + 0.002, 0.028, center=(0, 0, h - 0.014), sections=16), cap_mat))
+    return parts
+
+
+@register("wine_rack", parts=("shelf", "side_panel"), extra_parts=("top_panel", "foot", "cradle"), size_range=(0.3, 1.9),
+          density=550, variants=("floor", "countertop", "tall"))
+def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
+    cols = {"floor": int(rng.integers(4, 7)), "countertop": int(rng.integers(3, 5)), "tall": int(rng.integers(2, 4))}[variant]
+    rows = {"floor": int(rng.integers(3, 6)), "countertop": 2, "tall": int(rng.integers(6, 10))}[variant]
+    pitch, d = rng.uniform(0.095, 0.11), rng.uniform(0.25, 0.32)
+    wood = M.wood(rng)
+    t = 0.018
+    w = cols * pitch + 2 * t
+    rh = pitch
+    h = rows * rh + t + 0.04
+    parts = [make_part(f"side_panel_{i}", "side_panel", S.box((t, d, h), center=(s * (w / 2 - t / 2), 0, h / 2)), wood)
+             for i, s in enumerate((-1, 1))]
+    parts.append(make_part("top_panel", "top_panel", S.box((w, d, t), center=(0, 0, h + t / 2), bevel=0.003), wood))
+    iw = w - 2 * t
+    for k in range(rows):
+        z = 0.04 + k * rh
+        parts.append(make_part(f"shelf_{k}", "shelf", S.box((iw, d, 0.012), center=(0, 0, z + 0.006)), wood))
+        # cradle bars in front and back keep the bottles from rolling
+        bars = [S.box((iw, 0.015, 0.02), center=(0, y, z + 0.022)) for y in (-d / 2 + 0.03, d / 2 - 0.03)]
+        parts.append(make_part(f"cradle_{k}", "cradle", bars, wood))
+    parts += feet4("foot", w=w, d=d, r=0.015, h=0.04 - 0.0, mat=wood)
+    return parts
+
+
+@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer",), size_range=(0.15, 0.3),
+          density=800, variants=("cobbler", "boston"), placement="surface")
+def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
+    steel = M.solid((0.82, 0.82, 0.84), "metal", 0.2, 0.95)
+    r, h = rng.uniform(0.04, 0.046), rng.uniform(0.14, 0.18)
+    parts = [make_part("body", "body", S.frustum(r * 0.75, r, h, sections=24), steel)]
+    if variant == "cobbler":
+        parts.append(make_part("strainer", "strainer", S.frustum(r, r * 0.45, h * 0.35, center=(0, 0, h - 0.001),
+                                                                 sections=24), steel))
+        parts.append(make_part("cap", "cap", S.cylinder(r * 0.45, 0.03, center=(0, 0, h + h * 0.35 + 0.013), sections=16),
+                               steel))
+    else:
+        parts.append(make_part("strainer", "strainer", S.cylinder(r * 0.95, 0.004, center=(0, 0, h + 0.002), sections=24),
+                               steel))
+        parts.append(make_part("cap", "cap", S.frustum(r * 0.92, r * 0.8, h * 0.6, center=(0, 0, h + 0.004), sections=24),
+                               Material((0.85, 0.9, 0.95, 0.4), 0.05, 0.0, "glass")))
+    return parts
+
+
+@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid"), size_range=(0.14, 0.32), density=600,
+          variants=("open", "lidded"), placement="surface")
+def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
+    r, h = rng.uniform(0.08, 0.11), rng.uniform(0.16, 0.22)
+    steel = M.solid(M.jitter(rng, (0.8, 0.8, 0.82), 0.02), "metal", 0.2, 0.95)
+    parts = [make_part("body", "body", S.vessel([(r * 0.82, 0.0), (r, h)], thickness=0.008, piece_sections=32), steel)]
+    for i, s in enumerate((-1, 1)):
+        parts.append(make_part(f"handle_{i}", "handle",
+                               S.tube([(s * (r * 0.95), 0.015, h * 0.75), (s * (r + 0.022), 0.015, h * 0.75),
+                                       (s * (r + 0.022), -0.015, h * 0.75), (s * (r * 0.95), -0.015, h * 0.75)], 0.004),
+                               steel))
+    if variant == "lidded":
+        parts.append(make_part("lid", "lid", [S.cylinder(r + 0.004, 0.01, center=(0, 0, h + 0.005), sections=24),
+                                              S.ellipsoid((0.015, 0.015, 0.012), center=(0, 0, h + 0.014))], steel))
+    else:
+        parts.append(make_part("tongs", "tongs", S.box((0.012, 0.02, h * 0.9), center=(r * 0.5, 0, h * 0.55),
+                                                       R=np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1.0]])), steel))
+    return parts

@@ -1,0 +1,64 @@
+"""Bedside things: alarm clocks and tissue boxes.
+
+An alarm clock's face looks toward +Y; a tissue box's tissue sticks up out of the slot in its
+top.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._casework import black
+
+
+@register("alarm_clock", parts=("body", "face"), extra_parts=("bell", "hand", "foot", "button", "display"),
+          size_range=(0.07, 0.22), density=700, variants=("twin_bell", "digital", "cube"), placement="surface")
+def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
+    shell = M.plastic(rng) if variant != "twin_bell" else M.metal(rng)
+    if variant == "digital":
+        w, d, h = rng.uniform(0.12, 0.2), rng.uniform(0.06, 0.09), rng.uniform(0.06, 0.09)
+        parts = [make_part("body", "body", S.box((w, d, h), center=(0, 0, h / 2), bevel=0.01), shell),
+                 make_part("face", "face", S.box((w * 0.75, 0.004, h * 0.6), center=(0, d / 2 + 0.001, h / 2)), black()),
+                 make_part("display", "display", S.box((w * 0.6, 0.002, h * 0.35), center=(0, d / 2 + 0.003, h / 2)),
+                           M.solid((0.9, 0.2, 0.1), "glass", 0.1))]
+        parts += [make_part(f"button_{k}", "button", S.box((0.02, 0.012, 0.006), center=((k - 1) * 0.03, 0, h + 0.002)), black())
+                  for k in range(3)]
+        return parts
+    if variant == "cube":
+        s = rng.uniform(0.07, 0.09)
+        parts = [make_part("body", "body", S.box((s, s, s), center=(0, 0, s / 2), bevel=0.006), shell)]
+        r, zc, yf = s * 0.38, s / 2, s / 2
+    else:
+        r = rng.uniform(0.045, 0.06)
+        zc = r + 0.025
+        yf = 0.02
+        parts = [make_part("body", "body", S.cylinder(r, 0.04, center=(0, 0, zc), axis=(0, 1, 0), sections=28), shell)]
+        for i, s in enumerate((-1, 1)):
+            parts.append(make_part(f"bell_{i}", "bell", S.ellipsoid((r * 0.45, r * 0.3, r * 0.35),
+                                                                    center=(s * r * 0.6, 0, zc + r * 0.95)), shell))
+            parts.append(make_part(f"foot_{i}", "foot", S.tube([(s * r * 0.5, 0, zc - r * 0.8), (s * r * 0.8, 0, 0.004)], 0.004), shell))
+    parts.append(make_part("face", "face", S.cylinder(r * 0.9, 0.003, center=(0, yf + 0.001, zc), axis=(0, 1, 0), sections=28),
+                           M.solid((0.96, 0.95, 0.9), "paper", 0.5)))
+    for k, (L, a) in enumerate([(r * 0.5, rng.uniform(0, 2 * np.pi)), (r * 0.75, rng.uniform(0, 2 * np.pi))]):
+        c = (np.cos(a) * L / 2, yf + 0.004 + 0.001 * k, zc + np.sin(a) * L / 2)
+        R = np.array([[np.cos(a), 0, -np.sin(a)], [0, 1, 0], [np.sin(a), 0, np.cos(a)]])
+        parts.append(make_part(f"hand_{k}", "hand", S.box((L, 0.0015, 0.003), center=c, R=R), black()))
+    return parts
+
+
+@register("tissue_box", parts=("box",), extra_parts=("tissue",), size_range=(0.1, 0.27), density=120,
+          variants=("rectangular", "cube"), placement="surface")
+def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
+    if variant == "cube":
+        w = d = rng.uniform(0.11, 0.12)
+        h = rng.uniform(0.12, 0.13)
+    else:
+        w, d, h = rng.uniform(0.22, 0.25), rng.uniform(0.11, 0.12), rng.uniform(0.06, 0.09)
+    return [make_part("box", "box", S.box((w, d, h), center=(0, 0, h / 2)), M.paper(rng)),
+            make_part("tissue", "tissue", S.hull([[-0.03, -0.004, h], [0.03, -0.004, h], [-0.03, 0.004, h], [0.03, 0.004, h],
+                                                  [-0.015, -0.002, h + 0.05], [0.015, 0.002, h + 0.05]]),
+                      M.solid((0.97, 0.97, 0.97), "paper", 0.9), watertight=True)]

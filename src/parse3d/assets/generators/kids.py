@@ -1,0 +1,55 @@
+"""Children's things: picture books and toy blocks.
+
+A picture book stands like ``book`` and shares its labels (``front_cover``, ``back_cover``,
+``spine``, ``pages``), so the two can be candidates of one PAG object; a set of toy blocks is a small stack or scatter of cubes, each its own
+``block`` part.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._kit import rot
+
+
+@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), size_range=(0.15, 0.36), density=650,
+          variants=("square", "landscape", "board_book"), placement="surface")
+def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
+    """Standing upright like ``book`` (same labels and frame): front cover at +Y, spine at -X."""
+    w, h = {"square": (rng.uniform(0.2, 0.26),) * 2, "landscape": (rng.uniform(0.28, 0.34), rng.uniform(0.2, 0.24)),
+            "board_book": (rng.uniform(0.15, 0.18), rng.uniform(0.15, 0.18))}[variant]
+    t = rng.uniform(0.008, 0.014) if variant != "board_book" else rng.uniform(0.02, 0.03)
+    c = 0.003 if variant != "board_book" else 0.004
+    art = M.paper(rng)
+    pages = M.solid((0.96, 0.95, 0.9), "paper", 0.9)
+    return [make_part("front_cover", "front_cover", S.box((w - c, c, h), center=(c / 2, t / 2 - c / 2, h / 2)), art),
+            make_part("back_cover", "back_cover", S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2)), art),
+            make_part("spine", "spine", S.box((c, t, h), center=(-w / 2 + c / 2, 0, h / 2)), art),
+            make_part("pages", "pages", S.box((w - c - 0.003, t - 2 * c, h - 0.006), center=(-w / 2 + c + (w - c - 0.003) / 2, 0, h / 2)),
+                      pages)]
+
+
+@register("toy_blocks", parts=("block",), size_range=(0.08, 0.4), density=600, variants=("tower", "scatter", "pyramid"),
+          placement="surface")
+def toy_blocks(rng: np.random.Generator, variant: str) -> list[Part]:
+    s = rng.uniform(0.035, 0.05)
+    cols = [(0.9, 0.15, 0.1), (0.1, 0.4, 0.85), (0.95, 0.8, 0.1), (0.2, 0.7, 0.3), (0.9, 0.5, 0.1)]
+    centres = []
+    if variant == "tower":
+        for k in range(int(rng.integers(3, 7))):
+            centres.append((rng.uniform(-0.004, 0.004), rng.uniform(-0.004, 0.004), s / 2 + k * s, rng.uniform(-0.2, 0.2)))
+    elif variant == "pyramid":
+        n = int(rng.integers(3, 5))
+        for row in range(n):
+            for j in range(n - row):
+                centres.append(((j - (n - row - 1) / 2) * s * 1.02, 0.0, s / 2 + row * s, 0.0))
+    else:
+        for k in range(int(rng.integers(5, 10))):
+            x, y = rng.uniform(-0.15, 0.15, 2)
+            centres.append((x + (k % 3) * 0.001, y, s / 2, rng.uniform(0, np.pi / 2)))
+    return [make_part(f"block_{k}", "block", S.box((s, s, s), center=c[:3], bevel=0.002, R=rot((0, 0, 1), c[3])),
+                      M.solid(M.jitter(rng, cols[k % 5], 0.02)[:3], "wood", 0.6)) for k, c in enumerate(centres)]

@@ -1,0 +1,176 @@
+"""Hotels and dormitories: suitcases, luggage racks, bed benches, backpacks and handbags.
+
+A suitcase stands on its wheels with its telescoping handle at the back top; a luggage rack's
+straps are separate ``strap`` parts whose tops carry the bag (``ON luggage_rack:strap``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._casework import black
+from ._kit import legs4
+
+
+@register("suitcase", parts=("shell",), extra_parts=("handle", "wheel", "zipper", "corner", "trolley_handle"),
+          size_range=(0.45, 0.95), density=180, variants=("spinner", "two_wheel", "hard_trunk"), placement="floor")
+def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.36, 0.5), rng.uniform(0.2, 0.3), rng.uniform(0.52, 0.78)
+    if variant == "hard_trunk":
+        w, d, h = rng.uniform(0.6, 0.8), rng.uniform(0.35, 0.45), rng.uniform(0.35, 0.45)
+    shell_mat = M.solid(M.jitter(rng, [(0.1, 0.1, 0.12), (0.15, 0.25, 0.5), (0.6, 0.12, 0.12), (0.75, 0.75, 0.78),
+                                       (0.45, 0.3, 0.2)][int(rng.integers(5))], 0.03), "plastic", 0.35)
+    wz = 0.06 if variant != "hard_trunk" else 0.0
+    parts = [make_part("shell", "shell", S.box((w, d, h), center=(0, 0, wz + h / 2), bevel=0.03), shell_mat),
+             make_part("zipper", "zipper", S.box((w + 0.004, 0.012, h - 0.04), center=(0, 0, wz + h / 2)), black())]
+    if variant == "spinner":
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"wheel_{i}", "wheel", S.cylinder(0.025, 0.02, center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), 0.03),
+                                                                     axis=(1, 0, 0), sections=12), black()))
+    elif variant == "two_wheel":
+        for i, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"wheel_{i}", "wheel", S.cylinder(0.03, 0.025, center=(sx * (w / 2 - 0.04), -d / 2 + 0.04, 0.03),
+                                                                     axis=(1, 0, 0), sections=12), black()))
+            parts.append(make_part(f"corner_{i}", "corner", S.box((0.04, 0.04, 0.06), center=(sx * (w / 2 - 0.04), d / 2 - 0.04, 0.03)),
+                                   black()))
+    else:
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"corner_{i}", "corner", S.box((0.05, 0.05, h), center=(sx * (w / 2 - 0.02), sy * (d / 2 - 0.02), h / 2)),
+                                   M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)))
+    top = wz + h
+    parts.append(make_part("handle", "handle", S.tube([(-0.06, 0, top - 0.005), (-0.06, 0, top + 0.025), (0.06, 0, top + 0.025),
+                                                       (0.06, 0, top - 0.005)], 0.01), black()))
+    if variant != "hard_trunk":
+        tz = rng.uniform(0.03, 0.08)  # retracted
+        y = -d / 2 + 0.02
+        parts.append(make_part("trolley_handle", "trolley_handle",
+                               S.tube([(-w * 0.3, y, top - 0.01), (-w * 0.3, y, top + tz), (w * 0.3, y, top + tz),
+                                       (w * 0.3, y, top - 0.01)], 0.011), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    return parts
+
+
+@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher"), size_range=(0.5, 0.8), density=600,
+          variants=("folding", "bench"))
+def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.6, 0.75), rng.uniform(0.38, 0.45), rng.uniform(0.5, 0.58)
+    frame = M.wood(rng) if rng.random() < 0.6 else M.solid((0.75, 0.65, 0.35), "metal", 0.3, 0.9)
+    strap = M.solid(M.jitter(rng, (0.15, 0.15, 0.2), 0.05), "fabric", 0.9)
+    parts = []
+    if variant == "folding":
+        r = 0.014
+        for i, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - 0.05)
+            parts.append(make_part(f"leg_{2 * i}", "leg", S.tube([(x, -d / 2 + r, r), (x, d / 2 - r, h - r)], r), frame))
+            parts.append(make_part(f"leg_{2 * i + 1}", "leg", S.tube([(x + sx * 0.03, d / 2 - r, r), (x + sx * 0.03, -d / 2 + r, h - r)],
+                                                                    r), frame))
+        for i, sy in enumerate((-1, 1)):
+            parts.append(make_part(f"rail_{i}", "rail", S.cylinder(r, w, center=(0, sy * (d / 2 - r), h - r), axis=(1, 0, 0),
+                                                                   sections=10), frame))
+    else:
+        parts += legs4("leg", "leg", w=w, d=d, h=h - 0.04, size=0.04, mat=frame)
+        for i, sy in enumerate((-1, 1)):
+            parts.append(make_part(f"rail_{i}", "rail", S.box((w, 0.04, 0.04), center=(0, sy * (d / 2 - 0.02), h - 0.02)), frame))
+        for i, sy in enumerate((-1, 1)):
+            parts.append(make_part(f"stretcher_{i}", "stretcher", S.box((w - 0.08, 0.025, 0.025), center=(0, sy * (d / 2 - 0.02), 0.12)),
+                                   frame))
+    for k in range(3):
+        x = (k - 1) * w * 0.3
+        parts.append(make_part(f"strap_{k}", "strap", S.box((0.05, d - 0.01, 0.004), center=(x, 0, h + 0.002)), strap))
+    return parts
+
+
+@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button"),
+          size_range=(0.8, 1.7), density=400, variants=("upholstered", "slatted_shelf", "tufted"))
+def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.9, 1.6), rng.uniform(0.35, 0.48), rng.uniform(0.42, 0.5)
+    wood = M.wood(rng)
+    cloth = M.fabric(rng)
+    st = 0.03
+    parts = legs4("leg", "leg", w=w, d=d, h=h - st, size=0.045, mat=wood)
+    parts.append(make_part("seat", "seat", S.box((w, d, st), center=(0, 0, h - st / 2), bevel=0.004), wood))
+    ch = rng.uniform(0.05, 0.09)
+    parts.append(make_part("cushion", "cushion", S.box((w - 0.02, d - 0.02, ch), center=(0, 0, h + ch / 2), bevel=ch / 3), cloth))
+    for i, sy in enumerate((-1, 1)):
+        parts.append(make_part(f"apron_{i}", "apron", S.box((w - 0.09, 0.02, 0.07), center=(0, sy * (d / 2 - 0.02), h - st - 0.035)),
+                               wood))
+    if variant == "slatted_shelf":
+        n = int(rng.integers(5, 9))
+        for k in range(n):
+            parts.append(make_part(f"shelf_{k}", "shelf", S.box(((w - 0.09) / n * 0.75, d - 0.09, 0.018),
+                                                                 center=(-w / 2 + 0.045 + (w - 0.09) * (k + 0.5) / n, 0, 0.14)), wood))
+    else:
+        for i, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"stretcher_{i}", "stretcher", S.box((0.025, d - 0.09, 0.025), center=(sx * (w / 2 - 0.0225), 0, 0.12)),
+                                   wood))
+    if variant == "tufted":
+        for k in range(int(rng.integers(4, 8))):
+            x = -w / 2 + w * (k + 0.5) / 7 if k < 7 else 0.0
+            parts.append(make_part(f"button_{k}", "button", S.cylinder(0.01, 0.008, center=(x, 0, h + ch - 0.002), sections=8), cloth))
+    return parts
+
+
+@register("backpack", parts=("body",), extra_parts=("front_pocket", "strap", "top_handle", "flap", "zipper"),
+          size_range=(0.3, 0.65), density=150, variants=("daypack", "rucksack", "school"), placement="floor")
+def backpack(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.28, 0.34), rng.uniform(0.14, 0.2), rng.uniform(0.38, 0.48)
+    if variant == "rucksack":
+        w, d, h = rng.uniform(0.32, 0.38), rng.uniform(0.2, 0.26), rng.uniform(0.45, 0.58)
+    cloth = M.fabric(rng)
+    parts = [make_part("body", "body", S.box((w, d, h), center=(0, 0, h / 2), bevel=min(0.05, d / 3.2)), cloth),
+             make_part("front_pocket", "front_pocket", S.box((w * 0.75, 0.05, h * 0.4), center=(0, d / 2 + 0.02, h * 0.28), bevel=0.015),
+                       cloth),
+             make_part("top_handle", "top_handle", S.tube([(-0.04, -d * 0.2, h - 0.01), (-0.03, -d * 0.2, h + 0.03),
+                                                           (0.03, -d * 0.2, h + 0.03), (0.04, -d * 0.2, h - 0.01)], 0.006), black())]
+    for i, sx in enumerate((-1, 1)):
+        x = sx * w * 0.25
+        parts.append(make_part(f"strap_{i}", "strap", S.tube([(x, -d / 2 + 0.005, h * 0.88), (x, -d / 2 - 0.03, h * 0.6),
+                                                              (x * 1.2, -d / 2 - 0.02, h * 0.2), (x * 1.3, -d / 2 + 0.01, 0.04)],
+                                                             0.012), cloth))
+    if variant == "rucksack":
+        parts.append(make_part("flap", "flap", S.box((w * 0.9, d * 0.8, 0.03), center=(0, 0.01, h + 0.012), bevel=0.01),
+                               M.fabric(rng)))
+    else:
+        parts.append(make_part("zipper", "zipper", S.box((w * 0.8, 0.006, 0.012), center=(0, d / 2 - 0.01, h * 0.8)), black()))
+    return parts
+
+
+@register("handbag", parts=("body", "handle"), extra_parts=("flap", "clasp", "strap", "foot"), size_range=(0.18, 0.45),
+          density=200, variants=("tote", "satchel", "clutch"), placement="surface")
+def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
+    leather = M.leather(rng)
+    metal = M.solid((0.8, 0.68, 0.4), "metal", 0.3, 0.9)
+    if variant == "clutch":
+        w, d, h = rng.uniform(0.22, 0.28), rng.uniform(0.03, 0.05), rng.uniform(0.12, 0.15)
+    else:
+        w, d, h = rng.uniform(0.28, 0.4), rng.uniform(0.12, 0.16), rng.uniform(0.2, 0.28)
+    body = S.hull([[-w / 2, -d / 2, 0], [w / 2, -d / 2, 0], [-w / 2, d / 2, 0], [w / 2, d / 2, 0],
+                   [-w / 2 * 0.85, -d / 2 * 0.7, h], [w / 2 * 0.85, -d / 2 * 0.7, h], [-w / 2 * 0.85, d / 2 * 0.7, h],
+                   [w / 2 * 0.85, d / 2 * 0.7, h]])
+    parts = [make_part("body", "body", body, leather)]
+    if variant == "clutch":
+        parts.append(make_part("handle", "handle", S.tube([(w / 2 * 0.85, 0, h * 0.6), (w / 2 + 0.03, 0, h * 0.5),
+                                                           (w / 2 + 0.03, 0, h * 0.2), (w / 2 * 0.95, 0, h * 0.15)], 0.004), leather))
+    else:
+        for i, sy in enumerate((-1, 1)) if variant == "tote" else enumerate((0,)):
+            y = sy * d / 2 * 0.5
+            hh = h * (0.45 if variant == "tote" else 0.3)
+            parts.append(make_part(f"handle_{i}", "handle", S.tube([(-w * 0.25, y, h - 0.005), (-w * 0.2, y, h + hh),
+                                                                    (w * 0.2, y, h + hh), (w * 0.25, y, h - 0.005)], 0.007), leather))
+    if variant != "tote":
+        parts.append(make_part("flap", "flap", S.box((w * 0.8, 0.006, h * 0.45), center=(0, d / 2 * 0.85 + 0.004, h * 0.72),
+                                                     R=rot_x(0.12 if variant == "satchel" else 0.05)), leather))
+        parts.append(make_part("clasp", "clasp", S.box((0.025, 0.008, 0.02), center=(0, d / 2 * 0.85 + 0.012, h * 0.52)), metal))
+    else:
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.006, 0.004, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.02), -0.002),
+                                                                   sections=8), metal))
+    return parts
+
+
+def rot_x(a: float) -> np.ndarray:
+    c, s = np.cos(a), np.sin(a)
+    return np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
