@@ -1,20 +1,31 @@
-"""The whole per-scene pipeline: solve, settle, extract contacts, write, preview.
+"""The whole per-scene pipeline: solve, settle, verify and repair, extract contacts, write,
+preview.
 
 Used by ``parse3d solve``, ``parse3d generate``, ``parse3d demo`` and the dataset builder, so
 they all produce the same files (DESIGN §5).
+
+After settling, objects that fell, tipped or left their support, or whose support relation no
+longer holds, are re-placed with the rest of the scene fixed (round 1: another pose; later
+rounds: another asset) and the scene is settled again, up to ``repair_rounds`` rounds. An
+object still fallen, tipped or off its support after the last round becomes ``failed``
+("unstable after N repairs"), with everything resting on it.
 """
 
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 from .pag.model import PAG
-from .scene.model import Scene
+from .scene.model import Repair, Scene
 from .solver import SolverConfig, solve
 
-__all__ = ["PipelineOptions", "run_pipeline"]
+__all__ = ["PipelineOptions", "run_pipeline", "unstable_objects", "UNSTABLE_FLAGS"]
+
+#: Physics flags that make an object unstable (set by settling).
+UNSTABLE_FLAGS = ("fell", "tipped", "left_support")
 
 
 @dataclass(frozen=True)
@@ -28,25 +39,114 @@ class PipelineOptions:
     preview : bool
         Render ``preview.png``.
     solver : SolverConfig
+    repair_rounds : int
+        Settle-verify-repair rounds after the first settling (0: no repair).
+    time_limit : float or None
+        Seconds the solver may spend before unplaced objects fail with ``time limit``.
     """
 
     settle: bool = True
     preview: bool = True
     solver: SolverConfig = SolverConfig()
+    repair_rounds: int = 3
+    time_limit: float | None = None
+
+
+def unstable_objects(scene: Scene) -> dict[str, str]:
+    """``{id: cause}`` of settled, placed, dynamic objects that fell, tipped or left their
+    support (cause: the first flag), or whose support relation no longer holds (cause:
+    ``support relation``)."""
+    out: dict[str, str] = {}
+    for o in scene.placed:
+        if o.fixed:
+            continue
+        bad = [f for f in UNSTABLE_FLAGS if f in o.flags]
+        if bad:
+            out[o.id] = bad[0]
+    sup_index = {scene.pag.relations.index(scene.pag.supporter(oid)): oid
+                 for oid in scene.pag.objects if scene.pag.supporter(oid) is not None}
+    for c in scene.relations:
+        oid = sup_index.get(c.index)
+        if oid is not None and oid not in out and c.holds_settled is False \
+                and scene.objects[oid].placed and not scene.objects[oid].fixed:
+            out[oid] = "support relation"
+    return out
+
+
+def _settle(scene: Scene) -> None:
+    from .physics import settle
+
+    for o in scene.objects.values():
+        o.settled_rotation = o.settled_position = None
+    scene.settled = False
+    settle(scene)
+
+
+def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
+                      config: SolverConfig | None = None) -> dict[str, int]:
+    """Settle ``scene``, then re-place what is unstable and settle again, up to ``rounds``.
+
+    Returns ``{"repaired": n, "unrepaired": m}``: objects repaired into a stable pose, and
+    objects that became ``failed`` because they were still unstable.
+    """
+    from .solver.checks import check_relations
+    from .solver.search import mark_unmet, replace_objects, support_descendants
+
+    cfg = config or SolverConfig()
+    _settle(scene)
+    touched: set[str] = set()
+    for rnd in range(1, rounds + 1):
+        bad = unstable_objects(scene)
+        if not bad:
+            break
+        action = "pose" if rnd == 1 else "asset"
+        done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
+                               config=cfg, new_asset=set(bad) if action == "asset" else None)
+        for oid, cause in bad.items():
+            o = scene.objects[oid]
+            o.repairs.append(Repair(rnd, cause, done.get(oid, action)))
+            touched.add(oid)
+        scene.relations = []
+        scene.relations = check_relations(scene)
+        mark_unmet(scene)
+        _settle(scene)
+    still = {oid: c for oid, c in unstable_objects(scene).items()
+             if c in UNSTABLE_FLAGS}
+    n = max((len(scene.objects[o].repairs) for o in still), default=0)
+    for oid in still:
+        o = scene.objects[oid]
+        o.status, o.reason = "failed", f"unstable after {len(o.repairs)} repairs ({still[oid]})"
+        for d in support_descendants(scene.pag, oid):
+            if scene.objects[d].placed:
+                scene.objects[d].status = "failed"
+                scene.objects[d].reason = f"its support {oid!r} failed (unstable after {n} repairs)"
+    if still:
+        scene.relations = []
+        scene.relations = check_relations(scene)
+        check_relations(scene, settled=True)
+        mark_unmet(scene)
+    stats = {"repaired": len(touched - set(still)), "unrepaired": len(still)}
+    scene.meta["repair"] = stats
+    return stats
 
 
 def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
-                 options: PipelineOptions = PipelineOptions(), library=None) -> Scene:
-    """Solve ``pag`` and, per ``options``, settle, extract contacts, write and preview.
+                 options: PipelineOptions = PipelineOptions(), library=None,
+                 progress: Callable | None = None) -> Scene:
+    """Solve ``pag`` and, per ``options``, settle and repair, extract contacts, write and
+    preview.
 
-    Returns the scene; ``scene.ok`` tells whether every object was placed.
+    Returns the scene; ``scene.ok`` tells whether every object was placed (and, when settled,
+    stayed stable).
     """
-    scene = solve(pag, seed=seed, config=options.solver, library=library)
+    scene = solve(pag, seed=seed, config=options.solver, library=library, progress=progress,
+                  deadline=options.time_limit)
     if options.settle and scene.placed:
-        from .physics import extract_contacts, settle
+        from .physics import extract_contacts
 
         t = time.perf_counter()
-        settle(scene)
+        settle_and_repair(scene, rounds=options.repair_rounds, library=library,
+                          config=options.solver)
         scene.timings["settle"] = time.perf_counter() - t
         t = time.perf_counter()
         scene.contacts = extract_contacts(scene)

@@ -24,6 +24,8 @@ def _summary(scene, out: Path | None) -> dict:
         "relations_holding_settled": (sum(1 for c in scene.relations if c.holds_settled)
                                       if scene.settled else None),
         "contacts": None if scene.contacts is None else len(scene.contacts),
+        "repaired": scene.meta.get("repair", {}).get("repaired", 0),
+        "unrepaired": scene.meta.get("repair", {}).get("unrepaired", 0),
         "timings": {k: round(v, 4) for k, v in scene.timings.items()},
         "out": str(out) if out else None,
     }
@@ -39,6 +41,8 @@ def _print_summary(s: dict) -> None:
                   + (f", {s['contacts']} part-level contacts" if s["contacts"] is not None else ""))
     t = s["timings"]
     console.print("  time: " + ", ".join(f"{k} {v:.3f} s" for k, v in t.items()))
+    if s["repaired"] or s["unrepaired"]:
+        console.print(f"  repaired after settling: {s['repaired']}, still unstable: {s['unrepaired']}")
     for f in s["failed"]:
         console.print(f"  [red]failed[/] {f['id']}: {f['reason']}")
     if s["out"]:
@@ -47,15 +51,27 @@ def _print_summary(s: dict) -> None:
                       + (", preview.png" if (Path(s['out']) / 'preview.png').exists() else ""))
 
 
-def _run(pag, seed, out, strategy, no_settle, no_preview, as_json) -> None:
+def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, search="backtracking",
+         search_budget=24, time_limit=None) -> None:
     from ..pipeline import PipelineOptions, run_pipeline
-    from ..solver import SolverConfig
+    from ..solver import SEARCHES, STRATEGIES, SolverConfig
 
-    if strategy not in ("constrained", "rejection"):
+    if strategy not in STRATEGIES:
         raise InputError(Problem("", f"unknown strategy {strategy!r} (use constrained or rejection)",
                                  "--strategy", "parameter"))
+    if search not in SEARCHES:
+        raise InputError(Problem("", f"unknown search {search!r} (use backtracking or greedy)",
+                                 "--search", "parameter"))
+    if search_budget < 0:
+        raise InputError(Problem("", f"--search-budget must be 0 or more, got {search_budget}",
+                                 "--search-budget", "parameter"))
+    if time_limit is not None and not time_limit > 0:
+        raise InputError(Problem("", f"--time-limit must be a positive number of seconds, got "
+                                     f"{time_limit}", "--time-limit", "parameter"))
     opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
-                           solver=SolverConfig(strategy=strategy))
+                           solver=SolverConfig(strategy=strategy, search=search,
+                                               search_budget=search_budget),
+                           time_limit=time_limit)
     scene = run_pipeline(pag, seed=seed, out=out, options=opts)
     s = _summary(scene, out)
     if as_json:
@@ -73,23 +89,28 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", help="Scene seed."),
         out: Path = typer.Option(None, "--out", "-o", help="Output folder (default: out/<name>-<seed>)."),
         strategy: str = typer.Option("constrained", help="constrained (Algorithm 1) or rejection (baseline)."),
+        search: str = typer.Option("backtracking", help="backtracking (re-place conflicting objects) or greedy (one pass)."),
+        search_budget: int = typer.Option(24, "--search-budget", help="Re-placements the backtracking search may spend."),
+        time_limit: float = typer.Option(None, "--time-limit", help="Seconds; objects not placed by then fail (exit 3)."),
         no_settle: bool = typer.Option(False, "--no-settle", help="Skip physics settling and contacts."),
         no_preview: bool = typer.Option(False, "--no-preview", help="Skip preview.png."),
         as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON."),
     ) -> None:
         """Solve a PAG into a settled scene: scene.json, scene.glb, contacts.json, preview.png.
 
-        Exit codes: 0 all objects placed, 2 invalid PAG, 3 some objects could not be placed
-        (the scene is still written, failed objects marked).
+        Exit codes: 0 all objects placed and stable, 2 invalid PAG, 3 some objects could not be
+        placed or stayed unstable after repair (the scene is still written, failed objects
+        marked with their reason).
 
-        Example: parse3d solve examples/study.json --seed 3 --out out/study
+        Example: parse3d solve examples/study.json --seed 3 --search greedy --time-limit 20 --out out/study
         """
         from ..assets.registry import vocabulary
         from ..pag.io import load_pag
 
         pag = load_pag(pag_file, vocabulary=vocabulary())
         out = out or Path("out") / f"{pag.name or pag_file.stem}-{seed}"
-        _run(pag, seed, out, strategy, no_settle, no_preview, as_json)
+        _run(pag, seed, out, strategy, no_settle, no_preview, as_json, search, search_budget,
+             time_limit)
 
     @app.command("generate")
     def generate_cmd(

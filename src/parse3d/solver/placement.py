@@ -1,0 +1,341 @@
+"""Stages 1 and 6 of Algorithm 1 for one object: choose an asset and scale, then sample
+positions in the feasible region and validate each (relation checks, FCL collisions)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+import shapely
+from shapely.geometry import Polygon
+
+from ..assets.model import Asset
+from ..geometry import regions as RG
+from ..geometry.frames import axis_angle
+from ..pag.model import Edge
+from ..scene.model import PlacedObject
+from .checks import EPS, check_edge, world_points
+from .collision import Body, cached_body
+from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
+from .geometry import asset_geometry, drop_distance
+from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
+from .rotation import solve_rotation
+from .state import SolveState, angle_to, plane_coords, support_chain
+from .support import Support, support_candidates
+
+__all__ = ["Placement", "place_object"]
+
+
+@dataclass
+class Placement:
+    """An accepted pose: the object, its collision body and the checks measured on it (one per
+    edge of the object, in ``pag.edges_of`` order)."""
+
+    obj: PlacedObject
+    body: Body
+    checks: list[tuple]
+
+
+def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
+                 library, *, skip: frozenset[int] = frozenset(),
+                 proposal: tuple[np.ndarray, np.ndarray] | None = None) -> Placement:
+    """Place one object (its parents are placed); raise Fail with the reason otherwise.
+
+    ``skip`` holds indices (into ``pag.edges_of(oid)``) of non-support relations left out
+    because their parent failed. ``proposal`` is a world pose ``(R, t)`` tried first.
+    """
+    pag = st.pag
+    node = pag.objects[oid]
+    edges = pag.edges_of(oid)
+    support_edge = edges[0]
+    others = [e for i, e in enumerate(edges[1:], 1) if i not in skip]
+    reasons: list[str] = []
+    total_trials = 0
+    for attempt in range(cfg.asset_attempts):
+        category = node.candidates[int(rng.integers(len(node.candidates)))]
+        asset = library.get(category, rng)
+        # generators already make real-world sizes: keep them (times the node's scale range),
+        # clamped so the size stays in the category's range (this normalises loaded assets)
+        lo, hi = asset.size_range
+        s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
+        size = asset_geometry(asset).size
+        scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        scale *= 0.92 ** attempt  # retries try a smaller instance
+        try:
+            pose, trials, checks = _place_asset(st, oid, asset, scale, support_edge, others, rng,
+                                                cfg, proposal if attempt == 0 else None)
+        except Fail as f:
+            reasons.append(str(f))
+            total_trials += cfg.max_trials
+            continue
+        total_trials += trials
+        R, t, sup, body = pose
+        obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
+                           support_choice=sup.choice)
+        obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
+        full = _full_checks(edges, skip, checks)
+        return Placement(obj, body, full)
+    raise Fail(_summarise(reasons, node))
+
+
+def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
+    it = iter(checks)
+    return [None if i in skip else next(it) for i in range(len(edges))]
+
+
+def _summarise(reasons: list[str], node) -> str:
+    """One message for all attempts: the most frequent distinct reasons (at most two), and how
+    many assets were tried when there were several."""
+    if not reasons:
+        return "no attempt"
+    counts: dict[str, int] = {}
+    for r in reasons:
+        for frag in r.split("; "):
+            counts[frag] = counts.get(frag, 0) + 1
+    uniq = sorted(counts, key=lambda r: -counts[r])
+    msg = "; ".join(uniq[:2])
+    if len(reasons) > 1 and all("in this " in r for r in reasons):
+        msg = msg.replace("in this ", "in every ")
+    more = f"; {len(uniq) - 2} other reasons" if len(uniq) > 2 else ""
+    return msg + more + (f" ({len(reasons)} assets tried)" if len(reasons) > 1 else "")
+
+
+def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_edge: Edge,
+                 others: list[Edge], rng: np.random.Generator, cfg: SolverConfig, proposal):
+    geom = asset_geometry(asset)
+    hull = geom.hull * scale
+    sups = support_candidates(st, support_edge)
+    order = rng.permutation(len(sups)) if len(sups) > 1 and support_edge.parent.surface is None \
+        and support_edge.relation != "ON" else np.arange(len(sups))
+    if support_edge.relation == "ON" and len(sups) > 1:
+        order = np.arange(len(sups))
+    if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
+        order = rng.permutation(len(sups))
+    body = cached_body(asset.asset_id, scale, lambda: _scaled_mesh(asset, scale))
+    reasons = []
+    for variant in _wall_choices(st, others, rng):
+        for si in order:
+            sup = sups[int(si)]
+            try:
+                return _place_on(st, oid, asset, scale, hull, sup, support_edge, variant, body,
+                                 rng, cfg, proposal)
+            except Fail as f:
+                reasons.append(str(f))
+    raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)))
+
+
+def _wall_choices(st: SolveState, edges: list[Edge], rng: np.random.Generator) -> list[list[Edge]]:
+    """Edge lists with ``wall`` (any wall) replaced by each concrete wall, in random order."""
+    if not any(e.parent.object == "wall" for e in edges):
+        return [edges]
+    walls = [n for n in st.scene.room.elements if n.startswith("wall_")]
+    out = []
+    for k in rng.permutation(len(walls)):
+        w = walls[int(k)]
+        out.append([replace(e, parent=replace(e.parent, object=w, text=""))
+                    if e.parent.object == "wall" else e for e in edges])
+    return out
+
+
+def _scaled_mesh(asset: Asset, scale: float):
+    m = asset.mesh()
+    m.apply_scale(scale)
+    return m
+
+
+def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
+              sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+              rng: np.random.Generator, cfg: SolverConfig, proposal=None):
+    s = sup.surface
+    rel = support_edge.relation
+    strategy = cfg.strategy
+    R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng, strategy,
+                                     scale)
+    Y = hull @ R.T
+    hN = Y @ s.normal
+    height = float(hN.max() - hN.min())
+    if rel == "IN" and height > sup.clearance:
+        raise Fail(f"IN: {oid} is {height:.2f} m tall but {sup.name} has "
+                   f"{sup.clearance:.2f} m of free height")
+    drop = 0.0
+    if rel == "HANGING_BELOW":
+        lo, hi = support_edge.param("drop")
+        drop = rng.uniform(lo, hi)
+    h = -float(hN.min()) + EPS + drop
+    # room elements are bounded by walls in the collision world; object supports keep a margin
+    # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
+    region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else cfg.margin),
+                                join_style="mitre")
+    if region0.is_empty:
+        region0 = sup.region  # tiny supports (a burner) keep their polygon; see overhang below
+    # the support's owner and everything holding it up (a cabinet around a stack of plates)
+    exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
+    F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+    overhang = False
+    if strategy == "constrained":
+        obst = obstacles(st, sup, exclude, height + EPS)
+        # a hole the child fits into (a sink cut-out under a bottle) is an obstacle; a hole
+        # the child's footprint cannot fit in (a plate's well under a plate) is spanned
+        fa = Polygon(F).area
+        obst += [RG.convex_footprint(hole) for hole in sup.holes
+                 if not RG.erode(Polygon(hole), [], F).is_empty]
+        if rel == "HANGING_BELOW":
+            # what hangs needs its attachment (the points touching the parent) on the parent's
+            # surface, not its whole footprint: a towel is wider than the bar it hangs from
+            top = Y[hN <= hN.min() + 2e-3]
+            Fc = RG.convex_footprint(np.vstack([np.c_[top @ s.u, top @ s.v],
+                                                np.c_[top @ s.u, top @ s.v] + 1e-4]))
+            region = RG.clip(RG.erode(region0, [], Fc),
+                             RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+        else:
+            region = RG.erode(region0, obst, F)
+            if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
+                    and sup.owner != "room" and RG.erode(region0, [], F).is_empty \
+                    and fa <= 1.5 * Polygon(st.xy[sup.owner]).area:
+                # a support smaller than the child (a pot on a burner, an apple in a bowl):
+                # the paper's stability rule, centre of mass over the support polygon, decides;
+                # only for children no bigger than the parent object (no wardrobe on a mug)
+                com = (asset_geometry(asset).com * scale) @ R.T
+                region = shapely.affinity.translate(region0, -float(com @ s.u), -float(com @ s.v))
+                region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+                room = st.scene.room.elements["floor"].surface
+                fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
+                region = RG.clip(region, RG.erode(fp, [], F))
+                overhang = True
+        if region.is_empty or region.area < 1e-10:
+            raise Fail(_no_space(st, sup, F, region0, obst))
+        c3 = (asset_geometry(asset).center * scale) @ R.T
+        ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
+                            c3 + h * s.normal)
+        region = apply_region_rules(ctx, others, region, "object")
+        if rel == "SECURED_TO":
+            region = height_band(ctx, support_edge, region)
+        region = apply_region_rules(ctx, others, region, "part")
+    else:
+        region = region0
+    trials = 0
+    last = "no sample"
+    samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    same = 0
+    for k in range(cfg.max_trials + (proposal is not None)):
+        trials += 1
+        if proposal is not None and k == 0:
+            Rt, t = np.asarray(proposal[0], float), np.asarray(proposal[1], float)
+        else:
+            if strategy == "rejection":
+                R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng,
+                                                 strategy, scale)
+                hN = (hull @ R.T) @ s.normal
+                h = -float(hN.min()) + EPS + drop
+            ab = samples[k - (proposal is not None)]
+            Rt = R
+            if toward is not None and strategy == "constrained":
+                Rt, h = _face(st, toward, R, hull, s, ab, h, drop, others)
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
+        cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        if rel == "ON" and sup.owner != "room":
+            # settle onto the parent's actual geometry: a plate on a plate sits in its well
+            parent = st.scene.objects[sup.owner]
+            d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
+                              st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+            if np.isfinite(d) and d > 2 * EPS:
+                t = t - (d - EPS) * s.normal
+                cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        # footprint inside the support polygon: the region guarantees it, except after a TOWARD
+        # turn, for rejection samples and proposals
+        if not overhang and (Rt is not R or strategy == "rejection"):
+            Fw = plane_coords(s, world_points(cand, hull_only=True))
+            if not region0.contains(Polygon(RG.convex_footprint(Fw))):
+                last = f"footprint leaves {sup.name}"
+                continue
+        ok, why, checks = _validate(st, cand, support_edge, others, sup)
+        if not ok:
+            # the region makes relations hold by construction; the same relation failing
+            # again and again is structural (a pan that would tip, a part that is not the
+            # lowest one): stop wasting samples on this asset
+            rel_of = why.split(":")[0]
+            same = same + 1 if rel_of == last.split(":")[0] else 1
+            last = why
+            if same >= STRUCTURAL_FAILURES:
+                break
+            continue
+        body.move(Rt, t)
+        hit = st.world.collides(body)
+        if hit is not None:
+            last = f"collides with {hit}"
+            continue
+        return (Rt, t, sup, body), trials, checks
+    raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+def _face(st, toward, R, hull, s, ab, h, drop, others):
+    """Turn the child about the support normal to face ``toward`` from position ``ab``: square
+    to the nearest side of the target when that keeps TOWARD's tolerance, else at its
+    centroid."""
+    t0 = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
+    target, frame, thull = parent_frame(st, toward)
+    front = R @ np.array([0, 1.0, 0])
+    want = target - t0
+    ang = angle_to(front, want, s.normal)
+    if ang is None:
+        return R, h
+    tol = next((np.deg2rad(e.param("tolerance_deg")) for e in others
+                if e.relation == "TOWARD" and e.parent.object == toward), np.deg2rad(10.0))
+    if thull is not None:
+        # the side of the target facing the child: the target frame axis most aligned with
+        # the direction from the target to the child, weighed by the target's half extents
+        d = t0 - target
+        best = None
+        for ax in (frame[:, 0], frame[:, 1]):
+            half = max(float(np.ptp(thull @ ax)) / 2, 1e-3)
+            score = abs(float(d @ ax)) / half
+            if best is None or score > best[0]:
+                best = (score, -np.sign(float(d @ ax)) * ax)
+        sq = angle_to(front, best[1], s.normal)
+        if sq is not None:
+            a, b = best[1][:2], want[:2]
+            dev = abs(float(np.arctan2(a[0] * b[1] - a[1] * b[0], float(a @ b))))
+            if dev <= 0.8 * tol:
+                ang = sq
+    Rt = axis_angle(s.normal, ang) @ R
+    hN2 = (hull @ Rt.T) @ s.normal
+    return Rt, -float(hN2.min()) + EPS + drop
+
+
+def _no_space(st: SolveState, sup: Support, F: np.ndarray, region0, obst) -> str:
+    """Why the support has no room: too small, or taken (by whom)."""
+    fx, fy = np.ptp(F[:, 0]), np.ptp(F[:, 1])
+    if RG.erode(region0, [], F).is_empty:
+        b = region0.bounds
+        return (f"no free space on {sup.name}: a {fx:.2f} x {fy:.2f} m footprint does not fit "
+                f"its {b[2] - b[0]:.2f} x {b[3] - b[1]:.2f} m surface")
+    there = [o.id for o in st.scene.objects.values()
+             if o.placed and o.support_choice is not None and o.support_choice == sup.choice]
+    if not there:
+        return f"no free space on {sup.name} for a {fx:.2f} x {fy:.2f} m footprint"
+    names = ", ".join(there[:4]) + (", ..." if len(there) > 4 else "")
+    return (f"no free space on {sup.name} for a {fx:.2f} x {fy:.2f} m footprint: it holds "
+            f"{len(there)} objects already ({names})")
+
+
+def _validate(st: SolveState, cand: PlacedObject, support_edge: Edge, others: list[Edge],
+              sup: Support) -> tuple[bool, str, list]:
+    results = []
+    for e in [support_edge, *others]:
+        holds, res, detail = check_edge(st.scene, e, cand, resolved=resolution(e, sup.choice))
+        if not holds:
+            return False, f"{e.relation} {e.child} -> {e.parent}: {detail}", []
+        results.append((holds, res, detail))
+    return True, "", results
+
+
+def resolution(edge: Edge, choice, *, final: bool = False) -> dict | None:
+    """What the checks need to know of a support edge's resolution (part, element, surface);
+    ``final`` is the form kept in ``scene.meta["resolved"]`` (no surface for room elements)."""
+    if not edge.is_support:
+        return None
+    room = choice.owner == "room"
+    return {"parent_part": None if room else choice.part,
+            "parent_element": choice.part if room else None,
+            "parent_surface": None if room and final else choice.surface,
+            "internal": edge.relation == "IN" and not (room and final)}
