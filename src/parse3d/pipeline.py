@@ -112,14 +112,16 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         _settle(scene)
     still = {oid: c for oid, c in unstable_objects(scene).items()
              if c in UNSTABLE_FLAGS}
-    n = max((len(scene.objects[o].repairs) for o in still), default=0)
-    for oid in still:
+    for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
+        if not o.placed:
+            continue  # failed with its support already
         o.status, o.reason = "failed", f"unstable after {len(o.repairs)} repairs ({still[oid]})"
         for d in support_descendants(scene.pag, oid):
             if scene.objects[d].placed:
                 scene.objects[d].status = "failed"
-                scene.objects[d].reason = f"its support {oid!r} failed (unstable after {n} repairs)"
+                scene.objects[d].reason = f"its support {oid!r} failed (unstable after " \
+                                          f"{len(o.repairs)} repairs)"
     if still:
         scene.relations = []
         scene.relations = check_relations(scene)
