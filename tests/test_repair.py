@@ -27,12 +27,15 @@ def table_setting() -> PAG:
     return pag
 
 
-def _lift(scene, oid: str, dz: float) -> None:
-    """Move an object (and what rests on it) up by ``dz``: it hovers and will fall."""
+def _push_off(scene, oid: str) -> None:
+    """Move an object (and what rests on it) past the table's edge, 2 cm up: it will fall to
+    the floor."""
     from parse3d.solver.search import support_descendants
 
+    table = scene.objects["table"].world_bounds()
+    shift = np.array([table[1, 0] - scene.objects[oid].world_bounds()[0, 0] + 0.05, 0, 0.02])
     for o in [oid, *support_descendants(scene.pag, oid)]:
-        scene.objects[o].position = scene.objects[o].position + np.array([0, 0, dz])
+        scene.objects[o].position = scene.objects[o].position + shift
 
 
 @pytest.fixture(scope="module")
@@ -46,7 +49,7 @@ def test_fallen_object_is_repaired(solved, tmp_path):
     import copy
 
     scene = copy.deepcopy(solved)
-    _lift(scene, "mug", 0.15)
+    _push_off(scene, "mug")
     stats = settle_and_repair(scene, rounds=3)
     mug = scene.objects["mug"]
     assert mug.placed and mug.repairs, mug
@@ -73,7 +76,7 @@ def test_unrepaired_object_fails_with_what_it_supports(solved):
     import copy
 
     scene = copy.deepcopy(solved)
-    _lift(scene, "bowl", 0.2)
+    _push_off(scene, "bowl")
     stats = settle_and_repair(scene, rounds=0)
     assert stats["unrepaired"] >= 1
     bowl, apple = scene.objects["bowl"], scene.objects["apple"]

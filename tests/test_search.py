@@ -60,28 +60,42 @@ def test_every_relation_has_a_rule():
     assert {ph for ph, _ in REGION_RULES.values()} <= {"object", "part", "none"}
 
 
-def crowded_shelf(n: int) -> PAG:
-    pag = PAG("crowded", Room("study", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.7))
-    pag.add("bookcase", "bookcase")
-    pag.relate("bookcase", "ON", "floor")
-    pag.relate("bookcase@back", "AGAINST", "wall_0")
-    for i in range(n):
-        pag.add(f"book{i}", "book")
-        pag.relate(f"book{i}", "IN", "bookcase:shelf#0")
+def side_table() -> PAG:
+    """A vase with things on three sides of it, on a small side table."""
+    pag = PAG("side", Room("living_room", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.7))
+    a, r = pag.add, pag.relate
+    a("table", "side_table")
+    r("table", "ON", "floor")
+    a("vase", "vase")
+    r("vase", "ON", "table:tabletop")
+    a("lamp", "table_lamp")
+    r("lamp", "ON", "table:tabletop")
+    r("lamp", "SIDE_OF", "vase", side="right")
+    a("book", "book")
+    r("book", "ON", "table:tabletop")
+    r("book", "SIDE_OF", "vase", side="left")
+    a("remote", "remote_control")
+    r("remote", "ON", "table:tabletop")
+    r("remote", "SIDE_OF", "vase", side="front")
     return pag
 
 
-def test_backtracking_places_at_least_as_much_and_is_deterministic():
-    pag = crowded_shelf(40)
-    greedy = solve(pag, seed=0, config=SolverConfig(search="greedy"))
-    back = solve(pag, seed=0, config=SolverConfig(search="backtracking", search_budget=12))
-    again = solve(pag, seed=0, config=SolverConfig(search="backtracking", search_budget=12))
-    assert len(back.placed) >= len(greedy.placed)
-    assert back.meta["search"]["budget_left"] >= 0
-    assert [(o.id, o.status, tuple(np.round(o.position, 9))) for o in back.objects.values()] == \
-           [(o.id, o.status, tuple(np.round(o.position, 9))) for o in again.objects.values()]
-    for o in back.failed:  # a full shelf says how many it already holds
-        assert "holds" in o.reason and "objects already" in o.reason
+@pytest.mark.parametrize("seed", [0, 3])
+def test_backjumping_moves_the_parent_of_the_failed_relation(seed):
+    # at these seeds the vase lands too far right for the lamp in a single greedy pass
+    greedy = solve(side_table(), seed=seed, config=SolverConfig(search="greedy"))
+    assert not greedy.objects["lamp"].placed
+    assert "SIDE_OF lamp -> vase side right emptied" in greedy.objects["lamp"].reason
+    back = solve(side_table(), seed=seed)
+    assert back.ok, [(o.id, o.reason) for o in back.failed]
+    assert all(c.holds for c in back.relations)
+    assert back.meta["search"]["backjumps"] >= 1
+    assert back.meta["search"]["budget_left"] < SolverConfig().search_budget
+    again = solve(side_table(), seed=seed)
+    assert [tuple(np.round(o.position, 9)) for o in back.objects.values()] == \
+           [tuple(np.round(o.position, 9)) for o in again.objects.values()]
+    none = solve(side_table(), seed=seed, config=SolverConfig(search_budget=0))
+    assert not none.objects["lamp"].placed
 
 
 def test_config_rejects_unknown_search():
@@ -139,3 +153,102 @@ def test_floor_furniture_is_square_to_the_walls_unless_free():
             else:
                 free.append(off)
     assert max(free) > 1.0  # the free rug is not squared
+
+
+def test_contact_on_a_part_that_is_not_the_extreme_is_explained():
+    pag = PAG("sofa-wall", Room("living_room", ((0, 0), (5, 0), (5, 4), (0, 4)), 2.7))
+    pag.add("sofa", "sofa")
+    pag.relate("sofa", "ON", "floor")
+    pag.relate("sofa:back_cushion@back", "AGAINST", "wall_0")
+    scene = solve(pag, seed=0, config=SolverConfig(search="greedy"))
+    reason = scene.objects["sofa"].reason
+    assert "sofa:frame reaches" in reason and "further back than sofa:back_cushion" in reason
+    assert "name sofa:frame@back or sofa@back" in reason
+
+
+def test_leaning_on_a_part_that_cannot_touch_says_so():
+    pag = PAG("guitar", Room("music_room", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
+    pag.add("guitar", "guitar")
+    pag.relate("guitar", "ON", "floor")
+    pag.relate("guitar:body@back", "LEANING_AGAINST", "wall_2", angle_deg=[10, 15])
+    scene = solve(pag, seed=0, config=SolverConfig(search="greedy"))
+    reason = scene.objects["guitar"].reason
+    assert "at every tilt in 10-15 deg guitar:" in reason and "further toward wall_2" in reason
+    assert "name guitar@back to lean on any part" in reason
+
+
+def fruit_bowl(n: int) -> PAG:
+    pag = PAG("fruit", Room("kitchen", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.7))
+    pag.add("table", "dining_table")
+    pag.relate("table", "ON", "floor")
+    pag.add("bowl", "bowl")
+    pag.relate("bowl", "ON", "table:tabletop")
+    for i in range(n):
+        pag.add(f"apple{i}", "apple")
+        pag.relate(f"apple{i}", "IN", "bowl")
+    return pag
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_apples_pile_in_a_bowl(seed):
+    scene = solve(fruit_bowl(4), seed=seed)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    apples = [o for o in scene.objects.values() if o.id.startswith("apple")]
+    assert any(o.stacked_on for o in apples)  # more than the bowl's bottom holds: a pile
+    for o in apples:
+        if o.stacked_on:
+            assert scene.objects[o.stacked_on].category == "apple"
+    # every apple's centre of mass is inside the bowl's footprint
+    from shapely.geometry import MultiPoint, Point
+
+    from parse3d.solver.checks import object_centroid, world_points
+
+    bowl = MultiPoint(world_points(scene.objects["bowl"], hull_only=True)[:, :2]).convex_hull
+    assert all(bowl.contains(Point(object_centroid(o)[:2])) for o in apples)
+
+
+class _SinkCounters:
+    """The on-disk pool, but every kitchen counter is one with a sink cut in its top."""
+
+    def __init__(self):
+        from parse3d.assets.pool import default_pool
+
+        self.pool = default_pool()
+        self.per_category = self.pool.per_category
+
+    def get(self, category, rng):
+        if category == "kitchen_counter":
+            rng.integers(self.per_category)
+            return self.pool.load(category, 0)
+        return self.pool.get(category, rng)
+
+    def load(self, category, seed):
+        return self.pool.load(category, 0 if category == "kitchen_counter" else seed)
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_bottles_stay_off_the_sink_hole(seed):
+    from shapely.geometry import Point, Polygon
+
+    lib = _SinkCounters()
+    pag = PAG("sink", Room("kitchen", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.7))
+    pag.add("counter", "kitchen_counter")
+    pag.relate("counter", "ON", "floor")
+    pag.relate("counter@back", "AGAINST", "wall_0")
+    for i in range(6):
+        pag.add(f"bottle{i}", "bottle")
+        pag.relate(f"bottle{i}", "ON", "counter:countertop")
+    scene = solve(pag, seed=seed, library=lib, config=SolverConfig(search="greedy"))
+    counter = scene.objects["counter"]
+    top = counter.asset.parts_by_label("countertop")[0]
+    surf = counter.world_surface(top, "top")
+    polys = getattr(surf.polygon, "geoms", [surf.polygon])
+    holes = [Polygon(r) for g in polys for r in g.interiors]
+    assert holes  # this counter has a sink cut in its top
+    for i in range(6):
+        b = scene.objects[f"bottle{i}"]
+        assert b.placed, b.reason
+        low = b.world_bounds()[0, 2]
+        assert abs(low - surf.origin[2]) < 0.003  # on the top, not down in the sink
+        uv = (b.position - surf.origin) @ np.c_[surf.u, surf.v]
+        assert not any(h.contains(Point(uv)) for h in holes)

@@ -18,6 +18,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from .pag.model import PAG
 from .scene.model import Repair, Scene
 from .solver import SolverConfig, solve
@@ -52,25 +54,68 @@ class PipelineOptions:
     time_limit: float | None = None
 
 
-def unstable_objects(scene: Scene) -> dict[str, str]:
-    """``{id: cause}`` of settled, placed, dynamic objects that fell, tipped or left their
-    support (cause: the first flag), or whose support relation no longer holds (cause:
-    ``support relation``)."""
+def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
+    """``{id: cause}`` of settled, placed, dynamic objects that are physically unstable, and
+    (with ``relations``) of those whose support relation no longer holds.
+
+    Physically unstable (cause: the physics flag) means flagged by settling *and* really off:
+    ``left_support`` or ``fell`` with the centre of mass no longer over the supporting object
+    (an apple rolling inside its bowl is not off), or ``tipped`` with the centre of mass more
+    than 2 cm lower (a TV fallen over, not a ball turned). Stacked objects rest on the object
+    below, so their support surface is not expected to touch them.
+    """
+    from .solver.checks import world_points
+
     out: dict[str, str] = {}
     for o in scene.placed:
-        if o.fixed:
+        if o.fixed or o.settled_position is None:
             continue
-        bad = [f for f in UNSTABLE_FLAGS if f in o.flags]
-        if bad:
-            out[o.id] = bad[0]
-    sup_index = {scene.pag.relations.index(scene.pag.supporter(oid)): oid
-                 for oid in scene.pag.objects if scene.pag.supporter(oid) is not None}
-    for c in scene.relations:
-        oid = sup_index.get(c.index)
-        if oid is not None and oid not in out and c.holds_settled is False \
-                and scene.objects[oid].placed and not scene.objects[oid].fixed:
-            out[oid] = "support relation"
+        flags = [f for f in UNSTABLE_FLAGS if f in o.flags]
+        if not flags:
+            continue
+        com0 = _com(o, settled=False)
+        com1 = _com(o, settled=True)
+        sup = o.support_choice
+        owner = scene.objects.get(sup.owner) if sup is not None else None
+        off = False
+        if owner is not None and owner.placed:
+            from shapely.geometry import MultiPoint, Point
+
+            fp = MultiPoint(world_points(owner, hull_only=True, settled=True)[:, :2]).convex_hull
+            off = not fp.buffer(0.01).contains(Point(com1[:2]))
+        if off:
+            out[o.id] = "fell" if "fell" in flags else "left_support"
+        elif "tipped" in flags and com0[2] - com1[2] > 0.02 and not _round(o):
+            out[o.id] = "tipped"
+        elif "fell" in flags and owner is None and com0[2] - com1[2] > 0.05:
+            out[o.id] = "fell"
+    if relations:
+        sup_index = {scene.pag.relations.index(scene.pag.supporter(oid)): oid
+                     for oid in scene.pag.objects if scene.pag.supporter(oid) is not None}
+        for c in scene.relations:
+            oid = sup_index.get(c.index)
+            if oid is None or oid in out or c.holds_settled is not False:
+                continue
+            o = scene.objects[oid]
+            if o.placed and not o.fixed and not o.stacked_on:
+                out[oid] = "support relation"
     return out
+
+
+def _round(o) -> bool:
+    """Whether an object is about as wide as it is deep and tall (an apple, a ball): it rolls
+    rather than tips."""
+    from .solver.geometry import asset_geometry
+
+    ext = np.ptp(asset_geometry(o.asset).hull, axis=0)
+    return float(ext.max()) <= 1.3 * float(ext.min())
+
+
+def _com(o, *, settled: bool):
+    from .solver.geometry import asset_geometry
+
+    T = o.transform(settled)
+    return T[:3, :3] @ asset_geometry(o.asset).com + T[:3, 3]
 
 
 def _settle(scene: Scene) -> None:
@@ -96,7 +141,8 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     _settle(scene)
     touched: set[str] = set()
     for rnd in range(1, rounds + 1):
-        bad = unstable_objects(scene)
+        # a broken support relation on a stable object gets one new pose (round 1), no more
+        bad = unstable_objects(scene, relations=rnd == 1)
         if not bad:
             break
         action = "pose" if rnd == 1 else "asset"
@@ -110,8 +156,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         scene.relations = check_relations(scene)
         mark_unmet(scene)
         _settle(scene)
-    still = {oid: c for oid, c in unstable_objects(scene).items()
-             if c in UNSTABLE_FLAGS}
+    still = unstable_objects(scene, relations=False)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
         if not o.placed:

@@ -38,11 +38,14 @@ class Placement:
 
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
                  library, *, skip: frozenset[int] = frozenset(),
-                 proposal: tuple[np.ndarray, np.ndarray] | None = None) -> Placement:
+                 proposal: tuple[np.ndarray, np.ndarray] | None = None,
+                 keep: PlacedObject | None = None) -> Placement:
     """Place one object (its parents are placed); raise Fail with the reason otherwise.
 
     ``skip`` holds indices (into ``pag.edges_of(oid)``) of non-support relations left out
-    because their parent failed. ``proposal`` is a world pose ``(R, t)`` tried first.
+    because their parent failed. ``proposal`` is a world pose ``(R, t)`` tried first. ``keep``
+    is an earlier placement of the object whose asset and scale the first attempt reuses (a
+    repair by another pose).
     """
     pag = st.pag
     node = pag.objects[oid]
@@ -51,19 +54,37 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     others = [e for i, e in enumerate(edges[1:], 1) if i not in skip]
     reasons: list[str] = []
     total_trials = 0
+    reqs = requirements(pag, oid)
+    tried: set[str] = set()
     for attempt in range(cfg.asset_attempts):
         category = node.candidates[int(rng.integers(len(node.candidates)))]
         asset = library.get(category, rng)
+        if keep is not None and attempt == 0:
+            category, asset = keep.category, keep.asset
+        elif asset.asset_id in tried or lacks(asset, reqs):
+            # constraint-aware selection: another instance that has what the relations need
+            alt = _alternative(library, node.candidates, reqs, tried, rng)
+            if alt is None:
+                if asset.asset_id in tried:
+                    break  # every suitable instance was tried
+                why = lacks(asset, reqs)
+                raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
+                           f"{RANKED_SLOTS} per category) fits the relations: {why}")
+            category, asset = alt
+        tried.add(asset.asset_id)
         # generators already make real-world sizes: keep them (times the node's scale range),
         # clamped so the size stays in the category's range (this normalises loaded assets)
         lo, hi = asset.size_range
         s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
         size = asset_geometry(asset).size
         scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
-        scale *= 0.92 ** attempt  # retries try a smaller instance
+        scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
+        if keep is not None and attempt == 0:
+            scale = keep.scale
         try:
-            pose, trials, checks = _place_asset(st, oid, asset, scale, support_edge, others, rng,
-                                                cfg, proposal if attempt == 0 else None)
+            pose, trials, checks, under = _place_asset(st, oid, asset, scale, support_edge,
+                                                       others, rng, cfg,
+                                                       proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
             total_trials += cfg.max_trials
@@ -73,9 +94,80 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
+        obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
         return Placement(obj, body, full)
     raise Fail(_summarise(reasons, node))
+
+
+def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
+    """What the object's asset must have, from every relation naming one of its parts:
+    ``(part label, index or None, relation text, kind)`` with kind ``part`` (the part and
+    ``#k`` exist), ``internal`` (an IN parent part holds an internal support surface) or
+    ``extreme:<label>`` (an AGAINST child part reaches furthest along its surface normal)."""
+    out = []
+    for e in pag.relations:
+        text = f"{e.relation} {e.child} -> {e.parent}"
+        for ref, role in ((e.child, "child"), (e.parent, "parent")):
+            if ref.object != oid or ref.part is None:
+                continue
+            out.append((ref.part, ref.index, text, "part"))
+            if role == "parent" and e.relation == "IN":
+                out.append((ref.part, ref.index, text, "internal"))
+            if role == "child" and e.relation == "AGAINST":
+                out.append((ref.part, ref.index, text,
+                            f"extreme:{ref.surface or e.spec.child_surface}"))
+    return out
+
+
+def lacks(asset: Asset, reqs) -> str | None:
+    """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
+    from ..relations import SURFACES
+    from .geometry import part_points
+
+    for label, idx, text, kind in reqs:
+        ps = asset.parts_by_label(label)
+        if not ps:
+            return f"{asset.asset_id} has no part {label!r} ({text})"
+        if idx is not None and idx >= len(ps):
+            return f"{asset.asset_id} has {len(ps)} {label} part(s), no #{idx} ({text})"
+        ps = ps[idx:idx + 1] if idx is not None else ps
+        if kind == "internal":
+            names = {p.name for p in ps}
+            if not any(i.part in names for i in asset.internal):
+                return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
+        elif kind.startswith("extreme:"):
+            n = np.asarray(SURFACES[kind.split(":")[1]], float)
+            side = kind.split(":")[1]
+            mine = float(np.max(part_points(ps) @ n))
+            who = max(asset.parts, key=lambda p: float(np.max(part_points([p]) @ n)))
+            d = float(np.max(part_points([who]) @ n)) - mine
+            if d > 2e-3:
+                oid = text.split(" ")[1].split(":")[0]
+                return (f"{text}: {oid}:{who.label} reaches {d:.2f} m further {side} than "
+                        f"{oid}:{label} (asset {asset.asset_id}): name {oid}:{who.label}@{side} "
+                        f"or {oid}@{side}")
+    return None
+
+
+#: Pool slots examined per candidate category when looking for a suitable instance.
+RANKED_SLOTS = 8
+
+
+def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator):
+    """The first untried instance, over the candidate categories and a random sample of their
+    pool slots, that meets ``reqs``; None when there is none."""
+    load = getattr(library, "load", None)
+    if load is None:
+        return None
+    k = int(getattr(library, "per_category", 20))
+    for ci in rng.permutation(len(categories)):
+        cat = categories[int(ci)]
+        for slot in rng.permutation(k)[:RANKED_SLOTS]:
+            asset = load(cat, int(slot))
+            if asset.asset_id not in tried and lacks(asset, reqs) is None:
+                return cat, asset
+    return None
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
@@ -121,7 +213,193 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                                  rng, cfg, proposal)
             except Fail as f:
                 reasons.append(str(f))
+    if cfg.strategy == "constrained" and _may_stack(st, support_edge):
+        # crowding: rest on an object of the same category already on that support
+        for si in order:
+            try:
+                return _place_stacked(st, oid, asset, scale, hull, sups[int(si)], support_edge,
+                                      others, body, rng)
+            except Fail as f:
+                reasons.append(str(f))
     raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)))
+
+
+def _drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+               sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+               rng: np.random.Generator, onto: list[PlacedObject], own_fp: Polygon):
+    """A pile in a small container: drop the child from above the container at sampled
+    positions onto the container and what is in it, and keep the lowest valid rest (an apple
+    nestles between the others and the bowl's wall rather than on top of them)."""
+    s, n = sup.surface, sup.surface.normal
+    owner = onto[0]
+    hull = asset_geometry(asset).hull * scale
+    hN = (hull @ R.T) @ n
+    c3 = (asset_geometry(asset).com * scale) @ R.T
+    top = max(float(np.max((st.hulls[o.id] - s.origin) @ n)) for o in onto)
+    cu = np.array(own_fp.centroid.coords[0])
+    radius = max(np.sqrt(own_fp.area / np.pi), 1e-3)
+    r_child = max(float(np.ptp((hull @ R.T) @ s.u)), float(np.ptp((hull @ R.T) @ s.v))) / 2
+    inner = own_fp.buffer(-r_child)
+    found = []
+    last = f"no room left in {sup.owner}"
+    for _ in range(16):
+        ab = cu + rng.uniform(-1, 1, 2) * 0.5 * radius - np.array([c3 @ s.u, c3 @ s.v])
+        t = s.origin + ab[0] * s.u + ab[1] * s.v + (top - float(hN.min()) + 2 * EPS) * n
+        cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+        d = _drop(cand, world_points(cand, hull_only=True), asset, onto, st, n)
+        if not np.isfinite(d):
+            continue
+        t = t - (d - EPS) * n
+        cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+        pts = world_points(cand, hull_only=True)
+        height = float(np.max((pts - s.origin) @ n))
+        com = cand.transform()[:3, :3] @ asset_geometry(asset).com + t
+        if height > sup.clearance:
+            last = f"the pile would reach {height:.2f} m, above the {sup.clearance:.2f} m free"
+            continue
+        if inner.is_empty or not inner.contains(shapely.Point(plane_coords(s, com[None])[0])):
+            last = f"it would rest on the rim of {sup.owner}"
+            continue
+        found.append((float(com @ n), t, cand))
+    for _, t, cand in sorted(found, key=lambda f: f[0]):
+        checks = []
+        ok = True
+        for e in others:
+            holds, res, detail = check_edge(st.scene, e, cand)
+            if not holds:
+                ok, last = False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
+                break
+            checks.append((holds, res, detail))
+        if not ok:
+            continue
+        body.move(R, t)
+        hit = st.world.collides(body)
+        if hit is not None:
+            last = f"collides with {hit}"
+            continue
+        # what it rests on: the object whose drop distance is the contact
+        pts = world_points(cand, hull_only=True)
+        gaps = {o.id: drop_distance(pts, asset, cand.transform(), st.hulls[o.id], o.asset,
+                                    o.transform(), -n) for o in onto}
+        under = min(gaps, key=gaps.get)
+        holds, res, detail = check_edge(st.scene, support_edge, cand,
+                                        resolved=resolution(support_edge, sup.choice))
+        if not holds and under != owner.id:
+            holds, res, detail = bool(gaps[under] <= 2e-3), {"distance": round(gaps[under], 6)}, \
+                f"piled on {under} in {owner.id}"
+        return (R, t, sup, body), 1, [(holds, res, detail), *checks], \
+            None if under == owner.id else under
+    raise Fail(f"no free space on {sup.name} and no room in a pile: {last}")
+
+
+def _drop(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedObject],
+          st: SolveState, n: np.ndarray) -> float:
+    """How far ``cand`` can move down (along ``-n``) before touching any of ``onto``."""
+    return min(drop_distance(pts, asset, cand.transform(), st.hulls[o.id], o.asset,
+                             o.transform(), -n) for o in onto)
+
+
+#: Parent categories that take a plate-like stack for ON (every IN support takes piles).
+STACK_ON = ("plate",)
+
+
+def _may_stack(st: SolveState, edge: Edge) -> bool:
+    """Piles and stacks are allowed IN a container or shelf, and ON a plate."""
+    if edge.parent.is_room_element:
+        return False
+    if edge.relation == "IN":
+        return True
+    parent = st.scene.objects.get(edge.parent.object)
+    return edge.relation == "ON" and parent is not None and parent.category in STACK_ON
+
+
+def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
+                   sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+                   rng: np.random.Generator):
+    """Place the child on top of a same-category object already on ``sup`` (a can on a can
+    on a shelf, a plate on a stack of plates), or, in a small container (a bowl, a basket),
+    dropped into it onto its wall or the pile; ``Fail`` when none can take it.
+
+    Returns like ``_place_on`` plus the id of the object it rests on (None: the container).
+    """
+    s = sup.surface
+    n = s.normal
+    R, _, _ = solve_rotation(st, oid, asset, sup, support_edge, others, rng, "constrained", scale)
+    Y = hull @ R.T
+    hN = Y @ n
+    c3 = (asset_geometry(asset).com * scale) @ R.T
+    owner = st.scene.objects[sup.owner]
+    own_fp = Polygon(RG.convex_footprint(plane_coords(s, st.hulls[sup.owner])))
+    child_area = Polygon(RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])).area
+    # a small container (a bowl, a basket) holds a pile: it may rest on its wall too
+    container = support_edge.relation == "IN" and own_fp.area <= 12 * child_area
+    pile = [o for o in st.scene.objects.values()
+            if o.placed and o.category == asset.category and o.support_choice == sup.choice
+            and o.id in st.hulls]
+    if container:
+        return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
+                          [owner, *pile], own_fp)
+    bases = [pile[int(k)] for k in rng.permutation(len(pile))]
+    if not bases:
+        raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
+    last = f"no {asset.category} on {sup.name} can take another on top"
+    for under in bases:
+        H = st.hulls[under.id]
+        is_owner = under is owner
+        top = float(np.max((H - s.origin) @ n))
+        fp = own_fp if is_owner else Polygon(RG.convex_footprint(plane_coords(s, H)))
+        cu = np.array((sup.region.centroid if is_owner else fp.centroid).coords[0])
+        radius = max(np.sqrt(fp.area / np.pi), 1e-3)
+        allowed = fp.union(own_fp) if container else fp
+        for _ in range(6):
+            ab = cu + rng.normal(0.0, (0.4 if container else 0.2) * radius, 2) \
+                - np.array([c3 @ s.u, c3 @ s.v])
+            h = top - float(hN.min()) + 2 * EPS
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + h * n
+            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+            pts = world_points(cand, hull_only=True)
+            d = _drop(cand, pts, asset, [under] + ([owner] if container else []), st, n)
+            if not np.isfinite(d):
+                last = f"nothing under it on {under.id}"
+                continue
+            t = t - (d - EPS) * n
+            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+            pts = world_points(cand, hull_only=True)
+            height = float(np.max((pts - s.origin) @ n))
+            if height > sup.clearance:
+                last = f"a pile on {under.id} would reach {height:.2f} m, above the " \
+                       f"{sup.clearance:.2f} m of free height"
+                continue
+            com = plane_coords(s, (cand.transform()[:3, :3] @ asset_geometry(asset).com
+                                   + t)[None])[0]
+            if not allowed.contains(shapely.Point(com)):
+                last = f"its centre of mass would overhang {under.id}"
+                continue
+            checks = []
+            ok = True
+            for e in others:
+                holds, res, detail = check_edge(st.scene, e, cand)
+                if not holds:
+                    ok, last = False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
+                    break
+                checks.append((holds, res, detail))
+            if not ok:
+                continue
+            body.move(R, t)
+            hit = st.world.collides(body)
+            if hit is not None:
+                last = f"collides with {hit}"
+                continue
+            if is_owner:  # resting in the container: the usual check of the support relation
+                holds, res, detail = check_edge(st.scene, support_edge, cand,
+                                                resolved=resolution(support_edge, sup.choice))
+                sup_check = (holds, res, detail + " (resting on the container's wall)")
+            else:  # the support is the object below (or the container): measure the gap
+                gap = _drop(cand, pts, asset, [under] + ([owner] if container else []), st, n)
+                sup_check = (bool(gap <= 2e-3), {"distance": round(float(gap), 6)},
+                             f"stacked on {under.id}")
+            return (R, t, sup, body), 1, [sup_check, *checks], None if is_owner else under.id
+    raise Fail(f"no free space on {sup.name} and no stack fits: {last}")
 
 
 def _wall_choices(st: SolveState, edges: list[Edge], rng: np.random.Generator) -> list[list[Edge]]:
@@ -264,7 +542,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if hit is not None:
             last = f"collides with {hit}"
             continue
-        return (Rt, t, sup, body), trials, checks
+        return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
 
 

@@ -29,7 +29,7 @@ from .state import SolveState, parts_for, plane_coords
 from .support import Support
 
 __all__ = ["REGION_RULES", "RegionContext", "obstacles", "apply_region_rules", "height_band",
-           "parent_frame"]
+           "parent_frame", "polygonal"]
 
 _SIDE_DIRS = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
               "right": (1.0, 0.0, 0.0), "left": (-1.0, 0.0, 0.0)}
@@ -86,8 +86,16 @@ def apply_region_rules(ctx: RegionContext, edges: list[Edge], region: BaseGeomet
     for e in edges:
         ph, rule = REGION_RULES[e.relation]
         if ph == phase:
-            region = rule(ctx, e, region)
+            region = rule(ctx, e, polygonal(region) if phase == "object" else region)
     return region
+
+
+def polygonal(region: BaseGeometry) -> BaseGeometry:
+    """The areal part of a region (erosion can leave slivers as lines in a collection)."""
+    if region.geom_type != "GeometryCollection":
+        return region
+    polys = [g for g in region.geoms if g.geom_type in ("Polygon", "MultiPolygon")]
+    return shapely.union_all(polys) if polys else shapely.Polygon()
 
 
 @region_rule("none", "ON", "IN", "HANGING_BELOW", "SECURED_TO", "PARALLEL_TO", "TOWARD")
@@ -268,7 +276,7 @@ def _check_extreme(ctx: RegionContext, e: Edge, parts: list[Part], n: np.ndarray
     if who is not None and worst > 2e-3:
         raise Fail(f"{e.relation} {e.child} -> {e.parent}: {e.child.object}:{who.label} reaches "
                    f"{worst:.2f} m further {label} than {e.child.part} in this "
-                   f"{ctx.asset.category} asset; name {e.child.object}:{who.label}@{label} or "
+                   f"{ctx.asset.category} asset: name {e.child.object}:{who.label}@{label} or "
                    f"{e.child.object}@{label}")
 
 

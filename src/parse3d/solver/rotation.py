@@ -170,9 +170,8 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
             # floor furniture stands square to the room's walls
             angles = wall_angles(st, R0, n_s)
             phi = angles[int(rng.integers(len(angles)))] + rng.integers(4) * np.pi / 2
-        elif strategy == "constrained" and not free and rng.random() < 0.75:
-            phi = wall_angles(st, R0, n_s)[0] + rng.integers(4) * np.pi / 2 \
-                + rng.normal(0, np.deg2rad(2.0))
+        elif strategy == "constrained" and not free:
+            phi = _fitting_angle(st, asset, scale, sup, R0, n_s, rng)
         else:
             phi = rng.uniform(0, 2 * np.pi)
     R = axis_angle(n_s, phi) @ R0 if phi is not None else R0
@@ -185,6 +184,36 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
             R = axis_angle(k, theta) @ R
             lean = [(e, theta, d)]
     return R, o.toward, lean
+
+
+def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0: np.ndarray,
+                   n_s: np.ndarray, rng: np.random.Generator) -> float:
+    """A free angle on an object's surface: three times in four square to the support's owner
+    (else uniform), preferring the quarter turns whose footprint sits well inside the support
+    (a TV along its stand, not across it); a uniform angle is kept only if it fits as well."""
+    from ..geometry import regions as RG
+
+    s = sup.surface
+    owner = st.scene.objects.get(sup.owner)
+    ref = owner.rotation[:, 1] if owner is not None and owner.placed else None
+    base = angle_to(R0 @ np.array([0, 1.0, 0]), ref, n_s) if ref is not None else None
+    if base is None:
+        base = wall_angles(st, R0, n_s)[0]
+    hull = asset_geometry(asset).hull * scale
+
+    def fit(phi: float) -> float:
+        Y = hull @ (axis_angle(n_s, phi) @ R0).T
+        F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+        return float(RG.erode(sup.region, [], F).area)
+
+    quarter = [base + k * np.pi / 2 for k in range(4)]
+    areas = np.array([fit(p) for p in quarter])
+    good = [p for p, a in zip(quarter, areas, strict=True) if a >= 0.7 * areas.max()]
+    if rng.random() >= 0.75:
+        phi = rng.uniform(0, 2 * np.pi)
+        if fit(phi) >= 0.7 * areas.max():
+            return float(phi)
+    return float(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
 
 
 def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray, e: Edge,
@@ -221,11 +250,12 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
            if float(np.max(hull @ (axis_angle(k, t) @ R).T @ d))
            - float(np.max(mine @ (axis_angle(k, t) @ R).T @ d)) <= 1e-3 * scale_free]
     other = worst[1].name if worst[1] is not None else "another part"
-    hint = (f"it touches only at tilts up to {np.rad2deg(max(fit)):.0f} deg" if fit
-            else f"name {e.child.object}@{e.child.surface or 'back'} to lean on any part")
+    lean_any = f"name {e.child.object}@{e.child.surface or 'back'} to lean on any part"
+    hint = (f"{e.child.part} could touch only at tilts up to {np.rad2deg(max(fit)):.0f} deg, "
+            f"or {lean_any}" if fit else lean_any)
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {lo:g}-{hi:g} deg "
                f"{e.child.object}:{other} reaches up to {worst[0] * scale:.2f} m further "
-               f"toward {e.parent} than {e.child.part}; {hint}")
+               f"toward {e.parent} than {e.child.part} ({hint})")
 
 
 def _upright_angle(R0: np.ndarray, n: np.ndarray) -> float:

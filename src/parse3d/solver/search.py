@@ -60,6 +60,56 @@ def support_descendants(pag: PAG, oid: str) -> list[str]:
     return [o for o in assembly_order(pag) if o in out]
 
 
+#: Conflicting objects tried per failure, and rounds over them (each with fresh draws).
+MAX_CULPRITS = 6
+JUMP_ROUNDS = 2
+
+
+def _size_estimate(pag: PAG, oid: str) -> float:
+    """Typical size (m) of an object's candidate categories (largest of their size ranges'
+    middles); 0 for categories the registry does not know."""
+    from ..assets import registry
+
+    out = 0.0
+    for c in pag.objects[oid].candidates:
+        try:
+            lo, hi = registry.get(c).size_range
+        except KeyError:
+            continue
+        out = max(out, (lo + hi) / 2)
+    return out
+
+
+def placement_order(pag: PAG) -> list[str]:
+    """The PAG's assembly order, with siblings on one object support (children of a table, a
+    shelf) reordered more constrained and larger first, unless that would place an object
+    before one of its parents or after one of its dependents."""
+    order = assembly_order(pag)
+    groups: dict[str, list[str]] = {}
+    for oid in order:
+        e = pag.supporter(oid)
+        if e is not None and not e.parent.is_room_element:
+            groups.setdefault(e.parent.object, []).append(oid)
+    pos = {o: i for i, o in enumerate(order)}
+    for kids in groups.values():
+        if len(kids) < 2:
+            continue
+        slots = sorted(pos[k] for k in kids)
+        ranked = sorted(kids, key=lambda k: (-len(pag.edges_of(k)), -_size_estimate(pag, k),
+                                             pos[k]))
+        new = dict(zip(ranked, slots, strict=True))
+        # keep the group as it is when moving would put an object before one of its parents
+        # or after one of its dependents
+        at = {**pos, **new}
+        if all(at[e.parent.object] < at[e.child.object] for e in pag.relations
+               if e.parent.object in at and e.child.object in at
+               and (e.child.object in new or e.parent.object in new)):
+            for k, slot in new.items():
+                order[slot] = k
+            pos.update(new)
+    return order
+
+
 class _Search:
     """The solve in progress: placements, failures and the check results kept per edge."""
 
@@ -77,10 +127,10 @@ class _Search:
         return frozenset(i for i, e in enumerate(self.pag.edges_of(oid))
                          if i > 0 and e.parent.object in self.failed)
 
-    def try_place(self, oid: str, stage: str, proposal=None) -> Placement:
+    def try_place(self, oid: str, stage: str, proposal=None, keep=None) -> Placement:
         rng = stage_rng(self.seed, stage)
         return place_object(self.st, oid, rng, self.cfg, self.library, skip=self.skipped(oid),
-                            proposal=proposal)
+                            proposal=proposal, keep=keep)
 
     def commit(self, p: Placement) -> None:
         self.placements[p.obj.id] = p
@@ -114,7 +164,17 @@ class _Search:
                 out.append(p)
         walls = {e.parent.object for e in edges if e.parent.is_room_element
                  and e.parent.object.startswith("wall")}
-        for other in reversed(list(self.placements)):
+        layout = list(out)
+        occupants = list(reversed(list(self.placements)))
+        if layout:  # nearest to the layout parents first
+            import numpy as np
+
+            from .checks import object_centroid
+
+            anchors = np.array([object_centroid(self.st.scene.objects[p]) for p in layout])
+            occupants.sort(key=lambda o: float(np.min(np.linalg.norm(
+                anchors - object_centroid(self.st.scene.objects[o]), axis=1))))
+        for other in occupants:
             if other in out:
                 continue
             oe = pag.edges_of(other)
@@ -134,29 +194,38 @@ class _Search:
     def backjump(self, oid: str) -> Placement | None:
         """Re-place conflicting objects (with what rests on them) to make room for ``oid``;
         the scene is restored when no choice works within the budget."""
-        for k, culprit in enumerate(self.conflict_set(oid)):
+        culprits = self.conflict_set(oid)[:MAX_CULPRITS]
+        tries = [(r, c) for r in range(JUMP_ROUNDS) for c in culprits]
+        for k, (_, culprit) in enumerate(tries):
             moved = [culprit, *[d for d in support_descendants(self.pag, culprit)
                                 if d in self.placements]]
             if self.budget < len(moved):
-                return None
+                continue
             self.budget -= len(moved)
             self.backjumps += 1
             old = {m: self.uncommit(m) for m in moved}
-            old_objs = {m: self.st.scene.objects.get(m) for m in moved}
+            for m in moved:  # out of the scene while the conflict is re-solved
+                self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
+                                                        status="failed", reason="re-placing")
+            # a moved object the failed one relates to goes first (a parent of its layout
+            # relation); occupants of its support go after it (it takes its room first)
+            parents = {e.parent.object for e in self.pag.edges_of(oid)}
+            seq = [*moved, oid] if parents & set(moved) else [oid, *moved]
             new: list[str] = []
+            mine = None
             try:
-                mine = self.try_place(oid, f"object:{oid}:jump{k}")
-                self.commit(mine)
-                new.append(oid)
-                for m in moved:
-                    self.commit(self.try_place(m, f"object:{m}:jump{k}"))
+                for m in seq:
+                    p = self.try_place(m, f"object:{m}:jump{k}")
+                    self.commit(p)
                     new.append(m)
+                    if m == oid:
+                        mine = p
                 return mine
             except Fail:
                 for m in new:
                     self.uncommit(m)
                 for m in moved:
-                    self.st.scene.objects[m] = old_objs[m]
+                    self.st.scene.objects[m] = old[m].obj
                     self.commit(old[m])
                 self.st.scene.objects.pop(oid, None)
         return None
@@ -193,7 +262,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
         world.add(f"room:{name}", Body.from_mesh(el.mesh))
     st = SolveState(pag, scene, world)
     srch = _Search(pag, seed, cfg, library, st)
-    order = assembly_order(pag)
+    order = placement_order(pag)
     proposals = proposals or {}
     for n, oid in enumerate(order):
         sup = pag.supporter(oid)
@@ -211,7 +280,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
         if progress is not None:
             progress(SolveProgress(oid, scene.objects[oid].status, n + 1, len(order)))
     # keep the PAG's assembly order in scene.objects
-    scene.objects = {oid: scene.objects[oid] for oid in order}
+    scene.objects = {oid: scene.objects[oid] for oid in assembly_order(pag)}
     scene.meta["search"] = {"backjumps": srch.backjumps,
                             "budget_left": srch.budget if cfg.search == "backtracking" else None}
     scene.timings["solve"] = time.perf_counter() - t0
@@ -291,8 +360,9 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
     for oid in todo:
         old = scene.objects[oid]
         for attempt in range(4):
+            keep = old if oid not in new_asset and attempt < 2 else None
             try:
-                p = srch.try_place(oid, f"object:{oid}:repair{round}:{attempt}")
+                p = srch.try_place(oid, f"object:{oid}:repair{round}:{attempt}", keep=keep)
             except Fail:
                 continue
             if oid in new_asset and p.obj.asset.asset_id == old.asset.asset_id and attempt < 3:
