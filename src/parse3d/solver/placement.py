@@ -61,6 +61,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         asset = library.get(category, rng)
         if keep is not None and attempt == 0:
             category, asset = keep.category, keep.asset
+        elif reasons and _space(reasons[-1]):
+            # the last instance did not fit where it must go: the smallest suitable one next
+            alt = _alternative(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
+                               smallest=True)
+            if alt is not None:
+                category, asset = alt
         elif asset.asset_id in tried or lacks(asset, reqs):
             # constraint-aware selection: another instance that has what the relations need
             alt = _alternative(library, node.candidates, reqs, tried, rng)
@@ -154,20 +160,34 @@ def lacks(asset: Asset, reqs) -> str | None:
 RANKED_SLOTS = 8
 
 
-def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator):
-    """The first untried instance, over the candidate categories and a random sample of their
-    pool slots, that meets ``reqs``; None when there is none."""
+def _space(reason: str) -> bool:
+    """Whether a failure was about room (a region emptied, no free space, collisions)."""
+    return any(k in reason for k in ("emptied", "no free space", "collides", "does not fit"))
+
+
+def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,
+                 smallest: bool = False):
+    """An untried instance, over the candidate categories and a random sample of their pool
+    slots, that meets ``reqs``: the first found, or with ``smallest`` the one with the
+    smallest footprint; None when there is none."""
     load = getattr(library, "load", None)
     if load is None:
         return None
     k = int(getattr(library, "per_category", 20))
+    best = None
     for ci in rng.permutation(len(categories)):
         cat = categories[int(ci)]
         for slot in rng.permutation(k)[:RANKED_SLOTS]:
             asset = load(cat, int(slot))
-            if asset.asset_id not in tried and lacks(asset, reqs) is None:
+            if asset.asset_id in tried or lacks(asset, reqs) is not None:
+                continue
+            if not smallest:
                 return cat, asset
-    return None
+            ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+            area = float(ext[0] * ext[1])
+            if best is None or area < best[0]:
+                best = (area, cat, asset)
+    return None if best is None else (best[1], best[2])
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
@@ -299,6 +319,9 @@ def _drop(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedOb
                              o.transform(), -n) for o in onto)
 
 
+#: Objects of a pile tried as the base of a stack (at random), per support and asset.
+PILE_BASES = 6
+
 #: Parent categories that take a plate-like stack for ON (every IN support takes piles).
 STACK_ON = ("plate",)
 
@@ -339,7 +362,7 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
     if container:
         return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
                           [owner, *pile], own_fp)
-    bases = [pile[int(k)] for k in rng.permutation(len(pile))]
+    bases = [pile[int(k)] for k in rng.permutation(len(pile))[:PILE_BASES]]
     if not bases:
         raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
     last = f"no {asset.category} on {sup.name} can take another on top"
@@ -421,6 +444,10 @@ def _scaled_mesh(asset: Asset, scale: float):
     return m
 
 
+#: Metres below an ON support that a drop may go (a plate's well); deeper is a hole (a sink).
+HOLE_DEPTH = 0.03
+
+
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
               sup: Support, support_edge: Edge, others: list[Edge], body: Body,
               rng: np.random.Generator, cfg: SolverConfig, proposal=None):
@@ -452,11 +479,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     overhang = False
     if strategy == "constrained":
         obst = obstacles(st, sup, exclude, height + EPS)
-        # a hole the child fits into (a sink cut-out under a bottle) is an obstacle; a hole
-        # the child's footprint cannot fit in (a plate's well under a plate) is spanned
         fa = Polygon(F).area
-        obst += [RG.convex_footprint(hole) for hole in sup.holes
-                 if not RG.erode(Polygon(hole), [], F).is_empty]
         if rel == "HANGING_BELOW":
             # what hangs needs its attachment (the points touching the parent) on the parent's
             # surface, not its whole footprint: a towel is wider than the bar it hangs from
@@ -516,6 +539,11 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             parent = st.scene.objects[sup.owner]
             d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
                               st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+            if np.isfinite(d) and d > HOLE_DEPTH and sup.holes:
+                # the holes are filled for the region (a plate spans a plate's well, or rests
+                # in it), but a drop deeper than a well goes into a cut-out (a sink)
+                last = f"it would drop {d * 100:.0f} cm into a hole of {sup.name}"
+                continue
             if np.isfinite(d) and d > 2 * EPS:
                 t = t - (d - EPS) * s.normal
                 cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)

@@ -98,11 +98,45 @@ def polygonal(region: BaseGeometry) -> BaseGeometry:
     return shapely.union_all(polys) if polys else shapely.Polygon()
 
 
-@region_rule("none", "ON", "IN", "HANGING_BELOW", "SECURED_TO", "PARALLEL_TO", "TOWARD")
+@region_rule("none", "ON", "IN", "HANGING_BELOW", "SECURED_TO", "PARALLEL_TO")
 def _no_region(ctx, e, region):
     """Support relations are the support itself (SECURED_TO's height band is applied with the
-    support); PARALLEL_TO and TOWARD constrain the rotation only."""
+    support); PARALLEL_TO constrains the rotation only."""
     return region
+
+
+#: Share of TOWARD's tolerance within which a child is squared to its target's side.
+SQUARE_SHARE = 0.8
+_FIXING = ("AGAINST", "OPPOSITE_TO", "ALIGNED_WITH", "PARALLEL_TO", "LEANING_AGAINST")
+
+
+@region_rule("object", "TOWARD")
+def _toward(ctx, e, region):
+    """Prefer positions from which the child, squared to the nearest side of its target, still
+    faces the target's centroid within ``SQUARE_SHARE`` of ``tolerance_deg``: four cones about
+    the target's side normals. Where none is free, the whole region stays (the child then faces
+    the centroid exactly). A child whose angle is fixed otherwise, or that asks for a free
+    yaw, is not constrained."""
+    st, s = ctx.st, ctx.sup.surface
+    if st.pag.objects[ctx.oid].extra.get("yaw") == "free" or abs(float(s.normal[2])) < 0.9 \
+            or any(x.relation in _FIXING for x in st.pag.edges_of(ctx.oid)):
+        return region
+    xB, frame, hull = parent_frame(st, e.parent.object)
+    if hull is None:
+        return region
+    cB = plane_coords(s, xB[None])[0] - ctx.off
+    half = SQUARE_SHARE * np.deg2rad(e.param("tolerance_deg"))
+    cones = []
+    for ax in (frame[:, 0], -frame[:, 0], frame[:, 1], -frame[:, 1]):
+        g = np.array([ax @ s.u, ax @ s.v])
+        if np.linalg.norm(g) < 1e-6:
+            continue
+        a = float(np.arctan2(g[1], g[0]))
+        far = 50.0
+        cones.append(shapely.Polygon([tuple(cB), tuple(cB + far * np.array([np.cos(a - half), np.sin(a - half)])),
+                                      tuple(cB + far * np.array([np.cos(a + half), np.sin(a + half)]))]))
+    new = RG.clip(region, shapely.union_all(cones)) if cones else region
+    return region if new.is_empty or new.area < 1e-10 else new
 
 
 def parent_frame(st: SolveState, name: str) -> tuple[np.ndarray, np.ndarray, np.ndarray | None]:
