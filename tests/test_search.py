@@ -252,3 +252,24 @@ def test_bottles_stay_off_the_sink_hole(seed):
         assert abs(low - surf.origin[2]) < 0.003  # on the top, not down in the sink
         uv = (b.position - surf.origin) @ np.c_[surf.u, surf.v]
         assert not any(h.contains(Point(uv)) for h in holes)
+
+
+def test_chairs_square_to_the_table_side_they_face():
+    pag = PAG("dining", Room("dining_room", ((0, 0), (4.5, 0), (4.5, 4), (0, 4)), 2.7))
+    pag.add("table", "dining_table")
+    pag.relate("table", "ON", "floor")
+    for i in range(2):
+        pag.add(f"chair{i}", "dining_chair")
+        pag.relate(f"chair{i}", "ON", "floor")
+        pag.relate(f"chair{i}", "NEAR", "table", distance=1.2)
+        pag.relate(f"chair{i}", "TOWARD", "table", tolerance_deg=45)
+    scene = solve(pag, seed=0)
+    assert scene.ok and all(c.holds for c in scene.relations)
+
+    def yaw(o):
+        return np.degrees(np.arctan2(o.rotation[1, 0], o.rotation[0, 0]))
+
+    t = yaw(scene.objects["table"])
+    for i in range(2):
+        d = (yaw(scene.objects[f"chair{i}"]) - t) % 90
+        assert min(d, 90 - d) < 1e-3  # square to the table

@@ -107,20 +107,24 @@ def _no_region(ctx, e, region):
 
 #: Share of TOWARD's tolerance within which a child is squared to its target's side.
 SQUARE_SHARE = 0.8
+#: TOWARD tolerance (degrees) from which positions are restricted to where squaring is possible.
+SQUARE_MIN_TOLERANCE = 25.0
 _FIXING = ("AGAINST", "OPPOSITE_TO", "ALIGNED_WITH", "PARALLEL_TO", "LEANING_AGAINST")
 
 
 @region_rule("object", "TOWARD")
 def _toward(ctx, e, region):
-    """Prefer positions from which the child, squared to the nearest side of its target, still
-    faces the target's centroid within ``SQUARE_SHARE`` of ``tolerance_deg``: four cones about
-    the target's side normals. Where none is free, the whole region stays (the child then faces
+    """With a ``tolerance_deg`` of at least ``SQUARE_MIN_TOLERANCE``, prefer positions from which
+    the child, squared to the nearest side of its target, still faces the target's centroid
+    within ``SQUARE_SHARE`` of the tolerance: four cones about the target's side normals. Where none is free, the whole region stays (the child then faces
     the centroid exactly). A child whose angle is fixed otherwise, or that asks for a free
     yaw, is not constrained."""
     st, s = ctx.st, ctx.sup.surface
     if st.pag.objects[ctx.oid].extra.get("yaw") == "free" or abs(float(s.normal[2])) < 0.9 \
             or any(x.relation in _FIXING for x in st.pag.edges_of(ctx.oid)):
         return region
+    if e.param("tolerance_deg") < SQUARE_MIN_TOLERANCE:
+        return region  # cones this narrow would crowd the chairs at the sides' centres
     xB, frame, hull = parent_frame(st, e.parent.object)
     if hull is None:
         return region
