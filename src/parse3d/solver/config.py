@@ -70,4 +70,12 @@ def stage_rng(seed: int, stage: str) -> np.random.Generator:
 
 
 class Fail(Exception):
-    """An object could not be placed; the message names the constraint and what blocked it."""
+    """An object could not be placed; the message names the constraint and what blocked it.
+
+    ``intrinsic`` marks failures that no other object caused (the asset's own geometry, a
+    support too small even when empty), which re-placing other objects cannot fix.
+    """
+
+    def __init__(self, message: str, *, intrinsic: bool = False):
+        super().__init__(message)
+        self.intrinsic = intrinsic

@@ -53,6 +53,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     support_edge = edges[0]
     others = [e for i, e in enumerate(edges[1:], 1) if i not in skip]
     reasons: list[str] = []
+    intrinsic: list[bool] = []
     total_trials = 0
     reqs = requirements(pag, oid)
     tried: set[str] = set()
@@ -75,7 +76,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                     break  # every suitable instance was tried
                 why = lacks(asset, reqs)
                 raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
-                           f"{RANKED_SLOTS} per category) fits the relations: {why}")
+                           f"{RANKED_SLOTS} per category) fits the relations: {why}",
+                           intrinsic=True)
             category, asset = alt
         tried.add(asset.asset_id)
         # generators already make real-world sizes: keep them (times the node's scale range),
@@ -93,6 +95,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                                        proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
+            intrinsic.append(f.intrinsic)
             total_trials += cfg.max_trials
             continue
         total_trials += trials
@@ -103,7 +106,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
         return Placement(obj, body, full)
-    raise Fail(_summarise(reasons, node))
+    raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
 
 
 def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
@@ -225,6 +228,7 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
         order = rng.permutation(len(sups))
     body = cached_body(asset.asset_id, scale, lambda: _scaled_mesh(asset, scale))
     reasons = []
+    inner: list[bool] = []
     for variant in _wall_choices(st, others, rng):
         for si in order:
             sup = sups[int(si)]
@@ -233,6 +237,7 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                                  rng, cfg, proposal)
             except Fail as f:
                 reasons.append(str(f))
+                inner.append(f.intrinsic)
     if cfg.strategy == "constrained" and _may_stack(st, support_edge):
         # crowding: rest on an object of the same category already on that support
         for si in order:
@@ -241,7 +246,9 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                                       others, body, rng)
             except Fail as f:
                 reasons.append(str(f))
-    raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)))
+                inner.append(f.intrinsic)
+    raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)),
+               intrinsic=all(inner))
 
 
 def _drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
@@ -444,10 +451,6 @@ def _scaled_mesh(asset: Asset, scale: float):
     return m
 
 
-#: Metres below an ON support that a drop may go (a plate's well); deeper is a hole (a sink).
-HOLE_DEPTH = 0.03
-
-
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
               sup: Support, support_edge: Edge, others: list[Edge], body: Body,
               rng: np.random.Generator, cfg: SolverConfig, proposal=None):
@@ -480,6 +483,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     if strategy == "constrained":
         obst = obstacles(st, sup, exclude, height + EPS)
         fa = Polygon(F).area
+        # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
+        obst += [RG.convex_footprint(hole) for hole in sup.holes]
         if rel == "HANGING_BELOW":
             # what hangs needs its attachment (the points touching the parent) on the parent's
             # surface, not its whole footprint: a towel is wider than the bar it hangs from
@@ -504,7 +509,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 region = RG.clip(region, RG.erode(fp, [], F))
                 overhang = True
         if region.is_empty or region.area < 1e-10:
-            raise Fail(_no_space(st, sup, F, region0, obst))
+            raise Fail(_no_space(st, sup, F, region0, obst),
+                       intrinsic=RG.erode(region0, [], F).is_empty and not overhang)
         c3 = (asset_geometry(asset).center * scale) @ R.T
         ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
                             c3 + h * s.normal)
@@ -512,6 +518,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if rel == "SECURED_TO":
             region = height_band(ctx, support_edge, region)
         region = apply_region_rules(ctx, others, region, "part")
+        if rel == "ON" and sup.owner != "room" and not overhang:
+            region = _well_inside(region, F, height)
     else:
         region = region0
     trials = 0
@@ -539,11 +547,6 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             parent = st.scene.objects[sup.owner]
             d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
                               st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
-            if np.isfinite(d) and d > HOLE_DEPTH and sup.holes:
-                # the holes are filled for the region (a plate spans a plate's well, or rests
-                # in it), but a drop deeper than a well goes into a cut-out (a sink)
-                last = f"it would drop {d * 100:.0f} cm into a hole of {sup.name}"
-                continue
             if np.isfinite(d) and d > 2 * EPS:
                 t = t - (d - EPS) * s.normal
                 cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
@@ -572,6 +575,20 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             continue
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+#: A child taller than this many times its narrowest footprint width is tippy.
+TIPPY = 1.5
+
+
+def _well_inside(region, F: np.ndarray, height: float):
+    """For a tippy child (a TV on its stand), keep its base well inside the support: the
+    region shrunk by a quarter of the footprint's narrowest width, when anything is left."""
+    width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
+    if height <= TIPPY * width or region.area < 1e-10:
+        return region
+    inner = region.buffer(-0.25 * width)
+    return inner if not inner.is_empty and inner.area > 1e-10 else region
 
 
 def _face(st, toward, R, hull, s, ab, h, drop, others):

@@ -315,7 +315,7 @@ def _check_extreme(ctx: RegionContext, e: Edge, parts: list[Part], n: np.ndarray
         raise Fail(f"{e.relation} {e.child} -> {e.parent}: {e.child.object}:{who.label} reaches "
                    f"{worst:.2f} m further {label} than {e.child.part} in this "
                    f"{ctx.asset.category} asset: name {e.child.object}:{who.label}@{label} or "
-                   f"{e.child.object}@{label}")
+                   f"{e.child.object}@{label}", intrinsic=True)
 
 
 def _child_surface_point(parts: list[Part], label: str, scale: float) -> np.ndarray:

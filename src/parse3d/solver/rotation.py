@@ -118,7 +118,7 @@ def _facing(st, asset, o, e):
         if abs(np.dot(o.R0 @ nA, sign * sB.normal) - 1) < 1e-3:
             return  # already satisfied whatever the angle
         raise Fail(f"{rel} {e.child} -> {e.parent}: the surfaces cannot be turned to face each "
-                   f"other on this support")
+                   f"other on this support", intrinsic=True)
     if o.phi is not None and abs(wrap(ang - o.phi)) > np.deg2rad(1.0):
         raise Fail(f"{rel} {e.child} -> {e.parent} needs a different orientation than {o.source}")
     o.phi, o.source = ang, f"{rel} {e.child} -> {e.parent}"
@@ -255,7 +255,7 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
             f"or {lean_any}" if fit else lean_any)
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {lo:g}-{hi:g} deg "
                f"{e.child.object}:{other} reaches up to {worst[0] * scale:.2f} m further "
-               f"toward {e.parent} than {e.child.part} ({hint})")
+               f"toward {e.parent} than {e.child.part} ({hint})", intrinsic=True)
 
 
 def _upright_angle(R0: np.ndarray, n: np.ndarray) -> float:

@@ -274,7 +274,8 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
             try:
                 srch.commit(srch.try_place(oid, f"object:{oid}", proposals.get(oid)))
             except Fail as f:
-                got = srch.backjump(oid) if srch.budget > 0 else None
+                # re-placing others cannot fix what the object's own geometry rules out
+                got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
                 if got is None:
                     srch.fail(oid, str(f), cfg.max_trials * cfg.asset_attempts)
         if progress is not None:

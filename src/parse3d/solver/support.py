@@ -33,7 +33,8 @@ class Support:
     clearance : float
         Free height above an internal surface (metres), ``inf`` elsewhere.
     holes : list of (K, 2) float
-        Holes of the surface filled for ``region`` (a well, a sink cut-out), in plane coords.
+        Deep holes of the surface (a sink cut-out; not a plate's shallow well), in plane
+        coordinates: filled in ``region``, obstacles for placement.
     """
 
     surface: Surface
@@ -97,6 +98,40 @@ def _holes(poly: BaseGeometry) -> list[np.ndarray]:
             for r in p.interiors]
 
 
+#: Metres below an ON surface within which a hole has a floor (a plate's well); a deeper hole
+#: (a sink cut in a countertop) is no support.
+HOLE_DEPTH = 0.03
+
+
+def _deep_holes(s: Surface, holes: list[np.ndarray], parent) -> list[np.ndarray]:
+    """The holes of a world surface with nothing of the parent within ``HOLE_DEPTH`` below
+    (rays cast down from points inside the hole, in the parent's asset frame)."""
+    from .geometry import ray_caster
+
+    if not holes:
+        return []
+    T = parent.transform()
+    Ti = np.linalg.inv(T)
+    out = []
+    for h in holes:
+        poly = Polygon(h)
+        inner = poly.buffer(-0.1 * np.sqrt(max(poly.area, 1e-12)))
+        pts2 = [np.array(inner.representative_point().coords[0])] if not inner.is_empty else []
+        pts2.append(np.array(poly.representative_point().coords[0]))
+        start = np.array([s.to_3d(np.asarray(p)[None])[0] + 1e-3 * s.normal for p in pts2])
+        o = start @ Ti[:3, :3].T + Ti[:3, 3]
+        v = Ti[:3, :3] @ (-s.normal)
+        k = float(np.linalg.norm(v))
+        locs, idx, _ = ray_caster(parent.asset).intersects_location(
+            o, np.tile(v / k, (len(o), 1)), multiple_hits=False)
+        depth = np.full(len(o), np.inf)
+        for loc, i in zip(locs, idx, strict=True):
+            depth[i] = min(depth[i], float(np.linalg.norm(loc - o[i])) / k)
+        if float(depth.min()) > HOLE_DEPTH:
+            out.append(h)
+    return out
+
+
 def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     """World support surfaces the child may be placed on, for its support edge."""
     scene = st.scene
@@ -145,7 +180,7 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
             # an object ON a rim spans its hole (a plate on a plate); placement keeps a child
             # smaller than a hole (a bottle by a sink cut-out) off it
             region = filled(s.polygon) if rel == "ON" else s.polygon
-            holes = _holes(s.polygon) if rel == "ON" else []
+            holes = _deep_holes(s, _holes(s.polygon), parent) if rel == "ON" else []
             out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
     if not out:
         if slanted:
