@@ -123,6 +123,8 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
             out.append((ref.part, ref.index, text, "part"))
             if role == "parent" and e.relation == "IN":
                 out.append((ref.part, ref.index, text, "internal"))
+            if role == "parent" and e.relation == "ON" and ref.surface in (None, "top"):
+                out.append((ref.part, ref.index, text, "free_top"))
             if role == "child" and e.relation == "AGAINST":
                 out.append((ref.part, ref.index, text,
                             f"extreme:{ref.surface or e.spec.child_surface}"))
@@ -145,6 +147,10 @@ def lacks(asset: Asset, reqs) -> str | None:
             names = {p.name for p in ps}
             if not any(i.part in names for i in asset.internal):
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
+        elif kind == "free_top":
+            if not any(_free_top(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} top is covered by its other parts, no "
+                        f"room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
         elif kind.startswith("extreme:"):
             n = np.asarray(SURFACES[kind.split(":")[1]], float)
             side = kind.split(":")[1]
@@ -159,8 +165,38 @@ def lacks(asset: Asset, reqs) -> str | None:
     return None
 
 
+#: Width (m) of the smallest item a part's top must have room for (stage 1's reachability).
+FREE_TOP = 0.08
+_FREE_TOP: dict[tuple[str, str], bool] = {}
+
+
+def _free_top(asset: Asset, part) -> bool:
+    """Whether the part's top face has a ``FREE_TOP``-wide patch that the asset's other parts
+    do not cover within 20 cm above it (a top-loading washer's lid covers most of its top)."""
+    key = (asset.asset_id, part.name)
+    got = _FREE_TOP.get(key)
+    if got is None:
+        from .support import filled
+
+        s = part.surfaces["top"]
+        free = filled(s.polygon)
+        for p in asset.parts:
+            if p is part:
+                continue
+            for pc in p.pieces:  # per convex piece: a part's pieces may frame the top
+                h = (pc.vertices - s.origin) @ s.normal
+                if h.max() <= 1e-3 or h.min() >= 0.2:
+                    continue
+                free = free.difference(Polygon(RG.convex_footprint(plane_coords(s, pc.vertices))))
+        got = not free.buffer(-FREE_TOP / 2).is_empty
+        if len(_FREE_TOP) > 8192:
+            _FREE_TOP.clear()
+        _FREE_TOP[key] = got
+    return got
+
+
 #: Pool slots examined per candidate category when looking for a suitable instance.
-RANKED_SLOTS = 8
+RANKED_SLOTS = 6
 
 
 def _space(reason: str) -> bool:

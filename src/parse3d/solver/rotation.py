@@ -207,11 +207,17 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
         return float(RG.erode(sup.region, [], F).area)
 
     quarter = [base + k * np.pi / 2 for k in range(4)]
-    areas = np.array([fit(p) for p in quarter])
+    Y0 = hull @ R0.T
+    fp_area = float(np.ptp(Y0 @ s.u) * np.ptp(Y0 @ s.v))
+    if fp_area < 0.05 * sup.region.area:  # small on a large top: every turn fits
+        areas = np.ones(4)
+    else:  # a half turn fits (nearly) as well as its opposite: two erosions, not four
+        a0, a1 = fit(quarter[0]), fit(quarter[1])
+        areas = np.array([a0, a1, a0, a1])
     good = [p for p, a in zip(quarter, areas, strict=True) if a >= 0.7 * areas.max()]
     if rng.random() >= 0.75:
         phi = rng.uniform(0, 2 * np.pi)
-        if fit(phi) >= 0.7 * areas.max():
+        if areas.min() == areas.max() == 1.0 or fit(phi) >= 0.7 * areas.max():
             return float(phi)
     return float(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
 

@@ -67,6 +67,19 @@ def filled(poly: BaseGeometry) -> BaseGeometry:
     return shapely.union_all(out) if len(out) > 1 else (out[0] if out else poly)
 
 
+_FLAT: dict[tuple[str, str, str], bool] = {}
+
+
+def _flat_cached(asset_id: str, part, label: str) -> bool:
+    key = (asset_id, part.name, label)
+    got = _FLAT.get(key)
+    if got is None:
+        if len(_FLAT) > 8192:
+            _FLAT.clear()
+        got = _FLAT[key] = _flat_enough(part, label)
+    return got
+
+
 def _flat_enough(part, label: str, tol: float = 0.02, frac: float = 0.2) -> bool:
     """Whether the part's geometry really reaches its bbox face ``label`` over an area.
 
@@ -103,13 +116,29 @@ def _holes(poly: BaseGeometry) -> list[np.ndarray]:
 HOLE_DEPTH = 0.03
 
 
-def _deep_holes(s: Surface, holes: list[np.ndarray], parent) -> list[np.ndarray]:
+def _deep_holes(s: Surface, holes: list[np.ndarray], parent, which: tuple[str, str],
+                ) -> list[np.ndarray]:
     """The holes of a world surface with nothing of the parent within ``HOLE_DEPTH`` below
-    (rays cast down from points inside the hole, in the parent's asset frame)."""
-    from .geometry import ray_caster
-
+    (rays cast down from points inside the hole, in the parent's asset frame; cached per
+    asset and surface)."""
     if not holes:
         return []
+    key = (parent.asset.asset_id, *which, len(holes))
+    deep = _DEEP.get(key)
+    if deep is None:
+        deep = _DEEP[key] = _hole_depths(s, holes, parent)
+        if len(_DEEP) > 8192:
+            _DEEP.clear()
+    return [h for h, d in zip(holes, deep, strict=True) if d]
+
+
+_DEEP: dict[tuple, list[bool]] = {}
+
+
+def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
+    """Per hole, whether it is deeper than ``HOLE_DEPTH``."""
+    from .geometry import ray_caster
+
     T = parent.transform()
     Ti = np.linalg.inv(T)
     out = []
@@ -127,8 +156,7 @@ def _deep_holes(s: Surface, holes: list[np.ndarray], parent) -> list[np.ndarray]
         depth = np.full(len(o), np.inf)
         for loc, i in zip(locs, idx, strict=True):
             depth[i] = min(depth[i], float(np.linalg.norm(loc - o[i])) / k)
-        if float(depth.min()) > HOLE_DEPTH:
-            out.append(h)
+        out.append(bool(float(depth.min()) > HOLE_DEPTH))
     return out
 
 
@@ -174,13 +202,13 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
             s = p.surfaces[lb].transformed(T)
             if want is not None and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
                 continue
-            if rel == "ON" and not _flat_enough(p, lb):
+            if rel == "ON" and not _flat_cached(parent.asset.asset_id, p, lb):
                 slanted.append(p.name)
                 continue
             # an object ON a rim spans its hole (a plate on a plate); placement keeps a child
             # smaller than a hole (a bottle by a sink cut-out) off it
             region = filled(s.polygon) if rel == "ON" else s.polygon
-            holes = _deep_holes(s, _holes(s.polygon), parent) if rel == "ON" else []
+            holes = _deep_holes(s, _holes(s.polygon), parent, (p.name, lb)) if rel == "ON" else []
             out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
     if not out:
         if slanted:
