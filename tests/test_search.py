@@ -273,3 +273,30 @@ def test_chairs_square_to_the_table_side_they_face():
     for i in range(2):
         d = (yaw(scene.objects[f"chair{i}"]) - t) % 90
         assert min(d, 90 - d) < 1e-3  # square to the table
+
+
+def test_cli_search_options_and_time_limit(tmp_path):
+    import json
+    import subprocess
+    import sys
+
+    f = tmp_path / "small.json"
+    f.write_text(json.dumps(small_room().to_dict()))
+
+    def cli(*args):
+        return subprocess.run([sys.executable, "-m", "parse3d.cli", "solve", str(f), "--no-settle",
+                               "--no-preview", "--json", "--out", str(tmp_path / "out"), *args],
+                              cwd=tmp_path, capture_output=True, text=True, timeout=600)
+
+    r = cli("--search", "dfs")
+    assert r.returncode == 2 and "unknown search 'dfs'" in r.stderr + r.stdout
+    assert "Traceback" not in r.stderr
+    r = cli("--search-budget", "-1")
+    assert r.returncode == 2 and "--search-budget" in r.stderr + r.stdout
+    r = cli("--time-limit", "0.000001", "--search", "greedy", "--search-budget", "3")
+    assert r.returncode == 3, r.stderr
+    failed = json.loads(r.stdout)["failed"]
+    assert failed and all(x["reason"].startswith("time limit") for x in failed)
+    doc = json.loads((tmp_path / "out" / "scene.json").read_text())
+    assert doc["meta"]["solver"]["search"] == "greedy"
+    assert doc["meta"]["solver"]["search_budget"] == 3
