@@ -99,3 +99,22 @@ def test_scene_1_files_are_still_read(solved, tmp_path):
     back = read_scene(tmp_path)
     for oid, o in solved.objects.items():
         assert back.objects[oid].support_choice == o.support_choice
+
+
+def test_unmet_relations_stay_unmet_after_settling():
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    pag = PAG("unmet", Room("living_room", ((0, 0), (4, 0), (4, 3.5), (0, 3.5)), 2.7))
+    pag.add("sofa", "sofa")
+    pag.relate("sofa", "ON", "floor")
+    pag.relate("sofa", "FAR_FROM", "wall_0", distance=9.0)
+    pag.add("chair", "armchair")
+    pag.relate("chair", "ON", "floor")
+    pag.relate("chair", "NEAR", "sofa", distance=1.5)
+    scene = run_pipeline(pag, seed=0, out=None, options=PipelineOptions(preview=False))
+    assert not scene.ok and scene.objects["chair"].placed and scene.settled
+    near = next(c for c in scene.relations if c.relation == "NEAR")
+    assert (near.holds, near.holds_settled) == (None, None)
+    assert near.detail == "unmet: parent 'sofa' failed"
+    on = next(c for c in scene.relations if c.relation == "ON" and c.child == "chair")
+    assert on.holds and on.holds_settled

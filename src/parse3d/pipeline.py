@@ -171,7 +171,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         scene.relations = []
         scene.relations = check_relations(scene)
         check_relations(scene, settled=True)
-        mark_unmet(scene)
+    mark_unmet(scene)  # settling re-checked them as failing
     stats = {"repaired": len(touched - set(still)), "unrepaired": len(still)}
     scene.meta["repair"] = stats
     return stats
