@@ -19,10 +19,14 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+from shapely.geometry import MultiPoint, Point
 
 from .pag.model import PAG
 from .scene.model import Repair, Scene
 from .solver import SolverConfig, solve
+from .solver.checks import check_relations, world_points
+from .solver.geometry import asset_geometry
+from .solver.search import mark_unmet, replace_objects, support_descendants
 
 __all__ = ["PipelineOptions", "run_pipeline", "unstable_objects", "UNSTABLE_FLAGS"]
 
@@ -64,8 +68,6 @@ def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
     than 2 cm lower (a TV fallen over, not a ball turned). Stacked objects rest on the object
     below, so their support surface is not expected to touch them.
     """
-    from .solver.checks import world_points
-
     out: dict[str, str] = {}
     for o in scene.placed:
         if o.fixed or o.settled_position is None:
@@ -79,8 +81,6 @@ def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
         owner = scene.objects.get(sup.owner) if sup is not None else None
         off = False
         if owner is not None and owner.placed:
-            from shapely.geometry import MultiPoint, Point
-
             fp = MultiPoint(world_points(owner, hull_only=True, settled=True)[:, :2]).convex_hull
             off = not fp.buffer(0.01).contains(Point(com1[:2]))
         if off:
@@ -105,15 +105,11 @@ def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
 def _round(o) -> bool:
     """Whether an object is about as wide as it is deep and tall (an apple, a ball): it rolls
     rather than tips."""
-    from .solver.geometry import asset_geometry
-
     ext = np.ptp(asset_geometry(o.asset).hull, axis=0)
     return float(ext.max()) <= 1.3 * float(ext.min())
 
 
 def _com(o, *, settled: bool):
-    from .solver.geometry import asset_geometry
-
     T = o.transform(settled)
     return T[:3, :3] @ asset_geometry(o.asset).com + T[:3, 3]
 
@@ -134,9 +130,6 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     Returns ``{"repaired": n, "unrepaired": m}``: objects repaired into a stable pose, and
     objects that became ``failed`` because they were still unstable.
     """
-    from .solver.checks import check_relations
-    from .solver.search import mark_unmet, replace_objects, support_descendants
-
     cfg = config or SolverConfig()
     _settle(scene)
     touched: set[str] = set()

@@ -13,17 +13,18 @@ from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..pag.model import Edge
+from ..relations import SURFACES
 from ..scene.model import PlacedObject
 from .checks import EPS, check_edge, world_points
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
-from .geometry import asset_geometry, drop_distance
+from .geometry import asset_geometry, drop_distance, part_points
 from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
-from .support import Support, support_candidates
+from .support import Support, filled, support_candidates
 
-__all__ = ["Placement", "place_object"]
+__all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
 
 @dataclass
@@ -133,9 +134,6 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
 
 def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
-    from ..relations import SURFACES
-    from .geometry import part_points
-
     for label, idx, text, kind in reqs:
         ps = asset.parts_by_label(label)
         if not ps:
@@ -176,8 +174,6 @@ def _free_top(asset: Asset, part) -> bool:
     key = (asset.asset_id, part.name)
     got = _FREE_TOP.get(key)
     if got is None:
-        from .support import filled
-
         s = part.surfaces["top"]
         free = filled(s.polygon)
         for p in asset.parts:
@@ -262,7 +258,7 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
         order = np.arange(len(sups))
     if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
         order = rng.permutation(len(sups))
-    body = cached_body(asset.asset_id, scale, lambda: _scaled_mesh(asset, scale))
+    body = cached_body(asset.asset_id, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
     for variant in _wall_choices(st, others, rng):
@@ -481,7 +477,8 @@ def _wall_choices(st: SolveState, edges: list[Edge], rng: np.random.Generator) -
     return out
 
 
-def _scaled_mesh(asset: Asset, scale: float):
+def scaled_mesh(asset: Asset, scale: float):
+    """A copy of the asset's mesh at ``scale`` (for its collision body)."""
     m = asset.mesh()
     m.apply_scale(scale)
     return m

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..assets.model import Asset
+from ..geometry import regions as RG
 from ..geometry.frames import axis_angle, rotation_between
 from ..geometry.surfaces import Surface, surface_from_bbox
 from ..pag.model import Edge
@@ -191,8 +192,6 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
     """A free angle on an object's surface: three times in four square to the support's owner
     (else uniform), preferring the quarter turns whose footprint sits well inside the support
     (a TV along its stand, not across it); a uniform angle is kept only if it fits as well."""
-    from ..geometry import regions as RG
-
     s = sup.surface
     owner = st.scene.objects.get(sup.owner)
     ref = owner.rotation[:, 1] if owner is not None and owner.placed else None

@@ -12,14 +12,16 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+import numpy as np
+
 from ..pag.algorithms import assembly_order
 from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
-from .checks import check_relations
-from .collision import Body, CollisionWorld
+from .checks import check_relations, object_centroid
+from .collision import Body, CollisionWorld, cached_body
 from .config import Fail, SolverConfig, stage_rng
-from .placement import Placement, place_object, resolution
+from .placement import Placement, place_object, resolution, scaled_mesh
 from .state import SolveState
 
 __all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants"]
@@ -167,10 +169,6 @@ class _Search:
         layout = list(out)
         occupants = list(reversed(list(self.placements)))
         if layout:  # nearest to the layout parents first
-            import numpy as np
-
-            from .checks import object_centroid
-
             anchors = np.array([object_centroid(self.st.scene.objects[p]) for p in layout])
             occupants.sort(key=lambda o: float(np.min(np.linalg.norm(
                 anchors - object_centroid(self.st.scene.objects[o]), axis=1))))
@@ -348,12 +346,9 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
             if o not in todo and scene.objects[o].placed:
                 todo.append(o)
     todo = [o for o in assembly_order(pag) if o in todo]
-    from .collision import cached_body
-    from .placement import _scaled_mesh
-
     for o in scene.objects.values():
         if o.placed and o.id not in todo:
-            st.add(o, cached_body(o.asset.asset_id, o.scale, lambda o=o: _scaled_mesh(o.asset, o.scale)))
+            st.add(o, cached_body(o.asset.asset_id, o.scale, lambda o=o: scaled_mesh(o.asset, o.scale)))
     srch = _Search(pag, seed, cfg, library, st)
     srch.failed = {o.id: o.reason or "" for o in scene.objects.values() if not o.placed}
     done: dict[str, str] = {}
@@ -376,7 +371,7 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
             break
         else:
             st.add(old, cached_body(old.asset.asset_id, old.scale,
-                                    lambda o=old: _scaled_mesh(o.asset, o.scale)))
+                                    lambda o=old: scaled_mesh(o.asset, o.scale)))
     # fresh checks for what moved
     known: dict[int, tuple] = {}
     for oid, p in srch.placements.items():

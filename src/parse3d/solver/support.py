@@ -6,13 +6,16 @@ from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
+from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface
 from ..pag.model import Edge
+from ..relations import SURFACES
 from ..scene.model import SupportChoice
 from .config import Fail
+from .geometry import ray_caster
 from .state import SolveState, parts_for
 
 __all__ = ["Support", "support_candidates"]
@@ -86,10 +89,6 @@ def _flat_enough(part, label: str, tol: float = 0.02, frac: float = 0.2) -> bool
     A slanted part (an open piano lid) touches its bbox top only along an edge: the convex hull
     of its points within ``tol`` (m) of the face covers less than ``frac`` of the face.
     """
-    from scipy.spatial import ConvexHull, QhullError
-
-    from ..relations import SURFACES
-
     n = np.asarray(SURFACES[label], float)
     axes = [i for i in range(3) if abs(n[i]) < 0.5]
     pts = np.vstack([pc.vertices for pc in part.pieces]) if part.pieces else part.mesh.vertices
@@ -137,8 +136,6 @@ _DEEP: dict[tuple, list[bool]] = {}
 
 def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
     """Per hole, whether it is deeper than ``HOLE_DEPTH``."""
-    from .geometry import ray_caster
-
     T = parent.transform()
     Ti = np.linalg.inv(T)
     out = []
