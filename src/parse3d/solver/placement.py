@@ -147,8 +147,8 @@ def lacks(asset: Asset, reqs) -> str | None:
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
         elif kind == "free_top":
             if not any(_free_top(asset, p) for p in ps):
-                return (f"{asset.asset_id}'s {label} top is covered by its other parts, no "
-                        f"room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
+                return (f"{asset.asset_id}'s {label} top is mostly covered by its other parts, "
+                        f"no room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
         elif kind.startswith("extreme:"):
             n = np.asarray(SURFACES[kind.split(":")[1]], float)
             side = kind.split(":")[1]
@@ -169,8 +169,9 @@ _FREE_TOP: dict[tuple[str, str], bool] = {}
 
 
 def _free_top(asset: Asset, part) -> bool:
-    """Whether the part's top face has a ``FREE_TOP``-wide patch that the asset's other parts
-    do not cover within 20 cm above it (a top-loading washer's lid covers most of its top)."""
+    """Whether the part's top face has a ``FREE_TOP``-wide patch, or half its area, that the
+    asset's other parts do not cover within 20 cm above it (a top-loading washer's lid covers
+    most of its top)."""
     key = (asset.asset_id, part.name)
     got = _FREE_TOP.get(key)
     if got is None:
@@ -184,7 +185,9 @@ def _free_top(asset: Asset, part) -> bool:
                 if h.max() <= 1e-3 or h.min() >= 0.2:
                     continue
                 free = free.difference(Polygon(RG.convex_footprint(plane_coords(s, pc.vertices))))
-        got = not free.buffer(-FREE_TOP / 2).is_empty
+        # room for an item, or at least mostly uncovered (a bathtub's thin rim holds bottles
+        # by their centre of mass)
+        got = not free.buffer(-FREE_TOP / 2).is_empty or free.area >= 0.5 * filled(s.polygon).area
         if len(_FREE_TOP) > 8192:
             _FREE_TOP.clear()
         _FREE_TOP[key] = got
@@ -517,7 +520,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         obst = obstacles(st, sup, exclude, height + EPS)
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
-        obst += [RG.convex_footprint(hole) for hole in sup.holes]
+        holes = [RG.convex_footprint(hole) for hole in sup.holes]
         if rel == "HANGING_BELOW":
             # what hangs needs its attachment (the points touching the parent) on the parent's
             # surface, not its whole footprint: a towel is wider than the bar it hangs from
@@ -527,23 +530,26 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             region = RG.clip(RG.erode(region0, [], Fc),
                              RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
         else:
-            region = RG.erode(region0, obst, F)
+            region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
-                    and sup.owner != "room" and RG.erode(region0, [], F).is_empty \
+                    and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
                     and fa <= 1.5 * Polygon(st.xy[sup.owner]).area:
-                # a support smaller than the child (a pot on a burner, an apple in a bowl):
-                # the paper's stability rule, centre of mass over the support polygon, decides;
-                # only for children no bigger than the parent object (no wardrobe on a mug)
+                # a support smaller than the child (a pot on a burner, an apple in a bowl, a
+                # bottle on a bathtub's rim): the paper's stability rule, centre of mass over
+                # the solid support polygon, decides; only for children no bigger than the
+                # parent object (no wardrobe on a mug)
                 com = (asset_geometry(asset).com * scale) @ R.T
-                region = shapely.affinity.translate(region0, -float(com @ s.u), -float(com @ s.v))
+                solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
+                    if holes else region0
+                region = shapely.affinity.translate(solid, -float(com @ s.u), -float(com @ s.v))
                 region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
                 room = st.scene.room.elements["floor"].surface
                 fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
                 region = RG.clip(region, RG.erode(fp, [], F))
                 overhang = True
         if region.is_empty or region.area < 1e-10:
-            raise Fail(_no_space(st, sup, F, region0, obst),
-                       intrinsic=RG.erode(region0, [], F).is_empty and not overhang)
+            raise Fail(_no_space(st, sup, F, region0, obst + holes),
+                       intrinsic=RG.erode(region0, holes, F).is_empty and not overhang)
         c3 = (asset_geometry(asset).center * scale) @ R.T
         ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
                             c3 + h * s.normal)
