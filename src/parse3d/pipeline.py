@@ -1,20 +1,38 @@
-"""The whole per-scene pipeline: solve, settle, extract contacts, write, preview.
+"""The whole per-scene pipeline: solve, settle, verify and repair, extract contacts, write,
+preview.
 
 Used by ``parse3d solve``, ``parse3d generate``, ``parse3d demo`` and the dataset builder, so
 they all produce the same files (DESIGN §5).
+
+After settling, objects that fell, tipped or left their support, or whose support relation no
+longer holds, are re-placed with the rest of the scene fixed (round 1: another pose; later
+rounds: another asset) and the scene is settled again, up to ``repair_rounds`` rounds. An
+object still fallen, tipped or off its support after the last round becomes ``failed``
+("unstable after N repairs"), with everything resting on it.
 """
 
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from .pag.model import PAG
-from .scene.model import Scene
-from .solver import SolverConfig, solve
+import numpy as np
+from shapely.geometry import MultiPoint, Point
 
-__all__ = ["PipelineOptions", "run_pipeline"]
+from .measure.checks import check_relations, world_points
+from .measure.geometry import asset_geometry
+from .pag.model import PAG
+from .scene.model import Repair, Scene
+from .solver import SolverConfig, solve
+from .solver.search import mark_unmet, replace_objects, support_descendants
+
+__all__ = ["PipelineOptions", "run_pipeline", "write_outputs", "unstable_objects",
+           "UNSTABLE_FLAGS"]
+
+#: Physics flags that make an object unstable (set by settling).
+UNSTABLE_FLAGS = ("fell", "tipped", "left_support")
 
 
 @dataclass(frozen=True)
@@ -30,42 +48,176 @@ class PipelineOptions:
     solver : SolverConfig
     formats : tuple of str
         Export formats written next to ``scene.json`` (names of ``parse3d.export.FORMATS``).
+    repair_rounds : int
+        Settle-verify-repair rounds after the first settling (0: no repair).
+    time_limit : float or None
+        Seconds the solver may spend before unplaced objects fail with ``time limit``.
     """
 
     settle: bool = True
     preview: bool = True
     solver: SolverConfig = SolverConfig()
     formats: tuple[str, ...] = ("glb",)
+    repair_rounds: int = 3
+    time_limit: float | None = None
+
+
+def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
+    """``{id: cause}`` of settled, placed, dynamic objects that are physically unstable, and
+    (with ``relations``) of those whose support relation no longer holds.
+
+    Physically unstable (cause: the physics flag) means flagged by settling *and* really off:
+    ``left_support`` or ``fell`` with the centre of mass no longer over the supporting object
+    (an apple rolling inside its bowl is not off), or ``tipped`` with the centre of mass more
+    than 2 cm lower (a TV fallen over, not a ball turned). Stacked objects rest on the object
+    below, so their support surface is not expected to touch them.
+    """
+    out: dict[str, str] = {}
+    for o in scene.placed:
+        if o.fixed or o.settled_position is None:
+            continue
+        flags = [f for f in UNSTABLE_FLAGS if f in o.flags]
+        if not flags:
+            continue
+        com0 = _com(o, settled=False)
+        com1 = _com(o, settled=True)
+        sup = o.support_choice
+        owner = scene.objects.get(sup.owner) if sup is not None else None
+        off = False
+        if owner is not None and owner.placed:
+            fp = MultiPoint(world_points(owner, hull_only=True, settled=True)[:, :2]).convex_hull
+            off = not fp.buffer(0.01).contains(Point(com1[:2]))
+        if off:
+            out[o.id] = "fell" if "fell" in flags else "left_support"
+        elif "tipped" in flags and com0[2] - com1[2] > 0.02 and not _round(o):
+            out[o.id] = "tipped"
+        elif "fell" in flags and owner is None and com0[2] - com1[2] > 0.05:
+            out[o.id] = "fell"
+    if relations:
+        sup_index = {scene.pag.relations.index(scene.pag.supporter(oid)): oid
+                     for oid in scene.pag.objects if scene.pag.supporter(oid) is not None}
+        for c in scene.relations:
+            oid = sup_index.get(c.index)
+            if oid is None or oid in out or c.holds_settled is not False:
+                continue
+            o = scene.objects[oid]
+            if o.placed and not o.fixed and not o.stacked_on:
+                out[oid] = "support relation"
+    return out
+
+
+def _round(o) -> bool:
+    """Whether an object is about as wide as it is deep and tall (an apple, a ball): it rolls
+    rather than tips."""
+    ext = np.ptp(asset_geometry(o.asset).hull, axis=0)
+    return float(ext.max()) <= 1.3 * float(ext.min())
+
+
+def _com(o, *, settled: bool):
+    T = o.transform(settled)
+    return T[:3, :3] @ asset_geometry(o.asset).com + T[:3, 3]
+
+
+def _settle(scene: Scene) -> None:
+    from .physics import settle
+
+    for o in scene.objects.values():
+        o.settled_rotation = o.settled_position = None
+    scene.settled = False
+    settle(scene)
+
+
+def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
+                      config: SolverConfig | None = None) -> dict[str, int]:
+    """Settle ``scene``, then re-place what is unstable and settle again, up to ``rounds``.
+
+    Returns ``{"repaired": n, "unrepaired": m}``: objects repaired into a stable pose, and
+    objects that became ``failed`` because they were still unstable.
+    """
+    cfg = config or SolverConfig()
+    _settle(scene)
+    touched: set[str] = set()
+    for rnd in range(1, rounds + 1):
+        # a broken support relation on a stable object gets one new pose (round 1), no more
+        bad = unstable_objects(scene, relations=rnd == 1)
+        if not bad:
+            break
+        action = "pose" if rnd == 1 else "asset"
+        done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
+                               config=cfg, new_asset=set(bad) if action == "asset" else None)
+        for oid, cause in bad.items():
+            o = scene.objects[oid]
+            o.repairs.append(Repair(rnd, cause, done.get(oid, action)))
+            touched.add(oid)
+        scene.relations = []
+        scene.relations = check_relations(scene)
+        mark_unmet(scene)
+        _settle(scene)
+    still = unstable_objects(scene, relations=False)
+    for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
+        o = scene.objects[oid]
+        if not o.placed:
+            continue  # failed with its support already
+        o.status, o.reason = "failed", f"unstable after {len(o.repairs)} repairs ({still[oid]})"
+        for d in support_descendants(scene.pag, oid):
+            if scene.objects[d].placed:
+                scene.objects[d].status = "failed"
+                scene.objects[d].reason = f"its support {oid!r} failed (unstable after " \
+                                          f"{len(o.repairs)} repairs)"
+    if still:
+        scene.relations = []
+        scene.relations = check_relations(scene)
+        check_relations(scene, settled=True)
+    mark_unmet(scene)  # settling re-checked them as failing
+    stats = {"repaired": len(touched - set(still)), "unrepaired": len(still)}
+    scene.meta["repair"] = stats
+    return stats
 
 
 def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
-                 options: PipelineOptions = PipelineOptions(), library=None) -> Scene:
-    """Solve ``pag`` and, per ``options``, settle, extract contacts, write and preview.
+                 options: PipelineOptions = PipelineOptions(), library=None,
+                 progress: Callable | None = None) -> Scene:
+    """Solve ``pag`` and, per ``options``, settle and repair, extract contacts, write and
+    preview.
 
-    Returns the scene; ``scene.ok`` tells whether every object was placed.
+    Returns the scene; ``scene.ok`` tells whether every object was placed (and, when settled,
+    stayed stable).
     """
-    scene = solve(pag, seed=seed, config=options.solver, library=library)
+    scene = solve(pag, seed=seed, config=options.solver, library=library, progress=progress,
+                  deadline=options.time_limit)
     if options.settle and scene.placed:
-        from .physics import extract_contacts, settle
+        from .physics import extract_contacts
 
         t = time.perf_counter()
-        settle(scene)
+        settle_and_repair(scene, rounds=options.repair_rounds, library=library,
+                          config=options.solver)
         scene.timings["settle"] = time.perf_counter() - t
         t = time.perf_counter()
         scene.contacts = extract_contacts(scene)
         scene.timings["contacts"] = time.perf_counter() - t
     if out is not None:
-        from .export import ExportOptions, export_scene
-        from .physics.mujoco import settling_friction
-        from .scene.io import write_scene
-
-        write_scene(scene, out)
-        export_scene(scene, out, options.formats, ExportOptions(friction=settling_friction()))
+        write_outputs(scene, out, options.formats)
         if options.preview:
             from .render import save_preview
+            from .scene.io import write_scene
 
             t = time.perf_counter()
             save_preview(scene, Path(out) / "preview.png")
             scene.timings["preview"] = time.perf_counter() - t
             write_scene(scene, out)
     return scene
+
+
+def write_outputs(scene: Scene, out: str | Path, formats: tuple[str, ...] = ("glb",)) -> Path:
+    """Write ``scene.json`` (and ``contacts.json``) and the export ``formats`` into ``out``.
+
+    The exports carry the friction table settling used, so simulators see the same contacts.
+    Returns the path of ``scene.json``.
+    """
+    from .export import ExportOptions, export_scene
+    from .physics.mujoco import settling_friction
+    from .scene.io import write_scene
+
+    path = write_scene(scene, out)
+    export_scene(scene, out, formats, ExportOptions(friction=settling_friction()))
+    return path

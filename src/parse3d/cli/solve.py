@@ -9,7 +9,11 @@ import typer
 
 from .._deps import require
 from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InputError, Problem
-from ._common import check_seed, console, print_json, safe_name
+from ._common import check_range, check_seed, console, print_json, safe_name
+
+#: Bounds of the solver options (docs/hardening.md).
+MAX_SEARCH_BUDGET = 10_000
+MAX_TIME_LIMIT = 86_400.0
 
 
 def _summary(scene, out: Path | None) -> dict:
@@ -25,6 +29,8 @@ def _summary(scene, out: Path | None) -> dict:
         "relations_holding_settled": (sum(1 for c in scene.relations if c.holds_settled)
                                       if scene.settled else None),
         "contacts": None if scene.contacts is None else len(scene.contacts),
+        "repaired": scene.meta.get("repair", {}).get("repaired", 0),
+        "unrepaired": scene.meta.get("repair", {}).get("unrepaired", 0),
         "timings": {k: round(v, 4) for k, v in scene.timings.items()},
         "out": str(out) if out else None,
     }
@@ -40,6 +46,8 @@ def _print_summary(s: dict) -> None:
                   + (f", {s['contacts']} part-level contacts" if s["contacts"] is not None else ""))
     t = s["timings"]
     console.print("  time: " + ", ".join(f"{k} {v:.3f} s" for k, v in t.items()))
+    if s["repaired"] or s["unrepaired"]:
+        console.print(f"  repaired after settling: {s['repaired']}, still unstable: {s['unrepaired']}")
     for f in s["failed"]:
         console.print(f"  [red]failed[/] {f['id']}: {f['reason']}")
     if s["out"]:
@@ -49,17 +57,26 @@ def _print_summary(s: dict) -> None:
                       + (", preview.png" if (Path(s['out']) / 'preview.png').exists() else ""))
 
 
-def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb") -> None:
+def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb",
+         search="backtracking", search_budget=24, time_limit=None) -> None:
     from ..export import check_formats
     from ..pipeline import PipelineOptions, run_pipeline
-    from ..solver import SolverConfig
+    from ..solver import SEARCHES, STRATEGIES, SolverConfig
 
-    if strategy not in ("constrained", "rejection"):
+    if strategy not in STRATEGIES:
         raise InputError(Problem("", f"unknown strategy {strategy!r} (use constrained or rejection)",
                                  "--strategy", "parameter"))
+    if search not in SEARCHES:
+        raise InputError(Problem("", f"unknown search {search!r} (use backtracking or greedy)",
+                                 "--search", "parameter"))
+    search_budget = int(check_range("--search-budget", search_budget, 0, MAX_SEARCH_BUDGET))
+    if time_limit is not None:
+        check_range("--time-limit", time_limit, 0, MAX_TIME_LIMIT, unit="s", low_open=True)
     opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
-                           solver=SolverConfig(strategy=strategy),
-                           formats=check_formats(formats, where="--formats"))
+                           solver=SolverConfig(strategy=strategy, search=search,
+                                               search_budget=search_budget),
+                           formats=check_formats(formats, where="--formats"),
+                           time_limit=time_limit)
     if not no_settle:
         require("sapien", feature="settling (or pass --no-settle)")
     if not no_preview:
@@ -92,6 +109,9 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", help="Scene seed."),
         out: Path = typer.Option(None, "--out", "-o", help="Output folder (default: out/<name>-<seed>)."),
         strategy: str = typer.Option("constrained", help="constrained (Algorithm 1) or rejection (baseline)."),
+        search: str = typer.Option("backtracking", help="backtracking (re-place conflicting objects) or greedy (one pass)."),
+        search_budget: int = typer.Option(24, "--search-budget", help="Re-placements the backtracking search may spend."),
+        time_limit: float = typer.Option(None, "--time-limit", help="Seconds; objects not placed by then fail (exit 3)."),
         no_settle: bool = typer.Option(False, "--no-settle", help="Skip physics settling and contacts."),
         no_preview: bool = typer.Option(False, "--no-preview", help="Skip preview.png."),
         formats: str = typer.Option("glb", "--formats",
@@ -101,10 +121,11 @@ def register(app: typer.Typer) -> None:
     ) -> None:
         """Solve a PAG into a settled scene: scene.json, scene.glb, contacts.json, preview.png.
 
-        Exit codes: 0 all objects placed, 2 invalid PAG, 3 some objects could not be placed
-        (the scene is still written, failed objects marked).
+        Exit codes: 0 all objects placed and stable, 2 invalid PAG, 3 some objects could not be
+        placed or stayed unstable after repair (the scene is still written, failed objects
+        marked with their reason).
 
-        Example: parse3d solve examples/study.json --seed 3 --out out/study
+        Example: parse3d solve examples/study.json --seed 3 --search greedy --time-limit 20 --out out/study
         """
         from ..assets.registry import vocabulary
         from ..pag.io import load_pag
@@ -112,7 +133,8 @@ def register(app: typer.Typer) -> None:
         check_seed(seed)
         pag = load_pag(pag_file, vocabulary=vocabulary())
         out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
-        _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats)
+        _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats, search,
+             search_budget, time_limit)
 
     @app.command("generate")
     def generate_cmd(

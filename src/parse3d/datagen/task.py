@@ -123,14 +123,11 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         tmp = Path(tempfile.mkdtemp(prefix="parse3d-scene-"))
         _render(scene, tmp, config, plan, renderer)
         stage.enter("write")
-        from ..export import ExportOptions, export_scene
-        from ..physics.mujoco import settling_friction
-        from ..scene.io import write_scene
+        from ..pipeline import write_outputs
 
         scene.timings.update({k: round(stage.times.get(k, 0.0), 6)
                               for k in ("expand", "render")})
-        write_scene(scene, tmp)
-        export_scene(scene, tmp, config.formats, ExportOptions(friction=settling_friction()))
+        write_outputs(scene, tmp, config.formats)
         files = {p.relative_to(tmp).as_posix(): p.read_bytes() for p in sorted(tmp.rglob("*"))
                  if p.is_file()}
         stage.enter("done")

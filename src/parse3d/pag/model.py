@@ -198,15 +198,19 @@ class PAG:
         category: str | list[str] | tuple[str, ...],
         *,
         scale: tuple[float, float] | None = None,
+        yaw: str | None = None,
     ) -> ObjectNode:
-        """Add an object node. Returns it. Raises InputError for a duplicate id."""
+        """Add an object node. Returns it. Raises InputError for a duplicate id.
+
+        ``yaw="free"`` leaves the object's free angle unsquared (file key ``"yaw"``)."""
         from ..errors import InputError, Problem
 
         if id in self.objects:
             raise InputError(Problem(f"/objects/{len(self.objects)}/id",
                                      f"duplicate object id {id!r}", kind="reference"))
         cat = category if isinstance(category, str) else tuple(category)
-        node = ObjectNode(id, cat, tuple(float(s) for s in scale) if scale is not None else None)
+        node = ObjectNode(id, cat, tuple(float(s) for s in scale) if scale is not None else None,
+                          {"yaw": yaw} if yaw is not None else {})
         self.objects[id] = node
         return node
 

@@ -1,6 +1,7 @@
 """Reading and writing solved scenes: ``scene.json`` and ``contacts.json``.
 
-``scene.json`` (``format: "parse3d-scene/1"``, schema ``scene-1.schema.json`` in this package)
+``scene.json`` (``format: "parse3d-scene/2"``, schema ``scene-2.schema.json`` in this package;
+``parse3d-scene/1`` files, whose ``support`` is a ``parent:part@surface`` string, are still read)
 holds the PAG as given, the seed, the room, every object's chosen category, asset, scale and
 pose (solved and, once settled, settled), its status, and every relation's check results.
 Assets are referenced by ``(category, variant, seed)`` for generated ones, or by the cached
@@ -21,13 +22,17 @@ from .._files import atomic_write_bytes, atomic_write_text, read_input_text
 from ..errors import InputError, Problem
 from ..geometry.frames import matrix_to_quat, quat_to_matrix
 from ..pag.model import PAG
-from .model import Contact, PlacedObject, RelationCheck, Scene
+from .model import Contact, PlacedObject, RelationCheck, Repair, Scene, SupportChoice
 from .shell import build_shell
+from .validate import SCENE_FORMATS
 
-__all__ = ["SCENE_FORMAT", "scene_to_dict", "write_scene", "read_scene", "scene_schema",
-           "atomic_write_text", "atomic_write_bytes", "clear_scene_outputs", "OUTPUT_PATTERNS"]
+__all__ = ["SCENE_FORMAT", "READABLE_FORMATS", "scene_to_dict", "write_scene", "read_scene",
+           "scene_schema", "atomic_write_text", "atomic_write_bytes", "clear_scene_outputs",
+           "OUTPUT_PATTERNS"]
 
-SCENE_FORMAT = "parse3d-scene/1"
+SCENE_FORMAT = "parse3d-scene/2"
+#: Formats :func:`read_scene` reads.
+READABLE_FORMATS = SCENE_FORMATS
 
 
 def _r(x, n: int = 6) -> list[float]:
@@ -54,7 +59,7 @@ def _asset_ref(o: PlacedObject) -> dict[str, Any] | None:
 
 
 def scene_to_dict(scene: Scene) -> dict[str, Any]:
-    """The ``parse3d-scene/1`` document of a scene."""
+    """The ``parse3d-scene/2`` document of a scene."""
     objects = []
     for o in scene.objects.values():
         d: dict[str, Any] = {"id": o.id, "category": o.category, "status": o.status}
@@ -65,15 +70,19 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
             if o.settled_position is not None:
                 d["settled_pose"] = _pose(o.settled_rotation, o.settled_position)
             d["parts"] = [{"name": p.name, "label": p.label} for p in o.asset.parts]
-            d["support"] = o.support
+            d["support"] = o.support_choice.to_dict() if o.support_choice else None
             d["fixed"] = bool(o.fixed)
             d["trials"] = int(o.trials)
             if o.flags:
                 d["flags"] = list(o.flags)
             if o.joints:
                 d["joints"] = {k: float(v) for k, v in o.joints.items()}
+            if o.stacked_on:
+                d["stacked_on"] = o.stacked_on
         else:
             d["reason"] = o.reason
+        if o.repairs:
+            d["repairs"] = [r.to_dict() for r in o.repairs]
         objects.append(d)
     rels = []
     for c in scene.relations:
@@ -179,7 +188,7 @@ def clear_scene_outputs(out_dir: str | Path) -> list[Path]:
 
 def scene_schema() -> dict[str, Any]:
     """The JSON Schema of ``scene.json``."""
-    return json.loads((Path(__file__).parent / "scene-1.schema.json").read_text())
+    return json.loads((Path(__file__).parent / "scene-2.schema.json").read_text())
 
 
 def _load_asset(ref: dict[str, Any]):
@@ -193,12 +202,13 @@ def _load_asset(ref: dict[str, Any]):
     return default_pool().load(ref["category"], int(ref["seed"]))
 
 
-def _support_ref(support: Any) -> str | None:
-    """The supporting reference of an object record: a string, or an object naming it under
-    ``ref`` or ``parent`` (newer scene files)."""
-    if isinstance(support, dict):
-        support = support.get("ref") or support.get("parent")
-    return support if isinstance(support, str) else None
+def _support(v) -> SupportChoice | None:
+    """The support of an object entry: a string in ``/1``, an object in ``/2``."""
+    if not v:
+        return None
+    if isinstance(v, str):
+        return SupportChoice.parse(v)
+    return SupportChoice(str(v["owner"]), v.get("part"), str(v["surface"]))
 
 
 def read_scene(path: str | Path) -> Scene:
@@ -221,16 +231,20 @@ def read_scene(path: str | Path) -> Scene:
     scene = Scene(pag, int(d["seed"]), shell, timings=dict(d.get("timings", {})),
                   settled=bool(d.get("settled")), meta=d.get("meta", {}))
     for od in d["objects"]:
+        repairs = [Repair(int(r["round"]), str(r["cause"]), str(r["action"]))
+                   for r in od.get("repairs", [])]
         if od["status"] != "placed":
             scene.objects[od["id"]] = PlacedObject(od["id"], od["category"], None,
-                                                   status=od["status"], reason=od.get("reason"))
+                                                   status=od["status"], reason=od.get("reason"),
+                                                   repairs=repairs)
             continue
         asset = _load_asset(od["asset"])
         pose = od["pose"]
         o = PlacedObject(od["id"], od["category"], asset, float(od["scale"]),
                          quat_to_matrix(pose["quaternion"]), np.array(pose["position"], float),
-                         "placed", None, int(od.get("trials", 0)), _support_ref(od.get("support")),
-                         bool(od.get("fixed", False)))
+                         "placed", None, int(od.get("trials", 0)), None,
+                         bool(od.get("fixed", False)), support_choice=_support(od.get("support")),
+                         repairs=repairs, stacked_on=od.get("stacked_on"))
         if "settled_pose" in od:
             o.settled_rotation = quat_to_matrix(od["settled_pose"]["quaternion"])
             o.settled_position = np.array(od["settled_pose"]["position"], float)

@@ -21,7 +21,61 @@ from ..geometry.frames import make_transform
 from ..geometry.surfaces import Surface
 from ..pag.model import PAG
 
-__all__ = ["PlacedObject", "ShellElement", "RoomShell", "RelationCheck", "Contact", "Scene"]
+__all__ = ["SupportChoice", "Repair", "PlacedObject", "ShellElement", "RoomShell", "RelationCheck", "Contact", "Scene"]
+
+
+@dataclass(frozen=True)
+class SupportChoice:
+    """The part-level support the solver chose for an object.
+
+    Attributes
+    ----------
+    owner : str
+        The supporting object's id, or ``room`` for a room element.
+    part : str or None
+        The supporting part's name (``shelf_1``), or the room element (``floor``, ``wall_2``).
+    surface : str
+        The surface label used (``top``, ``front``, ...).
+    """
+
+    owner: str
+    part: str | None
+    surface: str
+
+    @property
+    def text(self) -> str:
+        """``owner:part@surface``, or the room element's name."""
+        if self.owner == "room":
+            return str(self.part)
+        return f"{self.owner}:{self.part}@{self.surface}"
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"owner": self.owner, "part": self.part, "surface": self.surface}
+
+    @classmethod
+    def parse(cls, text: str) -> SupportChoice:
+        """Read the ``parse3d-scene/1`` string form back (``desk:tabletop@top``, ``floor``)."""
+        if ":" not in text:
+            return cls("room", text.removeprefix("room:") or None, "top")
+        owner, rest = text.split(":", 1)
+        part, _, label = rest.partition("@")
+        if owner == "room":
+            return cls("room", part, label or "top")
+        return cls(owner, part, label or "top")
+
+
+@dataclass(frozen=True)
+class Repair:
+    """One repair of an object after settling: its round (1-based), what was wrong (``fell``,
+    ``tipped``, ``left_support``, ``support relation``) and what was changed (``pose`` or
+    ``asset``)."""
+
+    round: int
+    cause: str
+    action: str
+
+    def to_dict(self) -> dict[str, Any]:
+        return {"round": int(self.round), "cause": self.cause, "action": self.action}
 
 
 @dataclass
@@ -49,8 +103,8 @@ class PlacedObject:
     trials : int
         Pose samples drawn before one validated.
     support : str or None
-        The part-level support actually used, as ``parent:part_name@surface`` (or
-        ``room:floor``).
+        The part-level support actually used, as text (``parent:part_name@surface`` or
+        ``floor``); kept in step with ``support_choice``.
     fixed : bool
         Held in place during settling (SECURED_TO and HANGING_BELOW objects).
     settled_rotation, settled_position : array or None
@@ -58,6 +112,12 @@ class PlacedObject:
     joints : dict of str to float
         Joint values by joint name (radians or metres) for articulated assets; a joint not
         listed is at 0 (closed).
+    support_choice : SupportChoice or None
+        The typed support (set from ``support`` when only the text is given).
+    repairs : list of Repair
+        Re-placements after settling.
+    stacked_on : str or None
+        The id of the same-category object this one rests on in a pile or stack.
     """
 
     id: str
@@ -75,6 +135,15 @@ class PlacedObject:
     settled_position: np.ndarray | None = None
     flags: list[str] = field(default_factory=list)
     joints: dict[str, float] = field(default_factory=dict)
+    support_choice: SupportChoice | None = None
+    repairs: list[Repair] = field(default_factory=list)
+    stacked_on: str | None = None
+
+    def __post_init__(self):
+        if self.support_choice is not None:
+            self.support = self.support_choice.text
+        elif self.support:
+            self.support_choice = SupportChoice.parse(self.support)
 
     @property
     def placed(self) -> bool:

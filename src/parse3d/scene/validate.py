@@ -159,8 +159,15 @@ def scene_problems(data: Any, *, file: str | None = None,
               and all(isinstance(x, str) for x in v), "a list of strings")
         c.opt(o, "joints", base, lambda v: isinstance(v, dict)
               and all(_num(x) for x in v.values()), "an object of finite numbers")
-        c.opt(o, "support", base, lambda v: isinstance(v, (str, dict)),
-              "a reference string, an object or null")
+        c.opt(o, "support", base, lambda v: isinstance(v, str) or (
+            isinstance(v, dict) and isinstance(v.get("owner"), str)
+            and isinstance(v.get("surface"), str) and isinstance(v.get("part"), (str, type(None)))),
+              "a reference string, an object {owner, part, surface} or null")
+        c.opt(o, "stacked_on", base, lambda v: isinstance(v, str), "an object id")
+        c.opt(o, "repairs", base, lambda v: isinstance(v, list) and all(
+            isinstance(r, dict) and _int(r.get("round")) and isinstance(r.get("cause"), str)
+            and isinstance(r.get("action"), str) for r in v),
+              "a list of {round, cause, action}")
         if status != "placed":
             continue
         asset = c.need(o, "asset", base, lambda v: isinstance(v, dict), "the asset reference")

@@ -1,4 +1,9 @@
-"""The Part-Aware Spatial Configuration Solver (Algorithm 1 of the paper).
+"""The Part-Aware Spatial Configuration Solver (Algorithm 1 of the paper) and its search.
+
+Modules follow the algorithm's stages: ``support`` (stage 2), ``rotation`` (3), ``regions``
+(4-5), ``placement`` (1 and 6 for one object), ``search`` (the loop over objects, failure
+propagation, backjumping, re-placement for repair); relation meaning is registered per relation
+family in ``rotation.ROTATION_RULES`` and ``regions.REGION_RULES``.
 
 >>> import parse3d
 >>> scene = parse3d.solve(parse3d.load_pag("examples/study.json"), seed=0)  # doctest: +SKIP
@@ -6,17 +11,25 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
+from ..errors import InfeasibleError
 from ..measure.checks import check_relations
 from ..pag.model import PAG
 from ..scene.model import Scene
-from .core import SolverConfig, solve_scene
+from .config import SEARCHES, STRATEGIES, SolverConfig
 from .library import AssetLibrary
+from .search import SolveProgress, solve_scene
 
-__all__ = ["solve", "SolverConfig", "AssetLibrary", "check_relations"]
+__all__ = ["solve", "SolverConfig", "SolveProgress", "AssetLibrary", "check_relations",
+           "STRATEGIES", "SEARCHES"]
 
 
 def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
-          config: SolverConfig | None = None, validate: bool = True) -> Scene:
+          config: SolverConfig | None = None, validate: bool = True,
+          progress: Callable[[SolveProgress], None] | None = None,
+          deadline: float | None = None, proposals: dict | None = None,
+          strict: bool = False) -> Scene:
     """Turn a PAG into a Scene.
 
     Parameters
@@ -27,8 +40,16 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
     seed : int
         Scene seed; the same PAG, seed and library give the same scene.
     library : AssetLibrary, optional
-        Where assets come from (default: a process-wide in-memory pool).
+        Where assets come from (default: the on-disk pool).
     config : SolverConfig, optional
+    progress : callable, optional
+        Called with a :class:`SolveProgress` each time an object is placed or fails.
+    deadline : float, optional
+        Seconds; objects not placed by then fail with ``time limit``.
+    proposals : dict of str to (R (3, 3), t (3,)), optional
+        World poses (rotation, asset-origin position in metres) tried first per object id.
+    strict : bool
+        Raise :class:`InfeasibleError` (carrying the scene as its report) when an object fails.
 
     Returns
     -------
@@ -40,9 +61,17 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
     ------
     InputError
         The PAG is invalid.
+    InfeasibleError
+        With ``strict=True``, when some object could not be placed.
     """
     if validate:
         from ..assets.registry import vocabulary
 
         pag.validate(vocabulary=vocabulary())
-    return solve_scene(pag, seed=seed, library=library, config=config)
+    scene = solve_scene(pag, seed=seed, library=library, config=config, progress=progress,
+                        deadline=deadline, proposals=proposals)
+    if strict and not scene.ok:
+        first = scene.failed[0]
+        raise InfeasibleError(f"{len(scene.failed)} of {len(scene.objects)} objects could not be "
+                              f"placed; {first.id}: {first.reason}", report=scene)
+    return scene

@@ -60,13 +60,24 @@ class CollisionWorld:
     def __init__(self):
         self.manager = fcl.DynamicAABBTreeCollisionManager()
         self._names: dict[int, list[str]] = {}
-        self._bodies: list[Body] = []
+        self._bodies: dict[str, Body] = {}
         self._dirty = False
 
     def add(self, name: str, body: Body) -> None:
         self._names.setdefault(id(body.geom), []).append(name)
-        self._bodies.append(body)
+        self._bodies[name] = body
         self.manager.registerObject(body.obj)
+        self._dirty = True
+
+    def remove(self, name: str) -> None:
+        """Unregister the object added as ``name`` (a no-op when there is none)."""
+        body = self._bodies.pop(name, None)
+        if body is None:
+            return
+        self.manager.unregisterObject(body.obj)
+        names = self._names.get(id(body.geom), [])
+        if name in names:
+            names.remove(name)
         self._dirty = True
 
     def collides(self, body: Body, ignore: frozenset[str] = frozenset()) -> str | None:
@@ -77,11 +88,21 @@ class CollisionWorld:
         req = fcl.CollisionRequest(num_max_contacts=16, enable_contact=True)
         data = fcl.CollisionData(request=req)
         self.manager.collide(body.obj, data, fcl.defaultCollisionCallback)
+        shared = False
         for c in data.result.contacts:
+            if c.o1 is body.geom and c.o2 is body.geom:
+                shared = True  # a placed object built from the same BVH (same asset and scale)
             for g in (c.o1, c.o2):
                 if g is body.geom:
                     continue
                 for name in self._names.get(id(g), ()):
                     if name not in ignore:
                         return name
+        if shared:
+            for name in self._names.get(id(body.geom), ()):
+                other = self._bodies.get(name)
+                if name in ignore or other is None or other is body:
+                    continue
+                if fcl.collide(body.obj, other.obj, fcl.CollisionRequest(), fcl.CollisionResult()):
+                    return name
         return None

@@ -24,12 +24,16 @@ class AssetLibrary:
         self._cache: dict[tuple[str, int], Asset] = {}
 
     def get(self, category: str, rng: np.random.Generator) -> Asset:
+        """Slot ``rng.integers(per_category)`` of ``category`` (one integer draw)."""
+        return self.load(category, int(rng.integers(self.per_category)))
+
+    def load(self, category: str, seed: int) -> Asset:
+        """The asset of slot ``seed``."""
         from ..assets import registry
 
-        idx = int(rng.integers(self.per_category))
-        key = (category, idx)
+        key = (category, int(seed))
         if key not in self._cache:
-            self._cache[key] = registry.generate(category, seed=idx)
+            self._cache[key] = registry.generate(category, seed=int(seed))
         return self._cache[key]
 
 

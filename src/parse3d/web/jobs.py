@@ -152,13 +152,13 @@ def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> 
             job.emit("stage", stage="settle", status="skipped")
             job.emit("stage", stage="contacts", status="skipped")
 
-        from ..scene.io import write_scene
+        from ..pipeline import write_outputs
 
         stage = "export"
         job.emit("stage", stage=stage, status="start")
         t = time.perf_counter()
         job.out = out_folder(workdir, pag.name, job.seed)
-        write_scene(scene, job.out)
+        write_outputs(scene, job.out)
         job.emit("stage", stage=stage, status="done", seconds=round(time.perf_counter() - t, 4),
                  out=str(job.out.relative_to(workdir)))
         job.result = scene_payload(scene, out=str(job.out.relative_to(workdir)))

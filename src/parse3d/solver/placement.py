@@ -1,0 +1,703 @@
+"""Stages 1 and 6 of Algorithm 1 for one object: choose an asset and scale, then sample
+positions in the feasible region and validate each (relation checks, FCL collisions)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+import numpy as np
+import shapely
+from shapely.geometry import Polygon
+
+from ..assets.model import Asset
+from ..geometry import regions as RG
+from ..geometry.frames import axis_angle
+from ..measure.checks import EPS, check_edge, world_points
+from ..pag.model import Edge
+from ..relations import SURFACES
+from ..scene.model import PlacedObject
+from .collision import Body, cached_body
+from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
+from .geometry import asset_geometry, drop_distance, part_points
+from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
+from .rotation import solve_rotation
+from .state import SolveState, angle_to, plane_coords, support_chain
+from .support import Support, filled, support_candidates
+
+__all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
+
+
+@dataclass
+class Placement:
+    """An accepted pose: the object, its collision body and the checks measured on it (one per
+    edge of the object, in ``pag.edges_of`` order)."""
+
+    obj: PlacedObject
+    body: Body
+    checks: list[tuple]
+
+
+def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
+                 library, *, skip: frozenset[int] = frozenset(),
+                 proposal: tuple[np.ndarray, np.ndarray] | None = None,
+                 keep: PlacedObject | None = None) -> Placement:
+    """Place one object (its parents are placed); raise Fail with the reason otherwise.
+
+    ``skip`` holds indices (into ``pag.edges_of(oid)``) of non-support relations left out
+    because their parent failed. ``proposal`` is a world pose ``(R, t)`` tried first. ``keep``
+    is an earlier placement of the object whose asset and scale the first attempt reuses (a
+    repair by another pose).
+    """
+    pag = st.pag
+    node = pag.objects[oid]
+    edges = pag.edges_of(oid)
+    support_edge = edges[0]
+    others = [e for i, e in enumerate(edges[1:], 1) if i not in skip]
+    reasons: list[str] = []
+    intrinsic: list[bool] = []
+    total_trials = 0
+    reqs = requirements(pag, oid)
+    tried: set[str] = set()
+    for attempt in range(cfg.asset_attempts):
+        category = node.candidates[int(rng.integers(len(node.candidates)))]
+        asset = library.get(category, rng)
+        if keep is not None and attempt == 0:
+            category, asset = keep.category, keep.asset
+        elif reasons and _space(reasons[-1]):
+            # the last instance did not fit where it must go: the smallest suitable one next
+            alt = _alternative(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
+                               smallest=True)
+            if alt is not None:
+                category, asset = alt
+        elif asset.asset_id in tried or lacks(asset, reqs):
+            # constraint-aware selection: another instance that has what the relations need
+            alt = _alternative(library, node.candidates, reqs, tried, rng)
+            if alt is None:
+                if asset.asset_id in tried:
+                    break  # every suitable instance was tried
+                why = lacks(asset, reqs)
+                raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
+                           f"{RANKED_SLOTS} per category) fits the relations: {why}",
+                           intrinsic=True)
+            category, asset = alt
+        tried.add(asset.asset_id)
+        # generators already make real-world sizes: keep them (times the node's scale range),
+        # clamped so the size stays in the category's range (this normalises loaded assets)
+        lo, hi = asset.size_range
+        s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
+        size = asset_geometry(asset).size
+        scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
+        if keep is not None and attempt == 0:
+            scale = keep.scale
+        try:
+            pose, trials, checks, under = _place_asset(st, oid, asset, scale, support_edge,
+                                                       others, rng, cfg,
+                                                       proposal if attempt == 0 else None)
+        except Fail as f:
+            reasons.append(str(f))
+            intrinsic.append(f.intrinsic)
+            total_trials += cfg.max_trials
+            continue
+        total_trials += trials
+        R, t, sup, body = pose
+        obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
+                           support_choice=sup.choice)
+        obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
+        obj.stacked_on = under
+        full = _full_checks(edges, skip, checks)
+        return Placement(obj, body, full)
+    raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
+
+
+def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
+    """What the object's asset must have, from every relation naming one of its parts:
+    ``(part label, index or None, relation text, kind)`` with kind ``part`` (the part and
+    ``#k`` exist), ``internal`` (an IN parent part holds an internal support surface) or
+    ``extreme:<label>`` (an AGAINST child part reaches furthest along its surface normal)."""
+    out = []
+    for e in pag.relations:
+        text = f"{e.relation} {e.child} -> {e.parent}"
+        for ref, role in ((e.child, "child"), (e.parent, "parent")):
+            if ref.object != oid or ref.part is None:
+                continue
+            out.append((ref.part, ref.index, text, "part"))
+            if role == "parent" and e.relation == "IN":
+                out.append((ref.part, ref.index, text, "internal"))
+            if role == "parent" and e.relation == "ON" and ref.surface in (None, "top"):
+                out.append((ref.part, ref.index, text, "free_top"))
+            if role == "child" and e.relation == "AGAINST":
+                out.append((ref.part, ref.index, text,
+                            f"extreme:{ref.surface or e.spec.child_surface}"))
+    return out
+
+
+def lacks(asset: Asset, reqs) -> str | None:
+    """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
+    for label, idx, text, kind in reqs:
+        ps = asset.parts_by_label(label)
+        if not ps:
+            return f"{asset.asset_id} has no part {label!r} ({text})"
+        if idx is not None and idx >= len(ps):
+            return f"{asset.asset_id} has {len(ps)} {label} part(s), no #{idx} ({text})"
+        ps = ps[idx:idx + 1] if idx is not None else ps
+        if kind == "internal":
+            names = {p.name for p in ps}
+            if not any(i.part in names for i in asset.internal):
+                return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
+        elif kind == "free_top":
+            if not any(_free_top(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} top is mostly covered by its other parts, "
+                        f"no room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
+        elif kind.startswith("extreme:"):
+            n = np.asarray(SURFACES[kind.split(":")[1]], float)
+            side = kind.split(":")[1]
+            mine = float(np.max(part_points(ps) @ n))
+            who = max(asset.parts, key=lambda p: float(np.max(part_points([p]) @ n)))
+            d = float(np.max(part_points([who]) @ n)) - mine
+            if d > 2e-3:
+                oid = text.split(" ")[1].split(":")[0]
+                return (f"{text}: {oid}:{who.label} reaches {d:.2f} m further {side} than "
+                        f"{oid}:{label} (asset {asset.asset_id}): name {oid}:{who.label}@{side} "
+                        f"or {oid}@{side}")
+    return None
+
+
+#: Width (m) of the smallest item a part's top must have room for (stage 1's reachability).
+FREE_TOP = 0.08
+_FREE_TOP: dict[tuple[str, str], bool] = {}
+
+
+def _free_top(asset: Asset, part) -> bool:
+    """Whether the part's top face has a ``FREE_TOP``-wide patch, or half its area, that the
+    asset's other parts do not cover within 20 cm above it (a top-loading washer's lid covers
+    most of its top)."""
+    key = (asset.asset_id, part.name)
+    got = _FREE_TOP.get(key)
+    if got is None:
+        s = part.surfaces["top"]
+        free = filled(s.polygon)
+        for p in asset.parts:
+            if p is part:
+                continue
+            for pc in p.pieces:  # per convex piece: a part's pieces may frame the top
+                h = (pc.vertices - s.origin) @ s.normal
+                if h.max() <= 1e-3 or h.min() >= 0.2:
+                    continue
+                free = free.difference(Polygon(RG.convex_footprint(plane_coords(s, pc.vertices))))
+        # room for an item, or at least mostly uncovered (a bathtub's thin rim holds bottles
+        # by their centre of mass)
+        got = not free.buffer(-FREE_TOP / 2).is_empty or free.area >= 0.5 * filled(s.polygon).area
+        if len(_FREE_TOP) > 8192:
+            _FREE_TOP.clear()
+        _FREE_TOP[key] = got
+    return got
+
+
+#: Pool slots examined per candidate category when looking for a suitable instance.
+RANKED_SLOTS = 6
+
+
+def _space(reason: str) -> bool:
+    """Whether a failure was about room (a region emptied, no free space, collisions)."""
+    return any(k in reason for k in ("emptied", "no free space", "collides", "does not fit"))
+
+
+def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,
+                 smallest: bool = False):
+    """An untried instance, over the candidate categories and a random sample of their pool
+    slots, that meets ``reqs``: the first found, or with ``smallest`` the one with the
+    smallest footprint; None when there is none."""
+    load = getattr(library, "load", None)
+    if load is None:
+        return None
+    k = int(getattr(library, "per_category", 20))
+    best = None
+    for ci in rng.permutation(len(categories)):
+        cat = categories[int(ci)]
+        for slot in rng.permutation(k)[:RANKED_SLOTS]:
+            asset = load(cat, int(slot))
+            if asset.asset_id in tried or lacks(asset, reqs) is not None:
+                continue
+            if not smallest:
+                return cat, asset
+            ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+            area = float(ext[0] * ext[1])
+            if best is None or area < best[0]:
+                best = (area, cat, asset)
+    return None if best is None else (best[1], best[2])
+
+
+def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
+    it = iter(checks)
+    return [None if i in skip else next(it) for i in range(len(edges))]
+
+
+def _summarise(reasons: list[str], node) -> str:
+    """One message for all attempts: the most frequent distinct reasons (at most two), and how
+    many assets were tried when there were several."""
+    if not reasons:
+        return "no attempt"
+    counts: dict[str, int] = {}
+    for r in reasons:
+        for frag in r.split("; "):
+            counts[frag] = counts.get(frag, 0) + 1
+    uniq = sorted(counts, key=lambda r: -counts[r])
+    msg = "; ".join(uniq[:2])
+    if len(reasons) > 1 and all("in this " in r for r in reasons):
+        msg = msg.replace("in this ", "in every ")
+    more = f"; {len(uniq) - 2} other reasons" if len(uniq) > 2 else ""
+    return msg + more + (f" ({len(reasons)} assets tried)" if len(reasons) > 1 else "")
+
+
+def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_edge: Edge,
+                 others: list[Edge], rng: np.random.Generator, cfg: SolverConfig, proposal):
+    geom = asset_geometry(asset)
+    hull = geom.hull * scale
+    sups = support_candidates(st, support_edge)
+    order = rng.permutation(len(sups)) if len(sups) > 1 and support_edge.parent.surface is None \
+        and support_edge.relation != "ON" else np.arange(len(sups))
+    if support_edge.relation == "ON" and len(sups) > 1:
+        order = np.arange(len(sups))
+    if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
+        order = rng.permutation(len(sups))
+    body = cached_body(asset.asset_id, scale, lambda: scaled_mesh(asset, scale))
+    reasons = []
+    inner: list[bool] = []
+    for variant in _wall_choices(st, others, rng):
+        for si in order:
+            sup = sups[int(si)]
+            try:
+                return _place_on(st, oid, asset, scale, hull, sup, support_edge, variant, body,
+                                 rng, cfg, proposal)
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and _may_stack(st, support_edge):
+        # crowding: rest on an object of the same category already on that support
+        for si in order:
+            try:
+                return _place_stacked(st, oid, asset, scale, hull, sups[int(si)], support_edge,
+                                      others, body, rng)
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
+    raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)),
+               intrinsic=all(inner))
+
+
+def _drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+               sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+               rng: np.random.Generator, onto: list[PlacedObject], own_fp: Polygon):
+    """A pile in a small container: drop the child from above the container at sampled
+    positions onto the container and what is in it, and keep the lowest valid rest (an apple
+    nestles between the others and the bowl's wall rather than on top of them)."""
+    s, n = sup.surface, sup.surface.normal
+    owner = onto[0]
+    hull = asset_geometry(asset).hull * scale
+    hN = (hull @ R.T) @ n
+    c3 = (asset_geometry(asset).com * scale) @ R.T
+    top = max(float(np.max((st.hulls[o.id] - s.origin) @ n)) for o in onto)
+    cu = np.array(own_fp.centroid.coords[0])
+    radius = max(np.sqrt(own_fp.area / np.pi), 1e-3)
+    r_child = max(float(np.ptp((hull @ R.T) @ s.u)), float(np.ptp((hull @ R.T) @ s.v))) / 2
+    inner = own_fp.buffer(-r_child)
+    found = []
+    last = f"no room left in {sup.owner}"
+    for _ in range(16):
+        ab = cu + rng.uniform(-1, 1, 2) * 0.5 * radius - np.array([c3 @ s.u, c3 @ s.v])
+        t = s.origin + ab[0] * s.u + ab[1] * s.v + (top - float(hN.min()) + 2 * EPS) * n
+        cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+        d = _drop(cand, world_points(cand, hull_only=True), asset, onto, st, n)
+        if not np.isfinite(d):
+            continue
+        t = t - (d - EPS) * n
+        cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+        pts = world_points(cand, hull_only=True)
+        height = float(np.max((pts - s.origin) @ n))
+        com = cand.transform()[:3, :3] @ asset_geometry(asset).com + t
+        if height > sup.clearance:
+            last = f"the pile would reach {height:.2f} m, above the {sup.clearance:.2f} m free"
+            continue
+        if inner.is_empty or not inner.contains(shapely.Point(plane_coords(s, com[None])[0])):
+            last = f"it would rest on the rim of {sup.owner}"
+            continue
+        found.append((float(com @ n), t, cand))
+    for _, t, cand in sorted(found, key=lambda f: f[0]):
+        checks = []
+        ok = True
+        for e in others:
+            holds, res, detail = check_edge(st.scene, e, cand)
+            if not holds:
+                ok, last = False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
+                break
+            checks.append((holds, res, detail))
+        if not ok:
+            continue
+        body.move(R, t)
+        hit = st.world.collides(body)
+        if hit is not None:
+            last = f"collides with {hit}"
+            continue
+        # what it rests on: the object whose drop distance is the contact
+        pts = world_points(cand, hull_only=True)
+        gaps = {o.id: drop_distance(pts, asset, cand.transform(), st.hulls[o.id], o.asset,
+                                    o.transform(), -n) for o in onto}
+        under = min(gaps, key=gaps.get)
+        holds, res, detail = check_edge(st.scene, support_edge, cand,
+                                        resolved=resolution(support_edge, sup.choice))
+        if not holds and under != owner.id:
+            holds, res, detail = bool(gaps[under] <= 2e-3), {"distance": round(gaps[under], 6)}, \
+                f"piled on {under} in {owner.id}"
+        return (R, t, sup, body), 1, [(holds, res, detail), *checks], \
+            None if under == owner.id else under
+    raise Fail(f"no free space on {sup.name} and no room in a pile: {last}")
+
+
+def _drop(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedObject],
+          st: SolveState, n: np.ndarray) -> float:
+    """How far ``cand`` can move down (along ``-n``) before touching any of ``onto``."""
+    return min(drop_distance(pts, asset, cand.transform(), st.hulls[o.id], o.asset,
+                             o.transform(), -n) for o in onto)
+
+
+#: Objects of a pile tried as the base of a stack (at random), per support and asset.
+PILE_BASES = 6
+
+#: Parent categories that take a plate-like stack for ON (every IN support takes piles).
+STACK_ON = ("plate",)
+
+
+def _may_stack(st: SolveState, edge: Edge) -> bool:
+    """Piles and stacks are allowed IN a container or shelf, and ON a plate."""
+    if edge.parent.is_room_element:
+        return False
+    if edge.relation == "IN":
+        return True
+    parent = st.scene.objects.get(edge.parent.object)
+    return edge.relation == "ON" and parent is not None and parent.category in STACK_ON
+
+
+def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
+                   sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+                   rng: np.random.Generator):
+    """Place the child on top of a same-category object already on ``sup`` (a can on a can
+    on a shelf, a plate on a stack of plates), or, in a small container (a bowl, a basket),
+    dropped into it onto its wall or the pile; ``Fail`` when none can take it.
+
+    Returns like ``_place_on`` plus the id of the object it rests on (None: the container).
+    """
+    s = sup.surface
+    n = s.normal
+    R, _, _ = solve_rotation(st, oid, asset, sup, support_edge, others, rng, "constrained", scale)
+    Y = hull @ R.T
+    hN = Y @ n
+    c3 = (asset_geometry(asset).com * scale) @ R.T
+    owner = st.scene.objects[sup.owner]
+    own_fp = Polygon(RG.convex_footprint(plane_coords(s, st.hulls[sup.owner])))
+    child_area = Polygon(RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])).area
+    # a small container (a bowl, a basket) holds a pile: it may rest on its wall too
+    container = support_edge.relation == "IN" and own_fp.area <= 12 * child_area
+    pile = [o for o in st.scene.objects.values()
+            if o.placed and o.category == asset.category and o.support_choice == sup.choice
+            and o.id in st.hulls]
+    if container:
+        return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
+                          [owner, *pile], own_fp)
+    bases = [pile[int(k)] for k in rng.permutation(len(pile))[:PILE_BASES]]
+    if not bases:
+        raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
+    last = f"no {asset.category} on {sup.name} can take another on top"
+    for under in bases:
+        H = st.hulls[under.id]
+        is_owner = under is owner
+        top = float(np.max((H - s.origin) @ n))
+        fp = own_fp if is_owner else Polygon(RG.convex_footprint(plane_coords(s, H)))
+        cu = np.array((sup.region.centroid if is_owner else fp.centroid).coords[0])
+        radius = max(np.sqrt(fp.area / np.pi), 1e-3)
+        allowed = fp.union(own_fp) if container else fp
+        for _ in range(6):
+            ab = cu + rng.normal(0.0, (0.4 if container else 0.2) * radius, 2) \
+                - np.array([c3 @ s.u, c3 @ s.v])
+            h = top - float(hN.min()) + 2 * EPS
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + h * n
+            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+            pts = world_points(cand, hull_only=True)
+            d = _drop(cand, pts, asset, [under] + ([owner] if container else []), st, n)
+            if not np.isfinite(d):
+                last = f"nothing under it on {under.id}"
+                continue
+            t = t - (d - EPS) * n
+            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+            pts = world_points(cand, hull_only=True)
+            height = float(np.max((pts - s.origin) @ n))
+            if height > sup.clearance:
+                last = f"a pile on {under.id} would reach {height:.2f} m, above the " \
+                       f"{sup.clearance:.2f} m of free height"
+                continue
+            com = plane_coords(s, (cand.transform()[:3, :3] @ asset_geometry(asset).com
+                                   + t)[None])[0]
+            if not allowed.contains(shapely.Point(com)):
+                last = f"its centre of mass would overhang {under.id}"
+                continue
+            checks = []
+            ok = True
+            for e in others:
+                holds, res, detail = check_edge(st.scene, e, cand)
+                if not holds:
+                    ok, last = False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
+                    break
+                checks.append((holds, res, detail))
+            if not ok:
+                continue
+            body.move(R, t)
+            hit = st.world.collides(body)
+            if hit is not None:
+                last = f"collides with {hit}"
+                continue
+            if is_owner:  # resting in the container: the usual check of the support relation
+                holds, res, detail = check_edge(st.scene, support_edge, cand,
+                                                resolved=resolution(support_edge, sup.choice))
+                sup_check = (holds, res, detail + " (resting on the container's wall)")
+            else:  # the support is the object below (or the container): measure the gap
+                gap = _drop(cand, pts, asset, [under] + ([owner] if container else []), st, n)
+                sup_check = (bool(gap <= 2e-3), {"distance": round(float(gap), 6)},
+                             f"stacked on {under.id}")
+            return (R, t, sup, body), 1, [sup_check, *checks], None if is_owner else under.id
+    raise Fail(f"no free space on {sup.name} and no stack fits: {last}")
+
+
+def _wall_choices(st: SolveState, edges: list[Edge], rng: np.random.Generator) -> list[list[Edge]]:
+    """Edge lists with ``wall`` (any wall) replaced by each concrete wall, in random order."""
+    if not any(e.parent.object == "wall" for e in edges):
+        return [edges]
+    walls = [n for n in st.scene.room.elements if n.startswith("wall_")]
+    out = []
+    for k in rng.permutation(len(walls)):
+        w = walls[int(k)]
+        out.append([replace(e, parent=replace(e.parent, object=w, text=""))
+                    if e.parent.object == "wall" else e for e in edges])
+    return out
+
+
+def scaled_mesh(asset: Asset, scale: float):
+    """A copy of the asset's mesh at ``scale`` (for its collision body)."""
+    m = asset.mesh()
+    m.apply_scale(scale)
+    return m
+
+
+def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
+              sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+              rng: np.random.Generator, cfg: SolverConfig, proposal=None):
+    s = sup.surface
+    rel = support_edge.relation
+    strategy = cfg.strategy
+    R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng, strategy,
+                                     scale)
+    Y = hull @ R.T
+    hN = Y @ s.normal
+    height = float(hN.max() - hN.min())
+    if rel == "IN" and height > sup.clearance:
+        raise Fail(f"IN: {oid} is {height:.2f} m tall but {sup.name} has "
+                   f"{sup.clearance:.2f} m of free height")
+    drop = 0.0
+    if rel == "HANGING_BELOW":
+        lo, hi = support_edge.param("drop")
+        drop = rng.uniform(lo, hi)
+    h = -float(hN.min()) + EPS + drop
+    # room elements are bounded by walls in the collision world; object supports keep a margin
+    # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
+    region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else cfg.margin),
+                                join_style="mitre")
+    if region0.is_empty:
+        region0 = sup.region  # tiny supports (a burner) keep their polygon; see overhang below
+    # the support's owner and everything holding it up (a cabinet around a stack of plates)
+    exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
+    F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+    overhang = False
+    if strategy == "constrained":
+        obst = obstacles(st, sup, exclude, height + EPS)
+        fa = Polygon(F).area
+        # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
+        holes = [RG.convex_footprint(hole) for hole in sup.holes]
+        if rel == "HANGING_BELOW":
+            # what hangs needs its attachment (the points touching the parent) on the parent's
+            # surface, not its whole footprint: a towel is wider than the bar it hangs from
+            top = Y[hN <= hN.min() + 2e-3]
+            Fc = RG.convex_footprint(np.vstack([np.c_[top @ s.u, top @ s.v],
+                                                np.c_[top @ s.u, top @ s.v] + 1e-4]))
+            region = RG.clip(RG.erode(region0, [], Fc),
+                             RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+        else:
+            region = RG.erode(region0, obst + holes, F)
+            if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
+                    and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
+                    and fa <= 1.5 * Polygon(st.xy[sup.owner]).area:
+                # a support smaller than the child (a pot on a burner, an apple in a bowl, a
+                # bottle on a bathtub's rim): the paper's stability rule, centre of mass over
+                # the solid support polygon, decides; only for children no bigger than the
+                # parent object (no wardrobe on a mug)
+                com = (asset_geometry(asset).com * scale) @ R.T
+                solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
+                    if holes else region0
+                region = shapely.affinity.translate(solid, -float(com @ s.u), -float(com @ s.v))
+                region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+                room = st.scene.room.elements["floor"].surface
+                fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
+                region = RG.clip(region, RG.erode(fp, [], F))
+                overhang = True
+        if region.is_empty or region.area < 1e-10:
+            raise Fail(_no_space(st, sup, F, region0, obst + holes),
+                       intrinsic=RG.erode(region0, holes, F).is_empty and not overhang)
+        c3 = (asset_geometry(asset).center * scale) @ R.T
+        ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
+                            c3 + h * s.normal)
+        region = apply_region_rules(ctx, others, region, "object")
+        if rel == "SECURED_TO":
+            region = height_band(ctx, support_edge, region)
+        region = apply_region_rules(ctx, others, region, "part")
+        if rel == "ON" and sup.owner != "room" and not overhang:
+            region = _well_inside(region, F, height)
+    else:
+        region = region0
+    trials = 0
+    last = "no sample"
+    samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    same = 0
+    for k in range(cfg.max_trials + (proposal is not None)):
+        trials += 1
+        if proposal is not None and k == 0:
+            Rt, t = np.asarray(proposal[0], float), np.asarray(proposal[1], float)
+        else:
+            if strategy == "rejection":
+                R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng,
+                                                 strategy, scale)
+                hN = (hull @ R.T) @ s.normal
+                h = -float(hN.min()) + EPS + drop
+            ab = samples[k - (proposal is not None)]
+            Rt = R
+            if toward is not None and strategy == "constrained":
+                Rt, h = _face(st, toward, R, hull, s, ab, h, drop, others)
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
+        cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        if rel == "ON" and sup.owner != "room":
+            # settle onto the parent's actual geometry: a plate on a plate sits in its well
+            parent = st.scene.objects[sup.owner]
+            d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
+                              st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+            if np.isfinite(d) and d > 2 * EPS:
+                t = t - (d - EPS) * s.normal
+                cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        # footprint inside the support polygon: the region guarantees it, except after a TOWARD
+        # turn, for rejection samples and proposals
+        if not overhang and (Rt is not R or strategy == "rejection"):
+            Fw = plane_coords(s, world_points(cand, hull_only=True))
+            if not region0.contains(Polygon(RG.convex_footprint(Fw))):
+                last = f"footprint leaves {sup.name}"
+                continue
+        ok, why, checks = _validate(st, cand, support_edge, others, sup)
+        if not ok:
+            # the region makes relations hold by construction; the same relation failing
+            # again and again is structural (a pan that would tip, a part that is not the
+            # lowest one): stop wasting samples on this asset
+            rel_of = why.split(":")[0]
+            same = same + 1 if rel_of == last.split(":")[0] else 1
+            last = why
+            if same >= STRUCTURAL_FAILURES:
+                break
+            continue
+        body.move(Rt, t)
+        hit = st.world.collides(body)
+        if hit is not None:
+            last = f"collides with {hit}"
+            continue
+        return (Rt, t, sup, body), trials, checks, None
+    raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+#: A child taller than this many times its narrowest footprint width is tippy.
+TIPPY = 1.5
+
+
+def _well_inside(region, F: np.ndarray, height: float):
+    """For a tippy child (a TV on its stand), keep its base well inside the support: the
+    region shrunk by a quarter of the footprint's narrowest width, when anything is left."""
+    width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
+    if height <= TIPPY * width or region.area < 1e-10:
+        return region
+    inner = region.buffer(-0.25 * width)
+    return inner if not inner.is_empty and inner.area > 1e-10 else region
+
+
+def _face(st, toward, R, hull, s, ab, h, drop, others):
+    """Turn the child about the support normal to face ``toward`` from position ``ab``: square
+    to the nearest side of the target when that keeps TOWARD's tolerance, else at its
+    centroid."""
+    t0 = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
+    target, frame, thull = parent_frame(st, toward)
+    front = R @ np.array([0, 1.0, 0])
+    want = target - t0
+    ang = angle_to(front, want, s.normal)
+    if ang is None:
+        return R, h
+    tol = next((np.deg2rad(e.param("tolerance_deg")) for e in others
+                if e.relation == "TOWARD" and e.parent.object == toward), np.deg2rad(10.0))
+    if thull is not None:
+        # the side of the target facing the child: the target frame axis most aligned with
+        # the direction from the target to the child, weighed by the target's half extents
+        d = t0 - target
+        best = None
+        for ax in (frame[:, 0], frame[:, 1]):
+            half = max(float(np.ptp(thull @ ax)) / 2, 1e-3)
+            score = abs(float(d @ ax)) / half
+            if best is None or score > best[0]:
+                best = (score, -np.sign(float(d @ ax)) * ax)
+        sq = angle_to(front, best[1], s.normal)
+        if sq is not None:
+            a, b = best[1][:2], want[:2]
+            dev = abs(float(np.arctan2(a[0] * b[1] - a[1] * b[0], float(a @ b))))
+            if dev <= 0.8 * tol:
+                ang = sq
+    Rt = axis_angle(s.normal, ang) @ R
+    hN2 = (hull @ Rt.T) @ s.normal
+    return Rt, -float(hN2.min()) + EPS + drop
+
+
+def _no_space(st: SolveState, sup: Support, F: np.ndarray, region0, obst) -> str:
+    """Why the support has no room: too small, or taken (by whom)."""
+    fx, fy = np.ptp(F[:, 0]), np.ptp(F[:, 1])
+    if RG.erode(region0, [], F).is_empty:
+        b = region0.bounds
+        return (f"no free space on {sup.name}: a {fx:.2f} x {fy:.2f} m footprint does not fit "
+                f"its {b[2] - b[0]:.2f} x {b[3] - b[1]:.2f} m surface")
+    there = [o.id for o in st.scene.objects.values()
+             if o.placed and o.support_choice is not None and o.support_choice == sup.choice]
+    if not there:
+        return f"no free space on {sup.name} for a {fx:.2f} x {fy:.2f} m footprint"
+    names = ", ".join(there[:4]) + (", ..." if len(there) > 4 else "")
+    return (f"no free space on {sup.name} for a {fx:.2f} x {fy:.2f} m footprint: it holds "
+            f"{len(there)} objects already ({names})")
+
+
+def _validate(st: SolveState, cand: PlacedObject, support_edge: Edge, others: list[Edge],
+              sup: Support) -> tuple[bool, str, list]:
+    results = []
+    for e in [support_edge, *others]:
+        holds, res, detail = check_edge(st.scene, e, cand, resolved=resolution(e, sup.choice))
+        if not holds:
+            return False, f"{e.relation} {e.child} -> {e.parent}: {detail}", []
+        results.append((holds, res, detail))
+    return True, "", results
+
+
+def resolution(edge: Edge, choice, *, final: bool = False) -> dict | None:
+    """What the checks need to know of a support edge's resolution (part, element, surface);
+    ``final`` is the form kept in ``scene.meta["resolved"]`` (no surface for room elements)."""
+    if not edge.is_support:
+        return None
+    room = choice.owner == "room"
+    return {"parent_part": None if room else choice.part,
+            "parent_element": choice.part if room else None,
+            "parent_surface": None if room and final else choice.surface,
+            "internal": edge.relation == "IN" and not (room and final)}

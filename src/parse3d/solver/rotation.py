@@ -1,0 +1,276 @@
+"""Stage 3 of Algorithm 1: the child's rotation from the part-level normal constraints.
+
+The child's contact surface is turned anti-parallel to the support normal; the angle about the
+support normal is then set by one rule per relation family, registered by name in
+:data:`ROTATION_RULES`. A free angle is squared to the room's walls (floor furniture) unless the
+object asks for ``"yaw": "free"``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..assets.model import Asset
+from ..geometry import regions as RG
+from ..geometry.frames import axis_angle, rotation_between
+from ..geometry.surfaces import Surface, surface_from_bbox
+from ..pag.model import Edge
+from ..pag.refs import Ref
+from ..relations import SURFACES
+from .config import Fail
+from .geometry import asset_geometry, part_points
+from .state import SolveState, angle_to, parts_for, wrap
+from .support import Support
+
+__all__ = ["ROTATION_RULES", "Orientation", "solve_rotation", "parent_surface_world"]
+
+
+@dataclass
+class Orientation:
+    """The rotation being built for one child on one support.
+
+    Attributes
+    ----------
+    R0 : (3, 3) float
+        Turns the child's support contact normal onto minus the support normal.
+    n_s : (3,) float
+        The support normal (world).
+    phi : float or None
+        Angle about ``n_s`` once a rule has fixed it (radians).
+    source : str or None
+        What fixed ``phi`` (for messages).
+    toward : str or None
+        The object the child turns to face, per sampled position.
+    lean : tuple or None
+        ``(edge, parent surface normal)`` of a LEANING_AGAINST.
+    """
+
+    R0: np.ndarray
+    n_s: np.ndarray
+    phi: float | None = None
+    source: str | None = None
+    toward: str | None = None
+    lean: tuple | None = None
+
+
+RotationRule = Callable[[SolveState, Asset, Orientation, Edge], None]
+#: One rule per relation name: how the relation constrains the child's rotation.
+ROTATION_RULES: dict[str, RotationRule] = {}
+
+
+def rotation_rule(*names: str):
+    def deco(fn: RotationRule) -> RotationRule:
+        for n in names:
+            ROTATION_RULES[n] = fn
+        return fn
+    return deco
+
+
+def contact_normal(ref: Ref, default_label: str) -> np.ndarray:
+    """The asset-frame normal of the surface a reference names (or the default)."""
+    return np.array(SURFACES[ref.surface or default_label], float)
+
+
+def parent_surface_world(st: SolveState, ref: Ref, default_label: str) -> tuple[Surface, str, str]:
+    """World surface of a parent reference (object part or room element)."""
+    scene = st.scene
+    label = ref.surface or default_label
+    if ref.is_room_element:
+        if ref.object == "wall":
+            raise Fail("'wall' (any wall) can only be a support parent")
+        el = scene.room.elements[ref.object].surface
+        return el, ref.object, el.label
+    parent = scene.objects[ref.object]
+    if not parent.placed:
+        raise Fail(f"parent {ref.object!r} was not placed")
+    parts = parts_for(parent.asset, ref)
+    if not parts:
+        raise Fail(f"{ref.object!r} has no part {ref.part!r}")
+    if ref.part is None:  # the whole object's face: the bbox face of the asset
+        s = surface_from_bbox(label, asset_geometry(parent.asset).bounds)
+        return s.transformed(parent.transform()), "", label
+    p = parts[0]
+    return p.surfaces[label].transformed(parent.transform()), p.name, label
+
+
+@rotation_rule("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+def _support_rotation(st, asset, o, e):
+    """Support relations set ``R0`` (contact anti-parallel to the support); nothing more."""
+
+
+@rotation_rule("SIDE_OF", "ALONG", "NEAR", "FAR_FROM")
+def _position_only(st, asset, o, e):
+    """Object-level position relations leave the rotation free."""
+
+
+@rotation_rule("AGAINST", "OPPOSITE_TO", "ALIGNED_WITH", "PARALLEL_TO", "LEANING_AGAINST")
+def _facing(st, asset, o, e):
+    """The named child surface anti-parallel (parallel for ALIGNED_WITH / PARALLEL_TO) to the
+    parent surface: fixes the angle about the support normal."""
+    rel = e.relation
+    sB, _, _ = parent_surface_world(st, e.parent, e.spec.parent_surface)
+    nA = contact_normal(e.child, e.spec.child_surface)
+    sign = 1.0 if rel in ("ALIGNED_WITH", "PARALLEL_TO") else -1.0
+    ang = angle_to(o.R0 @ nA, sign * sB.normal, o.n_s)
+    if ang is None:
+        if abs(np.dot(o.R0 @ nA, sign * sB.normal) - 1) < 1e-3:
+            return  # already satisfied whatever the angle
+        raise Fail(f"{rel} {e.child} -> {e.parent}: the surfaces cannot be turned to face each "
+                   f"other on this support", intrinsic=True)
+    if o.phi is not None and abs(wrap(ang - o.phi)) > np.deg2rad(1.0):
+        raise Fail(f"{rel} {e.child} -> {e.parent} needs a different orientation than {o.source}")
+    o.phi, o.source = ang, f"{rel} {e.child} -> {e.parent}"
+    if rel == "LEANING_AGAINST":
+        o.lean = (e, -sB.normal)
+
+
+@rotation_rule("TOWARD")
+def _toward(st, asset, o, e):
+    """Turned per sampled position to face the parent (unless a part-level rule fixed it)."""
+    o.toward = e.parent.object
+
+
+def wall_angles(st: SolveState, R0: np.ndarray, n_s: np.ndarray) -> list[float]:
+    """Angles about ``n_s`` that square the child's front to each wall direction (distinct
+    modulo 90 degrees), wall_0's first."""
+    out: list[float] = []
+    for w in st.scene.room.walls:
+        a = angle_to(R0 @ np.array([0, 1.0, 0]), w.surface.normal, n_s)
+        if a is None:
+            continue
+        if all(abs(wrap(4 * (a - b))) > np.deg2rad(2.0) for b in out):
+            out.append(a)
+    return out or [0.0]
+
+
+def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support_edge: Edge,
+                   edges: list[Edge], rng: np.random.Generator, strategy: str,
+                   scale: float = 1.0) -> tuple[np.ndarray, str | None, list]:
+    """Rotation of the child; returns ``(R, toward_target, lean)``.
+
+    ``lean`` is ``[(edge, theta, direction)]`` when the child leans (tilt ``theta`` radians
+    toward ``direction``), else empty.
+    """
+    n_s = sup.surface.normal
+    R0 = rotation_between(contact_normal(support_edge.child, support_edge.spec.child_surface), -n_s)
+    o = Orientation(R0, n_s)
+    if abs(n_s[2]) <= 0.9:  # on a wall: stay upright
+        o.phi, o.source = _upright_angle(R0, n_s), "upright"
+    if strategy == "constrained":
+        for e in edges:
+            ROTATION_RULES[e.relation](st, asset, o, e)
+        if o.phi is not None:
+            o.toward = None  # fixed by part-level constraints; TOWARD is only checked
+    phi = o.phi
+    if phi is None and o.toward is None:
+        free = st.pag.objects[oid].extra.get("yaw") == "free"
+        if strategy == "constrained" and not free and sup.owner == "room":
+            # floor furniture stands square to the room's walls
+            angles = wall_angles(st, R0, n_s)
+            phi = angles[int(rng.integers(len(angles)))] + rng.integers(4) * np.pi / 2
+        elif strategy == "constrained" and not free:
+            phi = _fitting_angle(st, asset, scale, sup, R0, n_s, rng)
+        else:
+            phi = rng.uniform(0, 2 * np.pi)
+    R = axis_angle(n_s, phi) @ R0 if phi is not None else R0
+    lean = []
+    if o.lean is not None:
+        e, d = o.lean
+        k = np.cross(n_s, d)
+        if np.linalg.norm(k) > 1e-6:
+            theta = _lean_angle(asset, scale, R, k, d, e, rng)
+            R = axis_angle(k, theta) @ R
+            lean = [(e, theta, d)]
+    return R, o.toward, lean
+
+
+def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0: np.ndarray,
+                   n_s: np.ndarray, rng: np.random.Generator) -> float:
+    """A free angle on an object's surface: three times in four square to the support's owner
+    (else uniform), preferring the quarter turns whose footprint sits well inside the support
+    (a TV along its stand, not across it); a uniform angle is kept only if it fits as well."""
+    s = sup.surface
+    owner = st.scene.objects.get(sup.owner)
+    ref = owner.rotation[:, 1] if owner is not None and owner.placed else None
+    base = angle_to(R0 @ np.array([0, 1.0, 0]), ref, n_s) if ref is not None else None
+    if base is None:
+        base = wall_angles(st, R0, n_s)[0]
+    hull = asset_geometry(asset).hull * scale
+
+    def fit(phi: float) -> float:
+        Y = hull @ (axis_angle(n_s, phi) @ R0).T
+        F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+        return float(RG.erode(sup.region, [], F).area)
+
+    quarter = [base + k * np.pi / 2 for k in range(4)]
+    Y0 = hull @ R0.T
+    fp_area = float(np.ptp(Y0 @ s.u) * np.ptp(Y0 @ s.v))
+    if fp_area < 0.05 * sup.region.area:  # small on a large top: every turn fits
+        areas = np.ones(4)
+    else:  # a half turn fits (nearly) as well as its opposite: two erosions, not four
+        a0, a1 = fit(quarter[0]), fit(quarter[1])
+        areas = np.array([a0, a1, a0, a1])
+    good = [p for p, a in zip(quarter, areas, strict=True) if a >= 0.7 * areas.max()]
+    if rng.random() >= 0.75:
+        phi = rng.uniform(0, 2 * np.pi)
+        if areas.min() == areas.max() == 1.0 or fit(phi) >= 0.7 * areas.max():
+            return float(phi)
+    return float(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
+
+
+def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray, e: Edge,
+                rng: np.random.Generator) -> float:
+    """A tilt in ``angle_deg`` at which the named child part is the object's extreme toward
+    the parent (so the named part, not another, touches it); Fail when none is."""
+    lo, hi = e.param("angle_deg")
+    if e.child.part is None:
+        return float(np.deg2rad(rng.uniform(lo, hi)))
+    parts = parts_for(asset, e.child)
+    if not parts:
+        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {asset.asset_id} has no part "
+                   f"{e.child.part!r}")
+    hull = asset_geometry(asset).hull
+    mine = part_points(parts)
+    others = [p for p in asset.parts if p not in parts]
+    grid = np.deg2rad(np.linspace(lo, hi, 25))
+    ok, worst = [], (0.0, None)
+    scale_free = max(float(np.ptp(hull, axis=0).max()), 1e-6)
+    for th in grid:
+        Rt = axis_angle(k, th) @ R
+        reach_part = float(np.max(mine @ Rt.T @ d))
+        reach_all = float(np.max(hull @ Rt.T @ d))
+        if reach_all - reach_part <= 1e-3 * scale_free:
+            ok.append(th)
+        elif reach_all - reach_part > worst[0]:
+            best = max(others, key=lambda p: float(np.max(part_points([p]) @ Rt.T @ d)),
+                       default=None)
+            worst = (reach_all - reach_part, best)
+    if ok:
+        return float(ok[int(rng.integers(len(ok)))])
+    # the largest tilt at which it would work, for the message
+    fit = [t for t in np.deg2rad(np.linspace(0.0, 45.0, 91))
+           if float(np.max(hull @ (axis_angle(k, t) @ R).T @ d))
+           - float(np.max(mine @ (axis_angle(k, t) @ R).T @ d)) <= 1e-3 * scale_free]
+    other = worst[1].name if worst[1] is not None else "another part"
+    lean_any = f"name {e.child.object}@{e.child.surface or 'back'} to lean on any part"
+    hint = (f"{e.child.part} could touch only at tilts up to {np.rad2deg(max(fit)):.0f} deg, "
+            f"or {lean_any}" if fit else lean_any)
+    raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {lo:g}-{hi:g} deg "
+               f"{e.child.object}:{other} reaches up to {worst[0] * scale:.2f} m further "
+               f"toward {e.parent} than {e.child.part} ({hint})", intrinsic=True)
+
+
+def _upright_angle(R0: np.ndarray, n: np.ndarray) -> float:
+    """Angle about ``n`` that turns ``R0 @ ez`` as close as possible to world +Z."""
+    v = R0[:, 2]
+    z = np.array([0.0, 0.0, 1.0])
+    pv = v - np.dot(v, n) * n
+    pz = z - np.dot(z, n) * n
+    if np.linalg.norm(pv) < 1e-6 or np.linalg.norm(pz) < 1e-6:
+        return 0.0
+    pv /= np.linalg.norm(pv)
+    pz /= np.linalg.norm(pz)
+    return float(np.arctan2(np.dot(np.cross(pv, pz), n), np.dot(pv, pz)))

@@ -1,0 +1,117 @@
+"""What the solver knows while it places objects: the scene so far, its collision world and
+the world-frame geometry of every placed object (indexed once, when the object is placed)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..assets.model import Asset, Part
+from ..geometry import regions as RG
+from ..geometry.surfaces import Surface
+from ..measure.checks import world_points
+from ..pag.model import PAG
+from ..pag.refs import Ref
+from ..scene.model import PlacedObject, Scene
+from .collision import Body, CollisionWorld
+
+__all__ = ["SolveState"]
+
+
+@dataclass
+class SolveState:
+    """The partial scene and the geometry index of its placed objects.
+
+    Attributes
+    ----------
+    pag, scene : the graph and the scene being filled
+    world : CollisionWorld
+        The room shell and every placed object.
+    hulls : dict of str to (N, 3) float
+        World convex-hull points per placed object.
+    xy : dict of str to (M, 2) float
+        World convex footprint per placed object.
+    zr : dict of str to (float, float)
+        World z range per placed object.
+    pieces : dict
+        World convex pieces per placed object, built on first use.
+    """
+
+    pag: PAG
+    scene: Scene
+    world: CollisionWorld
+    hulls: dict[str, np.ndarray] = field(default_factory=dict)
+    xy: dict[str, np.ndarray] = field(default_factory=dict)
+    zr: dict[str, tuple[float, float]] = field(default_factory=dict)
+    pieces: dict[str, list] = field(default_factory=dict)
+
+    def add(self, obj: PlacedObject, body: Body) -> None:
+        """Register a placed object (its pose is final until :meth:`remove`)."""
+        self.scene.objects[obj.id] = obj
+        self.hulls[obj.id] = world_points(obj, hull_only=True)
+        self.xy[obj.id] = RG.convex_footprint(self.hulls[obj.id][:, :2])
+        self.zr[obj.id] = (float(self.hulls[obj.id][:, 2].min()),
+                           float(self.hulls[obj.id][:, 2].max()))
+        body.move(obj.rotation, obj.position)
+        self.world.add(obj.id, body)
+
+    def remove(self, oid: str) -> None:
+        """Take a placed object out of the collision world and the geometry index."""
+        for d in (self.hulls, self.xy, self.zr, self.pieces):
+            d.pop(oid, None)
+        self.world.remove(oid)
+
+    def world_pieces(self, oid: str) -> list[tuple[str, np.ndarray]]:
+        """(part name, world vertices) of every convex piece of a placed object (cached)."""
+        got = self.pieces.get(oid)
+        if got is None:
+            o = self.scene.objects[oid]
+            T = o.transform()
+            got = [(p.name, pc.vertices @ T[:3, :3].T + T[:3, 3]) for p in o.asset.parts
+                   for pc in p.pieces]
+            self.pieces[oid] = got
+        return got
+
+
+# --------------------------------------------------------------------------- helpers
+def parts_for(asset: Asset, ref: Ref) -> list[Part]:
+    """The parts of ``asset`` a reference names (all parts when it names none)."""
+    if ref.part is None:
+        return list(asset.parts)
+    ps = asset.parts_by_label(ref.part)
+    if ref.index is not None:
+        ps = ps[ref.index:ref.index + 1]
+    return ps
+
+
+def plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
+    """(N, 2) coordinates of world points in the plane frame ``(u, v)`` of ``surf``."""
+    d = np.asarray(pts, float) - surf.origin
+    return np.c_[d @ surf.u, d @ surf.v]
+
+
+def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
+    """Angle about ``n`` taking ``vec`` onto ``target`` (both projected); None if degenerate."""
+    pv = vec - np.dot(vec, n) * n
+    pt = target - np.dot(target, n) * n
+    if np.linalg.norm(pv) < 1e-3 or np.linalg.norm(pt) < 1e-3:
+        return None
+    pv /= np.linalg.norm(pv)
+    pt /= np.linalg.norm(pt)
+    return float(np.arctan2(np.dot(np.cross(pv, pt), n), np.dot(pv, pt)))
+
+
+def wrap(a: float) -> float:
+    """An angle in radians wrapped to [-pi, pi)."""
+    return float((a + np.pi) % (2 * np.pi) - np.pi)
+
+
+def support_chain(pag: PAG, oid: str) -> set[str]:
+    """``oid`` and the objects below it in the support tree."""
+    out = set()
+    while oid is not None and oid not in out and oid in pag.objects:
+        out.add(oid)
+        e = pag.supporter(oid)
+        oid = e.parent.object if e is not None else None
+    return out

@@ -1,0 +1,217 @@
+"""Stage 2 of Algorithm 1: the world surfaces a child may rest on, for its support relation."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import shapely
+from scipy.spatial import ConvexHull, QhullError
+from shapely.geometry import Polygon
+from shapely.geometry.base import BaseGeometry
+
+from ..geometry.surfaces import Surface
+from ..pag.model import Edge
+from ..relations import SURFACES
+from ..scene.model import SupportChoice
+from .config import Fail
+from .geometry import ray_caster
+from .state import SolveState, parts_for
+
+__all__ = ["Support", "support_candidates"]
+
+
+@dataclass
+class Support:
+    """A resolved support: a world surface and what it belongs to.
+
+    Attributes
+    ----------
+    surface : Surface
+        World frame; its normal is the support normal.
+    choice : SupportChoice
+        Owner (object id or ``room``), part (or room element) and surface label.
+    region : shapely geometry
+        Polygon in the ``(u, v)`` coordinates of ``surface``.
+    clearance : float
+        Free height above an internal surface (metres), ``inf`` elsewhere.
+    holes : list of (K, 2) float
+        Deep holes of the surface (a sink cut-out; not a plate's shallow well), in plane
+        coordinates: filled in ``region``, obstacles for placement.
+    """
+
+    surface: Surface
+    choice: SupportChoice
+    region: BaseGeometry
+    clearance: float = float("inf")
+    holes: list = field(default_factory=list)
+
+    @property
+    def owner(self) -> str:
+        return self.choice.owner
+
+    @property
+    def part(self) -> str | None:
+        return self.choice.part
+
+    @property
+    def label(self) -> str:
+        return self.choice.surface
+
+    @property
+    def name(self) -> str:
+        return self.choice.text
+
+
+def filled(poly: BaseGeometry) -> BaseGeometry:
+    """The polygon without its holes."""
+    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    out = [Polygon(p.exterior) for p in parts if isinstance(p, Polygon) and not p.is_empty]
+    return shapely.union_all(out) if len(out) > 1 else (out[0] if out else poly)
+
+
+_FLAT: dict[tuple[str, str, str], bool] = {}
+
+
+def _flat_cached(asset_id: str, part, label: str) -> bool:
+    key = (asset_id, part.name, label)
+    got = _FLAT.get(key)
+    if got is None:
+        if len(_FLAT) > 8192:
+            _FLAT.clear()
+        got = _FLAT[key] = _flat_enough(part, label)
+    return got
+
+
+def _flat_enough(part, label: str, tol: float = 0.02, frac: float = 0.2) -> bool:
+    """Whether the part's geometry really reaches its bbox face ``label`` over an area.
+
+    A slanted part (an open piano lid) touches its bbox top only along an edge: the convex hull
+    of its points within ``tol`` (m) of the face covers less than ``frac`` of the face.
+    """
+    n = np.asarray(SURFACES[label], float)
+    axes = [i for i in range(3) if abs(n[i]) < 0.5]
+    pts = np.vstack([pc.vertices for pc in part.pieces]) if part.pieces else part.mesh.vertices
+    h = pts @ n
+    face = np.ptp(pts[:, axes], axis=0)
+    near = pts[h >= h.max() - tol][:, axes]
+    if len(near) < 3 or face.prod() <= 0:
+        return len(near) >= 3
+    try:
+        area = ConvexHull(near).volume
+    except QhullError:
+        return False
+    return area >= frac * float(face.prod())
+
+
+def _holes(poly: BaseGeometry) -> list[np.ndarray]:
+    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    return [np.asarray(r.coords)[:-1] for p in parts if isinstance(p, Polygon)
+            for r in p.interiors]
+
+
+#: Metres below an ON surface within which a hole has a floor (a plate's well); a deeper hole
+#: (a sink cut in a countertop) is no support.
+HOLE_DEPTH = 0.03
+
+
+def _deep_holes(s: Surface, holes: list[np.ndarray], parent, which: tuple[str, str],
+                ) -> list[np.ndarray]:
+    """The holes of a world surface with nothing of the parent within ``HOLE_DEPTH`` below
+    (rays cast down from points inside the hole, in the parent's asset frame; cached per
+    asset and surface)."""
+    if not holes:
+        return []
+    key = (parent.asset.asset_id, *which, len(holes))
+    deep = _DEEP.get(key)
+    if deep is None:
+        deep = _DEEP[key] = _hole_depths(s, holes, parent)
+        if len(_DEEP) > 8192:
+            _DEEP.clear()
+    return [h for h, d in zip(holes, deep, strict=True) if d]
+
+
+_DEEP: dict[tuple, list[bool]] = {}
+
+
+def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
+    """Per hole, whether it is deeper than ``HOLE_DEPTH``."""
+    T = parent.transform()
+    Ti = np.linalg.inv(T)
+    out = []
+    for h in holes:
+        poly = Polygon(h)
+        inner = poly.buffer(-0.1 * np.sqrt(max(poly.area, 1e-12)))
+        pts2 = [np.array(inner.representative_point().coords[0])] if not inner.is_empty else []
+        pts2.append(np.array(poly.representative_point().coords[0]))
+        start = np.array([s.to_3d(np.asarray(p)[None])[0] + 1e-3 * s.normal for p in pts2])
+        o = start @ Ti[:3, :3].T + Ti[:3, 3]
+        v = Ti[:3, :3] @ (-s.normal)
+        k = float(np.linalg.norm(v))
+        locs, idx, _ = ray_caster(parent.asset).intersects_location(
+            o, np.tile(v / k, (len(o), 1)), multiple_hits=False)
+        depth = np.full(len(o), np.inf)
+        for loc, i in zip(locs, idx, strict=True):
+            depth[i] = min(depth[i], float(np.linalg.norm(loc - o[i])) / k)
+        out.append(bool(float(depth.min()) > HOLE_DEPTH))
+    return out
+
+
+def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
+    """World support surfaces the child may be placed on, for its support edge."""
+    scene = st.scene
+    ref = edge.parent
+    rel = edge.relation
+    label = ref.surface or edge.spec.parent_surface
+    if ref.is_room_element:
+        names = ([n for n in scene.room.elements if n.startswith("wall_")]
+                 if ref.object == "wall" else [ref.object])
+        out = []
+        for nm in names:
+            s = scene.room.elements[nm].surface
+            out.append(Support(s, SupportChoice("room", nm, s.label), s.polygon))
+        return out
+    parent = scene.objects[ref.object]
+    if not parent.placed:
+        raise Fail(f"parent {ref.object!r} was not placed")
+    T = parent.transform()
+    parts = parts_for(parent.asset, ref)
+    if not parts:
+        raise Fail(f"{ref.object!r} ({parent.asset.asset_id}) has no part {ref.part!r}"
+                   + (f" #{ref.index}" if ref.index is not None else ""))
+    out = []
+    if rel == "IN":
+        names = {p.name for p in parts}
+        for ins in parent.asset.internal:
+            if ins.part in names:
+                s = ins.surface.transformed(T)
+                out.append(Support(s, SupportChoice(parent.id, ins.part, "top"), s.polygon,
+                                   ins.clearance * parent.scale))
+        if not out:
+            raise Fail(f"IN: {ref} has no internal support surface"
+                       f" (parts: {', '.join(sorted({p.label for p in parts}))})")
+        return out
+    want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
+    slanted = []
+    for p in parts:
+        labels = [label] if (ref.surface or rel != "ON") else ["top"]
+        for lb in labels:
+            s = p.surfaces[lb].transformed(T)
+            if want is not None and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
+                continue
+            if rel == "ON" and not _flat_cached(parent.asset.asset_id, p, lb):
+                slanted.append(p.name)
+                continue
+            # an object ON a rim spans its hole (a plate on a plate); placement keeps a child
+            # smaller than a hole (a bottle by a sink cut-out) off it
+            region = filled(s.polygon) if rel == "ON" else s.polygon
+            holes = _deep_holes(s, _holes(s.polygon), parent, (p.name, lb)) if rel == "ON" else []
+            out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
+    if not out:
+        if slanted:
+            raise Fail(f"{rel}: {ref} has no flat upward surface ({', '.join(slanted)} only "
+                       f"touches its bounding box's top along an edge: it is slanted)")
+        raise Fail(f"{rel}: no surface of {ref} faces the right way for {rel}")
+    if rel == "ON" and ref.surface is None and len(out) > 1:
+        out.sort(key=lambda s: -s.surface.origin[2])
+    return out
