@@ -389,6 +389,7 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         result.scenes.append(ls.scene_id)
         pag = _sub_pag(ls)
         shots: list[tuple[str, np.ndarray]] = []
+        cam = None
         for ri, (name, kind, run, cond) in enumerate(rows):
             for seed in range(1 if kind == "solver" else seeds):
                 if progress is not None:
@@ -407,8 +408,9 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene
 
-                    shots.append((name, render_scene(scene, overview_camera(
-                        scene, width=400, height=300), settled=False).rgb))
+                    if cam is None:  # the solver's view, shared by every row of the scene
+                        cam = overview_camera(scene, width=400, height=300)
+                    shots.append((name, render_scene(scene, cam, settled=False).rgb))
                 m = asdict(layout_metrics(scene, physics=physics))
                 acc[ri][seed].append(m)
                 result.rows[ri].per_scene.append({"scene": ls.scene_id, "seed": seed, **m})
