@@ -17,8 +17,8 @@ training each model and whether the issue's claim holds (PAG beats unconditioned
 satisfaction and collision rate by more than the seed-to-seed spread, and both beat random).
 
 The issue's full claim is >= 1,000 scenes of 2-3 room types and 30 CPU minutes per model
-(``--steps`` chosen so that training takes about that long; about 0.9 s of CPU per step for
-50-object scenes with the ``cpu`` preset, so ~2,000 steps).
+(``--steps`` chosen so that training takes about that long; about 0.6 s of CPU per step for
+50-object scenes with the ``cpu`` preset, so ~3,000 steps).
 """
 
 from __future__ import annotations
