@@ -7,6 +7,6 @@ checks move to ``parse3d.measure`` this is the one line to change.
 
 from __future__ import annotations
 
-from ..solver.checks import check_edge, check_relations
+from ..solver.checks import check_relations
 
-__all__ = ["check_edge", "check_relations"]
+__all__ = ["check_relations"]
