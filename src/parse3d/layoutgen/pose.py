@@ -1,0 +1,99 @@
+"""The 12-D object pose of the layout model and its normalisation.
+
+A pose row is ``[t (3), size (3), r6 (6)]`` in the world frame:
+
+- ``t``: world position of the asset origin (centre of its bounding box's bottom face), metres;
+- ``size``: the object's extents in its own frame, ``scale * asset.extents``, metres;
+- ``r6``: the first two columns of the world rotation matrix (the continuous 6-D rotation
+  representation), turned back into a rotation by Gram-Schmidt.
+
+The network sees normalised poses: ``t`` mapped to ``[-1, 1]`` over the room's footprint
+bounding box (x, y) and height (z), ``log(size)`` standardised by the training set's mean and
+standard deviation (:class:`PoseStats`, saved with a run as ``stats.json``), ``r6`` unchanged.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass
+
+import numpy as np
+
+__all__ = ["POSE_DIM", "PoseStats", "rotation_to_6d", "rotation_from_6d", "room_box",
+           "normalise_poses", "denormalise_poses"]
+
+#: Width of a pose row.
+POSE_DIM = 12
+
+
+def rotation_to_6d(R: np.ndarray) -> np.ndarray:
+    """(..., 3, 3) rotations to (..., 6): first column then second column."""
+    R = np.asarray(R, float)
+    return np.concatenate([R[..., :, 0], R[..., :, 1]], axis=-1)
+
+
+def rotation_from_6d(r6: np.ndarray) -> np.ndarray:
+    """(..., 6) to (..., 3, 3) proper rotations by Gram-Schmidt (degenerate input: identity)."""
+    r6 = np.asarray(r6, float)
+    a, b = r6[..., :3], r6[..., 3:]
+    na = np.linalg.norm(a, axis=-1, keepdims=True)
+    a = np.where(na > 1e-8, a / np.maximum(na, 1e-8), np.array([1.0, 0.0, 0.0]))
+    b = b - np.sum(a * b, axis=-1, keepdims=True) * a
+    nb = np.linalg.norm(b, axis=-1, keepdims=True)
+    fallback = np.cross(a, np.array([0.0, 0.0, 1.0]))
+    fallback = np.where(np.linalg.norm(fallback, axis=-1, keepdims=True) > 1e-6, fallback,
+                        np.cross(a, np.array([1.0, 0.0, 0.0])))
+    b = np.where(nb > 1e-8, b / np.maximum(nb, 1e-8),
+                 fallback / np.linalg.norm(fallback, axis=-1, keepdims=True))
+    c = np.cross(a, b)
+    return np.stack([a, b, c], axis=-1)
+
+
+def room_box(footprint: np.ndarray, height: float) -> tuple[np.ndarray, np.ndarray]:
+    """Lower and upper corners (3,) of the room's bounding box, metres."""
+    fp = np.asarray(footprint, float)
+    lo = np.r_[fp.min(axis=0), 0.0]
+    hi = np.r_[fp.max(axis=0), float(height)]
+    return lo, hi
+
+
+@dataclass(frozen=True)
+class PoseStats:
+    """Normalisation of the size block: mean and standard deviation of ``log(size)`` (3 each)."""
+
+    log_size_mean: tuple[float, float, float]
+    log_size_std: tuple[float, float, float]
+
+    @classmethod
+    def fit(cls, poses: list[np.ndarray]) -> PoseStats:
+        """Statistics over the (N, 12) pose arrays of the training scenes."""
+        ls = np.log(np.maximum(np.concatenate([p[:, 3:6] for p in poses]), 1e-4))
+        return cls(tuple(float(x) for x in ls.mean(0)),
+                   tuple(float(max(x, 1e-3)) for x in ls.std(0)))
+
+    def to_dict(self) -> dict:
+        return asdict(self)
+
+    @classmethod
+    def from_dict(cls, d: dict) -> PoseStats:
+        return cls(tuple(d["log_size_mean"]), tuple(d["log_size_std"]))
+
+
+def normalise_poses(poses: np.ndarray, footprint: np.ndarray, height: float,
+                    stats: PoseStats) -> np.ndarray:
+    """(N, 12) world poses to the network's space (see the module docstring)."""
+    lo, hi = room_box(footprint, height)
+    p = np.asarray(poses, float)
+    t = 2.0 * (p[:, :3] - lo) / np.maximum(hi - lo, 1e-6) - 1.0
+    s = (np.log(np.maximum(p[:, 3:6], 1e-4)) - np.array(stats.log_size_mean)) / np.array(stats.log_size_std)
+    return np.concatenate([t, s, p[:, 6:12]], axis=1).astype(np.float32)
+
+
+def denormalise_poses(x: np.ndarray, footprint: np.ndarray, height: float,
+                      stats: PoseStats) -> np.ndarray:
+    """Inverse of :func:`normalise_poses`; ``r6`` is re-orthonormalised."""
+    lo, hi = room_box(footprint, height)
+    x = np.asarray(x, float)
+    t = (x[:, :3] + 1.0) * 0.5 * (hi - lo) + lo
+    s = np.exp(x[:, 3:6] * np.array(stats.log_size_std) + np.array(stats.log_size_mean))
+    r6 = rotation_to_6d(rotation_from_6d(x[:, 6:12]))
+    return np.concatenate([t, s, r6], axis=1)

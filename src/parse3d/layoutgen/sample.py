@@ -1,0 +1,192 @@
+"""Generating a layout for a PAG with a trained run, as a normal scene.
+
+:func:`sample_layout` runs the reverse diffusion (DDPM, the run's scheduler, ``steps``
+evenly spaced timesteps) for the PAG's objects and turns the generated 12-D poses into a
+:class:`~parse3d.scene.model.Scene`: per object the pool asset of its category whose extents
+fit the generated size best, at the uniform scale that matches the generated volume, placed
+at the generated position and rotation. The scene's relations are checked on these poses
+(``holds``); ``parse3d settle`` and ``parse3d render`` accept the folder it is written to.
+
+Per object, the category is drawn among the node's candidates that the run has seen, and the
+shape features the network conditions on are those of a pool asset of that category drawn
+from the same ``rng``.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..assets.model import Asset
+from ..assets.pool import default_pool
+from ..errors import InputError, Problem
+from ..measure import check_relations
+from ..pag.model import PAG
+from ..scene.model import PlacedObject, Scene
+from ..scene.shell import build_shell
+from .data import graph_arrays, pag_relations
+from .pose import denormalise_poses, rotation_from_6d
+from .train import LayoutRun, make_scheduler, scene_tensors
+
+__all__ = ["SampleOptions", "sample_layout", "generate_poses", "fit_asset", "layout_scene",
+           "SCALE_RANGE"]
+
+#: The uniform scale chosen for an asset is clipped to this range.
+SCALE_RANGE = (0.25, 4.0)
+_FIXED = ("SECURED_TO", "HANGING_BELOW")
+
+
+@dataclass(frozen=True)
+class SampleOptions:
+    """How to sample.
+
+    Attributes
+    ----------
+    steps : int
+        Denoising steps (evenly spaced over the 1000 training timesteps).
+    guidance : float
+        Classifier-free guidance weight ``w``: ``eps_u + w (eps_c - eps_u)``; 1 is the plain
+        conditional model, 0 the unconditioned one.
+    cond : bool
+        False samples a ``pag`` run unconditioned (condition dropped), as its "none" row.
+    """
+
+    steps: int = 100
+    guidance: float = 1.0
+    cond: bool = True
+
+
+def _pick_categories(pag: PAG, run: LayoutRun, rng: np.random.Generator,
+                     file: str | None) -> dict[str, str]:
+    known = set(run.categories)
+    out, problems = {}, []
+    for k, (oid, node) in enumerate(pag.objects.items()):
+        seen = [c for c in node.candidates if c in known]
+        if not seen:
+            names = ", ".join(repr(c) for c in node.candidates)
+            problems.append(Problem(f"/objects/{k}/category",
+                                    f"object {oid!r}: category {names} never seen in training "
+                                    f"(the run knows {len(known)} categories, e.g. "
+                                    f"{', '.join(sorted(known)[:6])}) — use one of them or "
+                                    "train on a dataset that has it", file, "vocabulary"))
+            continue
+        out[oid] = seen[int(rng.integers(len(seen)))] if len(seen) > 1 else seen[0]
+    if problems:
+        raise InputError(problems)
+    return out
+
+
+def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], relations,
+                   footprint: np.ndarray, height: float, *, seed: int,
+                   options: SampleOptions = SampleOptions()) -> np.ndarray:
+    """(N, 12) world poses for one scene graph (see :mod:`.pose`)."""
+    import torch
+
+    dev = next(run.model.parameters()).device
+    ga = graph_arrays(categories, assets, relations, footprint, height,
+                      shape_encoder=run.shape_encoder, relation_encoder=run.relation_encoder,
+                      stats=run.stats)
+    g = scene_tensors(ga, dev)
+    n = len(categories)
+    sched = make_scheduler()
+    sched.set_timesteps(options.steps)
+    gen = torch.Generator(device="cpu")
+    gen.manual_seed(int(np.random.SeedSequence([seed, 11]).generate_state(1)[0]))
+    x = torch.randn((1, n, 12), generator=gen).to(dev)
+    use_cond = options.cond and run.config.cond == "pag"
+    w = options.guidance if use_cond else 0.0
+    with torch.no_grad():
+        cond = run.model.condition(g)
+        for t in sched.timesteps:
+            tt = torch.full((1,), int(t), device=dev)
+            if w == 0.0:
+                eps = run.model(x, tt, g, torch.zeros(1, device=dev), cond=cond)
+            elif w == 1.0:
+                eps = run.model(x, tt, g, torch.ones(1, device=dev), cond=cond)
+            else:
+                both = run.model(x.expand(2, -1, -1), tt.expand(2),
+                                 g, torch.tensor([0.0, 1.0], device=dev), cond=cond)
+                eps = both[:1] + w * (both[1:] - both[:1])
+            x = sched.step(eps.cpu(), t, x.cpu(), generator=gen).prev_sample.to(dev)
+    return denormalise_poses(x[0].cpu().numpy(), footprint, height, run.stats)
+
+
+def fit_asset(category: str, size: np.ndarray, *, fallback: Asset | None = None
+              ) -> tuple[Asset, float]:
+    """The pool asset of ``category`` whose extents best fit ``size`` (3,), and its scale.
+
+    Candidates are the category's slots already in the pool on disk (plus ``fallback``); the
+    scale is ``(prod(size) / prod(extents)) ** (1/3)`` (equal volume), clipped to
+    :data:`SCALE_RANGE`; the fit error is the distance of the log extents after scaling.
+    """
+    pool = default_pool()
+    cands = [pool.load(category, s) for s in range(pool.per_category)
+             if pool.path(category, s).is_file()]
+    if fallback is not None:
+        cands.append(fallback)
+    if not cands:
+        cands = [pool.load(category, 0)]
+    size = np.maximum(np.asarray(size, float), 1e-3)
+    best, best_err, best_s = None, np.inf, 1.0
+    for a in cands:
+        e = np.maximum(a.extents, 1e-4)
+        s = float(np.clip(np.cbrt(np.prod(size) / np.prod(e)), *SCALE_RANGE))
+        err = float(np.linalg.norm(np.log(s * e) - np.log(size)))
+        if err < best_err:
+            best, best_err, best_s = a, err, s
+    return best, best_s
+
+
+def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: np.ndarray, *,
+                 seed: int, assets: list[Asset] | None = None,
+                 scales: list[float] | None = None, meta: dict | None = None) -> Scene:
+    """A Scene with the objects at the given (N, 12) poses; relations checked on them.
+
+    With ``assets``/``scales`` the given assets are used as they are; otherwise each object
+    gets its best-fitting pool asset (:func:`fit_asset`).
+    """
+    scene = Scene(pag, int(seed), build_shell(pag.room), meta=dict(meta or {}))
+    R = rotation_from_6d(poses[:, 6:12])
+    for k, (oid, cat) in enumerate(zip(object_ids, categories, strict=True)):
+        if assets is not None:
+            asset, s = assets[k], float(scales[k])
+        else:
+            asset, s = fit_asset(cat, poses[k, 3:6])
+        sup = pag.supporter(oid)
+        scene.objects[oid] = PlacedObject(
+            oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
+            support=None if sup is None else str(sup.parent),
+            fixed=sup is not None and sup.relation in _FIXED)
+    scene.relations = check_relations(scene)
+    return scene
+
+
+def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
+                  options: SampleOptions = SampleOptions(), file: str | None = None) -> Scene:
+    """Generate a scene for ``pag`` with ``run`` (deterministic for a seed).
+
+    Raises InputError (naming ``file`` and the object) for a category the run never saw.
+    """
+    t0 = time.perf_counter()
+    rng = np.random.default_rng([seed, 5])
+    cats = _pick_categories(pag, run, rng, file)
+    ids = list(pag.objects)
+    if not ids:
+        raise InputError(Problem("/objects", "the PAG has no objects", file, "schema"))
+    pool = default_pool()
+    drawn = [pool.get(cats[o], rng) for o in ids]
+    cat_list = [cats[o] for o in ids]
+    rels = pag_relations(pag, {o: i for i, o in enumerate(ids)}, cats)
+    fp = np.array(pag.room.footprint, float)
+    poses = generate_poses(run, cat_list, drawn, rels, fp, pag.room.height, seed=seed,
+                           options=options)
+    t1 = time.perf_counter()
+    scene = layout_scene(pag, ids, cat_list, poses, seed=seed, meta={
+        "generator": "layoutgen", "run": run.name, "run_step": run.step,
+        "cond": run.config.cond if options.cond else "none", "guidance": options.guidance,
+        "sample_steps": options.steps})
+    scene.timings["generate"] = round(t1 - t0, 4)
+    scene.timings["assets"] = round(time.perf_counter() - t1, 4)
+    return scene

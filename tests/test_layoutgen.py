@@ -1,0 +1,254 @@
+"""Layout diffusion: data, encoders, network, training (determinism, resume, loss), sampling
+into a scene folder, evaluation metrics and the CLI's input mistakes.
+
+One tiny dataset (five solved and settled scenes of four objects) is built per module; the
+networks are the ``tiny`` preset trained for a few dozen steps, so the file stays fast.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+torch = pytest.importorskip("torch")  # the ml extra; make test installs it
+
+from parse3d.cli import main  # noqa: E402
+from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths  # noqa: E402
+from parse3d.layoutgen import data, encoders, pose  # noqa: E402
+from parse3d.layoutgen.evaluate import collisions, evaluate, layout_metrics, outside_room  # noqa: E402
+from parse3d.layoutgen.sample import SampleOptions, layout_scene, sample_layout  # noqa: E402
+from parse3d.layoutgen.train import TrainConfig, load_run, train  # noqa: E402
+from parse3d.pag.model import PAG  # noqa: E402
+from parse3d.scene.io import read_scene, scene_schema  # noqa: E402
+
+
+def _pag(name, relations, extra=()):
+    objects = [("desk", "desk"), ("mug", "mug"), ("book", "book"), ("chair", "office_chair"),
+               *extra]
+    return {"format": "pag/1", "name": name,
+            "room": {"type": "study", "footprint": [[0, 0], [3.5, 0], [3.5, 3], [0, 3]],
+                     "height": 2.6},
+            "objects": [{"id": i, "category": c} for i, c in objects], "relations": relations}
+
+
+def _on(child, parent):
+    return {"relation": "ON", "child": child, "parent": parent}
+
+
+BASE = [_on("desk", "floor"), _on("mug", "desk:tabletop"), _on("book", "desk:tabletop"),
+        _on("chair", "floor")]
+PAGS = [
+    _pag("desk-wall", BASE + [{"relation": "AGAINST", "child": "desk:tabletop@back",
+                               "parent": "wall_0"}]),
+    _pag("desk-chair", BASE + [{"relation": "NEAR", "child": "chair", "parent": "desk",
+                                "distance": 1.2},
+                               {"relation": "TOWARD", "child": "chair", "parent": "desk"}]),
+]
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _one_thread():
+    n = torch.get_num_threads()
+    torch.set_num_threads(1)
+    yield
+    torch.set_num_threads(n)
+
+
+@pytest.fixture(scope="module")
+def dataset(tmp_path_factory) -> Path:
+    pags = tmp_path_factory.mktemp("layout-pags")
+    for p in PAGS:
+        (pags / f"{p['name']}.json").write_text(json.dumps(p))
+    out = tmp_path_factory.mktemp("layout-ds") / "ds"
+    rep = build_dataset(BuildConfig(scenes=5, seed=3, source=resolve_pag_paths([pags])), out,
+                        workers=1)
+    assert rep.ok == 5
+    return out
+
+
+@pytest.fixture(scope="module")
+def run_dir(tmp_path_factory, dataset) -> Path:
+    out = tmp_path_factory.mktemp("layout-run") / "pag"
+    train(dataset, out, TrainConfig(steps=40, preset="tiny", relations="learned",
+                                    checkpoint_every=20, noise_draws=8))
+    return out
+
+
+def test_pose_roundtrip():
+    rng = np.random.default_rng(0)
+    q, _ = np.linalg.qr(rng.normal(size=(5, 3, 3)))
+    R = q * np.sign(np.linalg.det(q))[:, None, None]
+    assert np.allclose(pose.rotation_from_6d(pose.rotation_to_6d(R)), R, atol=1e-9)
+    fp = np.array([[0, 0], [4, 0], [4, 3], [0, 3]], float)
+    p = np.c_[rng.uniform(0, 2.5, (5, 3)), rng.uniform(0.1, 1.5, (5, 3)), pose.rotation_to_6d(R)]
+    st = pose.PoseStats.fit([p])
+    x = pose.normalise_poses(p, fp, 2.5, st)
+    assert np.abs(x[:, :3]).max() <= 1.0 + 1e-6 and x.dtype == np.float32
+    assert np.allclose(pose.denormalise_poses(x, fp, 2.5, st), p, atol=1e-5)
+
+
+def test_dataset_graphs_and_split(dataset):
+    scenes = data.load_dataset(dataset)
+    assert len(scenes) == 5
+    s = scenes[0]
+    assert s.poses.shape == (4, 12) and s.categories[0] == "desk"
+    # the settled pose of the desk, and its size is the scaled asset extents
+    doc = json.loads((s.path / "scene.json").read_text())
+    desk = next(o for o in doc["objects"] if o["id"] == "desk")
+    assert np.allclose(s.poses[0, :3], desk["settled_pose"]["position"])
+    assert np.allclose(s.poses[0, 3:6], desk["scale"] * s.assets[0].extents)
+    kinds = {(r.relation, r.parent_category) for r in s.relations}
+    assert ("ON", "desk") in kinds and ("ON", "floor") in kinds
+    enc = encoders.ShapeDescriptor(["book", "desk", "mug", "office_chair"])
+    g = data.graph_arrays(s.categories, s.assets, s.relations, s.footprint, s.height,
+                          shape_encoder=enc, relation_encoder=encoders.TokenRelationEncoder(),
+                          stats=pose.PoseStats.fit([s.poses]), poses=s.poses)
+    assert g.shape.shape == (4, 1, enc.dim) and g.x0.shape == (4, 12)
+    assert g.rel_vec.shape == (len(s.relations), encoders.TokenRelationEncoder().dim)
+    assert g.room_geo[0, 0] == 1.0  # the desk stands on the floor
+    split = data.split_scenes([x.scene_id for x in scenes], np.random.default_rng(1))
+    ids = split["train"] + split["val"] + split["test"]
+    assert sorted(ids) == sorted(x.scene_id for x in scenes) and len(split["test"]) == 1
+
+
+def test_text_relation_encoder_caches(tmp_path):
+    r = encoders.RelationSpec(0, 1, "ON", "mug", "desk", None, "tabletop", None, None)
+    near = encoders.RelationSpec(0, 1, "NEAR", "chair", "desk")
+    cache = tmp_path / "rel.npz"
+    v = encoders.TextRelationEncoder(cache).encode([r, near, r])
+    assert v.shape == (3, 384) and np.allclose(np.linalg.norm(v, axis=1), 1, atol=1e-4)
+    assert np.allclose(v[0], v[2]) and not np.allclose(v[0], v[1])
+    assert encoders.relation_phrase(r) == "mug on desk tabletop"
+    again = encoders.TextRelationEncoder(cache)  # from the cache, no model loaded
+    assert np.allclose(again.encode([near]), v[1:2], atol=1e-6) and again._model is None
+
+
+def test_model_shapes_and_condition_matters():
+    from parse3d.layoutgen.model import PRESETS, LayoutDenoiser, ModelConfig
+
+    torch.manual_seed(0)
+    m = LayoutDenoiser(ModelConfig(**PRESETS["tiny"], shape_dim=7, rel_dim=5))
+    g = {"shape": torch.randn(3, 1, 7), "rel_vec": torch.randn(2, 5),
+         "rel_child": torch.tensor([1, 2]), "rel_parent": torch.tensor([0, -1]),
+         "room_geo": torch.zeros(3, 8), "room_ctx": torch.ones(4)}
+    x, t = torch.randn(4, 3, 12), torch.tensor([0, 10, 500, 999])
+    for p in m.parameters():  # zero-initialised modulations would hide the condition
+        torch.nn.init.normal_(p, std=0.2)
+    y1 = m(x, t, g, torch.ones(4))
+    y0 = m(x, t, g, torch.zeros(4))
+    assert y1.shape == (4, 3, 12) and torch.isfinite(y1).all()
+    assert not torch.allclose(y1, y0)
+
+
+def test_training_is_deterministic_resumes_and_learns(dataset, run_dir, tmp_path):
+    cfg = TrainConfig(steps=6, preset="tiny", relations="learned", checkpoint_every=3,
+                      noise_draws=8)
+    a = train(dataset, tmp_path / "a", cfg)
+    train(dataset, tmp_path / "b", TrainConfig(**{**cfg.__dict__, "steps": 3}))
+    b2 = train(dataset, tmp_path / "b", cfg)  # resumes at step 3
+    assert b2.start_step == 3 and a.losses == b2.losses
+    wa = torch.load(tmp_path / "a" / "checkpoint.pt", weights_only=False)["ema"]
+    wb = torch.load(tmp_path / "b" / "checkpoint.pt", weights_only=False)["ema"]
+    assert all(torch.equal(x, y) for x, y in zip(wa["shadow_params"], wb["shadow_params"], strict=True))
+    c = train(dataset, tmp_path / "c", TrainConfig(**{**cfg.__dict__, "seed": 1}))
+    assert c.losses != a.losses
+    # the run trained for 40 steps: the loss fell, files are where the docs say
+    ck = torch.load(run_dir / "checkpoint.pt", weights_only=False)
+    losses = ck["losses"]
+    assert len(losses) == 40 and np.mean(losses[-10:]) < 0.8 * np.mean(losses[:5])
+    for f in ("config.json", "split.json", "stats.json", "loss.png", "losses.csv"):
+        assert (run_dir / f).is_file(), f
+    assert len(ck["val_losses"]) == 2
+
+
+def test_sample_writes_a_scene(run_dir, tmp_path):
+    import jsonschema
+
+    run = load_run(run_dir)
+    pag = PAG.from_dict(PAGS[1])
+    s1 = sample_layout(run, pag, seed=4, options=SampleOptions(steps=10))
+    s2 = sample_layout(run, pag, seed=4, options=SampleOptions(steps=10))
+    assert [o.position.tolist() for o in s1.objects.values()] == \
+        [o.position.tolist() for o in s2.objects.values()]
+    out = tmp_path / "gen"
+    main_rc = _rc(["layout", "sample", str(run_dir), "--pag", str(_write(tmp_path, PAGS[1])),
+                   "--out", str(out), "--sample-steps", "10", "--seed", "4"])
+    assert main_rc == 0
+    doc = json.loads((out / "scene.json").read_text())
+    jsonschema.validate(doc, scene_schema())
+    sc = read_scene(out)
+    assert set(sc.objects) == {"desk", "mug", "book", "chair"}
+    assert (out / "scene.glb").stat().st_size > 1000
+    for o in sc.objects.values():
+        assert o.category == pag.objects[o.id].category and 0.25 <= o.scale <= 4.0
+    assert np.allclose(sc.objects["desk"].position, s1.objects["desk"].position, atol=1e-5)
+
+
+def test_metrics_see_collisions_and_the_room(dataset):
+    ls = data.load_dataset(dataset)[0]
+    pag = PAG.from_dict(json.loads((ls.path / "scene.json").read_text())["pag"])
+    good = layout_scene(pag, ls.object_ids, ls.categories, ls.poses, seed=0, assets=ls.assets,
+                        scales=list(ls.scales))
+    assert collisions(good) == [] and outside_room(good) == []
+    m = layout_metrics(good, physics=True)
+    assert m.collision_rate == 0 and m.support_rate == 1.0 and m.relations == 1.0
+    assert m.displacement < 0.02 and m.object_contacts >= 2
+    bad_poses = ls.poses.copy()
+    bad_poses[3, :3] = bad_poses[0, :3]  # the chair inside the desk
+    bad_poses[1, :2] = [-1.0, -1.0]  # the mug outside the room
+    bad = layout_scene(pag, ls.object_ids, ls.categories, bad_poses, seed=0, assets=ls.assets,
+                       scales=list(ls.scales))
+    assert ("desk", "chair") in {(a, b) for a, b, _ in collisions(bad)}
+    assert outside_room(bad) == ["mug"]
+    mb = layout_metrics(bad, physics=False)
+    assert mb.collision_rate == 0.5 and mb.outside == 0.25 and mb.support_rate < 1.0
+
+
+def test_eval_rows(run_dir, dataset, tmp_path):
+    run = load_run(run_dir)
+    files = sorted((dataset / "scenes").glob("*/scene.json"))[:1]
+    res = evaluate([run], files, seeds=2, physics=False, sample_steps=5, previews=0)
+    names = [r.name for r in res.rows]
+    assert names[:2] == ["solver (dataset poses)", "random poses"]
+    assert any(n.startswith("PAG-conditioned") for n in names)
+    assert any("condition dropped" in n for n in names)
+    solver = res.rows[0]
+    assert solver.mean_std("collision_rate") == (0.0, 0.0)
+    assert len(res.rows[1].per_seed) == 2
+    assert "| solver (dataset poses) |" in res.markdown()
+
+
+def _write(folder: Path, doc: dict) -> Path:
+    p = folder / f"{doc['name']}.json"
+    p.write_text(json.dumps(doc))
+    return p
+
+
+def _rc(argv) -> int:
+    try:
+        main(argv)
+    except SystemExit as e:
+        return int(e.code or 0)
+    return 0
+
+
+def test_cli_input_mistakes(run_dir, tmp_path, capsys):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert _rc(["layout", "train", str(empty), "--out", str(tmp_path / "r")]) == 2
+    assert "no scenes here" in capsys.readouterr().err
+    odd = _pag("odd", BASE, extra=[("tub", "bathtub")])
+    odd["relations"] = BASE + [_on("tub", "floor")]
+    assert _rc(["layout", "sample", str(run_dir), "--pag", str(_write(tmp_path, odd)),
+                "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert "/objects/4/category" in err and "'bathtub' never seen in training" in err
+    assert not (tmp_path / "o").exists()
+    assert _rc(["layout", "sample", str(tmp_path / "nope"), "--pag",
+                str(_write(tmp_path, PAGS[0])), "--out", str(tmp_path / "o")]) == 2
+    assert "no checkpoint.pt here" in capsys.readouterr().err
+    assert _rc(["layout", "train", str(empty), "--out", str(tmp_path / "r"), "--cond", "x"]) == 2
+    assert "--cond" in capsys.readouterr().err
