@@ -28,7 +28,7 @@ from .scene.model import Repair, Scene
 from .solver import SolverConfig, solve
 from .solver.search import mark_unmet, replace_objects, support_descendants
 
-__all__ = ["PipelineOptions", "run_pipeline", "write_outputs", "unstable_objects",
+__all__ = ["PipelineOptions", "run_pipeline", "settle_and_repair", "write_outputs", "unstable_objects",
            "UNSTABLE_FLAGS"]
 
 #: Physics flags that make an object unstable (set by settling).
