@@ -215,12 +215,16 @@ def test_usd_stage_has_bodies_colliders_and_metadata(exported, room):
     assert sorted(p.GetAttribute("parse3d:objectId").Get() for p in objects) == \
         sorted(o.id for o in scene.placed)
     bodies = [p for p in prims if p.HasAPI(UsdPhysics.RigidBodyAPI)]
-    assert len(bodies) == len(scene.placed)  # the example rooms have no articulations
+    # one body per object, and one more per moving part (doors, drawers; mounts ride along)
+    assert len(bodies) == sum(1 + sum(not j.is_mount for j in o.asset.joints)
+                              for o in scene.placed)
     rec = walk_scene(scene)
     want = {o.id: o.mass for o in rec.objects}
-    for b in bodies:
-        assert UsdPhysics.MassAPI(b).GetMassAttr().Get() == pytest.approx(
-            want[b.GetAttribute("parse3d:objectId").Get()], rel=1e-5)
+    got: dict[str, float] = {}
+    for b in bodies:  # /World/Objects/<id>[/<moving part link>]: an object's links share its mass
+        oid = b.GetPath().pathString.split("/")[3]
+        got[oid] = got.get(oid, 0.0) + UsdPhysics.MassAPI(b).GetMassAttr().Get()
+    assert got == pytest.approx(want, rel=1e-5)
     colliders = [p for p in prims if p.HasAPI(UsdPhysics.CollisionAPI)]
     pieces = sum(len(p.pieces) for o in rec.objects for p in o.parts)
     assert len(colliders) == pieces + sum(len(s.pieces) for s in rec.shell)

@@ -15,6 +15,7 @@ from typer.testing import CliRunner  # noqa: E402
 from parse3d.assets import registry  # noqa: E402
 from parse3d.cli import app as cli_app  # noqa: E402
 from parse3d.pag import validate_data  # noqa: E402
+from parse3d.scene.io import SCENE_FORMAT  # noqa: E402
 from parse3d.web import MAX_BODY_BYTES, create_app  # noqa: E402
 
 ROOM = {"type": "study", "footprint": [[0, 0], [3, 0], [3, 2.5], [0, 2.5]], "height": 2.6}
@@ -255,7 +256,7 @@ def test_solve_streams_stage_progress_and_serves_the_scene(client, workdir):
     names = {n["name"] for n in glb_json(glb.content)["nodes"]}
     assert {"lamp:base", "desk:tabletop", "room:ceiling", "room:floor"} <= names
     scene = client.get(f"/api/jobs/{job}/files/scene.json").json()
-    assert scene["format"] == "parse3d-scene/1" and scene["seed"] == 2
+    assert scene["format"] == SCENE_FORMAT and scene["seed"] == 2
     assert (workdir / "out" / "corner-2" / "contacts.json").is_file()
     assert client.get(f"/api/jobs/{job}/files/preview.png").status_code == 404
     # the stream of a finished job replays everything

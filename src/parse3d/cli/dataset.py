@@ -170,6 +170,7 @@ def register(app: typer.Typer) -> None:
             if prog is not None:
                 prog.stop()
         summary = {"out": str(out), "scenes": report.total, "ok": report.ok,
+                   "incomplete": report.incomplete,
                    "failed": report.failed, "timeout": report.timeout,
                    "resumed": report.resumed, "built": report.built,
                    "wall_s": round(report.wall, 2),
@@ -177,7 +178,8 @@ def register(app: typer.Typer) -> None:
         if as_json:
             print_json(summary)
             return
-        console.print(f"[bold]{out}[/]: {report.ok} scenes ok, {report.failed} failed, "
+        console.print(f"[bold]{out}[/]: {report.ok} scenes ok, {report.incomplete} incomplete, "
+                      f"{report.failed} failed, "
                       f"{report.timeout} timed out ({report.resumed} found finished, "
                       f"{report.built} built in {report.wall:.1f} s, "
                       f"{report.scenes_per_hour:,.0f} scenes/h)")

@@ -54,7 +54,7 @@ from .commit import (
     check_out_folder,
 )
 from .executors import make_executor
-from .manifest import write_manifest
+from .manifest import COMMITTED, write_manifest
 from .planning import ScenePlan, plan_scene, scene_folder
 from .sources import (
     PagFileSource,
@@ -116,7 +116,7 @@ class BuildReport:
     Attributes
     ----------
     out : Path
-    total, ok, failed, timeout : int
+    total, ok, failed, timeout, incomplete : int
         Scenes of the dataset by status (all of them, not only this run's).
     resumed : int
         Scenes found finished when the build started.
@@ -134,6 +134,7 @@ class BuildReport:
     resumed: int
     built: int
     wall: float
+    incomplete: int = 0
 
     @property
     def scenes_per_hour(self) -> float:
@@ -227,7 +228,7 @@ def _build_locked(config: BuildConfig, config_run: BuildConfig, out: Path, sourc
 
     rows = _recover(out, config.scenes, warn=warn)
     if retry_failed:
-        rows = {i: r for i, r in rows.items() if r["status"] == "ok"}
+        rows = {i: r for i, r in rows.items() if r["status"] in COMMITTED}
     resumed = sum(1 for i in rows if i < config.scenes)
     todo = [i for i in range(config.scenes) if i not in rows]
     t0 = time.perf_counter()
@@ -261,5 +262,6 @@ def _build_locked(config: BuildConfig, config_run: BuildConfig, out: Path, sourc
     return BuildReport(out=out, total=len(mine),
                        ok=sum(1 for r in mine if r["status"] == "ok"),
                        failed=sum(1 for r in mine if r["status"] == "failed"),
+                       incomplete=sum(1 for r in mine if r["status"] == "incomplete"),
                        timeout=sum(1 for r in mine if r["status"] == "timeout"),
                        resumed=resumed, built=built, wall=time.perf_counter() - t0)

@@ -14,7 +14,7 @@ from typing import Any
 from ..errors import InputError, Problem
 from ..scene.io import atomic_write_text
 from .build_config import _IDENTITY, BuildConfig
-from .manifest import STATUSES, read_manifest
+from .manifest import COMMITTED, STATUSES, read_manifest
 from .planning import scene_folder
 from .task import SceneOutcome
 
@@ -158,7 +158,7 @@ def _recover(out: Path, scenes: int, *, warn=None) -> dict[int, dict[str, Any]]:
         warn(f"{out / 'manifest.parquet'}: damaged ({type(e).__name__}); rebuilt from the "
              "per-scene records")
         manifest = []
-    manifest_rows = {int(r["index"]): r for r in manifest if r.get("status") != "ok"}
+    manifest_rows = {int(r["index"]): r for r in manifest if r.get("status") not in COMMITTED}
     scenes_dir = out / "scenes"
     foreign = []
     if scenes_dir.is_dir():
@@ -186,7 +186,7 @@ def _recover(out: Path, scenes: int, *, warn=None) -> dict[int, dict[str, Any]]:
             if r is None:
                 warn(f"{f}: damaged; that scene runs again")
                 continue
-            if r["status"] != "ok":
+            if r["status"] not in COMMITTED:
                 rows.setdefault(int(r["index"]), r)
     # failed rows only known from the manifest (their failures/ file is gone) stay finished
     for i, r in manifest_rows.items():
@@ -198,7 +198,7 @@ def _commit(out: Path, outcome: SceneOutcome) -> None:
     """Write a finished scene durably: its folder by rename, or its failure record."""
     rec = outcome.record
     name = scene_folder(rec["index"])
-    if rec["status"] == "ok":
+    if rec["status"] in COMMITTED:
         t = time.perf_counter()
         tmp_name = f".tmp-{name}-{os.getpid()}-{time.monotonic_ns()}"
         _journal(out, tmp_name)

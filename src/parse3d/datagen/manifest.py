@@ -1,8 +1,10 @@
 """The dataset manifest: ``DIR/manifest.parquet``, one row per finished scene.
 
 A *finished* scene is one the builder will not run again: it either committed its folder
-``DIR/scenes/<index:05d>/`` (status ``ok``) or was recorded as ``failed`` (the pipeline raised,
-or no object could be placed) or ``timeout`` (it ran past the time limit). The manifest is an
+``DIR/scenes/<index:05d>/`` (status ``ok``: every object placed and stable after settling and
+repair; or ``incomplete``: some object failed or stayed unstable, the files are written and its
+``scene.json`` says which and why) or was recorded as ``failed`` (the pipeline raised, or no
+object could be placed) or ``timeout`` (it ran past the time limit). The manifest is an
 index, rewritten atomically from the per-scene records: every committed scene folder holds its
 own row as ``record.json``, every failed or timed-out scene has ``DIR/failures/<index:05d>.json``,
 so an interrupted build loses nothing (see :func:`parse3d.datagen.build.build_dataset`).
@@ -18,7 +20,7 @@ room_type, template : string
 seed : int64
     The scene seed given to the template expansion and the solver.
 status : string
-    ``ok``, ``failed`` or ``timeout``.
+    ``ok``, ``incomplete``, ``failed`` or ``timeout``.
 reason : string or null
     Why a scene failed or timed out (the exception, or the stage that ran out of time).
 objects, placed, failed : int32
@@ -32,6 +34,9 @@ contacts, object_contacts : int32 or null
     shell contacts left out).
 relations, relations_held : int32 or null
     PAG relations, and how many hold after settling (after solving when not settled).
+repaired, unrepaired : int32 or null
+    Objects re-placed after settling into a stable pose, and objects still unstable after the
+    last repair round (they count as failed).
 views : int32
     Rendered views besides ``preview.png``.
 categories, assets : list of string
@@ -51,10 +56,12 @@ from typing import Any
 
 from .._files import user_mode
 
-__all__ = ["COLUMNS", "TIMING_COLUMNS", "STATUSES", "manifest_schema", "write_manifest",
+__all__ = ["COLUMNS", "TIMING_COLUMNS", "STATUSES", "COMMITTED", "manifest_schema", "write_manifest",
            "read_manifest"]
 
-STATUSES = ("ok", "failed", "timeout")
+STATUSES = ("ok", "incomplete", "failed", "timeout")
+#: Statuses whose scene folder is written (``DIR/scenes/<index>/``).
+COMMITTED = ("ok", "incomplete")
 TIMING_COLUMNS = ("t_expand", "t_solve", "t_settle", "t_contacts", "t_render", "t_write",
                   "t_total")
 
@@ -65,7 +72,8 @@ def _columns() -> list[tuple[str, str]]:
             ("reason", "string"), ("objects", "int32"), ("placed", "int32"),
             ("failed", "int32"), ("area", "float64"), ("density", "float64"),
             ("contacts", "int32"), ("object_contacts", "int32"), ("relations", "int32"),
-            ("relations_held", "int32"), ("views", "int32"), ("categories", "list<string>"),
+            ("relations_held", "int32"), ("repaired", "int32"), ("unrepaired", "int32"),
+            ("views", "int32"), ("categories", "list<string>"),
             ("assets", "list<string>"), ("parts", "list<int32>")]
     return base + [(t, "float64") for t in TIMING_COLUMNS]
 

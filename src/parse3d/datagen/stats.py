@@ -220,7 +220,7 @@ def dataset_stats(path: str | Path) -> DatasetStats:
     InputError
         When ``path`` holds no ``manifest.parquet``.
     """
-    from .manifest import read_manifest
+    from .manifest import COMMITTED, read_manifest
 
     path = Path(path)
     man = path / "manifest.parquet"
@@ -245,7 +245,7 @@ def dataset_stats(path: str | Path) -> DatasetStats:
                                  str(cfg_file), "schema"))
     status = Counter(r["status"] for r in rows)
     return DatasetStats(name=path.resolve().name, config=config, status=dict(status),
-                        rows=[r for r in rows if r["status"] == "ok"])
+                        rows=[r for r in rows if r["status"] in COMMITTED])
 
 
 # --------------------------------------------------------------------------------------------

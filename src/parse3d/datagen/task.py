@@ -80,6 +80,8 @@ def _scene_stats(scene) -> dict[str, Any]:
         "object_contacts": None if contacts is None else sum(
             1 for c in contacts if not (c.a.startswith("room:") or c.b.startswith("room:"))),
         "relations": len(scene.relations), "relations_held": sum(1 for h in held if h),
+        "repaired": (scene.meta.get("repair") or {}).get("repaired"),
+        "unrepaired": (scene.meta.get("repair") or {}).get("unrepaired"),
         "categories": [o.category for o in placed],
         "assets": [o.asset.asset_id for o in placed],
         "parts": [len(o.asset.parts) for o in placed],
@@ -131,7 +133,10 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         files = {p.relative_to(tmp).as_posix(): p.read_bytes() for p in sorted(tmp.rglob("*"))
                  if p.is_file()}
         stage.enter("done")
-        record["status"] = "ok"
+        record["status"] = "ok" if scene.ok else "incomplete"
+        if not scene.ok:
+            record["reason"] = f"{len(scene.failed)} object(s) failed: " + "; ".join(
+                f"{o.id}: {o.reason}" for o in scene.failed[:3])
         record["scene"] = scene_folder(plan.index)
         return SceneOutcome(_finish(record, stage, wall), files)
     except SceneTimeout:
@@ -168,10 +173,11 @@ def _run_stages(pag, seed: int, config: BuildConfig, stage: _Stage):
     scene = run_pipeline(pag, seed=seed, out=None,
                          options=PipelineOptions(settle=False, preview=False))
     if config.settle and scene.placed:
-        from ..physics import extract_contacts, settle
+        from ..physics import extract_contacts
+        from ..pipeline import settle_and_repair
 
         stage.enter("settle")
-        settle(scene)
+        settle_and_repair(scene)
         scene.timings["settle"] = time.perf_counter() - stage._t
         stage.enter("contacts")
         scene.contacts = extract_contacts(scene)

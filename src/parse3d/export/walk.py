@@ -417,9 +417,13 @@ def _joint_value(j: Joint, stored: dict[str, float], open_ratio: float | None) -
 
 def _links(asset: Asset, values: dict[str, float]) -> tuple[dict[str, str], list[tuple[str, np.ndarray]],
                                                            list[tuple[Joint, str, str]]]:
-    """Part -> link, links (parents first) with their motion, joints with their link pair."""
-    child_of = {j.child_part: j for j in asset.joints}
-    part_link = {p.name: (p.name if p.name in child_of else BASE_LINK) for p in asset.parts}
+    """Part -> link, links (parents first) with their motion, joints with their link pair.
+
+    A mount (a joint with no travel: a handle on a door, a box behind a drawer front) is no
+    joint in the exports: its part rides rigidly on the link of the part it is mounted on.
+    """
+    moved = {j.child_part for j in asset.joints}
+    part_link = {p.name: BASE_LINK for p in asset.parts if p.name not in moved}
     motion: dict[str, np.ndarray] = {BASE_LINK: np.eye(4)}
     order = [BASE_LINK]
     joints = []
@@ -427,18 +431,24 @@ def _links(asset: Asset, values: dict[str, float]) -> tuple[dict[str, str], list
     while pending:
         progressed = False
         for j in list(pending):
-            parent = part_link.get(j.parent_part, BASE_LINK)
-            if parent not in motion:
+            parent = part_link.get(j.parent_part)
+            if parent is None:
                 continue
-            motion[j.child_part] = motion[parent] @ j.transform(values[j.name])
-            order.append(j.child_part)
-            joints.append((j, parent, j.child_part))
+            if j.is_mount:
+                part_link[j.child_part] = parent
+            else:
+                part_link[j.child_part] = j.child_part
+                motion[j.child_part] = motion[parent] @ j.transform(values[j.name])
+                order.append(j.child_part)
+                joints.append((j, parent, j.child_part))
             pending.remove(j)
             progressed = True
         if not progressed:  # a joint loop: the rest stay rigid with the base
             for j in pending:
                 part_link[j.child_part] = BASE_LINK
             break
+    for p in asset.parts:  # a joint naming a part the asset lacks leaves nothing unassigned
+        part_link.setdefault(p.name, BASE_LINK)
     return part_link, [(n, motion[n]) for n in order], joints
 
 

@@ -22,6 +22,7 @@ from ..errors import InputError, Problem
 from ..geometry.frames import quat_to_matrix
 from ..pag.model import PAG
 from ..pag.refs import wall_index
+from ..scene.io import READABLE_FORMATS
 from .encoders import RelationEncoder, RelationSpec, ShapeEncoder
 from .pose import PoseStats, normalise_poses, rotation_to_6d
 
@@ -148,9 +149,9 @@ def load_scene(scene_json: str | Path) -> LayoutScene:
         d = json.loads(f.read_text())
     except (OSError, json.JSONDecodeError) as e:
         raise InputError(Problem("", f"cannot read scene: {e}", str(f), "io")) from None
-    if d.get("format") != "parse3d-scene/1":
-        raise InputError(Problem("/format", f"expected 'parse3d-scene/1', got {d.get('format')!r}",
-                                 str(f), "schema"))
+    if d.get("format") not in READABLE_FORMATS:
+        raise InputError(Problem("/format", f"expected one of {', '.join(READABLE_FORMATS)}, "
+                                            f"got {d.get('format')!r}", str(f), "schema"))
     pag = PAG.from_dict(d["pag"])
     ids, cats, assets, poses, scales = [], [], [], [], []
     for od in d["objects"]:

@@ -92,18 +92,15 @@ def out_folder(workdir: Path, name: str, seed: int) -> Path:
 
 
 def _solve(pag: PAG, seed: int, library, on_object: Callable[[str, str, str | None], None]) -> Scene:
-    """Run the solver. The one place to hook per-object progress.
+    """Run the solver, announcing each object as it is placed or fails.
 
-    ``on_object(object_id, status, reason)`` is called for each object. The solver reports
-    objects only in its result for now, so they are announced when it returns; once the solver
-    takes a per-object progress callback, pass ``on_object`` to it here instead.
+    ``on_object(object_id, status, reason)`` is called from the solver's progress callback;
+    the reasons of failed objects come with the job's ``done`` event.
     """
     from ..solver import solve
 
-    scene = solve(pag, seed=seed, library=library, validate=False)
-    for o in scene.objects.values():
-        on_object(o.id, o.status, o.reason)
-    return scene
+    return solve(pag, seed=seed, library=library, validate=False,
+                 progress=lambda p: on_object(p.object_id, p.status, None))
 
 
 def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> None:
@@ -133,12 +130,13 @@ def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> 
                  placed=len(scene.placed), failed=len(scene.failed))
 
         if job.settle and scene.placed:
-            from ..physics import extract_contacts, settle
+            from ..physics import extract_contacts
+            from ..pipeline import settle_and_repair
 
             stage = "settle"
             job.emit("stage", stage=stage, status="start")
             t = time.perf_counter()
-            settle(scene)
+            settle_and_repair(scene, library=library)
             scene.timings["settle"] = time.perf_counter() - t
             job.emit("stage", stage=stage, status="done", seconds=round(scene.timings["settle"], 4))
             stage = "contacts"
