@@ -300,3 +300,22 @@ def test_cli_search_options_and_time_limit(tmp_path):
     doc = json.loads((tmp_path / "out" / "scene.json").read_text())
     assert doc["meta"]["solver"]["search"] == "greedy"
     assert doc["meta"]["solver"]["search_budget"] == 3
+
+
+def test_cli_prints_progress_lines_for_a_large_pag(tmp_path):
+    import json
+    import subprocess
+    import sys
+
+    pag = PAG("crates", Room("storage", ((0, 0), (12, 0), (12, 10), (0, 10)), 3.0))
+    for i in range(60):
+        pag.add(f"box{i}", "cardboard_box")
+        pag.relate(f"box{i}", "ON", "floor")
+    f = tmp_path / "crates.json"
+    f.write_text(json.dumps(pag.to_dict()))
+    r = subprocess.run([sys.executable, "-m", "parse3d.cli", "solve", str(f), "--no-settle",
+                        "--no-preview", "--out", str(tmp_path / "out")],
+                       cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    lines = [ln for ln in r.stderr.splitlines() if ln.startswith("solving: ")]
+    assert len(lines) == 10 and lines[-1].startswith("solving: 60/60 objects decided")
