@@ -84,8 +84,15 @@ def first_paint(browser, url: str, runs: int) -> tuple[list[float], list[float]]
         page = ctx.new_page()
         page.goto(url + "/")
         page.wait_for_selector("body[data-ready='1']", timeout=60_000)
-        fcp.append(page.evaluate(
-            "performance.getEntriesByName('first-contentful-paint')[0].startTime"))
+        # a paint entry can be missing when headless Chromium composited no frame in time:
+        # wait for the next animation frame, then read the first paint of either kind
+        paint = page.evaluate("""() => new Promise((done) => requestAnimationFrame(() => {
+            const e = performance.getEntriesByName('first-contentful-paint')[0]
+                   || performance.getEntriesByName('first-paint')[0];
+            done(e ? e.startTime : null);
+        }))""")
+        if paint is not None:
+            fcp.append(paint)
         ready.append(page.evaluate("window.designer.readyAt"))
         ctx.close()
     return fcp, ready
