@@ -42,8 +42,10 @@ $(BIN)/python:
 venv: $(BIN)/python
 
 # What the README's documented commands need (solve, settle, render, dataset build), pinned.
+# Everything the README's commands use (exports, the VLM and layout experiments, the designer,
+# Ray); torch is the CPU build pinned in constraints.txt.
 install-main: system venv
-	$(BIN)/pip install -q -c constraints.txt -e ".[physics,render,dataset]"
+	$(BIN)/pip install -q -c constraints.txt -e ".[physics,render,dataset,cluster,check,export,ml,web]"
 
 install-all: system-test venv
 	$(BIN)/pip install -q -c constraints.txt -e ".[all]"
