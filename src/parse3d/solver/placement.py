@@ -324,20 +324,9 @@ def _drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
             continue
         found.append((float(com @ n), t, cand))
     for _, t, cand in sorted(found, key=lambda f: f[0]):
-        checks = []
-        ok = True
-        for e in others:
-            holds, res, detail = check_edge(st.scene, e, cand)
-            if not holds:
-                ok, last = False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
-                break
-            checks.append((holds, res, detail))
-        if not ok:
-            continue
-        body.move(R, t)
-        hit = st.world.collides(body)
-        if hit is not None:
-            last = f"collides with {hit}"
+        checks, why = _relations_and_collisions(st, cand, others, body, R, t)
+        if checks is None:
+            last = why
             continue
         # what it rests on: the object whose drop distance is the contact
         pts = world_points(cand, hull_only=True)
@@ -440,20 +429,9 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
             if not allowed.contains(shapely.Point(com)):
                 last = f"its centre of mass would overhang {under.id}"
                 continue
-            checks = []
-            ok = True
-            for e in others:
-                holds, res, detail = check_edge(st.scene, e, cand)
-                if not holds:
-                    ok, last = False, f"{e.relation} {e.child} -> {e.parent}: {detail}"
-                    break
-                checks.append((holds, res, detail))
-            if not ok:
-                continue
-            body.move(R, t)
-            hit = st.world.collides(body)
-            if hit is not None:
-                last = f"collides with {hit}"
+            checks, why = _relations_and_collisions(st, cand, others, body, R, t)
+            if checks is None:
+                last = why
                 continue
             if is_owner:  # resting in the container: the usual check of the support relation
                 holds, res, detail = check_edge(st.scene, support_edge, cand,
@@ -701,3 +679,19 @@ def resolution(edge: Edge, choice, *, final: bool = False) -> dict | None:
             "parent_element": choice.part if room else None,
             "parent_surface": None if room and final else choice.surface,
             "internal": edge.relation == "IN" and not (room and final)}
+
+
+def _relations_and_collisions(st, cand, others, body, R, t) -> tuple[list | None, str]:
+    """Check a piled candidate pose against the object's other relations, then for collisions
+    (``body`` is moved to the pose). Returns ``(checks, "")``, or ``(None, why it failed)``."""
+    checks = []
+    for e in others:
+        holds, res, detail = check_edge(st.scene, e, cand)
+        if not holds:
+            return None, f"{e.relation} {e.child} -> {e.parent}: {detail}"
+        checks.append((holds, res, detail))
+    body.move(R, t)
+    hit = st.world.collides(body)
+    if hit is not None:
+        return None, f"collides with {hit}"
+    return checks, ""
