@@ -488,7 +488,7 @@ def test_dataset_formats_are_written_and_part_of_its_identity(tmp_path, capsys):
     assert report.ok == 1
     scene = out / "scenes" / "00000"
     assert (scene / "scene.glb").is_file() and (scene / "scene.xml").is_file()
-    assert any((scene / "meshes").glob("*.obj"))
+    assert any((scene / "meshes").glob("*.stl"))
     assert json.loads((out / "dataset.json").read_text())["formats"] == ["glb", "mjcf"]
     other = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb",))
     with pytest.raises(InputError, match="formats"):

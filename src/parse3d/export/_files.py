@@ -2,13 +2,21 @@
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import os
 import re
 from pathlib import Path
 
 import numpy as np
 
-__all__ = ["obj_text", "mtl_text", "mesh_digest", "safe_name", "MeshFiles"]
+from .._files import user_mode
+
+__all__ = ["obj_text", "stl_bytes", "mtl_text", "mesh_digest", "safe_name", "material_name",
+           "MeshFiles", "MATERIAL_LIBRARY", "remove_stale", "write_file"]
+
+#: File name of the shared material library of a mesh folder (visual OBJ files use it).
+MATERIAL_LIBRARY = "materials.mtl"
 
 
 def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
@@ -18,6 +26,25 @@ def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
     # one %-format over the whole array formats in C, far faster than a Python loop per line
     return (("v %.7g %.7g %.7g\n" * len(v)) % tuple(v.ravel().tolist())
             + ("f %d %d %d\n" * len(f)) % tuple(f.ravel().tolist()))
+
+
+_STL_TRIANGLE = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])
+
+
+def stl_bytes(vertices: np.ndarray, faces: np.ndarray) -> bytes:
+    """A binary STL document of one triangle mesh (float32, metres, outward normals)."""
+    tri = np.asarray(vertices, float)[np.asarray(faces, np.int64)]
+    a, b = tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0]
+    n = np.empty_like(a)  # the cross product, without np.cross's overhead on small arrays
+    n[:, 0] = a[:, 1] * b[:, 2] - a[:, 2] * b[:, 1]
+    n[:, 1] = a[:, 2] * b[:, 0] - a[:, 0] * b[:, 2]
+    n[:, 2] = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+    norm = np.sqrt((n * n).sum(axis=1))[:, None]
+    rows = np.zeros(len(tri), _STL_TRIANGLE)
+    rows["normal"] = n / np.where(norm > 0, norm, 1.0)
+    rows["v"] = tri
+    head = b"parse3d mesh".ljust(80, b" ")
+    return head + np.uint32(len(tri)).tobytes() + rows.tobytes()
 
 
 def mesh_digest(vertices, faces) -> str:
@@ -33,51 +60,113 @@ def safe_name(name: str) -> str:
     return re.sub(r"[^A-Za-z0-9_.-]", "_", name)
 
 
+def material_name(material) -> str:
+    """A name for ``material`` that depends only on its family and colour (``wood_996640ff``),
+    so files written by earlier exports keep naming the right entry of a material library."""
+    rgba = "".join(f"{min(max(int(round(float(c) * 255)), 0), 255):02x}"
+                   for c in material.color)
+    return safe_name(f"{material.name}_{rgba}")
+
+
 def mtl_text(name: str, material) -> str:
-    """A one-material Wavefront MTL document (diffuse colour, opacity) for ``material``."""
+    """One Wavefront MTL entry (diffuse colour, opacity) for ``material``."""
     r, g, b, a = (float(c) for c in material.color)
     return (f"newmtl {name}\nKd {r:.6g} {g:.6g} {b:.6g}\nKa 0 0 0\nKs 0 0 0\n"
             f"d {a:.6g}\nillum 1\n")
 
 
+def write_file(path: str | Path, data: bytes, mode: int | None = None) -> None:
+    """Write ``data`` to ``path`` in place (one open, one write: for the many small files of
+    an export, which are regenerated rather than edited; ``mode`` defaults to the umask's)."""
+    fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_TRUNC,
+                 user_mode() if mode is None else mode)
+    try:
+        os.write(fd, data)
+    finally:
+        os.close(fd)
+
+
 class MeshFiles:
-    """OBJ files under one folder, each written once however often it is referenced."""
+    """Mesh files under one folder, each written once however often it is referenced.
+
+    Geometry-only meshes (collision pieces) are binary STL; meshes with a material are OBJ
+    naming an entry of the folder's shared material library (:data:`MATERIAL_LIBRARY`, written
+    by :meth:`close`). File names carry a hash of the content (``<stem>.<hash>.stl``), so a
+    file already in the folder from an earlier export of the same assets is kept as it is:
+    re-exporting a scene after settling rewrites no mesh.
+    """
 
     def __init__(self, root: Path, folder: str = "meshes") -> None:
         self.root = Path(root)
         self.folder = folder
         self.written: dict[str, Path] = {}
+        self._dir = os.path.join(str(self.root), folder)
         self._by_content: dict[tuple[str, object], str] = {}
         self._any: dict[str, str] = {}
+        self._materials: dict[str, str] = {}
         self._made = False
+        self._mode = user_mode()
 
     def get(self, stem: str, vertices, faces, material=None) -> str:
         """The path of the mesh file relative to ``root`` (written on first request; a mesh
         equal to one already written, with the same material, reuses that file).
 
-        With a ``material`` the OBJ references a ``.mtl`` file beside it carrying its colour.
+        With a ``material`` the file is an OBJ whose colour is in the material library.
         """
         digest = mesh_digest(vertices, faces)
-        key = (digest, None if material is None else material.color)
+        mname = None if material is None else material_name(material)
+        key = (digest, mname)
         if key in self._by_content:
             return self._by_content[key]
         if material is None and digest in self._any:  # geometry only: any copy will do
             return self._any[digest]
-        stem = safe_name(stem)
-        rel = f"{self.folder}/{stem}.obj"
+        tag = hashlib.blake2b(f"{digest}:{mname}".encode(), digest_size=4).hexdigest()
+        if material is None:
+            name = f"{safe_name(stem)}.{tag}.stl"
+            data = stl_bytes(vertices, faces)
+        else:
+            self._materials.setdefault(mname, mtl_text(mname, material))
+            name = f"{safe_name(stem)}.{tag}.obj"
+            data = (f"mtllib {MATERIAL_LIBRARY}\nusemtl {mname}\n"
+                    + obj_text(vertices, faces)).encode()
+        rel = f"{self.folder}/{name}"
         if rel not in self.written:
-            path = self.root / rel
             if not self._made:
-                path.parent.mkdir(parents=True, exist_ok=True)
+                os.makedirs(self._dir, exist_ok=True)
                 self._made = True
-            head = ""
-            if material is not None:
-                mtl = path.with_suffix(".mtl")
-                mtl.write_text(mtl_text(stem, material))
-                self.written[f"{self.folder}/{stem}.mtl"] = mtl
-                head = f"mtllib {stem}.mtl\nusemtl {stem}\n"
-            path.write_text(head + obj_text(vertices, faces))
-            self.written[rel] = path
+            path = os.path.join(self._dir, name)
+            try:
+                same = os.stat(path).st_size == len(data)  # written by an earlier export
+            except FileNotFoundError:
+                same = False
+            if not same:
+                write_file(path, data, self._mode)
+            self.written[rel] = self.root / rel
         self._by_content[key] = rel
         self._any.setdefault(digest, rel)
         return rel
+
+    def close(self) -> list[Path]:
+        """Write the material library (when a mesh has a material); returns every file of
+        this export in the folder."""
+        if self._materials:
+            rel = f"{self.folder}/{MATERIAL_LIBRARY}"
+            write_file(os.path.join(self._dir, MATERIAL_LIBRARY),
+                   "".join(self._materials.values()).encode(), self._mode)
+            self.written[rel] = self.root / rel
+        return list(self.written.values())
+
+
+def remove_stale(root: Path, before: set[str], now: set[str]) -> None:
+    """Delete the files (relative to ``root``) an earlier export wrote and this one did not.
+
+    Only files named by the earlier export's own files are candidates, so nothing else a
+    user keeps in the folder is touched; a name that leaves ``root`` is ignored.
+    """
+    base = Path(root).resolve()
+    for rel in before - now:
+        path = (base / rel).resolve()
+        if base not in path.parents or not path.is_file():
+            continue
+        with contextlib.suppress(OSError):
+            path.unlink()

@@ -21,6 +21,7 @@ Meshes are inline in the spec for :func:`to_mujoco`; :func:`write` puts them as 
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -29,7 +30,7 @@ from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
 from ..scene.model import Scene
-from ._files import MeshFiles, mesh_digest, safe_name
+from ._files import MeshFiles, mesh_digest, remove_stale, safe_name
 from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
 
 __all__ = ["NAME", "FILES", "build_spec", "write", "to_mujoco"]
@@ -57,9 +58,11 @@ class _Meshes:
         self.names: set[str] = set()
         self._by_content: dict[tuple[str, float], str] = {}
 
-    def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0) -> str:
+    def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0, *,
+            inline: bool = False) -> str:
         """The name of the mesh asset (added on first request; an equal mesh at the same scale,
-        such as a box part and its one collision piece, reuses the asset)."""
+        such as a box part and its one collision piece, reuses the asset). ``inline`` keeps
+        it in the spec even when the spec writes mesh files."""
         key = name if abs(scale - 1.0) < 1e-12 else f"{name}@{scale:.9g}"
         if key in self.names:
             return key
@@ -69,7 +72,7 @@ class _Meshes:
         self._by_content[content] = key
         m = self.spec.add_mesh()
         m.name = key
-        if self.files is None:
+        if self.files is None or inline:
             m.uservert = np.asarray(vertices, float).ravel().tolist()
             m.userface = np.asarray(faces, int).ravel().tolist()
         else:
@@ -166,7 +169,8 @@ def _add_object(spec, meshes: _Meshes, rec: SceneRecord, o: ObjectRecord, *,
                 _visual_geom(body, vm, p.key, p.material)
             fr = rec.friction(p.material.name)
             for i, (v, f) in enumerate(p.pieces):
-                cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s)
+                cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s,
+                                inline=True)
                 _collision_geom(body, cm, f"{p.key}:c{i}", o.density, fr)
 
 
@@ -191,6 +195,11 @@ def build_spec(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0
     -------
     mujoco.MjSpec
     """
+    return _build(rec, out=out, timestep=timestep, visual=visual, lock_joints=lock_joints)[0]
+
+
+def _build(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0.002,
+           visual: bool = True, lock_joints: bool = True):
     mujoco = _mujoco()
     spec = mujoco.MjSpec()
     spec.modelname = safe_name(rec.name or "parse3d")
@@ -208,23 +217,38 @@ def build_spec(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0
             vm = meshes.get(s.key, f"room__{s.name}", s.mesh.vertices, s.mesh.faces)
             _visual_geom(spec.worldbody, vm, s.key, s.material)
         for i, (v, f) in enumerate(s.pieces):
-            cm = meshes.get(f"{s.key}:c{i}", f"room__{s.name}_c{i}", v, f)
+            cm = meshes.get(f"{s.key}:c{i}", f"room__{s.name}_c{i}", v, f, inline=True)
             g = _collision_geom(spec.worldbody, cm, f"{s.key}:c{i}", 0.0, fr)
             g.rgba = [0.8, 0.8, 0.8, 0.2]
     for o in rec.objects:
         _add_object(spec, meshes, rec, o, visual=visual, lock_joints=lock_joints)
-    return spec
+    return spec, meshes.files
+
+
+def _mesh_refs(xml: Path) -> set[str]:
+    """Mesh files (relative to the folder) named by an earlier ``scene.xml``."""
+    try:
+        text = xml.read_text(encoding="utf-8", errors="replace")
+    except OSError:
+        return set()
+    return set(re.findall(r'<mesh\b[^>]*\bfile="([^"]+)"', text))
 
 
 def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path]:
-    """Write ``scene.xml`` and ``meshes/*.obj`` into the folder ``out``; returns the paths."""
+    """Write ``scene.xml`` and ``meshes/`` into the folder ``out``; returns the paths.
+
+    Mesh files an earlier ``scene.xml`` in ``out`` named and this one does not are removed.
+    """
     out = Path(out)
-    spec = build_spec(rec, out=out, lock_joints=lock_joints)
+    path = out / "scene.xml"
+    before = _mesh_refs(path)
+    spec, files = _build(rec, out=out, lock_joints=lock_joints)
     spec.modelfiledir = str(out)  # mesh files resolve against the model's folder
     xml = spec.to_xml()
-    path = out / "scene.xml"
     atomic_write_text(path, xml)
-    return [path, *(out / f for f in sorted({m.file for m in spec.meshes if m.file}))]
+    written = files.close()
+    remove_stale(out, before, set(files.written))
+    return [path, *written]
 
 
 def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,

@@ -26,14 +26,16 @@ piece, and its mass with the inertia of a solid box over its pieces.
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
+from .._files import user_mode
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
-from ._files import MeshFiles, safe_name
+from ._files import MeshFiles, remove_stale, safe_name, write_file
 from .walk import ObjectRecord, PartRecord, SceneRecord
 
 __all__ = ["NAME", "FILES", "write", "object_urdf"]
@@ -135,21 +137,45 @@ def _room_urdf(rec: SceneRecord, meshes: MeshFiles) -> str:
             + "</robot>\n")
 
 
+def _previous_files(folder: Path) -> set[str]:
+    """Files (relative to ``folder``) an earlier export there wrote: the documents its
+    ``scene.json`` lists and the meshes they name."""
+    try:
+        rows = json.loads((folder / "scene.json").read_text(encoding="utf-8"))
+        docs = {str(r["urdf"]) for r in rows}
+    except (OSError, ValueError, TypeError, KeyError):
+        return set()
+    found = set(docs)
+    for d in docs:
+        try:
+            text = (folder / d).read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        found.update(re.findall(r'<mesh\b[^>]*\bfilename="([^"]+)"', text))
+    return found
+
+
 def write(rec: SceneRecord, out: Path) -> list[Path]:
     """Write ``urdf/<object_id>.urdf``, ``urdf/room.urdf``, ``urdf/meshes/`` and
-    ``urdf/scene.json`` into the folder ``out``; returns the paths written."""
+    ``urdf/scene.json`` into the folder ``out``; returns the paths written.
+
+    Files of an earlier URDF export in ``out`` that this one no longer uses (the document of
+    an object gone from the scene, meshes no part references) are removed.
+    """
     folder = Path(out) / "urdf"
     folder.mkdir(parents=True, exist_ok=True)
+    before = _previous_files(folder)
     meshes = MeshFiles(folder)
     written, rows = [], []
     taken: set[str] = set()
+    mode = user_mode()
     for o in rec.objects:
         name = safe_name(o.id)
         while name in taken or name == "room":
             name += "_"
         taken.add(name)
         path = folder / f"{name}.urdf"
-        atomic_write_text(path, object_urdf(o, meshes))
+        write_file(path, object_urdf(o, meshes).encode(), mode)
         written.append(path)
         rows.append({"id": o.id, "urdf": path.name,
                      "position": [round(float(x), 7) for x in o.position],
@@ -160,10 +186,12 @@ def write(rec: SceneRecord, out: Path) -> list[Path]:
                                 for j in o.joints}})
     if rec.shell:
         path = folder / "room.urdf"
-        atomic_write_text(path, _room_urdf(rec, meshes))
+        write_file(path, _room_urdf(rec, meshes).encode(), mode)
         written.append(path)
         rows.append({"id": "room", "urdf": "room.urdf", "position": [0.0, 0.0, 0.0],
                      "quaternion": [1.0, 0.0, 0.0, 0.0], "fixed": True, "joints": {}})
+    mesh_files = meshes.close()
     index = folder / "scene.json"
     atomic_write_text(index, json.dumps(rows, indent=1) + "\n")
-    return [index, *written, *meshes.written.values()]
+    remove_stale(folder, before, {p.name for p in written} | set(meshes.written))
+    return [index, *written, *mesh_files]

@@ -35,7 +35,7 @@ from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from .walk import ObjectRecord, SceneRecord
 
-__all__ = ["NAME", "FILES", "write", "build_stage"]
+__all__ = ["NAME", "FILES", "write", "build_stage", "build_layer"]
 
 NAME = "usd"
 FILES = ("scene.usd",)
@@ -77,99 +77,159 @@ def _quat_to_x(axis: np.ndarray) -> np.ndarray:
 
 
 class _Writer:
-    def __init__(self, stage, rec: SceneRecord, lock_joints: bool) -> None:
+    """Authors the stage's root layer at the Sdf level (prim and property specs in one change
+    block), which is many times faster than defining prims through the Usd API one by one."""
+
+    def __init__(self, layer, rec: SceneRecord, lock_joints: bool) -> None:
         (self.Gf, self.Sdf, self.Usd, self.UsdGeom, self.UsdPhysics, self.UsdShade,
          self.Vt) = _pxr()
-        self.stage = stage
+        self.layer = layer
         self.rec = rec
         self.lock = lock_joints
-        self.looks: dict[tuple, object] = {}
-        self.physics_materials: dict[float, object] = {}
+        self.T = self.Sdf.ValueTypeNames
+        self.looks: dict[tuple, str] = {}
+        self.physics_materials: dict[float, str] = {}
+        self.proto_roots: dict[str, str] = {}
         self.protos: dict[tuple[str, str], str] = {}
         self.proto_names: set[str] = set()
 
+    # -- specs ----------------------------------------------------------------------------
+    def prim(self, path: str, type_name: str = "", *, api: tuple[str, ...] = (),
+             specifier=None):
+        """A ``def`` prim spec at ``path`` (its parent must exist)."""
+        Sdf = self.Sdf
+        parent_path, _, name = path.rpartition("/")
+        parent = self.layer.GetPrimAtPath(parent_path or "/") if parent_path else \
+            self.layer.pseudoRoot
+        spec = Sdf.PrimSpec(parent, name, specifier or Sdf.SpecifierDef, type_name)
+        if api:
+            spec.SetInfo("apiSchemas", Sdf.TokenListOp.Create(prependedItems=list(api)))
+        return spec
+
+    def attr(self, spec, name: str, type_name, value, *, uniform: bool = False,
+             custom: bool = False):
+        Sdf = self.Sdf
+        a = Sdf.AttributeSpec(spec, name, type_name,
+                              Sdf.VariabilityUniform if uniform else Sdf.VariabilityVarying,
+                              custom)
+        if value is not None:
+            a.default = value
+        return a
+
+    def rel(self, spec, name: str, *targets: str):
+        r = self.Sdf.RelationshipSpec(spec, name, False)
+        r.targetPathList.explicitItems = [self.Sdf.Path(t) for t in targets]
+        return r
+
+    def _vec3f(self, v) -> object:
+        return self.Gf.Vec3f(*[float(c) for c in v])
+
+    def _quatf(self, q) -> object:
+        return self.Gf.Quatf(float(q[0]), float(q[1]), float(q[2]), float(q[3]))
+
     # -- geometry -------------------------------------------------------------------------
-    def _mesh(self, path: str, vertices: np.ndarray, faces: np.ndarray):
-        UsdGeom, Vt = self.UsdGeom, self.Vt
-        m = UsdGeom.Mesh.Define(self.stage, path)
+    def _mesh(self, path: str, vertices: np.ndarray, faces: np.ndarray, *, api=()):
+        Vt, T = self.Vt, self.T
+        m = self.prim(path, "Mesh", api=api)
         v = np.ascontiguousarray(vertices, np.float32)
-        m.CreatePointsAttr(Vt.Vec3fArray.FromNumpy(v))
         f = np.ascontiguousarray(faces, np.int32)
-        m.CreateFaceVertexCountsAttr(Vt.IntArray.FromNumpy(np.full(len(f), 3, np.int32)))
-        m.CreateFaceVertexIndicesAttr(Vt.IntArray.FromNumpy(f.ravel()))
-        m.CreateExtentAttr(Vt.Vec3fArray.FromNumpy(np.stack([v.min(0), v.max(0)])))
-        m.CreateSubdivisionSchemeAttr("none")
+        self.attr(m, "points", T.Point3fArray, Vt.Vec3fArray.FromNumpy(v))
+        self.attr(m, "faceVertexCounts", T.IntArray,
+                  Vt.IntArray.FromNumpy(np.full(len(f), 3, np.int32)))
+        self.attr(m, "faceVertexIndices", T.IntArray, Vt.IntArray.FromNumpy(f.ravel()))
+        self.attr(m, "extent", T.Float3Array,
+                  Vt.Vec3fArray.FromNumpy(np.stack([v.min(0), v.max(0)])))
+        self.attr(m, "subdivisionScheme", T.Token, "none", uniform=True)
         return m
 
-    def _look(self, mat):
+    def _look(self, mat) -> str:
         key = (tuple(round(float(c), 5) for c in mat.color), round(float(mat.roughness), 5),
                round(float(mat.metallic), 5), mat.name)
         if key not in self.looks:
-            Sdf, UsdShade, Gf = self.Sdf, self.UsdShade, self.Gf
-            path = f"/World/Looks/{mat.name}_{len(self.looks)}"
-            material = UsdShade.Material.Define(self.stage, path)
-            shader = UsdShade.Shader.Define(self.stage, path + "/PreviewSurface")
-            shader.CreateIdAttr("UsdPreviewSurface")
-            shader.CreateInput("diffuseColor", Sdf.ValueTypeNames.Color3f).Set(Gf.Vec3f(*key[0][:3]))
-            shader.CreateInput("roughness", Sdf.ValueTypeNames.Float).Set(key[1])
-            shader.CreateInput("metallic", Sdf.ValueTypeNames.Float).Set(key[2])
-            shader.CreateInput("opacity", Sdf.ValueTypeNames.Float).Set(key[0][3])
-            material.CreateSurfaceOutput().ConnectToSource(shader.ConnectableAPI(), "surface")
-            self.looks[key] = material
+            T = self.T
+            if not self.looks:
+                self.prim("/World/Looks")
+            path = f"/World/Looks/{_ident(mat.name, set())}_{len(self.looks)}"
+            material = self.prim(path, "Material")
+            shader = self.prim(path + "/PreviewSurface", "Shader")
+            self.attr(shader, "info:id", T.Token, "UsdPreviewSurface", uniform=True)
+            self.attr(shader, "inputs:diffuseColor", T.Color3f, self._vec3f(key[0][:3]))
+            self.attr(shader, "inputs:metallic", T.Float, key[2])
+            self.attr(shader, "inputs:opacity", T.Float, key[0][3])
+            self.attr(shader, "inputs:roughness", T.Float, key[1])
+            self.attr(shader, "outputs:surface", T.Token, None)
+            out = self.attr(material, "outputs:surface", T.Token, None)
+            out.connectionPathList.explicitItems = [
+                self.Sdf.Path(path + "/PreviewSurface.outputs:surface")]
+            self.looks[key] = path
         return self.looks[key]
 
     def _visual(self, path: str, vertices, faces, mat) -> None:
-        m = self._mesh(path, vertices, faces)
-        m.CreateDisplayColorAttr([self.Gf.Vec3f(*[float(c) for c in mat.color[:3]])])
+        T, Vt = self.T, self.Vt
+        m = self._mesh(path, vertices, faces, api=("MaterialBindingAPI",))
+        self.attr(m, "primvars:displayColor", T.Color3fArray,
+                  Vt.Vec3fArray([self._vec3f(mat.color[:3])]))
         if mat.color[3] < 1:
-            m.CreateDisplayOpacityAttr([float(mat.color[3])])
-        self.UsdShade.MaterialBindingAPI.Apply(m.GetPrim()).Bind(self._look(mat))
+            self.attr(m, "primvars:displayOpacity", T.FloatArray,
+                      Vt.FloatArray([float(mat.color[3])]))
+        self.rel(m, "material:binding", self._look(mat))
 
-    def _physics_material(self, friction: float):
+    def _physics_material(self, friction: float) -> str:
         key = round(float(friction), 6)
         if key not in self.physics_materials:
+            if not self.physics_materials:
+                self.prim("/World/PhysicsMaterials")
             path = f"/World/PhysicsMaterials/friction_{len(self.physics_materials)}"
-            mat = self.UsdShade.Material.Define(self.stage, path)
-            api = self.UsdPhysics.MaterialAPI.Apply(mat.GetPrim())
-            api.CreateStaticFrictionAttr(key)
-            api.CreateDynamicFrictionAttr(key)
-            self.physics_materials[key] = mat
+            mat = self.prim(path, "Material", api=("PhysicsMaterialAPI",))
+            self.attr(mat, "physics:dynamicFriction", self.T.Float, key)
+            self.attr(mat, "physics:staticFriction", self.T.Float, key)
+            self.physics_materials[key] = path
         return self.physics_materials[key]
 
     def _colliders(self, scope: str, pieces, friction: float | None = None) -> None:
-        UsdGeom, UsdPhysics = self.UsdGeom, self.UsdPhysics
-        sc = UsdGeom.Scope.Define(self.stage, scope)
+        T = self.T
+        sc = self.prim(scope, "Scope",
+                       api=("MaterialBindingAPI",) if friction is not None else ())
         if friction is not None:
-            self.UsdShade.MaterialBindingAPI.Apply(sc.GetPrim()).Bind(
-                self._physics_material(friction), self.UsdShade.Tokens.weakerThanDescendants,
-                "physics")
+            r = self.rel(sc, "material:binding:physics", self._physics_material(friction))
+            r.SetInfo("bindMaterialAs", "weakerThanDescendants")
         for i, (v, f) in enumerate(pieces):
-            m = self._mesh(f"{scope}/piece_{i}", v, f)
-            m.CreatePurposeAttr(UsdGeom.Tokens.guide)
-            UsdPhysics.CollisionAPI.Apply(m.GetPrim())
-            UsdPhysics.MeshCollisionAPI.Apply(m.GetPrim()).CreateApproximationAttr("convexHull")
+            m = self._mesh(f"{scope}/piece_{i}", v, f,
+                           api=("PhysicsCollisionAPI", "PhysicsMeshCollisionAPI"))
+            self.attr(m, "physics:approximation", T.Token, "convexHull", uniform=True)
+            self.attr(m, "purpose", T.Token, "guide", uniform=True)
 
-    def _attrs(self, prim, **values: str) -> None:
+    def _attrs(self, spec, **values: str) -> None:
         for k, v in values.items():
-            prim.CreateAttribute(f"parse3d:{k}", self.Sdf.ValueTypeNames.String, custom=True).Set(v)
+            self.attr(spec, f"parse3d:{k}", self.T.String, v, custom=True)
 
-    def _xform(self, path: str, T: np.ndarray | None = None, scale: float = 1.0):
-        x = self.UsdGeom.Xform.Define(self.stage, path)
+    def _xform(self, path: str, T: np.ndarray | None = None, scale: float = 1.0, *, api=()):
+        x = self.prim(path, "Xform", api=api)
         if T is not None:
             q = matrix_to_quat(T[:3, :3] / scale)
-            x.AddTranslateOp().Set(self.Gf.Vec3d(*[float(c) for c in T[:3, 3]]))
-            x.AddOrientOp().Set(self.Gf.Quatf(float(q[0]), float(q[1]), float(q[2]), float(q[3])))
+            order = ["xformOp:translate", "xformOp:orient"]
+            self.attr(x, "xformOp:translate", self.T.Double3,
+                      self.Gf.Vec3d(*[float(c) for c in T[:3, 3]]))
+            self.attr(x, "xformOp:orient", self.T.Quatf, self._quatf(q))
             if abs(scale - 1.0) > 1e-12:
-                x.AddScaleOp().Set(self.Gf.Vec3f(scale, scale, scale))
+                self.attr(x, "xformOp:scale", self.T.Float3,
+                          self.Gf.Vec3f(scale, scale, scale))
+                order.append("xformOp:scale")
+            self.attr(x, "xformOpOrder", self.T.TokenArray, self.Vt.TokenArray(order),
+                      uniform=True)
         return x
 
     # -- prototypes -----------------------------------------------------------------------
     def _prototype(self, o: ObjectRecord, part) -> str:
         key = (o.asset_id, part.name)
         if key not in self.protos:
-            root = "/Prototypes/" + _ident(o.asset_id, self.proto_names)
-            if not self.stage.GetPrimAtPath(root):
-                self.stage.CreateClassPrim(root)
+            root = self.proto_roots.get(o.asset_id)
+            if root is None:
+                if not self.proto_roots:
+                    self.prim("/Prototypes")
+                root = "/Prototypes/" + _ident(o.asset_id, self.proto_names)
+                self.prim(root, specifier=self.Sdf.SpecifierClass)
+                self.proto_roots[o.asset_id] = root
             path = f"{root}/{_ident(part.name, set())}"
             self._xform(path)
             self._visual(f"{path}/visual", part.mesh.vertices, part.mesh.faces, part.material)
@@ -179,115 +239,124 @@ class _Writer:
         return self.protos[key]
 
     # -- scene ----------------------------------------------------------------------------
+    def world(self) -> None:
+        T = self.T
+        layer = self.layer
+        layer.defaultPrim = "World"
+        layer.pseudoRoot.SetInfo("upAxis", "Z")
+        layer.pseudoRoot.SetInfo("metersPerUnit", 1.0)
+        layer.pseudoRoot.SetInfo("kilogramsPerUnit", 1.0)
+        world = self._xform("/World")
+        world.customData = {"parse3d": dict(self.rec.meta)}
+        scene = self.prim("/World/PhysicsScene", "PhysicsScene")
+        self.attr(scene, "physics:gravityDirection", T.Vector3f, self.Gf.Vec3f(0, 0, -1))
+        self.attr(scene, "physics:gravityMagnitude", T.Float, 9.81)
+
     def room(self) -> None:
         self._xform("/World/Room")
         taken: set[str] = set()
         for s in self.rec.shell:
             path = f"/World/Room/{_ident(s.name, taken)}"
             x = self._xform(path)
-            self._attrs(x.GetPrim(), objectId="room", partName=s.key,
-                        partLabel=s.name.split("_")[0])
+            self._attrs(x, objectId="room", partName=s.key, partLabel=s.name.split("_")[0])
             self._visual(f"{path}/visual", s.mesh.vertices, s.mesh.faces, s.material)
             # colliders and no body: static
             self._colliders(f"{path}/collision", s.pieces, self.rec.friction("room"))
 
     def obj(self, o: ObjectRecord, taken: set[str]) -> None:
-        UsdPhysics, Gf = self.UsdPhysics, self.Gf
+        T = self.T
         path = f"/World/Objects/{_ident(o.id, taken)}"
-        x = self._xform(path, o.transform, o.scale)
-        self._attrs(x.GetPrim(), objectId=o.id, category=o.category, assetId=o.asset_id,
-                    support=o.support or "")
-        x.GetPrim().CreateAttribute("parse3d:fixed", self.Sdf.ValueTypeNames.Bool,
-                                    custom=True).Set(bool(o.fixed))
         articulated = bool(o.joints)
-        if articulated:
-            UsdPhysics.ArticulationRootAPI.Apply(x.GetPrim())
+        body_api = ("PhysicsRigidBodyAPI", "PhysicsMassAPI")
+        x = self._xform(path, o.transform, o.scale,
+                        api=("PhysicsArticulationRootAPI",) if articulated else body_api)
+        self._attrs(x, objectId=o.id, category=o.category, assetId=o.asset_id,
+                    support=o.support or "")
+        self.attr(x, "parse3d:fixed", T.Bool, bool(o.fixed), custom=True)
         body_path = {}
+        if articulated:
+            self._xform(f"{path}/Links")
         for lk in o.links:
-            bp = f"{path}/Links/{_ident(lk.name, set())}" if articulated else path
             if articulated:
-                if not self.stage.GetPrimAtPath(f"{path}/Links"):
-                    self._xform(f"{path}/Links")
-                self._xform(bp, lk.motion)
-            body = self.stage.GetPrimAtPath(bp)
-            UsdPhysics.RigidBodyAPI.Apply(body)
-            UsdPhysics.MassAPI.Apply(body).CreateMassAttr(float(lk.mass))
+                bp = f"{path}/Links/{_ident(lk.name, set())}"
+                body = self._xform(bp, lk.motion, api=body_api)
+            else:
+                bp, body = path, x
+            self.attr(body, "physics:mass", T.Float, float(lk.mass))
             body_path[lk.name] = bp
             names: set[str] = set()
             for p in lk.parts:
-                pp = f"{bp}/{_ident(p.name, names)}"
-                prim = self.stage.DefinePrim(pp, "Xform")
-                prim.GetReferences().AddInternalReference(self._prototype(o, p))
+                proto = self._prototype(o, p)
+                prim = self.prim(f"{bp}/{_ident(p.name, names)}", "Xform")
+                prim.referenceList.Prepend(self.Sdf.Reference("", proto))
                 self._attrs(prim, objectId=o.id, partName=p.key, partLabel=p.label,
                             category=o.category, assetId=o.asset_id)
+        if o.joints or o.fixed:
+            self.prim(f"{path}/Joints")
         for j in o.joints:
-            typ = UsdPhysics.RevoluteJoint if j.joint.type == "revolute" else UsdPhysics.PrismaticJoint
-            jp = typ.Define(self.stage, f"{path}/Joints/{_ident(j.name, set())}")
-            jp.CreateBody0Rel().SetTargets([body_path[j.parent_link]])
-            jp.CreateBody1Rel().SetTargets([body_path[j.child_link]])
-            jp.CreateAxisAttr("X")
-            q = _quat_to_x(np.asarray(j.joint.axis, float))
-            gq = Gf.Quatf(float(q[0]), float(q[1]), float(q[2]), float(q[3]))
-            origin = Gf.Vec3f(*[float(c) for c in j.joint.origin])
+            revolute = j.joint.type == "revolute"
+            kind = "angular" if revolute else "linear"
+            jp = self.prim(f"{path}/Joints/{_ident(j.name, set())}",
+                           "PhysicsRevoluteJoint" if revolute else "PhysicsPrismaticJoint",
+                           api=(f"PhysicsDriveAPI:{kind}",) if self.lock else ())
+            self.rel(jp, "physics:body0", body_path[j.parent_link])
+            self.rel(jp, "physics:body1", body_path[j.child_link])
+            self.attr(jp, "physics:axis", T.Token, "X", uniform=True)
+            gq = self._quatf(_quat_to_x(np.asarray(j.joint.axis, float)))
+            origin = self._vec3f(j.joint.origin)
             # both frames sit on the axis in their link's modelled (closed) frame; at the
             # exported value the child link is already turned or slid by that value
-            jp.CreateLocalPos0Attr(origin)
-            jp.CreateLocalRot0Attr(gq)
-            jp.CreateLocalPos1Attr(origin)
-            jp.CreateLocalRot1Attr(gq)
+            self.attr(jp, "physics:localPos0", T.Point3f, origin)
+            self.attr(jp, "physics:localRot0", T.Quatf, gq)
+            self.attr(jp, "physics:localPos1", T.Point3f, origin)
+            self.attr(jp, "physics:localRot1", T.Quatf, gq)
             lo, hi = sorted(float(v) for v in j.joint.limits)
-            revolute = j.joint.type == "revolute"
             conv = np.degrees if revolute else (lambda v: v)
-            jp.CreateLowerLimitAttr(float(conv(lo)))
-            jp.CreateUpperLimitAttr(float(conv(hi)))
-            prim = jp.GetPrim()
-            prim.CreateAttribute("parse3d:value", self.Sdf.ValueTypeNames.Float,
-                                 custom=True).Set(float(j.value))
-            prim.CreateAttribute("parse3d:locked", self.Sdf.ValueTypeNames.Bool,
-                                 custom=True).Set(bool(self.lock))
+            self.attr(jp, "physics:lowerLimit", T.Float, float(conv(lo)))
+            self.attr(jp, "physics:upperLimit", T.Float, float(conv(hi)))
+            self.attr(jp, "parse3d:value", T.Float, float(j.value), custom=True)
+            self.attr(jp, "parse3d:locked", T.Bool, bool(self.lock), custom=True)
             if self.lock:
-                drive = UsdPhysics.DriveAPI.Apply(prim, "angular" if revolute else "linear")
-                drive.CreateStiffnessAttr(LOCK_STIFFNESS)
-                drive.CreateDampingAttr(LOCK_STIFFNESS / 100)
-                drive.CreateTargetPositionAttr(float(conv(j.value)))
+                self.attr(jp, f"drive:{kind}:physics:stiffness", T.Float, LOCK_STIFFNESS)
+                self.attr(jp, f"drive:{kind}:physics:damping", T.Float, LOCK_STIFFNESS / 100)
+                self.attr(jp, f"drive:{kind}:physics:targetPosition", T.Float,
+                          float(conv(j.value)))
         if o.fixed:
-            w = UsdPhysics.FixedJoint.Define(self.stage, f"{path}/Joints/weld_to_world")
-            w.CreateBody1Rel().SetTargets([body_path[o.links[0].name]])
-            qw = matrix_to_quat(o.rotation)
-            w.CreateLocalPos0Attr(Gf.Vec3f(*[float(c) for c in o.position]))
-            w.CreateLocalRot0Attr(Gf.Quatf(float(qw[0]), float(qw[1]), float(qw[2]), float(qw[3])))
-            w.CreateLocalPos1Attr(Gf.Vec3f(0, 0, 0))
-            w.CreateLocalRot1Attr(Gf.Quatf(1, 0, 0, 0))
+            w = self.prim(f"{path}/Joints/weld_to_world", "PhysicsFixedJoint")
+            self.rel(w, "physics:body1", body_path[o.links[0].name])
+            self.attr(w, "physics:localPos0", T.Point3f, self._vec3f(o.position))
+            self.attr(w, "physics:localRot0", T.Quatf, self._quatf(matrix_to_quat(o.rotation)))
+            self.attr(w, "physics:localPos1", T.Point3f, self.Gf.Vec3f(0, 0, 0))
+            self.attr(w, "physics:localRot1", T.Quatf, self.Gf.Quatf(1, 0, 0, 0))
+
+
+def build_layer(rec: SceneRecord, *, lock_joints: bool = True, path: str | None = None):
+    """The root ``Sdf.Layer`` of a walked scene's stage (anonymous, or new at ``path``)."""
+    Gf, Sdf, Usd, UsdGeom, UsdPhysics, UsdShade, Vt = _pxr()
+    layer = Sdf.Layer.CreateNew(path) if path else Sdf.Layer.CreateAnonymous(".usda")
+    w = _Writer(layer, rec, lock_joints)
+    with Sdf.ChangeBlock():
+        w.world()
+        w.room()
+        w._xform("/World/Objects")
+        taken: set[str] = set()
+        for o in rec.objects:
+            w.obj(o, taken)
+    return layer
 
 
 def build_stage(rec: SceneRecord, *, lock_joints: bool = True, path: str | None = None):
     """A ``Usd.Stage`` of a walked scene (in memory, or created at ``path``)."""
-    Gf, Sdf, Usd, UsdGeom, UsdPhysics, UsdShade, Vt = _pxr()
-    stage = Usd.Stage.CreateNew(path) if path else Usd.Stage.CreateInMemory()
-    UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.z)
-    UsdGeom.SetStageMetersPerUnit(stage, 1.0)
-    UsdPhysics.SetStageKilogramsPerUnit(stage, 1.0)
-    world = UsdGeom.Xform.Define(stage, "/World")
-    stage.SetDefaultPrim(world.GetPrim())
-    world.GetPrim().SetCustomDataByKey("parse3d", dict(rec.meta))
-    scene = UsdPhysics.Scene.Define(stage, "/World/PhysicsScene")
-    scene.CreateGravityDirectionAttr(Gf.Vec3f(0, 0, -1))
-    scene.CreateGravityMagnitudeAttr(9.81)
-    w = _Writer(stage, rec, lock_joints)
-    w.room()
-    w._xform("/World/Objects")
-    taken: set[str] = set()
-    for o in rec.objects:
-        w.obj(o, taken)
-    return stage
+    Usd = _pxr()[2]
+    return Usd.Stage.Open(build_layer(rec, lock_joints=lock_joints, path=path))
 
 
 def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path]:
     """Write ``scene.usd`` (binary crate) into the folder ``out``; returns the paths written."""
     path = Path(out) / "scene.usd"
     tmp = path.with_name(".scene.tmp.usd")
-    stage = build_stage(rec, lock_joints=lock_joints, path=str(tmp))
-    stage.GetRootLayer().Save()
-    del stage
+    layer = build_layer(rec, lock_joints=lock_joints, path=str(tmp))
+    layer.Save()
+    del layer
     tmp.replace(path)
     return [path]
