@@ -50,12 +50,13 @@ def register(app: typer.Typer) -> None:
         """Export a solved scene as structured glTF, USD, MJCF, URDF or OBJ.
 
         Files: scene.glb; scene.usd; scene.xml + meshes/; urdf/<object_id>.urdf +
-        urdf/scene.json; scene.obj + scene.mtl. Exit code 2 for a folder that is not a scene,
-        an unknown format or an output that cannot be written.
+        urdf/scene.json; scene.obj + scene.mtl. Exports already in the scene folder that are
+        older than its scene.json are rewritten too. Exit code 2 for a folder that is not a
+        scene, an unknown format or an output that cannot be written.
 
         Example: parse3d export out/study-0 --format usd,mjcf --no-ceiling
         """
-        from ..export import ExportOptions, check_formats, export_scene
+        from ..export import ExportOptions, check_formats, export_scene, stale_formats
         from ..physics.mujoco import settling_friction
         from ..scene.io import read_scene
 
@@ -73,14 +74,19 @@ def register(app: typer.Typer) -> None:
             target = out if out is not None else (d if d.is_dir() else d.parent)
             if out is not None and len(dirs) > 1:
                 target = out / d.name
+            # in the scene's own folder, other exports older than scene.json are refreshed
+            own = out is None or target.resolve() == (d if d.is_dir() else d.parent).resolve()
+            stale = [f for f in stale_formats(target) if f not in formats] if own else []
             t = time.perf_counter()
-            files = export_scene(scene, target, formats, opts)
+            files = export_scene(scene, target, formats, opts, refresh=own)
             rows.append({"scene": str(d), "out": str(target), "formats": list(formats),
-                         "files": [str(f) for f in files],
+                         "refreshed": stale, "files": [str(f) for f in files],
                          "seconds": round(time.perf_counter() - t, 4)})
         if as_json:
             print_json(rows if len(rows) > 1 else rows[0])
             return
         for r in rows:
+            extra = f"; refreshed {', '.join(r['refreshed'])}" if r["refreshed"] else ""
             console.print(f"{r['scene']}: wrote {len(r['files'])} files "
-                          f"({', '.join(r['formats'])}) to {r['out']} in {r['seconds']:.2f} s")
+                          f"({', '.join(r['formats'])}{extra}) to {r['out']} in "
+                          f"{r['seconds']:.2f} s")

@@ -33,10 +33,15 @@ def register(app: typer.Typer) -> None:
         full: bool = typer.Option(False, "--full", help="Run every step (no early exit once all bodies sleep)."),
         threshold: float = typer.Option(0.001, "--threshold",
                                         help="Contact distance in metres, (0, 0.05]."),
-        no_glb: bool = typer.Option(False, "--no-glb", help="Do not rewrite scene.glb."),
+        no_glb: bool = typer.Option(False, "--no-glb", help="Do not rewrite scene.glb (the "
+                                                            "folder's other exports are still "
+                                                            "refreshed)."),
         as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
     ) -> None:
         """Settle SCENE_DIR in SAPIEN and write the settled poses and contacts.json back.
+
+        scene.glb and every other export already in SCENE_DIR (scene.usd, scene.xml, urdf/,
+        scene.obj) are rewritten in the settled pose.
 
         Example: parse3d settle out/study-0
         """
@@ -59,10 +64,13 @@ def register(app: typer.Typer) -> None:
         scene.contacts = extract_contacts(scene, threshold=threshold)
         scene.timings["contacts"] = round(time.perf_counter() - t, 4)
         out = write_scene(scene, scene_dir)
-        if not no_glb:
-            from ..export import export_scene
+        from ..export import ExportOptions, export_scene
+        from ..physics.mujoco import settling_friction
 
-            export_scene(scene, scene_dir, ["glb"])
+        # scene.glb, and every other export already in the folder, now in the settled pose
+        exported = export_scene(scene, scene_dir, [] if no_glb else ["glb"],
+                                ExportOptions(friction=settling_friction()),
+                                skip=["glb"] if no_glb else [])
         if as_json:
             d = report.to_dict()
             d["contacts"] = len(scene.contacts)
@@ -83,4 +91,6 @@ def register(app: typer.Typer) -> None:
         if scene.relations:
             held = sum(1 for c in scene.relations if c.holds_settled)
             console.print(f"  {held}/{len(scene.relations)} relations hold after settling")
-        console.print(f"  wrote {out}/scene.json, contacts.json" + ("" if no_glb else ", scene.glb"))
+        tops = sorted({p.relative_to(scene_dir).parts[0] for p in exported}, key=str)
+        console.print(f"  wrote {out}/scene.json, contacts.json"
+                      + "".join(f", {t}" for t in tops))

@@ -6,7 +6,10 @@ format's name on the command line), ``FILES`` (what it creates in the output fol
 (:func:`~parse3d.export.walk.walk_scene`). Adding a format is adding a module and its name
 to :data:`FORMATS`.
 
-- :func:`export_scene` — write one or more formats of a scene into a folder;
+- :func:`export_scene` — write one or more formats of a scene into a folder (and refresh the
+  stale exports of a scene folder);
+- :func:`present_formats`, :func:`stale_formats` — the exports a folder holds, and those
+  older than its ``scene.json``;
 - :func:`to_sapien`, :func:`to_mujoco` — live simulator objects for a scene;
 - :data:`FORMATS` — format name to module name.
 
@@ -25,7 +28,8 @@ from ..scene.model import Scene
 from .walk import ExportOptions, SceneRecord, walk_scene
 
 __all__ = ["FORMATS", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
-           "format_module", "check_formats", "to_sapien", "to_mujoco"]
+           "format_module", "check_formats", "present_formats", "stale_formats", "to_sapien",
+           "to_mujoco"]
 
 #: Format name -> module of this package.
 FORMATS: dict[str, str] = {"glb": "gltf", "usd": "usd", "mjcf": "mjcf", "urdf": "urdf",
@@ -59,8 +63,29 @@ def check_formats(formats: str | Iterable[str], *, where: str = "--formats") -> 
     return tuple(out)
 
 
+def present_formats(folder: str | Path) -> tuple[str, ...]:
+    """The formats exported into ``folder``: those whose marker file (``scene.glb``,
+    ``scene.usd``, ``scene.xml``, ``urdf/scene.json``, ``scene.obj``) is there."""
+    folder = Path(folder)
+    return tuple(f for f in FORMATS if (folder / format_module(f).MARKER).is_file())
+
+
+def stale_formats(folder: str | Path) -> tuple[str, ...]:
+    """The formats exported into the scene folder ``folder`` that are not newer than its
+    ``scene.json`` (written before the scene last changed); none when there is no
+    ``scene.json``."""
+    folder = Path(folder)
+    try:
+        scene_time = (folder / "scene.json").stat().st_mtime_ns
+    except OSError:
+        return ()
+    return tuple(f for f in present_formats(folder)
+                 if (folder / format_module(f).MARKER).stat().st_mtime_ns <= scene_time)
+
+
 def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = ("glb",),
-                 options: ExportOptions = ExportOptions()) -> list[Path]:
+                 options: ExportOptions = ExportOptions(), *, refresh: bool = True,
+                 skip: Iterable[str] = ()) -> list[Path]:
     """Write ``scene`` in each of ``formats`` into the folder ``out``.
 
     Parameters
@@ -71,8 +96,15 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
         it (``scene.glb``, ``scene.usd``, ``scene.xml`` + ``meshes/``, ``urdf/``,
         ``scene.obj`` + ``scene.mtl``); nothing is written outside it.
     formats : str or sequence of str
-        Names from :data:`FORMATS`.
+        Names from :data:`FORMATS`; may be empty when ``refresh`` is on.
     options : ExportOptions
+    refresh : bool
+        When ``out`` is the scene's folder (it holds ``scene.json``), also rewrite every
+        other format already exported there that is not newer than ``scene.json``
+        (:func:`stale_formats`), with the same options, so the folder never holds an export
+        that disagrees with its scene.
+    skip : sequence of str
+        Formats never refreshed.
 
     Returns
     -------
@@ -84,8 +116,12 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
     InputError
         For an unknown format or an output folder that cannot be written.
     """
-    names = check_formats(formats, where="formats")
+    names = check_formats(formats, where="formats") if (formats or not refresh) else ()
     out = Path(out)
+    if refresh:
+        names += tuple(f for f in stale_formats(out) if f not in names and f not in skip)
+    if not names:
+        return []
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as e:

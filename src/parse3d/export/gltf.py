@@ -32,11 +32,13 @@ from ..scene.io import atomic_write_bytes
 from ..scene.model import Scene
 from .walk import ExportOptions, SceneRecord, walk_scene
 
-__all__ = ["NAME", "FILES", "Z_UP_TO_Y_UP", "write", "to_glb", "export_glb"]
+__all__ = ["NAME", "FILES", "MARKER", "Z_UP_TO_Y_UP", "write", "to_glb", "export_glb"]
 
 NAME = "glb"
 #: What :func:`write` creates in the output folder.
 FILES = ("scene.glb",)
+#: The file whose presence (and age) marks this export in a folder (written last).
+MARKER = "scene.glb"
 
 #: Rotation taking parse3d's Z-up world to glTF's Y-up: (x, y, z) -> (x, z, -y).
 Z_UP_TO_Y_UP = np.array([[1, 0, 0, 0], [0, 0, 1, 0], [0, -1, 0, 0], [0, 0, 0, 1]], dtype=float)

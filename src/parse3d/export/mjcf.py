@@ -33,10 +33,12 @@ from ..scene.model import Scene
 from ._files import MeshFiles, mesh_digest, remove_stale, safe_name
 from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
 
-__all__ = ["NAME", "FILES", "build_spec", "write", "to_mujoco"]
+__all__ = ["NAME", "FILES", "MARKER", "build_spec", "write", "to_mujoco"]
 
 NAME = "mjcf"
 FILES = ("scene.xml", "meshes/")
+#: The file whose presence (and age) marks this export in a folder (written last).
+MARKER = "scene.xml"
 
 _VISUAL_GROUP, _COLLISION_GROUP = 1, 3
 

@@ -19,10 +19,12 @@ from ..scene.io import atomic_write_text
 from ._files import safe_name
 from .walk import SceneRecord
 
-__all__ = ["NAME", "FILES", "write", "to_obj"]
+__all__ = ["NAME", "FILES", "MARKER", "write", "to_obj"]
 
 NAME = "obj"
 FILES = ("scene.obj", "scene.mtl")
+#: The file whose presence (and age) marks this export in a folder (written last).
+MARKER = "scene.obj"
 
 _Z_TO_Y = np.array([[1.0, 0, 0], [0, 0, 1.0], [0, -1.0, 0]])
 

@@ -38,10 +38,12 @@ from ..scene.io import atomic_write_text
 from ._files import MeshFiles, remove_stale, safe_name, write_file
 from .walk import ObjectRecord, PartRecord, SceneRecord
 
-__all__ = ["NAME", "FILES", "write", "object_urdf"]
+__all__ = ["NAME", "FILES", "MARKER", "write", "object_urdf"]
 
 NAME = "urdf"
 FILES = ("urdf/",)
+#: The file whose presence (and age) marks this export in a folder (written last).
+MARKER = "urdf/scene.json"
 
 
 def _f(a) -> str:

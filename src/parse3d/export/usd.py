@@ -35,10 +35,12 @@ from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from .walk import ObjectRecord, SceneRecord
 
-__all__ = ["NAME", "FILES", "write", "build_stage", "build_layer"]
+__all__ = ["NAME", "FILES", "MARKER", "write", "build_stage", "build_layer"]
 
 NAME = "usd"
 FILES = ("scene.usd",)
+#: The file whose presence (and age) marks this export in a folder (written last).
+MARKER = "scene.usd"
 
 #: Stiffness of the drive that holds a locked joint at its stored value (N m / deg, N / m).
 LOCK_STIFFNESS = 1e6
