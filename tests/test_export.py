@@ -1,14 +1,17 @@
 """Exports to viewers and simulators, each checked by loading it in its consumer.
 
-Two example rooms are solved and settled once; every format of both is written once and read
-back by the library that users would open it with (trimesh, the Khronos glTF validator, pxr,
-MuJoCo, yourdfpy, SAPIEN's URDF loader). A small cabinet with a hinged door and a drawer,
-built here, checks that joints reach every format and put the door in the same place.
+Two example rooms are solved and settled once, the other four example rooms solved only (the
+load checks need no settling); every format of all six is written once and read back by the
+library that users would open it with (trimesh, the Khronos glTF validator, pxr, MuJoCo,
+yourdfpy, SAPIEN's URDF loader). A small cabinet with a hinged door and a drawer, built here,
+checks that joints reach every format and put the door in the same place. A two-object scene
+checks that settling and re-exporting keep a folder's exports in step with its scene.json.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 from pathlib import Path
@@ -34,7 +37,9 @@ from parse3d.scene.shell import build_shell
 ROOT = Path(__file__).resolve().parents[1]
 VALIDATOR = ROOT / "tests" / "gltf_validator"
 FORMATS = ["glb", "usd", "mjcf", "urdf", "obj"]
-ROOMS = ["bathroom.yaml", "study.json"]
+ROOMS = ["bathroom.yaml", "study.json"]  # solved and settled
+EXAMPLES = sorted(p.name for p in (ROOT / "examples").iterdir())
+OTHER_ROOMS = [r for r in EXAMPLES if r not in ROOMS]  # solved only
 
 
 def cabinet_asset() -> Asset:
@@ -115,6 +120,25 @@ def exported(rooms, tmp_path_factory):
         target = tmp_path_factory.mktemp(f"{name}-export")
         files = export_scene(scene, target, FORMATS, ExportOptions(friction=settling_friction()))
         out[name] = (scene, target, files)
+    return out
+
+
+@pytest.fixture(scope="session")
+def every_room(exported, tmp_path_factory):
+    """All six example rooms exported in every format into their own scene folders: the two
+    settled ones of :func:`exported`, the others solved (not settled) at seed 0."""
+    from parse3d.assets.registry import vocabulary
+
+    out = {name: (scene, target) for name, (scene, target, _) in exported.items()}
+    for name in OTHER_ROOMS:
+        d = tmp_path_factory.mktemp(Path(name).stem)
+        pag = load_pag(ROOT / "examples" / name, vocabulary=vocabulary())
+        run_pipeline(pag, seed=0, out=d, options=PipelineOptions(settle=False, preview=False,
+                                                                 formats=()))
+        scene = parse3d.load_scene(d)
+        assert scene.placed
+        export_scene(scene, d, FORMATS, ExportOptions(friction=settling_friction()))
+        out[Path(name).stem] = (scene, d)
     return out
 
 
@@ -332,6 +356,45 @@ def test_obj_has_a_group_per_part(exported):
     assert "newmtl" in (out / "scene.mtl").read_text()
 
 
+# -- every example room -------------------------------------------------------------------
+
+@pytest.mark.parametrize("room", [Path(r).stem for r in EXAMPLES])
+def test_every_format_of_every_example_room_loads_in_its_consumer(every_room, room):
+    import mujoco
+    from pxr import Usd, UsdPhysics
+
+    from parse3d.export.sapien import load_urdf_scene
+
+    scene, out = every_room[room]
+    ids = {o.id for o in scene.placed}
+    keys = set(_world_part_meshes(scene))
+    shell = {f"room:{n}" for n in scene.room.elements}
+    moving = sum(not j.is_mount for o in scene.placed for j in o.asset.joints)
+    # glTF and OBJ in trimesh: a node per object and per part; a group per part
+    sc = trimesh.load(out / "scene.glb", force="scene")
+    assert ids | keys | shell <= set(sc.graph.nodes)
+    obj = trimesh.load(out / "scene.obj", force="scene", group_material=False,
+                       split_groups=True)
+    assert set(obj.geometry) == keys | shell
+    # USD in pxr: every object, a rigid body per link
+    stage = Usd.Stage.Open(str(out / "scene.usd"))
+    objects = stage.GetPrimAtPath("/World/Objects").GetChildren()
+    assert {p.GetAttribute("parse3d:objectId").Get() for p in objects} == ids
+    bodies = [p for p in stage.Traverse() if p.HasAPI(UsdPhysics.RigidBodyAPI)]
+    assert len(bodies) == len(ids) + moving
+    # MJCF in MuJoCo: a body per object and moving part, a free joint per loose object
+    model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    assert model.nbody == 1 + len(ids) + moving
+    assert sum(model.jnt_type == mujoco.mjtJoint.mjJNT_FREE) == \
+        sum(not o.fixed for o in scene.placed)
+    data = mujoco.MjData(model)
+    mujoco.mj_step(model, data)
+    assert np.isfinite(data.qpos).all()
+    # URDF in SAPIEN's loader: every object and the room
+    sim = load_urdf_scene(out / "urdf", render=False)
+    assert set(sim.actors) | set(sim.articulations) == ids | {"room"}
+
+
 # -- joints -------------------------------------------------------------------------------
 
 def test_joints_put_the_door_in_the_same_place_in_every_format(cabinets):
@@ -468,19 +531,132 @@ def test_load_scene_reads_what_solve_wrote(rooms):
     assert back.settled
 
 
+# -- keeping a folder's exports in step with its scene.json ---------------------------------
+
+TINY_PAG = {"format": "pag/1", "name": "tiny",
+            "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]],
+                     "height": 2.6},
+            "objects": [{"id": "desk", "category": "desk"}, {"id": "mug", "category": "mug"}],
+            "relations": [{"relation": "ON", "child": "desk", "parent": "floor"},
+                          {"relation": "ON", "child": "mug", "parent": "desk:tabletop"}]}
+
+
+@pytest.fixture(scope="session")
+def tiny_scene(tmp_path_factory):
+    """A desk with a mug, solved (not settled), the mug lifted 3 cm so settling drops it."""
+    from parse3d.assets.registry import vocabulary
+
+    path = tmp_path_factory.mktemp("tiny-pag") / "tiny.json"
+    path.write_text(json.dumps(TINY_PAG))
+    pag = load_pag(path, vocabulary=vocabulary())
+    scene = run_pipeline(pag, seed=0, out=None,
+                         options=PipelineOptions(settle=False, preview=False, formats=()))
+    scene.objects["mug"].position = scene.objects["mug"].position + [0.0, 0.0, 0.03]
+    return scene
+
+
+def _folder_with_every_format(scene: Scene, d: Path) -> Path:
+    from parse3d.pipeline import write_outputs
+
+    write_outputs(scene, d, tuple(FORMATS))
+    return d
+
+
+def _exported_mug_positions(d: Path) -> dict[str, np.ndarray]:
+    """The mug's position in each export of folder ``d`` (world frame, Z-up)."""
+    import mujoco
+    from pxr import Usd
+
+    out = {}
+    doc = _glb_json(d / "scene.glb")
+    node = next(n for n in doc["nodes"] if n["name"] == "mug")
+    out["glb"] = np.linalg.inv(Z_UP_TO_Y_UP[:3, :3]) @ np.array(node["translation"])
+    stage = Usd.Stage.Open(str(d / "scene.usd"))
+    out["usd"] = np.array(stage.GetPrimAtPath("/World/Objects/mug")
+                          .GetAttribute("xformOp:translate").Get())
+    model = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    out["mjcf"] = model.body_pos[mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, "mug")]
+    rows = {r["id"]: r for r in json.loads((d / "urdf" / "scene.json").read_text())}
+    out["urdf"] = np.array(rows["mug"]["position"])
+    return out
+
+
+def _referenced_meshes(d: Path) -> set[str]:
+    import re
+
+    refs = set(re.findall(r'file="([^"]+)"', (d / "scene.xml").read_text()))
+    for u in (d / "urdf").glob("*.urdf"):
+        refs |= {f"urdf/{m}" for m in re.findall(r'filename="([^"]+)"', u.read_text())}
+    return refs
+
+
+def test_settle_refreshes_every_export_in_the_folder(tiny_scene, tmp_path, capsys):
+    from parse3d.export import stale_formats
+
+    d = _folder_with_every_format(tiny_scene, tmp_path / "tiny")
+    lifted = tiny_scene.objects["mug"].position.copy()
+    meshes = {p: p.stat().st_mtime_ns for p in (d / "meshes").iterdir()}
+    assert _cli(["settle", str(d), "--steps", "150", "--json"]) == 0
+    capsys.readouterr()
+    scene = parse3d.load_scene(d)
+    settled = scene.objects["mug"].settled_position
+    assert scene.settled and lifted[2] - settled[2] > 0.01  # the mug fell onto the desk
+    assert stale_formats(d) == ()
+    for fmt, pos in _exported_mug_positions(d).items():
+        assert np.allclose(pos, settled, atol=1e-5), fmt
+    obj = trimesh.load(d / "scene.obj", force="scene", group_material=False, split_groups=True)
+    mug = scene.objects["mug"]
+    want = mug.part_mesh(mug.asset.parts[0], settled=True).bounds
+    got = np.asarray(obj.geometry[f"mug:{mug.asset.parts[0].name}"].vertices)
+    got = got @ np.linalg.inv(Z_UP_TO_Y_UP[:3, :3]).T
+    assert np.allclose([got.min(0), got.max(0)], want, atol=1e-5)
+    # the meshes are in the asset frame: settling rewrote none of them
+    assert {p: p.stat().st_mtime_ns for p in (d / "meshes").iterdir()} == meshes
+
+
+def test_export_rerun_refreshes_stale_exports_and_drops_unused_files(tiny_scene, tmp_path,
+                                                                   capsys):
+    from parse3d.export import stale_formats
+
+    d = _folder_with_every_format(tiny_scene, tmp_path / "tiny")
+    (d / "meshes" / "notes.txt").write_text("mine")
+    # scene.json changed after the exports were written (as by an older parse3d settle)
+    earlier = (d / "scene.json").stat().st_mtime_ns - 10**9
+    for marker in ("scene.glb", "scene.usd", "scene.xml", "urdf/scene.json", "scene.obj"):
+        os.utime(d / marker, ns=(earlier, earlier))
+    assert stale_formats(d) == tuple(FORMATS)
+    assert _cli(["export", str(d), "--format", "obj", "--json"]) == 0
+    report = json.loads(capsys.readouterr().out)
+    assert report["formats"] == ["obj"] and report["refreshed"] == ["glb", "usd", "mjcf", "urdf"]
+    assert stale_formats(d) == ()
+    # an export to another folder refreshes nothing there but what it was asked for
+    assert _cli(["export", str(d), "--format", "glb", "--out", str(tmp_path / "o"),
+                 "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["refreshed"] == []
+    assert [p.name for p in (tmp_path / "o").iterdir()] == ["scene.glb"]
+    # without the mug, its URDF and the meshes only it used leave the folder
+    files = {str(p.relative_to(d)) for p in d.rglob("*") if p.is_file()}
+    scene = parse3d.load_scene(d)
+    del scene.objects["mug"]
+    export_scene(scene, d, ["mjcf", "urdf"], refresh=False)
+    left = {str(p.relative_to(d)) for p in d.rglob("*") if p.is_file()}
+    assert not (d / "urdf" / "mug.urdf").exists() and (d / "urdf" / "desk.urdf").is_file()
+    gone = files - left
+    assert gone and all("mug" in f for f in gone), sorted(gone)
+    assert (d / "meshes" / "notes.txt").read_text() == "mine"
+    mesh_files = {f for f in left if f.startswith(("meshes/", "urdf/meshes/"))
+                  and not f.endswith((".txt", ".mtl"))}
+    assert mesh_files == _referenced_meshes(d)
+
+
 # -- datasets -----------------------------------------------------------------------------
 
 def test_dataset_formats_are_written_and_part_of_its_identity(tmp_path, capsys):
     from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
     from parse3d.errors import InputError
 
-    pag = {"format": "pag/1", "name": "tiny",
-           "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]], "height": 2.6},
-           "objects": [{"id": "desk", "category": "desk"}, {"id": "mug", "category": "mug"}],
-           "relations": [{"relation": "ON", "child": "desk", "parent": "floor"},
-                         {"relation": "ON", "child": "mug", "parent": "desk:tabletop"}]}
     (tmp_path / "pags").mkdir()
-    (tmp_path / "pags" / "tiny.json").write_text(json.dumps(pag))
+    (tmp_path / "pags" / "tiny.json").write_text(json.dumps(TINY_PAG))
     source = resolve_pag_paths([tmp_path / "pags"])
     cfg = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb", "mjcf"))
     out = tmp_path / "ds"
