@@ -90,26 +90,48 @@ def clear_cache() -> None:
 
 class _HullCache:
     """Convex pieces per asset part: computed once per part object in a walk, and once per
-    piece content in the process (scenes of a dataset share assets)."""
+    piece content in the process (scenes of a dataset share assets). The parts a walk
+    registers are computed together on the first request, in one vectorised pass."""
 
     def __init__(self) -> None:
         self._by_part: dict[int, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = {}
         self._keep: list[Part] = []  # keeps ids valid while the cache lives
+        self._pending: list[Part] = []
+
+    def register(self, part: Part) -> None:
+        """Note a part whose pieces may be asked for (nothing is computed yet)."""
+        self._pending.append(part)
 
     def get(self, part: Part) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
         hit = self._by_part.get(id(part))
         if hit is None:
+            self._fill([part, *self._pending])
+            self._pending = []
+            hit = self._by_part[id(part)]
+        return hit
+
+    def _fill(self, parts: list[Part]) -> None:
+        todo: list[tuple[Part, str]] = []
+        for part in parts:
+            if id(part) in self._by_part:
+                continue
             key = _piece_key(part)
             hit = _HULLS.get(key)
             if hit is None:
-                hit = _HULLS[key] = convex_pieces(part.pieces)
-                if len(_HULLS) > _HULLS_SIZE:
-                    _HULLS.popitem(last=False)
+                todo.append((part, key))
+                hit = _HULLS[key] = ([], 0.0)  # placeholder, filled below
             else:
                 _HULLS.move_to_end(key)
             self._by_part[id(part)] = hit
             self._keep.append(part)
-        return hit
+        meshes = [pc for part, _ in todo for pc in part.pieces
+                  if isinstance(pc, trimesh.Trimesh) and len(pc.faces) and len(pc.vertices) >= 4]
+        closed = dict(zip(map(id, meshes), _closed_volumes(meshes), strict=True))
+        for part, key in todo:
+            hit = _HULLS[key] = convex_pieces(part.pieces, closed=closed)
+            self._by_part[id(part)] = hit
+        while len(_HULLS) > _HULLS_SIZE:
+            _HULLS.popitem(last=False)
 
 
 @dataclass
@@ -341,12 +363,40 @@ class SceneRecord:
         return out
 
 
-def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
+def _closed_volumes(meshes: list[trimesh.Trimesh]) -> list[float | None]:
+    """The enclosed volume of each triangle mesh, m^3, or None for one that is open (an edge
+    not shared by exactly two of its triangles) or wound inward; one vectorised pass over
+    all the meshes (per-mesh numpy calls cost more than the arithmetic on small pieces)."""
+    if not meshes:
+        return []
+    verts = [np.asarray(m.vertices, float) for m in meshes]
+    faces = [np.asarray(m.faces, np.int64) for m in meshes]
+    nv = np.array([len(v) for v in verts])
+    nf = np.array([len(f) for f in faces])
+    V = np.concatenate(verts)
+    F = np.concatenate(faces) + np.repeat(np.cumsum(nv) - nv, nf)[:, None]
+    owner = np.repeat(np.arange(len(meshes)), nf)
+    e = np.sort(F[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2), axis=1)
+    _, inverse, counts = np.unique(e[:, 0] * (len(V) + 1) + e[:, 1], return_inverse=True,
+                                   return_counts=True)
+    open_mesh = np.zeros(len(meshes), bool)
+    open_mesh[np.repeat(owner, 3)[counts[inverse.ravel()] != 2]] = True
+    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
+    six = np.einsum("ij,ij->i", a, np.cross(b, c))
+    vol = np.bincount(owner, weights=six, minlength=len(meshes)) / 6.0
+    return [None if open_mesh[i] or vol[i] < 0 else float(vol[i]) for i in range(len(meshes))]
+
+
+def convex_pieces(meshes, closed: Mapping[int, float | None] | None = None
+                  ) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
     """The convex hull of each collision piece and their total volume; flat pieces dropped.
 
     Parameters
     ----------
     meshes : iterable of trimesh.Trimesh or (V, 3) arrays
+    closed : mapping of int to float or None, optional
+        Volumes already known (:func:`_closed_volumes`), by ``id`` of the mesh: a closed
+        mesh (a piece is convex and closed by contract) needs no hull.
 
     Returns
     -------
@@ -360,6 +410,12 @@ def convex_pieces(meshes) -> tuple[list[tuple[np.ndarray, np.ndarray]], float]:
     for m in meshes:
         pts = np.asarray(getattr(m, "vertices", m), float)
         if len(pts) < 4:
+            continue
+        known = None if closed is None else closed.get(id(m))
+        if known is not None:  # a closed, outward-wound piece: its own volume, no hull
+            if known > 1e-12:
+                out.append((pts, np.asarray(m.faces)))
+                vol += known
             continue
         try:
             h = ConvexHull(pts)
@@ -465,6 +521,7 @@ def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
         key = f"{o.id}:{p.name}"
         parts.append(PartRecord(p.name, p.label, key, p.mesh, p.material, part_link[p.name],
                                 prel, touching.get(key, []), p, hulls))
+        hulls.register(p)
     density = float(asset.density)
     link_recs = [LinkRecord(n, [p for p in parts if p.link == n], T, density, float(o.scale))
                  for n, T in links]
