@@ -215,8 +215,9 @@ def _validate(paths: list[Path]) -> list[dict]:
 @pytest.mark.skipif(shutil.which("node") is None
                     or not (VALIDATOR / "node_modules" / "gltf-validator").is_dir(),
                     reason="needs node and `npm ci` in tests/gltf_validator")
-def test_gltf_validator_reports_no_errors(exported, cabinets):
-    paths = [out / "scene.glb" for _, out, _ in exported.values()] + [cabinets[1] / "scene.glb"]
+def test_gltf_validator_reports_no_errors(every_room, cabinets):
+    paths = [out / "scene.glb" for _, out in every_room.values()] + [cabinets[1] / "scene.glb"]
+    assert len(paths) == len(EXAMPLES) + 1
     reports = _validate(paths)
     assert len(reports) == len(paths)
     for r in reports:
@@ -268,13 +269,14 @@ def test_usd_stage_has_bodies_colliders_and_metadata(exported, room):
         pytest.approx(settling_friction()["room"])
 
 
-def test_usd_passes_the_usd_validators(exported, cabinets):
+def test_usd_passes_the_usd_validators(every_room, cabinets):
     from pxr import Usd, UsdValidation
 
     validators = UsdValidation.ValidationRegistry().GetOrLoadAllValidators()
     assert len(validators) > 10
     context = UsdValidation.ValidationContext(validators)
-    for path in (exported["study"][1] / "scene.usd", cabinets[1] / "scene.usd"):
+    for path in [out / "scene.usd" for _, out in every_room.values()] + \
+            [cabinets[1] / "scene.usd"]:
         errors = context.Validate(Usd.Stage.Open(str(path)))
         assert [e.GetMessage() for e in errors] == []
 

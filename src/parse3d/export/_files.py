@@ -168,5 +168,21 @@ def remove_stale(root: Path, before: set[str], now: set[str]) -> None:
         path = (base / rel).resolve()
         if base not in path.parents or not path.is_file():
             continue
+        if path.suffix == ".obj":  # an OBJ's own material file (older exports wrote one each)
+            mtl = _own_material_file(path)
+            if mtl is not None and str(mtl.relative_to(base)) not in now:
+                with contextlib.suppress(OSError):
+                    mtl.unlink()
         with contextlib.suppress(OSError):
             path.unlink()
+
+
+def _own_material_file(obj: Path) -> Path | None:
+    """The ``<stem>.mtl`` beside ``obj`` when the OBJ names it as its material library."""
+    try:
+        with open(obj, encoding="utf-8", errors="replace") as f:
+            head = f.readline()
+    except OSError:
+        return None
+    mtl = obj.with_suffix(".mtl")
+    return mtl if head.strip() == f"mtllib {mtl.name}" and mtl.is_file() else None
