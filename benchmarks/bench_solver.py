@@ -1,14 +1,25 @@
-"""Solver speed and the constrained-vs-rejection ablation, measured side by side.
+"""Solver speed, its scaling with room size, and the constrained-vs-rejection ablation.
 
 Usage::
 
-    python benchmarks/bench_solver.py [--seeds 3] [--templates 6]
+    python benchmarks/bench_solver.py [--seeds 3] [--templates 6] [--baseline-rev REV]
+                                      [--scaling 10,25,50,100,200,400] [--no-rooms]
 
-For each room (the bundled example rooms, a synthetic 50-object office, and some room templates
-when they are installed) and seed, it solves with Algorithm 1 (``constrained``) and with the
-rejection-sampling baseline on the same PAG and seed, after one warm-up solve so that assets come
-from the pool (collision data and asset generation are one-time costs, reported separately).
-Times are process CPU seconds on one core.
+Rooms: for each room (the bundled example rooms, a synthetic 50-object office, and some room
+templates when they are installed) and seed, it solves with Algorithm 1 (``constrained``) and
+with the rejection-sampling baseline on the same PAG and seed, after warm-up solves so that
+assets come from the pool (collision data and asset generation are one-time costs, reported
+separately). The summary gives placed objects per second over the rooms of >= 40 objects
+(goal: >= 500 per core).
+
+Scaling: the tables-and-tabletop room (``_common.tables_room``: dining tables on the floor,
+mugs, plates, bowls, bottles and books on their tops, constant floor area per table) at each
+size, warm, median over the seeds; then the exponent of a least-squares fit of time against
+objects on log-log axes (goal: <= 1.2).
+
+Every solve runs in a warm worker process; with ``--baseline-rev REV`` a second worker runs the
+package of git revision REV (from a temporary worktree) on the same PAGs and seeds, in
+interleaved rounds, and both columns are printed. Times are process CPU seconds on one core.
 """
 
 from __future__ import annotations
@@ -17,9 +28,10 @@ import argparse
 import statistics
 import time
 
+from _common import ROOT, Worker, fit_exponent, revision_tree, serve, tables_room
+
 from parse3d.pag import PAG, Room, load_pag
 from parse3d.scenes import bundled_paths
-from parse3d.solver import SolverConfig, solve
 
 
 def office_50() -> PAG:
@@ -59,51 +71,142 @@ def rooms(n_templates: int) -> list[PAG]:
     return out
 
 
-def run(pag: PAG, seed: int, strategy: str) -> tuple[float, object]:
+# ------------------------------------------------------------------ the worker's side
+_SEEN: dict[str, float] = {}
+
+
+def handle(req: dict) -> dict:
+    """Solve a PAG (sent as its document) at a seed and strategy; the first request for a
+    PAG name first runs ``warm`` solves (seeds 0..warm-1, both strategies) and reports them."""
+    from parse3d.solver import SolverConfig, solve
+
+    pag = PAG.from_dict(req["pag"])
+    warm = None
+    if pag.name not in _SEEN:
+        t = time.process_time()
+        for seed in range(req.get("warm", 1)):
+            for strategy in req.get("strategies", ["constrained"]):
+                solve(pag, seed=seed, config=SolverConfig(strategy=strategy), validate=False)
+        warm = time.process_time() - t
+        _SEEN[pag.name] = warm
     t = time.process_time()
-    scene = solve(pag, seed=seed, config=SolverConfig(strategy=strategy), validate=False)
-    return time.process_time() - t, scene
+    scene = solve(pag, seed=req["seed"], config=SolverConfig(strategy=req["strategy"]),
+                  validate=False)
+    cpu = time.process_time() - t
+    placed = [o for o in scene.objects.values() if o.placed]
+    return {"cpu": cpu, "n": len(scene.objects), "placed": len(placed),
+            "trials": sum(o.trials for o in placed) / max(len(placed), 1), "warm": warm}
+
+
+# ------------------------------------------------------------------ the driver's side
+def run_rooms(pags: list[PAG], seeds: int, now: Worker, before: Worker | None) -> None:
+    strategies = ["constrained", "rejection"]
+    cols = f"{'before s':>8s} {'obj/s':>6s} {'placed':>6s} {'speedup':>7s}" if before else ""
+    print(f"{'room':28s} {'objs':>4s} | {'ours s':>7s} {'obj/s':>6s} {'placed':>6s} "
+          f"{'trials':>6s} | {'rej s':>7s} {'placed':>6s} | {'rej/ours':>8s} | {cols}")
+    rows = []
+    for pag in pags:
+        doc = pag.to_dict()
+        warm = {}
+        for seed in range(seeds):
+            base = dict(pag=doc, seed=seed, warm=seeds, strategies=strategies)
+            o = now.ask(**base, strategy="constrained")
+            r = now.ask(**base, strategy="rejection")
+            b = before.ask(**base, strategy="constrained") if before else None
+            warm.setdefault("now", o["warm"])
+            if b is not None:
+                warm.setdefault("before", b["warm"])
+            n = o["n"]
+            rows.append((pag.name, n, o, r, b))
+            line = (f"{pag.name[:28]:28s} {n:4d} | {o['cpu']:7.3f} {o['placed'] / o['cpu']:6.0f} "
+                    f"{o['placed'] / n:6.0%} {o['trials']:6.2f} | {r['cpu']:7.3f} "
+                    f"{r['placed'] / n:6.0%} | {r['cpu'] / o['cpu']:8.2f} |")
+            if b is not None:
+                line += (f" {b['cpu']:8.3f} {b['placed'] / b['cpu']:6.0f} {b['placed'] / n:6.0%} "
+                         f"{b['cpu'] / o['cpu']:7.2f}")
+            print(line, flush=True)
+        print(f"{'':28s}      (warm-up: {seeds} seeds x 2 strategies, {warm['now']:.2f} s"
+              + (f"; before {warm['before']:.2f} s)" if "before" in warm else ")"))
+    print(f"\nsummary over {len(rows)} solves")
+    for label, pick in (("all rooms", rows), ("rooms >= 40 objects", [x for x in rows if x[1] >= 40])):
+        if not pick:
+            continue
+        placed = sum(x[2]["placed"] for x in pick)
+        cpu = sum(x[2]["cpu"] for x in pick)
+        line = (f"  {label:20s} ours: median {statistics.median(x[2]['cpu'] for x in pick):.3f} "
+                f"s/scene, {placed / cpu:.0f} placed objects/s, placed "
+                f"{placed / sum(x[1] for x in pick):.1%}")
+        if before:
+            bp = sum(x[4]["placed"] for x in pick)
+            bc = sum(x[4]["cpu"] for x in pick)
+            line += (f" | before: {bp / bc:.0f} objects/s, placed {bp / sum(x[1] for x in pick):.1%}"
+                     f" | speedup x{(placed / cpu) / (bp / bc):.2f}")
+        print(line)
+    print(f"  rejection: placed {sum(x[3]['placed'] for x in rows) / sum(x[1] for x in rows):.1%}, "
+          f"time ratio rejection/constrained "
+          f"{sum(x[3]['cpu'] for x in rows) / sum(x[2]['cpu'] for x in rows):.2f}")
+
+
+def run_scaling(sizes: list[int], seeds: int, now: Worker, before: Worker | None) -> None:
+    print(f"\nscaling: tables-and-tabletop room, warm, median of {seeds} seeds (CPU s)")
+    print(f"{'objects':>7s} | {'ours s':>8s} {'obj/s':>6s} {'placed':>6s}"
+          + (f" | {'before s':>8s} {'obj/s':>6s} {'placed':>6s} {'speedup':>7s}" if before else ""))
+    t_now, t_before = [], []
+    for n in sizes:
+        doc = tables_room(n).to_dict()
+        res = {"now": [], "before": []}
+        for seed in range(seeds):  # interleaved rounds
+            res["now"].append(now.ask(pag=doc, seed=seed, strategy="constrained", warm=1))
+            if before:
+                res["before"].append(before.ask(pag=doc, seed=seed, strategy="constrained",
+                                                warm=1))
+        med = {k: (statistics.median(r["cpu"] for r in v),
+                   statistics.median(r["placed"] for r in v)) for k, v in res.items() if v}
+        t_now.append(med["now"][0])
+        line = f"{n:7d} | {med['now'][0]:8.3f} {med['now'][1] / med['now'][0]:6.0f} " \
+               f"{med['now'][1] / n:6.0%}"
+        if before:
+            t_before.append(med["before"][0])
+            line += (f" | {med['before'][0]:8.3f} {med['before'][1] / med['before'][0]:6.0f} "
+                     f"{med['before'][1] / n:6.0%} {med['before'][0] / med['now'][0]:7.2f}")
+        print(line, flush=True)
+    if len(sizes) >= 2:
+        line = f"fitted exponent (time ~ objects^k): ours k = {fit_exponent(sizes, t_now):.2f}"
+        if before:
+            line += f", before k = {fit_exponent(sizes, t_before):.2f}"
+        print(line + " (goal: <= 1.2)")
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--templates", type=int, default=6)
+    ap.add_argument("--baseline-rev", metavar="REV",
+                    help="also run git revision REV (e.g. 4607b75) side by side")
+    ap.add_argument("--scaling", default="10,25,50,100,200,400",
+                    help="room sizes of the scaling run (comma-separated; empty: none)")
+    ap.add_argument("--no-rooms", action="store_true", help="only the scaling run")
+    ap.add_argument("--_worker", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
-    pags = rooms(args.templates)
-    print(f"{'room':32s} {'objs':>4s} | {'ours s':>7s} {'obj/s':>6s} {'placed':>6s} {'trials':>6s} | "
-          f"{'rej s':>7s} {'placed':>6s} {'trials':>6s} | {'time ratio':>10s}")
-    rows = []
-    for pag in pags:
-        t0 = time.process_time()
-        for seed in range(args.seeds):  # warm-up: assets into the pool and memory
-            for strategy in ("constrained", "rejection"):
-                run(pag, seed, strategy)
-        warm = (time.process_time() - t0) / (2 * args.seeds)
-        for seed in range(args.seeds):
-            to, so = run(pag, seed, "constrained")
-            tr, sr = run(pag, seed, "rejection")
-            n = len(so.objects)
-            po, pr = len(so.placed), len(sr.placed)
-            tro = sum(o.trials for o in so.placed) / max(po, 1)
-            trr = sum(o.trials for o in sr.placed) / max(pr, 1)
-            rows.append((pag.name, n, to, po, tro, tr, pr, trr))
-            print(f"{pag.name[:32]:32s} {n:4d} | {to:7.3f} {po / to:6.0f} {po / n:6.0%} {tro:6.2f} | "
-                  f"{tr:7.3f} {pr / n:6.0%} {trr:6.2f} | {tr / to:10.2f}")
-        print(f"{'':32s}      (cold solves, assets loaded or generated: {warm:.2f} s on average)")
-    big = [r for r in rows if r[1] >= 40]
-    print("\nsummary over", len(rows), "solves")
-    print(f"  constrained: median {statistics.median(r[2] for r in rows):.3f} s/scene, "
-          f"{sum(r[3] for r in rows) / sum(r[2] for r in rows):.0f} placed objects/s, "
-          f"success {sum(r[3] for r in rows) / sum(r[1] for r in rows):.1%}, "
-          f"{sum(r[4] * r[3] for r in rows) / max(sum(r[3] for r in rows), 1):.2f} trials/placed object")
-    print(f"  rejection:   median {statistics.median(r[5] for r in rows):.3f} s/scene, "
-          f"success {sum(r[6] for r in rows) / sum(r[1] for r in rows):.1%}, "
-          f"{sum(r[7] * r[6] for r in rows) / max(sum(r[6] for r in rows), 1):.2f} trials/placed object")
-    if big:
-        print(f"  rooms with >= 40 objects: median {statistics.median(r[2] for r in big):.3f} s/scene, "
-              f"{sum(r[3] for r in big) / sum(r[2] for r in big):.0f} objects/s")
-    print(f"  time ratio rejection/constrained: {sum(r[5] for r in rows) / sum(r[2] for r in rows):.2f}")
+    if args._worker:
+        serve(handle)
+        return
+    sizes = [int(x) for x in args.scaling.split(",") if x.strip()]
+    with Worker(__file__, src=ROOT / "src") as now:
+        if args.baseline_rev:
+            with revision_tree(args.baseline_rev) as wt, \
+                    Worker(__file__, src=wt / "src", cwd=wt) as before:
+                print(f"before: {args.baseline_rev}, now: this tree")
+                _run(args, sizes, now, before)
+        else:
+            _run(args, sizes, now, None)
+
+
+def _run(args, sizes: list[int], now: Worker, before: Worker | None) -> None:
+    if not args.no_rooms:
+        run_rooms(rooms(args.templates), args.seeds, now, before)
+    if sizes:
+        run_scaling(sizes, args.seeds, now, before)
 
 
 if __name__ == "__main__":

@@ -6,6 +6,8 @@ Regions are shapely geometries in a plane's (u, v) coordinates. A region may be 
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import shapely
 from scipy.spatial import ConvexHull, QhullError
@@ -112,6 +114,12 @@ def minkowski_convex(a: np.ndarray, b: np.ndarray) -> Polygon:
     return Polygon(minkowski_sum_convex(convex_footprint(a), convex_footprint(b)))
 
 
+def _cut(a: tuple, b: tuple, da: float, db: float) -> tuple:
+    """The point where segment ``a``-``b`` crosses a line, from their signed distances."""
+    f = da / (da - db)
+    return (a[0] + (b[0] - a[0]) * f, a[1] + (b[1] - a[1]) * f)
+
+
 def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
     """Erosion of a convex polygon by a footprint: each edge moves in by the footprint's
     support along the edge's outward normal."""
@@ -132,27 +140,29 @@ def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
     n /= np.linalg.norm(n, axis=1, keepdims=True)
     shift = np.max(-neg @ n.T, axis=0)  # support of the footprint (F = -neg) along n
     off = np.einsum("ij,ij->i", c, n) - shift
-    # clip a big box by every half-plane {x : x . n <= off}
+    # clip a big box by every half-plane {x : x . n <= off} (Sutherland-Hodgman on Python
+    # floats: a few dozen vertices, where numpy's per-call overhead would dominate)
     x0, y0, x1, y1 = poly.bounds
-    pts = np.array([[x0, y0], [x1, y0], [x1, y1], [x0, y1]], float)
-    for ni, oi in zip(n, off, strict=True):
-        if len(pts) == 0:
+    pts = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+    for (nx, ny), oi in zip(n.tolist(), off.tolist(), strict=True):
+        if not pts:
             break
-        d = pts @ ni - oi
-        inside = d <= 1e-12
+        d = [px * nx + py * ny - oi for px, py in pts]
         nxt = []
-        for k in range(len(pts)):  # Sutherland-Hodgman against one half-plane
+        for k in range(len(pts)):
             j = k - 1
-            if inside[k]:
-                if not inside[j]:
-                    nxt.append(pts[j] + (pts[k] - pts[j]) * (d[j] / (d[j] - d[k])))
+            dk, dj = d[k], d[j]
+            if dk <= 1e-12:
+                if dj > 1e-12:
+                    nxt.append(_cut(pts[j], pts[k], dj, dk))
                 nxt.append(pts[k])
-            elif inside[j]:
-                nxt.append(pts[j] + (pts[k] - pts[j]) * (d[j] / (d[j] - d[k])))
-        pts = np.array(nxt).reshape(-1, 2)
-        if len(pts):  # drop repeated vertices
-            keep = np.linalg.norm(pts - np.roll(pts, 1, axis=0), axis=1) > 1e-12
-            pts = pts[keep] if keep.any() else pts[:1]
+            elif dj <= 1e-12:
+                nxt.append(_cut(pts[j], pts[k], dj, dk))
+        if nxt:  # drop repeated vertices
+            kept = [q for q, r in zip(nxt, nxt[-1:] + nxt[:-1], strict=True)
+                    if math.hypot(q[0] - r[0], q[1] - r[1]) > 1e-12]
+            nxt = kept if kept else nxt[:1]
+        pts = nxt
     if len(pts) < 3:
         return Polygon()
     out = Polygon(pts)
@@ -260,11 +270,10 @@ def sample_uniform(region: BaseGeometry, rng: np.random.Generator, n: int = 1) -
     parts = list(region.geoms) if hasattr(region, "geoms") else [region]
     areal = [g for g in parts if g.area > 1e-12]
     if areal:
-        tris = []
-        for g in areal:
-            t = shapely.constrained_delaunay_triangles(g)
-            tris.extend(t.geoms)
-        coords = np.array([np.asarray(t.exterior.coords)[:3] for t in tris])
+        # every triangle's ring is 4 coordinates (closed): read them all at once
+        coords = np.concatenate([
+            shapely.get_coordinates(shapely.constrained_delaunay_triangles(g)).reshape(-1, 4, 2)
+            for g in areal])[:, :3]
         e1, e2 = coords[:, 1] - coords[:, 0], coords[:, 2] - coords[:, 0]
         a = np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]) / 2
         k = rng.choice(len(coords), size=n, p=a / a.sum())

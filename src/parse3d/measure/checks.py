@@ -219,14 +219,31 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     points (its base), along the support normal ``n``."""
     from ..geometry.regions import convex_footprint, inside_convex
 
-    pts = world_points(child, settled=settled)
+    # the answer depends only on the normal and the centre of mass in the asset's frame (the
+    # base and the point are then fixed up to a rigid motion of the plane): posed by a turn
+    # about the normal, every candidate of an asset shares one answer
+    T = child.transform(settled)
+    M = T[:3, :3]
+    key = (child.asset.asset_id, *np.round(M.T @ n, 9).tolist(),
+           *np.round(np.linalg.solve(M, com - T[:3, 3]), 9).tolist())
+    got = _STANDS.get(key)
+    if got is not None:
+        return got
+    pts = part_points(child.asset.parts) @ M.T + T[:3, 3]
     h = pts @ n
     base = pts[h <= h.min() + 3e-3]
     u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
     u /= np.linalg.norm(u)
     v = np.cross(n, u)
     hull = convex_footprint(np.c_[base @ u, base @ v])
-    return inside_convex(hull, np.array([com @ u, com @ v]), tol=2e-3)
+    got = inside_convex(hull, np.array([com @ u, com @ v]), tol=2e-3)
+    if len(_STANDS) > 65536:
+        _STANDS.clear()
+    _STANDS[key] = got
+    return got
+
+
+_STANDS: dict[tuple, bool] = {}
 
 
 def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:

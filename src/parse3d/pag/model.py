@@ -247,15 +247,29 @@ class PAG:
 
     def supporter(self, object_id: str) -> Edge | None:
         """The support edge of an object (ON, IN, HANGING_BELOW or SECURED_TO), if any."""
-        for e in self.relations:
-            if e.is_support and e.child.object == object_id:
-                return e
-        return None
+        es = self._by_child().get(object_id)
+        return es[0] if es and es[0].relation in RELATIONS and es[0].is_support else None
 
     def edges_of(self, object_id: str) -> list[Edge]:
         """All edges whose child is ``object_id``, support edge first, then in file order."""
-        es = [e for e in self.relations if e.child.object == object_id]
-        return sorted(es, key=lambda e: 0 if e.is_support else 1)
+        return list(self._by_child().get(object_id, ()))
+
+    def _by_child(self) -> dict[str, list[Edge]]:
+        """Edges per child object, support edges first (a stable sort): an index rebuilt
+        whenever ``relations`` is not the list of edges it was built from."""
+        key = tuple(map(id, self.relations))
+        got = self.__dict__.get("_child_index")
+        if got is None or got[0] != key:
+            idx: dict[str, list[Edge]] = {}
+            for e in self.relations:
+                idx.setdefault(e.child.object, []).append(e)
+            for k, es in idx.items():
+                idx[k] = sorted(es, key=lambda e: 0 if e.relation in RELATIONS
+                                and e.is_support else 1)
+            # the key's ids stay valid: the index holds on to every edge it names
+            got = (key, idx, list(self.relations))
+            self.__dict__["_child_index"] = got
+        return got[1]
 
     def __len__(self) -> int:
         return len(self.objects)

@@ -495,7 +495,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
     overhang = False
     if strategy == "constrained":
-        obst = obstacles(st, sup, exclude, height + EPS)
+        obst = obstacles(st, sup, exclude, height + EPS,
+                         _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0))
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
@@ -517,6 +518,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 # the solid support polygon, decides; only for children no bigger than the
                 # parent object (no wardrobe on a mug)
                 com = (asset_geometry(asset).com * scale) @ R.T
+                obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0))
                 solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
                     if holes else region0
                 region = shapely.affinity.translate(solid, -float(com @ s.u), -float(com @ s.v))
@@ -592,6 +594,14 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             continue
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+def _reach(region, F: np.ndarray, pad: float) -> tuple[float, float, float, float]:
+    """The box of obstacles that :func:`RG.erode` can meet, eroding ``region``'s bounding box
+    padded by ``pad`` (as :func:`RG.bounding_square` does) by the footprint ``F``."""
+    x0, y0, x1, y1 = region.bounds
+    lo, hi = F.min(axis=0), F.max(axis=0)
+    return (x0 - pad + lo[0], y0 - pad + lo[1], x1 + pad + hi[0], y1 + pad + hi[1])
 
 
 #: A child taller than this many times its narrowest footprint width is tippy.

@@ -346,16 +346,32 @@ def height_band(ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeo
     return out
 
 
-def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float) -> list[np.ndarray]:
+def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
+              within: tuple[float, float, float, float] | None = None) -> list[np.ndarray]:
     """Footprints (in the support plane) of placed objects in the slab above the support, and
-    the other parts of the supporting objects (``exclude``) in that slab."""
+    the other parts of the supporting objects (``exclude``) in that slab.
+
+    ``within`` is a box ``(a0, b0, a1, b1)`` in plane coordinates: footprints that cannot meet
+    it are left out (on horizontal supports, found through the state's spatial index; a
+    footprint whose bounding box meets the box is always kept, so :func:`~parse3d.geometry.
+    regions.erode` given the region inside that box sees the same obstacles as without it).
+    """
     out = []
     n = sup.surface.normal
     horizontal = abs(n[2]) > 0.999
     if horizontal:  # footprints precomputed in world xy; the slab test is a z-range test
         sz = float(sup.surface.origin[2])
+        if within is None:
+            ids = list(st.hulls)
+        else:  # a conservative prefilter by the index; the exact tests follow
+            s = sup.surface
+            a0, b0, a1, b1 = within
+            c = s.origin + (a0 + a1) / 2 * s.u + (b0 + b1) / 2 * s.v
+            r = 1.01 * float(np.hypot(a1 - a0, b1 - b0)) / 2 + 0.01
+            pad = 1.01 * height + 0.01
+            ids = st.near(c[:2], r, sz - pad, sz + pad)
         keep = []
-        for oid in st.hulls:
+        for oid in ids:
             if oid in exclude:
                 continue
             z0, z1 = st.zr[oid]

@@ -36,6 +36,9 @@ class SolveState:
         World z range per placed object.
     pieces : dict
         World convex pieces per placed object, built on first use.
+
+    The placed objects are also indexed as arrays (in the order of ``hulls``) for queries
+    that would otherwise loop over every placed object: see :meth:`near`.
     """
 
     pag: PAG
@@ -45,6 +48,9 @@ class SolveState:
     xy: dict[str, np.ndarray] = field(default_factory=dict)
     zr: dict[str, tuple[float, float]] = field(default_factory=dict)
     pieces: dict[str, list] = field(default_factory=dict)
+    _ids: list[str] = field(default_factory=list, repr=False)
+    _rows: list[tuple[float, ...]] = field(default_factory=list, repr=False)
+    _table: np.ndarray | None = field(default=None, repr=False)
 
     def add(self, obj: PlacedObject, body: Body) -> None:
         """Register a placed object (its pose is final until :meth:`remove`)."""
@@ -53,6 +59,15 @@ class SolveState:
         self.xy[obj.id] = RG.convex_footprint(self.hulls[obj.id][:, :2])
         self.zr[obj.id] = (float(self.hulls[obj.id][:, 2].min()),
                            float(self.hulls[obj.id][:, 2].max()))
+        lo, hi = self.xy[obj.id].min(axis=0), self.xy[obj.id].max(axis=0)
+        c, r = (lo + hi) / 2, float(np.linalg.norm(hi - lo)) / 2
+        row = (float(c[0]), float(c[1]), r, *self.zr[obj.id])
+        if obj.id in self._ids:  # re-registered: it keeps its place, as in the dicts
+            self._rows[self._ids.index(obj.id)] = row
+        else:
+            self._ids.append(obj.id)
+            self._rows.append(row)
+        self._table = None
         body.move(obj.rotation, obj.position)
         self.world.add(obj.id, body)
 
@@ -60,7 +75,28 @@ class SolveState:
         """Take a placed object out of the collision world and the geometry index."""
         for d in (self.hulls, self.xy, self.zr, self.pieces):
             d.pop(oid, None)
+        if oid in self._ids:
+            k = self._ids.index(oid)
+            del self._ids[k], self._rows[k]
+            self._table = None
         self.world.remove(oid)
+
+    def near(self, center: np.ndarray, radius: float, z0: float, z1: float) -> list[str]:
+        """Placed objects, in the order of ``hulls``, whose world footprint may come within
+        ``radius`` of the world xy point ``center`` and whose z range overlaps ``(z0, z1)``.
+
+        Conservative: every object that does is listed (some that do not may be). Each
+        footprint is bounded by the disc around its bounding box's centre; the disc is
+        widened by sqrt(2) so that the box of the footprint in any rotated frame is covered.
+        """
+        if not self._ids:
+            return []
+        if self._table is None:
+            self._table = np.array(self._rows, float).reshape(-1, 5)
+        T = self._table
+        d = np.hypot(T[:, 0] - center[0], T[:, 1] - center[1])
+        ok = (d <= radius + np.sqrt(2.0) * T[:, 2] + 1e-6) & (T[:, 4] >= z0) & (T[:, 3] <= z1)
+        return [self._ids[i] for i in np.flatnonzero(ok)]
 
     def world_pieces(self, oid: str) -> list[tuple[str, np.ndarray]]:
         """(part name, world vertices) of every convex piece of a placed object (cached)."""
