@@ -18,21 +18,69 @@ from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InfeasibleError, InputError, P
 
 __all__ = ["app", "main"]
 
+# Command modules, in the order their commands appear in --help.
+_MODULES = ("validate", "pag", "solve", "settle", "render", "export", "assets", "template", "dataset",
+            "vlm", "layout", "serve", "demo")
+
+#: The commands each module registers, so that only the module of the command being run is
+#: imported (start-up time; tests/test_cli_startup.py checks this table against ``register``).
+#: A module of ``_MODULES`` missing here is imported and registered eagerly.
+_LAZY = {"validate": ("validate",), "pag": ("pag",), "solve": ("solve", "generate"),
+         "settle": ("settle",), "render": ("render",), "export": ("export",),
+         "assets": ("assets",), "template": ("template",), "dataset": ("dataset",),
+         "vlm": ("vlm",), "layout": ("layout",), "serve": ("serve",), "demo": ("demo",)}
+
+_EAGER: dict[str, tuple[str, ...]] = {}  # module -> the commands it registered at start-up
+_LOADED: dict[str, dict[str, typer.core.TyperGroup]] = {}  # module -> its click commands
+
+
+def _module_commands(module: str) -> dict:
+    """Import one command module and build its click commands (once per process)."""
+    if module not in _LOADED:
+        sub = typer.Typer(add_completion=False, pretty_exceptions_enable=False)
+        importlib.import_module(f"{__name__}.{module}").register(sub)
+        _LOADED[module] = dict(typer.main.get_group(sub).commands)
+    return _LOADED[module]
+
+
+class _LazyGroup(typer.core.TyperGroup):
+    """The root command group: a command's module is imported when the command is run or
+    listed (``parse3d --help`` lists them all, so it imports them all)."""
+
+    def list_commands(self, ctx) -> list[str]:
+        names: list[str] = []
+        for m in _MODULES:
+            names.extend(_LAZY[m] if m in _LAZY else _EAGER.get(m, ()))
+        return list(dict.fromkeys(names + [n for n in self.commands if n not in names]))
+
+    def get_command(self, ctx, cmd_name: str):
+        cmd = self.commands.get(cmd_name)
+        if cmd is not None:
+            return cmd
+        for m, names in _LAZY.items():
+            if cmd_name in names and m in _MODULES and importlib.util.find_spec(
+                    f"{__name__}.{m}") is not None:
+                return _module_commands(m).get(cmd_name)
+        return None
+
+
 app = typer.Typer(
     name="parse3d",
     help="Part-aware relational spatial modelling: PAG files to settled 3D scenes.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    cls=_LazyGroup,
 )
 
-# Command modules, in the order their commands appear in --help.
-_MODULES = ("validate", "pag", "solve", "settle", "render", "export", "assets", "template", "dataset",
-            "vlm", "layout", "serve", "demo")
-
 for _name in _MODULES:
-    if importlib.util.find_spec(f"{__name__}.{_name}") is not None:
+    if _name not in _LAZY and importlib.util.find_spec(f"{__name__}.{_name}") is not None:
+        _before = ({c.name for c in app.registered_commands}
+                   | {g.name for g in app.registered_groups})
         importlib.import_module(f"{__name__}.{_name}").register(app)
+        _EAGER[_name] = tuple(n for n in [*(c.name for c in app.registered_commands),
+                                          *(g.name for g in app.registered_groups)]
+                              if n not in _before)
 
 
 def _version(value: bool) -> None:
