@@ -43,25 +43,80 @@ def _module_commands(module: str) -> dict:
     return _LOADED[module]
 
 
+def _lazy_module(cmd_name: str) -> str | None:
+    """The module of ``_LAZY`` that registers ``cmd_name`` (None: not a lazy command)."""
+    for m, names in _LAZY.items():
+        if cmd_name in names and m in _MODULES and importlib.util.find_spec(
+                f"{__name__}.{m}") is not None:
+            return m
+    return None
+
+
+class _LazyCommands(dict):
+    """The root group's commands: looking one up imports its module; listing them all (help,
+    completion, tests walking the tree) imports every module."""
+
+    def _load(self, name) -> None:
+        if isinstance(name, str) and not dict.__contains__(self, name):
+            m = _lazy_module(name)
+            if m is not None:
+                for k, v in _module_commands(m).items():
+                    dict.setdefault(self, k, v)
+
+    def _load_all(self) -> None:
+        for m in _MODULES:
+            for name in _LAZY.get(m, ()):
+                self._load(name)
+
+    def get(self, name, default=None):
+        self._load(name)
+        return dict.get(self, name, default)
+
+    def __getitem__(self, name):
+        self._load(name)
+        return dict.__getitem__(self, name)
+
+    def __contains__(self, name) -> bool:
+        return dict.__contains__(self, name) or _lazy_module(name) is not None
+
+    def __iter__(self):
+        self._load_all()
+        return dict.__iter__(self)
+
+    def __len__(self) -> int:
+        self._load_all()
+        return dict.__len__(self)
+
+    def keys(self):
+        self._load_all()
+        return dict.keys(self)
+
+    def values(self):
+        self._load_all()
+        return dict.values(self)
+
+    def items(self):
+        self._load_all()
+        return dict.items(self)
+
+
 class _LazyGroup(typer.core.TyperGroup):
     """The root command group: a command's module is imported when the command is run or
     listed (``parse3d --help`` lists them all, so it imports them all)."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        self.commands = _LazyCommands(self.commands)
 
     def list_commands(self, ctx) -> list[str]:
         names: list[str] = []
         for m in _MODULES:
             names.extend(_LAZY[m] if m in _LAZY else _EAGER.get(m, ()))
-        return list(dict.fromkeys(names + [n for n in self.commands if n not in names]))
+        return list(dict.fromkeys(names + [n for n in dict.keys(self.commands)
+                                           if n not in names]))
 
     def get_command(self, ctx, cmd_name: str):
-        cmd = self.commands.get(cmd_name)
-        if cmd is not None:
-            return cmd
-        for m, names in _LAZY.items():
-            if cmd_name in names and m in _MODULES and importlib.util.find_spec(
-                    f"{__name__}.{m}") is not None:
-                return _module_commands(m).get(cmd_name)
-        return None
+        return self.commands.get(cmd_name)
 
 
 app = typer.Typer(
