@@ -19,9 +19,9 @@ def _load(file: Path, check_vocabulary: bool):
 
     vocab = None
     if check_vocabulary:
-        from ..assets.registry import vocabulary
+        from ._vocab import cli_vocabulary
 
-        vocab = vocabulary()
+        vocab = cli_vocabulary()
     return load_pag(file, vocabulary=vocab)
 
 

@@ -13,9 +13,9 @@ __all__ = ["register", "validate_files"]
 
 
 def _vocabulary():
-    from ..assets.registry import vocabulary
+    from ._vocab import cli_vocabulary
 
-    return vocabulary()
+    return cli_vocabulary()
 
 
 def validate_files(files: list[Path], *, vocabulary=None) -> list[tuple[str, list[Problem]]]:

@@ -27,12 +27,14 @@ from __future__ import annotations
 
 import heapq
 from collections import defaultdict
-
-import networkx as nx
+from typing import TYPE_CHECKING
 
 from ..errors import GraphError, Problem
 from .model import PAG
 from .refs import is_room_element
+
+if TYPE_CHECKING:  # networkx costs a large share of a light command's start-up
+    import networkx as nx
 
 __all__ = ["support_tree", "support_depth", "assembly_order", "descendants", "dependency_graph"]
 
@@ -168,6 +170,8 @@ def dependency_graph(pag: PAG) -> nx.DiGraph:
     file order, and ``support``: whether one of them is a support relation. So
     ``nx.topological_sort`` gives a valid assembly order and ``nx.descendants`` the dependants.
     """
+    import networkx as nx
+
     g = nx.DiGraph(name=pag.name)
     depth = support_depth(pag)
     for oid, node in pag.objects.items():

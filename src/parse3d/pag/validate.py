@@ -535,24 +535,55 @@ def _param_problem(p: Param, value: Any) -> str | None:
     return None
 
 
-def _self_crossing(pts: list[tuple[float, float]]) -> tuple[int, int] | None:
-    """The first pair of non-adjacent walls that intersect, else None."""
-    from shapely.geometry import LinearRing, LineString
+def _orient(a: tuple[float, float], b: tuple[float, float], c: tuple[float, float]) -> int:
+    """Sign of the turn a -> b -> c: 1 left, -1 right, 0 collinear (exact)."""
+    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    mag = max(abs(b[0] - a[0]), abs(b[1] - a[1]), abs(c[0] - a[0]), abs(c[1] - a[1]))
+    if abs(d) <= 1e-9 * mag * mag:  # near zero: decide in exact rational arithmetic
+        from fractions import Fraction as F
 
+        d = ((F(b[0]) - F(a[0])) * (F(c[1]) - F(a[1]))
+             - (F(b[1]) - F(a[1])) * (F(c[0]) - F(a[0])))
+    return (d > 0) - (d < 0)
+
+
+def _on_segment(p, q, r) -> bool:
+    """r, collinear with segment pq, lies on it (ends included)."""
+    return min(p[0], q[0]) <= r[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= r[1] <= max(p[1], q[1])
+
+
+def _segments_meet(p1, p2, q1, q2) -> bool:
+    """Closed segments p1p2 and q1q2 share at least one point."""
+    o1, o2 = _orient(p1, p2, q1), _orient(p1, p2, q2)
+    o3, o4 = _orient(q1, q2, p1), _orient(q1, q2, p2)
+    if o1 != o2 and o3 != o4 and 0 not in (o1, o2, o3, o4):
+        return True
+    return ((o1 == 0 and _on_segment(p1, p2, q1)) or (o2 == 0 and _on_segment(p1, p2, q2))
+            or (o3 == 0 and _on_segment(q1, q2, p1)) or (o4 == 0 and _on_segment(q1, q2, p2)))
+
+
+def _self_crossing(pts: list[tuple[float, float]]) -> tuple[int, int] | None:
+    """The first pair of walls that meet other than at their shared corner, else None.
+
+    Non-adjacent walls may not touch at all; adjacent walls (sharing a corner) may not fold
+    back along each other. Exact predicates in plain Python (no geometry library to import,
+    which would dominate ``parse3d validate``'s start-up).
+    """
     n = len(pts)
-    if LinearRing(pts).is_simple:
-        return None
-    segs = [LineString([pts[i], pts[(i + 1) % n]]) for i in range(n)]
+    segs = [(tuple(pts[i]), tuple(pts[(i + 1) % n])) for i in range(n)]
     for a in range(n):
         for b in range(a + 1, n):
-            adjacent = b == a + 1 or (a == 0 and b == n - 1)
-            inter = segs[a].intersection(segs[b])
-            if inter.is_empty:
+            if b == a + 1 or (a == 0 and b == n - 1):
+                # the shared corner, and the far ends of the two walls
+                (s0, s1), (t0, t1) = segs[a], segs[b]
+                q, u, v = (s1, s0, t1) if b == a + 1 else (s0, s1, t0)
+                if _orient(q, u, v) == 0 and ((u[0] - q[0]) * (v[0] - q[0])
+                                              + (u[1] - q[1]) * (v[1] - q[1])) > 0:
+                    return a, b
                 continue
-            if adjacent and inter.geom_type == "Point":
-                continue
-            return a, b
-    return 0, 1
+            if _segments_meet(*segs[a], *segs[b]):
+                return a, b
+    return None
 
 
 def _cycles(nodes: list[str], edges: list[tuple[str, str, int]]):

@@ -17,7 +17,11 @@ A piece is a convex polytope ``{x : n_k . x <= d_k for every face k}``.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
+import json
+import os
+import zipfile
 from collections import OrderedDict
 from dataclasses import dataclass
 
@@ -232,12 +236,18 @@ def _hull(points: np.ndarray) -> _Hull | None:
     return _Hull(pts[used], tris, planes[np.sort(keep)], float(h.area), float(h.volume))
 
 
+#: Version of the on-disk collision data; part of every key (bump when ``_hull`` changes).
+DISK_FORMAT = "parse3d-collision/1"
+
+
 def _fingerprint(asset: Asset) -> str:
     h = hashlib.blake2b(digest_size=12)
+    h.update(DISK_FORMAT.encode())
     h.update(asset.asset_id.encode())
     h.update(np.float64(asset.density).tobytes())
     for p in asset.parts:
         h.update(p.name.encode())
+        h.update(p.material.name.encode())
         for pc in p.pieces:
             h.update(np.ascontiguousarray(pc.vertices, np.float64).tobytes())
     return h.hexdigest()
@@ -248,15 +258,65 @@ _CACHE_SIZE = 4096
 
 
 def clear_cache() -> None:
-    """Forget the collision data cached for assets in this process."""
+    """Forget the collision data cached for assets in this process (the disk copy stays)."""
     _CACHE.clear()
     _SHELL_CACHE.clear()
 
 
+def _disk_dir():
+    """``$PARSE3D_CACHE/collision``, or None when the cache setting is unusable."""
+    from ..assets.library import cache_dir
+    from ..errors import InputError
+
+    try:
+        return cache_dir() / "collision"
+    except InputError:
+        return None
+
+
+def _disk_read(key: str, asset_id: str) -> AssetCollision | None:
+    d = _disk_dir()
+    if d is None:
+        return None
+    path = d / f"{key}.npz"
+    try:
+        with np.load(path, allow_pickle=False) as z:
+            meta = json.loads(bytes(z["meta"]).decode())
+            if meta.get("format") != DISK_FORMAT or meta.get("asset_id") != asset_id:
+                return None
+            cs = ConvexSet(tuple(meta["parts"]), z["vertices"], z["vert_index"], z["triangles"],
+                           z["tri_index"], z["planes"], z["areas"], z["volumes"], z["bounds"])
+            return AssetCollision(asset_id, cs, float(meta["density"]), tuple(meta["materials"]))
+    except (OSError, ValueError, KeyError, TypeError, zipfile.BadZipFile):
+        return None  # absent or damaged: computed again
+
+
+def _disk_write(key: str, data: AssetCollision) -> None:
+    d = _disk_dir()
+    if d is None:
+        return
+    cs = data.pieces
+    meta = {"format": DISK_FORMAT, "asset_id": data.asset_id, "density": data.density,
+            "parts": list(cs.parts), "materials": list(data.materials)}
+    tmp = d / f".{key}.{os.getpid()}.tmp.npz"
+    try:
+        d.mkdir(parents=True, exist_ok=True)
+        np.savez(tmp, meta=np.frombuffer(json.dumps(meta).encode(), np.uint8),
+                 vertices=cs.vertices, vert_index=cs.vert_index, triangles=cs.triangles,
+                 tri_index=cs.tri_index, planes=cs.planes, areas=cs.areas, volumes=cs.volumes,
+                 bounds=cs.bounds)
+        os.replace(tmp, d / f"{key}.npz")
+    except OSError:  # a read-only or full cache only costs the hulls again
+        with contextlib.suppress(OSError):
+            tmp.unlink()
+
+
 def asset_collision(asset: Asset) -> AssetCollision:
-    """The collision data of ``asset`` (computed once per asset content in this process).
+    """The collision data of ``asset`` (computed once per asset content).
 
     Parts without pieces contribute nothing; degenerate (zero-volume) pieces are dropped.
+    The result is kept in this process and on disk (``$PARSE3D_CACHE/collision``, keyed by
+    the asset's content), so fresh dataset workers do not compute the hulls again.
 
     Raises
     ------
@@ -268,17 +328,21 @@ def asset_collision(asset: Asset) -> AssetCollision:
     if hit is not None:
         _CACHE.move_to_end(key)
         return hit
-    parts, hulls, mats = [], [], []
-    for p in asset.parts:
-        for pc in p.pieces:
-            h = _hull(np.asarray(pc.vertices))
-            if h is not None:
-                parts.append(p.name)
-                hulls.append(h)
-                mats.append(p.material.name)
-    if not hulls:
-        raise ValueError(f"asset {asset.asset_id} has no convex collision pieces")
-    data = AssetCollision(asset.asset_id, _pack(parts, hulls), float(asset.density), tuple(mats))
+    data = _disk_read(key, asset.asset_id)
+    if data is None:
+        parts, hulls, mats = [], [], []
+        for p in asset.parts:
+            for pc in p.pieces:
+                h = _hull(np.asarray(pc.vertices))
+                if h is not None:
+                    parts.append(p.name)
+                    hulls.append(h)
+                    mats.append(p.material.name)
+        if not hulls:
+            raise ValueError(f"asset {asset.asset_id} has no convex collision pieces")
+        data = AssetCollision(asset.asset_id, _pack(parts, hulls), float(asset.density),
+                              tuple(mats))
+        _disk_write(key, data)
     _CACHE[key] = data
     if len(_CACHE) > _CACHE_SIZE:
         _CACHE.popitem(last=False)
