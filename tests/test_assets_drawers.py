@@ -1,0 +1,72 @@
+"""Objects IN a drawer, assets posed open, and the contract's convexity check."""
+
+from __future__ import annotations
+
+import numpy as np
+import trimesh
+
+from parse3d.assets import registry
+from parse3d.assets.contract import _is_convex
+from parse3d.pag import PAG, Room
+from parse3d.solver import solve
+from parse3d.solver.library import AssetLibrary
+
+
+def test_drawer_floor_is_an_internal_surface_of_its_box_and_front() -> None:
+    a = registry.generate("dresser", 0)
+    fronts = [p.name for p in a.parts_by_label("drawer")]
+    by_part = {s.part: s for s in a.internal}
+    for f in fronts:
+        box = a.part(f"{f}_box")
+        s = by_part[f]
+        assert s.surface is by_part[box.name].surface
+        # the floor lies inside the box, below its walls' tops, with room above it
+        lo, hi = box.bounds
+        assert lo[2] < s.surface.origin[2] < hi[2] - 0.04
+        assert s.clearance >= 0.04
+
+
+def test_remote_in_a_closed_drawer() -> None:
+    pag = PAG("drawer", Room("bedroom", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.6))
+    pag.add("dresser", "dresser")
+    pag.relate("dresser", "ON", "floor")
+    pag.add("remote", "remote_control")
+    pag.relate("remote", "IN", "dresser:drawer#1")
+    scene = solve(pag, seed=0, library=AssetLibrary(per_category=2))
+    assert scene.ok, scene.objects["remote"].reason
+    remote, dresser = scene.objects["remote"], scene.objects["dresser"]
+    front = dresser.asset.parts_by_label("drawer")[1]
+    assert remote.support.startswith(f"dresser:{front.name}")
+    # it lies inside the drawer's box (closed), within its walls and above its floor
+    box = dresser.part_mesh(dresser.asset.part(f"{front.name}_box"), settled=False)
+    rb = remote.world_bounds(settled=False)
+    lo, hi = box.bounds
+    assert (rb[0, :2] >= lo[:2] - 1e-3).all() and (rb[1, :2] <= hi[:2] + 1e-3).all()
+    assert lo[2] < rb[0, 2] < hi[2]
+
+
+def test_posed_asset_opens_doors_and_drawers() -> None:
+    a = registry.generate("dresser", 0)
+    opened = a.posed(ratio=1.0)
+    assert a.posed() is a and a.posed(ratio=0.0) is a
+    slide = next(j for j in a.joints if j.type == "prismatic" and not j.is_mount)
+    box = slide.child_part
+    moved = opened.part(box).bounds - a.part(box).bounds
+    assert np.allclose(moved, [slide.limits[1] * np.asarray(slide.axis)] * 2, atol=1e-9)
+    # the front and the pull mounted on the box come along; the body stays
+    front = next(j.child_part for j in a.joints if j.is_mount and j.parent_part == box)
+    assert np.allclose(opened.part(front).bounds - a.part(front).bounds, moved)
+    assert opened.part("body") is a.part("body")
+    assert a.part(box).bounds[1, 1] < opened.part(box).bounds[1, 1]  # the source is untouched
+
+
+def test_convexity_check_matches_trimesh() -> None:
+    box = trimesh.creation.box((0.3, 0.2, 0.1))
+    ring = trimesh.creation.annulus(0.05, 0.1, 0.02)
+    assert _is_convex(box) and box.is_convex
+    assert not _is_convex(ring) and not ring.is_convex
+    flipped = box.copy()
+    flipped.faces = flipped.faces[:, ::-1]
+    assert not _is_convex(flipped)
+    open_box = trimesh.Trimesh(box.vertices, box.faces[:-1], process=False)
+    assert not _is_convex(open_box)
