@@ -70,3 +70,18 @@ def test_convexity_check_matches_trimesh() -> None:
     assert not _is_convex(flipped)
     open_box = trimesh.Trimesh(box.vertices, box.faces[:-1], process=False)
     assert not _is_convex(open_box)
+
+
+def test_dataset_stats_report_the_largest_category_share() -> None:
+    from parse3d.datagen.stats import DatasetStats
+
+    row = {"placed": 3, "objects": 3, "density": 0.5, "contacts": 10, "room_type": "bedroom"}
+    rows = [dict(row, categories=["book", "book", "mug"], assets=["book-a-0", "book-a-1", "mug-b-0"],
+                 parts=[4, 4, 2]),
+            dict(row, categories=["book", "bed", "lamp"], assets=["book-a-0", "bed-c-0", "lamp-d-0"],
+                 parts=[4, 12, 5])]
+    st = DatasetStats("tiny", {"settle": True}, {"ok": 2}, rows)
+    s = st.table()["summary"]
+    assert (s["largest_category"], s["largest_category_share"], s["categories"]) == ("book", 0.5, 4)
+    assert s["avg_parts_per_asset"] == 5.4  # (4 + 4 + 2 + 12 + 5) / 5 distinct assets
+    assert "| largest category (share of objects) | book (50.0%) |" in st.markdown()
