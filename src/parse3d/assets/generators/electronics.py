@@ -209,7 +209,7 @@ def _driver(k: int, r: float, x: float, z: float, y: float, tweeter: bool) -> Pa
     return make_part(f"driver_{k}", "driver", [rim, cap], dark)
 
 
-@register("speaker", parts=("body",), extra_parts=("driver", "plinth", "foot"), size_range=(0.2, 1.2),
+@register("speaker", parts=("body",), extra_parts=("driver", "plinth"), size_range=(0.2, 1.2),
           density=500, variants=("bookshelf", "floor_standing"))
 def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng) if rng.random() < 0.5 else _housing(rng)
@@ -224,13 +224,6 @@ def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
     if z0 > 0:
         plinth = S.box((w + 0.04, d + 0.04, z0), center=(0, 0, z0 / 2), bevel=0.004)
         parts.append(make_part("plinth", "plinth", plinth, M.solid((0.1, 0.1, 0.1), "plastic")))
-    # rubber pads under a bookshelf speaker, floor spikes under a plinth
-    fw, fd = (w, d) if z0 == 0 else (w + 0.04, d + 0.04)
-    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
-        c = (sx * (fw / 2 - 0.025), sy * (fd / 2 - 0.025), 0.0)
-        foot = (S.cylinder(0.012, 0.005, center=(c[0], c[1], -0.0025), sections=12) if z0 == 0 else
-                S.frustum(0.002, 0.008, 0.018, center=(c[0], c[1], -0.018), sections=10))
-        parts.append(make_part(f"foot_{k}", "foot", foot, M.solid((0.1, 0.1, 0.1), "plastic" if z0 == 0 else "metal")))
     y = d / 2
     r_tw = w * 0.12
     z_tw = h - max(0.05, w * 0.3)

@@ -208,7 +208,7 @@ def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     return _straight(rng, M.metal(rng), shade_mat)
 
 
-@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket"),
+@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial"),
           size_range=(0.3, 0.8), density=900, variants=("vase", "column", "candlestick"),
           placement="surface")
 def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -240,9 +240,19 @@ def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     h_s = r_s * rng.uniform(0.9, 1.3)
     z_s = top + 0.05 - h_s * 0.45
     shade_mat = shade_material(rng)
+    # the turn switch on the socket, the wire harp rising from it to the top of the shade,
+    # and the finial screwed onto the harp's saddle above the shade
+    z_top = z_s + h_s
+    switch = S.cylinder(0.005, 0.014, center=(0.017 + 0.007, 0, top + 0.025), axis=(1, 0, 0), sections=8)
+    harp = [S.tube([[sx * 0.018, 0, top + 0.012], [sx * 0.05, 0, top + 0.09],
+                    [sx * 0.012, 0, z_top - 0.004], [0, 0, z_top - 0.004]], 0.0025, sections=6)
+            for sx in (-1, 1)]
+    finial = S.ellipsoid((0.012, 0.012, 0.015), center=(0, 0, z_top + 0.012), subdivisions=1)
     return [make_part("base", "base", base, base_mat), make_part("stem", "stem", stem, metal),
             _socket(0, 0, top, 0.04, metal), _bulb(0, 0, top + 0.04, 0.026),
-            _drum_shade(rng, r_s, h_s, z_s, shade_mat)]
+            _drum_shade(rng, r_s, h_s, z_s, shade_mat),
+            make_part("switch", "switch", switch, metal), make_part("harp", "harp", harp, metal),
+            make_part("finial", "finial", finial, metal)]
 
 
 @register("pendant_lamp", parts=("cord", "shade"), extra_parts=("canopy", "socket", "bulb"),
