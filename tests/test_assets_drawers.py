@@ -85,3 +85,36 @@ def test_dataset_stats_report_the_largest_category_share() -> None:
     assert (s["largest_category"], s["largest_category_share"], s["categories"]) == ("book", 0.5, 4)
     assert s["avg_parts_per_asset"] == 5.4  # (4 + 4 + 2 + 12 + 5) / 5 distinct assets
     assert "| largest category (share of objects) | book (50.0%) |" in st.markdown()
+
+
+def test_render_open_poses_drawers(tmp_path) -> None:
+    import json
+
+    from PIL import Image
+    from typer.testing import CliRunner
+
+    from parse3d.cli import app
+    from parse3d.scene.io import write_scene
+
+    pag = PAG("open", Room("bedroom", ((0, 0), (2.5, 0), (2.5, 2.5), (0, 2.5)), 2.5))
+    pag.add("dresser", "dresser")
+    pag.relate("dresser", "ON", "floor")
+    scene = solve(pag, seed=0, library=AssetLibrary(per_category=1))
+    assert scene.ok
+    depth, cams = {}, {}
+    for name, extra in (("closed", []), ("open", ["--open", "1"])):
+        d = tmp_path / name
+        write_scene(scene, d, glb=False)
+        # the corner overview: one camera, whatever the pose of the drawers
+        res = CliRunner().invoke(app, ["render", str(d), "--views", "0", "--overview", "--size",
+                                       "96x72", "--json", *extra])
+        assert res.exit_code == 0, res.output
+        assert json.loads(res.output)["views"] == 1
+        depth[name] = np.asarray(Image.open(d / "depth_0.png"), float)
+        cam = json.loads((d / "views.json").read_text())["views"][0]["camera"]
+        cams[name] = {k: v for k, v in cam.items() if k != "meta"}
+    # the same camera sees the drawers pulled out: nearer surfaces where they stand out
+    assert cams["open"] == cams["closed"]
+    changed = np.abs(depth["open"] - depth["closed"]) > 20  # millimetres
+    assert changed.mean() > 0.01
+    assert (depth["open"][changed] < depth["closed"][changed]).mean() > 0.5
