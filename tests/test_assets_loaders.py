@@ -192,6 +192,28 @@ def test_partnet_mobility_cabinet(tmp_path):
     assert frame.surfaces["top"].source == "mesh"
 
 
+def test_partnet_mobility_keeps_joints(tmp_path):
+    folder = write_partnet_cabinet(tmp_path / "cab")
+    a = load_partnet_mobility(folder, category="test_cabinet", mapping=CABINET_MAP,
+                              size_range=(0.5, 1.0), cache_dir=tmp_path / "coacd")
+    labels = ("frame", "door", "handle")
+    assert check_asset(a, vocabulary=labels, required=labels, size_range=(0.5, 1.0)) == []
+    (hinge,) = [j for j in a.joints if not j.is_mount]
+    assert (hinge.name, hinge.type, hinge.parent_part, hinge.child_part) == ("joint_1", "revolute", "frame", "door")
+    assert hinge.limits == pytest.approx((0.0, 1.57))
+    # the hinge line is vertical, along the door's left back edge (door hinged on the left)
+    assert abs(hinge.axis[2]) == pytest.approx(1.0)
+    door, handle = a.part("door"), a.part("handle")
+    assert hinge.origin[0] == pytest.approx(door.bounds[0, 0], abs=1e-6)
+    assert hinge.origin[1] == pytest.approx(door.bounds[0, 1], abs=0.011)
+    assert [(j.parent_part, j.child_part) for j in a.joints if j.is_mount] == [("door", "handle")]
+    # opened, the door swings out to the front and takes its handle along
+    opened = a.posed(ratio=1.0)
+    assert opened.part("door").bounds[1, 1] > door.bounds[1, 1] + 0.4
+    assert opened.part("handle").mesh.centroid[1] > handle.mesh.centroid[1] + 0.2
+    assert opened.part("frame") is a.part("frame")
+
+
 def test_partnet_errors(tmp_path):
     with pytest.raises(InputError, match="no mobility.urdf"):
         load_partnet_mobility(tmp_path, category="x")

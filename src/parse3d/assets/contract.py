@@ -31,6 +31,30 @@ VOLUME_TOLERANCE = 0.10
 ATTACH_TOLERANCE = 0.015
 
 
+def _is_convex(mesh) -> bool:
+    """Whether a piece is a closed, consistently wound convex solid: every edge is used once in
+    each direction, and no vertex lies in front of any face's plane (beyond 1e-6 of the piece's
+    size). The same verdict as ``trimesh.Trimesh.is_convex`` for a collision piece, without
+    its graph work."""
+    v = np.asarray(mesh.vertices, float)
+    f = np.asarray(mesh.faces, np.int64)
+    if len(f) < 4:
+        return False
+    e = f[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    key = e[:, 0] * len(v) + e[:, 1]
+    rev = e[:, 1] * len(v) + e[:, 0]
+    if len(np.unique(key)) != len(key) or not np.isin(rev, key).all():
+        return False
+    tri = v[f]
+    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    ln = np.linalg.norm(n, axis=1)
+    ok = ln > 1e-15
+    n = n[ok] / ln[ok, None]
+    d = np.einsum("ij,ij->i", n, tri[ok, 0])
+    scale = max(float(np.ptp(v, axis=0).max()), 1e-9)
+    return bool((v @ n.T - d <= 1e-6 * max(scale, 1.0) + 1e-9).all())
+
+
 def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
                 required: tuple[str, ...] | None = None,
                 size_range: tuple[float, float] | None = None) -> list[str]:
@@ -98,7 +122,7 @@ def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
         margin = 0.003 + 0.02 * float(np.linalg.norm(pb[1] - pb[0]))
         vol = 0.0
         for i, pc in enumerate(p.pieces):
-            if not pc.is_convex:
+            if not _is_convex(pc):
                 problems.append(f"part {p.name!r} piece {i} is not convex")
             if (pc.bounds[0] < pb[0] - margin).any() or (pc.bounds[1] > pb[1] + margin).any():
                 problems.append(f"part {p.name!r} piece {i} lies outside the part")

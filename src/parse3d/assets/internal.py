@@ -16,7 +16,7 @@ import numpy as np
 import shapely
 import trimesh
 
-from ..geometry.surfaces import SURFACE_BASIS, Surface, plane_polygon
+from ..geometry.surfaces import SURFACE_BASIS, Surface, component_roots, plane_polygon
 
 __all__ = ["find_internal_surfaces", "MIN_INTERNAL_AREA"]
 
@@ -78,17 +78,29 @@ def find_internal_surfaces(asset) -> list:
     """
     from .model import InternalSurface
 
-    whole = asset.mesh()
-    if len(whole.faces) == 0:
+    if not any(len(p.mesh.faces) for p in asset.parts):
         return []
-    caster = _intersector(whole)
-    normals = whole.face_normals
-    planes = [(pc.face_normals, np.einsum("ij,ij->i", pc.face_normals, pc.triangles[:, 0]))
-              for p in asset.parts for pc in p.pieces]
-    top_z = float(whole.bounds[1, 2])
-    reach = float(np.linalg.norm(whole.extents)) * 2 + 0.1
+    bounds = asset.bounds
+    top_z = float(bounds[1, 2])
+    reach = float(np.linalg.norm(bounds[1] - bounds[0])) * 2 + 0.1
     u, v = (np.array(a) for a in SURFACE_BASIS["top"])
     found = []
+    ray: list = []  # (caster, face normals) of the whole asset, built when a patch first needs it
+
+    def caster_normals():
+        if not ray:
+            whole = asset.mesh()
+            ray.extend((_intersector(whole), whole.face_normals))
+        return ray
+
+    planes: list = []  # the convex pieces' face planes, built when a patch first needs them
+
+    def piece_planes() -> list:
+        if not planes:
+            planes.extend((pc.face_normals, np.einsum("ij,ij->i", pc.face_normals, pc.triangles[:, 0]))
+                          for p in asset.parts for pc in p.pieces)
+        return planes
+
     for part in asset.parts:
         m = part.mesh
         up = m.face_normals[:, 2] > _UP_COS
@@ -97,8 +109,9 @@ def find_internal_surfaces(asset) -> list:
         idx = np.nonzero(up)[0]
         adj = m.face_adjacency
         keep = up[adj[:, 0]] & up[adj[:, 1]]
-        for comp in trimesh.graph.connected_components(adj[keep], nodes=idx, min_len=1):
-            comp = np.asarray(comp)
+        root = component_roots(len(up), adj[keep, 0], adj[keep, 1])[idx]
+        for r in np.unique(root):
+            comp = idx[root == r]
             area = m.area_faces[comp].sum()
             if area < MIN_INTERNAL_AREA:
                 continue
@@ -116,8 +129,9 @@ def find_internal_surfaces(asset) -> list:
             pts = np.array([[x, y, z] for x, y in samples])
             lift = 0.01
             o_up = pts + [0, 0, lift]
+            caster, normals = caster_normals()
             h_up, inside = _first_hit(caster, normals, o_up, np.tile([0, 0, 1.0], (len(pts), 1)))
-            if inside.any() or _inside_pieces(planes, o_up).any():
+            if inside.any() or _inside_pieces(piece_planes(), o_up).any():
                 continue  # the patch is covered by a solid standing on it
             o_h = np.repeat(pts + [0, 0, lift], len(_DIRS), axis=0)
             d_h = np.tile(_DIRS, (len(pts), 1))

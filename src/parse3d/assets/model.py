@@ -350,6 +350,36 @@ class Asset:
             out[j.child_part] = T if up is None else up @ T
         return out
 
+    def posed(self, values: dict[str, float] | None = None, *, ratio: float | None = None) -> Asset:
+        """A copy of the asset with its joints set (what ``render --open RATIO`` draws).
+
+        Parameters are those of :meth:`part_transforms`. Parts below a joint get moved copies
+        of their mesh, pieces, surfaces and internal surfaces (labels stay those of the closed
+        pose); the other parts are shared with this asset. With no movement this asset itself
+        is returned.
+        """
+        moves = {k: T for k, T in self.part_transforms(values, ratio=ratio).items()
+                 if not np.allclose(T, np.eye(4))}
+        if not moves:
+            return self
+        parts = []
+        for p in self.parts:
+            T = moves.get(p.name)
+            if T is None:
+                parts.append(p)
+                continue
+            mesh = p.mesh.copy()
+            mesh.apply_transform(T)
+            pieces = [pc.copy() for pc in p.pieces]
+            for pc in pieces:
+                pc.apply_transform(T)
+            parts.append(Part(p.name, p.label, mesh, p.material, pieces,
+                              {k: sf.transformed(T) for k, sf in p.surfaces.items()}, p.watertight))
+        internal = [InternalSurface(s.part, s.surface.transformed(moves[s.part]), s.clearance, s.depth)
+                    if s.part in moves else s for s in self.internal]
+        return Asset(self.category, self.asset_id, parts, self.size_range, self.density, internal,
+                     dict(self.meta), list(self.joints))
+
     @property
     def articulated(self) -> bool:
         """Whether any joint of the asset can move (mounts alone do not count)."""
@@ -387,6 +417,19 @@ def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True
         from .internal import find_internal_surfaces
 
         asset.internal = find_internal_surfaces(asset)
+        # a drawer's floor is also listed under its front (label ``drawer``, mounted on the
+        # box): the part a PAG names for IN a drawer
+        fronts = {}
+        for j in asset.joints:
+            if j.is_mount:
+                fronts.setdefault(j.parent_part, []).append(j.child_part)
+        labels = {p.name: p.label for p in asset.parts}
+        extra = [InternalSurface(c, s.surface, s.clearance, s.depth) for s in asset.internal
+                 if labels.get(s.part) == "drawer_box" for c in fronts.get(s.part, ())
+                 if labels.get(c) == "drawer"]
+        if extra:
+            asset.internal = sorted(asset.internal + extra,
+                                    key=lambda s: (round(float(s.surface.origin[2]), 4), s.part))
     return asset
 
 

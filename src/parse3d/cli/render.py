@@ -39,12 +39,16 @@ def register(app: typer.Typer) -> None:
                                       help="Also render the corner overview as the last view."),
         solved: bool = typer.Option(False, "--solved",
                                     help="Render the solved poses even when the scene is settled."),
+        open_ratio: float = typer.Option(None, "--open", min=0.0, max=1.0,
+                                         help="Open every door, drawer and lid to this "
+                                              "fraction of its travel (0..1) instead of the "
+                                              "stored joint values."),
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:
         """Render N views of SCENE_DIR: rgb_k.png, depth_k.png (16-bit mm), instance_k.png,
         part_k.png (16-bit ids) and views.json (cameras, id tables, visible objects and parts).
 
-        Example: parse3d render out/study-0 --views 4 --size 640x480 --seed 0
+        Example: parse3d render out/study-0 --views 4 --size 640x480 --seed 0 --open 0.5
         """
 
         from ..render import Renderer, overview_camera, sample_views, write_views
@@ -58,6 +62,9 @@ def register(app: typer.Typer) -> None:
         width, height = parse_size(size)
         require("moderngl", feature="rendering")
         scene = read_scene(scene_dir)
+        for o in scene.objects.values():  # doors, drawers and lids as stored, or --open
+            if o.asset is not None and o.asset.joints:
+                o.asset = o.asset.posed(o.joints, ratio=open_ratio)
         settled = False if solved else None
         t0 = time.perf_counter()
         renderer = Renderer()

@@ -128,6 +128,10 @@ class DatasetStats:
         has_con = n > 0 and not np.isnan(con).all()
         src = (self.config.get("source") or {}).get("kind", "templates")
 
+        cats = self.categories
+        total = sum(cats.values())
+        top = cats.most_common(1)[0] if total else None
+
         def share(x: np.ndarray, thr: float) -> float | None:
             x = x[~np.isnan(x)]
             return round(float(np.mean(x > thr)), 4) if x.size else None
@@ -147,6 +151,8 @@ class DatasetStats:
             "placed_fraction": round(placed / wanted, 4) if wanted else None,
             "distinct_assets": int(parts.size),
             "categories": len(self.categories),
+            "largest_category": top[0] if top else None,
+            "largest_category_share": round(top[1] / total, 4) if top else None,
             "avg_objects": mean(obj),
             "avg_parts_per_asset": mean(parts.astype(float)),
             "avg_density": mean(dens),
@@ -191,6 +197,8 @@ class DatasetStats:
                  f"({pct(s['placed_fraction'])}) | - |",
                  f"| distinct assets / categories | {fmt(s['distinct_assets'])} / "
                  f"{s['categories']} | 17,372 / 132 |",
+                 f"| largest category (share of objects) | {s['largest_category'] or '-'} "
+                 f"({pct(s['largest_category_share'])}) | - |",
                  f"| average objects per scene | {fmt(s['avg_objects'])} | 49.9 |",
                  f"| average parts per asset | {fmt(s['avg_parts_per_asset'])} | 17.4 |",
                  f"| average objects per m² | {fmt(s['avg_density'])} | - |",

@@ -23,7 +23,7 @@ from shapely.geometry import box as shapely_box
 
 from ..relations import SURFACES
 
-__all__ = ["Surface", "SURFACE_BASIS", "resolve_surfaces", "surface_from_bbox", "plane_polygon"]
+__all__ = ["Surface", "SURFACE_BASIS", "resolve_surfaces", "surface_from_bbox", "plane_polygon", "component_roots"]
 
 #: In-plane basis (u, v) of each label, chosen so that u x v = the outward normal.
 SURFACE_BASIS: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
@@ -116,6 +116,42 @@ class Surface:
         }
 
 
+def _hull_ccw(pts: np.ndarray) -> np.ndarray:
+    """(K, 2) convex hull vertices of (N, 2) points, counter-clockwise, collinear points dropped.
+
+    Andrew's monotone chain: for the few dozen points of a part's face it is many times faster
+    than setting up qhull.
+    """
+    if len(pts) > 4096:
+        try:
+            h = ConvexHull(pts)
+        except (QhullError, ValueError):
+            return np.empty((0, 2))
+        return pts[h.vertices]
+    order = np.lexsort((pts[:, 1], pts[:, 0]))
+    p = pts[order]
+    keep = np.ones(len(p), bool)
+    keep[1:] = np.any(p[1:] != p[:-1], axis=1)
+    p = p[keep].tolist()
+    if len(p) < 3:
+        return np.empty((0, 2))
+
+    def chain(seq):
+        out: list = []
+        for q in seq:
+            while len(out) >= 2:
+                (ax, ay), (bx, by) = out[-2], out[-1]
+                if (bx - ax) * (q[1] - ay) - (by - ay) * (q[0] - ax) > 0:
+                    break
+                out.pop()
+            out.append(q)
+        return out
+
+    lower = chain(p)
+    upper = chain(reversed(p))
+    return np.array(lower[:-1] + upper[:-1], float)
+
+
 def plane_polygon(tri2d: np.ndarray) -> Polygon | MultiPolygon:
     """Union of (M, 3, 2) triangles as a cleaned shapely geometry."""
     tri2d = np.asarray(tri2d, float)
@@ -133,12 +169,12 @@ def plane_polygon(tri2d: np.ndarray) -> Polygon | MultiPolygon:
     # fast path: a convex patch (a box face, a disc, a tabletop) is its vertices' hull, which
     # we recognise by the triangles' areas adding up to the hull's area
     pts = tri2d.reshape(-1, 2)
-    try:
-        h = ConvexHull(pts)
-        if abs(h.volume - float(areas.sum())) <= 1e-6 * max(h.volume, 1e-12):
-            return Polygon(pts[h.vertices])
-    except (QhullError, ValueError):
-        pass
+    hull = _hull_ccw(pts)
+    if len(hull) >= 3:
+        x, y = hull[:, 0], hull[:, 1]
+        hull_area = 0.5 * float(x[:-1] @ y[1:] - x[1:] @ y[:-1] + x[-1] * y[0] - x[0] * y[-1])
+        if abs(hull_area - float(areas.sum())) <= 1e-6 * max(hull_area, 1e-12):
+            return Polygon(hull)
     polys = shapely.polygons(np.concatenate([tri2d, tri2d[:, :1]], axis=1))
     u = shapely.union_all(shapely.buffer(polys, 1e-7, join_style="mitre"))
     u = shapely.buffer(u, -1e-7, join_style="mitre")
@@ -159,29 +195,26 @@ def surface_from_bbox(label: str, bounds: np.ndarray) -> Surface:
     return Surface(label, c, n, u, v, shapely_box(-hu, -hv, hu, hv), "bbox")
 
 
-def _patches(face_bin: np.ndarray, adjacency: np.ndarray, nbins: int) -> list[list[np.ndarray]]:
-    """Connected patches of faces sharing a bin, per bin, each ordered by its lowest face index
-    (bins < 0 are ignored)."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
+def component_roots(n: int, a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """(n,) the lowest node index of each node's connected component over edges ``(a, b)``.
 
-    out: list[list[np.ndarray]] = [[] for _ in range(nbins)]
-    idx = np.nonzero(face_bin >= 0)[0]
-    if len(idx) == 0:
-        return out
-    a, b = adjacency[:, 0], adjacency[:, 1]
-    keep = (face_bin[a] == face_bin[b]) & (face_bin[a] >= 0)
-    n = len(face_bin)
-    g = coo_matrix((np.ones(int(keep.sum()), bool), (a[keep], b[keep])), shape=(n, n))
-    _, comp = connected_components(g, directed=False)
-    comp = comp[idx]
-    order = np.argsort(comp, kind="stable")
-    cuts = np.nonzero(np.diff(comp[order]))[0] + 1
-    groups = np.split(idx[order], cuts)
-    groups.sort(key=lambda g_: int(g_[0]))
-    for g_ in groups:
-        out[int(face_bin[g_[0]])].append(g_)
-    return out
+    Vectorised union-find (hook every root onto the smallest root it touches, then jump
+    pointers): far cheaper than building a sparse graph for the few hundred faces of a part.
+    """
+    parent = np.arange(n)
+    while len(a):
+        while True:
+            pp = parent[parent]
+            if np.array_equal(pp, parent):
+                break
+            parent = pp
+        ra, rb = parent[a], parent[b]
+        m = ra != rb
+        if not m.any():
+            break
+        a, b, ra, rb = a[m], b[m], ra[m], rb[m]
+        np.minimum.at(parent, np.maximum(ra, rb), np.minimum(ra, rb))
+    return parent
 
 
 def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -> dict[str, Surface]:
@@ -203,54 +236,63 @@ def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -
     """
     bounds = np.asarray(mesh.bounds, float)
     normals = mesh.face_normals
+    tri = mesh.triangles
     areas = mesh.area_faces
     centers = mesh.triangles_center
-    adjacency = mesh.face_adjacency
     # The six directions are 90 degrees apart, so a face aligns with at most one of them: label
-    # every face once, then find the patches of all six labels in a single graph pass.
+    # every face once, then find the connected patches of all six labels in one pass.
     labels = list(SURFACES)
     dirs = np.array([SURFACES[k] for k in labels], float)
     align = normals @ dirs.T
     best_dir = np.argmax(align, axis=1)
     face_bin = np.where(align[np.arange(len(align)), best_dir] > _ALIGN_COS, best_dir, -1)
-    comps_by_bin = _patches(face_bin, adjacency, len(labels))
+    binned = face_bin >= 0
+    if binned.any():
+        adjacency = mesh.face_adjacency
+        ea, eb = adjacency[:, 0], adjacency[:, 1]
+        keep = (face_bin[ea] == face_bin[eb]) & binned[ea]
+        root = component_roots(len(face_bin), ea[keep], eb[keep])
+    else:
+        root = np.arange(len(face_bin))
+    idx = np.nonzero(binned)[0]
+    lab = root[idx]
+    # per patch (keyed by its lowest face index): area and area-weighted offset along its normal
+    roots = np.unique(lab)
+    pos = np.searchsorted(roots, lab)
+    p_area = np.bincount(pos, areas[idx], minlength=len(roots))
+    offs_all = (centers[idx] * dirs[face_bin[idx]]).sum(axis=1)
+    p_moment = np.bincount(pos, offs_all * areas[idx], minlength=len(roots))
+    p_bin = face_bin[roots]
     out: dict[str, Surface] = {}
     for li, (label, nrm) in enumerate(SURFACES.items()):
-        n = np.array(nrm)
-        comps = comps_by_bin[li]
-        if not comps:
+        n = dirs[li]
+        sel = np.nonzero((p_bin == li) & (p_area > 1e-10))[0]
+        if len(sel) == 0:
             out[label] = surface_from_bbox(label, bounds)
             continue
         axis = int(np.argmax(np.abs(n)))
         face_coord = bounds[1, axis] if n[axis] > 0 else bounds[0, axis]
         extent = bounds[1, axis] - bounds[0, axis]
         tol = tolerance if tolerance is not None else max(0.002, 0.03 * extent)
-        best = None
-        cands = []
-        for comp in comps:
-            comp = np.asarray(comp)
-            a = areas[comp].sum()
-            if a <= 1e-10:
-                continue
-            off = float((centers[comp] @ n * areas[comp]).sum() / a)
-            dist = abs(face_coord * np.sign(n[axis]) - off)
-            cands.append((dist, a, comp, off))
-        if not cands:
-            out[label] = surface_from_bbox(label, bounds)
-            continue
-        dmin = min(c[0] for c in cands)
-        close = [c for c in cands if c[0] <= dmin + tol]
-        best = max(close, key=lambda c: c[1])
-        _, _, comp, off = best
+        dist = np.abs(face_coord * np.sign(n[axis]) - p_moment[sel] / p_area[sel])
+        close = sel[dist <= dist.min() + tol]
+        # the largest close patch (the first of equals, in face order), its sums taken exactly
+        best_a, comp, off = -1.0, None, 0.0
+        for k in close:
+            c = idx[pos == k]
+            a_ = areas[c].sum()
+            if a_ > best_a:
+                best_a, comp = a_, c
+                off = float((centers[c] @ n * areas[c]).sum() / a_)
         u, v = (np.array(x) for x in SURFACE_BASIS[label])
-        tri = mesh.triangles[comp]
-        tri2d = np.stack([tri @ u, tri @ v], axis=-1)
+        t = tri[comp]
+        tri2d = np.stack([t @ u, t @ v], axis=-1)
         poly = plane_polygon(tri2d)
         if poly.is_empty or poly.area <= 1e-10:
             out[label] = surface_from_bbox(label, bounds)
             continue
         c2 = np.asarray(poly.centroid.coords[0])
         origin = c2[0] * u + c2[1] * v + off * n
-        poly = shapely.affinity.translate(poly, -c2[0], -c2[1])
-        out[label] = Surface(label, origin, n, u, v, poly, "mesh")
+        poly = shapely.transform(poly, lambda xy, c2=c2: xy - c2)
+        out[label] = Surface(label, origin, np.array(nrm, float), u, v, poly, "mesh")
     return out

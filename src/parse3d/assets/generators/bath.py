@@ -44,7 +44,7 @@ def _faucet(x: float, y: float, z: float, reach: float, height: float, *, toward
     return S.union([base, S.tube(np.array(path), radius, sections=8)])
 
 
-@register("bathtub", parts=("tub",), extra_parts=("foot", "faucet", "base"),
+@register("bathtub", parts=("tub",), extra_parts=("foot", "faucet", "base", "handle"),
           size_range=(1.4, 1.9), density=400,
           variants=("clawfoot", "pedestal", "built_in"))
 def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -92,6 +92,15 @@ def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
     # a wall-mounted style spout over the -X end
     spout = _faucet(x_end, 0.0, top, 0.1, 0.06, towards=(1, 0, 0), radius=0.011)
     parts.append(make_part("faucet", "faucet", spout, chrome))
+    # hot and cold cross-handles either side of the spout, on the deck or rim
+    for i, sy in enumerate((-1, 1)):
+        y = sy * 0.09
+        # on the rim tube of a freestanding tub (an ellipse), on the end wall of a built-in one
+        x = x_end if variant == "built_in" else -length / 2 * 0.985 * np.sqrt(1 - (y / (width / 2 * 0.985)) ** 2)
+        stem = S.cylinder(0.012, 0.045, center=(x, y, top + 0.0225 - 0.004), sections=10)
+        cross = [S.box((0.06, 0.012, 0.012), center=(x, y, top + 0.041)),
+                 S.box((0.012, 0.06, 0.012), center=(x, y, top + 0.041))]
+        parts.append(make_part(f"handle_{i}", "handle", [stem, *cross], chrome))
     return parts
 
 

@@ -31,8 +31,8 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
     """Drawers filling the front rectangle [x0, x1] x [z0, z1], row by row from the bottom.
 
     ``rows[i]`` is the number of drawers side by side in row ``i``; ``weights`` the relative
-    row heights. Each drawer is its front (``drawer_k``, label ``drawer``) on a closed box
-    (``drawer_k_box``, label ``drawer_box``) sliding out of the ``body`` on a prismatic joint,
+    row heights. Each drawer is its front (``drawer_k``, label ``drawer``) on an open box
+    (``drawer_k_box``, label ``drawer_box``, open at the top) sliding out of the ``body`` on a prismatic joint,
     the front mounted on the box and the handle on the front.
     """
     weights = weights or [1.0] * len(rows)
@@ -48,7 +48,14 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
             dw, dh, ft = w - gap, h - gap, 0.018
             front = bevel_box((dw, ft, dh), center=(x, y_face - ft / 2, zc), bevel=0.004)
             bd = max(depth - ft, 0.05)
-            box_ = S.box((dw - 0.006, bd, dh - 0.02), center=(x, y_face - ft - bd / 2, zc))  # slide clearance
+            # an open-topped box (floor, sides, back) with slide clearance: its floor holds
+            # what is put IN the drawer
+            bw, bh, t = dw - 0.006, dh - 0.02, 0.012
+            yc, bz0 = y_face - ft - bd / 2, zc - bh / 2
+            box_ = [S.box((bw, bd, t), center=(x, yc, bz0 + t / 2)),
+                    S.box((t, bd, bh - t), center=(x - bw / 2 + t / 2, yc, bz0 + t + (bh - t) / 2)),
+                    S.box((t, bd, bh - t), center=(x + bw / 2 - t / 2, yc, bz0 + t + (bh - t) / 2)),
+                    S.box((bw - 2 * t, t, bh - t), center=(x, yc - bd / 2 + t / 2, bz0 + t + (bh - t) / 2))]
             parts.append(make_part(f"drawer_{k}", "drawer", front, mat))
             parts.append(make_part(f"drawer_{k}_box", "drawer_box", box_, mat))
             pull_z = zc + (h * 0.2 if h > 0.22 else 0.0)

@@ -46,7 +46,7 @@ def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Pa
 
 
 @register("bed", parts=("frame", "mattress", "headboard"),
-          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat"),
+          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button"),
           size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
@@ -128,7 +128,29 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("headboard", "headboard", head, head_mat))
     parts.append(_mattress("mattress", w - 0.01, d - 0.02, t_mat,
                            (0, 0, z_top - 0.04 + t_mat / 2), ticking))
+    if upholstered:
+        parts += _tufting(w, -d / 2, z_top - 0.04 + t_mat + 0.12, head_h - 0.1, cloth)
     return parts
+
+
+def _tufting(w: float, y_face: float, z0: float, z1: float, cloth) -> list[Part]:
+    """Diamond-tufted buttons (``button_k``) on an upholstered headboard whose front is at
+    ``y_face``, in rows between heights ``z0`` and ``z1``: alternate rows of four and three."""
+    if z1 - z0 < 0.1:
+        return []
+    rows = 2 if z1 - z0 < 0.35 else 3
+    dz = (z1 - z0) / (rows - 1)
+    pitch = w / 4
+    out = []
+    mat = M.solid(np.asarray(cloth.color[:3]) * 0.8, "fabric", 0.9)  # a shade darker than the cloth
+    for r in range(rows):
+        n = 4 if r % 2 == 0 else 3
+        for k in range(n):
+            x = (k - (n - 1) / 2) * pitch
+            out.append(make_part(f"button_{len(out)}", "button",
+                                 S.cylinder(0.012, 0.012, center=(x, y_face + 0.001, z0 + r * dz), axis=(0, 1, 0),
+                                            sections=10), mat))
+    return out
 
 
 @register("bunk_bed", parts=("frame", "mattress", "ladder"),

@@ -69,7 +69,7 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=(), size_range=(0.4, 1.6), density=600,
+@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw",), size_range=(0.4, 1.6), density=600,
           variants=("bracketed", "floating", "two_tier"), placement="wall")
 def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.45, 1.2)
@@ -106,4 +106,13 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
                       S.box((0.02, arm, 0.005), center=(x, arm / 2, z_low - 0.0025)),
                       S.tube([[x, 0.008, z_low - lh * 0.85], [x, arm * 0.85, z_low - 0.008]], 0.005, sections=8)]
         parts.append(make_part(f"bracket_{i}", "bracket", shapes, steel))
+        # two screw heads fixing the bracket's wall plate (the standard) to the wall
+        if variant == "two_tier":
+            y_face, zs = 0.02, (z_low - 0.03, levels[-1] - t - 0.05)
+        else:
+            y_face, zs = 0.005, (z_low - lh * 0.3, z_low - lh * 0.75)
+        for k, z in enumerate(zs):
+            parts.append(make_part(f"screw_{2 * i + k}", "screw",
+                                   S.cylinder(0.0045, 0.003, center=(x, y_face + 0.0015, z), axis=(0, 1, 0),
+                                              sections=10), steel))
     return parts

@@ -132,6 +132,19 @@ def _socket(cx: float, cy: float, z: float, h: float, mat: Material) -> Part:
                      mat)
 
 
+def _harp(z_socket: float, z_top: float, mat: Material) -> list[Part]:
+    """The turn switch on a socket standing at ``z_socket`` on the axis, the wire harp rising
+    from the socket to the top of a drum shade at ``z_top``, and the finial screwed onto the
+    harp's saddle above the shade."""
+    switch = S.cylinder(0.005, 0.014, center=(0.017 + 0.007, 0, z_socket + 0.025), axis=(1, 0, 0), sections=8)
+    harp = [S.tube([[sx * 0.018, 0, z_socket + 0.012], [sx * 0.05, 0, z_socket + 0.09],
+                    [sx * 0.012, 0, z_top - 0.004], [0, 0, z_top - 0.004]], 0.0025, sections=6)
+            for sx in (-1, 1)]
+    finial = S.ellipsoid((0.012, 0.012, 0.015), center=(0, 0, z_top + 0.012), subdivisions=1)
+    return [make_part("switch", "switch", switch, mat), make_part("harp", "harp", harp, mat),
+            make_part("finial", "finial", finial, mat)]
+
+
 def _straight(rng, metal: Material, shade_mat: Material) -> list[Part]:
     r_b, h_b = rng.uniform(0.12, 0.17), rng.uniform(0.025, 0.04)
     base = S.lathe([(r_b, 0.0), (r_b, h_b * 0.5), (r_b * 0.75, h_b), (0.03, h_b + 0.012)], sections=28)
@@ -141,7 +154,8 @@ def _straight(rng, metal: Material, shade_mat: Material) -> list[Part]:
     z_s = top + 0.05 - h_s * 0.4
     shade = _drum_shade(rng, r_s, h_s, z_s, shade_mat)
     return [make_part("base", "base", base, metal), make_part("pole", "pole", pole, metal),
-            _socket(0, 0, top, 0.05, metal), _bulb(0, 0, top + 0.05, 0.03), shade]
+            _socket(0, 0, top, 0.05, metal), _bulb(0, 0, top + 0.05, 0.03), shade,
+            *_harp(top, z_s + h_s, metal)]
 
 
 def _arc(rng, metal: Material, shade_mat: Material) -> list[Part]:
@@ -194,10 +208,10 @@ def _tripod(rng, shade_mat: Material) -> list[Part]:
     metal = M.metal(rng)
     return [make_part("base", "base", legs + pads, wood), make_part("pole", "pole", pole, wood),
             _socket(0, 0, top, 0.05, metal), _bulb(0, 0, top + 0.05, 0.03),
-            _drum_shade(rng, r_s, h_s, z_s, shade_mat)]
+            _drum_shade(rng, r_s, h_s, z_s, shade_mat), *_harp(top, z_s + h_s, metal)]
 
 
-@register("floor_lamp", parts=("base", "pole", "shade"), extra_parts=("bulb", "socket"),
+@register("floor_lamp", parts=("base", "pole", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial"),
           size_range=(1.2, 2.1), density=700, variants=("straight", "arc", "tripod"))
 def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     shade_mat = shade_material(rng)
@@ -208,7 +222,7 @@ def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     return _straight(rng, M.metal(rng), shade_mat)
 
 
-@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket"),
+@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial"),
           size_range=(0.3, 0.8), density=900, variants=("vase", "column", "candlestick"),
           placement="surface")
 def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -242,7 +256,7 @@ def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     shade_mat = shade_material(rng)
     return [make_part("base", "base", base, base_mat), make_part("stem", "stem", stem, metal),
             _socket(0, 0, top, 0.04, metal), _bulb(0, 0, top + 0.04, 0.026),
-            _drum_shade(rng, r_s, h_s, z_s, shade_mat)]
+            _drum_shade(rng, r_s, h_s, z_s, shade_mat), *_harp(top, z_s + h_s, metal)]
 
 
 @register("pendant_lamp", parts=("cord", "shade"), extra_parts=("canopy", "socket", "bulb"),

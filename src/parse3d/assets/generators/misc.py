@@ -57,7 +57,7 @@ def _bout(cx: float, cz: float, rx: float, rz: float, y0: float, y1: float, *,
 
 
 @register("guitar", parts=("body", "neck", "head"),
-          extra_parts=("bridge", "soundhole", "pickguard", "pickup"),
+          extra_parts=("bridge", "soundhole", "pickguard", "pickup", "tuning_peg", "string", "nut"),
           size_range=(0.85, 1.15), density=450, variants=("acoustic", "electric"))
 def guitar(rng: np.random.Generator, variant: str) -> list[Part]:
     acoustic = variant == "acoustic"
@@ -95,9 +95,26 @@ def guitar(rng: np.random.Generator, variant: str) -> list[Part]:
         side = -1 if k < 3 else 1
         p = top + R @ np.array([side * (head_w / 2 + 0.008), 0.0, head_len * (0.3 + 0.22 * (k % 3))])
         pegs.append(S.cylinder(0.006, 0.018, center=p, axis=(1, 0, 0), sections=8))
-    # neck and fretboard, head and tuning pegs are one part each (fewer parts, faster assets)
+    # neck and fretboard are one part; each tuning peg is a part of its own
+    metal = M.metal(rng)
     parts = [make_part("body", "body", body, mat), make_part("neck", "neck", [neck, board], dark),
-             make_part("head", "head", [head, *pegs], dark)]
+             make_part("head", "head", head, dark)]
+    parts += [make_part(f"tuning_peg_{k}", "tuning_peg", pg, metal) for k, pg in enumerate(pegs)]
+    # the nut at the top of the fretboard, and six strings from it down to the bridge
+    y_board = y1 + 0.001
+    nut_h = 0.003
+    parts.append(make_part("nut", "nut", S.box((neck_w * 0.96, nut_h, 0.004),
+                                                center=(0, y_board + nut_h / 2, length + neck_len - 0.002)),
+                           M.solid((0.92, 0.9, 0.84), "plastic")))
+    z_b, y_b = (length * 0.3, y1 + 0.0095) if acoustic else (length * 0.25, y1 + 0.013)
+    z_n, y_n = length + neck_len - 0.004, y_board + nut_h + 0.0008
+    for k in range(6):
+        f = (k - 2.5) / 2.5
+        a = np.array([f * 0.026, y_b, z_b])
+        b = np.array([f * neck_w * 0.36, y_n, z_n])
+        parts.append(make_part(f"string_{k}", "string",
+                               S.cylinder(0.0007, float(np.linalg.norm(b - a)), center=(a + b) / 2,
+                                          axis=b - a, sections=6), metal))
     if acoustic:
         hole = S.cylinder(length * 0.085, 0.002, center=(0, y1 + 0.001, length * 0.62), axis=(0, 1, 0),
                           sections=20)

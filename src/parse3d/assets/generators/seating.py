@@ -100,7 +100,7 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dining_chair", parts=("seat", "back", "leg"), extra_parts=("stretcher", "back_post", "spindle", "splat"),
+@register("dining_chair", parts=("seat", "back", "leg"), extra_parts=("stretcher", "back_post", "spindle", "splat", "foot"),
           size_range=(0.75, 1.1), density=550, variants=("spindle", "solid", "upholstered"))
 def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     sw, sd = rng.uniform(0.42, 0.5), rng.uniform(0.42, 0.48)
@@ -129,6 +129,11 @@ def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
                 shape = bevel_box((leg, leg, z_leg), center=(top[0], top[1], z_leg / 2),
                                   bevel=0.004)
             parts.append(make_part(f"leg_{i}", "leg", shape, wood))
+            # a felt pad under the leg (the chair stands on its four pads)
+            pad = S.cylinder(leg * (0.3 if tapered else 0.42), 0.004,
+                             center=(foot[0] if tapered else top[0], foot[1] if tapered else top[1], -0.002),
+                             sections=10)
+            parts.append(make_part(f"foot_{i}", "foot", pad, M.solid((0.2, 0.2, 0.2), "fabric", 0.95)))
             i += 1
     if rng.random() < 0.5:
         z_st = z_leg * 0.3
@@ -312,7 +317,7 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base"),
+@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot"),
           size_range=(0.6, 1.0), density=600, variants=("four_leg", "three_leg", "pedestal"))
 def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
     z_seat = rng.uniform(0.63, 0.78)
@@ -348,6 +353,10 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
         d = np.array([np.cos(a), np.sin(a), 0.0])
         foot, top = d * r_foot, d * r_top + [0, 0, z_seat - st]
         parts.append(make_part(f"leg_{k}", "leg", _leg(foot, top, lr * 0.85, lr), frame_mat))
+        # a plastic glide cap under each leg
+        parts.append(make_part(f"foot_{k}", "foot", S.cylinder(lr * 0.95, 0.006, center=foot - [0, 0, 0.003],
+                                                               sections=10),
+                               M.solid((0.08, 0.08, 0.08), "plastic", 0.7)))
     # the footrest ring runs through the legs at z_ring
     rr = r_foot + (r_top - r_foot) * z_ring / (z_seat - st)
     a = np.linspace(0, 2 * np.pi, 24, endpoint=False)

@@ -65,21 +65,39 @@ def _aprons(w, d, h_leg, inset: float, leg: float, mat, *, sides: str = "xy") ->
     return out
 
 
+_GLIDE = 0.006  # height of the floor glides under pedestal bases and trestle feet, metres
+
+
+def _glides(points, r: float) -> list[Part]:
+    """Round floor glides (``foot_k``) of radius ``r`` centred at the (x, y) ``points``."""
+    mat = M.solid((0.08, 0.08, 0.08), "plastic", 0.7)
+    return [make_part(f"foot_{k}", "foot", S.cylinder(r, _GLIDE, center=(x, y, _GLIDE / 2), sections=12), mat)
+            for k, (x, y) in enumerate(points)]
+
+
 def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
-    col = S.lathe([(r_base, 0.0), (r_base, 0.025), (r_base * 0.35, 0.06), (r_base * 0.22, 0.12),
+    """A turned column on a round base that stands on four glides."""
+    g = _GLIDE
+    col = S.lathe([(r_base, g), (r_base, g + 0.025), (r_base * 0.35, g + 0.06), (r_base * 0.22, g + 0.12),
                    (r_base * 0.2, h_leg - 0.05), (r_base * 0.45, h_leg)], sections=32)
-    return [make_part("leg_0", "leg", col, leg_mat)]
+    rg = r_base * 0.78
+    pts = [(rg * np.cos(a), rg * np.sin(a)) for a in np.pi / 4 + np.pi / 2 * np.arange(4)]
+    return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12))]
 
 
 def _trestle(rng, w, d, h_leg, leg_mat, leg: float) -> list[Part]:
+    """Two trestles (upright, foot and cap) joined by a stretcher; each foot on two glides."""
     parts = []
+    g = _GLIDE
     for i, x in enumerate((-w / 2 + 0.12, w / 2 - 0.12)):
-        upright = S.box((leg, leg * 1.4, h_leg - 0.05), center=(x, 0, (h_leg - 0.05) / 2 + 0.05))
-        foot = S.box((leg * 1.2, d * 0.8, 0.05), center=(x, 0, 0.025), bevel=0.008)
+        upright = S.box((leg, leg * 1.4, h_leg - 0.05 - g), center=(x, 0, (h_leg - 0.05 - g) / 2 + 0.05 + g))
+        foot = S.box((leg * 1.2, d * 0.8, 0.05), center=(x, 0, g + 0.025), bevel=0.008)
         cap = S.box((leg * 1.2, d * 0.8, 0.04), center=(x, 0, h_leg - 0.02), bevel=0.006)
         parts.append(make_part(f"leg_{i}", "leg", [upright, foot, cap], leg_mat))
     bar = S.box((w - 0.24 - leg, 0.04, 0.06), center=(0, 0, 0.25))
     parts.append(make_part("stretcher", "stretcher", bar, leg_mat))
+    r = min(0.018, leg * 0.45)
+    parts += _glides([(x, y) for x in (-w / 2 + 0.12, w / 2 - 0.12) for y in (-d * 0.4 + r + 0.01, d * 0.4 - r - 0.01)], r)
     return parts
 
 
@@ -105,13 +123,15 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
         parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
     elif variant == "trestle":
         parts += _trestle(rng, w, d, h_leg, leg_mat, leg)
-    if desk and variant == "four_leg":
-        panel = S.box((w - 2 * leg - 0.06, 0.018, h_leg * 0.4),
+    if desk:
+        # between the legs, or between the trestle caps
+        span = w - 2 * leg - 0.06 if variant == "four_leg" else w - 0.24 - leg * 1.2 - 0.02
+        panel = S.box((span, 0.018, h_leg * 0.4),
                       center=(0, -d / 2 + leg / 2 + 0.02, h_leg - h_leg * 0.2 - 0.01))
         parts.append(make_part("modesty_panel", "modesty_panel", panel, top_mat))
-        if rng.random() < 0.7:
+        if rng.random() < 0.7 or variant == "trestle":
             dw, dh = min(0.45, w * 0.35), 0.09
-            x = w / 2 - leg - dw / 2 - 0.03
+            x = span / 2 - dw / 2
             front = S.box((dw, 0.02, dh), center=(x, d / 2 - 0.03, h_leg - dh / 2 - 0.005), bevel=0.003)
             # the box runs just under the top, which carries its slides
             box_ = S.box((dw - 0.02, d * 0.6, dh - 0.02), center=(x, d / 2 - 0.04 - d * 0.3, h_leg - 0.003 - (dh - 0.02) / 2))

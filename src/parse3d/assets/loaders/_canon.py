@@ -18,7 +18,7 @@ import trimesh
 
 from ...errors import InputError, Problem
 from ..collision import convex_pieces
-from ..model import Asset, Material, Part, finalize_asset
+from ..model import Asset, Joint, Material, Part, finalize_asset
 
 __all__ = ["SourceFrame", "RawPart", "RawAsset", "frame_rotation", "default_label", "read_mapping",
            "label_for", "finish_asset", "material_of", "GLTF_FRAME", "PARTNET_FRAME"]
@@ -216,6 +216,8 @@ class RawAsset:
     source: str
     parts: list[RawPart]
     meta: dict = field(default_factory=dict)
+    #: joints in the canonical orientation, naming parts by their ``RawPart.source``
+    joints: list = field(default_factory=list)
 
     @property
     def size(self) -> float:
@@ -288,7 +290,17 @@ def finish_asset(raw: RawAsset, *, category: str, asset_id: str,
         parts.append(Part(names[i], rp.label, m, rp.material, pieces, watertight=bool(m.is_watertight)))
     meta = dict(raw.meta)
     meta.update({"generator": "loaded", "source": raw.source, "fit_scale": fit})
+    # joints follow their parts: renamed, origins recentred and scaled, slides scaled
+    by_source = {rp.source: names[i] for i, rp in enumerate(raw.parts)}
+    joints = []
+    for j in raw.joints:
+        if j.parent_part not in by_source or j.child_part not in by_source:
+            continue
+        lim = j.limits if j.type == "revolute" else (j.limits[0] * fit, j.limits[1] * fit)
+        joints.append(Joint(j.name, j.type, by_source[j.parent_part], by_source[j.child_part], j.axis,
+                            tuple(float(x) for x in (np.asarray(j.origin) + shift) * fit),
+                            tuple(float(x) for x in lim)))
     asset = Asset(category, asset_id, parts,
                   tuple(size_range) if size_range else (size * fit, size * fit), float(density),
-                  meta=meta)
+                  meta=meta, joints=joints)
     return finalize_asset(asset)

@@ -22,7 +22,7 @@ import trimesh
 
 from ...errors import InputError, Problem
 from ...geometry.frames import axis_angle, rot_x, rot_y, rot_z
-from ..model import Asset
+from ..model import Asset, Joint
 from ._canon import (
     PARTNET_FRAME,
     RawAsset,
@@ -198,8 +198,75 @@ def read_partnet_mobility(folder: str | os.PathLike, *, mapping=None,
     if len(parts) < 2:
         raise InputError(Problem("", f"found {len(parts)} labelled link(s) with geometry; a part-split "
                                  "asset needs at least two", file, "geometry"))
+    joints = _read_joints(root, world, {p.source for p in parts}, S, file)
     return RawAsset(str(folder), parts, {"source_format": "partnet-mobility",
-                                         "frame": frame.__dict__.copy()})
+                                         "frame": frame.__dict__.copy()}, joints)
+
+
+def _read_joints(root, world: dict[str, np.ndarray], with_parts: set[str], S: np.ndarray,
+                 file: str) -> list[Joint]:
+    """The URDF's movable joints as asset joints (canonical orientation, source link names).
+
+    A joint's parent is its parent link, or the nearest ancestor link that became a part; a
+    fixed joint under a moving part mounts its child on it (a handle on a door). Limits are
+    taken relative to the rest pose the meshes were read in, so 0 is that pose; when the rest
+    value lies inside the range, the longer side is kept so 0 stays at one end.
+    """
+    parent_of = {j.find("child").get("link"): j for j in root.findall("joint")}
+
+    def part_above(link: str | None) -> str | None:
+        seen = set()
+        while link is not None and link not in seen:
+            if link in with_parts:
+                return link
+            seen.add(link)
+            j = parent_of.get(link)
+            link = j.find("parent").get("link") if j is not None else None
+        return None
+
+    R = S[:3, :3] / np.cbrt(np.linalg.det(S[:3, :3]))
+    out: list[Joint] = []
+    moving: set[str] = set()
+    for j in root.findall("joint"):  # URDF lists parents before children in practice
+        kind = j.get("type", "fixed")
+        child = j.find("child").get("link")
+        parent = part_above(j.find("parent").get("link"))
+        if child not in with_parts or parent is None:
+            continue
+        name = j.get("name") or f"{child}_joint"
+        if kind == "fixed":
+            if parent in moving:
+                out.append(Joint(f"{child}_mount", "prismatic", parent, child, (0.0, 0.0, 1.0),
+                                 (0.0, 0.0, 0.0), (0.0, 0.0)))
+                moving.add(child)
+            continue
+        if kind not in ("revolute", "continuous", "prismatic"):
+            continue
+        ax_el = j.find("axis")
+        axis = _floats(ax_el.get("xyz") if ax_el is not None else "1 0 0", 3)
+        if np.linalg.norm(axis) == 0:
+            raise InputError(Problem(f"/joint/{name}/axis", "zero joint axis", file, "geometry"))
+        # the joint frame before its motion: the parent link's world frame times the origin
+        Tj = S @ world.get(j.find("parent").get("link"), np.eye(4)) @ _origin(j.find("origin"))
+        a = R @ (world.get(j.find("parent").get("link"), np.eye(4))[:3, :3]
+                 @ _origin(j.find("origin"))[:3, :3] @ (axis / np.linalg.norm(axis)))
+        lim = j.find("limit")
+        if kind == "continuous" or lim is None:
+            lo, hi = (0.0, 2 * np.pi) if kind != "prismatic" else (0.0, 0.0)
+        else:
+            lo, hi = float(lim.get("lower", "0") or 0), float(lim.get("upper", "0") or 0)
+        rest = float(np.clip(0.0, min(lo, hi), max(lo, hi)))
+        lo, hi = min(lo, hi) - rest, max(lo, hi) - rest
+        if lo < 0 < hi:
+            lo, hi = (0.0, hi) if hi >= -lo else (lo, 0.0)
+        scale = float(np.cbrt(np.linalg.det(S[:3, :3])))
+        if kind == "prismatic":
+            lo, hi = lo * scale, hi * scale
+        out.append(Joint(name, "prismatic" if kind == "prismatic" else "revolute", parent, child,
+                         tuple(float(x) for x in a / np.linalg.norm(a)),
+                         tuple(float(x) for x in Tj[:3, 3]), (float(lo), float(hi))))
+        moving.add(child)
+    return out
 
 
 def _natural(name: str):
