@@ -3,7 +3,8 @@
 For every held-out scene the same objects (the scene's placed objects, with their assets) are
 laid out by each *row* and measured the same way:
 
-- **solver**: the dataset's own (settled) poses, the upper bound;
+- **solver**: the solver's own poses from the dataset (before settling: the poses its relation
+  checks passed on), the upper bound;
 - **random**: uniform positions in the footprint, heights in ``[0, room height - object
   height]``, uniform yaw, upright;
 - one row per run: a ``pag`` run conditioned on the PAG, and (trained with condition dropout)
@@ -23,7 +24,12 @@ scale whose volume matches the generated size. Metrics of one layout (:func:`lay
     object, whose child's centre lies over the supporter (inside its bounding box in XY).
 ``relations``, ``relations_settled``
     Share of the PAG's relations that hold by the solver's own checks, before and after
-    settling.
+    settling. Most PAG relations are contacts (``ON``, ``IN``, ``AGAINST``, ...) whose checks
+    allow -1...+2 mm and 2 degrees, which a generated pose does not hit before settling;
+``relations_spatial``
+    so this is the share of the arrangement relations alone (``SIDE_OF``, ``ALONG``, ``NEAR``,
+    ``FAR_FROM``, ``TOWARD``: region conditions on centroids, no contact) that hold as
+    generated.
 ``displacement``
     Mean distance (m) the free objects move when the layout is settled in SAPIEN (paper
     parameters).
@@ -57,6 +63,8 @@ __all__ = ["LayoutMetrics", "EvalRow", "EvalResult", "layout_metrics", "collisio
 PENETRATION = 0.01
 SUPPORT_TOL = 0.02
 _SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+#: Relations judged on centroids and regions, without contact tolerances.
+SPATIAL = ("SIDE_OF", "ALONG", "NEAR", "FAR_FROM", "TOWARD")
 
 #: Metric name, direction (+1 higher is better), format.
 METRICS = (
@@ -64,6 +72,7 @@ METRICS = (
     ("outside", -1, "{:.3f}"),
     ("support_rate", 1, "{:.3f}"),
     ("relations", 1, "{:.3f}"),
+    ("relations_spatial", 1, "{:.3f}"),
     ("relations_settled", 1, "{:.3f}"),
     ("displacement", -1, "{:.3f}"),
     ("contacts", 1, "{:.1f}"),
@@ -81,6 +90,7 @@ class LayoutMetrics:
     outside: float
     support_rate: float
     relations: float
+    relations_spatial: float = math.nan
     relations_settled: float = math.nan
     displacement: float = math.nan
     contacts: float = math.nan
@@ -200,7 +210,9 @@ def layout_metrics(scene: Scene, *, physics: bool = True) -> LayoutMetrics:
     hit = {a for a, _, _ in pairs} | {b for _, b, _ in pairs}
     m = LayoutMetrics(n, len(pairs), len(hit) / max(n, 1), len(outside_room(scene)) / max(n, 1),
                       _share(_support_ok(scene)),
-                      _share(c.holds for c in scene.relations if c.holds is not None))
+                      _share(c.holds for c in scene.relations if c.holds is not None),
+                      _share(c.holds for c in scene.relations
+                             if c.holds is not None and c.relation in SPATIAL))
     if physics:
         from ..physics import extract_contacts, settle
 
@@ -307,7 +319,7 @@ class EvalResult:
 
     def markdown(self) -> str:
         cols = [m for m, _, _ in METRICS if self.physics or m in
-                ("collision_rate", "outside", "support_rate", "relations")]
+                ("collision_rate", "outside", "support_rate", "relations", "relations_spatial")]
         arrows = {m: ("↑" if d > 0 else "↓") for m, d, _ in METRICS}
         fmt = {m: f for m, _, f in METRICS}
         head = "| row | " + " | ".join(f"{c} {arrows[c]}" for c in cols) + " |"
@@ -326,11 +338,13 @@ class EvalResult:
         return "\n".join(lines) + "\n"
 
 
-def _rows_for(runs: list[LayoutRun]) -> list[tuple[str, str, LayoutRun | None, bool]]:
-    rows = [("solver (dataset poses)", "solver", None, False), ("random poses", "random", None, False)]
+def _rows_for(runs: list[LayoutRun], guidance: float = 1.0
+              ) -> list[tuple[str, str, LayoutRun | None, bool]]:
+    rows = [("solver (solved poses)", "solver", None, False), ("random poses", "random", None, False)]
+    w = "" if guidance == 1.0 else f", guidance {guidance:g}"
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name})", "pag", run, True))
+            rows.append((f"PAG-conditioned ({run.name}{w})", "pag", run, True))
             if run.config.cond_dropout > 0:
                 rows.append((f"unconditioned ({run.name}, condition dropped)", "none", run, False))
         else:
@@ -356,8 +370,8 @@ def _compose(images: list[tuple[str, np.ndarray]], path: Path) -> None:
 
 def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
              physics: bool = True, sample_steps: int = 100, previews: int = 2,
-             out: Path | None = None, progress: Callable[[str], None] | None = None
-             ) -> EvalResult:
+             out: Path | None = None, progress: Callable[[str], None] | None = None,
+             guidance: float = 1.0) -> EvalResult:
     """Lay out every scene with every row and measure it (see the module docstring).
 
     Parameters
@@ -377,8 +391,10 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         Where previews go (nothing rendered without it).
     progress : callable, optional
         Called with a short label before every layout.
+    guidance : float
+        Classifier-free guidance weight of the PAG-conditioned rows (1: plain conditional).
     """
-    rows = _rows_for(runs)
+    rows = _rows_for(runs, guidance)
     result = EvalResult([EvalRow(name, kind) for name, kind, _, _ in rows], [], seeds, physics)
     acc: list[list[list[dict]]] = [[[] for _ in range(seeds)] for _ in rows]
     for si, f in enumerate(scene_files):
@@ -395,7 +411,8 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                 if progress is not None:
                     progress(f"{ls.scene_id}: {name}, seed {seed}")
                 if kind == "solver":
-                    scene = _scene_for(ls, pag, ls.poses, seed, given_scale=True, label=kind)
+                    solved = ls.poses if ls.solved_poses is None else ls.solved_poses
+                    scene = _scene_for(ls, pag, solved, seed, given_scale=True, label=kind)
                 elif kind == "random":
                     rng = np.random.default_rng([seed, si, 17])
                     scene = _scene_for(ls, pag, random_poses(ls, rng), seed, given_scale=True,
@@ -403,7 +420,8 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                 else:
                     poses = generate_poses(run, ls.categories, ls.assets, ls.relations,
                                            ls.footprint, ls.height, seed=seed,
-                                           options=SampleOptions(steps=sample_steps, cond=cond))
+                                           options=SampleOptions(steps=sample_steps, cond=cond,
+                                                                 guidance=guidance))
                     scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name)
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene
