@@ -31,7 +31,7 @@ from .pose import denormalise_poses, rotation_from_6d
 from .train import LayoutRun, make_scheduler, scene_tensors
 
 __all__ = ["SampleOptions", "sample_layout", "generate_poses", "fit_asset", "layout_scene",
-           "SCALE_RANGE", "RefineReport", "snap_proposals", "refine_layout"]
+           "SCALE_RANGE", "RefineReport", "snap_proposals", "refine_layout", "nearest_walls"]
 
 #: The uniform scale chosen for an asset is clipped to this range.
 SCALE_RANGE = (0.25, 4.0)
@@ -159,8 +159,31 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
             oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
             support=None if sup is None else str(sup.parent),
             fixed=sup is not None and sup.relation in _FIXED)
+    scene.meta["resolved"] = nearest_walls(scene)
     scene.relations = check_relations(scene)
     return scene
+
+
+def nearest_walls(scene: Scene) -> dict[str, dict]:
+    """Which wall each relation to ``wall`` (any wall) means: the wall segment nearest the
+    child's centre in plan, as the relation checks' ``resolved`` entries (the solver records
+    its own choice; without one the checks take the nearest wall *plane*, which in an L-shaped
+    room can be the plane of a wall on the far side)."""
+    fp = np.asarray(scene.room.footprint, float)
+    a, b = fp, np.roll(fp, -1, axis=0)
+    d = b - a
+    out = {}
+    for i, e in enumerate(scene.pag.relations):
+        o = scene.objects.get(e.child.object)
+        if e.parent.object != "wall" or o is None or not o.placed:
+            continue
+        c = o.world_bounds(settled=False).mean(0)[:2]
+        u = np.clip(np.einsum("ij,ij->i", c - a, d) / np.maximum(np.einsum("ij,ij->i", d, d),
+                                                                  1e-12), 0.0, 1.0)
+        k = int(np.argmin(np.linalg.norm(a + u[:, None] * d - c, axis=1)))
+        out[str(i)] = {"parent_part": None, "parent_element": f"wall_{k}",
+                       "parent_surface": None, "internal": False}
+    return out
 
 
 def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
