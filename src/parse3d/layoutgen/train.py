@@ -58,7 +58,8 @@ class TrainConfig:
     steps : int
         Optimiser steps in total (a resumed run continues up to this).
     preset : str
-        Network size: ``cpu`` (d=128, 4 layers), ``paper`` (512-d) or ``tiny`` (tests).
+        Network size: ``cpu`` (d=128, 4 layers), ``small`` (d=64, 3 layers), ``paper``
+        (512-d) or ``tiny`` (tests).
     relations : str
         Relation encoder: ``text`` (all-MiniLM-L6-v2 phrases) or ``learned``.
     shape : str
