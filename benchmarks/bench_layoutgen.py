@@ -3,8 +3,20 @@
 Usage::
 
     python benchmarks/bench_layoutgen.py --dataset out/mini --out out/layout-bench \\
-        [--steps 2000] [--seeds 3] [--max-scenes 0] [--preset cpu] [--relations text]
+        [--steps 2000] [--seeds 3] [--max-scenes 0] [--preset cpu] [--relations text] \\
+        [--shape descriptor] [--guidance 1] [--device cpu]
     python benchmarks/bench_layoutgen.py --build 1000 --rooms bedroom,study,bathroom ...
+
+A small end-to-end check (a few minutes of CPU)::
+
+    python benchmarks/bench_layoutgen.py --build 6 --rooms study --no-settle --out out/lb \\
+        --steps 20 --preset tiny --relations learned --seeds 2 --max-scenes 1 --no-physics \\
+        --sample-steps 10
+
+The issue's full run on a GPU machine (the paper's sizes: ``--preset paper``)::
+
+    python benchmarks/bench_layoutgen.py --build 1000 --rooms bedroom,study,bathroom \\
+        --workers 16 --out out/lb-gpu --steps 30000 --preset paper --device cuda --seeds 3
 
 With ``--build N`` it first builds (or resumes) an N-scene template dataset into
 ``OUT/dataset`` (``--workers`` processes). It then trains two runs on the same split,
@@ -39,6 +51,11 @@ def main() -> int:
     ap.add_argument("--steps", type=int, default=2000)
     ap.add_argument("--preset", default="cpu")
     ap.add_argument("--relations", default="text")
+    ap.add_argument("--shape", default="descriptor", help="descriptor or pointcloud")
+    ap.add_argument("--noise-draws", type=int, default=16)
+    ap.add_argument("--guidance", type=float, default=1.0)
+    ap.add_argument("--device", default="cpu")
+    ap.add_argument("--no-settle", action="store_true", help="build without settling (faster)")
     ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--max-scenes", type=int, default=0, help="evaluate at most this many test scenes")
     ap.add_argument("--sample-steps", type=int, default=100)
@@ -59,8 +76,8 @@ def main() -> int:
 
         dataset = args.out / "dataset"
         t = time.perf_counter()
-        rep = build_dataset(BuildConfig(scenes=args.build, rooms=tuple(args.rooms.split(","))),
-                            dataset, workers=args.workers)
+        rep = build_dataset(BuildConfig(scenes=args.build, rooms=tuple(args.rooms.split(",")),
+                                        settle=not args.no_settle), dataset, workers=args.workers)
         print(f"dataset: {rep.ok} scenes ok, {rep.failed} failed ({time.perf_counter() - t:.0f} s)")
     if dataset is None:
         ap.error("give --dataset or --build N")
@@ -68,6 +85,7 @@ def main() -> int:
     cpu = {}
     for cond in ("pag", "none"):
         cfg = TrainConfig(cond=cond, steps=args.steps, preset=args.preset, relations=args.relations,
+                          shape=args.shape, noise_draws=args.noise_draws, device=args.device,
                           checkpoint_every=max(args.steps // 8, 1))
         c0, w0 = time.process_time(), time.perf_counter()
         rep = train(dataset, args.out / cond, cfg, log=print)
@@ -76,7 +94,8 @@ def main() -> int:
         print(f"{cond}: {rep.steps} steps, {cpu[cond][0]:.0f} s CPU ({cpu[cond][1]:.0f} s wall); "
               f"loss {rep.losses[0]:.3f} -> {sum(last) / len(last):.3f}; val {rep.val_losses[-1:]}")
 
-    runs = [load_run(args.out / "pag"), load_run(args.out / "none")]
+    runs = [load_run(args.out / "pag", device=args.device),
+            load_run(args.out / "none", device=args.device)]
     files = held_out_scenes(runs[0])
     if args.max_scenes:
         files = files[:args.max_scenes]
@@ -84,7 +103,7 @@ def main() -> int:
     c0 = time.process_time()
     res = evaluate(runs, files, seeds=args.seeds, physics=not args.no_physics,
                    sample_steps=args.sample_steps, previews=2, out=dest,
-                   progress=lambda s: print("  " + s, flush=True))
+                   progress=lambda s: print("  " + s, flush=True), guidance=args.guidance)
     write_result(res, dest)
     _loss_figure(args.out, dest / "losses.png")
     print(f"evaluation: {len(res.scenes)} scenes, {time.process_time() - c0:.0f} s CPU\n")
@@ -127,8 +146,11 @@ def _claim(res) -> None:
     pag, none, rnd = rows.get("pag"), rows.get("none"), rows.get("random")
     if pag is None or none is None or rnd is None:
         return
-    for metric, better in (("relations", 1), ("collision_rate", -1)):
+    for metric, better in (("relations", 1), ("relations_spatial", 1), ("relations_settled", 1),
+                           ("support_rate", 1), ("collision_rate", -1)):
         (mp, sp), (mn, sn), (mr, _) = pag.mean_std(metric), none.mean_std(metric), rnd.mean_std(metric)
+        if mp != mp:  # NaN: not measured (no physics)
+            continue
         margin = better * (mp - mn)
         print(f"{metric}: PAG {mp:.3f}±{sp:.3f} vs unconditioned {mn:.3f}±{sn:.3f} "
               f"(margin {margin:+.3f}, spread {max(sp, sn):.3f}: "

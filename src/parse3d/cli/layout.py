@@ -39,9 +39,15 @@ def register(app: typer.Typer) -> None:
         out: Path = typer.Option(..., "--out", "-o", help="Run folder (resumed if it holds a checkpoint)."),
         cond: str = typer.Option("pag", "--cond", help="pag (PAG-conditioned) or none."),
         steps: int = typer.Option(2000, "--steps", help="Optimiser steps in total."),
-        preset: str = typer.Option("cpu", "--preset", help="cpu (d=128, 4 layers), paper (512-d) or tiny."),
+        preset: str = typer.Option("cpu", "--preset",
+                                   help="cpu (d=128, 4 layers), small (d=64, 3 layers), paper "
+                                        "(512-d) or tiny."),
         relations: str = typer.Option("text", "--relations",
                                       help="Relation embedding: text (MiniLM phrases) or learned."),
+        shape: str = typer.Option("descriptor", "--shape",
+                                  help="Shape encoder: descriptor (fixed) or pointcloud (learned "
+                                       "on the pool's surface points)."),
+        noise_draws: int = typer.Option(16, "--noise-draws", help="Noise draws per scene and step."),
         cond_dropout: float = typer.Option(0.1, "--cond-dropout",
                                            help="Condition dropout for guidance (pag runs)."),
         seed: int = typer.Option(0, "--seed", help="Seed of the split, initialisation and noise."),
@@ -61,7 +67,7 @@ def register(app: typer.Typer) -> None:
 
         _threads(threads)
         cfg = TrainConfig(cond=cond, steps=steps, preset=preset, relations=relations,
-                          cond_dropout=cond_dropout, seed=seed,
+                          shape=shape, noise_draws=noise_draws, cond_dropout=cond_dropout, seed=seed,
                           checkpoint_every=checkpoint_every, device=device)
         cfg.check()
         from rich.progress import (
@@ -107,6 +113,9 @@ def register(app: typer.Typer) -> None:
         guidance: float = typer.Option(1.0, "--guidance",
                                        help="Classifier-free guidance weight (1: plain conditional)."),
         uncond: bool = typer.Option(False, "--uncond", help="Drop the PAG condition."),
+        refine: bool = typer.Option(False, "--refine",
+                                    help="Hand the generated poses to the solver as its first "
+                                         "proposals; report how many it kept."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
         threads: int = threads_opt,
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
@@ -114,6 +123,8 @@ def register(app: typer.Typer) -> None:
         """Generate a layout for a PAG: OUT/scene.json and OUT/scene.glb with pool assets.
 
         The folder is a normal scene: 'parse3d settle OUT' and 'parse3d render OUT' accept it.
+        With --refine the solver lays the PAG out starting from the generated poses (snapped
+        upright and onto their supports); scene.json's meta.refine says which it kept.
 
         Example: parse3d layout sample runs/pag --pag examples/study.json --out out/gen-study
         """
@@ -129,16 +140,29 @@ def register(app: typer.Typer) -> None:
         scene = sample_layout(r, pag, seed=seed, file=str(pag_file),
                               options=SampleOptions(steps=sample_steps, guidance=guidance,
                                                     cond=not uncond))
+        gen_held = sum(1 for c in scene.relations if c.holds)
+        rep = None
+        if refine:
+            from ..layoutgen.sample import refine_layout
+
+            with err_console.status("refining with the solver"):
+                scene, rep = refine_layout(scene, seed=seed)
         write_outputs(scene, out)
         held = sum(1 for c in scene.relations if c.holds)
         if as_json:
             print_json({"out": str(out), "objects": len(scene.objects),
                         "relations": len(scene.relations), "relations_held": held,
+                        "relations_held_generated": gen_held,
+                        "refine": rep.to_dict() if rep is not None else None,
                         "timings": scene.timings})
             return
         console.print(f"generated {len(scene.objects)} objects with {r.name} (step {r.step}, "
                       f"{scene.meta['cond']}) in {scene.timings['generate']:.1f} s; "
-                      f"{held}/{len(scene.relations)} relations hold as generated")
+                      f"{gen_held}/{len(scene.relations)} relations hold as generated")
+        if rep is not None:
+            console.print(f"refined: the solver kept {len(rep.kept)} of {rep.proposed} generated "
+                          f"poses, placed {rep.placed} objects ({rep.failed} failed); "
+                          f"{held}/{len(scene.relations)} relations hold")
         console.print(f"  wrote {out}/scene.json, scene.glb — next: parse3d settle {out}")
 
     @lay.command("eval")
@@ -152,6 +176,8 @@ def register(app: typer.Typer) -> None:
         no_physics: bool = typer.Option(False, "--no-physics",
                                         help="Skip settling and contacts (fast)."),
         sample_steps: int = typer.Option(100, "--sample-steps", help="Denoising steps."),
+        guidance: float = typer.Option(1.0, "--guidance",
+                                       help="Classifier-free guidance of the PAG rows (1: plain)."),
         previews: int = typer.Option(2, "--previews", help="Scenes to render side by side."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
         threads: int = threads_opt,
@@ -180,7 +206,8 @@ def register(app: typer.Typer) -> None:
         with err_console.status("evaluating") as st:
             res = evaluate(loaded, files, seeds=seeds, physics=not no_physics,
                            sample_steps=sample_steps, previews=previews, out=dest,
-                           progress=None if as_json else (lambda s: st.update(s)))
+                           progress=None if as_json else (lambda s: st.update(s)),
+                           guidance=guidance)
         if not res.scenes:
             raise InputError(Problem("", "no held-out scene has only categories the runs know",
                                      str(dataset or runs[0]), "vocabulary"))

@@ -56,6 +56,9 @@ class LayoutScene:
         PAG relations whose child (and parent object, if any) were placed.
     footprint : (F, 2) float
     height : float
+    solved_poses : (N, 12) float or None
+        The solver's own poses before settling (what its relation checks passed on); None
+        when they equal ``poses``.
     """
 
     scene_id: str
@@ -69,6 +72,7 @@ class LayoutScene:
     relations: list[RelationSpec] = field(default_factory=list)
     footprint: np.ndarray = field(default_factory=lambda: np.zeros((0, 2)))
     height: float = 0.0
+    solved_poses: np.ndarray | None = None
 
     @property
     def room_type(self) -> str:
@@ -153,24 +157,27 @@ def load_scene(scene_json: str | Path) -> LayoutScene:
         raise InputError(Problem("/format", f"expected one of {', '.join(READABLE_FORMATS)}, "
                                             f"got {d.get('format')!r}", str(f), "schema"))
     pag = PAG.from_dict(d["pag"])
-    ids, cats, assets, poses, scales = [], [], [], [], []
+    ids, cats, assets, poses, solved, scales = [], [], [], [], [], []
     for od in d["objects"]:
         if od.get("status") != "placed":
             continue
-        pose = od.get("settled_pose") or od["pose"]
         asset = load_asset_ref(od["asset"])
-        R = quat_to_matrix(pose["quaternion"])
         s = float(od["scale"])
         ids.append(od["id"])
         cats.append(od["category"])
         assets.append(asset)
         scales.append(s)
-        poses.append(np.r_[pose["position"], s * asset.extents, rotation_to_6d(R)])
+        for dest, pose in ((poses, od.get("settled_pose") or od["pose"]), (solved, od["pose"])):
+            dest.append(np.r_[pose["position"], s * asset.extents,
+                              rotation_to_6d(quat_to_matrix(pose["quaternion"]))])
     index = {o: i for i, o in enumerate(ids)}
     rels = pag_relations(pag, index, dict(zip(ids, cats, strict=True)))
-    return LayoutScene(f.parent.name, f.parent, pag, ids, cats, assets,
-                       np.array(poses, float).reshape(-1, 12), np.array(scales, float), rels,
-                       np.array(d["room"]["footprint"], float), float(d["room"]["height"]))
+    poses_a = np.array(poses, float).reshape(-1, 12)
+    solved_a = np.array(solved, float).reshape(-1, 12)
+    return LayoutScene(f.parent.name, f.parent, pag, ids, cats, assets, poses_a,
+                       np.array(scales, float), rels, np.array(d["room"]["footprint"], float),
+                       float(d["room"]["height"]),
+                       None if np.array_equal(poses_a, solved_a) else solved_a)
 
 
 def load_dataset(dataset: str | Path, *, progress=None) -> list[LayoutScene]:

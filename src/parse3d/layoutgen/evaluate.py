@@ -3,7 +3,8 @@
 For every held-out scene the same objects (the scene's placed objects, with their assets) are
 laid out by each *row* and measured the same way:
 
-- **solver**: the dataset's own (settled) poses, the upper bound;
+- **solver**: the solver's own poses from the dataset (before settling: the poses its relation
+  checks passed on), the upper bound;
 - **random**: uniform positions in the footprint, heights in ``[0, room height - object
   height]``, uniform yaw, upright;
 - one row per run: a ``pag`` run conditioned on the PAG, and (trained with condition dropout)
@@ -23,7 +24,12 @@ scale whose volume matches the generated size. Metrics of one layout (:func:`lay
     object, whose child's centre lies over the supporter (inside its bounding box in XY).
 ``relations``, ``relations_settled``
     Share of the PAG's relations that hold by the solver's own checks, before and after
-    settling.
+    settling. Most PAG relations are contacts (``ON``, ``IN``, ``AGAINST``, ...) whose checks
+    allow -1...+2 mm and 2 degrees, which a generated pose does not hit before settling;
+``relations_spatial``
+    so this is the share of the arrangement relations alone (``SIDE_OF``, ``ALONG``, ``NEAR``,
+    ``FAR_FROM``, ``TOWARD``: region conditions on centroids, no contact) that hold as
+    generated.
 ``displacement``
     Mean distance (m) the free objects move when the layout is settled in SAPIEN (paper
     parameters).
@@ -57,6 +63,8 @@ __all__ = ["LayoutMetrics", "EvalRow", "EvalResult", "layout_metrics", "collisio
 PENETRATION = 0.01
 SUPPORT_TOL = 0.02
 _SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+#: Relations judged on centroids and regions, without contact tolerances.
+SPATIAL = ("SIDE_OF", "ALONG", "NEAR", "FAR_FROM", "TOWARD")
 
 #: Metric name, direction (+1 higher is better), format.
 METRICS = (
@@ -64,6 +72,7 @@ METRICS = (
     ("outside", -1, "{:.3f}"),
     ("support_rate", 1, "{:.3f}"),
     ("relations", 1, "{:.3f}"),
+    ("relations_spatial", 1, "{:.3f}"),
     ("relations_settled", 1, "{:.3f}"),
     ("displacement", -1, "{:.3f}"),
     ("contacts", 1, "{:.1f}"),
@@ -81,6 +90,7 @@ class LayoutMetrics:
     outside: float
     support_rate: float
     relations: float
+    relations_spatial: float = math.nan
     relations_settled: float = math.nan
     displacement: float = math.nan
     contacts: float = math.nan
@@ -200,7 +210,9 @@ def layout_metrics(scene: Scene, *, physics: bool = True) -> LayoutMetrics:
     hit = {a for a, _, _ in pairs} | {b for _, b, _ in pairs}
     m = LayoutMetrics(n, len(pairs), len(hit) / max(n, 1), len(outside_room(scene)) / max(n, 1),
                       _share(_support_ok(scene)),
-                      _share(c.holds for c in scene.relations if c.holds is not None))
+                      _share(c.holds for c in scene.relations if c.holds is not None),
+                      _share(c.holds for c in scene.relations
+                             if c.holds is not None and c.relation in SPATIAL))
     if physics:
         from ..physics import extract_contacts, settle
 
@@ -236,6 +248,30 @@ def random_poses(ls: LayoutScene, rng: np.random.Generator) -> np.ndarray:
         out[k, :3] = [xy[0], xy[1], z]
         out[k, 6:] = rotation_to_6d(R)
     return out
+
+
+def _known_only(ls: LayoutScene, known: set[str]) -> LayoutScene:
+    """``ls`` without the objects of categories outside ``known`` and those they support."""
+    from dataclasses import replace
+
+    from .data import pag_relations
+
+    kept: list[int] = []
+    ids = set()
+    for k, (oid, cat) in enumerate(zip(ls.object_ids, ls.categories, strict=True)):
+        sup = ls.pag.supporter(oid)
+        carried_by = None if sup is None or sup.parent.is_room_element else sup.parent.object
+        if cat in known and (carried_by is None or carried_by in ids):
+            kept.append(k)
+            ids.add(oid)
+    if len(kept) == len(ls.object_ids):
+        return ls
+    obj = [ls.object_ids[k] for k in kept]
+    cats = [ls.categories[k] for k in kept]
+    rels = pag_relations(ls.pag, {o: i for i, o in enumerate(obj)}, dict(zip(obj, cats, strict=True)))
+    return replace(ls, object_ids=obj, categories=cats, assets=[ls.assets[k] for k in kept],
+                   poses=ls.poses[kept], scales=ls.scales[kept], relations=rels,
+                   solved_poses=None if ls.solved_poses is None else ls.solved_poses[kept])
 
 
 def _sub_pag(ls: LayoutScene) -> PAG:
@@ -296,10 +332,12 @@ class EvalResult:
     seeds: int
     physics: bool
     previews: list[str] = field(default_factory=list)
+    left_out: int = 0
 
     def to_dict(self) -> dict:
         return {"format": "parse3d-layout-eval/1", "scenes": self.scenes, "seeds": self.seeds,
                 "physics": self.physics, "previews": self.previews,
+                "objects_left_out": self.left_out,
                 "rows": [{"name": r.name, "kind": r.kind,
                           "metrics": {m: dict(zip(("mean", "std"), r.mean_std(m), strict=True))
                                       for m, _, _ in METRICS},
@@ -307,7 +345,7 @@ class EvalResult:
 
     def markdown(self) -> str:
         cols = [m for m, _, _ in METRICS if self.physics or m in
-                ("collision_rate", "outside", "support_rate", "relations")]
+                ("collision_rate", "outside", "support_rate", "relations", "relations_spatial")]
         arrows = {m: ("↑" if d > 0 else "↓") for m, d, _ in METRICS}
         fmt = {m: f for m, _, f in METRICS}
         head = "| row | " + " | ".join(f"{c} {arrows[c]}" for c in cols) + " |"
@@ -322,15 +360,19 @@ class EvalResult:
         lines.append("")
         lines.append(f"{len(self.scenes)} held-out scenes, {self.seeds} sampling seed(s) per "
                      "model and random row (mean ± standard deviation over seeds of the "
-                     "per-seed mean over scenes).")
+                     "per-seed mean over scenes)."
+                     + (f" {self.left_out} object(s) of categories a run never saw (and what "
+                        "they carried) were left out of the scenes." if self.left_out else ""))
         return "\n".join(lines) + "\n"
 
 
-def _rows_for(runs: list[LayoutRun]) -> list[tuple[str, str, LayoutRun | None, bool]]:
-    rows = [("solver (dataset poses)", "solver", None, False), ("random poses", "random", None, False)]
+def _rows_for(runs: list[LayoutRun], guidance: float = 1.0
+              ) -> list[tuple[str, str, LayoutRun | None, bool]]:
+    rows = [("solver (solved poses)", "solver", None, False), ("random poses", "random", None, False)]
+    w = "" if guidance == 1.0 else f", guidance {guidance:g}"
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name})", "pag", run, True))
+            rows.append((f"PAG-conditioned ({run.name}{w})", "pag", run, True))
             if run.config.cond_dropout > 0:
                 rows.append((f"unconditioned ({run.name}, condition dropped)", "none", run, False))
         else:
@@ -356,8 +398,8 @@ def _compose(images: list[tuple[str, np.ndarray]], path: Path) -> None:
 
 def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
              physics: bool = True, sample_steps: int = 100, previews: int = 2,
-             out: Path | None = None, progress: Callable[[str], None] | None = None
-             ) -> EvalResult:
+             out: Path | None = None, progress: Callable[[str], None] | None = None,
+             guidance: float = 1.0) -> EvalResult:
     """Lay out every scene with every row and measure it (see the module docstring).
 
     Parameters
@@ -377,15 +419,20 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         Where previews go (nothing rendered without it).
     progress : callable, optional
         Called with a short label before every layout.
+    guidance : float
+        Classifier-free guidance weight of the PAG-conditioned rows (1: plain conditional).
     """
-    rows = _rows_for(runs)
+    rows = _rows_for(runs, guidance)
     result = EvalResult([EvalRow(name, kind) for name, kind, _, _ in rows], [], seeds, physics)
     acc: list[list[list[dict]]] = [[[] for _ in range(seeds)] for _ in rows]
     for si, f in enumerate(scene_files):
         ls = load_scene(f)
-        known = set.intersection(*(set(r.categories) for r in runs)) if runs else None
-        if not ls.object_ids or (known is not None and not set(ls.categories) <= known):
-            continue  # a category no model saw: the scene cannot be generated by every row
+        if runs:  # objects of a category some run never saw cannot be generated by every row
+            n0 = len(ls.object_ids)
+            ls = _known_only(ls, set.intersection(*(set(r.categories) for r in runs)))
+            result.left_out += n0 - len(ls.object_ids)
+        if not ls.object_ids:
+            continue
         result.scenes.append(ls.scene_id)
         pag = _sub_pag(ls)
         shots: list[tuple[str, np.ndarray]] = []
@@ -395,7 +442,8 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                 if progress is not None:
                     progress(f"{ls.scene_id}: {name}, seed {seed}")
                 if kind == "solver":
-                    scene = _scene_for(ls, pag, ls.poses, seed, given_scale=True, label=kind)
+                    solved = ls.poses if ls.solved_poses is None else ls.solved_poses
+                    scene = _scene_for(ls, pag, solved, seed, given_scale=True, label=kind)
                 elif kind == "random":
                     rng = np.random.default_rng([seed, si, 17])
                     scene = _scene_for(ls, pag, random_poses(ls, rng), seed, given_scale=True,
@@ -403,7 +451,8 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                 else:
                     poses = generate_poses(run, ls.categories, ls.assets, ls.relations,
                                            ls.footprint, ls.height, seed=seed,
-                                           options=SampleOptions(steps=sample_steps, cond=cond))
+                                           options=SampleOptions(steps=sample_steps, cond=cond,
+                                                                 guidance=guidance))
                     scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name)
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene

@@ -75,6 +75,7 @@ class ModelConfig:
 PRESETS = {
     "cpu": {"d": 128, "d_edge": 32, "layers": 4, "heads": 4},
     "paper": {"d": 512, "d_edge": 128, "layers": 8, "heads": 8},
+    "small": {"d": 64, "d_edge": 16, "layers": 3, "heads": 4},
     "tiny": {"d": 32, "d_edge": 16, "layers": 2, "heads": 2},
 }
 

@@ -9,7 +9,10 @@ A pose row is ``[t (3), size (3), r6 (6)]`` in the world frame:
 
 The network sees normalised poses: ``t`` mapped to ``[-1, 1]`` over the room's footprint
 bounding box (x, y) and height (z), ``log(size)`` standardised by the training set's mean and
-standard deviation (:class:`PoseStats`, saved with a run as ``stats.json``), ``r6`` unchanged.
+``size_spread`` (3) standard deviations (:class:`PoseStats`, saved with a run as ``stats.json``),
+``r6`` unchanged. Every block therefore lies in ``[-1, 1]`` (sizes up to three standard
+deviations from the mean), the range the DDPM sampler clips its clean-sample estimate to: with
+plain standardisation that clipping squeezed every size into one standard deviation.
 """
 
 from __future__ import annotations
@@ -58,10 +61,15 @@ def room_box(footprint: np.ndarray, height: float) -> tuple[np.ndarray, np.ndarr
 
 @dataclass(frozen=True)
 class PoseStats:
-    """Normalisation of the size block: mean and standard deviation of ``log(size)`` (3 each)."""
+    """Normalisation of the size block: mean and standard deviation of ``log(size)`` (3 each).
+
+    ``size_spread``: how many standard deviations map to 1 (3 for new runs; runs written
+    before it existed read as 1).
+    """
 
     log_size_mean: tuple[float, float, float]
     log_size_std: tuple[float, float, float]
+    size_spread: float = 3.0
 
     @classmethod
     def fit(cls, poses: list[np.ndarray]) -> PoseStats:
@@ -75,7 +83,12 @@ class PoseStats:
 
     @classmethod
     def from_dict(cls, d: dict) -> PoseStats:
-        return cls(tuple(d["log_size_mean"]), tuple(d["log_size_std"]))
+        return cls(tuple(d["log_size_mean"]), tuple(d["log_size_std"]),
+                   float(d.get("size_spread", 1.0)))
+
+    @property
+    def _scale(self) -> np.ndarray:
+        return self.size_spread * np.array(self.log_size_std)
 
 
 def normalise_poses(poses: np.ndarray, footprint: np.ndarray, height: float,
@@ -84,7 +97,7 @@ def normalise_poses(poses: np.ndarray, footprint: np.ndarray, height: float,
     lo, hi = room_box(footprint, height)
     p = np.asarray(poses, float)
     t = 2.0 * (p[:, :3] - lo) / np.maximum(hi - lo, 1e-6) - 1.0
-    s = (np.log(np.maximum(p[:, 3:6], 1e-4)) - np.array(stats.log_size_mean)) / np.array(stats.log_size_std)
+    s = (np.log(np.maximum(p[:, 3:6], 1e-4)) - np.array(stats.log_size_mean)) / stats._scale
     return np.concatenate([t, s, p[:, 6:12]], axis=1).astype(np.float32)
 
 
@@ -94,6 +107,6 @@ def denormalise_poses(x: np.ndarray, footprint: np.ndarray, height: float,
     lo, hi = room_box(footprint, height)
     x = np.asarray(x, float)
     t = (x[:, :3] + 1.0) * 0.5 * (hi - lo) + lo
-    s = np.exp(x[:, 3:6] * np.array(stats.log_size_std) + np.array(stats.log_size_mean))
+    s = np.exp(x[:, 3:6] * stats._scale + np.array(stats.log_size_mean))
     r6 = rotation_to_6d(rotation_from_6d(x[:, 6:12]))
     return np.concatenate([t, s, r6], axis=1)

@@ -31,7 +31,7 @@ from .pose import denormalise_poses, rotation_from_6d
 from .train import LayoutRun, make_scheduler, scene_tensors
 
 __all__ = ["SampleOptions", "sample_layout", "generate_poses", "fit_asset", "layout_scene",
-           "SCALE_RANGE"]
+           "SCALE_RANGE", "RefineReport", "snap_proposals", "refine_layout", "nearest_walls"]
 
 #: The uniform scale chosen for an asset is clipped to this range.
 SCALE_RANGE = (0.25, 4.0)
@@ -159,8 +159,31 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
             oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
             support=None if sup is None else str(sup.parent),
             fixed=sup is not None and sup.relation in _FIXED)
+    scene.meta["resolved"] = nearest_walls(scene)
     scene.relations = check_relations(scene)
     return scene
+
+
+def nearest_walls(scene: Scene) -> dict[str, dict]:
+    """Which wall each relation to ``wall`` (any wall) means: the wall segment nearest the
+    child's centre in plan, as the relation checks' ``resolved`` entries (the solver records
+    its own choice; without one the checks take the nearest wall *plane*, which in an L-shaped
+    room can be the plane of a wall on the far side)."""
+    fp = np.asarray(scene.room.footprint, float)
+    a, b = fp, np.roll(fp, -1, axis=0)
+    d = b - a
+    out = {}
+    for i, e in enumerate(scene.pag.relations):
+        o = scene.objects.get(e.child.object)
+        if e.parent.object != "wall" or o is None or not o.placed:
+            continue
+        c = o.world_bounds(settled=False).mean(0)[:2]
+        u = np.clip(np.einsum("ij,ij->i", c - a, d) / np.maximum(np.einsum("ij,ij->i", d, d),
+                                                                  1e-12), 0.0, 1.0)
+        k = int(np.argmin(np.linalg.norm(a + u[:, None] * d - c, axis=1)))
+        out[str(i)] = {"parent_part": None, "parent_element": f"wall_{k}",
+                       "parent_surface": None, "internal": False}
+    return out
 
 
 def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
@@ -190,3 +213,114 @@ def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
     scene.timings["generate"] = round(t1 - t0, 4)
     scene.timings["assets"] = round(time.perf_counter() - t1, 4)
     return scene
+
+
+#: An object whose up axis is within this angle of the world's is proposed upright (yaw only).
+UPRIGHT_DEG = 30.0
+#: Height above the generated parent's top at which an ``ON``-an-object child is proposed; the
+#: solver drops it onto the parent's geometry.
+DROP_LIFT = 0.01
+
+
+def snap_proposals(pag: PAG, scene: Scene) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """The generated poses of ``scene`` as the solver's first proposals, ``{id: (R, t)}``.
+
+    A generated pose is never exact to the millimetre the solver's checks ask for, so each is
+    snapped first, parents before children:
+
+    - an object whose up axis is within :data:`UPRIGHT_DEG` of the world's is turned upright,
+      keeping the yaw of its front (+y) axis;
+    - ``ON floor``: its lowest point (the asset origin, upright) at the contact gap above the
+      floor;
+    - ``ON`` an object: moved with its parent's snap, then lifted to :data:`DROP_LIFT` above
+      the parent's generated top when lower (the solver lowers it onto the parent's geometry);
+    - anything else (walls, ceilings, ``IN``) keeps its generated height.
+
+    Translations are the asset origin (bottom centre) in world metres, as ``solve`` expects.
+    """
+    from ..measure.checks import EPS
+    from ..pag.algorithms import assembly_order
+
+    out: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    dz: dict[str, float] = {}
+    top: dict[str, float] = {}
+    for oid in assembly_order(pag):
+        o = scene.objects.get(oid)
+        if o is None or not o.placed:
+            continue
+        R = np.asarray(o.rotation, float)
+        t = np.asarray(o.position, float).copy()
+        up = float(np.clip(R[2, 2], -1.0, 1.0))
+        upright = np.degrees(np.arccos(up)) <= UPRIGHT_DEG
+        if upright:
+            f = R[:, 1]
+            yaw = float(np.arctan2(-f[0], f[1]))
+            c, sn = np.cos(yaw), np.sin(yaw)
+            R = np.array([[c, -sn, 0.0], [sn, c, 0.0], [0.0, 0.0, 1.0]])
+        sup = pag.supporter(oid)
+        z0 = float(t[2])
+        if sup is not None and sup.relation == "ON" and sup.parent.object == "floor" and upright:
+            t[2] = EPS
+        elif sup is not None and not sup.parent.is_room_element:
+            parent = str(sup.parent.object)
+            t[2] += dz.get(parent, 0.0)
+            if sup.relation == "ON" and parent in top:
+                t[2] = max(t[2], top[parent] + DROP_LIFT)
+        dz[oid] = float(t[2]) - z0
+        height = float(np.ptp(o.world_bounds(settled=False)[:, 2]))
+        top[oid] = float(t[2]) + (height if upright else 0.0)
+        out[oid] = (R, t)
+    return out
+
+
+@dataclass
+class RefineReport:
+    """What the solver made of the generated poses.
+
+    Attributes
+    ----------
+    proposed : int
+        Objects handed to the solver with a proposal.
+    kept : list of str
+        Objects the solver placed at their proposal (same rotation and horizontal position;
+        an ``ON`` child may have been lowered onto its parent).
+    placed, failed : int
+        Objects the solver placed (at the proposal or elsewhere) / could not place.
+    """
+
+    proposed: int
+    kept: list[str]
+    placed: int
+    failed: int
+
+    def to_dict(self) -> dict:
+        return {"proposed": self.proposed, "kept": len(self.kept), "kept_ids": self.kept,
+                "placed": self.placed, "failed": self.failed}
+
+
+def refine_layout(generated: Scene, *, seed: int = 0, library=None) -> tuple[Scene, RefineReport]:
+    """Solve ``generated``'s PAG with its (snapped) poses as the first proposal per object.
+
+    Returns the solver's scene, with the report also under ``scene.meta["refine"]``.
+    """
+    from ..solver import solve
+
+    pag = generated.pag
+    props = snap_proposals(pag, generated)
+    t0 = time.perf_counter()
+    scene = solve(pag, seed=seed, library=library, proposals=props)
+    kept = []
+    for oid, (R, t) in props.items():
+        o = scene.objects.get(oid)
+        if o is None or not o.placed:
+            continue
+        if (np.linalg.norm(np.asarray(o.position)[:2] - t[:2]) <= 1e-6
+                and np.allclose(np.asarray(o.rotation), R, atol=1e-6)
+                and o.position[2] <= t[2] + 1e-6):
+            kept.append(oid)
+    rep = RefineReport(len(props), kept, len(scene.placed), len(scene.failed))
+    scene.meta.update({k: v for k, v in generated.meta.items() if k not in scene.meta})
+    scene.meta["refine"] = rep.to_dict()
+    scene.timings.update({k: v for k, v in generated.timings.items() if k not in scene.timings})
+    scene.timings["refine"] = round(time.perf_counter() - t0, 4)
+    return scene, rep

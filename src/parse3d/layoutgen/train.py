@@ -9,7 +9,8 @@ A run folder holds (all written by :func:`train`):
 - ``checkpoint.pt``: network, EMA weights, optimiser, step and the loss history (written
   every ``checkpoint_every`` steps and at the end; :func:`train` resumes from it);
 - ``loss.png`` / ``losses.csv``: the training loss curve (and the validation loss);
-- ``relation_text.npz``: the cached phrase embeddings of the text relation encoder.
+- ``relation_text.npz``: the cached phrase embeddings of the text relation encoder;
+- ``shape_encoder.pt``: the learned point-cloud shape encoder (``shape="pointcloud"`` only).
 
 Recipe (paper, Appendix A.4): DDPM with 1000 steps, squared-cosine betas, epsilon prediction;
 AdamW (lr 8e-4, weight decay 1e-4, betas 0.9/0.999); one scene per step with 16 independent
@@ -35,7 +36,7 @@ import numpy as np
 from ..errors import InputError, Problem
 from ..scene.io import atomic_write_bytes, atomic_write_text
 from .data import GraphArrays, LayoutScene, graph_arrays, load_dataset, split_scenes
-from .encoders import ShapeDescriptor, make_relation_encoder
+from .encoders import ShapeDescriptor, ShapeEncoder, make_relation_encoder
 from .pose import PoseStats
 
 __all__ = ["TrainConfig", "TrainReport", "LayoutRun", "train", "load_run", "scene_tensors",
@@ -57,9 +58,14 @@ class TrainConfig:
     steps : int
         Optimiser steps in total (a resumed run continues up to this).
     preset : str
-        Network size: ``cpu`` (d=128, 4 layers), ``paper`` (512-d) or ``tiny`` (tests).
+        Network size: ``cpu`` (d=128, 4 layers), ``small`` (d=64, 3 layers), ``paper``
+        (512-d) or ``tiny`` (tests).
     relations : str
         Relation encoder: ``text`` (all-MiniLM-L6-v2 phrases) or ``learned``.
+    shape : str
+        Shape encoder: ``descriptor`` (fixed) or ``pointcloud`` (learned, :mod:`.pointcloud`).
+    shape_steps : int
+        Training steps of the ``pointcloud`` encoder (before the layout model's).
     noise_draws : int
         Noise samples per scene and step (paper: 16).
     lr, weight_decay : float
@@ -75,6 +81,8 @@ class TrainConfig:
     steps: int = 2000
     preset: str = "cpu"
     relations: str = "text"
+    shape: str = "descriptor"
+    shape_steps: int = 400
     noise_draws: int = 16
     lr: float = 8e-4
     weight_decay: float = 1e-4
@@ -94,6 +102,8 @@ class TrainConfig:
             bad.append(("--preset", f"must be one of {', '.join(PRESETS)}, got {self.preset!r}"))
         if self.relations not in ("text", "learned"):
             bad.append(("--relations", f"must be 'text' or 'learned', got {self.relations!r}"))
+        if self.shape not in ("descriptor", "pointcloud"):
+            bad.append(("--shape", f"must be 'descriptor' or 'pointcloud', got {self.shape!r}"))
         if self.steps < 1:
             bad.append(("--steps", f"must be at least 1, got {self.steps}"))
         if self.device not in ("cpu", "cuda"):
@@ -157,7 +167,7 @@ class LayoutRun:
     config : TrainConfig
     model : LayoutDenoiser
         In eval mode, EMA weights loaded.
-    shape_encoder : ShapeDescriptor
+    shape_encoder : ShapeEncoder
     relation_encoder : RelationEncoder
     stats : PoseStats
     split : dict of str to list of str
@@ -169,7 +179,7 @@ class LayoutRun:
     path: Path
     config: TrainConfig
     model: object
-    shape_encoder: ShapeDescriptor
+    shape_encoder: ShapeEncoder
     relation_encoder: object
     stats: PoseStats
     split: dict[str, list[str]]
@@ -266,7 +276,7 @@ def _batch_loss(model, sched, g: dict, gen, draws: int, drop: float, cond: str, 
     return torch.nn.functional.mse_loss(pred, noise)
 
 
-def _config_doc(cfg: TrainConfig, mcfg, shape_enc: ShapeDescriptor, dataset: str) -> dict:
+def _config_doc(cfg: TrainConfig, mcfg, shape_enc: ShapeEncoder, dataset: str) -> dict:
     return {"format": "parse3d-layout-run/1", "train": asdict(cfg), "model": mcfg.to_dict(),
             "shape_encoder": shape_enc.config(), "relation_encoder": cfg.relations,
             "dataset": dataset, "scheduler": {"num_train_timesteps": 1000,
@@ -275,8 +285,8 @@ def _config_doc(cfg: TrainConfig, mcfg, shape_enc: ShapeDescriptor, dataset: str
             "ema": {"max_decay": EMA_MAX_DECAY, "inv_gamma": EMA_INV_GAMMA, "power": EMA_POWER}}
 
 
-_RESUME_KEYS = ("cond", "preset", "relations", "noise_draws", "lr", "weight_decay",
-                "cond_dropout", "seed")
+_RESUME_KEYS = ("cond", "preset", "relations", "shape", "shape_steps", "noise_draws", "lr",
+                "weight_decay", "cond_dropout", "seed")
 
 
 def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
@@ -310,7 +320,9 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
     resume = ckpt_path.is_file()
     if resume:
         old = json.loads((out / "config.json").read_text())
-        diff = [k for k in _RESUME_KEYS if old["train"].get(k) != getattr(config, k)]
+        defaults = TrainConfig()
+        diff = [k for k in _RESUME_KEYS
+                if old["train"].get(k, getattr(defaults, k)) != getattr(config, k)]
         if diff:
             raise InputError(Problem("", f"{out} holds a run with other settings ("
                                          + ", ".join(f"{k}={old['train'][k]!r}" for k in diff)
@@ -336,9 +348,9 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
     if missing:
         raise InputError(Problem("", f"the run's train scenes {missing[:3]} are not in {dataset}",
                                  str(out / "split.json"), "io"))
-    shape_enc = ShapeDescriptor(cats)
-    rel_enc = make_relation_encoder(config.relations, cache=out / "relation_text.npz")
     train_scenes = [by_id[i] for i in split["train"]]
+    shape_enc = _shape_encoder(config, cats, train_scenes, out, resume, say)
+    rel_enc = make_relation_encoder(config.relations, cache=out / "relation_text.npz")
     val_scenes = [by_id[i] for i in split["val"] if i in by_id][:8]
     out.mkdir(parents=True, exist_ok=True)
 
@@ -349,7 +361,8 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
             rels = [r for r in s.relations if r.child in idx and (r.parent < 0 or r.parent in idx)]
             rels = [replace(r, child=idx[r.child], parent=idx.get(r.parent, -1)) for r in rels]
             s = replace(s, categories=[s.categories[k] for k in keep],
-                        assets=[s.assets[k] for k in keep], poses=s.poses[keep], relations=rels)
+                        assets=[s.assets[k] for k in keep], poses=s.poses[keep], relations=rels,
+                        solved_poses=None)
         ga = graph_arrays(s.categories, s.assets, s.relations, s.footprint, s.height,
                           shape_encoder=shape_enc, relation_encoder=rel_enc, stats=stats,
                           poses=s.poses)
@@ -421,6 +434,28 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
     return TrainReport(out, start, step, time.perf_counter() - t0, losses, val_losses)
 
 
+def _shape_encoder(config: TrainConfig, cats: list[str], scenes: list[LayoutScene], out: Path,
+                   resume: bool, say) -> ShapeEncoder:
+    if config.shape == "descriptor":
+        return ShapeDescriptor(cats)
+    from .pointcloud import PointCloudEncoder, train_point_encoder
+
+    if resume and (out / "shape_encoder.pt").is_file():
+        doc = json.loads((out / "config.json").read_text())["shape_encoder"]
+        return PointCloudEncoder.load(out, doc)
+    from ..assets.pool import default_pool
+
+    pool = default_pool()
+    assets = [a for s in scenes for a in s.assets]
+    assets += [pool.load(c, k) for c in cats for k in range(pool.per_category)
+               if pool.path(c, k).is_file()]
+    state, _ = train_point_encoder(assets, steps=config.shape_steps, seed=config.seed, log=say)
+    enc = PointCloudEncoder(cats, state)
+    out.mkdir(parents=True, exist_ok=True)
+    enc.save(out)
+    return enc
+
+
 def _val_loss(model, sched, val_t: list[dict], config: TrainConfig, device) -> float | None:
     """Mean epsilon MSE over the validation scenes with fixed noise (condition kept)."""
     import torch
@@ -454,7 +489,12 @@ def load_run(run: str | Path, *, device: str = "cpu") -> LayoutRun:
                                  "schema"))
     cfg = TrainConfig(**doc["train"])
     dev = _device(device)
-    shape_enc = ShapeDescriptor(doc["shape_encoder"]["categories"])
+    if doc["shape_encoder"].get("name") == "pointcloud":
+        from .pointcloud import PointCloudEncoder
+
+        shape_enc = PointCloudEncoder.load(p, doc["shape_encoder"])
+    else:
+        shape_enc = ShapeDescriptor(doc["shape_encoder"]["categories"])
     rel_enc = make_relation_encoder(doc["relation_encoder"], cache=p / "relation_text.npz")
     model, _ = _build_model(cfg, shape_enc.dim, rel_enc.dim, cfg.seed)
     state = torch.load(ck, map_location=dev, weights_only=False)
