@@ -40,7 +40,7 @@ import numpy as np
 
 from ..scene.model import Scene
 from .checks import check_edge, world_points
-from .geometry import asset_geometry
+from .geometry import asset_geometry, is_round
 
 __all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by", "is_round",
            "SettledSummary", "summarize_settled"]
@@ -192,13 +192,6 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
 
 #: Metres the centre of mass must drop for a turned object to count as ``tipped``.
 TIP_DROP = 0.02
-
-
-def is_round(obj) -> bool:
-    """Whether an object is about as wide as it is deep and tall (an apple, a ball): it rolls
-    rather than tips."""
-    ext = np.ptp(asset_geometry(obj.asset).hull, axis=0)
-    return float(ext.max()) <= 1.3 * float(ext.min())
 
 
 def _com(obj, *, settled: bool) -> np.ndarray:
