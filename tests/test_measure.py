@@ -375,7 +375,10 @@ def test_verify_settled_reports_each_cause(room, assets):
     mug.settled_position = np.array([3.3, 1.5, GAP])  # fell off the desk onto the floor
     mug.flags = ["left_support"]
     cup.settled_position = cup.position + [0, 0, 0.02]  # lifted 2 cm: still close, relation broken
-    box.settled_rotation = axis_angle(np.array([1.0, 0, 0]), np.deg2rad(30))  # on its side
+    box.settled_rotation = axis_angle(np.array([1.0, 0, 0]), np.deg2rad(30))
+    assert ("box", "tipped") not in {(i.object_id, i.cause) for i in verify_settled(room.scene)}, \
+        "turned in place, its centre of mass no lower: not tipped over"
+    box.settled_position = box.position - [0, 0, 0.03]  # turned and fallen over onto an edge
     room.scene.objects["pic"].settled_position = np.array([2.0, 0.5, 0.0])  # fixed: ignored
     got = {(i.object_id, i.cause) for i in verify_settled(room.scene)}
     assert got == {("mug", "fell"), ("mug", "left_support"), ("cup", "broke_support"),

@@ -341,3 +341,17 @@ def test_public_api():
     pag = relations_pag()
     scene = parse3d.solve(pag, seed=2)
     assert scene.placed and scene.seed == 2
+
+
+def test_secured_to_a_height_the_object_cannot_have_says_why():
+    """A radiator's centre cannot be 0.1-0.2 m above the floor: the failure says the height is
+    the centre's; the same radiator at a height it can have is placed."""
+    pag = PAG("radiator", Room("bedroom", ((0, 0), (3.5, 0), (3.5, 3), (0, 3)), 2.6))
+    pag.add("low", "radiator")
+    pag.relate("low", "SECURED_TO", "wall_0", height=[0.1, 0.2])
+    pag.add("ok", "radiator")
+    pag.relate("ok", "SECURED_TO", "wall_2", height=[0.4, 0.9])
+    scene = solve(pag, seed=0)
+    low = scene.objects["low"]
+    assert not low.placed and "tall" in low.reason and "centre's, not the bottom's" in low.reason
+    assert scene.objects["ok"].placed, scene.objects["ok"].reason

@@ -18,11 +18,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-from shapely.geometry import MultiPoint, Point
-
-from .measure.checks import check_relations, world_points
-from .measure.geometry import asset_geometry
+from .measure.checks import check_relations
+from .measure.stability import verify_settled
 from .pag.model import PAG
 from .scene.model import Repair, Scene
 from .solver import SolverConfig, solve
@@ -31,7 +28,8 @@ from .solver.search import mark_unmet, replace_objects, support_descendants
 __all__ = ["PipelineOptions", "run_pipeline", "settle_and_repair", "write_outputs", "unstable_objects",
            "UNSTABLE_FLAGS"]
 
-#: Physics flags that make an object unstable (set by settling).
+#: Physics flags that may make an object unstable (set by settling; whether it is, is decided by
+#: :func:`parse3d.measure.verify_settled`).
 UNSTABLE_FLAGS = ("fell", "tipped", "left_support")
 
 
@@ -63,59 +61,20 @@ class PipelineOptions:
 
 
 def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
-    """``{id: cause}`` of settled, placed, dynamic objects that are physically unstable, and
-    (with ``relations``) of those whose support relation no longer holds.
+    """``{id: cause}`` of settled, placed, dynamic objects that are unstable, by the one
+    definition of :func:`parse3d.measure.verify_settled` (fell, tipped, left_support), and (with
+    ``relations``) of those whose support relation no longer holds (cause ``support
+    relation``, the name ``scene.json`` records for ``broke_support``).
 
-    Physically unstable (cause: the physics flag) means flagged by settling *and* really off:
-    ``left_support`` or ``fell`` with the centre of mass no longer over the supporting object
-    (an apple rolling inside its bowl is not off), or ``tipped`` with the centre of mass more
-    than 2 cm lower (a TV fallen over, not a ball turned). Stacked objects rest on the object
-    below, so their support surface is not expected to touch them.
+    Per object the first cause found in the order fell, left_support, tipped, support relation.
     """
+    rank = {c: k for k, c in enumerate(("fell", "left_support", "tipped", "broke_support"))}
     out: dict[str, str] = {}
-    for o in scene.placed:
-        if o.fixed or o.settled_position is None:
+    for i in sorted(verify_settled(scene), key=lambda i: rank[i.cause]):
+        if i.object_id in out or (i.cause == "broke_support" and not relations):
             continue
-        flags = [f for f in UNSTABLE_FLAGS if f in o.flags]
-        if not flags:
-            continue
-        com0 = _com(o, settled=False)
-        com1 = _com(o, settled=True)
-        sup = o.support_choice
-        owner = scene.objects.get(sup.owner) if sup is not None else None
-        off = False
-        if owner is not None and owner.placed:
-            fp = MultiPoint(world_points(owner, hull_only=True, settled=True)[:, :2]).convex_hull
-            off = not fp.buffer(0.01).contains(Point(com1[:2]))
-        if off:
-            out[o.id] = "fell" if "fell" in flags else "left_support"
-        elif "tipped" in flags and com0[2] - com1[2] > 0.02 and not _round(o):
-            out[o.id] = "tipped"
-        elif "fell" in flags and owner is None and com0[2] - com1[2] > 0.05:
-            out[o.id] = "fell"
-    if relations:
-        sup_index = {scene.pag.relations.index(scene.pag.supporter(oid)): oid
-                     for oid in scene.pag.objects if scene.pag.supporter(oid) is not None}
-        for c in scene.relations:
-            oid = sup_index.get(c.index)
-            if oid is None or oid in out or c.holds_settled is not False:
-                continue
-            o = scene.objects[oid]
-            if o.placed and not o.fixed and not o.stacked_on:
-                out[oid] = "support relation"
+        out[i.object_id] = "support relation" if i.cause == "broke_support" else i.cause
     return out
-
-
-def _round(o) -> bool:
-    """Whether an object is about as wide as it is deep and tall (an apple, a ball): it rolls
-    rather than tips."""
-    ext = np.ptp(asset_geometry(o.asset).hull, axis=0)
-    return float(ext.max()) <= 1.3 * float(ext.min())
-
-
-def _com(o, *, settled: bool):
-    T = o.transform(settled)
-    return T[:3, :3] @ asset_geometry(o.asset).com + T[:3, 3]
 
 
 def _settle(scene: Scene) -> None:

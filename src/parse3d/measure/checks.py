@@ -29,6 +29,7 @@ from .geometry import (
     asset_geometry,
     drop_distance,
     enclosure_directions,
+    is_round,
     part_points,
     ray_caster,
 )
@@ -43,6 +44,9 @@ EPS = 5e-4
 DIST_TOL = 2e-3
 #: Deepest penetration (m) that still counts as contact.
 PENETRATION_TOL = 1e-3
+#: Metres a low part of the parent (a burner on a cooktop) may raise an ``ON`` child above the
+#: named surface: the child rests on the parent's geometry there.
+STEP = 0.01
 #: Largest angle (degrees) between normals that counts as parallel.
 ANGLE_TOL_DEG = 2.0
 _SIDE = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0), "right": (1.0, 0.0, 0.0),
@@ -403,14 +407,18 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         return Check(False, {}, f"child has no part {e.child.part!r}"), False
     pts = world_points(child, settled=settled, parts=parts)
     gap = float(_plane_dist(pts, sB).min())
-    if rel == "ON" and pobj is not None and gap < -PENETRATION_TOL:
-        # resting below the surface plane, inside the parent's hollow (a plate in a
-        # plate): the contact is the free drop onto the parent's geometry
+    if rel == "ON" and pobj is not None and (gap < -PENETRATION_TOL
+                                             or DIST_TOL < gap <= STEP + DIST_TOL):
+        # resting below the surface plane, inside the parent's hollow (a plate in a plate),
+        # or up to STEP above it on a low part of the parent (a pan on a burner of the
+        # cooktop): the contact is the free drop onto the parent's geometry
         d = drop_distance(world_points(child, hull_only=True, settled=settled), child.asset,
                           child.transform(settled),
                           world_points(pobj, hull_only=True, settled=settled), pobj.asset,
                           pobj.transform(settled), -sB.normal)
-        if np.isfinite(d):
+        if gap > 0 and not (np.isfinite(d) and d <= DIST_TOL):
+            d = _gap_to_low_parts(pts, pobj, sB, settled)  # the rays may miss a low burner
+        if np.isfinite(d) and (gap < 0 or d <= DIST_TOL):
             gap = d
     pile = None
     if rel in ("ON", "IN") and pobj is not None and gap > DIST_TOL:
@@ -427,17 +435,47 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     nA = _child_normal(child, _child_label(ctx), settled)
     ang = float(np.degrees(angle_between(nA, -sB.normal)))
     ang_tol = ANGLE_TOL_DEG
-    if rel == "ON":  # a leaning object stands on its support tilted by its lean angle
+    if rel in ("ON", "IN") and is_round(child):
+        ang_tol = 180.0  # an apple rests in any orientation
+    elif rel == "ON":  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
                 ang_tol = max(ang_tol, le.param("angle_deg")[1] + 1.0)
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
+    if pile is not None:
+        res["piled"] = 1.0
     ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
     ok = ok and ang <= ang_tol
     detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
     if pile is not None:
         detail += f", resting on {pile}"
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
+
+
+def _gap_to_low_parts(pts: np.ndarray, pobj: PlacedObject, sB: Surface, settled) -> float:
+    """Gap (m) between the base of a child with world points ``pts`` (those within 3 mm of
+    its lowest) and the highest part of the parent rising at most ``STEP`` above ``sB`` that
+    lies under that base; inf when none does."""
+    from shapely.geometry import Polygon
+
+    from ..geometry.regions import convex_footprint
+
+    def uv(p):
+        d = p - sB.origin
+        return np.c_[d @ sB.u, d @ sB.v]
+
+    h = _plane_dist(pts, sB)
+    foot = Polygon(convex_footprint(uv(pts[h <= h.min() + 3e-3]))).buffer(1e-4)
+    T = pobj.transform(settled)
+    top = -np.inf
+    for p in pobj.asset.parts:
+        for pc in p.pieces:
+            q = pc.vertices @ T[:3, :3].T + T[:3, 3]
+            hq = _plane_dist(q, sB)
+            if 1e-3 < hq.max() <= STEP and hq.min() > -STEP \
+                    and foot.intersects(Polygon(convex_footprint(uv(q)))):
+                top = max(top, float(hq.max()))
+    return float(h.min()) - top if np.isfinite(top) else np.inf
 
 
 def _resting_on_sibling(ctx: CheckContext, down: np.ndarray) -> tuple[str, float] | None:
@@ -510,14 +548,17 @@ def _check_in(ctx: CheckContext) -> Check:
     if not c.holds:
         return c
     label = next((p.label for p in pobj.asset.parts if p.name == part), part)
-    if label in OPEN_SUPPORT_LABELS:
+    if label in OPEN_SUPPORT_LABELS or c.residual.get("piled"):
+        # on an open shelf, or on a pile in the container (an apple on apples may rise above
+        # a shallow bowl's rim): the centroid over the parent's footprint
         Ti = np.linalg.inv(pobj.transform(ctx.settled))
         x = Ti[:3, :3] @ object_centroid(ctx.child, ctx.settled) + Ti[:3, 3]
         b = asset_geometry(pobj.asset).bounds
         tol = 1e-3 / pobj.scale
         inside = bool(np.all(x[:2] >= b[0, :2] - tol) and np.all(x[:2] <= b[1, :2] + tol))
         res = dict(c.residual, inside_footprint=float(inside))
-        return Check(inside, res, f"{c.detail}; on the open {label} {part}, centroid "
+        where = "on a pile" if c.residual.get("piled") else f"on the open {label} {part}"
+        return Check(inside, res, f"{c.detail}; {where}, centroid "
                      f"{'inside' if inside else 'outside'} {ctx.edge.parent.object}'s footprint")
     enc = _enclosure(ctx.child, pobj, ctx.settled)
     res = dict(c.residual, enclosure=round(enc, 4))

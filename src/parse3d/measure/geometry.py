@@ -12,7 +12,7 @@ from scipy.spatial import ConvexHull, QhullError
 from ..assets.model import Asset, Part
 
 __all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster", "enclosure_directions",
-           "drop_distance"]
+           "drop_distance", "is_round"]
 
 
 @dataclass
@@ -103,6 +103,13 @@ def enclosure_directions() -> np.ndarray:
     a = np.linspace(0, 2 * np.pi, 8, endpoint=False)
     d = np.c_[np.cos(a), np.sin(a), np.zeros(8)]
     return np.vstack([d, [0, 0, 1.0]])
+
+
+def is_round(obj) -> bool:
+    """Whether a placed object is about as wide as it is deep and tall (extents within 30%: an
+    apple, a ball): it rolls rather than tips, and rests in any orientation."""
+    ext = np.ptp(asset_geometry(obj.asset).hull, axis=0)
+    return float(ext.max()) <= 1.3 * float(ext.min())
 
 
 def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray,

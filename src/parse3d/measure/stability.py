@@ -1,22 +1,29 @@
 """Post-settle verification: which objects fell, tipped, left their support or broke their
 support relation while the scene settled.
 
-The definitions (docs/solver.md, "Verification after settling"), for every placed object that
-settling moved freely (``fixed`` objects are held kinematic and never reported):
+The definitions (docs/solver.md, "Verification after settling") are the project's one
+definition of "unstable": the repair after settling (:func:`parse3d.pipeline.unstable_objects`)
+uses them as they are. For every placed object that settling moved freely (``fixed`` objects are
+held kinematic and never reported):
 
 ``fell``
-    its origin dropped more than ``fall_distance`` (default 5 cm);
+    its origin dropped more than ``fall_distance`` (default 5 cm), and it is really off: its
+    centre of mass is no longer over the (settled) footprint of the object that supported it,
+    or, standing on the room, its centre of mass dropped more than ``fall_distance``;
 ``tipped``
     its up axis turned more than ``tip_angle_deg`` (default 15 degrees) away from its solved up
-    axis;
+    axis, its centre of mass dropped more than ``TIP_DROP`` (2 cm: it fell over, it was not
+    just turned) and it is not round (an apple rolls rather than tips);
 ``left_support``
     settling found no contact within ``contact_threshold`` (default 1 mm) between it and the
     part that supported it (the ``left_support`` flag :func:`parse3d.physics.settle` sets from
-    its part-level contact extraction);
+    its part-level contact extraction), and its centre of mass is no longer over the
+    supporting object's footprint (an apple that rolled within its bowl has not left it);
 ``broke_support``
     it still touches its supporter, but its support relation no longer holds on the settled
     poses (centre of mass off the support polygon, tilted off the surface, out of the
-    enclosure, ...), measured by the relation's check rule.
+    enclosure, ...), measured by the relation's check rule. Objects resting on a pile
+    (``stacked_on``) are judged by where they ended (the three causes above), not by this.
 
 The thresholds default to the ones the scene was settled with (``scene.meta["settle"]``).
 
@@ -32,9 +39,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..scene.model import Scene
-from .checks import check_edge
+from .checks import check_edge, world_points
+from .geometry import asset_geometry, is_round
 
-__all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by",
+__all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by", "is_round",
            "SettledSummary", "summarize_settled"]
 
 #: The causes :func:`verify_settled` reports, in the order it reports them per object.
@@ -140,22 +148,29 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
         if not o.placed or o.fixed or o.settled_position is None:
             continue
         found: list[Instability] = []
+        edge = scene.pag.supporter(oid)
+        owner = scene.objects.get(edge.parent.object) if edge is not None else None
+        owner = owner if owner is not None and owner.placed else None
+        com0, com1 = _com(o, settled=False), _com(o, settled=True)
+        sunk = float(com0[2] - com1[2])
+        # really off: the centre of mass no longer over what held it up
+        off = owner is not None and not _over(owner, com1)
         drop = float(o.position[2] - o.settled_position[2])
-        if drop > fall:
-            found.append(Instability(oid, "fell", f"dropped {drop:.3f} m (more than {fall} m)",
-                                     drop))
+        if drop > fall and (off or (owner is None and sunk > fall)):
+            found.append(Instability(oid, "fell", f"dropped {drop:.3f} m (more than {fall} m)"
+                                     + (f", off {owner.id}" if off else ""), drop))
         up0 = np.asarray(o.rotation)[:, 2]
         up1 = np.asarray(o.settled_rotation)[:, 2]
         tilt = float(np.degrees(np.arccos(np.clip(up0 @ up1 / (np.linalg.norm(up0) *
                                                               np.linalg.norm(up1)), -1, 1))))
-        if tilt > tip:
+        if tilt > tip and sunk > TIP_DROP and not is_round(o):
             found.append(Instability(oid, "tipped", f"up axis turned {tilt:.1f} deg "
-                                     f"(more than {tip} deg)", tilt))
-        edge = scene.pag.supporter(oid)
-        if "left_support" in o.flags:
+                                     f"(more than {tip} deg), centre of mass {sunk:.3f} m lower",
+                                     tilt))
+        if "left_support" in o.flags and off:
             found.append(Instability(oid, "left_support",
                                      f"no longer touches {edge.parent if edge else 'its support'}"))
-        elif edge is not None:
+        elif edge is not None and not o.stacked_on:
             i = index[id(edge)]
             parent = scene.objects.get(edge.parent.object)
             if parent is None or parent.placed:
@@ -173,6 +188,24 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
             out.extend(Instability(f.object_id, f.cause, f.detail, f.value, f.relation, carries)
                        for f in found)
     return out
+
+
+#: Metres the centre of mass must drop for a turned object to count as ``tipped``.
+TIP_DROP = 0.02
+
+
+def _com(obj, *, settled: bool) -> np.ndarray:
+    """World centre of mass, (3,), at the solved or settled pose."""
+    T = obj.transform(settled)
+    return T[:3, :3] @ asset_geometry(obj.asset).com + T[:3, 3]
+
+
+def _over(owner, com: np.ndarray) -> bool:
+    """Whether ``com`` lies over the settled horizontal footprint of ``owner`` (1 cm margin)."""
+    from shapely.geometry import MultiPoint, Point
+
+    fp = MultiPoint(world_points(owner, hull_only=True, settled=True)[:, :2]).convex_hull
+    return bool(fp.buffer(0.01).contains(Point(com[:2])))
 
 
 @dataclass(frozen=True)

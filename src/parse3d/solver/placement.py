@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
-from ..measure.checks import EPS, check_edge, world_points
+from ..measure.checks import EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import PlacedObject
@@ -87,6 +87,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
         size = asset_geometry(asset).size
         scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        # a container with several things IN it (apples in a bowl) is drawn big enough to hold
+        # them, within its category's size range
+        scale = max(scale, min(_contents_scale(pag, oid, asset), hi / max(size, 1e-6)))
         scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
         if keep is not None and attempt == 0:
             scale = keep.scale
@@ -108,6 +111,36 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         full = _full_checks(edges, skip, checks)
         return Placement(obj, body, full)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
+
+
+#: Footprint area a container needs per child IN it, in units of the child's typical size
+#: squared (room to lie side by side, with the gaps round things leave).
+CONTENTS_AREA = 2.5
+
+
+def _contents_scale(pag, oid: str, asset: Asset) -> float:
+    """Scale at which ``asset``'s footprint has room for the children IN the object as a whole
+    (not on a named part: shelves of a rack hold their own), at ``CONTENTS_AREA`` times their
+    typical size squared each; 0 with fewer than two such children."""
+    from ..assets import registry
+
+    kids = [e.child.object for e in pag.relations
+            if e.relation == "IN" and e.parent.object == oid and e.parent.part is None]
+    if len(kids) < 2:
+        return 0.0
+    need = 0.0
+    for k in kids:
+        sizes = []
+        for c in pag.objects[k].candidates:
+            try:
+                lo, hi = registry.get(c).size_range
+            except KeyError:
+                continue
+            sizes.append(0.5 * (lo + hi))
+        need += CONTENTS_AREA * min(sizes, default=0.0) ** 2
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    area = float(ext[0] * ext[1])
+    return float(np.sqrt(need / area)) if area > 0 else 0.0
 
 
 def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
@@ -494,9 +527,14 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
     overhang = False
+    lift = 0.0
     if strategy == "constrained":
+        # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
+        step = STEP if rel == "ON" and sup.owner != "room" else 0.0
         obst = obstacles(st, sup, exclude, height + EPS,
-                         _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0))
+                         _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0), step=step)
+        if step:
+            lift = _step_height(st, sup, step)
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
@@ -518,7 +556,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 # the solid support polygon, decides; only for children no bigger than the
                 # parent object (no wardrobe on a mug)
                 com = (asset_geometry(asset).com * scale) @ R.T
-                obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0))
+                obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0),
+                                 step=step)
                 solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
                     if holes else region0
                 region = shapely.affinity.translate(solid, -float(com @ s.u), -float(com @ s.v))
@@ -544,6 +583,17 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     trials = 0
     last = "no sample"
     samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    if lift > 0 and strategy == "constrained" and len(samples):
+        # centred on a low part first (a pan on a burner), so it does not straddle its edge
+        com = (asset_geometry(asset).com * scale) @ R.T
+        seats = [c - np.array([com @ s.u, com @ s.v]) for c in _step_centres(st, sup, STEP)]
+        # a handle may reach past the cooktop's edge: the seat needs its footprint clear of
+        # obstacles and its centre of mass on the support (the checks below measure both)
+        free = RG.erode(RG.bounding_square(region0, pad=1.0), obst, F)
+        seats = [seats[int(k)] for k in rng.permutation(len(seats))
+                 if free.contains(shapely.Point(seats[int(k)]))]
+        if seats:
+            samples = np.vstack([np.array(seats), samples])[:len(samples)]
     same = 0
     for k in range(cfg.max_trials + (proposal is not None)):
         trials += 1
@@ -559,7 +609,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             Rt = R
             if toward is not None and strategy == "constrained":
                 Rt, h = _face(st, toward, R, hull, s, ab, h, drop, others)
-            t = s.origin + ab[0] * s.u + ab[1] * s.v + h * s.normal
+            # above the owner's low parts; the drop below brings it onto them or the surface
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         if rel == "ON" and sup.owner != "room":
             # settle onto the parent's actual geometry: a plate on a plate sits in its well
@@ -569,6 +620,11 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if np.isfinite(d) and d > 2 * EPS:
                 t = t - (d - EPS) * s.normal
                 cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+            if lift > 0:  # rest on the low parts under its base (rays may miss a burner)
+                up = _step_under(st, sup, world_points(cand, hull_only=True), STEP)
+                if up > 0:
+                    t = t + up * s.normal
+                    cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         # footprint inside the support polygon: the region guarantees it, except after a TOWARD
         # turn, for rejection samples and proposals
         if not overhang and (Rt is not R or strategy == "rejection"):
@@ -602,6 +658,51 @@ def _reach(region, F: np.ndarray, pad: float) -> tuple[float, float, float, floa
     x0, y0, x1, y1 = region.bounds
     lo, hi = F.min(axis=0), F.max(axis=0)
     return (x0 - pad + lo[0], y0 - pad + lo[1], x1 + pad + hi[0], y1 + pad + hi[1])
+
+
+def _step_height(st: SolveState, sup: Support, step: float) -> float:
+    """Height above ``sup`` of the highest piece of its owner rising at most ``step`` above it
+    (0 when none)."""
+    n = sup.surface.normal
+    out = 0.0
+    for _, pts in st.world_pieces(sup.owner):
+        h = float(np.max((pts - sup.surface.origin) @ n))
+        if 1e-3 < h <= step:
+            out = max(out, h)
+    return out
+
+
+def _step_under(st: SolveState, sup: Support, pts: np.ndarray, step: float) -> float:
+    """How far to raise a child with world points ``pts`` so that its base (points within
+    3 mm of its lowest) clears the owner's low parts (rising at most ``step``) under it."""
+    n = sup.surface.normal
+    h = (pts - sup.surface.origin) @ n
+    base = pts[h <= h.min() + 3e-3]
+    foot = Polygon(RG.convex_footprint(plane_coords(sup.surface, base))).buffer(1e-4)
+    need = float(h.min())
+    for _, q in st.world_pieces(sup.owner):
+        hq = (q - sup.surface.origin) @ n
+        if not (1e-3 < float(hq.max()) <= step and float(hq.min()) > -step):
+            continue
+        if foot.intersects(Polygon(RG.convex_footprint(plane_coords(sup.surface, q)))):
+            need = max(need, float(hq.max()) + EPS)
+    return need - float(h.min())
+
+
+def _step_centres(st: SolveState, sup: Support, step: float) -> list[np.ndarray]:
+    """Plane coordinates (2,) of the centres of the owner's parts that rise at most ``step``
+    above ``sup`` (the burners of a cooktop)."""
+    n = sup.surface.normal
+    parts: dict[str, list[np.ndarray]] = {}
+    for name, pts in st.world_pieces(sup.owner):
+        h = (pts - sup.surface.origin) @ n
+        if 1e-3 < float(h.max()) <= step and float(h.min()) > -step:
+            parts.setdefault(name, []).append(pts)
+    out = []
+    for pts in parts.values():
+        uv = plane_coords(sup.surface, np.vstack(pts))
+        out.append(0.5 * (uv.min(axis=0) + uv.max(axis=0)))
+    return out
 
 
 #: A child taller than this many times its narrowest footprint width is tippy.

@@ -342,14 +342,22 @@ def height_band(ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeo
     v_hi = (hi - c_off - s.origin[2]) / vz
     out = RG.clip(region, shapely.box(-1e3, min(v_lo, v_hi), 1e3, max(v_lo, v_hi)))
     if out.is_empty:
+        half = float(np.ptp((asset_geometry(ctx.asset).hull * ctx.scale) @ ctx.R.T[:, 2])) / 2
+        if hi < half - 1e-3:  # the geometry, not the room, rules it out
+            raise Fail(f"SECURED_TO height {lo}-{hi} m: {ctx.oid} is {2 * half:.2f} m tall, so "
+                       f"its centre is at least {half:.2f} m above the floor (height is the "
+                       f"centre's, not the bottom's)", intrinsic=True)
         raise Fail(f"SECURED_TO height {lo}-{hi} m: no free space at that height on {ctx.sup.name}")
     return out
 
 
 def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
-              within: tuple[float, float, float, float] | None = None) -> list[np.ndarray]:
+              within: tuple[float, float, float, float] | None = None,
+              step: float = 0.0) -> list[np.ndarray]:
     """Footprints (in the support plane) of placed objects in the slab above the support, and
-    the other parts of the supporting objects (``exclude``) in that slab.
+    the other parts of the supporting objects (``exclude``) in that slab, except pieces of
+    theirs rising at most ``step`` above the support (burners on a cooktop: the child stands
+    on them).
 
     ``within`` is a box ``(a0, b0, a1, b1)`` in plane coordinates: footprints that cannot meet
     it are left out (on horizontal supports, found through the state's spatial index; a
@@ -394,7 +402,7 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
     for oid in exclude:
         for _, pts in st.world_pieces(oid):
             h = (pts - sup.surface.origin) @ n
-            if h.max() <= 1e-3 or h.min() >= height - 1e-3:
+            if h.max() <= max(1e-3, step) or h.min() >= height - 1e-3:
                 continue
             out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
     return out
