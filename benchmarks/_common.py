@@ -114,7 +114,11 @@ def serve(handle) -> None:
     sys.stdout = sys.stderr
     for line in sys.stdin:
         if line.strip():
-            out.write(json.dumps(handle(json.loads(line))) + "\n")
+            try:
+                answer = handle(json.loads(line))
+            except Exception as e:  # noqa: BLE001 - e.g. a category an older revision lacks
+                answer = {"error": f"{type(e).__name__}: {e}"}
+            out.write(json.dumps(answer) + "\n")
             out.flush()
 
 

@@ -113,6 +113,9 @@ def run_rooms(pags: list[PAG], seeds: int, now: Worker, before: Worker | None) -
             o = now.ask(**base, strategy="constrained")
             r = now.ask(**base, strategy="rejection")
             b = before.ask(**base, strategy="constrained") if before else None
+            if b is not None and "error" in b:  # the other revision cannot solve this room
+                print(f"  (before: {pag.name}: {b['error']})")
+                b = None
             warm.setdefault("now", o["warm"])
             if b is not None:
                 warm.setdefault("before", b["warm"])
@@ -136,10 +139,15 @@ def run_rooms(pags: list[PAG], seeds: int, now: Worker, before: Worker | None) -
         line = (f"  {label:20s} ours: median {statistics.median(x[2]['cpu'] for x in pick):.3f} "
                 f"s/scene, {placed / cpu:.0f} placed objects/s, placed "
                 f"{placed / sum(x[1] for x in pick):.1%}")
-        if before:
+        both = [x for x in pick if x[4] is not None]
+        if before and both:
+            placed = sum(x[2]["placed"] for x in both)
+            cpu = sum(x[2]["cpu"] for x in both)
+            pick = both
             bp = sum(x[4]["placed"] for x in pick)
             bc = sum(x[4]["cpu"] for x in pick)
-            line += (f" | before: {bp / bc:.0f} objects/s, placed {bp / sum(x[1] for x in pick):.1%}"
+            line += (f" | on the {len(both)} solves both revisions ran: before {bp / bc:.0f} "
+                     f"objects/s, placed {bp / sum(x[1] for x in pick):.1%}"
                      f" | speedup x{(placed / cpu) / (bp / bc):.2f}")
         print(line)
     print(f"  rejection: placed {sum(x[3]['placed'] for x in rows) / sum(x[1] for x in rows):.1%}, "
