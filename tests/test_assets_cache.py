@@ -86,3 +86,26 @@ def test_file_is_a_plain_npz_without_pickles(tmp_path):
     with np.load(path, allow_pickle=False) as z:
         assert json.loads(z["header"].tobytes())["format"] == FORMAT
         assert z["p0_v"].dtype == np.float32 and z["p0_f"].dtype == np.int32
+
+
+def test_fast_npz_reader_matches_numpy(tmp_path):
+    """The asset reader's own ``.npy`` header parsing gives numpy's arrays exactly, and hands
+    headers it does not know (strings, Fortran order, 0-d) to numpy."""
+    from parse3d.assets.cache import _read_npz
+
+    path = save_asset(registry.generate("dresser", 0), tmp_path / "a.npz")
+    with np.load(path, allow_pickle=False) as z:
+        want = {k: z[k] for k in z.files}
+    got = _read_npz(path)
+    assert got.keys() == want.keys()
+    for k, v in want.items():
+        assert got[k].dtype == v.dtype and got[k].shape == v.shape, k
+        np.testing.assert_array_equal(got[k], v)
+        assert got[k].flags.writeable
+    odd = {"s": np.array(["ab", "c"]), "f": np.asfortranarray(np.arange(6.0).reshape(2, 3)),
+           "z": np.float32(2.5), "e": np.zeros((0, 3), ">i4"), "b": np.array([True, False])}
+    np.savez_compressed(tmp_path / "odd.npz", **odd)
+    got = _read_npz(tmp_path / "odd.npz")
+    for k, v in odd.items():
+        assert got[k].dtype == np.asarray(v).dtype and got[k].shape == np.shape(v), k
+        np.testing.assert_array_equal(got[k], v)
