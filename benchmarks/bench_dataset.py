@@ -39,7 +39,8 @@ import threading
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from _common import ROOT, revision_tree
+
 STAGES = ("expand", "solve", "settle", "contacts", "render", "write")
 
 
@@ -200,19 +201,12 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
 
 def baseline(rev: str, argv: list[str]) -> dict:
     """This benchmark run with the package of ``rev`` (a temporary git worktree)."""
-    with tempfile.TemporaryDirectory(prefix="parse3d-baseline-") as tmp:
-        wt = Path(tmp) / "tree"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), rev],
-                       check=True, capture_output=True)
-        try:
-            res = Path(tmp) / "result.json"
-            env = {**os.environ, "PYTHONPATH": str(wt / "src")}
-            subprocess.run([sys.executable, __file__, *argv, "--_json", str(res)], check=True,
-                           env=env, cwd=str(ROOT))
-            return json.loads(res.read_text())
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)],
-                           check=False, capture_output=True)
+    with revision_tree(rev) as wt:
+        res = wt.parent / "result.json"
+        env = {**os.environ, "PYTHONPATH": str(wt / "src")}
+        subprocess.run([sys.executable, __file__, *argv, "--_json", str(res)], check=True,
+                       env=env, cwd=str(ROOT))
+        return json.loads(res.read_text())
 
 
 def main() -> None:

@@ -49,14 +49,13 @@ import os
 import re
 import subprocess
 import sys
-import tempfile
 import time
 import zlib
 from pathlib import Path
 
 import numpy as np
+from _common import ROOT, revision_tree
 
-ROOT = Path(__file__).resolve().parents[1]
 ROOMS = ROOT / "tests" / "data" / "rooms"
 EXAMPLES = ROOT / "examples"
 FALLEN = ("fell", "tipped", "left_support")
@@ -271,21 +270,14 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
 
 def baseline(rev: str, cases: list[dict], quick: bool) -> dict:
     """Run the corpus with the package of ``rev`` (a temporary git worktree)."""
-    with tempfile.TemporaryDirectory(prefix="parse3d-baseline-") as tmp:
-        wt = Path(tmp) / "tree"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt), rev],
-                       check=True, capture_output=True)
-        try:
-            spec = Path(tmp) / "corpus.json"
-            spec.write_text(json.dumps({"cases": cases, "quick": quick}))
-            res = Path(tmp) / "result.json"
-            env = {**os.environ, "PYTHONPATH": str(wt / "src")}
-            subprocess.run([sys.executable, __file__, "--_run-corpus", str(spec), "--json",
-                            str(res)], check=True, env=env, cwd=str(wt))
-            return json.loads(res.read_text())
-        finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force", str(wt)],
-                           check=False, capture_output=True)
+    with revision_tree(rev) as wt:
+        spec = wt.parent / "corpus.json"
+        spec.write_text(json.dumps({"cases": cases, "quick": quick}))
+        res = wt.parent / "result.json"
+        env = {**os.environ, "PYTHONPATH": str(wt / "src")}
+        subprocess.run([sys.executable, __file__, "--_run-corpus", str(spec), "--json",
+                        str(res)], check=True, env=env, cwd=str(wt))
+        return json.loads(res.read_text())
 
 
 def main() -> None:
