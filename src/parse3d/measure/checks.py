@@ -44,9 +44,10 @@ EPS = 5e-4
 DIST_TOL = 2e-3
 #: Deepest penetration (m) that still counts as contact.
 PENETRATION_TOL = 1e-3
-#: Metres a low part of the parent (a burner on a cooktop) may raise an ``ON`` child above the
-#: named surface: the child rests on the parent's geometry there.
-STEP = 0.01
+#: Metres a low part of the parent (a burner on a cooktop; a gas burner's grate rises about
+#: 3.5 cm) may raise an ``ON`` child above the named surface: the child rests on the parent's
+#: geometry there, and the solver seats it on that part instead of fitting it between them.
+STEP = 0.04
 #: Largest angle (degrees) between normals that counts as parallel.
 ANGLE_TOL_DEG = 2.0
 _SIDE = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0), "right": (1.0, 0.0, 0.0),

@@ -586,12 +586,16 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     if lift > 0 and strategy == "constrained" and len(samples):
         # centred on a low part first (a pan on a burner), so it does not straddle its edge
         com = (asset_geometry(asset).com * scale) @ R.T
-        seats = [c - np.array([com @ s.u, com @ s.v]) for c in _step_centres(st, sup, STEP)]
+        centres = _step_centres(st, sup, STEP)
+        seats = [c - np.array([com @ s.u, com @ s.v]) for c in centres]
         # a handle may reach past the cooktop's edge: the seat needs its footprint clear of
         # obstacles and its centre of mass on the support (the checks below measure both)
         free = RG.erode(RG.bounding_square(region0, pad=1.0), obst, F)
         seats = [seats[int(k)] for k in rng.permutation(len(seats))
                  if free.contains(shapely.Point(seats[int(k)]))]
+        # seats that cover the fewest other burners first, so a second pan or pot still finds
+        # one (random among equals; the sort is stable)
+        seats.sort(key=lambda a: _covered(F, a, centres))
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
     same = 0
@@ -687,6 +691,13 @@ def _step_under(st: SolveState, sup: Support, pts: np.ndarray, step: float) -> f
         if foot.intersects(Polygon(RG.convex_footprint(plane_coords(sup.surface, q)))):
             need = max(need, float(hq.max()) + EPS)
     return need - float(h.min())
+
+
+def _covered(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:
+    """How many of ``centres`` (plane coordinates) the footprint ``F`` placed at ``at`` covers
+    or comes within 3 cm of."""
+    foot = Polygon(F + at).buffer(0.03)
+    return sum(foot.contains(shapely.Point(c)) for c in centres)
 
 
 def _step_centres(st: SolveState, sup: Support, step: float) -> list[np.ndarray]:

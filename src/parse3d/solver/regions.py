@@ -229,7 +229,8 @@ def _distance(ctx, e, region):
 @region_rule("object", "SIDE_OF", "ALONG")
 def _side(ctx, e, region):
     """SIDE_OF: the half-plane beyond the parent's centroid on ``side`` (parent frame).
-    ALONG: the strip beside the parent's ``side`` face, from the face outwards up to ``width``."""
+    ALONG: the strip beside the parent's ``side`` face, from the face outwards up to ``width``,
+    within the parent's extent along that face (as :mod:`parse3d.measure` checks it)."""
     st, s, rel = ctx.st, ctx.sup.surface, e.relation
     xB, frame, hull = parent_frame(st, e.parent.object)
     cB = plane_coords(s, xB[None])[0] - ctx.off
@@ -244,6 +245,10 @@ def _side(ctx, e, region):
     else:
         hB = 0.0 if hull is None else float(np.max(plane_coords(s, hull) @ g - (cB + ctx.off) @ g))
         clip = RG.strip(cB, g, max(hB, 0.0), max(hB, 0.0) + e.param("width"))
+        if hull is not None:  # within the parent's extent along the face
+            gp = np.array([g[1], -g[0]])
+            along = plane_coords(s, hull) @ gp - (cB + ctx.off) @ gp
+            clip = RG.clip(clip, RG.strip(cB, gp, float(along.min()), float(along.max())))
     new = RG.clip(region, clip)
     if new.is_empty or new.area < 1e-10:
         raise _emptied(e, ctx.sup, f"the {side} of {e.parent.object} is taken or outside "

@@ -62,9 +62,12 @@ def support_descendants(pag: PAG, oid: str) -> list[str]:
     return [o for o in assembly_order(pag) if o in out]
 
 
-#: Conflicting objects tried per failure, and rounds over them (each with fresh draws).
+#: Conflicting objects tried per failure, and rounds over them (each with fresh draws): at
+#: least ``JUMP_ROUNDS``, more while a round is short, up to ``JUMP_TRIES`` re-placements (one
+#: culprit, the bed a nightstand must stand beside, gets several draws).
 MAX_CULPRITS = 6
 JUMP_ROUNDS = 2
+JUMP_TRIES = 6
 
 
 def _size_estimate(pag: PAG, oid: str) -> float:
@@ -193,7 +196,8 @@ class _Search:
         """Re-place conflicting objects (with what rests on them) to make room for ``oid``;
         the scene is restored when no choice works within the budget."""
         culprits = self.conflict_set(oid)[:MAX_CULPRITS]
-        tries = [(r, c) for r in range(JUMP_ROUNDS) for c in culprits]
+        rounds = max(JUMP_ROUNDS, JUMP_TRIES // max(len(culprits), 1))
+        tries = [(r, c) for r in range(rounds) for c in culprits]
         for k, (_, culprit) in enumerate(tries):
             moved = [culprit, *[d for d in support_descendants(self.pag, culprit)
                                 if d in self.placements]]
