@@ -583,6 +583,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     trials = 0
     last = "no sample"
     samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    if strategy == "constrained" and len(samples):
+        samples = _leave_room(st, oid, sup, R, F, region0, samples)
     if lift > 0 and strategy == "constrained" and len(samples):
         # centred on a low part first (a pan on a burner), so it does not straddle its edge
         com = (asset_geometry(asset).com * scale) @ R.T
@@ -691,6 +693,62 @@ def _step_under(st: SolveState, sup: Support, pts: np.ndarray, step: float) -> f
         if foot.intersects(Polygon(RG.convex_footprint(plane_coords(sup.surface, q)))):
             need = max(need, float(hq.max()) + EPS)
     return need - float(h.min())
+
+
+def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndarray,
+                region0, samples: np.ndarray) -> np.ndarray:
+    """Samples reordered so that those leaving room on the support for the objects still to be
+    placed beside this one (``SIDE_OF`` / ``ALONG`` it, on the same support) come first: a
+    stove with a counter to its right is not pushed into the corner. The room wanted on a side
+    is the smallest size of the dependent's categories; the order is otherwise kept."""
+    from ..assets import registry
+    from .regions import _SIDE_DIRS
+
+    pag, s = st.pag, sup.surface
+    owner = sup.owner if sup.owner != "room" else None
+
+    def beside(o: str):
+        """Edges of unplaced objects beside ``o`` on the same support."""
+        for e in pag.relations:
+            if e.relation not in ("SIDE_OF", "ALONG") or e.parent.object != o:
+                continue
+            kid = e.child.object
+            if kid in st.scene.objects and st.scene.objects[kid].placed:
+                continue
+            ke = pag.supporter(kid)
+            if ke is not None and (None if ke.parent.is_room_element else ke.parent.object) \
+                    == owner:
+                yield e
+
+    def need(kid: str, seen: frozenset) -> float:
+        """The dependent's smallest size, plus the room its own dependents want (a counter
+        right of a stove right of a counter)."""
+        sizes = []
+        for c in pag.objects[kid].candidates:
+            try:
+                sizes.append(registry.get(c).size_range[0])
+            except KeyError:
+                continue
+        more = [need(e.child.object, seen | {kid}) for e in beside(kid)
+                if e.child.object not in seen]
+        return min(sizes, default=0.0) + max(more, default=0.0)
+
+    wants: list[tuple[np.ndarray, float]] = []
+    for e in beside(oid):
+        d = R @ np.array(_SIDE_DIRS[e.param("side")])
+        g = np.array([d @ s.u, d @ s.v])
+        if np.linalg.norm(g) < 1e-6:
+            continue
+        wants.append((g / np.linalg.norm(g), need(e.child.object, frozenset({oid}))))
+    if not wants:
+        return samples
+    edge = np.asarray(region0.exterior.coords) if hasattr(region0, "exterior") else \
+        np.vstack([np.asarray(p.exterior.coords) for p in region0.geoms])
+    ok = np.ones(len(samples), bool)
+    for g, need in wants:
+        room = float(np.max(edge @ g)) - (samples @ g + float(np.max(F @ g)))
+        ok &= room >= need
+    return np.vstack([samples[ok], samples[~ok]])
 
 
 def _covered(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:
