@@ -227,7 +227,7 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
     the parent (so the named part, not another, touches it); Fail when none is."""
     lo, hi = e.param("angle_deg")
     if e.child.part is None:
-        return float(np.deg2rad(rng.uniform(lo, hi)))
+        return _pressing(asset, scale, R, k, d, list(np.deg2rad(np.linspace(lo, hi, 25))), rng)
     parts = parts_for(asset, e.child)
     if not parts:
         raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {asset.asset_id} has no part "
@@ -249,7 +249,7 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
                        default=None)
             worst = (reach_all - reach_part, best)
     if ok:
-        return float(ok[int(rng.integers(len(ok)))])
+        return _pressing(asset, scale, R, k, d, ok, rng)
     # the largest tilt at which it would work, for the message
     fit = [t for t in np.deg2rad(np.linspace(0.0, 45.0, 91))
            if float(np.max(hull @ (axis_angle(k, t) @ R).T @ d))
@@ -261,6 +261,32 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {lo:g}-{hi:g} deg "
                f"{e.child.object}:{other} reaches up to {worst[0] * scale:.2f} m further "
                f"toward {e.parent} than {e.child.part} ({hint})", intrinsic=True)
+
+
+#: Metres the centre of mass of a leaning object must lie beyond the edge of its base it pivots
+#: on, toward what it leans on, so that gravity keeps it pressed there.
+LEAN_MARGIN = 0.004
+
+
+def _pressing(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray,
+              tilts: list[float], rng: np.random.Generator) -> float:
+    """One of ``tilts`` (radians about ``k``) at which gravity presses the object toward ``d``
+    (its parent): its centre of mass lies at least ``LEAN_MARGIN`` beyond its lowest points
+    (the base edge it pivots on) along ``d``. A random one of those; when none, the tilt that
+    comes closest (a flat-bottomed guitar with a low centre of mass at a small tilt would stand
+    up off the wall in settling)."""
+    g = asset_geometry(asset)
+    hull, com = g.hull * scale, g.com * scale
+    margins = []
+    for th in tilts:
+        Rt = axis_angle(k, th) @ R
+        Y = hull @ Rt.T
+        base = Y[Y[:, 2] <= Y[:, 2].min() + 2e-3]
+        margins.append(float((Rt @ com) @ d - np.max(base @ d)))
+    good = [t for t, m in zip(tilts, margins, strict=True) if m >= LEAN_MARGIN]
+    if good:
+        return float(good[int(rng.integers(len(good)))])
+    return float(tilts[int(np.argmax(margins))])
 
 
 def _upright_angle(R0: np.ndarray, n: np.ndarray) -> float:
