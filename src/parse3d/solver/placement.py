@@ -527,6 +527,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
     overhang = False
+    base_solid = None
     lift = 0.0
     if strategy == "constrained":
         # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
@@ -565,7 +566,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 room = st.scene.room.elements["floor"].surface
                 fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
                 region = RG.clip(region, RG.erode(fp, [], F))
-                overhang = True
+                overhang, base_solid = True, solid
         if region.is_empty or region.area < 1e-10:
             raise Fail(_no_space(st, sup, F, region0, obst + holes),
                        intrinsic=RG.erode(region0, holes, F).is_empty and not overhang)
@@ -638,6 +639,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if not region0.contains(Polygon(RG.convex_footprint(Fw))):
                 last = f"footprint leaves {sup.name}"
                 continue
+        if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid):
+            last = "a foot or the base would hang off the support (centre of mass outside " \
+                   "what rests on it)"
+            continue
         ok, why, checks = _validate(st, cand, support_edge, others, sup)
         if not ok:
             # the region makes relations hold by construction; the same relation failing
@@ -749,6 +754,36 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
         room = float(np.max(edge @ g)) - (samples @ g + float(np.max(F @ g)))
         ok &= room >= need
     return np.vstack([samples[ok], samples[~ok]])
+
+
+def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
+                    solid) -> bool:
+    """Whether a child hanging over the edge of a small support still stands: the parts of its
+    base (those reaching within 3 mm of its lowest point; the feet of a TV, a pot's bottom),
+    each as its convex footprint intersected with the ``solid`` support polygon (plane
+    coordinates), must together hold its centre of mass 5 mm inside their convex hull. A TV
+    whose foot is off a narrow stand fails; a pot on a smaller burner passes."""
+    n = s.normal
+    low = np.inf
+    pieces = []
+    for p in asset.parts:
+        w = (part_points([p]) * scale) @ R.T + t
+        h = (w - s.origin) @ n
+        pieces.append((w, h))
+        low = min(low, float(h.min()))
+    held = []
+    for w, h in pieces:
+        if float(h.min()) > low + 3e-3:
+            continue
+        foot = shapely.MultiPoint(plane_coords(s, w[h <= low + 3e-3])).convex_hull
+        foot = foot.buffer(1e-3).intersection(solid)
+        if not foot.is_empty:
+            held.append(foot)
+    if not held:
+        return False
+    com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
+    hull = shapely.union_all(held).convex_hull
+    return hull.buffer(-5e-3).contains(shapely.Point(com))
 
 
 def _covered(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:
