@@ -422,10 +422,20 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         if np.isfinite(d) and (gap < 0 or d <= DIST_TOL):
             gap = d
     pile = None
+    on_wall = False
     if rel in ("ON", "IN") and pobj is not None and gap > DIST_TOL:
         pile = _resting_on_sibling(ctx, -sB.normal)
         if pile is not None:
             pile, gap = pile
+        elif rel == "IN":
+            # in a container on its curved wall above the bottom (an apple in a bowl, rolled
+            # against the others): the contact is the free drop onto the container
+            d = drop_distance(world_points(child, hull_only=True, settled=settled), child.asset,
+                              child.transform(settled),
+                              world_points(pobj, hull_only=True, settled=settled), pobj.asset,
+                              pobj.transform(settled), -sB.normal)
+            if np.isfinite(d) and -PENETRATION_TOL <= d <= DIST_TOL:
+                gap, on_wall = float(d), True
     target = 0.0
     lo_t, hi_t = -PENETRATION_TOL, DIST_TOL
     if rel == "AGAINST":
@@ -445,11 +455,15 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
     if pile is not None:
         res["piled"] = 1.0
+    if on_wall:
+        res["on_wall"] = 1.0
     ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
     ok = ok and ang <= ang_tol
     detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
     if pile is not None:
         detail += f", resting on {pile}"
+    elif on_wall:
+        detail += f", resting on {e.parent.object}'s wall"
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
 
 
@@ -549,16 +563,17 @@ def _check_in(ctx: CheckContext) -> Check:
     if not c.holds:
         return c
     label = next((p.label for p in pobj.asset.parts if p.name == part), part)
-    if label in OPEN_SUPPORT_LABELS or c.residual.get("piled"):
-        # on an open shelf, or on a pile in the container (an apple on apples may rise above
-        # a shallow bowl's rim): the centroid over the parent's footprint
+    if label in OPEN_SUPPORT_LABELS or c.residual.get("piled") or c.residual.get("on_wall"):
+        # on an open shelf, or on a pile in the container or its wall (an apple on apples may
+        # rise above a shallow bowl's rim): the centroid over the parent's footprint
         Ti = np.linalg.inv(pobj.transform(ctx.settled))
         x = Ti[:3, :3] @ object_centroid(ctx.child, ctx.settled) + Ti[:3, 3]
         b = asset_geometry(pobj.asset).bounds
         tol = 1e-3 / pobj.scale
         inside = bool(np.all(x[:2] >= b[0, :2] - tol) and np.all(x[:2] <= b[1, :2] + tol))
         res = dict(c.residual, inside_footprint=float(inside))
-        where = "on a pile" if c.residual.get("piled") else f"on the open {label} {part}"
+        where = "on a pile" if c.residual.get("piled") else "on its wall" \
+            if c.residual.get("on_wall") else f"on the open {label} {part}"
         return Check(inside, res, f"{c.detail}; {where}, centroid "
                      f"{'inside' if inside else 'outside'} {ctx.edge.parent.object}'s footprint")
     enc = _enclosure(ctx.child, pobj, ctx.settled)
