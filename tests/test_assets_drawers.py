@@ -36,13 +36,22 @@ def test_remote_in_a_closed_drawer() -> None:
     assert scene.ok, scene.objects["remote"].reason
     remote, dresser = scene.objects["remote"], scene.objects["dresser"]
     front = dresser.asset.parts_by_label("drawer")[1]
-    assert remote.support.startswith(f"dresser:{front.name}")
+    # the support recorded is the part that carries the drawer's floor, its box (what the
+    # remote touches), not the front the PAG names
+    assert remote.support == f"dresser:{front.name}_box@top"
+    assert remote.support_choice.part == f"{front.name}_box"
+    assert scene.relations[1].holds, scene.relations[1].detail
     # it lies inside the drawer's box (closed), within its walls and above its floor
     box = dresser.part_mesh(dresser.asset.part(f"{front.name}_box"), settled=False)
     rb = remote.world_bounds(settled=False)
     lo, hi = box.bounds
     assert (rb[0, :2] >= lo[:2] - 1e-3).all() and (rb[1, :2] <= hi[:2] + 1e-3).all()
     assert lo[2] < rb[0, 2] < hi[2]
+    # and physics agrees: settled, it stays on the support recorded
+    from parse3d.physics import settle
+
+    settle(scene)
+    assert "left_support" not in remote.flags and "fell" not in remote.flags, remote.flags
 
 
 def test_posed_asset_opens_doors_and_drawers() -> None:

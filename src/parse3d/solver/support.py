@@ -157,6 +157,20 @@ def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
     return out
 
 
+def _carrier(asset, ins) -> str:
+    """The part whose geometry carries an internal surface: a drawer's floor is listed under
+    its front (the part a PAG names) and under its box, and the box is what a child IN the
+    drawer touches (so the support recorded and the contacts agree)."""
+    if asset.part(ins.part).label != "drawer":
+        return ins.part
+    for other in asset.internal:
+        if other.part != ins.part and asset.part(other.part).label == "drawer_box" \
+                and np.allclose(other.surface.origin, ins.surface.origin, atol=1e-6) \
+                and np.allclose(other.surface.normal, ins.surface.normal, atol=1e-6):
+            return other.part
+    return ins.part
+
+
 def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     """World support surfaces the child may be placed on, for its support edge."""
     scene = st.scene
@@ -182,10 +196,15 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     out = []
     if rel == "IN":
         names = {p.name for p in parts}
+        seen: set[str] = set()
         for ins in parent.asset.internal:
             if ins.part in names:
+                carrier = _carrier(parent.asset, ins)
+                if carrier in seen:
+                    continue
+                seen.add(carrier)
                 s = ins.surface.transformed(T)
-                out.append(Support(s, SupportChoice(parent.id, ins.part, "top"), s.polygon,
+                out.append(Support(s, SupportChoice(parent.id, carrier, "top"), s.polygon,
                                    ins.clearance * parent.scale))
         if not out:
             raise Fail(f"IN: {ref} has no internal support surface"
