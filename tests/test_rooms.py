@@ -26,20 +26,7 @@ SEEDS = (0, 1, 2)
 
 #: Rooms that fail today, with the failure class that makes them fail (see the report of the
 #: robustness benchmark); the solver's fixes for those classes turn them green.
-KNOWN = {
-    "bedroom_along": "class 5/8: ALONG beside the bed and AGAINST the wall empty the nightstand's "
-                     "region at some seeds (seed 0)",
-    "kitchen_counters_stove": "class 3: a counter too long for what is left of the wall (seeds "
-                              "1 and 5; asset choice does not rank by the free wall length yet)",
-    "leaning_things": "class 6/7: the guitar leaning on its head stands up off the wall in "
-                      "settling at some seeds (1-3)",
-    "fruit_bowl": "class 4: at seed 2 a piled apple ends outside the bowl's footprint after "
-                  "settling (9 of 10 seeds keep every relation)",
-    "pan_and_pot": "class 4: a pan placed first can leave no burner the pot fits next to "
-                   "(seeds 1, 2)",
-    "tv_narrow_stand": "class 6: the TV on feet rocks 5 degrees on the stand in settling "
-                       "(seed 1)",
-}
+KNOWN: dict[str, str] = {}
 
 #: Rooms that must fail, with the explanation the failure must give (the issue's class 2: a
 #: contact named on a part that is not the object's extreme along that normal).
