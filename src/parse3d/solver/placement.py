@@ -15,7 +15,7 @@ from ..geometry.frames import axis_angle
 from ..measure.checks import EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
-from ..scene.model import PlacedObject
+from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, part_points
@@ -619,12 +619,14 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             # above the owner's low parts; the drop below brings it onto them or the surface
             t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        dropped = False
         if rel == "ON" and sup.owner != "room":
             # settle onto the parent's actual geometry: a plate on a plate sits in its well
             parent = st.scene.objects[sup.owner]
             d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
                               st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
-            if np.isfinite(d) and d > 2 * EPS:
+            dropped = bool(np.isfinite(d) and d > 2 * EPS)
+            if dropped:
                 t = t - (d - EPS) * s.normal
                 cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
             if lift > 0:  # rest on the low parts under its base (rays may miss a burner)
@@ -659,6 +661,13 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if hit is not None:
             last = f"collides with {hit}"
             continue
+        if rel == "ON" and sup.owner != "room" and dropped:
+            # sunk below the named surface onto another part (a teapot inside a tray's rim
+            # rests on its base): record the part it touches, as settling will see it
+            part = _resting_part(st, sup, cand)
+            if part is not None and part != sup.part:
+                return (Rt, t, replace(sup, choice=SupportChoice(sup.owner, part, "top")),
+                        body), trials, checks, None
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
 
@@ -784,6 +793,27 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
     hull = shapely.union_all(held).convex_hull
     return hull.buffer(-5e-3).contains(shapely.Point(com))
+
+
+def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None:
+    """The part of ``sup``'s owner that the child rests on: among the owner's pieces under the
+    child's base (its points within 3 mm of its lowest), the one whose top is within 3 mm of
+    the base; None when none is, or that part has no top surface."""
+    s, n = sup.surface, sup.surface.normal
+    pts = world_points(cand, hull_only=True)
+    h = (pts - s.origin) @ n
+    low = float(h.min())
+    foot = shapely.MultiPoint(plane_coords(s, pts[h <= low + 3e-3])).convex_hull.buffer(1e-3)
+    best, gap = None, 3e-3
+    for name, q in st.world_pieces(sup.owner):
+        top = float(np.max((q - s.origin) @ n))
+        if abs(top - low) <= gap and foot.intersects(
+                shapely.MultiPoint(plane_coords(s, q)).convex_hull):
+            best, gap = name, abs(top - low)
+    owner = st.scene.objects[sup.owner]
+    if best is None or "top" not in owner.asset.part(best).surfaces:
+        return None
+    return best
 
 
 def _covered(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:
