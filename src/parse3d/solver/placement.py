@@ -661,7 +661,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if hit is not None:
             last = f"collides with {hit}"
             continue
-        if rel == "ON" and sup.owner != "room" and dropped:
+        if rel == "ON" and sup.owner != "room" and dropped and lift == 0:
             # sunk below the named surface onto another part (a teapot inside a tray's rim
             # rests on its base): record the part it touches, as settling will see it
             part = _resting_part(st, sup, cand)
