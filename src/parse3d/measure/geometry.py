@@ -122,8 +122,20 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
     Points are world-frame; ``T_*`` are asset-to-world similarity transforms.
     """
     best = np.inf
-    for pts, d, asset, T in ((child_pts, down, parent_asset, T_parent),
-                             (parent_pts, -down, child_asset, T_child)):
+    # a ray can only hit the other body when its origin lies in the other's shadow: keep the
+    # points inside the bounding box of the other's points seen along ``down`` (exact, fewer rays)
+    d0 = np.asarray(down, float) / np.linalg.norm(down)
+    ax = np.eye(3)[int(np.argmin(np.abs(d0)))]
+    e1 = np.cross(d0, ax)
+    e1 /= np.linalg.norm(e1)
+    E = np.c_[e1, np.cross(d0, e1)]
+    pc, pp = child_pts @ E, parent_pts @ E
+    for pts, proj, other, d, asset, T in ((child_pts, pc, pp, down, parent_asset, T_parent),
+                                          (parent_pts, pp, pc, -down, child_asset, T_child)):
+        lo, hi = other.min(axis=0) - 1e-6, other.max(axis=0) + 1e-6
+        pts = pts[np.all((proj >= lo) & (proj <= hi), axis=1)]
+        if not len(pts):
+            continue
         Ti = np.linalg.inv(T)
         o = pts @ Ti[:3, :3].T + Ti[:3, 3]
         v = Ti[:3, :3] @ d

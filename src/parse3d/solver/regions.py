@@ -399,10 +399,21 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
         out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
+    key = ("pieces", *np.round(sup.surface.origin, 9).tolist(), *np.round(n, 9).tolist())
     for oid in exclude:
-        for _, pts in st.world_pieces(oid):
-            h = (pts - sup.surface.origin) @ n
-            if h.max() <= max(1e-3, step) or h.min() >= height - 1e-3:
+        for lo_h, hi_h, fp in st.memo(oid, key, lambda oid=oid: _piece_footprints(st, oid, sup)):
+            if hi_h <= max(1e-3, step) or lo_h >= height - 1e-3:
                 continue
-            out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
+            out.append(fp)
+    return out
+
+
+def _piece_footprints(st: SolveState, oid: str, sup: Support) -> list[tuple]:
+    """``(lowest, highest, footprint)`` of each convex piece of a placed object, heights
+    above the support plane and footprints (K, 2) in its plane coordinates."""
+    s = sup.surface
+    out = []
+    for _, pts in st.world_pieces(oid):
+        h = (pts - s.origin) @ s.normal
+        out.append((float(h.min()), float(h.max()), RG.convex_footprint(plane_coords(s, pts))))
     return out
