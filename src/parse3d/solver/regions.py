@@ -401,19 +401,23 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
     # a cabinet's sides and back around its shelf, the other burners of a stove
     key = ("pieces", *np.round(sup.surface.origin, 9).tolist(), *np.round(n, 9).tolist())
     for oid in exclude:
-        for lo_h, hi_h, fp in st.memo(oid, key, lambda oid=oid: _piece_footprints(st, oid, sup)):
+        for piece in st.memo(oid, key, lambda oid=oid: _piece_heights(st, oid, sup)):
+            lo_h, hi_h, pts, fp = piece
             if hi_h <= max(1e-3, step) or lo_h >= height - 1e-3:
                 continue
+            if fp is None:  # footprints are made when first needed, then kept
+                fp = piece[3] = RG.convex_footprint(plane_coords(sup.surface, pts))
             out.append(fp)
     return out
 
 
-def _piece_footprints(st: SolveState, oid: str, sup: Support) -> list[tuple]:
-    """``(lowest, highest, footprint)`` of each convex piece of a placed object, heights
-    above the support plane and footprints (K, 2) in its plane coordinates."""
+def _piece_heights(st: SolveState, oid: str, sup: Support) -> list[list]:
+    """``[lowest, highest, points, None]`` for each convex piece of a placed object: heights
+    above the support plane, world points; the last slot holds the piece's footprint in the
+    plane once made (see :func:`obstacles`)."""
     s = sup.surface
     out = []
     for _, pts in st.world_pieces(oid):
         h = (pts - s.origin) @ s.normal
-        out.append((float(h.min()), float(h.max()), RG.convex_footprint(plane_coords(s, pts))))
+        out.append([float(h.min()), float(h.max()), pts, None])
     return out
