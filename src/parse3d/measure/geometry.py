@@ -125,10 +125,13 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
     # a ray can only hit the other body when its origin lies in the other's shadow: keep the
     # points inside the bounding box of the other's points seen along ``down`` (exact, fewer rays)
     d0 = np.asarray(down, float) / np.linalg.norm(down)
-    ax = np.eye(3)[int(np.argmin(np.abs(d0)))]
-    e1 = np.cross(d0, ax)
+    x, y, z = d0.tolist()
+    # two axes across ``down`` (numpy's cross is slow on single 3-vectors)
+    e1 = np.array([0.0, -z, y]) if abs(x) <= min(abs(y), abs(z)) else \
+        np.array([-y, x, 0.0]) if abs(z) <= abs(y) else np.array([z, 0.0, -x])
     e1 /= np.linalg.norm(e1)
-    E = np.c_[e1, np.cross(d0, e1)]
+    a, b, c = e1.tolist()
+    E = np.c_[e1, [y * c - z * b, z * a - x * c, x * b - y * a]]
     pc, pp = child_pts @ E, parent_pts @ E
     for pts, proj, other, d, asset, T in ((child_pts, pc, pp, down, parent_asset, T_parent),
                                           (parent_pts, pp, pc, -down, child_asset, T_child)):

@@ -146,7 +146,9 @@ def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None
         return None
     pv /= np.linalg.norm(pv)
     pt /= np.linalg.norm(pt)
-    return float(np.arctan2(np.dot(np.cross(pv, pt), n), np.dot(pv, pt)))
+    (a, b, c), (x, y, z) = pv.tolist(), pt.tolist()
+    cross = np.array([b * z - c * y, c * x - a * z, a * y - b * x])  # np.cross is slow here
+    return float(np.arctan2(np.dot(cross, n), np.dot(pv, pt)))
 
 
 def wrap(a: float) -> float:
