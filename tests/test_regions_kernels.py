@@ -72,3 +72,54 @@ def test_spatial_index_is_a_superset_of_the_full_scan():
             close = np.min(np.linalg.norm(fp - center, axis=1)) <= radius
             if close and st.zr[oid][1] >= z0 and st.zr[oid][0] <= z1:
                 assert oid in got
+
+
+def test_vectorised_convex_erosion_equals_the_clip():
+    """Many-sided convex supports are eroded by crossing the moved edge lines at once; the
+    result must be the polygon the half-plane clip gives (empty when that is empty)."""
+    from shapely.geometry import Polygon
+
+    from parse3d.geometry import regions as RG
+
+    rng = np.random.default_rng(3)
+    decided = 0
+    for k in range(150):
+        m = int(rng.choice([20, 48, 64]))
+        a = np.linspace(0, 2 * np.pi, m, endpoint=False) + rng.uniform(0, 1)
+        r = rng.uniform(0.2, 1.2)
+        poly = Polygon(np.c_[r * np.cos(a) * rng.uniform(0.4, 1.6), r * np.sin(a)])
+        F = RG.convex_footprint(rng.normal(size=(int(rng.integers(3, 30)), 2))
+                                * rng.uniform(0.01, 0.5))
+        F = F - F.mean(axis=0)
+        c = np.asarray(poly.exterior.coords)[:-1]
+        e = np.roll(c, -1, axis=0) - c
+        n = np.c_[e[:, 1], -e[:, 0]] / np.linalg.norm(e, axis=1)[:, None]
+        off = np.einsum("ij,ij->i", c, n) - np.max(F @ n.T, axis=0)
+        want = RG._clip_box(poly, n, off)
+        got = RG._half_planes(n, off)
+        if got is None:  # it could not tell: the clip decides
+            continue
+        decided += 1
+        assert got.is_empty == want.is_empty, k
+        if not want.is_empty:
+            assert got.symmetric_difference(want).area < 1e-10, k
+        assert RG._erode_convex(poly, -F).equals(got)
+    assert decided >= 75  # the vectorised path answers most of the time
+
+
+def test_rejection_sampling_is_uniform_over_the_region():
+    """Regions that fill their box are sampled by rejection: every point inside, and the
+    share of points in each half of an L-shaped region follows its area."""
+    import shapely
+    from shapely.geometry import Polygon
+
+    from parse3d.geometry import regions as RG
+
+    L = Polygon([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)])  # area 3, fills 3/4 of its box
+    pts = RG.sample_uniform(L, np.random.default_rng(0), 6000)
+    assert pts.shape == (6000, 2)
+    assert shapely.contains_xy(L.buffer(1e-9), pts[:, 0], pts[:, 1]).all()
+    low = float(np.mean(pts[:, 1] < 1.0))  # the lower bar holds 2/3 of the area
+    assert abs(low - 2 / 3) < 0.03
+    again = RG.sample_uniform(L, np.random.default_rng(0), 6000)
+    assert np.array_equal(pts, again)  # deterministic for a seed

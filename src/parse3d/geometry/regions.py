@@ -140,6 +140,61 @@ def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
     n /= np.linalg.norm(n, axis=1, keepdims=True)
     shift = np.max(-neg @ n.T, axis=0)  # support of the footprint (F = -neg) along n
     off = np.einsum("ij,ij->i", c, n) - shift
+    # few edges: clipping on Python floats is cheaper than numpy's per-call overhead
+    got = _half_planes(n, off) if len(n) > HALF_PLANES_FROM else None
+    return got if got is not None else _clip_box(poly, n, off)
+
+
+#: Edge count from which a convex erosion is vectorised (:func:`_half_planes`).
+HALF_PLANES_FROM = 16
+
+
+def _ring(p: np.ndarray) -> BaseGeometry:
+    """A polygon through the points ``p`` (in order), repeated vertices dropped."""
+    keep = np.hypot(*(p - np.roll(p, 1, axis=0)).T) > 1e-12
+    p = p[keep] if keep.any() else p[:1]
+    if len(p) < 3:
+        return Polygon()
+    out = Polygon(p)
+    return out if out.is_valid and out.area > 0 else Polygon()
+
+
+def _half_planes(n: np.ndarray, off: np.ndarray, tol: float = 1e-9) -> BaseGeometry | None:
+    """The polygon ``{x : n_i . x <= off_i for all i}`` for unit normals ``n`` (m, 2) in
+    counter-clockwise order (a convex polygon's edges, moved); None when this cannot tell.
+
+    Its vertices are the crossings of neighbouring lines; a line whose edge would have
+    negative length is redundant (its edge vanished in the erosion) and is dropped, and the
+    crossings are recomputed. The result is exact when every vertex lies in every half-plane
+    (checked): then the polygon is the intersection. Vectorised: a few numpy calls per round
+    rather than a clipping loop per edge.
+    """
+    keep = np.arange(len(n))
+    for _ in range(len(n)):
+        if len(keep) < 3:
+            return Polygon()
+        a, oa = n[keep], off[keep]
+        b, ob = np.roll(a, -1, axis=0), np.roll(oa, -1)
+        det = a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0]
+        if np.any(det <= 1e-12):  # a turn of half a circle or more between two lines
+            return None
+        p = np.c_[(oa * b[:, 1] - ob * a[:, 1]) / det, (a[:, 0] * ob - b[:, 0] * oa) / det]
+        # length of each line's edge: from the previous crossing to the next, along the line
+        d = p - np.roll(p, 1, axis=0)
+        length = d[:, 1] * a[:, 0] - d[:, 0] * a[:, 1]
+        if np.all(length >= -tol):
+            inside = (p[:, None, 0] * n[None, :, 0] + p[:, None, 1] * n[None, :, 1]
+                      - off[None, :]) <= tol
+            return _ring(p) if inside.all() else None
+        # drop the lines of negative length that are not next to a shorter one
+        worst = (length < -tol) & (length <= np.roll(length, 1)) & (length <= np.roll(length, -1))
+        keep = keep[~worst]
+    return None
+
+
+def _clip_box(poly: Polygon, n: np.ndarray, off: np.ndarray) -> BaseGeometry:
+    """The half-planes of :func:`_half_planes` clipped from ``poly``'s bounding box one by one
+    (the fallback where that cannot tell)."""
     # clip a big box by every half-plane {x : x . n <= off} (Sutherland-Hodgman on Python
     # floats: a few dozen vertices, where numpy's per-call overhead would dominate)
     x0, y0, x1, y1 = poly.bounds
@@ -270,6 +325,9 @@ def sample_uniform(region: BaseGeometry, rng: np.random.Generator, n: int = 1) -
     parts = list(region.geoms) if hasattr(region, "geoms") else [region]
     areal = [g for g in parts if g.area > 1e-12]
     if areal:
+        got = _sample_by_rejection(areal, rng, n)
+        if got is not None:
+            return got
         # every triangle's ring is 4 coordinates (closed): read them all at once
         coords = np.concatenate([
             shapely.get_coordinates(shapely.constrained_delaunay_triangles(g)).reshape(-1, 4, 2)
@@ -297,6 +355,38 @@ def sample_uniform(region: BaseGeometry, rng: np.random.Generator, n: int = 1) -
         return segs[k, 0] + t * (segs[k, 1] - segs[k, 0])
     pts = np.array([np.asarray(g.coords)[0] for g in parts if not g.is_empty])
     return pts[rng.integers(len(pts), size=n)]
+
+
+#: Least share of its bounding box a region must fill to be sampled by rejection from the box
+#: (thinner regions are triangulated).
+REJECTION_FILL = 0.2
+
+
+def _sample_by_rejection(areal: list[BaseGeometry], rng: np.random.Generator,
+                         n: int) -> np.ndarray | None:
+    """(n, 2) points uniform over the polygons ``areal``, drawn uniformly in their bounding box
+    and kept when inside (one vectorised point-in-polygon test per batch, no triangulation);
+    None when the polygons fill too little of the box for that to be cheap."""
+    geom = areal[0] if len(areal) == 1 else shapely.MultiPolygon(
+        [p for g in areal for p in (g.geoms if hasattr(g, "geoms") else [g])])
+    x0, y0, x1, y1 = geom.bounds
+    box_area = (x1 - x0) * (y1 - y0)
+    fill = geom.area / box_area if box_area > 0 else 0.0
+    if fill < REJECTION_FILL:
+        return None
+    shapely.prepare(geom)
+    out, have = [], 0
+    for _ in range(16):
+        m = int(math.ceil((n - have) / fill * 1.25)) + 4
+        x = x0 + rng.random(m) * (x1 - x0)
+        y = y0 + rng.random(m) * (y1 - y0)
+        ok = shapely.contains_xy(geom, x, y)
+        if ok.any():
+            out.append(np.c_[x[ok], y[ok]])
+            have += int(ok.sum())
+        if have >= n:
+            return np.concatenate(out)[:n]
+    return None
 
 
 def bounding_square(region: BaseGeometry, pad: float = 1.0) -> Polygon:

@@ -122,8 +122,23 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
     Points are world-frame; ``T_*`` are asset-to-world similarity transforms.
     """
     best = np.inf
-    for pts, d, asset, T in ((child_pts, down, parent_asset, T_parent),
-                             (parent_pts, -down, child_asset, T_child)):
+    # a ray can only hit the other body when its origin lies in the other's shadow: keep the
+    # points inside the bounding box of the other's points seen along ``down`` (exact, fewer rays)
+    d0 = np.asarray(down, float) / np.linalg.norm(down)
+    x, y, z = d0.tolist()
+    # two axes across ``down`` (numpy's cross is slow on single 3-vectors)
+    e1 = np.array([0.0, -z, y]) if abs(x) <= min(abs(y), abs(z)) else \
+        np.array([-y, x, 0.0]) if abs(z) <= abs(y) else np.array([z, 0.0, -x])
+    e1 /= np.linalg.norm(e1)
+    a, b, c = e1.tolist()
+    E = np.c_[e1, [y * c - z * b, z * a - x * c, x * b - y * a]]
+    pc, pp = child_pts @ E, parent_pts @ E
+    for pts, proj, other, d, asset, T in ((child_pts, pc, pp, down, parent_asset, T_parent),
+                                          (parent_pts, pp, pc, -down, child_asset, T_child)):
+        lo, hi = other.min(axis=0) - 1e-6, other.max(axis=0) + 1e-6
+        pts = pts[np.all((proj >= lo) & (proj <= hi), axis=1)]
+        if not len(pts):
+            continue
         Ti = np.linalg.inv(T)
         o = pts @ Ti[:3, :3].T + Ti[:3, 3]
         v = Ti[:3, :3] @ d

@@ -124,7 +124,7 @@ def _contents_scale(pag, oid: str, asset: Asset) -> float:
     typical size squared each; 0 with fewer than two such children."""
     from ..assets import registry
 
-    kids = [e.child.object for e in pag.relations
+    kids = [e.child.object for e in touching(pag, oid)
             if e.relation == "IN" and e.parent.object == oid and e.parent.part is None]
     if len(kids) < 2:
         return 0.0
@@ -143,13 +143,29 @@ def _contents_scale(pag, oid: str, asset: Asset) -> float:
     return float(np.sqrt(need / area)) if area > 0 else 0.0
 
 
+def touching(pag, oid: str) -> list[Edge]:
+    """The edges of ``pag`` naming ``oid`` as child or parent, in file order (an index kept on
+    the graph, rebuilt whenever its relations change)."""
+    key = tuple(map(id, pag.relations))
+    got = pag.__dict__.get("_touch_index")
+    if got is None or got[0] != key:
+        idx: dict[str, list[Edge]] = {}
+        for e in pag.relations:
+            idx.setdefault(e.child.object, []).append(e)
+            if e.parent.object != e.child.object:
+                idx.setdefault(e.parent.object, []).append(e)
+        got = (key, idx, list(pag.relations))  # holding the edges keeps their ids valid
+        pag.__dict__["_touch_index"] = got
+    return got[1].get(oid, [])
+
+
 def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
     """What the object's asset must have, from every relation naming one of its parts:
     ``(part label, index or None, relation text, kind)`` with kind ``part`` (the part and
     ``#k`` exist), ``internal`` (an IN parent part holds an internal support surface) or
     ``extreme:<label>`` (an AGAINST child part reaches furthest along its surface normal)."""
     out = []
-    for e in pag.relations:
+    for e in touching(pag, oid):
         text = f"{e.relation} {e.child} -> {e.parent}"
         for ref, role in ((e.child, "child"), (e.parent, "parent")):
             if ref.object != oid or ref.part is None:
@@ -519,10 +535,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
-    region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else cfg.margin),
-                                join_style="mitre")
-    if region0.is_empty:
-        region0 = sup.region  # tiny supports (a burner) keep their polygon; see overhang below
+    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, _plane_key(s), cfg.margin),
+                      lambda: _inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
@@ -535,7 +549,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         obst = obstacles(st, sup, exclude, height + EPS,
                          _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0), step=step)
         if step:
-            lift = _step_height(st, sup, step)
+            lift = st.memo(sup.owner, ("step", _plane_key(s), step),
+                           lambda: _step_height(st, sup, step))
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
@@ -670,6 +685,19 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                         body), trials, checks, None
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+def _plane_key(s) -> tuple:
+    """A hashable key of a support plane (its origin and normal)."""
+    return (*np.round(s.origin, 9).tolist(), *np.round(s.normal, 9).tolist())
+
+
+def _inset(sup: Support, margin: float):
+    """The support's region less a margin: objects keep ``margin`` from an object support's
+    edge, and a hair's breadth (less than the contact gap EPS) from a room element's corners
+    (they are bounded by walls in the collision world)."""
+    region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else margin), join_style="mitre")
+    return sup.region if region0.is_empty else region0  # tiny supports (a burner): see overhang
 
 
 def _reach(region, F: np.ndarray, pad: float) -> tuple[float, float, float, float]:

@@ -404,10 +404,25 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
         out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
+    key = ("pieces", *np.round(sup.surface.origin, 9).tolist(), *np.round(n, 9).tolist())
     for oid in exclude:
-        for _, pts in st.world_pieces(oid):
-            h = (pts - sup.surface.origin) @ n
-            if h.max() <= max(1e-3, step) or h.min() >= height - 1e-3:
+        for piece in st.memo(oid, key, lambda oid=oid: _piece_heights(st, oid, sup)):
+            lo_h, hi_h, pts, fp = piece
+            if hi_h <= max(1e-3, step) or lo_h >= height - 1e-3:
                 continue
-            out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
+            if fp is None:  # footprints are made when first needed, then kept
+                fp = piece[3] = RG.convex_footprint(plane_coords(sup.surface, pts))
+            out.append(fp)
+    return out
+
+
+def _piece_heights(st: SolveState, oid: str, sup: Support) -> list[list]:
+    """``[lowest, highest, points, None]`` for each convex piece of a placed object: heights
+    above the support plane, world points; the last slot holds the piece's footprint in the
+    plane once made (see :func:`obstacles`)."""
+    s = sup.surface
+    out = []
+    for _, pts in st.world_pieces(oid):
+        h = (pts - s.origin) @ s.normal
+        out.append([float(h.min()), float(h.max()), pts, None])
     return out

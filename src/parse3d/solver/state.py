@@ -51,10 +51,12 @@ class SolveState:
     _ids: list[str] = field(default_factory=list, repr=False)
     _rows: list[tuple[float, ...]] = field(default_factory=list, repr=False)
     _table: np.ndarray | None = field(default=None, repr=False)
+    _memo: dict[str, dict] = field(default_factory=dict, repr=False)
 
     def add(self, obj: PlacedObject, body: Body) -> None:
         """Register a placed object (its pose is final until :meth:`remove`)."""
         self.scene.objects[obj.id] = obj
+        self._memo.pop(obj.id, None)
         self.hulls[obj.id] = world_points(obj, hull_only=True)
         self.xy[obj.id] = RG.convex_footprint(self.hulls[obj.id][:, :2])
         self.zr[obj.id] = (float(self.hulls[obj.id][:, 2].min()),
@@ -73,7 +75,7 @@ class SolveState:
 
     def remove(self, oid: str) -> None:
         """Take a placed object out of the collision world and the geometry index."""
-        for d in (self.hulls, self.xy, self.zr, self.pieces):
+        for d in (self.hulls, self.xy, self.zr, self.pieces, self._memo):
             d.pop(oid, None)
         if oid in self._ids:
             k = self._ids.index(oid)
@@ -97,6 +99,15 @@ class SolveState:
         d = np.hypot(T[:, 0] - center[0], T[:, 1] - center[1])
         ok = (d <= radius + np.sqrt(2.0) * T[:, 2] + 1e-6) & (T[:, 4] >= z0) & (T[:, 3] <= z1)
         return [self._ids[i] for i in np.flatnonzero(ok)]
+
+    def memo(self, oid: str, key, fn):
+        """``fn()``, computed once per ``key`` while ``oid`` (a placed object, or ``room``)
+        keeps its pose: for geometry derived from a fixed parent (its support region with a
+        margin, its low parts' height, its pieces' footprints in a support plane)."""
+        got = self._memo.setdefault(oid, {})
+        if key not in got:
+            got[key] = fn()
+        return got[key]
 
     def world_pieces(self, oid: str) -> list[tuple[str, np.ndarray]]:
         """(part name, world vertices) of every convex piece of a placed object (cached)."""
@@ -135,7 +146,9 @@ def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None
         return None
     pv /= np.linalg.norm(pv)
     pt /= np.linalg.norm(pt)
-    return float(np.arctan2(np.dot(np.cross(pv, pt), n), np.dot(pv, pt)))
+    (a, b, c), (x, y, z) = pv.tolist(), pt.tolist()
+    cross = np.array([b * z - c * y, c * x - a * z, a * y - b * x])  # np.cross is slow here
+    return float(np.arctan2(np.dot(cross, n), np.dot(pv, pt)))
 
 
 def wrap(a: float) -> float:
