@@ -253,7 +253,8 @@ def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     s = {"small": rng.uniform(0.16, 0.22), "sitting": rng.uniform(0.25, 0.35), "large": rng.uniform(0.45, 0.55)}[variant]
     fur = M.solid(M.jitter(rng, [(0.6, 0.42, 0.25), (0.85, 0.75, 0.6), (0.35, 0.22, 0.14), (0.9, 0.9, 0.88)][int(rng.integers(4))],
                            0.03), "fabric", 0.95)
-    parts = [make_part("body", "body", S.ellipsoid((0.22 * s, 0.18 * s, 0.27 * s), center=(0, 0, 0.3 * s)), fur),
+    # the body sits on the ground with the legs (resting on the legs alone it would tip back)
+    parts = [make_part("body", "body", S.ellipsoid((0.22 * s, 0.18 * s, 0.27 * s), center=(0, 0, 0.27 * s)), fur),
              make_part("head", "head", S.ellipsoid((0.19 * s, 0.17 * s, 0.17 * s), center=(0, 0.02 * s, 0.72 * s)), fur),
              make_part("snout", "snout", S.ellipsoid((0.07 * s, 0.06 * s, 0.05 * s), center=(0, 0.18 * s, 0.68 * s)),
                        M.solid((0.9, 0.85, 0.75), "fabric", 0.95))]
