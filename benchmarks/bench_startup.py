@@ -4,6 +4,7 @@ Usage::
 
     python benchmarks/bench_startup.py                         # this checkout, 3 rounds
     python benchmarks/bench_startup.py --baseline-rev 4607b75  # and REV, rounds interleaved
+    python benchmarks/bench_startup.py --no-cold               # warm commands only (quick)
 
 Prints medians of wall-clock seconds over ``--rounds`` rounds, one column per package:
 
@@ -80,8 +81,8 @@ def _generation(src: Path, slots: list[tuple[str, int]], tmp: Path) -> float:
 class Side:
     """One package (this checkout or a baseline worktree) and its caches."""
 
-    def __init__(self, label: str, src: Path, tmp: Path):
-        self.label, self.src, self.tmp = label, src, tmp / label
+    def __init__(self, label: str, src: Path, tmp: Path, cold: bool = True):
+        self.label, self.src, self.tmp, self.cold = label, src, tmp / label, cold
         self.tmp.mkdir(parents=True)
         self.warm = self.tmp / "cache-warm"
         self.times: dict[str, list[float]] = {}
@@ -101,6 +102,8 @@ class Side:
         self.add("validate", _run(self.src, ["validate", str(VALIDATE_PAG)], self.warm, self.tmp))
         self.add("solve", _run(self.src, ["solve", str(SOLVE_PAG), "--no-settle", "--no-preview",
                                           "--out", out], self.warm, self.tmp))
+        if not self.cold:
+            return
         cold = self.tmp / f"cache-cold-{k}"
         self.add("cold", _run(self.src, ["solve", str(SOLVE_PAG), "--no-settle", "--no-preview",
                                          "--out", out], cold, self.tmp))
@@ -110,7 +113,8 @@ class Side:
 
     def summary(self) -> dict[str, float]:
         s = {k: statistics.median(v) for k, v in self.times.items()}
-        s["cold_ratio"] = s["cold"] / (s["solve"] + s["generation"])
+        if self.cold:
+            s["cold_ratio"] = s["cold"] / (s["solve"] + s["generation"])
         return s
 
 
@@ -119,16 +123,18 @@ def main() -> None:
     ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="also time git revision REV (e.g. 4607b75), rounds interleaved")
+    ap.add_argument("--no-cold", dest="cold", action="store_false",
+                    help="skip the solves on an empty asset cache (the slow part)")
     args = ap.parse_args()
     with tempfile.TemporaryDirectory(prefix="parse3d-startup-") as d:
         tmp = Path(d)
-        sides = [Side("now", ROOT / "src", tmp)]
+        sides = [Side("now", ROOT / "src", tmp, args.cold)]
         wt = None
         if args.baseline_rev:
             wt = tmp / "tree"
             subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(wt),
                             args.baseline_rev], check=True, capture_output=True)
-            sides.append(Side(args.baseline_rev[:10], wt / "src", tmp))
+            sides.append(Side(args.baseline_rev[:10], wt / "src", tmp, args.cold))
         try:
             for s in sides:
                 s.prepare()
@@ -151,6 +157,8 @@ def main() -> None:
             ("  their generation alone", "generation", "{:.2f}"),
             ("  cold / (cached + generation) (goal <= 2)", "cold_ratio", "{:.2f}")]
     for title, key, fmt in rows:
+        if key not in res[0][1]:
+            continue
         print(f"{title:48s}" + "".join(f"{fmt.format(s[key]):>12s}" for _, s in res))
 
 

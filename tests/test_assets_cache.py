@@ -109,3 +109,29 @@ def test_fast_npz_reader_matches_numpy(tmp_path):
     for k, v in odd.items():
         assert got[k].dtype == np.asarray(v).dtype and got[k].shape == np.shape(v), k
         np.testing.assert_array_equal(got[k], v)
+
+
+def test_damaged_member_is_refused(tmp_path):
+    """The reader inflates members from the file's buffer itself: a damaged byte inside a
+    member, an uncompressed (stored) file and a truncated one behave as with ``zipfile``."""
+    from parse3d.assets.cache import _read_npz
+
+    path = save_asset(registry.generate("cup", 0), tmp_path / "c.npz")
+    with np.load(path, allow_pickle=False) as z:
+        want = {k: z[k] for k in z.files}
+    stored = tmp_path / "stored.npz"
+    np.savez(stored, **want)  # no compression
+    got = _read_npz(stored)
+    assert all(np.array_equal(got[k], v) for k, v in want.items())
+    raw = bytearray(path.read_bytes())
+    with zipfile.ZipFile(path) as z:
+        info = z.getinfo("p0_v.npy")
+    raw[info.header_offset + 30 + len(info.filename) + info.compress_size // 2] ^= 0xFF
+    bad = tmp_path / "bad.npz"
+    bad.write_bytes(bytes(raw))
+    with pytest.raises(AssetError, match=r"bad\.npz"):
+        load_asset(bad)
+    cut = tmp_path / "cut.npz"
+    cut.write_bytes(path.read_bytes()[: len(raw) // 2])
+    with pytest.raises(AssetError, match=r"cut\.npz"):
+        load_asset(cut)

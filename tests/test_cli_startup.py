@@ -62,6 +62,26 @@ def test_validate_does_not_import_heavy_libraries(tmp_path):
     assert warm["code"] == 0
     assert not set(HEAVY + GEOMETRY) & set(warm["modules"]), warm["modules"]
     assert "parse3d" in warm["modules"] and "jsonschema" in warm["modules"]
+    # plain parameters are coerced without pydantic; rich and PyYAML load on first use
+    assert not {"pydantic", "rich", "yaml"} & set(warm["modules"]), warm["modules"]
+
+
+def test_plain_parameters_coerce_like_typer(tmp_path):
+    from parse3d.cli import _params
+
+    assert _params._to(int, " 42 ") == 42 and _params._to(float, "0.5") == 0.5
+    assert _params._to(bool, "Yes") is True and _params._to(bool, "off") is False
+    with pytest.raises(ValueError, match="not a valid integer"):
+        _params._to(int, "4x")
+    runner = CliRunner()
+    bad = runner.invoke(app, ["solve", str(STUDY), "--seed", "abc", "--out", str(tmp_path)])
+    assert bad.exit_code == 2 and "--seed" in bad.output and "abc" in bad.output
+    assert not any(tmp_path.iterdir())
+    other = tmp_path / "other.json"
+    other.write_text(STUDY.read_text())
+    ok = runner.invoke(app, ["validate", "--json", "--no-vocabulary", str(STUDY), str(other)])
+    assert ok.exit_code == 0, ok.output
+    assert [r["file"] for r in json.loads(ok.output)] == [str(STUDY), str(other)]
 
 
 def test_snapshot_vocabulary_equals_the_registry(tmp_path, monkeypatch):

@@ -38,8 +38,10 @@ import json
 import math
 import os
 import re
+import struct
 import tempfile
 import zipfile
+import zlib
 from pathlib import Path
 from typing import Any
 
@@ -157,12 +159,15 @@ def save_asset(asset: Asset, path: str | os.PathLike) -> Path:
 
 
 def _pieces(pv: np.ndarray, pf: np.ndarray, pn: np.ndarray) -> list[trimesh.Trimesh]:
+    # Meshes are made without trimesh's embree ray intersector (``use_embree=False``): building
+    # one per mesh was a fifth of loading an asset, and nothing casts rays through
+    # ``mesh.ray`` (the ray queries build their own intersector); it still works, in Python.
     out = []
     v0 = f0 = 0
     for nv, nf in pn:
         v = pv[v0:v0 + nv].astype(np.float64)
         f = pf[f0:f0 + nf].astype(np.int64)
-        out.append(trimesh.Trimesh(v, f, process=False))
+        out.append(trimesh.Trimesh(v, f, process=False, use_embree=False))
         v0 += int(nv)
         f0 += int(nf)
     return out
@@ -191,14 +196,47 @@ def _read_npy(raw: bytes) -> np.ndarray:
 
 
 def _read_npz(path: Path) -> dict[str, np.ndarray]:
-    """Every array of an ``.npz`` file, by name (as ``numpy.load`` gives them)."""
+    """Every array of an ``.npz`` file, by name (as ``numpy.load`` gives them).
+
+    The file is read in one go and each member is inflated straight from that buffer (offsets
+    from the zip's central directory, CRC checked): ``zipfile``'s per-member file objects cost
+    more than the ~50 small arrays of an asset themselves. Members that are not plain stored or
+    deflated ones go through ``zipfile``.
+    """
+    with open(path, "rb") as fh:
+        buf = fh.read()
     out = {}
-    with zipfile.ZipFile(path) as zf:
+    view = memoryview(buf)
+    with zipfile.ZipFile(io.BytesIO(buf)) as zf:
         for info in zf.infolist():
             if not info.filename.endswith(".npy"):
                 raise ValueError(f"unexpected member {info.filename!r}")
-            out[info.filename[:-4]] = _read_npy(zf.read(info))
+            raw = _member(buf, view, info)
+            out[info.filename[:-4]] = _read_npy(raw if raw is not None else zf.read(info))
     return out
+
+
+def _member(buf: bytes, view: memoryview, info: zipfile.ZipInfo) -> bytes | None:
+    """One member's bytes read from the whole file's buffer; None to leave it to zipfile."""
+    if info.flag_bits & 0x1 or info.compress_type not in (zipfile.ZIP_STORED,
+                                                          zipfile.ZIP_DEFLATED):
+        return None
+    off = info.header_offset
+    if buf[off:off + 4] != b"PK\x03\x04" or off + 30 > len(buf):
+        raise zipfile.BadZipFile(f"bad local header of {info.filename!r}")
+    name_len, extra_len = struct.unpack_from("<HH", buf, off + 26)
+    start = off + 30 + name_len + extra_len
+    data = view[start:start + info.compress_size]
+    if len(data) != info.compress_size:
+        raise zipfile.BadZipFile(f"{info.filename!r} is truncated")
+    try:
+        raw = zlib.decompress(data, -15) if info.compress_type == zipfile.ZIP_DEFLATED \
+            else bytes(data)
+    except zlib.error as e:
+        raise zipfile.BadZipFile(f"{info.filename!r}: {e}") from None
+    if len(raw) != info.file_size or zlib.crc32(raw) != info.CRC:
+        raise zipfile.BadZipFile(f"bad CRC or size of {info.filename!r}")
+    return raw
 
 
 def load_asset(path: str | os.PathLike) -> Asset:
@@ -247,7 +285,7 @@ def _asset_from(header: dict, data: dict[str, np.ndarray]) -> Asset:
     k = 0
     for i, ph in enumerate(header["parts"]):
         mesh = trimesh.Trimesh(data[f"p{i}_v"].astype(np.float64), data[f"p{i}_f"].astype(np.int64),
-                               process=False)
+                               process=False, use_embree=False)
         pieces = _pieces(data[f"p{i}_pv"], data[f"p{i}_pf"], data[f"p{i}_pn"])
         surf = {}
         for label in ph["surfaces"]:

@@ -15,6 +15,7 @@ import sys
 import typer
 
 from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InfeasibleError, InputError, Parse3dError
+from . import _params
 
 __all__ = ["app", "main"]
 
@@ -39,7 +40,10 @@ def _module_commands(module: str) -> dict:
     if module not in _LOADED:
         sub = typer.Typer(add_completion=False, pretty_exceptions_enable=False)
         importlib.import_module(f"{__name__}.{module}").register(sub)
-        _LOADED[module] = dict(typer.main.get_group(sub).commands)
+        commands = dict(typer.main.get_group(sub).commands)
+        for command in commands.values():
+            _params.install(command)
+        _LOADED[module] = commands
     return _LOADED[module]
 
 
@@ -107,6 +111,7 @@ class _LazyGroup(typer.core.TyperGroup):
     def __init__(self, *args, **kwargs):
         super().__init__(*args, **kwargs)
         self.commands = _LazyCommands(self.commands)
+        _params.install(self)
 
     def list_commands(self, ctx) -> list[str]:
         names: list[str] = []

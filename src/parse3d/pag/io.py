@@ -24,13 +24,12 @@ Parsing is bounded before any object is built (hostile files cannot crash or han
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import re
 from pathlib import Path
 from typing import Any
-
-import yaml
 
 from .._files import read_input_text
 from ..errors import InputError, Problem, SchemaError
@@ -49,27 +48,40 @@ _JSON_EXT = (".json",)
 _YAML_EXT = (".yaml", ".yml")
 
 
-_SafeLoader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
-_SafeDumper = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
+@functools.cache
+def _yaml():
+    """``(yaml, Loader, Dumper)``, made on first use (PyYAML costs start-up time that JSON
+    documents do not need). Loader: safe, YAML 1.2 booleans, no timestamp conversion;
+    Dumper: safe, keeps key order."""
+    import yaml
+
+    safe_loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
+    safe_dumper = getattr(yaml, "CSafeDumper", yaml.SafeDumper)
+
+    class _Loader(safe_loader):
+        """Safe YAML loader with YAML 1.2 booleans and no timestamp conversion."""
+
+    _Loader.yaml_implicit_resolvers = {
+        ch: [(tag, rx) for tag, rx in rs
+             if tag not in ("tag:yaml.org,2002:bool", "tag:yaml.org,2002:timestamp")]
+        for ch, rs in yaml.SafeLoader.yaml_implicit_resolvers.items()
+    }
+    _Loader.add_implicit_resolver(
+        "tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
+        list("tTfF"),
+    )
+
+    class _Dumper(safe_dumper):
+        """Safe YAML dumper that keeps key order."""
+
+    return yaml, _Loader, _Dumper
 
 
-class _Loader(_SafeLoader):
-    """Safe YAML loader with YAML 1.2 booleans and no timestamp conversion."""
-
-
-_Loader.yaml_implicit_resolvers = {
-    ch: [(tag, rx) for tag, rx in rs
-         if tag not in ("tag:yaml.org,2002:bool", "tag:yaml.org,2002:timestamp")]
-    for ch, rs in yaml.SafeLoader.yaml_implicit_resolvers.items()
-}
-_Loader.add_implicit_resolver(
-    "tag:yaml.org,2002:bool", re.compile(r"^(?:true|True|TRUE|false|False|FALSE)$"),
-    list("tTfF"),
-)
-
-
-class _Dumper(_SafeDumper):
-    """Safe YAML dumper that keeps key order."""
+def __getattr__(name: str):
+    # ``_Loader`` and ``_Dumper`` as module attributes, for code that imports them
+    if name in ("_Loader", "_Dumper"):
+        return _yaml()[1 if name == "_Loader" else 2]
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _kind(path: Path) -> str:
@@ -116,6 +128,7 @@ def loads_document(text: str, *, kind: str, file: str | None = None) -> Any:
                                        file, "syntax") for ptr, key in dups])
         return data
     _yaml_precheck(text, file)
+    yaml, _Loader, _ = _yaml()
     try:
         data = yaml.load(text, Loader=_Loader)  # noqa: S506 - a SafeLoader subclass
     except yaml.YAMLError as e:
@@ -209,6 +222,7 @@ _PLAIN_TAGS = frozenset("tag:yaml.org,2002:" + t
 def _yaml_precheck(text: str, file: str | None) -> None:
     """Walk the YAML event stream (iterative, no object built): depth, expanded size, tags and
     repeated keys, each reported with the JSON pointer of the node."""
+    yaml, _Loader, _ = _yaml()
     loader = _Loader(text)
     # stack of [kind, pointer, key-expected flag or index, current key, keys seen, size]
     stack: list[list[Any]] = []
@@ -379,6 +393,7 @@ def save_pag(pag: PAG | dict[str, Any], path: str | Path) -> Path:
     if kind == "json":
         text = dumps_pag(data)
     else:
+        yaml, _, _Dumper = _yaml()
         text = yaml.dump(data, Dumper=_Dumper, sort_keys=False, allow_unicode=True,
                          default_flow_style=None, width=100)
     path.parent.mkdir(parents=True, exist_ok=True)
