@@ -635,7 +635,7 @@ def test_export_rerun_refreshes_stale_exports_and_drops_unused_files(tiny_scene,
     assert _cli(["export", str(d), "--format", "glb", "--out", str(tmp_path / "o"),
                  "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["refreshed"] == []
-    assert [p.name for p in (tmp_path / "o").iterdir()] == ["scene.glb"]
+    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["exports.json", "scene.glb"]
     # without the mug, its URDF and the meshes only it used leave the folder
     files = {str(p.relative_to(d)) for p in d.rglob("*") if p.is_file()}
     scene = parse3d.load_scene(d)
@@ -649,6 +649,55 @@ def test_export_rerun_refreshes_stale_exports_and_drops_unused_files(tiny_scene,
     mesh_files = {f for f in left if f.startswith(("meshes/", "urdf/meshes/"))
                   and not f.endswith((".txt", ".mtl"))}
     assert mesh_files == _referenced_meshes(d)
+
+
+def test_refreshes_keep_the_options_each_export_was_made_with(tiny_scene, tmp_path, capsys):
+    from parse3d.export.record import read_options
+
+    d = _folder_with_every_format(tiny_scene, tmp_path / "tiny")
+    lifted = tiny_scene.objects["mug"].position.copy()
+    assert _cli(["export", str(d), "--format", "glb,mjcf", "--no-ceiling", "--open", "1"]) == 0
+    assert _cli(["export", str(d), "--format", "urdf", "--solved"]) == 0
+    capsys.readouterr()
+    rec = read_options(d)
+    assert not rec["glb"].ceiling and rec["mjcf"].open_ratio == 1.0
+    assert rec["urdf"].settled is False and rec["usd"].ceiling and rec["usd"].settled is None
+    assert _cli(["settle", str(d), "--steps", "150"]) == 0
+    capsys.readouterr()
+    scene = parse3d.load_scene(d)
+    settled = scene.objects["mug"].settled_position
+    assert scene.settled and lifted[2] - settled[2] > 0.01
+
+    def ceilings() -> dict[str, bool]:
+        import mujoco
+        from pxr import Usd
+
+        glb = {n.get("name") for n in _glb_json(d / "scene.glb")["nodes"]}
+        model = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+        stage = Usd.Stage.Open(str(d / "scene.usd"))  # held: its prims die with it
+        return {"glb": "room:ceiling" in glb,
+                "mjcf": mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "room:ceiling") >= 0,
+                "usd": stage.GetPrimAtPath("/World/Room/ceiling").IsValid()}
+
+    # settling rewrote every export in the settled pose, but with the options it was made with
+    assert ceilings() == {"glb": False, "mjcf": False, "usd": True}
+    pos = _exported_mug_positions(d)
+    assert np.allclose(pos["urdf"], lifted, atol=1e-6)  # exported --solved: stays solved
+    for fmt in ("glb", "usd", "mjcf"):
+        assert np.allclose(pos[fmt], settled, atol=1e-5), fmt
+    # a refresh by export_scene keeps them too; a format asked for anew takes the new options
+    earlier = (d / "scene.json").stat().st_mtime_ns - 10**9
+    os.utime(d / "scene.glb", ns=(earlier, earlier))
+    export_scene(scene, d, ["mjcf"], ExportOptions())
+    assert ceilings() == {"glb": False, "mjcf": True, "usd": True}
+    assert read_options(d)["mjcf"].ceiling and not read_options(d)["glb"].ceiling
+    # a damaged record is a clear error before anything is written
+    (d / "exports.json").write_text("{not json")
+    before = (d / "scene.json").read_bytes()
+    assert _cli(["settle", str(d), "--steps", "5"]) == 2
+    err = capsys.readouterr().err
+    assert "exports.json" in err and "not valid JSON" in err
+    assert (d / "scene.json").read_bytes() == before
 
 
 # -- datasets -----------------------------------------------------------------------------
