@@ -477,6 +477,21 @@ def test_mujoco_locks_joints_by_default(cabinets):
     assert q0[hinge] == pytest.approx(0.5)
 
 
+def test_to_sapien_holds_joints_unless_free(cabinets):
+    scene, _ = cabinets
+    moved = {}
+    for free in (True, False):
+        sim = to_sapien(scene, render=False, free_joints=free)
+        art = sim.articulations["cab"]
+        art.set_qvel(np.array([-2.0, -0.5], np.float32))  # swing the door shut, push the drawer
+        for _ in range(30):
+            sim.scene.step()
+        q = np.asarray(art.get_qpos(), float)
+        assert np.isfinite(q).all() and 0.0 <= q[0] <= 1.6 and 0.0 <= q[1] <= 0.36
+        moved[free] = np.abs(q - [0.5, 0.12]).max()
+    assert moved[True] > 0.1 and moved[False] < 0.02, moved
+
+
 def test_open_ratio_opens_every_joint_to_its_far_limit():
     scene = cabinet_scene(door=0.0, drawer=0.0)
     rec = walk_scene(scene, ExportOptions(open_ratio=1.0))

@@ -165,11 +165,12 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
 
 
 def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,
-              timestep: float = 0.01, render: bool | None = None):
+              timestep: float = 0.01, render: bool | None = None, free_joints: bool = True):
     """A live SAPIEN scene of ``scene``: see :func:`parse3d.export.sapien.to_sapien`."""
     from .sapien import to_sapien as _to_sapien
 
-    return _to_sapien(scene, options, timestep=timestep, render=render)
+    return _to_sapien(scene, options, timestep=timestep, render=render,
+                      free_joints=free_joints)
 
 
 def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,
