@@ -139,7 +139,7 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
     except OSError as e:
         raise InputError(Problem("", f"cannot create the output folder: {e.strerror} — choose "
                                      "a writable folder with --out", str(out), "io")) from None
-    recorded = read_options(out)
+    recorded = read_options(out) if refreshed or keep_options else {}
     requested = set(names[:len(names) - len(refreshed)])
     plan = {n: recorded[n] if n in recorded and (n not in requested or keep_options)
             else options for n in names}
