@@ -139,7 +139,9 @@ def test_cli_free_joints_writes_the_joint_values(furniture, tmp_path, capsys):
     with pytest.raises(SystemExit) as e:
         main(["settle", str(d), "--steps", "60", "--free-joints", "--no-glb", "--json"])
     assert not e.value.code
-    assert json.loads(capsys.readouterr().out)["config"]["free_joints"] is True
+    report = json.loads(capsys.readouterr().out)
+    assert report["config"]["free_joints"] is True
+    assert all(k.split(":", 1)[0] in furniture.objects for k in report["joints_moved"])
     doc = json.loads((d / "scene.json").read_text())
     rows = {o["id"]: o for o in doc["objects"]}
     drawer = _moving(furniture.objects["dresser"].asset, "prismatic")

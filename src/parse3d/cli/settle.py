@@ -66,6 +66,7 @@ def register(app: typer.Typer) -> None:
         from ..export.record import read_options
 
         read_options(scene_dir)  # a damaged export record stops us before anything is written
+        joints_before = {o.id: dict(o.joints) for o in scene.placed}
         report = settle(scene, config=SettleConfig(
             dt=dt, steps=steps, linear_damping=linear_damping, angular_damping=angular_damping,
             early_exit=not full, contact_threshold=threshold, free_joints=free_joints))
@@ -81,8 +82,13 @@ def register(app: typer.Typer) -> None:
         exported = export_scene(scene, scene_dir, [] if no_glb else ["glb"],
                                 ExportOptions(friction=settling_friction()),
                                 skip=["glb"] if no_glb else [], keep_options=True)
+        # joints that free settling moved, as "object:joint" -> [before, after]
+        swung = {f"{o.id}:{n}": [joints_before[o.id].get(n, 0.0), v] for o in scene.placed
+                 for n, v in o.joints.items()
+                 if abs(v - joints_before.get(o.id, {}).get(n, 0.0)) > 1e-3}
         if as_json:
             d = report.to_dict()
+            d["joints_moved"] = swung
             d["contacts"] = len(scene.contacts)
             d["timings"] = {"settle": scene.timings["settle"],
                             "contacts": scene.timings["contacts"]}
@@ -98,6 +104,10 @@ def register(app: typer.Typer) -> None:
             ids = report.flagged(flag)
             if ids:
                 console.print(f"  [yellow]{flag}[/]: {', '.join(ids)}")
+        if free_joints:
+            console.print(f"  {len(swung)} joints moved more than 0.001"
+                          + "".join(f"; {k} {a:.3f} -> {b:.3f}" for k, (a, b) in
+                                    sorted(swung.items())[:5]))
         if scene.relations:
             held = sum(1 for c in scene.relations if c.holds_settled)
             console.print(f"  {held}/{len(scene.relations)} relations hold after settling")
