@@ -477,6 +477,25 @@ def test_mujoco_locks_joints_by_default(cabinets):
     assert q0[hinge] == pytest.approx(0.5)
 
 
+def test_mjcf_file_is_the_model_mjspec_builds(cabinets):
+    """scene.xml is written as text; compiled, it is the model ``build_spec`` makes."""
+    import mujoco
+
+    from parse3d.export.mjcf import build_spec
+
+    scene, out = cabinets
+    a = build_spec(walk_scene(scene, ExportOptions(friction=settling_friction()))).compile()
+    b = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    for n in ("nbody", "ngeom", "njnt", "neq", "nmesh"):
+        assert getattr(a, n) == getattr(b, n), n
+    for f in ("body_pos", "body_quat", "body_mass", "body_inertia", "geom_pos", "geom_quat",
+              "geom_rgba", "geom_friction", "geom_contype", "geom_group", "geom_size",
+              "jnt_type", "jnt_range", "jnt_axis", "jnt_pos", "qpos0", "eq_data", "eq_type"):
+        assert np.allclose(getattr(a, f), getattr(b, f), atol=1e-9), f
+    for f in ("timestep", "impratio", "noslip_iterations", "cone"):
+        assert getattr(a.opt, f) == getattr(b.opt, f), f
+
+
 def test_to_sapien_holds_joints_unless_free(cabinets):
     scene, _ = cabinets
     moved = {}
