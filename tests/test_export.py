@@ -477,6 +477,40 @@ def test_mujoco_locks_joints_by_default(cabinets):
     assert q0[hinge] == pytest.approx(0.5)
 
 
+def test_mjcf_file_is_the_model_mjspec_builds(cabinets):
+    """scene.xml is written as text; compiled, it is the model ``build_spec`` makes."""
+    import mujoco
+
+    from parse3d.export.mjcf import build_spec
+
+    scene, out = cabinets
+    a = build_spec(walk_scene(scene, ExportOptions(friction=settling_friction()))).compile()
+    b = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
+    for n in ("nbody", "ngeom", "njnt", "neq", "nmesh"):
+        assert getattr(a, n) == getattr(b, n), n
+    for f in ("body_pos", "body_quat", "body_mass", "body_inertia", "geom_pos", "geom_quat",
+              "geom_rgba", "geom_friction", "geom_contype", "geom_group", "geom_size",
+              "jnt_type", "jnt_range", "jnt_axis", "jnt_pos", "qpos0", "eq_data", "eq_type"):
+        assert np.allclose(getattr(a, f), getattr(b, f), atol=1e-9), f
+    for f in ("timestep", "impratio", "noslip_iterations", "cone"):
+        assert getattr(a.opt, f) == getattr(b.opt, f), f
+
+
+def test_to_sapien_holds_joints_unless_free(cabinets):
+    scene, _ = cabinets
+    moved = {}
+    for free in (True, False):
+        sim = to_sapien(scene, render=False, free_joints=free)
+        art = sim.articulations["cab"]
+        art.set_qvel(np.array([-2.0, -0.5], np.float32))  # swing the door shut, push the drawer
+        for _ in range(30):
+            sim.scene.step()
+        q = np.asarray(art.get_qpos(), float)
+        assert np.isfinite(q).all() and 0.0 <= q[0] <= 1.6 and 0.0 <= q[1] <= 0.36
+        moved[free] = np.abs(q - [0.5, 0.12]).max()
+    assert moved[True] > 0.1 and moved[False] < 0.02, moved
+
+
 def test_open_ratio_opens_every_joint_to_its_far_limit():
     scene = cabinet_scene(door=0.0, drawer=0.0)
     rec = walk_scene(scene, ExportOptions(open_ratio=1.0))
@@ -635,7 +669,7 @@ def test_export_rerun_refreshes_stale_exports_and_drops_unused_files(tiny_scene,
     assert _cli(["export", str(d), "--format", "glb", "--out", str(tmp_path / "o"),
                  "--json"]) == 0
     assert json.loads(capsys.readouterr().out)["refreshed"] == []
-    assert [p.name for p in (tmp_path / "o").iterdir()] == ["scene.glb"]
+    assert sorted(p.name for p in (tmp_path / "o").iterdir()) == ["exports.json", "scene.glb"]
     # without the mug, its URDF and the meshes only it used leave the folder
     files = {str(p.relative_to(d)) for p in d.rglob("*") if p.is_file()}
     scene = parse3d.load_scene(d)
@@ -649,6 +683,55 @@ def test_export_rerun_refreshes_stale_exports_and_drops_unused_files(tiny_scene,
     mesh_files = {f for f in left if f.startswith(("meshes/", "urdf/meshes/"))
                   and not f.endswith((".txt", ".mtl"))}
     assert mesh_files == _referenced_meshes(d)
+
+
+def test_refreshes_keep_the_options_each_export_was_made_with(tiny_scene, tmp_path, capsys):
+    from parse3d.export.record import read_options
+
+    d = _folder_with_every_format(tiny_scene, tmp_path / "tiny")
+    lifted = tiny_scene.objects["mug"].position.copy()
+    assert _cli(["export", str(d), "--format", "glb,mjcf", "--no-ceiling", "--open", "1"]) == 0
+    assert _cli(["export", str(d), "--format", "urdf", "--solved"]) == 0
+    capsys.readouterr()
+    rec = read_options(d)
+    assert not rec["glb"].ceiling and rec["mjcf"].open_ratio == 1.0
+    assert rec["urdf"].settled is False and rec["usd"].ceiling and rec["usd"].settled is None
+    assert _cli(["settle", str(d), "--steps", "150"]) == 0
+    capsys.readouterr()
+    scene = parse3d.load_scene(d)
+    settled = scene.objects["mug"].settled_position
+    assert scene.settled and lifted[2] - settled[2] > 0.01
+
+    def ceilings() -> dict[str, bool]:
+        import mujoco
+        from pxr import Usd
+
+        glb = {n.get("name") for n in _glb_json(d / "scene.glb")["nodes"]}
+        model = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+        stage = Usd.Stage.Open(str(d / "scene.usd"))  # held: its prims die with it
+        return {"glb": "room:ceiling" in glb,
+                "mjcf": mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "room:ceiling") >= 0,
+                "usd": stage.GetPrimAtPath("/World/Room/ceiling").IsValid()}
+
+    # settling rewrote every export in the settled pose, but with the options it was made with
+    assert ceilings() == {"glb": False, "mjcf": False, "usd": True}
+    pos = _exported_mug_positions(d)
+    assert np.allclose(pos["urdf"], lifted, atol=1e-6)  # exported --solved: stays solved
+    for fmt in ("glb", "usd", "mjcf"):
+        assert np.allclose(pos[fmt], settled, atol=1e-5), fmt
+    # a refresh by export_scene keeps them too; a format asked for anew takes the new options
+    earlier = (d / "scene.json").stat().st_mtime_ns - 10**9
+    os.utime(d / "scene.glb", ns=(earlier, earlier))
+    export_scene(scene, d, ["mjcf"], ExportOptions())
+    assert ceilings() == {"glb": False, "mjcf": True, "usd": True}
+    assert read_options(d)["mjcf"].ceiling and not read_options(d)["glb"].ceiling
+    # a damaged record is a clear error before anything is written
+    (d / "exports.json").write_text("{not json")
+    before = (d / "scene.json").read_bytes()
+    assert _cli(["settle", str(d), "--steps", "5"]) == 2
+    err = capsys.readouterr().err
+    assert "exports.json" in err and "not valid JSON" in err
+    assert (d / "scene.json").read_bytes() == before
 
 
 # -- datasets -----------------------------------------------------------------------------

@@ -11,7 +11,9 @@ to :data:`FORMATS`.
 - :func:`present_formats`, :func:`stale_formats` — the exports a folder holds, and those
   older than its ``scene.json``;
 - :func:`to_sapien`, :func:`to_mujoco` — live simulator objects for a scene;
-- :data:`FORMATS` — format name to module name.
+- :data:`FORMATS` — format name to module name;
+- :func:`~parse3d.export.record.read_options` — the options each export in a folder was made
+  with (``exports.json``), reused when a refresh rewrites it.
 
 Formats that need optional packages (usd-core, mujoco) import them only when used.
 """
@@ -19,12 +21,14 @@ Formats that need optional packages (usd-core, mujoco) import them only when use
 from __future__ import annotations
 
 import importlib
+import json
 from collections.abc import Iterable
 from pathlib import Path
 from types import ModuleType
 
 from ..errors import InputError, Problem
 from ..scene.model import Scene
+from .record import OPTIONS_FILE, options_to_dict, read_options, write_options
 from .walk import ExportOptions, SceneRecord, walk_scene
 
 __all__ = ["FORMATS", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
@@ -85,7 +89,7 @@ def stale_formats(folder: str | Path) -> tuple[str, ...]:
 
 def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = ("glb",),
                  options: ExportOptions = ExportOptions(), *, refresh: bool = True,
-                 skip: Iterable[str] = ()) -> list[Path]:
+                 skip: Iterable[str] = (), keep_options: bool = False) -> list[Path]:
     """Write ``scene`` in each of ``formats`` into the folder ``out``.
 
     Parameters
@@ -101,25 +105,33 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
     refresh : bool
         When ``out`` is the scene's folder (it holds ``scene.json``), also rewrite every
         other format already exported there that is not newer than ``scene.json``
-        (:func:`stale_formats`), with the same options, so the folder never holds an export
-        that disagrees with its scene.
+        (:func:`stale_formats`), so the folder never holds an export that disagrees with its
+        scene. A refreshed format is written with the options it was last exported with
+        (recorded in ``exports.json``, :mod:`parse3d.export.record`), else with ``options``.
     skip : sequence of str
         Formats never refreshed.
+    keep_options : bool
+        Write the requested ``formats`` too with their recorded options where a record
+        exists (``options`` only for formats never exported here): a refresh of named
+        formats, as ``parse3d settle`` rewrites ``scene.glb``.
 
     Returns
     -------
     list of Path
-        Every file written.
+        Every file written, ``exports.json`` (the options of each format) last.
 
     Raises
     ------
     InputError
-        For an unknown format or an output folder that cannot be written.
+        For an unknown format, an output folder that cannot be written, or a damaged
+        ``exports.json``.
     """
     names = check_formats(formats, where="formats") if (formats or not refresh) else ()
     out = Path(out)
+    refreshed: tuple[str, ...] = ()
     if refresh:
-        names += tuple(f for f in stale_formats(out) if f not in names and f not in skip)
+        refreshed = tuple(f for f in stale_formats(out) if f not in names and f not in skip)
+        names += refreshed
     if not names:
         return []
     try:
@@ -127,23 +139,38 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
     except OSError as e:
         raise InputError(Problem("", f"cannot create the output folder: {e.strerror} — choose "
                                      "a writable folder with --out", str(out), "io")) from None
-    rec = walk_scene(scene, options)
+    recorded = read_options(out) if refreshed or keep_options else {}
+    requested = set(names[:len(names) - len(refreshed)])
+    plan = {n: recorded[n] if n in recorded and (n not in requested or keep_options)
+            else options for n in names}
+    groups: dict[str, list[str]] = {}  # one walk per distinct set of options
+    for n in names:
+        groups.setdefault(json.dumps(options_to_dict(plan[n]), sort_keys=True), []).append(n)
     written: list[Path] = []
-    for name in names:
-        try:
-            written += format_module(name).write(rec, out)
-        except PermissionError as e:
-            raise InputError(Problem("", f"cannot write {name} output: {e.strerror} — choose "
-                                         "a writable folder with --out", str(out), "io")) from None
+    for group in groups.values():
+        rec = walk_scene(scene, plan[group[0]])
+        for name in group:
+            try:
+                written += format_module(name).write(rec, out)
+            except PermissionError as e:
+                raise InputError(Problem("", f"cannot write {name} output: {e.strerror} — "
+                                             "choose a writable folder with --out", str(out),
+                                         "io")) from None
+    try:
+        written.append(write_options(out, plan))
+    except PermissionError as e:
+        raise InputError(Problem("", f"cannot write {OPTIONS_FILE}: {e.strerror} — choose a "
+                                     "writable folder with --out", str(out), "io")) from None
     return written
 
 
 def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,
-              timestep: float = 0.01, render: bool | None = None):
+              timestep: float = 0.01, render: bool | None = None, free_joints: bool = True):
     """A live SAPIEN scene of ``scene``: see :func:`parse3d.export.sapien.to_sapien`."""
     from .sapien import to_sapien as _to_sapien
 
-    return _to_sapien(scene, options, timestep=timestep, render=render)
+    return _to_sapien(scene, options, timestep=timestep, render=render,
+                      free_joints=free_joints)
 
 
 def to_mujoco(scene: Scene, options: ExportOptions = ExportOptions(), *,

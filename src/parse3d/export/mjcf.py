@@ -1,4 +1,8 @@
-"""MJCF for MuJoCo (``scene.xml`` + ``meshes/``), built as objects with ``mujoco.MjSpec``.
+"""MJCF for MuJoCo (``scene.xml`` + ``meshes/``).
+
+:func:`to_mujoco` builds the model as objects with ``mujoco.MjSpec`` (:func:`build_spec`);
+:func:`write` writes the same model as an MJCF document directly (:func:`build_xml`), since
+letting MuJoCo write it compiles every mesh first. Both describe:
 
 - One body per object at its world pose: a free joint for a loose object, none for a fixed
   one (SECURED_TO, HANGING_BELOW: welded to the world by being a plain child of it).
@@ -13,15 +17,16 @@
 - Options for resting contact: elliptic friction cones, ``impratio`` 10, 3 no-slip
   iterations.
 
-Meshes are inline in the spec for :func:`to_mujoco`; :func:`write` puts them as OBJ files in
-``meshes/`` (one per part and per piece, shared by objects using the same asset) and writes
-``scene.xml`` next to it. Body names are object ids; part geoms are named
+Meshes are inline in the spec for :func:`to_mujoco`; :func:`write` puts the visual meshes as
+STL files in ``meshes/`` (one per part, shared by objects using the same asset) and the
+collision pieces inline in ``scene.xml``. Body names are object ids; part geoms are named
 ``<object_id>:<part_name>`` and pieces ``<object_id>:<part_name>:c<i>``.
 """
 
 from __future__ import annotations
 
 import re
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import numpy as np
@@ -33,7 +38,7 @@ from ..scene.model import Scene
 from ._files import MeshFiles, mesh_digest, remove_stale, safe_name
 from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
 
-__all__ = ["NAME", "FILES", "MARKER", "build_spec", "write", "to_mujoco"]
+__all__ = ["NAME", "FILES", "MARKER", "build_spec", "build_xml", "write", "to_mujoco"]
 
 NAME = "mjcf"
 FILES = ("scene.xml", "meshes/")
@@ -236,17 +241,157 @@ def _mesh_refs(xml: Path) -> set[str]:
     return set(re.findall(r'<mesh\b[^>]*\bfile="([^"]+)"', text))
 
 
+def _num(x) -> str:
+    return f"{float(x):.12g}"
+
+
+def _vec(xs) -> str:
+    return " ".join(f"{float(x):.12g}" for x in xs)
+
+
+class _XmlMeshes:
+    """Mesh assets of a written ``scene.xml``: visual meshes as OBJ files under ``meshes/``,
+    collision pieces inline (``vertex`` / ``face`` attributes), each asset written once."""
+
+    def __init__(self, asset, out: Path) -> None:
+        self.asset = asset
+        self.files = MeshFiles(out)
+        self.names: set[str] = set()
+        self._by_content: dict[tuple[str, float], str] = {}
+
+    def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0, *,
+            inline: bool = False) -> str:
+        key = name if abs(scale - 1.0) < 1e-12 else f"{name}@{scale:.9g}"
+        if key in self.names:
+            return key
+        content = (mesh_digest(vertices, faces), round(float(scale), 9))
+        if content in self._by_content:
+            return self._by_content[content]
+        self._by_content[content] = key
+        attrs = {"name": key}
+        if inline:
+            v = np.asarray(vertices, float).ravel().tolist()
+            f = np.asarray(faces, np.int64).ravel().tolist()
+            attrs["vertex"] = ("%.9g " * len(v) % tuple(v)).rstrip()
+            attrs["face"] = ("%d " * len(f) % tuple(f)).rstrip()
+        else:
+            attrs["file"] = self.files.get(file_stem, vertices, faces)
+        if abs(scale - 1.0) >= 1e-12:
+            attrs["scale"] = _vec([scale] * 3)
+        ET.SubElement(self.asset, "mesh", attrs)
+        self.names.add(key)
+        return key
+
+
+def _xml_collision(parent, mesh: str, name: str, density: float, friction: float | None,
+                   rgba: str = "0.5 0.5 0.5 0.4"):
+    a = {"name": name, "type": "mesh", "mesh": mesh, "group": str(_COLLISION_GROUP),
+         "density": _num(density), "rgba": rgba}
+    if friction is not None:
+        a["friction"] = f"{_num(friction)} 0.005 0.0001"
+    ET.SubElement(parent, "geom", a)
+
+
+def _xml_visual(parent, mesh: str, name: str, mat):
+    ET.SubElement(parent, "geom", {"name": name, "type": "mesh", "mesh": mesh,
+                                   "group": str(_VISUAL_GROUP), "contype": "0",
+                                   "conaffinity": "0", "density": "0", "mass": "0",
+                                   "rgba": _vec(mat.color)})
+
+
+def _xml_object(world, equality, meshes: _XmlMeshes, rec: SceneRecord, o: ObjectRecord, *,
+                lock_joints: bool) -> None:
+    s = o.scale
+    root = ET.SubElement(world, "body", {"name": o.id, "pos": _vec(o.position),
+                                         "quat": _vec(matrix_to_quat(o.rotation))})
+    if not o.fixed:
+        ET.SubElement(root, "freejoint", {"name": f"{o.id}:free"})
+    bodies = {}
+    motion = {lk.name: lk.motion for lk in o.links}
+    parent_of = {j.child_link: j for j in o.joints}
+    for lk in o.links:
+        if lk.name not in parent_of:
+            body = root
+        else:
+            j = parent_of[lk.name]
+            rel = np.linalg.inv(motion[j.parent_link]) @ motion[lk.name]
+            body = ET.SubElement(bodies[j.parent_link], "body", {
+                "name": f"{o.id}:{lk.name}", "pos": _vec(rel[:3, 3] * s),
+                "quat": _vec(matrix_to_quat(rel[:3, :3]))})
+            hinge = j.joint.type == "revolute"
+            k = 1.0 if hinge else s
+            lo, hi = sorted(float(v) for v in j.joint.limits)
+            name = f"{o.id}:{j.name}"
+            ET.SubElement(body, "joint", {
+                "name": name, "type": "hinge" if hinge else "slide",
+                "axis": _vec(j.joint.axis), "pos": _vec(np.asarray(j.joint.origin) * s),
+                "range": _vec([lo * k, hi * k]), "limited": "true", "ref": _num(j.value * k),
+                "damping": "0.1"})
+            if lock_joints:
+                # MuJoCo measures joint equalities from the reference configuration (``ref``,
+                # the exported value): a zero polynomial holds the joint there
+                ET.SubElement(equality, "joint", {"name": f"{name}:lock", "joint1": name,
+                                                  "polycoef": "0 0 0 0 0"})
+        bodies[lk.name] = body
+        for p in lk.parts:
+            stem = f"{o.asset_id}__{p.name}"
+            vm = meshes.get(f"{o.asset_id}:{p.name}", stem, p.mesh.vertices, p.mesh.faces, s)
+            _xml_visual(body, vm, p.key, p.material)
+            fr = rec.friction(p.material.name)
+            for i, (v, f) in enumerate(p.pieces):
+                cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s,
+                                inline=True)
+                _xml_collision(body, cm, f"{p.key}:c{i}", o.density, fr)
+
+
+def build_xml(rec: SceneRecord, out: Path, *, timestep: float = 0.002,
+              lock_joints: bool = True) -> tuple[str, MeshFiles]:
+    """The MJCF document of a walked scene, written as text without compiling a model.
+
+    The same model as :func:`build_spec` (with visual geoms); the visual meshes are written
+    now as files under ``out/meshes/``, the collision pieces are inline in the document.
+
+    Returns
+    -------
+    xml : str
+    files : MeshFiles
+        The mesh files written (call ``close()`` for the material library).
+    """
+    root = ET.Element("mujoco", {"model": safe_name(rec.name or "parse3d")})
+    ET.SubElement(root, "compiler", {"angle": "radian", "boundmass": "1e-05",
+                                     "boundinertia": "1e-10"})
+    ET.SubElement(root, "option", {"timestep": _num(timestep), "cone": "elliptic",
+                                   "impratio": "10", "noslip_iterations": "3"})
+    asset = ET.SubElement(root, "asset")
+    world = ET.SubElement(root, "worldbody")
+    equality = ET.Element("equality")
+    meshes = _XmlMeshes(asset, Path(out))
+    fr = rec.friction("room")
+    for s in rec.shell:
+        vm = meshes.get(s.key, f"room__{s.name}", s.mesh.vertices, s.mesh.faces)
+        _xml_visual(world, vm, s.key, s.material)
+        for i, (v, f) in enumerate(s.pieces):
+            cm = meshes.get(f"{s.key}:c{i}", f"room__{s.name}_c{i}", v, f, inline=True)
+            _xml_collision(world, cm, f"{s.key}:c{i}", 0.0, fr, "0.8 0.8 0.8 0.2")
+    for o in rec.objects:
+        _xml_object(world, equality, meshes, rec, o, lock_joints=lock_joints)
+    if len(equality):
+        root.append(equality)
+    ET.indent(root, space=" ")
+    return ET.tostring(root, encoding="unicode") + "\n", meshes.files
+
+
 def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path]:
     """Write ``scene.xml`` and ``meshes/`` into the folder ``out``; returns the paths.
 
+    The document is written directly (MuJoCo's documented MJCF), not by compiling an
+    ``MjSpec``: compiling every mesh of a large scene costs more than the whole export.
     Mesh files an earlier ``scene.xml`` in ``out`` named and this one does not are removed.
     """
     out = Path(out)
     path = out / "scene.xml"
     before = _mesh_refs(path)
-    spec, files = _build(rec, out=out, lock_joints=lock_joints)
-    spec.modelfiledir = str(out)  # mesh files resolve against the model's folder
-    xml = spec.to_xml()
+    xml, files = build_xml(rec, out, lock_joints=lock_joints)
     atomic_write_text(path, xml)
     written = files.close()
     remove_stale(out, before, set(files.written))

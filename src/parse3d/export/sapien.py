@@ -3,7 +3,8 @@
 :func:`to_sapien` writes the URDF export into a temporary folder and loads every object with
 SAPIEN's own URDF loader — so what a user loads from ``urdf/`` and what this function builds
 are the same bodies — at its pose from ``urdf/scene.json``, root fixed for fixed objects and
-the room, joints set to their exported values. Without a rendering device (a headless
+the room, joints set to their exported values (free, or held there by stiff drives with
+``free_joints=False``). Without a rendering device (a headless
 machine) visual shapes are skipped and the scene is physics-only.
 """
 
@@ -58,8 +59,12 @@ def _sapien():
     return sapien
 
 
+#: Drive holding a locked joint at its value: stiffness (N·m/rad or N/m) and damping.
+LOCK_STIFFNESS, LOCK_DAMPING = 1e5, 1e3
+
+
 def load_urdf_scene(folder: str | Path, *, timestep: float = 0.01,
-                    render: bool | None = None) -> SapienScene:
+                    render: bool | None = None, free_joints: bool = True) -> SapienScene:
     """Load a ``urdf/`` export (its ``scene.json``) into a new SAPIEN scene.
 
     Parameters
@@ -71,6 +76,9 @@ def load_urdf_scene(folder: str | Path, *, timestep: float = 0.01,
     render : bool or None
         Load visual shapes: None tries and falls back to physics-only when no rendering
         device is found; False never loads them.
+    free_joints : bool
+        Leave the joints free (doors swing, drawers slide); False holds each at its value
+        with a stiff drive (:data:`LOCK_STIFFNESS`), as settling keeps joints locked.
     """
     sapien = _sapien()
     physx = sapien.physx
@@ -109,15 +117,21 @@ def load_urdf_scene(folder: str | Path, *, timestep: float = 0.01,
         b.initial_pose = pose
         art = b.build(fix_root_link=bool(r["fixed"]))
         art.name = r["id"]
+        names = [j.name for j in art.active_joints]
+        q = np.array([r["joints"].get(n, 0.0) for n in names], np.float32)
         if r["joints"]:
-            names = [j.name for j in art.active_joints]
-            art.set_qpos(np.array([r["joints"].get(n, 0.0) for n in names], np.float32))
+            art.set_qpos(q)
+        if not free_joints:
+            for j, v in zip(art.active_joints, q, strict=True):
+                j.set_drive_property(LOCK_STIFFNESS, LOCK_DAMPING)
+                j.set_drive_target(float(v))
         out.articulations[r["id"]] = art
     return out
 
 
 def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,
-              timestep: float = 0.01, render: bool | None = None) -> SapienScene:
+              timestep: float = 0.01, render: bool | None = None,
+              free_joints: bool = True) -> SapienScene:
     """A live SAPIEN scene of ``scene`` (see the module docstring).
 
     Parameters
@@ -127,9 +141,10 @@ def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,
         Pose, ceiling and joint opening.
     timestep : float
         Physics time step, seconds.
-    render : bool or None
+    render, free_joints : bool or None, bool
         As :func:`load_urdf_scene`.
     """
     with tempfile.TemporaryDirectory(prefix="parse3d-sapien-") as tmp:
         urdf.write(walk_scene(scene, options), Path(tmp))
-        return load_urdf_scene(Path(tmp) / "urdf", timestep=timestep, render=render)
+        return load_urdf_scene(Path(tmp) / "urdf", timestep=timestep, render=render,
+                               free_joints=free_joints)

@@ -101,6 +101,9 @@ class PhysxWorld:
     shape_owner: dict[int, tuple[str, str]] = field(default_factory=dict)
     shapes: list = field(default_factory=list)
     origin: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    #: Objects simulated as articulations (``free_joints``), by id: see
+    #: :class:`parse3d.physics.articulation.ArticulatedObject`.
+    articulations: dict[str, object] = field(default_factory=dict)
 
     def pose(self, object_id: str) -> tuple[np.ndarray, np.ndarray]:
         """World ``(R (3, 3), t (3,))`` of an object's asset frame now (the simulation runs in
@@ -134,7 +137,8 @@ def _shapes(physx, pieces: ConvexSet, materials: list, scale: float, density: fl
 def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular_damping: float,
                 max_depenetration_velocity: float, sleep_threshold: float,
                 solver_position_iterations: int, solver_velocity_iterations: int,
-                settled: bool = False, origin: np.ndarray | None = None) -> PhysxWorld:
+                settled: bool = False, origin: np.ndarray | None = None,
+                free_joints: bool = False) -> PhysxWorld:
     """Build the PhysX (CPU) world of ``scene``.
 
     Parameters
@@ -155,6 +159,10 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
         Where the simulation's local frame sits: PhysX works in float32, so the room is moved
         near the origin (results then do not depend on where the room is); read poses back
         with :meth:`PhysxWorld.pose`. Default: the world origin.
+    free_joints : bool
+        Simulate objects whose assets have joints as articulations (doors swing, drawers
+        slide; :mod:`parse3d.physics.articulation`) instead of one rigid body each; they are
+        listed in :attr:`PhysxWorld.articulations`, not in ``bodies``.
 
     Returns
     -------
@@ -196,6 +204,14 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
     for obj in scene.placed:
         if obj.asset is None:
             continue
+        if free_joints and obj.asset.joints and _add_articulated(
+                world, obj, material, settled, o, linear_damping=linear_damping,
+                angular_damping=angular_damping,
+                max_depenetration_velocity=max_depenetration_velocity,
+                sleep_threshold=sleep_threshold,
+                solver_position_iterations=solver_position_iterations,
+                solver_velocity_iterations=solver_velocity_iterations):
+            continue
         data = asset_collision(obj.asset)
         shapes = _shapes(physx, data.pieces, [material(m) for m in data.materials], obj.scale,
                          data.density)
@@ -226,3 +242,23 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
         if not obj.fixed:
             world.dynamic.append(obj.id)
     return world
+
+
+def _add_articulated(world: PhysxWorld, obj, material, settled: bool, origin: np.ndarray,
+                     **params) -> bool:
+    """Add ``obj`` as an articulation (see :func:`~parse3d.physics.articulation.add_articulated`);
+    False when it stays a rigid body."""
+    import sapien
+
+    from .articulation import add_articulated
+
+    R, t = obj.rotation, obj.position
+    if settled and obj.settled_position is not None:
+        R, t = obj.settled_rotation, obj.settled_position
+    pose = sapien.Pose(np.asarray(np.asarray(t, np.float64) - origin, np.float32),
+                       np.asarray(matrix_to_quat(R), np.float32))
+    art = add_articulated(world, obj, material=material, pose=pose, **params)
+    if art is None:
+        return False
+    world.articulations[obj.id] = art
+    return True

@@ -72,6 +72,10 @@ class SettleConfig:
         A tilt of the up axis larger than this flags ``tipped``.
     contact_threshold : float
         Distance (m) within which an object still touches its supporter.
+    free_joints : bool
+        Let doors, drawers and lids move (objects with joints become articulations; their
+        final joint values are written to ``PlacedObject.joints``). Default: joints locked,
+        one rigid body per object.
     """
 
     dt: float = 0.01
@@ -87,6 +91,7 @@ class SettleConfig:
     fall_distance: float = 0.05
     tip_angle_deg: float = 15.0
     contact_threshold: float = 0.001
+    free_joints: bool = False
 
     def __post_init__(self):
         import math
@@ -290,7 +295,7 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
     ----------
     scene : Scene
         Modified in place: ``settled_rotation``/``settled_position`` and physics flags of every
-        placed object, ``holds_settled``/``residual_settled`` of every relation,
+        placed object, ``joints`` of articulated ones with ``free_joints``, ``holds_settled``/``residual_settled`` of every relation,
         ``settled = True``, ``timings["settle"]`` and ``meta["settle"]`` (config and summary).
     config : SettleConfig, optional
         All parameters (defaults: the paper's).
@@ -315,7 +320,7 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
                         sleep_threshold=cfg.sleep_threshold,
                         solver_position_iterations=cfg.solver_position_iterations,
                         solver_velocity_iterations=cfg.solver_velocity_iterations,
-                        origin=local_origin(scene))
+                        origin=local_origin(scene), free_joints=cfg.free_joints)
     t1 = time.perf_counter()
     dyn = [world.bodies[i] for i in world.dynamic]
     n = 0
@@ -326,11 +331,17 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
         for _ in range(k):
             step()
         n += k
-        if cfg.early_exit and n < cfg.steps and all(b.is_sleeping for b in dyn):
+        if cfg.early_exit and n < cfg.steps and all(b.is_sleeping for b in dyn) \
+                and all(a.sleeping for a in world.articulations.values()):
             early = True
             break
     t2 = time.perf_counter()
 
+    for oid, art in world.articulations.items():  # free joints: where they came to rest
+        stored = scene.objects[oid].joints
+        for name, v in art.values().items():  # joints at rest where they started: unlisted
+            if name in stored or abs(v) > 1e-4:
+                stored[name] = round(v, 6)
     motions: dict[str, ObjectMotion] = {}
     for oid in world.entities:
         if oid == ROOM:
