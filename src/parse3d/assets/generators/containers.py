@@ -124,7 +124,7 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bucket", parts=("body", "handle"), extra_parts=("grip",), size_range=(0.22, 0.42),
+@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear"), size_range=(0.22, 0.42),
           density=900, variants=("metal", "plastic"), placement="surface")
 def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.12, 0.15)
@@ -136,15 +136,18 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     def r_at(z: float) -> float:
         return float(np.interp(z, [0.0, h], [rb, r]))
 
-    shapes = [shell([(rb, 0.0), (r, h)], t, bottom=0.004, sections=20)]
-    # a rolled rim and, on metal buckets, pressed hoops
-    shapes.append(ring([(r - t, h - 0.008), (r + 0.004, h - 0.006), (r + 0.004, h + 0.002),
-                        (r - t, h + 0.002)], sections=20))
+    parts = [make_part("body", "body", shell([(rb, 0.0), (r, h)], t, bottom=0.004, sections=20), mat)]
+    # a rolled rim and, on metal buckets, a pressed hoop
+    rim = ring([(r - t, h - 0.008), (r + 0.004, h - 0.006), (r + 0.004, h + 0.002),
+                (r - t, h + 0.002)], sections=20)
+    parts.append(make_part("rim", "rim", rim, mat))
     if variant == "metal":
-        shapes += _hoops(r_at, [h * 0.45], bulge=0.002, width=0.014)
-    ear = [S.box((0.012, 0.03, 0.03), center=(s * (r_at(h - 0.03) + 0.004), 0, h - 0.03))
-           for s in (1, -1)]
-    parts = [make_part("body", "body", shapes + ear, mat)]
+        hoops = _hoops(r_at, [h * 0.45], bulge=0.002, width=0.014)
+        parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
+    # the ears the handle pivots in
+    for i, sx in enumerate((1, -1)):
+        ear = S.box((0.012, 0.03, 0.03), center=(sx * (r_at(h - 0.03) + 0.004), 0, h - 0.03))
+        parts.append(make_part(f"ear_{i}", "ear", ear, mat))
     # the wire handle pivots on the ears and has fallen towards the back (-Y), so the opening
     # stays free
     tilt = np.deg2rad(rng.uniform(40, 70))
