@@ -11,6 +11,13 @@ pool of 20 per category for every category on 2 workers in < 5 minutes.
     python benchmarks/bench_assets.py --seeds 3 --per-category 2   # quick look
     python benchmarks/bench_assets.py --profile mug         # where the time goes
     python benchmarks/bench_assets.py --stats --seeds 3     # the `assets stats` figures
+    python benchmarks/bench_assets.py --seeds 2 --per-category 0 --baseline-rev c5b3064
+
+``--baseline-rev REV`` times the same generation with the package of git revision REV beside
+this one: each revision runs in its own long-lived process and the two take turns, a round
+each, so a busy machine slows both alike; the table then gives both medians and their ratio
+(categories REV lacks are left out of the comparison). ``--cpu`` times by the process's CPU
+time instead of the wall clock: steadier when other work shares the machine.
 """
 
 from __future__ import annotations
@@ -19,11 +26,16 @@ import argparse
 import cProfile
 import pstats
 import statistics
+import sys
 import tempfile
 import time
+from pathlib import Path
 
-from parse3d.assets import registry
-from parse3d.assets.pool import AssetPool
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from _common import Worker, revision_tree, serve  # noqa: E402
+
+from parse3d.assets import registry  # noqa: E402
+from parse3d.assets.pool import AssetPool  # noqa: E402
 
 
 def bench_generate(categories: list[str], seeds: int) -> dict[str, float]:
@@ -38,7 +50,59 @@ def bench_generate(categories: list[str], seeds: int) -> dict[str, float]:
     return out
 
 
+def _handle(req: dict) -> dict:
+    """The worker's side of ``--baseline-rev``: time one round over the categories asked."""
+    if req.get("categories") is None:
+        return {"categories": list(registry.categories())}
+    out: dict[str, list[float]] = {}
+    clock = time.process_time if req.get("cpu") else time.perf_counter
+    for c in req["categories"]:
+        try:
+            ts = []
+            for s in range(req["seeds"]):
+                t = clock()
+                registry.generate(c, s)
+                ts.append(clock() - t)
+            out[c] = ts
+        except Exception:  # noqa: BLE001 - a category this revision cannot generate
+            continue
+    return {"times": out}
+
+
+def compare_revisions(cats: list[str], seeds: int, rev: str, rounds: int, cpu: bool = False) -> None:
+    """Time generation here and at ``rev`` in alternating rounds; print medians and ratios."""
+    here = Path(__file__).resolve()
+    with revision_tree(rev) as wt, Worker(here) as now_w, \
+            Worker(here, src=wt / "src", cwd=wt) as base_w:
+        base_cats = set(base_w.ask(categories=None)["categories"])
+        common = [c for c in cats if c in base_cats]
+        warm = {"categories": common, "seeds": 1}
+        now_w.ask(**warm)
+        base_w.ask(**warm)  # imports and first-use caches out of the timing
+        times: dict[str, dict[str, list[float]]] = {"now": {}, "base": {}}
+        for r in range(rounds):
+            for side, w in (("base", base_w), ("now", now_w)) if r % 2 else (("now", now_w), ("base", base_w)):
+                for c, ts in w.ask(categories=common, seeds=seeds, cpu=cpu)["times"].items():
+                    times[side].setdefault(c, []).extend(ts)
+    both = [c for c in common if c in times["now"] and c in times["base"]]
+    med = {side: {c: statistics.median(times[side][c]) for c in both} for side in times}
+    print(f"{'category':<24}{rev + ' ms':>12}{'now ms':>10}{'ratio':>8}")
+    for c in sorted(both, key=lambda c: -med["now"][c]):
+        b, n = med["base"][c], med["now"][c]
+        print(f"{c:<24}{b * 1e3:>12.1f}{n * 1e3:>10.1f}{n / b:>8.2f}")
+    b_all = statistics.median(med["base"].values())
+    n_all = statistics.median(med["now"].values())
+    print(f"{'overall median':<24}{b_all * 1e3:>12.1f}{n_all * 1e3:>10.1f}{n_all / b_all:>8.2f}"
+          f"   ({len(both)} categories both revisions have; goal <= 40 ms)")
+    left = sorted(set(cats) - set(both))
+    if left:
+        print(f"left out (not in {rev}): {', '.join(left)}")
+
+
 def main() -> None:
+    if "--_worker" in sys.argv:
+        serve(_handle)
+        return
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--seeds", type=int, default=5, help="assets per category for the timing")
     ap.add_argument("--per-category", type=int, default=20, help="pool size K (0 skips the pool)")
@@ -46,8 +110,17 @@ def main() -> None:
     ap.add_argument("--categories", default="", help="comma-separated subset")
     ap.add_argument("--profile", default="", help="profile generating this category")
     ap.add_argument("--stats", action="store_true", help="print the library statistics (parts, joints) and stop")
+    ap.add_argument("--baseline-rev", metavar="REV",
+                    help="also time git revision REV, alternating rounds with this one")
+    ap.add_argument("--rounds", type=int, default=2, help="alternating rounds per revision (--baseline-rev)")
+    ap.add_argument("--cpu", action="store_true",
+                    help="time by process CPU time instead of wall-clock (steadier on a busy machine)")
     args = ap.parse_args()
     cats = [c for c in args.categories.split(",") if c] or list(registry.categories())
+    if args.baseline_rev:
+        compare_revisions(cats, args.seeds, args.baseline_rev, args.rounds, args.cpu)
+        if args.per_category <= 0:
+            return
     if args.stats:
         from parse3d.assets.stats import library_stats
 

@@ -16,7 +16,7 @@ import numpy as np
 import shapely
 import trimesh
 
-from ..geometry.surfaces import SURFACE_BASIS, Surface, component_roots, plane_polygon
+from ..geometry.surfaces import SURFACE_BASIS, Surface, component_roots, face_data, plane_polygon
 
 __all__ = ["find_internal_surfaces", "MIN_INTERNAL_AREA"]
 
@@ -68,8 +68,14 @@ def _inside_pieces(planes, pts: np.ndarray) -> np.ndarray:
     return inside
 
 
-def find_internal_surfaces(asset) -> list:
+def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
     """Internal support surfaces of an asset (see the module docstring).
+
+    Parameters
+    ----------
+    asset : Asset
+    faces : dict of part name to FaceData, optional
+        ``face_data`` of the parts' meshes when the caller already has them.
 
     Returns
     -------
@@ -101,24 +107,25 @@ def find_internal_surfaces(asset) -> list:
                           for p in asset.parts for pc in p.pieces)
         return planes
 
+    faces = faces or {}
     for part in asset.parts:
-        m = part.mesh
-        up = m.face_normals[:, 2] > _UP_COS
+        fd = faces.get(part.name) or face_data(part.mesh)
+        up = fd.normals[:, 2] > _UP_COS
         if not up.any():
             continue
         idx = np.nonzero(up)[0]
-        adj = m.face_adjacency
+        adj = fd.adjacency
         keep = up[adj[:, 0]] & up[adj[:, 1]]
         root = component_roots(len(up), adj[keep, 0], adj[keep, 1])[idx]
         for r in np.unique(root):
             comp = idx[root == r]
-            area = m.area_faces[comp].sum()
+            area = fd.areas[comp].sum()
             if area < MIN_INTERNAL_AREA:
                 continue
-            z = float((m.triangles_center[comp, 2] * m.area_faces[comp]).sum() / area)
+            z = float((fd.centers[comp, 2] * fd.areas[comp]).sum() / area)
             if top_z - z < 0.02:
                 continue
-            tri = m.triangles[comp]
+            tri = fd.triangles[comp]
             poly = plane_polygon(np.stack([tri @ u, tri @ v], axis=-1))
             if poly.is_empty:
                 continue

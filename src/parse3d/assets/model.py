@@ -15,7 +15,7 @@ import numpy as np
 import trimesh
 
 from ..geometry.shapes import Shape
-from ..geometry.surfaces import Surface, resolve_surfaces
+from ..geometry.surfaces import FaceData, Surface, face_data, resolve_surfaces_steady
 
 __all__ = ["Material", "Part", "InternalSurface", "Joint", "JOINT_TYPES", "Asset", "make_part",
            "finalize_asset", "joint_order"]
@@ -411,12 +411,33 @@ def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True
                 for pc in p.pieces:
                     pc.apply_translation(shift)
             asset.joints = [j.moved(shift) for j in asset.joints]
+    fds = {}
+    # Parts repeated at another place (legs, slats, knobs, drawer fronts: about half of all
+    # parts) resolve once; a repeat gets the first one's surfaces moved along, unless some
+    # decision in resolving them came within rounding of going the other way.
+    resolved: dict[tuple, tuple] = {}
     for p in asset.parts:
-        p.surfaces = resolve_surfaces(p.mesh)
+        v = np.asarray(p.mesh.vertices, float).view(np.ndarray)
+        f = np.asarray(p.mesh.faces).view(np.ndarray)
+        key = (f.tobytes(), np.round(v - v[0], 9).tobytes()) if len(v) else None
+        hit = resolved.get(key) if key is not None else None
+        if hit is None:
+            fds[p.name] = fd = face_data(p.mesh)
+            p.surfaces, steady = resolve_surfaces_steady(fd)
+            if key is not None and steady:
+                resolved[key] = (v[0].copy(), p.surfaces, fd)
+            continue
+        v0, surfaces, fd0 = hit
+        t = v[0] - v0
+        tri = v[f]
+        fds[p.name] = FaceData(fd0.bounds + t, tri, fd0.normals, fd0.areas, tri.mean(axis=1),
+                               fd0.adjacency)
+        p.surfaces = {k: Surface(s.label, s.origin + t, s.normal.copy(), s.u.copy(), s.v.copy(),
+                                 s.polygon, s.source) for k, s in surfaces.items()}
     if internal:
         from .internal import find_internal_surfaces
 
-        asset.internal = find_internal_surfaces(asset)
+        asset.internal = find_internal_surfaces(asset, faces=fds)
         # a drawer's floor is also listed under its front (label ``drawer``, mounted on the
         # box): the part a PAG names for IN a drawer
         fronts = {}

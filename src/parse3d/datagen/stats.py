@@ -170,8 +170,8 @@ class DatasetStats:
                           "avg_parts_per_asset": 17.4, "room_types": 17, "categories": 132},
                 "table1": [*PAPER_TABLE, ours]}
 
-    def markdown(self) -> str:
-        """The summary and Table 1 as Markdown."""
+    def markdown(self, top_categories: int = 10) -> str:
+        """The summary, Table 1 and the largest categories' shares of all objects as Markdown."""
         t = self.table()
         s = t["summary"]
 
@@ -215,6 +215,14 @@ class DatasetStats:
             lines.append(f"| {r['dataset']} | {fmt(r['scenes'])} | {fmt(r['objects'])} | "
                          f"{fmt(r['avg_objects'])} | {r['layout']} | {fmt(r['physics'])} | "
                          f"{fmt(r['parts'])} | {fmt(r['part_contacts'])} |")
+        cats = self.categories
+        total = sum(cats.values())
+        if total:
+            lines += ["", f"## Objects per category (the {min(top_categories, len(cats))} "
+                      f"largest of {len(cats)}; categories.png draws them all)", "",
+                      "| category | objects | share |", "|---|---:|---:|"]
+            lines += [f"| {c} | {k:,} | {pct(k / total)} |"
+                      for c, k in cats.most_common(top_categories)]
         lines += ["", "*# objects*: distinct assets (the paper counts its asset library); "
                   "statistics over the scenes that finished (status ok).", ""]
         return "\n".join(lines)

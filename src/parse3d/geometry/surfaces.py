@@ -23,7 +23,17 @@ from shapely.geometry import box as shapely_box
 
 from ..relations import SURFACES
 
-__all__ = ["Surface", "SURFACE_BASIS", "resolve_surfaces", "surface_from_bbox", "plane_polygon", "component_roots"]
+__all__ = [
+    "Surface",
+    "SURFACE_BASIS",
+    "FaceData",
+    "face_data",
+    "resolve_surfaces",
+    "resolve_surfaces_steady",
+    "surface_from_bbox",
+    "plane_polygon",
+    "component_roots",
+]
 
 #: In-plane basis (u, v) of each label, chosen so that u x v = the outward normal.
 SURFACE_BASIS: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
@@ -36,6 +46,11 @@ SURFACE_BASIS: dict[str, tuple[tuple[float, ...], tuple[float, ...]]] = {
 }
 
 _ALIGN_COS = np.cos(np.deg2rad(12.0))
+_LABELS = tuple(SURFACES)
+_DIRS = np.array([SURFACES[k] for k in _LABELS], float)
+_NORMALS = [np.array(SURFACES[k], float) for k in _LABELS]
+_AXIS = [int(np.argmax(np.abs(d))) for d in _DIRS]
+_BASIS = [tuple(np.array(a) for a in SURFACE_BASIS[k]) for k in _LABELS]
 
 
 @dataclass
@@ -152,20 +167,22 @@ def _hull_ccw(pts: np.ndarray) -> np.ndarray:
     return np.array(lower[:-1] + upper[:-1], float)
 
 
-def plane_polygon(tri2d: np.ndarray) -> Polygon | MultiPolygon:
-    """Union of (M, 3, 2) triangles as a cleaned shapely geometry."""
+def _convex_or_union(tri2d: np.ndarray):
+    """Union of (M, 3, 2) triangles: ``(hull, area)`` when it is convex (its (K, 2) hull,
+    counter-clockwise, and the area), else ``(geometry, None)``."""
     tri2d = np.asarray(tri2d, float)
     if len(tri2d) == 0:
-        return Polygon()
+        return Polygon(), None
     e1 = tri2d[:, 1] - tri2d[:, 0]
     e2 = tri2d[:, 2] - tri2d[:, 0]
     areas = 0.5 * np.abs(e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0])
-    tri2d = tri2d[areas > 1e-12]
-    areas = areas[areas > 1e-12]
+    big = areas > 1e-12
+    tri2d = tri2d[big]
+    areas = areas[big]
     if len(tri2d) == 0:
-        return Polygon()
+        return Polygon(), None
     if len(tri2d) == 1:
-        return Polygon(tri2d[0])
+        return Polygon(tri2d[0]), None
     # fast path: a convex patch (a box face, a disc, a tabletop) is its vertices' hull, which
     # we recognise by the triangles' areas adding up to the hull's area
     pts = tri2d.reshape(-1, 2)
@@ -174,11 +191,93 @@ def plane_polygon(tri2d: np.ndarray) -> Polygon | MultiPolygon:
         x, y = hull[:, 0], hull[:, 1]
         hull_area = 0.5 * float(x[:-1] @ y[1:] - x[1:] @ y[:-1] + x[-1] * y[0] - x[0] * y[-1])
         if abs(hull_area - float(areas.sum())) <= 1e-6 * max(hull_area, 1e-12):
-            return Polygon(hull)
+            return hull, hull_area
     polys = shapely.polygons(np.concatenate([tri2d, tri2d[:, :1]], axis=1))
     u = shapely.union_all(shapely.buffer(polys, 1e-7, join_style="mitre"))
     u = shapely.buffer(u, -1e-7, join_style="mitre")
-    return u.simplify(1e-6)
+    return u.simplify(1e-6), None
+
+
+def plane_polygon(tri2d: np.ndarray) -> Polygon | MultiPolygon:
+    """Union of (M, 3, 2) triangles as a cleaned shapely geometry."""
+    geom, _ = _convex_or_union(tri2d)
+    return Polygon(geom) if isinstance(geom, np.ndarray) else geom
+
+
+def _ring_centroid(ring: np.ndarray, area: float) -> np.ndarray:
+    """(2,) centroid of the simple polygon ``ring`` (K, 2) of signed area ``area``."""
+    x, y = ring[:, 0] - ring[0, 0], ring[:, 1] - ring[0, 1]
+    xn, yn = np.r_[x[1:], x[:1]], np.r_[y[1:], y[:1]]
+    cr = x * yn - xn * y
+    return np.array([((x + xn) @ cr), ((y + yn) @ cr)]) / (6.0 * area) + ring[0]
+
+
+@dataclass
+class FaceData:
+    """Per-face arrays of a triangle mesh, computed once and shared by the surface finders.
+
+    Reading them from a trimesh object re-verifies its cache (hashing the arrays) on every
+    access; the directional and the internal surfaces of an asset read each several times.
+
+    Attributes
+    ----------
+    bounds : (2, 3) float
+        Axis-aligned bounds of the vertices, metres.
+    triangles : (F, 3, 3) float
+        Corner positions of every face.
+    normals : (F, 3) float
+        Unit face normals (zero for degenerate faces), as trimesh reports them.
+    areas : (F,) float
+        Face areas, m^2.
+    centers : (F, 3) float
+        Face centroids.
+    adjacency : (E, 2) int
+        Pairs of faces sharing an edge that exactly two faces use, each pair sorted.
+    """
+
+    bounds: np.ndarray
+    triangles: np.ndarray
+    normals: np.ndarray
+    areas: np.ndarray
+    centers: np.ndarray
+    adjacency: np.ndarray
+
+
+def _face_adjacency(faces: np.ndarray) -> np.ndarray:
+    """(E, 2) sorted pairs of faces sharing an edge used by exactly two faces (trimesh's rule)."""
+    nf = len(faces)
+    if nf == 0:
+        return np.empty((0, 2), np.int64)
+    e = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2).astype(np.int64)
+    e.sort(axis=1)
+    key = e[:, 0] * (int(e[:, 1].max()) + 1) + e[:, 1]
+    order = np.argsort(key, kind="stable")
+    k = key[order]
+    # runs of equal keys of length exactly two
+    start = np.r_[True, k[1:] != k[:-1]]
+    starts = np.nonzero(start)[0]
+    lengths = np.diff(np.r_[starts, len(k)])
+    two = starts[lengths == 2]
+    fa = order[two] // 3
+    fb = order[two + 1] // 3
+    adj = np.stack([fa, fb], axis=1)
+    adj = adj[adj[:, 0] != adj[:, 1]]
+    adj.sort(axis=1)
+    return adj
+
+
+def face_data(mesh: trimesh.Trimesh) -> FaceData:
+    """The :class:`FaceData` of ``mesh`` (a trimesh.Trimesh)."""
+    v = np.asarray(mesh.vertices, float).view(np.ndarray)
+    f = np.asarray(mesh.faces).view(np.ndarray)
+    tri = v[f]
+    e = tri[:, 1:, :] - tri[:, :2, :]  # the edge vectors trimesh crosses, so areas match it
+    cr = np.cross(e[:, 0], e[:, 1])
+    areas = np.sqrt((cr**2).sum(axis=1)) / 2.0
+    normals = np.asarray(mesh.face_normals, float).view(np.ndarray)
+    used = tri.reshape(-1, 3)  # trimesh's bounds count only vertices that faces use
+    bounds = np.array([used.min(axis=0), used.max(axis=0)]) if len(used) else np.zeros((2, 3))
+    return FaceData(bounds, tri, normals, areas, tri.mean(axis=1), _face_adjacency(f))
 
 
 def surface_from_bbox(label: str, bounds: np.ndarray) -> Surface:
@@ -217,7 +316,8 @@ def component_roots(n: int, a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return parent
 
 
-def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -> dict[str, Surface]:
+def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None,
+                     faces: FaceData | None = None) -> dict[str, Surface]:
     """The six directional surfaces of a part mesh (in its own frame).
 
     Parameters
@@ -228,28 +328,48 @@ def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -
         How much farther from the bbox face than the closest patch a patch may lie and still
         count as "closest", metres. Defaults to max(2 mm, 3% of the part's extent along the
         face normal).
+    faces : FaceData, optional
+        ``face_data(mesh)`` when the caller already has it.
 
     Returns
     -------
     dict of str to Surface
         Keyed by label, always all six.
     """
-    bounds = np.asarray(mesh.bounds, float)
-    normals = mesh.face_normals
-    tri = mesh.triangles
-    areas = mesh.area_faces
-    centers = mesh.triangles_center
+    return _resolve(faces if faces is not None else face_data(mesh), tolerance)[0]
+
+
+def _near(a, b) -> bool:
+    return bool(np.any(np.abs(np.asarray(a) - b) <= 1e-9 * np.maximum(1.0, np.abs(b))))
+
+
+def resolve_surfaces_steady(fd: FaceData, tolerance: float | None = None) -> tuple[dict[str, Surface], bool]:
+    """:func:`resolve_surfaces` from face data, with the *steady* flag of :func:`_resolve`."""
+    return _resolve(fd, tolerance)
+
+
+def _resolve(fd: FaceData, tolerance: float | None) -> tuple[dict[str, Surface], bool]:
+    """:func:`resolve_surfaces` of ``fd``, and whether the result is *steady*: no decision
+    (a face's alignment, a patch's distance, equal-area patches; a non-convex patch's union,
+    which shapely does not compute translation-exactly) came within
+    rounding of flipping, so a translated copy of the mesh resolves to these surfaces moved."""
+    steady = True
+    bounds = fd.bounds
+    normals = fd.normals
+    tri = fd.triangles
+    areas = fd.areas
+    centers = fd.centers
     # The six directions are 90 degrees apart, so a face aligns with at most one of them: label
     # every face once, then find the connected patches of all six labels in one pass.
-    labels = list(SURFACES)
-    dirs = np.array([SURFACES[k] for k in labels], float)
+    dirs = _DIRS
     align = normals @ dirs.T
     best_dir = np.argmax(align, axis=1)
-    face_bin = np.where(align[np.arange(len(align)), best_dir] > _ALIGN_COS, best_dir, -1)
+    best_align = align[np.arange(len(align)), best_dir]
+    face_bin = np.where(best_align > _ALIGN_COS, best_dir, -1)
+    steady = not _near(best_align, _ALIGN_COS)
     binned = face_bin >= 0
     if binned.any():
-        adjacency = mesh.face_adjacency
-        ea, eb = adjacency[:, 0], adjacency[:, 1]
+        ea, eb = fd.adjacency[:, 0], fd.adjacency[:, 1]
         keep = (face_bin[ea] == face_bin[eb]) & binned[ea]
         root = component_roots(len(face_bin), ea[keep], eb[keep])
     else:
@@ -257,42 +377,61 @@ def resolve_surfaces(mesh: trimesh.Trimesh, *, tolerance: float | None = None) -
     idx = np.nonzero(binned)[0]
     lab = root[idx]
     # per patch (keyed by its lowest face index): area and area-weighted offset along its normal
-    roots = np.unique(lab)
-    pos = np.searchsorted(roots, lab)
+    roots, pos = np.unique(lab, return_inverse=True)
     p_area = np.bincount(pos, areas[idx], minlength=len(roots))
     offs_all = (centers[idx] * dirs[face_bin[idx]]).sum(axis=1)
     p_moment = np.bincount(pos, offs_all * areas[idx], minlength=len(roots))
     p_bin = face_bin[roots]
+    # faces of each patch, in face order: sort once instead of scanning per patch
+    order = np.argsort(pos, kind="stable")
+    cuts = np.searchsorted(pos[order], np.arange(len(roots) + 1))
     out: dict[str, Surface] = {}
-    for li, (label, nrm) in enumerate(SURFACES.items()):
+    for li, label in enumerate(_LABELS):
         n = dirs[li]
         sel = np.nonzero((p_bin == li) & (p_area > 1e-10))[0]
         if len(sel) == 0:
             out[label] = surface_from_bbox(label, bounds)
             continue
-        axis = int(np.argmax(np.abs(n)))
+        axis = _AXIS[li]
         face_coord = bounds[1, axis] if n[axis] > 0 else bounds[0, axis]
         extent = bounds[1, axis] - bounds[0, axis]
         tol = tolerance if tolerance is not None else max(0.002, 0.03 * extent)
         dist = np.abs(face_coord * np.sign(n[axis]) - p_moment[sel] / p_area[sel])
-        close = sel[dist <= dist.min() + tol]
-        # the largest close patch (the first of equals, in face order), its sums taken exactly
-        best_a, comp, off = -1.0, None, 0.0
+        limit = dist.min() + tol
+        close = sel[dist <= limit]
+        if steady and len(sel) > len(close) and _near(dist, limit):
+            steady = False
+        # the largest close patch (the first of equals, in face order), its sums taken exactly;
+        # patches clearly smaller than the largest (by the binned sums) cannot win
+        ca = p_area[close]
+        if len(close) > 1:
+            close = close[ca >= ca.max() * (1.0 - 1e-9)]
+            if len(close) > 1:
+                steady = False  # (nearly) equal patches: rounding picks one
+        best_a, comp = -1.0, None
         for k in close:
-            c = idx[pos == k]
+            c = idx[order[cuts[k]:cuts[k + 1]]]
             a_ = areas[c].sum()
             if a_ > best_a:
                 best_a, comp = a_, c
-                off = float((centers[c] @ n * areas[c]).sum() / a_)
-        u, v = (np.array(x) for x in SURFACE_BASIS[label])
+        off = float((centers[comp] @ n * areas[comp]).sum() / best_a)
+        u, v = _BASIS[li]
         t = tri[comp]
-        tri2d = np.stack([t @ u, t @ v], axis=-1)
-        poly = plane_polygon(tri2d)
-        if poly.is_empty or poly.area <= 1e-10:
-            out[label] = surface_from_bbox(label, bounds)
-            continue
-        c2 = np.asarray(poly.centroid.coords[0])
+        geom, area = _convex_or_union(np.stack([t @ u, t @ v], axis=-1))
+        if area is None:
+            steady = False  # shapely's union is not translation-exact
+        if area is not None:  # a convex patch: its hull ring, centroid by the shoelace formula
+            if area <= 1e-10:
+                out[label] = surface_from_bbox(label, bounds)
+                continue
+            c2 = _ring_centroid(geom, area)
+            poly = Polygon(geom - c2)
+        else:
+            if geom.is_empty or geom.area <= 1e-10:
+                out[label] = surface_from_bbox(label, bounds)
+                continue
+            c2 = np.asarray(geom.centroid.coords[0])
+            poly = shapely.transform(geom, lambda xy, c2=c2: xy - c2)
         origin = c2[0] * u + c2[1] * v + off * n
-        poly = shapely.transform(poly, lambda xy, c2=c2: xy - c2)
-        out[label] = Surface(label, origin, np.array(nrm, float), u, v, poly, "mesh")
-    return out
+        out[label] = Surface(label, origin, _NORMALS[li].copy(), u.copy(), v.copy(), poly, "mesh")
+    return out, steady

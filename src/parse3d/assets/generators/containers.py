@@ -34,7 +34,7 @@ def _hoops(r_at, zs, *, bulge: float, width: float, sections: int = 20) -> list[
     return out
 
 
-@register("basket", parts=("body",), extra_parts=("handle",), size_range=(0.18, 0.46),
+@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim"), size_range=(0.18, 0.46),
           density=500, variants=("round", "rectangular", "handled"), placement="surface")
 def basket(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = _wicker(rng)
@@ -45,14 +45,14 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
         t = 0.008
         flare = rng.uniform(0.01, 0.02)
         shapes = open_box(w, d, h, t, taper=flare)
+        parts.append(make_part("body", "body", shapes, mat))
         # woven rows: thin bevelled slats proud of the front and back walls
         for k, z in enumerate(np.linspace(0.025, h - 0.02, 3)):
             g = flare * z / h
-            for sy in (1, -1):
-                shapes.append(S.box((w + 2 * g - 0.01, 0.006, 0.018),
-                                    center=(0, sy * (d / 2 + g + 0.001), z), bevel=0.002))
-            del k
-        parts.append(make_part("body", "body", shapes, mat))
+            for i, sy in enumerate((1, -1)):
+                slat = S.box((w + 2 * g - 0.01, 0.006, 0.018),
+                             center=(0, sy * (d / 2 + g + 0.001), z), bevel=0.002)
+                parts.append(make_part(f"slat_{2 * k + i}", "slat", slat, mat))
         top = h
         span = d / 2 + flare - 0.01
     else:
@@ -68,7 +68,9 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
                        sections=16)
         rim = ring([(r - 0.01, h - 0.004), (r + 0.004, h - 0.004), (r + 0.004, h + 0.006),
                     (r - 0.01, h + 0.006)], sections=16)
-        parts.append(make_part("body", "body", [body, *hoops, rim], mat))
+        parts.append(make_part("body", "body", body, mat))
+        parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
+        parts.append(make_part("rim", "rim", rim, mat))
         top = h + 0.006
         span = r - 0.01
     if variant == "handled" or (variant == "rectangular" and rng.random() < 0.5):
@@ -122,7 +124,7 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bucket", parts=("body", "handle"), extra_parts=("grip",), size_range=(0.22, 0.42),
+@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear"), size_range=(0.22, 0.42),
           density=900, variants=("metal", "plastic"), placement="surface")
 def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.12, 0.15)
@@ -134,15 +136,18 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     def r_at(z: float) -> float:
         return float(np.interp(z, [0.0, h], [rb, r]))
 
-    shapes = [shell([(rb, 0.0), (r, h)], t, bottom=0.004, sections=20)]
-    # a rolled rim and, on metal buckets, pressed hoops
-    shapes.append(ring([(r - t, h - 0.008), (r + 0.004, h - 0.006), (r + 0.004, h + 0.002),
-                        (r - t, h + 0.002)], sections=20))
+    parts = [make_part("body", "body", shell([(rb, 0.0), (r, h)], t, bottom=0.004, sections=20), mat)]
+    # a rolled rim and, on metal buckets, a pressed hoop
+    rim = ring([(r - t, h - 0.008), (r + 0.004, h - 0.006), (r + 0.004, h + 0.002),
+                (r - t, h + 0.002)], sections=20)
+    parts.append(make_part("rim", "rim", rim, mat))
     if variant == "metal":
-        shapes += _hoops(r_at, [h * 0.45], bulge=0.002, width=0.014)
-    ear = [S.box((0.012, 0.03, 0.03), center=(s * (r_at(h - 0.03) + 0.004), 0, h - 0.03))
-           for s in (1, -1)]
-    parts = [make_part("body", "body", shapes + ear, mat)]
+        hoops = _hoops(r_at, [h * 0.45], bulge=0.002, width=0.014)
+        parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
+    # the ears the handle pivots in
+    for i, sx in enumerate((1, -1)):
+        ear = S.box((0.012, 0.03, 0.03), center=(sx * (r_at(h - 0.03) + 0.004), 0, h - 0.03))
+        parts.append(make_part(f"ear_{i}", "ear", ear, mat))
     # the wire handle pivots on the ears and has fallen towards the back (-Y), so the opening
     # stays free
     tilt = np.deg2rad(rng.uniform(40, 70))
@@ -156,7 +161,7 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("trash_can", parts=("body",), extra_parts=("lid", "pedal"), size_range=(0.28, 0.8),
+@register("trash_can", parts=("body",), extra_parts=("lid", "pedal", "rim"), size_range=(0.28, 0.8),
           density=900, variants=("round", "square", "pedal"), placement="floor")
 def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.metal(rng) if variant == "pedal" or rng.random() < 0.4 else M.plastic(rng)
@@ -172,10 +177,11 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.13, 0.18)
     h = rng.uniform(0.35, 0.6) if variant == "round" else rng.uniform(0.4, 0.65)
     rb = r * (rng.uniform(0.8, 0.9) if variant == "round" else 1.0)
-    body = [shell([(rb, 0.0), (r, h)], 0.004, bottom=0.008, sections=20)]
-    body.append(ring([(r - 0.004, h - 0.012), (r + 0.004, h - 0.01), (r + 0.004, h),
-                      (r - 0.004, h)], sections=20))
+    body = shell([(rb, 0.0), (r, h)], 0.004, bottom=0.008, sections=20)
+    rim = ring([(r - 0.004, h - 0.012), (r + 0.004, h - 0.01), (r + 0.004, h),
+                (r - 0.004, h)], sections=20)
     parts.append(make_part("body", "body", body, mat))
+    parts.append(make_part("rim", "rim", rim, mat))
     if variant == "pedal":
         lid = S.lathe([(r + 0.006, h), (r + 0.006, h + 0.008), (r * 0.9, h + r * 0.2),
                        (r * 0.3, h + r * 0.27)], sections=28)
@@ -185,7 +191,7 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("laundry_basket", parts=("body",), extra_parts=("handle",), size_range=(0.35, 0.72),
+@register("laundry_basket", parts=("body",), extra_parts=("handle", "rib", "band"), size_range=(0.35, 0.72),
           density=900, variants=("rectangular", "round"), placement="floor")
 def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.plastic(rng) if rng.random() < 0.6 else _wicker(rng)
@@ -210,11 +216,12 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
             # below the slot: chamfered so the slot's sill is no shelf of its own
             shapes.append(S.box((t, slot_w, z_lo), center=(x, 0, z_lo / 2), bevel=0.002))
             shapes.append(S.box((t, slot_w, h - z_hi), center=(x, 0, (h + z_hi) / 2)))
-        # moulded vertical ribs on the front and back
-        for s in (1, -1):
-            for x in np.linspace(-w * 0.38, w * 0.38, 6):
-                shapes.append(S.box((0.014, 0.004, h * 0.7), center=(x, s * (d / 2 + 0.002), h * 0.45)))
         parts.append(make_part("body", "body", shapes, mat))
+        # moulded vertical ribs on the front and back
+        for i, s in enumerate((1, -1)):
+            for k, x in enumerate(np.linspace(-w * 0.38, w * 0.38, 6)):
+                rib = S.box((0.014, 0.004, h * 0.7), center=(x, s * (d / 2 + 0.002), h * 0.45))
+                parts.append(make_part(f"rib_{6 * i + k}", "rib", rib, mat))
         return parts
     r = rng.uniform(0.2, 0.26)
     h = rng.uniform(0.3, 0.45)
@@ -223,9 +230,10 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     def r_at(z: float) -> float:
         return float(np.interp(z, [0.0, h], [rb, r]))
 
-    body = [shell([(rb, 0.0), (r, h)], 0.006, bottom=0.008, sections=20)]
-    body += _hoops(r_at, np.linspace(h * 0.25, h * 0.7, 2), bulge=0.003, width=0.03, sections=20)
+    body = shell([(rb, 0.0), (r, h)], 0.006, bottom=0.008, sections=20)
     parts.append(make_part("body", "body", body, mat))
+    hoops = _hoops(r_at, np.linspace(h * 0.25, h * 0.7, 2), bulge=0.003, width=0.03, sections=20)
+    parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
     for i, sx in enumerate((1, -1)):
         grip = S.tube(arc((sx * (r - 0.002), 0, h - 0.05), 0.06, 0.0, np.pi, n=7,
                           u=(0, 1, 0), v=(sx, 0, 0), squash=0.45), 0.008, sections=8)

@@ -72,7 +72,7 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cereal_box", parts=("body",), extra_parts=("label",), size_range=(0.2, 0.4),
+@register("cereal_box", parts=("body",), extra_parts=("label", "flap"), size_range=(0.2, 0.4),
           density=250, variants=("standard", "family", "slim"), placement="surface")
 def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
     """Width along x, the large printed face at +Y, thin along y."""
@@ -83,7 +83,7 @@ def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
     body = S.box((w, d, h), center=(0, 0, h / 2), bevel=0.002)
     # the glued top flap
     flap = S.box((w - 0.004, d * 0.5, 0.004), center=(0, 0, h + 0.002), bevel=0.001)
-    parts = [make_part("body", "body", [body, flap], card)]
+    parts = [make_part("body", "body", body, card), make_part("flap", "flap", flap, card)]
     # a printed panel on the front face (+Y)
     panel = S.box((w * 0.8, 0.001, h * 0.55), center=(0, d / 2 + 0.0005, h * 0.45))
     parts.append(make_part("label", "label", panel, M.paper(rng)))
