@@ -151,6 +151,29 @@ def test_model_shapes_and_condition_matters():
     assert not torch.allclose(y1, y0)
 
 
+def test_pair_relation_reaches_the_node_through_attention_values():
+    """With the logits blind to edges and no node condition, which relation an object pair
+    carries must still change the child's prediction (the attention-weighted edge values)."""
+    from parse3d.layoutgen.model import PRESETS, LayoutDenoiser, ModelConfig
+
+    torch.manual_seed(1)
+    m = LayoutDenoiser(ModelConfig(**PRESETS["tiny"], shape_dim=7, rel_dim=5))
+    for p in m.parameters():
+        torch.nn.init.normal_(p, std=0.2)
+    for blk in m.blocks:  # edges no longer touch logits; the node condition is not used
+        torch.nn.init.zeros_(blk.e_mod.weight)
+        torch.nn.init.zeros_(blk.e_mod.bias)
+        torch.nn.init.zeros_(blk.film.weight)
+        torch.nn.init.zeros_(blk.film.bias)
+    base = {"shape": torch.randn(3, 1, 7), "rel_child": torch.tensor([1]),
+            "rel_parent": torch.tensor([0]), "room_geo": torch.zeros(3, 8),
+            "room_ctx": torch.ones(4)}
+    x, t, keep = torch.randn(1, 3, 12), torch.tensor([10]), torch.ones(1)
+    on = m(x, t, {**base, "rel_vec": torch.tensor([[1.0, 0, 0, 0, 0]])}, keep)
+    near = m(x, t, {**base, "rel_vec": torch.tensor([[0.0, 0, 0, 0, 1]])}, keep)
+    assert not torch.allclose(on[0, 1], near[0, 1], atol=1e-4)
+
+
 def test_training_is_deterministic_resumes_and_learns(dataset, run_dir, tmp_path):
     cfg = TrainConfig(steps=6, preset="tiny", relations="learned", checkpoint_every=3,
                       noise_draws=8)

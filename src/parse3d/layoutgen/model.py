@@ -4,7 +4,9 @@ Per block (paper, Appendix A.4, after InstructScene's graph transformer):
 
 1. **Edge-modulated self-attention.** For nodes ``i, j`` and head ``h`` the attention logit
    ``s_ij = q_i . k_j / sqrt(d_h)`` is modulated by the edge features,
-   ``s_ij <- s_ij * (1 + E_mul(e_ij)) + E_add(e_ij)``; the modulated logits (gated by the
+   ``s_ij <- s_ij * (1 + E_mul(e_ij)) + E_add(e_ij)``; the head's output is
+   ``sum_j a_ij v_j`` plus a projection of ``sum_j a_ij e_ij`` (so the relation of the pair a
+   head attended to reaches the node, not only its weight); the modulated logits (gated by the
    edge) and both end nodes update the edge stream. (InstructScene modulates every channel;
    modulating per head keeps the pair tensors ``d / heads`` times smaller, which is what makes
    CPU training of 50-object scenes affordable.)
@@ -122,6 +124,7 @@ class GraphBlock(nn.Module):
         self.film = nn.Linear(d, 2 * d)
         nn.init.zeros_(self.film.weight)
         nn.init.zeros_(self.film.bias)
+        self.e_val = nn.Linear(h * de, d)
         self.out_n = nn.Linear(d, d)
         self.out_e = nn.Linear(h, de)
         self.pair_i, self.pair_j = nn.Linear(d, de), nn.Linear(d, de, bias=False)
@@ -138,11 +141,15 @@ class GraphBlock(nn.Module):
         H, dh = self.h, self.dh
         hn = self.norm_n1(h, t)
         q, k, v = self.qkv(hn).view(B, N, 3, H, dh).unbind(2)
-        mul, add, gate = self.e_mod(self.norm_e1(e, t)).view(B, N, N, 3, H).unbind(3)
+        en = self.norm_e1(e, t)
+        mul, add, gate = self.e_mod(en).view(B, N, N, 3, H).unbind(3)
         s = torch.einsum("bihd,bjhd->bijh", q, k) / math.sqrt(dh)  # (B, N, N, H)
         s = s * (1 + mul) + add
         a = torch.softmax(s, dim=2)  # over j
         o = torch.einsum("bijh,bjhd->bihd", a, v).reshape(B, N, d)
+        # what each head attended to: the edge features of the pairs it weighted, so a node
+        # can tell its parent's value from a neighbour's (the relation reaches the values)
+        o = o + self.e_val(torch.einsum("bijh,bijc->bihc", a, en).reshape(B, N, H * en.shape[-1]))
         gamma, beta = self.film(c).chunk(2, dim=-1)
         o = o * (1 + gamma) + beta
         h = h + self.out_n(o)

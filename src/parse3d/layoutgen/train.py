@@ -498,7 +498,12 @@ def load_run(run: str | Path, *, device: str = "cpu") -> LayoutRun:
     rel_enc = make_relation_encoder(doc["relation_encoder"], cache=p / "relation_text.npz")
     model, _ = _build_model(cfg, shape_enc.dim, rel_enc.dim, cfg.seed)
     state = torch.load(ck, map_location=dev, weights_only=False)
-    model.load_state_dict(state["model"])
+    try:
+        model.load_state_dict(state["model"])
+    except RuntimeError:
+        raise InputError(Problem("", "the checkpoint does not fit this version's network (it "
+                                     "was trained by an older parse3d) — train it again",
+                                 str(ck), "schema")) from None
     ema = _make_ema(model)
     ema.load_state_dict(state["ema"])
     ema.copy_to(model.parameters())
