@@ -203,7 +203,8 @@ def _cases() -> list[dict]:
                            "o/scene.json": scene(),
                            "o/preview.png": "old", "o/rgb_0.png": "old", "o/views.json": "{}",
                            "o/notes.txt": "mine"},
-        outputs=["o/scene.json", "o/scene.glb", "o/contacts.json", "o/preview.png",
+        outputs=["o/scene.json", "o/scene.glb", "o/exports.json", "o/contacts.json",
+                 "o/preview.png",
                  "o/rgb_0.png", "o/views.json"],
         absent=["o/contacts.json", "o/preview.png", "o/rgb_0.png", "o/views.json"],
         present=["o/notes.txt", "o/scene.json"])

@@ -799,7 +799,8 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     base (those reaching within 3 mm of its lowest point; the feet of a TV, a pot's bottom),
     each as its convex footprint intersected with the ``solid`` support polygon (plane
     coordinates), must together hold its centre of mass 5 mm inside their convex hull. A TV
-    whose foot is off a narrow stand fails; a pot on a smaller burner passes."""
+    whose foot is off a narrow stand fails; a pot on a smaller burner passes. On a support
+    narrower than twice the margin (a bar) the centre of mass need only be over it."""
     n = s.normal
     low = np.inf
     pieces = []
@@ -820,7 +821,10 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
         return False
     com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
     hull = shapely.union_all(held).convex_hull
-    return hull.buffer(-5e-3).contains(shapely.Point(com))
+    inner = hull.buffer(-5e-3)
+    if inner.is_empty:  # a support narrower than the margin (a wine rack's cradle bar)
+        inner = hull.buffer(1e-6)
+    return inner.contains(shapely.Point(com))
 
 
 def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None:
