@@ -18,6 +18,7 @@ from ..geometry.shapes import Shape
 from ..geometry.surfaces import FaceData, Surface, face_data, resolve_surfaces_steady
 
 __all__ = ["Material", "Part", "InternalSurface", "Joint", "JOINT_TYPES", "Asset", "make_part",
+           "BASE_LINK", "link_groups",
            "finalize_asset", "joint_order"]
 
 
@@ -464,3 +465,38 @@ def _tolerant_ranks(values: np.ndarray, tol: float) -> np.ndarray:
             r += 1
         ranks[i] = r
     return ranks
+
+
+#: The link holding an asset's parts that no joint moves.
+BASE_LINK = "base"
+
+
+def link_groups(asset: Asset) -> tuple[dict[str, str], list[str], list[tuple[Joint, str]]]:
+    """Part -> link, links (parents first, ``base`` first), moving joints with the link that
+    holds their parent part (the child's link is named after the child part).
+
+    A joint whose parent part is missing or in a loop leaves its child on ``base``.
+    """
+    moved = {j.child_part for j in asset.joints}
+    part_link = {p.name: BASE_LINK for p in asset.parts if p.name not in moved}
+    order = [BASE_LINK]
+    joints: list[tuple[Joint, str]] = []
+    pending = list(asset.joints)
+    progressed = True
+    while pending and progressed:
+        progressed = False
+        for j in list(pending):
+            parent = part_link.get(j.parent_part)
+            if parent is None:
+                continue
+            if j.is_mount:
+                part_link[j.child_part] = parent
+            else:
+                part_link[j.child_part] = j.child_part
+                order.append(j.child_part)
+                joints.append((j, parent))
+            pending.remove(j)
+            progressed = True
+    for p in asset.parts:
+        part_link.setdefault(p.name, BASE_LINK)
+    return part_link, order, joints

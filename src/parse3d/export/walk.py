@@ -26,7 +26,7 @@ import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
-from ..assets.model import Asset, Joint, Material, Part
+from ..assets.model import BASE_LINK, Asset, Joint, Material, Part, link_groups
 from ..geometry.frames import make_transform
 from ..pag.refs import RefSyntaxError, parse_ref
 from ..scene.model import PlacedObject, Scene
@@ -36,7 +36,6 @@ __all__ = ["ExportOptions", "PartRecord", "LinkRecord", "JointRecord", "ObjectRe
            "convex_pieces", "clear_cache"]
 
 #: Name of the link holding every part that no joint moves.
-BASE_LINK = "base"
 
 #: Display materials of the room shell, by element kind.
 SHELL_MATERIALS = {"floor": Material((0.78, 0.74, 0.68, 1.0), 0.8, 0.0, "wood"),
@@ -478,33 +477,11 @@ def _links(asset: Asset, values: dict[str, float]) -> tuple[dict[str, str], list
     A mount (a joint with no travel: a handle on a door, a box behind a drawer front) is no
     joint in the exports: its part rides rigidly on the link of the part it is mounted on.
     """
-    moved = {j.child_part for j in asset.joints}
-    part_link = {p.name: BASE_LINK for p in asset.parts if p.name not in moved}
+    part_link, order, moving = link_groups(asset)
     motion: dict[str, np.ndarray] = {BASE_LINK: np.eye(4)}
-    order = [BASE_LINK]
-    joints = []
-    pending = list(asset.joints)
-    while pending:
-        progressed = False
-        for j in list(pending):
-            parent = part_link.get(j.parent_part)
-            if parent is None:
-                continue
-            if j.is_mount:
-                part_link[j.child_part] = parent
-            else:
-                part_link[j.child_part] = j.child_part
-                motion[j.child_part] = motion[parent] @ j.transform(values[j.name])
-                order.append(j.child_part)
-                joints.append((j, parent, j.child_part))
-            pending.remove(j)
-            progressed = True
-        if not progressed:  # a joint loop: the rest stay rigid with the base
-            for j in pending:
-                part_link[j.child_part] = BASE_LINK
-            break
-    for p in asset.parts:  # a joint naming a part the asset lacks leaves nothing unassigned
-        part_link.setdefault(p.name, BASE_LINK)
+    for j, parent in moving:  # parents first
+        motion[j.child_part] = motion[parent] @ j.transform(values[j.name])
+    joints = [(j, parent, j.child_part) for j, parent in moving]
     return part_link, [(n, motion[n]) for n in order], joints
 
 

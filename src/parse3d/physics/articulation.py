@@ -27,7 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..assets.model import Asset, Joint
+from ..assets.model import BASE_LINK, link_groups
 from ..geometry.frames import matrix_to_quat
 from ..scene.model import PlacedObject
 from .collision import asset_collision
@@ -36,7 +36,6 @@ __all__ = ["BASE_LINK", "JOINT_DAMPING", "JOINT_FRICTION", "ArticulatedObject",
            "link_groups", "add_articulated"]
 
 #: Name of the link holding every part that no joint moves.
-BASE_LINK = "base"
 #: Joint damping (N·m·s/rad for hinges, N·s/m for slides).
 JOINT_DAMPING = 0.5
 #: Joint friction coefficient (PhysX's unitless articulation joint friction).
@@ -76,37 +75,6 @@ class ArticulatedObject:
             lo, hi = self.limits[name]
             out[name] = float(np.clip(q[i] / k, lo, hi)) + 0.0  # no -0.0
         return out
-
-
-def link_groups(asset: Asset) -> tuple[dict[str, str], list[str], list[tuple[Joint, str]]]:
-    """Part -> link, links (parents first, ``base`` first), moving joints with the link that
-    holds their parent part (the child's link is named after the child part).
-
-    A joint whose parent part is missing or in a loop leaves its child on ``base``.
-    """
-    moved = {j.child_part for j in asset.joints}
-    part_link = {p.name: BASE_LINK for p in asset.parts if p.name not in moved}
-    order = [BASE_LINK]
-    joints: list[tuple[Joint, str]] = []
-    pending = list(asset.joints)
-    progressed = True
-    while pending and progressed:
-        progressed = False
-        for j in list(pending):
-            parent = part_link.get(j.parent_part)
-            if parent is None:
-                continue
-            if j.is_mount:
-                part_link[j.child_part] = parent
-            else:
-                part_link[j.child_part] = j.child_part
-                order.append(j.child_part)
-                joints.append((j, parent))
-            pending.remove(j)
-            progressed = True
-    for p in asset.parts:
-        part_link.setdefault(p.name, BASE_LINK)
-    return part_link, order, joints
 
 
 def _axis_frame(axis) -> np.ndarray:
