@@ -394,3 +394,32 @@ def test_verify_settled_reports_each_cause(room, assets):
     desk.settled_position = desk.position - [0, 0, 0.1]
     d = next(i for i in verify_settled(room.scene) if i.object_id == "desk")
     assert d.cause == "fell" and set(d.carries) == {"mug", "cup"}
+
+
+def test_exact_drop_sees_round_bodies_touching_between_vertices():
+    """An apple leaning on another at 78 deg from the vertical, 50 um apart: the rays from
+    hull vertices read a drop of millimetres (more than the contact distance, so a settled pile
+    read as broken), the mesh-on-mesh drop finds the contact."""
+    from parse3d.measure.checks import DIST_TOL
+    from parse3d.measure.geometry import drop_distance, exact_drop
+
+    apple = registry.generate("apple", seed=0)
+    below = PlacedObject("a", "apple", apple, 1.0, np.eye(3), np.zeros(3))
+    th = np.deg2rad(78)
+    d = np.array([np.sin(th), 0.0, np.cos(th)])
+    R = axis_angle(np.array([1.0, 0, 0]), np.deg2rad(30))
+    far = PlacedObject("b", "apple", apple, 1.0, R, 0.2 * d)
+    # slide in along the contact direction until 50 um short of touching
+    s = exact_drop(apple, far.transform(), apple, below.transform(), -d, 0.16, tol=1e-5)
+    assert 0.1 < s < 0.16
+    on = PlacedObject("b", "apple", apple, 1.0, R, 0.2 * d - (s - 5e-5) * d)
+    down = np.array([0, 0, -1.0])
+    rays = drop_distance(world_points(on, hull_only=True), apple, on.transform(),
+                         world_points(below, hull_only=True), apple, below.transform(), down)
+    exact = exact_drop(apple, on.transform(), apple, below.transform(), down, rays)
+    assert rays > DIST_TOL
+    assert exact <= min(1e-3, rays)
+    # along the contact direction: the 50 um gap, to the bisection's 0.25 mm; not touching
+    # within the bound: the bound
+    assert exact_drop(apple, on.transform(), apple, below.transform(), -d, 1e-3) <= 2.5e-4
+    assert exact_drop(apple, far.transform(), apple, below.transform(), down, 0.01) == 0.01

@@ -26,10 +26,7 @@ SEEDS = (0, 1, 2)
 
 #: Rooms that fail today, with the failure class that makes them fail (see the report of the
 #: robustness benchmark); the solver's fixes for those classes turn them green.
-KNOWN: dict[str, str] = {
-    "fruit_bowl": "class 4: at seed 0 a piled apple ends outside the bowl's footprint after "
-                  "settling (with the sampling draws of the faster region kernels)",
-}
+KNOWN: dict[str, str] = {}
 
 #: Rooms that must fail, with the explanation the failure must give (the issue's class 2: a
 #: contact named on a part that is not the object's extreme along that normal).
