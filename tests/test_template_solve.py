@@ -42,10 +42,7 @@ def _room_with(tmp_path, motif: str, room_type: str, params: str):
 
 
 #: Motifs that still fail, with why.
-KNOWN = {
-    "bar_wine_wall": "at seed 0 bottles lying on the bar rack's cradles find no free space "
-                     "with the solver's newer placement rules (not yet diagnosed)",
-}
+KNOWN: dict[str, str] = {}
 
 
 @pytest.mark.parametrize("motif", [

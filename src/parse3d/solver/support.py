@@ -196,13 +196,16 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     out = []
     if rel == "IN":
         names = {p.name for p in parts}
-        seen: set[str] = set()
+        seen: set[tuple] = set()
         for ins in parent.asset.internal:
             if ins.part in names:
                 carrier = _carrier(parent.asset, ins)
-                if carrier in seen:
+                # one support per patch: a drawer's floor listed twice (under its front and
+                # its box) once, a cradle's front and back bars each
+                key = (carrier, *np.round(ins.surface.origin, 6).tolist())
+                if key in seen:
                     continue
-                seen.add(carrier)
+                seen.add(key)
                 s = ins.surface.transformed(T)
                 out.append(Support(s, SupportChoice(parent.id, carrier, "top"), s.polygon,
                                    ins.clearance * parent.scale))
