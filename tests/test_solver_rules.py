@@ -1,0 +1,136 @@
+"""Focused tests of three placement rules of the solver, each on real generated assets:
+
+* ``_base_supported``: a child hanging over a small support stands only when the parts of its
+  base resting on the support hold its centre of mass (a desk half off a platform does not; a
+  bottle lying across a wine rack's bar does when the bar is under its centre of mass);
+* ``_pressing``: a leaning object is tilted far enough that gravity presses it toward what it
+  leans on (its centre of mass beyond the base edge it pivots on);
+* ``_leave_room``: samples that leave room beside an object for what is still to be placed
+  beside it on the same support come first (a stove with a counter to its right is not pushed
+  into the corner).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import shapely
+from shapely.geometry import box
+
+from parse3d.assets import registry
+from parse3d.geometry.frames import axis_angle
+from parse3d.geometry.surfaces import Surface
+from parse3d.measure.geometry import asset_geometry
+from parse3d.pag import PAG, Room
+from parse3d.scene.model import Scene
+from parse3d.scene.shell import build_shell
+from parse3d.solver.collision import CollisionWorld
+from parse3d.solver.placement import _base_supported, _leave_room
+from parse3d.solver.rotation import LEAN_MARGIN, _pressing
+from parse3d.solver.state import SolveState
+from parse3d.solver.support import support_candidates
+
+EX, EY, EZ = np.eye(3)
+
+
+def floor_plane(z: float = 0.0) -> Surface:
+    """An upward plane at height ``z`` whose plane coordinates are world x and y."""
+    return Surface("top", np.array([0.0, 0.0, z]), EZ, EX, EY, box(-5, -5, 5, 5))
+
+
+# ------------------------------------------------------------------------ _base_supported
+def test_base_supported_needs_the_resting_base_to_hold_the_centre_of_mass():
+    desk = registry.generate("desk", seed=0)
+    s = floor_plane()
+    R, t = np.eye(3), np.zeros(3)  # the asset's origin is the centre of its base: on the plane
+    half = float(asset_geometry(desk).bounds[1, 0])
+    assert _base_supported(desk, 1.0, R, t, s, box(-2, -2, 2, 2))
+    # only the right-hand legs on the platform: the centre of mass (near x = 0) hangs off
+    assert not _base_supported(desk, 1.0, R, t, s, box(0.6 * half, -2, 2, 2))
+    # nothing of the base on it at all
+    assert not _base_supported(desk, 1.0, R, t, s, box(3, 3, 4, 4))
+
+
+@pytest.fixture(scope="module")
+def lying_bottle():
+    """A bottle lying on its back (its axis along world -Y), its lowest point on z = 0, and the
+    (x, y) of its centre of mass."""
+    bottle = registry.generate("bottle", seed=0)
+    R = axis_angle(EX, np.pi / 2)  # its back (-Y) faces down
+    hull = asset_geometry(bottle).hull @ R.T
+    t = np.array([0.0, 0.0, -float(hull[:, 2].min())])
+    com = R @ asset_geometry(bottle).com + t
+    return bottle, R, t, com[:2]
+
+
+@pytest.mark.parametrize("width", [0.015, 0.003])
+def test_base_supported_on_a_bar_under_the_centre_of_mass(lying_bottle, width):
+    """A wine rack's cradle bar (0.015 m), or one narrower than the 5 mm margin: over it, the
+    bottle lies; 6 cm off its centre of mass (the bar still under the bottle), it would not."""
+    bottle, R, t, (cx, cy) = lying_bottle
+    s = floor_plane()
+    under = box(cx - 0.2, cy - width / 2, cx + 0.2, cy + width / 2)
+    assert _base_supported(bottle, 1.0, R, t, s, under)
+    off = shapely.affinity.translate(under, 0.0, 0.06)
+    assert not _base_supported(bottle, 1.0, R, t, s, off)
+
+
+# ------------------------------------------------------------------------------ _pressing
+def lean_margin(asset, R, k, d, th) -> float:
+    """How far (m) the centre of mass lies beyond the lowest points along ``d`` at tilt ``th``."""
+    g = asset_geometry(asset)
+    Rt = axis_angle(k, th) @ R
+    Y = g.hull @ Rt.T
+    base = Y[Y[:, 2] <= Y[:, 2].min() + 2e-3]
+    return float((Rt @ g.com) @ d - np.max(base @ d))
+
+
+def test_pressing_tilts_far_enough_for_gravity_to_hold_the_lean():
+    guitar = registry.generate("guitar", seed=0)
+    R = np.eye(3)
+    d = -EY  # the wall is behind it
+    k = EX  # tilting about +X turns its top toward -Y
+    tilts = list(np.deg2rad([0.0, 1.0, 2.0, 12.0, 16.0, 20.0]))
+    margins = [lean_margin(guitar, R, k, d, th) for th in tilts]
+    pressed = {th for th, m in zip(tilts, margins, strict=True) if m >= LEAN_MARGIN}
+    assert pressed and tilts[0] not in pressed  # upright it would not lean on the wall
+    picks = {_pressing(guitar, 1.0, R, k, d, tilts, np.random.default_rng(i)) for i in range(40)}
+    assert picks <= pressed and len(picks) > 1  # a random one of the tilts that press
+    # none presses: the one that comes closest
+    small = tilts[:3]
+    assert _pressing(guitar, 1.0, R, k, d, small, np.random.default_rng(0)) == \
+        small[int(np.argmax(margins[:3]))]
+
+
+# ---------------------------------------------------------------------------- _leave_room
+def kitchen_wall(counter_beside: bool) -> tuple[SolveState, object]:
+    pag = PAG("stove-and-counter", Room("kitchen", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
+    pag.add("stove", "stove")
+    pag.relate("stove", "ON", "floor")
+    pag.add("counter", "kitchen_counter")
+    pag.relate("counter", "ON", "floor")
+    if counter_beside:
+        pag.relate("counter", "SIDE_OF", "stove", side="right")
+    st = SolveState(pag, Scene(pag, 0, build_shell(pag.room)), CollisionWorld())
+    sup = support_candidates(st, pag.supporter("stove"))[0]
+    return st, sup
+
+
+def test_leave_room_puts_samples_with_room_for_the_counter_first():
+    st, sup = kitchen_wall(counter_beside=True)
+    s = sup.surface
+    F = np.array([[-0.3, -0.3], [0.3, -0.3], [0.3, 0.3], [-0.3, 0.3]])  # the stove, unturned
+    # stove centres at world x = 3.6 (0.1 m left on its right: no counter fits), then 1.0
+    cramped, roomy = s.to_2d(np.array([[3.6, 1.5, 0.0], [1.0, 1.5, 0.0]]))
+    samples = np.array([cramped, roomy, cramped + [0, 0.1]])
+    out = _leave_room(st, "stove", sup, np.eye(3), F, sup.region, samples)
+    assert np.allclose(out, [roomy, cramped, cramped + [0, 0.1]])  # otherwise in order
+    # turned half round, the stove's right is world -x: at x = 1.0 only 0.7 m are left there,
+    # less than the smallest counter (0.85 m)
+    turned = _leave_room(st, "stove", sup, axis_angle(EZ, np.pi), F, sup.region,
+                         np.array([roomy, cramped]))
+    assert np.allclose(turned, [cramped, roomy])
+    # nothing to leave room for: the order is kept
+    st2, sup2 = kitchen_wall(counter_beside=False)
+    assert np.allclose(_leave_room(st2, "stove", sup2, np.eye(3), F, sup2.region, samples),
+                       samples)
