@@ -134,3 +134,29 @@ def test_leave_room_puts_samples_with_room_for_the_counter_first():
     st2, sup2 = kitchen_wall(counter_beside=False)
     assert np.allclose(_leave_room(st2, "stove", sup2, np.eye(3), F, sup2.region, samples),
                        samples)
+
+
+# ------------------------------------------------------------------- headroom of a shelf
+def test_in_a_rack_lower_than_the_drawn_instance_takes_a_lower_or_smaller_one():
+    """Three cereal boxes IN a grocery shelf whose gaps (0.22 m) are lower than most boxes
+    (0.22-0.29 m): the lowest instance is drawn, then shrunk within the category's range to
+    the free height, instead of failing with "no free space" after four tall draws."""
+    from parse3d.solver import solve
+    from parse3d.solver.placement import _extent
+
+    pag = PAG("cereal-aisle", Room("store", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
+    pag.add("rack", "grocery_shelf")
+    pag.relate("rack", "ON", "floor")
+    pag.relate("rack@back", "AGAINST", "wall_2")
+    for i in range(3):
+        pag.add(f"cereal_{i}", "cereal_box")
+        pag.relate(f"cereal_{i}", "IN", "rack:shelf")
+    scene = solve(pag, seed=8)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    rack = scene.objects["rack"]
+    for i in range(3):
+        o = scene.objects[f"cereal_{i}"]
+        gap = max(s.clearance for s in rack.asset.internal if s.part == o.support_choice.part)
+        assert o.scale * _extent(o.asset, 2) <= gap * rack.scale
+        lo, hi = o.asset.size_range
+        assert lo - 1e-9 <= o.scale * asset_geometry(o.asset).size <= hi + 1e-9

@@ -58,6 +58,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     total_trials = 0
     reqs = requirements(pag, oid)
     tried: set[str] = set()
+    headroom = _headroom(st, support_edge)
+    axis = _AXES[support_edge.child.surface or support_edge.spec.child_surface]
     for attempt in range(cfg.asset_attempts):
         category = node.candidates[int(rng.integers(len(node.candidates)))]
         asset = library.get(category, rng)
@@ -93,6 +95,20 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
         if keep is not None and attempt == 0:
             scale = keep.scale
+        elif scale * _extent(asset, axis) > HEADROOM_FIT * headroom:
+            # taller than every shelf it may go IN (a cereal box on a grocery shelf): the lowest
+            # untried instance, then shrunk to the free height within its category's range
+            alt = _alternative(library, node.candidates, reqs, tried, rng,
+                               key=lambda a: _extent(a, axis))
+            if alt is not None and _extent(alt[1], axis) < _extent(asset, axis):
+                category, asset = alt
+                tried.add(asset.asset_id)
+                lo, hi = asset.size_range
+                size = asset_geometry(asset).size
+                scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+            fit = HEADROOM_FIT * headroom / max(_extent(asset, axis), 1e-6)
+            if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
+                scale = min(scale, fit)
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale, support_edge,
                                                        others, rng, cfg,
@@ -111,6 +127,30 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         full = _full_checks(edges, skip, checks)
         return Placement(obj, body, full)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
+
+
+#: Fraction of a shelf's free height an instance chosen or shrunk to fit under it may fill.
+HEADROOM_FIT = 0.97
+
+#: Asset-frame axis of each surface label's normal.
+_AXES = {"top": 2, "bottom": 2, "front": 1, "back": 1, "right": 0, "left": 0}
+
+
+def _extent(asset: Asset, axis: int) -> float:
+    """The asset's extent (m, unit scale) along one of its own axes."""
+    return float(np.ptp(asset_geometry(asset).hull[:, axis]))
+
+
+def _headroom(st: SolveState, edge: Edge) -> float:
+    """The most free height (m) over the internal surfaces an ``IN`` child may rest on (the
+    tallest shelf gap of a rack); inf for other supports, open containers or an unplaced
+    parent."""
+    if edge.relation != "IN" or edge.parent.is_room_element:
+        return float("inf")
+    try:
+        return max(s.clearance for s in support_candidates(st, edge))
+    except Fail:
+        return float("inf")
 
 
 #: Footprint area a container needs per child IN it, in units of the child's typical size
@@ -253,10 +293,11 @@ def _space(reason: str) -> bool:
 
 
 def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,
-                 smallest: bool = False):
+                 smallest: bool = False, key=None):
     """An untried instance, over the candidate categories and a random sample of their pool
     slots, that meets ``reqs``: the first found, or with ``smallest`` the one with the
-    smallest footprint; None when there is none."""
+    smallest footprint, or with ``key`` (a function of the asset) the one of least key; None
+    when there is none."""
     load = getattr(library, "load", None)
     if load is None:
         return None
@@ -268,10 +309,13 @@ def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Gene
             asset = load(cat, int(slot))
             if asset.asset_id in tried or lacks(asset, reqs) is not None:
                 continue
-            if not smallest:
+            if key is not None:
+                area = float(key(asset))
+            elif not smallest:
                 return cat, asset
-            ext = np.ptp(asset_geometry(asset).bounds, axis=0)
-            area = float(ext[0] * ext[1])
+            else:
+                ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+                area = float(ext[0] * ext[1])
             if best is None or area < best[0]:
                 best = (area, cat, asset)
     return None if best is None else (best[1], best[2])
