@@ -160,3 +160,24 @@ def test_in_a_rack_lower_than_the_drawn_instance_takes_a_lower_or_smaller_one():
         assert o.scale * _extent(o.asset, 2) <= gap * rack.scale
         lo, hi = o.asset.size_range
         assert lo - 1e-9 <= o.scale * asset_geometry(o.asset).size <= hi + 1e-9
+
+
+# ------------------------------------------------------------------------ a slanted part
+def test_on_a_slanted_part_draws_an_instance_where_it_is_flat():
+    """An open grand piano's lid touches its bounding box's top along an edge only: it is no
+    support, so an object ON ``piano:lid`` makes the solver draw a piano whose lid is flat (an
+    upright), and says why a grand one does not do."""
+    from parse3d.solver import solve
+    from parse3d.solver.placement import lacks
+
+    need = [("lid", None, "ON score -> piano:lid", "free_top")]
+    assert "lid is slanted" in lacks(registry.generate("piano", seed=0), need)  # a grand
+    assert lacks(registry.generate("piano", seed=1), need) is None  # an upright
+    pag = PAG("piano-score", Room("music_room", ((0, 0), (5, 0), (5, 4.5), (0, 4.5)), 2.7))
+    pag.add("piano", "piano")
+    pag.relate("piano", "ON", "floor")
+    pag.add("score", "sheet_music")
+    pag.relate("score", "ON", "piano:lid")
+    scene = solve(pag, seed=0)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert lacks(scene.objects["piano"].asset, need) is None

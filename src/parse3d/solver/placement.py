@@ -22,7 +22,7 @@ from .geometry import asset_geometry, drop_distance, part_points
 from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
-from .support import Support, filled, support_candidates
+from .support import Support, _flat_cached, filled, support_candidates
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
@@ -236,6 +236,9 @@ def lacks(asset: Asset, reqs) -> str | None:
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
         elif kind == "free_top":
             if not any(_free_top(asset, p) for p in ps):
+                if not any(_flat_cached(asset.asset_id, p, "top") for p in ps):
+                    return (f"{asset.asset_id}'s {label} is slanted: its top is no surface to "
+                            f"stand on ({text})")
                 return (f"{asset.asset_id}'s {label} top is mostly covered by its other parts, "
                         f"no room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
         elif kind.startswith("extreme:"):
@@ -258,11 +261,14 @@ _FREE_TOP: dict[tuple[str, str], bool] = {}
 
 
 def _free_top(asset: Asset, part) -> bool:
-    """Whether the part's top face has a ``FREE_TOP``-wide patch, or half its area, that the
-    asset's other parts do not cover within 20 cm above it (a top-loading washer's lid covers
-    most of its top)."""
+    """Whether the part's top face is flat (not a slanted part touching its bounding box's top
+    along an edge only) and has a ``FREE_TOP``-wide patch, or half its area, that the asset's
+    other parts do not cover within 20 cm above it (a top-loading washer's lid covers most of
+    its top)."""
     key = (asset.asset_id, part.name)
     got = _FREE_TOP.get(key)
+    if got is None and not _flat_cached(asset.asset_id, part, "top"):
+        got = _FREE_TOP[key] = False  # slanted (an open grand piano's lid): nothing stands on it
     if got is None:
         s = part.surfaces["top"]
         free = filled(s.polygon)
