@@ -181,3 +181,24 @@ def test_on_a_slanted_part_draws_an_instance_where_it_is_flat():
     scene = solve(pag, seed=0)
     assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
     assert lacks(scene.objects["piano"].asset, need) is None
+
+
+# ------------------------------------------------------------ a support of several parts
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_suitcase_rests_across_a_luggage_racks_straps(seed):
+    """``ON rack:strap`` names three straps at one level: a suitcase's feet stand on the outer
+    straps with its centre of mass over the gap between them (no strap alone holds it)."""
+    from parse3d.measure import check_edge
+    from parse3d.solver import solve
+
+    pag = PAG("luggage", Room("storage", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
+    pag.add("rack", "luggage_rack")
+    pag.relate("rack", "ON", "floor")
+    pag.relate("rack@back", "AGAINST", "wall_0")
+    pag.add("case", "suitcase")
+    pag.relate("case", "ON", "rack:strap")
+    scene = solve(pag, seed=seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    case = scene.objects["case"]
+    holds, res, _ = check_edge(scene, pag.supporter("case"), case)
+    assert holds and res["com_inside"] == 1.0

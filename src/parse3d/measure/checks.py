@@ -550,7 +550,7 @@ def _check_on(ctx: CheckContext) -> Check:
         return c
     res = dict(c.residual)
     com = ctx.child.transform(ctx.settled) @ np.r_[asset_geometry(ctx.child.asset).com, 1.0]
-    inside = _in_polygon(sB, com[:3])
+    inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
@@ -559,6 +559,34 @@ def _check_on(ctx: CheckContext) -> Check:
         res["com_inside"] = 0.0
         return Check(False, res, "centre of mass outside the object's own base: it would tip over")
     return Check(True, res, c.detail)
+
+
+#: Metres within which the tops of parts count as one level (a luggage rack's straps).
+LEVEL_TOL = 5e-3
+
+
+def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
+    """Whether ``p3`` projects inside the convex hull of the tops of every part the parent
+    reference names (a label without ``#k``) at the level of ``sB``: what rests across a
+    luggage rack's straps has them all as its support polygon."""
+    ref, pobj = ctx.edge.parent, ctx.parent
+    if pobj is None or ref.part is None or ref.index is not None:
+        return False
+    from shapely.geometry import MultiPoint, Point
+
+    T = pobj.transform(ctx.settled)
+    pts = []
+    for p in select_parts(pobj, ref):
+        s = p.surfaces["top"].transformed(T)
+        if abs(float((s.origin - sB.origin) @ sB.normal)) <= LEVEL_TOL \
+                and float(s.normal @ sB.normal) > 0.999:
+            pts.append(s.outline_3d())
+    if len(pts) < 2:
+        return False
+    d = np.vstack(pts) - sB.origin
+    hull = MultiPoint(np.c_[d @ sB.u, d @ sB.v]).convex_hull
+    return bool(hull.distance(Point(float((p3 - sB.origin) @ sB.u),
+                                     float((p3 - sB.origin) @ sB.v))) <= 1e-3)
 
 
 #: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.

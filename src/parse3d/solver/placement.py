@@ -585,7 +585,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
-    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, _plane_key(s), cfg.margin),
+    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, _plane_key(s), cfg.margin),
                       lambda: _inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
@@ -626,7 +626,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                                  step=step)
                 solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
                     if holes else region0
-                region = shapely.affinity.translate(solid, -float(com @ s.u), -float(com @ s.v))
+                # across several parts (a suitcase on a luggage rack's straps): the centre of
+                # mass anywhere over their hull, the base on the parts (checked per sample)
+                over = region0 if sup.spans else solid
+                region = shapely.affinity.translate(over, -float(com @ s.u), -float(com @ s.v))
                 region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
                 room = st.scene.room.elements["floor"].surface
                 fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))

@@ -2,10 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import shapely
+import shapely.affinity
 from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
@@ -38,6 +39,10 @@ class Support:
     holes : list of (K, 2) float
         Deep holes of the surface (a sink cut-out; not a plate's shallow well), in plane
         coordinates: filled in ``region``, obstacles for placement.
+    spans : bool
+        The surface spans several parts at one level (a luggage rack's straps): ``region`` is
+        their convex hull, ``holes`` the gaps between them; what rests on it may straddle the
+        gaps with its base on the parts.
     """
 
     surface: Surface
@@ -45,6 +50,7 @@ class Support:
     region: BaseGeometry
     clearance: float = float("inf")
     holes: list = field(default_factory=list)
+    spans: bool = False
 
     @property
     def owner(self) -> str:
@@ -236,4 +242,35 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         raise Fail(f"{rel}: no surface of {ref} faces the right way for {rel}")
     if rel == "ON" and ref.surface is None and len(out) > 1:
         out.sort(key=lambda s: -s.surface.origin[2])
+    if rel == "ON" and ref.part is not None and ref.index is None and len(out) > 1:
+        span = _span(out)
+        if span is not None:  # tried after each part alone
+            out.append(span)
     return out
+
+
+#: Metres within which parts' upward surfaces count as one level (a rack's straps or bars).
+LEVEL_TOL = 5e-3
+
+
+def _span(sups: list[Support]) -> Support | None:
+    """One support over the parts at the level of the first of ``sups`` (a luggage rack's
+    three straps, a cradle's bars): their convex hull, with the gaps between them as holes;
+    None when fewer than two parts share that level."""
+    s0 = sups[0].surface
+    level = [x for x in sups if abs(float((x.surface.origin - s0.origin) @ s0.normal)) <= LEVEL_TOL
+             and np.allclose(x.surface.normal, s0.normal, atol=1e-6)
+             and np.allclose(x.surface.u, s0.u, atol=1e-6)]
+    if len(level) < 2:
+        return None
+    pieces = []
+    for x in level:
+        d = x.surface.origin - s0.origin
+        pieces.append(shapely.affinity.translate(filled(x.region), float(d @ s0.u),
+                                                 float(d @ s0.v)))
+    union = shapely.union_all(pieces)
+    hull = union.convex_hull
+    gaps = hull.difference(union)
+    holes = [np.asarray(g.exterior.coords)[:-1] for g in getattr(gaps, "geoms", [gaps])
+             if isinstance(g, Polygon) and not g.is_empty and g.area > 1e-8]
+    return Support(replace(s0, polygon=hull), sups[0].choice, hull, holes=holes, spans=True)
