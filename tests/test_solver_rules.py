@@ -202,3 +202,25 @@ def test_a_suitcase_rests_across_a_luggage_racks_straps(seed):
     case = scene.objects["case"]
     holds, res, _ = check_edge(scene, pag.supporter("case"), case)
     assert holds and res["com_inside"] == 1.0
+
+
+# -------------------------------------------------------------------------- a stack base
+def test_the_base_of_a_stack_is_an_instance_that_does_not_roll():
+    """``towel_1 ON towel_0``: the lower towel is the base of a stack of its kind, so a rolled
+    towel (round above and below) is no instance for it; a folded one is."""
+    from parse3d.solver.placement import lacks, requirements
+
+    pag = PAG("towels", Room("bathroom", ((0, 0), (3, 0), (3, 2.5), (0, 2.5)), 2.6))
+    pag.add("shelf", "bookcase")
+    pag.relate("shelf", "ON", "floor")
+    pag.add("towel_0", "towel")
+    pag.relate("towel_0", "IN", "shelf:shelf")
+    pag.add("towel_1", "towel")
+    pag.relate("towel_1", "ON", "towel_0")
+    need = [r for r in requirements(pag, "towel_0") if r[3] == "stack_base"]
+    assert need and not [r for r in requirements(pag, "towel_1") if r[3] == "stack_base"]
+    rolled = registry.generate("towel", seed=1)
+    folded = registry.generate("towel", seed=2)
+    assert "rolled" in rolled.asset_id and "folded" in folded.asset_id
+    assert "would roll" in lacks(rolled, need)
+    assert lacks(folded, need) is None

@@ -22,7 +22,7 @@ from .geometry import asset_geometry, drop_distance, part_points
 from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
-from .support import Support, _flat_cached, filled, support_candidates
+from .support import Support, _flat_cached, _flat_enough, filled, support_candidates
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
@@ -202,11 +202,16 @@ def touching(pag, oid: str) -> list[Edge]:
 def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
     """What the object's asset must have, from every relation naming one of its parts:
     ``(part label, index or None, relation text, kind)`` with kind ``part`` (the part and
-    ``#k`` exist), ``internal`` (an IN parent part holds an internal support surface) or
-    ``extreme:<label>`` (an AGAINST child part reaches furthest along its surface normal)."""
+    ``#k`` exist), ``internal`` (an IN parent part holds an internal support surface),
+    ``free_top`` (an ON parent part is flat with room on top), ``stack_base`` (an ON parent of
+    the child's own category does not roll: the base of a stack) or ``extreme:<label>`` (an
+    AGAINST child part reaches furthest along its surface normal)."""
     out = []
     for e in touching(pag, oid):
         text = f"{e.relation} {e.child} -> {e.parent}"
+        if e.parent.object == oid and e.relation == "ON" and e.child.object != oid and set(
+                pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
+            out.append((e.parent.part, e.parent.index, text, "stack_base"))
         for ref, role in ((e.child, "child"), (e.parent, "parent")):
             if ref.object != oid or ref.part is None:
                 continue
@@ -224,6 +229,11 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
 def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
     for label, idx, text, kind in reqs:
+        if kind == "stack_base" and label is None:
+            if not any(_lies_flat(asset, p) for p in asset.parts):
+                return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "
+                        f"to stack on ({text})")
+            continue
         ps = asset.parts_by_label(label)
         if not ps:
             return f"{asset.asset_id} has no part {label!r} ({text})"
@@ -241,6 +251,10 @@ def lacks(asset: Asset, reqs) -> str | None:
                             f"stand on ({text})")
                 return (f"{asset.asset_id}'s {label} top is mostly covered by its other parts, "
                         f"no room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
+        elif kind == "stack_base":
+            if not any(_lies_flat(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} would roll: neither its top nor its bottom "
+                        f"is flat to stack on ({text})")
         elif kind.startswith("extreme:"):
             n = np.asarray(SURFACES[kind.split(":")[1]], float)
             side = kind.split(":")[1]
@@ -258,6 +272,26 @@ def lacks(asset: Asset, reqs) -> str | None:
 #: Width (m) of the smallest item a part's top must have room for (stage 1's reachability).
 FREE_TOP = 0.08
 _FREE_TOP: dict[tuple[str, str], bool] = {}
+
+
+#: Metres within which a stack base's top or bottom face must lie over half its area.
+FLAT_TOL = 3e-3
+
+_LIES_FLAT: dict[tuple[str, str], bool] = {}
+
+
+def _lies_flat(asset: Asset, part) -> bool:
+    """Whether the part's top or bottom is flat (within ``FLAT_TOL`` over half its bounding
+    box face): a folded towel or a box can be the base of a stack of its kind; a rolled towel,
+    round above and below, would roll away under the next one."""
+    key = (asset.asset_id, part.name)
+    got = _LIES_FLAT.get(key)
+    if got is None:
+        if len(_LIES_FLAT) > 8192:
+            _LIES_FLAT.clear()
+        got = _LIES_FLAT[key] = any(_flat_enough(part, lb, tol=FLAT_TOL, frac=0.5)
+                                    for lb in ("top", "bottom"))
+    return got
 
 
 def _free_top(asset: Asset, part) -> bool:
