@@ -84,9 +84,15 @@ def _process_state(config: BuildConfig) -> tuple[Any, Any]:
 
 
 def run_task(config: BuildConfig, index: int) -> SceneOutcome:
-    """Build one scene with this process's source and renderer (the task of every executor)."""
+    """Build one scene with this process's source and renderer (the task of every executor),
+    then trim the process's per-asset caches so that memory stays bounded over many scenes."""
+    from .memory import bound_caches
+
     source, renderer = _process_state(config)
-    return build_scene(config, index, source=source, renderer=renderer)
+    try:
+        return build_scene(config, index, source=source, renderer=renderer)
+    finally:
+        bound_caches(renderer)
 
 
 # --------------------------------------------------------------------------------------------
