@@ -1,11 +1,14 @@
-"""A dataset worker's per-asset caches stay bounded, and trimming them changes no output."""
+"""A dataset worker: its per-asset caches stay bounded and trimming them changes no output;
+what it derives per new asset agrees with the reference computation."""
 
 from __future__ import annotations
 
 import json
 from collections import OrderedDict
 
+import numpy as np
 import pytest
+import trimesh
 
 from parse3d.datagen.build import BuildConfig, build_scene, resolve_pag_paths
 from parse3d.datagen.memory import BVH_ENTRIES, _trim, bound_caches, cache_sizes
@@ -68,3 +71,34 @@ def test_a_scene_built_on_emptied_caches_is_the_same(tmp_path, renderer):
     assert cold.record["status"] == "ok"
     assert sorted(cold.files) == sorted(warm.files)
     assert _files(cold) == _files(warm)  # scene.json, contacts.json, scene.glb, preview.png
+
+
+def _meshes() -> dict[str, trimesh.Trimesh]:
+    box = trimesh.creation.box((1.0, 2.0, 0.5))
+    cyl = trimesh.creation.cylinder(0.3, 1.0, sections=24)
+    f = np.asarray(box.faces)
+    flipped = f.copy()
+    flipped[3] = flipped[3, ::-1]  # one face wound the other way: watertight, inconsistent
+    return {
+        "box": box, "cylinder": cyl, "sphere": trimesh.creation.icosphere(2),
+        "inside-out": trimesh.Trimesh(box.vertices, f[:, ::-1], process=False),
+        "open": trimesh.Trimesh(box.vertices, f[:-1], process=False),
+        "flipped face": trimesh.Trimesh(box.vertices, flipped, process=False),
+        "doubled face": trimesh.Trimesh(box.vertices, np.vstack([f, f[:1]]), process=False),
+        "plane": trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], process=False),
+        "empty": trimesh.Trimesh(np.zeros((0, 3)), np.zeros((0, 3), int), process=False),
+    }
+
+
+@pytest.mark.parametrize("name", sorted(_meshes()))
+def test_closed_agrees_with_trimesh(name):
+    from parse3d.render.renderer import _closed
+
+    mesh = _meshes()[name]
+    copy = mesh.copy()
+    try:
+        want = bool(copy.is_watertight and copy.is_winding_consistent and copy.volume > 0)
+    except (ValueError, IndexError):
+        want = False
+    assert _closed(mesh) == want
+    assert want == (name in ("box", "cylinder", "sphere"))
