@@ -5,7 +5,7 @@ Usage::
     python benchmarks/bench_dataset.py                      # 40 template scenes, 2 workers
     python benchmarks/bench_dataset.py --scenes 48 --workers 2 --views 2
     python benchmarks/bench_dataset.py --pags examples/     # the example PAGs instead
-    python benchmarks/bench_dataset.py --baseline-rev 4607b75   # also the same build at REV
+    python benchmarks/bench_dataset.py --baseline-rev 20249ea   # also the same build at REV
     python benchmarks/bench_dataset.py --scenes 200 --workers 1 # a worker's RSS after 200 scenes
 
 Builds ``--scenes`` scenes with the local executor (expand, solve, settle, contacts, render,
@@ -17,8 +17,15 @@ write; exactly what ``parse3d dataset build`` runs), then prints:
 * the share that is no pipeline stage: inside the task (planning, serialising the folder's
   files) and outside it (worker start-up and imports, handing scenes and files between the
   worker and the driver, the driver's writes, idle workers at the end);
+* CPU seconds per scene: per stage (recorded by the workers), outside the tasks (start-up,
+  IPC, cache upkeep), every worker process together (sampled from ``/proc``) and the driver;
+  from the workers' CPU per scene the *idle-equivalent* rate, ``workers x 3600 / CPU per
+  scene``: what the build makes when every worker has a core of its own. On a loaded machine
+  compare that and the CPU figures, not the wall-clock ones;
 * a fresh worker's start-up (imports, scene source, GL context) measured on its own;
-* the peak resident memory of the largest worker process (sampled from ``/proc``).
+* the resident memory of the largest worker after 1, 10, 25, 50, 100, 150, 200 ... scenes, and
+  its peak (sampled from ``/proc``). ``--scenes 200 --workers 1`` has one worker build all 200
+  (it is replaced after ``--max-tasks`` scenes, 200 by default).
 
 The asset pool is the one under ``$PARSE3D_CACHE``: on an empty cache the first scenes also
 generate their assets (run twice to see the cached rate). ``--baseline-rev REV`` builds the
@@ -69,29 +76,50 @@ def _descendants(pid: int) -> list[int]:
     return out
 
 
-def _hwm_mb(pid: int) -> float:
+def _proc(pid: int) -> tuple[float, float, float]:
+    """``(VmRSS MB, VmHWM MB, CPU seconds)`` of a process; zeros when it is gone."""
+    rss = hwm = cpu = 0.0
     try:
         with open(f"/proc/{pid}/status") as f:
             for line in f:
-                if line.startswith("VmHWM:"):
-                    return int(line.split()[1]) / 1024.0
-    except OSError:
+                if line.startswith("VmRSS:"):
+                    rss = int(line.split()[1]) / 1024.0
+                elif line.startswith("VmHWM:"):
+                    hwm = int(line.split()[1]) / 1024.0
+        with open(f"/proc/{pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        cpu = (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")  # utime + stime
+    except (OSError, IndexError, ValueError):
         pass
-    return 0.0
+    return rss, hwm, cpu
 
 
-class _RssWatch:
-    """Samples the peak RSS (VmHWM) of this process's descendants every ``period`` s."""
+class _Watch:
+    """Samples the processes below this one every ``period`` s: the peak resident memory
+    (VmHWM) of the largest, the current VmRSS of the largest, and the CPU seconds of each
+    (the last sample of a process that ends is kept, so at most ``period`` of it is lost)."""
 
-    def __init__(self, period: float = 0.5):
-        self.period, self.peak = period, 0.0
+    def __init__(self, period: float = 0.25):
+        self.period, self.peak, self.rss = period, 0.0, 0.0
+        self.cpu: dict[int, float] = {}
         self._stop = threading.Event()
         self._t = threading.Thread(target=self._run, daemon=True)
 
+    def sample(self) -> None:
+        now = 0.0
+        for p in _descendants(os.getpid()):
+            rss, hwm, cpu = _proc(p)
+            self.peak, now = max(self.peak, hwm), max(now, rss)
+            self.cpu[p] = max(self.cpu.get(p, 0.0), cpu)
+        self.rss = now
+
     def _run(self) -> None:
         while not self._stop.wait(self.period):
-            for p in _descendants(os.getpid()):
-                self.peak = max(self.peak, _hwm_mb(p))
+            self.sample()
+
+    @property
+    def cpu_seconds(self) -> float:
+        return sum(self.cpu.values())
 
     def __enter__(self):
         self._t.start()
@@ -138,26 +166,46 @@ def measure(args) -> dict:
         out = Path(args.out) if args.out else Path(tmp) / "ds"
         if (out / "manifest.parquet").exists():
             raise SystemExit(f"{out} already holds a dataset: pass a fresh --out")
-        with _RssWatch() as rss:
-            t0 = time.perf_counter()
-            build_dataset(cfg, out, workers=args.workers)
-            wall = time.perf_counter() - t0
+        trace: list[tuple[int, float]] = []  # (scenes done, largest worker's RSS now)
+
+        def progress(ev) -> None:
+            if ev.done in marks:
+                watch.sample()
+                trace.append((ev.done, watch.rss))
+
+        marks = {n for n in (1, 10, 25, 50, 100, 150, 200, 300, 500) if n <= args.scenes}
+        marks.add(args.scenes)
+        with _Watch() as watch:
+            t0, c0 = time.perf_counter(), time.process_time()
+            build_dataset(cfg, out, workers=args.workers, max_tasks=args.max_tasks,
+                          progress=progress)
+            wall, driver = time.perf_counter() - t0, time.process_time() - c0
+            watch.sample()
         rows = read_manifest(out / "manifest.parquet")
-    return {"wall": wall, "workers": args.workers, "startup": start, "peak_rss_mb": rss.peak,
-            "rows": [{k: r[k] for k in ("index", "status", "objects", "placed", "contacts",
-                                        *(f"t_{s}" for s in STAGES), "t_total")} for r in rows]}
+    keys = ("index", "status", "objects", "placed", "contacts",
+            *(f"{p}_{s}" for p in ("t", "cpu") for s in (*STAGES, "total")))
+    return {"wall": wall, "workers": args.workers, "startup": start, "peak_rss_mb": watch.peak,
+            "worker_cpu": watch.cpu_seconds, "driver_cpu": driver, "rss_trace": trace,
+            "rows": [{k: r.get(k) for k in keys} for r in rows]}
+
+
+def _mean(v: list) -> float | None:
+    v = [x for x in v if x is not None]
+    return statistics.mean(v) if v else None
 
 
 def summarize(res: dict) -> dict:
     rows, wall, workers = res["rows"], res["wall"], res["workers"]
     ok = [r for r in rows if r["status"] in ("ok", "incomplete")]
+    n = max(1, len(rows))
     budget = wall * workers  # worker-seconds available
     s = {"scenes": len(rows), "ok": sum(r["status"] == "ok" for r in rows),
          "incomplete": sum(r["status"] == "incomplete" for r in rows),
          "failed": sum(r["status"] in ("failed", "timeout") for r in rows),
          "rate": 3600.0 * len(rows) / wall, "wall": wall,
          "placed": statistics.mean(r["placed"] or 0 for r in ok) if ok else 0.0,
-         "peak_rss_mb": res["peak_rss_mb"], "startup": res["startup"]}
+         "peak_rss_mb": res["peak_rss_mb"], "startup": res["startup"],
+         "rss_trace": dict(res.get("rss_trace") or [])}
     for st in STAGES:
         v = [r[f"t_{st}"] or 0.0 for r in ok] or [0.0]
         s[st] = (statistics.mean(v), statistics.median(v), max(v))
@@ -167,27 +215,49 @@ def summarize(res: dict) -> dict:
     in_task = sum((r["t_total"] or 0.0) - sum(r[f"t_{st}"] or 0.0 for st in STAGES) for r in rows)
     s["share_in_task"] = 100.0 * in_task / budget
     s["share_outside"] = 100.0 * (budget - sum(r["t_total"] or 0.0 for r in rows)) / budget
+    # CPU seconds: per stage from the manifest (recorded by the worker), all of it from /proc
+    for st in (*STAGES, "total"):
+        s[f"cpu_{st}"] = _mean([r.get(f"cpu_{st}") for r in ok])
+    cpu = res.get("worker_cpu") or 0.0
+    s["cpu_scene"] = cpu / n  # every worker process's CPU, start-up and IPC included
+    tasks = sum(r.get("cpu_total") or 0.0 for r in rows)
+    s["cpu_outside"] = (cpu - tasks) / n if any(r.get("cpu_total") for r in rows) else None
+    s["cpu_driver"] = (res.get("driver_cpu") or 0.0) / n
+    # on an idle machine every worker has a core of its own: workers x 3600 / CPU per scene
+    s["idle_rate"] = 3600.0 * workers / s["cpu_scene"] if cpu > 0 else 0.0
     return s
+
+
+def _opt(fmt: str):
+    return lambda v: "n/a" if v is None else format(v, fmt)
 
 
 def print_table(now: dict, before: dict | None, rev: str | None) -> None:
     cols = [("now", summarize(now))] + ([(rev[:10], summarize(before))] if before else [])
-    head = f"{'':34s}" + "".join(f"{name:>14s}" for name, _ in cols)
+    head = f"{'':38s}" + "".join(f"{name:>14s}" for name, _ in cols)
     print(head)
 
     def line(label: str, fmt, key=None) -> None:
-        print(f"{label:34s}" + "".join(f"{fmt(s if key is None else s[key]):>14s}"
+        print(f"{label:38s}" + "".join(f"{fmt(s if key is None else s[key]):>14s}"
                                         for _, s in cols))
 
     line("scenes (ok/incomplete/failed)", lambda s: f"{s['ok']}/{s['incomplete']}/{s['failed']}")
     line("placed objects per scene", lambda v: f"{v:.1f}", "placed")
     line("wall, s", lambda v: f"{v:.1f}", "wall")
-    line("scenes/hour (goal >= 5,000)", lambda v: f"{v:,.0f}", "rate")
-    line("10,000 scenes take", lambda s: _hours(10000 * s["wall"] / max(1, s["scenes"])))
-    print("per scene, s (mean / median)")
+    line("scenes/hour, wall (goal >= 5,000)", lambda v: f"{v:,.0f}", "rate")
+    line("10,000 scenes take, wall", lambda s: _hours(10000 * s["wall"] / max(1, s["scenes"])))
+    print("CPU seconds per scene (do not grow with the machine's load)")
+    for st in (*STAGES, "total"):
+        line(f"  {st}", _opt(".3f"), f"cpu_{st}")
+    line("  not a stage: worker outside tasks", _opt(".3f"), "cpu_outside")
+    line("  every worker process, all of it", _opt(".3f"), "cpu_scene")
+    line("  the driver (commits, manifest)", _opt(".3f"), "cpu_driver")
+    line("idle-equivalent scenes/hour", lambda v: f"{v:,.0f}", "idle_rate")
+    print("  (workers x 3600 / worker CPU per scene: the rate with a free core per worker)")
+    print("wall seconds per scene (mean / median)")
     for st in (*STAGES, "total"):
         line(f"  {st}", lambda v: f"{v[0]:.3f}/{v[1]:.3f}", st)
-    print("share of the workers' time (workers x wall), %")
+    print("share of the workers' wall time (workers x wall), %")
     for st in STAGES:
         line(f"  {st}", lambda v: f"{v:.1f}", f"share_{st}")
     line("  not a stage, in the task", lambda v: f"{v:.1f}", "share_in_task")
@@ -196,7 +266,16 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
     line("  imports", lambda v: f"{v['imports']:.2f}", "startup")
     line("  scene source + GL context", lambda v: f"{v['state']:.2f}", "startup")
     line("  whole process", lambda v: f"{v['process']:.2f}", "startup")
+    marks = sorted(set().union(*(s["rss_trace"] for _, s in cols)))
+    if marks:
+        print("largest worker's RSS after n scenes, MB")
+        for m in marks:
+            line(f"  {m}", lambda s, m=m: _opt(",.0f")(s["rss_trace"].get(m)))
     line("peak worker RSS, MB (goal <= 1536)", lambda v: f"{v:,.0f}", "peak_rss_mb")
+    if before:
+        a, b = cols[0][1], cols[1][1]
+        if a["cpu_scene"] > 0 and b["cpu_scene"] > 0:
+            print(f"worker CPU per scene, {rev[:10]} / now: {b['cpu_scene'] / a['cpu_scene']:.2f}x")
 
 
 def baseline(rev: str, argv: list[str]) -> dict:
@@ -218,6 +297,10 @@ def main() -> None:
     ap.add_argument("--rooms", default="", help="comma-separated room types (default: all)")
     ap.add_argument("--pags", nargs="*", default=None,
                     help="PAG files or folders to build from instead of the templates")
+    ap.add_argument("--max-tasks", type=int, default=200,
+                    help="scenes a worker builds before it is replaced (as parse3d dataset "
+                         "build --max-tasks); with --workers 1 and --scenes N <= this, one "
+                         "worker builds them all and its RSS is traced")
     ap.add_argument("--out", default=None, help="dataset folder (default: a temporary one)")
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="also build the same scenes with git revision REV, e.g. 4607b75")
@@ -234,7 +317,8 @@ def main() -> None:
         return
     before = None
     if args.baseline_rev:
-        argv = ["--scenes", str(args.scenes), "--workers", str(args.workers), "--views",
+        argv = ["--scenes", str(args.scenes), "--workers", str(args.workers),
+                "--max-tasks", str(args.max_tasks), "--views",
                 str(args.views), "--seed", str(args.seed), "--rooms", args.rooms]
         if args.pags:
             argv += ["--pags", *args.pags]

@@ -165,8 +165,9 @@ def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "loca
     max_tasks : int
         Scenes a local worker process builds before it is replaced (bounds memory).
     flush_every : float
-        Seconds between manifest rewrites (finished scenes are durable at once through their
-        own records; the manifest is always rewritten at the end).
+        Seconds between manifest rewrites, at least (finished scenes are durable at once
+        through their own records; the manifest is always rewritten at the end). On a long
+        build the interval grows to 20 times the CPU time of one rewrite.
     progress : callable or None
         Called with a :class:`BuildEvent` for every finished scene.
     warn : callable or None
@@ -232,7 +233,7 @@ def _build_locked(config: BuildConfig, config_run: BuildConfig, out: Path, sourc
     resumed = sum(1 for i in rows if i < config.scenes)
     todo = [i for i in range(config.scenes) if i not in rows]
     t0 = time.perf_counter()
-    last_flush = t0
+    last_flush, flush_cost = t0, 0.0
     built = 0
     (out / "scenes").mkdir(exist_ok=True)
 
@@ -252,8 +253,12 @@ def _build_locked(config: BuildConfig, config_run: BuildConfig, out: Path, sourc
                 if progress is not None:
                     ok, bad = counts()
                     progress(BuildEvent(outcome.record, ok + bad, config.scenes, ok, bad))
-                if time.perf_counter() - last_flush >= flush_every:
+                if time.perf_counter() - last_flush >= max(flush_every, 20.0 * flush_cost):
+                    # the whole table is rewritten: on a long build, less often (at most
+                    # about 5% of the driver's time), so it does not take a worker's core
+                    c = time.process_time()
                     write_manifest(out / "manifest.parquet", list(rows.values()))
+                    flush_cost = time.process_time() - c
                     last_flush = time.perf_counter()
     finally:
         write_manifest(out / "manifest.parquet", list(rows.values()))

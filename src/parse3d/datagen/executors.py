@@ -84,9 +84,15 @@ def _process_state(config: BuildConfig) -> tuple[Any, Any]:
 
 
 def run_task(config: BuildConfig, index: int) -> SceneOutcome:
-    """Build one scene with this process's source and renderer (the task of every executor)."""
+    """Build one scene with this process's source and renderer (the task of every executor),
+    then trim the process's per-asset caches so that memory stays bounded over many scenes."""
+    from .memory import bound_caches
+
     source, renderer = _process_state(config)
-    return build_scene(config, index, source=source, renderer=renderer)
+    try:
+        return build_scene(config, index, source=source, renderer=renderer)
+    finally:
+        bound_caches(renderer)
 
 
 # --------------------------------------------------------------------------------------------
@@ -98,6 +104,11 @@ def _worker_main(conn, config: BuildConfig, max_tasks: int, source) -> None:
     _PROCESS.clear()  # nothing of the driver's (a GL context above all) is reused
     if source is not None:  # handed over by the driver: templates are not loaded again
         _PROCESS.update(key=repr(config.source), source=source)
+    from .. import export, physics, pipeline  # noqa: F401 - the stages' modules, once
+    from .memory import freeze_startup
+
+    _process_state(config)  # the scene source and the GL context
+    freeze_startup()  # full collections then skip all of that
     for _ in range(max_tasks):
         try:
             index = conn.recv()

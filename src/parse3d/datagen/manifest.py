@@ -45,6 +45,10 @@ parts : list of int32
     Number of parts of every placed object, in the same order.
 t_expand, t_solve, t_settle, t_contacts, t_render, t_write, t_total : float64
     Seconds per stage (``t_total``: the whole task, in the worker).
+cpu_expand, cpu_solve, cpu_settle, cpu_contacts, cpu_render, cpu_write, cpu_total : float64
+    CPU seconds of the worker process per stage (all its threads): unlike the wall-clock
+    ``t_*`` they do not grow when other processes share the cores. Null in manifests written
+    before they were recorded.
 """
 
 from __future__ import annotations
@@ -63,7 +67,8 @@ STATUSES = ("ok", "incomplete", "failed", "timeout")
 #: Statuses whose scene folder is written (``DIR/scenes/<index>/``).
 COMMITTED = ("ok", "incomplete")
 TIMING_COLUMNS = ("t_expand", "t_solve", "t_settle", "t_contacts", "t_render", "t_write",
-                  "t_total")
+                  "t_total", "cpu_expand", "cpu_solve", "cpu_settle", "cpu_contacts",
+                  "cpu_render", "cpu_write", "cpu_total")
 
 
 def _columns() -> list[tuple[str, str]]:

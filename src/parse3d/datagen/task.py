@@ -37,6 +37,10 @@ class SceneOutcome:
     error: str | None = None
 
 
+#: The timed stages of a scene, in order (``t_<stage>`` and ``cpu_<stage>`` of its record).
+STAGES = ("expand", "solve", "settle", "contacts", "render", "write")
+
+
 class SceneTimeout(BaseException):
     """A scene ran past the build's time limit.
 
@@ -50,12 +54,15 @@ class _Stage:
     def __init__(self) -> None:
         self.name = "plan"
         self.times: dict[str, float] = {}
+        self.cpu: dict[str, float] = {}  # CPU seconds of this process (all its threads)
         self._t = time.perf_counter()
+        self._c = time.process_time()
 
     def enter(self, name: str) -> None:
-        now = time.perf_counter()
+        now, cpu = time.perf_counter(), time.process_time()
         self.times[self.name] = self.times.get(self.name, 0.0) + now - self._t
-        self.name, self._t = name, now
+        self.cpu[self.name] = self.cpu.get(self.name, 0.0) + cpu - self._c
+        self.name, self._t, self._c = name, now, cpu
 
 
 def _on_alarm(signum, frame):
@@ -98,7 +105,7 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
     them with the manifest row. Never raises for a scene that fails: the exception, or the
     stage in which ``config.time_limit`` ran out, goes into the row.
     """
-    wall = time.perf_counter()
+    wall, cpu = time.perf_counter(), time.process_time()
     stage = _Stage()
     source = source if source is not None else make_source(config)
     plan = plan_scene(config, source, index)
@@ -120,7 +127,7 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
             stage.enter("done")
             record["reason"] = "no object could be placed: " + "; ".join(
                 f"{o.id}: {o.reason}" for o in scene.failed[:3])
-            return SceneOutcome(_finish(record, stage, wall))
+            return SceneOutcome(_finish(record, stage, wall, cpu))
         stage.enter("render")
         tmp = Path(tempfile.mkdtemp(prefix="parse3d-scene-"))
         _render(scene, tmp, config, plan, renderer)
@@ -138,18 +145,18 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
             record["reason"] = f"{len(scene.failed)} object(s) failed: " + "; ".join(
                 f"{o.id}: {o.reason}" for o in scene.failed[:3])
         record["scene"] = scene_folder(plan.index)
-        return SceneOutcome(_finish(record, stage, wall), files)
+        return SceneOutcome(_finish(record, stage, wall, cpu), files)
     except SceneTimeout:
         where = stage.name
         stage.enter("done")
         record["status"] = "timeout"
         record["reason"] = f"ran past the {config.time_limit:g} s time limit during {where}"
-        return SceneOutcome(_finish(record, stage, wall))
+        return SceneOutcome(_finish(record, stage, wall, cpu))
     except Exception as e:
         stage.enter("done")
         record["status"] = "failed"
         record["reason"] = _reason(e)
-        return SceneOutcome(_finish(record, stage, wall), error=traceback.format_exc())
+        return SceneOutcome(_finish(record, stage, wall, cpu), error=traceback.format_exc())
     finally:
         if use_alarm:
             signal.setitimer(signal.ITIMER_REAL, 0.0)
@@ -200,15 +207,9 @@ def _render(scene, out: Path, config: BuildConfig, plan: ScenePlan, renderer) ->
                           "size": [w, h]})
 
 
-def _finish(record: dict[str, Any], stage: _Stage, wall: float) -> dict[str, Any]:
-    t = stage.times
-    record.update({
-        "t_expand": round(t.get("expand", 0.0), 6),
-        "t_solve": round(t.get("solve", 0.0), 6),
-        "t_settle": round(t.get("settle", 0.0), 6),
-        "t_contacts": round(t.get("contacts", 0.0), 6),
-        "t_render": round(t.get("render", 0.0), 6),
-        "t_write": round(t.get("write", 0.0), 6),
-        "t_total": round(time.perf_counter() - wall, 6),
-    })
+def _finish(record: dict[str, Any], stage: _Stage, wall: float, cpu: float) -> dict[str, Any]:
+    for prefix, t in (("t", stage.times), ("cpu", stage.cpu)):
+        record.update({f"{prefix}_{k}": round(t.get(k, 0.0), 6) for k in STAGES})
+    record["t_total"] = round(time.perf_counter() - wall, 6)
+    record["cpu_total"] = round(time.process_time() - cpu, 6)
     return record

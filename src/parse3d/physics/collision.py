@@ -278,16 +278,18 @@ def _disk_read(key: str, asset_id: str) -> AssetCollision | None:
     d = _disk_dir()
     if d is None:
         return None
+    from ..assets.cache import _read_npz  # the asset files' reader: one read, CRC-checked
+
     path = d / f"{key}.npz"
     try:
-        with np.load(path, allow_pickle=False) as z:
-            meta = json.loads(bytes(z["meta"]).decode())
-            if meta.get("format") != DISK_FORMAT or meta.get("asset_id") != asset_id:
-                return None
-            cs = ConvexSet(tuple(meta["parts"]), z["vertices"], z["vert_index"], z["triangles"],
-                           z["tri_index"], z["planes"], z["areas"], z["volumes"], z["bounds"])
-            return AssetCollision(asset_id, cs, float(meta["density"]), tuple(meta["materials"]))
-    except (OSError, ValueError, KeyError, TypeError, zipfile.BadZipFile):
+        z = _read_npz(path)
+        meta = json.loads(bytes(z["meta"]).decode())
+        if meta.get("format") != DISK_FORMAT or meta.get("asset_id") != asset_id:
+            return None
+        cs = ConvexSet(tuple(meta["parts"]), z["vertices"], z["vert_index"], z["triangles"],
+                       z["tri_index"], z["planes"], z["areas"], z["volumes"], z["bounds"])
+        return AssetCollision(asset_id, cs, float(meta["density"]), tuple(meta["materials"]))
+    except (OSError, ValueError, KeyError, TypeError, EOFError, zipfile.BadZipFile):
         return None  # absent or damaged: computed again
 
 

@@ -132,12 +132,30 @@ class RoomStyle:
 
 
 def _closed(mesh: trimesh.Trimesh) -> bool:
-    """Whether back faces of ``mesh`` can never be seen: watertight, consistently wound and
-    outward (positive volume)."""
-    try:
-        return bool(mesh.is_watertight and mesh.is_winding_consistent and mesh.volume > 0)
-    except (ValueError, IndexError):
+    """Whether back faces of ``mesh`` can never be seen: watertight (every edge shared by
+    exactly two faces), consistently wound (the two run it in opposite directions, so no
+    directed edge repeats) and outward (positive signed volume).
+
+    The same answer as trimesh's ``is_watertight``, ``is_winding_consistent`` and
+    ``volume > 0``, computed in one pass without filling the mesh's cache (every asset a
+    dataset worker meets for the first time comes through here).
+    """
+    faces = np.asarray(mesh.faces, np.int64)
+    if faces.ndim != 2 or faces.shape[1] != 3 or len(faces) == 0:
         return False
+    edges = faces[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    n = int(edges.max()) + 1
+    lo, hi = np.minimum(edges[:, 0], edges[:, 1]), np.maximum(edges[:, 0], edges[:, 1])
+    _, counts = np.unique(lo * n + hi, return_counts=True)
+    if not (counts == 2).all():
+        return False
+    if len(np.unique(edges[:, 0] * n + edges[:, 1])) != len(edges):
+        return False
+    v = np.asarray(mesh.vertices, np.float64)
+    if int(faces.max()) >= len(v) or int(faces.min()) < 0:
+        return False
+    t = v[faces]
+    return bool(np.einsum("ij,ij->", t[:, 0], np.cross(t[:, 1], t[:, 2])) > 0.0)
 
 
 def _vertex_data(items: list[tuple[trimesh.Trimesh, Material]]) -> tuple[np.ndarray, int]:
