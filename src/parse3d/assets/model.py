@@ -392,9 +392,37 @@ def make_part(name: str, label: str, shapes: Shape | list[Shape], material: Mate
     """Build a Part from one or more shapes (meshes concatenated, pieces kept)."""
     if isinstance(shapes, Shape):
         shapes = [shapes]
-    mesh = trimesh.util.concatenate([s.mesh for s in shapes]) if len(shapes) > 1 else shapes[0].mesh.copy()
+    mesh = _stacked([s.mesh for s in shapes])
     pieces = [p for s in shapes for p in s.pieces]
     return Part(name, label, mesh, material, pieces, watertight=watertight)
+
+
+def _stacked(meshes: list[trimesh.Trimesh]) -> trimesh.Trimesh:
+    """A new mesh of ``meshes`` side by side (vertices stacked, faces re-indexed), sharing no
+    array with them.
+
+    What ``trimesh.util.concatenate`` (or ``copy`` for one mesh) gives for a part's geometry,
+    without merging visuals and metadata or carrying caches, which a generated part has none of
+    and which cost more than the stacking.
+    """
+    verts, faces = [], []
+    offset = 0
+    for m in meshes:
+        v = np.asarray(m.vertices, float).view(np.ndarray)
+        verts.append(v)
+        faces.append(np.asarray(m.faces, np.int64).view(np.ndarray) + offset)
+        offset += len(v)
+    if len(meshes) == 1:
+        return trimesh.Trimesh(verts[0].copy(), faces[0], process=False)
+    return trimesh.Trimesh(np.vstack(verts), np.vstack(faces), process=False)
+
+
+def _translate(mesh: trimesh.Trimesh, shift: np.ndarray) -> None:
+    """Move ``mesh`` by ``shift`` (3,) in place: the same vertices as ``apply_translation``,
+    without its transform bookkeeping (the mesh's caches are dropped by the vertex change)."""
+    if np.abs(shift).max() < 1e-8:  # where trimesh's transform leaves the points alone
+        return
+    mesh.vertices = np.asarray(mesh.vertices, float).view(np.ndarray) + shift
 
 
 def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True) -> Asset:
@@ -407,10 +435,12 @@ def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True
         b = asset.bounds
         shift = -np.array([(b[0, 0] + b[1, 0]) / 2, (b[0, 1] + b[1, 1]) / 2, b[0, 2]])
         if np.abs(shift).max() > 1e-9:
+            moved: set[int] = set()  # a piece may be its part's mesh or shared: move it once
             for p in asset.parts:
-                p.mesh.apply_translation(shift)
-                for pc in p.pieces:
-                    pc.apply_translation(shift)
+                for m in (p.mesh, *p.pieces):
+                    if id(m) not in moved:
+                        moved.add(id(m))
+                        _translate(m, shift)
             asset.joints = [j.moved(shift) for j in asset.joints]
     fds = {}
     # Parts repeated at another place (legs, slats, knobs, drawer fronts: about half of all

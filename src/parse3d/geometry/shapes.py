@@ -20,12 +20,13 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
-from .frames import make_transform, rotation_between
+from .frames import cross_rows, make_transform, rotation_between
 
 __all__ = [
     "Shape",
@@ -79,7 +80,7 @@ def _convex(points: np.ndarray) -> trimesh.Trimesh:
         return trimesh.convex.convex_hull(pts)
     faces = h.simplices.copy()
     tri = pts[faces]
-    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    n = cross_rows(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
     flip = np.einsum("ij,ij->i", n, h.equations[:, :3]) < 0
     faces[flip] = faces[flip][:, ::-1]
     used, inv = np.unique(faces, return_inverse=True)
@@ -113,7 +114,7 @@ def box(size, center=(0.0, 0.0, 0.0), bevel: float = 0.0, R=None) -> Shape:
     h = size / 2.0
     b = float(min(bevel, size.min() / 3.0))
     if b <= 1e-6:
-        mesh = trimesh.creation.box(extents=size)
+        return _single(_plain_box(size, make_transform(R, center)))
     else:
         pts = []
         for sx in (-1, 1):
@@ -129,6 +130,46 @@ def box(size, center=(0.0, 0.0, 0.0), bevel: float = 0.0, R=None) -> Shape:
     return _single(mesh)
 
 
+_I4 = np.eye(4)
+_I3 = np.eye(3)
+# trimesh's unit box (vertices, faces, face normals), read once
+_BOX = trimesh.creation.box()
+_BOX_V = np.asarray(_BOX.vertices, float).view(np.ndarray) + 0.5
+_BOX_F = np.asarray(_BOX.faces, np.int64).view(np.ndarray).copy()
+_BOX_N = np.asarray(_BOX.face_normals, float).view(np.ndarray).copy()
+
+
+def _plain_box(size: np.ndarray, T: np.ndarray) -> trimesh.Trimesh:
+    """``trimesh.creation.box(extents=size)`` moved by ``T`` (4, 4): the same vertices, faces
+    and face normals, built directly instead of through a mesh's transform bookkeeping."""
+    v = _BOX_V - 0.5
+    v *= size
+    f = _BOX_F
+    n = _BOX_N
+    if not trimesh.util.allclose(T, _I4, 1e-8):
+        v = trimesh.transformations.transform_points(v, T)
+        if not trimesh.util.allclose(T[:3, :3], _I3, atol=1e-6):
+            linear = T[:3, :3]
+            adjugate = np.cross(linear.T[[1, 2, 0]], linear.T[[2, 0, 1]])
+            if np.linalg.det(linear) < 0.0:
+                adjugate = -adjugate
+                f = np.ascontiguousarray(np.fliplr(f))
+            n = trimesh.util.unitize(np.dot(n, adjugate), threshold=0)
+    return trimesh.Trimesh(v, f.copy(), face_normals=n.copy(), process=False)
+
+
+@lru_cache(maxsize=256)
+def _cylinder_arrays(radius: float, height: float, sections: int) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and faces of ``trimesh.creation.cylinder`` (read-only): repeated parts (legs,
+    hinges, knobs, rods) ask for the same one, and building it costs far more than the copy."""
+    m = trimesh.creation.cylinder(radius=radius, height=height, sections=sections)
+    v = np.asarray(m.vertices, float).view(np.ndarray).copy()
+    f = np.asarray(m.faces, np.int64).view(np.ndarray).copy()
+    v.flags.writeable = False
+    f.flags.writeable = False
+    return v, f
+
+
 def _axis_transform(axis, center) -> np.ndarray:
     R = rotation_between((0, 0, 1), axis) if axis is not None else np.eye(3)
     return make_transform(R, center)
@@ -137,7 +178,8 @@ def _axis_transform(axis, center) -> np.ndarray:
 def cylinder(radius: float, height: float, center=(0.0, 0.0, 0.0), axis=(0, 0, 1),
              sections: int = 24) -> Shape:
     """A closed cylinder centred at ``center`` along ``axis``."""
-    m = trimesh.creation.cylinder(radius=radius, height=height, sections=sections)
+    v, f = _cylinder_arrays(float(radius), float(height), int(sections))
+    m = trimesh.Trimesh(v.copy(), f.copy(), process=False)
     m.apply_transform(_axis_transform(axis, center))
     return _single(m)
 
