@@ -31,6 +31,7 @@ __all__ = ["find_internal_surfaces", "MIN_INTERNAL_AREA"]
 MIN_INTERNAL_AREA = 6e-4  # m^2 (6 cm^2): smaller patches hold nothing
 MIN_CLEARANCE = 0.04  # m: less free height above a surface holds nothing either
 _UP_COS = np.cos(np.deg2rad(12.0))
+_REST = 0.001  # m: a solid this close above a patch rests on it
 _DIRS = np.array([[np.cos(a), np.sin(a), 0.0] for a in np.linspace(0, 2 * np.pi, 8, endpoint=False)])
 
 
@@ -185,8 +186,10 @@ def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
             o_up = pts + [0, 0, lift]
             caster, normals = caster_normals()
             h_up, inside = _first_hit(caster, normals, o_up, np.tile([0, 0, 1.0], (len(pts), 1)))
-            if inside.any() or _inside_pieces(piece_planes(), o_up).any():
-                continue  # the patch is covered by a solid standing on it
+            if inside.any() or _inside_pieces(piece_planes(), o_up).any() \
+                    or _inside_pieces(piece_planes(), pts + [0, 0, _REST]).any():
+                continue  # the patch is covered by a solid standing on it (or resting on it:
+                #           a foot ring's top under a bowl's floor thicker than the lift)
             o_h = np.repeat(pts + [0, 0, lift], len(_DIRS), axis=0)
             d_h = np.tile(_DIRS, (len(pts), 1))
             hh, _ = _first_hit(caster, normals, o_h, d_h)

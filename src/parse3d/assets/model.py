@@ -233,7 +233,8 @@ class Asset:
         kg / m^3 for physics.
     internal : list of InternalSurface
     meta : dict
-        Provenance: generator, variant, seed, source file.
+        Provenance: generator, variant, seed, source file; ``label_groups`` (see
+        :attr:`label_groups`) where the category has group labels.
     joints : list of Joint
         Articulations between parts (doors, drawers, lids); empty for rigid assets.
     """
@@ -267,6 +268,13 @@ class Asset:
     def labels(self) -> list[str]:
         return sorted({p.label for p in self.parts})
 
+    @property
+    def label_groups(self) -> dict[str, list[str]]:
+        """Group labels: a label naming the parts of several labels (a plate's ``body`` covers
+        its ``well`` and ``rim``), ``{group: [labels]}``; kept in ``meta`` so that cached
+        assets keep them."""
+        return self.meta.get("label_groups") or {}
+
     def part(self, name: str) -> Part:
         for p in self.parts:
             if p.name == name:
@@ -274,7 +282,8 @@ class Asset:
         raise KeyError(f"{self.asset_id} has no part {name!r}")
 
     def parts_by_label(self, label: str) -> list[Part]:
-        """Parts with ``label`` in the order ``#k`` indexes (0-based).
+        """Parts with ``label`` in the order ``#k`` indexes (0-based); for a group label (see
+        :attr:`label_groups`) the parts of every label it covers.
 
         Lexicographic: by the bottom of the part's bounding box (bottom-to-top), then by its
         centre's x (left-to-right, the asset's own +X is its right), then by its centre's y
@@ -282,7 +291,8 @@ class Asset:
         a rank however they are modelled. A 2 x 2 cooktop: back-left, front-left, back-right,
         front-right.
         """
-        ps = [p for p in self.parts if p.label == label]
+        members = self.label_groups.get(label, ())
+        ps = [p for p in self.parts if p.label == label or p.label in members]
         if len(ps) < 2:
             return ps
         b = np.array([p.mesh.bounds for p in ps])
