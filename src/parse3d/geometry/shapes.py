@@ -111,23 +111,34 @@ def box(size, center=(0.0, 0.0, 0.0), bevel: float = 0.0, R=None) -> Shape:
         Rotation about the centre.
     """
     size = np.asarray(size, float)
-    h = size / 2.0
     b = float(min(bevel, size.min() / 3.0))
-    if b <= 1e-6:
-        return _single(_plain_box(size, make_transform(R, center)))
-    else:
-        pts = []
-        for sx in (-1, 1):
-            for sy in (-1, 1):
-                for sz in (-1, 1):
-                    c = np.array([sx * h[0], sy * h[1], sz * h[2]])
-                    pts.append(c - np.array([sx * b, 0, 0]))
-                    pts.append(c - np.array([0, sy * b, 0]))
-                    pts.append(c - np.array([0, 0, sz * b]))
-        mesh = _convex(np.array(pts))
     T = make_transform(R, center)
-    mesh.apply_transform(T)
-    return _single(mesh)
+    if b <= 1e-6:
+        return _single(_plain_box(size, T))
+    v, f = _bevel_box_arrays(tuple(float(x) for x in size), b)
+    return _single(_moved(v, f, None, T))
+
+
+@lru_cache(maxsize=256)
+def _bevel_box_arrays(size: tuple[float, float, float], b: float) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and faces (read-only) of the chamfered box ``size`` with chamfer ``b``, centred
+    on the origin: repeated parts (legs, slats, drawer fronts) ask for the same one, and its
+    convex hull costs far more than the copy."""
+    h = np.asarray(size) / 2.0
+    pts = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            for sz in (-1, 1):
+                c = np.array([sx * h[0], sy * h[1], sz * h[2]])
+                pts.append(c - np.array([sx * b, 0, 0]))
+                pts.append(c - np.array([0, sy * b, 0]))
+                pts.append(c - np.array([0, 0, sz * b]))
+    m = _convex(np.array(pts))
+    v = np.asarray(m.vertices, float).view(np.ndarray).copy()
+    f = np.asarray(m.faces, np.int64).view(np.ndarray).copy()
+    v.flags.writeable = False
+    f.flags.writeable = False
+    return v, f
 
 
 _I4 = np.eye(4)
@@ -144,8 +155,12 @@ def _plain_box(size: np.ndarray, T: np.ndarray) -> trimesh.Trimesh:
     and face normals, built directly instead of through a mesh's transform bookkeeping."""
     v = _BOX_V - 0.5
     v *= size
-    f = _BOX_F
-    n = _BOX_N
+    return _moved(v, _BOX_F, _BOX_N, T)
+
+
+def _moved(v: np.ndarray, f: np.ndarray, n: np.ndarray | None, T: np.ndarray) -> trimesh.Trimesh:
+    """A new mesh of vertices ``v``, faces ``f`` and (optionally) face normals ``n`` moved by
+    ``T`` (4, 4): what ``Trimesh.apply_transform`` gives, without its bookkeeping."""
     if not trimesh.util.allclose(T, _I4, 1e-8):
         v = trimesh.transformations.transform_points(v, T)
         if not trimesh.util.allclose(T[:3, :3], _I3, atol=1e-6):
@@ -154,8 +169,12 @@ def _plain_box(size: np.ndarray, T: np.ndarray) -> trimesh.Trimesh:
             if np.linalg.det(linear) < 0.0:
                 adjugate = -adjugate
                 f = np.ascontiguousarray(np.fliplr(f))
-            n = trimesh.util.unitize(np.dot(n, adjugate), threshold=0)
-    return trimesh.Trimesh(v, f.copy(), face_normals=n.copy(), process=False)
+            if n is not None:
+                n = trimesh.util.unitize(np.dot(n, adjugate), threshold=0)
+    else:
+        v = np.array(v)
+    return trimesh.Trimesh(v, np.array(f), face_normals=None if n is None else np.array(n),
+                           process=False)
 
 
 @lru_cache(maxsize=256)
@@ -179,9 +198,7 @@ def cylinder(radius: float, height: float, center=(0.0, 0.0, 0.0), axis=(0, 0, 1
              sections: int = 24) -> Shape:
     """A closed cylinder centred at ``center`` along ``axis``."""
     v, f = _cylinder_arrays(float(radius), float(height), int(sections))
-    m = trimesh.Trimesh(v.copy(), f.copy(), process=False)
-    m.apply_transform(_axis_transform(axis, center))
-    return _single(m)
+    return _single(_moved(v, f, None, _axis_transform(axis, center)))
 
 
 def frustum(r_bottom: float, r_top: float, height: float, center=(0.0, 0.0, 0.0),
