@@ -80,18 +80,25 @@ def _probe(asset) -> None:
     top = asset.bounds[1, 2]
     body = asset.part("body") if any(p.name == "body" for p in asset.parts) else None
     if c == "plate":
-        # stackable: low, flat bottom and a flat well on top
+        # stackable: low, flat bottom and a flat well on top; ``body`` names the whole plate
         assert asset.extents[2] < 0.05
-        up = body.mesh.face_normals[:, 2] > 0.99
-        assert body.mesh.area_faces[up].sum() > 0.25 * asset.extents[0] ** 2
+        assert {p.label for p in asset.parts_by_label("body")} == {"well", "rim", "foot_ring"}
+        well = asset.part("well").mesh
+        up = well.face_normals[:, 2] > 0.99
+        assert well.area_faces[up].sum() > 0.25 * asset.extents[0] ** 2
+        assert asset.part("foot_ring").bounds[1, 2] <= well.bounds[0, 2] + 1e-6
     elif c == "wine_glass":
         foot, stem, bowl = (asset.part(n) for n in ("foot", "stem", "bowl"))
         assert foot.bounds[1, 2] <= stem.bounds[0, 2] + 1e-6
         assert stem.bounds[1, 2] <= bowl.bounds[0, 2] + 1e-6
         assert bowl.bounds[1, 2] == pytest.approx(top)
-    elif c == "vase" and asset.meta["variant"] != "cylinder":
-        neck = body.mesh.section(plane_origin=(0, 0, top * 0.85), plane_normal=(0, 0, 1))
-        assert neck.extents[0] < 0.8 * asset.extents[0]
+    elif c == "vase":
+        # ``body`` names the whole vase: its body, neck, lip and foot ring
+        assert {p.label for p in asset.parts_by_label("body")} >= {"body", "lip", "foot_ring"}
+        assert asset.part("lip").bounds[1, 2] == pytest.approx(top)
+        if asset.meta["variant"] != "cylinder":
+            nb = asset.part("neck").bounds
+            assert nb[1, 0] - nb[0, 0] < 0.8 * asset.extents[0]
     elif c in ("cooking_pot", "storage_box"):
         lid = asset.part("lid")
         # the lid rests on the body: its underside at (or just below, for a lip/skirt) the rim

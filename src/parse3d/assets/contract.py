@@ -2,8 +2,8 @@
 
 :func:`check_asset` returns a list of human-readable problems (empty when the asset is sound):
 
-* parts labelled from the category's vocabulary, the category's minimum labels present, unique
-  names;
+* parts labelled from the category's vocabulary, the category's minimum labels present (a
+  group label through any label it covers), unique names;
 * six directional surfaces per part with unit normals matching their labels;
 * every part inside the asset's bbox; base at z = 0 and centred in x and y;
 * closed parts watertight;
@@ -86,6 +86,9 @@ def check_asset(asset: Asset, *, vocabulary: tuple[str, ...] | None = None,
     if len(set(names)) != len(names):
         problems.append(f"duplicate part names: {sorted(n for n in set(names) if names.count(n) > 1)}")
     labels = {p.label for p in asset.parts}
+    for g, members in asset.label_groups.items():
+        if labels & set(members):
+            labels.add(g)  # a group label is present where any label it covers is
     for r in required:
         if r not in labels:
             problems.append(f"missing required part label {r!r} (has {sorted(labels)})")

@@ -16,13 +16,22 @@ import numpy as np
 import shapely
 import trimesh
 
-from ..geometry.surfaces import SURFACE_BASIS, Surface, component_roots, face_data, plane_polygon
+from ..geometry.frames import cross_rows
+from ..geometry.surfaces import (
+    SURFACE_BASIS,
+    Surface,
+    component_roots,
+    face_data,
+    plane_polygon,
+    unit_normals,
+)
 
 __all__ = ["find_internal_surfaces", "MIN_INTERNAL_AREA"]
 
 MIN_INTERNAL_AREA = 6e-4  # m^2 (6 cm^2): smaller patches hold nothing
 MIN_CLEARANCE = 0.04  # m: less free height above a surface holds nothing either
 _UP_COS = np.cos(np.deg2rad(12.0))
+_REST = 0.001  # m: a solid this close above a patch rests on it
 _DIRS = np.array([[np.cos(a), np.sin(a), 0.0] for a in np.linspace(0, 2 * np.pi, 8, endpoint=False)])
 
 
@@ -60,6 +69,42 @@ def _exit_distances(hull, xy: np.ndarray, reach: float) -> np.ndarray:
     return out
 
 
+def _raw(mesh: trimesh.Trimesh) -> tuple[np.ndarray, np.ndarray]:
+    """(V, 3) vertices and (F, 3) faces of ``mesh`` as plain arrays (no cache bookkeeping)."""
+    return (np.asarray(mesh.vertices, float).view(np.ndarray),
+            np.asarray(mesh.faces, np.int64).view(np.ndarray))
+
+
+def _whole(asset, faces: dict) -> tuple[trimesh.Trimesh, np.ndarray]:
+    """All parts as one mesh for ray casting, and its (F, 3) face normals.
+
+    The parts' vertices and faces are stacked directly, and their normals taken from the face
+    data already computed: ``trimesh.util.concatenate`` would also merge visuals and recompute
+    every cached property, which costs more than the rays.
+    """
+    verts, tris, normals = [], [], []
+    offset = 0
+    for p in asset.parts:
+        v, f = _raw(p.mesh)
+        verts.append(v)
+        tris.append(f + offset)
+        offset += len(v)
+        fd = faces.get(p.name) or face_data(p.mesh)
+        normals.append(fd.normals)
+    return (trimesh.Trimesh(np.vstack(verts), np.vstack(tris), process=False),
+            np.vstack(normals))
+
+
+def _planes(piece: trimesh.Trimesh) -> tuple[np.ndarray, np.ndarray]:
+    """A convex piece's face planes: (F, 3) unit normals ``n`` and (F,) offsets ``d`` with
+    ``n . x = d`` on face F (trimesh's face normals, computed without its cache)."""
+    v, f = _raw(piece)
+    tri = v[f]
+    e = tri[:, 1:, :] - tri[:, :2, :]
+    n = unit_normals(cross_rows(e[:, 0], e[:, 1]))
+    return n, np.einsum("ij,ij->i", n, tri[:, 0])
+
+
 def _inside_pieces(planes, pts: np.ndarray) -> np.ndarray:
     """Whether each point lies strictly inside any convex piece (given by its face planes)."""
     inside = np.zeros(len(pts), bool)
@@ -86,7 +131,12 @@ def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
 
     if not any(len(p.mesh.faces) for p in asset.parts):
         return []
-    bounds = asset.bounds
+    faces = faces or {}
+    if faces and all(p.name in faces for p in asset.parts):  # the same numbers, no mesh cache
+        fb = np.array([faces[p.name].bounds for p in asset.parts])
+        bounds = np.array([fb[:, 0].min(axis=0), fb[:, 1].max(axis=0)])
+    else:
+        bounds = asset.bounds
     top_z = float(bounds[1, 2])
     reach = float(np.linalg.norm(bounds[1] - bounds[0])) * 2 + 0.1
     u, v = (np.array(a) for a in SURFACE_BASIS["top"])
@@ -95,19 +145,17 @@ def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
 
     def caster_normals():
         if not ray:
-            whole = asset.mesh()
-            ray.extend((_intersector(whole), whole.face_normals))
+            whole, normals = _whole(asset, faces)
+            ray.extend((_intersector(whole), normals))
         return ray
 
     planes: list = []  # the convex pieces' face planes, built when a patch first needs them
 
     def piece_planes() -> list:
         if not planes:
-            planes.extend((pc.face_normals, np.einsum("ij,ij->i", pc.face_normals, pc.triangles[:, 0]))
-                          for p in asset.parts for pc in p.pieces)
+            planes.extend(_planes(pc) for p in asset.parts for pc in p.pieces)
         return planes
 
-    faces = faces or {}
     for part in asset.parts:
         fd = faces.get(part.name) or face_data(part.mesh)
         up = fd.normals[:, 2] > _UP_COS
@@ -138,8 +186,10 @@ def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
             o_up = pts + [0, 0, lift]
             caster, normals = caster_normals()
             h_up, inside = _first_hit(caster, normals, o_up, np.tile([0, 0, 1.0], (len(pts), 1)))
-            if inside.any() or _inside_pieces(piece_planes(), o_up).any():
-                continue  # the patch is covered by a solid standing on it
+            if inside.any() or _inside_pieces(piece_planes(), o_up).any() \
+                    or _inside_pieces(piece_planes(), pts + [0, 0, _REST]).any():
+                continue  # the patch is covered by a solid standing on it (or resting on it:
+                #           a foot ring's top under a bowl's floor thicker than the lift)
             o_h = np.repeat(pts + [0, 0, lift], len(_DIRS), axis=0)
             d_h = np.tile(_DIRS, (len(pts), 1))
             hh, _ = _first_hit(caster, normals, o_h, d_h)

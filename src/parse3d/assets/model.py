@@ -233,7 +233,8 @@ class Asset:
         kg / m^3 for physics.
     internal : list of InternalSurface
     meta : dict
-        Provenance: generator, variant, seed, source file.
+        Provenance: generator, variant, seed, source file; ``label_groups`` (see
+        :attr:`label_groups`) where the category has group labels.
     joints : list of Joint
         Articulations between parts (doors, drawers, lids); empty for rigid assets.
     """
@@ -267,6 +268,13 @@ class Asset:
     def labels(self) -> list[str]:
         return sorted({p.label for p in self.parts})
 
+    @property
+    def label_groups(self) -> dict[str, list[str]]:
+        """Group labels: a label naming the parts of several labels (a plate's ``body`` covers
+        its ``well`` and ``rim``), ``{group: [labels]}``; kept in ``meta`` so that cached
+        assets keep them."""
+        return self.meta.get("label_groups") or {}
+
     def part(self, name: str) -> Part:
         for p in self.parts:
             if p.name == name:
@@ -274,7 +282,8 @@ class Asset:
         raise KeyError(f"{self.asset_id} has no part {name!r}")
 
     def parts_by_label(self, label: str) -> list[Part]:
-        """Parts with ``label`` in the order ``#k`` indexes (0-based).
+        """Parts with ``label`` in the order ``#k`` indexes (0-based); for a group label (see
+        :attr:`label_groups`) the parts of every label it covers.
 
         Lexicographic: by the bottom of the part's bounding box (bottom-to-top), then by its
         centre's x (left-to-right, the asset's own +X is its right), then by its centre's y
@@ -282,7 +291,8 @@ class Asset:
         a rank however they are modelled. A 2 x 2 cooktop: back-left, front-left, back-right,
         front-right.
         """
-        ps = [p for p in self.parts if p.label == label]
+        members = self.label_groups.get(label, ())
+        ps = [p for p in self.parts if p.label == label or p.label in members]
         if len(ps) < 2:
             return ps
         b = np.array([p.mesh.bounds for p in ps])
@@ -392,9 +402,37 @@ def make_part(name: str, label: str, shapes: Shape | list[Shape], material: Mate
     """Build a Part from one or more shapes (meshes concatenated, pieces kept)."""
     if isinstance(shapes, Shape):
         shapes = [shapes]
-    mesh = trimesh.util.concatenate([s.mesh for s in shapes]) if len(shapes) > 1 else shapes[0].mesh.copy()
+    mesh = _stacked([s.mesh for s in shapes])
     pieces = [p for s in shapes for p in s.pieces]
     return Part(name, label, mesh, material, pieces, watertight=watertight)
+
+
+def _stacked(meshes: list[trimesh.Trimesh]) -> trimesh.Trimesh:
+    """A new mesh of ``meshes`` side by side (vertices stacked, faces re-indexed), sharing no
+    array with them.
+
+    What ``trimesh.util.concatenate`` (or ``copy`` for one mesh) gives for a part's geometry,
+    without merging visuals and metadata or carrying caches, which a generated part has none of
+    and which cost more than the stacking.
+    """
+    verts, faces = [], []
+    offset = 0
+    for m in meshes:
+        v = np.asarray(m.vertices, float).view(np.ndarray)
+        verts.append(v)
+        faces.append(np.asarray(m.faces, np.int64).view(np.ndarray) + offset)
+        offset += len(v)
+    if len(meshes) == 1:
+        return trimesh.Trimesh(verts[0].copy(), faces[0], process=False)
+    return trimesh.Trimesh(np.vstack(verts), np.vstack(faces), process=False)
+
+
+def _translate(mesh: trimesh.Trimesh, shift: np.ndarray) -> None:
+    """Move ``mesh`` by ``shift`` (3,) in place: the same vertices as ``apply_translation``,
+    without its transform bookkeeping (the mesh's caches are dropped by the vertex change)."""
+    if np.abs(shift).max() < 1e-8:  # where trimesh's transform leaves the points alone
+        return
+    mesh.vertices = np.asarray(mesh.vertices, float).view(np.ndarray) + shift
 
 
 def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True) -> Asset:
@@ -407,10 +445,12 @@ def finalize_asset(asset: Asset, *, recenter: bool = True, internal: bool = True
         b = asset.bounds
         shift = -np.array([(b[0, 0] + b[1, 0]) / 2, (b[0, 1] + b[1, 1]) / 2, b[0, 2]])
         if np.abs(shift).max() > 1e-9:
+            moved: set[int] = set()  # a piece may be its part's mesh or shared: move it once
             for p in asset.parts:
-                p.mesh.apply_translation(shift)
-                for pc in p.pieces:
-                    pc.apply_translation(shift)
+                for m in (p.mesh, *p.pieces):
+                    if id(m) not in moved:
+                        moved.add(id(m))
+                        _translate(m, shift)
             asset.joints = [j.moved(shift) for j in asset.joints]
     fds = {}
     # Parts repeated at another place (legs, slats, knobs, drawer fronts: about half of all

@@ -69,6 +69,10 @@ class Category:
         ``generator(rng, variant) -> list[Part]``; None for loaded categories.
     source : str
         ``procedural`` or the folder a loaded category came from.
+    groups : dict of str to tuple of str
+        Group labels: a label a PAG may name that covers the parts of several labels (a plate's
+        ``body`` is its ``well`` and its ``rim``). Kept where a category's parts were split
+        finer, so the labels PAGs used before still name the same geometry.
     """
 
     name: str
@@ -81,6 +85,7 @@ class Category:
     generator: Generator | None = field(default=None, compare=False, repr=False)
     source: str = "procedural"
     loaded_assets: tuple = field(default=(), compare=False, repr=False)
+    groups: dict[str, tuple[str, ...]] = field(default_factory=dict, compare=False)
 
 
 _REGISTRY: dict[str, Category] = {}
@@ -96,6 +101,7 @@ def register(
     variants: tuple[str, ...] = ("default",),
     placement: str = "floor",
     extra_parts: tuple[str, ...] = (),
+    groups: dict[str, tuple[str, ...]] | None = None,
 ) -> Callable[[Generator], Generator]:
     """Decorator registering a procedural generator for a category.
 
@@ -103,14 +109,19 @@ def register(
     the joints that articulate them mixed in (a door's revolute joint after the door); the
     registry recentres the asset (joints too), resolves surfaces and finds internal support
     surfaces.
+
+    ``groups`` maps a group label to the part labels it covers (see :class:`Category`); a group
+    label joins the vocabulary, and a required label may be a group label.
     """
     if placement not in PLACEMENTS:
         raise ValueError(f"placement must be one of {PLACEMENTS}")
+    groups = {str(k): tuple(v) for k, v in (groups or {}).items()}
 
     def deco(fn: Generator) -> Generator:
-        vocab = tuple(dict.fromkeys(parts + extra_parts))
+        vocab = tuple(dict.fromkeys(parts + extra_parts + tuple(groups)
+                                    + tuple(m for v in groups.values() for m in v)))
         _REGISTRY[name] = Category(name, tuple(parts), vocab, tuple(size_range), float(density),
-                                   tuple(variants), placement, fn)
+                                   tuple(variants), placement, fn, groups=groups)
         return fn
 
     return deco
@@ -190,9 +201,11 @@ def generate(category: str, seed: int = 0, variant: str | None = None) -> Asset:
     names = [p.name for p in parts]
     if len(set(names)) != len(names):
         raise AssetError(f"{category}: duplicate part names {names}")
+    meta = {"generator": "procedural", "variant": variant, "seed": int(seed)}
+    if cat.groups:
+        meta["label_groups"] = {k: list(v) for k, v in cat.groups.items()}
     asset = Asset(category, f"{category}-{variant}-{seed}", parts, cat.size_range, cat.density,
-                  meta={"generator": "procedural", "variant": variant, "seed": int(seed)},
-                  joints=joints)
+                  meta=meta, joints=joints)
     return finalize_asset(asset)
 
 

@@ -20,12 +20,13 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 
 import numpy as np
 import trimesh
 from scipy.spatial import ConvexHull, QhullError
 
-from .frames import make_transform, rotation_between
+from .frames import cross_rows, make_transform, rotation_between
 
 __all__ = [
     "Shape",
@@ -79,7 +80,7 @@ def _convex(points: np.ndarray) -> trimesh.Trimesh:
         return trimesh.convex.convex_hull(pts)
     faces = h.simplices.copy()
     tri = pts[faces]
-    n = np.cross(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
+    n = cross_rows(tri[:, 1] - tri[:, 0], tri[:, 2] - tri[:, 0])
     flip = np.einsum("ij,ij->i", n, h.equations[:, :3]) < 0
     faces[flip] = faces[flip][:, ::-1]
     used, inv = np.unique(faces, return_inverse=True)
@@ -110,23 +111,82 @@ def box(size, center=(0.0, 0.0, 0.0), bevel: float = 0.0, R=None) -> Shape:
         Rotation about the centre.
     """
     size = np.asarray(size, float)
-    h = size / 2.0
     b = float(min(bevel, size.min() / 3.0))
-    if b <= 1e-6:
-        mesh = trimesh.creation.box(extents=size)
-    else:
-        pts = []
-        for sx in (-1, 1):
-            for sy in (-1, 1):
-                for sz in (-1, 1):
-                    c = np.array([sx * h[0], sy * h[1], sz * h[2]])
-                    pts.append(c - np.array([sx * b, 0, 0]))
-                    pts.append(c - np.array([0, sy * b, 0]))
-                    pts.append(c - np.array([0, 0, sz * b]))
-        mesh = _convex(np.array(pts))
     T = make_transform(R, center)
-    mesh.apply_transform(T)
-    return _single(mesh)
+    if b <= 1e-6:
+        return _single(_plain_box(size, T))
+    v, f = _bevel_box_arrays(tuple(float(x) for x in size), b)
+    return _single(_moved(v, f, None, T))
+
+
+@lru_cache(maxsize=256)
+def _bevel_box_arrays(size: tuple[float, float, float], b: float) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and faces (read-only) of the chamfered box ``size`` with chamfer ``b``, centred
+    on the origin: repeated parts (legs, slats, drawer fronts) ask for the same one, and its
+    convex hull costs far more than the copy."""
+    h = np.asarray(size) / 2.0
+    pts = []
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            for sz in (-1, 1):
+                c = np.array([sx * h[0], sy * h[1], sz * h[2]])
+                pts.append(c - np.array([sx * b, 0, 0]))
+                pts.append(c - np.array([0, sy * b, 0]))
+                pts.append(c - np.array([0, 0, sz * b]))
+    m = _convex(np.array(pts))
+    v = np.asarray(m.vertices, float).view(np.ndarray).copy()
+    f = np.asarray(m.faces, np.int64).view(np.ndarray).copy()
+    v.flags.writeable = False
+    f.flags.writeable = False
+    return v, f
+
+
+_I4 = np.eye(4)
+_I3 = np.eye(3)
+# trimesh's unit box (vertices, faces, face normals), read once
+_BOX = trimesh.creation.box()
+_BOX_V = np.asarray(_BOX.vertices, float).view(np.ndarray) + 0.5
+_BOX_F = np.asarray(_BOX.faces, np.int64).view(np.ndarray).copy()
+_BOX_N = np.asarray(_BOX.face_normals, float).view(np.ndarray).copy()
+
+
+def _plain_box(size: np.ndarray, T: np.ndarray) -> trimesh.Trimesh:
+    """``trimesh.creation.box(extents=size)`` moved by ``T`` (4, 4): the same vertices, faces
+    and face normals, built directly instead of through a mesh's transform bookkeeping."""
+    v = _BOX_V - 0.5
+    v *= size
+    return _moved(v, _BOX_F, _BOX_N, T)
+
+
+def _moved(v: np.ndarray, f: np.ndarray, n: np.ndarray | None, T: np.ndarray) -> trimesh.Trimesh:
+    """A new mesh of vertices ``v``, faces ``f`` and (optionally) face normals ``n`` moved by
+    ``T`` (4, 4): what ``Trimesh.apply_transform`` gives, without its bookkeeping."""
+    if not trimesh.util.allclose(T, _I4, 1e-8):
+        v = trimesh.transformations.transform_points(v, T)
+        if not trimesh.util.allclose(T[:3, :3], _I3, atol=1e-6):
+            linear = T[:3, :3]
+            adjugate = np.cross(linear.T[[1, 2, 0]], linear.T[[2, 0, 1]])
+            if np.linalg.det(linear) < 0.0:
+                adjugate = -adjugate
+                f = np.ascontiguousarray(np.fliplr(f))
+            if n is not None:
+                n = trimesh.util.unitize(np.dot(n, adjugate), threshold=0)
+    else:
+        v = np.array(v)
+    return trimesh.Trimesh(v, np.array(f), face_normals=None if n is None else np.array(n),
+                           process=False)
+
+
+@lru_cache(maxsize=256)
+def _cylinder_arrays(radius: float, height: float, sections: int) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices and faces of ``trimesh.creation.cylinder`` (read-only): repeated parts (legs,
+    hinges, knobs, rods) ask for the same one, and building it costs far more than the copy."""
+    m = trimesh.creation.cylinder(radius=radius, height=height, sections=sections)
+    v = np.asarray(m.vertices, float).view(np.ndarray).copy()
+    f = np.asarray(m.faces, np.int64).view(np.ndarray).copy()
+    v.flags.writeable = False
+    f.flags.writeable = False
+    return v, f
 
 
 def _axis_transform(axis, center) -> np.ndarray:
@@ -137,9 +197,8 @@ def _axis_transform(axis, center) -> np.ndarray:
 def cylinder(radius: float, height: float, center=(0.0, 0.0, 0.0), axis=(0, 0, 1),
              sections: int = 24) -> Shape:
     """A closed cylinder centred at ``center`` along ``axis``."""
-    m = trimesh.creation.cylinder(radius=radius, height=height, sections=sections)
-    m.apply_transform(_axis_transform(axis, center))
-    return _single(m)
+    v, f = _cylinder_arrays(float(radius), float(height), int(sections))
+    return _single(_moved(v, f, None, _axis_transform(axis, center)))
 
 
 def frustum(r_bottom: float, r_top: float, height: float, center=(0.0, 0.0, 0.0),

@@ -22,6 +22,7 @@ from shapely.geometry import MultiPolygon, Polygon
 from shapely.geometry import box as shapely_box
 
 from ..relations import SURFACES
+from .frames import cross_rows
 
 __all__ = [
     "Surface",
@@ -266,15 +267,30 @@ def _face_adjacency(faces: np.ndarray) -> np.ndarray:
     return adj
 
 
+def unit_normals(crosses: np.ndarray) -> np.ndarray:
+    """(F, 3) unit face normals from the (F, 3) cross products of each face's edges
+    ``(v1 - v0) x (v2 - v1)``: what ``trimesh.Trimesh.face_normals`` computes (zero rows for
+    degenerate faces), without reading through the mesh's cache."""
+    unit, ok = trimesh.util.unitize(crosses, check_valid=True)
+    if ok.all():
+        return unit
+    out = np.zeros((len(crosses), 3))
+    out[ok] = unit
+    return out
+
+
 def face_data(mesh: trimesh.Trimesh) -> FaceData:
     """The :class:`FaceData` of ``mesh`` (a trimesh.Trimesh)."""
     v = np.asarray(mesh.vertices, float).view(np.ndarray)
     f = np.asarray(mesh.faces).view(np.ndarray)
     tri = v[f]
     e = tri[:, 1:, :] - tri[:, :2, :]  # the edge vectors trimesh crosses, so areas match it
-    cr = np.cross(e[:, 0], e[:, 1])
+    cr = cross_rows(e[:, 0], e[:, 1])
     areas = np.sqrt((cr**2).sum(axis=1)) / 2.0
-    normals = np.asarray(mesh.face_normals, float).view(np.ndarray)
+    if "face_normals" in mesh._cache:  # normals given or carried through a transform win
+        normals = np.asarray(mesh.face_normals, float).view(np.ndarray)
+    else:
+        normals = unit_normals(cr)
     used = tri.reshape(-1, 3)  # trimesh's bounds count only vertices that faces use
     bounds = np.array([used.min(axis=0), used.max(axis=0)]) if len(used) else np.zeros((2, 3))
     return FaceData(bounds, tri, normals, areas, tri.mean(axis=1), _face_adjacency(f))

@@ -1,6 +1,7 @@
 """Mugs, cups and tea cups: revolved walls with a swept handle.
 
-Mugs come round (revolved, optionally bellied) or square (bevelled box walls).
+Mugs come round (revolved, optionally bellied) or square (bevelled box walls). Cups stand on a
+heavy ``base`` and tea cups on a ``foot_ring``; both have a rolled ``rim``.
 """
 
 from __future__ import annotations
@@ -11,6 +12,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
+from ._household import ring
 
 
 def _handle(rng, r_out: float, h: float, thick: float) -> S.Shape:
@@ -51,26 +53,49 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
     return [make_part("body", "body", body, mat), make_part("handle", "handle", handle, mat)]
 
 
-@register("cup", parts=("body",), size_range=(0.08, 0.14), density=900,
-          variants=("tumbler", "tapered"), placement="surface")
+def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
+    """A rolled rim resting on a wall's top edge (outer radius ``r_out`` at height ``z``)."""
+    return ring([(r_out - t, z), (r_out + bead, z), (r_out + bead, z + bead), (r_out - t, z + bead)],
+                sections=20)
+
+
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle"), size_range=(0.08, 0.14),
+          density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
-    h = rng.uniform(0.08, 0.13)
+    h = rng.uniform(0.08, 0.12)
     t = rng.uniform(0.0025, 0.004)
     mat = M.glass(rng) if rng.random() < 0.5 else M.plastic(rng)
-    prof = [(r * 0.8, 0.0), (r, h)] if variant == "tapered" else [(r, 0.0), (r, h)]
-    return [make_part("body", "body", S.vessel(prof, t, bottom=t * 2), mat)]
+    if variant == "handled":
+        mat = M.ceramic(rng)
+    zb = rng.uniform(0.004, 0.007)  # the heavy base it stands on
+    r0 = r * 0.8 if variant == "tapered" else r
+    prof = [(r0, zb), (r, zb + h)]
+    r_base = r0 * 0.96
+    base = S.lathe([(r_base, 0.0), (r_base, zb - 0.001), (r0 * 0.9, zb)], sections=24)
+    parts = [make_part("body", "body", S.vessel(prof, t, bottom=t * 2), mat),
+             make_part("base", "base", base, mat),
+             make_part("rim", "rim", _rim(r, zb + h, t, rng.uniform(0.0008, 0.0015)), mat)]
+    if variant == "handled":
+        handle = _handle(rng, r, h, rng.uniform(0.004, 0.006)).moved((0, 0, zb))
+        parts.append(make_part("handle", "handle", handle, mat))
+    return parts
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle",), size_range=(0.06, 0.11), density=900,
-          variants=("bowl", "handled"), placement="surface")
+@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim"),
+          size_range=(0.06, 0.11), density=900, variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
     h = rng.uniform(0.045, 0.065)
     t = 0.003
     mat = M.ceramic(rng)
-    body = S.vessel([(r * 0.5, 0.0), (r * 0.55, 0.006), (r * 0.9, h * 0.5), (r, h)], t)
-    parts = [make_part("body", "body", body, mat)]
+    fh = rng.uniform(0.004, 0.007)  # the foot ring it stands on
+    body = S.vessel([(r * 0.5, fh), (r * 0.55, fh + 0.006), (r * 0.9, fh + h * 0.5), (r, fh + h)], t)
+    rf = r * 0.48
+    foot = ring([(rf - 0.004, 0.0), (rf, 0.0), (rf - 0.001, fh), (rf - 0.0036, fh)], sections=20)
+    parts = [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
+             make_part("rim", "rim", _rim(r, fh + h, t, 0.001), mat)]
     if variant == "handled":
-        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004), mat))
+        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh)),
+                               mat))
     return parts

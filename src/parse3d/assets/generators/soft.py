@@ -1,8 +1,10 @@
 """Soft goods: pillows, towels and rugs.
 
-Pillows are soft convex solids with a flattened bottom (they stand on a bed or a sofa); folded
-towels are stacks of rounded layers, rolled towels flattened rolls along X; rugs are thin slabs
-on the floor, optionally with ``fringe`` strips at their short ends.
+Pillows are a soft convex ``cover`` with a flattened bottom (they stand on a bed or a sofa) and a
+``piping`` cord along the seam; folded towels are stacks of rounded layers, rolled towels
+flattened rolls along X; rugs are a thin ``field`` framed by a ``border`` on the floor, optionally
+with ``fringe`` strips at their short ends. A pillow's or a rug's ``body`` (its one part before)
+is a group label over its cover and piping, or its field and border.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._bedbath_common import bevel_box, cushion, loft, soft_hull
+from ._household import ring
 
 
 def _roll(length: float, radius: float, *, squash: float = 0.85, flat: float = 0.3,
@@ -43,20 +46,44 @@ def _roll(length: float, radius: float, *, squash: float = 0.85, flat: float = 0
     return shape.moved((0, 0, -shape.mesh.bounds[0, 2]))
 
 
-@register("pillow", parts=("body",), size_range=(0.3, 0.95), density=60,
-          variants=("bed", "square", "bolster"), placement="surface")
+def _piping_loop(rx: float, ry: float, power: float, z: float, n: int = 28) -> np.ndarray:
+    """(n, 3) points on the superellipse seam of a :func:`soft_hull` pillow at height ``z``."""
+    u = np.linspace(0, 2 * np.pi, n, endpoint=False)
+    cu, su = np.cos(u), np.sin(u)
+    ex = 2.0 / power
+    return np.c_[rx * np.sign(cu) * np.abs(cu) ** ex, ry * np.sign(su) * np.abs(su) ** ex,
+                 np.full(n, z)]
+
+
+@register("pillow", parts=("body",), extra_parts=("cover", "piping"), size_range=(0.3, 0.95),
+          density=60, variants=("bed", "square", "bolster"), placement="surface",
+          groups={"body": ("cover", "piping")})
 def pillow(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.fabric(rng) if rng.random() < 0.6 else M.solid((0.95, 0.94, 0.92), "fabric", 0.95)
+    trim = mat if rng.random() < 0.5 else M.fabric(rng)
+    pr = rng.uniform(0.004, 0.006)  # the piping cord's radius
     if variant == "bolster":
-        body = _roll(rng.uniform(0.45, 0.9), rng.uniform(0.08, 0.12), squash=1.0, flat=0.25)
+        length, radius = rng.uniform(0.45, 0.9), rng.uniform(0.08, 0.12)
+        body = _roll(length, radius, squash=1.0, flat=0.25)
+        # a cord round each end, where the end cap is sewn to the body
+        z_axis = radius * 0.75
+        end = min(radius * 0.6, length * 0.2)
+        u = np.linspace(0, 2 * np.pi, 24, endpoint=False)
+        yz = np.c_[radius * np.cos(u), np.maximum(z_axis + radius * np.sin(u), pr)]
+        cords = [S.tube(np.c_[np.full(len(u), sx * (length / 2 - end)), yz], pr, sections=8,
+                        closed=True) for sx in (-1, 1)]
+        piping = cords
     else:
         if variant == "bed":
             w, d = rng.uniform(0.5, 0.75), rng.uniform(0.35, 0.5)
         else:
             w = d = rng.uniform(0.38, 0.55)
         t = rng.uniform(0.1, 0.18)
-        body = soft_hull((w / 2, d / 2, t / 2), power=rng.uniform(3.0, 5.0), flat=0.3)
-    return [make_part("body", "body", body, mat)]
+        power = rng.uniform(3.0, 5.0)
+        body = soft_hull((w / 2, d / 2, t / 2), power=power, flat=0.3)
+        # the cord round the seam where the two faces of the cover meet
+        piping = [S.tube(_piping_loop(w / 2, d / 2, power, 0.0), pr, sections=8, closed=True)]
+    return [make_part("cover", "cover", body, mat), make_part("piping", "piping", piping, trim)]
 
 
 def _folded(rng, w: float, d: float, t: float, z0: float, n: int) -> list[S.Shape]:
@@ -91,22 +118,32 @@ def towel(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("rug", parts=("body",), extra_parts=("fringe",), size_range=(1.2, 3.5), density=300,
-          variants=("rectangular", "round", "runner"), placement="floor")
+@register("rug", parts=("body",), extra_parts=("field", "border", "fringe"), size_range=(1.2, 3.5),
+          density=300, variants=("rectangular", "round", "runner"), placement="floor",
+          groups={"body": ("field", "border")})
 def rug(rng: np.random.Generator, variant: str) -> list[Part]:
     t = rng.uniform(0.008, 0.02)
     mat = M.fabric(rng)
+    edge = M.fabric(rng)  # the border is woven in another colour
     if variant == "round":
         r = rng.uniform(0.6, 1.2)
-        body = S.lathe([(r - 0.006, 0.0), (r, t * 0.5), (r - 0.006, t)], sections=48)
-        return [make_part("body", "body", body, mat)]
+        b = r * rng.uniform(0.08, 0.14)
+        field = S.cylinder(r - b, t, center=(0, 0, t / 2), sections=48)
+        border = ring([(r - b, 0.0), (r - 0.006, 0.0), (r, t * 0.5), (r - 0.006, t), (r - b, t)],
+                      sections=48)
+        return [make_part("field", "field", field, mat), make_part("border", "border", border, edge)]
     if variant == "runner":
         w, d = rng.uniform(2.0, 3.2), rng.uniform(0.6, 0.9)
     else:
         w = rng.uniform(1.4, 3.2)
         d = w * rng.uniform(0.6, 0.8)
-    parts = [make_part("body", "body", bevel_box((w, d, t), center=(0, 0, t / 2), bevel=t / 3),
-                       mat)]
+    b = min(w, d) * rng.uniform(0.06, 0.1)
+    field = S.box((w - 2 * b, d - 2 * b, t), center=(0, 0, t / 2))
+    # four bands framing the field: the long ones run the full width, the short ones fit between
+    bands = [bevel_box((w, b, t), center=(0, sy * (d - b) / 2, t / 2), bevel=t / 3) for sy in (-1, 1)]
+    bands += [bevel_box((b, d - 2 * b, t), center=(sx * (w - b) / 2, 0, t / 2), bevel=t / 3)
+              for sx in (-1, 1)]
+    parts = [make_part("field", "field", field, mat), make_part("border", "border", bands, edge)]
     if rng.random() < 0.6:
         fl = rng.uniform(0.04, 0.08)
         fringe_mat = M.solid((0.92, 0.9, 0.84), "fabric", 0.95)

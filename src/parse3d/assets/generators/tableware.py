@@ -1,8 +1,10 @@
 """Tableware: bowls, plates, wine glasses, vases and candles.
 
 Vessels are revolved (``vessel``) so they have a real inside: a bowl's inner floor is an
-internal support surface (fruit goes IN it). Plates are a solid lathe base with a raised rim
-ring on top, so they have a flat bottom and a flat well and stack.
+internal support surface (fruit goes IN it). Bowls, plates and vases stand on a foot ring. A
+plate is a solid ``well`` with a raised ``rim`` ring on top, so it has a flat well and stacks; a
+vase is its ``body``, a ``neck`` band and a flared ``lip``. Where a category's one part was split
+so, its old label is a group label over the new parts (``plate:body`` is the whole plate).
 """
 
 from __future__ import annotations
@@ -16,33 +18,46 @@ from ..registry import register
 from ._household import ring, shell
 
 
-@register("bowl", parts=("body",), size_range=(0.10, 0.28), density=1200,
-          variants=("shallow", "deep", "footed"), placement="surface")
+def _lip(r_out: float, z: float, t: float, bead: float) -> S.Shape:
+    """A rolled lip: a band of section ``t + bead`` wide and ``bead`` tall resting on a wall's
+    top edge (outer radius ``r_out`` at height ``z``), bulging ``bead`` outwards."""
+    return ring([(r_out - t, z), (r_out + bead, z), (r_out + bead, z + bead), (r_out - t, z + bead)],
+                sections=24)
+
+
+def _foot_ring(r: float, width: float, h: float) -> S.Shape:
+    """A foot ring of outer radius ``r``: a narrow band standing on z = 0, ``h`` tall, that
+    meets the underside above it."""
+    return ring([(r - width, 0.0), (r, 0.0), (r - width * 0.25, h), (r - width * 0.9, h)],
+                sections=24)
+
+
+@register("bowl", parts=("body",), extra_parts=("foot_ring", "rim"), size_range=(0.10, 0.28),
+          density=1200, variants=("shallow", "deep", "footed"), placement="surface")
 def bowl(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.06, 0.11)
     t = rng.uniform(0.004, 0.006)
     mat = M.ceramic(rng) if rng.random() < 0.75 else M.wood(rng)
-    z0 = 0.0
-    shapes = []
-    if variant == "footed":
-        z0 = rng.uniform(0.008, 0.014)
-        rb = r * 0.45
-        # a triangular foot ring: no flat top of its own for fruit to be "in"
-        shapes.append(ring([(rb * 0.8, 0.0), (rb, 0.0), (rb * 0.92, z0 + 0.0005)],
-                           sections=24))
+    # every bowl stands on a foot ring; a footed bowl's is a tall one
+    z0 = rng.uniform(0.008, 0.014) if variant == "footed" else rng.uniform(0.003, 0.005)
     if variant == "shallow":
         h = r * rng.uniform(0.38, 0.48) + 0.012  # deep enough to hold fruit
         prof = [(r * 0.5, 0.0), (r * 0.53, 0.009), (r * 0.88, h * 0.5), (r, h)]
     else:
         h = r * rng.uniform(0.55, 0.75)
         prof = [(r * 0.45, 0.0), (r * 0.85, h * 0.45), (r, h)]
+    rb = prof[0][0] * 0.9
     prof = [(pr, pz + z0) for pr, pz in prof]
-    shapes.append(shell(prof, t, bottom=t * 1.2, sections=20))
-    return [make_part("body", "body", shapes, mat)]
+    body = shell(prof, t, bottom=t * 1.2, sections=20)
+    foot = _foot_ring(rb, min(0.008, rb * 0.25), z0)
+    rim = _lip(r, h + z0, t, rng.uniform(0.0015, 0.0025))
+    return [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
+            make_part("rim", "rim", rim, mat)]
 
 
-@register("plate", parts=("body",), size_range=(0.15, 0.30), density=2000,
-          variants=("dinner", "side", "deep"), placement="surface")
+@register("plate", parts=("body",), extra_parts=("foot_ring",), size_range=(0.15, 0.30),
+          density=2000, variants=("dinner", "side", "deep"), placement="surface",
+          groups={"body": ("well", "rim", "foot_ring")})
 def plate(rng: np.random.Generator, variant: str) -> list[Part]:
     r = {"dinner": rng.uniform(0.125, 0.14), "side": rng.uniform(0.085, 0.10),
          "deep": rng.uniform(0.105, 0.12)}[variant]
@@ -50,12 +65,15 @@ def plate(rng: np.random.Generator, variant: str) -> list[Part]:
     rim_h = rng.uniform(0.018, 0.026) if variant == "deep" else rng.uniform(0.006, 0.01)
     well = r * (rng.uniform(0.62, 0.7) if variant == "deep" else rng.uniform(0.7, 0.8))
     mat = M.ceramic(rng)
+    fh = 0.003  # the foot ring under the well
     rb = well + (r - well) * 0.4  # outer edge of the base, under the rim
-    base = S.lathe([(well * 0.6, 0.0), (well * 0.62, 0.002), (rb, base_h)], sections=40)
+    base = S.lathe([(well * 0.62, fh), (well * 0.64, fh + 0.002), (rb, base_h)], sections=40)
+    foot = _foot_ring(well * 0.6, min(0.008, well * 0.1), fh)
     # the rim sits on the base's flat top and flares outwards; the well stays a flat disc
     rim = ring([(well, base_h), (rb, base_h), (r, base_h + rim_h), (r - 0.008, base_h + rim_h)],
                sections=32)
-    return [make_part("body", "body", [base, rim], mat)]
+    return [make_part("well", "well", base, mat), make_part("rim", "rim", rim, mat),
+            make_part("foot_ring", "foot_ring", foot, mat)]
 
 
 @register("wine_glass", parts=("bowl", "stem", "foot"), size_range=(0.13, 0.26), density=2500,
@@ -87,27 +105,43 @@ def wine_glass(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("foot", "foot", foot, mat)]
 
 
-@register("vase", parts=("body",), size_range=(0.15, 0.46), density=1800,
-          variants=("amphora", "cylinder", "bud"), placement="surface")
+@register("vase", parts=("body",), extra_parts=("neck", "lip", "foot_ring"),
+          size_range=(0.15, 0.46), density=1800, variants=("amphora", "cylinder", "bud"),
+          placement="surface", groups={"body": ("neck", "lip", "foot_ring")})
 def vase(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if rng.random() < 0.7 else M.glass(rng)
-    if variant == "amphora":
-        r, h = rng.uniform(0.07, 0.1), rng.uniform(0.25, 0.4)
-        neck = r * rng.uniform(0.45, 0.6)
-        prof = [(r * 0.6, 0.0), (r, h * 0.35), (neck, h * 0.75), (neck, h * 0.9), (neck * 1.3, h)]
-        t = 0.005
-    elif variant == "cylinder":
+    fh = 0.004  # the foot ring it stands on
+    if variant == "cylinder":
         r, h = rng.uniform(0.045, 0.07), rng.uniform(0.2, 0.35)
-        prof = [(r, 0.0), (r * rng.uniform(1.0, 1.15), h)]
+        r_top = r * rng.uniform(1.0, 1.15)
         t = 0.004
+        z_lip = h * 0.93
+        r_lip = r + (r_top - r) * 0.93
+        body = shell([(r, fh), (r_lip, z_lip)], t, bottom=t * 2, sections=24)
+        parts = [make_part("body", "body", body, mat)]
     else:
-        r, h = rng.uniform(0.045, 0.06), rng.uniform(0.16, 0.25)
-        neck = rng.uniform(0.012, 0.016)
-        prof = [(r * 0.7, 0.0), (r, h * 0.25), (neck, h * 0.7), (neck, h * 0.92), (neck * 1.4, h)]
-        t = 0.004
-    n = 20 if variant == "bud" else 24
-    body = shell(prof, t, bottom=t * 2, sections=n)
-    return [make_part("body", "body", body, mat)]
+        if variant == "amphora":
+            r, h = rng.uniform(0.07, 0.1), rng.uniform(0.25, 0.4)
+            neck = r * rng.uniform(0.45, 0.6)
+            prof = [(r * 0.6, fh), (r, h * 0.35), (neck, h * 0.75)]
+            t = 0.005
+        else:
+            r, h = rng.uniform(0.045, 0.06), rng.uniform(0.16, 0.25)
+            neck = rng.uniform(0.012, 0.016)
+            prof = [(r * 0.7, fh), (r, h * 0.25), (neck, h * 0.7)]
+            t = 0.004
+        n = 20 if variant == "bud" else 24
+        z_neck, z_lip = prof[-1][1], h * 0.9
+        body = shell(prof, t, bottom=t * 2, sections=n)
+        neck_band = ring([(neck, z_neck), (neck, z_lip), (neck - t, z_lip), (neck - t, z_neck)],
+                         sections=n)
+        parts = [make_part("body", "body", body, mat), make_part("neck", "neck", neck_band, mat)]
+        r_lip, r_top = neck, neck * (1.4 if variant == "bud" else 1.3)
+    # the lip flares from the neck (or the wall) to the mouth
+    lip = ring([(r_lip, z_lip), (r_top, h), (r_top - t, h), (r_lip - t, z_lip)], sections=24)
+    r0 = r if variant == "cylinder" else r * (0.6 if variant == "amphora" else 0.7)
+    foot = _foot_ring(r0 * 0.92, min(0.01, r0 * 0.2), fh)
+    return parts + [make_part("lip", "lip", lip, mat), make_part("foot_ring", "foot_ring", foot, mat)]
 
 
 def _wax(rng: np.random.Generator) -> Material:

@@ -1,0 +1,62 @@
+"""Group labels: where a category's one part was split into finer parts, its old label still
+names the same geometry (the parts it covers), in the vocabulary, in ``#k`` order, through the
+asset cache and in a PAG's references."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from parse3d.assets import registry
+from parse3d.assets.cache import load_asset, save_asset
+from parse3d.pag.validate import validate_data
+
+SPLIT = {  # category: the labels its ``body`` covers now
+    "plate": {"well", "rim", "foot_ring"},
+    "pillow": {"cover", "piping"},
+    "rug": {"field", "border"},
+}
+
+
+@pytest.mark.parametrize("category", sorted(SPLIT))
+def test_old_label_names_every_sub_part(category: str) -> None:
+    cat = registry.get(category)
+    assert "body" in cat.vocabulary and SPLIT[category] <= set(cat.vocabulary)
+    a = registry.generate(category, 0)
+    covered = a.parts_by_label("body")
+    assert {p.label for p in covered} == SPLIT[category]
+    # the group covers the whole asset but the decorations a PAG never meant by ``body``
+    names = {p.name for p in covered}
+    assert names == {p.name for p in a.parts if p.label != "fringe"}
+    # its bbox is the old part's: the asset's extent in x and y
+    lo = np.min([p.bounds[0] for p in covered], axis=0)
+    hi = np.max([p.bounds[1] for p in covered], axis=0)
+    if category != "rug":
+        np.testing.assert_allclose([lo, hi], a.bounds, atol=1e-9)
+    assert hi[2] == pytest.approx(a.bounds[1, 2])
+
+
+def test_group_labels_survive_the_asset_cache(tmp_path) -> None:
+    a = registry.generate("plate", 1)
+    save_asset(a, tmp_path / "plate.npz")
+    b = load_asset(tmp_path / "plate.npz")
+    assert [p.name for p in b.parts_by_label("body")] == [p.name for p in a.parts_by_label("body")]
+
+
+def test_a_pag_may_name_old_and_new_labels() -> None:
+    data = {
+        "format": "pag/1", "name": "table-for-one",
+        "room": {"type": "dining_room", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]], "height": 2.6},
+        "objects": [{"id": "table", "category": "dining_table"}, {"id": "plate", "category": "plate"},
+                    {"id": "cup", "category": "cup"}],
+        "relations": [
+            {"relation": "ON", "child": "table", "parent": "floor"},
+            {"relation": "ON", "child": "plate:body", "parent": "table:tabletop"},
+            {"relation": "ON", "child": "cup:base", "parent": "table:tabletop"},
+            {"relation": "PARALLEL_TO", "child": "cup:rim", "parent": "plate:rim"},
+        ],
+    }
+    assert validate_data(data, vocabulary=registry.vocabulary()) == []
+    bad = dict(data, relations=data["relations"] + [
+        {"relation": "PARALLEL_TO", "child": "cup:saucer", "parent": "plate:well"}])
+    assert any("saucer" in str(p) for p in validate_data(bad, vocabulary=registry.vocabulary()))
