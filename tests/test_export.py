@@ -318,6 +318,7 @@ def test_mjcf_of_the_other_room_loads_with_colours(exported):
 # -- URDF ---------------------------------------------------------------------------------
 
 def test_urdf_loads_in_yourdfpy_and_sapien(exported):
+    import sapien
     import yourdfpy
 
     from parse3d.export.sapien import load_urdf_scene
@@ -331,14 +332,20 @@ def test_urdf_loads_in_yourdfpy_and_sapien(exported):
         assert {lk for lk in u.link_map} == {p.name for p in o.asset.parts}
         assert u.scene is not None and len(u.scene.geometry) == len(o.asset.parts)
     sim = load_urdf_scene(out / "urdf", render=False)
-    mass = {o.id: o.mass for o in walk_scene(scene).objects}
+    rec = walk_scene(scene)
+    mass = {o.id: o.mass for o in rec.objects}
+    pieces = {o.id: {p.name: len(p.pieces) for p in o.parts} for o in rec.objects}
     for o in scene.placed:
         if len(o.asset.parts) == 1:
             entity = sim.actors[o.id]
             assert np.allclose(entity.pose.p, o.settled_position, atol=1e-5)
+            body = entity.find_component_by_type(sapien.physx.PhysxRigidBaseComponent)
+            assert len(body.collision_shapes) == sum(pieces[o.id].values()), o.id
             continue
         art = sim.articulations[o.id]
         assert {lk.name for lk in art.links} == {p.name for p in o.asset.parts}
+        # every convex piece of a part is a collision shape of its own in SAPIEN
+        assert {lk.name: len(lk.collision_shapes) for lk in art.links} == pieces[o.id]
         assert np.allclose(art.root_pose.p, o.settled_position, atol=1e-5)
         assert sum(lk.mass for lk in art.links) == pytest.approx(mass[o.id], rel=1e-3, abs=0.01)
     assert "room" in sim.articulations
