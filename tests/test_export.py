@@ -558,6 +558,16 @@ def test_cli_bad_input_exits_2(rooms, tmp_path, capsys):
     assert _cli(["export", str(d), "--format", "glb", "--out", str(blocker / "x")]) == 2
     assert "cannot create the output folder" in capsys.readouterr().err
     assert blocker.read_text() == "not a folder"
+    # something in the way of a file the export writes: named, and no temporary file left
+    busy = tmp_path / "busy"
+    (busy / "scene.usd").mkdir(parents=True)
+    (busy / "urdf").write_text("mine")
+    for fmt, name, what in (("usd", "scene.usd", "a folder"), ("urdf", "urdf", "a file")):
+        assert _cli(["export", str(d), "--format", fmt, "--out", str(busy)]) == 2
+        err = capsys.readouterr().err
+        assert err.startswith(f"{busy / name}:") and f"{what} is in the way" in err, err
+    assert sorted(p.name for p in busy.iterdir()) == ["scene.usd", "urdf"]
+    assert (busy / "urdf").read_text() == "mine"
     unsettled = tmp_path / "unsettled"
     unsettled.mkdir()
     doc = json.loads((d / "scene.json").read_text())
