@@ -768,6 +768,9 @@ def test_dataset_formats_are_written_and_part_of_its_identity(tmp_path, capsys):
     assert (scene / "scene.glb").is_file() and (scene / "scene.xml").is_file()
     assert any((scene / "meshes").glob("*.stl"))
     assert json.loads((out / "dataset.json").read_text())["formats"] == ["glb", "mjcf"]
+    # the formats are a set: naming them in another order resumes the same dataset
+    again = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("mjcf", "glb"))
+    assert build_dataset(again, out, workers=1).ok == 1
     other = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb",))
     with pytest.raises(InputError, match="formats"):
         build_dataset(other, out, workers=1)
