@@ -283,10 +283,11 @@ def test_usd_passes_the_usd_validators(every_room, cabinets):
 
 # -- MJCF ---------------------------------------------------------------------------------
 
-def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported):
+@pytest.mark.parametrize("room", [Path(r).stem for r in ROOMS])
+def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported, room):
     import mujoco
 
-    scene, out, _ = exported["study"]
+    scene, out, _ = exported[room]
     model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
     assert model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC and model.opt.noslip_iterations == 3
     data = mujoco.MjData(model)
@@ -468,6 +469,65 @@ def test_joints_put_the_door_in_the_same_place_in_every_format(cabinets):
     assert stage.GetPrimAtPath("/World/Objects/cab").HasAPI(UsdPhysics.ArticulationRootAPI)
     assert stage.GetPrimAtPath("/World/Objects/cab2/Joints/weld_to_world").IsA(
         UsdPhysics.FixedJoint)
+
+
+CABINET_PAG = {"format": "pag/1", "name": "cabinet",
+               "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]],
+                        "height": 2.6},
+               "objects": [{"id": "cab", "category": "storage_cabinet"}],
+               "relations": [{"relation": "ON", "child": "cab", "parent": "floor"}]}
+
+
+def test_joint_values_in_scene_json_reach_every_format(tmp_path, capsys):
+    """Door angles written into scene.json come out of every format at those angles."""
+    import mujoco
+    from pxr import Usd
+
+    from parse3d.assets.registry import vocabulary
+
+    (tmp_path / "cab.json").write_text(json.dumps(CABINET_PAG))
+    d = tmp_path / "scene"
+    run_pipeline(load_pag(tmp_path / "cab.json", vocabulary=vocabulary()), seed=0, out=d,
+                 options=PipelineOptions(settle=False, preview=False, formats=()))
+    doc = json.loads((d / "scene.json").read_text())
+    hinges = [j for j in parse3d.load_scene(d).objects["cab"].asset.joints
+              if j.type == "revolute"]
+    assert len(hinges) >= 2
+    want = {j.name: round(0.6 * max(j.limits, key=abs), 6) for j in hinges}  # 60 % open
+    doc["objects"][0]["joints"] = want
+    (d / "scene.json").write_text(json.dumps(doc))
+    assert _cli(["export", str(d), "--format", ",".join(FORMATS)]) == 0
+    capsys.readouterr()
+    scene = parse3d.load_scene(d)
+    cab = scene.objects["cab"]
+    assert cab.joints == want
+    # glTF: the object's extras
+    node = next(n for n in _glb_json(d / "scene.glb")["nodes"] if n["name"] == "cab")
+    assert node["extras"]["joints"] == pytest.approx(want)
+    # USD: each joint's value and the drive target holding it (degrees)
+    stage = Usd.Stage.Open(str(d / "scene.usd"))
+    for name, v in want.items():
+        jp = stage.GetPrimAtPath(f"/World/Objects/cab/Joints/{name}")
+        assert jp.GetAttribute("parse3d:value").Get() == pytest.approx(v, abs=1e-6)
+        target = jp.GetAttribute("drive:angular:physics:targetPosition").Get()
+        assert target == pytest.approx(np.degrees(v), abs=1e-4)
+    # MJCF: the model's initial configuration
+    model = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    for name, v in want.items():
+        j = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, f"cab:{name}")
+        assert model.qpos0[model.jnt_qposadr[j]] == pytest.approx(v, abs=1e-6)
+    # URDF: the values to set after loading
+    rows = {r["id"]: r for r in json.loads((d / "urdf" / "scene.json").read_text())}
+    assert rows["cab"]["joints"] == pytest.approx(want)
+    # OBJ: the doors baked where the joints put them
+    obj = trimesh.load(d / "scene.obj", force="scene", group_material=False, split_groups=True)
+    posed = cab.asset.part_transforms(want)
+    for j in hinges:
+        m = cab.asset.part(j.child_part).mesh.copy()
+        m.apply_transform(cab.transform() @ posed[j.child_part])
+        got = np.asarray(obj.geometry[f"cab:{j.child_part}"].vertices)
+        got = got @ np.linalg.inv(Z_UP_TO_Y_UP[:3, :3]).T
+        assert np.allclose([got.min(0), got.max(0)], m.bounds, atol=1e-5), j.child_part
 
 
 def test_mujoco_locks_joints_by_default(cabinets):
