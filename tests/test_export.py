@@ -150,6 +150,34 @@ def _world_part_meshes(scene: Scene) -> dict[str, trimesh.Trimesh]:
     return meshes
 
 
+# -- the exporter contract ----------------------------------------------------------------
+
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_every_format_module_keeps_the_exporter_contract(fmt, tmp_path):
+    """A format is one module: NAME, FILES, MARKER and write(record, out) writing only its
+    FILES, the MARKER among them, byte for byte the same on every run."""
+    from parse3d.export import FORMATS as REGISTERED
+    from parse3d.export import format_module
+
+    assert set(REGISTERED) == set(FORMATS)
+    mod = format_module(fmt)
+    assert fmt == mod.NAME and mod.MARKER and isinstance(mod.FILES, tuple)
+    rec = walk_scene(cabinet_scene(), ExportOptions(friction=settling_friction()))
+    runs = []
+    for run in ("a", "b"):
+        out = tmp_path / run
+        out.mkdir()
+        written = mod.write(rec, out)
+        rel = {str(p.relative_to(out)) for p in written}
+        on_disk = {str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()}
+        assert rel == on_disk  # every file written is reported, nothing else is left
+        assert mod.MARKER in rel
+        assert all(any(r == f or (f.endswith("/") and r.startswith(f)) for f in mod.FILES)
+                   for r in rel), sorted(rel)
+        runs.append({r: (out / r).read_bytes() for r in rel})
+    assert runs[0] == runs[1]
+
+
 # -- glTF ---------------------------------------------------------------------------------
 
 def _glb_json(path: Path) -> dict:
