@@ -665,6 +665,23 @@ def test_cli_bad_input_exits_2(rooms, tmp_path, capsys):
     assert "was not settled" in capsys.readouterr().err
 
 
+def test_solve_formats_writes_each_format(tmp_path, capsys):
+    from parse3d.export import present_formats
+
+    pag = tmp_path / "tiny.json"
+    pag.write_text(json.dumps(TINY_PAG))
+    bad = tmp_path / "bad"
+    assert _cli(["solve", str(pag), "--formats", "glb,fbx", "--out", str(bad)]) == 2
+    assert "unknown format 'fbx'" in capsys.readouterr().err and not bad.exists()
+    d = tmp_path / "s"
+    assert _cli(["solve", str(pag), "--formats", "usd,urdf", "--no-settle", "--no-preview",
+                 "--out", str(d), "--json"]) == 0
+    capsys.readouterr()
+    assert (d / "scene.usd").is_file() and (d / "urdf" / "scene.json").is_file()
+    assert set(json.loads((d / "exports.json").read_text())["formats"]) == {"usd", "urdf"}
+    assert present_formats(d) == ("usd", "urdf")
+
+
 def test_load_scene_reads_what_solve_wrote(rooms):
     scene, d = rooms["study"]
     back = parse3d.load_scene(d)
@@ -736,6 +753,9 @@ def test_settle_refreshes_every_export_in_the_folder(tiny_scene, tmp_path, capsy
 
     d = _folder_with_every_format(tiny_scene, tmp_path / "tiny")
     lifted = tiny_scene.objects["mug"].position.copy()
+    # not settled yet: every format's default pose is the solved one
+    for fmt, pos in _exported_mug_positions(d).items():
+        assert np.allclose(pos, lifted, atol=1e-5), fmt
     meshes = {p: p.stat().st_mtime_ns for p in (d / "meshes").iterdir()}
     assert _cli(["settle", str(d), "--steps", "150", "--json"]) == 0
     capsys.readouterr()
