@@ -12,13 +12,8 @@ cost of the first export in a process (importing pxr or mujoco), not in the best
 
 Goal (issue 15): each format in <= 1 s.
 
-``--mjcf-spec`` also times the way MJCF used to be written (an ``MjSpec`` built and written
-by ``MjSpec.to_xml``, which compiles the model first) against the direct XML writer, on the
-same walked scene in the same process, alternating, best of ``--repeats``.
-
     python benchmarks/bench_export.py                 # every format
     python benchmarks/bench_export.py --formats usd --profile
-    python benchmarks/bench_export.py --formats mjcf --mjcf-spec
     python benchmarks/bench_export.py --formats urdf --baseline-rev 20249ea
 
 ``--baseline-rev REV`` checks REV out into a temporary git worktree and exports the same scene
@@ -134,8 +129,6 @@ def main() -> None:
     ap.add_argument("--formats", default=",".join(FORMATS))
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--profile", action="store_true", help="profile one export per format")
-    ap.add_argument("--mjcf-spec", action="store_true",
-                    help="compare the MJCF writer with MjSpec.to_xml")
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="compare with git revision REV, rounds interleaved")
     args = ap.parse_args()
@@ -174,8 +167,6 @@ def main() -> None:
                 again = min(again, time.perf_counter() - t)
         print(f"{fmt:<6} {max(first - best, 0.0):8.3f} {best:8.3f} {cpu:8.3f} {again:8.3f} "
               f"{files:6d} {size:7.2f}", flush=True)
-        if fmt == "mjcf" and args.mjcf_spec:
-            compare_mjcf(scene, args.repeats)
         if args.profile:
             with tempfile.TemporaryDirectory() as d:
                 prof = cProfile.Profile()
@@ -183,35 +174,6 @@ def main() -> None:
                 export_scene(scene, Path(d), [fmt], opts)
                 prof.disable()
                 pstats.Stats(prof).sort_stats("cumulative").print_stats(12)
-
-
-
-def compare_mjcf(scene: Scene, repeats: int) -> None:
-    """Best wall and CPU seconds of writing ``scene.xml`` + ``meshes/`` by ``MjSpec.to_xml``
-    and by the direct writer (the walk and the hulls done once beforehand, untimed)."""
-    from parse3d.export import mjcf, walk_scene
-
-    rec = walk_scene(scene, ExportOptions(friction=settling_friction()))
-    for o in rec.objects:
-        for p in o.parts:
-            p.pieces  # noqa: B018 - computes and caches the hulls
-
-    def via_spec(out: Path) -> None:
-        spec = mjcf.build_spec(rec, out=out)
-        spec.modelfiledir = str(out)
-        (out / "scene.xml").write_text(spec.to_xml())
-
-    runs = {"MjSpec.to_xml": via_spec, "direct XML": lambda out: mjcf.write(rec, out)}
-    best = {k: (float("inf"), float("inf")) for k in runs}
-    for _ in range(repeats):
-        for name, fn in runs.items():
-            with tempfile.TemporaryDirectory() as d:
-                t, c = time.perf_counter(), time.process_time()
-                fn(Path(d))
-                w, u = time.perf_counter() - t, time.process_time() - c
-            best[name] = (min(best[name][0], w), min(best[name][1], u))
-    for name, (w, u) in best.items():
-        print(f"mjcf via {name:<14} wall {w:6.3f} s  cpu {u:6.3f} s")
 
 
 if __name__ == "__main__":

@@ -573,7 +573,8 @@ def test_mujoco_locks_joints_by_default(cabinets):
 
 
 def test_mjcf_file_is_the_model_mjspec_builds(cabinets):
-    """scene.xml is written as text; compiled, it is the model ``build_spec`` makes."""
+    """scene.xml with its mesh files compiles to the model ``build_spec`` makes in memory
+    (every mesh inline), which ``to_mujoco`` uses."""
     import mujoco
 
     from parse3d.export.mjcf import build_spec
