@@ -12,13 +12,14 @@ cost of the first export in a process (importing pxr or mujoco), not in the best
 
 Goal (issue 15): each format in <= 1 s.
 
-``--mjcf-spec`` also times the way MJCF used to be written (an ``MjSpec`` built and written
-by ``MjSpec.to_xml``, which compiles the model first) against the direct XML writer, on the
-same walked scene in the same process, alternating, best of ``--repeats``.
-
     python benchmarks/bench_export.py                 # every format
     python benchmarks/bench_export.py --formats usd --profile
-    python benchmarks/bench_export.py --formats mjcf --mjcf-spec
+    python benchmarks/bench_export.py --formats urdf --baseline-rev 20249ea
+
+``--baseline-rev REV`` checks REV out into a temporary git worktree and exports the same scene
+with both packages, each in its own long-lived process, the rounds interleaved (this checkout,
+then REV, ``--repeats`` times), and prints each side's best wall and CPU time per format with
+the ratio REV / this checkout: a before/after comparison that a busy machine slows alike.
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ from __future__ import annotations
 import argparse
 import cProfile
 import pstats
+import sys
 import tempfile
 import time
 from pathlib import Path
@@ -59,15 +61,80 @@ def big_scene(n: int = 50) -> Scene:
     return scene
 
 
+def export_once(scene: Scene, fmt: str) -> dict:
+    """One cold export of ``scene`` to ``fmt`` into a fresh folder: wall and CPU seconds,
+    files and megabytes written."""
+    opts = ExportOptions(friction=settling_friction())
+    clear_cache()  # cold: the convex hulls of the pieces are part of the cost
+    with tempfile.TemporaryDirectory() as d:
+        t, c = time.perf_counter(), time.process_time()
+        written = export_scene(scene, Path(d), [fmt], opts)
+        wall, cpu = time.perf_counter() - t, time.process_time() - c
+        return {"wall": wall, "cpu": cpu, "files": len(written),
+                "mb": sum(p.stat().st_size for p in written) / 1e6}
+
+
+def worker(objects: int) -> None:
+    """Answer ``{"fmt": F}`` requests with :func:`export_once` (for ``--baseline-rev``)."""
+    from _common import serve
+
+    scene = big_scene(objects)
+    for fmt in FORMATS:  # imports (pxr, mujoco) and first-use caches, untimed
+        export_once(scene, fmt)
+    serve(lambda req: export_once(scene, req["fmt"]))
+
+
+def compare(rev: str, formats: list[str], objects: int, repeats: int) -> None:
+    """This checkout against ``rev``, rounds interleaved, best of ``repeats`` per side."""
+    from _common import ROOT, Worker, revision_tree
+
+    with revision_tree(rev) as tree:
+        sides = {"this": Worker(Path(__file__), src=ROOT / "src", args=("--objects", str(objects))),
+                 rev: Worker(Path(__file__), src=tree / "src", args=("--objects", str(objects)))}
+        try:
+            best = {(k, f): {"wall": float("inf"), "cpu": float("inf")}
+                    for k in sides for f in formats}
+            files = {}
+            for _ in range(repeats):
+                for f in formats:
+                    for k, w in sides.items():
+                        r = w.ask(fmt=f)
+                        if "error" in r:
+                            raise SystemExit(f"{k}: {r['error']}")
+                        b = best[(k, f)]
+                        b["wall"], b["cpu"] = min(b["wall"], r["wall"]), min(b["cpu"], r["cpu"])
+                        files[(k, f)] = r["files"]
+        finally:
+            for w in sides.values():
+                w.close()
+    print(f"{'format':<6} {'side':<10} {'best s':>8} {'cpu s':>8} {'files':>6}")
+    for f in formats:
+        for k in sides:
+            b = best[(k, f)]
+            print(f"{f:<6} {k[:10]:<10} {b['wall']:8.3f} {b['cpu']:8.3f} {files[(k, f)]:6d}")
+        this, base = best[("this", f)], best[(rev, f)]
+        print(f"{f:<6} {'ratio':<10} {base['wall'] / this['wall']:7.2f}x "
+              f"{base['cpu'] / this['cpu']:7.2f}x   ({rev} / this checkout)", flush=True)
+
+
 def main() -> None:
+    if "--_worker" in sys.argv:
+        sys.argv.remove("--_worker")
+        ap = argparse.ArgumentParser()
+        ap.add_argument("--objects", type=int, default=50)
+        worker(ap.parse_args().objects)
+        return
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--objects", type=int, default=50)
     ap.add_argument("--formats", default=",".join(FORMATS))
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--profile", action="store_true", help="profile one export per format")
-    ap.add_argument("--mjcf-spec", action="store_true",
-                    help="compare the MJCF writer with MjSpec.to_xml")
+    ap.add_argument("--baseline-rev", metavar="REV",
+                    help="compare with git revision REV, rounds interleaved")
     args = ap.parse_args()
+    if args.baseline_rev:
+        compare(args.baseline_rev, args.formats.split(","), args.objects, args.repeats)
+        return
     t = time.perf_counter()
     scene = big_scene(args.objects)
     parts = sum(len(o.asset.parts) for o in scene.placed)
@@ -100,8 +167,6 @@ def main() -> None:
                 again = min(again, time.perf_counter() - t)
         print(f"{fmt:<6} {max(first - best, 0.0):8.3f} {best:8.3f} {cpu:8.3f} {again:8.3f} "
               f"{files:6d} {size:7.2f}", flush=True)
-        if fmt == "mjcf" and args.mjcf_spec:
-            compare_mjcf(scene, args.repeats)
         if args.profile:
             with tempfile.TemporaryDirectory() as d:
                 prof = cProfile.Profile()
@@ -109,35 +174,6 @@ def main() -> None:
                 export_scene(scene, Path(d), [fmt], opts)
                 prof.disable()
                 pstats.Stats(prof).sort_stats("cumulative").print_stats(12)
-
-
-
-def compare_mjcf(scene: Scene, repeats: int) -> None:
-    """Best wall and CPU seconds of writing ``scene.xml`` + ``meshes/`` by ``MjSpec.to_xml``
-    and by the direct writer (the walk and the hulls done once beforehand, untimed)."""
-    from parse3d.export import mjcf, walk_scene
-
-    rec = walk_scene(scene, ExportOptions(friction=settling_friction()))
-    for o in rec.objects:
-        for p in o.parts:
-            p.pieces  # noqa: B018 - computes and caches the hulls
-
-    def via_spec(out: Path) -> None:
-        spec = mjcf.build_spec(rec, out=out)
-        spec.modelfiledir = str(out)
-        (out / "scene.xml").write_text(spec.to_xml())
-
-    runs = {"MjSpec.to_xml": via_spec, "direct XML": lambda out: mjcf.write(rec, out)}
-    best = {k: (float("inf"), float("inf")) for k in runs}
-    for _ in range(repeats):
-        for name, fn in runs.items():
-            with tempfile.TemporaryDirectory() as d:
-                t, c = time.perf_counter(), time.process_time()
-                fn(Path(d))
-                w, u = time.perf_counter() - t, time.process_time() - c
-            best[name] = (min(best[name][0], w), min(best[name][1], u))
-    for name, (w, u) in best.items():
-        print(f"mjcf via {name:<14} wall {w:6.3f} s  cpu {u:6.3f} s")
 
 
 if __name__ == "__main__":

@@ -150,6 +150,34 @@ def _world_part_meshes(scene: Scene) -> dict[str, trimesh.Trimesh]:
     return meshes
 
 
+# -- the exporter contract ----------------------------------------------------------------
+
+@pytest.mark.parametrize("fmt", FORMATS)
+def test_every_format_module_keeps_the_exporter_contract(fmt, tmp_path):
+    """A format is one module: NAME, FILES, MARKER and write(record, out) writing only its
+    FILES, the MARKER among them, byte for byte the same on every run."""
+    from parse3d.export import FORMATS as REGISTERED
+    from parse3d.export import format_module
+
+    assert set(REGISTERED) == set(FORMATS)
+    mod = format_module(fmt)
+    assert fmt == mod.NAME and mod.MARKER and isinstance(mod.FILES, tuple)
+    rec = walk_scene(cabinet_scene(), ExportOptions(friction=settling_friction()))
+    runs = []
+    for run in ("a", "b"):
+        out = tmp_path / run
+        out.mkdir()
+        written = mod.write(rec, out)
+        rel = {str(p.relative_to(out)) for p in written}
+        on_disk = {str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()}
+        assert rel == on_disk  # every file written is reported, nothing else is left
+        assert mod.MARKER in rel
+        assert all(any(r == f or (f.endswith("/") and r.startswith(f)) for f in mod.FILES)
+                   for r in rel), sorted(rel)
+        runs.append({r: (out / r).read_bytes() for r in rel})
+    assert runs[0] == runs[1]
+
+
 # -- glTF ---------------------------------------------------------------------------------
 
 def _glb_json(path: Path) -> dict:
@@ -283,10 +311,11 @@ def test_usd_passes_the_usd_validators(every_room, cabinets):
 
 # -- MJCF ---------------------------------------------------------------------------------
 
-def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported):
+@pytest.mark.parametrize("room", [Path(r).stem for r in ROOMS])
+def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported, room):
     import mujoco
 
-    scene, out, _ = exported["study"]
+    scene, out, _ = exported[room]
     model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
     assert model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC and model.opt.noslip_iterations == 3
     data = mujoco.MjData(model)
@@ -318,6 +347,7 @@ def test_mjcf_of_the_other_room_loads_with_colours(exported):
 # -- URDF ---------------------------------------------------------------------------------
 
 def test_urdf_loads_in_yourdfpy_and_sapien(exported):
+    import sapien
     import yourdfpy
 
     from parse3d.export.sapien import load_urdf_scene
@@ -331,14 +361,20 @@ def test_urdf_loads_in_yourdfpy_and_sapien(exported):
         assert {lk for lk in u.link_map} == {p.name for p in o.asset.parts}
         assert u.scene is not None and len(u.scene.geometry) == len(o.asset.parts)
     sim = load_urdf_scene(out / "urdf", render=False)
-    mass = {o.id: o.mass for o in walk_scene(scene).objects}
+    rec = walk_scene(scene)
+    mass = {o.id: o.mass for o in rec.objects}
+    pieces = {o.id: {p.name: len(p.pieces) for p in o.parts} for o in rec.objects}
     for o in scene.placed:
         if len(o.asset.parts) == 1:
             entity = sim.actors[o.id]
             assert np.allclose(entity.pose.p, o.settled_position, atol=1e-5)
+            body = entity.find_component_by_type(sapien.physx.PhysxRigidBaseComponent)
+            assert len(body.collision_shapes) == sum(pieces[o.id].values()), o.id
             continue
         art = sim.articulations[o.id]
         assert {lk.name for lk in art.links} == {p.name for p in o.asset.parts}
+        # every convex piece of a part is a collision shape of its own in SAPIEN
+        assert {lk.name: len(lk.collision_shapes) for lk in art.links} == pieces[o.id]
         assert np.allclose(art.root_pose.p, o.settled_position, atol=1e-5)
         assert sum(lk.mass for lk in art.links) == pytest.approx(mass[o.id], rel=1e-3, abs=0.01)
     assert "room" in sim.articulations
@@ -463,6 +499,65 @@ def test_joints_put_the_door_in_the_same_place_in_every_format(cabinets):
         UsdPhysics.FixedJoint)
 
 
+CABINET_PAG = {"format": "pag/1", "name": "cabinet",
+               "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]],
+                        "height": 2.6},
+               "objects": [{"id": "cab", "category": "storage_cabinet"}],
+               "relations": [{"relation": "ON", "child": "cab", "parent": "floor"}]}
+
+
+def test_joint_values_in_scene_json_reach_every_format(tmp_path, capsys):
+    """Door angles written into scene.json come out of every format at those angles."""
+    import mujoco
+    from pxr import Usd
+
+    from parse3d.assets.registry import vocabulary
+
+    (tmp_path / "cab.json").write_text(json.dumps(CABINET_PAG))
+    d = tmp_path / "scene"
+    run_pipeline(load_pag(tmp_path / "cab.json", vocabulary=vocabulary()), seed=0, out=d,
+                 options=PipelineOptions(settle=False, preview=False, formats=()))
+    doc = json.loads((d / "scene.json").read_text())
+    hinges = [j for j in parse3d.load_scene(d).objects["cab"].asset.joints
+              if j.type == "revolute"]
+    assert len(hinges) >= 2
+    want = {j.name: round(0.6 * max(j.limits, key=abs), 6) for j in hinges}  # 60 % open
+    doc["objects"][0]["joints"] = want
+    (d / "scene.json").write_text(json.dumps(doc))
+    assert _cli(["export", str(d), "--format", ",".join(FORMATS)]) == 0
+    capsys.readouterr()
+    scene = parse3d.load_scene(d)
+    cab = scene.objects["cab"]
+    assert cab.joints == want
+    # glTF: the object's extras
+    node = next(n for n in _glb_json(d / "scene.glb")["nodes"] if n["name"] == "cab")
+    assert node["extras"]["joints"] == pytest.approx(want)
+    # USD: each joint's value and the drive target holding it (degrees)
+    stage = Usd.Stage.Open(str(d / "scene.usd"))
+    for name, v in want.items():
+        jp = stage.GetPrimAtPath(f"/World/Objects/cab/Joints/{name}")
+        assert jp.GetAttribute("parse3d:value").Get() == pytest.approx(v, abs=1e-6)
+        target = jp.GetAttribute("drive:angular:physics:targetPosition").Get()
+        assert target == pytest.approx(np.degrees(v), abs=1e-4)
+    # MJCF: the model's initial configuration
+    model = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
+    for name, v in want.items():
+        j = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, f"cab:{name}")
+        assert model.qpos0[model.jnt_qposadr[j]] == pytest.approx(v, abs=1e-6)
+    # URDF: the values to set after loading
+    rows = {r["id"]: r for r in json.loads((d / "urdf" / "scene.json").read_text())}
+    assert rows["cab"]["joints"] == pytest.approx(want)
+    # OBJ: the doors baked where the joints put them
+    obj = trimesh.load(d / "scene.obj", force="scene", group_material=False, split_groups=True)
+    posed = cab.asset.part_transforms(want)
+    for j in hinges:
+        m = cab.asset.part(j.child_part).mesh.copy()
+        m.apply_transform(cab.transform() @ posed[j.child_part])
+        got = np.asarray(obj.geometry[f"cab:{j.child_part}"].vertices)
+        got = got @ np.linalg.inv(Z_UP_TO_Y_UP[:3, :3]).T
+        assert np.allclose([got.min(0), got.max(0)], m.bounds, atol=1e-5), j.child_part
+
+
 def test_mujoco_locks_joints_by_default(cabinets):
     import mujoco
 
@@ -478,7 +573,8 @@ def test_mujoco_locks_joints_by_default(cabinets):
 
 
 def test_mjcf_file_is_the_model_mjspec_builds(cabinets):
-    """scene.xml is written as text; compiled, it is the model ``build_spec`` makes."""
+    """scene.xml with its mesh files compiles to the model ``build_spec`` makes in memory
+    (every mesh inline), which ``to_mujoco`` uses."""
     import mujoco
 
     from parse3d.export.mjcf import build_spec
@@ -551,6 +647,16 @@ def test_cli_bad_input_exits_2(rooms, tmp_path, capsys):
     assert _cli(["export", str(d), "--format", "glb", "--out", str(blocker / "x")]) == 2
     assert "cannot create the output folder" in capsys.readouterr().err
     assert blocker.read_text() == "not a folder"
+    # something in the way of a file the export writes: named, and no temporary file left
+    busy = tmp_path / "busy"
+    (busy / "scene.usd").mkdir(parents=True)
+    (busy / "urdf").write_text("mine")
+    for fmt, name, what in (("usd", "scene.usd", "a folder"), ("urdf", "urdf", "a file")):
+        assert _cli(["export", str(d), "--format", fmt, "--out", str(busy)]) == 2
+        err = capsys.readouterr().err
+        assert err.startswith(f"{busy / name}:") and f"{what} is in the way" in err, err
+    assert sorted(p.name for p in busy.iterdir()) == ["scene.usd", "urdf"]
+    assert (busy / "urdf").read_text() == "mine"
     unsettled = tmp_path / "unsettled"
     unsettled.mkdir()
     doc = json.loads((d / "scene.json").read_text())
@@ -558,6 +664,23 @@ def test_cli_bad_input_exits_2(rooms, tmp_path, capsys):
     (unsettled / "scene.json").write_text(json.dumps(doc))
     assert _cli(["export", str(unsettled), "--format", "glb", "--settled"]) == 2
     assert "was not settled" in capsys.readouterr().err
+
+
+def test_solve_formats_writes_each_format(tmp_path, capsys):
+    from parse3d.export import present_formats
+
+    pag = tmp_path / "tiny.json"
+    pag.write_text(json.dumps(TINY_PAG))
+    bad = tmp_path / "bad"
+    assert _cli(["solve", str(pag), "--formats", "glb,fbx", "--out", str(bad)]) == 2
+    assert "unknown format 'fbx'" in capsys.readouterr().err and not bad.exists()
+    d = tmp_path / "s"
+    assert _cli(["solve", str(pag), "--formats", "usd,urdf", "--no-settle", "--no-preview",
+                 "--out", str(d), "--json"]) == 0
+    capsys.readouterr()
+    assert (d / "scene.usd").is_file() and (d / "urdf" / "scene.json").is_file()
+    assert set(json.loads((d / "exports.json").read_text())["formats"]) == {"usd", "urdf"}
+    assert present_formats(d) == ("usd", "urdf")
 
 
 def test_load_scene_reads_what_solve_wrote(rooms):
@@ -631,6 +754,9 @@ def test_settle_refreshes_every_export_in_the_folder(tiny_scene, tmp_path, capsy
 
     d = _folder_with_every_format(tiny_scene, tmp_path / "tiny")
     lifted = tiny_scene.objects["mug"].position.copy()
+    # not settled yet: every format's default pose is the solved one
+    for fmt, pos in _exported_mug_positions(d).items():
+        assert np.allclose(pos, lifted, atol=1e-5), fmt
     meshes = {p: p.stat().st_mtime_ns for p in (d / "meshes").iterdir()}
     assert _cli(["settle", str(d), "--steps", "150", "--json"]) == 0
     capsys.readouterr()
@@ -751,6 +877,9 @@ def test_dataset_formats_are_written_and_part_of_its_identity(tmp_path, capsys):
     assert (scene / "scene.glb").is_file() and (scene / "scene.xml").is_file()
     assert any((scene / "meshes").glob("*.stl"))
     assert json.loads((out / "dataset.json").read_text())["formats"] == ["glb", "mjcf"]
+    # the formats are a set: naming them in another order resumes the same dataset
+    again = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("mjcf", "glb"))
+    assert build_dataset(again, out, workers=1).ok == 1
     other = BuildConfig(scenes=1, seed=0, source=source, settle=False, formats=("glb",))
     with pytest.raises(InputError, match="formats"):
         build_dataset(other, out, workers=1)

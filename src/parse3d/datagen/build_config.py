@@ -47,7 +47,8 @@ class BuildConfig:
     time_limit : float or None
         Seconds one scene may take before it is recorded as ``timeout``.
     formats : tuple of str
-        Export formats written into every scene folder (``parse3d.export.FORMATS`` names).
+        Export formats written into every scene folder (``parse3d.export.FORMATS`` names;
+        kept in the order of ``FORMATS``, as they are a set).
     """
 
     scenes: int
@@ -61,9 +62,11 @@ class BuildConfig:
     formats: tuple[str, ...] = ("glb",)
 
     def __post_init__(self) -> None:
-        from ..export import check_formats
+        from ..export import FORMATS, check_formats
 
-        object.__setattr__(self, "formats", check_formats(self.formats, where="--formats"))
+        # a set of formats, in one order, so that glb,mjcf and mjcf,glb are the same dataset
+        asked = check_formats(self.formats, where="--formats")
+        object.__setattr__(self, "formats", tuple(f for f in FORMATS if f in asked))
         for option, value, hi in (("--scenes", self.scenes, MAX_SCENES),
                                   ("--views", self.views, MAX_VIEWS),
                                   ("--seed", self.seed, MAX_SEED)):

@@ -20,6 +20,7 @@ Formats that need optional packages (usd-core, mujoco) import them only when use
 
 from __future__ import annotations
 
+import errno
 import importlib
 import json
 from collections.abc import Iterable
@@ -152,16 +153,28 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
         for name in group:
             try:
                 written += format_module(name).write(rec, out)
-            except PermissionError as e:
-                raise InputError(Problem("", f"cannot write {name} output: {e.strerror} — "
-                                             "choose a writable folder with --out", str(out),
-                                         "io")) from None
+            except OSError as e:
+                raise InputError(_write_problem(f"the {name} export", e, out)) from None
     try:
         written.append(write_options(out, plan))
-    except PermissionError as e:
-        raise InputError(Problem("", f"cannot write {OPTIONS_FILE}: {e.strerror} — choose a "
-                                     "writable folder with --out", str(out), "io")) from None
+    except OSError as e:
+        raise InputError(_write_problem(OPTIONS_FILE, e, out)) from None
     return written
+
+
+_IN_THE_WAY = {errno.EISDIR: "a folder is in the way", errno.ENOTDIR: "a file is in the way",
+               errno.EEXIST: "a file is in the way"}
+
+
+def _write_problem(what: str, e: OSError, out: Path) -> Problem:
+    """The one-line problem of a write that the file system refused, naming the file that
+    could not be written (a rename's target, not its temporary source)."""
+    path = e.filename2 if e.filename2 is not None else e.filename
+    if path is not None and Path(path).name.startswith("."):  # a temporary beside the target
+        path = Path(path).parent
+    reason = _IN_THE_WAY.get(e.errno, e.strerror or str(e))
+    return Problem("", f"cannot write {what}: {reason} — remove it or choose another folder "
+                       "with --out", str(path if path is not None else out), "io")
 
 
 def to_sapien(scene: Scene, options: ExportOptions = ExportOptions(), *,

@@ -12,7 +12,7 @@ import numpy as np
 
 from .._files import user_mode
 
-__all__ = ["obj_text", "stl_bytes", "mtl_text", "mesh_digest", "safe_name", "material_name",
+__all__ = ["obj_text", "pieces_obj_text", "join_pieces", "stl_bytes", "mtl_text", "mesh_digest", "safe_name", "material_name",
            "MeshFiles", "MATERIAL_LIBRARY", "remove_stale", "write_file"]
 
 #: File name of the shared material library of a mesh folder (visual OBJ files use it).
@@ -26,6 +26,39 @@ def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
     # one %-format over the whole array formats in C, far faster than a Python loop per line
     return (("v %.7g %.7g %.7g\n" * len(v)) % tuple(v.ravel().tolist())
             + ("f %d %d %d\n" * len(f)) % tuple(f.ravel().tolist()))
+
+
+def join_pieces(pieces) -> tuple[np.ndarray, np.ndarray]:
+    """The pieces ``[(vertices (V_i, 3), faces (F_i, 3)), ...]`` as one mesh: stacked
+    vertices and the faces renumbered into them."""
+    vertices = np.vstack([np.asarray(v, float) for v, _ in pieces])
+    offsets = np.cumsum([0] + [len(v) for v, _ in pieces[:-1]])
+    faces = np.vstack([np.asarray(f, np.int64) + k for (_, f), k in zip(pieces, offsets,
+                                                                         strict=True)])
+    return vertices, faces
+
+
+def pieces_obj_text(pieces) -> str:
+    """A Wavefront OBJ document with one object (``o piece_<i>``) per piece
+    ``(vertices (V_i, 3), faces (F_i, 3))``, in metres, no materials.
+
+    Each piece's vertices follow its ``o`` line and its faces use the file-wide numbering:
+    loaders that take an OBJ object as one convex shape (PyBullet; SAPIEN with
+    ``load_multiple_collisions_from_file``) get every piece as its own shape.
+    """
+    template: list[str] = []
+    values: list[float | int] = []
+    first = 1
+    for i, (v, f) in enumerate(pieces):
+        v = np.asarray(v, float)
+        f = np.asarray(f, np.int64)
+        template.append(f"o piece_{i}\n" + "v %.7g %.7g %.7g\n" * len(v)
+                        + "f %d %d %d\n" * len(f))
+        values += v.ravel().tolist()
+        values += (f + first).ravel().tolist()
+        first += len(v)
+    # one %-format over everything formats in C, far faster than a Python loop per line
+    return "".join(template) % tuple(values)
 
 
 _STL_TRIANGLE = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)), ("attr", "<u2")])
@@ -89,11 +122,14 @@ def write_file(path: str | Path, data: bytes, mode: int | None = None) -> None:
 class MeshFiles:
     """Mesh files under one folder, each written once however often it is referenced.
 
-    Geometry-only meshes (collision pieces) are binary STL; meshes with a material are OBJ
-    naming an entry of the folder's shared material library (:data:`MATERIAL_LIBRARY`, written
-    by :meth:`close`). File names carry a hash of the content (``<stem>.<hash>.stl``), so a
-    file already in the folder from an earlier export of the same assets is kept as it is:
-    re-exporting a scene after settling rewrites no mesh.
+    Geometry-only meshes are binary STL (:meth:`get`) or, for a set of convex pieces, an OBJ
+    with one object per piece (:meth:`get_pieces`); meshes with a material are OBJ naming an
+    entry of the folder's shared material library (:data:`MATERIAL_LIBRARY`, written by
+    :meth:`close`). A geometry-only request is answered by any file of the same geometry, one
+    with a material included, so a part whose visual mesh is its collision pieces needs one
+    file. File names carry a hash of the content (``<stem>.<hash>.stl``), so a file already in
+    the folder from an earlier export of the same assets is kept as it is: re-exporting a
+    scene after settling rewrites no mesh.
     """
 
     def __init__(self, root: Path, folder: str = "meshes") -> None:
@@ -113,7 +149,21 @@ class MeshFiles:
 
         With a ``material`` the file is an OBJ whose colour is in the material library.
         """
-        digest = mesh_digest(vertices, faces)
+        return self._get(stem, mesh_digest(vertices, faces), material,
+                         lambda: obj_text(vertices, faces),
+                         lambda: stl_bytes(vertices, faces))
+
+    def get_pieces(self, stem: str, pieces, material=None) -> str:
+        """As :meth:`get` for a set of pieces ``[(vertices, faces), ...]``, written as one
+        OBJ with an object (``o piece_<i>``) per piece, whether or not it has a material."""
+        h = hashlib.blake2b(digest_size=12)
+        for v, f in pieces:
+            h.update(mesh_digest(v, f).encode())
+        text = lambda: pieces_obj_text(pieces)  # noqa: E731
+        return self._get(stem, "pieces:" + h.hexdigest(), material, text,
+                         lambda: text().encode())
+
+    def _get(self, stem: str, digest: str, material, obj, geometry) -> str:
         mname = None if material is None else material_name(material)
         key = (digest, mname)
         if key in self._by_content:
@@ -122,13 +172,13 @@ class MeshFiles:
             return self._any[digest]
         tag = hashlib.blake2b(f"{digest}:{mname}".encode(), digest_size=4).hexdigest()
         if material is None:
-            name = f"{safe_name(stem)}.{tag}.stl"
-            data = stl_bytes(vertices, faces)
+            pieces = digest.startswith("pieces:")
+            name = f"{safe_name(stem)}.{tag}.{'obj' if pieces else 'stl'}"
+            data = geometry()
         else:
             self._materials.setdefault(mname, mtl_text(mname, material))
             name = f"{safe_name(stem)}.{tag}.obj"
-            data = (f"mtllib {MATERIAL_LIBRARY}\nusemtl {mname}\n"
-                    + obj_text(vertices, faces)).encode()
+            data = f"mtllib {MATERIAL_LIBRARY}\nusemtl {mname}\n{obj()}".encode()
         rel = f"{self.folder}/{name}"
         if rel not in self.written:
             if not self._made:
@@ -152,7 +202,7 @@ class MeshFiles:
         if self._materials:
             rel = f"{self.folder}/{MATERIAL_LIBRARY}"
             write_file(os.path.join(self._dir, MATERIAL_LIBRARY),
-                   "".join(self._materials.values()).encode(), self._mode)
+                       "".join(self._materials.values()).encode(), self._mode)
             self.written[rel] = self.root / rel
         return list(self.written.values())
 

@@ -1,8 +1,9 @@
 """MJCF for MuJoCo (``scene.xml`` + ``meshes/``).
 
-:func:`to_mujoco` builds the model as objects with ``mujoco.MjSpec`` (:func:`build_spec`);
-:func:`write` writes the same model as an MJCF document directly (:func:`build_xml`), since
-letting MuJoCo write it compiles every mesh first. Both describe:
+:func:`build_xml` writes the model as an MJCF document directly (MuJoCo's documented format;
+letting MuJoCo write it would compile every mesh first); :func:`write` saves it, and
+:func:`build_spec` parses the same document into a ``mujoco.MjSpec`` for :func:`to_mujoco`,
+so the file and the live model are one description. It holds:
 
 - One body per object at its world pose: a free joint for a loose object, none for a fixed
   one (SECURED_TO, HANGING_BELOW: welded to the world by being a plain child of it).
@@ -17,9 +18,9 @@ letting MuJoCo write it compiles every mesh first. Both describe:
 - Options for resting contact: elliptic friction cones, ``impratio`` 10, 3 no-slip
   iterations.
 
-Meshes are inline in the spec for :func:`to_mujoco`; :func:`write` puts the visual meshes as
-STL files in ``meshes/`` (one per part, shared by objects using the same asset) and the
-collision pieces inline in ``scene.xml``. Body names are object ids; part geoms are named
+:func:`write` puts the visual meshes as STL files in ``meshes/`` (one per part, shared by
+objects using the same asset) and the collision pieces inline in ``scene.xml``; without an
+output folder every mesh is inline. Body names are object ids; part geoms are named
 ``<object_id>:<part_name>`` and pieces ``<object_id>:<part_name>:c<i>``.
 """
 
@@ -56,182 +57,6 @@ def _mujoco():
     return mujoco
 
 
-class _Meshes:
-    """Mesh assets of a spec: inline, or OBJ files under ``meshes/`` (each written once)."""
-
-    def __init__(self, spec, out: Path | None) -> None:
-        self.spec = spec
-        self.files = None if out is None else MeshFiles(out)
-        self.names: set[str] = set()
-        self._by_content: dict[tuple[str, float], str] = {}
-
-    def get(self, name: str, file_stem: str, vertices, faces, scale: float = 1.0, *,
-            inline: bool = False) -> str:
-        """The name of the mesh asset (added on first request; an equal mesh at the same scale,
-        such as a box part and its one collision piece, reuses the asset). ``inline`` keeps
-        it in the spec even when the spec writes mesh files."""
-        key = name if abs(scale - 1.0) < 1e-12 else f"{name}@{scale:.9g}"
-        if key in self.names:
-            return key
-        content = (mesh_digest(vertices, faces), round(float(scale), 9))
-        if content in self._by_content:
-            return self._by_content[content]
-        self._by_content[content] = key
-        m = self.spec.add_mesh()
-        m.name = key
-        if self.files is None or inline:
-            m.uservert = np.asarray(vertices, float).ravel().tolist()
-            m.userface = np.asarray(faces, int).ravel().tolist()
-        else:
-            m.file = self.files.get(file_stem, vertices, faces)
-        m.scale = [scale] * 3
-        self.names.add(key)
-        return key
-
-
-def _rgba(mat) -> list[float]:
-    return [float(c) for c in mat.color]
-
-
-def _collision_geom(body, mesh: str, name: str, density: float, friction: float | None):
-    mujoco = _mujoco()
-    g = body.add_geom()
-    g.name = name
-    g.type = mujoco.mjtGeom.mjGEOM_MESH
-    g.meshname = mesh
-    g.group = _COLLISION_GROUP
-    g.density = density
-    g.rgba = [0.5, 0.5, 0.5, 0.4]
-    if friction is not None:
-        g.friction = [friction, 0.005, 0.0001]
-    return g
-
-
-def _visual_geom(body, mesh: str, name: str, mat):
-    mujoco = _mujoco()
-    g = body.add_geom()
-    g.name = name
-    g.type = mujoco.mjtGeom.mjGEOM_MESH
-    g.meshname = mesh
-    g.group = _VISUAL_GROUP
-    g.contype = 0
-    g.conaffinity = 0
-    g.density = 0.0
-    g.mass = 0.0
-    g.rgba = _rgba(mat)
-    return g
-
-
-def _add_object(spec, meshes: _Meshes, rec: SceneRecord, o: ObjectRecord, *,
-                visual: bool, lock_joints: bool) -> None:
-    mujoco = _mujoco()
-    s = o.scale
-    root = spec.worldbody.add_body()
-    root.name = o.id
-    root.pos = [float(x) for x in o.position]
-    root.quat = [float(x) for x in matrix_to_quat(o.rotation)]
-    if not o.fixed:
-        root.add_freejoint().name = f"{o.id}:free"
-    bodies = {}
-    motion = {lk.name: lk.motion for lk in o.links}
-    parent_of = {j.child_link: j for j in o.joints}
-    for lk in o.links:
-        if lk.name not in parent_of:
-            body = root
-        else:
-            j = parent_of[lk.name]
-            body = bodies[j.parent_link].add_body()
-            body.name = f"{o.id}:{lk.name}"
-            rel = np.linalg.inv(motion[j.parent_link]) @ motion[lk.name]
-            body.pos = [float(x) * s for x in rel[:3, 3]]
-            body.quat = [float(x) for x in matrix_to_quat(rel[:3, :3])]
-            jt = body.add_joint()
-            jt.name = f"{o.id}:{j.name}"
-            hinge = j.joint.type == "revolute"
-            jt.type = mujoco.mjtJoint.mjJNT_HINGE if hinge else mujoco.mjtJoint.mjJNT_SLIDE
-            jt.axis = [float(x) for x in j.joint.axis]
-            jt.pos = [float(x) * s for x in j.joint.origin]
-            k = 1.0 if hinge else s
-            lo, hi = sorted(float(v) for v in j.joint.limits)
-            jt.range = [lo * k, hi * k]
-            jt.limited = mujoco.mjtLimited.mjLIMITED_TRUE
-            jt.ref = j.value * k
-            jt.damping = [0.1, 0.0, 0.0]
-            if lock_joints:
-                eq = spec.add_equality()
-                eq.name = f"{o.id}:{j.name}:lock"
-                eq.type = mujoco.mjtEq.mjEQ_JOINT
-                eq.objtype = mujoco.mjtObj.mjOBJ_JOINT
-                eq.name1 = jt.name
-                data = np.array(eq.data, float)
-                # MuJoCo measures joint equalities from the reference configuration (``ref``,
-                # the exported value): a zero polynomial holds the joint there
-                data[:5] = 0.0
-                eq.data = data
-        bodies[lk.name] = body
-        for p in lk.parts:
-            stem = f"{o.asset_id}__{p.name}"
-            if visual:
-                vm = meshes.get(f"{o.asset_id}:{p.name}", stem, p.mesh.vertices, p.mesh.faces, s)
-                _visual_geom(body, vm, p.key, p.material)
-            fr = rec.friction(p.material.name)
-            for i, (v, f) in enumerate(p.pieces):
-                cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s,
-                                inline=True)
-                _collision_geom(body, cm, f"{p.key}:c{i}", o.density, fr)
-
-
-def build_spec(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0.002,
-               visual: bool = True, lock_joints: bool = True):
-    """An ``mujoco.MjSpec`` of a walked scene.
-
-    Parameters
-    ----------
-    rec : SceneRecord
-    out : Path or None
-        Folder whose ``meshes/`` receives the mesh files (written now); None keeps every
-        mesh inline in the spec.
-    timestep : float
-        Seconds.
-    visual : bool
-        Add the visual mesh geoms (the collision geoms are always there).
-    lock_joints : bool
-        Hold every articulation at its exported value with a joint equality.
-
-    Returns
-    -------
-    mujoco.MjSpec
-    """
-    return _build(rec, out=out, timestep=timestep, visual=visual, lock_joints=lock_joints)[0]
-
-
-def _build(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0.002,
-           visual: bool = True, lock_joints: bool = True):
-    mujoco = _mujoco()
-    spec = mujoco.MjSpec()
-    spec.modelname = safe_name(rec.name or "parse3d")
-    spec.compiler.degree = False
-    spec.compiler.boundmass = 1e-5
-    spec.compiler.boundinertia = 1e-10
-    spec.option.timestep = float(timestep)
-    spec.option.cone = mujoco.mjtCone.mjCONE_ELLIPTIC
-    spec.option.impratio = 10.0
-    spec.option.noslip_iterations = 3
-    meshes = _Meshes(spec, out)
-    fr = rec.friction("room")
-    for s in rec.shell:
-        if visual:
-            vm = meshes.get(s.key, f"room__{s.name}", s.mesh.vertices, s.mesh.faces)
-            _visual_geom(spec.worldbody, vm, s.key, s.material)
-        for i, (v, f) in enumerate(s.pieces):
-            cm = meshes.get(f"{s.key}:c{i}", f"room__{s.name}_c{i}", v, f, inline=True)
-            g = _collision_geom(spec.worldbody, cm, f"{s.key}:c{i}", 0.0, fr)
-            g.rgba = [0.8, 0.8, 0.8, 0.2]
-    for o in rec.objects:
-        _add_object(spec, meshes, rec, o, visual=visual, lock_joints=lock_joints)
-    return spec, meshes.files
-
-
 def _mesh_refs(xml: Path) -> set[str]:
     """Mesh files (relative to the folder) named by an earlier ``scene.xml``."""
     try:
@@ -250,12 +75,13 @@ def _vec(xs) -> str:
 
 
 class _XmlMeshes:
-    """Mesh assets of a written ``scene.xml``: visual meshes as OBJ files under ``meshes/``,
-    collision pieces inline (``vertex`` / ``face`` attributes), each asset written once."""
+    """Mesh assets of an MJCF document: visual meshes as STL files under ``meshes/`` (inline
+    without an output folder), collision pieces inline (``vertex`` / ``face`` attributes),
+    each asset written once."""
 
-    def __init__(self, asset, out: Path) -> None:
+    def __init__(self, asset, out: Path | None) -> None:
         self.asset = asset
-        self.files = MeshFiles(out)
+        self.files = None if out is None else MeshFiles(out)
         self.names: set[str] = set()
         self._by_content: dict[tuple[str, float], str] = {}
 
@@ -269,7 +95,7 @@ class _XmlMeshes:
             return self._by_content[content]
         self._by_content[content] = key
         attrs = {"name": key}
-        if inline:
+        if inline or self.files is None:
             v = np.asarray(vertices, float).ravel().tolist()
             f = np.asarray(faces, np.int64).ravel().tolist()
             attrs["vertex"] = ("%.9g " * len(v) % tuple(v)).rstrip()
@@ -300,7 +126,7 @@ def _xml_visual(parent, mesh: str, name: str, mat):
 
 
 def _xml_object(world, equality, meshes: _XmlMeshes, rec: SceneRecord, o: ObjectRecord, *,
-                lock_joints: bool) -> None:
+                visual: bool, lock_joints: bool) -> None:
     s = o.scale
     root = ET.SubElement(world, "body", {"name": o.id, "pos": _vec(o.position),
                                          "quat": _vec(matrix_to_quat(o.rotation))})
@@ -335,8 +161,10 @@ def _xml_object(world, equality, meshes: _XmlMeshes, rec: SceneRecord, o: Object
         bodies[lk.name] = body
         for p in lk.parts:
             stem = f"{o.asset_id}__{p.name}"
-            vm = meshes.get(f"{o.asset_id}:{p.name}", stem, p.mesh.vertices, p.mesh.faces, s)
-            _xml_visual(body, vm, p.key, p.material)
+            if visual:
+                vm = meshes.get(f"{o.asset_id}:{p.name}", stem, p.mesh.vertices, p.mesh.faces,
+                                s)
+                _xml_visual(body, vm, p.key, p.material)
             fr = rec.friction(p.material.name)
             for i, (v, f) in enumerate(p.pieces):
                 cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s,
@@ -344,18 +172,29 @@ def _xml_object(world, equality, meshes: _XmlMeshes, rec: SceneRecord, o: Object
                 _xml_collision(body, cm, f"{p.key}:c{i}", o.density, fr)
 
 
-def build_xml(rec: SceneRecord, out: Path, *, timestep: float = 0.002,
-              lock_joints: bool = True) -> tuple[str, MeshFiles]:
+def build_xml(rec: SceneRecord, out: Path | None = None, *, timestep: float = 0.002,
+              visual: bool = True, lock_joints: bool = True) -> tuple[str, MeshFiles | None]:
     """The MJCF document of a walked scene, written as text without compiling a model.
 
-    The same model as :func:`build_spec` (with visual geoms); the visual meshes are written
-    now as files under ``out/meshes/``, the collision pieces are inline in the document.
+    Parameters
+    ----------
+    rec : SceneRecord
+    out : Path or None
+        Folder whose ``meshes/`` receives the visual meshes as files (written now); None
+        keeps every mesh inline in the document. Collision pieces are always inline.
+    timestep : float
+        Seconds.
+    visual : bool
+        Add the visual mesh geoms (the collision geoms are always there).
+    lock_joints : bool
+        Hold every articulation at its exported value with a joint equality.
 
     Returns
     -------
     xml : str
-    files : MeshFiles
-        The mesh files written (call ``close()`` for the material library).
+    files : MeshFiles or None
+        The mesh files written (call ``close()`` for the material library); None without
+        ``out``.
     """
     root = ET.Element("mujoco", {"model": safe_name(rec.name or "parse3d")})
     ET.SubElement(root, "compiler", {"angle": "radian", "boundmass": "1e-05",
@@ -365,20 +204,53 @@ def build_xml(rec: SceneRecord, out: Path, *, timestep: float = 0.002,
     asset = ET.SubElement(root, "asset")
     world = ET.SubElement(root, "worldbody")
     equality = ET.Element("equality")
-    meshes = _XmlMeshes(asset, Path(out))
+    meshes = _XmlMeshes(asset, None if out is None else Path(out))
     fr = rec.friction("room")
     for s in rec.shell:
-        vm = meshes.get(s.key, f"room__{s.name}", s.mesh.vertices, s.mesh.faces)
-        _xml_visual(world, vm, s.key, s.material)
+        if visual:
+            vm = meshes.get(s.key, f"room__{s.name}", s.mesh.vertices, s.mesh.faces)
+            _xml_visual(world, vm, s.key, s.material)
         for i, (v, f) in enumerate(s.pieces):
             cm = meshes.get(f"{s.key}:c{i}", f"room__{s.name}_c{i}", v, f, inline=True)
             _xml_collision(world, cm, f"{s.key}:c{i}", 0.0, fr, "0.8 0.8 0.8 0.2")
     for o in rec.objects:
-        _xml_object(world, equality, meshes, rec, o, lock_joints=lock_joints)
+        _xml_object(world, equality, meshes, rec, o, visual=visual, lock_joints=lock_joints)
     if len(equality):
         root.append(equality)
     ET.indent(root, space=" ")
     return ET.tostring(root, encoding="unicode") + "\n", meshes.files
+
+
+def build_spec(rec: SceneRecord, *, out: Path | None = None, timestep: float = 0.002,
+               visual: bool = True, lock_joints: bool = True):
+    """An ``mujoco.MjSpec`` of a walked scene: the document of :func:`build_xml`, parsed.
+
+    One description of the model serves both the file export and live models, so
+    ``scene.xml`` and :func:`to_mujoco` cannot drift apart.
+
+    Parameters
+    ----------
+    rec : SceneRecord
+    out : Path or None
+        Folder whose ``meshes/`` receives the visual mesh files (written now; the spec's
+        ``modelfiledir``); None keeps every mesh inline in the spec.
+    timestep : float
+        Seconds.
+    visual : bool
+        Add the visual mesh geoms (the collision geoms are always there).
+    lock_joints : bool
+        Hold every articulation at its exported value with a joint equality.
+
+    Returns
+    -------
+    mujoco.MjSpec
+    """
+    xml, files = build_xml(rec, out, timestep=timestep, visual=visual, lock_joints=lock_joints)
+    spec = _mujoco().MjSpec.from_string(xml)
+    if files is not None:
+        files.close()
+        spec.modelfiledir = str(out)
+    return spec
 
 
 def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path]:

@@ -99,6 +99,8 @@ def load_urdf_scene(folder: str | Path, *, timestep: float = 0.01,
     out = SapienScene(scene, rendered=rendered)
     for r in rows:
         loader = scene.create_urdf_loader()
+        # a part's collision file holds its convex pieces as OBJ objects, one shape each
+        loader.load_multiple_collisions_from_file = True
         builders, actors, _ = loader.parse(str(folder / r["urdf"]))
         pose = sapien.Pose(np.asarray(r["position"], np.float32),
                            np.asarray(r["quaternion"], np.float32))

@@ -19,8 +19,14 @@ anchor (moving parts), so meshes, written once per asset part in the asset frame
 ``urdf/meshes/``, are placed with a visual/collision origin offset; the object's scale is
 baked in (mesh ``scale``, offsets, prismatic limits). Each link carries its visual mesh (an
 OBJ whose ``.mtl`` holds the part's colour: URDF ``<material>`` tags would make SAPIEN's
-loader ask for a rendering device even for physics-only use), one collision mesh per convex
-piece, and its mass with the inertia of a solid box over its pieces.
+loader ask for a rendering device even for physics-only use), one collision mesh holding the
+part's convex pieces as one OBJ object each, and its mass with the inertia of a solid box over
+its pieces. Where a part's visual mesh is its pieces joined, as for most generated parts,
+visual and collision name the same file, so a part usually costs one mesh file.
+
+Loaders read an OBJ object as one convex shape: PyBullet does by default, SAPIEN with
+``loader.load_multiple_collisions_from_file = True`` (set by :mod:`parse3d.export.sapien`);
+a loader that takes the file as a single convex shape gets the hull of the whole part.
 """
 
 from __future__ import annotations
@@ -35,7 +41,7 @@ import numpy as np
 from .._files import user_mode
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
-from ._files import MeshFiles, remove_stale, safe_name, write_file
+from ._files import MeshFiles, join_pieces, remove_stale, safe_name, write_file
 from .walk import ObjectRecord, PartRecord, SceneRecord
 
 __all__ = ["NAME", "FILES", "MARKER", "write", "object_urdf"]
@@ -69,8 +75,8 @@ def _inertial(pieces: list[tuple[np.ndarray, np.ndarray]], mass: float, scale: f
             'iyz="0"/></inertial>')
 
 
-def _link(name: str, part: PartRecord | None, visual_mesh: str | None, piece_meshes: list[str],
-          mass: float, scale: float, offset: np.ndarray) -> str:
+def _link(name: str, part: PartRecord | None, visual_mesh: str | None,
+          collision_mesh: str | None, mass: float, scale: float, offset: np.ndarray) -> str:
     xml = [f"<link name={quoteattr(name)}>"]
     sc = _f([scale] * 3)
     o = f'<origin xyz="{_f(offset)}"/>'
@@ -79,11 +85,28 @@ def _link(name: str, part: PartRecord | None, visual_mesh: str | None, piece_mes
     if visual_mesh:
         xml.append(f"<visual>{o}<geometry><mesh filename={quoteattr(visual_mesh)} "
                    f'scale="{sc}"/></geometry></visual>')
-    for m in piece_meshes:
-        xml.append(f"<collision>{o}<geometry><mesh filename={quoteattr(m)} scale=\"{sc}\"/>"
-                   "</geometry></collision>")
+    if collision_mesh:
+        xml.append(f"<collision>{o}<geometry><mesh filename={quoteattr(collision_mesh)} "
+                   f'scale="{sc}"/></geometry></collision>')
     xml.append("</link>")
     return "".join(xml)
+
+
+def _part_meshes(meshes: MeshFiles, stem: str, mesh, material,
+                 pieces: list[tuple[np.ndarray, np.ndarray]]) -> tuple[str, str | None]:
+    """The visual and collision mesh files of one part (or shell element).
+
+    The collision file holds every convex piece as its own OBJ object. When the visual mesh
+    is exactly the pieces joined (most generated parts), the visual file is that same OBJ
+    with the part's colour, and the collision names it too: one file for the part.
+    """
+    if pieces:
+        v, f = join_pieces(pieces)
+        if np.array_equal(v, mesh.vertices) and np.array_equal(f, mesh.faces):
+            rel = meshes.get_pieces(stem, pieces, material)
+            return rel, rel
+    visual = meshes.get(stem, mesh.vertices, mesh.faces, material)
+    return visual, meshes.get_pieces(f"{stem}_c", pieces) if pieces else None
 
 
 def object_urdf(o: ObjectRecord, meshes: MeshFiles) -> str:
@@ -98,11 +121,10 @@ def object_urdf(o: ObjectRecord, meshes: MeshFiles) -> str:
     base = o.link("base").parts
     root = base[0].name if base else o.parts[0].name
     for p in o.parts:
-        stem = f"{o.asset_id}__{p.name}"
-        vm = meshes.get(stem, p.mesh.vertices, p.mesh.faces, p.material)
-        pm = [meshes.get(f"{stem}_c{i}", v, f) for i, (v, f) in enumerate(p.pieces)]
+        vm, cm = _part_meshes(meshes, f"{o.asset_id}__{p.name}", p.mesh, p.material,
+                              p.pieces)
         mass = o.density * s**3 * p.volume
-        links.append(_link(p.name, p, vm, pm, mass, s, -anchor[p.name] * s))
+        links.append(_link(p.name, p, vm, cm, mass, s, -anchor[p.name] * s))
         if p.name == root:
             continue
         if p.name in joint_of:
@@ -129,9 +151,8 @@ def _room_urdf(rec: SceneRecord, meshes: MeshFiles) -> str:
     links, joints = [], []
     root = rec.shell[0].name
     for s in rec.shell:
-        vm = meshes.get(f"room__{s.name}", s.mesh.vertices, s.mesh.faces, s.material)
-        pm = [meshes.get(f"room__{s.name}_c{i}", v, f) for i, (v, f) in enumerate(s.pieces)]
-        links.append(_link(s.name, None, vm, pm, 0.0, 1.0, np.zeros(3)))
+        vm, cm = _part_meshes(meshes, f"room__{s.name}", s.mesh, s.material, s.pieces)
+        links.append(_link(s.name, None, vm, cm, 0.0, 1.0, np.zeros(3)))
         if s.name != root:
             joints.append(f'<joint name="{root}__{s.name}" type="fixed"><parent link="{root}"/>'
                           f'<child link="{s.name}"/></joint>')

@@ -357,8 +357,12 @@ def write(rec: SceneRecord, out: Path, *, lock_joints: bool = True) -> list[Path
     """Write ``scene.usd`` (binary crate) into the folder ``out``; returns the paths written."""
     path = Path(out) / "scene.usd"
     tmp = path.with_name(".scene.tmp.usd")
-    layer = build_layer(rec, lock_joints=lock_joints, path=str(tmp))
-    layer.Save()
-    del layer
-    tmp.replace(path)
+    try:
+        layer = build_layer(rec, lock_joints=lock_joints, path=str(tmp))
+        layer.Save()
+        del layer
+        tmp.replace(path)
+    except BaseException:
+        tmp.unlink(missing_ok=True)  # no half-written file left behind
+        raise
     return [path]
