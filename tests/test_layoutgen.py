@@ -8,6 +8,7 @@ networks are the ``tiny`` preset trained for a few dozen steps, so the file stay
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import numpy as np
@@ -15,12 +16,14 @@ import pytest
 
 torch = pytest.importorskip("torch")  # the ml extra; make test installs it
 
+from parse3d.assets.library import cache_dir  # noqa: E402
 from parse3d.cli import main  # noqa: E402
 from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths  # noqa: E402
 from parse3d.layoutgen import data, encoders, pose  # noqa: E402
 from parse3d.layoutgen.evaluate import collisions, evaluate, layout_metrics, outside_room  # noqa: E402
 from parse3d.layoutgen.sample import (  # noqa: E402
     SampleOptions,
+    generate_poses,
     layout_scene,
     refine_layout,
     sample_layout,
@@ -120,6 +123,64 @@ def test_dataset_graphs_and_split(dataset):
     split = data.split_scenes([x.scene_id for x in scenes], np.random.default_rng(1))
     ids = split["train"] + split["val"] + split["test"]
     assert sorted(ids) == sorted(x.scene_id for x in scenes) and len(split["test"]) == 1
+
+
+def test_dataset_reads_asset_info_from_its_index(dataset, monkeypatch):
+    """A second read takes extents and part labels from the index without loading an asset;
+    an asset file that changed is read again; the assets themselves load on demand."""
+    s = data.load_dataset(dataset)[0]
+    index = data._INDEX.path
+    assert index.is_file() and index.parent.parent == cache_dir()
+    loaded = []
+    real = data.load_asset_ref
+    monkeypatch.setattr(data, "load_asset_ref", lambda ref: loaded.append(ref) or real(ref))
+    data._INDEX.path = None  # read the index file again, as a new process would
+    again = data.load_dataset(dataset)[0]
+    assert loaded == [] and again.asset_info == s.asset_info and np.array_equal(again.poses, s.poses)
+    a = again.assets[0]  # loaded on demand, and what the info says
+    assert np.allclose(a.extents, again.asset_info[0].extents)
+    assert again.asset_info[0].part_labels == tuple(p.label for p in a.parts)
+    enc = encoders.ShapeDescriptor(s.categories)
+    assert np.array_equal(enc.encode(a, s.categories[0]), enc.encode(s.asset_info[0], s.categories[0]))
+    f = data._INDEX._file(dict(s.asset_info[0].ref))
+    st = Path(f).stat()
+    os.utime(f, ns=(st.st_atime_ns, st.st_mtime_ns + 1_000_000))
+    loaded.clear()
+    data.load_dataset(dataset)
+    assert [r["id"] for r in loaded] == [s.asset_info[0].asset_id]
+
+
+def test_sampling_recovers_the_poses_a_perfect_denoiser_knows(dataset):
+    """The sampler's half of the diffusion (scheduler steps, clipping, the epsilon-to-x0
+    conversion, pose normalisation, 6-D rotations): with the exact noise of a one-scene
+    distribution as the network's answer, sampling must give that scene's poses back."""
+    from parse3d.layoutgen.train import LayoutRun, make_scheduler
+
+    ls = data.load_dataset(dataset)[0]
+    stats = pose.PoseStats.fit([ls.poses])
+    x0 = torch.as_tensor(pose.normalise_poses(ls.poses, ls.footprint, ls.height, stats))
+    abar = make_scheduler().alphas_cumprod
+
+    class Exact(torch.nn.Module):
+        def __init__(self):
+            super().__init__()
+            self.anchor = torch.nn.Parameter(torch.zeros(1))  # device of the "network"
+
+        def condition(self, g):
+            return {}
+
+        def forward(self, x_t, t, g, cond_mask, *, cond=None):
+            a = abar[t.long()].to(x_t.dtype)[:, None, None]
+            return (x_t - a.sqrt() * x0) / (1 - a).sqrt()
+
+    run = LayoutRun(Path("exact"), TrainConfig(cond="pag"), Exact(),
+                    encoders.ShapeDescriptor(ls.categories), encoders.TokenRelationEncoder(),
+                    stats, {}, "", 0)
+    for steps in (100, 20):
+        got = generate_poses(run, ls.categories, ls.asset_info, ls.relations, ls.footprint,
+                             ls.height, seed=3, options=SampleOptions(steps=steps))
+        assert np.abs(got[:, :6] - ls.poses[:, :6]).max() < 1e-4  # metres
+        assert np.abs(got[:, 6:] - ls.poses[:, 6:]).max() < 1e-4
 
 
 def test_text_relation_encoder_caches(tmp_path):

@@ -7,11 +7,17 @@ them as :class:`~.encoders.RelationSpec` items, and the room (footprint and heig
 
 A dataset folder is anything :func:`find_scenes` understands: a ``parse3d dataset build``
 folder (``DIR/scenes/<index>/scene.json``), a folder of scene folders, or one scene folder.
+
+Reading a scene does not read its assets' meshes: what the layout model needs of an asset
+(its extents and part labels, :class:`~.encoders.AssetInfo`) is kept in an index under the
+cache folder (``layoutgen/asset-info.json``), keyed by the asset file and checked against its
+size and modification time; :attr:`LayoutScene.assets` loads the assets themselves when asked.
 """
 
 from __future__ import annotations
 
 import json
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -23,11 +29,11 @@ from ..geometry.frames import quat_to_matrix
 from ..pag.model import PAG
 from ..pag.refs import wall_index
 from ..scene.io import READABLE_FORMATS
-from .encoders import RelationEncoder, RelationSpec, ShapeEncoder
+from .encoders import AssetInfo, RelationEncoder, RelationSpec, ShapeEncoder
 from .pose import PoseStats, normalise_poses, rotation_to_6d
 
 __all__ = ["LayoutScene", "GraphArrays", "find_scenes", "load_scene", "load_dataset",
-           "load_asset_ref", "pag_relations", "split_scenes", "graph_arrays", "ROOM_GEO_DIM",
+           "load_asset_ref", "asset_info", "save_asset_index", "pag_relations", "split_scenes", "graph_arrays", "ROOM_GEO_DIM",
            "ROOM_CTX_DIM"]
 
 ROOM_GEO_DIM = 8
@@ -48,7 +54,8 @@ class LayoutScene:
         The graph the scene was solved from (all objects, placed or not).
     object_ids, categories : list of str
         Placed objects, in the scene's order.
-    assets : list of Asset
+    asset_info : list of AssetInfo
+        Their assets' extents and part labels (the assets themselves: :attr:`assets`).
     poses : (N, 12) float
         World poses (translation, size, 6-D rotation), see :mod:`.pose`.
     scales : (N,) float
@@ -66,7 +73,7 @@ class LayoutScene:
     pag: PAG
     object_ids: list[str]
     categories: list[str]
-    assets: list[Asset]
+    asset_info: list[AssetInfo]
     poses: np.ndarray
     scales: np.ndarray
     relations: list[RelationSpec] = field(default_factory=list)
@@ -77,6 +84,11 @@ class LayoutScene:
     @property
     def room_type(self) -> str:
         return self.pag.room.type
+
+    @property
+    def assets(self) -> list[Asset]:
+        """The placed objects' assets, loaded (memoised) from their references."""
+        return [load_asset_ref(dict(i.ref)) for i in self.asset_info]
 
 
 def find_scenes(dataset: str | Path) -> list[Path]:
@@ -118,6 +130,90 @@ def load_asset_ref(ref: dict) -> Asset:
     return a
 
 
+_INDEX_FORMAT = "parse3d-layout-asset-info/1"
+
+
+class _AssetIndex:
+    """The on-disk index of :class:`AssetInfo` by asset file (see the module docstring)."""
+
+    def __init__(self):
+        self.path: Path | None = None
+        self.env: str | None = None
+        self.entries: dict[str, dict] = {}
+        self.files: dict[tuple, str] = {}  # (category, seed) or path -> asset file
+        self.dirty = False
+
+    def _file(self, ref: dict) -> str:
+        if ref.get("path"):
+            return str(ref["path"])
+        key = (ref["category"], int(ref["seed"]))
+        f = self.files.get(key)
+        if f is None:
+            from ..assets.pool import default_pool
+
+            f = self.files[key] = str(default_pool().path(*key))
+        return f
+
+    def _open(self) -> None:
+        env = os.environ.get("PARSE3D_CACHE")
+        if self.path is not None and env == self.env:
+            return
+        from ..assets.library import cache_dir
+
+        self.save()  # what was added under another cache folder goes there
+        self.env = env
+        self.path = cache_dir() / "layoutgen" / "asset-info.json"
+        self.entries, self.files, self.dirty = {}, {}, False
+        try:
+            doc = json.loads(self.path.read_text())
+        except (OSError, ValueError):
+            return  # none yet, or unreadable: rebuilt as assets are read
+        if isinstance(doc, dict) and doc.get("format") == _INDEX_FORMAT:
+            self.entries = dict(doc.get("entries", {}))
+
+    def info(self, ref: dict) -> AssetInfo:
+        self._open()
+        key = self._file(ref)
+        try:
+            st = os.stat(key)
+        except OSError:
+            st = None  # not built yet: loading it below builds it
+        e = self.entries.get(key)
+        if st is not None and e is not None and e["stamp"] == [st.st_size, st.st_mtime_ns]:
+            return AssetInfo(e["asset_id"], tuple(e["extents"]), tuple(e["labels"]),
+                             tuple(sorted(ref.items())))
+        info = AssetInfo.of(load_asset_ref(ref), ref)
+        st = os.stat(key)
+        self.entries[key] = {"stamp": [st.st_size, st.st_mtime_ns], "asset_id": info.asset_id,
+                             "extents": list(info.extents), "labels": list(info.part_labels)}
+        self.dirty = True
+        return info
+
+    def save(self) -> None:
+        if not self.dirty or self.path is None:
+            return
+        from ..scene.io import atomic_write_text
+
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        atomic_write_text(self.path, json.dumps({"format": _INDEX_FORMAT,
+                                                 "entries": self.entries}) + "\n")
+        self.dirty = False
+
+
+_INDEX = _AssetIndex()
+
+
+def asset_info(ref: dict) -> AssetInfo:
+    """The :class:`AssetInfo` of a ``scene.json`` asset reference, from the on-disk index
+    when the asset file is unchanged, otherwise by loading the asset (and indexing it)."""
+    return _INDEX.info(ref)
+
+
+def save_asset_index() -> None:
+    """Write the asset index if :func:`asset_info` added to it (atomically)."""
+    _INDEX.save()
+
+
 def _room_category(name: str) -> str:
     return "wall" if name.startswith("wall") else name
 
@@ -157,24 +253,25 @@ def load_scene(scene_json: str | Path) -> LayoutScene:
         raise InputError(Problem("/format", f"expected one of {', '.join(READABLE_FORMATS)}, "
                                             f"got {d.get('format')!r}", str(f), "schema"))
     pag = PAG.from_dict(d["pag"])
-    ids, cats, assets, poses, solved, scales = [], [], [], [], [], []
+    ids, cats, infos, poses, solved, scales = [], [], [], [], [], []
     for od in d["objects"]:
         if od.get("status") != "placed":
             continue
-        asset = load_asset_ref(od["asset"])
+        info = asset_info(od["asset"])
         s = float(od["scale"])
         ids.append(od["id"])
         cats.append(od["category"])
-        assets.append(asset)
+        infos.append(info)
         scales.append(s)
+        size = s * np.asarray(info.extents, float)
         for dest, pose in ((poses, od.get("settled_pose") or od["pose"]), (solved, od["pose"])):
-            dest.append(np.r_[pose["position"], s * asset.extents,
-                              rotation_to_6d(quat_to_matrix(pose["quaternion"]))])
+            dest.append(np.concatenate([np.asarray(pose["position"], float), size,
+                                        rotation_to_6d(quat_to_matrix(pose["quaternion"]))]))
     index = {o: i for i, o in enumerate(ids)}
     rels = pag_relations(pag, index, dict(zip(ids, cats, strict=True)))
     poses_a = np.array(poses, float).reshape(-1, 12)
     solved_a = np.array(solved, float).reshape(-1, 12)
-    return LayoutScene(f.parent.name, f.parent, pag, ids, cats, assets, poses_a,
+    return LayoutScene(f.parent.name, f.parent, pag, ids, cats, infos, poses_a,
                        np.array(scales, float), rels, np.array(d["room"]["footprint"], float),
                        float(d["room"]["height"]),
                        None if np.array_equal(poses_a, solved_a) else solved_a)
@@ -189,6 +286,7 @@ def load_dataset(dataset: str | Path, *, progress=None) -> list[LayoutScene]:
             out.append(s)
         if progress is not None:
             progress()
+    save_asset_index()
     if not out:
         raise InputError(Problem("", "no scene of this dataset has a placed object",
                                  str(dataset), "io"))
@@ -269,7 +367,8 @@ def _room_features(footprint: np.ndarray, height: float, relations: list[Relatio
     return geo, ctx
 
 
-def graph_arrays(categories: list[str], assets: list[Asset], relations: list[RelationSpec],
+def graph_arrays(categories: list[str], assets: list[Asset | AssetInfo],
+                 relations: list[RelationSpec],
                  footprint: np.ndarray, height: float, *, shape_encoder: ShapeEncoder,
                  relation_encoder: RelationEncoder, stats: PoseStats,
                  poses: np.ndarray | None = None) -> GraphArrays:

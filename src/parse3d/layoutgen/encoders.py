@@ -32,7 +32,7 @@ import numpy as np
 from ..assets.model import Asset
 from ..relations import relation_names
 
-__all__ = ["ShapeEncoder", "ShapeDescriptor", "RelationSpec", "RelationEncoder",
+__all__ = ["AssetInfo", "ShapeEncoder", "ShapeDescriptor", "RelationSpec", "RelationEncoder",
            "TextRelationEncoder", "TokenRelationEncoder", "make_relation_encoder",
            "relation_phrase", "SURFACE_LABELS"]
 
@@ -45,6 +45,38 @@ _PART_BINS = 32
 
 def _bucket(text: str, n: int) -> int:
     return zlib.crc32(text.encode("utf-8")) % n
+
+
+@dataclass(frozen=True)
+class AssetInfo:
+    """What the layout model reads of an asset without loading its meshes.
+
+    Training data keep these instead of the assets, so a dataset loads without reading every
+    mesh (:func:`~.data.asset_info` caches them on disk).
+
+    Attributes
+    ----------
+    asset_id : str
+    extents : (3,) tuple of float
+        Size of the asset's bounding box, metres, asset frame.
+    part_labels : tuple of str
+        The label of every part, in the asset's part order.
+    ref : tuple of (str, object) pairs
+        The ``scene.json`` asset reference (sorted items), to load the asset itself.
+    """
+
+    asset_id: str
+    extents: tuple[float, float, float]
+    part_labels: tuple[str, ...]
+    ref: tuple = ()
+
+    @classmethod
+    def of(cls, asset: Asset | AssetInfo, ref: dict | None = None) -> AssetInfo:
+        """The info of a loaded asset (an AssetInfo is returned as it is)."""
+        if isinstance(asset, AssetInfo):
+            return asset
+        return cls(asset.asset_id, tuple(float(x) for x in asset.extents),
+                   tuple(p.label for p in asset.parts), tuple(sorted((ref or {}).items())))
 
 
 class ShapeEncoder(Protocol):
@@ -61,7 +93,7 @@ class ShapeEncoder(Protocol):
     name: str
     dim: int
 
-    def encode(self, asset: Asset, category: str) -> np.ndarray:
+    def encode(self, asset: Asset | AssetInfo, category: str) -> np.ndarray:
         """(T, D) float32 feature tokens of ``asset`` (an instance of ``category``)."""
         ...
 
@@ -86,12 +118,13 @@ class ShapeDescriptor:
         self._index = {c: i for i, c in enumerate(self.categories)}
         self.dim = len(self.categories) + 3 + _HIST_BINS + 1
 
-    def encode(self, asset: Asset, category: str) -> np.ndarray:
+    def encode(self, asset: Asset | AssetInfo, category: str) -> np.ndarray:
+        info = AssetInfo.of(asset)
         v = np.zeros(self.dim, np.float32)
         v[self._index[category]] = 1.0
         k = len(self.categories)
-        v[k:k + 3] = np.log(np.maximum(asset.extents, 1e-3))
-        labels = [p.label for p in asset.parts]
+        v[k:k + 3] = np.log(np.maximum(np.asarray(info.extents, float), 1e-3))
+        labels = info.part_labels
         for lab in labels:
             v[k + 3 + _bucket(lab, _HIST_BINS)] += 1.0 / max(len(labels), 1)
         v[-1] = np.log1p(len(labels))

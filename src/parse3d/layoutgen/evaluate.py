@@ -269,7 +269,7 @@ def _known_only(ls: LayoutScene, known: set[str]) -> LayoutScene:
     obj = [ls.object_ids[k] for k in kept]
     cats = [ls.categories[k] for k in kept]
     rels = pag_relations(ls.pag, {o: i for i, o in enumerate(obj)}, dict(zip(obj, cats, strict=True)))
-    return replace(ls, object_ids=obj, categories=cats, assets=[ls.assets[k] for k in kept],
+    return replace(ls, object_ids=obj, categories=cats, asset_info=[ls.asset_info[k] for k in kept],
                    poses=ls.poses[kept], scales=ls.scales[kept], relations=rels,
                    solved_poses=None if ls.solved_poses is None else ls.solved_poses[kept])
 

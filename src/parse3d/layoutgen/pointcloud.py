@@ -23,6 +23,8 @@ from pathlib import Path
 import numpy as np
 
 from ..assets.model import Asset
+from .data import load_asset_ref
+from .encoders import AssetInfo
 
 __all__ = ["surface_points", "PointCloudEncoder", "train_point_encoder", "POINTS",
            "LATENT"]
@@ -132,21 +134,24 @@ class PointCloudEncoder:
         self._torch = torch
         self._codes: dict[str, np.ndarray] = {}
 
-    def code(self, asset: Asset) -> np.ndarray:
-        """(latent,) float32 shape code of ``asset`` (memoised by ``asset_id``)."""
+    def code(self, asset: Asset | AssetInfo) -> np.ndarray:
+        """(latent,) float32 shape code of ``asset`` (memoised by ``asset_id``; an
+        :class:`~.encoders.AssetInfo` is loaded when its code is not known yet)."""
         c = self._codes.get(asset.asset_id)
         if c is None:
+            if isinstance(asset, AssetInfo):
+                asset = load_asset_ref(dict(asset.ref))
             with self._torch.no_grad():
                 pts = self._torch.as_tensor(surface_points(asset))[None]
                 c = _code(self._enc, pts)[0].numpy().astype(np.float32)
             self._codes[asset.asset_id] = c
         return c
 
-    def encode(self, asset: Asset, category: str) -> np.ndarray:
+    def encode(self, asset: Asset | AssetInfo, category: str) -> np.ndarray:
         v = np.zeros(self.dim, np.float32)
         v[self._index[category]] = 1.0
         k = len(self.categories)
-        v[k:k + 3] = np.log(np.maximum(asset.extents, 1e-3))
+        v[k:k + 3] = np.log(np.maximum(np.asarray(asset.extents, float), 1e-3))
         v[k + 3:] = self.code(asset)
         return v[None, :]
 

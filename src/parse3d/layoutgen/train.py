@@ -361,9 +361,10 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
             rels = [r for r in s.relations if r.child in idx and (r.parent < 0 or r.parent in idx)]
             rels = [replace(r, child=idx[r.child], parent=idx.get(r.parent, -1)) for r in rels]
             s = replace(s, categories=[s.categories[k] for k in keep],
-                        assets=[s.assets[k] for k in keep], poses=s.poses[keep], relations=rels,
+                        asset_info=[s.asset_info[k] for k in keep], poses=s.poses[keep],
+                        relations=rels,
                         solved_poses=None)
-        ga = graph_arrays(s.categories, s.assets, s.relations, s.footprint, s.height,
+        ga = graph_arrays(s.categories, s.asset_info, s.relations, s.footprint, s.height,
                           shape_encoder=shape_enc, relation_encoder=rel_enc, stats=stats,
                           poses=s.poses)
         return scene_tensors(ga, device)
