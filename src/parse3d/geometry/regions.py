@@ -30,6 +30,7 @@ __all__ = [
     "disk",
     "sample_uniform",
     "convex_footprint",
+    "convex_outline",
     "inside_convex",
 ]
 
@@ -51,6 +52,18 @@ def convex_footprint(points2d: np.ndarray) -> np.ndarray:
     except (QhullError, ValueError):  # degenerate (collinear) point sets
         hull = MultiPoint(pts).convex_hull.buffer(1e-4)
         return np.asarray(hull.exterior.coords)[:-1]
+
+
+def convex_outline(points2d: np.ndarray, idx: np.ndarray | None) -> np.ndarray:
+    """(K, 2) counter-clockwise convex hull of (N, 2) points whose hull vertices are known to be
+    ``points2d[idx]`` in hull order (either way round), as :func:`convex_footprint` gives it up
+    to the starting vertex; with ``idx`` None, :func:`convex_footprint` of all the points."""
+    if idx is None:
+        return convex_footprint(points2d)
+    p = np.asarray(points2d, float)[idx]
+    x, y = p[:, 0], p[:, 1]
+    twice_area = float(x @ np.roll(y, -1) - y @ np.roll(x, -1))
+    return p if twice_area > 0 else p[::-1]
 
 
 def minkowski_sum_convex(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -261,7 +274,7 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
             pts = (seg[:, :, None, :] + neg[None, None, :, :]).reshape(len(seg), -1, 2)
             cut.extend(shapely.convex_hull(shapely.multipoints(pts)))
     if obstacles:
-        negf = convex_footprint(neg)
+        negf = neg if _strictly_convex_ccw(neg) else convex_footprint(neg)
         # only obstacles whose sum can reach the region matter (others on a far-away table)
         x0, y0, x1, y1 = region.bounds
         lo, hi = negf.min(axis=0), negf.max(axis=0)
@@ -277,6 +290,21 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
     if not cut:
         return base
     return shapely.difference(base, shapely.union_all(cut), grid_size=GRID)
+
+
+def _strictly_convex_ccw(p: np.ndarray) -> bool:
+    """Whether the ring ``p`` (K, 2) turns left at every vertex and winds once: a convex
+    polygon in counter-clockwise order with no repeated or collinear vertices (as
+    :func:`convex_footprint` gives, up to the starting vertex)."""
+    if len(p) < 3:
+        return False
+    e = np.roll(p, -1, axis=0) - p
+    f = np.roll(e, -1, axis=0)
+    if not np.all(e[:, 0] * f[:, 1] - e[:, 1] * f[:, 0] > 0):
+        return False
+    # left turns all round may still wind twice (a pentagram): the edge angles rise once
+    ang = np.arctan2(e[:, 1], e[:, 0])
+    return bool(np.sum(np.diff(np.r_[ang, ang[0]]) < 0) <= 1)
 
 
 def clip(a: BaseGeometry, b: BaseGeometry) -> BaseGeometry:

@@ -18,7 +18,7 @@ from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
-from .geometry import asset_geometry, drop_distance, part_points
+from .geometry import asset_geometry, drop_distance, outline_indices, part_points
 from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
@@ -539,7 +539,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                       lambda: _inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
-    F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+    F = RG.convex_outline(np.c_[Y @ s.u, Y @ s.v], outline_indices(asset, R.T @ s.normal))
     overhang = False
     base_solid = None
     lift = 0.0

@@ -15,6 +15,7 @@ from ..pag.model import PAG
 from ..pag.refs import Ref
 from ..scene.model import PlacedObject, Scene
 from .collision import Body, CollisionWorld
+from .geometry import outline_indices
 
 __all__ = ["SolveState"]
 
@@ -58,7 +59,8 @@ class SolveState:
         self.scene.objects[obj.id] = obj
         self._memo.pop(obj.id, None)
         self.hulls[obj.id] = world_points(obj, hull_only=True)
-        self.xy[obj.id] = RG.convex_footprint(self.hulls[obj.id][:, :2])
+        self.xy[obj.id] = RG.convex_outline(self.hulls[obj.id][:, :2],
+                                            outline_indices(obj.asset, obj.rotation[2]))
         self.zr[obj.id] = (float(self.hulls[obj.id][:, 2].min()),
                            float(self.hulls[obj.id][:, 2].max()))
         lo, hi = self.xy[obj.id].min(axis=0), self.xy[obj.id].max(axis=0)
