@@ -63,7 +63,7 @@ def convex_outline(points2d: np.ndarray, idx: np.ndarray | None) -> np.ndarray:
         return convex_footprint(points2d)
     p = np.asarray(points2d, float)[idx]
     x, y = p[:, 0], p[:, 1]
-    twice_area = float(x @ np.roll(y, -1) - y @ np.roll(x, -1))
+    twice_area = float(x[:-1] @ y[1:] - x[1:] @ y[:-1] + x[-1] * y[0] - x[0] * y[-1])
     return p if twice_area > 0 else p[::-1]
 
 

@@ -765,7 +765,7 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
 
     def beside(o: str):
         """Edges of unplaced objects beside ``o`` on the same support."""
-        for e in pag.relations:
+        for e in touching(pag, o):
             if e.relation not in ("SIDE_OF", "ALONG") or e.parent.object != o:
                 continue
             kid = e.child.object
