@@ -163,7 +163,7 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
         np.array([-y, x, 0.0]) if abs(z) <= abs(y) else np.array([z, 0.0, -x])
     e1 /= np.linalg.norm(e1)
     a, b, c = e1.tolist()
-    E = np.c_[e1, [y * c - z * b, z * a - x * c, x * b - y * a]]
+    E = np.column_stack([e1, [y * c - z * b, z * a - x * c, x * b - y * a]])
     pc, pp = child_pts @ E, parent_pts @ E
     for pts, proj, other, d, asset, T in ((child_pts, pc, pp, down, parent_asset, T_parent),
                                           (parent_pts, pp, pc, -down, child_asset, T_child)):

@@ -546,7 +546,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                       lambda: _inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
-    F = RG.convex_outline(np.c_[Y @ s.u, Y @ s.v], outline_indices(asset, R.T @ s.normal))
+    F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
+                          outline_indices(asset, R.T @ s.normal))
     overhang = False
     base_solid = None
     lift = 0.0

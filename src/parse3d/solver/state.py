@@ -137,7 +137,7 @@ def parts_for(asset: Asset, ref: Ref) -> list[Part]:
 def plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
     """(N, 2) coordinates of world points in the plane frame ``(u, v)`` of ``surf``."""
     d = np.asarray(pts, float) - surf.origin
-    return np.c_[d @ surf.u, d @ surf.v]
+    return np.column_stack([d @ surf.u, d @ surf.v])
 
 
 def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
