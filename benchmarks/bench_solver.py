@@ -14,7 +14,7 @@ separately). The summary gives placed objects per second over the rooms of >= 40
 
 Scaling: the tables-and-tabletop room (``_common.tables_room``: dining tables on the floor,
 mugs, plates, bowls, bottles and books on their tops, constant floor area per table) at each
-size, warm, median over the seeds; then the exponent of a least-squares fit of time against
+size, warm (each seed solved once before it is timed), median over the seeds; then the exponent of a least-squares fit of time against
 objects on log-log axes (goal: <= 1.2).
 
 Every solve runs in a warm worker process; with ``--baseline-rev REV`` a second worker runs the
@@ -164,10 +164,12 @@ def run_scaling(sizes: list[int], seeds: int, now: Worker, before: Worker | None
         doc = tables_room(n).to_dict()
         res = {"now": [], "before": []}
         for seed in range(seeds):  # interleaved rounds
-            res["now"].append(now.ask(pag=doc, seed=seed, strategy="constrained", warm=1))
+            # warm: every seed's solve runs once first (its assets drawn from the pool, their
+            # collision data built), as in the rooms above
+            res["now"].append(now.ask(pag=doc, seed=seed, strategy="constrained", warm=seeds))
             if before:
                 res["before"].append(before.ask(pag=doc, seed=seed, strategy="constrained",
-                                                warm=1))
+                                                warm=seeds))
         med = {k: (statistics.median(r["cpu"] for r in v),
                    statistics.median(r["placed"] for r in v)) for k, v in res.items() if v}
         t_now.append(med["now"][0])

@@ -123,3 +123,77 @@ def test_rejection_sampling_is_uniform_over_the_region():
     assert abs(low - 2 / 3) < 0.03
     again = RG.sample_uniform(L, np.random.default_rng(0), 6000)
     assert np.array_equal(pts, again)  # deterministic for a seed
+
+
+def _convex(rng: np.random.Generator, k: int, r: float, at=(0.0, 0.0)) -> np.ndarray:
+    from parse3d.geometry import regions as RG
+
+    return RG.convex_footprint(rng.normal(size=(k, 2)) * r + np.asarray(at))
+
+
+def test_free_samples_are_uniform_over_the_eroded_region():
+    """Positions drawn from a convex support's free space without building it lie in the
+    region :func:`erode` builds, spread over it by area; where that region is empty, or the
+    support is not convex, the sampler leaves it to be built (None)."""
+    import shapely
+    from shapely.geometry import Polygon
+
+    from parse3d.geometry import regions as RG
+
+    rng = np.random.default_rng(5)
+    drawn = 0
+    for k in range(40):
+        region = Polygon(_convex(rng, 12, rng.uniform(0.5, 1.5)))
+        obst = [_convex(rng, 8, rng.uniform(0.05, 0.3), rng.uniform(-1, 1, 2))
+                for _ in range(int(rng.integers(0, 6)))]
+        F = _convex(rng, 10, rng.uniform(0.02, 0.2))
+        F = F - F.mean(axis=0)
+        margin = float(rng.choice([0.0, 0.03]))
+        want = RG.erode(region, obst, F)
+        if margin:
+            want = want.buffer(-margin * np.cos(np.pi / 32))
+        got = RG.free_samples(region, obst, F, np.random.default_rng(k), 3000, margin=margin)
+        if want.is_empty or want.area < 1e-10:
+            assert got is None, k
+            continue
+        if got is None:  # a small share of its box: built instead
+            continue
+        drawn += 1
+        assert got.shape == (3000, 2)
+        assert shapely.contains_xy(want.buffer(1e-7), got[:, 0], got[:, 1]).all(), k
+        # the left half of the region's box holds its share of the area
+        x0, y0, x1, y1 = want.bounds
+        left = want.intersection(shapely.box(x0, y0, (x0 + x1) / 2, y1)).area / want.area
+        assert abs(float(np.mean(got[:, 0] < (x0 + x1) / 2)) - left) < 0.04, k
+        again = RG.free_samples(region, obst, F, np.random.default_rng(k), 3000, margin=margin)
+        assert np.array_equal(got, again)  # deterministic for a seed
+    assert drawn >= 15
+    L = Polygon([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)])
+    assert RG.free_samples(L, [], np.array([[-0.1, -0.1], [0.1, -0.1], [0, 0.1]]),
+                           rng, 10) is None
+
+
+def test_outline_of_a_posed_asset_is_its_footprint():
+    """A posed asset's footprint gathered from its cached outline is the convex hull of all
+    its projected hull points, for turns about the plane normal and tilted views alike."""
+    from shapely.geometry import Polygon
+
+    from parse3d.assets import registry
+    from parse3d.geometry import regions as RG
+    from parse3d.geometry.frames import axis_angle
+    from parse3d.measure.geometry import asset_geometry, outline_indices
+
+    asset = registry.generate("mug", seed=0)
+    hull = asset_geometry(asset).hull * 1.3
+    rng = np.random.default_rng(2)
+    for k in range(30):
+        R = axis_angle(np.array([0, 0, 1.0]), rng.uniform(0, 2 * np.pi))
+        if k % 3 == 0:  # tilted
+            R = axis_angle(np.array([1.0, 0, 0]), rng.uniform(0, np.pi)) @ R
+        Y = hull @ R.T + rng.normal(size=3)
+        n = np.array([0, 0, 1.0])
+        uv = Y[:, :2]
+        got = RG.convex_outline(uv, outline_indices(asset, R.T @ n))
+        want = RG.convex_footprint(uv)
+        assert Polygon(got).exterior.is_ccw and Polygon(got).is_valid
+        assert Polygon(got).symmetric_difference(Polygon(want)).area < 1e-12, k

@@ -80,7 +80,7 @@ def side_table() -> PAG:
     return pag
 
 
-@pytest.mark.parametrize("seed", [13, 33])
+@pytest.mark.parametrize("seed", [28, 48])
 def test_backjumping_moves_the_parent_of_the_failed_relation(seed):
     # at these seeds the vase lands too far right for the lamp in a single greedy pass
     greedy = solve(side_table(), seed=seed, config=SolverConfig(search="greedy"))

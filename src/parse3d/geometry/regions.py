@@ -24,12 +24,14 @@ __all__ = [
     "clip",
     "minkowski_convex",
     "erode",
+    "free_samples",
     "half_plane",
     "strip",
     "line",
     "disk",
     "sample_uniform",
     "convex_footprint",
+    "convex_outline",
     "inside_convex",
 ]
 
@@ -51,6 +53,18 @@ def convex_footprint(points2d: np.ndarray) -> np.ndarray:
     except (QhullError, ValueError):  # degenerate (collinear) point sets
         hull = MultiPoint(pts).convex_hull.buffer(1e-4)
         return np.asarray(hull.exterior.coords)[:-1]
+
+
+def convex_outline(points2d: np.ndarray, idx: np.ndarray | None) -> np.ndarray:
+    """(K, 2) counter-clockwise convex hull of (N, 2) points whose hull vertices are known to be
+    ``points2d[idx]`` in hull order (either way round), as :func:`convex_footprint` gives it up
+    to the starting vertex; with ``idx`` None, :func:`convex_footprint` of all the points."""
+    if idx is None:
+        return convex_footprint(points2d)
+    p = np.asarray(points2d, float)[idx]
+    x, y = p[:, 0], p[:, 1]
+    twice_area = float(x[:-1] @ y[1:] - x[1:] @ y[:-1] + x[-1] * y[0] - x[0] * y[-1])
+    return p if twice_area > 0 else p[::-1]
 
 
 def minkowski_sum_convex(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -76,6 +90,13 @@ def minkowski_many(polys: list[np.ndarray], b: np.ndarray) -> list[np.ndarray]:
     """
     if not polys:
         return []
+    pts, total = _minkowski_stack(polys, b)
+    return np.split(pts, np.cumsum(total)[:-1])
+
+
+def _minkowski_stack(polys: list[np.ndarray], b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The sums of :func:`minkowski_many` stacked: their vertices (V, 2), one sum after the
+    other, and the vertex count of each."""
     b = np.asarray(b, float)
     ib = int(np.lexsort((b[:, 0], b[:, 1]))[0])
     b = np.concatenate([b[ib:], b[:ib]])
@@ -106,7 +127,7 @@ def minkowski_many(polys: list[np.ndarray], b: np.ndarray) -> list[np.ndarray]:
     gstart = np.concatenate([[0], np.cumsum(total)[:-1]])
     base = np.where(gstart[:, None] > 0, csum[np.maximum(gstart - 1, 0)], 0.0)
     pts = csum - base[g] - E + (A[first] + b[0])[g]
-    return np.split(pts, np.cumsum(total)[:-1])
+    return pts, total
 
 
 def minkowski_convex(a: np.ndarray, b: np.ndarray) -> Polygon:
@@ -261,7 +282,7 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
             pts = (seg[:, :, None, :] + neg[None, None, :, :]).reshape(len(seg), -1, 2)
             cut.extend(shapely.convex_hull(shapely.multipoints(pts)))
     if obstacles:
-        negf = convex_footprint(neg)
+        negf = neg if _strictly_convex_ccw(neg) else convex_footprint(neg)
         # only obstacles whose sum can reach the region matter (others on a far-away table)
         x0, y0, x1, y1 = region.bounds
         lo, hi = negf.min(axis=0), negf.max(axis=0)
@@ -277,6 +298,132 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
     if not cut:
         return base
     return shapely.difference(base, shapely.union_all(cut), grid_size=GRID)
+
+
+#: Batches of draws :func:`free_samples` tries before leaving the region to be built.
+FREE_SAMPLE_ROUNDS = 6
+_CONVEX: dict[int, tuple] = {}
+
+
+def _convex_half_planes(poly: Polygon) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """``(N, c, bounds)`` of a convex polygon: outward unit edge normals (E, 2) and offsets
+    (E,) with the polygon ``{x : N x <= c}``, and its bounds (4,); None when ``poly`` is not
+    one convex polygon. Cached per polygon object (a support's region is asked for again and
+    again)."""
+    got = _CONVEX.get(id(poly))
+    if got is not None and got[0] is poly:
+        return got[1]
+    if len(_CONVEX) > 4096:
+        _CONVEX.clear()
+    hp = None
+    if (isinstance(poly, Polygon) and not poly.is_empty and not poly.interiors
+            and len(poly.exterior.coords) <= 64
+            and poly.convex_hull.area - poly.area <= 1e-9 * max(poly.area, 1.0)):
+        v = shapely.get_coordinates(poly.exterior)[:-1]
+        if not poly.exterior.is_ccw:
+            v = v[::-1]
+        e = np.concatenate([v[1:], v[:1]]) - v
+        keep = np.hypot(e[:, 0], e[:, 1]) > 1e-12
+        v, e = v[keep], e[keep]
+        nrm = np.column_stack([e[:, 1], -e[:, 0]]) / np.hypot(e[:, 0], e[:, 1])[:, None]
+        hp = (nrm, np.einsum("ij,ij->i", nrm, v), np.array(poly.bounds))
+    _CONVEX[id(poly)] = (poly, hp)  # holding the polygon keeps its id valid
+    return hp
+
+
+def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarray,
+                 rng: np.random.Generator, n: int, *, margin: float = 0.0) -> np.ndarray | None:
+    """(n, 2) positions uniform over ``erode(region, obstacles, footprint)`` shrunk by
+    ``margin``, drawn without building that region; None when this cannot tell cheaply.
+
+    For a convex ``region`` the eroded region is a convex polygon (the region's edges moved in
+    by the footprint's extent along their normals) less the obstacles grown by the footprint
+    (convex too): positions are drawn uniformly in a box holding the polygon and kept when
+    inside it and outside every grown obstacle, in one vectorised test per batch. ``margin`` >
+    0 keeps positions that far from the region's edge and the obstacles (the footprint grown
+    by a 32-gon of that radius, as a buffer would approximate it).
+
+    None when ``region`` is not one convex polygon, or when :data:`FREE_SAMPLE_ROUNDS` batches
+    did not find ``n`` positions (the free space is empty or a small share of the box: build
+    the region with :func:`erode`, which tells which, and sample it instead).
+    """
+    hp = _convex_half_planes(region)
+    if hp is None:
+        return None
+    N0, c0, (x0, y0, x1, y1) = hp
+    neg = -np.asarray(footprint, float)
+    neg = neg if _strictly_convex_ccw(neg) else convex_footprint(neg)
+    if margin > 0:
+        neg = minkowski_sum_convex(neg, margin * _UNIT_32GON)
+    # p + F inside the region: each edge moved in by the footprint's support along its normal
+    c0 = c0 - (-neg @ N0.T).max(axis=0)
+    lo, hi = neg.min(axis=0), neg.max(axis=0)
+    x0, y0, x1, y1 = x0 + hi[0], y0 + hi[1], x1 + lo[0], y1 + lo[1]
+    if x1 <= x0 or y1 <= y0:
+        return None
+    N, c = N0, c0
+    if obstacles:
+        # only obstacles whose grown box meets the box matter
+        counts = [len(ob) for ob in obstacles]
+        A = np.concatenate(obstacles)
+        at = np.concatenate([[0], np.cumsum(counts)[:-1]])
+        olo = np.minimum.reduceat(A, at) + lo
+        ohi = np.maximum.reduceat(A, at) + hi
+        hit = (olo[:, 0] < x1) & (ohi[:, 0] > x0) & (olo[:, 1] < y1) & (ohi[:, 1] > y0)
+        grown = [obstacles[k] for k in np.flatnonzero(hit)]
+    else:
+        grown = []
+    if grown:
+        # every grown obstacle as half-planes too: inside it when inside all of its edges
+        V, counts = _minkowski_stack(grown, neg)
+        starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+        nxt = np.arange(1, len(V) + 1)
+        nxt[starts + counts - 1] = starts
+        E = V[nxt] - V
+        Ng = np.empty_like(E)
+        Ng[:, 0], Ng[:, 1] = E[:, 1], -E[:, 0]
+        cg = Ng[:, 0] * V[:, 0] + Ng[:, 1] * V[:, 1]
+        flat = np.abs(E).max(axis=1) < 1e-12  # repeated vertices: no constraint
+        Ng[flat], cg[flat] = 0.0, 1.0
+        N, c = np.concatenate([N0, Ng]), np.concatenate([c0, cg])
+    k0 = len(N0)
+    out, have, drawn = [], 0, 0
+    for _ in range(FREE_SAMPLE_ROUNDS):
+        rate = max(have / drawn, 0.05) if drawn else 0.5
+        m = int(math.ceil((n - have) / rate * 1.25)) + 4
+        P = np.empty((m, 2))
+        P[:, 0] = x0 + rng.random(m) * (x1 - x0)
+        P[:, 1] = y0 + rng.random(m) * (y1 - y0)
+        S = P @ N.T - c
+        ok = (S[:, :k0] <= 0).all(axis=1)
+        if grown:
+            ok &= ~np.logical_and.reduceat(S[:, k0:] < 0, starts, axis=1).any(axis=1)
+        drawn += m
+        if ok.any():
+            out.append(P[ok])
+            have += int(ok.sum())
+        if have >= n:
+            return np.concatenate(out)[:n]
+    return None
+
+
+_UNIT_32GON = np.column_stack([np.cos(np.arange(32) * np.pi / 16), np.sin(np.arange(32) * np.pi / 16)])
+
+
+def _strictly_convex_ccw(p: np.ndarray) -> bool:
+    """Whether the ring ``p`` (K, 2) turns left at every vertex and winds once: a convex
+    polygon in counter-clockwise order with no repeated or collinear vertices (as
+    :func:`convex_footprint` gives, up to the starting vertex)."""
+    if len(p) < 3:
+        return False
+    e = np.concatenate([p[1:], p[:1]]) - p
+    f = np.concatenate([e[1:], e[:1]])
+    if not (e[:, 0] * f[:, 1] - e[:, 1] * f[:, 0] > 0).all():
+        return False
+    # left turns all round may still wind twice (a pentagram): then more than one edge points
+    # down-left of its predecessor in angle order, i.e. the edge angle falls more than once
+    ang = np.arctan2(e[:, 1], e[:, 0])
+    return int((np.concatenate([ang[1:], ang[:1]]) < ang).sum()) <= 1
 
 
 def clip(a: BaseGeometry, b: BaseGeometry) -> BaseGeometry:

@@ -11,8 +11,8 @@ from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import Asset, Part
 
-__all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster", "enclosure_directions",
-           "drop_distance", "exact_drop", "is_round"]
+__all__ = ["AssetGeometry", "asset_geometry", "outline_indices", "part_points", "ray_caster",
+           "enclosure_directions", "drop_distance", "exact_drop", "is_round"]
 
 
 @dataclass
@@ -70,6 +70,38 @@ def asset_geometry(asset: Asset) -> AssetGeometry:
         g = AssetGeometry(np.asarray(hull), np.asarray(com), b.mean(axis=0), b)
         _GEOM[asset.asset_id] = g
     return g
+
+
+_OUTLINE: dict[tuple, np.ndarray | None] = {}
+
+
+def outline_indices(asset: Asset, direction: np.ndarray) -> np.ndarray | None:
+    """Indices into ``asset_geometry(asset).hull`` of the points whose projections along
+    ``direction`` (asset frame) are the vertices of the projected hull: the asset's outline
+    seen along that direction, cached per (asset, direction rounded to 1e-9).
+
+    Any pose of the asset projected onto a plane whose normal is ``direction`` in the asset's
+    frame has its convex footprint at these points (a turn about the plane normal, a scale
+    and a shift keep a point set's hull vertices), so a footprint costs a gather instead of a
+    hull. None when the projection is degenerate (a flat outline seen edge on).
+    """
+    d = np.asarray(direction, float)
+    key = (asset.asset_id, *np.round(d, 9).tolist())
+    if key in _OUTLINE:
+        return _OUTLINE[key]
+    if len(_OUTLINE) > 16384:
+        _OUTLINE.clear()
+    hull = asset_geometry(asset).hull
+    d = d / np.linalg.norm(d)
+    a = np.cross(d, [1.0, 0, 0] if abs(d[0]) < 0.9 else [0, 1.0, 0])
+    a /= np.linalg.norm(a)
+    b = np.cross(d, a)
+    try:
+        idx = ConvexHull(np.c_[hull @ a, hull @ b]).vertices
+    except (QhullError, ValueError):
+        idx = None
+    _OUTLINE[key] = idx
+    return idx
 
 
 def part_points(parts: list[Part]) -> np.ndarray:
@@ -131,7 +163,7 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
         np.array([-y, x, 0.0]) if abs(z) <= abs(y) else np.array([z, 0.0, -x])
     e1 /= np.linalg.norm(e1)
     a, b, c = e1.tolist()
-    E = np.c_[e1, [y * c - z * b, z * a - x * c, x * b - y * a]]
+    E = np.column_stack([e1, [y * c - z * b, z * a - x * c, x * b - y * a]])
     pc, pp = child_pts @ E, parent_pts @ E
     for pts, proj, other, d, asset, T in ((child_pts, pc, pp, down, parent_asset, T_parent),
                                           (parent_pts, pp, pc, -down, child_asset, T_child)):

@@ -11,9 +11,10 @@ from ..measure.geometry import (
     asset_geometry,
     drop_distance,
     enclosure_directions,
+    outline_indices,
     part_points,
     ray_caster,
 )
 
 __all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster", "enclosure_directions",
-           "drop_distance"]
+           "drop_distance", "outline_indices"]

@@ -18,8 +18,15 @@ from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
-from .geometry import asset_geometry, drop_distance, part_points
-from .regions import RegionContext, apply_region_rules, height_band, obstacles, parent_frame
+from .geometry import asset_geometry, drop_distance, outline_indices, part_points
+from .regions import (
+    REGION_RULES,
+    RegionContext,
+    apply_region_rules,
+    height_band,
+    obstacles,
+    parent_frame,
+)
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
 from .support import Support, _flat_cached, _flat_enough, filled, support_candidates
@@ -623,7 +630,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                       lambda: _inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
-    F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+    F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
+                          outline_indices(asset, R.T @ s.normal))
     overhang = False
     base_solid = None
     lift = 0.0
@@ -638,7 +646,11 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
-        if rel == "HANGING_BELOW":
+        samples = _free_positions(rel, sup, others, region0, obst + holes, F, height, lift, rng,
+                                  cfg.max_trials)
+        if samples is not None:
+            pass  # drawn from the free space without building the region
+        elif rel == "HANGING_BELOW":
             # what hangs needs its attachment (the points touching the parent) on the parent's
             # surface, not its whole footprint: a towel is wider than the bar it hangs from
             top = Y[hN <= hN.min() + 2e-3]
@@ -669,23 +681,26 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
                 region = RG.clip(region, RG.erode(fp, [], F))
                 overhang, base_solid = True, solid
-        if region.is_empty or region.area < 1e-10:
+        if samples is None and (region.is_empty or region.area < 1e-10):
             raise Fail(_no_space(st, sup, F, region0, obst + holes),
                        intrinsic=RG.erode(region0, holes, F).is_empty and not overhang)
-        c3 = (asset_geometry(asset).center * scale) @ R.T
-        ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
-                            c3 + h * s.normal)
-        region = apply_region_rules(ctx, others, region, "object")
-        if rel == "SECURED_TO":
-            region = height_band(ctx, support_edge, region)
-        region = apply_region_rules(ctx, others, region, "part")
-        if rel == "ON" and sup.owner != "room" and not overhang:
-            region = _well_inside(region, F, height)
+        if samples is None:
+            c3 = (asset_geometry(asset).center * scale) @ R.T
+            ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
+                                c3 + h * s.normal)
+            region = apply_region_rules(ctx, others, region, "object")
+            if rel == "SECURED_TO":
+                region = height_band(ctx, support_edge, region)
+            region = apply_region_rules(ctx, others, region, "part")
+            if rel == "ON" and sup.owner != "room" and not overhang:
+                region = _well_inside(region, F, height)
     else:
         region = region0
+        samples = None
     trials = 0
     last = "no sample"
-    samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
+    if samples is None:
+        samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
     if lift > 0 and strategy == "constrained" and len(samples):
@@ -838,7 +853,7 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
 
     def beside(o: str):
         """Edges of unplaced objects beside ``o`` on the same support."""
-        for e in pag.relations:
+        for e in touching(pag, o):
             if e.relation not in ("SIDE_OF", "ALONG") or e.parent.object != o:
                 continue
             kid = e.child.object
@@ -960,6 +975,24 @@ def _step_centres(st: SolveState, sup: Support, step: float) -> list[np.ndarray]
 
 #: A child taller than this many times its narrowest footprint width is tippy.
 TIPPY = 1.5
+
+
+def _free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: list[np.ndarray],
+                    F: np.ndarray, height: float, lift: float, rng: np.random.Generator,
+                    n: int) -> np.ndarray | None:
+    """(n, 2) positions drawn from the free space of a plain support (ON or IN, no relation
+    clipping the region, no low parts to stand on) without building the region: the region
+    ``_place_on`` would build, with a tippy child kept well inside (see :func:`_well_inside`);
+    None when that region must be built (elsewhere, or when it is empty or small: then its
+    construction says why, or finds the few positions left)."""
+    if rel not in ("ON", "IN") or lift > 0 \
+            or any(REGION_RULES[e.relation][0] != "none" for e in others):
+        return None
+    margin = 0.0
+    if rel == "ON" and sup.owner != "room":
+        width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
+        margin = 0.25 * width if height > TIPPY * width else 0.0
+    return RG.free_samples(region0, obst, F, rng, n, margin=margin)
 
 
 def _well_inside(region, F: np.ndarray, height: float):

@@ -393,7 +393,7 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
                 keep.append(st.xy[oid])
         if keep:
             allxy = np.vstack(keep)
-            uv = plane_coords(sup.surface, np.c_[allxy, np.full(len(allxy), sz)])
+            uv = plane_coords(sup.surface, np.column_stack([allxy, np.full(len(allxy), sz)]))
             out.extend(np.split(uv, np.cumsum([len(k) for k in keep])[:-1]))
     for oid, pts in ([] if horizontal else st.hulls.items()):
         if oid in exclude:

@@ -15,6 +15,7 @@ from ..pag.model import PAG
 from ..pag.refs import Ref
 from ..scene.model import PlacedObject, Scene
 from .collision import Body, CollisionWorld
+from .geometry import outline_indices
 
 __all__ = ["SolveState"]
 
@@ -58,7 +59,8 @@ class SolveState:
         self.scene.objects[obj.id] = obj
         self._memo.pop(obj.id, None)
         self.hulls[obj.id] = world_points(obj, hull_only=True)
-        self.xy[obj.id] = RG.convex_footprint(self.hulls[obj.id][:, :2])
+        self.xy[obj.id] = RG.convex_outline(self.hulls[obj.id][:, :2],
+                                            outline_indices(obj.asset, obj.rotation[2]))
         self.zr[obj.id] = (float(self.hulls[obj.id][:, 2].min()),
                            float(self.hulls[obj.id][:, 2].max()))
         lo, hi = self.xy[obj.id].min(axis=0), self.xy[obj.id].max(axis=0)
@@ -135,7 +137,7 @@ def parts_for(asset: Asset, ref: Ref) -> list[Part]:
 def plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
     """(N, 2) coordinates of world points in the plane frame ``(u, v)`` of ``surf``."""
     d = np.asarray(pts, float) - surf.origin
-    return np.c_[d @ surf.u, d @ surf.v]
+    return np.column_stack([d @ surf.u, d @ surf.v])
 
 
 def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
