@@ -24,7 +24,6 @@ from typing import Any
 
 import numpy as np
 import trimesh
-from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import BASE_LINK, Asset, Joint, Material, Part, link_groups
 from ..geometry.frames import make_transform
@@ -405,6 +404,8 @@ def convex_pieces(meshes, closed: Mapping[int, float | None] | None = None
     volume : float
         m^3.
     """
+    from scipy.spatial import ConvexHull, QhullError
+
     out, vol = [], 0.0
     for m in meshes:
         pts = np.asarray(getattr(m, "vertices", m), float)

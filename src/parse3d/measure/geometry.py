@@ -7,7 +7,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import Asset, Part
 
@@ -49,15 +48,10 @@ def asset_geometry(asset: Asset) -> AssetGeometry:
     if g is None or len(_GEOM) > 4096:
         if len(_GEOM) > 4096:
             _GEOM.clear()
-        pts = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces] or
-                        [p.mesh.vertices for p in asset.parts])
-        try:
-            hull = pts[ConvexHull(pts).vertices]
-        except (QhullError, ValueError):  # flat assets (a rug's outline): keep every point
-            hull = pts
+        hull = asset.hull_vertices()
         # centre of mass of the closed pieces by the divergence theorem, all in one pass:
         # each triangle with the origin spans a signed tetrahedron
-        tris = [pc.vertices[pc.faces] for p in asset.parts for pc in p.pieces]
+        tris = [pc.vertices[pc.faces] for p in asset.parts for pc in p.piece_arrays]
         if tris:
             T = np.concatenate(tris)
             v = np.einsum("ij,ij->i", T[:, 0], np.cross(T[:, 1], T[:, 2])) / 6.0
@@ -74,7 +68,7 @@ def asset_geometry(asset: Asset) -> AssetGeometry:
 
 def part_points(parts: list[Part]) -> np.ndarray:
     """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
-    pts = [pc.vertices for p in parts for pc in p.pieces] or [p.mesh.vertices for p in parts]
+    pts = [pc.vertices for p in parts for pc in p.piece_arrays] or [p.vertices for p in parts]
     return np.vstack(pts)
 
 

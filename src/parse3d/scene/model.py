@@ -11,15 +11,17 @@ World frame: +Z up, metres. An object's world transform maps asset-frame points 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import trimesh
 
 from ..assets.model import Asset, Part
 from ..geometry.frames import make_transform
 from ..geometry.surfaces import Surface
 from ..pag.model import PAG
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["SupportChoice", "Repair", "PlacedObject", "ShellElement", "RoomShell", "RelationCheck", "Contact", "Scene"]
 
@@ -177,7 +179,7 @@ class PlacedObject:
     def world_bounds(self, settled: bool | None = None) -> np.ndarray:
         """(2, 3) world AABB of the object's visual mesh."""
         T = self.transform(settled)
-        pts = np.vstack([p.mesh.vertices for p in self.asset.parts]) @ T[:3, :3].T + T[:3, 3]
+        pts = np.vstack([p.vertices for p in self.asset.parts]) @ T[:3, :3].T + T[:3, 3]
         return np.array([pts.min(axis=0), pts.max(axis=0)])
 
 

@@ -2,13 +2,17 @@
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
-import trimesh
 from shapely.geometry import Polygon
 
 from ..geometry.surfaces import Surface
 from ..pag.model import Room
 from .model import RoomShell, ShellElement
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["build_shell", "DEFAULT_WALL_THICKNESS"]
 
@@ -17,6 +21,8 @@ _SLAB = 0.1  # floor and ceiling slab thickness, m
 
 
 def _extrude(poly2d: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
+    import trimesh
+
     return trimesh.creation.extrude_polygon(Polygon(poly2d), z1 - z0).apply_translation([0, 0, z0])
 
 

@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import fcl
 import numpy as np
-import trimesh
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["CollisionWorld", "Body", "bvh_from_mesh", "cached_body"]
 
