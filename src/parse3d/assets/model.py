@@ -130,6 +130,12 @@ class Part:
         return self._mesh.faces
 
     @property
+    def mesh_arrays(self) -> MeshArrays:
+        """The visual mesh's vertices and faces, without making a ``trimesh.Trimesh``."""
+        m = self._mesh
+        return m if isinstance(m, MeshArrays) else MeshArrays(m.vertices, m.faces)
+
+    @property
     def piece_arrays(self) -> list:
         """The convex pieces as they are held: each has ``vertices`` and ``faces``."""
         return self._pieces
@@ -347,7 +353,7 @@ class Asset:
         ps = [p for p in self.parts if p.label == label]
         if len(ps) < 2:
             return ps
-        b = np.array([p.mesh.bounds for p in ps])
+        b = np.array([p.bounds for p in ps])
         keys = np.c_[b[:, 0, 2], b.mean(axis=1)[:, :2]]
         ranks = np.stack([_tolerant_ranks(keys[:, j], 0.01) for j in range(3)], axis=1)
         order = sorted(range(len(ps)), key=lambda i: (*ranks[i], i))

@@ -266,5 +266,8 @@ class Vocabulary:
 
 
 def vocabulary() -> Vocabulary:
-    """The current vocabulary (procedural and loaded categories)."""
+    """The current vocabulary (procedural and loaded categories); from the installed catalog
+    (:func:`install_catalog`) while no generator has been imported."""
+    if not _DISCOVERED and _KNOWN:
+        return Vocabulary(dict(sorted(_KNOWN.items())))
     return Vocabulary(categories())

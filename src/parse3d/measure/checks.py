@@ -484,7 +484,7 @@ def _gap_to_low_parts(pts: np.ndarray, pobj: PlacedObject, sB: Surface, settled)
     T = pobj.transform(settled)
     top = -np.inf
     for p in pobj.asset.parts:
-        for pc in p.pieces:
+        for pc in p.piece_arrays:
             q = pc.vertices @ T[:3, :3].T + T[:3, 3]
             hq = _plane_dist(q, sB)
             if 1e-3 < hq.max() <= STEP and hq.min() > -STEP \

@@ -81,7 +81,7 @@ def ray_caster(asset: Asset):
     if c is None:
         if len(_CASTERS) > 512:
             _CASTERS.clear()
-        m = asset.mesh()
+        m = asset.mesh_arrays().to_trimesh()
         try:
             from trimesh.ray.ray_pyembree import RayMeshIntersector
         except ImportError:  # pragma: no cover - embree is a declared dependency
