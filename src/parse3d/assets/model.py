@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from ..geometry.frames import rotation_about
 from ..geometry.meshes import MeshArrays, concatenate_arrays
 from ..geometry.surfaces import FaceData, Surface, face_data, resolve_surfaces_steady
 
@@ -220,10 +221,8 @@ class Joint:
         if self.type == "prismatic":
             T[:3, 3] = axis * value
             return T
-        import trimesh
-
         origin = np.asarray(self.origin, float)
-        R = trimesh.transformations.rotation_matrix(value, axis)[:3, :3]
+        R = rotation_about(axis, value)
         T[:3, :3] = R
         T[:3, 3] = origin - R @ origin
         return T

@@ -259,7 +259,7 @@ def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
     o = Tinv[:3, :3] @ c + Tinv[:3, 3]
     dirs = enclosure_directions() @ Tinv[:3, :3].T
     dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
-    hit = ray_caster(parent.asset).intersects_any(np.tile(o, (len(dirs), 1)), dirs)
+    hit = ray_caster(parent.asset).any_hits(np.tile(o, (len(dirs), 1)), dirs)
     return float(np.mean(hit))
 
 

@@ -9,6 +9,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..assets.model import Asset, Part
+from ..geometry.rays import RayCaster
 
 __all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster", "enclosure_directions",
            "drop_distance", "is_round"]
@@ -72,21 +73,17 @@ def part_points(parts: list[Part]) -> np.ndarray:
     return np.vstack(pts)
 
 
-_CASTERS: dict[str, object] = {}
+_CASTERS: dict[str, RayCaster] = {}
 
 
-def ray_caster(asset: Asset):
-    """A cached ray intersector over the asset's mesh (asset frame, unit scale)."""
+def ray_caster(asset: Asset) -> RayCaster:
+    """A cached ray caster over the asset's mesh (asset frame, unit scale)."""
     c = _CASTERS.get(asset.asset_id)
     if c is None:
         if len(_CASTERS) > 512:
             _CASTERS.clear()
-        m = asset.mesh_arrays().to_trimesh()
-        try:
-            from trimesh.ray.ray_pyembree import RayMeshIntersector
-        except ImportError:  # pragma: no cover - embree is a declared dependency
-            from trimesh.ray.ray_triangle import RayMeshIntersector
-        c = RayMeshIntersector(m)
+        m = asset.mesh_arrays()
+        c = RayCaster(m.vertices, m.faces)
         _CASTERS[asset.asset_id] = c
     return c
 
@@ -138,8 +135,7 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
         v = Ti[:3, :3] @ d
         scale = np.linalg.norm(v)
         v = v / scale
-        locs, idx, _ = ray_caster(asset).intersects_location(o, np.tile(v, (len(o), 1)),
-                                                             multiple_hits=False)
+        locs, idx, _ = ray_caster(asset).first_hits(o, np.tile(v, (len(o), 1)))
         if len(idx):
             dist = np.linalg.norm(locs - o[idx], axis=1) / scale
             best = min(best, float(dist.min()))

@@ -145,8 +145,7 @@ def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
         o = start @ Ti[:3, :3].T + Ti[:3, 3]
         v = Ti[:3, :3] @ (-s.normal)
         k = float(np.linalg.norm(v))
-        locs, idx, _ = ray_caster(parent.asset).intersects_location(
-            o, np.tile(v / k, (len(o), 1)), multiple_hits=False)
+        locs, idx, _ = ray_caster(parent.asset).first_hits(o, np.tile(v / k, (len(o), 1)))
         depth = np.full(len(o), np.inf)
         for loc, i in zip(locs, idx, strict=True):
             depth[i] = min(depth[i], float(np.linalg.norm(loc - o[i])) / k)
