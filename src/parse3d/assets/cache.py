@@ -20,6 +20,14 @@ File layout (``format: "parse3d-asset/1"``), every entry a plain numpy array (no
     Each surface's ``origin``, ``normal``, ``u``, ``v``.
 ``surf_wkb`` (bytes,) uint8, ``surf_off`` (S + 1,) int64
     Each surface polygon as WKB (float64 coordinates, exact), concatenated with offsets.
+``hull`` (H, 3) float64, optional
+    The vertices of the convex hull of every piece's vertices (of the part meshes for an asset
+    without pieces), as stored: what the solver and settling measure an asset by
+    (:attr:`Asset.hull`). Kept so that solving never runs qhull; a file without it gets it
+    computed when first needed.
+
+Meshes load as arrays (:class:`~parse3d.geometry.meshes.MeshArrays`); a part's
+``trimesh.Trimesh`` is made when first asked for, so reading an asset imports no mesh library.
 
 Examples
 --------
@@ -47,12 +55,12 @@ from typing import Any
 
 import numpy as np
 import shapely
-import trimesh
 
 from .._files import user_mode
 from ..errors import AssetError
+from ..geometry.meshes import MeshArrays
 from ..geometry.surfaces import Surface
-from .model import Asset, InternalSurface, Joint, Material, Part
+from .model import Asset, InternalSurface, Joint, Material, Part, hull_points
 
 __all__ = ["FORMAT", "save_asset", "load_asset", "asset_digest"]
 
@@ -115,6 +123,9 @@ def _asset_arrays(asset: Asset) -> dict[str, np.ndarray]:
     arrays["surf_off"] = off
     arrays["surf_frame"] = (np.array([_surface_rows(s) for s in surfaces], float)
                             if surfaces else np.zeros((0, 12)))
+    # the hull of the vertices as the file stores them, so it is the loaded asset's own
+    arrays["hull"] = hull_points(np.vstack(
+        [np.asarray(a, np.float32).astype(np.float64) for a in _hull_sources(arrays, asset)]))
     header = {
         "format": FORMAT,
         "category": asset.category,
@@ -130,6 +141,14 @@ def _asset_arrays(asset: Asset) -> dict[str, np.ndarray]:
         header["joints"] = [j.to_dict() for j in asset.joints]
     arrays["header"] = np.frombuffer(json.dumps(header).encode("utf-8"), np.uint8)
     return arrays
+
+
+def _hull_sources(arrays: dict[str, np.ndarray], asset: Asset) -> list[np.ndarray]:
+    """The stored vertex arrays the hull is taken over: every part's pieces, or every part's
+    mesh when no part has pieces (as :attr:`Asset.hull` chooses)."""
+    n = len(asset.parts)
+    pieces = [arrays[f"p{i}_pv"] for i in range(n) if len(arrays[f"p{i}_pv"])]
+    return pieces or [arrays[f"p{i}_v"] for i in range(n)] or [np.zeros((0, 3))]
 
 
 def save_asset(asset: Asset, path: str | os.PathLike) -> Path:
@@ -158,16 +177,13 @@ def save_asset(asset: Asset, path: str | os.PathLike) -> Path:
     return path
 
 
-def _pieces(pv: np.ndarray, pf: np.ndarray, pn: np.ndarray) -> list[trimesh.Trimesh]:
-    # Meshes are made without trimesh's embree ray intersector (``use_embree=False``): building
-    # one per mesh was a fifth of loading an asset, and nothing casts rays through
-    # ``mesh.ray`` (the ray queries build their own intersector); it still works, in Python.
+def _pieces(pv: np.ndarray, pf: np.ndarray, pn: np.ndarray) -> list[MeshArrays]:
     out = []
     v0 = f0 = 0
     for nv, nf in pn:
         v = pv[v0:v0 + nv].astype(np.float64)
         f = pf[f0:f0 + nf].astype(np.int64)
-        out.append(trimesh.Trimesh(v, f, process=False, use_embree=False))
+        out.append(MeshArrays(v, f))
         v0 += int(nv)
         f0 += int(nf)
     return out
@@ -284,8 +300,7 @@ def _asset_from(header: dict, data: dict[str, np.ndarray]) -> Asset:
     parts = []
     k = 0
     for i, ph in enumerate(header["parts"]):
-        mesh = trimesh.Trimesh(data[f"p{i}_v"].astype(np.float64), data[f"p{i}_f"].astype(np.int64),
-                               process=False, use_embree=False)
+        mesh = MeshArrays(data[f"p{i}_v"].astype(np.float64), data[f"p{i}_f"].astype(np.int64))
         pieces = _pieces(data[f"p{i}_pv"], data[f"p{i}_pf"], data[f"p{i}_pn"])
         surf = {}
         for label in ph["surfaces"]:
@@ -299,9 +314,13 @@ def _asset_from(header: dict, data: dict[str, np.ndarray]) -> Asset:
                         float(h["depth"]))
         for h in header["internal"]
     ]
+    hull = data.get("hull")
+    if hull is not None and (hull.ndim != 2 or hull.shape[1] != 3):
+        raise ValueError(f"hull has shape {hull.shape}, not (H, 3)")
     return Asset(header["category"], header["asset_id"], parts, tuple(header["size_range"]),
                  float(header["density"]), internal, header["meta"],
-                 [Joint.from_dict(j) for j in header.get("joints", [])])
+                 [Joint.from_dict(j) for j in header.get("joints", [])],
+                 hull=None if hull is None else hull.astype(np.float64))
 
 
 def asset_digest(asset: Asset) -> str:

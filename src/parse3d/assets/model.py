@@ -9,17 +9,22 @@ material, convex collision pieces that cover it, and its six directional surface
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import trimesh
 
-from ..geometry.shapes import Shape
+from ..geometry.frames import rotation_about
+from ..geometry.meshes import MeshArrays, concatenate_arrays
 from ..geometry.surfaces import FaceData, Surface, face_data, resolve_surfaces_steady
+
+if TYPE_CHECKING:
+    import trimesh
+
+    from ..geometry.shapes import Shape
 
 __all__ = ["Material", "Part", "InternalSurface", "Joint", "JOINT_TYPES", "Asset", "make_part",
            "BASE_LINK", "link_groups",
-           "finalize_asset", "joint_order"]
+           "finalize_asset", "joint_order", "hull_points"]
 
 
 @dataclass(frozen=True)
@@ -59,7 +64,6 @@ class Material:
         return cls(tuple(d["color"]), d["roughness"], d["metallic"], d["name"], d.get("texture"))
 
 
-@dataclass
 class Part:
     """One part of an asset.
 
@@ -78,19 +82,69 @@ class Part:
         The six directional surfaces (filled in by :func:`finalize_asset`).
     watertight : bool
         Whether the part is meant to be a closed solid (cloth, cards and open sheets are not).
+
+    Notes
+    -----
+    ``mesh`` and ``pieces`` may be given as :class:`~parse3d.geometry.meshes.MeshArrays` (what
+    loading a cached asset does): they become ``trimesh.Trimesh`` objects when first asked for.
+    :attr:`vertices`, :attr:`faces`, :attr:`bounds` and :attr:`piece_arrays` read the arrays
+    without making any, so a solve never imports trimesh.
     """
 
-    name: str
-    label: str
-    mesh: trimesh.Trimesh
-    material: Material = field(default_factory=Material)
-    pieces: list[trimesh.Trimesh] = field(default_factory=list)
-    surfaces: dict[str, Surface] = field(default_factory=dict)
-    watertight: bool = True
+    def __init__(self, name: str, label: str, mesh, material: Material | None = None,
+                 pieces: list | None = None, surfaces: dict[str, Surface] | None = None,
+                 watertight: bool = True):
+        self.name = name
+        self.label = label
+        self._mesh = mesh
+        self.material = Material() if material is None else material
+        self._pieces = [] if pieces is None else pieces
+        self.surfaces = {} if surfaces is None else surfaces
+        self.watertight = watertight
+
+    def __repr__(self) -> str:
+        return (f"Part(name={self.name!r}, label={self.label!r}, vertices={len(self.vertices)}, "
+                f"pieces={len(self._pieces)}, material={self.material.name!r})")
+
+    @property
+    def mesh(self) -> trimesh.Trimesh:
+        m = self._mesh
+        if isinstance(m, MeshArrays):
+            m = self._mesh = m.to_trimesh()
+        return m
+
+    @property
+    def pieces(self) -> list[trimesh.Trimesh]:
+        if any(isinstance(pc, MeshArrays) for pc in self._pieces):
+            self._pieces = [pc.to_trimesh() if isinstance(pc, MeshArrays) else pc
+                            for pc in self._pieces]
+        return self._pieces
+
+    @property
+    def vertices(self) -> np.ndarray:
+        """(V, 3) float vertices of the visual mesh (asset frame, metres)."""
+        return self._mesh.vertices
+
+    @property
+    def faces(self) -> np.ndarray:
+        """(F, 3) int faces of the visual mesh."""
+        return self._mesh.faces
+
+    @property
+    def mesh_arrays(self) -> MeshArrays:
+        """The visual mesh's vertices and faces, without making a ``trimesh.Trimesh``."""
+        m = self._mesh
+        return m if isinstance(m, MeshArrays) else MeshArrays(m.vertices, m.faces)
+
+    @property
+    def piece_arrays(self) -> list:
+        """The convex pieces as they are held: each has ``vertices`` and ``faces``."""
+        return self._pieces
 
     @property
     def bounds(self) -> np.ndarray:
-        return np.asarray(self.mesh.bounds)
+        m = self._mesh
+        return np.asarray(m.bounds)
 
 
 @dataclass
@@ -168,7 +222,7 @@ class Joint:
             T[:3, 3] = axis * value
             return T
         origin = np.asarray(self.origin, float)
-        R = trimesh.transformations.rotation_matrix(value, axis)[:3, :3]
+        R = rotation_about(axis, value)
         T[:3, :3] = R
         T[:3, 3] = origin - R @ origin
         return T
@@ -237,6 +291,9 @@ class Asset:
         :attr:`label_groups`) where the category has group labels.
     joints : list of Joint
         Articulations between parts (doors, drawers, lids); empty for rigid assets.
+    hull : (H, 3) float, optional
+        Vertices of the convex hull of the pieces' vertices (:func:`hull_points`), as the asset
+        cache stores it; computed when first asked for where it was not given.
     """
 
     category: str
@@ -247,6 +304,16 @@ class Asset:
     internal: list[InternalSurface] = field(default_factory=list)
     meta: dict[str, Any] = field(default_factory=dict)
     joints: list[Joint] = field(default_factory=list)
+    hull: np.ndarray | None = field(default=None, repr=False, compare=False)
+
+    def hull_vertices(self) -> np.ndarray:
+        """(H, 3) vertices of the convex hull of every convex piece's vertices (of the part
+        meshes when no part has pieces), asset frame; every point for a flat asset."""
+        if self.hull is None:
+            pts = [pc.vertices for p in self.parts for pc in p.piece_arrays] or \
+                  [p.vertices for p in self.parts]
+            self.hull = hull_points(np.vstack(pts))
+        return self.hull
 
     @property
     def bounds(self) -> np.ndarray:
@@ -295,7 +362,7 @@ class Asset:
         ps = [p for p in self.parts if p.label == label or p.label in members]
         if len(ps) < 2:
             return ps
-        b = np.array([p.mesh.bounds for p in ps])
+        b = np.array([p.bounds for p in ps])
         keys = np.c_[b[:, 0, 2], b.mean(axis=1)[:, :2]]
         ranks = np.stack([_tolerant_ranks(keys[:, j], 0.01) for j in range(3)], axis=1)
         order = sorted(range(len(ps)), key=lambda i: (*ranks[i], i))
@@ -303,7 +370,14 @@ class Asset:
 
     def mesh(self) -> trimesh.Trimesh:
         """All parts as one mesh (a fresh copy)."""
+        import trimesh
+
         return trimesh.util.concatenate([p.mesh for p in self.parts])
+
+    def mesh_arrays(self) -> MeshArrays:
+        """All parts as one mesh of arrays (a fresh copy): :meth:`mesh`'s vertices and faces,
+        without making any ``trimesh.Trimesh``."""
+        return concatenate_arrays([p._mesh for p in self.parts])
 
     @property
     def volume(self) -> float:
@@ -397,9 +471,22 @@ class Asset:
         return any(not j.is_mount for j in self.joints)
 
 
+def hull_points(pts: np.ndarray) -> np.ndarray:
+    """(H, 3) the vertices of the convex hull of (N, 3) points, in qhull's order; all the
+    points where they span no volume (a rug's flat outline)."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    try:
+        return pts[ConvexHull(pts).vertices]
+    except (QhullError, ValueError):
+        return pts
+
+
 def make_part(name: str, label: str, shapes: Shape | list[Shape], material: Material,
               *, watertight: bool = True) -> Part:
     """Build a Part from one or more shapes (meshes concatenated, pieces kept)."""
+    from ..geometry.shapes import Shape
+
     if isinstance(shapes, Shape):
         shapes = [shapes]
     mesh = _stacked([s.mesh for s in shapes])

@@ -52,9 +52,20 @@ _SHARED_SOURCES = ("geometry.shapes", "geometry.surfaces", "assets.model", "asse
 def _module_digest(module_name: str) -> bytes:
     mod = sys.modules.get(module_name)
     if mod is None:
-        import importlib
+        # read the source without importing the module (generators import trimesh): the same
+        # text ``inspect.getsource`` gives, newlines translated and a last newline added
+        import importlib.util
+        import tokenize
 
-        mod = importlib.import_module(module_name)
+        spec = importlib.util.find_spec(module_name)
+        try:
+            with tokenize.open(spec.origin) as fh:
+                src = fh.read()
+            if src and not src.endswith("\n"):
+                src += "\n"
+        except (OSError, TypeError, AttributeError, SyntaxError):
+            src = module_name
+        return hashlib.sha256(src.encode("utf-8")).digest()
     try:
         src = inspect.getsource(mod)
     except (OSError, TypeError):

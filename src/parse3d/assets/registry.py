@@ -36,6 +36,8 @@ __all__ = [
     "vocabulary",
     "Vocabulary",
     "category_rng",
+    "catalog",
+    "install_catalog",
 ]
 
 #: ``generator(rng, variant)`` returns the asset's parts, each optionally followed by the
@@ -90,6 +92,9 @@ class Category:
 
 _REGISTRY: dict[str, Category] = {}
 _DISCOVERED = False
+#: Categories known from a catalog snapshot (:func:`install_catalog`), answered by :func:`get`
+#: without importing any generator until one is needed.
+_KNOWN: dict[str, Category] = {}
 
 
 def register(
@@ -154,6 +159,8 @@ def categories() -> dict[str, Category]:
 
 def get(name: str) -> Category:
     """A category by name; KeyError with suggestions when unknown."""
+    if not _DISCOVERED and name in _KNOWN:
+        return _KNOWN[name]
     _discover()
     try:
         return _REGISTRY[name]
@@ -209,6 +216,52 @@ def generate(category: str, seed: int = 0, variant: str | None = None) -> Asset:
     return finalize_asset(asset)
 
 
+class _Deferred:
+    """The generator of a category known from a catalog: the first call imports the generators
+    and runs the real one. ``__module__`` names the real one's module (for the pool's
+    fingerprint)."""
+
+    def __init__(self, name: str, module: str):
+        self.name = name
+        self.__module__ = module
+
+    def __call__(self, rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+        _discover()
+        return _REGISTRY[self.name].generator(rng, variant)
+
+
+def catalog() -> dict[str, dict]:
+    """Every category as plain JSON data, for :func:`install_catalog` in a later process."""
+    out = {}
+    for name, c in categories().items():
+        out[name] = {"parts": list(c.parts), "vocabulary": list(c.vocabulary),
+                     "size_range": [float(x) for x in c.size_range], "density": float(c.density),
+                     "variants": list(c.variants), "placement": c.placement, "source": c.source,
+                     "module": None if c.generator is None else c.generator.__module__,
+                     "loaded": [str(p) for p in c.loaded_assets]}
+    return out
+
+
+def install_catalog(data: dict[str, dict]) -> None:
+    """Know the categories of ``data`` (from :func:`catalog`) without importing generators.
+
+    :func:`get` answers from it until something needs every category (:func:`categories`) or
+    a generator runs; then the generators are imported as usual and the registry's own
+    categories take over. The caller vouches that ``data`` is current (the CLI keys its
+    snapshot by the source files it depends on).
+    """
+    from pathlib import Path
+
+    known = {}
+    for name, d in data.items():
+        known[name] = Category(
+            name, tuple(d["parts"]), tuple(d["vocabulary"]), tuple(d["size_range"]),
+            float(d["density"]), tuple(d["variants"]), d["placement"],
+            None if d["module"] is None else _Deferred(name, d["module"]), d["source"],
+            tuple(Path(p) for p in d["loaded"]))
+    _KNOWN.update(known)
+
+
 class Vocabulary:
     """What the PAG validator checks category names and part labels against."""
 
@@ -226,5 +279,8 @@ class Vocabulary:
 
 
 def vocabulary() -> Vocabulary:
-    """The current vocabulary (procedural and loaded categories)."""
+    """The current vocabulary (procedural and loaded categories); from the installed catalog
+    (:func:`install_catalog`) while no generator has been imported."""
+    if not _DISCOVERED and _KNOWN:
+        return Vocabulary(dict(sorted(_KNOWN.items())))
     return Vocabulary(categories())

@@ -23,7 +23,11 @@ from pathlib import Path
 
 __all__ = ["SnapshotVocabulary", "cli_vocabulary", "snapshot_key"]
 
-SNAPSHOT_FORMAT = "parse3d-vocabulary/1"
+#: The catalog (:func:`parse3d.assets.registry.catalog`) of the snapshot read last, for
+#: :func:`solve_vocabulary`.
+_CATALOG: dict = {}
+
+SNAPSHOT_FORMAT = "parse3d-vocabulary/2"
 SNAPSHOT_NAME = "vocabulary.json"
 
 
@@ -114,12 +118,20 @@ def _read(path: Path, key: str) -> SnapshotVocabulary | None:
     if not isinstance(cats, dict) or not all(
             isinstance(v, list) and all(isinstance(x, str) for x in v) for v in cats.values()):
         return None
+    catalog = data.get("catalog")
+    if not isinstance(catalog, dict) or set(catalog) != set(cats):
+        return None
+    _CATALOG.clear()
+    _CATALOG.update(catalog)
     return SnapshotVocabulary({k: tuple(v) for k, v in cats.items()})
 
 
 def _write(path: Path, key: str, vocab) -> None:
+    from ..assets.registry import catalog
+
     data = {"format": SNAPSHOT_FORMAT, "key": key,
-            "categories": {c: list(vocab.parts(c)) for c in vocab.categories()}}
+            "categories": {c: list(vocab.parts(c)) for c in vocab.categories()},
+            "catalog": catalog()}
     tmp = path.with_name(f".{path.name}.{os.getpid()}.tmp")
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
@@ -156,4 +168,23 @@ def cli_vocabulary():
     if root is not None and not caught:
         # the key is taken after loading: the registry may have created the cache folder
         _write(root / SNAPSHOT_NAME, snapshot_key(root), vocab)
+    return vocab
+
+
+def solve_vocabulary():
+    """:func:`cli_vocabulary`, and with a current snapshot the asset registry told its
+    categories from it (sizes, generator modules), so that solving with cached assets imports
+    no generator (and no trimesh or scipy with them).
+
+    Returns
+    -------
+    SnapshotVocabulary or parse3d.assets.registry.Vocabulary
+    """
+    vocab = cli_vocabulary()
+    if isinstance(vocab, SnapshotVocabulary) and _CATALOG:
+        from ..assets.registry import install_catalog
+
+        # a damaged catalog installs nothing: the registry then decides as before
+        with contextlib.suppress(KeyError, TypeError, ValueError):
+            install_catalog(_CATALOG)
     return vocab

@@ -159,11 +159,11 @@ def register(app: typer.Typer) -> None:
 
         Example: parse3d solve examples/study.json --seed 3 --search greedy --time-limit 20 --out out/study
         """
-        from ..assets.registry import vocabulary
         from ..pag.io import load_pag
+        from ._vocab import solve_vocabulary
 
         check_seed(seed)
-        pag = load_pag(pag_file, vocabulary=vocabulary())
+        pag = load_pag(pag_file, vocabulary=solve_vocabulary())
         out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
         _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats, search,
              search_budget, time_limit)

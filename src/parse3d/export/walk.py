@@ -20,16 +20,18 @@ import hashlib
 from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import trimesh
-from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import BASE_LINK, Asset, Joint, Material, Part, link_groups
 from ..geometry.frames import make_transform
+from ..geometry.meshes import MeshArrays
 from ..pag.refs import RefSyntaxError, parse_ref
 from ..scene.model import PlacedObject, Scene
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["ExportOptions", "PartRecord", "LinkRecord", "JointRecord", "ObjectRecord",
            "ShellRecord", "SceneRecord", "walk_scene", "SHELL_MATERIALS", "BASE_LINK",
@@ -76,7 +78,7 @@ _HULLS_SIZE = 8192
 
 def _piece_key(part: Part) -> str:
     h = hashlib.blake2b(digest_size=16)
-    for pc in part.pieces:
+    for pc in part.piece_arrays:
         h.update(np.ascontiguousarray(pc.vertices, np.float64).tobytes())
         h.update(np.ascontiguousarray(pc.faces, np.int64).tobytes())
     return h.hexdigest()
@@ -123,11 +125,11 @@ class _HullCache:
                 _HULLS.move_to_end(key)
             self._by_part[id(part)] = hit
             self._keep.append(part)
-        meshes = [pc for part, _ in todo for pc in part.pieces
-                  if isinstance(pc, trimesh.Trimesh) and len(pc.faces) and len(pc.vertices) >= 4]
+        meshes = [pc for part, _ in todo for pc in part.piece_arrays
+                  if len(pc.faces) and len(pc.vertices) >= 4]
         closed = dict(zip(map(id, meshes), _closed_volumes(meshes), strict=True))
         for part, key in todo:
-            hit = _HULLS[key] = convex_pieces(part.pieces, closed=closed)
+            hit = _HULLS[key] = convex_pieces(part.piece_arrays, closed=closed)
             self._by_part[id(part)] = hit
         while len(_HULLS) > _HULLS_SIZE:
             _HULLS.popitem(last=False)
@@ -143,8 +145,9 @@ class PartRecord:
         Unique part name (``leg_0``) and vocabulary label (``leg``).
     key : str
         ``<object_id>:<part_name>``, the name every format gives the part.
-    mesh : trimesh.Trimesh
-        Visual mesh, asset frame, unscaled (shared with the asset: do not modify).
+    mesh : MeshArrays
+        Visual mesh (``vertices``, ``faces``), asset frame, unscaled (shared with the asset: do
+        not modify).
     material : Material
     link : str
         The link the part belongs to.
@@ -159,7 +162,7 @@ class PartRecord:
     name: str
     label: str
     key: str
-    mesh: trimesh.Trimesh
+    mesh: MeshArrays
     material: Material
     link: str
     relations: list[dict[str, Any]]
@@ -305,19 +308,26 @@ class ShellRecord:
         ``floor``, ``wall_i`` or ``ceiling``.
     key : str
         ``room:<name>``.
-    mesh : trimesh.Trimesh
-        World-frame slab.
+    mesh : MeshArrays
+        World-frame slab (``vertices``, ``faces``).
     material : Material
     pieces : list of ((V, 3) float, (F, 3) int)
         Convex pieces as hulls, world frame (the floor and ceiling of a non-convex room are
-        split into convex prisms).
+        split into convex prisms); computed on first use (the glTF writer needs none).
     """
 
     name: str
     key: str
-    mesh: trimesh.Trimesh
+    mesh: MeshArrays
     material: Material
-    pieces: list[tuple[np.ndarray, np.ndarray]]
+    _scene: Scene = field(repr=False, default=None)
+    _pieces: list[tuple[np.ndarray, np.ndarray]] | None = field(repr=False, default=None)
+
+    @property
+    def pieces(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        if self._pieces is None:
+            self._pieces = _shell_pieces(self._scene, self.name, self.mesh)
+        return self._pieces
 
 
 @dataclass
@@ -392,7 +402,7 @@ def convex_pieces(meshes, closed: Mapping[int, float | None] | None = None
 
     Parameters
     ----------
-    meshes : iterable of trimesh.Trimesh or (V, 3) arrays
+    meshes : iterable of meshes (anything with ``vertices`` and ``faces``) or (V, 3) arrays
     closed : mapping of int to float or None, optional
         Volumes already known (:func:`_closed_volumes`), by ``id`` of the mesh: a closed
         mesh (a piece is convex and closed by contract) needs no hull.
@@ -405,6 +415,8 @@ def convex_pieces(meshes, closed: Mapping[int, float | None] | None = None
     volume : float
         m^3.
     """
+    from scipy.spatial import ConvexHull, QhullError
+
     out, vol = [], 0.0
     for m in meshes:
         pts = np.asarray(getattr(m, "vertices", m), float)
@@ -422,7 +434,7 @@ def convex_pieces(meshes, closed: Mapping[int, float | None] | None = None
             continue
         if h.volume <= 1e-12:
             continue
-        if isinstance(m, trimesh.Trimesh) and len(m.faces):
+        if hasattr(m, "faces") and len(m.faces):
             # a piece is convex by contract: keep its own triangles (then a box part and its
             # one piece are the same mesh, and writers store it once)
             out.append((pts, np.asarray(m.faces)))
@@ -496,7 +508,7 @@ def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
     for p in asset.parts:
         prel = [r[0] for r in mine if (o.id, p.label) in (r[1], r[2])]
         key = f"{o.id}:{p.name}"
-        parts.append(PartRecord(p.name, p.label, key, p.mesh, p.material, part_link[p.name],
+        parts.append(PartRecord(p.name, p.label, key, p.mesh_arrays, p.material, part_link[p.name],
                                 prel, touching.get(key, []), p, hulls))
         hulls.register(p)
     density = float(asset.density)
@@ -513,7 +525,7 @@ def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
 
 
 def _shell_pieces(scene: Scene, name: str,
-                  mesh: trimesh.Trimesh) -> list[tuple[np.ndarray, np.ndarray]]:
+                  mesh: MeshArrays) -> list[tuple[np.ndarray, np.ndarray]]:
     if name not in ("floor", "ceiling"):
         return convex_pieces([mesh])[0]
     from shapely.geometry import Polygon
@@ -524,6 +536,8 @@ def _shell_pieces(scene: Scene, name: str,
     if outline.convex_hull.area - outline.area <= 1e-9 * max(outline.area, 1.0):
         rings = [np.asarray(outline.exterior.coords)[:-1]]
     else:
+        import trimesh
+
         v, f = trimesh.creation.triangulate_polygon(outline, engine="earcut")
         rings = [v[tri] for tri in f]
     prisms = [np.vstack([np.c_[r, np.full(len(r), z0)], np.c_[r, np.full(len(r), z1)]])
@@ -561,8 +575,7 @@ def walk_scene(scene: Scene, options: ExportOptions = ExportOptions()) -> SceneR
     for n in names:
         el = scene.room.elements[n]
         kind = "wall" if n.startswith("wall_") else n
-        shell.append(ShellRecord(n, f"room:{n}", el.mesh, SHELL_MATERIALS[kind],
-                                 _shell_pieces(scene, n, el.mesh)))
+        shell.append(ShellRecord(n, f"room:{n}", el.mesh_arrays, SHELL_MATERIALS[kind], scene))
     meta = {"name": scene.pag.name, "seed": int(scene.seed), "room": scene.pag.room.type,
             "pose": "settled" if settled else "solved", "generator": "parse3d"}
     return SceneRecord(scene.pag.name, settled, objects, shell, meta,

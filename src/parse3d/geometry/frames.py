@@ -12,6 +12,7 @@ __all__ = [
     "rot_x",
     "rot_y",
     "axis_angle",
+    "rotation_about",
     "matrix_to_quat",
     "quat_to_matrix",
     "make_transform",
@@ -48,6 +49,20 @@ def axis_angle(axis, theta: float) -> np.ndarray:
     a = a / np.linalg.norm(a)
     k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
     return np.eye(3) + np.sin(theta) * k + (1 - np.cos(theta)) * (k @ k)
+
+
+def rotation_about(axis, theta: float) -> np.ndarray:
+    """(3, 3) rotation by ``theta`` radians about ``axis`` (any length), summed as
+    ``cos(theta) I + (1 - cos(theta)) a a^T + sin(theta) [a]x`` in that order (the rounding
+    articulated assets were always posed with)."""
+    a = np.array(axis[:3], dtype=np.float64)
+    a /= np.sqrt(np.dot(a, a))
+    s, c = np.sin(theta), np.cos(theta)
+    R = np.diag([c, c, c])
+    R += np.outer(a, a) * (1.0 - c)
+    a = a * s
+    R += np.array([[0.0, -a[2], a[1]], [a[2], 0.0, -a[0]], [-a[1], a[0], 0.0]])
+    return R
 
 
 def rotation_between(a, b) -> np.ndarray:

@@ -10,7 +10,6 @@ import math
 
 import numpy as np
 import shapely
-from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 from shapely.geometry import box as shapely_box
 from shapely.geometry.base import BaseGeometry
@@ -46,6 +45,8 @@ def inside_convex(poly: np.ndarray, p, tol: float = 0.0) -> bool:
 
 def convex_footprint(points2d: np.ndarray) -> np.ndarray:
     """(K, 2) convex hull vertices of (N, 2) points, counter-clockwise."""
+    from scipy.spatial import ConvexHull, QhullError
+
     pts = np.asarray(points2d, float)
     try:
         h = ConvexHull(pts)

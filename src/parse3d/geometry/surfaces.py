@@ -13,16 +13,18 @@ A :class:`Surface` is a plane (origin, unit normal and an in-plane basis ``u``, 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 import shapely
-import trimesh
-from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import MultiPolygon, Polygon
 from shapely.geometry import box as shapely_box
 
 from ..relations import SURFACES
 from .frames import cross_rows
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = [
     "Surface",
@@ -34,6 +36,7 @@ __all__ = [
     "surface_from_bbox",
     "plane_polygon",
     "component_roots",
+    "hull_area_2d",
 ]
 
 #: In-plane basis (u, v) of each label, chosen so that u x v = the outward normal.
@@ -139,6 +142,8 @@ def _hull_ccw(pts: np.ndarray) -> np.ndarray:
     than setting up qhull.
     """
     if len(pts) > 4096:
+        from scipy.spatial import ConvexHull, QhullError
+
         try:
             h = ConvexHull(pts)
         except (QhullError, ValueError):
@@ -166,6 +171,15 @@ def _hull_ccw(pts: np.ndarray) -> np.ndarray:
     lower = chain(p)
     upper = chain(reversed(p))
     return np.array(lower[:-1] + upper[:-1], float)
+
+
+def hull_area_2d(pts: np.ndarray) -> float:
+    """Area of the convex hull of (N, 2) points (0 when they span none), m^2."""
+    h = _hull_ccw(np.asarray(pts, float))
+    if len(h) < 3:
+        return 0.0
+    x, y = h[:, 0], h[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))
 
 
 def _convex_or_union(tri2d: np.ndarray):

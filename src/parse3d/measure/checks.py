@@ -260,7 +260,7 @@ def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
     o = Tinv[:3, :3] @ c + Tinv[:3, 3]
     dirs = enclosure_directions() @ Tinv[:3, :3].T
     dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
-    hit = ray_caster(parent.asset).intersects_any(np.tile(o, (len(dirs), 1)), dirs)
+    hit = ray_caster(parent.asset).any_hits(np.tile(o, (len(dirs), 1)), dirs)
     return float(np.mean(hit))
 
 
@@ -486,7 +486,7 @@ def _gap_to_low_parts(pts: np.ndarray, pobj: PlacedObject, sB: Surface, settled)
     T = pobj.transform(settled)
     top = -np.inf
     for p in pobj.asset.parts:
-        for pc in p.pieces:
+        for pc in p.piece_arrays:
             q = pc.vertices @ T[:3, :3].T + T[:3, 3]
             hq = _plane_dist(q, sB)
             if 1e-3 < hq.max() <= STEP and hq.min() > -STEP \

@@ -7,9 +7,9 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-from scipy.spatial import ConvexHull, QhullError
 
 from ..assets.model import Asset, Part
+from ..geometry.rays import RayCaster
 
 __all__ = ["AssetGeometry", "asset_geometry", "outline_indices", "part_points", "ray_caster",
            "enclosure_directions", "drop_distance", "exact_drop", "is_round"]
@@ -49,15 +49,10 @@ def asset_geometry(asset: Asset) -> AssetGeometry:
     if g is None or len(_GEOM) > 4096:
         if len(_GEOM) > 4096:
             _GEOM.clear()
-        pts = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces] or
-                        [p.mesh.vertices for p in asset.parts])
-        try:
-            hull = pts[ConvexHull(pts).vertices]
-        except (QhullError, ValueError):  # flat assets (a rug's outline): keep every point
-            hull = pts
+        hull = asset.hull_vertices()
         # centre of mass of the closed pieces by the divergence theorem, all in one pass:
         # each triangle with the origin spans a signed tetrahedron
-        tris = [pc.vertices[pc.faces] for p in asset.parts for pc in p.pieces]
+        tris = [pc.vertices[pc.faces] for p in asset.parts for pc in p.piece_arrays]
         if tris:
             T = np.concatenate(tris)
             v = np.einsum("ij,ij->i", T[:, 0], np.cross(T[:, 1], T[:, 2])) / 6.0
@@ -96,6 +91,8 @@ def outline_indices(asset: Asset, direction: np.ndarray) -> np.ndarray | None:
     a = np.cross(d, [1.0, 0, 0] if abs(d[0]) < 0.9 else [0, 1.0, 0])
     a /= np.linalg.norm(a)
     b = np.cross(d, a)
+    from scipy.spatial import ConvexHull, QhullError
+
     try:
         idx = ConvexHull(np.c_[hull @ a, hull @ b]).vertices
     except (QhullError, ValueError):
@@ -106,25 +103,21 @@ def outline_indices(asset: Asset, direction: np.ndarray) -> np.ndarray | None:
 
 def part_points(parts: list[Part]) -> np.ndarray:
     """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
-    pts = [pc.vertices for p in parts for pc in p.pieces] or [p.mesh.vertices for p in parts]
+    pts = [pc.vertices for p in parts for pc in p.piece_arrays] or [p.vertices for p in parts]
     return np.vstack(pts)
 
 
-_CASTERS: dict[str, object] = {}
+_CASTERS: dict[str, RayCaster] = {}
 
 
-def ray_caster(asset: Asset):
-    """A cached ray intersector over the asset's mesh (asset frame, unit scale)."""
+def ray_caster(asset: Asset) -> RayCaster:
+    """A cached ray caster over the asset's mesh (asset frame, unit scale)."""
     c = _CASTERS.get(asset.asset_id)
     if c is None:
         if len(_CASTERS) > 512:
             _CASTERS.clear()
-        m = asset.mesh()
-        try:
-            from trimesh.ray.ray_pyembree import RayMeshIntersector
-        except ImportError:  # pragma: no cover - embree is a declared dependency
-            from trimesh.ray.ray_triangle import RayMeshIntersector
-        c = RayMeshIntersector(m)
+        m = asset.mesh_arrays()
+        c = RayCaster(m.vertices, m.faces)
         _CASTERS[asset.asset_id] = c
     return c
 
@@ -176,8 +169,7 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
         v = Ti[:3, :3] @ d
         scale = np.linalg.norm(v)
         v = v / scale
-        locs, idx, _ = ray_caster(asset).intersects_location(o, np.tile(v, (len(o), 1)),
-                                                             multiple_hits=False)
+        locs, idx, _ = ray_caster(asset).first_hits(o, np.tile(v, (len(o), 1)))
         if len(idx):
             dist = np.linalg.norm(locs - o[idx], axis=1) / scale
             best = min(best, float(dist.min()))

@@ -26,8 +26,6 @@ from collections import OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
-import trimesh
-from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import Polygon
 
 from ..assets.model import Asset
@@ -215,6 +213,8 @@ def concatenate(sets: list[ConvexSet]) -> ConvexSet:
 
 def _hull(points: np.ndarray) -> _Hull | None:
     """Convex hull of a piece's vertices; None for a degenerate (flat or empty) piece."""
+    from scipy.spatial import ConvexHull, QhullError
+
     pts = np.asarray(points, float)
     if len(pts) < 4:
         return None
@@ -357,6 +357,8 @@ def _convex_prisms(poly: np.ndarray, z0: float, z1: float) -> list[np.ndarray]:
     if shp.convex_hull.area - shp.area <= 1e-9 * max(shp.area, 1.0):
         rings = [np.asarray(shp.exterior.coords)[:-1]]
     else:
+        import trimesh
+
         v, f = trimesh.creation.triangulate_polygon(shp, engine="earcut")
         rings = [v[tri] for tri in f]
     out = []

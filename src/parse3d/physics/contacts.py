@@ -27,13 +27,15 @@ The result is deterministic: bodies in scene order, pieces in asset order, one g
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import networkx as nx
 import numpy as np
 
 from ..scene.model import Contact, Scene
 from .collision import ROOM, ConvexSet, WorldBody, concatenate, scene_bodies
+
+if TYPE_CHECKING:
+    import networkx as nx
 
 __all__ = [
     "extract_contacts",
@@ -445,6 +447,8 @@ def contacts_from_json(data: Iterable[dict[str, Any]]) -> list[Contact]:
 def contact_graph(contacts: Iterable[Contact]) -> nx.Graph:
     """The contact graph: nodes ``object:part`` (attributes ``object``, ``part``, ``room``),
     edges carrying ``samples`` and ``min_distance``."""
+    import networkx as nx
+
     g = nx.Graph()
     for c in contacts:
         for key in (c.a, c.b):

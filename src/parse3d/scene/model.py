@@ -11,15 +11,18 @@ World frame: +Z up, metres. An object's world transform maps asset-frame points 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import trimesh
 
 from ..assets.model import Asset, Part
 from ..geometry.frames import make_transform
+from ..geometry.meshes import MeshArrays
 from ..geometry.surfaces import Surface
 from ..pag.model import PAG
+
+if TYPE_CHECKING:
+    import trimesh
 
 __all__ = ["SupportChoice", "Repair", "PlacedObject", "ShellElement", "RoomShell", "RelationCheck", "Contact", "Scene"]
 
@@ -177,11 +180,10 @@ class PlacedObject:
     def world_bounds(self, settled: bool | None = None) -> np.ndarray:
         """(2, 3) world AABB of the object's visual mesh."""
         T = self.transform(settled)
-        pts = np.vstack([p.mesh.vertices for p in self.asset.parts]) @ T[:3, :3].T + T[:3, 3]
+        pts = np.vstack([p.vertices for p in self.asset.parts]) @ T[:3, :3].T + T[:3, 3]
         return np.array([pts.min(axis=0), pts.max(axis=0)])
 
 
-@dataclass
 class ShellElement:
     """A static element of the room shell: the floor, a wall or the ceiling.
 
@@ -190,14 +192,32 @@ class ShellElement:
     name : str
         ``floor``, ``ceiling`` or ``wall_i``.
     mesh : trimesh.Trimesh
-        World-frame slab (walls and floor have thickness, outside the room volume).
+        World-frame slab (walls and floor have thickness, outside the room volume). It may be
+        given as :class:`~parse3d.geometry.meshes.MeshArrays` and is then made when first
+        asked for; :attr:`mesh_arrays` reads the arrays without making it.
     surface : Surface
         The surface facing into the room (floor: up, ceiling: down, wall: inward).
     """
 
-    name: str
-    mesh: trimesh.Trimesh
-    surface: Surface
+    def __init__(self, name: str, mesh, surface: Surface):
+        self.name = name
+        self._mesh = mesh
+        self.surface = surface
+
+    def __repr__(self) -> str:
+        return f"ShellElement(name={self.name!r}, surface={self.surface.label!r})"
+
+    @property
+    def mesh(self) -> trimesh.Trimesh:
+        if isinstance(self._mesh, MeshArrays):
+            self._mesh = self._mesh.to_trimesh()
+        return self._mesh
+
+    @property
+    def mesh_arrays(self) -> MeshArrays:
+        """The slab's vertices and faces, without making a ``trimesh.Trimesh``."""
+        m = self._mesh
+        return m if isinstance(m, MeshArrays) else MeshArrays(np.asarray(m.vertices), np.asarray(m.faces))
 
 
 @dataclass

@@ -1,11 +1,22 @@
-"""The room shell: floor, walls and ceiling built from a PAG's room."""
+"""The room shell: floor, walls and ceiling built from a PAG's room.
+
+The slabs are extruded with trimesh. Their vertices and faces are kept on disk, in
+``$PARSE3D_CACHE/shell/<key>.npz`` keyed by the slabs' outlines and heights, so solving a room
+seen before imports no mesh library. A damaged entry is extruded again, and a cache that
+cannot be written only costs the extrusion.
+"""
 
 from __future__ import annotations
 
+import contextlib
+import hashlib
+import os
+import tempfile
+
 import numpy as np
-import trimesh
 from shapely.geometry import Polygon
 
+from ..geometry.meshes import MeshArrays
 from ..geometry.surfaces import Surface
 from ..pag.model import Room
 from .model import RoomShell, ShellElement
@@ -14,12 +25,75 @@ __all__ = ["build_shell", "DEFAULT_WALL_THICKNESS"]
 
 DEFAULT_WALL_THICKNESS = 0.12
 _SLAB = 0.1  # floor and ceiling slab thickness, m
+#: Version of the shell cache's entries: change it when the extrusion changes.
+_CACHE_FORMAT = b"parse3d-shell/1"
 
 
-def _extrude(poly2d: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
-    return trimesh.creation.extrude_polygon(Polygon(poly2d), z1 - z0).apply_translation([0, 0, z0])
+def _extrude(poly2d: np.ndarray, z0: float, z1: float) -> MeshArrays:
+    import trimesh
+
+    m = trimesh.creation.extrude_polygon(Polygon(poly2d), z1 - z0).apply_translation([0, 0, z0])
+    return MeshArrays(np.asarray(m.vertices, np.float64).copy(), np.asarray(m.faces, np.int64).copy())
 
 
+def _slab_meshes(slabs: list[tuple[np.ndarray, float, float]]) -> list[MeshArrays]:
+    """The extrusion of every ``(outline (K, 2), z0, z1)``: from the shell cache, or
+    extruded (and cached)."""
+    from importlib import metadata
+
+    h = hashlib.sha256(_CACHE_FORMAT)
+    with contextlib.suppress(metadata.PackageNotFoundError):  # another trimesh may differ
+        h.update(metadata.version("trimesh").encode())
+    for poly, z0, z1 in slabs:
+        h.update(np.ascontiguousarray(poly, np.float64).tobytes())
+        h.update(np.float64([len(poly), z0, z1]).tobytes())
+    root = _cache_root()
+    path = None if root is None else root / "shell" / f"{h.hexdigest()[:32]}.npz"
+    if path is not None and path.is_file():
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                out = [MeshArrays(data[f"v{i}"].astype(np.float64), data[f"f{i}"].astype(np.int64))
+                       for i in range(len(slabs))]
+            if all(m.vertices.ndim == 2 and m.vertices.shape[1] == 3 and m.faces.ndim == 2
+                   and m.faces.shape[1] == 3 and (m.faces.size == 0 or
+                                                  m.faces.min() >= 0 and
+                                                  m.faces.max() < len(m.vertices))
+                   for m in out):
+                return out
+        except (OSError, ValueError, KeyError, EOFError):
+            pass  # damaged: extrude again below
+    out = [_extrude(poly, z0, z1) for poly, z0, z1 in slabs]
+    if path is not None:
+        _write(path, out)
+    return out
+
+
+def _cache_root():
+    """The cache folder, or None when ``$PARSE3D_CACHE`` is unusable (nothing is cached)."""
+    from ..assets.library import cache_dir
+    from ..errors import InputError
+
+    try:
+        return cache_dir()
+    except InputError:
+        return None
+
+
+def _write(path, meshes: list[MeshArrays]) -> None:
+    arrays = {}
+    for i, m in enumerate(meshes):
+        arrays[f"v{i}"], arrays[f"f{i}"] = m.vertices, m.faces
+    tmp = None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.stem}-", suffix=".npz", dir=path.parent)
+        with os.fdopen(fd, "wb") as fh:
+            np.savez(fh, **arrays)
+        os.replace(tmp, path)
+    except OSError:  # a read-only or full cache: the next solve extrudes again
+        if tmp is not None:
+            with contextlib.suppress(OSError):
+                os.unlink(tmp)
 def _convex_corner(fp: np.ndarray, i: int) -> bool:
     """Whether vertex ``i`` of a counter-clockwise polygon is convex."""
     p, c, n = fp[i - 1], fp[i], fp[(i + 1) % len(fp)]
@@ -42,7 +116,21 @@ def build_shell(room: Room, *, wall_thickness: float = DEFAULT_WALL_THICKNESS) -
     c = np.asarray(poly.centroid.coords[0])
     outer = poly.buffer(wall_thickness, join_style="mitre")
 
-    floor_mesh = _extrude(np.asarray(outer.exterior.coords)[:-1], -_SLAB, 0.0)
+    ring = np.asarray(outer.exterior.coords)[:-1]
+    quads = []
+    for i in range(len(fp)):
+        a, b = fp[i], fp[(i + 1) % len(fp)]
+        t = (b - a) / float(np.linalg.norm(b - a))
+        inward = np.array([-t[1], t[0]])  # left of a->b is inside for a CCW polygon
+        # slabs overlap at convex corners; at a reflex corner (an L-shaped room's inner corner)
+        # an extended slab would poke into the room, so it stops at the corner there
+        ea = wall_thickness if _convex_corner(fp, i) else 0.0
+        eb = wall_thickness if _convex_corner(fp, (i + 1) % len(fp)) else 0.0
+        quads.append(np.array([a - t * ea, b + t * eb,
+                               b + t * eb - inward * wall_thickness,
+                               a - t * ea - inward * wall_thickness]))
+    floor_mesh, *wall_meshes, ceil_mesh = _slab_meshes(
+        [(ring, -_SLAB, 0.0)] + [(q, -_SLAB, h + _SLAB) for q in quads] + [(ring, h, h + _SLAB)])
     floor_poly = Polygon(fp - c)
     elements["floor"] = ShellElement(
         "floor", floor_mesh,
@@ -53,15 +141,8 @@ def build_shell(room: Room, *, wall_thickness: float = DEFAULT_WALL_THICKNESS) -
         d = b - a
         length = float(np.linalg.norm(d))
         t = d / length
-        inward = np.array([-t[1], t[0]])  # left of a->b is inside for a CCW polygon
-        # slabs overlap at convex corners; at a reflex corner (an L-shaped room's inner corner)
-        # an extended slab would poke into the room, so it stops at the corner there
-        ea = wall_thickness if _convex_corner(fp, i) else 0.0
-        eb = wall_thickness if _convex_corner(fp, (i + 1) % len(fp)) else 0.0
-        quad = np.array([a - t * ea, b + t * eb,
-                         b + t * eb - inward * wall_thickness,
-                         a - t * ea - inward * wall_thickness])
-        mesh = _extrude(quad, -_SLAB, h + _SLAB)
+        inward = np.array([-t[1], t[0]])
+        mesh = wall_meshes[i]
         mid = (a + b) / 2
         n = np.array([inward[0], inward[1], 0.0])
         u = np.array([t[0], t[1], 0.0])
@@ -72,7 +153,6 @@ def build_shell(room: Room, *, wall_thickness: float = DEFAULT_WALL_THICKNESS) -
                        Polygon([(-length / 2, -h / 2), (length / 2, -h / 2),
                                 (length / 2, h / 2), (-length / 2, h / 2)]), "mesh")
         elements[f"wall_{i}"] = ShellElement(f"wall_{i}", mesh, surf)
-    ceil_mesh = _extrude(np.asarray(outer.exterior.coords)[:-1], h, h + _SLAB)
     elements["ceiling"] = ShellElement(
         "ceiling", ceil_mesh,
         Surface("bottom", np.array([c[0], c[1], h]), np.array([0, 0, -1.0]),

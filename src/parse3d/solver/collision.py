@@ -3,15 +3,20 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import fcl
 import numpy as np
-import trimesh
+
+if TYPE_CHECKING:
+    import trimesh
+
+    from ..geometry.meshes import MeshArrays
 
 __all__ = ["CollisionWorld", "Body", "bvh_from_mesh", "cached_body"]
 
 
-def bvh_from_mesh(mesh: trimesh.Trimesh) -> fcl.BVHModel:
+def bvh_from_mesh(mesh: MeshArrays | trimesh.Trimesh) -> fcl.BVHModel:
     m = fcl.BVHModel()
     m.beginModel(len(mesh.vertices), len(mesh.faces))
     m.addSubModel(np.asarray(mesh.vertices, dtype=np.float64), np.asarray(mesh.faces, dtype=np.int32))
@@ -27,7 +32,7 @@ class Body:
     geom: fcl.BVHModel
 
     @classmethod
-    def from_mesh(cls, mesh: trimesh.Trimesh) -> Body:
+    def from_mesh(cls, mesh: MeshArrays | trimesh.Trimesh) -> Body:
         g = bvh_from_mesh(mesh)
         return cls(fcl.CollisionObject(g, fcl.Transform()), g)
 

@@ -12,6 +12,7 @@ from shapely.geometry import Polygon
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
+from ..geometry.meshes import MeshArrays, scaled_vertices
 from ..measure.checks import EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
@@ -316,7 +317,7 @@ def _free_top(asset: Asset, part) -> bool:
         for p in asset.parts:
             if p is part:
                 continue
-            for pc in p.pieces:  # per convex piece: a part's pieces may frame the top
+            for pc in p.piece_arrays:  # per convex piece: a part's pieces may frame the top
                 h = (pc.vertices - s.origin) @ s.normal
                 if h.max() <= 1e-3 or h.min() >= 0.2:
                     continue
@@ -598,11 +599,10 @@ def _wall_choices(st: SolveState, edges: list[Edge], rng: np.random.Generator) -
     return out
 
 
-def scaled_mesh(asset: Asset, scale: float):
+def scaled_mesh(asset: Asset, scale: float) -> MeshArrays:
     """A copy of the asset's mesh at ``scale`` (for its collision body)."""
-    m = asset.mesh()
-    m.apply_scale(scale)
-    return m
+    m = asset.mesh_arrays()
+    return MeshArrays(scaled_vertices(m.vertices, scale), m.faces)
 
 
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,

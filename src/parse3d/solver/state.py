@@ -118,7 +118,7 @@ class SolveState:
             o = self.scene.objects[oid]
             T = o.transform()
             got = [(p.name, pc.vertices @ T[:3, :3].T + T[:3, 3]) for p in o.asset.parts
-                   for pc in p.pieces]
+                   for pc in p.piece_arrays]
             self.pieces[oid] = got
         return got
 

@@ -7,11 +7,10 @@ from dataclasses import dataclass, field, replace
 import numpy as np
 import shapely
 import shapely.affinity
-from scipy.spatial import ConvexHull, QhullError
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
-from ..geometry.surfaces import Surface
+from ..geometry.surfaces import Surface, hull_area_2d
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
@@ -97,17 +96,15 @@ def _flat_enough(part, label: str, tol: float = 0.02, frac: float = 0.2) -> bool
     """
     n = np.asarray(SURFACES[label], float)
     axes = [i for i in range(3) if abs(n[i]) < 0.5]
-    pts = np.vstack([pc.vertices for pc in part.pieces]) if part.pieces else part.mesh.vertices
+    pieces = part.piece_arrays
+    pts = np.vstack([pc.vertices for pc in pieces]) if pieces else part.vertices
     h = pts @ n
     face = np.ptp(pts[:, axes], axis=0)
     near = pts[h >= h.max() - tol][:, axes]
     if len(near) < 3 or face.prod() <= 0:
         return len(near) >= 3
-    try:
-        area = ConvexHull(near).volume
-    except QhullError:
-        return False
-    return area >= frac * float(face.prod())
+    area = hull_area_2d(near)
+    return area > 0 and area >= frac * float(face.prod())
 
 
 def _holes(poly: BaseGeometry) -> list[np.ndarray]:
@@ -154,8 +151,7 @@ def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
         o = start @ Ti[:3, :3].T + Ti[:3, 3]
         v = Ti[:3, :3] @ (-s.normal)
         k = float(np.linalg.norm(v))
-        locs, idx, _ = ray_caster(parent.asset).intersects_location(
-            o, np.tile(v / k, (len(o), 1)), multiple_hits=False)
+        locs, idx, _ = ray_caster(parent.asset).first_hits(o, np.tile(v / k, (len(o), 1)))
         depth = np.full(len(o), np.inf)
         for loc, i in zip(locs, idx, strict=True):
             depth[i] = min(depth[i], float(np.linalg.norm(loc - o[i])) / k)
