@@ -21,7 +21,7 @@ from ..pag.model import Edge
 from ..pag.refs import Ref
 from ..relations import SURFACES
 from .config import Fail
-from .geometry import asset_geometry, part_points
+from .geometry import asset_geometry, outline_indices, part_points
 from .state import SolveState, angle_to, parts_for, wrap
 from .support import Support
 
@@ -201,8 +201,10 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
     hull = asset_geometry(asset).hull * scale
 
     def fit(phi: float) -> float:
-        Y = hull @ (axis_angle(n_s, phi) @ R0).T
-        F = RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])
+        R = axis_angle(n_s, phi) @ R0
+        Y = hull @ R.T
+        F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
+                              outline_indices(asset, R.T @ s.normal))
         return float(RG.erode(sup.region, [], F).area)
 
     quarter = [base + k * np.pi / 2 for k in range(4)]
