@@ -32,13 +32,18 @@ from ..scene.model import Scene
 from .record import OPTIONS_FILE, options_to_dict, read_options, write_options
 from .walk import ExportOptions, SceneRecord, walk_scene
 
-__all__ = ["FORMATS", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
+__all__ = ["FORMATS", "MARKERS", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
            "format_module", "check_formats", "present_formats", "stale_formats", "to_sapien",
            "to_mujoco"]
 
 #: Format name -> module of this package.
 FORMATS: dict[str, str] = {"glb": "gltf", "usd": "usd", "mjcf": "mjcf", "urdf": "urdf",
                            "obj": "obj"}
+#: Format name -> the file (relative to a scene folder) whose presence marks the format as
+#: exported there; each writer module's ``MARKER``. Kept here so that finding the formats of a
+#: folder imports no writer.
+MARKERS: dict[str, str] = {"glb": "scene.glb", "usd": "scene.usd", "mjcf": "scene.xml",
+                           "urdf": "urdf/scene.json", "obj": "scene.obj"}
 
 
 def format_module(name: str) -> ModuleType:
@@ -72,7 +77,7 @@ def present_formats(folder: str | Path) -> tuple[str, ...]:
     """The formats exported into ``folder``: those whose marker file (``scene.glb``,
     ``scene.usd``, ``scene.xml``, ``urdf/scene.json``, ``scene.obj``) is there."""
     folder = Path(folder)
-    return tuple(f for f in FORMATS if (folder / format_module(f).MARKER).is_file())
+    return tuple(f for f in FORMATS if (folder / MARKERS[f]).is_file())
 
 
 def stale_formats(folder: str | Path) -> tuple[str, ...]:
@@ -85,7 +90,7 @@ def stale_formats(folder: str | Path) -> tuple[str, ...]:
     except OSError:
         return ()
     return tuple(f for f in present_formats(folder)
-                 if (folder / format_module(f).MARKER).stat().st_mtime_ns <= scene_time)
+                 if (folder / MARKERS[f]).stat().st_mtime_ns <= scene_time)
 
 
 def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = ("glb",),

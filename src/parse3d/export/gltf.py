@@ -30,6 +30,7 @@ from ..assets.model import Material
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_bytes
 from ..scene.model import Scene
+from . import MARKERS
 from .walk import ExportOptions, SceneRecord, walk_scene
 
 __all__ = ["NAME", "FILES", "MARKER", "Z_UP_TO_Y_UP", "write", "to_glb", "export_glb"]
@@ -38,7 +39,7 @@ NAME = "glb"
 #: What :func:`write` creates in the output folder.
 FILES = ("scene.glb",)
 #: The file whose presence (and age) marks this export in a folder (written last).
-MARKER = "scene.glb"
+MARKER = MARKERS["glb"]
 
 #: Rotation taking parse3d's Z-up world to glTF's Y-up: (x, y, z) -> (x, z, -y).
 Z_UP_TO_Y_UP = np.array([[1, 0, 0, 0], [0, 0, 1, 0], [0, -1, 0, 0], [0, 0, 0, 1]], dtype=float)

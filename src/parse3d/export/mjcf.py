@@ -36,6 +36,7 @@ from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
 from ..scene.model import Scene
+from . import MARKERS
 from ._files import MeshFiles, mesh_digest, remove_stale, safe_name
 from .walk import ExportOptions, ObjectRecord, SceneRecord, walk_scene
 
@@ -44,7 +45,7 @@ __all__ = ["NAME", "FILES", "MARKER", "build_spec", "build_xml", "write", "to_mu
 NAME = "mjcf"
 FILES = ("scene.xml", "meshes/")
 #: The file whose presence (and age) marks this export in a folder (written last).
-MARKER = "scene.xml"
+MARKER = MARKERS["mjcf"]
 
 _VISUAL_GROUP, _COLLISION_GROUP = 1, 3
 

@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 
 from ..scene.io import atomic_write_text
+from . import MARKERS
 from ._files import safe_name
 from .walk import SceneRecord
 
@@ -24,7 +25,7 @@ __all__ = ["NAME", "FILES", "MARKER", "write", "to_obj"]
 NAME = "obj"
 FILES = ("scene.obj", "scene.mtl")
 #: The file whose presence (and age) marks this export in a folder (written last).
-MARKER = "scene.obj"
+MARKER = MARKERS["obj"]
 
 _Z_TO_Y = np.array([[1.0, 0, 0], [0, 0, 1.0], [0, -1.0, 0]])
 

@@ -41,6 +41,7 @@ import numpy as np
 from .._files import user_mode
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
+from . import MARKERS
 from ._files import MeshFiles, join_pieces, remove_stale, safe_name, write_file
 from .walk import ObjectRecord, PartRecord, SceneRecord
 
@@ -49,7 +50,7 @@ __all__ = ["NAME", "FILES", "MARKER", "write", "object_urdf"]
 NAME = "urdf"
 FILES = ("urdf/",)
 #: The file whose presence (and age) marks this export in a folder (written last).
-MARKER = "urdf/scene.json"
+MARKER = MARKERS["urdf"]
 
 
 def _f(a) -> str:

@@ -33,6 +33,7 @@ import numpy as np
 
 from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
+from . import MARKERS
 from .walk import ObjectRecord, SceneRecord
 
 __all__ = ["NAME", "FILES", "MARKER", "write", "build_stage", "build_layer"]
@@ -40,7 +41,7 @@ __all__ = ["NAME", "FILES", "MARKER", "write", "build_stage", "build_layer"]
 NAME = "usd"
 FILES = ("scene.usd",)
 #: The file whose presence (and age) marks this export in a folder (written last).
-MARKER = "scene.usd"
+MARKER = MARKERS["usd"]
 
 #: Stiffness of the drive that holds a locked joint at its stored value (N m / deg, N / m).
 LOCK_STIFFNESS = 1e6

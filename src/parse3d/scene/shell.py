@@ -39,11 +39,8 @@ def _extrude(poly2d: np.ndarray, z0: float, z1: float) -> MeshArrays:
 def _slab_meshes(slabs: list[tuple[np.ndarray, float, float]]) -> list[MeshArrays]:
     """The extrusion of every ``(outline (K, 2), z0, z1)``: from the shell cache, or
     extruded (and cached)."""
-    from importlib import metadata
-
     h = hashlib.sha256(_CACHE_FORMAT)
-    with contextlib.suppress(metadata.PackageNotFoundError):  # another trimesh may differ
-        h.update(metadata.version("trimesh").encode())
+    h.update(_extruder_stamp())
     for poly, z0, z1 in slabs:
         h.update(np.ascontiguousarray(poly, np.float64).tobytes())
         h.update(np.float64([len(poly), z0, z1]).tobytes())
@@ -66,6 +63,19 @@ def _slab_meshes(slabs: list[tuple[np.ndarray, float, float]]) -> list[MeshArray
     if path is not None:
         _write(path, out)
     return out
+
+
+def _extruder_stamp() -> bytes:
+    """Size and modification time of trimesh's extrusion code, found without importing
+    trimesh: another trimesh may triangulate differently."""
+    import importlib.util
+
+    spec = importlib.util.find_spec("trimesh")
+    for base in (spec.submodule_search_locations or []) if spec else []:
+        with contextlib.suppress(OSError):
+            st = os.stat(os.path.join(base, "creation.py"))
+            return f"{st.st_size}:{st.st_mtime_ns}".encode()
+    return b"-"
 
 
 def _cache_root():
