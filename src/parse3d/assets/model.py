@@ -502,6 +502,8 @@ def _stacked(meshes: list[trimesh.Trimesh]) -> trimesh.Trimesh:
     without merging visuals and metadata or carrying caches, which a generated part has none of
     and which cost more than the stacking.
     """
+    import trimesh
+
     verts, faces = [], []
     offset = 0
     for m in meshes:
