@@ -285,6 +285,8 @@ def unit_normals(crosses: np.ndarray) -> np.ndarray:
     """(F, 3) unit face normals from the (F, 3) cross products of each face's edges
     ``(v1 - v0) x (v2 - v1)``: what ``trimesh.Trimesh.face_normals`` computes (zero rows for
     degenerate faces), without reading through the mesh's cache."""
+    import trimesh
+
     unit, ok = trimesh.util.unitize(crosses, check_valid=True)
     if ok.all():
         return unit
