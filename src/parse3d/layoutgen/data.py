@@ -141,6 +141,7 @@ class _AssetIndex:
         self.env: str | None = None
         self.entries: dict[str, dict] = {}
         self.files: dict[tuple, str] = {}  # (category, seed) or path -> asset file
+        self.infos: dict[str, tuple[list, AssetInfo]] = {}  # asset file -> (stamp, info)
         self.dirty = False
 
     def _file(self, ref: dict) -> str:
@@ -163,7 +164,7 @@ class _AssetIndex:
         self.save()  # what was added under another cache folder goes there
         self.env = env
         self.path = cache_dir() / "layoutgen" / "asset-info.json"
-        self.entries, self.files, self.dirty = {}, {}, False
+        self.entries, self.files, self.infos, self.dirty = {}, {}, {}, False
         try:
             doc = json.loads(self.path.read_text())
         except (OSError, ValueError):
@@ -178,15 +179,23 @@ class _AssetIndex:
             st = os.stat(key)
         except OSError:
             st = None  # not built yet: loading it below builds it
+        stamp = None if st is None else [st.st_size, st.st_mtime_ns]
+        hit = self.infos.get(key)
+        if hit is not None and hit[0] == stamp:
+            return hit[1]
         e = self.entries.get(key)
-        if st is not None and e is not None and e["stamp"] == [st.st_size, st.st_mtime_ns]:
-            return AssetInfo(e["asset_id"], tuple(e["extents"]), tuple(e["labels"]),
+        if stamp is not None and e is not None and e["stamp"] == stamp:
+            info = AssetInfo(e["asset_id"], tuple(e["extents"]), tuple(e["labels"]),
                              tuple(sorted(ref.items())))
-        info = AssetInfo.of(load_asset_ref(ref), ref)
-        st = os.stat(key)
-        self.entries[key] = {"stamp": [st.st_size, st.st_mtime_ns], "asset_id": info.asset_id,
-                             "extents": list(info.extents), "labels": list(info.part_labels)}
-        self.dirty = True
+        else:
+            info = AssetInfo.of(load_asset_ref(ref), ref)
+            st = os.stat(key)
+            stamp = [st.st_size, st.st_mtime_ns]
+            self.entries[key] = {"stamp": stamp, "asset_id": info.asset_id,
+                                 "extents": list(info.extents),
+                                 "labels": list(info.part_labels)}
+            self.dirty = True
+        self.infos[key] = (stamp, info)
         return info
 
     def save(self) -> None:
