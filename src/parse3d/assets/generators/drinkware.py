@@ -54,8 +54,10 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
-    """A rolled rim resting on a wall's top edge (outer radius ``r_out`` at height ``z``)."""
-    return ring([(r_out - t, z), (r_out + bead, z), (r_out + bead, z + bead), (r_out - t, z + bead)],
+    """A rolled rim round a wall's top edge (outer radius ``r_out`` at height ``z``): a
+    triangular section with faces sloping 27 degrees (no flat annulus, no ledge)."""
+    k = 0.5 * (t + bead)
+    return ring([(r_out - t, z - 0.5 * k), (r_out + bead, z + 0.5 * k), (r_out - t, z + 1.5 * k)],
                 sections=16)
 
 
@@ -92,7 +94,7 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     fh = rng.uniform(0.004, 0.007)  # the foot ring it stands on
     body = S.vessel([(r * 0.5, fh), (r * 0.55, fh + 0.006), (r * 0.9, fh + h * 0.5), (r, fh + h)], t)
     rf = r * 0.48
-    foot = ring([(rf - 0.004, 0.0), (rf, 0.0), (rf - 0.001, fh), (rf - 0.0036, fh)], sections=16)
+    foot = ring([(rf - 0.004, 0.0), (rf, 0.0), (rf - 0.002, fh + 0.0005)], sections=16)
     parts = [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
              make_part("rim", "rim", _rim(r, fh + h, t, 0.001), mat)]
     if variant == "handled":
