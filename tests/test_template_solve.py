@@ -6,7 +6,8 @@ in the robustness corpus: bottles IN a wine rack's shelves (upright bottles do n
 a rack's rows; they lie on its cradles), items ON a bed bench's seat (its cushion covers the
 seat), a potted plant AGAINST a wall by its pot (the foliage reaches further back), cushions
 and a tea table ON a rug too small for them, a teddy bear that stood on its legs alone (it
-would tip back, so it was never placed ON anything).
+would tip back, so it was never placed ON anything), clothes on hangers IN a wardrobe's shelf
+(they hang from its rod).
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ MOTIFS = {
     "plant_corner": ("living_room", "{wall: wall_0}"),
     "tea_house_table": ("tea_house", "{near: wall_2, distance: 2.0}"),
     "bedroom_shoes_and_toys": ("bedroom", "{wall: wall_0}", "teddy_bear"),
+    "hotel_wardrobe_clothes": ("hotel", "{wall: wall_0}", "hanging_clothes"),
 }
 
 
