@@ -55,9 +55,10 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
 
 def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
     """A rolled rim round a wall's top edge (outer radius ``r_out`` at height ``z``): a
-    triangular section with faces sloping 27 degrees (no flat annulus, no ledge)."""
+    triangular section with faces sloping 27 degrees (no flat annulus, no ledge), rising little
+    above the lip (a cup's height decides whether a tray's rim encloses it)."""
     k = 0.5 * (t + bead)
-    return ring([(r_out - t, z - 0.5 * k), (r_out + bead, z + 0.5 * k), (r_out - t, z + 1.5 * k)],
+    return ring([(r_out - t, z - 1.5 * k), (r_out + bead, z - 0.5 * k), (r_out - t, z + 0.5 * k)],
                 sections=16)
 
 
@@ -91,7 +92,7 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.045, 0.065)
     t = 0.003
     mat = M.ceramic(rng)
-    fh = rng.uniform(0.004, 0.007)  # the foot ring it stands on
+    fh = rng.uniform(0.002, 0.0035)  # the low foot ring it stands on
     body = S.vessel([(r * 0.5, fh), (r * 0.55, fh + 0.006), (r * 0.9, fh + h * 0.5), (r, fh + h)], t)
     rf = r * 0.48
     foot = ring([(rf - 0.004, 0.0), (rf, 0.0), (rf - 0.002, fh + 0.0005)], sections=16)
