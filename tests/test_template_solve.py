@@ -7,7 +7,8 @@ a rack's rows; they lie on its cradles), items ON a bed bench's seat (its cushio
 seat), a potted plant AGAINST a wall by its pot (the foliage reaches further back), cushions
 and a tea table ON a rug too small for them, a teddy bear that stood on its legs alone (it
 would tip back, so it was never placed ON anything), a suitcase standing on its wheels on a
-luggage rack's straps (it lies flat on them).
+luggage rack's straps (it lies flat on them), clothes on hangers IN a wardrobe's shelf (they hang
+from its rod).
 """
 
 from __future__ import annotations
@@ -26,6 +27,7 @@ MOTIFS = {
     "tea_house_table": ("tea_house", "{near: wall_2, distance: 2.0}"),
     "bedroom_shoes_and_toys": ("bedroom", "{wall: wall_0}", "teddy_bear"),
     "storage_luggage_store": ("storage", "{wall: wall_0}"),
+    "hotel_wardrobe_clothes": ("hotel", "{wall: wall_0}", "hanging_clothes"),
 }
 
 

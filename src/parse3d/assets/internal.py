@@ -105,12 +105,25 @@ def _planes(piece: trimesh.Trimesh) -> tuple[np.ndarray, np.ndarray]:
     return n, np.einsum("ij,ij->i", n, tri[:, 0])
 
 
-def _inside_pieces(planes, pts: np.ndarray) -> np.ndarray:
-    """Whether each point lies strictly inside any convex piece (given by its face planes)."""
-    inside = np.zeros(len(pts), bool)
-    for n, d in planes:
-        inside |= ((pts @ n.T) - d < -1e-6).all(axis=1)
-    return inside
+def _stack_planes(planes: list) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """All pieces' face planes in one array: (F, 3) normals, (F,) offsets and the (K,) index of
+    each piece's first face (pieces without faces left out)."""
+    planes = [(n, d) for n, d in planes if len(d)]
+    if not planes:
+        return np.zeros((0, 3)), np.zeros(0), np.zeros(0, np.int64)
+    starts = np.cumsum([0] + [len(d) for _, d in planes[:-1]])
+    return (np.vstack([n for n, _ in planes]), np.concatenate([d for _, d in planes]),
+            starts.astype(np.int64))
+
+
+def _inside_pieces(stacked, pts: np.ndarray) -> np.ndarray:
+    """Whether each point lies strictly inside any convex piece (given by :func:`_stack_planes`):
+    behind every face plane of one piece, all pieces tested in one product."""
+    n, d, starts = stacked
+    if not len(d):
+        return np.zeros(len(pts), bool)
+    behind = (pts @ n.T) - d < -1e-6
+    return np.logical_and.reduceat(behind, starts, axis=1).any(axis=1)
 
 
 def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
@@ -151,10 +164,10 @@ def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
 
     planes: list = []  # the convex pieces' face planes, built when a patch first needs them
 
-    def piece_planes() -> list:
+    def piece_planes():
         if not planes:
-            planes.extend(_planes(pc) for p in asset.parts for pc in p.pieces)
-        return planes
+            planes.append(_stack_planes([_planes(pc) for p in asset.parts for pc in p.pieces]))
+        return planes[0]
 
     for part in asset.parts:
         fd = faces.get(part.name) or face_data(part.mesh)
@@ -186,8 +199,8 @@ def find_internal_surfaces(asset, *, faces: dict | None = None) -> list:
             o_up = pts + [0, 0, lift]
             caster, normals = caster_normals()
             h_up, inside = _first_hit(caster, normals, o_up, np.tile([0, 0, 1.0], (len(pts), 1)))
-            if inside.any() or _inside_pieces(piece_planes(), o_up).any() \
-                    or _inside_pieces(piece_planes(), pts + [0, 0, _REST]).any():
+            if inside.any() or _inside_pieces(piece_planes(),
+                                              np.vstack([o_up, pts + [0, 0, _REST]])).any():
                 continue  # the patch is covered by a solid standing on it (or resting on it:
                 #           a foot ring's top under a bowl's floor thicker than the lift)
             o_h = np.repeat(pts + [0, 0, lift], len(_DIRS), axis=0)

@@ -54,9 +54,12 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
-    """A rolled rim resting on a wall's top edge (outer radius ``r_out`` at height ``z``)."""
-    return ring([(r_out - t, z), (r_out + bead, z), (r_out + bead, z + bead), (r_out - t, z + bead)],
-                sections=20)
+    """A rolled rim round a wall's top edge (outer radius ``r_out`` at height ``z``): a
+    triangular section with faces sloping 27 degrees (no flat annulus, no ledge), rising little
+    above the lip (a cup's height decides whether a tray's rim encloses it)."""
+    k = 0.5 * (t + bead)
+    return ring([(r_out - t, z - 1.5 * k), (r_out + bead, z - 0.5 * k), (r_out - t, z + 0.5 * k)],
+                sections=16)
 
 
 @register("cup", parts=("body",), extra_parts=("base", "rim", "handle"), size_range=(0.08, 0.14),
@@ -89,10 +92,10 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.045, 0.065)
     t = 0.003
     mat = M.ceramic(rng)
-    fh = rng.uniform(0.004, 0.007)  # the foot ring it stands on
+    fh = rng.uniform(0.002, 0.0035)  # the low foot ring it stands on
     body = S.vessel([(r * 0.5, fh), (r * 0.55, fh + 0.006), (r * 0.9, fh + h * 0.5), (r, fh + h)], t)
     rf = r * 0.48
-    foot = ring([(rf - 0.004, 0.0), (rf, 0.0), (rf - 0.001, fh), (rf - 0.0036, fh)], sections=20)
+    foot = ring([(rf - 0.004, 0.0), (rf, 0.0), (rf - 0.002, fh + 0.0005)], sections=16)
     parts = [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
              make_part("rim", "rim", _rim(r, fh + h, t, 0.001), mat)]
     if variant == "handled":

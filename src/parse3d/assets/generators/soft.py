@@ -46,7 +46,7 @@ def _roll(length: float, radius: float, *, squash: float = 0.85, flat: float = 0
     return shape.moved((0, 0, -shape.mesh.bounds[0, 2]))
 
 
-def _piping_loop(rx: float, ry: float, power: float, z: float, n: int = 28) -> np.ndarray:
+def _piping_loop(rx: float, ry: float, power: float, z: float, n: int = 20) -> np.ndarray:
     """(n, 3) points on the superellipse seam of a :func:`soft_hull` pillow at height ``z``."""
     u = np.linspace(0, 2 * np.pi, n, endpoint=False)
     cu, su = np.cos(u), np.sin(u)
@@ -68,7 +68,7 @@ def pillow(rng: np.random.Generator, variant: str) -> list[Part]:
         # a cord round each end, where the end cap is sewn to the body
         z_axis = radius * 0.75
         end = min(radius * 0.6, length * 0.2)
-        u = np.linspace(0, 2 * np.pi, 24, endpoint=False)
+        u = np.linspace(0, 2 * np.pi, 16, endpoint=False)
         yz = np.c_[radius * np.cos(u), np.maximum(z_axis + radius * np.sin(u), pr)]
         cords = [S.tube(np.c_[np.full(len(u), sx * (length / 2 - end)), yz], pr, sections=8,
                         closed=True) for sx in (-1, 1)]

@@ -19,17 +19,18 @@ from ._household import ring, shell
 
 
 def _lip(r_out: float, z: float, t: float, bead: float) -> S.Shape:
-    """A rolled lip: a band of section ``t + bead`` wide and ``bead`` tall resting on a wall's
-    top edge (outer radius ``r_out`` at height ``z``), bulging ``bead`` outwards."""
-    return ring([(r_out - t, z), (r_out + bead, z), (r_out + bead, z + bead), (r_out - t, z + bead)],
-                sections=24)
+    """A rolled lip round a wall's top edge (outer radius ``r_out`` at height ``z``, thickness
+    ``t``), bulging ``bead`` outwards: a triangular section whose faces slope 27 degrees, so it
+    adds no flat annulus (the costliest surface to resolve) and no ledge to stand things on."""
+    k = 0.5 * (t + bead)
+    return ring([(r_out - t, z - 0.5 * k), (r_out + bead, z + 0.5 * k), (r_out - t, z + 1.5 * k)],
+                sections=16)
 
 
 def _foot_ring(r: float, width: float, h: float) -> S.Shape:
-    """A foot ring of outer radius ``r``: a narrow band standing on z = 0, ``h`` tall, that
-    meets the underside above it."""
-    return ring([(r - width, 0.0), (r, 0.0), (r - width * 0.25, h), (r - width * 0.9, h)],
-                sections=24)
+    """A foot ring of outer radius ``r`` standing on z = 0: a triangular section ``width`` wide
+    whose ridge reaches 0.5 mm into the underside at height ``h``."""
+    return ring([(r - width, 0.0), (r, 0.0), (r - width * 0.5, h + 0.0005)], sections=16)
 
 
 @register("bowl", parts=("body",), extra_parts=("foot_ring", "rim"), size_range=(0.10, 0.28),
@@ -134,11 +135,11 @@ def vase(rng: np.random.Generator, variant: str) -> list[Part]:
         z_neck, z_lip = prof[-1][1], h * 0.9
         body = shell(prof, t, bottom=t * 2, sections=n)
         neck_band = ring([(neck, z_neck), (neck, z_lip), (neck - t, z_lip), (neck - t, z_neck)],
-                         sections=n)
+                         sections=16)
         parts = [make_part("body", "body", body, mat), make_part("neck", "neck", neck_band, mat)]
         r_lip, r_top = neck, neck * (1.4 if variant == "bud" else 1.3)
     # the lip flares from the neck (or the wall) to the mouth
-    lip = ring([(r_lip, z_lip), (r_top, h), (r_top - t, h), (r_lip - t, z_lip)], sections=24)
+    lip = ring([(r_lip, z_lip), (r_top, h), (r_top - t, h), (r_lip - t, z_lip)], sections=16)
     r0 = r if variant == "cylinder" else r * (0.6 if variant == "amphora" else 0.7)
     foot = _foot_ring(r0 * 0.92, min(0.01, r0 * 0.2), fh)
     return parts + [make_part("lip", "lip", lip, mat), make_part("foot_ring", "foot_ring", foot, mat)]

@@ -129,7 +129,7 @@ def _category_of(sub: Path, cj: Path, procedural: dict) -> Category | None:
     if base is not None:
         return Category(base.name, base.parts, base.vocabulary, base.size_range, base.density,
                         base.variants, base.placement, base.generator, "procedural+" + str(sub),
-                        tuple(paths))
+                        tuple(paths), groups=base.groups)
     if not paths:
         return None
     parts = tuple(data["parts"])
@@ -321,6 +321,6 @@ def add_assets(src: str | os.PathLike, *, category: str, mapping=None,
     if procedural:
         return Category(existing.name, existing.parts, existing.vocabulary, existing.size_range,
                         existing.density, existing.variants, existing.placement, existing.generator,
-                        "procedural+" + str(folder), paths)
+                        "procedural+" + str(folder), paths, groups=existing.groups)
     return Category(category, tuple(req), tuple(voc), tuple(data["size_range"]), float(density),
                     ("loaded",), data["placement"], None, str(folder), paths)
