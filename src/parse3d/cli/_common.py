@@ -19,14 +19,24 @@ class _Console:
         self._options = options
         self._console = None
 
-    def __getattr__(self, name: str):
-        if name.startswith("__"):
-            raise AttributeError(name)
+    def get(self):
+        """The ``rich.console.Console`` itself (for rich APIs that take one: progress bars)."""
         if self._console is None:
             from rich.console import Console
 
             self._console = Console(**self._options)
-        return getattr(self._console, name)
+        return self._console
+
+    def __getattr__(self, name: str):
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return getattr(self.get(), name)
+
+    def __enter__(self):
+        return self.get().__enter__()
+
+    def __exit__(self, *exc) -> None:
+        self.get().__exit__(*exc)
 
 
 console = _Console(stderr=False, highlight=False, soft_wrap=True)

@@ -131,7 +131,7 @@ def gallery(out: Path = typer.Option(Path("gallery.png"), "--out", "-o",
     for n in names:
         _category(n)
     rows = [(n, [registry.generate(n, s) for s in range(seeds)])
-            for n in track(names, description="generating", console=console)]
+            for n in track(names, description="generating", console=console.get())]
     contact_sheet(rows, out)
     console.print(f"wrote {out} ({len(rows)} categories x {seeds} seeds)")
 

@@ -129,7 +129,7 @@ def register(app: typer.Typer) -> None:
         if interactive:
             from rich.progress import Progress
 
-            prog = Progress(*_progress_columns(), console=err_console, transient=False)
+            prog = Progress(*_progress_columns(), console=err_console.get(), transient=False)
             prog.start()
             task = prog.add_task("building", total=scenes, ok=0, bad=0, built=0)
             built = [0]

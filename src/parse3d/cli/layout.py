@@ -80,7 +80,7 @@ def register(app: typer.Typer) -> None:
 
         prog = Progress(TextColumn("[bold]train"), BarColumn(), MofNCompleteColumn(),
                         TextColumn("loss {task.fields[loss]:.4f}"), TimeRemainingColumn(),
-                        console=err_console, disable=as_json or not sys.stderr.isatty())
+                        console=err_console.get(), disable=as_json or not sys.stderr.isatty())
         with prog:
             task = prog.add_task("train", total=steps, loss=float("nan"))
 

@@ -106,7 +106,7 @@ def _solve_progress(total: int, *, quiet: bool):
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TimeElapsedColumn
 
         with Progress("solving", BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                      console=err_console, transient=True) as bar:
+                      console=err_console.get(), transient=True) as bar:
             task = bar.add_task("solving", total=total)
             yield lambda p: bar.update(task, completed=p.done)
         return
