@@ -402,6 +402,8 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
         order = np.arange(len(sups))
     if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
         order = rng.permutation(len(sups))
+        if support_edge.relation == "IN":  # across a cradle's bars before on one of them
+            order = np.array(sorted(order, key=lambda i: not sups[int(i)].spans))
     body = cached_body(asset.asset_id, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
@@ -901,8 +903,11 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     base (those reaching within 3 mm of its lowest point; the feet of a TV, a pot's bottom),
     each as its convex footprint intersected with the ``solid`` support polygon (plane
     coordinates), must together hold its centre of mass 5 mm inside their convex hull. A TV
-    whose foot is off a narrow stand fails; a pot on a smaller burner passes. On a support
-    narrower than twice the margin (a bar) the centre of mass need only be over it."""
+    whose foot is off a narrow stand fails; a pot on a smaller burner passes. Across the bars
+    of a cradle (a spanning support) the base must rest on two bars with the centre of mass
+    between them. On a single support narrower than twice the margin (one bar, a rail) the
+    centre of mass need only be over it, with the base lying along it for at least half the
+    child's length: a bottle across one bar, its neck over the gap, tips in settling."""
     n = s.normal
     low = np.inf
     pieces = []
@@ -924,9 +929,28 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
     hull = shapely.union_all(held).convex_hull
     inner = hull.buffer(-5e-3)
-    if inner.is_empty:  # a support narrower than the margin (a wine rack's cradle bar)
+    if inner.is_empty:  # a support narrower than the margin (a rail, or one bar of several)
+        # on one bar a lying child lies along it, its base resting over at least half its
+        # length: across the bar (a bottle's body on it, its neck over the gap) it tips
+        whole = shapely.MultiPoint(plane_coords(s, np.vstack([w for w, _ in pieces]))).convex_hull
+        if _pieces(solid) > 1 or _length(hull) < 0.5 * _length(whole):
+            return False
         inner = hull.buffer(1e-6)
     return inner.contains(shapely.Point(com))
+
+
+def _length(poly) -> float:
+    """The longer side of a polygon's minimum rotated rectangle (0 for a point)."""
+    r = poly.minimum_rotated_rectangle
+    if not isinstance(r, Polygon):
+        return float(r.length)
+    xy = np.asarray(r.exterior.coords)[:3]
+    return float(max(np.linalg.norm(xy[1] - xy[0]), np.linalg.norm(xy[2] - xy[1])))
+
+
+def _pieces(poly) -> int:
+    """How many disjoint pieces a support polygon has (the bars of a cradle)."""
+    return len(poly.geoms) if hasattr(poly, "geoms") else int(not poly.is_empty)
 
 
 def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None:
