@@ -30,7 +30,7 @@ from .regions import (
 )
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
-from .support import Support, _flat_cached, _flat_enough, filled, support_candidates
+from .support import BAR_WIDTH, Support, _flat_cached, _flat_enough, filled, support_candidates
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
@@ -904,10 +904,11 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     each as its convex footprint intersected with the ``solid`` support polygon (plane
     coordinates), must together hold its centre of mass 5 mm inside their convex hull. A TV
     whose foot is off a narrow stand fails; a pot on a smaller burner passes. Across the bars
-    of a cradle (a spanning support) the base must rest on two bars with the centre of mass
-    between them. On a single support narrower than twice the margin (one bar, a rail) the
-    centre of mass need only be over it, with the base lying along it for at least half the
-    child's length: a bottle across one bar, its neck over the gap, tips in settling."""
+    of a cradle (a spanning support) the base rests on two bars with the centre of mass
+    between them. What rests on one bar (narrower than ``BAR_WIDTH``) must lie along it, its
+    base on the bar for at least half the child's length: a bottle across one bar, its neck
+    over the gap, tips in settling. On a bar narrower than twice the margin the centre of
+    mass need only be over it."""
     n = s.normal
     low = np.inf
     pieces = []
@@ -928,29 +929,27 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
         return False
     com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
     hull = shapely.union_all(held).convex_hull
-    inner = hull.buffer(-5e-3)
-    if inner.is_empty:  # a support narrower than the margin (a rail, or one bar of several)
-        # on one bar a lying child lies along it, its base resting over at least half its
-        # length: across the bar (a bottle's body on it, its neck over the gap) it tips
+    if _sides(hull)[0] < BAR_WIDTH:
+        # resting on one bar (a cradle's, a rail): the child lies along it, its base on it
+        # over at least half its length; across it (a bottle's body on the bar, its neck over
+        # the gap) it tips
         whole = shapely.MultiPoint(plane_coords(s, np.vstack([w for w, _ in pieces]))).convex_hull
-        if _pieces(solid) > 1 or _length(hull) < 0.5 * _length(whole):
+        if _sides(hull)[1] < 0.5 * _sides(whole)[1]:
             return False
+    inner = hull.buffer(-5e-3)
+    if inner.is_empty:  # a support narrower than the margin: the centre of mass over it
         inner = hull.buffer(1e-6)
     return inner.contains(shapely.Point(com))
 
 
-def _length(poly) -> float:
-    """The longer side of a polygon's minimum rotated rectangle (0 for a point)."""
+def _sides(poly) -> tuple[float, float]:
+    """(short, long) sides of a shape's minimum rotated rectangle (a segment: (0, length))."""
     r = poly.minimum_rotated_rectangle
     if not isinstance(r, Polygon):
-        return float(r.length)
+        return 0.0, float(r.length)
     xy = np.asarray(r.exterior.coords)[:3]
-    return float(max(np.linalg.norm(xy[1] - xy[0]), np.linalg.norm(xy[2] - xy[1])))
-
-
-def _pieces(poly) -> int:
-    """How many disjoint pieces a support polygon has (the bars of a cradle)."""
-    return len(poly.geoms) if hasattr(poly, "geoms") else int(not poly.is_empty)
+    a, b = float(np.linalg.norm(xy[1] - xy[0])), float(np.linalg.norm(xy[2] - xy[1]))
+    return min(a, b), max(a, b)
 
 
 def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None:
