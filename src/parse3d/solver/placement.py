@@ -929,7 +929,8 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
         return False
     com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
     hull = shapely.union_all(held).convex_hull
-    if _sides(hull)[0] < BAR_WIDTH:
+    touched = [g for g in getattr(solid, "geoms", [solid]) if g.intersects(hull)]
+    if len(touched) == 1 and _sides(touched[0])[0] < BAR_WIDTH:
         # resting on one bar (a cradle's, a rail): the child lies along it, its base on it
         # over at least half its length; across it (a bottle's body on the bar, its neck over
         # the gap) it tips
