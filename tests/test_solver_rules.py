@@ -65,14 +65,30 @@ def lying_bottle():
 
 @pytest.mark.parametrize("width", [0.015, 0.003])
 def test_base_supported_on_a_bar_under_the_centre_of_mass(lying_bottle, width):
-    """A wine rack's cradle bar (0.015 m), or one narrower than the 5 mm margin: over it, the
-    bottle lies; 6 cm off its centre of mass (the bar still under the bottle), it would not."""
+    """A wine rack's cradle bar (0.015 m), or one narrower than the 5 mm margin: the bottle
+    lies along it with its centre of mass over it; 6 cm off its centre of mass (the bar still
+    under the bottle), it would not."""
     bottle, R, t, (cx, cy) = lying_bottle
     s = floor_plane()
-    under = box(cx - 0.2, cy - width / 2, cx + 0.2, cy + width / 2)
-    assert _base_supported(bottle, 1.0, R, t, s, under)
-    off = shapely.affinity.translate(under, 0.0, 0.06)
+    along = box(cx - width / 2, cy - 0.2, cx + width / 2, cy + 0.2)
+    assert _base_supported(bottle, 1.0, R, t, s, along)
+    off = shapely.affinity.translate(along, 0.06, 0.0)
     assert not _base_supported(bottle, 1.0, R, t, s, off)
+
+
+@pytest.mark.parametrize("width", [0.015, 0.003])
+def test_base_supported_across_bars_needs_two(lying_bottle, width):
+    """Across one bar, even right under its centre of mass, a lying bottle balances (its neck
+    over the gap tips it in settling); across two bars under its body, it lies."""
+    bottle, R, t, (cx, cy) = lying_bottle
+    s = floor_plane()
+    across = box(cx - 0.2, cy - width / 2, cx + 0.2, cy + width / 2)
+    assert not _base_supported(bottle, 1.0, R, t, s, across)
+    # the bottle runs from its base (y = 0) to its cap (y = -height); 60% of the way is body
+    near, far = -0.02, -(float(asset_geometry(bottle).bounds[1, 2]) * 0.6)
+    assert far < cy < near
+    two = shapely.union_all([box(cx - 0.2, y - width / 2, cx + 0.2, y + width / 2) for y in (near, far)])
+    assert _base_supported(bottle, 1.0, R, t, s, two)
 
 
 # ------------------------------------------------------------------------------ _pressing

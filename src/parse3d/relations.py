@@ -176,7 +176,8 @@ _RELATIONS = (
         ),
         "is contained inside",
         "contact with an internal upward support surface (or a pile on it); on a shelf part the child's "
-        "centroid inside the parent's bbox footprint, in other containers ray-cast enclosure >= min_enclosure",
+        "centroid inside the parent's bbox footprint, in other containers ray-cast enclosure >= min_enclosure "
+        "(rays from the centroid, at most halfway up from the surface to the parent's top)",
         "in",
     ),
     Relation(

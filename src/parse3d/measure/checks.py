@@ -252,12 +252,21 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
 _STANDS: dict[tuple, bool] = {}
 
 
-def _enclosure(child: PlacedObject, parent: PlacedObject, settled) -> float:
-    """Fraction of rays from the child's centroid that hit the parent."""
+def _enclosure(child: PlacedObject, parent: PlacedObject, settled, floor: Surface | None = None) -> float:
+    """Fraction of rays from the child's centroid that hit the parent.
+
+    With the container's ``floor`` (the internal surface the child rests on), the rays start at
+    the centroid's x-y but no higher than halfway from that floor up to the parent's top: a cup
+    standing on a tray inside its low rim is in the tray although its centre of mass is above
+    the rim."""
     T = parent.transform(settled)
     Tinv = np.linalg.inv(T)
     c = object_centroid(child, settled)
     o = Tinv[:3, :3] @ c + Tinv[:3, 3]
+    if floor is not None:
+        f = Tinv[:3, :3] @ floor.origin + Tinv[:3, 3]
+        top = float(asset_geometry(parent.asset).bounds[1, 2])
+        o[2] = min(o[2], max(f[2], (f[2] + top) / 2))
     dirs = enclosure_directions() @ Tinv[:3, :3].T
     dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
     hit = ray_caster(parent.asset).any_hits(np.tile(o, (len(dirs), 1)), dirs)
@@ -597,7 +606,8 @@ OPEN_SUPPORT_LABELS = frozenset({"shelf"})
 def _check_in(ctx: CheckContext) -> Check:
     """Contact with an internal support surface of the parent (or a pile on it); then, on a
     shelf part, the child's centroid inside the parent's bounding-box footprint, and in any
-    other container a ray-cast enclosure >= ``min_enclosure``."""
+    other container a ray-cast enclosure >= ``min_enclosure`` (the rays start at the centroid,
+    lowered to at most halfway from the internal surface up to the parent's top)."""
     pobj = ctx.parent
     if pobj is None:
         return Check(False, {}, "IN needs an object parent")
@@ -622,7 +632,7 @@ def _check_in(ctx: CheckContext) -> Check:
             if c.residual.get("on_wall") else f"on the open {label} {part}"
         return Check(inside, res, f"{c.detail}; {where}, centroid "
                      f"{'inside' if inside else 'outside'} {ctx.edge.parent.object}'s footprint")
-    enc = _enclosure(ctx.child, pobj, ctx.settled)
+    enc = _enclosure(ctx.child, pobj, ctx.settled, sB)
     res = dict(c.residual, enclosure=round(enc, 4))
     return Check(enc >= ctx.param("min_enclosure") - 1e-9, res, f"{c.detail}; enclosure {enc:.2f}")
 

@@ -30,7 +30,7 @@ from .regions import (
 )
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, support_chain
-from .support import Support, _flat_cached, _flat_enough, filled, support_candidates
+from .support import BAR_WIDTH, Support, _flat_cached, _flat_enough, filled, support_candidates
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
@@ -402,6 +402,8 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
         order = np.arange(len(sups))
     if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
         order = rng.permutation(len(sups))
+        if support_edge.relation == "IN":  # across a cradle's bars before on one of them
+            order = np.array(sorted(order, key=lambda i: not sups[int(i)].spans))
     body = cached_body(asset.asset_id, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
@@ -901,8 +903,12 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     base (those reaching within 3 mm of its lowest point; the feet of a TV, a pot's bottom),
     each as its convex footprint intersected with the ``solid`` support polygon (plane
     coordinates), must together hold its centre of mass 5 mm inside their convex hull. A TV
-    whose foot is off a narrow stand fails; a pot on a smaller burner passes. On a support
-    narrower than twice the margin (a bar) the centre of mass need only be over it."""
+    whose foot is off a narrow stand fails; a pot on a smaller burner passes. Across the bars
+    of a cradle (a spanning support) the base rests on two bars with the centre of mass
+    between them. What rests on one bar (narrower than ``BAR_WIDTH``) must lie along it, its
+    base on the bar for at least half the child's length: a bottle across one bar, its neck
+    over the gap, tips in settling. On a bar narrower than twice the margin the centre of
+    mass need only be over it."""
     n = s.normal
     low = np.inf
     pieces = []
@@ -923,10 +929,28 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
         return False
     com = plane_coords(s, (R @ (asset_geometry(asset).com * scale) + t)[None])[0]
     hull = shapely.union_all(held).convex_hull
+    touched = [g for g in getattr(solid, "geoms", [solid]) if g.intersects(hull)]
+    if len(touched) == 1 and _sides(touched[0])[0] < BAR_WIDTH:
+        # resting on one bar (a cradle's, a rail): the child lies along it, its base on it
+        # over at least half its length; across it (a bottle's body on the bar, its neck over
+        # the gap) it tips
+        whole = shapely.MultiPoint(plane_coords(s, np.vstack([w for w, _ in pieces]))).convex_hull
+        if _sides(hull)[1] < 0.5 * _sides(whole)[1]:
+            return False
     inner = hull.buffer(-5e-3)
-    if inner.is_empty:  # a support narrower than the margin (a wine rack's cradle bar)
+    if inner.is_empty:  # a support narrower than the margin: the centre of mass over it
         inner = hull.buffer(1e-6)
     return inner.contains(shapely.Point(com))
+
+
+def _sides(poly) -> tuple[float, float]:
+    """(short, long) sides of a shape's minimum rotated rectangle (a segment: (0, length))."""
+    r = poly.minimum_rotated_rectangle
+    if not isinstance(r, Polygon):
+        return 0.0, float(r.length)
+    xy = np.asarray(r.exterior.coords)[:3]
+    a, b = float(np.linalg.norm(xy[1] - xy[0])), float(np.linalg.norm(xy[2] - xy[1]))
+    return min(a, b), max(a, b)
 
 
 def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None:

@@ -214,7 +214,7 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         if not out:
             raise Fail(f"IN: {ref} has no internal support surface"
                        f" (parts: {', '.join(sorted({p.label for p in parts}))})")
-        return out
+        return _span_bars(out)
     want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
     slanted = []
     for p in parts:
@@ -247,6 +247,44 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
 
 #: Metres within which parts' upward surfaces count as one level (a rack's straps or bars).
 LEVEL_TOL = 5e-3
+
+#: An internal patch narrower than this (metres) is a bar (a wine rack's cradle bar).
+BAR_WIDTH = 0.03
+
+
+def _bar_width(sup: Support) -> float:
+    r = sup.region.minimum_rotated_rectangle
+    xy = np.asarray(r.exterior.coords)[:3] if isinstance(r, Polygon) else None
+    if xy is None:
+        return 0.0
+    return float(min(np.linalg.norm(xy[1] - xy[0]), np.linalg.norm(xy[2] - xy[1])))
+
+
+def _span_bars(sups: list[Support]) -> list[Support]:
+    """IN supports with, first, one support spanning the bars of one part at one level (a wine
+    rack's cradle: a front and a back bar), so that what lies in the cradle rests across two
+    bars instead of balancing on one; the bars alone follow (for a child too short to reach
+    across)."""
+    out, spans, done = [], [], set()
+    for i, x in enumerate(sups):
+        if i in done:
+            continue
+        if _bar_width(x) >= BAR_WIDTH:
+            out.append(x)
+            continue
+        group = [k for k, y in enumerate(sups) if k not in done and y.choice == x.choice
+                 and _bar_width(y) < BAR_WIDTH]
+        span = _span([sups[k] for k in group]) if len(group) > 1 else None
+        if span is None:
+            out.append(x)
+            continue
+        level = [k for k in group
+                 if abs(float((sups[k].surface.origin - x.surface.origin) @ x.surface.normal))
+                 <= LEVEL_TOL]
+        done.update(level)
+        spans.append(replace(span, clearance=min(sups[k].clearance for k in level)))
+        out += [sups[k] for k in level]
+    return spans + out
 
 
 def _span(sups: list[Support]) -> Support | None:
