@@ -21,6 +21,7 @@ import contextlib
 import hashlib
 import json
 import os
+import weakref
 import zipfile
 from collections import OrderedDict
 from dataclasses import dataclass
@@ -248,9 +249,35 @@ def _fingerprint(asset: Asset) -> str:
     for p in asset.parts:
         h.update(p.name.encode())
         h.update(p.material.name.encode())
-        for pc in p.pieces:
+        for pc in p.piece_arrays:  # the arrays as held: no trimesh object is made
             h.update(np.ascontiguousarray(pc.vertices, np.float64).tobytes())
     return h.hexdigest()
+
+
+#: ``id(asset)`` -> (weak reference to it, its fingerprint), for assets alive in this process.
+_KEYS: dict[int, tuple[weakref.ref, str]] = {}
+
+
+def _asset_key(asset: Asset) -> str:
+    """The fingerprint of ``asset``, hashed once per asset object.
+
+    Settling, contact extraction and every repair round ask for the same assets again and
+    again; hashing every piece's vertices each time cost as much as the rest of the lookup.
+    An asset's parts and pieces do not change once it is made (scaling is the object's, not
+    the asset's), so the object's first fingerprint stays its fingerprint.
+    """
+    i = id(asset)
+    hit = _KEYS.get(i)
+    if hit is not None and hit[0]() is asset:
+        return hit[1]
+
+    def forget(ref, i=i):
+        if _KEYS.get(i, (None,))[0] is ref:
+            del _KEYS[i]
+
+    key = _fingerprint(asset)
+    _KEYS[i] = (weakref.ref(asset, forget), key)
+    return key
 
 
 _CACHE: OrderedDict[str, AssetCollision] = OrderedDict()
@@ -261,6 +288,7 @@ def clear_cache() -> None:
     """Forget the collision data cached for assets in this process (the disk copy stays)."""
     _CACHE.clear()
     _SHELL_CACHE.clear()
+    _KEYS.clear()
 
 
 def _disk_dir():
@@ -325,7 +353,7 @@ def asset_collision(asset: Asset) -> AssetCollision:
     ValueError
         When the asset has no usable convex piece at all.
     """
-    key = _fingerprint(asset)
+    key = _asset_key(asset)
     hit = _CACHE.get(key)
     if hit is not None:
         _CACHE.move_to_end(key)
@@ -334,7 +362,7 @@ def asset_collision(asset: Asset) -> AssetCollision:
     if data is None:
         parts, hulls, mats = [], [], []
         for p in asset.parts:
-            for pc in p.pieces:
+            for pc in p.piece_arrays:
                 h = _hull(np.asarray(pc.vertices))
                 if h is not None:
                     parts.append(p.name)
