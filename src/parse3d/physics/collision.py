@@ -436,7 +436,8 @@ def _shell_pieces(room: RoomShell) -> ConvexSet:
 
 
 def scene_bodies(scene: Scene, *, settled: bool | None = None,
-                 include_room: bool = True) -> list[WorldBody]:
+                 include_room: bool = True,
+                 only: set[str] | frozenset[str] | None = None) -> list[WorldBody]:
     """World-frame collision bodies of every placed object (and the room shell).
 
     Parameters
@@ -446,6 +447,9 @@ def scene_bodies(scene: Scene, *, settled: bool | None = None,
         Pose to use: None takes the settled pose where there is one.
     include_room : bool
         Append the shell as the static body ``room``.
+    only : set of str, optional
+        Only these object ids (``room`` for the shell, still subject to ``include_room``);
+        the scene's order is kept.
 
     Returns
     -------
@@ -454,14 +458,14 @@ def scene_bodies(scene: Scene, *, settled: bool | None = None,
     """
     out = []
     for obj in scene.placed:
-        if obj.asset is None:
+        if obj.asset is None or (only is not None and obj.id not in only):
             continue
         data = asset_collision(obj.asset)
         T = obj.transform(settled)
         R = T[:3, :3] / obj.scale
         ws = data.pieces.transformed(R, T[:3, 3], obj.scale)
         out.append(WorldBody(obj.id, ws, np.array([ws.bounds[:, 0].min(0), ws.bounds[:, 1].max(0)])))
-    if include_room:
+    if include_room and (only is None or ROOM in only):
         sh = shell_collision(scene.room)
         out.append(WorldBody(ROOM, sh, np.array([sh.bounds[:, 0].min(0), sh.bounds[:, 1].max(0)]),
                              static=True))

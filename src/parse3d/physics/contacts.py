@@ -424,7 +424,15 @@ def extract_contacts(scene: Scene, *, threshold: float = DEFAULT_THRESHOLD,
         surfaces, ``min_distance`` is the smallest signed distance (negative: interpenetration
         depth, metres).
     """
-    bodies = scene_bodies(scene, settled=settled)
+    only = None
+    if pairs is not None:
+        # bodies in no wanted pair only cost time: the samples of a pair do not depend on
+        # which other bodies are present (same pieces, groups and random draws, in order)
+        pairs = [tuple(p) for p in pairs]
+        only = {x for p in pairs for x in p}
+    bodies = scene_bodies(scene, settled=settled, only=only)
+    if not bodies:
+        return []
     cs = contact_samples(bodies, threshold=threshold, samples_per_m2=samples_per_m2,
                          min_samples=min_samples, seed=seed, pairs=pairs)
     return _aggregate(cs)
