@@ -189,11 +189,15 @@ def _pack(parts: list[str], hulls: list[_Hull]) -> ConvexSet:
 def concatenate(sets: list[ConvexSet]) -> ConvexSet:
     """All pieces of several sets as one set (same frame assumed), in order."""
     fmax = max(cs.planes.shape[1] for cs in sets)
-    planes = []
+    # one padded array filled in place: one piece with many faces pads every other piece to
+    # its count, and padding each set then concatenating copied all of that twice
+    planes = np.zeros((sum(len(cs) for cs in sets), fmax, 4))
+    planes[..., 3] = _PAD_OFFSET
+    k = 0
     for cs in sets:
-        pad = np.zeros((len(cs), fmax - cs.planes.shape[1], 4))
-        pad[..., 3] = _PAD_OFFSET
-        planes.append(np.concatenate([cs.planes, pad], axis=1))
+        n, f = cs.planes.shape[:2]
+        planes[k:k + n, :f] = cs.planes
+        k += n
 
     def offsets(idx: list[np.ndarray]) -> np.ndarray:
         sizes = np.concatenate([np.diff(i) for i in idx])
@@ -205,7 +209,7 @@ def concatenate(sets: list[ConvexSet]) -> ConvexSet:
         offsets([cs.vert_index for cs in sets]),
         np.concatenate([cs.triangles for cs in sets]),
         offsets([cs.tri_index for cs in sets]),
-        np.concatenate(planes),
+        planes,
         np.concatenate([cs.areas for cs in sets]),
         np.concatenate([cs.volumes for cs in sets]),
         np.concatenate([cs.bounds for cs in sets]),
