@@ -296,7 +296,7 @@ def contact_samples(bodies: list[WorldBody], *, threshold: float = DEFAULT_THRES
     rng = np.random.default_rng(seed)
     allp = concatenate([b.pieces for b in bodies])
     body_of = np.repeat(np.arange(len(bodies)), [len(b.pieces) for b in bodies])
-    keys = [f"{bodies[b].id}:{p}" for b, p in zip(body_of, allp.parts, strict=True)]
+    keys = [f"{b.id}:{p}" for b in bodies for p in b.pieces.parts]  # in allp's order
     first = np.concatenate([[0], np.cumsum([len(b.pieces) for b in bodies])])
     want = None if pairs is None else {frozenset(p) for p in pairs}
 
