@@ -18,6 +18,7 @@ BENCHES = {
     "assets": ["--per-category", "2"],
     "solver": [],
     "physics": [],
+    "settle": ["--scenes", "4", "--rounds", "1"],
     "render": [],
     "dataset": ["--scenes", "12"],
     "robustness": ["--quick"],

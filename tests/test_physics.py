@@ -352,6 +352,21 @@ def test_contacts_are_deterministic_and_round_trip(corner):
     assert g.nodes["room:floor"]["room"] and g.nodes["desk:tabletop"]["object"] == "desk"
 
 
+def test_contacts_of_some_pairs_are_those_sampled_among_all_bodies(corner):
+    from parse3d.physics.collision import scene_bodies
+    from parse3d.physics.contacts import _aggregate, contact_samples
+
+    sc, _ = corner
+    pairs = [("book", "desk"), ("mug", "desk"), ("cup", "cabinet"), ("tea", "side"),
+             ("bookcase", "room")]
+    kw = {"threshold": 0.001, "samples_per_m2": 2000.0}
+    among_all = _aggregate(contact_samples(scene_bodies(sc), pairs=pairs, **kw))
+    assert extract_contacts(sc, pairs=pairs, **kw) == among_all
+    assert {c.a.split(":")[0] for c in among_all} | {c.b.split(":")[0] for c in among_all} \
+        == {"book", "desk", "mug", "cup", "cabinet", "tea", "side", "bookcase", "room"}
+    assert extract_contacts(sc, pairs=[("nothing", "here")]) == []
+
+
 def test_settle_command_writes_settled_scene_and_contacts(tmp_path):
     from typer.testing import CliRunner
 

@@ -42,3 +42,27 @@ def test_unwritable_cache_still_computes(tmp_path, monkeypatch):
     C.clear_cache()
     data = C.asset_collision(generate("mug", seed=0))
     assert len(data.pieces) > 0
+
+
+def test_an_asset_is_fingerprinted_once_per_object(tmp_path, monkeypatch):
+    monkeypatch.setenv("PARSE3D_CACHE", str(tmp_path))
+    C.clear_cache()
+    calls = []
+    real = C._fingerprint
+    monkeypatch.setattr(C, "_fingerprint", lambda a: calls.append(a.asset_id) or real(a))
+    asset = generate("mug", seed=0)
+    first = C.asset_collision(asset)
+    for _ in range(3):
+        assert C.asset_collision(asset) is first
+    assert calls == [asset.asset_id]
+    # the memo holds the content's fingerprint, and forgets the object once it is gone
+    assert C._asset_key(asset) == real(asset)
+    other = generate("mug", seed=0)
+    assert C.asset_collision(other) is first  # same content, same data
+    assert len(calls) == 2
+    n = len(C._KEYS)
+    del other
+    import gc
+
+    gc.collect()
+    assert len(C._KEYS) == n - 1

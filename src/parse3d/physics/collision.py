@@ -21,6 +21,7 @@ import contextlib
 import hashlib
 import json
 import os
+import weakref
 import zipfile
 from collections import OrderedDict
 from dataclasses import dataclass
@@ -188,11 +189,15 @@ def _pack(parts: list[str], hulls: list[_Hull]) -> ConvexSet:
 def concatenate(sets: list[ConvexSet]) -> ConvexSet:
     """All pieces of several sets as one set (same frame assumed), in order."""
     fmax = max(cs.planes.shape[1] for cs in sets)
-    planes = []
+    # one padded array filled in place: one piece with many faces pads every other piece to
+    # its count, and padding each set then concatenating copied all of that twice
+    planes = np.zeros((sum(len(cs) for cs in sets), fmax, 4))
+    planes[..., 3] = _PAD_OFFSET
+    k = 0
     for cs in sets:
-        pad = np.zeros((len(cs), fmax - cs.planes.shape[1], 4))
-        pad[..., 3] = _PAD_OFFSET
-        planes.append(np.concatenate([cs.planes, pad], axis=1))
+        n, f = cs.planes.shape[:2]
+        planes[k:k + n, :f] = cs.planes
+        k += n
 
     def offsets(idx: list[np.ndarray]) -> np.ndarray:
         sizes = np.concatenate([np.diff(i) for i in idx])
@@ -204,7 +209,7 @@ def concatenate(sets: list[ConvexSet]) -> ConvexSet:
         offsets([cs.vert_index for cs in sets]),
         np.concatenate([cs.triangles for cs in sets]),
         offsets([cs.tri_index for cs in sets]),
-        np.concatenate(planes),
+        planes,
         np.concatenate([cs.areas for cs in sets]),
         np.concatenate([cs.volumes for cs in sets]),
         np.concatenate([cs.bounds for cs in sets]),
@@ -248,9 +253,35 @@ def _fingerprint(asset: Asset) -> str:
     for p in asset.parts:
         h.update(p.name.encode())
         h.update(p.material.name.encode())
-        for pc in p.pieces:
+        for pc in p.piece_arrays:  # the arrays as held: no trimesh object is made
             h.update(np.ascontiguousarray(pc.vertices, np.float64).tobytes())
     return h.hexdigest()
+
+
+#: ``id(asset)`` -> (weak reference to it, its fingerprint), for assets alive in this process.
+_KEYS: dict[int, tuple[weakref.ref, str]] = {}
+
+
+def _asset_key(asset: Asset) -> str:
+    """The fingerprint of ``asset``, hashed once per asset object.
+
+    Settling, contact extraction and every repair round ask for the same assets again and
+    again; hashing every piece's vertices each time cost as much as the rest of the lookup.
+    An asset's parts and pieces do not change once it is made (scaling is the object's, not
+    the asset's), so the object's first fingerprint stays its fingerprint.
+    """
+    i = id(asset)
+    hit = _KEYS.get(i)
+    if hit is not None and hit[0]() is asset:
+        return hit[1]
+
+    def forget(ref, i=i):
+        if _KEYS.get(i, (None,))[0] is ref:
+            del _KEYS[i]
+
+    key = _fingerprint(asset)
+    _KEYS[i] = (weakref.ref(asset, forget), key)
+    return key
 
 
 _CACHE: OrderedDict[str, AssetCollision] = OrderedDict()
@@ -261,6 +292,7 @@ def clear_cache() -> None:
     """Forget the collision data cached for assets in this process (the disk copy stays)."""
     _CACHE.clear()
     _SHELL_CACHE.clear()
+    _KEYS.clear()
 
 
 def _disk_dir():
@@ -325,7 +357,7 @@ def asset_collision(asset: Asset) -> AssetCollision:
     ValueError
         When the asset has no usable convex piece at all.
     """
-    key = _fingerprint(asset)
+    key = _asset_key(asset)
     hit = _CACHE.get(key)
     if hit is not None:
         _CACHE.move_to_end(key)
@@ -334,7 +366,7 @@ def asset_collision(asset: Asset) -> AssetCollision:
     if data is None:
         parts, hulls, mats = [], [], []
         for p in asset.parts:
-            for pc in p.pieces:
+            for pc in p.piece_arrays:
                 h = _hull(np.asarray(pc.vertices))
                 if h is not None:
                     parts.append(p.name)
@@ -408,7 +440,8 @@ def _shell_pieces(room: RoomShell) -> ConvexSet:
 
 
 def scene_bodies(scene: Scene, *, settled: bool | None = None,
-                 include_room: bool = True) -> list[WorldBody]:
+                 include_room: bool = True,
+                 only: set[str] | frozenset[str] | None = None) -> list[WorldBody]:
     """World-frame collision bodies of every placed object (and the room shell).
 
     Parameters
@@ -418,6 +451,9 @@ def scene_bodies(scene: Scene, *, settled: bool | None = None,
         Pose to use: None takes the settled pose where there is one.
     include_room : bool
         Append the shell as the static body ``room``.
+    only : set of str, optional
+        Only these object ids (``room`` for the shell, still subject to ``include_room``);
+        the scene's order is kept.
 
     Returns
     -------
@@ -426,14 +462,14 @@ def scene_bodies(scene: Scene, *, settled: bool | None = None,
     """
     out = []
     for obj in scene.placed:
-        if obj.asset is None:
+        if obj.asset is None or (only is not None and obj.id not in only):
             continue
         data = asset_collision(obj.asset)
         T = obj.transform(settled)
         R = T[:3, :3] / obj.scale
         ws = data.pieces.transformed(R, T[:3, 3], obj.scale)
         out.append(WorldBody(obj.id, ws, np.array([ws.bounds[:, 0].min(0), ws.bounds[:, 1].max(0)])))
-    if include_room:
+    if include_room and (only is None or ROOM in only):
         sh = shell_collision(scene.room)
         out.append(WorldBody(ROOM, sh, np.array([sh.bounds[:, 0].min(0), sh.bounds[:, 1].max(0)]),
                              static=True))

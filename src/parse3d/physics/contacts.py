@@ -296,7 +296,7 @@ def contact_samples(bodies: list[WorldBody], *, threshold: float = DEFAULT_THRES
     rng = np.random.default_rng(seed)
     allp = concatenate([b.pieces for b in bodies])
     body_of = np.repeat(np.arange(len(bodies)), [len(b.pieces) for b in bodies])
-    keys = [f"{bodies[b].id}:{p}" for b, p in zip(body_of, allp.parts, strict=True)]
+    keys = [f"{b.id}:{p}" for b in bodies for p in b.pieces.parts]  # in allp's order
     first = np.concatenate([[0], np.cumsum([len(b.pieces) for b in bodies])])
     want = None if pairs is None else {frozenset(p) for p in pairs}
 
@@ -424,7 +424,15 @@ def extract_contacts(scene: Scene, *, threshold: float = DEFAULT_THRESHOLD,
         surfaces, ``min_distance`` is the smallest signed distance (negative: interpenetration
         depth, metres).
     """
-    bodies = scene_bodies(scene, settled=settled)
+    only = None
+    if pairs is not None:
+        # bodies in no wanted pair only cost time: the samples of a pair do not depend on
+        # which other bodies are present (same pieces, groups and random draws, in order)
+        pairs = [tuple(p) for p in pairs]
+        only = {x for p in pairs for x in p}
+    bodies = scene_bodies(scene, settled=settled, only=only)
+    if not bodies:
+        return []
     cs = contact_samples(bodies, threshold=threshold, samples_per_m2=samples_per_m2,
                          min_samples=min_samples, seed=seed, pairs=pairs)
     return _aggregate(cs)
