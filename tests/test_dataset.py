@@ -223,6 +223,9 @@ def test_stats_writes_plots_and_tables(reference, tmp_path):
     rows = read_manifest(reference / "manifest.parquet")
     s = table["summary"]
     assert s["scenes"] == SCENES and s["objects"] == sum(r["placed"] for r in rows)
+    ok = sum(r["status"] == "ok" for r in rows)
+    assert s["scenes_ok"] == ok
+    assert f"| {ok} + {SCENES - ok} / {SCENES} |" in (out / "stats.md").read_text()
     assert s["distinct_assets"] == len({a for r in rows for a in r["assets"]})
     assert s["avg_objects"] == pytest.approx(np.mean([r["placed"] for r in rows]), abs=0.01)
     dens = np.array([r["density"] for r in rows])
