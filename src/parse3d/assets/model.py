@@ -504,16 +504,8 @@ def _stacked(meshes: list[trimesh.Trimesh]) -> trimesh.Trimesh:
     """
     import trimesh
 
-    verts, faces = [], []
-    offset = 0
-    for m in meshes:
-        v = np.asarray(m.vertices, float).view(np.ndarray)
-        verts.append(v)
-        faces.append(np.asarray(m.faces, np.int64).view(np.ndarray) + offset)
-        offset += len(v)
-    if len(meshes) == 1:
-        return trimesh.Trimesh(verts[0].copy(), faces[0], process=False)
-    return trimesh.Trimesh(np.vstack(verts), np.vstack(faces), process=False)
+    m = concatenate_arrays(meshes)
+    return trimesh.Trimesh(m.vertices, m.faces, process=False)
 
 
 def _translate(mesh: trimesh.Trimesh, shift: np.ndarray) -> None:

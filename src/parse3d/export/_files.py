@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 
 from .._files import user_mode
+from ..geometry.meshes import MeshArrays, concatenate_arrays
 
 __all__ = ["obj_text", "pieces_obj_text", "join_pieces", "stl_bytes", "mtl_text", "mesh_digest", "safe_name", "material_name",
            "MeshFiles", "MATERIAL_LIBRARY", "remove_stale", "write_file"]
@@ -31,11 +32,8 @@ def obj_text(vertices: np.ndarray, faces: np.ndarray) -> str:
 def join_pieces(pieces) -> tuple[np.ndarray, np.ndarray]:
     """The pieces ``[(vertices (V_i, 3), faces (F_i, 3)), ...]`` as one mesh: stacked
     vertices and the faces renumbered into them."""
-    vertices = np.vstack([np.asarray(v, float) for v, _ in pieces])
-    offsets = np.cumsum([0] + [len(v) for v, _ in pieces[:-1]])
-    faces = np.vstack([np.asarray(f, np.int64) + k for (_, f), k in zip(pieces, offsets,
-                                                                         strict=True)])
-    return vertices, faces
+    m = concatenate_arrays([MeshArrays(np.asarray(v), np.asarray(f)) for v, f in pieces])
+    return m.vertices, m.faces
 
 
 def pieces_obj_text(pieces) -> str:
