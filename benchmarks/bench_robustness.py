@@ -3,6 +3,7 @@
 Usage::
 
     python benchmarks/bench_robustness.py [--quick] [--baseline-rev REV] [--json FILE]
+    python benchmarks/bench_robustness.py --every 4 --seeds 3 --workers 2   # a mid-size corpus
 
 Prints one table with a row per corpus, each scene run through the project's per-scene path
 (``parse3d.pipeline.run_pipeline``: solve, settle and whatever repair it does; nothing written):
@@ -35,6 +36,9 @@ baseline.
 
 ``--quick`` runs one seed (k = 0) of every 16th template, seeds 0-1 of the examples and of the
 rooms (about 50 scenes); the full run is about 2,300 scenes (hours on one core).
+``--every M --seeds K`` takes every M-th template at corpus seeds k = 0..K-1 (the examples and
+rooms at seeds 0..K-1 too), a corpus between the two; ``--workers N`` measures the cases in N
+processes (the figures are the same; the order of the cases is kept).
 ``--baseline-rev REV`` also runs the same corpus (built once, here) with the package of git
 revision REV, checked out in a temporary worktree that is removed afterwards, and prints its
 figures under each row. Times are wall seconds of the solve stage; on a shared machine they are
@@ -135,8 +139,12 @@ def file_cases(row: str, paths: list[Path], seeds: range) -> list[dict]:
     return out
 
 
-def corpus(quick: bool) -> list[dict]:
+def corpus(quick: bool, every: int | None = None, seeds: int | None = None) -> list[dict]:
     examples = sorted(EXAMPLES.glob("*.json")) + sorted(EXAMPLES.glob("*.yaml"))
+    if every or seeds:
+        k = seeds or 10
+        return (template_cases(k, every=every or 1) + file_cases("examples", examples, range(k))
+                + file_cases("rooms", sorted(ROOMS.glob("*.json")), range(k)))
     return ((template_cases(1, every=16) if quick else template_cases(10))
             + file_cases("examples", examples, range(2 if quick else 20))
             + file_cases("rooms", sorted(ROOMS.glob("*.json")), range(2 if quick else 10)))
@@ -209,15 +217,25 @@ def cost_of_failure(seeds: range) -> dict:
     return {"base_s": b, "impossible_s": i, "ratio": i / b if b else float("nan")}
 
 
-def run_all(cases: list[dict], cof_seeds: range, progress: bool = True) -> dict:
+def run_all(cases: list[dict], cof_seeds: range, progress: bool = True,
+            workers: int = 1) -> dict:
     out = []
-    for k, c in enumerate(cases):
-        m = measure(c)
+    if workers > 1:
+        import multiprocessing as mp
+
+        pool = mp.get_context("spawn").Pool(workers, maxtasksperchild=100)
+        results = pool.imap(measure, cases)
+    else:
+        pool, results = None, map(measure, cases)
+    for k, (c, m) in enumerate(zip(cases, results, strict=True)):
         out.append(m)
         if progress:  # one line per case, so that a long run can be followed
             print(f"{k + 1}/{len(cases)} {c['row']:16s} {c['name'][:36]:36s} seed {c['seed']}: "
                   f"{m['placed']}/{m['objects']} placed, {m.get('fallen', 0)} fallen, "
                   f"{m.get('cpu_s', 0):.1f} s", file=sys.stderr, flush=True)
+    if pool is not None:
+        pool.close()
+        pool.join()
     return {"cases": out, "cost_of_failure": cost_of_failure(cof_seeds)}
 
 
@@ -268,11 +286,11 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
               f"x{c['ratio']:.2f} (goal <= 3)")
 
 
-def baseline(rev: str, cases: list[dict], quick: bool) -> dict:
+def baseline(rev: str, cases: list[dict], quick: bool, workers: int = 1) -> dict:
     """Run the corpus with the package of ``rev`` (a temporary git worktree)."""
     with revision_tree(rev) as wt:
         spec = wt.parent / "corpus.json"
-        spec.write_text(json.dumps({"cases": cases, "quick": quick}))
+        spec.write_text(json.dumps({"cases": cases, "quick": quick, "workers": workers}))
         res = wt.parent / "result.json"
         env = {**os.environ, "PYTHONPATH": str(wt / "src")}
         subprocess.run([sys.executable, __file__, "--_run-corpus", str(spec), "--json",
@@ -287,16 +305,26 @@ def main() -> None:
                     help="also run the same corpus with git revision REV, e.g. main")
     ap.add_argument("--json", metavar="FILE", help="write every case's figures to FILE")
     ap.add_argument("--failures", action="store_true", help="list every failed object")
+    ap.add_argument("--every", type=int, metavar="M", help="every M-th template only")
+    ap.add_argument("--seeds", type=int, metavar="K",
+                    help="corpus seeds per template (and seeds of examples and rooms)")
+    ap.add_argument("--workers", type=int, default=1, metavar="N",
+                    help="measure in N processes (default 1)")
     ap.add_argument("--_run-corpus", dest="run_corpus", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.run_corpus:  # the baseline's side: measure the given corpus with this package
         spec = json.loads(Path(args.run_corpus).read_text())
-        res = run_all(spec["cases"], range(2) if spec["quick"] else range(5))
+        res = run_all(spec["cases"], range(2) if spec["quick"] else range(5),
+                      workers=spec.get("workers", 1))
         Path(args.json).write_text(json.dumps(res))
         return
-    cases = corpus(args.quick)
-    now = run_all(cases, range(2) if args.quick else range(5))
-    before = baseline(args.baseline_rev, cases, args.quick) if args.baseline_rev else None
+    if args.workers < 1 or (args.every is not None and args.every < 1) or (
+            args.seeds is not None and args.seeds < 1):
+        ap.error("--workers, --every and --seeds take a positive number")
+    cases = corpus(args.quick, args.every, args.seeds)
+    now = run_all(cases, range(2) if args.quick else range(5), workers=args.workers)
+    before = (baseline(args.baseline_rev, cases, args.quick, args.workers)
+              if args.baseline_rev else None)
     print_table(now, before, args.baseline_rev)
     if args.failures:
         for c in now["cases"]:
