@@ -23,7 +23,8 @@ command
     a whole command per scene, start-up included: ``parse3d solve FILE --no-settle
     --no-preview`` against ``PYTHON peer_script`` (this file with ``--_peer-command``); CPU
     seconds of the child process (user + system, from ``getrusage``), divided by the objects
-    placed.
+    placed. Both run with Python's bytecode cache on (``PYTHONDONTWRITEBYTECODE`` is dropped
+    from their environment), as installed packages are, and after one uncounted command each.
 
 Printed per N: the median CPU per placed object of each side, objects placed, and the median
 over rounds of the per-round ratio peer / ours (goals of the issue: >= 10 warm, >= 3 as whole
@@ -36,6 +37,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import resource
 import statistics
 import subprocess
@@ -118,8 +120,12 @@ def handle_ours(req: dict) -> dict:
 
 # ---------------------------------------------------------------------------- whole commands
 def _child_cpu(cmd: list[str], **kw) -> tuple[float, subprocess.CompletedProcess]:
+    # both sides run with their modules' bytecode cached, as installed packages have it (an
+    # environment that turns bytecode writing off would make every parse3d command recompile
+    # its sources, while the peer's site-packages were compiled at install)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    proc = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    proc = subprocess.run(cmd, capture_output=True, text=True, env=env, **kw)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), proc
 
