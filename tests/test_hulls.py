@@ -84,3 +84,16 @@ def test_degenerate_sets_have_no_hull(pts):
 def test_convex_footprint_of_a_segment_is_a_thin_polygon():
     fp = convex_footprint(np.array([[0, 0], [1, 0], [2, 0.0]]))
     assert len(fp) >= 3 and np.ptp(fp[:, 1]) <= 2.1e-4
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_large_sets_match_qhull(seed):
+    rng = np.random.default_rng(100 + seed)
+    n = int(rng.integers(64, 3000))
+    pts = rng.normal(size=(n, 2)) * rng.uniform(0.1, 3.0, 2) + rng.uniform(-5, 5, 2)
+    if seed % 2:  # a disc's rim and inside: most points on or near the hull
+        a = rng.uniform(0, 2 * np.pi, n)
+        pts = np.c_[np.cos(a), np.sin(a)] * np.where(rng.random(n) < 0.5, 1.0, rng.random(n))[:, None]
+    idx = hull_indices_2d(pts)
+    assert idx is not None and _ccw(pts[idx])
+    assert {tuple(p) for p in pts[idx].tolist()} == _qhull_set(pts)

@@ -24,6 +24,27 @@ __all__ = ["hull_indices_2d"]
 REL_TOL = 1e-12
 
 
+#: Point counts from which points well inside the extreme points' quadrilateral are dropped
+#: before the chain (a vectorised test; the chain itself runs in Python).
+_PREFILTER = 64
+
+
+def _outside_extremes(pts: np.ndarray, margin: float) -> np.ndarray:
+    """Indices of the points not inside the quadrilateral of the leftmost, lowest, rightmost
+    and highest points by more than ``margin`` (those cannot be hull vertices)."""
+    ext = [int(np.argmin(pts[:, 0])), int(np.argmin(pts[:, 1])), int(np.argmax(pts[:, 0])),
+           int(np.argmax(pts[:, 1]))]
+    quad = pts[[i for k, i in enumerate(ext) if i != ext[k - 1]]]
+    if len(quad) < 3:
+        return np.arange(len(pts))
+    inside = np.ones(len(pts), bool)
+    for a, b in zip(quad, np.roll(quad, -1, axis=0), strict=True):
+        e = b - a
+        cross = e[0] * (pts[:, 1] - a[1]) - e[1] * (pts[:, 0] - a[0])
+        inside &= cross > margin * math.hypot(e[0], e[1])
+    return np.flatnonzero(~inside)
+
+
 def hull_indices_2d(points2d: np.ndarray, *, rel_tol: float = REL_TOL) -> np.ndarray | None:
     """Indices of the convex hull vertices of (N, 2) points, counter-clockwise.
 
@@ -46,7 +67,9 @@ def hull_indices_2d(points2d: np.ndarray, *, rel_tol: float = REL_TOL) -> np.nda
     pts = np.asarray(points2d, float)
     if pts.ndim != 2 or pts.shape[1] != 2 or len(pts) < 3 or not np.isfinite(pts).all():
         return None
-    order = np.lexsort((pts[:, 1], pts[:, 0]))
+    tol = rel_tol * max(float(np.abs(pts).max()), 1.0)
+    cand = _outside_extremes(pts, 1e3 * tol) if len(pts) >= _PREFILTER else np.arange(len(pts))
+    order = cand[np.lexsort((pts[cand, 1], pts[cand, 0]))]
     p = pts[order]
     keep = np.ones(len(p), bool)
     keep[1:] = np.any(p[1:] != p[:-1], axis=1)
@@ -69,7 +92,6 @@ def hull_indices_2d(points2d: np.ndarray, *, rel_tol: float = REL_TOL) -> np.nda
         return out
 
     hull = chain(idx)[:-1] + chain(idx[::-1])[:-1]
-    tol = rel_tol * max(float(np.abs(pts).max()), 1.0)
     changed = True
     while changed and len(hull) >= 3:
         changed = False
