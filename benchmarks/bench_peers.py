@@ -3,7 +3,7 @@
 Usage::
 
     python benchmarks/bench_peers.py --peer-python PYTHON [--sizes 10,25,50,100] [--rounds 5]
-                                     [--no-commands]
+                                     [--no-commands] [--no-warm] [--cold-assets]
 
 The workload (``_common.tables_layout``): dining tables on the floor of a square room of
 constant floor area per table, and mugs, plates, bowls, bottles and books on the tables' tops,
@@ -17,13 +17,18 @@ Two measurements per room size N, in interleaved rounds (ours, peer, ours, ...):
 
 warm
     one long-lived process per side (the peer in ``--peer-python``, through
-    ``_common.Worker``); the first round is a warm-up and is not counted; process CPU seconds
-    of one solve / one scene, divided by the objects placed.
+    ``_common.Worker``), with warm assets: every scene of the rounds (each size and seed) is
+    built once first, uncounted, so that each side has loaded or made every asset the rounds
+    use (parse3d draws each object's asset from a pool of 20 per category, by seed; the peer
+    makes its six procedural assets once); process CPU seconds of one solve / one scene,
+    divided by the objects placed. ``--cold-assets`` warms up with one round of seed 0 only,
+    so the counted rounds of other seeds include loading the pool assets they meet first.
 command
     a whole command per scene, start-up included: ``parse3d solve FILE --no-settle
     --no-preview`` against ``PYTHON peer_script`` (this file with ``--_peer-command``); CPU
     seconds of the child process (user + system, from ``getrusage``), divided by the objects
-    placed.
+    placed. Both run with Python's bytecode cache on (``PYTHONDONTWRITEBYTECODE`` is dropped
+    from their environment), as installed packages are, and after one uncounted command each.
 
 Printed per N: the median CPU per placed object of each side, objects placed, and the median
 over rounds of the per-round ratio peer / ours (goals of the issue: >= 10 warm, >= 3 as whole
@@ -36,6 +41,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import resource
 import statistics
 import subprocess
@@ -118,8 +124,12 @@ def handle_ours(req: dict) -> dict:
 
 # ---------------------------------------------------------------------------- whole commands
 def _child_cpu(cmd: list[str], **kw) -> tuple[float, subprocess.CompletedProcess]:
+    # both sides run with their modules' bytecode cached, as installed packages have it (an
+    # environment that turns bytecode writing off would make every parse3d command recompile
+    # its sources, while the peer's site-packages were compiled at install)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    proc = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    proc = subprocess.run(cmd, capture_output=True, text=True, env=env, **kw)
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     return (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime), proc
 
@@ -194,6 +204,9 @@ def main() -> None:
     ap.add_argument("--rounds", type=int, default=5)
     ap.add_argument("--no-commands", action="store_true", help="skip the whole-command runs")
     ap.add_argument("--no-warm", action="store_true", help="skip the warm runs")
+    ap.add_argument("--cold-assets", action="store_true",
+                    help="warm runs: warm up with seed 0 only (assets of other seeds load in "
+                         "the counted rounds)")
     ap.add_argument("--_worker", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--_peer", action="store_true", help=argparse.SUPPRESS)
     ap.add_argument("--_peer-command", dest="peer_command", nargs=2, type=int,
@@ -215,10 +228,13 @@ def main() -> None:
     if not args.no_warm:
         with Worker(__file__, src=ROOT / "src") as ours, \
                 Worker(__file__, python=args.peer_python, args=("--_peer",)) as peer:
-            for n in sizes:  # warm-up round, not counted
-                ours.ask(n=n, seed=0)
-                peer.ask(n=n, seed=0)
-            compare("warm (one process per side)", sizes, args.rounds,
+            for n in sizes:  # warm-up, not counted
+                for seed in (range(1) if args.cold_assets else range(args.rounds)):
+                    ours.ask(n=n, seed=seed)
+                    peer.ask(n=n, seed=seed)
+            label = "warm process, assets first met in the rounds" if args.cold_assets \
+                else "warm (one process per side, assets loaded)"
+            compare(label, sizes, args.rounds,
                     lambda n, s: ours.ask(n=n, seed=s), lambda n, s: peer.ask(n=n, seed=s), 10)
     if not args.no_commands:
         with tempfile.TemporaryDirectory(prefix="parse3d-peers-") as tmp:

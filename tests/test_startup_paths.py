@@ -88,10 +88,15 @@ print(json.dumps({{"trimesh": "trimesh" in sys.modules, "scipy": "scipy" in sys.
 
 def test_shell_cache_gives_the_extruded_slabs(tmp_path, monkeypatch):
     monkeypatch.setenv("PARSE3D_CACHE", str(tmp_path))
+    monkeypatch.setattr(shell, "_BUILT", {})  # nothing built in this process yet
     room = Room("kitchen", ((0, 0), (4, 0), (4, 2), (2, 2), (2, 3.5), (0, 3.5)), 2.6)
     fresh = shell.build_shell(room)
     files = list((tmp_path / "shell").glob("*.npz"))
     assert len(files) == 1
+    remembered = shell.build_shell(room)  # from this process's memory: a copy
+    assert remembered.elements["floor"].mesh_arrays.vertices is not \
+        fresh.elements["floor"].mesh_arrays.vertices
+    shell._BUILT.clear()
     again = shell.build_shell(room)  # from the cache
     for n, el in fresh.elements.items():
         m = again.elements[n].mesh_arrays
@@ -99,6 +104,7 @@ def test_shell_cache_gives_the_extruded_slabs(tmp_path, monkeypatch):
         assert np.array_equal(el.mesh_arrays.faces, m.faces)
         assert np.array_equal(el.mesh.vertices, again.elements[n].mesh.vertices)
     files[0].write_bytes(b"not a zip")  # damaged: extruded again and rewritten
+    shell._BUILT.clear()
     third = shell.build_shell(room)
     assert np.array_equal(third.elements["floor"].mesh_arrays.faces,
                           fresh.elements["floor"].mesh_arrays.faces)

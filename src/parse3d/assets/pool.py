@@ -27,7 +27,6 @@ import os
 import sys
 import time
 from collections import OrderedDict
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -260,6 +259,7 @@ class AssetPool:
                         bar.update(task, advance=1, description=a[1])
             else:
                 import multiprocessing as mp
+                from concurrent.futures import ProcessPoolExecutor, as_completed
 
                 # fork server: never fork a process whose threads may hold locks
                 with ProcessPoolExecutor(max_workers=int(workers),

@@ -14,6 +14,8 @@ from shapely.geometry import LineString, MultiPoint, Point, Polygon
 from shapely.geometry import box as shapely_box
 from shapely.geometry.base import BaseGeometry
 
+from .hulls import hull_indices_2d
+
 #: Precision grid (m) of region overlays: snapping makes GEOS's overlay robust to nearly
 #: coincident vertices that different computations of the same edge produce.
 GRID = 1e-9
@@ -45,15 +47,13 @@ def inside_convex(poly: np.ndarray, p, tol: float = 0.0) -> bool:
 
 def convex_footprint(points2d: np.ndarray) -> np.ndarray:
     """(K, 2) convex hull vertices of (N, 2) points, counter-clockwise."""
-    from scipy.spatial import ConvexHull, QhullError
-
     pts = np.asarray(points2d, float)
-    try:
-        h = ConvexHull(pts)
-        return pts[h.vertices]  # qhull gives 2D hulls counter-clockwise
-    except (QhullError, ValueError):  # degenerate (collinear) point sets
-        hull = MultiPoint(pts).convex_hull.buffer(1e-4)
-        return np.asarray(hull.exterior.coords)[:-1]
+    idx = hull_indices_2d(pts)
+    if idx is not None:
+        return pts[idx]
+    # degenerate (collinear) point sets
+    hull = MultiPoint(pts).convex_hull.buffer(1e-4)
+    return np.asarray(hull.exterior.coords)[:-1]
 
 
 def convex_outline(points2d: np.ndarray, idx: np.ndarray | None) -> np.ndarray:

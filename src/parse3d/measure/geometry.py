@@ -9,6 +9,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..assets.model import Asset, Part
+from ..geometry.hulls import hull_indices_2d
 from ..geometry.rays import RayCaster
 
 __all__ = ["AssetGeometry", "asset_geometry", "outline_indices", "part_points", "ray_caster",
@@ -91,12 +92,7 @@ def outline_indices(asset: Asset, direction: np.ndarray) -> np.ndarray | None:
     a = np.cross(d, [1.0, 0, 0] if abs(d[0]) < 0.9 else [0, 1.0, 0])
     a /= np.linalg.norm(a)
     b = np.cross(d, a)
-    from scipy.spatial import ConvexHull, QhullError
-
-    try:
-        idx = ConvexHull(np.c_[hull @ a, hull @ b]).vertices
-    except (QhullError, ValueError):
-        idx = None
+    idx = hull_indices_2d(np.c_[hull @ a, hull @ b])
     _OUTLINE[key] = idx
     return idx
 

@@ -158,9 +158,10 @@ def _messages(err) -> list[tuple[str, str]]:
 def schema_problems(data: Any, *, file: str | None = None) -> list[Problem]:
     """Every violation of the ``pag/1`` schema, in document order.
 
-    Object and relation items that pass a fast structural check equivalent to (or stricter
-    than) their schema are not handed to jsonschema, which keeps large documents fast; the
-    others are validated item by item for precise messages.
+    Object and relation items, and the rest of the document, that pass a fast structural
+    check equivalent to (or stricter than) their schema are not handed to jsonschema, which
+    keeps large documents fast and a valid file's check free of importing it; the others are
+    validated (item by item) for precise messages.
 
     Parameters
     ----------
@@ -182,12 +183,12 @@ def schema_problems(data: Any, *, file: str | None = None) -> list[Problem]:
             if not isinstance(items, list):
                 continue
             skeleton[key] = []
-            item_validator = _item_validator(key)
             for i, item in enumerate(items):
                 if not fast(item):
                     errors += [((key, i, *e.absolute_path), e)
-                               for e in item_validator.iter_errors(item)]
-        errors += [(tuple(e.absolute_path), e) for e in _validator().iter_errors(skeleton)]
+                               for e in _item_validator(key).iter_errors(item)]
+        if not _fast_skeleton(skeleton):
+            errors += [(tuple(e.absolute_path), e) for e in _validator().iter_errors(skeleton)]
     else:
         errors += [(tuple(e.absolute_path), e) for e in _validator().iter_errors(data)]
     out: list[Problem] = []
@@ -221,6 +222,27 @@ def _num(v: Any) -> bool:
 
 def _num_or_pair(v: Any) -> bool:
     return _num(v) or (isinstance(v, list) and len(v) == 2 and _num(v[0]) and _num(v[1]))
+
+
+def _point(v: Any) -> bool:
+    return isinstance(v, list) and len(v) == 2 and _num(v[0]) and _num(v[1])
+
+
+def _fast_skeleton(d: dict) -> bool:
+    """Whether a document whose ``objects`` and ``relations`` lists were emptied surely follows
+    the schema (False: ask jsonschema)."""
+    if not (d.keys() <= {"format", "name", "room", "objects", "relations", "meta"}
+            and d.keys() >= {"format", "name", "room", "objects", "relations"}):
+        return False
+    room = d["room"]
+    if not (isinstance(d["format"], str) and d["format"] == "pag/1" and isinstance(d["name"], str)
+            and isinstance(d["objects"], list) and isinstance(d["relations"], list)
+            and isinstance(d.get("meta", {}), dict) and isinstance(room, dict)
+            and room.keys() == {"type", "footprint", "height"}):
+        return False
+    fp = room["footprint"]
+    return (isinstance(room["type"], str) and _num(room["height"]) and isinstance(fp, list)
+            and len(fp) >= 3 and all(_point(p) for p in fp))
 
 
 def _fast_object(o: Any) -> bool:

@@ -9,6 +9,7 @@ cannot be written only costs the extrusion.
 from __future__ import annotations
 
 import contextlib
+import functools
 import hashlib
 import os
 import tempfile
@@ -65,9 +66,10 @@ def _slab_meshes(slabs: list[tuple[np.ndarray, float, float]]) -> list[MeshArray
     return out
 
 
+@functools.lru_cache(maxsize=1)
 def _extruder_stamp() -> bytes:
     """Size and modification time of trimesh's extrusion code, found without importing
-    trimesh: another trimesh may triangulate differently."""
+    trimesh: another trimesh may triangulate differently (looked up once per process)."""
     import importlib.util
 
     spec = importlib.util.find_spec("trimesh")
@@ -111,16 +113,48 @@ def _convex_corner(fp: np.ndarray, i: int) -> bool:
     return float(d1[0] * d2[1] - d1[1] * d2[0]) > 0
 
 
+#: Shells built in this process, by footprint, height and wall thickness (a dataset worker or
+#: a long-lived solver builds the same few rooms again and again); handed out as copies.
+_BUILT: dict[tuple, RoomShell] = {}
+_BUILT_MAX = 256
+
+
 def build_shell(room: Room, *, wall_thickness: float = DEFAULT_WALL_THICKNESS) -> RoomShell:
     """Floor, walls and ceiling of ``room`` as static world-frame slabs with inward surfaces.
 
     Walls stand outside the footprint (their inner face lies exactly on the footprint edge) and
     run from the floor to the ceiling; wall ``i`` runs from vertex ``i`` to vertex ``i+1``.
+    Each call returns a shell of its own (arrays copied from the one built for the same room
+    earlier in this process, when there is one).
     """
     fp = np.asarray(room.footprint, float)
+    key = (fp.shape, fp.tobytes(), float(room.height), float(wall_thickness))
+    shell = _BUILT.get(key)
+    if shell is None:
+        shell = _build_shell(fp, float(room.height), float(wall_thickness))
+        if len(_BUILT) >= _BUILT_MAX:
+            _BUILT.clear()
+        _BUILT[key] = shell
+    return _copy_shell(shell)
+
+
+def _copy_shell(shell: RoomShell) -> RoomShell:
+    """A shell sharing no array with ``shell`` (polygons are immutable and shared)."""
+    elements = {}
+    for name, el in shell.elements.items():
+        m, s = el.mesh_arrays, el.surface
+        elements[name] = ShellElement(
+            name, MeshArrays(m.vertices.copy(), m.faces.copy()),
+            Surface(s.label, s.origin.copy(), s.normal.copy(), s.u.copy(), s.v.copy(), s.polygon,
+                    s.source))
+    return RoomShell(shell.footprint.copy(), shell.height, shell.wall_thickness, elements)
+
+
+def _build_shell(fp: np.ndarray, height: float, wall_thickness: float) -> RoomShell:
+    """:func:`build_shell` of a footprint (K, 2) and a height, built now."""
     if Polygon(fp).exterior.is_ccw is False:
         fp = fp[::-1]
-    h = float(room.height)
+    h = height
     poly = Polygon(fp)
     elements: dict[str, ShellElement] = {}
     c = np.asarray(poly.centroid.coords[0])

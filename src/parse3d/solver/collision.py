@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -13,7 +14,7 @@ if TYPE_CHECKING:
 
     from ..geometry.meshes import MeshArrays
 
-__all__ = ["CollisionWorld", "Body", "bvh_from_mesh", "cached_body"]
+__all__ = ["CollisionWorld", "Body", "bvh_from_mesh", "cached_body", "static_body"]
 
 
 def bvh_from_mesh(mesh: MeshArrays | trimesh.Trimesh) -> fcl.BVHModel:
@@ -52,6 +53,27 @@ def cached_body(key: str, scale: float, mesh_fn) -> Body:
             _BVH_CACHE.clear()
         g = bvh_from_mesh(mesh_fn())
         _BVH_CACHE[k] = g
+    return Body(fcl.CollisionObject(g, fcl.Transform()), g)
+
+
+_STATIC_BVH: dict[bytes, fcl.BVHModel] = {}
+
+
+def static_body(mesh: MeshArrays) -> Body:
+    """A Body for a world-frame mesh (a room slab), sharing one BVH per distinct mesh (by its
+    arrays' bytes) in this process: every scene of a room builds the same slabs."""
+    v = np.ascontiguousarray(mesh.vertices, dtype=np.float64)
+    f = np.ascontiguousarray(mesh.faces, dtype=np.int32)
+    h = hashlib.blake2b(digest_size=16)
+    h.update(np.int64(v.shape + f.shape).tobytes())
+    h.update(v.tobytes())
+    h.update(f.tobytes())
+    k = h.digest()
+    g = _STATIC_BVH.get(k)
+    if g is None:
+        if len(_STATIC_BVH) > 2048:
+            _STATIC_BVH.clear()
+        g = _STATIC_BVH[k] = bvh_from_mesh(mesh)
     return Body(fcl.CollisionObject(g, fcl.Transform()), g)
 
 

@@ -19,7 +19,7 @@ from ..pag.algorithms import assembly_order
 from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
-from .collision import Body, CollisionWorld, cached_body
+from .collision import CollisionWorld, cached_body, static_body
 from .config import Fail, SolverConfig, stage_rng
 from .placement import Placement, place_object, resolution, scaled_mesh
 from .state import SolveState
@@ -261,7 +261,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
     scene = Scene(pag, int(seed), shell, meta={"solver": cfg.to_dict()})
     world = CollisionWorld()
     for name, el in shell.elements.items():
-        world.add(f"room:{name}", Body.from_mesh(el.mesh_arrays))
+        world.add(f"room:{name}", static_body(el.mesh_arrays))
     st = SolveState(pag, scene, world)
     srch = _Search(pag, seed, cfg, library, st)
     order = placement_order(pag)
@@ -342,7 +342,7 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
     pag = scene.pag
     world = CollisionWorld()
     for name, el in scene.room.elements.items():
-        world.add(f"room:{name}", Body.from_mesh(el.mesh_arrays))
+        world.add(f"room:{name}", static_body(el.mesh_arrays))
     st = SolveState(pag, scene, world)
     todo: list[str] = []
     for oid in ids:
