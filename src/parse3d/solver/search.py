@@ -21,8 +21,10 @@ from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .collision import Body, CollisionWorld, cached_body
 from .config import Fail, SolverConfig, stage_rng
-from .placement import Placement, place_object, resolution, scaled_mesh
-from .state import SolveState
+from .geometry import asset_geometry
+from .placement import Placement, _space, place_object, resolution, scaled_mesh
+from .state import SolveState, support_chain
+from .walls import free_runs, occupants, wall_length, windows
 
 __all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants"]
 
@@ -68,6 +70,13 @@ def support_descendants(pag: PAG, oid: str) -> list[str]:
 MAX_CULPRITS = 6
 JUMP_ROUNDS = 2
 JUMP_TRIES = 6
+
+#: Wall relations whose object needs a free stretch of its wall (see :meth:`_Search.clear`).
+WALL_NEEDS = ("AGAINST", "SECURED_TO", "LEANING_AGAINST")
+#: Metres added to a wall object's width and depth when looking for a stretch to clear.
+CLEAR_PAD = 0.05
+#: Stretches of wall tried per failure, cheapest first.
+CLEAR_WINDOWS = 3
 
 
 def _size_estimate(pag: PAG, oid: str) -> float:
@@ -124,7 +133,10 @@ class _Search:
         self.failed: dict[str, str] = {}
         self.edge_index = {id(e): i for i, e in enumerate(pag.relations)}
         self.budget = int(cfg.search_budget) if cfg.search == "backtracking" else 0
+        #: re-placements for clearing crowded walls, apart from the budget of backjumps
+        self.reserve = self.budget
         self.backjumps = 0
+        self.order = placement_order(pag)
 
     # ------------------------------------------------------------ bookkeeping
     def skipped(self, oid: str) -> frozenset[int]:
@@ -205,32 +217,151 @@ class _Search:
                 continue
             self.budget -= len(moved)
             self.backjumps += 1
-            old = {m: self.uncommit(m) for m in moved}
-            for m in moved:  # out of the scene while the conflict is re-solved
-                self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
-                                                        status="failed", reason="re-placing")
             # a moved object the failed one relates to goes first (a parent of its layout
             # relation); occupants of its support go after it (it takes its room first)
             parents = {e.parent.object for e in self.pag.edges_of(oid)}
             seq = [*moved, oid] if parents & set(moved) else [oid, *moved]
-            new: list[str] = []
-            mine = None
-            try:
-                for m in seq:
-                    p = self.try_place(m, f"object:{m}:jump{k}")
-                    self.commit(p)
-                    new.append(m)
-                    if m == oid:
-                        mine = p
-                return mine
-            except Fail:
-                for m in new:
-                    self.uncommit(m)
-                for m in moved:
-                    self.st.scene.objects[m] = old[m].obj
-                    self.commit(old[m])
-                self.st.scene.objects.pop(oid, None)
+            got = self.relocate(oid, moved, seq, f"jump{k}")
+            if got is not None:
+                return got
         return None
+
+    def relocate(self, oid: str, moved: list[str], seq: list[str], stage: str
+                 ) -> Placement | None:
+        """Take ``moved`` out of the scene and place ``seq`` (``oid`` and ``moved``) in that
+        order, each drawing from ``stage_rng(seed, "object:<id>:<stage>")``; ``oid``'s
+        placement, or None with the scene restored exactly when one of them fails."""
+        old = {m: self.uncommit(m) for m in moved}
+        for m in moved:  # out of the scene while the conflict is re-solved
+            self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
+                                                    status="failed", reason="re-placing")
+        new: list[str] = []
+        mine = None
+        try:
+            for m in seq:
+                p = self.try_place(m, f"object:{m}:{stage}")
+                self.commit(p)
+                new.append(m)
+                if m == oid:
+                    mine = p
+            return mine
+        except Fail:
+            for m in new:
+                self.uncommit(m)
+            for m in moved:
+                self.st.scene.objects[m] = old[m].obj
+                self.commit(old[m])
+            self.st.scene.objects.pop(oid, None)
+        return None
+
+    # ------------------------------------------------------------ crowded walls
+    def wall_need(self, oid: str) -> tuple[list[str], float, float, float, float] | None:
+        """The walls a floor or wall object must stand against or hang on (every wall for
+        ``wall``) and the room it needs there: ``(walls, width along the wall, depth in front
+        of it, z0, z1)`` in metres, from its first asset draw at its usual scale; None for
+        objects that name no wall or rest on another object."""
+        pag = self.pag
+        edges = pag.edges_of(oid)
+        sup = edges[0]
+        if not sup.parent.is_room_element:
+            return None
+        e = next((x for x in edges if x.relation in WALL_NEEDS and x.parent.is_room_element
+                  and x.parent.object.startswith("wall")), None)
+        if e is None or (e is not sup and sup.parent.object != "floor"):
+            return None
+        walls = [n for n in self.st.scene.room.elements if n.startswith("wall_")] \
+            if e.parent.object == "wall" else [e.parent.object]
+        ext = self.extents(oid)
+        label = e.child.surface or e.spec.child_surface
+        width, depth = (ext[1], ext[0]) if label in ("left", "right") else (ext[0], ext[1])
+        if e.relation == "AGAINST":
+            depth += e.param("gap")
+        if e is sup:  # hung on the wall: anywhere its centre may be in the height band
+            lo, hi = e.param("height")
+            z0, z1 = lo - ext[2] / 2, hi + ext[2] / 2
+        else:
+            z0, z1 = 0.0, float(ext[2])
+        return walls, float(width), float(depth), float(z0), float(z1)
+
+    def extents(self, oid: str) -> np.ndarray:
+        """(3,) extents (m) of the asset ``oid``'s first placement attempt draws, at the scale
+        it gets there (the node's largest scale, within its category's size range)."""
+        node = self.pag.objects[oid]
+        rng = stage_rng(self.seed, f"object:{oid}")
+        category = node.candidates[int(rng.integers(len(node.candidates)))]
+        asset = self.library.get(category, rng)
+        g = asset_geometry(asset)
+        lo, hi = asset.size_range
+        size = max(g.size, 1e-6)
+        scale = (node.scale[1] if node.scale is not None else 1.0) \
+            * float(np.clip(1.0, lo / size, hi / size))
+        return np.ptp(g.bounds, axis=0) * scale
+
+    def movers(self, oid: str) -> list[str]:
+        """``oid`` and the placed objects that must move with it: what rests on any of them,
+        and what relates to any of them (a chair NEAR a moved table), in placement order."""
+        out, todo = {oid}, [oid]
+        while todo:
+            cur = todo.pop()
+            for e in self.pag.relations:
+                c = e.child.object
+                if e.parent.object == cur and c not in out and c in self.placements:
+                    out.add(c)
+                    todo.append(c)
+        return [o for o in self.order if o in out]
+
+    def clear(self, oid: str) -> Placement | None:
+        """Make room on a crowded wall: take out everything standing in the cheapest stretch
+        of wall where ``oid`` would fit (what stands along it or on the floor in front of it,
+        with what depends on them), place ``oid`` there first, then the others anywhere
+        they go; up to ``CLEAR_WINDOWS`` stretches, from the clearing reserve. None with the
+        scene restored when none works."""
+        need = self.wall_need(oid)
+        if need is None:
+            return None
+        walls, width, depth, z0, z1 = need
+        protected = support_chain(self.pag, oid) | {e.parent.object
+                                                    for e in self.pag.edges_of(oid)}
+        found = []
+        for w in walls:
+            s = self.st.scene.room.elements[w].surface
+            taken = occupants(s, self.st.hulls, depth + CLEAR_PAD, z0, z1)
+            cost = {}
+            for o in {t.id for t in taken}:
+                group = self.movers(o)
+                if o in self.placements and not protected & set(group):
+                    cost[o] = len(group)
+            found += windows(w, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
+        found.sort(key=lambda w: (w.cost, len(w.blockers), w.wall, w.a0))
+        for k, win in enumerate(found[:CLEAR_WINDOWS]):
+            group = {m for b in win.blockers for m in self.movers(b)}
+            moved = [o for o in self.order if o in group]
+            if self.reserve < len(moved):
+                continue
+            self.reserve -= len(moved)
+            self.backjumps += 1
+            got = self.relocate(oid, moved, [oid, *moved], f"clear{k}")
+            if got is not None:
+                return got
+        return None
+
+    def explain(self, oid: str, reason: str) -> str:
+        """The failure reason, with what takes the wall the object names (``wall_k``) and the
+        longest free stretch left when it found no room there."""
+        need = self.wall_need(oid)
+        if need is None or len(need[0]) != 1 or not _space(reason):
+            return reason
+        (w,), width, depth, z0, z1 = need
+        s = self.st.scene.room.elements[w].surface
+        length = wall_length(s)[1]
+        taken = occupants(s, self.st.hulls, depth, z0, z1)
+        if not taken:
+            return reason
+        names = list(dict.fromkeys(t.id for t in taken))
+        run = max((b - a for a, b in free_runs(length, taken)), default=0.0)
+        return (f"{reason}; {w} ({length:.2f} m) is taken by {', '.join(names[:6])}"
+                f"{', ...' if len(names) > 6 else ''}: its longest free stretch is {run:.2f} m, "
+                f"{oid} needs about {width:.2f} m")
 
 
 def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig | None = None,
@@ -264,7 +395,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
         world.add(f"room:{name}", Body.from_mesh(el.mesh_arrays))
     st = SolveState(pag, scene, world)
     srch = _Search(pag, seed, cfg, library, st)
-    order = placement_order(pag)
+    order = srch.order
     proposals = proposals or {}
     for n, oid in enumerate(order):
         sup = pag.supporter(oid)
@@ -278,8 +409,10 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
             except Fail as f:
                 # re-placing others cannot fix what the object's own geometry rules out
                 got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
+                if got is None and srch.reserve > 0 and not f.intrinsic:
+                    got = srch.clear(oid)
                 if got is None:
-                    srch.fail(oid, str(f), cfg.max_trials * cfg.asset_attempts)
+                    srch.fail(oid, srch.explain(oid, str(f)), cfg.max_trials * cfg.asset_attempts)
         if progress is not None:
             progress(SolveProgress(oid, scene.objects[oid].status, n + 1, len(order)))
     # keep the PAG's assembly order in scene.objects
