@@ -13,6 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from ..measure.checks import check_relations, object_centroid
 from ..pag.algorithms import assembly_order
@@ -77,6 +78,14 @@ WALL_NEEDS = ("AGAINST", "SECURED_TO", "LEANING_AGAINST")
 CLEAR_PAD = 0.05
 #: Stretches of wall tried per failure, cheapest first.
 CLEAR_WINDOWS = 3
+#: Extra cost of moving an object that names the very wall being cleared (it must find room on
+#: it again).
+CLEAR_SAME_WALL = 2
+#: Draws per layout parent re-placed with its whole group.
+GROUP_DRAWS = 2
+#: Metres around a layout parent within which what stands on its support moves with it in a
+#: group's last draw.
+AROUND = 0.6
 
 
 def _size_estimate(pag: PAG, oid: str) -> float:
@@ -144,10 +153,11 @@ class _Search:
         return frozenset(i for i, e in enumerate(self.pag.edges_of(oid))
                          if i > 0 and e.parent.object in self.failed)
 
-    def try_place(self, oid: str, stage: str, proposal=None, keep=None) -> Placement:
+    def try_place(self, oid: str, stage: str, proposal=None, keep=None,
+                  smallest: bool = False) -> Placement:
         rng = stage_rng(self.seed, stage)
         return place_object(self.st, oid, rng, self.cfg, self.library, skip=self.skipped(oid),
-                            proposal=proposal, keep=keep)
+                            proposal=proposal, keep=keep, smallest=smallest)
 
     def commit(self, p: Placement) -> None:
         self.placements[p.obj.id] = p
@@ -226,11 +236,12 @@ class _Search:
                 return got
         return None
 
-    def relocate(self, oid: str, moved: list[str], seq: list[str], stage: str
-                 ) -> Placement | None:
+    def relocate(self, oid: str, moved: list[str], seq: list[str], stage: str,
+                 small: frozenset[str] = frozenset()) -> Placement | None:
         """Take ``moved`` out of the scene and place ``seq`` (``oid`` and ``moved``) in that
-        order, each drawing from ``stage_rng(seed, "object:<id>:<stage>")``; ``oid``'s
-        placement, or None with the scene restored exactly when one of them fails."""
+        order, each drawing from ``stage_rng(seed, "object:<id>:<stage>")`` (those in
+        ``small`` starting with their smallest suitable instance); ``oid``'s placement, or
+        None with the scene restored exactly when one of them fails."""
         old = {m: self.uncommit(m) for m in moved}
         for m in moved:  # out of the scene while the conflict is re-solved
             self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
@@ -239,7 +250,7 @@ class _Search:
         mine = None
         try:
             for m in seq:
-                p = self.try_place(m, f"object:{m}:{stage}")
+                p = self.try_place(m, f"object:{m}:{stage}", smallest=m in small)
                 self.commit(p)
                 new.append(m)
                 if m == oid:
@@ -310,6 +321,60 @@ class _Search:
                     todo.append(c)
         return [o for o in self.order if o in out]
 
+    def make_room(self, oid: str) -> Placement | None:
+        """Larger moves than a backjump's, from the clearing reserve: free a stretch of the
+        wall the object needs (:meth:`clear`), or re-place each placed parent of its layout
+        relations together with everything that depends on it (a dining table with its
+        chairs and what is on it), the failed object in its place in that group. None with
+        the scene restored when no move works."""
+        got = self.clear(oid)
+        if got is not None:
+            return got
+        protected = support_chain(self.pag, oid)
+        parents = [e.parent.object for e in self.pag.edges_of(oid)[1:]
+                   if e.parent.object in self.placements]
+        for k, parent in enumerate(dict.fromkeys(parents)):
+            group = set(self.movers(parent))
+            if group & protected:
+                continue
+            # the group alone, then with what stands around the parent on its support
+            around: set[str] = set()
+            room = self.reserve - GROUP_DRAWS * len(group)
+            for n in self.around(parent, group | protected):
+                more = set(self.movers(n)) - group
+                if not more & protected and len(group | around | more) <= room:
+                    around |= more
+            for r, extra in enumerate([set()] * GROUP_DRAWS + ([around] if around else [])):
+                moved = [o for o in self.order if o in group or o in extra]
+                if self.reserve < len(moved):
+                    break
+                self.reserve -= len(moved)
+                self.backjumps += 1
+                seq = [o for o in self.order if o in group or o == oid] + \
+                    [o for o in self.order if o in extra]
+                # the parent as small as its instances come, leaving room for its group
+                got = self.relocate(oid, moved, seq, f"group{k}:{r}", frozenset({parent}))
+                if got is not None:
+                    return got
+        return None
+
+    def around(self, parent: str, skip: set[str]) -> list[str]:
+        """Placed objects on ``parent``'s support (room elements: the same one) whose
+        footprints come within ``AROUND`` metres of its footprint, nearest first."""
+        sup = self.pag.supporter(parent)
+        if sup is None or parent not in self.st.xy:
+            return []
+        me = shapely.Polygon(self.st.xy[parent])
+        out = []
+        for o in self.placements:
+            e = self.pag.supporter(o)
+            if o in skip or e is None or e.parent.object != sup.parent.object:
+                continue
+            d = me.distance(shapely.Polygon(self.st.xy[o]))
+            if d <= AROUND:
+                out.append((d, o))
+        return [o for _, o in sorted(out)]
+
     def clear(self, oid: str) -> Placement | None:
         """Make room on a crowded wall: take out everything standing in the cheapest stretch
         of wall where ``oid`` would fit (what stands along it or on the floor in front of it,
@@ -322,19 +387,30 @@ class _Search:
         walls, width, depth, z0, z1 = need
         protected = support_chain(self.pag, oid) | {e.parent.object
                                                     for e in self.pag.edges_of(oid)}
+        groups: dict[str, set[str] | None] = {}
+
+        def cost(block: tuple[str, ...]) -> int | None:
+            """Objects moved to free a stretch (more for those needing this very wall back),
+            None when one of them may not move."""
+            moved: set[str] = set()
+            for b in block:
+                if b not in groups:
+                    g = set(self.movers(b)) if b in self.placements else None
+                    groups[b] = None if g is None or g & protected else g
+                if groups[b] is None:
+                    return None
+                moved |= groups[b]
+            again = sum(any(e.parent.object == w for e in self.pag.edges_of(m)) for m in moved)
+            return len(moved) + CLEAR_SAME_WALL * again
+
         found = []
         for w in walls:
             s = self.st.scene.room.elements[w].surface
             taken = occupants(s, self.st.hulls, depth + CLEAR_PAD, z0, z1)
-            cost = {}
-            for o in {t.id for t in taken}:
-                group = self.movers(o)
-                if o in self.placements and not protected & set(group):
-                    cost[o] = len(group)
             found += windows(w, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
         found.sort(key=lambda w: (w.cost, len(w.blockers), w.wall, w.a0))
         for k, win in enumerate(found[:CLEAR_WINDOWS]):
-            group = {m for b in win.blockers for m in self.movers(b)}
+            group = set().union(*(groups[b] for b in win.blockers))
             moved = [o for o in self.order if o in group]
             if self.reserve < len(moved):
                 continue
@@ -410,7 +486,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
                 # re-placing others cannot fix what the object's own geometry rules out
                 got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
                 if got is None and srch.reserve > 0 and not f.intrinsic:
-                    got = srch.clear(oid)
+                    got = srch.make_room(oid)
                 if got is None:
                     srch.fail(oid, srch.explain(oid, str(f)), cfg.max_trials * cfg.asset_attempts)
         if progress is not None:

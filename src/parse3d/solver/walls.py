@@ -8,6 +8,7 @@ its surface's horizontal axis; depths are metres in front of its surface, along 
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -103,11 +104,11 @@ def free_runs(length: float, taken: list[Occupant]) -> list[tuple[float, float]]
 
 
 def windows(wall: str, length: float, taken: list[Occupant], width: float,
-            cost: dict[str, float]) -> list[Window]:
+            cost: Callable[[tuple[str, ...]], int | None]) -> list[Window]:
     """Stretches of ``width`` metres on a wall of ``length`` metres, each with the occupants
-    that would have to move to free it, cheapest first (by ``cost`` per occupant: the objects
-    moved with it; an occupant missing from ``cost`` cannot move). Windows nobody blocks are
-    left out; so are windows with the same blockers as a cheaper one."""
+    that would have to move to free it, cheapest first by ``cost`` of those occupants (None:
+    they cannot move). Windows nobody blocks are left out; so are windows with the same
+    blockers as another."""
     if width > length:
         return []
     starts = {0.0, length - width}
@@ -118,7 +119,9 @@ def windows(wall: str, length: float, taken: list[Occupant], width: float,
         if a < 0.0 or a + width > length + 1e-9:
             continue
         block = tuple(o.id for o in taken if o.a1 > a + 1e-3 and o.a0 < a + width - 1e-3)
-        if not block or block in found or any(b not in cost for b in block):
+        if not block or block in found:
             continue
-        found[block] = Window(wall, a, a + width, block, int(sum(cost[b] for b in block)))
+        c = cost(block)
+        if c is not None:
+            found[block] = Window(wall, a, a + width, block, int(c))
     return sorted(found.values(), key=lambda w: (w.cost, len(w.blockers), w.a0))
