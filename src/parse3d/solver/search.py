@@ -403,12 +403,16 @@ class _Search:
             again = sum(any(e.parent.object == w for e in self.pag.edges_of(m)) for m in moved)
             return len(moved) + CLEAR_SAME_WALL * again
 
+        # walls that objects still to come name (a wardrobe AGAINST wall_3) are left to them
+        later = {e.parent.object for e in self.pag.relations if e.relation in WALL_NEEDS
+                 and e.child.object not in self.placements and e.child.object != oid}
         found = []
         for w in walls:
             s = self.st.scene.room.elements[w].surface
             taken = occupants(s, self.st.hulls, depth + CLEAR_PAD, z0, z1)
             found += windows(w, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
-        found.sort(key=lambda w: (w.cost, len(w.blockers), w.wall, w.a0))
+        found.sort(key=lambda w: (w.cost + CLEAR_SAME_WALL * (w.wall in later), len(w.blockers),
+                                  w.wall, w.a0))
         for k, win in enumerate(found[:CLEAR_WINDOWS]):
             group = set().union(*(groups[b] for b in win.blockers))
             moved = [o for o in self.order if o in group]
