@@ -25,9 +25,10 @@ from .config import Fail, SolverConfig, stage_rng
 from .geometry import asset_geometry
 from .placement import Placement, _space, place_object, resolution, scaled_mesh
 from .state import SolveState, support_chain
-from .walls import free_runs, occupants, wall_length, windows
+from .walls import Window, free_runs, occupants, wall_length, windows
 
-__all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants"]
+__all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants",
+           "wall_conflicts"]
 
 
 @dataclass(frozen=True)
@@ -375,46 +376,52 @@ class _Search:
                 out.append((d, o))
         return [o for _, o in sorted(out)]
 
-    def clear(self, oid: str) -> Placement | None:
-        """Make room on a crowded wall: take out everything standing in the cheapest stretch
-        of wall where ``oid`` would fit (what stands along it or on the floor in front of it,
-        with what depends on them), place ``oid`` there first, then the others anywhere
-        they go; up to ``CLEAR_WINDOWS`` stretches, from the clearing reserve. None with the
-        scene restored when none works."""
+    def wall_windows(self, oid: str) -> list[Window]:
+        """The conflict set of a wall object, by stretch of wall: for each stretch of the
+        walls it needs (:meth:`wall_need`) where it would fit once cleared, the placed objects
+        standing there (along the wall, or on the floor in front of it), cheapest to move
+        first. The cost of a stretch is the number of objects moved (with what rests on or
+        relates to them), plus ``CLEAR_SAME_WALL`` for each of them that names this very wall
+        and for a wall that an object still to be placed names. Stretches holding something
+        the object rests on or relates to are left out."""
         need = self.wall_need(oid)
         if need is None:
-            return None
+            return []
         walls, width, depth, z0, z1 = need
         protected = support_chain(self.pag, oid) | {e.parent.object
                                                     for e in self.pag.edges_of(oid)}
         groups: dict[str, set[str] | None] = {}
-
-        def cost(block: tuple[str, ...]) -> int | None:
-            """Objects moved to free a stretch (more for those needing this very wall back),
-            None when one of them may not move."""
-            moved: set[str] = set()
-            for b in block:
-                if b not in groups:
-                    g = set(self.movers(b)) if b in self.placements else None
-                    groups[b] = None if g is None or g & protected else g
-                if groups[b] is None:
-                    return None
-                moved |= groups[b]
-            again = sum(any(e.parent.object == w for e in self.pag.edges_of(m)) for m in moved)
-            return len(moved) + CLEAR_SAME_WALL * again
-
         # walls that objects still to come name (a wardrobe AGAINST wall_3) are left to them
         later = {e.parent.object for e in self.pag.relations if e.relation in WALL_NEEDS
                  and e.child.object not in self.placements and e.child.object != oid}
         found = []
-        for w in walls:
-            s = self.st.scene.room.elements[w].surface
+        for wall in walls:
+            def cost(block: tuple[str, ...], wall=wall) -> int | None:
+                moved: set[str] = set()
+                for b in block:
+                    if b not in groups:
+                        g = set(self.movers(b)) if b in self.placements else None
+                        groups[b] = None if g is None or g & protected else g
+                    if groups[b] is None:
+                        return None
+                    moved |= groups[b]
+                again = sum(any(e.parent.object == wall for e in self.pag.edges_of(m))
+                            for m in moved) + (wall in later)
+                return len(moved) + CLEAR_SAME_WALL * again
+
+            s = self.st.scene.room.elements[wall].surface
             taken = occupants(s, self.st.hulls, depth + CLEAR_PAD, z0, z1)
-            found += windows(w, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
-        found.sort(key=lambda w: (w.cost + CLEAR_SAME_WALL * (w.wall in later), len(w.blockers),
-                                  w.wall, w.a0))
-        for k, win in enumerate(found[:CLEAR_WINDOWS]):
-            group = set().union(*(groups[b] for b in win.blockers))
+            found += windows(wall, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
+        return sorted(found, key=lambda w: (w.cost, len(w.blockers), w.wall, w.a0))
+
+    def clear(self, oid: str) -> Placement | None:
+        """Make room on a crowded wall: take out everything standing in the cheapest stretch
+        of wall where ``oid`` would fit (:meth:`wall_windows`, with what depends on them),
+        place ``oid`` first (it takes that stretch), then the others anywhere they go; up to
+        ``CLEAR_WINDOWS`` stretches, from the clearing reserve. None with the scene restored
+        when none works."""
+        for k, win in enumerate(self.wall_windows(oid)[:CLEAR_WINDOWS]):
+            group = {m for b in win.blockers for m in self.movers(b)}
             moved = [o for o in self.order if o in group]
             if self.reserve < len(moved):
                 continue
@@ -539,6 +546,34 @@ def mark_unmet(scene: Scene) -> None:
             c.holds_settled, c.residual_settled = None, None
 
 
+def wall_conflicts(scene: Scene, oid: str, *, seed: int, library=None,
+                   config: SolverConfig | None = None) -> list[Window]:
+    """The conflict set the search would use to make room for ``oid`` (an object of
+    ``scene`` AGAINST, SECURED_TO or LEANING_AGAINST a wall) among the placed objects of
+    ``scene``: the stretches of wall where it would fit once cleared, each with the objects
+    standing there, cheapest to move first (see ``_Search.wall_windows``); empty for other
+    objects."""
+    from .library import default_library
+
+    cfg = config or SolverConfig()
+    srch = _Search(scene.pag, seed, cfg, library or default_library(), _state_of(scene, {oid}))
+    srch.placements = {o.id: None for o in scene.objects.values() if o.placed and o.id != oid}
+    return srch.wall_windows(oid)
+
+
+def _state_of(scene: Scene, leave_out: set[str]) -> SolveState:
+    """A solve state holding the room and the placed objects of ``scene`` but ``leave_out``."""
+    world = CollisionWorld()
+    for name, el in scene.room.elements.items():
+        world.add(f"room:{name}", Body.from_mesh(el.mesh_arrays))
+    st = SolveState(scene.pag, scene, world)
+    for o in scene.objects.values():
+        if o.placed and o.id not in leave_out:
+            st.add(o, cached_body(o.asset.asset_id, o.scale,
+                                  lambda o=o: scaled_mesh(o.asset, o.scale)))
+    return st
+
+
 def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, library=None,
                     config: SolverConfig | None = None, new_asset: set[str] | None = None,
                     ) -> dict[str, str]:
@@ -553,19 +588,13 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
     cfg = config or SolverConfig()
     library = library or default_library()
     pag = scene.pag
-    world = CollisionWorld()
-    for name, el in scene.room.elements.items():
-        world.add(f"room:{name}", Body.from_mesh(el.mesh_arrays))
-    st = SolveState(pag, scene, world)
     todo: list[str] = []
     for oid in ids:
         for o in [oid, *support_descendants(pag, oid)]:
             if o not in todo and scene.objects[o].placed:
                 todo.append(o)
     todo = [o for o in assembly_order(pag) if o in todo]
-    for o in scene.objects.values():
-        if o.placed and o.id not in todo:
-            st.add(o, cached_body(o.asset.asset_id, o.scale, lambda o=o: scaled_mesh(o.asset, o.scale)))
+    st = _state_of(scene, set(todo))
     srch = _Search(pag, seed, cfg, library, st)
     srch.failed = {o.id: o.reason or "" for o in scene.objects.values() if not o.placed}
     done: dict[str, str] = {}

@@ -2,8 +2,8 @@
 it, or standing on the floor in front of it) and the cheapest window of a given width to clear
 for a wall object that found no room.
 
-Positions along a wall are metres from its start (vertex ``i`` of ``wall_i``), measured on
-its surface's horizontal axis; depths are metres in front of its surface, along its normal.
+Positions along a wall are metres along its surface's horizontal axis ``u`` from the end where
+``u`` is least; depths are metres in front of its surface, along its normal.
 """
 
 from __future__ import annotations
@@ -27,7 +27,7 @@ class Occupant:
     ----------
     id : str
     a0, a1 : float
-        The stretch it takes (m from the wall's start), where it comes within the depth.
+        The stretch it takes (m along the wall), where it comes within the depth.
     """
 
     id: str
@@ -43,7 +43,7 @@ class Window:
     ----------
     wall : str
     a0, a1 : float
-        The stretch (m from the wall's start).
+        The stretch (m along the wall).
     blockers : tuple of str
         Occupants overlapping it, in wall order.
     cost : int
