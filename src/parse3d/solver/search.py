@@ -82,6 +82,9 @@ CLEAR_WINDOWS = 3
 #: Extra cost of moving an object that names the very wall being cleared (it must find room on
 #: it again).
 CLEAR_SAME_WALL = 2
+#: Objects bulkier (bounding-box volume) than this many times the object a wall is cleared
+#: for are not moved to clear it.
+CLEAR_BULK = 3.0
 #: Draws per layout parent re-placed with its whole group.
 GROUP_DRAWS = 2
 #: Metres around a layout parent within which what stands on its support moves with it in a
@@ -383,13 +386,19 @@ class _Search:
         first. The cost of a stretch is the number of objects moved (with what rests on or
         relates to them), plus ``CLEAR_SAME_WALL`` for each of them that names this very wall
         and for a wall that an object still to be placed names. Stretches holding something
-        the object rests on or relates to are left out."""
+        the object rests on or relates to, or bulkier than ``CLEAR_BULK`` times the object,
+        are left out."""
         need = self.wall_need(oid)
         if need is None:
             return []
         walls, width, depth, z0, z1 = need
         protected = support_chain(self.pag, oid) | {e.parent.object
                                                     for e in self.pag.edges_of(oid)}
+        # what is much bulkier than the object stays: moved, it would take the room of the
+        # objects still to come (a bed moved for an armchair)
+        bulk = CLEAR_BULK * float(np.prod(self.extents(oid)))
+        protected |= {o for o, H in self.st.hulls.items()
+                      if float(np.prod(np.ptp(H, axis=0))) > bulk}
         groups: dict[str, set[str] | None] = {}
         # walls that objects still to come name (a wardrobe AGAINST wall_3) are left to them
         later = {e.parent.object for e in self.pag.relations if e.relation in WALL_NEEDS
