@@ -7,6 +7,9 @@ import re
 
 import numpy as np
 import pytest
+import shapely
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from parse3d.pag import PAG, Room
 from parse3d.scene.shell import build_shell
@@ -108,3 +111,22 @@ def test_the_conflict_set_of_a_wall_object_is_what_stands_along_its_wall():
              if not np.allclose(back.objects[f"box_{k}"].position, proposals[f"box_{k}"][1])]
     assert moved
     assert np.allclose(back.objects["chair"].position, proposals["chair"][1])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.tuples(st.floats(0.0, 4.0), st.floats(0.01, 1.5)), max_size=6),
+       st.floats(0.1, 2.0))
+def test_free_runs_and_windows_partition_the_wall(spans, width):
+    length = 4.0
+    taken = [Occupant(f"o{k}", a, min(a + w, length)) for k, (a, w) in enumerate(spans)
+             if a < length]
+    runs = free_runs(length, taken)
+    covered = shapely.union_all([shapely.box(o.a0, 0, o.a1, 1) for o in taken]).area \
+        if taken else 0.0
+    assert sum(b - a for a, b in runs) + covered == pytest.approx(length, abs=1e-9)
+    for a, b in runs:  # nothing takes a free run
+        assert all(o.a1 <= a + 1e-9 or o.a0 >= b - 1e-9 for o in taken)
+    for w in windows("wall_0", length, taken, width, lambda block: len(block)):
+        assert w.a0 >= 0.0 and w.a1 <= length + 1e-9 and w.a1 - w.a0 == pytest.approx(width)
+        assert set(w.blockers) == {o.id for o in taken
+                                   if o.a1 > w.a0 + 1e-3 and o.a0 < w.a1 - 1e-3}
