@@ -48,13 +48,14 @@ class Placement:
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
                  library, *, skip: frozenset[int] = frozenset(),
                  proposal: tuple[np.ndarray, np.ndarray] | None = None,
-                 keep: PlacedObject | None = None) -> Placement:
+                 keep: PlacedObject | None = None, smallest: bool = False) -> Placement:
     """Place one object (its parents are placed); raise Fail with the reason otherwise.
 
     ``skip`` holds indices (into ``pag.edges_of(oid)``) of non-support relations left out
     because their parent failed. ``proposal`` is a world pose ``(R, t)`` tried first. ``keep``
     is an earlier placement of the object whose asset and scale the first attempt reuses (a
-    repair by another pose).
+    repair by another pose). ``smallest`` starts with the suitable instance of least
+    footprint among those looked at (a table that must leave room for its chairs).
     """
     pag = st.pag
     node = pag.objects[oid]
@@ -73,6 +74,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         asset = library.get(category, rng)
         if keep is not None and attempt == 0:
             category, asset = keep.category, keep.asset
+        elif smallest and attempt == 0:
+            alt = _alternative(library, node.candidates, reqs, tried, rng, smallest=True)
+            if alt is not None:
+                category, asset = alt
         elif reasons and _space(reasons[-1]):
             # the last instance did not fit where it must go: the smallest suitable one next
             alt = _alternative(library, node.candidates, reqs, tried | {asset.asset_id}, rng,

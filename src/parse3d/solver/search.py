@@ -13,6 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from ..measure.checks import check_relations, object_centroid
 from ..pag.algorithms import assembly_order
@@ -21,10 +22,13 @@ from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .collision import CollisionWorld, cached_body, static_body
 from .config import Fail, SolverConfig, stage_rng
-from .placement import Placement, place_object, resolution, scaled_mesh
-from .state import SolveState
+from .geometry import asset_geometry
+from .placement import Placement, _space, place_object, resolution, scaled_mesh
+from .state import SolveState, support_chain
+from .walls import Window, free_runs, occupants, wall_length, windows
 
-__all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants"]
+__all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants",
+           "wall_conflicts"]
 
 
 @dataclass(frozen=True)
@@ -68,6 +72,24 @@ def support_descendants(pag: PAG, oid: str) -> list[str]:
 MAX_CULPRITS = 6
 JUMP_ROUNDS = 2
 JUMP_TRIES = 6
+
+#: Wall relations whose object needs a free stretch of its wall (see :meth:`_Search.clear`).
+WALL_NEEDS = ("AGAINST", "SECURED_TO", "LEANING_AGAINST")
+#: Metres added to a wall object's width and depth when looking for a stretch to clear.
+CLEAR_PAD = 0.05
+#: Stretches of wall tried per failure, cheapest first.
+CLEAR_WINDOWS = 3
+#: Extra cost of moving an object that names the very wall being cleared (it must find room on
+#: it again).
+CLEAR_SAME_WALL = 2
+#: Objects bulkier (bounding-box volume) than this many times the object a wall is cleared
+#: for are not moved to clear it.
+CLEAR_BULK = 3.0
+#: Draws per layout parent re-placed with its whole group.
+GROUP_DRAWS = 2
+#: Metres around a layout parent within which what stands on its support moves with it in a
+#: group's last draw.
+AROUND = 0.6
 
 
 def _size_estimate(pag: PAG, oid: str) -> float:
@@ -124,7 +146,10 @@ class _Search:
         self.failed: dict[str, str] = {}
         self.edge_index = {id(e): i for i, e in enumerate(pag.relations)}
         self.budget = int(cfg.search_budget) if cfg.search == "backtracking" else 0
+        #: re-placements for clearing crowded walls, apart from the budget of backjumps
+        self.reserve = self.budget
         self.backjumps = 0
+        self.order = placement_order(pag)
 
     # ------------------------------------------------------------ bookkeeping
     def skipped(self, oid: str) -> frozenset[int]:
@@ -132,10 +157,11 @@ class _Search:
         return frozenset(i for i, e in enumerate(self.pag.edges_of(oid))
                          if i > 0 and e.parent.object in self.failed)
 
-    def try_place(self, oid: str, stage: str, proposal=None, keep=None) -> Placement:
+    def try_place(self, oid: str, stage: str, proposal=None, keep=None,
+                  smallest: bool = False) -> Placement:
         rng = stage_rng(self.seed, stage)
         return place_object(self.st, oid, rng, self.cfg, self.library, skip=self.skipped(oid),
-                            proposal=proposal, keep=keep)
+                            proposal=proposal, keep=keep, smallest=smallest)
 
     def commit(self, p: Placement) -> None:
         self.placements[p.obj.id] = p
@@ -205,32 +231,233 @@ class _Search:
                 continue
             self.budget -= len(moved)
             self.backjumps += 1
-            old = {m: self.uncommit(m) for m in moved}
-            for m in moved:  # out of the scene while the conflict is re-solved
-                self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
-                                                        status="failed", reason="re-placing")
             # a moved object the failed one relates to goes first (a parent of its layout
             # relation); occupants of its support go after it (it takes its room first)
             parents = {e.parent.object for e in self.pag.edges_of(oid)}
             seq = [*moved, oid] if parents & set(moved) else [oid, *moved]
-            new: list[str] = []
-            mine = None
-            try:
-                for m in seq:
-                    p = self.try_place(m, f"object:{m}:jump{k}")
-                    self.commit(p)
-                    new.append(m)
-                    if m == oid:
-                        mine = p
-                return mine
-            except Fail:
-                for m in new:
-                    self.uncommit(m)
-                for m in moved:
-                    self.st.scene.objects[m] = old[m].obj
-                    self.commit(old[m])
-                self.st.scene.objects.pop(oid, None)
+            got = self.relocate(oid, moved, seq, f"jump{k}")
+            if got is not None:
+                return got
         return None
+
+    def relocate(self, oid: str, moved: list[str], seq: list[str], stage: str,
+                 small: frozenset[str] = frozenset()) -> Placement | None:
+        """Take ``moved`` out of the scene and place ``seq`` (``oid`` and ``moved``) in that
+        order, each drawing from ``stage_rng(seed, "object:<id>:<stage>")`` (those in
+        ``small`` starting with their smallest suitable instance); ``oid``'s placement, or
+        None with the scene restored exactly when one of them fails."""
+        old = {m: self.uncommit(m) for m in moved}
+        for m in moved:  # out of the scene while the conflict is re-solved
+            self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
+                                                    status="failed", reason="re-placing")
+        new: list[str] = []
+        mine = None
+        try:
+            for m in seq:
+                p = self.try_place(m, f"object:{m}:{stage}", smallest=m in small)
+                self.commit(p)
+                new.append(m)
+                if m == oid:
+                    mine = p
+            return mine
+        except Fail:
+            for m in new:
+                self.uncommit(m)
+            for m in moved:
+                self.st.scene.objects[m] = old[m].obj
+                self.commit(old[m])
+            self.st.scene.objects.pop(oid, None)
+        return None
+
+    # ------------------------------------------------------------ crowded walls
+    def wall_need(self, oid: str) -> tuple[list[str], float, float, float, float] | None:
+        """The walls a floor or wall object must stand against or hang on (every wall for
+        ``wall``) and the room it needs there: ``(walls, width along the wall, depth in front
+        of it, z0, z1)`` in metres, from its first asset draw at its usual scale; None for
+        objects that name no wall or rest on another object."""
+        pag = self.pag
+        edges = pag.edges_of(oid)
+        sup = edges[0]
+        if not sup.parent.is_room_element:
+            return None
+        e = next((x for x in edges if x.relation in WALL_NEEDS and x.parent.is_room_element
+                  and x.parent.object.startswith("wall")), None)
+        if e is None or (e is not sup and sup.parent.object != "floor"):
+            return None
+        walls = [n for n in self.st.scene.room.elements if n.startswith("wall_")] \
+            if e.parent.object == "wall" else [e.parent.object]
+        ext = self.extents(oid)
+        label = e.child.surface or e.spec.child_surface
+        width, depth = (ext[1], ext[0]) if label in ("left", "right") else (ext[0], ext[1])
+        if e.relation == "AGAINST":
+            depth += e.param("gap")
+        if e is sup:  # hung on the wall: anywhere its centre may be in the height band
+            lo, hi = e.param("height")
+            z0, z1 = lo - ext[2] / 2, hi + ext[2] / 2
+        else:
+            z0, z1 = 0.0, float(ext[2])
+        return walls, float(width), float(depth), float(z0), float(z1)
+
+    def extents(self, oid: str) -> np.ndarray:
+        """(3,) extents (m) of the asset ``oid``'s first placement attempt draws, at the scale
+        it gets there (the node's largest scale, within its category's size range)."""
+        node = self.pag.objects[oid]
+        rng = stage_rng(self.seed, f"object:{oid}")
+        category = node.candidates[int(rng.integers(len(node.candidates)))]
+        asset = self.library.get(category, rng)
+        g = asset_geometry(asset)
+        lo, hi = asset.size_range
+        size = max(g.size, 1e-6)
+        scale = (node.scale[1] if node.scale is not None else 1.0) \
+            * float(np.clip(1.0, lo / size, hi / size))
+        return np.ptp(g.bounds, axis=0) * scale
+
+    def movers(self, oid: str) -> list[str]:
+        """``oid`` and the placed objects that must move with it: what rests on any of them,
+        and what relates to any of them (a chair NEAR a moved table), in placement order."""
+        out, todo = {oid}, [oid]
+        while todo:
+            cur = todo.pop()
+            for e in self.pag.relations:
+                c = e.child.object
+                if e.parent.object == cur and c not in out and c in self.placements:
+                    out.add(c)
+                    todo.append(c)
+        return [o for o in self.order if o in out]
+
+    def make_room(self, oid: str) -> Placement | None:
+        """Larger moves than a backjump's, from the clearing reserve: free a stretch of the
+        wall the object needs (:meth:`clear`), or re-place each placed parent of its layout
+        relations together with everything that depends on it (a dining table with its
+        chairs and what is on it), the failed object in its place in that group. None with
+        the scene restored when no move works."""
+        got = self.clear(oid)
+        if got is not None:
+            return got
+        protected = support_chain(self.pag, oid)
+        parents = [e.parent.object for e in self.pag.edges_of(oid)[1:]
+                   if e.parent.object in self.placements]
+        for k, parent in enumerate(dict.fromkeys(parents)):
+            group = set(self.movers(parent))
+            if group & protected:
+                continue
+            # the group alone, then with what stands around the parent on its support
+            around: set[str] = set()
+            room = self.reserve - GROUP_DRAWS * len(group)
+            for n in self.around(parent, group | protected):
+                more = set(self.movers(n)) - group
+                if not more & protected and len(group | around | more) <= room:
+                    around |= more
+            for r, extra in enumerate([set()] * GROUP_DRAWS + ([around] if around else [])):
+                moved = [o for o in self.order if o in group or o in extra]
+                if self.reserve < len(moved):
+                    break
+                self.reserve -= len(moved)
+                self.backjumps += 1
+                seq = [o for o in self.order if o in group or o == oid] + \
+                    [o for o in self.order if o in extra]
+                # the parent as small as its instances come, leaving room for its group
+                got = self.relocate(oid, moved, seq, f"group{k}:{r}", frozenset({parent}))
+                if got is not None:
+                    return got
+        return None
+
+    def around(self, parent: str, skip: set[str]) -> list[str]:
+        """Placed objects on ``parent``'s support (room elements: the same one) whose
+        footprints come within ``AROUND`` metres of its footprint, nearest first."""
+        sup = self.pag.supporter(parent)
+        if sup is None or parent not in self.st.xy:
+            return []
+        me = shapely.Polygon(self.st.xy[parent])
+        out = []
+        for o in self.placements:
+            e = self.pag.supporter(o)
+            if o in skip or e is None or e.parent.object != sup.parent.object:
+                continue
+            d = me.distance(shapely.Polygon(self.st.xy[o]))
+            if d <= AROUND:
+                out.append((d, o))
+        return [o for _, o in sorted(out)]
+
+    def wall_windows(self, oid: str) -> list[Window]:
+        """The conflict set of a wall object, by stretch of wall: for each stretch of the
+        walls it needs (:meth:`wall_need`) where it would fit once cleared, the placed objects
+        standing there (along the wall, or on the floor in front of it), cheapest to move
+        first. The cost of a stretch is the number of objects moved (with what rests on or
+        relates to them), plus ``CLEAR_SAME_WALL`` for each of them that names this very wall
+        and for a wall that an object still to be placed names. Stretches holding something
+        the object rests on or relates to, or bulkier than ``CLEAR_BULK`` times the object,
+        are left out."""
+        need = self.wall_need(oid)
+        if need is None:
+            return []
+        walls, width, depth, z0, z1 = need
+        protected = support_chain(self.pag, oid) | {e.parent.object
+                                                    for e in self.pag.edges_of(oid)}
+        # what is much bulkier than the object stays: moved, it would take the room of the
+        # objects still to come (a bed moved for an armchair)
+        bulk = CLEAR_BULK * float(np.prod(self.extents(oid)))
+        protected |= {o for o, H in self.st.hulls.items()
+                      if float(np.prod(np.ptp(H, axis=0))) > bulk}
+        groups: dict[str, set[str] | None] = {}
+        # walls that objects still to come name (a wardrobe AGAINST wall_3) are left to them
+        later = {e.parent.object for e in self.pag.relations if e.relation in WALL_NEEDS
+                 and e.child.object not in self.placements and e.child.object != oid}
+        found = []
+        for wall in walls:
+            def cost(block: tuple[str, ...], wall=wall) -> int | None:
+                moved: set[str] = set()
+                for b in block:
+                    if b not in groups:
+                        g = set(self.movers(b)) if b in self.placements else None
+                        groups[b] = None if g is None or g & protected else g
+                    if groups[b] is None:
+                        return None
+                    moved |= groups[b]
+                again = sum(any(e.parent.object == wall for e in self.pag.edges_of(m))
+                            for m in moved) + (wall in later)
+                return len(moved) + CLEAR_SAME_WALL * again
+
+            s = self.st.scene.room.elements[wall].surface
+            taken = occupants(s, self.st.hulls, depth + CLEAR_PAD, z0, z1)
+            found += windows(wall, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
+        return sorted(found, key=lambda w: (w.cost, len(w.blockers), w.wall, w.a0))
+
+    def clear(self, oid: str) -> Placement | None:
+        """Make room on a crowded wall: take out everything standing in the cheapest stretch
+        of wall where ``oid`` would fit (:meth:`wall_windows`, with what depends on them),
+        place ``oid`` first (it takes that stretch), then the others anywhere they go; up to
+        ``CLEAR_WINDOWS`` stretches, from the clearing reserve. None with the scene restored
+        when none works."""
+        for k, win in enumerate(self.wall_windows(oid)[:CLEAR_WINDOWS]):
+            group = {m for b in win.blockers for m in self.movers(b)}
+            moved = [o for o in self.order if o in group]
+            if self.reserve < len(moved):
+                continue
+            self.reserve -= len(moved)
+            self.backjumps += 1
+            got = self.relocate(oid, moved, [oid, *moved], f"clear{k}")
+            if got is not None:
+                return got
+        return None
+
+    def explain(self, oid: str, reason: str) -> str:
+        """The failure reason, with what takes the wall the object names (``wall_k``) and the
+        longest free stretch left when it found no room there."""
+        need = self.wall_need(oid)
+        if need is None or len(need[0]) != 1 or not _space(reason):
+            return reason
+        (w,), width, depth, z0, z1 = need
+        s = self.st.scene.room.elements[w].surface
+        length = wall_length(s)[1]
+        taken = occupants(s, self.st.hulls, depth, z0, z1)
+        if not taken:
+            return reason
+        names = list(dict.fromkeys(t.id for t in taken))
+        run = max((b - a for a, b in free_runs(length, taken)), default=0.0)
+        return (f"{reason}; {w} ({length:.2f} m) is taken by {', '.join(names[:6])}"
+                f"{', ...' if len(names) > 6 else ''}: its longest free stretch is {run:.2f} m, "
+                f"{oid} needs about {width:.2f} m")
 
 
 def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig | None = None,
@@ -264,7 +491,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
         world.add(f"room:{name}", static_body(el.mesh_arrays))
     st = SolveState(pag, scene, world)
     srch = _Search(pag, seed, cfg, library, st)
-    order = placement_order(pag)
+    order = srch.order
     proposals = proposals or {}
     for n, oid in enumerate(order):
         sup = pag.supporter(oid)
@@ -278,8 +505,10 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
             except Fail as f:
                 # re-placing others cannot fix what the object's own geometry rules out
                 got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
+                if got is None and srch.reserve > 0 and not f.intrinsic:
+                    got = srch.make_room(oid)
                 if got is None:
-                    srch.fail(oid, str(f), cfg.max_trials * cfg.asset_attempts)
+                    srch.fail(oid, srch.explain(oid, str(f)), cfg.max_trials * cfg.asset_attempts)
         if progress is not None:
             progress(SolveProgress(oid, scene.objects[oid].status, n + 1, len(order)))
     # keep the PAG's assembly order in scene.objects
@@ -326,6 +555,34 @@ def mark_unmet(scene: Scene) -> None:
             c.holds_settled, c.residual_settled = None, None
 
 
+def wall_conflicts(scene: Scene, oid: str, *, seed: int, library=None,
+                   config: SolverConfig | None = None) -> list[Window]:
+    """The conflict set the search would use to make room for ``oid`` (an object of
+    ``scene`` AGAINST, SECURED_TO or LEANING_AGAINST a wall) among the placed objects of
+    ``scene``: the stretches of wall where it would fit once cleared, each with the objects
+    standing there, cheapest to move first (see ``_Search.wall_windows``); empty for other
+    objects."""
+    from .library import default_library
+
+    cfg = config or SolverConfig()
+    srch = _Search(scene.pag, seed, cfg, library or default_library(), _state_of(scene, {oid}))
+    srch.placements = {o.id: None for o in scene.objects.values() if o.placed and o.id != oid}
+    return srch.wall_windows(oid)
+
+
+def _state_of(scene: Scene, leave_out: set[str]) -> SolveState:
+    """A solve state holding the room and the placed objects of ``scene`` but ``leave_out``."""
+    world = CollisionWorld()
+    for name, el in scene.room.elements.items():
+        world.add(f"room:{name}", static_body(el.mesh_arrays))
+    st = SolveState(scene.pag, scene, world)
+    for o in scene.objects.values():
+        if o.placed and o.id not in leave_out:
+            st.add(o, cached_body(o.asset.asset_id, o.scale,
+                                  lambda o=o: scaled_mesh(o.asset, o.scale)))
+    return st
+
+
 def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, library=None,
                     config: SolverConfig | None = None, new_asset: set[str] | None = None,
                     ) -> dict[str, str]:
@@ -340,19 +597,13 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
     cfg = config or SolverConfig()
     library = library or default_library()
     pag = scene.pag
-    world = CollisionWorld()
-    for name, el in scene.room.elements.items():
-        world.add(f"room:{name}", static_body(el.mesh_arrays))
-    st = SolveState(pag, scene, world)
     todo: list[str] = []
     for oid in ids:
         for o in [oid, *support_descendants(pag, oid)]:
             if o not in todo and scene.objects[o].placed:
                 todo.append(o)
     todo = [o for o in assembly_order(pag) if o in todo]
-    for o in scene.objects.values():
-        if o.placed and o.id not in todo:
-            st.add(o, cached_body(o.asset.asset_id, o.scale, lambda o=o: scaled_mesh(o.asset, o.scale)))
+    st = _state_of(scene, set(todo))
     srch = _Search(pag, seed, cfg, library, st)
     srch.failed = {o.id: o.reason or "" for o in scene.objects.values() if not o.placed}
     done: dict[str, str] = {}
