@@ -32,6 +32,9 @@ import trimesh
 
 from ..assets.model import Asset, Material
 from ..errors import DependencyError
+from ..geometry.frames import cross_rows
+from ..geometry.meshes import MeshArrays
+from ..geometry.surfaces import unit_normals
 from ..scene.model import RoomShell, Scene
 from . import shaders
 from .camera import Camera, asset_camera, look_at
@@ -51,6 +54,9 @@ __all__ = [
 
 #: Debian packages that provide headless OpenGL through EGL (Mesa's llvmpipe works without GPU).
 SYSTEM_PACKAGES = ("libegl1", "libegl-mesa0", "libgl1-mesa-dri")
+
+#: A mesh as the renderer reads it: ``vertices`` (V, 3) and ``faces`` (F, 3).
+_Mesh = trimesh.Trimesh | MeshArrays
 
 _SMOOTH_COS = float(np.cos(np.deg2rad(35.0)))
 _FLOATS_PER_VERTEX = 12
@@ -158,11 +164,41 @@ def _closed(mesh: trimesh.Trimesh) -> bool:
     return bool(np.einsum("ij,ij->", t[:, 0], np.cross(t[:, 1], t[:, 2])) > 0.0)
 
 
-def _vertex_data(items: list[tuple[trimesh.Trimesh, Material]]) -> tuple[np.ndarray, int]:
+def _closed_parts(F: np.ndarray, tri: np.ndarray, face_part: np.ndarray, n_parts: int,
+                  n_vertices: int) -> np.ndarray:
+    """(P,) bool: :func:`_closed` of every part at once.
+
+    ``F`` (N, 3) are the faces of all parts with their vertex indices offset into one array of
+    ``n_vertices`` vertices (so no two parts share an edge), ``tri`` (N, 3, 3) their corners
+    and ``face_part`` (N,) the part of each face.
+    """
+    edges = F[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    edge_part = np.repeat(face_part, 3)
+    lo, hi = np.minimum(edges[:, 0], edges[:, 1]), np.maximum(edges[:, 0], edges[:, 1])
+    _, inv, counts = np.unique(lo * n_vertices + hi, return_inverse=True, return_counts=True)
+    bad = counts[inv] != 2  # an edge not shared by exactly two faces: open or non-manifold
+    _, inv, counts = np.unique(edges[:, 0] * n_vertices + edges[:, 1], return_inverse=True,
+                               return_counts=True)
+    bad |= counts[inv] > 1  # a directed edge twice: inconsistent winding
+    closed = np.bincount(edge_part[bad], minlength=n_parts) == 0
+    for k in np.flatnonzero(closed):  # outward: positive signed volume, per part as _closed
+        t = tri[face_part == k]
+        closed[k] = bool(np.einsum("ij,ij->", t[:, 0], cross_rows(t[:, 1], t[:, 2])) > 0.0)
+    return closed
+
+
+def _vertex_data(items: list[tuple[_Mesh, Material]]) -> tuple[np.ndarray, int]:
     """Interleaved vertices, one per triangle corner, closed meshes first.
 
+    ``items`` are meshes (``trimesh.Trimesh`` or the ``MeshArrays`` a loaded asset's parts
+    hold) with their materials.
+
     Corners keep the smooth vertex normal where it is within 35 degrees of the face normal,
-    else take the face normal, so boxes have hard edges and lathed shapes look round.
+    else take the face normal, so boxes have hard edges and lathed shapes look round. Face
+    normals, angle-weighted vertex normals and closedness are what trimesh's
+    ``face_normals``, ``vertex_normals`` and :func:`_closed` give per mesh, computed for all
+    meshes in one pass (an asset's parts are a few dozen small meshes: per-mesh calls cost
+    more than the arithmetic) and without filling the meshes' caches.
 
     Returns
     -------
@@ -171,35 +207,67 @@ def _vertex_data(items: list[tuple[trimesh.Trimesh, Material]]) -> tuple[np.ndar
     n_closed : int
         The first ``n_closed`` vertices belong to closed meshes (drawn with back-face culling).
     """
-    closed, open_ = [], []
+    keep, faces, verts, given = [], [], [], []
+    offset = 0
     for k, (mesh, mat) in enumerate(items):
-        faces = np.asarray(mesh.faces)
-        if len(faces) == 0:
+        f = np.asarray(mesh.faces, np.int64)
+        if len(f) == 0:
             continue
-        v = np.asarray(mesh.vertices, float)[faces].reshape(-1, 3)
-        fn = np.repeat(np.asarray(mesh.face_normals, float), 3, axis=0)
-        vn = np.asarray(mesh.vertex_normals, float)[faces].reshape(-1, 3)
-        smooth = np.einsum("ij,ij->i", fn, vn) > _SMOOTH_COS
-        n = np.where(smooth[:, None], vn, fn)
-        rgb = np.clip(np.asarray(mat.color[:3], float), 0.0, 1.0) ** 2.2
-        block = np.empty((len(v), _FLOATS_PER_VERTEX), np.float32)
-        block[:, 0:3] = v
-        block[:, 3:6] = n
-        block[:, 6:9] = rgb
-        block[:, 9] = mat.roughness
-        block[:, 10] = mat.metallic
-        block[:, 11] = k
-        (closed if _closed(mesh) else open_).append(block)
-    chunks = closed + open_
-    if not chunks:
+        v = np.asarray(mesh.vertices, np.float64)
+        if int(f.min()) < 0 or int(f.max()) >= len(v):
+            raise ValueError(f"mesh {k} has face indices outside its {len(v)} vertices")
+        keep.append((k, mat))
+        faces.append(f + offset)
+        verts.append(v)
+        # normals given to a trimesh (or carried through a transform) win, as in trimesh
+        cache = getattr(mesh, "_cache", None)
+        given.append(np.asarray(mesh.face_normals, np.float64)
+                     if cache is not None and "face_normals" in cache else None)
+        offset += len(v)
+    if not keep:
         return np.zeros((0, _FLOATS_PER_VERTEX), np.float32), 0
-    return np.concatenate(chunks), int(sum(len(c) for c in closed))
+    F = np.concatenate(faces)
+    V = np.concatenate(verts)
+    sizes = np.array([len(f) for f in faces])
+    face_part = np.repeat(np.arange(len(keep)), sizes)
+    tri = V[F]
+    e = tri[:, 1:, :] - tri[:, :2, :]  # the edges trimesh crosses, so the normals match it
+    fn = unit_normals(cross_rows(e[:, 0], e[:, 1]))
+    if any(g is not None for g in given):
+        starts = np.r_[0, np.cumsum(sizes)]
+        for j, g in enumerate(given):
+            if g is not None and g.shape == (sizes[j], 3):
+                fn[starts[j]:starts[j + 1]] = g
+    # angle-weighted vertex normals over the faces with a valid normal (trimesh's
+    # weighted_vertex_normals: the same products, summed per vertex in face order)
+    ok = (fn**2).sum(axis=1) > 0.5
+    ang = trimesh.triangles.angles(tri)[ok]
+    idx = F[ok].ravel()
+    contrib = ang.reshape(-1, 1) * np.repeat(fn[ok], 3, axis=0)
+    vn = np.stack([np.bincount(idx, weights=contrib[:, c], minlength=len(V))
+                   for c in range(3)], axis=1)
+    vn = trimesh.util.unitize(vn)
+    corner_fn = np.repeat(fn, 3, axis=0)
+    corner_vn = vn[F].reshape(-1, 3)
+    smooth = np.einsum("ij,ij->i", corner_fn, corner_vn) > _SMOOTH_COS
+    table = np.array([[*(np.clip(np.asarray(m.color[:3], float), 0.0, 1.0) ** 2.2),
+                       m.roughness, m.metallic, k] for k, m in keep], np.float64)
+    corner_part = np.repeat(face_part, 3)
+    data = np.empty((len(corner_part), _FLOATS_PER_VERTEX), np.float32)
+    data[:, 0:3] = tri.reshape(-1, 3)
+    data[:, 3:6] = np.where(smooth[:, None], corner_vn, corner_fn)
+    data[:, 6:12] = table[corner_part]
+    closed = _closed_parts(F, tri, face_part, len(keep), len(V))[corner_part]
+    n_closed = int(closed.sum())
+    if 0 < n_closed < len(data):
+        data = np.concatenate([data[closed], data[~closed]])  # parts keep their order
+    return data, n_closed
 
 
 class _GpuMesh:
     """One vertex buffer (all parts of an asset, or one shell element) and its three VAOs."""
 
-    def __init__(self, ctx, programs: dict, items: list[tuple[trimesh.Trimesh, Material]]):
+    def __init__(self, ctx, programs: dict, items: list[tuple[_Mesh, Material]]):
         data, self.n_closed = _vertex_data(items)
         self.n_parts = len(items)
         self.n_vertices = len(data)
@@ -398,7 +466,7 @@ class Renderer:
         p["u_shadow"].value = 0
 
     def _mesh(self, key: tuple, owner: object,
-              items: list[tuple[trimesh.Trimesh, Material]]) -> _GpuMesh:
+              items: list[tuple[_Mesh, Material]]) -> _GpuMesh:
         hit = self._meshes.get(key)
         if hit is not None and hit[0] is owner:
             self._meshes.move_to_end(key)
@@ -413,8 +481,9 @@ class Renderer:
         return gm
 
     def _asset_mesh(self, asset: Asset) -> _GpuMesh:
+        # the arrays a loaded part holds: no trimesh.Trimesh is made for drawing it
         return self._mesh(("asset", id(asset)), asset,
-                          [(p.mesh, p.material) for p in asset.parts])
+                          [(p.mesh_arrays, p.material) for p in asset.parts])
 
     def _shell_mesh(self, room: RoomShell, name: str) -> _GpuMesh:
         el = room.elements[name]
