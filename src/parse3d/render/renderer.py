@@ -310,6 +310,11 @@ class _Item:
     casts_shadow: bool
     element: str | None = None
 
+    def __post_init__(self) -> None:
+        # uniform bytes, made once per draw list however many views draw it
+        self.model_bytes = _mat_bytes(self.model)
+        self.normal_bytes = _mat_bytes(_normal_matrix(self.model))
+
 
 class _Targets:
     """Framebuffers of one image size."""
@@ -559,58 +564,78 @@ class Renderer:
         prog = self.programs["shadow"]
         prog["u_light_vp"].write(_mat_bytes(self._light_vp))
         for it in casters:
-            prog["u_model"].write(_mat_bytes(it.model))
+            prog["u_model"].write(it.model_bytes)
             it.mesh.vaos["shadow"].render()  # both sides: thin parts must still cast
         self._shadow_key = key
 
     # -- drawing --------------------------------------------------------------------------
-    def _draw(self, items: list[_Item], camera: Camera, *, color: bool,
-              shadows: bool) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+    def _begin(self) -> None:
+        self.ctx.enable(self.ctx.DEPTH_TEST)
+        self.ctx.disable(self.ctx.CULL_FACE)
+
+    def _draw_color(self, items: list[_Item], camera: Camera, *, shadows: bool) -> np.ndarray:
+        """The colour pass: (H, W, 3) uint8 sRGB."""
         W, H = camera.width, camera.height
         tg = self._target(W, H)
-        view, proj = camera.gl_view(), camera.gl_projection()
         ctx = self.ctx
-        ctx.enable(ctx.DEPTH_TEST)
-        ctx.disable(ctx.CULL_FACE)
-        drawn = [it for it in items if it.mesh.vbo is not None]
-        rgb = None
-        if color:
-            p = self.programs["color"]
-            bg = self.lighting.background
-            fbo = tg.msaa if self.samples else tg.resolve
-            fbo.use()
-            fbo.clear(bg[0], bg[1], bg[2], 1.0, depth=1.0)
-            p["u_view_proj"].write(_mat_bytes(proj @ view))
-            p["u_eye"].value = tuple(float(x) for x in camera.position)
-            p["u_ortho"].value = camera.orthographic
-            p["u_view_dir"].value = tuple(float(x) for x in camera.forward)
-            p["u_light_vp"].write(_mat_bytes(self._light_vp))
-            p["u_shadow_offset"].value = float(self._shadow_offset)
-            p["u_shadows"].value = bool(shadows)
-            self._shadow_tex.use(location=0)
-            for it in drawn:
-                p["u_model"].write(_mat_bytes(it.model))
-                p["u_normal_mat"].write(_mat_bytes(_normal_matrix(it.model)))
-                it.mesh.draw(ctx, "color")
-            if self.samples:
-                ctx.copy_framebuffer(tg.resolve, tg.msaa)
-            raw = tg.resolve.read(components=3, alignment=1)
-            rgb = np.frombuffer(raw, np.uint8).reshape(H, W, 3)[::-1].copy()
+        self._begin()
+        p = self.programs["color"]
+        bg = self.lighting.background
+        fbo = tg.msaa if self.samples else tg.resolve
+        fbo.use()
+        fbo.clear(bg[0], bg[1], bg[2], 1.0, depth=1.0)
+        p["u_view_proj"].write(_mat_bytes(camera.gl_projection() @ camera.gl_view()))
+        p["u_eye"].value = tuple(float(x) for x in camera.position)
+        p["u_ortho"].value = camera.orthographic
+        p["u_view_dir"].value = tuple(float(x) for x in camera.forward)
+        p["u_light_vp"].write(_mat_bytes(self._light_vp))
+        p["u_shadow_offset"].value = float(self._shadow_offset)
+        p["u_shadows"].value = bool(shadows)
+        self._shadow_tex.use(location=0)
+        for it in items:
+            if it.mesh.vbo is None:
+                continue
+            p["u_model"].write(it.model_bytes)
+            p["u_normal_mat"].write(it.normal_bytes)
+            it.mesh.draw(ctx, "color")
+        if self.samples:
+            ctx.copy_framebuffer(tg.resolve, tg.msaa)
+        raw = tg.resolve.read(components=3, alignment=1)
+        return np.frombuffer(raw, np.uint8).reshape(H, W, 3)[::-1].copy()
+
+    def _draw_ids(self, items: list[_Item], camera: Camera, *,
+                  normals: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+        """The id pass: (H, W, 4) float32 instance, part, depth (and, with ``normals``, the
+        (H, W, 4) normal attachment), rows from the top."""
+        W, H = camera.width, camera.height
+        tg = self._target(W, H)
+        ctx = self.ctx
+        self._begin()
         p = self.programs["ids"]
         tg.ids.use()
         tg.ids.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
-        p["u_view"].write(_mat_bytes(view))
-        p["u_proj"].write(_mat_bytes(proj))
-        for it in drawn:
-            p["u_model"].write(_mat_bytes(it.model))
-            p["u_normal_mat"].write(_mat_bytes(_normal_matrix(it.model)))
+        p["u_view"].write(_mat_bytes(camera.gl_view()))
+        p["u_proj"].write(_mat_bytes(camera.gl_projection()))
+        for it in items:
+            if it.mesh.vbo is None:
+                continue
+            p["u_model"].write(it.model_bytes)
+            p["u_normal_mat"].write(it.normal_bytes)
             p["u_instance"].value = float(it.instance)
             p["u_part_base"].value = float(it.part_base)
             it.mesh.draw(ctx, "ids")
         ids = np.frombuffer(tg.ids.read(components=4, attachment=0, dtype="f4", alignment=1),
                             np.float32).reshape(H, W, 4)[::-1]
+        if not normals:
+            return ids, None
         nrm = np.frombuffer(tg.ids.read(components=4, attachment=1, dtype="f4", alignment=1),
                             np.float32).reshape(H, W, 4)[::-1]
+        return ids, nrm
+
+    def _draw(self, items: list[_Item], camera: Camera, *, color: bool,
+              shadows: bool) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+        rgb = self._draw_color(items, camera, shadows=shadows) if color else None
+        ids, nrm = self._draw_ids(items, camera)
         return rgb, ids, nrm
 
     @staticmethod
@@ -658,20 +683,51 @@ class Renderer:
     def _render_scene(self, scene: Scene, camera: Camera, *, settled: bool | None, color: bool,
                       shadows: bool) -> RenderResult:
         items, instances, parts = self._scene_items(scene, settled)
-        items = [it for it in items
-                 if it.element is None or self._shell_visible(scene.room, it.element, camera)]
         if color and shadows:
-            fp = scene.room.footprint
-            lo = np.r_[fp.min(axis=0), 0.0]
-            hi = np.r_[fp.max(axis=0), scene.room.height]
-            obj_b = [o.world_bounds(settled) for o in scene.placed if o.asset is not None]
-            if obj_b:
-                ob = np.array(obj_b)
-                lo = np.minimum(lo, ob[:, 0].min(axis=0))
-                hi = np.maximum(hi, ob[:, 1].max(axis=0))
-            self._update_shadow(items, np.array([lo, hi]))
-        rgb, ids, nrm = self._draw(items, camera, color=color, shadows=shadows)
+            self._scene_shadow(scene, items, settled)
+        rgb, ids, nrm = self._draw(self._visible(scene, items, camera), camera, color=color,
+                                   shadows=shadows)
         return self._result(rgb, ids, nrm, camera, instances, parts)
+
+    def _visible(self, scene: Scene, items: list[_Item], camera: Camera) -> list[_Item]:
+        return [it for it in items
+                if it.element is None or self._shell_visible(scene.room, it.element, camera)]
+
+    def _scene_shadow(self, scene: Scene, items: list[_Item], settled: bool | None) -> None:
+        """The key light's shadow map over the room and every placed object."""
+        fp = scene.room.footprint
+        lo = np.r_[fp.min(axis=0), 0.0]
+        hi = np.r_[fp.max(axis=0), scene.room.height]
+        obj_b = [o.world_bounds(settled) for o in scene.placed if o.asset is not None]
+        if obj_b:
+            ob = np.array(obj_b)
+            lo = np.minimum(lo, ob[:, 0].min(axis=0))
+            hi = np.maximum(hi, ob[:, 1].max(axis=0))
+        self._update_shadow(items, np.array([lo, hi]))
+
+    def render_rgb(self, scene: Scene, camera: Camera, *, settled: bool | None = None,
+                   shadows: bool = True) -> np.ndarray:
+        """The colour image of one view, nothing else: (H, W, 3) uint8 sRGB, the same pixels
+        as ``render(scene, camera).rgb`` without the id, depth and normal pass (previews)."""
+        with self.ctx:
+            items, _, _ = self._scene_items(scene, settled)
+            if shadows:
+                self._scene_shadow(scene, items, settled)
+            return self._draw_color(self._visible(scene, items, camera), camera,
+                                    shadows=shadows)
+
+    def instance_masks(self, scene: Scene, cameras: list[Camera], *,
+                       settled: bool | None = None) -> list[np.ndarray]:
+        """The instance masks of several views of one scene, nothing else: (H, W) int32 each,
+        the same as ``render(scene, camera, color=False).instance``; the draw list is made
+        once for all of them (choosing a viewpoint among candidates)."""
+        with self.ctx:
+            items, _, _ = self._scene_items(scene, settled)
+            out = []
+            for cam in cameras:
+                ids, _ = self._draw_ids(self._visible(scene, items, cam), cam, normals=False)
+                out.append(np.rint(ids[..., 0]).astype(np.int32))
+        return out
 
     def render_asset(self, asset: Asset, camera: Camera, *, color: bool = True,
                      shadows: bool = True) -> RenderResult:
