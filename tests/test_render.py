@@ -285,6 +285,29 @@ def test_rgb_only_and_masks_only_equal_the_full_render(scene, renderer, sampled)
         np.testing.assert_array_equal(mask, small.instance)
 
 
+def test_view_culling_changes_no_pixel(scene, renderer, sampled, monkeypatch):
+    from parse3d.render import renderer as module
+
+    cams = [*sampled[:3], overview_camera(scene)]
+    culled = []
+    keep = module._in_view
+
+    def counted(items, camera):
+        out = keep(items, camera)
+        culled.append(sum(it.mesh.vbo is not None for it in items) - len(out))
+        return out
+
+    monkeypatch.setattr(module, "_in_view", counted)
+    with_cull = [renderer.render(scene, cam) for cam in cams]
+    assert sum(culled) > 0  # some views leave objects out
+    monkeypatch.setattr(module, "_in_view",
+                        lambda items, camera: [it for it in items if it.mesh.vbo is not None])
+    for cam, a in zip(cams, with_cull, strict=True):
+        b = renderer.render(scene, cam)
+        for name in ("rgb", "depth", "instance", "part", "normals"):
+            np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
+
+
 def test_vertex_data_matches_trimesh_per_mesh():
     from parse3d.render.renderer import _closed, _vertex_data
 

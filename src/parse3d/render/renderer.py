@@ -271,6 +271,11 @@ class _GpuMesh:
         data, self.n_closed = _vertex_data(items)
         self.n_parts = len(items)
         self.n_vertices = len(data)
+        # (8, 4) homogeneous corners of the vertices' box, for culling whole meshes per view
+        box = (np.array([data[:, :3].min(axis=0), data[:, :3].max(axis=0)], np.float64)
+               if len(data) else np.zeros((2, 3)))
+        self.corners = np.array([[x, y, z, 1.0] for x in box[:, 0] for y in box[:, 1]
+                                 for z in box[:, 2]])
         self.vbo = ctx.buffer(data.tobytes()) if len(data) else None
         if self.vbo is None:
             self.vaos = {}
@@ -311,9 +316,37 @@ class _Item:
     element: str | None = None
 
     def __post_init__(self) -> None:
-        # uniform bytes, made once per draw list however many views draw it
+        # uniform bytes and the world box corners, made once per draw list however many
+        # views draw it
         self.model_bytes = _mat_bytes(self.model)
         self.normal_bytes = _mat_bytes(_normal_matrix(self.model))
+        self.corners = self.mesh.corners @ np.asarray(self.model, np.float64).T
+
+
+#: Relative margin of the view-volume test: a mesh is skipped only when its box lies this
+#: far beyond one clip plane, so float32 rounding on the GPU can never make it touch a pixel.
+_CULL_MARGIN = 1e-3
+
+
+def _in_view(items: list[_Item], camera: Camera) -> list[_Item]:
+    """The items with geometry that may show in ``camera``'s view, in their order.
+
+    An item is left out when all eight corners of its world box lie beyond the same plane of
+    the clip volume (in homogeneous clip coordinates, so also behind the camera): then no
+    part of it can reach a pixel or the depth buffer, and the image is the same without it.
+    Drawing is per vertex on a CPU rasteriser, so what a corner camera has behind it costs
+    as much as what it sees.
+    """
+    live = [it for it in items if it.mesh.vbo is not None]
+    if not live:
+        return live
+    clip = np.stack([it.corners for it in live]) @ (camera.gl_projection()
+                                                    @ camera.gl_view()).T
+    w = clip[..., 3:4]
+    pad = _CULL_MARGIN * (np.abs(w) + 1e-3)
+    xyz = clip[..., :3]
+    out = ((xyz < -w - pad).all(axis=1) | (xyz > w + pad).all(axis=1)).any(axis=1)
+    return [it for it, o in zip(live, out, strict=True) if not o]
 
 
 class _Targets:
@@ -579,6 +612,7 @@ class Renderer:
         tg = self._target(W, H)
         ctx = self.ctx
         self._begin()
+        items = _in_view(items, camera)
         p = self.programs["color"]
         bg = self.lighting.background
         fbo = tg.msaa if self.samples else tg.resolve
@@ -611,6 +645,7 @@ class Renderer:
         tg = self._target(W, H)
         ctx = self.ctx
         self._begin()
+        items = _in_view(items, camera)
         p = self.programs["ids"]
         tg.ids.use()
         tg.ids.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
