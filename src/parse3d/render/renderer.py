@@ -286,6 +286,7 @@ class _GpuMesh:
             "ids": ctx.vertex_array(programs["ids"], [
                 (self.vbo, "3f 3f 20x 1f", "in_pos", "in_normal", "in_part")]),
             "shadow": ctx.vertex_array(programs["shadow"], [(self.vbo, "3f 36x", "in_pos")]),
+            "mask": ctx.vertex_array(programs["mask"], [(self.vbo, "3f 36x", "in_pos")]),
         }
 
     def draw(self, ctx, kind: str) -> None:
@@ -473,6 +474,8 @@ class Renderer:
             "color": self.ctx.program(vertex_shader=shaders.COLOR_VS,
                                       fragment_shader=shaders.COLOR_FS),
             "ids": self.ctx.program(vertex_shader=shaders.IDS_VS, fragment_shader=shaders.IDS_FS),
+            "mask": self.ctx.program(vertex_shader=shaders.MASK_VS,
+                                     fragment_shader=shaders.MASK_FS),
         }
         # owner object (kept alive so its id() stays unique) and its uploaded mesh
         self._meshes: OrderedDict[tuple, tuple[object, _GpuMesh]] = OrderedDict()
@@ -638,15 +641,17 @@ class Renderer:
         return np.frombuffer(raw, np.uint8).reshape(H, W, 3)[::-1].copy()
 
     def _draw_ids(self, items: list[_Item], camera: Camera, *,
-                  normals: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
-        """The id pass: (H, W, 4) float32 instance, part, depth (and, with ``normals``, the
-        (H, W, 4) normal attachment), rows from the top."""
+                  full: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+        """The id pass: (H, W, 4) float32 instance, part, depth and the (H, W, 4) normal
+        attachment, rows from the top; without ``full`` the instance channel alone is drawn
+        (the others zero) and no normals are read."""
         W, H = camera.width, camera.height
         tg = self._target(W, H)
         ctx = self.ctx
         self._begin()
         items = _in_view(items, camera)
-        p = self.programs["ids"]
+        kind = "ids" if full else "mask"
+        p = self.programs[kind]
         tg.ids.use()
         tg.ids.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
         p["u_view"].write(_mat_bytes(camera.gl_view()))
@@ -655,13 +660,14 @@ class Renderer:
             if it.mesh.vbo is None:
                 continue
             p["u_model"].write(it.model_bytes)
-            p["u_normal_mat"].write(it.normal_bytes)
             p["u_instance"].value = float(it.instance)
-            p["u_part_base"].value = float(it.part_base)
-            it.mesh.draw(ctx, "ids")
+            if full:
+                p["u_normal_mat"].write(it.normal_bytes)
+                p["u_part_base"].value = float(it.part_base)
+            it.mesh.draw(ctx, kind)
         ids = np.frombuffer(tg.ids.read(components=4, attachment=0, dtype="f4", alignment=1),
                             np.float32).reshape(H, W, 4)[::-1]
-        if not normals:
+        if not full:
             return ids, None
         nrm = np.frombuffer(tg.ids.read(components=4, attachment=1, dtype="f4", alignment=1),
                             np.float32).reshape(H, W, 4)[::-1]
@@ -760,7 +766,7 @@ class Renderer:
             items, _, _ = self._scene_items(scene, settled)
             out = []
             for cam in cameras:
-                ids, _ = self._draw_ids(self._visible(scene, items, cam), cam, normals=False)
+                ids, _ = self._draw_ids(self._visible(scene, items, cam), cam, full=False)
                 out.append(np.rint(ids[..., 0]).astype(np.int32))
         return out
 
