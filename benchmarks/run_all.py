@@ -20,6 +20,7 @@ BENCHES = {
     "physics": [],
     "settle": ["--scenes", "4", "--rounds", "1"],
     "render": [],
+    "preview": ["--scenes", "2", "--rounds", "1"],
     "dataset": ["--scenes", "12"],
     "robustness": ["--quick"],
     "export": ["--repeats", "1"],

@@ -15,6 +15,7 @@ from PIL import Image
 from shapely.geometry import Point, Polygon
 
 from parse3d.assets import registry
+from parse3d.assets.model import Material
 from parse3d.geometry.frames import rot_z
 from parse3d.pag.model import PAG, Room
 from parse3d.render import (
@@ -271,6 +272,73 @@ def test_rendering_is_deterministic(scene, renderer, sampled):
         np.testing.assert_array_equal(a.part, other.part)
         np.testing.assert_array_equal(a.depth, other.depth)
         np.testing.assert_array_equal(a.rgb, other.rgb)
+
+
+def test_rgb_only_and_masks_only_equal_the_full_render(scene, renderer, sampled):
+    cams = sampled[:3]
+    masks = renderer.instance_masks(scene, [c.resized(96, 72) for c in cams])
+    for cam, mask in zip(cams, masks, strict=True):
+        full = renderer.render(scene, cam)
+        np.testing.assert_array_equal(renderer.render_rgb(scene, cam), full.rgb)
+        small = renderer.render(scene, cam.resized(96, 72), color=False, shadows=False)
+        assert mask.dtype == np.int32
+        np.testing.assert_array_equal(mask, small.instance)
+
+
+def test_view_culling_changes_no_pixel(scene, renderer, sampled, monkeypatch):
+    from parse3d.render import renderer as module
+
+    cams = [*sampled[:3], overview_camera(scene)]
+    culled = []
+    keep = module._in_view
+
+    def counted(items, camera):
+        out = keep(items, camera)
+        culled.append(sum(it.mesh.vbo is not None for it in items) - len(out))
+        return out
+
+    monkeypatch.setattr(module, "_in_view", counted)
+    with_cull = [renderer.render(scene, cam) for cam in cams]
+    assert sum(culled) > 0  # some views leave objects out
+    monkeypatch.setattr(module, "_in_view",
+                        lambda items, camera: [it for it in items if it.mesh.vbo is not None])
+    for cam, a in zip(cams, with_cull, strict=True):
+        b = renderer.render(scene, cam)
+        for name in ("rgb", "depth", "instance", "part", "normals"):
+            np.testing.assert_array_equal(getattr(a, name), getattr(b, name))
+
+
+def test_vertex_data_matches_trimesh_per_mesh():
+    from parse3d.render.renderer import _closed, _vertex_data
+
+    box = trimesh.creation.box((0.4, 0.3, 0.2))
+    sphere = trimesh.creation.icosphere(2)
+    sphere.apply_translation([1.0, 0.0, 0.0])
+    card = trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.2]],
+                           [[0, 1, 2], [2, 1, 3]], process=False)
+    empty = trimesh.Trimesh(np.zeros((0, 3)), np.zeros((0, 3), int), process=False)
+    mat = Material((0.5, 0.2, 0.9, 1.0), 0.3, 0.1, "m")
+    meshes = [card, box, empty, sphere]
+    data, n_closed = _vertex_data([(m, mat) for m in meshes])
+    want = {}
+    for k, m in enumerate(meshes):
+        if len(m.faces) == 0:
+            continue
+        m = m.copy()
+        fn = np.repeat(m.face_normals, 3, axis=0)
+        vn = m.vertex_normals[m.faces].reshape(-1, 3)
+        smooth = np.einsum("ij,ij->i", fn, vn) > np.cos(np.deg2rad(35.0))
+        want[k] = (m.vertices[m.faces].reshape(-1, 3), np.where(smooth[:, None], vn, fn))
+    order = [k for k in want if _closed(meshes[k])] + [k for k in want if not _closed(meshes[k])]
+    assert order == [1, 3, 0]  # closed meshes first, each in its own order
+    assert n_closed == sum(len(want[k][0]) for k in (1, 3))
+    np.testing.assert_array_equal(data[:, 11], np.concatenate(
+        [np.full(len(want[k][0]), k) for k in order]))
+    for col, which in ((slice(0, 3), 0), (slice(3, 6), 1)):
+        np.testing.assert_array_equal(
+            data[:, col], np.concatenate([want[k][which] for k in order]).astype(np.float32))
+    np.testing.assert_allclose(data[:, 6:9], np.tile(np.array(mat.color[:3]) ** 2.2,
+                                                     (len(data), 1)), rtol=1e-6)
 
 
 # ---------------------------------------------------------------------------------------------

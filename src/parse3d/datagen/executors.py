@@ -73,8 +73,14 @@ def _process_state(config: BuildConfig) -> tuple[Any, Any]:
         _PROCESS["key"] = key
         _PROCESS["source"] = make_source(config)
     if "renderer" not in _PROCESS:
+        import os
+
         from ..errors import DependencyError
         from ..render import Renderer
+
+        # one rasteriser thread (unless the user chose): the workers already keep every core
+        # busy, and Mesa's llvmpipe threads then only add hand-overs between them
+        os.environ.setdefault("LP_NUM_THREADS", "1")
 
         try:
             _PROCESS["renderer"] = Renderer()

@@ -52,8 +52,13 @@ def _round(x, n: int = 7) -> list[float]:
     return [round(float(v), n) for v in np.asarray(x).ravel()]
 
 
+_I4 = np.eye(4)
+
+
 def _trs(T: np.ndarray) -> dict[str, Any]:
     """glTF ``translation``/``rotation``/``scale`` of a rotation * uniform scale + translation."""
+    if np.array_equal(T, _I4):  # most parts sit still on their object's base link
+        return {}
     A = T[:3, :3]
     s = float(np.cbrt(np.linalg.det(A)))
     out: dict[str, Any] = {}

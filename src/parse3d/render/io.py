@@ -123,12 +123,13 @@ def preview_camera(scene: Scene, *, width: int = 640, height: int = 480,
     r = renderer if renderer is not None else default_renderer()
     cands = overview_candidates(scene, width=width, height=height, settled=settled)
     ids = {o.id for o in scene.placed}
+    instances, _ = scene_id_tables(scene)
+    masks = r.instance_masks(scene, [cam.resized(*_PROBE) for cam in cands[:_PROBES]],
+                             settled=settled)
     best, best_key = cands[0], None
-    for k, cam in enumerate(cands[:_PROBES]):
-        res = r.render(scene, cam.resized(*_PROBE), settled=settled, color=False,
-                       shadows=False)
-        vals, counts = np.unique(res.instance, return_counts=True)
-        share = {res.instances.get(int(v)): n / res.instance.size
+    for k, (cam, mask) in enumerate(zip(cands, masks, strict=False)):
+        vals, counts = np.unique(mask, return_counts=True)
+        share = {instances.get(int(v)): n / mask.size
                  for v, n in zip(vals, counts, strict=True) if v > 0}
         objs = [s for name, s in share.items() if name in ids]
         top = max(objs, default=0.0)
@@ -139,17 +140,22 @@ def preview_camera(scene: Scene, *, width: int = 640, height: int = 480,
     return best
 
 
+#: zlib level of the preview PNG: level 1 encodes a 640x480 preview in about two thirds of
+#: the default level's (6) time for a file about a sixth larger; the pixels are the same.
+PREVIEW_PNG_LEVEL = 1
+
+
 def save_preview(scene: Scene, path: str | Path, *, width: int = 640, height: int = 480,
                  settled: bool | None = None, renderer: Renderer | None = None) -> Path:
     """Render the overview view (:func:`preview_camera`) of ``scene`` to a PNG at ``path``."""
     if width < 1 or height < 1:
         raise InputError(f"preview size must be positive, got {width}x{height}")
     r = renderer if renderer is not None else default_renderer()
-    res = r.render(scene, preview_camera(scene, width=width, height=height, settled=settled,
-                                         renderer=r), settled=settled)
+    cam = preview_camera(scene, width=width, height=height, settled=settled, renderer=r)
+    rgb = r.render_rgb(scene, cam, settled=settled)
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    Image.fromarray(res.rgb).save(path)
+    Image.fromarray(rgb).save(path, compress_level=PREVIEW_PNG_LEVEL)
     return path
 
 

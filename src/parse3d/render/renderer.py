@@ -32,6 +32,9 @@ import trimesh
 
 from ..assets.model import Asset, Material
 from ..errors import DependencyError
+from ..geometry.frames import cross_rows
+from ..geometry.meshes import MeshArrays
+from ..geometry.surfaces import unit_normals
 from ..scene.model import RoomShell, Scene
 from . import shaders
 from .camera import Camera, asset_camera, look_at
@@ -51,6 +54,9 @@ __all__ = [
 
 #: Debian packages that provide headless OpenGL through EGL (Mesa's llvmpipe works without GPU).
 SYSTEM_PACKAGES = ("libegl1", "libegl-mesa0", "libgl1-mesa-dri")
+
+#: A mesh as the renderer reads it: ``vertices`` (V, 3) and ``faces`` (F, 3).
+_Mesh = trimesh.Trimesh | MeshArrays
 
 _SMOOTH_COS = float(np.cos(np.deg2rad(35.0)))
 _FLOATS_PER_VERTEX = 12
@@ -158,11 +164,41 @@ def _closed(mesh: trimesh.Trimesh) -> bool:
     return bool(np.einsum("ij,ij->", t[:, 0], np.cross(t[:, 1], t[:, 2])) > 0.0)
 
 
-def _vertex_data(items: list[tuple[trimesh.Trimesh, Material]]) -> tuple[np.ndarray, int]:
+def _closed_parts(F: np.ndarray, tri: np.ndarray, face_part: np.ndarray, n_parts: int,
+                  n_vertices: int) -> np.ndarray:
+    """(P,) bool: :func:`_closed` of every part at once.
+
+    ``F`` (N, 3) are the faces of all parts with their vertex indices offset into one array of
+    ``n_vertices`` vertices (so no two parts share an edge), ``tri`` (N, 3, 3) their corners
+    and ``face_part`` (N,) the part of each face.
+    """
+    edges = F[:, [0, 1, 1, 2, 2, 0]].reshape(-1, 2)
+    edge_part = np.repeat(face_part, 3)
+    lo, hi = np.minimum(edges[:, 0], edges[:, 1]), np.maximum(edges[:, 0], edges[:, 1])
+    _, inv, counts = np.unique(lo * n_vertices + hi, return_inverse=True, return_counts=True)
+    bad = counts[inv] != 2  # an edge not shared by exactly two faces: open or non-manifold
+    _, inv, counts = np.unique(edges[:, 0] * n_vertices + edges[:, 1], return_inverse=True,
+                               return_counts=True)
+    bad |= counts[inv] > 1  # a directed edge twice: inconsistent winding
+    closed = np.bincount(edge_part[bad], minlength=n_parts) == 0
+    for k in np.flatnonzero(closed):  # outward: positive signed volume, per part as _closed
+        t = tri[face_part == k]
+        closed[k] = bool(np.einsum("ij,ij->", t[:, 0], cross_rows(t[:, 1], t[:, 2])) > 0.0)
+    return closed
+
+
+def _vertex_data(items: list[tuple[_Mesh, Material]]) -> tuple[np.ndarray, int]:
     """Interleaved vertices, one per triangle corner, closed meshes first.
 
+    ``items`` are meshes (``trimesh.Trimesh`` or the ``MeshArrays`` a loaded asset's parts
+    hold) with their materials.
+
     Corners keep the smooth vertex normal where it is within 35 degrees of the face normal,
-    else take the face normal, so boxes have hard edges and lathed shapes look round.
+    else take the face normal, so boxes have hard edges and lathed shapes look round. Face
+    normals, angle-weighted vertex normals and closedness are what trimesh's
+    ``face_normals``, ``vertex_normals`` and :func:`_closed` give per mesh, computed for all
+    meshes in one pass (an asset's parts are a few dozen small meshes: per-mesh calls cost
+    more than the arithmetic) and without filling the meshes' caches.
 
     Returns
     -------
@@ -171,38 +207,75 @@ def _vertex_data(items: list[tuple[trimesh.Trimesh, Material]]) -> tuple[np.ndar
     n_closed : int
         The first ``n_closed`` vertices belong to closed meshes (drawn with back-face culling).
     """
-    closed, open_ = [], []
+    keep, faces, verts, given = [], [], [], []
+    offset = 0
     for k, (mesh, mat) in enumerate(items):
-        faces = np.asarray(mesh.faces)
-        if len(faces) == 0:
+        f = np.asarray(mesh.faces, np.int64)
+        if len(f) == 0:
             continue
-        v = np.asarray(mesh.vertices, float)[faces].reshape(-1, 3)
-        fn = np.repeat(np.asarray(mesh.face_normals, float), 3, axis=0)
-        vn = np.asarray(mesh.vertex_normals, float)[faces].reshape(-1, 3)
-        smooth = np.einsum("ij,ij->i", fn, vn) > _SMOOTH_COS
-        n = np.where(smooth[:, None], vn, fn)
-        rgb = np.clip(np.asarray(mat.color[:3], float), 0.0, 1.0) ** 2.2
-        block = np.empty((len(v), _FLOATS_PER_VERTEX), np.float32)
-        block[:, 0:3] = v
-        block[:, 3:6] = n
-        block[:, 6:9] = rgb
-        block[:, 9] = mat.roughness
-        block[:, 10] = mat.metallic
-        block[:, 11] = k
-        (closed if _closed(mesh) else open_).append(block)
-    chunks = closed + open_
-    if not chunks:
+        v = np.asarray(mesh.vertices, np.float64)
+        if int(f.min()) < 0 or int(f.max()) >= len(v):
+            raise ValueError(f"mesh {k} has face indices outside its {len(v)} vertices")
+        keep.append((k, mat))
+        faces.append(f + offset)
+        verts.append(v)
+        # normals given to a trimesh (or carried through a transform) win, as in trimesh
+        cache = getattr(mesh, "_cache", None)
+        given.append(np.asarray(mesh.face_normals, np.float64)
+                     if cache is not None and "face_normals" in cache else None)
+        offset += len(v)
+    if not keep:
         return np.zeros((0, _FLOATS_PER_VERTEX), np.float32), 0
-    return np.concatenate(chunks), int(sum(len(c) for c in closed))
+    F = np.concatenate(faces)
+    V = np.concatenate(verts)
+    sizes = np.array([len(f) for f in faces])
+    face_part = np.repeat(np.arange(len(keep)), sizes)
+    tri = V[F]
+    e = tri[:, 1:, :] - tri[:, :2, :]  # the edges trimesh crosses, so the normals match it
+    fn = unit_normals(cross_rows(e[:, 0], e[:, 1]))
+    if any(g is not None for g in given):
+        starts = np.r_[0, np.cumsum(sizes)]
+        for j, g in enumerate(given):
+            if g is not None and g.shape == (sizes[j], 3):
+                fn[starts[j]:starts[j + 1]] = g
+    # angle-weighted vertex normals over the faces with a valid normal (trimesh's
+    # weighted_vertex_normals: the same products, summed per vertex in face order)
+    ok = (fn**2).sum(axis=1) > 0.5
+    ang = trimesh.triangles.angles(tri)[ok]
+    idx = F[ok].ravel()
+    contrib = ang.reshape(-1, 1) * np.repeat(fn[ok], 3, axis=0)
+    vn = np.stack([np.bincount(idx, weights=contrib[:, c], minlength=len(V))
+                   for c in range(3)], axis=1)
+    vn = trimesh.util.unitize(vn)
+    corner_fn = np.repeat(fn, 3, axis=0)
+    corner_vn = vn[F].reshape(-1, 3)
+    smooth = np.einsum("ij,ij->i", corner_fn, corner_vn) > _SMOOTH_COS
+    table = np.array([[*(np.clip(np.asarray(m.color[:3], float), 0.0, 1.0) ** 2.2),
+                       m.roughness, m.metallic, k] for k, m in keep], np.float64)
+    corner_part = np.repeat(face_part, 3)
+    data = np.empty((len(corner_part), _FLOATS_PER_VERTEX), np.float32)
+    data[:, 0:3] = tri.reshape(-1, 3)
+    data[:, 3:6] = np.where(smooth[:, None], corner_vn, corner_fn)
+    data[:, 6:12] = table[corner_part]
+    closed = _closed_parts(F, tri, face_part, len(keep), len(V))[corner_part]
+    n_closed = int(closed.sum())
+    if 0 < n_closed < len(data):
+        data = np.concatenate([data[closed], data[~closed]])  # parts keep their order
+    return data, n_closed
 
 
 class _GpuMesh:
     """One vertex buffer (all parts of an asset, or one shell element) and its three VAOs."""
 
-    def __init__(self, ctx, programs: dict, items: list[tuple[trimesh.Trimesh, Material]]):
+    def __init__(self, ctx, programs: dict, items: list[tuple[_Mesh, Material]]):
         data, self.n_closed = _vertex_data(items)
         self.n_parts = len(items)
         self.n_vertices = len(data)
+        # (8, 4) homogeneous corners of the vertices' box, for culling whole meshes per view
+        box = (np.array([data[:, :3].min(axis=0), data[:, :3].max(axis=0)], np.float64)
+               if len(data) else np.zeros((2, 3)))
+        self.corners = np.array([[x, y, z, 1.0] for x in box[:, 0] for y in box[:, 1]
+                                 for z in box[:, 2]])
         self.vbo = ctx.buffer(data.tobytes()) if len(data) else None
         if self.vbo is None:
             self.vaos = {}
@@ -213,6 +286,7 @@ class _GpuMesh:
             "ids": ctx.vertex_array(programs["ids"], [
                 (self.vbo, "3f 3f 20x 1f", "in_pos", "in_normal", "in_part")]),
             "shadow": ctx.vertex_array(programs["shadow"], [(self.vbo, "3f 36x", "in_pos")]),
+            "mask": ctx.vertex_array(programs["mask"], [(self.vbo, "3f 36x", "in_pos")]),
         }
 
     def draw(self, ctx, kind: str) -> None:
@@ -241,6 +315,39 @@ class _Item:
     part_base: int
     casts_shadow: bool
     element: str | None = None
+
+    def __post_init__(self) -> None:
+        # uniform bytes and the world box corners, made once per draw list however many
+        # views draw it
+        self.model_bytes = _mat_bytes(self.model)
+        self.normal_bytes = _mat_bytes(_normal_matrix(self.model))
+        self.corners = self.mesh.corners @ np.asarray(self.model, np.float64).T
+
+
+#: Relative margin of the view-volume test: a mesh is skipped only when its box lies this
+#: far beyond one clip plane, so float32 rounding on the GPU can never make it touch a pixel.
+_CULL_MARGIN = 1e-3
+
+
+def _in_view(items: list[_Item], camera: Camera) -> list[_Item]:
+    """The items with geometry that may show in ``camera``'s view, in their order.
+
+    An item is left out when all eight corners of its world box lie beyond the same plane of
+    the clip volume (in homogeneous clip coordinates, so also behind the camera): then no
+    part of it can reach a pixel or the depth buffer, and the image is the same without it.
+    Drawing is per vertex on a CPU rasteriser, so what a corner camera has behind it costs
+    as much as what it sees.
+    """
+    live = [it for it in items if it.mesh.vbo is not None]
+    if not live:
+        return live
+    clip = np.stack([it.corners for it in live]) @ (camera.gl_projection()
+                                                    @ camera.gl_view()).T
+    w = clip[..., 3:4]
+    pad = _CULL_MARGIN * (np.abs(w) + 1e-3)
+    xyz = clip[..., :3]
+    out = ((xyz < -w - pad).all(axis=1) | (xyz > w + pad).all(axis=1)).any(axis=1)
+    return [it for it, o in zip(live, out, strict=True) if not o]
 
 
 class _Targets:
@@ -367,6 +474,8 @@ class Renderer:
             "color": self.ctx.program(vertex_shader=shaders.COLOR_VS,
                                       fragment_shader=shaders.COLOR_FS),
             "ids": self.ctx.program(vertex_shader=shaders.IDS_VS, fragment_shader=shaders.IDS_FS),
+            "mask": self.ctx.program(vertex_shader=shaders.MASK_VS,
+                                     fragment_shader=shaders.MASK_FS),
         }
         # owner object (kept alive so its id() stays unique) and its uploaded mesh
         self._meshes: OrderedDict[tuple, tuple[object, _GpuMesh]] = OrderedDict()
@@ -398,7 +507,7 @@ class Renderer:
         p["u_shadow"].value = 0
 
     def _mesh(self, key: tuple, owner: object,
-              items: list[tuple[trimesh.Trimesh, Material]]) -> _GpuMesh:
+              items: list[tuple[_Mesh, Material]]) -> _GpuMesh:
         hit = self._meshes.get(key)
         if hit is not None and hit[0] is owner:
             self._meshes.move_to_end(key)
@@ -413,8 +522,9 @@ class Renderer:
         return gm
 
     def _asset_mesh(self, asset: Asset) -> _GpuMesh:
+        # the arrays a loaded part holds: no trimesh.Trimesh is made for drawing it
         return self._mesh(("asset", id(asset)), asset,
-                          [(p.mesh, p.material) for p in asset.parts])
+                          [(p.mesh_arrays, p.material) for p in asset.parts])
 
     def _shell_mesh(self, room: RoomShell, name: str) -> _GpuMesh:
         el = room.elements[name]
@@ -490,58 +600,83 @@ class Renderer:
         prog = self.programs["shadow"]
         prog["u_light_vp"].write(_mat_bytes(self._light_vp))
         for it in casters:
-            prog["u_model"].write(_mat_bytes(it.model))
+            prog["u_model"].write(it.model_bytes)
             it.mesh.vaos["shadow"].render()  # both sides: thin parts must still cast
         self._shadow_key = key
 
     # -- drawing --------------------------------------------------------------------------
-    def _draw(self, items: list[_Item], camera: Camera, *, color: bool,
-              shadows: bool) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+    def _begin(self) -> None:
+        self.ctx.enable(self.ctx.DEPTH_TEST)
+        self.ctx.disable(self.ctx.CULL_FACE)
+
+    def _draw_color(self, items: list[_Item], camera: Camera, *, shadows: bool) -> np.ndarray:
+        """The colour pass: (H, W, 3) uint8 sRGB."""
         W, H = camera.width, camera.height
         tg = self._target(W, H)
-        view, proj = camera.gl_view(), camera.gl_projection()
         ctx = self.ctx
-        ctx.enable(ctx.DEPTH_TEST)
-        ctx.disable(ctx.CULL_FACE)
-        drawn = [it for it in items if it.mesh.vbo is not None]
-        rgb = None
-        if color:
-            p = self.programs["color"]
-            bg = self.lighting.background
-            fbo = tg.msaa if self.samples else tg.resolve
-            fbo.use()
-            fbo.clear(bg[0], bg[1], bg[2], 1.0, depth=1.0)
-            p["u_view_proj"].write(_mat_bytes(proj @ view))
-            p["u_eye"].value = tuple(float(x) for x in camera.position)
-            p["u_ortho"].value = camera.orthographic
-            p["u_view_dir"].value = tuple(float(x) for x in camera.forward)
-            p["u_light_vp"].write(_mat_bytes(self._light_vp))
-            p["u_shadow_offset"].value = float(self._shadow_offset)
-            p["u_shadows"].value = bool(shadows)
-            self._shadow_tex.use(location=0)
-            for it in drawn:
-                p["u_model"].write(_mat_bytes(it.model))
-                p["u_normal_mat"].write(_mat_bytes(_normal_matrix(it.model)))
-                it.mesh.draw(ctx, "color")
-            if self.samples:
-                ctx.copy_framebuffer(tg.resolve, tg.msaa)
-            raw = tg.resolve.read(components=3, alignment=1)
-            rgb = np.frombuffer(raw, np.uint8).reshape(H, W, 3)[::-1].copy()
-        p = self.programs["ids"]
+        self._begin()
+        items = _in_view(items, camera)
+        p = self.programs["color"]
+        bg = self.lighting.background
+        fbo = tg.msaa if self.samples else tg.resolve
+        fbo.use()
+        fbo.clear(bg[0], bg[1], bg[2], 1.0, depth=1.0)
+        p["u_view_proj"].write(_mat_bytes(camera.gl_projection() @ camera.gl_view()))
+        p["u_eye"].value = tuple(float(x) for x in camera.position)
+        p["u_ortho"].value = camera.orthographic
+        p["u_view_dir"].value = tuple(float(x) for x in camera.forward)
+        p["u_light_vp"].write(_mat_bytes(self._light_vp))
+        p["u_shadow_offset"].value = float(self._shadow_offset)
+        p["u_shadows"].value = bool(shadows)
+        self._shadow_tex.use(location=0)
+        for it in items:
+            if it.mesh.vbo is None:
+                continue
+            p["u_model"].write(it.model_bytes)
+            p["u_normal_mat"].write(it.normal_bytes)
+            it.mesh.draw(ctx, "color")
+        if self.samples:
+            ctx.copy_framebuffer(tg.resolve, tg.msaa)
+        raw = tg.resolve.read(components=3, alignment=1)
+        return np.frombuffer(raw, np.uint8).reshape(H, W, 3)[::-1].copy()
+
+    def _draw_ids(self, items: list[_Item], camera: Camera, *,
+                  full: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+        """The id pass: (H, W, 4) float32 instance, part, depth and the (H, W, 4) normal
+        attachment, rows from the top; without ``full`` the instance channel alone is drawn
+        (the others zero) and no normals are read."""
+        W, H = camera.width, camera.height
+        tg = self._target(W, H)
+        ctx = self.ctx
+        self._begin()
+        items = _in_view(items, camera)
+        kind = "ids" if full else "mask"
+        p = self.programs[kind]
         tg.ids.use()
         tg.ids.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
-        p["u_view"].write(_mat_bytes(view))
-        p["u_proj"].write(_mat_bytes(proj))
-        for it in drawn:
-            p["u_model"].write(_mat_bytes(it.model))
-            p["u_normal_mat"].write(_mat_bytes(_normal_matrix(it.model)))
+        p["u_view"].write(_mat_bytes(camera.gl_view()))
+        p["u_proj"].write(_mat_bytes(camera.gl_projection()))
+        for it in items:
+            if it.mesh.vbo is None:
+                continue
+            p["u_model"].write(it.model_bytes)
             p["u_instance"].value = float(it.instance)
-            p["u_part_base"].value = float(it.part_base)
-            it.mesh.draw(ctx, "ids")
+            if full:
+                p["u_normal_mat"].write(it.normal_bytes)
+                p["u_part_base"].value = float(it.part_base)
+            it.mesh.draw(ctx, kind)
         ids = np.frombuffer(tg.ids.read(components=4, attachment=0, dtype="f4", alignment=1),
                             np.float32).reshape(H, W, 4)[::-1]
+        if not full:
+            return ids, None
         nrm = np.frombuffer(tg.ids.read(components=4, attachment=1, dtype="f4", alignment=1),
                             np.float32).reshape(H, W, 4)[::-1]
+        return ids, nrm
+
+    def _draw(self, items: list[_Item], camera: Camera, *, color: bool,
+              shadows: bool) -> tuple[np.ndarray | None, np.ndarray, np.ndarray]:
+        rgb = self._draw_color(items, camera, shadows=shadows) if color else None
+        ids, nrm = self._draw_ids(items, camera)
         return rgb, ids, nrm
 
     @staticmethod
@@ -589,20 +724,51 @@ class Renderer:
     def _render_scene(self, scene: Scene, camera: Camera, *, settled: bool | None, color: bool,
                       shadows: bool) -> RenderResult:
         items, instances, parts = self._scene_items(scene, settled)
-        items = [it for it in items
-                 if it.element is None or self._shell_visible(scene.room, it.element, camera)]
         if color and shadows:
-            fp = scene.room.footprint
-            lo = np.r_[fp.min(axis=0), 0.0]
-            hi = np.r_[fp.max(axis=0), scene.room.height]
-            obj_b = [o.world_bounds(settled) for o in scene.placed if o.asset is not None]
-            if obj_b:
-                ob = np.array(obj_b)
-                lo = np.minimum(lo, ob[:, 0].min(axis=0))
-                hi = np.maximum(hi, ob[:, 1].max(axis=0))
-            self._update_shadow(items, np.array([lo, hi]))
-        rgb, ids, nrm = self._draw(items, camera, color=color, shadows=shadows)
+            self._scene_shadow(scene, items, settled)
+        rgb, ids, nrm = self._draw(self._visible(scene, items, camera), camera, color=color,
+                                   shadows=shadows)
         return self._result(rgb, ids, nrm, camera, instances, parts)
+
+    def _visible(self, scene: Scene, items: list[_Item], camera: Camera) -> list[_Item]:
+        return [it for it in items
+                if it.element is None or self._shell_visible(scene.room, it.element, camera)]
+
+    def _scene_shadow(self, scene: Scene, items: list[_Item], settled: bool | None) -> None:
+        """The key light's shadow map over the room and every placed object."""
+        fp = scene.room.footprint
+        lo = np.r_[fp.min(axis=0), 0.0]
+        hi = np.r_[fp.max(axis=0), scene.room.height]
+        obj_b = [o.world_bounds(settled) for o in scene.placed if o.asset is not None]
+        if obj_b:
+            ob = np.array(obj_b)
+            lo = np.minimum(lo, ob[:, 0].min(axis=0))
+            hi = np.maximum(hi, ob[:, 1].max(axis=0))
+        self._update_shadow(items, np.array([lo, hi]))
+
+    def render_rgb(self, scene: Scene, camera: Camera, *, settled: bool | None = None,
+                   shadows: bool = True) -> np.ndarray:
+        """The colour image of one view, nothing else: (H, W, 3) uint8 sRGB, the same pixels
+        as ``render(scene, camera).rgb`` without the id, depth and normal pass (previews)."""
+        with self.ctx:
+            items, _, _ = self._scene_items(scene, settled)
+            if shadows:
+                self._scene_shadow(scene, items, settled)
+            return self._draw_color(self._visible(scene, items, camera), camera,
+                                    shadows=shadows)
+
+    def instance_masks(self, scene: Scene, cameras: list[Camera], *,
+                       settled: bool | None = None) -> list[np.ndarray]:
+        """The instance masks of several views of one scene, nothing else: (H, W) int32 each,
+        the same as ``render(scene, camera, color=False).instance``; the draw list is made
+        once for all of them (choosing a viewpoint among candidates)."""
+        with self.ctx:
+            items, _, _ = self._scene_items(scene, settled)
+            out = []
+            for cam in cameras:
+                ids, _ = self._draw_ids(self._visible(scene, items, cam), cam, full=False)
+                out.append(np.rint(ids[..., 0]).astype(np.int32))
+        return out
 
     def render_asset(self, asset: Asset, camera: Camera, *, color: bool = True,
                      shadows: bool = True) -> RenderResult:

@@ -9,7 +9,8 @@ index within its mesh):
   light, then tone-maps and encodes sRGB;
 * ``IDS`` writes exact per-pixel ids, camera-frame depth and world normals into float32
   attachments (no multisampling, so every value comes from the one triangle covering the
-  pixel centre).
+  pixel centre);
+* ``MASK`` writes the instance id alone (the first channel of the ids attachment).
 """
 
 from __future__ import annotations
@@ -166,5 +167,28 @@ void main() {
     // camera-frame depth (OpenCV +z) is minus the OpenGL eye z
     f_ids = vec4(u_instance, u_part_base + v_part, -v_eye.z, 1.0);
     f_normal = vec4(n, 1.0);
+}
+"""
+
+# instance ids only (choosing a viewpoint among candidates): the position computed as in
+# IDS_VS, so coverage and depth tests, hence the ids, are the same
+MASK_VS = """
+#version 330
+uniform mat4 u_model;
+uniform mat4 u_view;
+uniform mat4 u_proj;
+in vec3 in_pos;
+void main() {
+    vec4 e = u_view * (u_model * vec4(in_pos, 1.0));
+    gl_Position = u_proj * e;
+}
+"""
+
+MASK_FS = """
+#version 330
+uniform float u_instance;
+layout(location = 0) out vec4 f_ids;
+void main() {
+    f_ids = vec4(u_instance, 0.0, 0.0, 1.0);
 }
 """

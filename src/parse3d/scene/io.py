@@ -26,7 +26,7 @@ from .model import Contact, PlacedObject, RelationCheck, Repair, Scene, SupportC
 from .shell import build_shell
 from .validate import SCENE_FORMATS
 
-__all__ = ["SCENE_FORMAT", "READABLE_FORMATS", "scene_to_dict", "write_scene", "read_scene",
+__all__ = ["SCENE_FORMAT", "READABLE_FORMATS", "scene_to_dict", "scene_json", "write_scene", "read_scene",
            "scene_schema", "atomic_write_text", "atomic_write_bytes", "clear_scene_outputs",
            "OUTPUT_PATTERNS"]
 
@@ -121,6 +121,17 @@ def _finite(v: Any) -> Any:
     return v
 
 
+def scene_json(scene: Scene) -> str:
+    """The text of ``scene.json``: :func:`scene_to_dict` as indented JSON, non-finite floats
+    as null."""
+    doc = scene_to_dict(scene)
+    try:  # almost always every float is finite: then nothing needs replacing
+        text = json.dumps(doc, indent=1, allow_nan=False)
+    except ValueError:
+        text = json.dumps(_finite(doc), indent=1, allow_nan=False)
+    return text + "\n"
+
+
 def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = False) -> Path:
     """Write ``scene.json`` and (when extracted) ``contacts.json``.
 
@@ -132,8 +143,7 @@ def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = False) -> Path
                          "parse3d.export.export_scene(scene, out, ['glb'])")
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)
-    atomic_write_text(out / "scene.json",
-                      json.dumps(_finite(scene_to_dict(scene)), indent=1, allow_nan=False) + "\n")
+    atomic_write_text(out / "scene.json", scene_json(scene))
     if scene.contacts is not None:
         atomic_write_text(out / "contacts.json",
                           json.dumps([c.to_dict() for c in scene.contacts], indent=1) + "\n")
