@@ -194,6 +194,10 @@ def clip_triangles_to_boxes(tris: np.ndarray, lo: np.ndarray,
     areas : (N, K) float
         Area of each sub-triangle (0 for unused slots), in the units of ``tris`` squared.
     """
+    full, tris_all = len(tris), tris
+    inside = ((tris >= lo[:, None]) & (tris <= hi[:, None])).all(axis=(1, 2))
+    cut = np.flatnonzero(~inside)  # only these need clipping: the rest stay as they are
+    tris, lo, hi = tris[cut], lo[cut], hi[cut]
     N = len(tris)
     poly = tris.astype(float, copy=True)
     count = np.full(N, 3)
@@ -212,11 +216,20 @@ def clip_triangles_to_boxes(tris: np.ndarray, lo: np.ndarray,
             inter = poly + t[..., None] * (pn - poly)
             out = np.stack([poly, inter], axis=2).reshape(N, 2 * K, 3)
             keep = np.stack([valid & ins, valid & (ins != insn)], axis=2).reshape(N, 2 * K)
-            order = np.argsort(~keep, axis=1, kind="stable")
-            poly = np.take_along_axis(out, order[..., None], axis=1)
             count = keep.sum(axis=1)
-            poly = poly[:, : max(3, int(count.max()) if N else 3)]
+            # the kept vertices, in order, moved to the front of each row (the slots past
+            # ``count`` are never read)
+            rows, cols = np.nonzero(keep)
+            slot = np.cumsum(keep, axis=1)[rows, cols] - 1
+            poly = np.zeros((N, max(3, int(count.max()) if N else 3), 3))
+            poly[rows, slot] = out[rows, cols]
     K = poly.shape[1]
+    clipped, poly = poly, np.zeros((full, K, 3))
+    poly[cut] = clipped
+    poly[inside, :3] = tris_all[inside]
+    clipped_count, count = count, np.full(full, 3)
+    count[cut] = clipped_count
+    N = full
     j = np.arange(1, K - 1)
     sub = np.stack([np.broadcast_to(poly[:, :1], (N, K - 2, 3)), poly[:, j], poly[:, j + 1]],
                    axis=2)
