@@ -26,14 +26,24 @@ The result is deterministic: bodies in scene order, pieces in asset order, one g
 
 from __future__ import annotations
 
-from collections import OrderedDict
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ..scene.model import Contact, Scene
-from .collision import ROOM, ConvexSet, WorldBody, concatenate, scene_bodies
+from .collision import (
+    ROOM,
+    ConvexSet,
+    WorldBody,
+    _asset_key,
+    asset_collision,
+    concatenate,
+    fcl_convex,
+    fcl_piece,
+    scene_bodies,
+    shell_collision,
+)
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -455,36 +465,6 @@ def extract_contacts(scene: Scene, *, threshold: float = DEFAULT_THRESHOLD,
 
 # ------------------------------------------------------------------- exact proximity (GJK)
 
-#: FCL convex pieces per (asset content key, uniform scale, piece index), asset frame, scaled.
-_FCL_PIECES: OrderedDict[tuple[str, float, int], Any] = OrderedDict()
-_FCL_CACHE_SIZE = 20_000
-
-
-def _fcl_convex(points: np.ndarray):
-    """An ``fcl.Convex`` of a convex point set (its hull's vertices and triangles)."""
-    import fcl
-    from scipy.spatial import ConvexHull
-
-    h = ConvexHull(points)
-    used = np.unique(h.simplices)
-    remap = np.full(len(points), -1)
-    remap[used] = np.arange(len(used))
-    tri = remap[h.simplices]
-    # FCL walks the hull's edge graph to find support points: the vertices must be shared
-    return fcl.Convex(np.ascontiguousarray(points[used], np.float64), len(tri),
-                      np.c_[np.full(len(tri), 3), tri].ravel())
-
-
-def _asset_piece(key: str, scale: float, i: int, pieces: ConvexSet):
-    k = (key, scale, i)
-    g = _FCL_PIECES.get(k)
-    if g is None:
-        g = _FCL_PIECES[k] = _fcl_convex(np.asarray(pieces.piece_vertices(i), float) * scale)
-        if len(_FCL_PIECES) > _FCL_CACHE_SIZE:
-            _FCL_PIECES.popitem(last=False)
-    return g
-
-
 class _Placed:
     """One body for :func:`touching_parts`: world piece boxes and FCL objects made on demand."""
 
@@ -505,9 +485,9 @@ class _Placed:
         o = self._objs.get(i)
         if o is None:
             if self.key is None:  # the room shell: world frame, no cache by asset
-                g = _fcl_convex(np.asarray(self.pieces.piece_vertices(i), float))
+                g = fcl_convex(np.asarray(self.pieces.piece_vertices(i), float))
             else:
-                g = _asset_piece(self.key, self.scale, i, self.pieces)
+                g = fcl_piece(self.key, self.scale, i, self.pieces)
             o = self._objs[i] = fcl.CollisionObject(g, self._tf)
         return o
 
@@ -539,8 +519,6 @@ def touching_parts(scene: Scene, pairs: Iterable[tuple[str, str, str | None]], *
         The given triples whose bodies touch (overlap counts as touching).
     """
     import fcl
-
-    from .collision import _asset_key, asset_collision, shell_collision
 
     pairs = list(pairs)
     want = {x for a, b, _ in pairs for x in (a, b)}
