@@ -7,13 +7,14 @@ Usage::
     python benchmarks/bench_settle.py --baseline-rev fb2900d   # side by side with REV
 
 Plans the scenes as ``parse3d dataset build`` does (templates, ``--seed``), solves each one
-and times ``settle_and_repair`` on it: the dataset's settle stage. The in-process collision
-cache is emptied before every scene, so each pays what a dataset worker pays for a scene of
-fresh assets (reading their hulls from ``$PARSE3D_CACHE/collision``). With
-``--baseline-rev REV`` a second worker runs the package of REV and the two take turns, scene
-by scene, round by round: CPU ratios stay fair on a loaded machine. The outcomes are then
+and times ``settle_and_repair`` on it (the dataset's settle stage), then ``extract_contacts``
+(its contacts stage). The in-process collision cache is emptied before every scene, so each
+pays what a dataset worker pays for a scene of fresh assets (reading their hulls from
+``$PARSE3D_CACHE/collision``). With ``--baseline-rev REV`` a second worker runs the package of
+REV and the two take turns, scene by scene, round by round: CPU ratios stay fair on a loaded
+machine. The outcomes are then
 compared: per object its status, physics flags, repairs and settled pose (largest difference
-printed).
+printed), and the contacts.
 """
 
 from __future__ import annotations
@@ -34,6 +35,7 @@ def _handle(req: dict) -> dict:
     from parse3d.datagen.build import BuildConfig
     from parse3d.datagen.planning import plan_scene
     from parse3d.datagen.sources import make_source
+    from parse3d.physics import extract_contacts
     from parse3d.physics.collision import clear_cache
     from parse3d.pipeline import PipelineOptions, run_pipeline, settle_and_repair
 
@@ -47,6 +49,9 @@ def _handle(req: dict) -> dict:
     c0, w0 = time.process_time(), time.perf_counter()
     settle_and_repair(scene)
     cpu, wall = time.process_time() - c0, time.perf_counter() - w0
+    c1 = time.process_time()
+    contacts = extract_contacts(scene)  # the dataset's contacts stage, which follows
+    cpu_contacts = time.process_time() - c1
     objects = {}
     for o in scene.objects.values():
         pose = None
@@ -55,14 +60,16 @@ def _handle(req: dict) -> dict:
                                                       np.ravel(o.settled_position)])]
         objects[o.id] = {"status": o.status, "flags": sorted(o.flags),
                          "repairs": [str(r) for r in o.repairs], "pose": pose}
-    return {"cpu": cpu, "wall": wall, "placed": len(scene.placed),
+    return {"cpu": cpu, "wall": wall, "cpu_contacts": cpu_contacts,
+            "contacts": [c.to_dict() for c in contacts], "placed": len(scene.placed),
             "steps": scene.meta.get("settle", {}).get("steps"),
             "repair": scene.meta.get("repair"), "objects": objects}
 
 
 def _compare(a: dict, b: dict) -> tuple[int, float]:
-    """(objects whose status, flags or repairs differ, largest pose difference)."""
-    bad, worst = 0, 0.0
+    """(objects whose status, flags or repairs differ, largest pose difference); the contacts
+    differing count as one object more."""
+    bad, worst = int(a["contacts"] != b["contacts"]), 0.0
     for oid, x in a["objects"].items():
         y = b["objects"].get(oid)
         if y is None or (x["status"], x["flags"], x["repairs"]) != \
@@ -92,6 +99,8 @@ def main() -> None:
         if wt is not None:
             workers[args.baseline_rev] = Worker(__file__, src=wt / "src")
         cpu: dict[str, list[list[float]]] = {k: [[] for _ in range(args.scenes)] for k in workers}
+        ccpu: dict[str, list[list[float]]] = {k: [[] for _ in range(args.scenes)]
+                                              for k in workers}
         last: dict[str, list[dict]] = {k: [{}] * args.scenes for k in workers}
         print(f"settling {args.scenes} template scenes, {args.rounds} rounds "
               f"({', '.join(workers)}) ...", flush=True)
@@ -102,6 +111,7 @@ def main() -> None:
                     if "error" in r:
                         sys.exit(f"{name}: scene {i}: {r['error']}")
                     cpu[name][i].append(r["cpu"])
+                    ccpu[name][i].append(r["cpu_contacts"])
                     last[name][i] = r
         for w in workers.values():
             w.close()
@@ -122,8 +132,14 @@ def main() -> None:
         print(line)
     total = {n: sum(med[n]) / args.scenes for n in names}
     print("mean CPU s per scene: " + ", ".join(f"{n} {total[n]:.3f}" for n in names))
+    cont = {n: sum(statistics.median(c) for c in ccpu[n]) / args.scenes for n in names}
+    print("then contacts, mean CPU s per scene: "
+          + ", ".join(f"{n} {cont[n]:.3f}" for n in names))
     if len(names) > 1:
         print(f"settle CPU per scene, {names[1]} / now: {total[names[1]] / total['now']:.2f}x")
+        print(f"contacts CPU per scene, {names[1]} / now: {cont[names[1]] / cont['now']:.2f}x")
+        both = {n: total[n] + cont[n] for n in names}
+        print(f"settle + contacts, {names[1]} / now: {both[names[1]] / both['now']:.2f}x")
 
 
 class _nothing:

@@ -367,6 +367,34 @@ def test_contacts_of_some_pairs_are_those_sampled_among_all_bodies(corner):
     assert extract_contacts(sc, pairs=[("nothing", "here")]) == []
 
 
+def test_touching_parts_agrees_with_the_sampled_contacts(corner):
+    from parse3d.physics.contacts import touching_parts
+
+    sc, _ = corner
+    contacts = extract_contacts(sc)
+    part_pairs = {(c.a, c.b) for c in contacts} | {(c.b, c.a) for c in contacts}
+    asked = [(a.split(":")[0], b.split(":")[0], b.split(":", 1)[1]) for a, b in part_pairs]
+    # every part pair sampled within 1 mm is within 1 mm exactly
+    assert touching_parts(sc, asked) == set(asked)
+    # pairs far apart, and a part the body touches nowhere, are not
+    far = [("mug", "side", None), ("tea", "desk", None), ("book", "desk", "leg_0"),
+           ("book2", "room", "floor")]
+    assert not touching_parts(sc, far)
+    assert touching_parts(sc, [("desk", "room", None), ("mug", "nothing", None)]) == \
+        {("desk", "room", None)}
+
+
+def test_touching_parts_measures_the_gap_exactly():
+    from parse3d.physics.contacts import touching_parts
+
+    for lift, near in ((0.0005, True), (0.0015, False)):
+        sc = desk_scene()
+        (cx, cy), ztop = top_of(sc, "desk", "tabletop")
+        put(sc, "box", "book", 0, xy=(cx, cy), z=ztop, lift=lift, support="desk:tabletop@top")
+        got = touching_parts(sc, [("box", "desk", "tabletop")], threshold=0.001, settled=False)
+        assert bool(got) is near, lift
+
+
 def test_settle_command_writes_settled_scene_and_contacts(tmp_path):
     from typer.testing import CliRunner
 

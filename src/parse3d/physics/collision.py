@@ -42,6 +42,8 @@ __all__ = [
     "scene_bodies",
     "concatenate",
     "clear_cache",
+    "fcl_convex",
+    "fcl_piece",
 ]
 
 #: Body id of the room shell in contact keys (``room:floor``, ``room:wall_0``).
@@ -293,6 +295,7 @@ def clear_cache() -> None:
     _CACHE.clear()
     _SHELL_CACHE.clear()
     _KEYS.clear()
+    _FCL_PIECES.clear()
 
 
 def _disk_dir():
@@ -381,6 +384,41 @@ def asset_collision(asset: Asset) -> AssetCollision:
     if len(_CACHE) > _CACHE_SIZE:
         _CACHE.popitem(last=False)
     return data
+
+
+def fcl_convex(points: np.ndarray):
+    """An ``fcl.Convex`` of a convex point set ((N, 3) float): its hull's vertices and
+    triangles, the vertices shared (FCL walks the hull's edge graph to find support points)."""
+    import fcl
+    from scipy.spatial import ConvexHull
+
+    h = ConvexHull(points)
+    used = np.unique(h.simplices)
+    remap = np.full(len(points), -1)
+    remap[used] = np.arange(len(used))
+    tri = remap[h.simplices]
+    return fcl.Convex(np.ascontiguousarray(points[used], np.float64), len(tri),
+                      np.c_[np.full(len(tri), 3), tri].ravel())
+
+
+#: ``fcl.Convex`` per (asset content key, uniform scale, piece index), asset frame, scaled.
+_FCL_PIECES: OrderedDict[tuple[str, float, int], object] = OrderedDict()
+_FCL_CACHE_SIZE = 8192
+
+
+def fcl_piece(key: str, scale: float, index: int, pieces: ConvexSet):
+    """The ``fcl.Convex`` of piece ``index`` of an asset's ``pieces`` scaled by ``scale``,
+    made once per (asset content ``key``, scale, piece) in this process (FCL moves shapes
+    rigidly only, so the scale is baked in)."""
+    k = (key, float(scale), int(index))
+    g = _FCL_PIECES.get(k)
+    if g is None:
+        g = _FCL_PIECES[k] = fcl_convex(np.asarray(pieces.piece_vertices(index), float) * scale)
+        if len(_FCL_PIECES) > _FCL_CACHE_SIZE:
+            _FCL_PIECES.popitem(last=False)
+    else:
+        _FCL_PIECES.move_to_end(k)
+    return g
 
 
 def _convex_prisms(poly: np.ndarray, z0: float, z1: float) -> list[np.ndarray]:

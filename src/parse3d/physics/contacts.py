@@ -32,7 +32,18 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..scene.model import Contact, Scene
-from .collision import ROOM, ConvexSet, WorldBody, concatenate, scene_bodies
+from .collision import (
+    ROOM,
+    ConvexSet,
+    WorldBody,
+    _asset_key,
+    asset_collision,
+    concatenate,
+    fcl_convex,
+    fcl_piece,
+    scene_bodies,
+    shell_collision,
+)
 
 if TYPE_CHECKING:
     import networkx as nx
@@ -47,6 +58,7 @@ __all__ = [
     "signed_distance",
     "closest_point_on_triangles",
     "clip_triangles_to_boxes",
+    "touching_parts",
 ]
 
 DEFAULT_THRESHOLD = 0.001
@@ -192,6 +204,10 @@ def clip_triangles_to_boxes(tris: np.ndarray, lo: np.ndarray,
     areas : (N, K) float
         Area of each sub-triangle (0 for unused slots), in the units of ``tris`` squared.
     """
+    full, tris_all = len(tris), tris
+    inside = ((tris >= lo[:, None]) & (tris <= hi[:, None])).all(axis=(1, 2))
+    cut = np.flatnonzero(~inside)  # only these need clipping: the rest stay as they are
+    tris, lo, hi = tris[cut], lo[cut], hi[cut]
     N = len(tris)
     poly = tris.astype(float, copy=True)
     count = np.full(N, 3)
@@ -210,11 +226,20 @@ def clip_triangles_to_boxes(tris: np.ndarray, lo: np.ndarray,
             inter = poly + t[..., None] * (pn - poly)
             out = np.stack([poly, inter], axis=2).reshape(N, 2 * K, 3)
             keep = np.stack([valid & ins, valid & (ins != insn)], axis=2).reshape(N, 2 * K)
-            order = np.argsort(~keep, axis=1, kind="stable")
-            poly = np.take_along_axis(out, order[..., None], axis=1)
             count = keep.sum(axis=1)
-            poly = poly[:, : max(3, int(count.max()) if N else 3)]
+            # the kept vertices, in order, moved to the front of each row (the slots past
+            # ``count`` are never read)
+            rows, cols = np.nonzero(keep)
+            slot = np.cumsum(keep, axis=1)[rows, cols] - 1
+            poly = np.zeros((N, max(3, int(count.max()) if N else 3), 3))
+            poly[rows, slot] = out[rows, cols]
     K = poly.shape[1]
+    clipped, poly = poly, np.zeros((full, K, 3))
+    poly[cut] = clipped
+    poly[inside, :3] = tris_all[inside]
+    clipped_count, count = count, np.full(full, 3)
+    count[cut] = clipped_count
+    N = full
     j = np.arange(1, K - 1)
     sub = np.stack([np.broadcast_to(poly[:, :1], (N, K - 2, 3)), poly[:, j], poly[:, j + 1]],
                    axis=2)
@@ -436,6 +461,99 @@ def extract_contacts(scene: Scene, *, threshold: float = DEFAULT_THRESHOLD,
     cs = contact_samples(bodies, threshold=threshold, samples_per_m2=samples_per_m2,
                          min_samples=min_samples, seed=seed, pairs=pairs)
     return _aggregate(cs)
+
+
+# ------------------------------------------------------------------- exact proximity (GJK)
+
+class _Placed:
+    """One body for :func:`touching_parts`: world piece boxes and FCL objects made on demand."""
+
+    def __init__(self, key, pieces: ConvexSet, R: np.ndarray, t: np.ndarray, scale: float):
+        import fcl
+
+        self.key, self.pieces, self.scale = key, pieces, float(scale)
+        verts = pieces.vertices @ (R * self.scale).T + t
+        lo = np.minimum.reduceat(verts, pieces.vert_index[:-1], axis=0)
+        hi = np.maximum.reduceat(verts, pieces.vert_index[:-1], axis=0)
+        self.bounds = np.stack([lo, hi], 1)
+        self._tf = fcl.Transform(np.asarray(R, float), np.asarray(t, float))
+        self._objs: dict[int, Any] = {}
+
+    def obj(self, i: int):
+        import fcl
+
+        o = self._objs.get(i)
+        if o is None:
+            if self.key is None:  # the room shell: world frame, no cache by asset
+                g = fcl_convex(np.asarray(self.pieces.piece_vertices(i), float))
+            else:
+                g = fcl_piece(self.key, self.scale, i, self.pieces)
+            o = self._objs[i] = fcl.CollisionObject(g, self._tf)
+        return o
+
+
+def touching_parts(scene: Scene, pairs: Iterable[tuple[str, str, str | None]], *,
+                   threshold: float = DEFAULT_THRESHOLD,
+                   settled: bool | None = None) -> set[tuple[str, str, str | None]]:
+    """Which objects come within ``threshold`` of a part of another body: exact convex
+    distances (GJK, FCL) between collision pieces, no sampling.
+
+    A contact edge of :func:`extract_contacts` implies the same pair here (a sample within
+    the threshold is a point of one piece that close to the other); the converse can miss
+    only where sampling misses a region smaller than its spacing.
+
+    Parameters
+    ----------
+    scene : Scene
+    pairs : iterable of (str, str, str or None)
+        ``(object id, other body id, part name)``: the other body is an object id or
+        ``room``; part None means any part of it.
+    threshold : float
+        Metres.
+    settled : bool or None
+        Which pose to use (None: the settled one where present).
+
+    Returns
+    -------
+    set of (str, str, str or None)
+        The given triples whose bodies touch (overlap counts as touching).
+    """
+    import fcl
+
+    pairs = list(pairs)
+    want = {x for a, b, _ in pairs for x in (a, b)}
+    bodies: dict[str, _Placed] = {}
+    for oid in want:
+        if oid == ROOM:
+            sh = shell_collision(scene.room)
+            bodies[oid] = _Placed(None, sh, np.eye(3), np.zeros(3), 1.0)
+            continue
+        obj = scene.objects.get(oid)
+        if obj is None or not obj.placed or obj.asset is None:
+            continue
+        data = asset_collision(obj.asset)
+        T = obj.transform(settled)
+        bodies[oid] = _Placed(_asset_key(obj.asset), data.pieces, T[:3, :3] / obj.scale,
+                              T[:3, 3], obj.scale)
+    thr = float(threshold)
+    request = fcl.DistanceRequest()
+    out = set()
+    for a, b, part in pairs:
+        A, B = bodies.get(a), bodies.get(b)
+        if A is None or B is None:
+            continue
+        jb = np.arange(len(B.pieces))
+        if part is not None:
+            jb = jb[np.asarray(B.pieces.parts) == part]
+        ba, bb = A.bounds, B.bounds[jb]
+        near = ((ba[:, None, 0] - thr <= bb[None, :, 1]) & (bb[None, :, 0] - thr <= ba[:, None, 1])
+                ).all(-1)
+        for i, j in zip(*np.nonzero(near), strict=True):
+            d = fcl.distance(A.obj(int(i)), B.obj(int(jb[j])), request, fcl.DistanceResult())
+            if d <= thr:
+                out.add((a, b, part))
+                break
+    return out
 
 
 # ------------------------------------------------------------------------------- outputs

@@ -212,8 +212,9 @@ def _support_key(support: str | None) -> tuple[str, str | None] | None:
 
 
 def _left_support(scene: Scene, ids: list[str], threshold: float) -> set[str]:
-    """Objects among ``ids`` no longer within ``threshold`` of the part that supported them."""
-    from .contacts import extract_contacts
+    """Objects among ``ids`` no longer within ``threshold`` of the part that supported them
+    (exact convex distances between collision pieces)."""
+    from .contacts import touching_parts
 
     wanted: dict[str, tuple[str, str | None]] = {}
     for oid in ids:
@@ -226,23 +227,9 @@ def _left_support(scene: Scene, ids: list[str], threshold: float) -> set[str]:
         wanted[oid] = key
     if not wanted:
         return set()
-    # only whether a pair touches matters here, so a sparser sampling will do
-    contacts = extract_contacts(scene, threshold=threshold, settled=True, samples_per_m2=2000.0,
-                                pairs=[(c, p) for c, (p, _) in wanted.items()])
-    touching: dict[str, set[str]] = {}
-    for c in contacts:
-        for x, y in ((c.a, c.b), (c.b, c.a)):
-            touching.setdefault(x.split(":", 1)[0], set()).add(y)
-    out = set()
-    for oid, (parent, part) in wanted.items():
-        other = touching.get(oid, set())
-        if part is None:
-            ok = any(k.split(":", 1)[0] == parent for k in other)
-        else:
-            ok = f"{parent}:{part}" in other
-        if not ok:
-            out.add(oid)
-    return out
+    near = touching_parts(scene, [(c, p, part) for c, (p, part) in wanted.items()],
+                          threshold=threshold, settled=True)
+    return {c for c, (p, part) in wanted.items() if (c, p, part) not in near}
 
 
 def _recheck_relations(scene: Scene) -> bool:
