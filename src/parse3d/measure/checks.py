@@ -404,7 +404,13 @@ def _target_surface(ctx: CheckContext) -> Surface | str:
 
 
 def _child_label(ctx: CheckContext) -> str:
+    if ctx.edge.relation == "ON" and ctx.child.rests_on:
+        return ctx.child.rests_on  # standing on another face (sheet music on a ledge)
     return ctx.edge.child.surface or ctx.edge.spec.child_surface
+
+
+#: Degrees a child standing on a ledge on another face (``rests_on``) may lean back.
+LEDGE_LEAN_DEG = 35.0
 
 
 def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
@@ -459,6 +465,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     ang_tol = ANGLE_TOL_DEG
     if rel in ("ON", "IN") and is_round(child):
         ang_tol = 180.0  # an apple rests in any orientation
+    elif rel == "ON" and child.rests_on:  # on its lower edge, leaning back on the ledge
+        ang_tol = LEDGE_LEAN_DEG + 1.0
     elif rel == "ON":  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
@@ -559,6 +567,12 @@ def _check_on(ctx: CheckContext) -> Check:
         return c
     res = dict(c.residual)
     com = ctx.child.transform(ctx.settled) @ np.r_[asset_geometry(ctx.child.asset).com, 1.0]
+    if ctx.child.rests_on:
+        # standing on a ledge leaning back: its base rests on the support, its centre of
+        # mass lies over what it leans on
+        pts = world_points(ctx.child, hull_only=True, settled=ctx.settled)
+        h = _plane_dist(pts, sB)
+        com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
     inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:

@@ -20,6 +20,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, outline_indices, part_points
+from .ledge import may_lean, place_leaning
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -127,9 +128,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             total_trials += cfg.max_trials
             continue
         total_trials += trials
-        R, t, sup, body = pose
+        R, t, sup, body = pose[:4]
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
+        obj.rests_on = pose[4] if len(pose) > 4 else None
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
@@ -416,6 +418,19 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and any(
+            may_lean(st, asset, scale, sups[int(si)], support_edge) for si in order):
+        # too big to lie flat on a ledge: stand it on its edge, leaning back (sheet music)
+        for si in order:
+            if not may_lean(st, asset, scale, sups[int(si)], support_edge):
+                continue
+            try:
+                return place_leaning(st, oid, asset, scale, sups[int(si)], support_edge, others,
+                                     body, rng, lambda c, sp: _validate(st, c, support_edge,
+                                                                        others, sp))
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
     if cfg.strategy == "constrained" and _may_stack(st, support_edge):
         # crowding: rest on an object of the same category already on that support
         for si in order:
@@ -654,12 +669,26 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             pass  # drawn from the free space without building the region
         elif rel == "HANGING_BELOW":
             # what hangs needs its attachment (the points touching the parent) on the parent's
-            # surface, not its whole footprint: a towel is wider than the bar it hangs from
+            # surface, not its whole footprint: a towel is wider than the bar it hangs from; a
+            # hook as thick as a thin rail needs only its centre over it
             top = Y[hN <= hN.min() + 2e-3]
-            Fc = RG.convex_footprint(np.vstack([np.c_[top @ s.u, top @ s.v],
-                                                np.c_[top @ s.u, top @ s.v] + 1e-4]))
+            c = np.array([float(np.mean(top @ s.u)), float(np.mean(top @ s.v))])
+            Fc = RG.convex_footprint(np.vstack([c + d for d in ((0, 0), (1e-4, 0), (0, 1e-4),
+                                                                  (1e-4, 1e-4))]))
+            # the owner's other parts (a towel bar's brackets) block only what hangs at their
+            # depth: the hook, not the shoulders below
+            obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0),
+                             parts=False)
             region = RG.clip(RG.erode(region0, [], Fc),
                              RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+            depth = hN + h
+            for lo_h, hi_h, fp in _owner_pieces(st, sup, exclude, height + EPS):
+                at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
+                if len(at):
+                    Fs = RG.convex_footprint(np.vstack([np.c_[at @ s.u, at @ s.v],
+                                                        np.c_[at @ s.u, at @ s.v] + 1e-4]))
+                    region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0),
+                                                      [fp], Fs))
         else:
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
@@ -789,6 +818,23 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                         body), trials, checks, None
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float):
+    """``(lowest, highest, footprint)`` of the pieces of the supporting objects (``exclude``)
+    other than the support part, in the slab of ``height`` beyond the support plane (heights
+    along its normal, footprint in its plane coordinates)."""
+    s = sup.surface
+    for oid in exclude:
+        if oid == "room":
+            continue
+        for name, pts in st.world_pieces(oid):
+            if oid == sup.owner and name == sup.part:
+                continue
+            hq = (pts - s.origin) @ s.normal
+            if float(hq.max()) <= 1e-3 or float(hq.min()) >= height - 1e-3:
+                continue
+            yield float(hq.min()), float(hq.max()), RG.convex_footprint(plane_coords(s, pts))
 
 
 def _plane_key(s) -> tuple:
