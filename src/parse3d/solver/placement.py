@@ -663,8 +663,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
-        samples = _free_positions(rel, sup, others, region0, obst + holes, F, height, lift, rng,
-                                  cfg.max_trials)
+        stack = rel == "ON" and sup.owner != "room" \
+            and st.scene.objects[sup.owner].category == asset.category
+        samples = None if stack else _free_positions(rel, sup, others, region0, obst + holes, F,
+                                                     height, lift, rng, cfg.max_trials)
         if samples is not None:
             pass  # drawn from the free space without building the region
         elif rel == "HANGING_BELOW":
@@ -725,6 +727,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             region = apply_region_rules(ctx, others, region, "part")
             if rel == "ON" and sup.owner != "room" and not overhang:
                 region = _well_inside(region, F, height)
+            if stack:
+                region = _stack_centre(region, region0, asset, scale, R, s)
+                if region.is_empty or region.area < 1e-10:
+                    raise Fail(f"no room on {sup.name}: a {asset.category} stacked on another "
+                               f"keeps its centre of mass over the middle "
+                               f"{STACK_CENTRE * 100:.0f}% of it, and its footprint on it")
     else:
         region = region0
         samples = None
@@ -1063,6 +1071,20 @@ def _free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: l
         width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
         margin = 0.25 * width if height > TIPPY * width else 0.0
     return RG.free_samples(region0, obst, F, rng, n, margin=margin)
+
+
+#: Fraction (about its centre) of the support polygon of an object that the centre of mass of
+#: one of its own category stacked on it must lie over: a book on a book on a book.
+STACK_CENTRE = 0.4
+
+
+def _stack_centre(region, region0, asset: Asset, scale: float, R: np.ndarray, s):
+    """``region`` (positions of the child's origin) restricted to those that put its centre
+    of mass over the middle ``STACK_CENTRE`` of ``region0``: offsets add up along a stack, and
+    a book resting near the edge of the one below tips the stack over in settling."""
+    com = (asset_geometry(asset).com * scale) @ R.T
+    mid = shapely.affinity.scale(region0, STACK_CENTRE, STACK_CENTRE, origin="centroid")
+    return RG.clip(region, shapely.affinity.translate(mid, -float(com @ s.u), -float(com @ s.v)))
 
 
 def _well_inside(region, F: np.ndarray, height: float):
