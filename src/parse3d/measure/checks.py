@@ -463,8 +463,13 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     nA = _child_normal(child, _child_label(ctx), settled)
     ang = float(np.degrees(angle_between(nA, -sB.normal)))
     ang_tol = ANGLE_TOL_DEG
+    long_axis = _lying_axis(child, sB.normal, settled) if rel in ("ON", "IN") else None
     if rel in ("ON", "IN") and is_round(child):
         ang_tol = 180.0  # an apple rests in any orientation
+    elif long_axis is not None:
+        # lying along its long axis (a baguette, a bottle on its side): it may roll about
+        # that axis; the axis itself lies level
+        ang = abs(90.0 - float(np.degrees(angle_between(long_axis, sB.normal))))
     elif rel == "ON" and child.rests_on:  # on its lower edge, leaning back on the ledge
         ang_tol = LEDGE_LEAN_DEG + 1.0
     elif rel == "ON":  # a leaning object stands on its support tilted by its lean angle
@@ -484,6 +489,25 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     elif on_wall:
         detail += f", resting on {e.parent.object}'s wall"
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
+
+
+#: Two extents within this ratio count as one round cross-section; the third must exceed
+#: them by as much to be a long axis.
+ROLL_RATIO = 1.3
+
+
+def _lying_axis(child: PlacedObject, n: np.ndarray, settled) -> np.ndarray | None:
+    """The world direction of the long axis of an elongated child with a round-ish cross
+    section (its two smaller extents within ``ROLL_RATIO``) lying on its side (that axis within
+    20 degrees of level), which it may roll about; None otherwise."""
+    ext = np.ptp(asset_geometry(child.asset).hull, axis=0)
+    k = np.argsort(ext)
+    if ext[k[1]] > ROLL_RATIO * ext[k[0]] or ext[k[2]] <= ROLL_RATIO * ext[k[1]]:
+        return None
+    axis = child.transform(settled)[:3, :3][:, k[2]] / child.scale
+    if abs(float(axis @ n)) > np.sin(np.deg2rad(20.0)):
+        return None
+    return axis
 
 
 def _gap_to_low_parts(pts: np.ndarray, pobj: PlacedObject, sB: Surface, settled) -> float:

@@ -255,6 +255,9 @@ def lacks(asset: Asset, reqs) -> str | None:
             if not any(i.part in names for i in asset.internal):
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
         elif kind == "free_top":
+            if all(_rounded_rim(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} top is a rounded rim, no flat band "
+                        f"{RIM_WIDTH * 100:.0f} cm wide: what stands on it tips over ({text})")
             if not any(_free_top(asset, p) for p in ps):
                 if not any(_flat_cached(asset.asset_id, p, "top") for p in ps):
                     return (f"{asset.asset_id}'s {label} is slanted: its top is no surface to "
@@ -301,6 +304,38 @@ def _lies_flat(asset: Asset, part) -> bool:
             _LIES_FLAT.clear()
         got = _LIES_FLAT[key] = any(_flat_enough(part, lb, tol=FLAT_TOL, frac=0.5)
                                     for lb in ("top", "bottom"))
+    return got
+
+
+#: Width (m) of the flat band a rim (a top around an opening) needs for things to stand on it.
+RIM_WIDTH = 0.03
+
+_ROUNDED: dict[tuple[str, str], bool] = {}
+
+
+def _rounded_rim(asset: Asset, part) -> bool:
+    """Whether the part's top is a rim around an opening (its top surface has a hole) that is
+    rounded: no convex piece of it is flat (within ``FLAT_TOL`` of its highest point) over a
+    band ``RIM_WIDTH`` wide. A clawfoot tub's rolled rim is a tube: a bottle stood on its crest
+    tips into the tub; a built-in tub's flat deck holds it."""
+    key = (asset.asset_id, part.name)
+    got = _ROUNDED.get(key)
+    if got is None:
+        poly = part.surfaces["top"].polygon if "top" in part.surfaces else None
+        rims = [g for g in getattr(poly, "geoms", [poly])
+                if isinstance(g, Polygon) and len(g.interiors)]
+        got = False
+        if rims:
+            top = max(float(pc.vertices[:, 2].max()) for pc in part.piece_arrays)
+            widths = [0.0]
+            for pc in part.piece_arrays:
+                v = pc.vertices[pc.vertices[:, 2] >= top - FLAT_TOL]
+                if len(v) >= 3:
+                    widths.append(_sides(shapely.MultiPoint(v[:, :2]).convex_hull)[0])
+            got = max(widths) < RIM_WIDTH
+        if len(_ROUNDED) > 8192:
+            _ROUNDED.clear()
+        _ROUNDED[key] = got
     return got
 
 
@@ -663,8 +698,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
-        stack = rel == "ON" and sup.owner != "room" \
-            and st.scene.objects[sup.owner].category == asset.category
+        # a stack: ON an object of the same kind (their PAG nodes share a category)
+        stack = rel == "ON" and sup.owner != "room" and bool(
+            set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates))
         samples = None if stack else _free_positions(rel, sup, others, region0, obst + holes, F,
                                                      height, lift, rng, cfg.max_trials)
         if samples is not None:
@@ -695,11 +731,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                     and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
-                    and fa <= 1.5 * Polygon(st.xy[sup.owner]).area:
+                    and fa <= (STACK_OVER if stack else 1.5) * Polygon(st.xy[sup.owner]).area:
                 # a support smaller than the child (a pot on a burner, an apple in a bowl, a
                 # bottle on a bathtub's rim): the paper's stability rule, centre of mass over
                 # the solid support polygon, decides; only for children no bigger than the
-                # parent object (no wardrobe on a mug)
+                # parent object (no wardrobe on a mug), up to STACK_OVER times its area in a
+                # stack of one category (a picture book on a paperback)
                 com = (asset_geometry(asset).com * scale) @ R.T
                 obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0),
                                  step=step)
@@ -742,6 +779,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
+    if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
+            and _round_asset(asset):
+        samples = _middle_first(samples, region0, F, asset, scale, R, s)
     if lift > 0 and strategy == "constrained" and len(samples):
         # centred on a low part first (a pan on a burner), so it does not straddle its edge
         com = (asset_geometry(asset).com * scale) @ R.T
@@ -843,6 +883,26 @@ def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float
             if float(hq.max()) <= 1e-3 or float(hq.min()) >= height - 1e-3:
                 continue
             yield float(hq.min()), float(hq.max()), RG.convex_footprint(plane_coords(s, pts))
+
+
+def _round_asset(asset: Asset) -> bool:
+    """About as wide as deep and tall (as :func:`parse3d.measure.is_round`): it rolls."""
+    ext = np.ptp(asset_geometry(asset).hull, axis=0)
+    return float(ext.max()) <= 1.3 * float(ext.min())
+
+
+def _middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, scale: float,
+                  R: np.ndarray, s) -> np.ndarray:
+    """Samples for a round child IN a container, nearest the middle of its floor first, led
+    by the middle itself when the footprint fits there: an apple dropped off-centre on a
+    bowl's curved floor rolls to the middle in settling and can tip a footed bowl over."""
+    c3 = (asset_geometry(asset).center * scale) @ R.T
+    mid = np.asarray(region0.centroid.coords[0]) - np.array([c3 @ s.u, c3 @ s.v])
+    order = np.argsort(np.linalg.norm(samples - mid, axis=1), kind="stable")
+    out = samples[order]
+    if region0.contains(Polygon(F + mid)):
+        out = np.vstack([mid[None], out])[:len(samples)]
+    return out
 
 
 def _plane_key(s) -> tuple:
@@ -1076,6 +1136,10 @@ def _free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: l
 #: Fraction (about its centre) of the support polygon of an object that the centre of mass of
 #: one of its own category stacked on it must lie over: a book on a book on a book.
 STACK_CENTRE = 0.4
+
+#: Footprint area, in units of the area of the object below, up to which an object of the same
+#: category may be stacked on it overhanging its edges (its centre of mass over the middle).
+STACK_OVER = 3.0
 
 
 def _stack_centre(region, region0, asset: Asset, scale: float, R: np.ndarray, s):
