@@ -153,14 +153,25 @@ def _extent(asset: Asset, axis: int) -> float:
 
 def _headroom(st: SolveState, edge: Edge) -> float:
     """The most free height (m) over the internal surfaces an ``IN`` child may rest on (the
-    tallest shelf gap of a rack); inf for other supports, open containers or an unplaced
-    parent."""
-    if edge.relation != "IN" or edge.parent.is_room_element:
+    tallest shelf gap of a rack), or between an ``ON`` child's support surfaces on an object
+    and the ceiling; inf for other supports, open containers or an unplaced parent."""
+    if edge.relation not in ("IN", "ON") or edge.parent.is_room_element:
         return float("inf")
+    parent = st.scene.objects.get(edge.parent.object)
+    if parent is None or not parent.placed:
+        return float("inf")
+    return st.memo(edge.parent.object, ("headroom", edge.relation, str(edge.parent)),
+                   lambda: _free_height(st, edge))
+
+
+def _free_height(st: SolveState, edge: Edge) -> float:
     try:
-        return max(s.clearance for s in support_candidates(st, edge))
+        sups = support_candidates(st, edge)
     except Fail:
         return float("inf")
+    if edge.relation == "ON":  # up to the ceiling (a wine rack on a tall cabinet)
+        return max(st.scene.room.height - float(s.surface.origin[2]) for s in sups)
+    return max(s.clearance for s in sups)
 
 
 #: Footprint area a container needs per child IN it, in units of the child's typical size
@@ -727,6 +738,18 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                                                         np.c_[at @ s.u, at @ s.v] + 1e-4]))
                     region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0),
                                                       [fp], Fs))
+            if region.is_empty or region.area < 1e-10:
+                if RG.erode(region0, [], Fc).is_empty:
+                    raise Fail(f"no room to hang below {sup.name}: its attachment does not "
+                               f"fit the surface", intrinsic=True)
+                below = [o for o in st.scene.objects.values() if o.placed and o.id not in exclude
+                         and o.id in st.zr and st.zr[o.id][1] > float(s.origin[2]) - height
+                         and st.zr[o.id][0] < float(s.origin[2])
+                         and Polygon(st.xy[o.id]).distance(Polygon(st.xy[sup.owner])) < 0.5]
+                names = ", ".join(o.id for o in below[:4]) or "the room"
+                raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
+                           f"{height:.2f} m tall {asset.category} below {sup.name}: "
+                           f"{names} in the way")
         else:
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
