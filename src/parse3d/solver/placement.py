@@ -917,9 +917,10 @@ def _round_asset(asset: Asset) -> bool:
 def _middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, scale: float,
                   R: np.ndarray, s) -> np.ndarray:
     """Samples for a round child IN a container, nearest the middle of its floor first, led
-    by the middle itself when the footprint fits there: an apple dropped off-centre on a
-    bowl's curved floor rolls to the middle in settling and can tip a footed bowl over."""
-    c3 = (asset_geometry(asset).center * scale) @ R.T
+    by the middle itself (its centre of mass over it) when the footprint fits there: an apple
+    dropped off-centre on a bowl's curved floor rolls to the middle in settling and can tip a
+    footed bowl over."""
+    c3 = (asset_geometry(asset).com * scale) @ R.T  # its centre of mass over the middle
     mid = np.asarray(region0.centroid.coords[0]) - np.array([c3 @ s.u, c3 @ s.v])
     order = np.argsort(np.linalg.norm(samples - mid, axis=1), kind="stable")
     out = samples[order]
