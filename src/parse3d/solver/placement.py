@@ -320,21 +320,23 @@ def _lies_flat(asset: Asset, part) -> bool:
 
 #: Width (m) of the flat band a rim (a top around an opening) needs for things to stand on it.
 RIM_WIDTH = 0.03
+#: Width (m) of an opening no small child spans (a tub, not a burner ring a pot sits across).
+RIM_OPENING = 0.3
 
 _ROUNDED: dict[tuple[str, str], bool] = {}
 
 
 def _rounded_rim(asset: Asset, part) -> bool:
-    """Whether the part's top is a rim around an opening (its top surface has a hole) that is
-    rounded: no convex piece of it is flat (within ``FLAT_TOL`` of its highest point) over a
+    """Whether the part's top is a rim around an opening at least ``RIM_OPENING`` wide (its
+    top surface has such a hole: no small child spans it) that is rounded: no convex piece of it is flat (within ``FLAT_TOL`` of its highest point) over a
     band ``RIM_WIDTH`` wide. A clawfoot tub's rolled rim is a tube: a bottle stood on its crest
     tips into the tub; a built-in tub's flat deck holds it."""
     key = (asset.asset_id, part.name)
     got = _ROUNDED.get(key)
     if got is None:
         poly = part.surfaces["top"].polygon if "top" in part.surfaces else None
-        rims = [g for g in getattr(poly, "geoms", [poly])
-                if isinstance(g, Polygon) and len(g.interiors)]
+        rims = [g for g in getattr(poly, "geoms", [poly]) if isinstance(g, Polygon)
+                and any(_sides(Polygon(r))[0] >= RIM_OPENING for r in g.interiors)]
         got = False
         if rims:
             top = max(float(pc.vertices[:, 2].max()) for pc in part.piece_arrays)
