@@ -328,8 +328,8 @@ _ROUNDED: dict[tuple[str, str], bool] = {}
 
 def _rounded_rim(asset: Asset, part) -> bool:
     """Whether the part's top is a rim around an opening at least ``RIM_OPENING`` wide (its
-    top surface has such a hole: no small child spans it) that is rounded: no convex piece of it is flat (within ``FLAT_TOL`` of its highest point) over a
-    band ``RIM_WIDTH`` wide. A clawfoot tub's rolled rim is a tube: a bottle stood on its crest
+    top surface has such a hole: no small child spans it) that is rounded: no convex piece of
+    it is flat (within ``FLAT_TOL`` of its highest point) over a band ``RIM_WIDTH`` wide. A clawfoot tub's rolled rim is a tube: a bottle stood on its crest
     tips into the tub; a built-in tub's flat deck holds it."""
     key = (asset.asset_id, part.name)
     got = _ROUNDED.get(key)
@@ -744,11 +744,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 if RG.erode(region0, [], Fc).is_empty:
                     raise Fail(f"no room to hang below {sup.name}: its attachment does not "
                                f"fit the surface", intrinsic=True)
+                near = Polygon(st.xy[sup.owner]) if sup.owner in st.xy else None
                 below = [o for o in st.scene.objects.values() if o.placed and o.id not in exclude
                          and o.id in st.zr and st.zr[o.id][1] > float(s.origin[2]) - height
                          and st.zr[o.id][0] < float(s.origin[2])
-                         and Polygon(st.xy[o.id]).distance(Polygon(st.xy[sup.owner])) < 0.5]
-                names = ", ".join(o.id for o in below[:4]) or "the room"
+                         and near is not None and Polygon(st.xy[o.id]).distance(near) < 0.5]
+                names = ", ".join(o.id for o in below[:4]) or "the room's walls or other objects"
                 raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
                            f"{height:.2f} m tall {asset.category} below {sup.name}: "
                            f"{names} in the way")
@@ -898,7 +899,7 @@ def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float
     other than the support part, in the slab of ``height`` beyond the support plane (heights
     along its normal, footprint in its plane coordinates)."""
     s = sup.surface
-    for oid in exclude:
+    for oid in sorted(exclude):
         if oid == "room":
             continue
         for name, pts in st.world_pieces(oid):
