@@ -404,7 +404,13 @@ def _target_surface(ctx: CheckContext) -> Surface | str:
 
 
 def _child_label(ctx: CheckContext) -> str:
+    if ctx.edge.relation == "ON" and ctx.child.rests_on:
+        return ctx.child.rests_on  # standing on another face (sheet music on a ledge)
     return ctx.edge.child.surface or ctx.edge.spec.child_surface
+
+
+#: Degrees a child standing on a ledge on another face (``rests_on``) may lean back.
+LEDGE_LEAN_DEG = 35.0
 
 
 def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
@@ -457,8 +463,15 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     nA = _child_normal(child, _child_label(ctx), settled)
     ang = float(np.degrees(angle_between(nA, -sB.normal)))
     ang_tol = ANGLE_TOL_DEG
+    long_axis = _lying_axis(child, sB.normal, settled) if rel in ("ON", "IN") else None
     if rel in ("ON", "IN") and is_round(child):
         ang_tol = 180.0  # an apple rests in any orientation
+    elif long_axis is not None:
+        # lying along its long axis (a baguette, a bottle on its side): it may roll about
+        # that axis; the axis itself lies level
+        ang = abs(90.0 - float(np.degrees(angle_between(long_axis, sB.normal))))
+    elif rel == "ON" and child.rests_on:  # on its lower edge, leaning back on the ledge
+        ang_tol = LEDGE_LEAN_DEG + 1.0
     elif rel == "ON":  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
@@ -476,6 +489,25 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     elif on_wall:
         detail += f", resting on {e.parent.object}'s wall"
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
+
+
+#: Two extents within this ratio count as one round cross-section; the third must exceed
+#: them by as much to be a long axis.
+ROLL_RATIO = 1.3
+
+
+def _lying_axis(child: PlacedObject, n: np.ndarray, settled) -> np.ndarray | None:
+    """The world direction of the long axis of an elongated child with a round-ish cross
+    section (its two smaller extents within ``ROLL_RATIO``) lying on its side (that axis within
+    20 degrees of level), which it may roll about; None otherwise."""
+    ext = np.ptp(asset_geometry(child.asset).hull, axis=0)
+    k = np.argsort(ext)
+    if ext[k[1]] > ROLL_RATIO * ext[k[0]] or ext[k[2]] <= ROLL_RATIO * ext[k[1]]:
+        return None
+    axis = child.transform(settled)[:3, :3][:, k[2]] / child.scale
+    if abs(float(axis @ n)) > np.sin(np.deg2rad(20.0)):
+        return None
+    return axis
 
 
 def _gap_to_low_parts(pts: np.ndarray, pobj: PlacedObject, sB: Surface, settled) -> float:
@@ -559,6 +591,12 @@ def _check_on(ctx: CheckContext) -> Check:
         return c
     res = dict(c.residual)
     com = ctx.child.transform(ctx.settled) @ np.r_[asset_geometry(ctx.child.asset).com, 1.0]
+    if ctx.child.rests_on:
+        # standing on a ledge leaning back: its base rests on the support, its centre of
+        # mass lies over what it leans on
+        pts = world_points(ctx.child, hull_only=True, settled=ctx.settled)
+        h = _plane_dist(pts, sB)
+        com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
     inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:

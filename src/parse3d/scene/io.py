@@ -79,6 +79,8 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
                 d["joints"] = {k: float(v) for k, v in o.joints.items()}
             if o.stacked_on:
                 d["stacked_on"] = o.stacked_on
+            if o.rests_on:
+                d["rests_on"] = o.rests_on
         else:
             d["reason"] = o.reason
         if o.repairs:
@@ -254,7 +256,8 @@ def read_scene(path: str | Path) -> Scene:
                          quat_to_matrix(pose["quaternion"]), np.array(pose["position"], float),
                          "placed", None, int(od.get("trials", 0)), None,
                          bool(od.get("fixed", False)), support_choice=_support(od.get("support")),
-                         repairs=repairs, stacked_on=od.get("stacked_on"))
+                         repairs=repairs, stacked_on=od.get("stacked_on"),
+                         rests_on=od.get("rests_on"))
         if "settled_pose" in od:
             o.settled_rotation = quat_to_matrix(od["settled_pose"]["quaternion"])
             o.settled_position = np.array(od["settled_pose"]["position"], float)

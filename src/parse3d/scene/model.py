@@ -121,6 +121,10 @@ class PlacedObject:
         Re-placements after settling.
     stacked_on : str or None
         The id of the same-category object this one rests on in a pile or stack.
+    rests_on : str or None
+        The child's surface label that rests on its support when it is not the one its support
+        relation names (a sheet of music standing on its lower edge on a music stand's ledge,
+        leaning back on the desk: ``back``); None otherwise.
     """
 
     id: str
@@ -141,6 +145,7 @@ class PlacedObject:
     support_choice: SupportChoice | None = None
     repairs: list[Repair] = field(default_factory=list)
     stacked_on: str | None = None
+    rests_on: str | None = None
 
     def __post_init__(self):
         if self.support_choice is not None:

@@ -25,6 +25,7 @@ from typing import Any
 
 from ..errors import Problem
 from ..pag.validate import validate_data
+from ..relations import SURFACES
 
 __all__ = ["SCENE_FORMATS", "MAX_SCALE", "scene_problems", "contacts_problems"]
 
@@ -164,6 +165,7 @@ def scene_problems(data: Any, *, file: str | None = None,
             and isinstance(v.get("surface"), str) and isinstance(v.get("part"), (str, type(None)))),
               "a reference string, an object {owner, part, surface} or null")
         c.opt(o, "stacked_on", base, lambda v: isinstance(v, str), "an object id")
+        c.opt(o, "rests_on", base, lambda v: v in SURFACES, f"one of {', '.join(SURFACES)}")
         c.opt(o, "repairs", base, lambda v: isinstance(v, list) and all(
             isinstance(r, dict) and _int(r.get("round")) and isinstance(r.get("cause"), str)
             and isinstance(r.get("action"), str) for r in v),

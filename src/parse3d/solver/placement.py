@@ -20,6 +20,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, outline_indices, part_points
+from .ledge import may_lean, place_leaning
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -132,9 +133,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             total_trials += cfg.max_trials
             continue
         total_trials += trials
-        R, t, sup, body = pose
+        R, t, sup, body = pose[:4]
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
+        obj.rests_on = pose[4] if len(pose) > 4 else None
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
@@ -156,14 +158,25 @@ def _extent(asset: Asset, axis: int) -> float:
 
 def _headroom(st: SolveState, edge: Edge) -> float:
     """The most free height (m) over the internal surfaces an ``IN`` child may rest on (the
-    tallest shelf gap of a rack); inf for other supports, open containers or an unplaced
-    parent."""
-    if edge.relation != "IN" or edge.parent.is_room_element:
+    tallest shelf gap of a rack), or between an ``ON`` child's support surfaces on an object
+    and the ceiling; inf for other supports, open containers or an unplaced parent."""
+    if edge.relation not in ("IN", "ON") or edge.parent.is_room_element:
         return float("inf")
+    parent = st.scene.objects.get(edge.parent.object)
+    if parent is None or not parent.placed:
+        return float("inf")
+    return st.memo(edge.parent.object, ("headroom", edge.relation, str(edge.parent)),
+                   lambda: _free_height(st, edge))
+
+
+def _free_height(st: SolveState, edge: Edge) -> float:
     try:
-        return max(s.clearance for s in support_candidates(st, edge))
+        sups = support_candidates(st, edge)
     except Fail:
         return float("inf")
+    if edge.relation == "ON":  # up to the ceiling (a wine rack on a tall cabinet)
+        return max(st.scene.room.height - float(s.surface.origin[2]) for s in sups)
+    return max(s.clearance for s in sups)
 
 
 #: Footprint area a container needs per child IN it, in units of the child's typical size
@@ -258,6 +271,9 @@ def lacks(asset: Asset, reqs) -> str | None:
             if not any(i.part in names for i in asset.internal):
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
         elif kind == "free_top":
+            if all(_rounded_rim(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} top is a rounded rim, no flat band "
+                        f"{RIM_WIDTH * 100:.0f} cm wide: what stands on it tips over ({text})")
             if not any(_free_top(asset, p) for p in ps):
                 if not any(_flat_cached(asset.asset_id, p, "top") for p in ps):
                     return (f"{asset.asset_id}'s {label} is slanted: its top is no surface to "
@@ -304,6 +320,40 @@ def _lies_flat(asset: Asset, part) -> bool:
             _LIES_FLAT.clear()
         got = _LIES_FLAT[key] = any(_flat_enough(part, lb, tol=FLAT_TOL, frac=0.5)
                                     for lb in ("top", "bottom"))
+    return got
+
+
+#: Width (m) of the flat band a rim (a top around an opening) needs for things to stand on it.
+RIM_WIDTH = 0.03
+#: Width (m) of an opening no small child spans (a tub, not a burner ring a pot sits across).
+RIM_OPENING = 0.3
+
+_ROUNDED: dict[tuple[str, str], bool] = {}
+
+
+def _rounded_rim(asset: Asset, part) -> bool:
+    """Whether the part's top is a rim around an opening at least ``RIM_OPENING`` wide (its
+    top surface has such a hole: no small child spans it) that is rounded: no convex piece of
+    it is flat (within ``FLAT_TOL`` of its highest point) over a band ``RIM_WIDTH`` wide. A clawfoot tub's rolled rim is a tube: a bottle stood on its crest
+    tips into the tub; a built-in tub's flat deck holds it."""
+    key = (asset.asset_id, part.name)
+    got = _ROUNDED.get(key)
+    if got is None:
+        poly = part.surfaces["top"].polygon if "top" in part.surfaces else None
+        rims = [g for g in getattr(poly, "geoms", [poly]) if isinstance(g, Polygon)
+                and any(_sides(Polygon(r))[0] >= RIM_OPENING for r in g.interiors)]
+        got = False
+        if rims:
+            top = max(float(pc.vertices[:, 2].max()) for pc in part.piece_arrays)
+            widths = [0.0]
+            for pc in part.piece_arrays:
+                v = pc.vertices[pc.vertices[:, 2] >= top - FLAT_TOL]
+                if len(v) >= 3:
+                    widths.append(_sides(shapely.MultiPoint(v[:, :2]).convex_hull)[0])
+            got = max(widths) < RIM_WIDTH
+        if len(_ROUNDED) > 8192:
+            _ROUNDED.clear()
+        _ROUNDED[key] = got
     return got
 
 
@@ -418,6 +468,19 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
             try:
                 return _place_on(st, oid, asset, scale, hull, sup, support_edge, variant, body,
                                  rng, cfg, proposal)
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and any(
+            may_lean(st, asset, scale, sups[int(si)], support_edge) for si in order):
+        # too big to lie flat on a ledge: stand it on its edge, leaning back (sheet music)
+        for si in order:
+            if not may_lean(st, asset, scale, sups[int(si)], support_edge):
+                continue
+            try:
+                return place_leaning(st, oid, asset, scale, sups[int(si)], support_edge, others,
+                                     body, rng, lambda c, sp: _validate(st, c, support_edge,
+                                                                        others, sp))
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
@@ -653,27 +716,58 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
-        samples = _free_positions(rel, sup, others, region0, obst + holes, F, height, lift, rng,
-                                  cfg.max_trials)
+        # a stack: ON an object of the same kind (their PAG nodes share a category)
+        stack = rel == "ON" and sup.owner != "room" and bool(
+            set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates))
+        samples = None if stack else _free_positions(rel, sup, others, region0, obst + holes, F,
+                                                     height, lift, rng, cfg.max_trials)
         if samples is not None:
             pass  # drawn from the free space without building the region
         elif rel == "HANGING_BELOW":
             # what hangs needs its attachment (the points touching the parent) on the parent's
-            # surface, not its whole footprint: a towel is wider than the bar it hangs from
+            # surface, not its whole footprint: a towel is wider than the bar it hangs from; a
+            # hook as thick as a thin rail needs only its centre over it
             top = Y[hN <= hN.min() + 2e-3]
-            Fc = RG.convex_footprint(np.vstack([np.c_[top @ s.u, top @ s.v],
-                                                np.c_[top @ s.u, top @ s.v] + 1e-4]))
+            c = np.array([float(np.mean(top @ s.u)), float(np.mean(top @ s.v))])
+            Fc = RG.convex_footprint(np.vstack([c + d for d in ((0, 0), (1e-4, 0), (0, 1e-4),
+                                                                  (1e-4, 1e-4))]))
+            # the owner's other parts (a towel bar's brackets) block only what hangs at their
+            # depth: the hook, not the shoulders below
+            obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0),
+                             parts=False)
             region = RG.clip(RG.erode(region0, [], Fc),
                              RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+            depth = hN + h
+            for lo_h, hi_h, fp in _owner_pieces(st, sup, exclude, height + EPS):
+                at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
+                if len(at):
+                    Fs = RG.convex_footprint(np.vstack([np.c_[at @ s.u, at @ s.v],
+                                                        np.c_[at @ s.u, at @ s.v] + 1e-4]))
+                    region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0),
+                                                      [fp], Fs))
+            if region.is_empty or region.area < 1e-10:
+                if RG.erode(region0, [], Fc).is_empty:
+                    raise Fail(f"no room to hang below {sup.name}: its attachment does not "
+                               f"fit the surface", intrinsic=True)
+                near = Polygon(st.xy[sup.owner]) if sup.owner in st.xy else None
+                below = [o for o in st.scene.objects.values() if o.placed and o.id not in exclude
+                         and o.id in st.zr and st.zr[o.id][1] > float(s.origin[2]) - height
+                         and st.zr[o.id][0] < float(s.origin[2])
+                         and near is not None and Polygon(st.xy[o.id]).distance(near) < 0.5]
+                names = ", ".join(o.id for o in below[:4]) or "the room's walls or other objects"
+                raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
+                           f"{height:.2f} m tall {asset.category} below {sup.name}: "
+                           f"{names} in the way")
         else:
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                     and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
-                    and fa <= 1.5 * Polygon(st.xy[sup.owner]).area:
+                    and fa <= (STACK_OVER if stack else 1.5) * Polygon(st.xy[sup.owner]).area:
                 # a support smaller than the child (a pot on a burner, an apple in a bowl, a
                 # bottle on a bathtub's rim): the paper's stability rule, centre of mass over
                 # the solid support polygon, decides; only for children no bigger than the
-                # parent object (no wardrobe on a mug)
+                # parent object (no wardrobe on a mug), up to STACK_OVER times its area in a
+                # stack of one category (a picture book on a paperback)
                 com = (asset_geometry(asset).com * scale) @ R.T
                 obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0),
                                  step=step)
@@ -701,6 +795,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             region = apply_region_rules(ctx, others, region, "part")
             if rel == "ON" and sup.owner != "room" and not overhang:
                 region = _well_inside(region, F, height)
+            if stack:
+                region = _stack_centre(region, region0, asset, scale, R, s)
+                if region.is_empty or region.area < 1e-10:
+                    raise Fail(f"no room on {sup.name}: a {asset.category} stacked on another "
+                               f"keeps its centre of mass over the middle "
+                               f"{STACK_CENTRE * 100:.0f}% of it, and its footprint on it")
     else:
         region = region0
         samples = None
@@ -710,6 +810,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
+    if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
+            and _round_asset(asset):
+        samples = _middle_first(samples, region0, F, asset, scale, R, s)
     if lift > 0 and strategy == "constrained" and len(samples):
         # centred on a low part first (a pan on a burner), so it does not straddle its edge
         com = (asset_geometry(asset).com * scale) @ R.T
@@ -794,6 +897,44 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                         body), trials, checks, None
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float):
+    """``(lowest, highest, footprint)`` of the pieces of the supporting objects (``exclude``)
+    other than the support part, in the slab of ``height`` beyond the support plane (heights
+    along its normal, footprint in its plane coordinates)."""
+    s = sup.surface
+    for oid in sorted(exclude):
+        if oid == "room":
+            continue
+        for name, pts in st.world_pieces(oid):
+            if oid == sup.owner and name == sup.part:
+                continue
+            hq = (pts - s.origin) @ s.normal
+            if float(hq.max()) <= 1e-3 or float(hq.min()) >= height - 1e-3:
+                continue
+            yield float(hq.min()), float(hq.max()), RG.convex_footprint(plane_coords(s, pts))
+
+
+def _round_asset(asset: Asset) -> bool:
+    """About as wide as deep and tall (as :func:`parse3d.measure.is_round`): it rolls."""
+    ext = np.ptp(asset_geometry(asset).hull, axis=0)
+    return float(ext.max()) <= 1.3 * float(ext.min())
+
+
+def _middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, scale: float,
+                  R: np.ndarray, s) -> np.ndarray:
+    """Samples for a round child IN a container, nearest the middle of its floor first, led
+    by the middle itself (its centre of mass over it) when the footprint fits there: an apple
+    dropped off-centre on a bowl's curved floor rolls to the middle in settling and can tip a
+    footed bowl over."""
+    c3 = (asset_geometry(asset).com * scale) @ R.T  # its centre of mass over the middle
+    mid = np.asarray(region0.centroid.coords[0]) - np.array([c3 @ s.u, c3 @ s.v])
+    order = np.argsort(np.linalg.norm(samples - mid, axis=1), kind="stable")
+    out = samples[order]
+    if region0.contains(Polygon(F + mid)):
+        out = np.vstack([mid[None], out])[:len(samples)]
+    return out
 
 
 def _plane_key(s) -> tuple:
@@ -1022,6 +1163,24 @@ def _free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: l
         width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
         margin = 0.25 * width if height > TIPPY * width else 0.0
     return RG.free_samples(region0, obst, F, rng, n, margin=margin)
+
+
+#: Fraction (about its centre) of the support polygon of an object that the centre of mass of
+#: one of its own category stacked on it must lie over: a book on a book on a book.
+STACK_CENTRE = 0.4
+
+#: Footprint area, in units of the area of the object below, up to which an object of the same
+#: category may be stacked on it overhanging its edges (its centre of mass over the middle).
+STACK_OVER = 3.0
+
+
+def _stack_centre(region, region0, asset: Asset, scale: float, R: np.ndarray, s):
+    """``region`` (positions of the child's origin) restricted to those that put its centre
+    of mass over the middle ``STACK_CENTRE`` of ``region0``: offsets add up along a stack, and
+    a book resting near the edge of the one below tips the stack over in settling."""
+    com = (asset_geometry(asset).com * scale) @ R.T
+    mid = shapely.affinity.scale(region0, STACK_CENTRE, STACK_CENTRE, origin="centroid")
+    return RG.clip(region, shapely.affinity.translate(mid, -float(com @ s.u), -float(com @ s.v)))
 
 
 def _well_inside(region, F: np.ndarray, height: float):

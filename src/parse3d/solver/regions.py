@@ -358,11 +358,11 @@ def height_band(ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeo
 
 def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
               within: tuple[float, float, float, float] | None = None,
-              step: float = 0.0) -> list[np.ndarray]:
+              step: float = 0.0, parts: bool = True) -> list[np.ndarray]:
     """Footprints (in the support plane) of placed objects in the slab above the support, and
-    the other parts of the supporting objects (``exclude``) in that slab, except pieces of
-    theirs rising at most ``step`` above the support (burners on a cooktop: the child stands
-    on them).
+    (with ``parts``) the other parts of the supporting objects (``exclude``) in that slab,
+    except pieces of theirs rising at most ``step`` above the support (burners on a cooktop:
+    the child stands on them).
 
     ``within`` is a box ``(a0, b0, a1, b1)`` in plane coordinates: footprints that cannot meet
     it are left out (on horizontal supports, found through the state's spatial index; a
@@ -405,7 +405,7 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
     key = ("pieces", *np.round(sup.surface.origin, 9).tolist(), *np.round(n, 9).tolist())
-    for oid in exclude:
+    for oid in (exclude if parts else ()):
         for piece in st.memo(oid, key, lambda oid=oid: _piece_heights(st, oid, sup)):
             lo_h, hi_h, pts, fp = piece
             if hi_h <= max(1e-3, step) or lo_h >= height - 1e-3:

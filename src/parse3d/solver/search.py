@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import shapely
+from shapely.geometry import Polygon
 
 from ..measure.checks import check_relations, object_centroid
 from ..pag.algorithms import assembly_order
@@ -70,6 +71,11 @@ def support_descendants(pag: PAG, oid: str) -> list[str]:
 #: least ``JUMP_ROUNDS``, more while a round is short, up to ``JUMP_TRIES`` re-placements (one
 #: culprit, the bed a nightstand must stand beside, gets several draws).
 MAX_CULPRITS = 6
+
+#: Metres below a parent, and around its footprint, where placed objects are in the way of what
+#: hangs from it (a hanger's length, a robe's sway).
+HANG_SPACE = 1.0
+HANG_REACH = 0.3
 JUMP_ROUNDS = 2
 JUMP_TRIES = 6
 
@@ -210,6 +216,17 @@ class _Search:
                                             for e in oe)
             if same_support or same_wall:
                 out.append(other)
+        if edges[0].relation == "HANGING_BELOW" and sup in self.placements:
+            # what stands or hangs in the space below the parent (a shelf under a robe hook)
+            st = self.st
+            z0 = st.zr[sup][0]
+            foot = Polygon(st.xy[sup])
+            for other in occupants:
+                if other in out or other == sup or other not in st.zr:
+                    continue
+                if z0 - HANG_SPACE < st.zr[other][1] and st.zr[other][0] < z0 and \
+                        foot.distance(Polygon(st.xy[other])) < HANG_REACH:
+                    out.append(other)
         # never move what the failed object rests on or anything holding it up
         below = set()
         e = pag.supporter(oid)

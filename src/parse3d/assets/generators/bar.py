@@ -76,8 +76,10 @@ def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(rows):
         z = 0.04 + k * rh
         parts.append(make_part(f"shelf_{k}", "shelf", S.box((iw, d, 0.012), center=(0, 0, z + 0.006)), wood))
-        # cradle bars in front and back keep the bottles from rolling
-        bars = [S.box((iw, 0.015, 0.02), center=(0, y, z + 0.022)) for y in (-d / 2 + 0.03, d / 2 - 0.03)]
+        # cradle bars in front and back keep the bottles from rolling; 13 cm apart at most, so
+        # that a bottle's body (not its narrower neck) lies on both
+        yb = min(d / 2 - 0.03, 0.065)
+        bars = [S.box((iw, 0.015, 0.02), center=(0, y, z + 0.022)) for y in (-yb, yb)]
         parts.append(make_part(f"cradle_{k}", "cradle", bars, wood))
     parts += feet4("foot", w=w, d=d, r=0.015, h=0.04 - 0.0, mat=wood)
     return parts

@@ -98,7 +98,9 @@ def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     metal = M.solid((0.08, 0.08, 0.09), "metal", 0.5, 0.6)
     desk_mat = M.wood(rng) if variant == "wooden" else metal
     tilt = np.deg2rad(rng.uniform(15, 25))
-    R = rot((1, 0, 0), -tilt)
+    # the desk leans back (its top away from the player in front, +y), the ledge along its
+    # lower front edge, where sheets stand leaning on it
+    R = rot((1, 0, 0), tilt)
     zc = h - dh / 2 * np.cos(tilt)
     parts = [make_part("desk", "desk", S.box((w, 0.006 if variant != "wooden" else 0.012, dh), center=(0, 0, zc), R=R),
                        desk_mat)]

@@ -1,0 +1,181 @@
+"""A thin flat object standing on a narrow ledge, leaning back on the part behind it.
+
+Sheet music ``ON stand:ledge``: a 0.22 x 0.30 m sheet cannot lie flat on a 5 cm ledge. A real
+sheet stands on its lower edge on the ledge and leans back on the stand's desk. When a thin
+child (its thinnest extent at most ``THIN`` times the next) does not fit lying flat on an
+object's surface, :func:`place_leaning` stands it on the edge of its longer side, its flat face
+against the nearest flat part of the support's owner that rises behind the ledge and leans
+back by 3-35 degrees (the desk), and its lower edge on the ledge.
+
+The pose records ``rests_on`` (the child's surface label on the ledge), which the ON check
+reads: that surface faces the support within the lean angle, and the child's base (not its
+centre of mass, which lies over the desk) rests on the support polygon.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+
+from ..assets.model import Asset
+from ..measure.checks import EPS
+from ..pag.model import Edge
+from ..scene.model import PlacedObject
+from .collision import Body
+from .config import Fail
+from .geometry import asset_geometry
+from .state import SolveState, plane_coords
+from .support import Support
+
+__all__ = ["place_leaning", "may_lean", "THIN", "LEAN_RANGE_DEG"]
+
+#: A child is thin when its smallest extent is at most this fraction of its middle one.
+THIN = 0.2
+
+#: Tilt from vertical (degrees) of a backing part a thin child may lean on.
+LEAN_RANGE_DEG = (3.0, 35.0)
+
+#: Metres around the ledge within which a backing part's foot must lie.
+BACKING_REACH = 0.03
+
+#: Positions along the ledge tried per asset.
+LEAN_TRIALS = 8
+
+#: Asset axis -> surface label of its negative and positive side.
+_LABELS = {0: ("left", "right"), 1: ("back", "front"), 2: ("bottom", "top")}
+
+
+def may_lean(st: SolveState, asset: Asset, scale: float, sup: Support, edge: Edge) -> bool:
+    """Whether ``place_leaning`` applies: ON a part of an object, a thin child, and a support
+    narrower than the child lying flat."""
+    if edge.relation != "ON" or sup.owner == "room" or edge.child.part is not None:
+        return False
+    ext = np.sort(np.ptp(asset_geometry(asset).hull, axis=0) * scale)
+    if ext[0] > THIN * ext[1]:
+        return False
+    x0, y0, x1, y1 = sup.region.bounds
+    return min(x1 - x0, y1 - y0) < ext[1]
+
+
+def _backing(st: SolveState, sup: Support, height: float):
+    """``(part name, front normal (3,), front offset)`` of the owner's flat part behind the
+    ledge that leans back within ``LEAN_RANGE_DEG``: the plane the child's face rests on; None
+    when there is none."""
+    s = sup.surface
+    n_up = s.normal
+    ledge = sup.region.buffer(BACKING_REACH)
+    centre = np.asarray(sup.region.centroid.coords[0])
+    centre3 = s.origin + centre[0] * s.u + centre[1] * s.v
+    best = None
+    for name, pts in st.world_pieces(sup.owner):
+        if name == sup.part:
+            continue
+        h = (pts - s.origin) @ n_up
+        if float(h.max()) < 0.5 * height or float(h.min()) > 0.05:
+            continue  # not rising from the ledge to hold the child up
+        foot = pts[h <= float(h.min()) + 0.02]
+        if not ledge.intersects(shapely.MultiPoint(plane_coords(s, foot)).convex_hull):
+            continue
+        c = pts.mean(axis=0)
+        _, sv, vt = np.linalg.svd(pts - c, full_matrices=False)
+        if sv[2] > 0.2 * sv[1]:
+            continue  # not a flat board
+        n = vt[2] / np.linalg.norm(vt[2])
+        if (centre3 - c) @ n < 0:
+            n = -n  # the face toward the ledge
+        tilt = float(np.degrees(np.arccos(np.clip(abs(n @ n_up), -1, 1))))
+        tilt = 90.0 - tilt  # the board's tilt from vertical
+        if not (LEAN_RANGE_DEG[0] <= tilt <= LEAN_RANGE_DEG[1]) or n @ n_up < 0:
+            continue
+        off = float(np.max(pts @ n))
+        rise = float(h.max())
+        if best is None or rise > best[0]:
+            best = (rise, name, n, off)
+    return None if best is None else best[1:]
+
+
+def _lean_rotation(asset: Asset, n: np.ndarray, up: np.ndarray, portrait: bool):
+    """Rotation taking the asset's thinnest axis (its positive side) to ``n`` and its longer
+    (``portrait``) or shorter in-plane axis to the board's up direction; also returns the
+    label of the child's surface that then faces down."""
+    ext = np.ptp(asset_geometry(asset).hull, axis=0)
+    order = np.argsort(ext)
+    thin, mid, long_ = (int(k) for k in order)
+    a_up, a_along = (long_, mid) if portrait else (mid, long_)
+    d_up = up - (up @ n) * n
+    d_up /= np.linalg.norm(d_up)
+    R = np.zeros((3, 3))
+    R[:, thin] = n
+    R[:, a_up] = d_up
+    R[:, a_along] = np.cross(d_up, n)
+    if np.linalg.det(R) < 0:
+        R[:, a_along] *= -1
+    return R, _LABELS[a_up][0]
+
+
+def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
+                  edge: Edge, others: list[Edge], body: Body, rng: np.random.Generator,
+                  validate) -> tuple:
+    """Stand the thin child on its lower edge on ``sup``, leaning back on the owner's board
+    behind it. ``validate(cand, sup)`` returns ``(ok, why, checks)`` as the solver's relation
+    checks do. Returns ``((R, t, sup, body, rests_on), trials, checks, None)`` like the
+    solver's other placements; raises ``Fail`` when no pose holds."""
+    s = sup.surface
+    hull = asset_geometry(asset).hull * scale
+    ext = np.sort(np.ptp(hull, axis=0))
+    back = _backing(st, sup, 0.5 * ext[2])
+    if back is None:
+        raise Fail(f"no free space on {sup.name}: {oid} does not fit lying flat, and "
+                   f"{sup.owner} has no board behind the ledge to lean it on", intrinsic=True)
+    part, n, off = back
+    last = "no position along the ledge"
+    trials = 0
+    for portrait in (True, False):
+        R, rests = _lean_rotation(asset, n, s.normal, portrait)
+        Y = hull @ R.T
+        c = float(n @ s.normal)
+        # two conditions fix the offsets along n and up: the face 1 mm (plus EPS) off the
+        # board, the lower edge EPS above the ledge
+        a_need = off + EPS + 1e-3 - float(np.min(Y @ n))
+        b_need = float(s.origin @ s.normal) + EPS - float(np.min(Y @ s.normal))
+        M = np.array([[1.0, c], [c, 1.0]])
+        alpha, beta = np.linalg.solve(M, [a_need, b_need])
+        along = np.cross(s.normal, n)
+        along /= np.linalg.norm(along)
+        base = alpha * n + beta * s.normal
+        # the range along the ledge where the child stays on it
+        uv = shapely.get_coordinates(sup.region)
+        ledge3 = s.origin + uv[:, :1] * s.u + uv[:, 1:] * s.v
+        lo, hi = float(np.min(ledge3 @ along)), float(np.max(ledge3 @ along))
+        ylo, yhi = float(np.min(Y @ along)), float(np.max(Y @ along))
+        room = (hi - lo) - (yhi - ylo)
+        if room < 0:
+            last = f"{oid} standing is wider than {sup.name}"
+            continue
+        mid = 0.5 * (lo + hi) - 0.5 * (ylo + yhi)
+        cur = float(base @ along)
+        for k in range(LEAN_TRIALS):
+            trials += 1
+            g = mid + (0.0 if k == 0 else rng.uniform(-0.4, 0.4) * room)
+            t = base + (g - cur) * along
+            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+            cand.rests_on = rests
+            Yt = Y + t
+            h = (Yt - s.origin) @ s.normal
+            foot = plane_coords(s, Yt[h <= h.min() + 3e-3]).mean(axis=0)
+            if not sup.region.buffer(1e-4).contains(shapely.Point(foot)):
+                last = f"its lower edge would miss {sup.name} in front of {sup.owner}:{part}"
+                continue
+            ok, why, checks = validate(cand, sup)
+            if not ok:
+                last = why
+                continue
+            body.move(R, t)
+            hit = st.world.collides(body)
+            if hit is not None:
+                last = f"collides with {hit}"
+                continue
+            return (R, t, sup, body, rests), trials, checks, None
+    raise Fail(f"no valid pose standing on {sup.name} against {sup.owner}:{part} "
+               f"({trials} trials, last: {last})")
+
