@@ -14,7 +14,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import shapely
-from shapely.geometry import Polygon
 
 from ..measure.checks import check_relations, object_centroid
 from ..pag.algorithms import assembly_order
@@ -220,12 +219,12 @@ class _Search:
             # what stands or hangs in the space below the parent (a shelf under a robe hook)
             st = self.st
             z0 = st.zr[sup][0]
-            foot = Polygon(st.xy[sup])
+            foot = shapely.Polygon(st.xy[sup])
             for other in occupants:
                 if other in out or other == sup or other not in st.zr:
                     continue
                 if z0 - HANG_SPACE < st.zr[other][1] and st.zr[other][0] < z0 and \
-                        foot.distance(Polygon(st.xy[other])) < HANG_REACH:
+                        foot.distance(shapely.Polygon(st.xy[other])) < HANG_REACH:
                     out.append(other)
         # never move what the failed object rests on or anything holding it up
         below = set()
