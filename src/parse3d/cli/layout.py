@@ -53,6 +53,12 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", help="Seed of the split, initialisation and noise."),
         checkpoint_every: int = typer.Option(250, "--checkpoint-every", help="Steps between checkpoints."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
+        frame: str = typer.Option("world", "--frame",
+                                  help="pag runs: translation of a supported object in the "
+                                       "world (world) or in its support parent's frame (parent)."),
+        time_limit: float = typer.Option(None, "--time-limit",
+                                         help="Minutes of wall time; stops (with a checkpoint) "
+                                              "before --steps when reached."),
         threads: int = threads_opt,
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:
@@ -68,7 +74,8 @@ def register(app: typer.Typer) -> None:
         _threads(threads)
         cfg = TrainConfig(cond=cond, steps=steps, preset=preset, relations=relations,
                           shape=shape, noise_draws=noise_draws, cond_dropout=cond_dropout, seed=seed,
-                          checkpoint_every=checkpoint_every, device=device)
+                          checkpoint_every=checkpoint_every, device=device, frame=frame,
+                          time_limit=time_limit)
         cfg.check()
         from rich.progress import (
             BarColumn,
