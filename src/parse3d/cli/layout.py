@@ -120,6 +120,9 @@ def register(app: typer.Typer) -> None:
         guidance: float = typer.Option(1.0, "--guidance",
                                        help="Classifier-free guidance weight (1: plain conditional)."),
         uncond: bool = typer.Option(False, "--uncond", help="Drop the PAG condition."),
+        separate: int = typer.Option(0, "--separate", min=0,
+                                     help="Separation guidance: push interpenetrating objects "
+                                          "apart during the last N denoising steps (0: off)."),
         refine: bool = typer.Option(False, "--refine",
                                     help="Hand the generated poses to the solver as its first "
                                          "proposals; report how many it kept."),
@@ -146,7 +149,7 @@ def register(app: typer.Typer) -> None:
         pag = load_pag(pag_file)
         scene = sample_layout(r, pag, seed=seed, file=str(pag_file),
                               options=SampleOptions(steps=sample_steps, guidance=guidance,
-                                                    cond=not uncond))
+                                                    cond=not uncond, separate=separate))
         gen_held = sum(1 for c in scene.relations if c.holds)
         rep = None
         if refine:
@@ -185,6 +188,9 @@ def register(app: typer.Typer) -> None:
         sample_steps: int = typer.Option(100, "--sample-steps", help="Denoising steps."),
         guidance: float = typer.Option(1.0, "--guidance",
                                        help="Classifier-free guidance of the PAG rows (1: plain)."),
+        separate: int = typer.Option(0, "--separate", min=0,
+                                     help="Separation guidance in every generated row (the "
+                                          "random one too): the last N denoising steps (0: off)."),
         previews: int = typer.Option(2, "--previews", help="Scenes to render side by side."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
         threads: int = threads_opt,
@@ -214,7 +220,7 @@ def register(app: typer.Typer) -> None:
             res = evaluate(loaded, files, seeds=seeds, physics=not no_physics,
                            sample_steps=sample_steps, previews=previews, out=dest,
                            progress=None if as_json else (lambda s: st.update(s)),
-                           guidance=guidance)
+                           guidance=guidance, separate=separate)
         if not res.scenes:
             raise InputError(Problem("", "no held-out scene has only categories the runs know",
                                      str(dataset or runs[0]), "vocabulary"))
