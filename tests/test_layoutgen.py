@@ -285,6 +285,12 @@ def test_model_shapes_and_condition_matters():
     y0 = m(x, t, g, torch.zeros(4))
     assert y1.shape == (4, 3, 12) and torch.isfinite(y1).all()
     assert not torch.allclose(y1, y0)
+    # with the condition dropped, nothing of the graph gets through (not even which pairs
+    # carry a relation: the edge stream holds only those pairs)
+    other = {**g, "rel_vec": torch.randn(3, 5), "rel_child": torch.tensor([0, 2, 1]),
+             "rel_parent": torch.tensor([2, 1, -1])}
+    assert torch.allclose(m(x, t, other, torch.zeros(4)), y0, atol=1e-6)
+    assert not torch.allclose(m(x, t, other, torch.ones(4)), y1)
 
 
 def test_pair_relation_reaches_the_node_through_attention_values():
