@@ -398,6 +398,12 @@ def test_metrics_see_collisions_and_the_room(dataset):
     assert outside_room(bad) == ["mug"]
     mb = layout_metrics(bad, physics=False)
     assert mb.collision_rate == 0.5 and mb.outside == 0.25 and mb.support_rate < 1.0
+    # separation on the meshes moves the smaller object (the chair) out of the desk
+    from parse3d.layoutgen.separate import separate_scene
+
+    desk = bad.objects["desk"].position.copy()
+    assert separate_scene(bad) > 0
+    assert collisions(bad) == [] and np.array_equal(bad.objects["desk"].position, desk)
 
 
 def test_eval_rows(run_dir, dataset, tmp_path):

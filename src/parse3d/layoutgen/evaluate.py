@@ -8,7 +8,8 @@ laid out by each *row* and measured the same way:
 - **random**: uniform positions in the footprint, heights in ``[0, room height - object
   height]``, uniform yaw, upright;
 - with separation guidance (``separate`` > 0, :mod:`.separate`), every generated row uses it
-  and a second random row, **random poses, separated**, gets the same passes (``separate`` + 3);
+  and a second random row, **random poses, separated**, gets the same box passes
+  (``separate`` + 3) and the same separation on the meshes;
 - one row per run: a ``pag`` run conditioned on the PAG, and (trained with condition dropout)
   the same network with the condition dropped; a ``none`` run unconditioned.
 
@@ -287,7 +288,7 @@ def _sub_pag(ls: LayoutScene) -> PAG:
 
 
 def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given_scale: bool,
-               label: str) -> Scene:
+               label: str, separate: bool = False) -> Scene:
     if given_scale:
         scales = list(ls.scales)
     else:  # equal volume of the given asset and the generated size
@@ -295,7 +296,7 @@ def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given
                                         / np.prod(np.maximum(a.extents, 1e-4))), 0.25, 4.0))
                   for p, a in zip(poses, ls.assets, strict=True)]
     return layout_scene(pag, ls.object_ids, ls.categories, poses, seed=seed, assets=ls.assets,
-                        scales=scales, meta={"generator": label})
+                        scales=scales, meta={"generator": label}, separate=separate)
 
 
 @dataclass
@@ -459,14 +460,16 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                     poses = random_poses(ls, rng)
                     if cond:  # the separated random row
                         poses = separate_poses(poses, ls.footprint, ls.height, rounds=separate + 3)
-                    scene = _scene_for(ls, pag, poses, seed, given_scale=True, label=kind)
+                    scene = _scene_for(ls, pag, poses, seed, given_scale=True, label=kind,
+                                       separate=cond)
                 else:
                     poses = generate_poses(run, ls.categories, ls.assets, ls.relations,
                                            ls.footprint, ls.height, seed=seed,
                                            options=SampleOptions(steps=sample_steps, cond=cond,
                                                                  guidance=guidance,
                                                                  separate=separate))
-                    scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name)
+                    scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name,
+                                       separate=separate > 0)
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene
 

@@ -54,7 +54,8 @@ class SampleOptions:
         False samples a ``pag`` run unconditioned (condition dropped), as its "none" row.
     separate : int
         Separation guidance (:mod:`.separate`): the last ``separate`` denoising steps push
-        interpenetrating objects apart; 0 (default) samples without it.
+        overlapping boxes apart, and once the assets are placed what still interpenetrates is
+        moved apart on the meshes; 0 (default) samples without it.
     """
 
     steps: int = 100
@@ -174,11 +175,13 @@ def fit_asset(category: str, size: np.ndarray, *, fallback: Asset | None = None
 
 def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: np.ndarray, *,
                  seed: int, assets: list[Asset] | None = None,
-                 scales: list[float] | None = None, meta: dict | None = None) -> Scene:
+                 scales: list[float] | None = None, meta: dict | None = None,
+                 separate: bool = False) -> Scene:
     """A Scene with the objects at the given (N, 12) poses; relations checked on them.
 
     With ``assets``/``scales`` the given assets are used as they are; otherwise each object
-    gets its best-fitting pool asset (:func:`fit_asset`).
+    gets its best-fitting pool asset (:func:`fit_asset`). ``separate``: objects still
+    interpenetrating are moved apart on their meshes first (:func:`.separate.separate_scene`).
     """
     scene = Scene(pag, int(seed), build_shell(pag.room), meta=dict(meta or {}))
     R = rotation_from_6d(poses[:, 6:12])
@@ -192,6 +195,10 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
             oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
             support=None if sup is None else str(sup.parent),
             fixed=sup is not None and sup.relation in _FIXED)
+    if separate:
+        from .separate import separate_scene
+
+        scene.meta["separated"] = separate_scene(scene)
     scene.meta["resolved"] = nearest_walls(scene)
     scene.relations = check_relations(scene)
     return scene
@@ -242,7 +249,7 @@ def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
     scene = layout_scene(pag, ids, cat_list, poses, seed=seed, meta={
         "generator": "layoutgen", "run": run.name, "run_step": run.step,
         "cond": run.config.cond if options.cond else "none", "guidance": options.guidance,
-        "sample_steps": options.steps})
+        "sample_steps": options.steps}, separate=options.separate > 0)
     scene.timings["generate"] = round(t1 - t0, 4)
     scene.timings["assets"] = round(time.perf_counter() - t1, 4)
     return scene
