@@ -96,7 +96,7 @@ def separate_poses(poses: np.ndarray, footprint: np.ndarray, height: float, *,
 
 
 #: Rounds of :func:`separate_scene`.
-MESH_ROUNDS = 4
+MESH_ROUNDS = 8
 _MARGIN = 0.002
 
 
