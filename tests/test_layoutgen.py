@@ -420,6 +420,12 @@ def test_eval_rows(run_dir, dataset, tmp_path):
     assert solver.mean_std("relations") == (1.0, 0.0)
     assert len(res.rows[1].per_seed) == 2
     assert "| solver (solved poses) |" in res.markdown()
+    # separation guidance: every generated row, and the random poses get it as a row of their own
+    sep = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, separate=2)
+    names = [r.name for r in sep.rows]
+    assert names[2] == "random poses, separated"
+    assert all("separated 2" in n for n in names[3:]) and len(names) == 5
+    assert sep.rows[2].mean_std("collision_rate")[0] <= sep.rows[1].mean_std("collision_rate")[0]
 
 
 def test_refine_keeps_the_solvers_own_poses(dataset):
