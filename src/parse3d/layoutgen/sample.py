@@ -119,7 +119,7 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
         out[:, :3] += (2.0 * d / span).astype(out.dtype)
         return out
 
-    guided = set(sched.timesteps[len(sched.timesteps) - options.separate:].tolist()) \
+    guided = set(sched.timesteps[max(len(sched.timesteps) - options.separate, 0):].tolist()) \
         if options.separate > 0 else set()
     with torch.no_grad():
         cond = run.model.condition(g)
