@@ -29,6 +29,8 @@ def main() -> None:
     ap.add_argument("--preset", default="small")
     ap.add_argument("--lr", type=float, default=8e-4)
     ap.add_argument("--sample-steps", type=int, default=100)
+    ap.add_argument("--frame", default="world", choices=("world", "parent"),
+                    help="translations of supported objects in the world or the parent's frame")
     ap.add_argument("--raw", action="store_true", help="sample with the raw weights, not the EMA")
     args = ap.parse_args()
 
@@ -44,7 +46,7 @@ def main() -> None:
     t0 = time.process_time()
     rep = train(args.dataset, args.out, TrainConfig(
         steps=args.steps, preset=args.preset, relations="learned", cond_dropout=0.0,
-        checkpoint_every=max(args.steps // 4, 1), lr=args.lr))
+        checkpoint_every=max(args.steps // 4, 1), lr=args.lr, frame=args.frame))
     losses = rep.losses
     print(f"trained to step {rep.steps} ({time.process_time() - t0:.0f} s CPU); loss, mean of "
           f"the first 20 steps {np.mean(losses[:20]):.4f}, of the last 50 {np.mean(losses[-50:]):.4f}")

@@ -54,6 +54,10 @@ def main() -> int:
     ap.add_argument("--shape", default="descriptor", help="descriptor or pointcloud")
     ap.add_argument("--noise-draws", type=int, default=16)
     ap.add_argument("--guidance", type=float, default=1.0)
+    ap.add_argument("--frame", default="world", choices=("world", "parent"),
+                    help="the PAG-conditioned run's translations of supported objects")
+    ap.add_argument("--separate", type=int, default=0,
+                    help="separation guidance in the last N denoising steps (every row)")
     ap.add_argument("--device", default="cpu")
     ap.add_argument("--no-settle", action="store_true", help="build without settling (faster)")
     ap.add_argument("--seeds", type=int, default=3)
@@ -86,7 +90,8 @@ def main() -> int:
     for cond in ("pag", "none"):
         cfg = TrainConfig(cond=cond, steps=args.steps, preset=args.preset, relations=args.relations,
                           shape=args.shape, noise_draws=args.noise_draws, device=args.device,
-                          checkpoint_every=max(args.steps // 8, 1))
+                          checkpoint_every=max(args.steps // 8, 1),
+                          frame=args.frame if cond == "pag" else "world")
         c0, w0 = time.process_time(), time.perf_counter()
         rep = train(dataset, args.out / cond, cfg, log=print)
         cpu[cond] = (time.process_time() - c0, time.perf_counter() - w0)
@@ -103,7 +108,8 @@ def main() -> int:
     c0 = time.process_time()
     res = evaluate(runs, files, seeds=args.seeds, physics=not args.no_physics,
                    sample_steps=args.sample_steps, previews=2, out=dest,
-                   progress=lambda s: print("  " + s, flush=True), guidance=args.guidance)
+                   progress=lambda s: print("  " + s, flush=True), guidance=args.guidance,
+                   separate=args.separate)
     write_result(res, dest)
     _loss_figure(args.out, dest / "losses.png")
     print(f"evaluation: {len(res.scenes)} scenes, {time.process_time() - c0:.0f} s CPU\n")

@@ -150,15 +150,20 @@ def test_dataset_reads_asset_info_from_its_index(dataset, monkeypatch):
     assert [r["id"] for r in loaded] == [s.asset_info[0].asset_id]
 
 
-def test_sampling_recovers_the_poses_a_perfect_denoiser_knows(dataset):
+@pytest.mark.parametrize("frame", ["world", "parent"])
+def test_sampling_recovers_the_poses_a_perfect_denoiser_knows(dataset, frame):
     """The sampler's half of the diffusion (scheduler steps, clipping, the epsilon-to-x0
-    conversion, pose normalisation, 6-D rotations): with the exact noise of a one-scene
-    distribution as the network's answer, sampling must give that scene's poses back."""
+    conversion, pose normalisation, 6-D rotations, the parent frame's composition): with the
+    exact noise of a one-scene distribution as the network's answer, sampling must give that
+    scene's poses back."""
     from parse3d.layoutgen.train import LayoutRun, make_scheduler
 
     ls = data.load_dataset(dataset)[0]
     stats = pose.PoseStats.fit([ls.poses])
-    x0 = torch.as_tensor(pose.normalise_poses(ls.poses, ls.footprint, ls.height, stats))
+    parents = data.support_parents(ls.relations, len(ls.categories)) if frame == "parent" else None
+    if parents is not None:  # the mug and the book on the desk
+        assert parents.tolist() == [-1, 0, 0, -1]
+    x0 = torch.as_tensor(pose.normalise_poses(ls.poses, ls.footprint, ls.height, stats, parents))
     abar = make_scheduler().alphas_cumprod
 
     class Exact(torch.nn.Module):
@@ -173,7 +178,7 @@ def test_sampling_recovers_the_poses_a_perfect_denoiser_knows(dataset):
             a = abar[t.long()].to(x_t.dtype)[:, None, None]
             return (x_t - a.sqrt() * x0) / (1 - a).sqrt()
 
-    run = LayoutRun(Path("exact"), TrainConfig(cond="pag"), Exact(),
+    run = LayoutRun(Path("exact"), TrainConfig(cond="pag", frame=frame), Exact(),
                     encoders.ShapeDescriptor(ls.categories), encoders.TokenRelationEncoder(),
                     stats, {}, "", 0)
     for steps in (100, 20):
@@ -181,6 +186,55 @@ def test_sampling_recovers_the_poses_a_perfect_denoiser_knows(dataset):
                              ls.height, seed=3, options=SampleOptions(steps=steps))
         assert np.abs(got[:, :6] - ls.poses[:, :6]).max() < 1e-4  # metres
         assert np.abs(got[:, 6:] - ls.poses[:, 6:]).max() < 1e-4
+
+
+def test_parent_frame_follows_the_parent():
+    """A supported object's parent-frame translation does not change when its parent and it
+    move together (translated and turned); cycles and room parents give roots."""
+    rng = np.random.default_rng(2)
+    fp = np.array([[0, 0], [4, 0], [4, 3], [0, 3]], float)
+
+    def yaw(a):
+        return np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1.0]])
+
+    R = np.stack([yaw(a) for a in rng.uniform(-3, 3, 4)])
+    p = np.c_[rng.uniform(0.5, 2.5, (4, 3)), rng.uniform(0.1, 1.5, (4, 3)), pose.rotation_to_6d(R)]
+    parents = np.array([-1, 0, 1, -1])  # a tray on a desk, a cup on the tray
+    st = pose.PoseStats.fit([p])
+    x = pose.normalise_poses(p, fp, 2.5, st, parents)
+    assert np.allclose(pose.denormalise_poses(x, fp, 2.5, st, parents), p, atol=1e-5)
+    M, d = yaw(0.7), np.array([0.3, -0.2, 0.0])
+    q = p.copy()
+    q[:3, :3] = (p[:3, :3] - p[0, :3]) @ M.T + p[0, :3] + d
+    q[:3, 6:] = pose.rotation_to_6d(M @ R[:3])
+    y = pose.normalise_poses(q, fp, 2.5, st, parents)
+    assert np.allclose(y[1:3, :3], x[1:3, :3], atol=1e-5)  # the tray and the cup
+    assert not np.allclose(y[0, :3], x[0, :3])  # the desk moved
+    rel = [encoders.RelationSpec(1, 0, "ON", "tray", "desk"),
+           encoders.RelationSpec(0, 1, "ON", "desk", "tray"),  # would close a cycle
+           encoders.RelationSpec(2, 1, "NEAR", "cup", "tray"),
+           encoders.RelationSpec(2, -1, "ON", "cup", "floor"),
+           encoders.RelationSpec(2, 0, "ON", "cup", "desk")]  # the cup's second support
+    assert data.support_parents(rel, 3).tolist() == [-1, 0, -1]
+
+
+def test_separation_pushes_boxes_apart():
+    from parse3d.layoutgen.separate import box_push, separate_poses
+
+    fp = np.array([[0, 0], [4, 0], [4, 3], [0, 3]], float)
+    r6 = pose.rotation_to_6d(np.eye(3))
+    p = np.array([np.r_[1.0, 1.5, 0, 1.0, 1.0, 1.0, r6],  # a cube ...
+                  np.r_[1.6, 1.5, 0, 0.5, 0.5, 0.5, r6],  # ... and a smaller one 0.15 m into it
+                  np.r_[1.0, 1.5, 0.98, 0.2, 0.2, 0.2, r6],  # sunk 2 cm into the first's top
+                  np.r_[3.0, 1.5, 0, 1.0, 1.0, 1.0, r6],  # a shelf ...
+                  np.r_[3.0, 1.5, 0.2, 0.3, 0.3, 0.3, r6]])  # ... and what is in it
+    d = box_push(p, fp, 2.5)
+    assert d[1, 0] > 0 and d[0, 0] < 0 and abs(d[1, 0]) > abs(d[0, 0])  # the smaller moves more
+    assert d[2, 2] > 0 and np.allclose(d[2, :2], 0)  # lifted, not pushed sideways
+    assert np.allclose(d[4], 0) and np.allclose(d[3], 0)  # inside the shelf: left alone
+    q = separate_poses(p, fp, 2.5, rounds=12)
+    assert q[1, 0] - 0.25 >= q[0, 0] + 0.5 - 0.01 and q[2, 2] >= 0.99
+    assert np.all(q[:, 0] + 0.5 * q[:, 3] <= 4 + 1e-9)  # still in the room
 
 
 def test_a_model_trained_on_one_scene_generates_it_back(dataset, tmp_path):
@@ -231,6 +285,12 @@ def test_model_shapes_and_condition_matters():
     y0 = m(x, t, g, torch.zeros(4))
     assert y1.shape == (4, 3, 12) and torch.isfinite(y1).all()
     assert not torch.allclose(y1, y0)
+    # with the condition dropped, nothing of the graph gets through (not even which pairs
+    # carry a relation: the edge stream holds only those pairs)
+    other = {**g, "rel_vec": torch.randn(3, 5), "rel_child": torch.tensor([0, 2, 1]),
+             "rel_parent": torch.tensor([2, 1, -1])}
+    assert torch.allclose(m(x, t, other, torch.zeros(4)), y0, atol=1e-6)
+    assert not torch.allclose(m(x, t, other, torch.ones(4)), y1)
 
 
 def test_pair_relation_reaches_the_node_through_attention_values():
@@ -275,6 +335,18 @@ def test_training_is_deterministic_resumes_and_learns(dataset, run_dir, tmp_path
     for f in ("config.json", "split.json", "stats.json", "loss.png", "losses.csv"):
         assert (run_dir / f).is_file(), f
     assert len(ck["val_losses"]) == 2
+
+
+def test_time_limit_stops_with_a_checkpoint(dataset, tmp_path):
+    from parse3d.errors import InputError
+
+    rep = train(dataset, tmp_path / "t", TrainConfig(steps=100_000, preset="tiny",
+                                                     relations="learned", noise_draws=2,
+                                                     time_limit=0.05))
+    assert 0 < rep.steps < 100_000
+    assert torch.load(tmp_path / "t" / "checkpoint.pt", weights_only=False)["step"] == rep.steps
+    with pytest.raises(InputError, match="--cond pag"):
+        TrainConfig(cond="none", frame="parent").check()
 
 
 def test_sample_writes_a_scene(run_dir, tmp_path, capsys):
@@ -326,6 +398,12 @@ def test_metrics_see_collisions_and_the_room(dataset):
     assert outside_room(bad) == ["mug"]
     mb = layout_metrics(bad, physics=False)
     assert mb.collision_rate == 0.5 and mb.outside == 0.25 and mb.support_rate < 1.0
+    # separation on the meshes moves the smaller object (the chair) out of the desk
+    from parse3d.layoutgen.separate import separate_scene
+
+    desk = bad.objects["desk"].position.copy()
+    assert separate_scene(bad) > 0
+    assert collisions(bad) == [] and np.array_equal(bad.objects["desk"].position, desk)
 
 
 def test_eval_rows(run_dir, dataset, tmp_path):
@@ -342,6 +420,12 @@ def test_eval_rows(run_dir, dataset, tmp_path):
     assert solver.mean_std("relations") == (1.0, 0.0)
     assert len(res.rows[1].per_seed) == 2
     assert "| solver (solved poses) |" in res.markdown()
+    # separation guidance: every generated row, and the random poses get it as a row of their own
+    sep = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, separate=2)
+    names = [r.name for r in sep.rows]
+    assert names[2] == "random poses, separated"
+    assert all("separated 2" in n for n in names[3:]) and len(names) == 5
+    assert sep.rows[2].mean_std("collision_rate")[0] <= sep.rows[1].mean_std("collision_rate")[0]
 
 
 def test_refine_keeps_the_solvers_own_poses(dataset):

@@ -53,6 +53,12 @@ def register(app: typer.Typer) -> None:
         seed: int = typer.Option(0, "--seed", help="Seed of the split, initialisation and noise."),
         checkpoint_every: int = typer.Option(250, "--checkpoint-every", help="Steps between checkpoints."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
+        frame: str = typer.Option("world", "--frame",
+                                  help="pag runs: translation of a supported object in the "
+                                       "world (world) or in its support parent's frame (parent)."),
+        time_limit: float = typer.Option(None, "--time-limit",
+                                         help="Minutes of wall time; stops (with a checkpoint) "
+                                              "before --steps when reached."),
         threads: int = threads_opt,
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:
@@ -68,7 +74,8 @@ def register(app: typer.Typer) -> None:
         _threads(threads)
         cfg = TrainConfig(cond=cond, steps=steps, preset=preset, relations=relations,
                           shape=shape, noise_draws=noise_draws, cond_dropout=cond_dropout, seed=seed,
-                          checkpoint_every=checkpoint_every, device=device)
+                          checkpoint_every=checkpoint_every, device=device, frame=frame,
+                          time_limit=time_limit)
         cfg.check()
         from rich.progress import (
             BarColumn,
@@ -113,6 +120,9 @@ def register(app: typer.Typer) -> None:
         guidance: float = typer.Option(1.0, "--guidance",
                                        help="Classifier-free guidance weight (1: plain conditional)."),
         uncond: bool = typer.Option(False, "--uncond", help="Drop the PAG condition."),
+        separate: int = typer.Option(0, "--separate", min=0,
+                                     help="Separation guidance: push interpenetrating objects "
+                                          "apart during the last N denoising steps (0: off)."),
         refine: bool = typer.Option(False, "--refine",
                                     help="Hand the generated poses to the solver as its first "
                                          "proposals; report how many it kept."),
@@ -139,7 +149,7 @@ def register(app: typer.Typer) -> None:
         pag = load_pag(pag_file)
         scene = sample_layout(r, pag, seed=seed, file=str(pag_file),
                               options=SampleOptions(steps=sample_steps, guidance=guidance,
-                                                    cond=not uncond))
+                                                    cond=not uncond, separate=separate))
         gen_held = sum(1 for c in scene.relations if c.holds)
         rep = None
         if refine:
@@ -178,6 +188,9 @@ def register(app: typer.Typer) -> None:
         sample_steps: int = typer.Option(100, "--sample-steps", help="Denoising steps."),
         guidance: float = typer.Option(1.0, "--guidance",
                                        help="Classifier-free guidance of the PAG rows (1: plain)."),
+        separate: int = typer.Option(0, "--separate", min=0,
+                                     help="Separation guidance in every generated row (the "
+                                          "random one too): the last N denoising steps (0: off)."),
         previews: int = typer.Option(2, "--previews", help="Scenes to render side by side."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
         threads: int = threads_opt,
@@ -207,7 +220,7 @@ def register(app: typer.Typer) -> None:
             res = evaluate(loaded, files, seeds=seeds, physics=not no_physics,
                            sample_steps=sample_steps, previews=previews, out=dest,
                            progress=None if as_json else (lambda s: st.update(s)),
-                           guidance=guidance)
+                           guidance=guidance, separate=separate)
         if not res.scenes:
             raise InputError(Problem("", "no held-out scene has only categories the runs know",
                                      str(dataset or runs[0]), "vocabulary"))

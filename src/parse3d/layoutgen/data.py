@@ -30,10 +30,10 @@ from ..pag.model import PAG
 from ..pag.refs import wall_index
 from ..scene.io import READABLE_FORMATS
 from .encoders import AssetInfo, RelationEncoder, RelationSpec, ShapeEncoder
-from .pose import PoseStats, normalise_poses, rotation_to_6d
+from .pose import PoseStats, normalise_poses, rotation_to_6d, support_order
 
 __all__ = ["LayoutScene", "GraphArrays", "find_scenes", "load_scene", "load_dataset",
-           "load_asset_ref", "asset_info", "save_asset_index", "pag_relations", "split_scenes", "graph_arrays", "ROOM_GEO_DIM",
+           "load_asset_ref", "asset_info", "save_asset_index", "pag_relations", "split_scenes", "graph_arrays", "support_parents", "ROOM_GEO_DIM",
            "ROOM_CTX_DIM"]
 
 ROOM_GEO_DIM = 8
@@ -376,15 +376,43 @@ def _room_features(footprint: np.ndarray, height: float, relations: list[Relatio
     return geo, ctx
 
 
+_SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+
+
+def support_parents(relations: list[RelationSpec], n: int) -> np.ndarray:
+    """(n,) the support parent object of every object (-1: none, or a room element).
+
+    An object's first support relation (``ON``/``IN``/``HANGING_BELOW``/``SECURED_TO``) counts,
+    as :meth:`~parse3d.pag.model.PAG.supporter` does; a relation to a room element makes
+    it a root. A relation that would close a cycle is ignored.
+    """
+    parents = np.full(n, -1, np.int64)
+    seen = np.zeros(n, bool)
+    for r in relations:
+        if r.relation not in _SUPPORT or seen[r.child]:
+            continue
+        seen[r.child] = True
+        if r.parent < 0:
+            continue
+        parents[r.child] = r.parent
+        try:
+            support_order(parents)
+        except ValueError:
+            parents[r.child] = -1
+    return parents
+
+
 def graph_arrays(categories: list[str], assets: list[Asset | AssetInfo],
                  relations: list[RelationSpec],
                  footprint: np.ndarray, height: float, *, shape_encoder: ShapeEncoder,
                  relation_encoder: RelationEncoder, stats: PoseStats,
-                 poses: np.ndarray | None = None) -> GraphArrays:
-    """The network input of one scene (``poses`` None: an empty ``x0`` for generation)."""
+                 poses: np.ndarray | None = None, frame: str = "world") -> GraphArrays:
+    """The network input of one scene (``poses`` None: an empty ``x0`` for generation);
+    ``frame="parent"``: translations in the support parent's frame (:mod:`.pose`)."""
     n = len(categories)
     shape = np.stack([shape_encoder.encode(a, c) for a, c in zip(assets, categories, strict=True)])
-    x0 = (normalise_poses(poses, footprint, height, stats) if poses is not None
+    parents = support_parents(relations, n) if frame == "parent" else None
+    x0 = (normalise_poses(poses, footprint, height, stats, parents) if poses is not None
           else np.zeros((n, 12), np.float32))
     geo, ctx = _room_features(footprint, height, relations, n)
     rv = relation_encoder.encode(relations)

@@ -7,6 +7,9 @@ laid out by each *row* and measured the same way:
   checks passed on), the upper bound;
 - **random**: uniform positions in the footprint, heights in ``[0, room height - object
   height]``, uniform yaw, upright;
+- with separation guidance (``separate`` > 0, :mod:`.separate`), every generated row uses it
+  and a second random row, **random poses, separated**, gets the same box passes
+  (``separate`` + 3) and the same separation on the meshes;
 - one row per run: a ``pag`` run conditioned on the PAG, and (trained with condition dropout)
   the same network with the condition dropped; a ``none`` run unconditioned.
 
@@ -54,6 +57,7 @@ from ..scene.model import Scene
 from .data import LayoutScene, find_scenes, load_scene
 from .pose import rotation_to_6d
 from .sample import SampleOptions, generate_poses, layout_scene
+from .separate import separate_poses
 from .train import LayoutRun
 
 __all__ = ["LayoutMetrics", "EvalRow", "EvalResult", "layout_metrics", "collisions",
@@ -284,7 +288,7 @@ def _sub_pag(ls: LayoutScene) -> PAG:
 
 
 def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given_scale: bool,
-               label: str) -> Scene:
+               label: str, separate: bool = False) -> Scene:
     if given_scale:
         scales = list(ls.scales)
     else:  # equal volume of the given asset and the generated size
@@ -292,7 +296,7 @@ def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given
                                         / np.prod(np.maximum(a.extents, 1e-4))), 0.25, 4.0))
                   for p, a in zip(poses, ls.assets, strict=True)]
     return layout_scene(pag, ls.object_ids, ls.categories, poses, seed=seed, assets=ls.assets,
-                        scales=scales, meta={"generator": label})
+                        scales=scales, meta={"generator": label}, separate=separate)
 
 
 @dataclass
@@ -366,17 +370,21 @@ class EvalResult:
         return "\n".join(lines) + "\n"
 
 
-def _rows_for(runs: list[LayoutRun], guidance: float = 1.0
+def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0
               ) -> list[tuple[str, str, LayoutRun | None, bool]]:
     rows = [("solver (solved poses)", "solver", None, False), ("random poses", "random", None, False)]
+    if separate > 0:
+        rows.append(("random poses, separated", "random", None, True))
     w = "" if guidance == 1.0 else f", guidance {guidance:g}"
+    sep = "" if separate <= 0 else f", separated {separate}"
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name}{w})", "pag", run, True))
+            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True))
             if run.config.cond_dropout > 0:
-                rows.append((f"unconditioned ({run.name}, condition dropped)", "none", run, False))
+                rows.append((f"unconditioned ({run.name}, condition dropped{sep})", "none", run,
+                             False))
         else:
-            rows.append((f"unconditioned ({run.name})", "none", run, False))
+            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False))
     return rows
 
 
@@ -399,7 +407,7 @@ def _compose(images: list[tuple[str, np.ndarray]], path: Path) -> None:
 def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
              physics: bool = True, sample_steps: int = 100, previews: int = 2,
              out: Path | None = None, progress: Callable[[str], None] | None = None,
-             guidance: float = 1.0) -> EvalResult:
+             guidance: float = 1.0, separate: int = 0) -> EvalResult:
     """Lay out every scene with every row and measure it (see the module docstring).
 
     Parameters
@@ -421,8 +429,11 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         Called with a short label before every layout.
     guidance : float
         Classifier-free guidance weight of the PAG-conditioned rows (1: plain conditional).
+    separate : int
+        Separation guidance of every model row (the last ``separate`` denoising steps, see
+        :mod:`.separate`), plus a separated random row; 0: none.
     """
-    rows = _rows_for(runs, guidance)
+    rows = _rows_for(runs, guidance, separate)
     result = EvalResult([EvalRow(name, kind) for name, kind, _, _ in rows], [], seeds, physics)
     acc: list[list[list[dict]]] = [[[] for _ in range(seeds)] for _ in rows]
     for si, f in enumerate(scene_files):
@@ -446,14 +457,19 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                     scene = _scene_for(ls, pag, solved, seed, given_scale=True, label=kind)
                 elif kind == "random":
                     rng = np.random.default_rng([seed, si, 17])
-                    scene = _scene_for(ls, pag, random_poses(ls, rng), seed, given_scale=True,
-                                       label=kind)
+                    poses = random_poses(ls, rng)
+                    if cond:  # the separated random row
+                        poses = separate_poses(poses, ls.footprint, ls.height, rounds=separate + 3)
+                    scene = _scene_for(ls, pag, poses, seed, given_scale=True, label=kind,
+                                       separate=cond)
                 else:
                     poses = generate_poses(run, ls.categories, ls.assets, ls.relations,
                                            ls.footprint, ls.height, seed=seed,
                                            options=SampleOptions(steps=sample_steps, cond=cond,
-                                                                 guidance=guidance))
-                    scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name)
+                                                                 guidance=guidance,
+                                                                 separate=separate))
+                    scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name,
+                                       separate=separate > 0)
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene
 

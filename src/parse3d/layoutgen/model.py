@@ -134,28 +134,43 @@ class GraphBlock(nn.Module):
         self.out_x = nn.Linear(d, d)
         self.norm_n3, self.norm_e2 = AdaLayerNorm(d, cfg.t_dim), AdaLayerNorm(de, cfg.t_dim)
         self.ffn_n, self.ffn_e = _ffn(d, cfg.ffn_mult), _ffn(de, cfg.ffn_mult)
+        self.e_null = nn.Parameter(torch.zeros(de))
 
     def forward(self, h: torch.Tensor, e: torch.Tensor, c: torch.Tensor, t: torch.Tensor,
-                shape: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+                shape: torch.Tensor, pairs: dict[str, torch.Tensor]
+                ) -> tuple[torch.Tensor, torch.Tensor]:
         B, N, d = h.shape
         H, dh = self.h, self.dh
+        ii, jj, w = pairs["i"], pairs["j"], pairs["keep"]  # (E,), (E,), (B, E, 1)
+        E = len(ii)
         hn = self.norm_n1(h, t)
         q, k, v = self.qkv(hn).view(B, N, 3, H, dh).unbind(2)
-        en = self.norm_e1(e, t)
-        mul, add, gate = self.e_mod(en).view(B, N, N, 3, H).unbind(3)
-        s = torch.einsum("bihd,bjhd->bijh", q, k) / math.sqrt(dh)  # (B, N, N, H)
-        s = s * (1 + mul) + add
+        en = self.norm_e1(e, t)  # (B, E, de): the pairs of the edge stream
+        e0 = self.norm_e1(self.e_null.expand(B, 1, -1), t)  # (B, 1, de): every other pair
+        mul, add, gate = self.e_mod(en).view(B, E, 3, H).unbind(2)
+        mul0, add0, _ = self.e_mod(e0).view(B, 1, 3, H).unbind(2)
+        mul, add = w * mul + (1 - w) * mul0, w * add + (1 - w) * add0
+        ev = w * en + (1 - w) * e0  # a dropped pair looks like any other
+        s_raw = torch.einsum("bihd,bjhd->bijh", q, k) / math.sqrt(dh)  # (B, N, N, H)
+        s_e = s_raw[:, ii, jj] * (1 + mul) + add  # (B, E, H)
+        s = s_raw * (1 + mul0[:, :, None]) + add0[:, :, None]
+        s = s.permute(1, 2, 0, 3).index_put((ii, jj), s_e.permute(1, 0, 2)).permute(2, 0, 1, 3)
         a = torch.softmax(s, dim=2)  # over j
         o = torch.einsum("bijh,bjhd->bihd", a, v).reshape(B, N, d)
         # what each head attended to: the edge features of the pairs it weighted, so a node
         # can tell its parent's value from a neighbour's (the relation reaches the values)
-        o = o + self.e_val(torch.einsum("bijh,bijc->bihc", a, en).reshape(B, N, H * en.shape[-1]))
+        a_e = a[:, ii, jj]  # (B, E, H)
+        agg = torch.zeros(B, N, H, ev.shape[-1], dtype=h.dtype, device=h.device).index_add(
+            1, ii, a_e[..., None] * ev[:, :, None, :])
+        rest = 1 - torch.zeros(B, N, H, dtype=h.dtype, device=h.device).index_add(1, ii, a_e)
+        agg = agg + rest[..., None] * e0[:, :, None, :]
+        o = o + self.e_val(agg.reshape(B, N, H * ev.shape[-1]))
         gamma, beta = self.film(c).chunk(2, dim=-1)
         o = o * (1 + gamma) + beta
         h = h + self.out_n(o)
         # the edge stream: the modulated scores (gated by the edge) and both end nodes
-        e = e + self.out_e(s * torch.sigmoid(gate)) + self.pair_i(hn)[:, :, None] \
-            + self.pair_j(hn)[:, None, :]
+        e = e + self.out_e(s_e * torch.sigmoid(gate)) + self.pair_i(hn)[:, ii] \
+            + self.pair_j(hn)[:, jj]
         # cross-attention to the object's own shape tokens (N, S, d)
         qx = self.q_x(self.norm_n2(h, t)).view(B, N, H, dh)
         kx, vx = self.kv_x(shape).view(N, -1, 2, H, dh).unbind(2)
@@ -218,11 +233,18 @@ class LayoutDenoiser(nn.Module):
         if room.any():
             node.index_put_((rc[room],), torch.nn.functional.pad(rv[room], (0, 2 * dr)),
                             accumulate=True)
-        eye = torch.eye(N, device=dev)[..., None]
+        eye = torch.eye(N, device=dev, dtype=torch.bool)
+        stream = eye.clone()  # the pairs of the edge stream: related ones and each node itself
+        if obj.any():
+            stream[rc[obj], rp[obj]] = True
+            stream[rp[obj], rc[obj]] = True
+        ii, jj = stream.nonzero(as_tuple=True)
+        self_pair = (ii == jj).float()[:, None]
         node = torch.cat([node, g["room_geo"]], dim=-1)
         return {
-            "edge": self.edge_in(torch.cat([pair, eye], -1)),
-            "edge_null": self.edge_in(torch.cat([torch.zeros_like(pair), eye], -1)),
+            "edge": self.edge_in(torch.cat([pair[ii, jj], self_pair], -1)),
+            "edge_null": self.edge_in(torch.cat([torch.zeros_like(pair[ii, jj]), self_pair], -1)),
+            "i": ii, "j": jj, "related": 1.0 - self_pair,
             "node": self.cond_in(node),
             "node_null": self.cond_in(torch.zeros_like(node)),
         }
@@ -247,8 +269,11 @@ class LayoutDenoiser(nn.Module):
         B, N, _ = x_t.shape
         cond = self.condition(g) if cond is None else cond
         m = cond_mask.float()
-        e = (m[:, None, None, None] * cond["edge"] + (1 - m[:, None, None, None]) * cond["edge_null"])
+        # a pair's relation is used where the draw keeps its condition (a node's own pair always)
+        keep = 1 - cond["related"][None] * (1 - m[:, None, None])  # (B, E, 1)
+        e = keep * cond["edge"] + (1 - keep) * cond["edge_null"]
         c = m[:, None, None] * cond["node"] + (1 - m[:, None, None]) * cond["node_null"]
+        pairs = {"i": cond["i"], "j": cond["j"], "keep": keep}
         shape = g["shape"]
         shape_mean = shape.mean(1)
         tokens = self.shape_in(shape).reshape(N, -1, self.cfg.d)
@@ -256,5 +281,5 @@ class LayoutDenoiser(nn.Module):
         h = self.node_in(torch.cat([x_t, pos.expand(B, N, -1), shape_mean.expand(B, N, -1)], -1))
         temb = self.t_mlp(sinusoidal(t, self.cfg.t_dim)) + self.room_in(g["room_ctx"])[None]
         for blk in self.blocks:
-            h, e = blk(h, e, c, temb, tokens)
+            h, e = blk(h, e, c, temb, tokens, pairs)
         return self.out(self.out_norm(h, temb))

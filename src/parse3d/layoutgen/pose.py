@@ -13,6 +13,15 @@ bounding box (x, y) and height (z), ``log(size)`` standardised by the training s
 ``r6`` unchanged. Every block therefore lies in ``[-1, 1]`` (sizes up to three standard
 deviations from the mean), the range the DDPM sampler clips its clean-sample estimate to: with
 plain standardisation that clipping squeezed every size into one standard deviation.
+
+**Parent frame** (``parents`` given, the ``--frame parent`` option of a PAG-conditioned run):
+an object with a support parent in the PAG (``parents[i] >= 0``: it is ``ON``/``IN``/...
+another object) has its translation expressed in the parent's frame,
+``t_rel = R_p^T (t_i - t_p)``, normalised like a world translation without the footprint's
+offset (``2 t_rel / (hi - lo)`` in x, y; ``2 t_rel / height - 1`` in z, as a world height).
+A mug on a desk is then "0.75 m up, somewhere over the desk top" wherever the desk is;
+:func:`denormalise_poses` composes the translations along the support tree, parents first.
+Sizes and rotations stay in the world frame.
 """
 
 from __future__ import annotations
@@ -22,7 +31,8 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 __all__ = ["POSE_DIM", "PoseStats", "rotation_to_6d", "rotation_from_6d", "room_box",
-           "normalise_poses", "denormalise_poses"]
+           "normalise_poses", "denormalise_poses", "support_order", "to_parent_frame",
+           "from_parent_frame"]
 
 #: Width of a pose row.
 POSE_DIM = 12
@@ -91,22 +101,84 @@ class PoseStats:
         return self.size_spread * np.array(self.log_size_std)
 
 
+def support_order(parents: np.ndarray) -> list[int]:
+    """Object indices with every parent before its children (``parents[i]`` -1: a root).
+
+    Raises ValueError on a cycle.
+    """
+    parents = np.asarray(parents, int)
+    n = len(parents)
+    state = np.zeros(n, int)  # 0 new, 1 on the path, 2 done
+    order: list[int] = []
+    for i in range(n):
+        path = []
+        k = i
+        while k >= 0 and state[k] == 0:
+            state[k] = 1
+            path.append(k)
+            k = int(parents[k])
+        if k >= 0 and state[k] == 1:
+            raise ValueError(f"the support parents form a cycle through object {k}")
+        for k in reversed(path):
+            state[k] = 2
+            order.append(k)
+    return order
+
+
+def to_parent_frame(t: np.ndarray, R: np.ndarray, parents: np.ndarray) -> np.ndarray:
+    """(N, 3) world translations to parent-frame ones where ``parents[i] >= 0``."""
+    t = np.array(t, float)
+    out = t.copy()
+    for i, p in enumerate(np.asarray(parents, int)):
+        if p >= 0:
+            out[i] = R[p].T @ (t[i] - t[p])
+    return out
+
+
+def from_parent_frame(t: np.ndarray, R: np.ndarray, parents: np.ndarray) -> np.ndarray:
+    """Inverse of :func:`to_parent_frame`: compose along the support tree, parents first."""
+    parents = np.asarray(parents, int)
+    out = np.array(t, float)
+    for i in support_order(parents):
+        p = parents[i]
+        if p >= 0:
+            out[i] = out[p] + R[p] @ out[i]
+    return out
+
+
+def _has_parent(parents, n: int) -> np.ndarray:
+    if parents is None:
+        return np.zeros(n, bool)
+    return np.asarray(parents, int) >= 0
+
+
 def normalise_poses(poses: np.ndarray, footprint: np.ndarray, height: float,
-                    stats: PoseStats) -> np.ndarray:
-    """(N, 12) world poses to the network's space (see the module docstring)."""
+                    stats: PoseStats, parents: np.ndarray | None = None) -> np.ndarray:
+    """(N, 12) world poses to the network's space (see the module docstring); ``parents``
+    (N,) selects the parent frame for objects with a support parent (-1: none)."""
     lo, hi = room_box(footprint, height)
     p = np.asarray(poses, float)
+    rel = _has_parent(parents, len(p))
     t = 2.0 * (p[:, :3] - lo) / np.maximum(hi - lo, 1e-6) - 1.0
+    if rel.any():
+        tr = to_parent_frame(p[:, :3], rotation_from_6d(p[:, 6:12]), parents)
+        t[rel] = 2.0 * tr[rel] / np.maximum(hi - lo, 1e-6)
+        t[rel, 2] -= 1.0
     s = (np.log(np.maximum(p[:, 3:6], 1e-4)) - np.array(stats.log_size_mean)) / stats._scale
     return np.concatenate([t, s, p[:, 6:12]], axis=1).astype(np.float32)
 
 
 def denormalise_poses(x: np.ndarray, footprint: np.ndarray, height: float,
-                      stats: PoseStats) -> np.ndarray:
+                      stats: PoseStats, parents: np.ndarray | None = None) -> np.ndarray:
     """Inverse of :func:`normalise_poses`; ``r6`` is re-orthonormalised."""
     lo, hi = room_box(footprint, height)
     x = np.asarray(x, float)
+    rel = _has_parent(parents, len(x))
     t = (x[:, :3] + 1.0) * 0.5 * (hi - lo) + lo
     s = np.exp(x[:, 3:6] * stats._scale + np.array(stats.log_size_mean))
-    r6 = rotation_to_6d(rotation_from_6d(x[:, 6:12]))
+    R = rotation_from_6d(x[:, 6:12])
+    r6 = rotation_to_6d(R)
+    if rel.any():
+        tr = (x[:, :3] + np.array([0.0, 0.0, 1.0])) * 0.5 * (hi - lo)
+        t = from_parent_frame(np.where(rel[:, None], tr, t), R, parents)
     return np.concatenate([t, s, r6], axis=1)

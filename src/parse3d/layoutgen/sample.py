@@ -26,8 +26,9 @@ from ..measure import check_relations
 from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
-from .data import graph_arrays, pag_relations
-from .pose import denormalise_poses, rotation_from_6d
+from .data import graph_arrays, pag_relations, support_parents
+from .pose import denormalise_poses, room_box, rotation_from_6d
+from .separate import box_push
 from .train import LayoutRun, make_scheduler, scene_tensors
 
 __all__ = ["SampleOptions", "sample_layout", "generate_poses", "fit_asset", "layout_scene",
@@ -51,11 +52,16 @@ class SampleOptions:
         conditional model, 0 the unconditioned one.
     cond : bool
         False samples a ``pag`` run unconditioned (condition dropped), as its "none" row.
+    separate : int
+        Separation guidance (:mod:`.separate`): the last ``separate`` denoising steps push
+        overlapping boxes apart, and once the assets are placed what still interpenetrates is
+        moved apart on the meshes; 0 (default) samples without it.
     """
 
     steps: int = 100
     guidance: float = 1.0
     cond: bool = True
+    separate: int = 0
 
 
 def _pick_categories(pag: PAG, run: LayoutRun, rng: np.random.Generator,
@@ -97,6 +103,24 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
     x = torch.randn((1, n, 12), generator=gen).to(dev)
     use_cond = options.cond and run.config.cond == "pag"
     w = options.guidance if use_cond else 0.0
+    parents = support_parents(relations, n) if run.config.frame == "parent" else None
+    lo, hi = room_box(footprint, height)
+    span = np.maximum(hi - lo, 1e-6)
+
+    def push(x0: np.ndarray) -> np.ndarray:
+        """One separation pass on normalised poses, in the model's own coordinates."""
+        world = denormalise_poses(x0, footprint, height, run.stats, parents)
+        d = box_push(world, footprint, height)
+        if parents is not None:  # a supported object moves in its parent's frame
+            R = rotation_from_6d(world[:, 6:12])
+            rel = parents >= 0
+            d[rel] = np.einsum("nji,nj->ni", R[parents[rel]], d[rel])
+        out = x0.copy()
+        out[:, :3] += (2.0 * d / span).astype(out.dtype)
+        return out
+
+    guided = set(sched.timesteps[max(len(sched.timesteps) - options.separate, 0):].tolist()) \
+        if options.separate > 0 else set()
     with torch.no_grad():
         cond = run.model.condition(g)
         for t in sched.timesteps:
@@ -109,8 +133,18 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
                 both = run.model(x.expand(2, -1, -1), tt.expand(2),
                                  g, torch.tensor([0.0, 1.0], device=dev), cond=cond)
                 eps = both[:1] + w * (both[1:] - both[:1])
-            x = sched.step(eps.cpu(), t, x.cpu(), generator=gen).prev_sample.to(dev)
-    return denormalise_poses(x[0].cpu().numpy(), footprint, height, run.stats)
+            eps, x = eps.cpu(), x.cpu()
+            if int(t) in guided:  # move the clean-pose estimate, and the noise to match it
+                ab = float(sched.alphas_cumprod[int(t)])
+                x0 = ((x - (1 - ab) ** 0.5 * eps) / ab ** 0.5).clamp(-1, 1)
+                moved = torch.as_tensor(push(x0[0].numpy()))[None]
+                eps = eps + (ab / (1 - ab)) ** 0.5 * (x0 - moved)
+            x = sched.step(eps, t, x, generator=gen).prev_sample.to(dev)
+    x = x[0].cpu().numpy()
+    if options.separate > 0:
+        for _ in range(3):
+            x = push(x)
+    return denormalise_poses(x, footprint, height, run.stats, parents)
 
 
 def fit_asset(category: str, size: np.ndarray, *, fallback: Asset | None = None
@@ -141,11 +175,13 @@ def fit_asset(category: str, size: np.ndarray, *, fallback: Asset | None = None
 
 def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: np.ndarray, *,
                  seed: int, assets: list[Asset] | None = None,
-                 scales: list[float] | None = None, meta: dict | None = None) -> Scene:
+                 scales: list[float] | None = None, meta: dict | None = None,
+                 separate: bool = False) -> Scene:
     """A Scene with the objects at the given (N, 12) poses; relations checked on them.
 
     With ``assets``/``scales`` the given assets are used as they are; otherwise each object
-    gets its best-fitting pool asset (:func:`fit_asset`).
+    gets its best-fitting pool asset (:func:`fit_asset`). ``separate``: objects still
+    interpenetrating are moved apart on their meshes first (:func:`.separate.separate_scene`).
     """
     scene = Scene(pag, int(seed), build_shell(pag.room), meta=dict(meta or {}))
     R = rotation_from_6d(poses[:, 6:12])
@@ -159,6 +195,10 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
             oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
             support=None if sup is None else str(sup.parent),
             fixed=sup is not None and sup.relation in _FIXED)
+    if separate:
+        from .separate import separate_scene
+
+        scene.meta["separated"] = separate_scene(scene)
     scene.meta["resolved"] = nearest_walls(scene)
     scene.relations = check_relations(scene)
     return scene
@@ -209,7 +249,7 @@ def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
     scene = layout_scene(pag, ids, cat_list, poses, seed=seed, meta={
         "generator": "layoutgen", "run": run.name, "run_step": run.step,
         "cond": run.config.cond if options.cond else "none", "guidance": options.guidance,
-        "sample_steps": options.steps})
+        "sample_steps": options.steps}, separate=options.separate > 0)
     scene.timings["generate"] = round(t1 - t0, 4)
     scene.timings["assets"] = round(time.perf_counter() - t1, 4)
     return scene

@@ -75,6 +75,14 @@ class TrainConfig:
     checkpoint_every : int
     device : str
         ``cpu`` or ``cuda``.
+    frame : str
+        Where a ``pag`` run generates the translation of an object that has a support parent
+        in the PAG (``ON``/``IN``/``HANGING_BELOW``/``SECURED_TO`` another object):
+        ``world`` (in the room) or ``parent`` (in the parent's frame, composed along the
+        support tree when sampling; see :mod:`.pose`). ``none`` runs have no graph: ``world``.
+    time_limit : float or None
+        Minutes of wall time after which training stops (with a checkpoint) before ``steps``;
+        not part of the run's settings (a resumed run may give another).
     """
 
     cond: str = "pag"
@@ -90,6 +98,8 @@ class TrainConfig:
     seed: int = 0
     checkpoint_every: int = 250
     device: str = "cpu"
+    frame: str = "world"
+    time_limit: float | None = None
 
     def check(self) -> None:
         """InputError for an impossible setting."""
@@ -110,6 +120,12 @@ class TrainConfig:
             bad.append(("--device", f"must be 'cpu' or 'cuda', got {self.device!r}"))
         if not 0.0 <= self.cond_dropout < 1.0:
             bad.append(("--cond-dropout", f"must be in [0, 1), got {self.cond_dropout}"))
+        if self.frame not in ("world", "parent"):
+            bad.append(("--frame", f"must be 'world' or 'parent', got {self.frame!r}"))
+        elif self.frame == "parent" and self.cond != "pag":
+            bad.append(("--frame", "'parent' needs the PAG's support tree: only with --cond pag"))
+        if self.time_limit is not None and not self.time_limit > 0:
+            bad.append(("--time-limit", f"must be positive (minutes), got {self.time_limit}"))
         if self.noise_draws < 1 or self.checkpoint_every < 1:
             bad.append(("--noise-draws", "noise draws and checkpoint interval must be >= 1"))
         if bad:
@@ -286,7 +302,7 @@ def _config_doc(cfg: TrainConfig, mcfg, shape_enc: ShapeEncoder, dataset: str) -
 
 
 _RESUME_KEYS = ("cond", "preset", "relations", "shape", "shape_steps", "noise_draws", "lr",
-                "weight_decay", "cond_dropout", "seed")
+                "weight_decay", "cond_dropout", "seed", "frame")
 
 
 def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
@@ -366,7 +382,7 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
                         solved_poses=None)
         ga = graph_arrays(s.categories, s.asset_info, s.relations, s.footprint, s.height,
                           shape_encoder=shape_enc, relation_encoder=rel_enc, stats=stats,
-                          poses=s.poses)
+                          poses=s.poses, frame=config.frame)
         return scene_tensors(ga, device)
 
     say(f"encoding {len(train_scenes)} training scenes ({config.relations} relations)")
@@ -413,7 +429,13 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
                    f"{out.name}: cond={config.cond}, preset={config.preset}, {n} train scenes")
 
     model.train()
+    deadline = None if config.time_limit is None else t0 + 60.0 * config.time_limit
     while step < config.steps:
+        if deadline is not None and time.perf_counter() >= deadline:
+            say(f"time limit of {config.time_limit:g} min reached at step {step}")
+            if step > start and step % config.checkpoint_every != 0:
+                save()
+            break
         epoch, pos = divmod(step, n)
         order = np.random.default_rng([config.seed, epoch]).permutation(n)
         g = train_t[int(order[pos])]
