@@ -236,7 +236,7 @@ def _fast_skeleton(d: dict) -> bool:
         return False
     room = d["room"]
     if not (isinstance(d["format"], str) and d["format"] == "pag/1" and isinstance(d["name"], str)
-            and isinstance(d["objects"], list) and isinstance(d["relations"], list)
+            and d["objects"] == [] and d["relations"] == []
             and isinstance(d.get("meta", {}), dict) and isinstance(room, dict)
             and room.keys() == {"type", "footprint", "height"}):
         return False
