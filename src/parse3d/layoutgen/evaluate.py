@@ -128,20 +128,19 @@ def _overlap(a: np.ndarray, b: np.ndarray, pad: float = 0.0) -> bool:
     return bool(np.all(a[0] - pad <= b[1]) and np.all(b[0] - pad <= a[1]))
 
 
-def collisions(scene: Scene, *, depth: float = PENETRATION) -> list[tuple[str, str, float]]:
-    """Object pairs interpenetrating deeper than ``depth`` (m): ``(a, b, max depth)``."""
+def _deepest_contacts(bodies):
+    """For every pair of :func:`_fcl_pieces` bodies whose convex pieces interpenetrate:
+    ``(i, j, depth, normal)`` of the deepest contact (FCL's normal, from body i to body j)."""
     import fcl
 
-    bodies = _fcl_pieces(scene)
     req = fcl.CollisionRequest(num_max_contacts=1, enable_contact=True)
-    out = []
     for i in range(len(bodies)):
-        ia, ba, oa, xa = bodies[i]
+        _, ba, oa, xa = bodies[i]
         for j in range(i + 1, len(bodies)):
-            ib, bb, ob, xb = bodies[j]
+            _, bb, ob, xb = bodies[j]
             if not _overlap(ba, bb):
                 continue
-            worst = 0.0
+            best, normal = 0.0, None
             for pa, ga in zip(oa, xa, strict=True):
                 if not _overlap(ga, bb):
                     continue
@@ -150,10 +149,18 @@ def collisions(scene: Scene, *, depth: float = PENETRATION) -> list[tuple[str, s
                         continue
                     res = fcl.CollisionResult()
                     if fcl.collide(pa, pb, req, res):
-                        worst = max(worst, max(c.penetration_depth for c in res.contacts))
-            if worst > depth:
-                out.append((ia, ib, worst))
-    return out
+                        c = max(res.contacts, key=lambda c: c.penetration_depth)
+                        if c.penetration_depth > best:
+                            best, normal = c.penetration_depth, np.asarray(c.normal, float)
+            if normal is not None:
+                yield i, j, best, normal
+
+
+def collisions(scene: Scene, *, depth: float = PENETRATION) -> list[tuple[str, str, float]]:
+    """Object pairs interpenetrating deeper than ``depth`` (m): ``(a, b, max depth)``."""
+    bodies = _fcl_pieces(scene)
+    return [(bodies[i][0], bodies[j][0], d) for i, j, d, _ in _deepest_contacts(bodies)
+            if d > depth]
 
 
 def outside_room(scene: Scene, *, tol: float = PENETRATION) -> list[str]:

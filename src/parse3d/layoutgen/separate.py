@@ -110,46 +110,27 @@ def separate_scene(scene, *, rounds: int = MESH_ROUNDS, min_depth: float = _MARG
     (held by the shell) move too: nothing is assumed about the PAG. Returns the number of
     moves made. The scene's relation checks are *not* updated.
     """
-    import fcl
+    from .evaluate import _deepest_contacts, _fcl_pieces
 
-    from .evaluate import _fcl_pieces, _overlap
-
-    req = fcl.CollisionRequest(num_max_contacts=1, enable_contact=True)
     moved = 0
     for _ in range(rounds):
         bodies = _fcl_pieces(scene)
         vol = [float(np.prod(np.ptp(b[1], axis=0))) for b in bodies]
         shift: dict[str, np.ndarray] = {}
-        for i in range(len(bodies)):
-            ia, ba, oa, xa = bodies[i]
-            for j in range(i + 1, len(bodies)):
-                ib, bb, ob, xb = bodies[j]
-                if not _overlap(ba, bb):
-                    continue
-                best, normal = 0.0, None
-                for pa, ga in zip(oa, xa, strict=True):
-                    if not _overlap(ga, bb):
-                        continue
-                    for pb, gb in zip(ob, xb, strict=True):
-                        if not _overlap(ga, gb):
-                            continue
-                        res = fcl.CollisionResult()
-                        if fcl.collide(pa, pb, req, res):
-                            c = max(res.contacts, key=lambda c: c.penetration_depth)
-                            if c.penetration_depth > best:
-                                best, normal = c.penetration_depth, np.asarray(c.normal, float)
-                if best <= min_depth or normal is None:
-                    continue
-                # FCL's normal points from the first object to the second
-                (mover, box, other), sign = (((ib, bb, ba), 1.0) if vol[j] <= vol[i]
-                                             else ((ia, ba, bb), -1.0))
-                d = sign * (best + _MARGIN) * normal
-                if box[0, 2] + d[2] < 0.0:  # not into the floor: sideways, away from the other
-                    away = box.mean(0)[:2] - other.mean(0)[:2]
-                    n = float(np.linalg.norm(away))
-                    away = away / n if n > 1e-9 else np.array([1.0, 0.0])
-                    d = (best + _MARGIN) * np.r_[away, 0.0]
-                shift[mover] = shift.get(mover, np.zeros(3)) + d
+        for i, j, best, normal in _deepest_contacts(bodies):
+            if best <= min_depth:
+                continue
+            (ia, ba), (ib, bb) = bodies[i][:2], bodies[j][:2]
+            # FCL's normal points from the first object to the second
+            (mover, box, other), sign = (((ib, bb, ba), 1.0) if vol[j] <= vol[i]
+                                         else ((ia, ba, bb), -1.0))
+            d = sign * (best + _MARGIN) * normal
+            if box[0, 2] + d[2] < 0.0:  # not into the floor: sideways, away from the other
+                away = box.mean(0)[:2] - other.mean(0)[:2]
+                n = float(np.linalg.norm(away))
+                away = away / n if n > 1e-9 else np.array([1.0, 0.0])
+                d = (best + _MARGIN) * np.r_[away, 0.0]
+            shift[mover] = shift.get(mover, np.zeros(3)) + d
         if not shift:
             break
         for oid, d in shift.items():
