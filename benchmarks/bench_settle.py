@@ -20,6 +20,7 @@ printed), and the contacts.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import statistics
 import sys
 import time
@@ -94,7 +95,7 @@ def main() -> None:
     if args._worker:
         serve(_handle)
         return
-    with revision_tree(args.baseline_rev) if args.baseline_rev else _nothing() as wt:
+    with revision_tree(args.baseline_rev) if args.baseline_rev else contextlib.nullcontext() as wt:
         workers = {"now": Worker(__file__, src=ROOT / "src")}
         if wt is not None:
             workers[args.baseline_rev] = Worker(__file__, src=wt / "src")
@@ -140,14 +141,6 @@ def main() -> None:
         print(f"contacts CPU per scene, {names[1]} / now: {cont[names[1]] / cont['now']:.2f}x")
         both = {n: total[n] + cont[n] for n in names}
         print(f"settle + contacts, {names[1]} / now: {both[names[1]] / both['now']:.2f}x")
-
-
-class _nothing:
-    def __enter__(self):
-        return None
-
-    def __exit__(self, *exc):
-        return False
 
 
 if __name__ == "__main__":

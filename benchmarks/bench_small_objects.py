@@ -19,6 +19,7 @@ bottles in its cradle, magazines on magazines, a tissue box on a crowded shelf. 
 from __future__ import annotations
 
 import argparse
+import contextlib
 import sys
 import time
 
@@ -59,7 +60,7 @@ def main() -> None:
         serve(_handle)
         return
     indices = [int(x) for x in args.index.split(",") if x.strip()]
-    with revision_tree(args.baseline_rev) if args.baseline_rev else _nothing() as wt:
+    with revision_tree(args.baseline_rev) if args.baseline_rev else contextlib.nullcontext() as wt:
         workers = {"now": Worker(__file__, src=ROOT / "src")}
         if wt is not None:
             workers[args.baseline_rev] = Worker(__file__, src=wt / "src")
@@ -85,14 +86,6 @@ def main() -> None:
             w.close()
     print("complete: " + ", ".join(f"{n} {done[n]}/{len(indices)}" for n in names))
     print("CPU s: " + ", ".join(f"{n} {cpu[n]:.1f}" for n in names))
-
-
-class _nothing:
-    def __enter__(self):
-        return None
-
-    def __exit__(self, *exc):
-        return False
 
 
 if __name__ == "__main__":
