@@ -13,7 +13,7 @@ from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..geometry.meshes import MeshArrays, scaled_vertices
-from ..measure.checks import EPS, STEP, check_edge, world_points
+from ..measure.checks import EPS, ROLL_RATIO, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
@@ -793,8 +793,20 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if rel == "SECURED_TO":
                 region = height_band(ctx, support_edge, region)
             region = apply_region_rules(ctx, others, region, "part")
-            if rel == "ON" and sup.owner != "room" and not overhang:
-                region = _well_inside(region, F, height)
+            if rel == "ON" and sup.owner != "room":
+                if not overhang:
+                    region = _well_inside(region, F, height)
+                elif _roller(F, height):
+                    # a roller overhanging the support (a baguette longer than the side table)
+                    # keeps its centre of mass a whole width from the edge: its footprint
+                    # stays half a width inside
+                    w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
+                    region = region.buffer(-w) if region.area > 1e-10 else region
+                    if region.is_empty or region.area < 1e-10:
+                        raise Fail(_no_space(st, sup, F, region0, obst + holes)
+                                   + f" (a {asset.category} lying on its round side keeps its "
+                                   f"centre of mass {w:.2f} m, its width, inside the edge, "
+                                   f"or it rolls off)")
             if stack:
                 region = _stack_centre(region, region0, asset, scale, R, s)
                 if region.is_empty or region.area < 1e-10:
@@ -1158,10 +1170,7 @@ def _free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: l
     if rel not in ("ON", "IN") or lift > 0 \
             or any(REGION_RULES[e.relation][0] != "none" for e in others):
         return None
-    margin = 0.0
-    if rel == "ON" and sup.owner != "room":
-        width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
-        margin = 0.25 * width if height > TIPPY * width else 0.0
+    margin = _inside_margin(F, height) if rel == "ON" and sup.owner != "room" else 0.0
     return RG.free_samples(region0, obst, F, rng, n, margin=margin)
 
 
@@ -1183,14 +1192,37 @@ def _stack_centre(region, region0, asset: Asset, scale: float, R: np.ndarray, s)
     return RG.clip(region, shapely.affinity.translate(mid, -float(com @ s.u), -float(com @ s.v)))
 
 
-def _well_inside(region, F: np.ndarray, height: float):
-    """For a tippy child (a TV on its stand), keep its base well inside the support: the
-    region shrunk by a quarter of the footprint's narrowest width, when anything is left."""
-    width = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
-    if height <= TIPPY * width or region.area < 1e-10:
+def _inside_margin(F: np.ndarray, height: float) -> float:
+    """Metres a child's footprint ``F`` keeps inside an object's support: a quarter of its
+    narrowest width for a tippy child (a TV on its stand, taller than ``TIPPY`` times that
+    width), half of it for a roller (:func:`_roller`), else 0."""
+    w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
+    if height > TIPPY * w:
+        return 0.25 * w
+    return 0.5 * w if _roller(F, height) else 0.0
+
+
+def _roller(F: np.ndarray, height: float) -> bool:
+    """Whether a child with footprint ``F`` and ``height`` lies elongated on a round-ish
+    cross-section (as :func:`parse3d.measure.checks._lying_axis`): nudged near a support's
+    edge (a baguette by an orange) it rolls off."""
+    w, L = sorted((float(np.ptp(F[:, 0])), float(np.ptp(F[:, 1]))))
+    thin, thick = sorted((w, height))
+    return thick <= ROLL_RATIO * thin and ROLL_RATIO * thick < L
+
+
+def _shrunk(region, margin: float):
+    """``region`` shrunk by ``margin`` metres, when anything is left."""
+    if margin <= 0 or region.area < 1e-10:
         return region
-    inner = region.buffer(-0.25 * width)
+    inner = region.buffer(-margin)
     return inner if not inner.is_empty and inner.area > 1e-10 else region
+
+
+def _well_inside(region, F: np.ndarray, height: float):
+    """Keep a tippy child's or a roller's base well inside the support: the region shrunk by
+    :func:`_inside_margin`, when anything is left."""
+    return _shrunk(region, _inside_margin(F, height))
 
 
 def _face(st, toward, R, hull, s, ab, h, drop, others):

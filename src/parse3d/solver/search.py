@@ -95,6 +95,10 @@ GROUP_DRAWS = 2
 #: Metres around a layout parent within which what stands on its support moves with it in a
 #: group's last draw.
 AROUND = 0.6
+#: Most objects moved when a child's object support is re-placed with its group (a wall shelf
+#: with what is on it), and draws of that move.
+SUPPORT_GROUP = 10
+SUPPORT_DRAWS = 2
 
 
 def _size_estimate(pag: PAG, oid: str) -> float:
@@ -341,15 +345,49 @@ class _Search:
                     todo.append(c)
         return [o for o in self.order if o in out]
 
-    def make_room(self, oid: str) -> Placement | None:
+    def make_room(self, oid: str, reason: str = "") -> Placement | None:
         """Larger moves than a backjump's, from the clearing reserve: free a stretch of the
-        wall the object needs (:meth:`clear`), or re-place each placed parent of its layout
+        wall the object needs (:meth:`clear`), re-place each placed parent of its layout
         relations together with everything that depends on it (a dining table with its
-        chairs and what is on it), the failed object in its place in that group. None with
-        the scene restored when no move works."""
+        chairs and what is on it), the failed object in its place in that group, or re-place
+        the object support it found no room on (:meth:`resupport`). None with the scene
+        restored when no move works."""
         got = self.clear(oid)
         if got is not None:
             return got
+        got = self.regroup(oid)
+        if got is None and _space(reason):
+            got = self.resupport(oid)
+        return got
+
+    def resupport(self, oid: str) -> Placement | None:
+        """Re-place the object ``oid`` rests on, with everything resting on or relating to it
+        (at most ``SUPPORT_GROUP`` objects), the failed object in its place in that group:
+        for a child that found no room on a support placed where other objects crowd it (a
+        wall shelf hung just under another one leaves its tea caddies no headroom). Up to
+        ``SUPPORT_DRAWS`` draws from the clearing reserve; None with the scene restored."""
+        sup = self.pag.supporter(oid)
+        if sup is None or sup.parent.is_room_element or sup.parent.object not in self.placements:
+            return None
+        parent = sup.parent.object
+        group = set(self.movers(parent))
+        if group & (support_chain(self.pag, parent) - {parent}) or len(group) > SUPPORT_GROUP:
+            return None
+        moved = [o for o in self.order if o in group]
+        seq = [o for o in self.order if o in group or o == oid]
+        for r in range(SUPPORT_DRAWS):
+            if self.reserve < len(moved):
+                break
+            self.reserve -= len(moved)
+            self.backjumps += 1
+            got = self.relocate(oid, moved, seq, f"support{r}")
+            if got is not None:
+                return got
+        return None
+
+    def regroup(self, oid: str) -> Placement | None:
+        """Re-place each placed parent of ``oid``'s layout relations with its group (see
+        :meth:`make_room`); None with the scene restored when no draw works."""
         protected = support_chain(self.pag, oid)
         parents = [e.parent.object for e in self.pag.edges_of(oid)[1:]
                    if e.parent.object in self.placements]
@@ -522,7 +560,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
                 # re-placing others cannot fix what the object's own geometry rules out
                 got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
                 if got is None and srch.reserve > 0 and not f.intrinsic:
-                    got = srch.make_room(oid)
+                    got = srch.make_room(oid, str(f))
                 if got is None:
                     srch.fail(oid, srch.explain(oid, str(f)), cfg.max_trials * cfg.asset_attempts)
         if progress is not None:
