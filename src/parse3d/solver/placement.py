@@ -13,7 +13,7 @@ from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..geometry.meshes import MeshArrays, scaled_vertices
-from ..measure.checks import EPS, ROLL_RATIO, STEP, check_edge, world_points
+from ..measure.checks import EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
@@ -798,14 +798,13 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                     region = _well_inside(region, F, height)
                 elif _roller(F, height):
                     # a roller overhanging the support (a baguette longer than the side table)
-                    # keeps its centre of mass a whole width from the edge: its footprint
-                    # stays half a width inside
+                    # keeps its centre of mass ROLL_EDGE widths from the edge
                     w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
-                    region = region.buffer(-w) if region.area > 1e-10 else region
+                    region = region.buffer(-ROLL_EDGE * w) if region.area > 1e-10 else region
                     if region.is_empty or region.area < 1e-10:
                         raise Fail(_no_space(st, sup, F, region0, obst + holes)
                                    + f" (a {asset.category} lying on its round side keeps its "
-                                   f"centre of mass {w:.2f} m, its width, inside the edge, "
+                                   f"centre of mass {ROLL_EDGE * w:.2f} m inside the edge, "
                                    f"or it rolls off)")
             if stack:
                 region = _stack_centre(region, region0, asset, scale, R, s)
@@ -1202,13 +1201,20 @@ def _inside_margin(F: np.ndarray, height: float) -> float:
     return 0.5 * w if _roller(F, height) else 0.0
 
 
+#: A child lying with its width and height within this ratio, and its length beyond it, may
+#: roll (looser than the checks' ``ROLL_RATIO``: an oval baguette 8 x 6 cm rolls too).
+ROLLER_RATIO = 1.5
+#: Widths a roller longer than its support keeps its centre of mass from the support's edge
+#: (half: its footprint stays on the support across its long axis).
+ROLL_EDGE = 0.5
+
+
 def _roller(F: np.ndarray, height: float) -> bool:
     """Whether a child with footprint ``F`` and ``height`` lies elongated on a round-ish
-    cross-section (as :func:`parse3d.measure.checks._lying_axis`): nudged near a support's
-    edge (a baguette by an orange) it rolls off."""
+    cross-section: nudged near a support's edge (a baguette by an orange) it rolls off."""
     w, L = sorted((float(np.ptp(F[:, 0])), float(np.ptp(F[:, 1]))))
     thin, thick = sorted((w, height))
-    return thick <= ROLL_RATIO * thin and ROLL_RATIO * thick < L
+    return thick <= ROLLER_RATIO * thin and ROLLER_RATIO * thick < L
 
 
 def _shrunk(region, margin: float):
