@@ -15,7 +15,7 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from ..measure.checks import check_relations, object_centroid
+from ..measure.checks import check_edge, check_relations, object_centroid
 from ..pag.algorithms import assembly_order
 from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
@@ -279,6 +279,7 @@ class _Search:
                 new.append(m)
                 if m == oid:
                     mine = p
+            self.recheck(set(moved))
             return mine
         except Fail:
             for m in new:
@@ -288,6 +289,22 @@ class _Search:
                 self.commit(old[m])
             self.st.scene.objects.pop(oid, None)
         return None
+
+    def recheck(self, moved: set[str]) -> None:
+        """Check again the layout relations of placed objects that stayed towards objects that
+        moved (a chair NEAR a dining table a backjump re-placed), keeping the fresh results;
+        raise Fail when one no longer holds (the move is then undone)."""
+        for oid, p in self.placements.items():
+            if oid in moved:
+                continue
+            for i, e in enumerate(self.pag.edges_of(oid)):
+                if i == 0 or e.parent.object not in moved or p.checks[i] is None:
+                    continue
+                r = check_edge(self.st.scene, e, p.obj)
+                if not r[0]:
+                    raise Fail(f"moving {e.parent.object} breaks {e.relation} {e.child} -> "
+                               f"{e.parent}: {r[2]}")
+                p.checks[i] = r
 
     # ------------------------------------------------------------ crowded walls
     def wall_need(self, oid: str) -> tuple[list[str], float, float, float, float] | None:
