@@ -799,7 +799,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 elif _roller(F, height):
                     # a roller overhanging the support (a baguette longer than the side table)
                     # keeps its centre of mass ROLL_EDGE widths from the edge
-                    w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
+                    w = _widths(F)[0]
                     region = region.buffer(-ROLL_EDGE * w) if region.area > 1e-10 else region
                     if region.is_empty or region.area < 1e-10:
                         raise Fail(_no_space(st, sup, F, region0, obst + holes)
@@ -1198,23 +1198,33 @@ def _inside_margin(F: np.ndarray, height: float) -> float:
     w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
     if height > TIPPY * w:
         return 0.25 * w
-    return 0.5 * w if _roller(F, height) else 0.0
+    return 0.5 * _widths(F)[0] if _roller(F, height) else 0.0
 
 
 #: A child lying with its width and height within this ratio, and its length beyond it, may
 #: roll (looser than the checks' ``ROLL_RATIO``: an oval baguette 8 x 6 cm rolls too).
 ROLLER_RATIO = 1.5
 #: Widths a roller longer than its support keeps its centre of mass from the support's edge
-#: (half: its footprint stays on the support across its long axis).
-ROLL_EDGE = 0.5
+#: (as a shorter one, its footprint half its width inside).
+ROLL_EDGE = 1.0
 
 
 def _roller(F: np.ndarray, height: float) -> bool:
     """Whether a child with footprint ``F`` and ``height`` lies elongated on a round-ish
     cross-section: nudged near a support's edge (a baguette by an orange) it rolls off."""
-    w, L = sorted((float(np.ptp(F[:, 0])), float(np.ptp(F[:, 1]))))
+    w, L = _widths(F)
     thin, thick = sorted((w, height))
     return thick <= ROLLER_RATIO * thin and ROLLER_RATIO * thick < L
+
+
+def _widths(F: np.ndarray) -> tuple[float, float]:
+    """The narrowest width of footprint ``F`` over directions 2 degrees apart, and its extent
+    across that direction (a baguette lying askew is as thin as one lying square)."""
+    a = np.deg2rad(np.arange(0.0, 180.0, 2.0))
+    d = np.column_stack([np.cos(a), np.sin(a)])
+    ext = np.ptp(np.asarray(F, float) @ d.T, axis=0)
+    k = int(np.argmin(ext))
+    return float(ext[k]), float(ext[(k + 45) % 90])
 
 
 def _shrunk(region, margin: float):
