@@ -518,3 +518,15 @@ def test_cli_render_rejects_bad_size(scene, tmp_path, capsys):
 def test_intrinsics_from_fov():
     K = intrinsics_from_fov(640, 480, 90.0)
     assert K[0, 0] == pytest.approx(320.0) and K[0, 2] == pytest.approx(319.5)
+
+
+def test_colour_without_msaa_is_depth_tested(scene, renderer, sampled):
+    """``samples=0`` draws into the resolve target: nearer surfaces still hide farther ones,
+    so the image differs from the multisampled one only along edges."""
+    plain = Renderer(samples=0)
+    try:
+        a = plain.render_rgb(scene, sampled[1]).astype(int)
+    finally:
+        plain.release()
+    b = renderer.render_rgb(scene, sampled[1]).astype(int)
+    assert np.abs(a - b).max(axis=-1).mean() < 3.0

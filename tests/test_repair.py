@@ -118,3 +118,23 @@ def test_unmet_relations_stay_unmet_after_settling():
     assert near.detail == "unmet: parent 'sofa' failed"
     on = next(c for c in scene.relations if c.relation == "ON" and c.child == "chair")
     assert on.holds and on.holds_settled
+
+
+def test_settling_the_same_poses_again_gives_the_same_scene(solved):
+    """What lets a repair round that could place nothing anew skip settling again."""
+    import copy
+
+    from parse3d.pipeline import _settle
+
+    scene = copy.deepcopy(solved)
+    _push_off(scene, "mug")  # something moves while settling
+    _settle(scene)
+    first = {k: (o.settled_rotation.tobytes(), o.settled_position.tobytes(), list(o.flags))
+             for k, o in scene.objects.items() if o.placed}
+    rel = [(c.index, c.holds_settled, c.residual_settled) for c in scene.relations]
+    meta = copy.deepcopy(scene.meta["settle"])
+    _settle(scene)
+    assert {k: (o.settled_rotation.tobytes(), o.settled_position.tobytes(), list(o.flags))
+            for k, o in scene.objects.items() if o.placed} == first
+    assert [(c.index, c.holds_settled, c.residual_settled) for c in scene.relations] == rel
+    assert scene.meta["settle"] == meta and "mug" in meta["fell"]

@@ -96,9 +96,12 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     cfg = config or SolverConfig()
     _settle(scene)
     touched: set[str] = set()
+    still: dict[str, str] | None = None  # unstable_objects(relations=False) as settled now
     for rnd in range(1, rounds + 1):
         # a broken support relation on a stable object gets one new pose (round 1), no more
         bad = unstable_objects(scene, relations=rnd == 1)
+        if rnd > 1 or not bad:
+            still = bad  # round 1 found none even with the relations: none without them
         if not bad:
             break
         action = "pose" if rnd == 1 else "asset"
@@ -108,11 +111,17 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
             o = scene.objects[oid]
             o.repairs.append(Repair(rnd, cause, done.get(oid, action)))
             touched.add(oid)
+        if not done:
+            # nothing could be placed anew: every pose is what was settled, and settling the
+            # same poses again (deterministic) would give the same scene
+            continue
         scene.relations = []
         scene.relations = check_relations(scene)
         mark_unmet(scene)
         _settle(scene)
-    still = unstable_objects(scene, relations=False)
+        still = None
+    if still is None:
+        still = unstable_objects(scene, relations=False)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
         if not o.placed:

@@ -234,8 +234,30 @@ def list_templates(room_type: str | None = None) -> list[Template]:
         raise InputError(Problem("", f"unknown room type {room_type!r}"
                                  f"{suggest(room_type, ROOM_TYPES)} (one of: "
                                  f"{', '.join(ROOM_TYPES)})", "--room-type", "parameter"))
-    root = templates_dir()
-    motifs = motif_library()
+    return _load_templates(templates_dir(), motifs_dir(), room_type)
+
+
+def _load_templates(root: Path, motif_folder: Path, room_type: str | None) -> list[Template]:
+    """Every template of ``root`` (``<room_type>/<name>.yaml``, only ``room_type``'s when
+    given) with the motifs of ``motif_folder``: from the snapshot of the last full load when
+    it is current (:mod:`parse3d.datagen.template_snapshot`), else loaded and validated (a
+    full load without a problem then writes the snapshot)."""
+    from .template_snapshot import (
+        SNAPSHOT_NAME,
+        cache_root,
+        read_snapshot,
+        snapshot_key,
+        write_snapshot,
+    )
+
+    cache = cache_root()
+    key = None
+    if cache is not None:
+        key = snapshot_key(root, motif_folder, cache)
+        snap = read_snapshot(cache / SNAPSHOT_NAME, key)
+        if snap is not None:
+            return [t for t in snap if room_type is None or t.room_type == room_type]
+    motifs = motif_library(motif_folder)
     vocab = _vocab(None)
     out, errors = [], []
     types = [room_type] if room_type else ROOM_TYPES
@@ -254,4 +276,6 @@ def list_templates(room_type: str | None = None) -> list[Template]:
             out.append(t)
     if errors:
         raise InputError.merge(errors)
+    if room_type is None and key is not None:
+        write_snapshot(cache / SNAPSHOT_NAME, key, out)
     return out

@@ -358,7 +358,10 @@ class _Targets:
         self.msaa = ctx.framebuffer(
             color_attachments=[ctx.renderbuffer(size, 4, samples=samples)],
             depth_attachment=ctx.depth_renderbuffer(size, samples=samples))
-        self.resolve = ctx.framebuffer(color_attachments=[ctx.renderbuffer(size, 4)])
+        # without MSAA the colour pass draws straight into ``resolve``: it needs its own depth
+        self.resolve = ctx.framebuffer(
+            color_attachments=[ctx.renderbuffer(size, 4)],
+            depth_attachment=None if samples else ctx.depth_renderbuffer(size))
         self.ids = ctx.framebuffer(
             color_attachments=[ctx.texture(size, 4, dtype="f4"), ctx.texture(size, 4, dtype="f4")],
             depth_attachment=ctx.depth_renderbuffer(size))
