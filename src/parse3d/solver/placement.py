@@ -459,7 +459,7 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
         order = rng.permutation(len(sups))
         if support_edge.relation == "IN":  # across a cradle's bars before on one of them
             order = np.array(sorted(order, key=lambda i: not sups[int(i)].spans))
-    body = cached_body(asset.asset_id, scale, lambda: scaled_mesh(asset, scale))
+    body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
     for variant in _wall_choices(st, others, rng):
