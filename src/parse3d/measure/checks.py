@@ -12,6 +12,7 @@ angles within 2 degrees, heights within 1 cm.
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -27,6 +28,7 @@ from ..relations import RELATIONS, SURFACES
 from ..scene.model import PlacedObject, RelationCheck, Scene
 from .geometry import (
     asset_geometry,
+    asset_points,
     drop_distance,
     enclosure_directions,
     exact_drop,
@@ -136,8 +138,11 @@ def world_points(obj: PlacedObject, *, hull_only: bool = False, settled: bool | 
     T = obj.transform(settled)
     if hull_only and parts is None:
         pts = asset_geometry(obj.asset).hull
+    elif parts is None or (len(parts) == len(obj.asset.parts)
+                           and all(map(operator.is_, parts, obj.asset.parts))):
+        pts = asset_points(obj.asset)
     else:
-        pts = part_points(parts if parts is not None else obj.asset.parts)
+        pts = part_points(parts)
     return pts @ T[:3, :3].T + T[:3, 3]
 
 
@@ -230,12 +235,12 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     # about the normal, every candidate of an asset shares one answer
     T = child.transform(settled)
     M = T[:3, :3]
-    key = (child.asset.asset_id, *np.round(M.T @ n, 9).tolist(),
-           *np.round(np.linalg.solve(M, com - T[:3, 3]), 9).tolist())
+    key = (child.asset.asset_id, *(M.T @ n).round(9).tolist(),
+           *np.linalg.solve(M, com - T[:3, 3]).round(9).tolist())
     got = _STANDS.get(key)
     if got is not None:
         return got
-    pts = part_points(child.asset.parts) @ M.T + T[:3, 3]
+    pts = asset_points(child.asset) @ M.T + T[:3, 3]
     h = pts @ n
     base = pts[h <= h.min() + 3e-3]
     u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])

@@ -82,7 +82,7 @@ def outline_indices(asset: Asset, direction: np.ndarray) -> np.ndarray | None:
     hull. None when the projection is degenerate (a flat outline seen edge on).
     """
     d = np.asarray(direction, float)
-    key = (asset.asset_id, *np.round(d, 9).tolist())
+    key = (asset.asset_id, *d.round(9).tolist())
     if key in _OUTLINE:
         return _OUTLINE[key]
     if len(_OUTLINE) > 16384:
@@ -101,6 +101,21 @@ def part_points(parts: list[Part]) -> np.ndarray:
     """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
     pts = [pc.vertices for p in parts for pc in p.piece_arrays] or [p.vertices for p in parts]
     return np.vstack(pts)
+
+
+_POINTS: dict[str, np.ndarray] = {}
+
+
+def asset_points(asset: Asset) -> np.ndarray:
+    """:func:`part_points` of all the asset's parts, stacked once per asset (read-only)."""
+    pts = _POINTS.get(asset.asset_id)
+    if pts is None:
+        if len(_POINTS) > 512:
+            _POINTS.clear()
+        pts = part_points(asset.parts)
+        pts.flags.writeable = False
+        _POINTS[asset.asset_id] = pts
+    return pts
 
 
 _CASTERS: dict[str, RayCaster] = {}

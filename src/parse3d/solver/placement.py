@@ -3,6 +3,7 @@ positions in the feasible region and validate each (relation checks, FCL collisi
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -212,15 +213,15 @@ def _contents_scale(pag, oid: str, asset: Asset) -> float:
 def touching(pag, oid: str) -> list[Edge]:
     """The edges of ``pag`` naming ``oid`` as child or parent, in file order (an index kept on
     the graph, rebuilt whenever its relations change)."""
-    key = tuple(map(id, pag.relations))
+    rel = pag.relations
     got = pag.__dict__.get("_touch_index")
-    if got is None or got[0] != key:
+    if got is None or len(got[0]) != len(rel) or not all(map(operator.is_, got[0], rel)):
         idx: dict[str, list[Edge]] = {}
         for e in pag.relations:
             idx.setdefault(e.child.object, []).append(e)
             if e.parent.object != e.child.object:
                 idx.setdefault(e.parent.object, []).append(e)
-        got = (key, idx, list(pag.relations))  # holding the edges keeps their ids valid
+        got = (list(rel), idx)  # the same edges, compared by identity
         pag.__dict__["_touch_index"] = got
     return got[1].get(oid, [])
 
@@ -939,7 +940,7 @@ def _middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, sca
 
 def _plane_key(s) -> tuple:
     """A hashable key of a support plane (its origin and normal)."""
-    return (*np.round(s.origin, 9).tolist(), *np.round(s.normal, 9).tolist())
+    return (*np.asarray(s.origin).round(9).tolist(), *np.asarray(s.normal).round(9).tolist())
 
 
 def _inset(sup: Support, margin: float):

@@ -3,6 +3,7 @@ the world-frame geometry of every placed object (indexed once, when the object i
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -144,10 +145,11 @@ def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None
     """Angle about ``n`` taking ``vec`` onto ``target`` (both projected); None if degenerate."""
     pv = vec - np.dot(vec, n) * n
     pt = target - np.dot(target, n) * n
-    if np.linalg.norm(pv) < 1e-3 or np.linalg.norm(pt) < 1e-3:
+    npv, npt = math.sqrt(pv.dot(pv)), math.sqrt(pt.dot(pt))  # np.linalg.norm's value
+    if npv < 1e-3 or npt < 1e-3:
         return None
-    pv /= np.linalg.norm(pv)
-    pt /= np.linalg.norm(pt)
+    pv /= npv
+    pt /= npt
     (a, b, c), (x, y, z) = pv.tolist(), pt.tolist()
     cross = np.array([b * z - c * y, c * x - a * z, a * y - b * x])  # np.cross is slow here
     return float(np.arctan2(np.dot(cross, n), np.dot(pv, pt)))
