@@ -141,10 +141,27 @@ def enclosure_directions() -> np.ndarray:
     return np.vstack([d, [0, 0, 1.0]])
 
 
+def hull_extents(asset: Asset) -> tuple[np.ndarray, np.ndarray]:
+    """The extents of the asset's hull along the asset axes (3,) and the axes in increasing
+    order of extent (``argsort``), once per asset (read-only)."""
+    got = _EXTENTS.get(asset.asset_id)
+    if got is None:
+        if len(_EXTENTS) > 4096:
+            _EXTENTS.clear()
+        ext = np.ptp(asset_geometry(asset).hull, axis=0)
+        order = np.argsort(ext)
+        ext.flags.writeable = order.flags.writeable = False
+        got = _EXTENTS[asset.asset_id] = (ext, order)
+    return got
+
+
+_EXTENTS: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+
+
 def is_round(obj) -> bool:
     """Whether a placed object is about as wide as it is deep and tall (extents within 30%: an
     apple, a ball): it rolls rather than tips, and rests in any orientation."""
-    ext = np.ptp(asset_geometry(obj.asset).hull, axis=0)
+    ext = hull_extents(obj.asset)[0]
     return float(ext.max()) <= 1.3 * float(ext.min())
 
 

@@ -141,6 +141,23 @@ def plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
     return np.column_stack([d @ surf.u, d @ surf.v])
 
 
+def plane_key(s: Surface) -> tuple:
+    """A hashable key of a support plane (its origin and normal rounded to 1e-9), made once
+    per surface object (a parent's supports are kept on the solve state and asked for by
+    every child)."""
+    got = _PLANE_KEYS.get(id(s))
+    if got is not None and got[0] is s:
+        return got[1]
+    if len(_PLANE_KEYS) > 4096:
+        _PLANE_KEYS.clear()
+    key = (*np.asarray(s.origin).round(9).tolist(), *np.asarray(s.normal).round(9).tolist())
+    _PLANE_KEYS[id(s)] = (s, key)  # holding the surface keeps its id valid
+    return key
+
+
+_PLANE_KEYS: dict[int, tuple] = {}
+
+
 def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
     """Angle about ``n`` taking ``vec`` onto ``target`` (both projected); None if degenerate."""
     pv = vec - np.dot(vec, n) * n
