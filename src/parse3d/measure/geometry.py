@@ -192,7 +192,7 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
         pts = pts[np.all((proj >= lo) & (proj <= hi), axis=1)]
         if not len(pts):
             continue
-        Ti = np.linalg.inv(T)
+        Ti = _inverse(T)
         o = pts @ Ti[:3, :3].T + Ti[:3, 3]
         v = Ti[:3, :3] @ d
         scale = np.linalg.norm(v)
@@ -202,6 +202,24 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
             dist = np.linalg.norm(locs - o[idx], axis=1) / scale
             best = min(best, float(dist.min()))
     return best
+
+
+_INVERSES: dict[bytes, np.ndarray] = {}
+
+
+def _inverse(T: np.ndarray) -> np.ndarray:
+    """``np.linalg.inv(T)`` of a (4, 4) transform, kept per transform (a parent's, met again
+    by every child dropped onto it); read-only."""
+    T = np.asarray(T, float)
+    key = T.tobytes()
+    got = _INVERSES.get(key)
+    if got is None:
+        if len(_INVERSES) > 4096:
+            _INVERSES.clear()
+        got = np.linalg.inv(T)
+        got.flags.writeable = False
+        _INVERSES[key] = got
+    return got
 
 
 _BVHS: dict[tuple[str, float], object] = {}
