@@ -161,3 +161,61 @@ def test_every_command_help_completes():
 def test_unknown_command_and_missing_argument_exit_2(args):
     r = CliRunner().invoke(app, args)
     assert r.exit_code == 2
+
+
+def _solve_probe(args: list[str]) -> dict:
+    """Run ``parse3d`` with ``args`` in a fresh process (the test's own asset cache): exit
+    code and the top-level modules it imported."""
+    env = {**os.environ,
+           "PYTHONPATH": os.pathsep.join([str(ROOT / "src"), os.environ.get("PYTHONPATH", "")])}
+    r = subprocess.run([sys.executable, "-c", _PROBE, *args], capture_output=True, text=True,
+                       env=env, cwd=str(ROOT), timeout=600)
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def test_plain_solve_line_skips_typer_and_solves_the_same(tmp_path):
+    from parse3d.pag import PAG, Room
+
+    pag = PAG("tabletop", Room("dining", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.6))
+    pag.add("table", "dining_table")
+    pag.relate("table", "ON", "floor")
+    pag.add("mug", "mug")
+    pag.relate("mug", "ON", "table:tabletop")
+    src = tmp_path / "tabletop.json"
+    src.write_text(json.dumps(pag.to_dict()))
+    common = ["--no-settle", "--no-preview", "--json"]
+    plain = _solve_probe(["solve", str(src), "--seed", "4", *common, "--out", str(tmp_path / "a")])
+    assert plain["code"] == 0
+    assert "typer" not in plain["modules"] and "click" not in plain["modules"]
+    # ``--seed=4`` is a form only typer reads: the same scene through the full parser
+    full = _solve_probe(["solve", str(src), "--seed=4", *common, "-o", str(tmp_path / "b")])
+    assert full["code"] == 0 and "typer" in full["modules"]
+
+    def objects(d: Path) -> list:
+        return json.loads((d / "scene.json").read_text())["objects"]
+
+    assert objects(tmp_path / "a") == objects(tmp_path / "b")
+    assert (tmp_path / "a" / "scene.glb").read_bytes() == (tmp_path / "b" / "scene.glb").read_bytes()
+
+
+@pytest.mark.parametrize("args, plain", [
+    (["solve", "x.json"], True),
+    (["solve", "x.json", "--seed", "3", "-o", "out/x", "--no-settle", "--json"], True),
+    (["solve", "--time-limit", "2.5", "x.json", "--formats", "glb,obj"], True),
+    (["solve", "x.json", "--seed=3"], False),           # typer's own forms
+    (["solve", "x.json", "--seed", "+3"], False),
+    (["solve", "x.json", "--seed", "3", "--seed", "4"], False),
+    (["solve", "x.json", "--help"], False),
+    (["solve", "x.json", "--out"], False),              # mistakes: typer says what is wrong
+    (["solve", "x.json", "y.json"], False),
+    (["solve", "--seed", "3"], False),
+    (["solve", "x.json", "--unknown"], False),
+    (["generate", "bedroom"], False),
+])
+def test_which_solve_lines_skip_typer(args, plain):
+    from parse3d.cli import _fast
+
+    got = _fast.solve_args(args)
+    assert (got is not None) == plain
+    if plain:
+        assert got["pag_file"] == Path("x.json")

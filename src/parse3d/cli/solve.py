@@ -6,12 +6,14 @@ import contextlib
 import sys
 import time
 from pathlib import Path
-
-import typer
+from typing import TYPE_CHECKING
 
 from .._deps import require
 from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InputError, Problem
 from ._common import check_range, check_seed, console, err_console, print_json, safe_name
+
+if TYPE_CHECKING:
+    import typer
 
 #: Bounds of the solver options (docs/hardening.md).
 MAX_SEARCH_BUDGET = 10_000
@@ -134,7 +136,26 @@ def _prepare_out(out: Path) -> None:
     clear_scene_outputs(out)
 
 
+def solve_file(pag_file: Path, *, seed: int = 0, out: Path | None = None,
+               strategy: str = "constrained", search: str = "backtracking",
+               search_budget: int = 24, time_limit: float | None = None,
+               no_settle: bool = False, no_preview: bool = False, formats: str = "glb",
+               as_json: bool = False) -> None:
+    """``parse3d solve``: the typer command and the plain command line (``_fast``) call this
+    with the option values (the defaults are the options' defaults)."""
+    from ..pag.io import load_pag
+    from ._vocab import solve_vocabulary
+
+    check_seed(seed)
+    pag = load_pag(pag_file, vocabulary=solve_vocabulary())
+    out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
+    _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats, search,
+         search_budget, time_limit)
+
+
 def register(app: typer.Typer) -> None:
+    import typer
+
     @app.command("solve")
     def solve_cmd(
         pag_file: Path = typer.Argument(..., help="PAG file (.json or .yaml)."),
@@ -159,14 +180,9 @@ def register(app: typer.Typer) -> None:
 
         Example: parse3d solve examples/study.json --seed 3 --search greedy --time-limit 20 --out out/study
         """
-        from ..pag.io import load_pag
-        from ._vocab import solve_vocabulary
-
-        check_seed(seed)
-        pag = load_pag(pag_file, vocabulary=solve_vocabulary())
-        out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
-        _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats, search,
-             search_budget, time_limit)
+        solve_file(pag_file, seed=seed, out=out, strategy=strategy, search=search,
+                   search_budget=search_budget, time_limit=time_limit, no_settle=no_settle,
+                   no_preview=no_preview, formats=formats, as_json=as_json)
 
     @app.command("generate")
     def generate_cmd(
@@ -195,4 +211,4 @@ def register(app: typer.Typer) -> None:
         _run(pag, seed, out, "constrained", no_settle, no_preview, as_json)
 
 
-__all__ = ["register", "EXIT_INPUT"]
+__all__ = ["register", "solve_file", "EXIT_INPUT"]

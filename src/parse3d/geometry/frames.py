@@ -5,6 +5,8 @@ Conventions: world +Z up; quaternions are scalar-first ``[w, x, y, z]`` as in sc
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = [
@@ -67,18 +69,24 @@ def rotation_about(axis, theta: float) -> np.ndarray:
 
 def rotation_between(a, b) -> np.ndarray:
     """(3, 3) smallest rotation taking unit vector ``a`` onto unit vector ``b``."""
-    a = np.asarray(a, float) / np.linalg.norm(a)
-    b = np.asarray(b, float) / np.linalg.norm(b)
-    v = np.cross(a, b)
+    a = np.asarray(a, float)
+    a = a / math.sqrt(a.dot(a))
+    b = np.asarray(b, float)
+    b = b / math.sqrt(b.dot(b))
+    # numpy's cross (and norm) cost more than the arithmetic on single 3-vectors; the same
+    # products and differences, so the same bits
+    (a0, a1, a2), (b0, b1, b2) = a.tolist(), b.tolist()
+    v = np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
     c = float(np.dot(a, b))
-    if np.linalg.norm(v) < 1e-12:
+    nv = math.sqrt(v.dot(v))
+    if nv < 1e-12:
         if c > 0:
             return np.eye(3)
         # 180 degrees about any axis orthogonal to a
         perp = np.array([1.0, 0, 0]) if abs(a[0]) < 0.9 else np.array([0, 1.0, 0])
         axis = np.cross(a, perp)
         return axis_angle(axis, np.pi)
-    return axis_angle(v, np.arctan2(np.linalg.norm(v), c))
+    return axis_angle(v, np.arctan2(nv, c))
 
 
 def angle_between(a, b) -> float:
@@ -124,11 +132,12 @@ def quat_to_matrix(q) -> np.ndarray:
 
 def make_transform(R=None, t=None, scale: float = 1.0) -> np.ndarray:
     """(4, 4) homogeneous transform ``x -> R @ (scale * x) + t``."""
-    T = np.eye(4)
+    T = np.zeros((4, 4))
+    T[3, 3] = 1.0
     if R is not None:
-        T[:3, :3] = np.asarray(R, float) * scale
+        np.multiply(np.asarray(R, float), scale, out=T[:3, :3])
     else:
-        T[:3, :3] *= scale
+        T[0, 0] = T[1, 1] = T[2, 2] = scale
     if t is not None:
         T[:3, 3] = t
     return T

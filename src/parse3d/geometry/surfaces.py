@@ -57,6 +57,23 @@ _AXIS = [int(np.argmax(np.abs(d))) for d in _DIRS]
 _BASIS = [tuple(np.array(a) for a in SURFACE_BASIS[k]) for k in _LABELS]
 
 
+_SCALED: dict[tuple[int, float], tuple] = {}
+
+
+def _scaled(poly, s: float):
+    """``poly`` scaled by ``s`` about the origin, once per (polygon object, scale): a parent's
+    surfaces are carried to the world again for every candidate placed on it."""
+    k = (id(poly), s)
+    got = _SCALED.get(k)
+    if got is not None and got[0] is poly:
+        return got[1]
+    if len(_SCALED) > 4096:
+        _SCALED.clear()
+    out = shapely.affinity.scale(poly, s, s, origin=(0, 0))
+    _SCALED[k] = (poly, out)  # holding the polygon keeps its id valid
+    return out
+
+
 @dataclass
 class Surface:
     """A planar surface patch.
@@ -114,7 +131,7 @@ class Surface:
         A = T[:3, :3]
         s = float(np.cbrt(abs(np.linalg.det(A))))
         R = A / s
-        poly = shapely.affinity.scale(self.polygon, s, s, origin=(0, 0)) if s != 1.0 else self.polygon
+        poly = _scaled(self.polygon, s) if s != 1.0 else self.polygon
         return Surface(
             self.label,
             A @ self.origin + T[:3, 3],

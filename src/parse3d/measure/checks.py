@@ -12,6 +12,7 @@ angles within 2 degrees, heights within 1 cm.
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Callable
 from dataclasses import dataclass
 from types import MappingProxyType
@@ -27,9 +28,11 @@ from ..relations import RELATIONS, SURFACES
 from ..scene.model import PlacedObject, RelationCheck, Scene
 from .geometry import (
     asset_geometry,
+    asset_points,
     drop_distance,
     enclosure_directions,
     exact_drop,
+    hull_extents,
     is_round,
     part_points,
     ray_caster,
@@ -136,8 +139,11 @@ def world_points(obj: PlacedObject, *, hull_only: bool = False, settled: bool | 
     T = obj.transform(settled)
     if hull_only and parts is None:
         pts = asset_geometry(obj.asset).hull
+    elif parts is None or (len(parts) == len(obj.asset.parts)
+                           and all(map(operator.is_, parts, obj.asset.parts))):
+        pts = asset_points(obj.asset)
     else:
-        pts = part_points(parts if parts is not None else obj.asset.parts)
+        pts = part_points(parts)
     return pts @ T[:3, :3].T + T[:3, 3]
 
 
@@ -169,7 +175,7 @@ def _surface(scene: Scene, obj: PlacedObject | None, ref: Ref, label: str,
     T = obj.transform(settled)
     if part_name is not None:
         try:
-            return obj.asset.part(part_name).surfaces[label].transformed(T)
+            return _world_surface(obj.asset.part(part_name).surfaces[label], T)
         except KeyError:
             return None
     parts = select_parts(obj, ref)
@@ -177,7 +183,24 @@ def _surface(scene: Scene, obj: PlacedObject | None, ref: Ref, label: str,
         return None
     if ref.part is None:
         return surface_from_bbox(label, asset_geometry(obj.asset).bounds).transformed(T)
-    return parts[0].surfaces[label].transformed(T)
+    return _world_surface(parts[0].surfaces[label], T)
+
+
+_WORLD: dict[tuple, tuple] = {}
+
+
+def _world_surface(surf: Surface, T: np.ndarray) -> Surface:
+    """``surf.transformed(T)``, made once per (surface object, transform): a parent's surface
+    is checked against every candidate placed on it."""
+    key = (id(surf), np.asarray(T, float).tobytes())
+    got = _WORLD.get(key)
+    if got is not None and got[0] is surf:
+        return got[1]
+    if len(_WORLD) > 8192:
+        _WORLD.clear()
+    world = surf.transformed(T)
+    _WORLD[key] = (surf, world)  # holding the surface keeps its id valid
+    return world
 
 
 def _child_normal(obj: PlacedObject, label: str, settled) -> np.ndarray:
@@ -210,14 +233,30 @@ def _plane_dist(pts: np.ndarray, s: Surface) -> np.ndarray:
 
 
 def _in_polygon(s: Surface, p3: np.ndarray) -> bool:
-    from shapely.geometry import Point, Polygon
+    from shapely.geometry import Point
 
     d = p3 - s.origin
-    poly = s.polygon
-    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
     pt = Point(float(d @ s.u), float(d @ s.v))
-    # holes do not count: an object on a rim spans the hole
-    return any(Polygon(p.exterior).distance(pt) <= 1e-3 for p in parts if not p.is_empty)
+    return any(shell.distance(pt) <= 1e-3 for shell in _shells(s.polygon))
+
+
+_SHELLS: dict[int, tuple] = {}
+
+
+def _shells(poly) -> list:
+    """The pieces of ``poly`` without their holes (an object on a rim spans the hole), made
+    once per polygon object."""
+    from shapely.geometry import Polygon
+
+    got = _SHELLS.get(id(poly))
+    if got is not None and got[0] is poly:
+        return got[1]
+    if len(_SHELLS) > 8192:
+        _SHELLS.clear()
+    parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
+    shells = [Polygon(p.exterior) for p in parts if not p.is_empty]
+    _SHELLS[id(poly)] = (poly, shells)  # holding the polygon keeps its id valid
+    return shells
 
 
 def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> bool:
@@ -230,12 +269,12 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     # about the normal, every candidate of an asset shares one answer
     T = child.transform(settled)
     M = T[:3, :3]
-    key = (child.asset.asset_id, *np.round(M.T @ n, 9).tolist(),
-           *np.round(np.linalg.solve(M, com - T[:3, 3]), 9).tolist())
+    key = (child.asset.asset_id, *(M.T @ n).round(9).tolist(),
+           *np.linalg.solve(M, com - T[:3, 3]).round(9).tolist())
     got = _STANDS.get(key)
     if got is not None:
         return got
-    pts = part_points(child.asset.parts) @ M.T + T[:3, 3]
+    pts = asset_points(child.asset) @ M.T + T[:3, 3]
     h = pts @ n
     base = pts[h <= h.min() + 3e-3]
     u = np.cross(n, [1.0, 0, 0] if abs(n[0]) < 0.9 else [0, 1.0, 0])
@@ -500,8 +539,7 @@ def _lying_axis(child: PlacedObject, n: np.ndarray, settled) -> np.ndarray | Non
     """The world direction of the long axis of an elongated child with a round-ish cross
     section (its two smaller extents within ``ROLL_RATIO``) lying on its side (that axis within
     20 degrees of level), which it may roll about; None otherwise."""
-    ext = np.ptp(asset_geometry(child.asset).hull, axis=0)
-    k = np.argsort(ext)
+    ext, k = hull_extents(child.asset)
     if ext[k[1]] > ROLL_RATIO * ext[k[0]] or ext[k[2]] <= ROLL_RATIO * ext[k[1]]:
         return None
     axis = child.transform(settled)[:3, :3][:, k[2]] / child.scale

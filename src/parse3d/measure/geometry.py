@@ -82,7 +82,7 @@ def outline_indices(asset: Asset, direction: np.ndarray) -> np.ndarray | None:
     hull. None when the projection is degenerate (a flat outline seen edge on).
     """
     d = np.asarray(direction, float)
-    key = (asset.asset_id, *np.round(d, 9).tolist())
+    key = (asset.asset_id, *d.round(9).tolist())
     if key in _OUTLINE:
         return _OUTLINE[key]
     if len(_OUTLINE) > 16384:
@@ -101,6 +101,21 @@ def part_points(parts: list[Part]) -> np.ndarray:
     """(N, 3) vertices of the parts' convex pieces (their meshes when they have none)."""
     pts = [pc.vertices for p in parts for pc in p.piece_arrays] or [p.vertices for p in parts]
     return np.vstack(pts)
+
+
+_POINTS: dict[str, np.ndarray] = {}
+
+
+def asset_points(asset: Asset) -> np.ndarray:
+    """:func:`part_points` of all the asset's parts, stacked once per asset (read-only)."""
+    pts = _POINTS.get(asset.asset_id)
+    if pts is None:
+        if len(_POINTS) > 512:
+            _POINTS.clear()
+        pts = part_points(asset.parts)
+        pts.flags.writeable = False
+        _POINTS[asset.asset_id] = pts
+    return pts
 
 
 _CASTERS: dict[str, RayCaster] = {}
@@ -126,10 +141,27 @@ def enclosure_directions() -> np.ndarray:
     return np.vstack([d, [0, 0, 1.0]])
 
 
+def hull_extents(asset: Asset) -> tuple[np.ndarray, np.ndarray]:
+    """The extents of the asset's hull along the asset axes (3,) and the axes in increasing
+    order of extent (``argsort``), once per asset (read-only)."""
+    got = _EXTENTS.get(asset.asset_id)
+    if got is None:
+        if len(_EXTENTS) > 4096:
+            _EXTENTS.clear()
+        ext = np.ptp(asset_geometry(asset).hull, axis=0)
+        order = np.argsort(ext)
+        ext.flags.writeable = order.flags.writeable = False
+        got = _EXTENTS[asset.asset_id] = (ext, order)
+    return got
+
+
+_EXTENTS: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+
+
 def is_round(obj) -> bool:
     """Whether a placed object is about as wide as it is deep and tall (extents within 30%: an
     apple, a ball): it rolls rather than tips, and rests in any orientation."""
-    ext = np.ptp(asset_geometry(obj.asset).hull, axis=0)
+    ext = hull_extents(obj.asset)[0]
     return float(ext.max()) <= 1.3 * float(ext.min())
 
 
@@ -160,7 +192,7 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
         pts = pts[np.all((proj >= lo) & (proj <= hi), axis=1)]
         if not len(pts):
             continue
-        Ti = np.linalg.inv(T)
+        Ti = _inverse(T)
         o = pts @ Ti[:3, :3].T + Ti[:3, 3]
         v = Ti[:3, :3] @ d
         scale = np.linalg.norm(v)
@@ -170,6 +202,24 @@ def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray
             dist = np.linalg.norm(locs - o[idx], axis=1) / scale
             best = min(best, float(dist.min()))
     return best
+
+
+_INVERSES: dict[bytes, np.ndarray] = {}
+
+
+def _inverse(T: np.ndarray) -> np.ndarray:
+    """``np.linalg.inv(T)`` of a (4, 4) transform, kept per transform (a parent's, met again
+    by every child dropped onto it); read-only."""
+    T = np.asarray(T, float)
+    key = T.tobytes()
+    got = _INVERSES.get(key)
+    if got is None:
+        if len(_INVERSES) > 4096:
+            _INVERSES.clear()
+        got = np.linalg.inv(T)
+        got.flags.writeable = False
+        _INVERSES[key] = got
+    return got
 
 
 _BVHS: dict[tuple[str, float], object] = {}

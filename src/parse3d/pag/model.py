@@ -12,6 +12,7 @@ Algorithms over the graph (support tree, assembly order, descendants) are free f
 from __future__ import annotations
 
 import copy
+import operator
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -257,17 +258,17 @@ class PAG:
     def _by_child(self) -> dict[str, list[Edge]]:
         """Edges per child object, support edges first (a stable sort): an index rebuilt
         whenever ``relations`` is not the list of edges it was built from."""
-        key = tuple(map(id, self.relations))
+        rel = self.relations
         got = self.__dict__.get("_child_index")
-        if got is None or got[0] != key:
+        # the same edges in the same order: compared by identity, item by item, in C
+        if got is None or len(got[0]) != len(rel) or not all(map(operator.is_, got[0], rel)):
             idx: dict[str, list[Edge]] = {}
             for e in self.relations:
                 idx.setdefault(e.child.object, []).append(e)
             for k, es in idx.items():
                 idx[k] = sorted(es, key=lambda e: 0 if e.relation in RELATIONS
                                 and e.is_support else 1)
-            # the key's ids stay valid: the index holds on to every edge it names
-            got = (key, idx, list(self.relations))
+            got = (list(rel), idx)
             self.__dict__["_child_index"] = got
         return got[1]
 

@@ -11,10 +11,11 @@ from ..measure.geometry import (
     asset_geometry,
     drop_distance,
     enclosure_directions,
+    hull_extents,
     outline_indices,
     part_points,
     ray_caster,
 )
 
 __all__ = ["AssetGeometry", "asset_geometry", "part_points", "ray_caster", "enclosure_directions",
-           "drop_distance", "outline_indices"]
+           "drop_distance", "outline_indices", "hull_extents"]

@@ -3,6 +3,7 @@ positions in the feasible region and validate each (relation checks, FCL collisi
 
 from __future__ import annotations
 
+import operator
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -19,7 +20,7 @@ from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
-from .geometry import asset_geometry, drop_distance, outline_indices, part_points
+from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
 from .ledge import may_lean, place_leaning
 from .regions import (
     REGION_RULES,
@@ -30,7 +31,7 @@ from .regions import (
     parent_frame,
 )
 from .rotation import solve_rotation
-from .state import SolveState, angle_to, plane_coords, support_chain
+from .state import SolveState, angle_to, plane_coords, plane_key, support_chain
 from .support import BAR_WIDTH, Support, _flat_cached, _flat_enough, filled, support_candidates
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
@@ -153,7 +154,7 @@ _AXES = {"top": 2, "bottom": 2, "front": 1, "back": 1, "right": 0, "left": 0}
 
 def _extent(asset: Asset, axis: int) -> float:
     """The asset's extent (m, unit scale) along one of its own axes."""
-    return float(np.ptp(asset_geometry(asset).hull[:, axis]))
+    return float(hull_extents(asset)[0][axis])
 
 
 def _headroom(st: SolveState, edge: Edge) -> float:
@@ -212,15 +213,15 @@ def _contents_scale(pag, oid: str, asset: Asset) -> float:
 def touching(pag, oid: str) -> list[Edge]:
     """The edges of ``pag`` naming ``oid`` as child or parent, in file order (an index kept on
     the graph, rebuilt whenever its relations change)."""
-    key = tuple(map(id, pag.relations))
+    rel = pag.relations
     got = pag.__dict__.get("_touch_index")
-    if got is None or got[0] != key:
+    if got is None or len(got[0]) != len(rel) or not all(map(operator.is_, got[0], rel)):
         idx: dict[str, list[Edge]] = {}
         for e in pag.relations:
             idx.setdefault(e.child.object, []).append(e)
             if e.parent.object != e.child.object:
                 idx.setdefault(e.parent.object, []).append(e)
-        got = (key, idx, list(pag.relations))  # holding the edges keeps their ids valid
+        got = (list(rel), idx)  # the same edges, compared by identity
         pag.__dict__["_touch_index"] = got
     return got[1].get(oid, [])
 
@@ -459,7 +460,7 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
         order = rng.permutation(len(sups))
         if support_edge.relation == "IN":  # across a cradle's bars before on one of them
             order = np.array(sorted(order, key=lambda i: not sups[int(i)].spans))
-    body = cached_body(asset.asset_id, scale, lambda: scaled_mesh(asset, scale))
+    body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
     for variant in _wall_choices(st, others, rng):
@@ -696,7 +697,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
-    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, _plane_key(s), cfg.margin),
+    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, plane_key(s), cfg.margin),
                       lambda: _inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
@@ -711,9 +712,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         obst = obstacles(st, sup, exclude, height + EPS,
                          _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0), step=step)
         if step:
-            lift = st.memo(sup.owner, ("step", _plane_key(s), step),
+            lift = st.memo(sup.owner, ("step", plane_key(s), step),
                            lambda: _step_height(st, sup, step))
-        fa = Polygon(F).area
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
         # a stack: ON an object of the same kind (their PAG nodes share a category)
@@ -762,7 +762,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                     and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
-                    and fa <= (STACK_OVER if stack else 1.5) * Polygon(st.xy[sup.owner]).area:
+                    and Polygon(F).area <= (STACK_OVER if stack else 1.5) * Polygon(st.xy[sup.owner]).area:
                 # a support smaller than the child (a pot on a burner, an apple in a bowl, a
                 # bottle on a bathtub's rim): the paper's stability rule, centre of mass over
                 # the solid support polygon, decides; only for children no bigger than the
@@ -929,7 +929,7 @@ def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float
 
 def _round_asset(asset: Asset) -> bool:
     """About as wide as deep and tall (as :func:`parse3d.measure.is_round`): it rolls."""
-    ext = np.ptp(asset_geometry(asset).hull, axis=0)
+    ext = hull_extents(asset)[0]
     return float(ext.max()) <= 1.3 * float(ext.min())
 
 
@@ -946,11 +946,6 @@ def _middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, sca
     if region0.contains(Polygon(F + mid)):
         out = np.vstack([mid[None], out])[:len(samples)]
     return out
-
-
-def _plane_key(s) -> tuple:
-    """A hashable key of a support plane (its origin and normal)."""
-    return (*np.round(s.origin, 9).tolist(), *np.round(s.normal, 9).tolist())
 
 
 def _inset(sup: Support, margin: float):
@@ -1004,9 +999,6 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
     placed beside this one (``SIDE_OF`` / ``ALONG`` it, on the same support) come first: a
     stove with a counter to its right is not pushed into the corner. The room wanted on a side
     is the smallest size of the dependent's categories; the order is otherwise kept."""
-    from ..assets import registry
-    from .regions import _SIDE_DIRS
-
     pag, s = st.pag, sup.surface
     owner = sup.owner if sup.owner != "room" else None
 
@@ -1026,6 +1018,8 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
     def need(kid: str, seen: frozenset) -> float:
         """The dependent's smallest size, plus the room its own dependents want (a counter
         right of a stove right of a counter)."""
+        from ..assets import registry
+
         sizes = []
         for c in pag.objects[kid].candidates:
             try:
@@ -1038,6 +1032,8 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
 
     wants: list[tuple[np.ndarray, float]] = []
     for e in beside(oid):
+        from .regions import _SIDE_DIRS
+
         d = R @ np.array(_SIDE_DIRS[e.param("side")])
         g = np.array([d @ s.u, d @ s.v])
         if np.linalg.norm(g) < 1e-6:

@@ -25,7 +25,7 @@ from ..relations import SURFACES
 from .config import Fail
 from .geometry import asset_geometry, part_points
 from .rotation import parent_surface_world
-from .state import SolveState, parts_for, plane_coords
+from .state import SolveState, parts_for, plane_coords, plane_key
 from .support import Support
 
 __all__ = ["REGION_RULES", "RegionContext", "obstacles", "apply_region_rules", "height_band",
@@ -404,7 +404,7 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
         out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
-    key = ("pieces", *np.round(sup.surface.origin, 9).tolist(), *np.round(n, 9).tolist())
+    key = ("pieces", *plane_key(sup.surface))
     for oid in (exclude if parts else ()):
         for piece in st.memo(oid, key, lambda oid=oid: _piece_heights(st, oid, sup)):
             lo_h, hi_h, pts, fp = piece

@@ -155,7 +155,7 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
     toward ``direction``), else empty.
     """
     n_s = sup.surface.normal
-    R0 = rotation_between(contact_normal(support_edge.child, support_edge.spec.child_surface), -n_s)
+    R0 = _base_rotation(support_edge.child.surface or support_edge.spec.child_surface, n_s)
     o = Orientation(R0, n_s)
     if abs(n_s[2]) <= 0.9:  # on a wall: stay upright
         o.phi, o.source = _upright_angle(R0, n_s), "upright"
@@ -185,6 +185,22 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
             R = axis_angle(k, theta) @ R
             lean = [(e, theta, d)]
     return R, o.toward, lean
+
+
+_BASE: dict[tuple, np.ndarray] = {}
+
+
+def _base_rotation(label: str, n_s: np.ndarray) -> np.ndarray:
+    """The smallest rotation turning the child's ``label`` surface normal against the support
+    normal ``n_s`` (a fresh copy), made once per (label, normal)."""
+    n_s = np.asarray(n_s, float)
+    key = (label, n_s.tobytes())
+    got = _BASE.get(key)
+    if got is None:
+        if len(_BASE) > 4096:
+            _BASE.clear()
+        got = _BASE[key] = rotation_between(np.array(SURFACES[label], float), -n_s)
+    return got.copy()
 
 
 def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0: np.ndarray,

@@ -649,7 +649,7 @@ def _state_of(scene: Scene, leave_out: set[str]) -> SolveState:
     st = SolveState(scene.pag, scene, world)
     for o in scene.objects.values():
         if o.placed and o.id not in leave_out:
-            st.add(o, cached_body(o.asset.asset_id, o.scale,
+            st.add(o, cached_body(o.asset, o.scale,
                                   lambda o=o: scaled_mesh(o.asset, o.scale)))
     return st
 
@@ -696,7 +696,7 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
             done[oid] = "asset" if p.obj.asset.asset_id != old.asset.asset_id else "pose"
             break
         else:
-            st.add(old, cached_body(old.asset.asset_id, old.scale,
+            st.add(old, cached_body(old.asset, old.scale,
                                     lambda o=old: scaled_mesh(o.asset, o.scale)))
     # fresh checks for what moved
     known: dict[int, tuple] = {}

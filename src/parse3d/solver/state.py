@@ -3,6 +3,7 @@ the world-frame geometry of every placed object (indexed once, when the object i
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -140,14 +141,32 @@ def plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
     return np.column_stack([d @ surf.u, d @ surf.v])
 
 
+def plane_key(s: Surface) -> tuple:
+    """A hashable key of a support plane (its origin and normal rounded to 1e-9), made once
+    per surface object (a parent's supports are kept on the solve state and asked for by
+    every child)."""
+    got = _PLANE_KEYS.get(id(s))
+    if got is not None and got[0] is s:
+        return got[1]
+    if len(_PLANE_KEYS) > 4096:
+        _PLANE_KEYS.clear()
+    key = (*np.asarray(s.origin).round(9).tolist(), *np.asarray(s.normal).round(9).tolist())
+    _PLANE_KEYS[id(s)] = (s, key)  # holding the surface keeps its id valid
+    return key
+
+
+_PLANE_KEYS: dict[int, tuple] = {}
+
+
 def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
     """Angle about ``n`` taking ``vec`` onto ``target`` (both projected); None if degenerate."""
     pv = vec - np.dot(vec, n) * n
     pt = target - np.dot(target, n) * n
-    if np.linalg.norm(pv) < 1e-3 or np.linalg.norm(pt) < 1e-3:
+    npv, npt = math.sqrt(pv.dot(pv)), math.sqrt(pt.dot(pt))  # np.linalg.norm's value
+    if npv < 1e-3 or npt < 1e-3:
         return None
-    pv /= np.linalg.norm(pv)
-    pt /= np.linalg.norm(pt)
+    pv /= npv
+    pt /= npt
     (a, b, c), (x, y, z) = pv.tolist(), pt.tolist()
     cross = np.array([b * z - c * y, c * x - a * z, a * y - b * x])  # np.cross is slow here
     return float(np.arctan2(np.dot(cross, n), np.dot(pv, pt)))

@@ -174,7 +174,20 @@ def _carrier(asset, ins) -> str:
 
 
 def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
-    """World support surfaces the child may be placed on, for its support edge."""
+    """World support surfaces the child may be placed on, for its support edge.
+
+    Kept on the solve state per parent (:meth:`SolveState.memo`) while the parent keeps its
+    pose: every child placed on a table asks for the same surfaces."""
+    ref = edge.parent
+    owner = "room" if ref.is_room_element else ref.object
+    if owner != "room" and not st.scene.objects[ref.object].placed:
+        raise Fail(f"parent {ref.object!r} was not placed")
+    key = ("supports", edge.relation, ref.object, ref.part, ref.index, ref.surface,
+           edge.spec.parent_surface)
+    return list(st.memo(owner, key, lambda: _support_candidates(st, edge)))
+
+
+def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     scene = st.scene
     ref = edge.parent
     rel = edge.relation
