@@ -523,3 +523,40 @@ def test_cli_input_mistakes(run_dir, tmp_path, capsys):
     assert "no checkpoint.pt here" in capsys.readouterr().err
     assert _rc(["layout", "train", str(empty), "--out", str(tmp_path / "r"), "--cond", "x"]) == 2
     assert "--cond" in capsys.readouterr().err
+
+
+def test_relation_aware_fit_rests_children_and_parts_siblings(dataset):
+    """The relation-aware step: an ON child sunk into its parent comes to rest on the parent's
+    top, one floating off to the side comes back over it, siblings on one top end apart, and a
+    desk AGAINST a wall comes to its gap, carrying what stands on it."""
+    from parse3d.layoutgen.fit import GAP, fit_scene
+    from parse3d.measure import check_relations
+
+    ls = next(s for s in data.load_dataset(dataset) if s.pag.name.startswith("desk-wall"))
+    pag = PAG.from_dict(json.loads((ls.path / "scene.json").read_text())["pag"])
+    k = {o: i for i, o in enumerate(ls.object_ids)}
+    p = (ls.poses if ls.solved_poses is None else ls.solved_poses).copy()
+    p[[k["desk"], k["mug"], k["book"]], 1] += 0.04  # 4 cm off the wall (wall_0: y = 0)
+    p[k["mug"], 2] -= 0.015  # 1.5 cm into the desk top
+    p[k["book"], :2] = p[k["mug"], :2] + 0.02  # into the mug
+    p[k["book"], 2] += 0.03  # and floating above the top
+    wall = next(e for e in pag.relations if e.relation == "AGAINST")
+    scene = layout_scene(pag, ls.object_ids, ls.categories, p, seed=0, assets=ls.assets,
+                         scales=list(ls.scales))
+    before = {a for a, b, _ in collisions(scene, depth=1e-3)} | \
+        {b for a, b, _ in collisions(scene, depth=1e-3)}
+    assert {"mug", "book"} <= before
+    mug_xy = scene.objects["mug"].position[:2].copy()
+    rep = fit_scene(scene)
+    assert rep.contacts >= 4 and rep.pushed >= 1
+    assert collisions(scene, depth=2e-3) == []
+    top = scene.objects["desk"].world_bounds(settled=False)[1, 2]
+    for oid in ("mug", "book"):
+        low = scene.objects[oid].world_bounds(settled=False)[0, 2]
+        assert abs(low - top) <= 2e-3, (oid, low - top)
+    assert np.linalg.norm(scene.objects["mug"].position[:2] - mug_xy) < 0.3  # slid, not thrown
+    scene.relations = check_relations(scene)
+    held = {(c.relation, c.child): c.holds for c in scene.relations}
+    assert held[("ON", "mug")] and held[("ON", "book")] and held[("ON", "desk")]
+    assert held[(wall.relation, str(wall.child))]
+    assert scene.objects["desk"].world_bounds(settled=False)[0, 1] < 0.04 - GAP  # back at it

@@ -295,7 +295,7 @@ def _sub_pag(ls: LayoutScene) -> PAG:
 
 
 def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given_scale: bool,
-               label: str, separate: bool = False) -> Scene:
+               label: str, separate: bool = False, fit: bool = False) -> Scene:
     if given_scale:
         scales = list(ls.scales)
     else:  # equal volume of the given asset and the generated size
@@ -303,7 +303,7 @@ def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given
                                         / np.prod(np.maximum(a.extents, 1e-4))), 0.25, 4.0))
                   for p, a in zip(poses, ls.assets, strict=True)]
     return layout_scene(pag, ls.object_ids, ls.categories, poses, seed=seed, assets=ls.assets,
-                        scales=scales, meta={"generator": label}, separate=separate)
+                        scales=scales, meta={"generator": label}, separate=separate, fit=fit)
 
 
 @dataclass
@@ -377,21 +377,29 @@ class EvalResult:
         return "\n".join(lines) + "\n"
 
 
-def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0
-              ) -> list[tuple[str, str, LayoutRun | None, bool]]:
-    rows = [("solver (solved poses)", "solver", None, False), ("random poses", "random", None, False)]
+def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0,
+              fit: bool = False) -> list[tuple[str, str, LayoutRun | None, bool, bool]]:
+    """(name, kind, run, cond, fit) per row; ``cond`` of a random row: separated."""
+    rows = [("solver (solved poses)", "solver", None, False, False),
+            ("random poses", "random", None, False, False)]
     if separate > 0:
-        rows.append(("random poses, separated", "random", None, True))
+        rows.append(("random poses, separated", "random", None, True, False))
+    if fit:
+        rows.append((f"random poses{', separated' if separate > 0 else ''}, relation-aware",
+                     "random", None, separate > 0, True))
     w = "" if guidance == 1.0 else f", guidance {guidance:g}"
     sep = "" if separate <= 0 else f", separated {separate}"
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True))
+            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True, False))
+            if fit:
+                rows.append((f"PAG-conditioned ({run.name}{w}{sep}, relation-aware)", "pag",
+                             run, True, True))
             if run.config.cond_dropout > 0:
                 rows.append((f"unconditioned ({run.name}, condition dropped{sep})", "none", run,
-                             False))
+                             False, False))
         else:
-            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False))
+            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False, False))
     return rows
 
 
@@ -414,7 +422,7 @@ def _compose(images: list[tuple[str, np.ndarray]], path: Path) -> None:
 def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
              physics: bool = True, sample_steps: int = 100, previews: int = 2,
              out: Path | None = None, progress: Callable[[str], None] | None = None,
-             guidance: float = 1.0, separate: int = 0) -> EvalResult:
+             guidance: float = 1.0, separate: int = 0, fit: bool = False) -> EvalResult:
     """Lay out every scene with every row and measure it (see the module docstring).
 
     Parameters
@@ -439,9 +447,12 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
     separate : int
         Separation guidance of every model row (the last ``separate`` denoising steps, see
         :mod:`.separate`), plus a separated random row; 0: none.
+    fit : bool
+        Adds, after every PAG-conditioned row, the same samples with the relation-aware step
+        (:mod:`.fit`), and the random poses with it as a control row.
     """
-    rows = _rows_for(runs, guidance, separate)
-    result = EvalResult([EvalRow(name, kind) for name, kind, _, _ in rows], [], seeds, physics)
+    rows = _rows_for(runs, guidance, separate, fit)
+    result = EvalResult([EvalRow(name, kind) for name, kind, *_ in rows], [], seeds, physics)
     acc: list[list[list[dict]]] = [[[] for _ in range(seeds)] for _ in rows]
     for si, f in enumerate(scene_files):
         ls = load_scene(f)
@@ -455,7 +466,8 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         pag = _sub_pag(ls)
         shots: list[tuple[str, np.ndarray]] = []
         cam = None
-        for ri, (name, kind, run, cond) in enumerate(rows):
+        generated: dict[tuple, np.ndarray] = {}  # a relation-aware row reuses its samples
+        for ri, (name, kind, run, cond, fit_row) in enumerate(rows):
             for seed in range(1 if kind == "solver" else seeds):
                 if progress is not None:
                     progress(f"{ls.scene_id}: {name}, seed {seed}")
@@ -468,15 +480,17 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                     if cond:  # the separated random row
                         poses = separate_poses(poses, ls.footprint, ls.height, rounds=separate + 3)
                     scene = _scene_for(ls, pag, poses, seed, given_scale=True, label=kind,
-                                       separate=cond)
+                                       separate=cond, fit=fit_row)
                 else:
-                    poses = generate_poses(run, ls.categories, ls.assets, ls.relations,
-                                           ls.footprint, ls.height, seed=seed,
-                                           options=SampleOptions(steps=sample_steps, cond=cond,
-                                                                 guidance=guidance,
-                                                                 separate=separate))
-                    scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name,
-                                       separate=separate > 0)
+                    key = (str(run.path), cond, seed)
+                    if key not in generated:
+                        generated[key] = generate_poses(
+                            run, ls.categories, ls.assets, ls.relations, ls.footprint,
+                            ls.height, seed=seed, options=SampleOptions(
+                                steps=sample_steps, cond=cond, guidance=guidance,
+                                separate=separate))
+                    scene = _scene_for(ls, pag, generated[key], seed, given_scale=False,
+                                       label=name, separate=separate > 0, fit=fit_row)
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene
 
