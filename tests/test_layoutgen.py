@@ -345,6 +345,17 @@ def test_time_limit_stops_with_a_checkpoint(dataset, tmp_path):
                                                      time_limit=0.05))
     assert 0 < rep.steps < 100_000
     assert torch.load(tmp_path / "t" / "checkpoint.pt", weights_only=False)["step"] == rep.steps
+    # --cpu-limit counts the process's CPU time (what it has used already included)
+    from parse3d.layoutgen.train import _process_cpu
+
+    limit = (_process_cpu() + 3.0) / 60.0
+    rep = train(dataset, tmp_path / "c", TrainConfig(steps=100_000, preset="tiny",
+                                                     relations="learned", noise_draws=2,
+                                                     cpu_limit=limit))
+    assert 0 < rep.steps < 100_000 and _process_cpu() >= 60.0 * limit
+    assert torch.load(tmp_path / "c" / "checkpoint.pt", weights_only=False)["step"] == rep.steps
+    with pytest.raises(InputError, match="--cpu-limit"):
+        TrainConfig(cpu_limit=0).check()
     with pytest.raises(InputError, match="--cond pag"):
         TrainConfig(cond="none", frame="parent").check()
 
@@ -421,11 +432,21 @@ def test_eval_rows(run_dir, dataset, tmp_path):
     assert len(res.rows[1].per_seed) == 2
     assert "| solver (solved poses) |" in res.markdown()
     # separation guidance: every generated row, and the random poses get it as a row of their own
-    sep = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, separate=2)
+    # ... and with the relation-aware step: a row of its own after the PAG-conditioned one, on
+    # the same samples, and a random control row
+    sep = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, separate=2,
+                   fit=True)
     names = [r.name for r in sep.rows]
     assert names[2] == "random poses, separated"
-    assert all("separated 2" in n for n in names[3:]) and len(names) == 5
+    assert names[3] == "random poses, separated, relation-aware"
+    assert all("separated 2" in n for n in names[4:]) and len(names) == 7
+    assert names[5] == names[4][:-1] + ", relation-aware)"
     assert sep.rows[2].mean_std("collision_rate")[0] <= sep.rows[1].mean_std("collision_rate")[0]
+    for r in sep.rows:  # the colliding pairs, by what they are to the PAG
+        m = r.per_scene[0]
+        assert m["colliding_pairs"] == sum(m[f"pairs_{k}"] for k in
+                                           ("child_parent", "siblings", "floor", "other"))
+    assert sep.rows[5].per_scene[0]["support_rate"] >= sep.rows[4].per_scene[0]["support_rate"]
 
 
 def test_refine_keeps_the_solvers_own_poses(dataset):

@@ -39,6 +39,8 @@ scale whose volume matches the generated size. Metrics of one layout (:func:`lay
 ``contacts``, ``object_contacts``
     Part-level contacts after settling (the contact graph's edges, 1 mm), all and between two
     objects; pairs still interpenetrating by more than 1 cm are not counted as contacts.
+``pairs_child_parent``, ``pairs_siblings``, ``pairs_floor``, ``pairs_other``
+    The colliding pairs by what they are to the PAG (:func:`pair_kind`), in ``eval.json``.
 """
 
 from __future__ import annotations
@@ -60,7 +62,7 @@ from .sample import SampleOptions, generate_poses, layout_scene
 from .separate import separate_poses
 from .train import LayoutRun
 
-__all__ = ["LayoutMetrics", "EvalRow", "EvalResult", "layout_metrics", "collisions",
+__all__ = ["LayoutMetrics", "pair_kind", "EvalRow", "EvalResult", "layout_metrics", "collisions",
            "outside_room", "random_poses", "evaluate", "held_out_scenes", "write_result",
            "METRICS"]
 
@@ -99,6 +101,35 @@ class LayoutMetrics:
     displacement: float = math.nan
     contacts: float = math.nan
     object_contacts: float = math.nan
+    pairs_child_parent: float = 0.0
+    pairs_siblings: float = 0.0
+    pairs_floor: float = 0.0
+    pairs_other: float = 0.0
+
+
+def pair_kind(pag: PAG, a: str, b: str) -> str:
+    """What a colliding pair is to the PAG: ``child_parent`` (one carries the other, at any
+    depth of the support tree), ``siblings`` (one support object carries both), ``floor``
+    (both stand on, hang from or are fixed to the room) or ``other`` (one carried by an
+    object, the other by another object or the room)."""
+    def parent(x):
+        s = pag.supporter(x)
+        return None if s is None or s.parent.is_room_element else str(s.parent.object)
+
+    def chain(x):
+        out = []
+        while (x := parent(x)) is not None and x not in out:
+            out.append(x)
+        return out
+
+    if a in chain(b) or b in chain(a):
+        return "child_parent"
+    pa, pb = parent(a), parent(b)
+    if pa is not None and pa == pb:
+        return "siblings"
+    if pa is None and pb is None:
+        return "floor"
+    return "other"
 
 
 def _fcl_pieces(scene: Scene):
@@ -224,6 +255,9 @@ def layout_metrics(scene: Scene, *, physics: bool = True) -> LayoutMetrics:
                       _share(c.holds for c in scene.relations if c.holds is not None),
                       _share(c.holds for c in scene.relations
                              if c.holds is not None and c.relation in SPATIAL))
+    for a, b, _ in pairs:
+        k = f"pairs_{pair_kind(scene.pag, a, b)}"
+        setattr(m, k, getattr(m, k) + 1.0)
     if physics:
         from ..physics import extract_contacts, settle
 
