@@ -345,6 +345,17 @@ def test_time_limit_stops_with_a_checkpoint(dataset, tmp_path):
                                                      time_limit=0.05))
     assert 0 < rep.steps < 100_000
     assert torch.load(tmp_path / "t" / "checkpoint.pt", weights_only=False)["step"] == rep.steps
+    # --cpu-limit counts the process's CPU time (what it has used already included)
+    from parse3d.layoutgen.train import _process_cpu
+
+    limit = (_process_cpu() + 3.0) / 60.0
+    rep = train(dataset, tmp_path / "c", TrainConfig(steps=100_000, preset="tiny",
+                                                     relations="learned", noise_draws=2,
+                                                     cpu_limit=limit))
+    assert 0 < rep.steps < 100_000 and _process_cpu() >= 60.0 * limit
+    assert torch.load(tmp_path / "c" / "checkpoint.pt", weights_only=False)["step"] == rep.steps
+    with pytest.raises(InputError, match="--cpu-limit"):
+        TrainConfig(cpu_limit=0).check()
     with pytest.raises(InputError, match="--cond pag"):
         TrainConfig(cond="none", frame="parent").check()
 
@@ -421,11 +432,21 @@ def test_eval_rows(run_dir, dataset, tmp_path):
     assert len(res.rows[1].per_seed) == 2
     assert "| solver (solved poses) |" in res.markdown()
     # separation guidance: every generated row, and the random poses get it as a row of their own
-    sep = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, separate=2)
+    # ... and with the relation-aware step: a row of its own after the PAG-conditioned one, on
+    # the same samples, and a random control row
+    sep = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, separate=2,
+                   fit=True)
     names = [r.name for r in sep.rows]
     assert names[2] == "random poses, separated"
-    assert all("separated 2" in n for n in names[3:]) and len(names) == 5
+    assert names[3] == "random poses, separated, relation-aware"
+    assert all("separated 2" in n for n in names[4:]) and len(names) == 7
+    assert names[5] == names[4][:-1] + ", relation-aware)"
     assert sep.rows[2].mean_std("collision_rate")[0] <= sep.rows[1].mean_std("collision_rate")[0]
+    for r in sep.rows:  # the colliding pairs, by what they are to the PAG
+        m = r.per_scene[0]
+        assert m["colliding_pairs"] == sum(m[f"pairs_{k}"] for k in
+                                           ("child_parent", "siblings", "floor", "other"))
+    assert sep.rows[5].per_scene[0]["support_rate"] >= sep.rows[4].per_scene[0]["support_rate"]
 
 
 def test_refine_keeps_the_solvers_own_poses(dataset):
@@ -523,3 +544,40 @@ def test_cli_input_mistakes(run_dir, tmp_path, capsys):
     assert "no checkpoint.pt here" in capsys.readouterr().err
     assert _rc(["layout", "train", str(empty), "--out", str(tmp_path / "r"), "--cond", "x"]) == 2
     assert "--cond" in capsys.readouterr().err
+
+
+def test_relation_aware_fit_rests_children_and_parts_siblings(dataset):
+    """The relation-aware step: an ON child sunk into its parent comes to rest on the parent's
+    top, one floating off to the side comes back over it, siblings on one top end apart, and a
+    desk AGAINST a wall comes to its gap, carrying what stands on it."""
+    from parse3d.layoutgen.fit import GAP, fit_scene
+    from parse3d.measure import check_relations
+
+    ls = next(s for s in data.load_dataset(dataset) if s.pag.name.startswith("desk-wall"))
+    pag = PAG.from_dict(json.loads((ls.path / "scene.json").read_text())["pag"])
+    k = {o: i for i, o in enumerate(ls.object_ids)}
+    p = (ls.poses if ls.solved_poses is None else ls.solved_poses).copy()
+    p[[k["desk"], k["mug"], k["book"]], 1] += 0.04  # 4 cm off the wall (wall_0: y = 0)
+    p[k["mug"], 2] -= 0.015  # 1.5 cm into the desk top
+    p[k["book"], :2] = p[k["mug"], :2] + 0.02  # into the mug
+    p[k["book"], 2] += 0.03  # and floating above the top
+    wall = next(e for e in pag.relations if e.relation == "AGAINST")
+    scene = layout_scene(pag, ls.object_ids, ls.categories, p, seed=0, assets=ls.assets,
+                         scales=list(ls.scales))
+    before = {a for a, b, _ in collisions(scene, depth=1e-3)} | \
+        {b for a, b, _ in collisions(scene, depth=1e-3)}
+    assert {"mug", "book"} <= before
+    mug_xy = scene.objects["mug"].position[:2].copy()
+    rep = fit_scene(scene)
+    assert rep.contacts >= 4 and rep.pushed >= 1
+    assert collisions(scene, depth=2e-3) == []
+    top = scene.objects["desk"].world_bounds(settled=False)[1, 2]
+    for oid in ("mug", "book"):
+        low = scene.objects[oid].world_bounds(settled=False)[0, 2]
+        assert abs(low - top) <= 2e-3, (oid, low - top)
+    assert np.linalg.norm(scene.objects["mug"].position[:2] - mug_xy) < 0.3  # slid, not thrown
+    scene.relations = check_relations(scene)
+    held = {(c.relation, c.child): c.holds for c in scene.relations}
+    assert held[("ON", "mug")] and held[("ON", "book")] and held[("ON", "desk")]
+    assert held[(wall.relation, str(wall.child))]
+    assert scene.objects["desk"].world_bounds(settled=False)[0, 1] < 0.04 - GAP  # back at it

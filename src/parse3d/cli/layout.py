@@ -59,6 +59,10 @@ def register(app: typer.Typer) -> None:
         time_limit: float = typer.Option(None, "--time-limit",
                                          help="Minutes of wall time; stops (with a checkpoint) "
                                               "before --steps when reached."),
+        cpu_limit: float = typer.Option(None, "--cpu-limit",
+                                        help="Minutes of CPU time of this process (loading "
+                                             "included); stops (with a checkpoint) before "
+                                             "--steps when reached."),
         threads: int = threads_opt,
         as_json: bool = typer.Option(False, "--json", help="Print a JSON summary."),
     ) -> None:
@@ -75,7 +79,7 @@ def register(app: typer.Typer) -> None:
         cfg = TrainConfig(cond=cond, steps=steps, preset=preset, relations=relations,
                           shape=shape, noise_draws=noise_draws, cond_dropout=cond_dropout, seed=seed,
                           checkpoint_every=checkpoint_every, device=device, frame=frame,
-                          time_limit=time_limit)
+                          time_limit=time_limit, cpu_limit=cpu_limit)
         cfg.check()
         from rich.progress import (
             BarColumn,
@@ -123,6 +127,10 @@ def register(app: typer.Typer) -> None:
         separate: int = typer.Option(0, "--separate", min=0,
                                      help="Separation guidance: push interpenetrating objects "
                                           "apart during the last N denoising steps (0: off)."),
+        fit: bool = typer.Option(False, "--fit",
+                                 help="Relation-aware step: bring the PAG's contacts (ON, IN, "
+                                      "AGAINST, SECURED_TO) to their surfaces and move what "
+                                      "still collides within the freedom its relations leave."),
         refine: bool = typer.Option(False, "--refine",
                                     help="Hand the generated poses to the solver as its first "
                                          "proposals; report how many it kept."),
@@ -149,7 +157,8 @@ def register(app: typer.Typer) -> None:
         pag = load_pag(pag_file)
         scene = sample_layout(r, pag, seed=seed, file=str(pag_file),
                               options=SampleOptions(steps=sample_steps, guidance=guidance,
-                                                    cond=not uncond, separate=separate))
+                                                    cond=not uncond, separate=separate,
+                                                    fit=fit))
         gen_held = sum(1 for c in scene.relations if c.holds)
         rep = None
         if refine:
@@ -191,6 +200,9 @@ def register(app: typer.Typer) -> None:
         separate: int = typer.Option(0, "--separate", min=0,
                                      help="Separation guidance in every generated row (the "
                                           "random one too): the last N denoising steps (0: off)."),
+        fit: bool = typer.Option(False, "--fit",
+                                 help="Add each PAG-conditioned row's samples after the "
+                                      "relation-aware step, and random poses with it."),
         previews: int = typer.Option(2, "--previews", help="Scenes to render side by side."),
         device: str = typer.Option("cpu", "--device", help="cpu or cuda."),
         threads: int = threads_opt,
@@ -220,7 +232,7 @@ def register(app: typer.Typer) -> None:
             res = evaluate(loaded, files, seeds=seeds, physics=not no_physics,
                            sample_steps=sample_steps, previews=previews, out=dest,
                            progress=None if as_json else (lambda s: st.update(s)),
-                           guidance=guidance, separate=separate)
+                           guidance=guidance, separate=separate, fit=fit)
         if not res.scenes:
             raise InputError(Problem("", "no held-out scene has only categories the runs know",
                                      str(dataset or runs[0]), "vocabulary"))

@@ -39,6 +39,8 @@ scale whose volume matches the generated size. Metrics of one layout (:func:`lay
 ``contacts``, ``object_contacts``
     Part-level contacts after settling (the contact graph's edges, 1 mm), all and between two
     objects; pairs still interpenetrating by more than 1 cm are not counted as contacts.
+``pairs_child_parent``, ``pairs_siblings``, ``pairs_floor``, ``pairs_other``
+    The colliding pairs by what they are to the PAG (:func:`pair_kind`), in ``eval.json``.
 """
 
 from __future__ import annotations
@@ -60,7 +62,7 @@ from .sample import SampleOptions, generate_poses, layout_scene
 from .separate import separate_poses
 from .train import LayoutRun
 
-__all__ = ["LayoutMetrics", "EvalRow", "EvalResult", "layout_metrics", "collisions",
+__all__ = ["LayoutMetrics", "pair_kind", "EvalRow", "EvalResult", "layout_metrics", "collisions",
            "outside_room", "random_poses", "evaluate", "held_out_scenes", "write_result",
            "METRICS"]
 
@@ -99,6 +101,35 @@ class LayoutMetrics:
     displacement: float = math.nan
     contacts: float = math.nan
     object_contacts: float = math.nan
+    pairs_child_parent: float = 0.0
+    pairs_siblings: float = 0.0
+    pairs_floor: float = 0.0
+    pairs_other: float = 0.0
+
+
+def pair_kind(pag: PAG, a: str, b: str) -> str:
+    """What a colliding pair is to the PAG: ``child_parent`` (one carries the other, at any
+    depth of the support tree), ``siblings`` (one support object carries both), ``floor``
+    (both stand on, hang from or are fixed to the room) or ``other`` (one carried by an
+    object, the other by another object or the room)."""
+    def parent(x):
+        s = pag.supporter(x)
+        return None if s is None or s.parent.is_room_element else str(s.parent.object)
+
+    def chain(x):
+        out = []
+        while (x := parent(x)) is not None and x not in out:
+            out.append(x)
+        return out
+
+    if a in chain(b) or b in chain(a):
+        return "child_parent"
+    pa, pb = parent(a), parent(b)
+    if pa is not None and pa == pb:
+        return "siblings"
+    if pa is None and pb is None:
+        return "floor"
+    return "other"
 
 
 def _fcl_pieces(scene: Scene):
@@ -224,6 +255,9 @@ def layout_metrics(scene: Scene, *, physics: bool = True) -> LayoutMetrics:
                       _share(c.holds for c in scene.relations if c.holds is not None),
                       _share(c.holds for c in scene.relations
                              if c.holds is not None and c.relation in SPATIAL))
+    for a, b, _ in pairs:
+        k = f"pairs_{pair_kind(scene.pag, a, b)}"
+        setattr(m, k, getattr(m, k) + 1.0)
     if physics:
         from ..physics import extract_contacts, settle
 
@@ -295,7 +329,7 @@ def _sub_pag(ls: LayoutScene) -> PAG:
 
 
 def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given_scale: bool,
-               label: str, separate: bool = False) -> Scene:
+               label: str, separate: bool = False, fit: bool = False) -> Scene:
     if given_scale:
         scales = list(ls.scales)
     else:  # equal volume of the given asset and the generated size
@@ -303,7 +337,7 @@ def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given
                                         / np.prod(np.maximum(a.extents, 1e-4))), 0.25, 4.0))
                   for p, a in zip(poses, ls.assets, strict=True)]
     return layout_scene(pag, ls.object_ids, ls.categories, poses, seed=seed, assets=ls.assets,
-                        scales=scales, meta={"generator": label}, separate=separate)
+                        scales=scales, meta={"generator": label}, separate=separate, fit=fit)
 
 
 @dataclass
@@ -377,21 +411,29 @@ class EvalResult:
         return "\n".join(lines) + "\n"
 
 
-def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0
-              ) -> list[tuple[str, str, LayoutRun | None, bool]]:
-    rows = [("solver (solved poses)", "solver", None, False), ("random poses", "random", None, False)]
+def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0,
+              fit: bool = False) -> list[tuple[str, str, LayoutRun | None, bool, bool]]:
+    """(name, kind, run, cond, fit) per row; ``cond`` of a random row: separated."""
+    rows = [("solver (solved poses)", "solver", None, False, False),
+            ("random poses", "random", None, False, False)]
     if separate > 0:
-        rows.append(("random poses, separated", "random", None, True))
+        rows.append(("random poses, separated", "random", None, True, False))
+    if fit:
+        rows.append((f"random poses{', separated' if separate > 0 else ''}, relation-aware",
+                     "random", None, separate > 0, True))
     w = "" if guidance == 1.0 else f", guidance {guidance:g}"
     sep = "" if separate <= 0 else f", separated {separate}"
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True))
+            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True, False))
+            if fit:
+                rows.append((f"PAG-conditioned ({run.name}{w}{sep}, relation-aware)", "pag",
+                             run, True, True))
             if run.config.cond_dropout > 0:
                 rows.append((f"unconditioned ({run.name}, condition dropped{sep})", "none", run,
-                             False))
+                             False, False))
         else:
-            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False))
+            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False, False))
     return rows
 
 
@@ -414,7 +456,7 @@ def _compose(images: list[tuple[str, np.ndarray]], path: Path) -> None:
 def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
              physics: bool = True, sample_steps: int = 100, previews: int = 2,
              out: Path | None = None, progress: Callable[[str], None] | None = None,
-             guidance: float = 1.0, separate: int = 0) -> EvalResult:
+             guidance: float = 1.0, separate: int = 0, fit: bool = False) -> EvalResult:
     """Lay out every scene with every row and measure it (see the module docstring).
 
     Parameters
@@ -439,9 +481,12 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
     separate : int
         Separation guidance of every model row (the last ``separate`` denoising steps, see
         :mod:`.separate`), plus a separated random row; 0: none.
+    fit : bool
+        Adds, after every PAG-conditioned row, the same samples with the relation-aware step
+        (:mod:`.fit`), and the random poses with it as a control row.
     """
-    rows = _rows_for(runs, guidance, separate)
-    result = EvalResult([EvalRow(name, kind) for name, kind, _, _ in rows], [], seeds, physics)
+    rows = _rows_for(runs, guidance, separate, fit)
+    result = EvalResult([EvalRow(name, kind) for name, kind, *_ in rows], [], seeds, physics)
     acc: list[list[list[dict]]] = [[[] for _ in range(seeds)] for _ in rows]
     for si, f in enumerate(scene_files):
         ls = load_scene(f)
@@ -455,7 +500,8 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         pag = _sub_pag(ls)
         shots: list[tuple[str, np.ndarray]] = []
         cam = None
-        for ri, (name, kind, run, cond) in enumerate(rows):
+        generated: dict[tuple, np.ndarray] = {}  # a relation-aware row reuses its samples
+        for ri, (name, kind, run, cond, fit_row) in enumerate(rows):
             for seed in range(1 if kind == "solver" else seeds):
                 if progress is not None:
                     progress(f"{ls.scene_id}: {name}, seed {seed}")
@@ -468,15 +514,17 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                     if cond:  # the separated random row
                         poses = separate_poses(poses, ls.footprint, ls.height, rounds=separate + 3)
                     scene = _scene_for(ls, pag, poses, seed, given_scale=True, label=kind,
-                                       separate=cond)
+                                       separate=cond, fit=fit_row)
                 else:
-                    poses = generate_poses(run, ls.categories, ls.assets, ls.relations,
-                                           ls.footprint, ls.height, seed=seed,
-                                           options=SampleOptions(steps=sample_steps, cond=cond,
-                                                                 guidance=guidance,
-                                                                 separate=separate))
-                    scene = _scene_for(ls, pag, poses, seed, given_scale=False, label=name,
-                                       separate=separate > 0)
+                    key = (str(run.path), cond, seed)
+                    if key not in generated:
+                        generated[key] = generate_poses(
+                            run, ls.categories, ls.assets, ls.relations, ls.footprint,
+                            ls.height, seed=seed, options=SampleOptions(
+                                steps=sample_steps, cond=cond, guidance=guidance,
+                                separate=separate))
+                    scene = _scene_for(ls, pag, generated[key], seed, given_scale=False,
+                                       label=name, separate=separate > 0, fit=fit_row)
                 if out is not None and si < previews and seed == 0:
                     from ..render import overview_camera, render_scene
 

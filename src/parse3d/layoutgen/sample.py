@@ -56,12 +56,18 @@ class SampleOptions:
         Separation guidance (:mod:`.separate`): the last ``separate`` denoising steps push
         overlapping boxes apart, and once the assets are placed what still interpenetrates is
         moved apart on the meshes; 0 (default) samples without it.
+    fit : bool
+        The relation-aware step (:mod:`.fit`): once the assets are placed (and separated),
+        contacts the PAG names are brought to their surfaces and what still collides is moved
+        within the freedom its relations leave. It uses the PAG: part of the PAG-conditioned
+        sampler.
     """
 
     steps: int = 100
     guidance: float = 1.0
     cond: bool = True
     separate: int = 0
+    fit: bool = False
 
 
 def _pick_categories(pag: PAG, run: LayoutRun, rng: np.random.Generator,
@@ -176,12 +182,13 @@ def fit_asset(category: str, size: np.ndarray, *, fallback: Asset | None = None
 def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: np.ndarray, *,
                  seed: int, assets: list[Asset] | None = None,
                  scales: list[float] | None = None, meta: dict | None = None,
-                 separate: bool = False) -> Scene:
+                 separate: bool = False, fit: bool = False) -> Scene:
     """A Scene with the objects at the given (N, 12) poses; relations checked on them.
 
     With ``assets``/``scales`` the given assets are used as they are; otherwise each object
     gets its best-fitting pool asset (:func:`fit_asset`). ``separate``: objects still
-    interpenetrating are moved apart on their meshes first (:func:`.separate.separate_scene`).
+    interpenetrating are moved apart on their meshes first (:func:`.separate.separate_scene`);
+    ``fit``: then the poses are fitted to the PAG's contacts (:func:`.fit.fit_scene`).
     """
     scene = Scene(pag, int(seed), build_shell(pag.room), meta=dict(meta or {}))
     R = rotation_from_6d(poses[:, 6:12])
@@ -199,6 +206,10 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
         from .separate import separate_scene
 
         scene.meta["separated"] = separate_scene(scene)
+    if fit:
+        from .fit import fit_scene
+
+        scene.meta["fit"] = fit_scene(scene).to_dict()
     scene.meta["resolved"] = nearest_walls(scene)
     scene.relations = check_relations(scene)
     return scene
@@ -249,7 +260,7 @@ def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
     scene = layout_scene(pag, ids, cat_list, poses, seed=seed, meta={
         "generator": "layoutgen", "run": run.name, "run_step": run.step,
         "cond": run.config.cond if options.cond else "none", "guidance": options.guidance,
-        "sample_steps": options.steps}, separate=options.separate > 0)
+        "sample_steps": options.steps}, separate=options.separate > 0, fit=options.fit)
     scene.timings["generate"] = round(t1 - t0, 4)
     scene.timings["assets"] = round(time.perf_counter() - t1, 4)
     return scene

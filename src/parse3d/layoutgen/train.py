@@ -83,6 +83,11 @@ class TrainConfig:
     time_limit : float or None
         Minutes of wall time after which training stops (with a checkpoint) before ``steps``;
         not part of the run's settings (a resumed run may give another).
+    cpu_limit : float or None
+        Minutes of CPU time of the training process (all its threads, loading and encoding
+        included, as ``/usr/bin/time`` counts user + system) after which training stops with a
+        checkpoint before ``steps``; like ``time_limit`` not part of the run's settings, and
+        counted per process (a resumed run gets its own allowance).
     """
 
     cond: str = "pag"
@@ -100,6 +105,7 @@ class TrainConfig:
     device: str = "cpu"
     frame: str = "world"
     time_limit: float | None = None
+    cpu_limit: float | None = None
 
     def check(self) -> None:
         """InputError for an impossible setting."""
@@ -126,6 +132,8 @@ class TrainConfig:
             bad.append(("--frame", "'parent' needs the PAG's support tree: only with --cond pag"))
         if self.time_limit is not None and not self.time_limit > 0:
             bad.append(("--time-limit", f"must be positive (minutes), got {self.time_limit}"))
+        if self.cpu_limit is not None and not self.cpu_limit > 0:
+            bad.append(("--cpu-limit", f"must be positive (minutes), got {self.cpu_limit}"))
         if self.noise_draws < 1 or self.checkpoint_every < 1:
             bad.append(("--noise-draws", "noise draws and checkpoint interval must be >= 1"))
         if bad:
@@ -430,9 +438,15 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
 
     model.train()
     deadline = None if config.time_limit is None else t0 + 60.0 * config.time_limit
+    cpu_deadline = None if config.cpu_limit is None else 60.0 * config.cpu_limit
     while step < config.steps:
+        limit = None
         if deadline is not None and time.perf_counter() >= deadline:
-            say(f"time limit of {config.time_limit:g} min reached at step {step}")
+            limit = f"time limit of {config.time_limit:g} min"
+        elif cpu_deadline is not None and _process_cpu() >= cpu_deadline:
+            limit = f"CPU limit of {config.cpu_limit:g} min"
+        if limit is not None:
+            say(f"{limit} reached at step {step}")
             if step > start and step % config.checkpoint_every != 0:
                 save()
             break
@@ -455,6 +469,14 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
     if step == start and not (out / "loss.png").exists():
         save()
     return TrainReport(out, start, step, time.perf_counter() - t0, losses, val_losses)
+
+
+def _process_cpu() -> float:
+    """Seconds of CPU time (user + system, all threads) this process has used."""
+    import resource
+
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
 
 
 def _shape_encoder(config: TrainConfig, cats: list[str], scenes: list[LayoutScene], out: Path,
