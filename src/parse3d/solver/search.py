@@ -158,6 +158,8 @@ class _Search:
         #: re-placements for clearing crowded walls, apart from the budget of backjumps
         self.reserve = self.budget
         self.backjumps = 0
+        #: nesting of clearing moves (a displaced wall object clears a stretch of its own)
+        self.depth = 0
         self.order = placement_order(pag)
 
     # ------------------------------------------------------------ bookkeeping
@@ -266,22 +268,49 @@ class _Search:
         order, each drawing from ``stage_rng(seed, "object:<id>:<stage>")`` (those in
         ``small`` starting with their smallest suitable instance); ``oid``'s placement, or
         None with the scene restored exactly when one of them fails."""
+        snap, objs = dict(self.placements), dict(self.st.scene.objects)
         old = {m: self.uncommit(m) for m in moved}
         for m in moved:  # out of the scene while the conflict is re-solved
             self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
                                                     status="failed", reason="re-placing")
         new: list[str] = []
         mine = None
+        nested = False
         try:
             for m in seq:
-                p = self.try_place(m, f"object:{m}:{stage}", smallest=m in small)
+                try:
+                    p = self.try_place(m, f"object:{m}:{stage}", smallest=m in small)
+                except Fail as f:
+                    # a moved wall object that finds no room again may clear a stretch of
+                    # its own (one level deep: the bench a wardrobe displaced)
+                    if m == oid or self.depth or f.intrinsic or not _space(str(f)):
+                        raise
+                    self.depth += 1
+                    try:
+                        got = self.clear(m)
+                    finally:
+                        self.depth -= 1
+                    if got is None:
+                        raise
+                    nested = True
+                    new.append(m)
+                    continue
                 self.commit(p)
                 new.append(m)
                 if m == oid:
                     mine = p
-            self.recheck(set(moved))
+            self.recheck({m for m, p in self.placements.items() if p is not snap.get(m)})
             return mine
         except Fail:
+            if nested:  # back to the snapshot, what the nested move shifted too
+                for m in [m for m, p in self.placements.items() if p is not snap.get(m)]:
+                    self.uncommit(m)
+                for m, p in snap.items():
+                    if m not in self.placements:
+                        self.commit(p)
+                self.st.scene.objects.clear()
+                self.st.scene.objects.update(objs)
+                return None
             for m in new:
                 self.uncommit(m)
             for m in moved:
