@@ -375,3 +375,24 @@ def test_a_corpus_dining_set_completes_and_its_checks_are_fresh():
     assert scene.ok, [(o.id, o.reason) for o in scene.failed]
     fresh = {c.index: c.holds for c in check_relations(scene)}
     assert all(c.holds == fresh[c.index] for c in scene.relations)
+
+
+def test_a_wall_object_displaced_by_a_clearing_clears_a_stretch_of_its_own():
+    """A small laundry of the robustness corpus (laundry-basement-09, corpus seed 0, scaled
+    below x0.9): clearing a stretch of wall for the ironing board displaces a wall object
+    that then finds no room; it clears a stretch of its own (one level deep), and every
+    object is placed."""
+    import json
+    from pathlib import Path
+
+    from parse3d.measure.checks import check_relations
+
+    case = json.loads((Path(__file__).parent / "data" / "corpus"
+                       / "laundry-basement-09-k0.json").read_text())
+    scene = solve(PAG.from_dict(case["pag"]), seed=case["seed"])
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    fresh = {c.index: c.holds for c in check_relations(scene)}
+    assert all(c.holds == fresh[c.index] for c in scene.relations)
+    greedy = solve(PAG.from_dict(case["pag"]), seed=case["seed"],
+                   config=SolverConfig(search="greedy"))
+    assert not greedy.ok

@@ -224,3 +224,20 @@ def test_a_roller_is_told_by_its_narrowest_width():
     F = np.array([[0, 0], [0.5, 0], [0.5, 0.06], [0, 0.06]]) @ axis_angle([0, 0, 1], np.deg2rad(24))[:2, :2].T
     assert _widths(F)[0] == pytest.approx(0.06, abs=2e-3)
     assert _roller(F, 0.05) and not _roller(F, 0.2)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2, 3])
+def test_a_twin_bell_alarm_clock_stands_on_its_feet(seed):
+    """Its two feet splay onto pads as deep as the body: the centre of mass lies well inside
+    what it stands on (on two point feet in one line it tipped over in every settling)."""
+    import shapely
+
+    from parse3d.assets import registry
+
+    asset = registry.generate("alarm_clock", seed, "twin_bell")
+    V = np.vstack([p.mesh.vertices for p in asset.parts])
+    base = V[V[:, 2] <= V[:, 2].min() + 3e-3][:, :2]
+    hull = shapely.MultiPoint([tuple(p) for p in base]).convex_hull
+    com = asset_geometry(asset).com
+    assert hull.contains(shapely.Point(com[0], com[1]))
+    assert hull.exterior.distance(shapely.Point(com[0], com[1])) > 0.015

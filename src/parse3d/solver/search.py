@@ -158,6 +158,11 @@ class _Search:
         #: re-placements for clearing crowded walls, apart from the budget of backjumps
         self.reserve = self.budget
         self.backjumps = 0
+        #: nesting of clearing moves (a displaced wall object clears a stretch of its own):
+        #: allowed in the last move only, and how deep the search is in it
+        self.nest = False
+        self.depth = 0
+        self.nest_reserve = self.budget
         self.order = placement_order(pag)
 
     # ------------------------------------------------------------ bookkeeping
@@ -266,22 +271,50 @@ class _Search:
         order, each drawing from ``stage_rng(seed, "object:<id>:<stage>")`` (those in
         ``small`` starting with their smallest suitable instance); ``oid``'s placement, or
         None with the scene restored exactly when one of them fails."""
+        snap, objs = dict(self.placements), dict(self.st.scene.objects)
         old = {m: self.uncommit(m) for m in moved}
         for m in moved:  # out of the scene while the conflict is re-solved
             self.st.scene.objects[m] = PlacedObject(m, old[m].obj.category, None,
                                                     status="failed", reason="re-placing")
         new: list[str] = []
         mine = None
+        nested = False
         try:
             for m in seq:
-                p = self.try_place(m, f"object:{m}:{stage}", smallest=m in small)
+                try:
+                    p = self.try_place(m, f"object:{m}:{stage}", smallest=m in small)
+                except Fail as f:
+                    # a moved wall object that finds no room again may clear a stretch of
+                    # its own (one level deep: the bench a wardrobe displaced)
+                    if m == oid or not self.nest or self.depth or f.intrinsic \
+                            or not _space(str(f)):
+                        raise
+                    self.depth += 1
+                    try:
+                        got = self.clear(m)
+                    finally:
+                        self.depth -= 1
+                    if got is None:
+                        raise
+                    nested = True
+                    new.append(m)
+                    continue
                 self.commit(p)
                 new.append(m)
                 if m == oid:
                     mine = p
-            self.recheck(set(moved))
+            self.recheck({m for m, p in self.placements.items() if p is not snap.get(m)})
             return mine
         except Fail:
+            if nested:  # back to the snapshot, what the nested move shifted too
+                for m in [m for m, p in self.placements.items() if p is not snap.get(m)]:
+                    self.uncommit(m)
+                for m, p in snap.items():
+                    if m not in self.placements:
+                        self.commit(p)
+                self.st.scene.objects.clear()
+                self.st.scene.objects.update(objs)
+                return None
             for m in new:
                 self.uncommit(m)
             for m in moved:
@@ -375,6 +408,14 @@ class _Search:
         got = self.regroup(oid)
         if got is None and _space(reason):
             got = self.resupport(oid)
+        if got is None:
+            # last, clearing again where the objects it displaces may clear for themselves
+            # (from a reserve of its own, so that what the moves above spent does not bar it)
+            self.nest, self.reserve, kept = True, self.nest_reserve, self.reserve
+            try:
+                got = self.clear(oid, "nest")
+            finally:
+                self.nest, self.nest_reserve, self.reserve = False, self.reserve, kept
         return got
 
     def resupport(self, oid: str) -> Placement | None:
@@ -494,7 +535,7 @@ class _Search:
             found += windows(wall, wall_length(s)[1], taken, width + CLEAR_PAD, cost)
         return sorted(found, key=lambda w: (w.cost, len(w.blockers), w.wall, w.a0))
 
-    def clear(self, oid: str) -> Placement | None:
+    def clear(self, oid: str, tag: str = "clear") -> Placement | None:
         """Make room on a crowded wall: take out everything standing in the cheapest stretch
         of wall where ``oid`` would fit (:meth:`wall_windows`, with what depends on them),
         place ``oid`` first (it takes that stretch), then the others anywhere they go; up to
@@ -507,7 +548,7 @@ class _Search:
                 continue
             self.reserve -= len(moved)
             self.backjumps += 1
-            got = self.relocate(oid, moved, [oid, *moved], f"clear{k}")
+            got = self.relocate(oid, moved, [oid, *moved], f"{tag}{k}")
             if got is not None:
                 return got
         return None

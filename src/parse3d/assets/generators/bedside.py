@@ -40,7 +40,13 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, s in enumerate((-1, 1)):
             parts.append(make_part(f"bell_{i}", "bell", S.ellipsoid((r * 0.45, r * 0.3, r * 0.35),
                                                                     center=(s * r * 0.6, 0, zc + r * 0.95)), shell))
-            parts.append(make_part(f"foot_{i}", "foot", S.tube([(s * r * 0.5, 0, zc - r * 0.8), (s * r * 0.8, 0, 0.004)], 0.004), shell))
+            # a leg splayed sideways onto a pad as deep as the body: on two point feet in one
+            # line the clock tips over
+            x0, x1, e = s * r * 0.5, s * r * 0.8, r * 0.45
+            parts.append(make_part(f"foot_{i}", "foot", S.hull(
+                [(x0 + dx, dy, zc - r * 0.8) for dx in (-0.004, 0.004) for dy in (-0.004, 0.004)]
+                + [(x1 + dx, dy, z) for dx in (-0.005, 0.005) for dy in (-e, e) for z in (0.0, 0.004)]),
+                shell))
     parts.append(make_part("face", "face", S.cylinder(r * 0.9, 0.003, center=(0, yf + 0.001, zc), axis=(0, 1, 0), sections=28),
                            M.solid((0.96, 0.95, 0.9), "paper", 0.5)))
     for k, (L, a) in enumerate([(r * 0.5, rng.uniform(0, 2 * np.pi)), (r * 0.75, rng.uniform(0, 2 * np.pi))]):
