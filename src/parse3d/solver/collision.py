@@ -47,7 +47,7 @@ class Body:
     """A collision body: a mesh's BVH (made by ``make`` on first need, see :attr:`geom`), its
     box in its own frame (``local``, (2, 3)) and its pose (set by :meth:`move`)."""
 
-    __slots__ = ("_make", "_geom", "_obj", "_R", "_t", "local")
+    __slots__ = ("_make", "_geom", "_obj", "_R", "_t", "local", "_mid", "_half")
 
     def __init__(self, make: Callable[[], fcl.BVHModel], local: np.ndarray,
                  geom: fcl.BVHModel | None = None):
@@ -57,6 +57,8 @@ class Body:
         self._R = np.eye(3)
         self._t = np.zeros(3)
         self.local = np.asarray(local, float)
+        self._mid = (self.local[0] + self.local[1]) / 2
+        self._half = (self.local[1] - self.local[0]) / 2
 
     @classmethod
     def from_mesh(cls, mesh: MeshArrays | trimesh.Trimesh) -> Body:
@@ -84,9 +86,8 @@ class Body:
 
     def world_box(self) -> np.ndarray:
         """(6,) lower and upper corner of a world box holding the body at its pose."""
-        lo, hi = self.local
-        c = self._R @ ((lo + hi) / 2) + self._t
-        e = np.abs(self._R) @ ((hi - lo) / 2) + BOX_PAD
+        c = self._R @ self._mid + self._t
+        e = np.abs(self._R) @ self._half + BOX_PAD
         return np.concatenate([c - e, c + e])
 
 
@@ -116,9 +117,8 @@ def cached_body(asset: Asset, scale: float, mesh_fn) -> Body:
             g = _BVH_CACHE[k] = bvh_from_mesh(mesh_fn())
         return g
 
-    s = float(scale)
-    lo, hi = _local_box(asset) * s
-    return Body(make, np.array([np.minimum(lo, hi), np.maximum(lo, hi)]), _BVH_CACHE.get(k))
+    box = _local_box(asset) * float(scale)
+    return Body(make, box if scale >= 0 else box[::-1], _BVH_CACHE.get(k))
 
 
 _STATIC_BVH: dict[bytes, fcl.BVHModel] = {}
