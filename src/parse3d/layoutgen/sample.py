@@ -57,9 +57,9 @@ class SampleOptions:
         overlapping boxes apart, and once the assets are placed what still interpenetrates is
         moved apart on the meshes; 0 (default) samples without it.
     fit : bool
-        The relation-aware step (:mod:`.fit`): once the assets are placed (and separated),
-        contacts the PAG names are brought to their surfaces and what still collides is moved
-        within the freedom its relations leave. It uses the PAG: part of the PAG-conditioned
+        The relation-aware step (:mod:`.fit`): once the assets are placed, contacts the PAG
+        names are brought to their surfaces and what still collides is moved within the
+        freedom its relations leave (before the separation on the meshes, with ``separate``). It uses the PAG: part of the PAG-conditioned
         sampler.
     """
 
@@ -186,9 +186,9 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
     """A Scene with the objects at the given (N, 12) poses; relations checked on them.
 
     With ``assets``/``scales`` the given assets are used as they are; otherwise each object
-    gets its best-fitting pool asset (:func:`fit_asset`). ``separate``: objects still
-    interpenetrating are moved apart on their meshes first (:func:`.separate.separate_scene`);
-    ``fit``: then the poses are fitted to the PAG's contacts (:func:`.fit.fit_scene`).
+    gets its best-fitting pool asset (:func:`fit_asset`). ``fit``: the poses are fitted to the
+    PAG's contacts (:func:`.fit.fit_scene`); ``separate``: then objects still interpenetrating
+    are moved apart on their meshes (:func:`.separate.separate_scene`).
     """
     scene = Scene(pag, int(seed), build_shell(pag.room), meta=dict(meta or {}))
     R = rotation_from_6d(poses[:, 6:12])
@@ -202,14 +202,14 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
             oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
             support=None if sup is None else str(sup.parent),
             fixed=sup is not None and sup.relation in _FIXED)
-    if separate:
-        from .separate import separate_scene
-
-        scene.meta["separated"] = separate_scene(scene)
-    if fit:
+    if fit:  # contacts first: what the PAG can place exactly it places
         from .fit import fit_scene
 
         scene.meta["fit"] = fit_scene(scene).to_dict()
+    if separate:  # then the same generic separation as every row, on what still collides
+        from .separate import separate_scene
+
+        scene.meta["separated"] = separate_scene(scene)
     scene.meta["resolved"] = nearest_walls(scene)
     scene.relations = check_relations(scene)
     return scene
