@@ -29,6 +29,7 @@ from .regions import (
     height_band,
     obstacles,
     parent_frame,
+    steps_on,
 )
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, plane_key, support_chain
@@ -879,7 +880,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if not region0.contains(Polygon(RG.convex_footprint(Fw))):
                 last = f"footprint leaves {sup.name}"
                 continue
-        if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid):
+        if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid,
+                                            upright=rel == "ON"):
             last = "a foot or the base would hang off the support (centre of mass outside " \
                    "what rests on it)"
             continue
@@ -971,7 +973,7 @@ def _step_height(st: SolveState, sup: Support, step: float) -> float:
     out = 0.0
     for _, pts in st.world_pieces(sup.owner):
         h = float(np.max((pts - sup.surface.origin) @ n))
-        if 1e-3 < h <= step:
+        if 1e-3 < h <= step and steps_on(sup, plane_coords(sup.surface, pts)):
             out = max(out, h)
     return out
 
@@ -986,7 +988,8 @@ def _step_under(st: SolveState, sup: Support, pts: np.ndarray, step: float) -> f
     need = float(h.min())
     for _, q in st.world_pieces(sup.owner):
         hq = (q - sup.surface.origin) @ n
-        if not (1e-3 < float(hq.max()) <= step and float(hq.min()) > -step):
+        if not (1e-3 < float(hq.max()) <= step and float(hq.min()) > -step) \
+                or not steps_on(sup, plane_coords(sup.surface, q)):
             continue
         if foot.intersects(Polygon(RG.convex_footprint(plane_coords(sup.surface, q)))):
             need = max(need, float(hq.max()) + EPS)
@@ -1051,7 +1054,7 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
 
 
 def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
-                    solid) -> bool:
+                    solid, upright: bool = False) -> bool:
     """Whether a child hanging over the edge of a small support still stands: the parts of its
     base (those reaching within 3 mm of its lowest point; the feet of a TV, a pot's bottom),
     each as its convex footprint intersected with the ``solid`` support polygon (plane
@@ -1061,7 +1064,11 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     between them. What rests on one bar (narrower than ``BAR_WIDTH``) must lie along it, its
     base on the bar for at least half the child's length: a bottle across one bar, its neck
     over the gap, tips in settling. On a bar narrower than twice the margin the centre of
-    mass need only be over it."""
+    mass need only be over it.
+
+    ``upright`` (``ON``): what stands on its base over a small support keeps its centre of
+    mass inside the held part by at least 15 % of its base's narrow width (a cup is not
+    balanced on a tray's 1 cm rim, its base over the tray's floor); no narrow-bar exception."""
     n = s.normal
     low = np.inf
     pieces = []
@@ -1090,9 +1097,16 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
         whole = shapely.MultiPoint(plane_coords(s, np.vstack([w for w, _ in pieces]))).convex_hull
         if _sides(hull)[1] < 0.5 * _sides(whole)[1]:
             return False
-    inner = hull.buffer(-5e-3)
-    if inner.is_empty:  # a support narrower than the margin: the centre of mass over it
-        inner = hull.buffer(1e-6)
+    margin = 5e-3
+    if upright:
+        base = shapely.MultiPoint(plane_coords(s, np.vstack(
+            [w[h <= low + 3e-3] for w, h in pieces]))).convex_hull
+        margin = max(margin, 0.15 * _sides(base)[0])
+    inner = hull.buffer(-margin)
+    if inner.is_empty:
+        if upright:
+            return False
+        inner = hull.buffer(1e-6)  # a support narrower than the margin: the centre of mass over it
     return inner.contains(shapely.Point(com))
 
 

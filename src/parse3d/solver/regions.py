@@ -408,12 +408,22 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
     for oid in (exclude if parts else ()):
         for piece in st.memo(oid, key, lambda oid=oid: _piece_heights(st, oid, sup)):
             lo_h, hi_h, pts, fp = piece
-            if hi_h <= max(1e-3, step) or lo_h >= height - 1e-3:
+            if hi_h <= 1e-3 or lo_h >= height - 1e-3:
                 continue
             if fp is None:  # footprints are made when first needed, then kept
                 fp = piece[3] = RG.convex_footprint(plane_coords(sup.surface, pts))
+            if hi_h <= step and steps_on(sup, fp):
+                continue
             out.append(fp)
     return out
+
+
+def steps_on(sup: Support, fp: np.ndarray) -> bool:
+    """Whether a low piece of the support's owner with footprint ``fp`` (plane coordinates)
+    is stood on: its middle is over the support (a burner on a cooktop); a low piece at or
+    beyond the support's edge (a tray's rim around its floor, a shelf's lip) bounds it."""
+    c = fp.mean(axis=0)
+    return bool(sup.region.covers(shapely.Point(float(c[0]), float(c[1]))))
 
 
 def _piece_heights(st: SolveState, oid: str, sup: Support) -> list[list]:
