@@ -7,8 +7,9 @@ vertex buffer (rendering) and its FCL BVH per scale (solver). Each cache is boun
 but by counts sized for one interactive session, not for a worker that meets a few dozen new
 assets in every scene: together they grew by about 50 MB per scene.
 
-:func:`bound_caches` trims them all, oldest entries first, to a common number of assets after
-every scene. Caches only save work: what a scene comes out as never depends on them, so
+:func:`bound_caches` trims them all, oldest entries first, after every scene: the small
+entries to :data:`LIGHT_CACHE_FACTOR` times a common number of assets, FCL BVHs and vertex
+buffers to that number and two thirds of it. Caches only save work: what a scene comes out as never depends on them, so
 trimming changes no output.
 """
 
