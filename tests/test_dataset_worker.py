@@ -11,7 +11,7 @@ import pytest
 import trimesh
 
 from parse3d.datagen.build import BuildConfig, build_scene, resolve_pag_paths
-from parse3d.datagen.memory import _trim, bound_caches, cache_sizes
+from parse3d.datagen.memory import LIGHT_CACHE_FACTOR, _trim, bound_caches, cache_sizes
 from parse3d.render import Renderer
 
 PAG = {"format": "pag/1", "name": "tiny-study",
@@ -62,7 +62,9 @@ def test_a_scene_built_on_emptied_caches_is_the_same(tmp_path, renderer):
 
     assert bound_caches(renderer, assets=2) > 0
     sizes = cache_sizes(renderer)
-    assert sizes["assets"] <= 2 and sizes["render meshes"] <= 2 and sizes["collision"] <= 2
+    light = 2 * LIGHT_CACHE_FACTOR  # the small entries keep more assets
+    assert sizes["assets"] <= light and sizes["collision"] <= light
+    assert sizes["render meshes"] <= 2
     assert sizes["bvh"] <= 2 and renderer.cache_size <= 2
     bound_caches(renderer, assets=0)
     assert set(cache_sizes(renderer).values()) == {0}

@@ -7,8 +7,9 @@ vertex buffer (rendering) and its FCL BVH per scale (solver). Each cache is boun
 but by counts sized for one interactive session, not for a worker that meets a few dozen new
 assets in every scene: together they grew by about 50 MB per scene.
 
-:func:`bound_caches` trims them all, oldest entries first, to a common number of assets after
-every scene. Caches only save work: what a scene comes out as never depends on them, so
+:func:`bound_caches` trims them all, oldest entries first, after every scene: the small
+entries to :data:`LIGHT_CACHE_FACTOR` times a common number of assets, FCL BVHs and vertex
+buffers to that number and two thirds of it. Caches only save work: what a scene comes out as never depends on them, so
 trimming changes no output.
 """
 
@@ -19,7 +20,7 @@ import itertools
 from collections import OrderedDict
 from typing import Any
 
-__all__ = ["DEFAULT_CACHED_ASSETS", "BVH_PER_ASSET", "bound_caches", "cache_sizes", "freeze_startup", "peak_rss_mb",
+__all__ = ["DEFAULT_CACHED_ASSETS", "BVH_PER_ASSET", "LIGHT_CACHE_FACTOR", "bound_caches", "cache_sizes", "freeze_startup", "peak_rss_mb",
            "rss_mb"]
 
 #: Assets whose derived data a worker keeps between scenes. Each costs about 0.6 MB over all
@@ -29,6 +30,12 @@ __all__ = ["DEFAULT_CACHED_ASSETS", "BVH_PER_ASSET", "bound_caches", "cache_size
 #: 384 assets RSS levelled at about 670 MB, with 768 at about 950 MB (peak 1.2 GB), and CPU
 #: per scene was the same; 512 keeps a margin below 1.5 GB over hundreds of scenes.
 DEFAULT_CACHED_ASSETS = 512
+
+#: The caches of small entries (the assets themselves, collision pieces, hulls, ray casters)
+#: keep this many times ``assets``: together about 0.3 MB per asset, and a miss in all of
+#: them costs about 2 ms. FCL BVHs (0.3 MB each) and vertex buffers (0.25 MB) keep to
+#: ``assets`` and two thirds of it.
+LIGHT_CACHE_FACTOR = 2.0
 
 #: FCL BVHs are built per (asset, scale), about 0.3 MB each: objects whose node draws no
 #: scale get the same scale in every scene, so they are reused across scenes too.
@@ -60,11 +67,12 @@ def _caches(renderer) -> list[tuple[str, dict, float, Any]]:
     from ..physics import collision
     from ..solver import collision as solver_collision
 
-    out = [("assets", default_pool()._lru, 1.0, None),
-           ("collision", collision._CACHE, 1.0, None),
-           ("geometry", geometry._GEOM, 4.0, None),
-           ("ray casters", geometry._CASTERS, 1.0, None),
-           ("export hulls", walk._HULLS, 8.0, None),
+    k = LIGHT_CACHE_FACTOR
+    out = [("assets", default_pool()._lru, k, None),
+           ("collision", collision._CACHE, k, None),
+           ("geometry", geometry._GEOM, 4.0 * k, None),
+           ("ray casters", geometry._CASTERS, k, None),
+           ("export hulls", walk._HULLS, 8.0 * k, None),
            ("bvh", solver_collision._BVH_CACHE, BVH_PER_ASSET, None)]
     if renderer is not None:  # vertex buffers are the largest entries: the newest two thirds
         out.append(("render meshes", renderer._meshes, 2.0 / 3.0, lambda v: v[1].release()))
