@@ -71,9 +71,8 @@ def snapshot_key(templates: Path, motifs: Path, root: Path) -> str:
     str
         Hex digest (see the module's description).
     """
-    import parse3d
-
-    h = hashlib.sha256(f"{SNAPSHOT_FORMAT}\n{parse3d.__version__}\n".encode())
+    package = Path(__file__).resolve().parents[1]  # its __init__ (the version) is among the sources
+    h = hashlib.sha256(f"{SNAPSHOT_FORMAT}\n".encode())
     for folder, pattern in ((templates, "*/*.yaml"), (motifs, "*.yaml")):
         h.update(f"{folder}\n".encode())
         for p in sorted(folder.glob(pattern)):
@@ -83,7 +82,7 @@ def snapshot_key(templates: Path, motifs: Path, root: Path) -> str:
                 data = b"-"
             h.update(f"{p.relative_to(folder)}:{len(data)}\n".encode())
             h.update(hashlib.sha256(data).digest())
-    for base in parse3d.__path__:
+    for base in (package,):
         for d, dirs, files in sorted(os.walk(base)):
             dirs[:] = sorted(x for x in dirs if x != "__pycache__")
             for f in sorted(files):
