@@ -1066,9 +1066,9 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
     over the gap, tips in settling. On a bar narrower than twice the margin the centre of
     mass need only be over it.
 
-    ``upright`` (``ON``): what stands on its base over a small support keeps its centre of
-    mass inside the held part by at least 15 % of its base's narrow width (a cup is not
-    balanced on a tray's 1 cm rim, its base over the tray's floor); no narrow-bar exception."""
+    ``upright`` (``ON``): what stands on its base over a small support needs the held part at
+    least 30 % as wide as its base is narrow (a cup is not balanced on a tray's 1 cm rim, its
+    base over the tray's floor; a kettle on a smaller burner is); no narrow-bar exception."""
     n = s.normal
     low = np.inf
     pieces = []
@@ -1097,12 +1097,12 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
         whole = shapely.MultiPoint(plane_coords(s, np.vstack([w for w, _ in pieces]))).convex_hull
         if _sides(hull)[1] < 0.5 * _sides(whole)[1]:
             return False
-    margin = 5e-3
     if upright:
         base = shapely.MultiPoint(plane_coords(s, np.vstack(
             [w[h <= low + 3e-3] for w, h in pieces]))).convex_hull
-        margin = max(margin, 0.15 * _sides(base)[0])
-    inner = hull.buffer(-margin)
+        if _sides(hull)[0] < 0.3 * _sides(base)[0]:
+            return False
+    inner = hull.buffer(-5e-3)
     if inner.is_empty:
         if upright:
             return False
