@@ -632,6 +632,26 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
     return scene
 
 
+def _resolve_any_wall(scene: Scene, resolved: dict[str, dict]) -> None:
+    """Record which wall a relation to ``wall`` (any wall) was met on: the first wall on which
+    it holds for the solved pose. Without it a re-check (after settling) takes the wall nearest
+    the child, which in a corner can be the other one (a lamp AGAINST a wall 10 cm off it,
+    5 cm from the side wall)."""
+    walls = [n for n in scene.room.elements if n.startswith("wall_")]
+    for i, e in enumerate(scene.pag.relations):
+        if e.parent.object != "wall" or str(i) in resolved:
+            continue
+        o = scene.objects.get(e.child.object)
+        if o is None or not o.placed:
+            continue
+        for n in walls:
+            r = {"parent_part": None, "parent_element": n, "parent_surface": None,
+                 "internal": False}
+            if check_edge(scene, e, o, resolved=r, settled=False)[0]:
+                resolved[str(i)] = r
+                break
+
+
 def _finish(scene: Scene, srch: _Search) -> None:
     """Relation checks (reusing those measured when each pose was accepted), resolutions and
     unmet relations."""
@@ -645,6 +665,7 @@ def _finish(scene: Scene, srch: _Search) -> None:
                 known[srch.edge_index[id(e)]] = r
         resolved[str(srch.edge_index[id(edges[0])])] = resolution(
             edges[0], p.obj.support_choice, final=True)
+    _resolve_any_wall(scene, resolved)
     scene.meta["resolved"] = resolved
     t1 = time.perf_counter()
     scene.relations = check_relations(scene, known=known)
