@@ -130,3 +130,21 @@ def test_free_runs_and_windows_partition_the_wall(spans, width):
         assert w.a0 >= 0.0 and w.a1 <= length + 1e-9 and w.a1 - w.a0 == pytest.approx(width)
         assert set(w.blockers) == {o.id for o in taken
                                    if o.a1 > w.a0 + 1e-3 and o.a0 < w.a1 - 1e-3}
+
+
+def test_any_wall_relation_is_rechecked_on_the_wall_it_was_met_on():
+    # a lamp AGAINST "wall" 10 cm off it, in a corner 5 cm from the side wall: the re-check
+    # after settling took the nearer side wall (90 degrees off) although physics moved nothing
+    from pathlib import Path
+
+    from parse3d.pag import load_pag
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    pag = load_pag(Path(__file__).parent / "data" / "rooms" / "crowded_walls.json")
+    scene = run_pipeline(pag, seed=5, out=None, options=PipelineOptions(settle=True, preview=False))
+    walls = [i for i, e in enumerate(pag.relations) if e.parent.object == "wall"]
+    assert walls
+    for i in walls:
+        assert scene.meta["resolved"][str(i)]["parent_element"].startswith("wall_")
+        c = next(c for c in scene.relations if c.index == i)
+        assert c.holds and c.holds_settled, (pag.relations[i], c)
