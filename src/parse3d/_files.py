@@ -242,3 +242,36 @@ class FolderLock:
 
     def __exit__(self, *exc) -> None:
         self.release()
+
+
+def hash_stat(h, path: str | Path) -> None:
+    """Feed ``path``'s modification time and size (or its absence) into the hash ``h``: the key
+    of a cache that must be rebuilt when a file changes."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        h.update(f"{path}:-\n".encode())
+        return
+    h.update(f"{path}:{st.st_mtime_ns}:{st.st_size}\n".encode())
+
+
+def hash_tree_stats(h, base: str | Path, skip: tuple[str, ...] = ()) -> None:
+    """:func:`hash_stat` of every ``.py`` and ``.json`` file under ``base`` in a fixed order,
+    leaving out folders named in ``skip``."""
+    for d, dirs, files in sorted(os.walk(base)):
+        dirs[:] = sorted(x for x in dirs if x not in skip)
+        for f in sorted(files):
+            if f.endswith((".py", ".json")):
+                hash_stat(h, os.path.join(d, f))
+
+
+def hash_library_stats(h, root: Path) -> None:
+    """:func:`hash_stat` of the user asset library under ``root`` (its folders and their
+    ``category.json`` files)."""
+    lib = root / "library"
+    hash_stat(h, lib)
+    if lib.is_dir():
+        for sub in sorted(lib.iterdir()):
+            if sub.is_dir():
+                hash_stat(h, sub)
+                hash_stat(h, sub / "category.json")

@@ -21,6 +21,8 @@ import os
 import warnings
 from pathlib import Path
 
+from .._files import hash_library_stats, hash_tree_stats
+
 __all__ = ["SnapshotVocabulary", "cli_vocabulary", "snapshot_key"]
 
 #: The catalog (:func:`parse3d.assets.registry.catalog`) of the snapshot read last, for
@@ -64,15 +66,6 @@ def _cache_root() -> Path | None:
     return Path(env).expanduser()
 
 
-def _stat_line(h, path: Path | str) -> None:
-    try:
-        st = os.stat(path)
-    except OSError:
-        h.update(f"{path}:-\n".encode())
-        return
-    h.update(f"{path}:{st.st_mtime_ns}:{st.st_size}\n".encode())
-
-
 def snapshot_key(root: Path) -> str:
     """A digest of everything the vocabulary depends on.
 
@@ -92,18 +85,8 @@ def snapshot_key(root: Path) -> str:
     h = hashlib.sha256(f"{SNAPSHOT_FORMAT}\n{parse3d.__version__}\n".encode())
     spec = importlib.util.find_spec("parse3d.assets")
     for base in (spec.submodule_search_locations or []) if spec else []:
-        for d, dirs, files in sorted(os.walk(base)):
-            dirs.sort()
-            for f in sorted(files):
-                if f.endswith((".py", ".json")):
-                    _stat_line(h, os.path.join(d, f))
-    lib = root / "library"
-    _stat_line(h, lib)
-    if lib.is_dir():
-        for sub in sorted(lib.iterdir()):
-            if sub.is_dir():
-                _stat_line(h, sub)
-                _stat_line(h, sub / "category.json")
+        hash_tree_stats(h, base)
+    hash_library_stats(h, root)
     return h.hexdigest()
 
 

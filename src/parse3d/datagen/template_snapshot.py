@@ -27,6 +27,7 @@ import os
 from pathlib import Path
 from typing import Any
 
+from .._files import hash_library_stats, hash_tree_stats
 from .template_model import Motif, Template
 
 __all__ = ["SNAPSHOT_FORMAT", "SNAPSHOT_NAME", "snapshot_key", "read_snapshot", "write_snapshot"]
@@ -44,15 +45,6 @@ def cache_root() -> Path | None:
         return cache_dir()
     except InputError:
         return None
-
-
-def _stat_line(h, path: str | Path) -> None:
-    try:
-        st = os.stat(path)
-    except OSError:
-        h.update(f"{path}:-\n".encode())
-        return
-    h.update(f"{path}:{st.st_mtime_ns}:{st.st_size}\n".encode())
 
 
 def snapshot_key(templates: Path, motifs: Path, root: Path) -> str:
@@ -82,19 +74,8 @@ def snapshot_key(templates: Path, motifs: Path, root: Path) -> str:
                 data = b"-"
             h.update(f"{p.relative_to(folder)}:{len(data)}\n".encode())
             h.update(hashlib.sha256(data).digest())
-    for base in (package,):
-        for d, dirs, files in sorted(os.walk(base)):
-            dirs[:] = sorted(x for x in dirs if x != "__pycache__")
-            for f in sorted(files):
-                if f.endswith((".py", ".json")):
-                    _stat_line(h, os.path.join(d, f))
-    lib = root / "library"
-    _stat_line(h, lib)
-    if lib.is_dir():
-        for sub in sorted(lib.iterdir()):
-            if sub.is_dir():
-                _stat_line(h, sub)
-                _stat_line(h, sub / "category.json")
+    hash_tree_stats(h, package, skip=("__pycache__",))
+    hash_library_stats(h, root)
     return h.hexdigest()
 
 
