@@ -125,6 +125,27 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             fit = HEADROOM_FIT * headroom / max(_extent(asset, axis), 1e-6)
             if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
                 scale = min(scale, fit)
+        reach = _span_need(st, support_edge)
+        if reach > 0 and keep is None and scale * _across(asset, axis) < reach:
+            # too short to rest across the parts it must span (a keyboard on a stand's two
+            # arms): the widest untried instance, then as large as the node's scale allows
+            alt = _alternative(library, node.candidates, reqs, tried, rng,
+                               key=lambda a: -_across(a, axis))
+            if alt is not None and _across(alt[1], axis) > _across(asset, axis):
+                category, asset = alt
+                tried.add(asset.asset_id)
+            lo, hi = asset.size_range
+            size = asset_geometry(asset).size
+            top = (node.scale[1] if node.scale is not None else 1.0) * float(
+                np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+            scale = max(scale, min(top, reach / max(_across(asset, axis), 1e-6)))
+            if scale * _across(asset, axis) < reach - 1e-6:
+                # a reason about room: the search may re-place the support as another instance
+                ref = support_edge.parent
+                reasons.append(f"a {scale * _across(asset, axis):.2f} m {category} does not fit "
+                               f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
+                intrinsic.append(False)
+                continue
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale, support_edge,
                                                        others, rng, cfg,
@@ -156,6 +177,48 @@ _AXES = {"top": 2, "bottom": 2, "front": 1, "back": 1, "right": 0, "left": 0}
 def _extent(asset: Asset, axis: int) -> float:
     """The asset's extent (m, unit scale) along one of its own axes."""
     return float(hull_extents(asset)[0][axis])
+
+
+def _across(asset: Asset, axis: int) -> float:
+    """The asset's longest extent (m, unit scale) across ``axis`` (its support normal)."""
+    ext = hull_extents(asset)[0]
+    return float(max(ext[k] for k in range(3) if k != axis))
+
+
+#: A part narrower than this (m) is too narrow to stand things on alone (a stand's arm).
+SPAN_PART = 0.06
+
+#: How far (m) beyond the middles of the two outer parts a spanning child must reach.
+SPAN_BEARING = 0.03
+
+
+def _span_need(st: SolveState, edge: Edge) -> float:
+    """The least length (m) an ``ON`` child needs to rest across the parts a spanning support
+    joins (the two arms of a keyboard stand: their distance plus a bearing), when each of those
+    parts alone is too narrow to stand on; 0 otherwise."""
+    if edge.relation != "ON" or edge.parent.is_room_element or edge.parent.part is None \
+            or edge.parent.index is not None:
+        return 0.0
+    parent = st.scene.objects.get(edge.parent.object)
+    if parent is None or not parent.placed:
+        return 0.0
+    return st.memo(edge.parent.object, ("span-need", str(edge.parent)),
+                   lambda: _span_length(st, edge))
+
+
+def _span_length(st: SolveState, edge: Edge) -> float:
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return 0.0
+    if not any(s.spans for s in sups):
+        return 0.0
+    single = [s for s in sups if not s.spans]
+    if any(_sides(s.region)[0] >= SPAN_PART for s in single):
+        return 0.0
+    mid = [np.asarray(s.surface.to_3d(np.asarray(s.region.centroid.coords)))[0] for s in single]
+    gaps = [float(np.linalg.norm(a - b)) for i, a in enumerate(mid) for b in mid[i + 1:]]
+    return min(gaps) + 2 * SPAN_BEARING if gaps else 0.0
 
 
 def _headroom(st: SolveState, edge: Edge) -> float:

@@ -12,6 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
 
 from ..assets.model import Asset
 from ..geometry import regions as RG
@@ -229,6 +230,23 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
     if fp_area < 0.05 * sup.region.area:  # small on a large top: every turn fits
         areas = np.ones(4)
     else:  # a half turn fits (nearly) as well as its opposite: two erosions, not four
+        a0, a1 = fit(quarter[0]), fit(quarter[1])
+        areas = np.array([a0, a1, a0, a1])
+    if areas.max() <= 0.0 and sup.spans:
+        # no turn fits inside a support joining several parts (a keyboard on a stand's two
+        # arms): the turns whose footprint, centred on it, lies most over the parts (across)
+        solid = sup.region.difference(shapely.union_all([shapely.Polygon(h) for h in sup.holes])) \
+            if sup.holes else sup.region
+
+        def overlap(phi: float) -> float:
+            R = axis_angle(n_s, phi) @ R0
+            Y = hull @ R.T
+            F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
+                                  outline_indices(asset, R.T @ s.normal))
+            c = np.asarray(sup.region.centroid.coords)[0] - F.mean(axis=0)
+            return float(shapely.Polygon(F + c).intersection(solid).area)
+
+        fit = overlap
         a0, a1 = fit(quarter[0]), fit(quarter[1])
         areas = np.array([a0, a1, a0, a1])
     good = [p for p, a in zip(quarter, areas, strict=True) if a >= 0.7 * areas.max()]
