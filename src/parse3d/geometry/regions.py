@@ -284,17 +284,23 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
             cut.extend(shapely.convex_hull(shapely.multipoints(pts)))
     if obstacles:
         negf = neg if _strictly_convex_ccw(neg) else convex_footprint(neg)
-        # only obstacles whose sum can reach the region matter (others on a far-away table)
+        # only obstacles whose sum can reach the region matter (others on a far-away table):
+        # every obstacle's box at once
         x0, y0, x1, y1 = region.bounds
         lo, hi = negf.min(axis=0), negf.max(axis=0)
-        obstacles = [ob for ob in obstacles
-                     if ob[:, 0].min() + lo[0] <= x1 and ob[:, 0].max() + hi[0] >= x0
-                     and ob[:, 1].min() + lo[1] <= y1 and ob[:, 1].max() + hi[1] >= y0]
+        A = np.concatenate(obstacles)
+        at = np.concatenate([[0], np.cumsum([len(ob) for ob in obstacles])[:-1]])
+        olo, ohi = np.minimum.reduceat(A, at), np.maximum.reduceat(A, at)
+        hit = ((olo[:, 0] + lo[0] <= x1) & (ohi[:, 0] + hi[0] >= x0)
+               & (olo[:, 1] + lo[1] <= y1) & (ohi[:, 1] + hi[1] >= y0))
+        obstacles = [obstacles[k] for k in np.flatnonzero(hit)]
     if obstacles:
-        sums = minkowski_many(obstacles, negf)
-        sums = [np.vstack([m, m[:1]]) for m in sums]  # closed rings
-        idx = np.repeat(np.arange(len(sums)), [len(x) for x in sums])
-        cut.extend(shapely.polygons(shapely.linearrings(np.vstack(sums), indices=idx)))
+        # the sums as closed rings, one after the other: each one's first vertex repeated
+        pts, total = _minkowski_stack(obstacles, negf)
+        ends = np.cumsum(total)
+        ring = np.insert(np.arange(len(pts)), ends, ends - total)
+        idx = np.repeat(np.arange(len(total)), total + 1)
+        cut.extend(shapely.polygons(shapely.linearrings(pts[ring], indices=idx)))
     base = inner if inner is not None else region
     if not cut:
         return base

@@ -25,7 +25,7 @@ from ..relations import SURFACES
 from .config import Fail
 from .geometry import asset_geometry, part_points
 from .rotation import parent_surface_world
-from .state import SolveState, parts_for, plane_coords, plane_key
+from .state import SolveState, frame_key, parts_for, plane_coords, plane_key
 from .support import Support
 
 __all__ = ["REGION_RULES", "RegionContext", "obstacles", "apply_region_rules", "height_band",
@@ -395,13 +395,17 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
             allxy = np.vstack(keep)
             uv = plane_coords(sup.surface, np.column_stack([allxy, np.full(len(allxy), sz)]))
             out.extend(np.split(uv, np.cumsum([len(k) for k in keep])[:-1]))
-    for oid, pts in ([] if horizontal else st.hulls.items()):
-        if oid in exclude:
-            continue
-        h = (pts - sup.surface.origin) @ n
-        if h.max() <= 1e-3 or h.min() >= height - 1e-3:
-            continue
-        out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
+    if not horizontal:  # a wall: each object's heights and footprint kept per plane frame
+        fkey = ("hull", frame_key(sup.surface))
+        for oid, pts in st.hulls.items():
+            if oid in exclude:
+                continue
+            got = st.memo(oid, fkey, lambda pts=pts: _hull_heights(pts, sup.surface))
+            if got[1] <= 1e-3 or got[0] >= height - 1e-3:
+                continue
+            if got[2] is None:
+                got[2] = RG.convex_footprint(plane_coords(sup.surface, pts))
+            out.append(got[2])
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
     key = ("pieces", *plane_key(sup.surface))
@@ -424,6 +428,14 @@ def steps_on(sup: Support, fp: np.ndarray) -> bool:
     beyond the support's edge (a tray's rim around its floor, a shelf's lip) bounds it."""
     c = fp.mean(axis=0)
     return bool(sup.region.covers(shapely.Point(float(c[0]), float(c[1]))))
+
+
+def _hull_heights(pts: np.ndarray, s) -> list:
+    """``[lowest, highest, None]``: heights of a placed object's hull points above the plane
+    of ``s``; the last slot holds their footprint in its plane once made (see
+    :func:`obstacles`)."""
+    h = (pts - s.origin) @ s.normal
+    return [h.min(), h.max(), None]
 
 
 def _piece_heights(st: SolveState, oid: str, sup: Support) -> list[list]:
