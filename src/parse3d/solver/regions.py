@@ -383,14 +383,8 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
             r = 1.01 * float(np.hypot(a1 - a0, b1 - b0)) / 2 + 0.01
             pad = 1.01 * height + 0.01
             ids = st.near(c[:2], r, sz - pad, sz + pad)
-        keep = []
-        for oid in ids:
-            if oid in exclude:
-                continue
-            z0, z1 = st.zr[oid]
-            lo_h, hi_h = sorted(((z0 - sz) * n[2], (z1 - sz) * n[2]))
-            if hi_h > 1e-3 and lo_h < height - 1e-3:
-                keep.append(st.xy[oid])
+        keep = [st.xy[oid] for oid in ids if oid not in exclude
+                and _in_slab(st.zr[oid], sz, float(n[2]), height)]
         if keep:
             allxy = np.vstack(keep)
             uv = plane_coords(sup.surface, np.column_stack([allxy, np.full(len(allxy), sz)]))
@@ -420,6 +414,14 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
                 continue
             out.append(fp)
     return out
+
+
+def _in_slab(zr: tuple[float, float], sz: float, nz: float, height: float) -> bool:
+    """Whether an object spanning heights ``zr`` reaches into the slab of ``height`` above a
+    horizontal plane at height ``sz`` with normal z component ``nz``."""
+    a, b = (zr[0] - sz) * nz, (zr[1] - sz) * nz
+    lo_h, hi_h = (a, b) if a <= b else (b, a)
+    return hi_h > 1e-3 and lo_h < height - 1e-3
 
 
 def steps_on(sup: Support, fp: np.ndarray) -> bool:
