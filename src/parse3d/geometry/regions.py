@@ -186,6 +186,9 @@ def _convex_edges(poly: Polygon) -> tuple:
         n = np.c_[e[:, 1], -e[:, 0]]  # outward normal of a CCW ring
         n /= np.linalg.norm(n, axis=1, keepdims=True)
         out = (None, n, np.einsum("ij,ij->i", c, n))
+    for a in (*(out[0] or ()), *out[1:]):
+        if a is not None:
+            a.flags.writeable = False  # shared by every erosion of the polygon
     _EDGES[id(poly)] = (poly, out)  # holding the polygon keeps its id valid
     return out
 
