@@ -145,26 +145,71 @@ def _cut(a: tuple, b: tuple, da: float, db: float) -> tuple:
 def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
     """Erosion of a convex polygon by a footprint: each edge moves in by the footprint's
     support along the edge's outward normal."""
-    c = np.asarray(poly.exterior.coords)[:-1]
-    if len(c) == 4:  # an axis-aligned rectangle (a floor, a tabletop, a shelf) shrinks per axis
-        e = np.roll(c, -1, axis=0) - c
-        if np.all(np.min(np.abs(e), axis=1) < 1e-12):
-            lo, hi = c.min(axis=0), c.max(axis=0)
-            f = -neg  # the footprint
-            lo2, hi2 = lo - f.min(axis=0), hi - f.max(axis=0)
-            if (hi2 > lo2).all():
-                return shapely_box(lo2[0], lo2[1], hi2[0], hi2[1])
-            return Polygon()
-    if not Polygon(c).exterior.is_ccw:
-        c = c[::-1]
-    e = np.roll(c, -1, axis=0) - c
-    n = np.c_[e[:, 1], -e[:, 0]]  # outward normal of a CCW ring
-    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    rect, n, cn = _convex_edges(poly)
+    if rect is not None:  # an axis-aligned rectangle (a floor, a tabletop, a shelf) shrinks per axis
+        lo, hi = rect
+        f = -neg  # the footprint
+        lo2, hi2 = lo - f.min(axis=0), hi - f.max(axis=0)
+        if (hi2 > lo2).all():
+            return shapely_box(lo2[0], lo2[1], hi2[0], hi2[1])
+        return Polygon()
     shift = np.max(-neg @ n.T, axis=0)  # support of the footprint (F = -neg) along n
-    off = np.einsum("ij,ij->i", c, n) - shift
+    off = cn - shift
     # few edges: clipping on Python floats is cheaper than numpy's per-call overhead
     got = _half_planes(n, off) if len(n) > HALF_PLANES_FROM else None
     return got if got is not None else _clip_box(poly, n, off)
+
+
+_EDGES: dict[int, tuple] = {}
+
+
+def _convex_edges(poly: Polygon) -> tuple:
+    """``(rect, n, cn)`` of a convex polygon: ``rect`` its ``(lo, hi)`` corners when it is an
+    axis-aligned rectangle (else None), otherwise the outward unit normals ``n`` (E, 2) of its
+    counter-clockwise edges and each edge's offset ``cn`` (E,) along its normal. Kept per
+    polygon object (a support's region is eroded again and again)."""
+    got = _EDGES.get(id(poly))
+    if got is not None and got[0] is poly:
+        return got[1]
+    if len(_EDGES) > 4096:
+        _EDGES.clear()
+    c = np.asarray(poly.exterior.coords)[:-1]
+    out = None
+    if len(c) == 4:
+        e = np.roll(c, -1, axis=0) - c
+        if np.all(np.min(np.abs(e), axis=1) < 1e-12):
+            out = ((c.min(axis=0), c.max(axis=0)), None, None)
+    if out is None:
+        if not Polygon(c).exterior.is_ccw:
+            c = c[::-1]
+        e = np.roll(c, -1, axis=0) - c
+        n = np.c_[e[:, 1], -e[:, 0]]  # outward normal of a CCW ring
+        n /= np.linalg.norm(n, axis=1, keepdims=True)
+        out = (None, n, np.einsum("ij,ij->i", c, n))
+    for a in (*(out[0] or ()), *out[1:]):
+        if a is not None:
+            a.flags.writeable = False  # shared by every erosion of the polygon
+    _EDGES[id(poly)] = (poly, out)  # holding the polygon keeps its id valid
+    return out
+
+
+_ONE_CONVEX: dict[int, tuple] = {}
+
+
+def _one_convex(region: BaseGeometry) -> bool:
+    """Whether ``region`` is one convex polygon without holes, of at most 64 vertices (the
+    case :func:`erode` moves edges for); kept per region object."""
+    got = _ONE_CONVEX.get(id(region))
+    if got is not None and got[0] is region:
+        return got[1]
+    if len(_ONE_CONVEX) > 4096:
+        _ONE_CONVEX.clear()
+    polys = list(region.geoms) if hasattr(region, "geoms") else [region]
+    out = bool(len(polys) == 1 and isinstance(polys[0], Polygon) and not polys[0].interiors
+               and len(polys[0].exterior.coords) <= 64
+               and polys[0].convex_hull.area - polys[0].area < 1e-9 * max(polys[0].area, 1.0))
+    _ONE_CONVEX[id(region)] = (region, out)
+    return out
 
 
 #: Edge count from which a convex erosion is vectorised (:func:`_half_planes`).
@@ -267,9 +312,7 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
     neg = -np.asarray(footprint, float)
     cut = []
     polys = list(region.geoms) if hasattr(region, "geoms") else [region]
-    if (len(polys) == 1 and isinstance(polys[0], Polygon) and not polys[0].interiors
-            and len(polys[0].exterior.coords) <= 64
-            and polys[0].convex_hull.area - polys[0].area < 1e-9 * max(polys[0].area, 1.0)):
+    if _one_convex(region):
         inner = _erode_convex(polys[0], neg)
         polys = []
     else:
@@ -284,17 +327,23 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
             cut.extend(shapely.convex_hull(shapely.multipoints(pts)))
     if obstacles:
         negf = neg if _strictly_convex_ccw(neg) else convex_footprint(neg)
-        # only obstacles whose sum can reach the region matter (others on a far-away table)
+        # only obstacles whose sum can reach the region matter (others on a far-away table):
+        # every obstacle's box at once
         x0, y0, x1, y1 = region.bounds
         lo, hi = negf.min(axis=0), negf.max(axis=0)
-        obstacles = [ob for ob in obstacles
-                     if ob[:, 0].min() + lo[0] <= x1 and ob[:, 0].max() + hi[0] >= x0
-                     and ob[:, 1].min() + lo[1] <= y1 and ob[:, 1].max() + hi[1] >= y0]
+        A = np.concatenate(obstacles)
+        at = np.concatenate([[0], np.cumsum([len(ob) for ob in obstacles])[:-1]])
+        olo, ohi = np.minimum.reduceat(A, at), np.maximum.reduceat(A, at)
+        hit = ((olo[:, 0] + lo[0] <= x1) & (ohi[:, 0] + hi[0] >= x0)
+               & (olo[:, 1] + lo[1] <= y1) & (ohi[:, 1] + hi[1] >= y0))
+        obstacles = [obstacles[k] for k in np.flatnonzero(hit)]
     if obstacles:
-        sums = minkowski_many(obstacles, negf)
-        sums = [np.vstack([m, m[:1]]) for m in sums]  # closed rings
-        idx = np.repeat(np.arange(len(sums)), [len(x) for x in sums])
-        cut.extend(shapely.polygons(shapely.linearrings(np.vstack(sums), indices=idx)))
+        # the sums as closed rings, one after the other: each one's first vertex repeated
+        pts, total = _minkowski_stack(obstacles, negf)
+        ends = np.cumsum(total)
+        ring = np.insert(np.arange(len(pts)), ends, ends - total)
+        idx = np.repeat(np.arange(len(total)), total + 1)
+        cut.extend(shapely.polygons(shapely.linearrings(pts[ring], indices=idx)))
     base = inner if inner is not None else region
     if not cut:
         return base

@@ -25,7 +25,7 @@ from ..relations import SURFACES
 from .config import Fail
 from .geometry import asset_geometry, part_points
 from .rotation import parent_surface_world
-from .state import SolveState, parts_for, plane_coords, plane_key
+from .state import SolveState, frame_key, parts_for, plane_coords, plane_key
 from .support import Support
 
 __all__ = ["REGION_RULES", "RegionContext", "obstacles", "apply_region_rules", "height_band",
@@ -383,25 +383,23 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
             r = 1.01 * float(np.hypot(a1 - a0, b1 - b0)) / 2 + 0.01
             pad = 1.01 * height + 0.01
             ids = st.near(c[:2], r, sz - pad, sz + pad)
-        keep = []
-        for oid in ids:
-            if oid in exclude:
-                continue
-            z0, z1 = st.zr[oid]
-            lo_h, hi_h = sorted(((z0 - sz) * n[2], (z1 - sz) * n[2]))
-            if hi_h > 1e-3 and lo_h < height - 1e-3:
-                keep.append(st.xy[oid])
+        keep = [st.xy[oid] for oid in ids if oid not in exclude
+                and _in_slab(st.zr[oid], sz, float(n[2]), height)]
         if keep:
             allxy = np.vstack(keep)
             uv = plane_coords(sup.surface, np.column_stack([allxy, np.full(len(allxy), sz)]))
             out.extend(np.split(uv, np.cumsum([len(k) for k in keep])[:-1]))
-    for oid, pts in ([] if horizontal else st.hulls.items()):
-        if oid in exclude:
-            continue
-        h = (pts - sup.surface.origin) @ n
-        if h.max() <= 1e-3 or h.min() >= height - 1e-3:
-            continue
-        out.append(RG.convex_footprint(plane_coords(sup.surface, pts)))
+    if not horizontal:  # a wall: each object's heights and footprint kept per plane frame
+        fkey = ("hull", frame_key(sup.surface))
+        for oid, pts in st.hulls.items():
+            if oid in exclude:
+                continue
+            got = st.memo(oid, fkey, lambda pts=pts: _hull_heights(pts, sup.surface))
+            if got[1] <= 1e-3 or got[0] >= height - 1e-3:
+                continue
+            if got[2] is None:
+                got[2] = RG.convex_footprint(plane_coords(sup.surface, pts))
+            out.append(got[2])
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
     key = ("pieces", *plane_key(sup.surface))
@@ -418,12 +416,28 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
     return out
 
 
+def _in_slab(zr: tuple[float, float], sz: float, nz: float, height: float) -> bool:
+    """Whether an object spanning heights ``zr`` reaches into the slab of ``height`` above a
+    horizontal plane at height ``sz`` with normal z component ``nz``."""
+    a, b = (zr[0] - sz) * nz, (zr[1] - sz) * nz
+    lo_h, hi_h = (a, b) if a <= b else (b, a)
+    return hi_h > 1e-3 and lo_h < height - 1e-3
+
+
 def steps_on(sup: Support, fp: np.ndarray) -> bool:
     """Whether a low piece of the support's owner with footprint ``fp`` (plane coordinates)
     is stood on: its middle is over the support (a burner on a cooktop); a low piece at or
     beyond the support's edge (a tray's rim around its floor, a shelf's lip) bounds it."""
     c = fp.mean(axis=0)
     return bool(sup.region.covers(shapely.Point(float(c[0]), float(c[1]))))
+
+
+def _hull_heights(pts: np.ndarray, s) -> list:
+    """``[lowest, highest, None]``: heights of a placed object's hull points above the plane
+    of ``s``; the last slot holds their footprint in its plane once made (see
+    :func:`obstacles`)."""
+    h = (pts - s.origin) @ s.normal
+    return [h.min(), h.max(), None]
 
 
 def _piece_heights(st: SolveState, oid: str, sup: Support) -> list[list]:

@@ -158,6 +158,23 @@ def plane_key(s: Surface) -> tuple:
 _PLANE_KEYS: dict[int, tuple] = {}
 
 
+def frame_key(s: Surface) -> bytes:
+    """A hashable key of a surface's plane frame, exact (origin, normal and in-plane axes, as
+    bytes): geometry in its plane coordinates may be kept under it. Made once per surface
+    object."""
+    got = _FRAME_KEYS.get(id(s))
+    if got is not None and got[0] is s:
+        return got[1]
+    if len(_FRAME_KEYS) > 4096:
+        _FRAME_KEYS.clear()
+    key = b"".join(np.asarray(x, float).tobytes() for x in (s.origin, s.normal, s.u, s.v))
+    _FRAME_KEYS[id(s)] = (s, key)  # holding the surface keeps its id valid
+    return key
+
+
+_FRAME_KEYS: dict[int, tuple] = {}
+
+
 def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
     """Angle about ``n`` taking ``vec`` onto ``target`` (both projected); None if degenerate."""
     pv = vec - np.dot(vec, n) * n
