@@ -231,14 +231,20 @@ class LocalExecutor:
         limit = hard_limit(config)
         slots: list[_Slot] = []
         died: dict[int, int] = {}
+
+        def fill() -> None:
+            """Start missing workers and hand every idle one its next scene. Called before
+            each outcome goes back to the driver, so workers build on while it commits."""
+            while pending and len(slots) < self.workers:
+                slots.append(self._spawn(ctx, config, source))
+            for s in slots:
+                if s.index is None and pending:
+                    s.index, s.started = pending.popleft(), time.perf_counter()
+                    s.conn.send(s.index)
+
         try:
             while pending or any(s.index is not None for s in slots):
-                while pending and len(slots) < self.workers:
-                    slots.append(self._spawn(ctx, config, source))
-                for s in slots:
-                    if s.index is None and pending:
-                        s.index, s.started = pending.popleft(), time.perf_counter()
-                        s.conn.send(s.index)
+                fill()
                 busy = [s for s in slots if s.index is not None]
                 ready = wait([s.conn for s in busy], timeout=0.5)
                 for s in busy:
@@ -270,6 +276,7 @@ class LocalExecutor:
                         self._stop(s, kill=True)
                         slots.remove(s)
                         s.index = None
+                        fill()
                         yield outcome
                         continue
                     if outcome is None:
@@ -278,6 +285,7 @@ class LocalExecutor:
                     if replace:
                         self._stop(s, kill=not s.proc.is_alive())
                         slots.remove(s)
+                    fill()
                     yield outcome
         finally:
             for s in slots:
