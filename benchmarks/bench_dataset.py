@@ -7,6 +7,7 @@ Usage::
     python benchmarks/bench_dataset.py --pags examples/     # the example PAGs instead
     python benchmarks/bench_dataset.py --baseline-rev 20249ea   # also the same build at REV
     python benchmarks/bench_dataset.py --scenes 200 --workers 1 # a worker's RSS after 200 scenes
+    python benchmarks/bench_dataset.py --baseline-rev main --rounds 2  # interleaved: now, main, now, main
 
 Builds ``--scenes`` scenes with the local executor (expand, solve, settle, contacts, render,
 write; exactly what ``parse3d dataset build`` runs), then prints:
@@ -30,7 +31,9 @@ write; exactly what ``parse3d dataset build`` runs), then prints:
 The asset pool is the one under ``$PARSE3D_CACHE``: on an empty cache the first scenes also
 generate their assets (run twice to see the cached rate). ``--baseline-rev REV`` builds the
 same scenes with the package of git revision REV (a temporary worktree; its own asset cache
-folder is the same) and prints both columns.
+folder is the same) and prints both columns; ``--rounds N`` builds them alternately N times
+each (now, REV, now, REV, ...) and sums the rounds per column, so that a change in the
+machine's load falls on both columns alike.
 """
 
 from __future__ import annotations
@@ -189,6 +192,20 @@ def measure(args) -> dict:
             "rows": [{k: r.get(k) for k in keys} for r in rows]}
 
 
+def merge(runs: list[dict]) -> dict:
+    """Several runs of the same build as one: walls, CPU and rows summed, the peak the
+    largest, start-up and the RSS trace of the first run."""
+    if len(runs) == 1:
+        return runs[0]
+    out = dict(runs[0])
+    for k in ("wall", "worker_cpu", "driver_cpu"):
+        out[k] = sum(r[k] for r in runs)
+    out["peak_rss_mb"] = max(r["peak_rss_mb"] for r in runs)
+    out["rows"] = [row for r in runs for row in r["rows"]]
+    out["rounds"] = len(runs)
+    return out
+
+
 def _mean(v: list) -> float | None:
     v = [x for x in v if x is not None]
     return statistics.mean(v) if v else None
@@ -241,6 +258,10 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         print(f"{label:38s}" + "".join(f"{fmt(s if key is None else s[key]):>14s}"
                                         for _, s in cols))
 
+    rounds = now.get("rounds", 1)
+    if rounds > 1:
+        print(f"({rounds} rounds per column, built alternately; scene counts and times are "
+              "their sums)")
     line("scenes (ok/incomplete/failed)", lambda s: f"{s['ok']}/{s['incomplete']}/{s['failed']}")
     line("placed objects per scene", lambda v: f"{v:.1f}", "placed")
     line("wall, s", lambda v: f"{v:.1f}", "wall")
@@ -276,13 +297,15 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         a, b = cols[0][1], cols[1][1]
         if a["cpu_scene"] > 0 and b["cpu_scene"] > 0:
             print(f"worker CPU per scene, {rev[:10]} / now: {b['cpu_scene'] / a['cpu_scene']:.2f}x")
+        if a["rate"] > 0 and b["rate"] > 0:
+            print(f"wall-clock rate, now / {rev[:10]}: {a['rate'] / b['rate']:.2f}x")
 
 
-def baseline(rev: str, argv: list[str]) -> dict:
-    """This benchmark run with the package of ``rev`` (a temporary git worktree)."""
-    with revision_tree(rev) as wt:
-        res = wt.parent / "result.json"
-        env = {**os.environ, "PYTHONPATH": str(wt / "src")}
+def run_json(argv: list[str], src: Path) -> dict:
+    """This benchmark run once, in a fresh process, with the package under ``src``."""
+    with tempfile.TemporaryDirectory(prefix="parse3d-bench-") as tmp:
+        res = Path(tmp) / "result.json"
+        env = {**os.environ, "PYTHONPATH": str(src)}
         subprocess.run([sys.executable, __file__, *argv, "--_json", str(res)], check=True,
                        env=env, cwd=str(ROOT))
         return json.loads(res.read_text())
@@ -301,28 +324,42 @@ def main() -> None:
                     help="scenes a worker builds before it is replaced (as parse3d dataset "
                          "build --max-tasks); with --workers 1 and --scenes N <= this, one "
                          "worker builds them all and its RSS is traced")
-    ap.add_argument("--out", default=None, help="dataset folder (default: a temporary one)")
+    ap.add_argument("--out", default=None,
+                    help="dataset folder (default: a temporary one); one build only")
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="also build the same scenes with git revision REV, e.g. 4607b75")
+    ap.add_argument("--rounds", type=int, default=1,
+                    help="with --baseline-rev: build both columns this many times, alternately")
     ap.add_argument("--_json", dest="json_out", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.pags:
         args.pags = [str(Path(p).resolve()) for p in args.pags]
+    if args.out and (args.baseline_rev or args.rounds > 1):
+        ap.error("--out builds one dataset: leave it out with --baseline-rev or --rounds")
     print(f"building {args.scenes} scenes ({'PAG files' if args.pags else 'templates'}, "
           f"{args.workers} workers, {args.views} views, {os.cpu_count()} CPU cores) ...",
           flush=True)
-    now = measure(args)
-    if args.json_out:  # the baseline's side
-        Path(args.json_out).write_text(json.dumps(now))
+    if args.scenes < 40 and not args.json_out:
+        print("note: the wall-clock rate of fewer than 40 scenes is mostly start-up and tail")
+    if args.json_out:  # one column's run, in its own process
+        Path(args.json_out).write_text(json.dumps(measure(args)))
         return
     before = None
-    if args.baseline_rev:
+    if not args.baseline_rev:
+        now = merge([measure(args) for _ in range(max(1, args.rounds))])
+    else:
         argv = ["--scenes", str(args.scenes), "--workers", str(args.workers),
                 "--max-tasks", str(args.max_tasks), "--views",
                 str(args.views), "--seed", str(args.seed), "--rooms", args.rooms]
         if args.pags:
             argv += ["--pags", *args.pags]
-        before = baseline(args.baseline_rev, argv)
+        runs: dict[str, list[dict]] = {"now": [], "before": []}
+        with revision_tree(args.baseline_rev) as wt:
+            for r in range(max(1, args.rounds)):
+                print(f"round {r + 1}: this build, then {args.baseline_rev}", flush=True)
+                runs["now"].append(run_json(argv, ROOT / "src"))
+                runs["before"].append(run_json(argv, wt / "src"))
+        now, before = merge(runs["now"]), merge(runs["before"])
     print()
     print_table(now, before, args.baseline_rev)
 
