@@ -17,7 +17,9 @@ write; exactly what ``parse3d dataset build`` runs), then prints:
   workers' time (``workers x wall``);
 * the share that is no pipeline stage: inside the task (planning, serialising the folder's
   files) and outside it (worker start-up and imports, handing scenes and files between the
-  worker and the driver, the driver's writes, idle workers at the end);
+  worker and the driver, the driver's writes, idle workers at the end); and the edges of the
+  build in wall seconds: when the first scene began, how long workers idled at the end while
+  the others finished their last scenes, and what came after the last scene;
 * CPU seconds per scene: per stage (recorded by the workers), outside the tasks (start-up,
   IPC, cache upkeep), every worker process together (sampled from ``/proc``) and the driver;
   from the workers' CPU per scene the *idle-equivalent* rate, ``workers x 3600 / CPU per
@@ -170,8 +172,10 @@ def measure(args) -> dict:
         if (out / "manifest.parquet").exists():
             raise SystemExit(f"{out} already holds a dataset: pass a fresh --out")
         trace: list[tuple[int, float]] = []  # (scenes done, largest worker's RSS now)
+        done_at: list[tuple[float, float]] = []  # (s since the start, the scene's t_total)
 
         def progress(ev) -> None:
+            done_at.append((time.perf_counter() - t0, ev.record.get("t_total") or 0.0))
             if ev.done in marks:
                 watch.sample()
                 trace.append((ev.done, watch.rss))
@@ -187,7 +191,17 @@ def measure(args) -> dict:
         rows = read_manifest(out / "manifest.parquet")
     keys = ("index", "status", "objects", "placed", "contacts",
             *(f"{p}_{s}" for p in ("t", "cpu") for s in (*STAGES, "total")))
+    ends = sorted(t for t, _ in done_at)
+    edges = {
+        # when the first scene began: the driver's preparation and a worker's start-up
+        "first_start": min((t - d for t, d in done_at), default=0.0),
+        # worker-seconds idle at the end: each worker's last scene ends before the last one
+        "tail_idle": sum(ends[-1] - t for t in ends[-args.workers:]) if ends else 0.0,
+        # after the last scene: the last manifest write, stopping the workers
+        "after_last": wall - ends[-1] if ends else 0.0,
+    }
     return {"wall": wall, "workers": args.workers, "startup": start, "peak_rss_mb": watch.peak,
+            "edges": edges,
             "worker_cpu": watch.cpu_seconds, "driver_cpu": driver, "rss_trace": trace,
             "rows": [{k: r.get(k) for k in keys} for r in rows]}
 
@@ -201,6 +215,7 @@ def merge(runs: list[dict]) -> dict:
     for k in ("wall", "worker_cpu", "driver_cpu"):
         out[k] = sum(r[k] for r in runs)
     out["peak_rss_mb"] = max(r["peak_rss_mb"] for r in runs)
+    out["edges"] = {k: sum(r["edges"][k] for r in runs) for k in runs[0]["edges"]}
     out["rows"] = [row for r in runs for row in r["rows"]]
     out["rounds"] = len(runs)
     return out
@@ -222,7 +237,7 @@ def summarize(res: dict) -> dict:
          "rate": 3600.0 * len(rows) / wall, "wall": wall,
          "placed": statistics.mean(r["placed"] or 0 for r in ok) if ok else 0.0,
          "peak_rss_mb": res["peak_rss_mb"], "startup": res["startup"],
-         "rss_trace": dict(res.get("rss_trace") or [])}
+         "rss_trace": dict(res.get("rss_trace") or []), "edges": res.get("edges") or {}}
     for st in STAGES:
         v = [r[f"t_{st}"] or 0.0 for r in ok] or [0.0]
         s[st] = (statistics.mean(v), statistics.median(v), max(v))
@@ -283,6 +298,11 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         line(f"  {st}", lambda v: f"{v:.1f}", f"share_{st}")
     line("  not a stage, in the task", lambda v: f"{v:.1f}", "share_in_task")
     line("  not a stage, outside tasks", lambda v: f"{v:.1f}", "share_outside")
+    print("start and end of the build, wall seconds")
+    line("  first scene began after", lambda e: _opt(".2f")(e.get("first_start")), "edges")
+    line("  workers idle at the end, worker-s", lambda e: _opt(".2f")(e.get("tail_idle")),
+         "edges")
+    line("  after the last scene", lambda e: _opt(".2f")(e.get("after_last")), "edges")
     print("a fresh worker, s")
     line("  imports", lambda v: f"{v['imports']:.2f}", "startup")
     line("  scene source + GL context", lambda v: f"{v['state']:.2f}", "startup")
