@@ -107,16 +107,21 @@ class _Watch:
     def __init__(self, period: float = 0.25):
         self.period, self.peak, self.rss = period, 0.0, 0.0
         self.cpu: dict[int, float] = {}
+        self.seen: dict[int, tuple[float, float]] = {}  # pid -> (when sampled, VmRSS MB)
         self._stop = threading.Event()
         self._t = threading.Thread(target=self._run, daemon=True)
 
     def sample(self) -> None:
-        now = 0.0
+        now, t = 0.0, time.perf_counter()
         for p in _descendants(os.getpid()):
             rss, hwm, cpu = _proc(p)
             self.peak, now = max(self.peak, hwm), max(now, rss)
             self.cpu[p] = max(self.cpu.get(p, 0.0), cpu)
-        self.rss = now
+            if rss > 0:
+                self.seen[p] = (t, rss)
+        # a worker that ended since the last sample (replaced after --max-tasks scenes, just
+        # after its last one) counts with its last sample
+        self.rss = max([now] + [r for w, r in self.seen.values() if t - w <= 2 * self.period])
 
     def _run(self) -> None:
         while not self._stop.wait(self.period):

@@ -232,15 +232,24 @@ class LocalExecutor:
         slots: list[_Slot] = []
         died: dict[int, int] = {}
 
+        done: list[_Slot] = []  # told to stop, not yet joined
+
         def fill() -> None:
-            """Start missing workers and hand every idle one its next scene. Called before
-            each outcome goes back to the driver, so workers build on while it commits."""
+            """Start missing workers and hand every idle one its next scene; with nothing
+            left to hand out, tell idle workers to stop (they exit while the others finish).
+            Called before each outcome goes back to the driver, so workers build on while it
+            commits."""
             while pending and len(slots) < self.workers:
                 slots.append(self._spawn(ctx, config, source))
-            for s in slots:
+            for s in list(slots):
                 if s.index is None and pending:
                     s.index, s.started = pending.popleft(), time.perf_counter()
                     s.conn.send(s.index)
+                elif s.index is None:
+                    with contextlib.suppress(BrokenPipeError, OSError):
+                        s.conn.send(None)
+                    slots.remove(s)
+                    done.append(s)
 
         try:
             while pending or any(s.index is not None for s in slots):
@@ -290,6 +299,8 @@ class LocalExecutor:
         finally:
             for s in slots:
                 self._stop(s, kill=s.index is not None)
+            for s in done:
+                self._stop(s, kill=False)
 
 
 # --------------------------------------------------------------------------------------------
