@@ -50,6 +50,7 @@ WORKER_MODULES = (
     "parse3d.assets.loaders", "sapien", "moderngl",
 )
 
+
 def hard_limit(config: BuildConfig) -> float | None:
     """Seconds after which the driver kills a scene that its worker has not returned.
 
@@ -231,7 +232,6 @@ class LocalExecutor:
         limit = hard_limit(config)
         slots: list[_Slot] = []
         died: dict[int, int] = {}
-
         done: list[_Slot] = []  # told to stop, not yet joined
 
         def fill() -> None:
