@@ -222,6 +222,7 @@ def merge(runs: list[dict]) -> dict:
     out["peak_rss_mb"] = max(r["peak_rss_mb"] for r in runs)
     out["edges"] = {k: sum(r["edges"][k] for r in runs) for k in runs[0]["edges"]}
     out["rows"] = [row for r in runs for row in r["rows"]]
+    out["round_walls"] = [r["wall"] for r in runs]
     out["rounds"] = len(runs)
     return out
 
@@ -242,7 +243,8 @@ def summarize(res: dict) -> dict:
          "rate": 3600.0 * len(rows) / wall, "wall": wall,
          "placed": statistics.mean(r["placed"] or 0 for r in ok) if ok else 0.0,
          "peak_rss_mb": res["peak_rss_mb"], "startup": res["startup"],
-         "rss_trace": dict(res.get("rss_trace") or []), "edges": res.get("edges") or {}}
+         "rss_trace": dict(res.get("rss_trace") or []), "edges": res.get("edges") or {},
+         "round_walls": res.get("round_walls") or [wall]}
     for st in STAGES:
         v = [r[f"t_{st}"] or 0.0 for r in ok] or [0.0]
         s[st] = (statistics.mean(v), statistics.median(v), max(v))
@@ -285,6 +287,8 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
     line("scenes (ok/incomplete/failed)", lambda s: f"{s['ok']}/{s['incomplete']}/{s['failed']}")
     line("placed objects per scene", lambda v: f"{v:.1f}", "placed")
     line("wall, s", lambda v: f"{v:.1f}", "wall")
+    if rounds > 1:
+        line("  of each round", lambda v: " ".join(f"{w:.0f}" for w in v), "round_walls")
     line("scenes/hour, wall (goal >= 5,000)", lambda v: f"{v:,.0f}", "rate")
     line("10,000 scenes take, wall", lambda s: _hours(10000 * s["wall"] / max(1, s["scenes"])))
     print("CPU seconds per scene (do not grow with the machine's load)")
