@@ -7,6 +7,7 @@ Usage::
     python benchmarks/bench_dataset.py --pags examples/     # the example PAGs instead
     python benchmarks/bench_dataset.py --baseline-rev 20249ea   # also the same build at REV
     python benchmarks/bench_dataset.py --scenes 200 --workers 1 # a worker's RSS after 200 scenes
+    python benchmarks/bench_dataset.py --baseline-rev main --rounds 2  # interleaved: now, main, now, main
 
 Builds ``--scenes`` scenes with the local executor (expand, solve, settle, contacts, render,
 write; exactly what ``parse3d dataset build`` runs), then prints:
@@ -16,7 +17,9 @@ write; exactly what ``parse3d dataset build`` runs), then prints:
   workers' time (``workers x wall``);
 * the share that is no pipeline stage: inside the task (planning, serialising the folder's
   files) and outside it (worker start-up and imports, handing scenes and files between the
-  worker and the driver, the driver's writes, idle workers at the end);
+  worker and the driver, the driver's writes, idle workers at the end); and the edges of the
+  build in wall seconds: when the first scene began, how long workers idled at the end while
+  the others finished their last scenes, and what came after the last scene;
 * CPU seconds per scene: per stage (recorded by the workers), outside the tasks (start-up,
   IPC, cache upkeep), every worker process together (sampled from ``/proc``) and the driver;
   from the workers' CPU per scene the *idle-equivalent* rate, ``workers x 3600 / CPU per
@@ -30,7 +33,9 @@ write; exactly what ``parse3d dataset build`` runs), then prints:
 The asset pool is the one under ``$PARSE3D_CACHE``: on an empty cache the first scenes also
 generate their assets (run twice to see the cached rate). ``--baseline-rev REV`` builds the
 same scenes with the package of git revision REV (a temporary worktree; its own asset cache
-folder is the same) and prints both columns.
+folder is the same) and prints both columns; ``--rounds N`` builds them alternately N times
+each (now, REV, now, REV, ...) and sums the rounds per column, so that a change in the
+machine's load falls on both columns alike.
 """
 
 from __future__ import annotations
@@ -102,16 +107,21 @@ class _Watch:
     def __init__(self, period: float = 0.25):
         self.period, self.peak, self.rss = period, 0.0, 0.0
         self.cpu: dict[int, float] = {}
+        self.seen: dict[int, tuple[float, float]] = {}  # pid -> (when sampled, VmRSS MB)
         self._stop = threading.Event()
         self._t = threading.Thread(target=self._run, daemon=True)
 
     def sample(self) -> None:
-        now = 0.0
+        now, t = 0.0, time.perf_counter()
         for p in _descendants(os.getpid()):
             rss, hwm, cpu = _proc(p)
             self.peak, now = max(self.peak, hwm), max(now, rss)
             self.cpu[p] = max(self.cpu.get(p, 0.0), cpu)
-        self.rss = now
+            if rss > 0:
+                self.seen[p] = (t, rss)
+        # a worker that ended since the last sample (replaced after --max-tasks scenes, just
+        # after its last one) counts with its last sample
+        self.rss = max([now] + [r for w, r in self.seen.values() if t - w <= 2 * self.period])
 
     def _run(self) -> None:
         while not self._stop.wait(self.period):
@@ -167,8 +177,10 @@ def measure(args) -> dict:
         if (out / "manifest.parquet").exists():
             raise SystemExit(f"{out} already holds a dataset: pass a fresh --out")
         trace: list[tuple[int, float]] = []  # (scenes done, largest worker's RSS now)
+        done_at: list[tuple[float, float]] = []  # (s since the start, the scene's t_total)
 
         def progress(ev) -> None:
+            done_at.append((time.perf_counter() - t0, ev.record.get("t_total") or 0.0))
             if ev.done in marks:
                 watch.sample()
                 trace.append((ev.done, watch.rss))
@@ -184,9 +196,35 @@ def measure(args) -> dict:
         rows = read_manifest(out / "manifest.parquet")
     keys = ("index", "status", "objects", "placed", "contacts",
             *(f"{p}_{s}" for p in ("t", "cpu") for s in (*STAGES, "total")))
+    ends = sorted(t for t, _ in done_at)
+    edges = {
+        # when the first scene began: the driver's preparation and a worker's start-up
+        "first_start": min((t - d for t, d in done_at), default=0.0),
+        # worker-seconds idle at the end: each worker's last scene ends before the last one
+        "tail_idle": sum(ends[-1] - t for t in ends[-args.workers:]) if ends else 0.0,
+        # after the last scene: the last manifest write, stopping the workers
+        "after_last": wall - ends[-1] if ends else 0.0,
+    }
     return {"wall": wall, "workers": args.workers, "startup": start, "peak_rss_mb": watch.peak,
+            "edges": edges,
             "worker_cpu": watch.cpu_seconds, "driver_cpu": driver, "rss_trace": trace,
             "rows": [{k: r.get(k) for k in keys} for r in rows]}
+
+
+def merge(runs: list[dict]) -> dict:
+    """Several runs of the same build as one: walls, CPU and rows summed, the peak the
+    largest, start-up and the RSS trace of the first run."""
+    if len(runs) == 1:
+        return runs[0]
+    out = dict(runs[0])
+    for k in ("wall", "worker_cpu", "driver_cpu"):
+        out[k] = sum(r[k] for r in runs)
+    out["peak_rss_mb"] = max(r["peak_rss_mb"] for r in runs)
+    out["edges"] = {k: sum(r["edges"][k] for r in runs) for k in runs[0]["edges"]}
+    out["rows"] = [row for r in runs for row in r["rows"]]
+    out["round_walls"] = [r["wall"] for r in runs]
+    out["rounds"] = len(runs)
+    return out
 
 
 def _mean(v: list) -> float | None:
@@ -205,7 +243,8 @@ def summarize(res: dict) -> dict:
          "rate": 3600.0 * len(rows) / wall, "wall": wall,
          "placed": statistics.mean(r["placed"] or 0 for r in ok) if ok else 0.0,
          "peak_rss_mb": res["peak_rss_mb"], "startup": res["startup"],
-         "rss_trace": dict(res.get("rss_trace") or [])}
+         "rss_trace": dict(res.get("rss_trace") or []), "edges": res.get("edges") or {},
+         "round_walls": res.get("round_walls") or [wall]}
     for st in STAGES:
         v = [r[f"t_{st}"] or 0.0 for r in ok] or [0.0]
         s[st] = (statistics.mean(v), statistics.median(v), max(v))
@@ -241,9 +280,15 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         print(f"{label:38s}" + "".join(f"{fmt(s if key is None else s[key]):>14s}"
                                         for _, s in cols))
 
+    rounds = now.get("rounds", 1)
+    if rounds > 1:
+        print(f"({rounds} rounds per column, built alternately; scene counts and times are "
+              "their sums)")
     line("scenes (ok/incomplete/failed)", lambda s: f"{s['ok']}/{s['incomplete']}/{s['failed']}")
     line("placed objects per scene", lambda v: f"{v:.1f}", "placed")
     line("wall, s", lambda v: f"{v:.1f}", "wall")
+    if rounds > 1:
+        line("  of each round", lambda v: " ".join(f"{w:.0f}" for w in v), "round_walls")
     line("scenes/hour, wall (goal >= 5,000)", lambda v: f"{v:,.0f}", "rate")
     line("10,000 scenes take, wall", lambda s: _hours(10000 * s["wall"] / max(1, s["scenes"])))
     print("CPU seconds per scene (do not grow with the machine's load)")
@@ -262,6 +307,11 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         line(f"  {st}", lambda v: f"{v:.1f}", f"share_{st}")
     line("  not a stage, in the task", lambda v: f"{v:.1f}", "share_in_task")
     line("  not a stage, outside tasks", lambda v: f"{v:.1f}", "share_outside")
+    print("start and end of the build, wall seconds")
+    line("  first scene began after", lambda e: _opt(".2f")(e.get("first_start")), "edges")
+    line("  workers idle at the end, worker-s", lambda e: _opt(".2f")(e.get("tail_idle")),
+         "edges")
+    line("  after the last scene", lambda e: _opt(".2f")(e.get("after_last")), "edges")
     print("a fresh worker, s")
     line("  imports", lambda v: f"{v['imports']:.2f}", "startup")
     line("  scene source + GL context", lambda v: f"{v['state']:.2f}", "startup")
@@ -276,13 +326,15 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         a, b = cols[0][1], cols[1][1]
         if a["cpu_scene"] > 0 and b["cpu_scene"] > 0:
             print(f"worker CPU per scene, {rev[:10]} / now: {b['cpu_scene'] / a['cpu_scene']:.2f}x")
+        if a["rate"] > 0 and b["rate"] > 0:
+            print(f"wall-clock rate, now / {rev[:10]}: {a['rate'] / b['rate']:.2f}x")
 
 
-def baseline(rev: str, argv: list[str]) -> dict:
-    """This benchmark run with the package of ``rev`` (a temporary git worktree)."""
-    with revision_tree(rev) as wt:
-        res = wt.parent / "result.json"
-        env = {**os.environ, "PYTHONPATH": str(wt / "src")}
+def run_json(argv: list[str], src: Path) -> dict:
+    """This benchmark run once, in a fresh process, with the package under ``src``."""
+    with tempfile.TemporaryDirectory(prefix="parse3d-bench-") as tmp:
+        res = Path(tmp) / "result.json"
+        env = {**os.environ, "PYTHONPATH": str(src)}
         subprocess.run([sys.executable, __file__, *argv, "--_json", str(res)], check=True,
                        env=env, cwd=str(ROOT))
         return json.loads(res.read_text())
@@ -301,28 +353,42 @@ def main() -> None:
                     help="scenes a worker builds before it is replaced (as parse3d dataset "
                          "build --max-tasks); with --workers 1 and --scenes N <= this, one "
                          "worker builds them all and its RSS is traced")
-    ap.add_argument("--out", default=None, help="dataset folder (default: a temporary one)")
+    ap.add_argument("--out", default=None,
+                    help="dataset folder (default: a temporary one); one build only")
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="also build the same scenes with git revision REV, e.g. 4607b75")
+    ap.add_argument("--rounds", type=int, default=1,
+                    help="with --baseline-rev: build both columns this many times, alternately")
     ap.add_argument("--_json", dest="json_out", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.pags:
         args.pags = [str(Path(p).resolve()) for p in args.pags]
+    if args.out and (args.baseline_rev or args.rounds > 1):
+        ap.error("--out builds one dataset: leave it out with --baseline-rev or --rounds")
     print(f"building {args.scenes} scenes ({'PAG files' if args.pags else 'templates'}, "
           f"{args.workers} workers, {args.views} views, {os.cpu_count()} CPU cores) ...",
           flush=True)
-    now = measure(args)
-    if args.json_out:  # the baseline's side
-        Path(args.json_out).write_text(json.dumps(now))
+    if args.scenes < 40 and not args.json_out:
+        print("note: the wall-clock rate of fewer than 40 scenes is mostly start-up and tail")
+    if args.json_out:  # one column's run, in its own process
+        Path(args.json_out).write_text(json.dumps(measure(args)))
         return
     before = None
-    if args.baseline_rev:
+    if not args.baseline_rev:
+        now = merge([measure(args) for _ in range(max(1, args.rounds))])
+    else:
         argv = ["--scenes", str(args.scenes), "--workers", str(args.workers),
                 "--max-tasks", str(args.max_tasks), "--views",
                 str(args.views), "--seed", str(args.seed), "--rooms", args.rooms]
         if args.pags:
             argv += ["--pags", *args.pags]
-        before = baseline(args.baseline_rev, argv)
+        runs: dict[str, list[dict]] = {"now": [], "before": []}
+        with revision_tree(args.baseline_rev) as wt:
+            for r in range(max(1, args.rounds)):
+                print(f"round {r + 1}: this build, then {args.baseline_rev}", flush=True)
+                runs["now"].append(run_json(argv, ROOT / "src"))
+                runs["before"].append(run_json(argv, wt / "src"))
+        now, before = merge(runs["now"]), merge(runs["before"])
     print()
     print_table(now, before, args.baseline_rev)
 

@@ -268,3 +268,66 @@ def test_template_build_with_local_workers(tmp_path):
     assert sorted(r["room_type"] for r in rows) == ["bathroom", "laundry"]
     assert [r["status"] for r in rows] == ["ok", "ok"], [r["reason"] for r in rows]
     assert report is not None
+
+
+def test_scenes_from_worker_processes_match_this_process(reference, pags):
+    """A scene built by a worker forked from the preloaded fork server is byte for byte the
+    one built here, in a process that never forked (timings aside)."""
+    from parse3d.datagen.build import build_scene
+
+    cfg = BuildConfig(scenes=SCENES, seed=7, source=resolve_pag_paths([pags]))
+    for i in (0, 1):
+        here = build_scene(cfg, i)
+        assert here.record["status"] == "ok", here.record["reason"]
+        folder = reference / "scenes" / f"{i:05d}"
+        doc = json.loads(here.files["scene.json"])
+        doc.pop("timings")
+        assert doc == _scene_doc(folder)
+        for name in ("scene.glb", "contacts.json"):
+            assert here.files[name] == (folder / name).read_bytes(), name
+
+
+PROBE = """
+import json, sys
+from parse3d.datagen.executors import WORKER_MODULES, start_context
+
+
+def missing(conn):
+    conn.send([m for m in WORKER_MODULES if m not in sys.modules])
+
+
+if __name__ == "__main__":
+    ctx = start_context()
+    a, b = ctx.Pipe()
+    p = ctx.Process(target=missing, args=(b,))
+    p.start()
+    print(json.dumps({"method": ctx.get_start_method(), "missing": a.recv()}))
+    p.join()
+"""
+
+
+def test_workers_start_with_their_modules_imported(tmp_path):
+    """Local workers fork from a server that imported the stages' modules (none of which
+    the probe's own process imports), so a worker does not import them itself."""
+    import multiprocessing as mp
+
+    if "forkserver" not in mp.get_all_start_methods():
+        pytest.skip("no fork server on this platform: workers are spawned")
+    script = tmp_path / "probe.py"
+    script.write_text(PROBE)
+    res = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                         timeout=300)
+    assert res.returncode == 0, res.stderr
+    assert json.loads(res.stdout.splitlines()[-1]) == {"method": "forkserver", "missing": []}
+
+
+def test_workers_replaced_after_every_scene_give_the_same_scenes(reference, pags, tmp_path):
+    """``max_tasks=1``: every scene in a fresh worker (started while the driver commits the
+    scene before); same scenes and rows as the reference."""
+    cfg = BuildConfig(scenes=4, seed=7, source=resolve_pag_paths([pags]))
+    report = build_dataset(cfg, tmp_path / "ds", workers=2, max_tasks=1)
+    assert (report.ok, report.built) == (4, 4)
+    assert_same_scenes(reference, tmp_path / "ds", range(4))
+    rows = read_manifest(tmp_path / "ds" / "manifest.parquet")
+    ref = read_manifest(reference / "manifest.parquet")[:4]
+    assert [_strip(r) for r in rows] == [_strip(r) for r in ref]

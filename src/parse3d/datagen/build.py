@@ -53,7 +53,7 @@ from .commit import (
     _write_json,
     check_out_folder,
 )
-from .executors import make_executor
+from .executors import make_executor, start_context
 from .manifest import COMMITTED, write_manifest
 from .planning import ScenePlan, plan_scene, scene_folder
 from .sources import (
@@ -201,6 +201,8 @@ def build_dataset(config: BuildConfig, out: str | Path, *, executor: str = "loca
         raise InputError(Problem("", f"--max-tasks must be in 1..1000000, got {max_tasks}",
                                  "--max-tasks", "parameter"))
     check_out_folder(out)
+    if executor == "local":  # the workers' fork server imports their modules meanwhile
+        start_context()
     source = make_source(config)
     rooms = select_rooms(config, source)
     config_run = replace(config, rooms=tuple(rooms))

@@ -7,7 +7,9 @@ workers.
 
 :class:`LocalExecutor`
     ``workers`` processes started through a fork server (so no thread lock of the driver is
-    inherited). Each creates its own OpenGL (EGL) context, builds at most ``max_tasks`` scenes and is then replaced, so memory stays
+    inherited) that has imported the stages' modules once (:data:`WORKER_MODULES`), so a
+    worker starts without importing them again (``spawn`` where the platform has no fork
+    server). Each creates its own OpenGL (EGL) context, builds at most ``max_tasks`` scenes and is then replaced, so memory stays
     bounded over long runs (caches of assets and collision shapes grow with every new asset).
     A worker that dies is replaced and its scene tried once more in the new worker (the death
     may have come from outside: the OOM killer, a signal); a scene whose worker dies twice (a
@@ -35,8 +37,18 @@ from .planning import plan_scene
 from .sources import SceneSource, make_source
 from .task import SceneOutcome, _base_record, build_scene
 
-__all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit"]
+__all__ = ["LocalExecutor", "RayExecutor", "make_executor", "hard_limit", "WORKER_MODULES",
+           "start_context"]
 
+#: The modules a worker's stages import, preloaded by the fork server so that every worker
+#: (and every replacement after ``max_tasks`` scenes) is forked with them already imported.
+#: Importing creates no OpenGL context, SAPIEN scene or Python thread: those are made in the
+#: worker, after the fork.
+WORKER_MODULES = (
+    "parse3d.datagen.task", "parse3d.datagen.memory", "parse3d.pipeline", "parse3d.physics",
+    "parse3d.export", "parse3d.export.gltf", "parse3d.render", "parse3d.assets.generators",
+    "parse3d.assets.loaders", "sapien", "moderngl",
+)
 
 
 def hard_limit(config: BuildConfig) -> float | None:
@@ -103,6 +115,30 @@ def run_task(config: BuildConfig, index: int) -> SceneOutcome:
 
 # --------------------------------------------------------------------------------------------
 # local processes
+
+
+def start_context():
+    """The multiprocessing context of local workers, its fork server started now.
+
+    ``forkserver`` where the platform has it (Linux, macOS): a fresh single-threaded server
+    that imports :data:`WORKER_MODULES` (and the main module, as multiprocessing does by
+    default) while the driver goes on preparing the build; each worker is then forked from
+    it with those modules loaded. ``spawn`` elsewhere (Windows): every worker imports them
+    itself. A fork server already running in this process (started by an earlier build or by
+    other code) is reused as it is; its workers then import what it lacks.
+    """
+    import multiprocessing as mp
+
+    if "forkserver" not in mp.get_all_start_methods():
+        return mp.get_context("spawn")
+    from multiprocessing import forkserver
+
+    ctx = mp.get_context("forkserver")
+    server = forkserver._forkserver
+    if getattr(server, "_forkserver_pid", None) is None:  # not started yet: preload
+        ctx.set_forkserver_preload(["__main__", *WORKER_MODULES])
+    forkserver.ensure_running()
+    return ctx
 
 
 def _worker_main(conn, config: BuildConfig, max_tasks: int, source) -> None:
@@ -181,13 +217,12 @@ class LocalExecutor:
         ``source``: the driver's :class:`SceneSource` of ``config``, handed to the workers
         (None: each worker makes its own).
         """
-        import multiprocessing as mp
         import pickle
         from multiprocessing.connection import wait
 
         # forkserver: workers fork from a fresh single-threaded server, never from a driver that
         # may hold thread locks (a test runner's I/O thread, native thread pools) at fork time
-        ctx = mp.get_context("forkserver")
+        ctx = start_context()
         if source is not None:  # handed over by pickling; a source that cannot be is rebuilt
             try:
                 pickle.dumps(source)
@@ -197,14 +232,28 @@ class LocalExecutor:
         limit = hard_limit(config)
         slots: list[_Slot] = []
         died: dict[int, int] = {}
+        done: list[_Slot] = []  # told to stop, not yet joined
+
+        def fill() -> None:
+            """Start missing workers and hand every idle one its next scene; with nothing
+            left to hand out, tell idle workers to stop (they exit while the others finish).
+            Called before each outcome goes back to the driver, so workers build on while it
+            commits."""
+            while pending and len(slots) < self.workers:
+                slots.append(self._spawn(ctx, config, source))
+            for s in list(slots):
+                if s.index is None and pending:
+                    s.index, s.started = pending.popleft(), time.perf_counter()
+                    s.conn.send(s.index)
+                elif s.index is None:
+                    with contextlib.suppress(BrokenPipeError, OSError):
+                        s.conn.send(None)
+                    slots.remove(s)
+                    done.append(s)
+
         try:
             while pending or any(s.index is not None for s in slots):
-                while pending and len(slots) < self.workers:
-                    slots.append(self._spawn(ctx, config, source))
-                for s in slots:
-                    if s.index is None and pending:
-                        s.index, s.started = pending.popleft(), time.perf_counter()
-                        s.conn.send(s.index)
+                fill()
                 busy = [s for s in slots if s.index is not None]
                 ready = wait([s.conn for s in busy], timeout=0.5)
                 for s in busy:
@@ -236,6 +285,7 @@ class LocalExecutor:
                         self._stop(s, kill=True)
                         slots.remove(s)
                         s.index = None
+                        fill()
                         yield outcome
                         continue
                     if outcome is None:
@@ -244,10 +294,13 @@ class LocalExecutor:
                     if replace:
                         self._stop(s, kill=not s.proc.is_alive())
                         slots.remove(s)
+                    fill()
                     yield outcome
         finally:
             for s in slots:
                 self._stop(s, kill=s.index is not None)
+            for s in done:
+                self._stop(s, kill=False)
 
 
 # --------------------------------------------------------------------------------------------
