@@ -260,3 +260,15 @@ def test_checker_catches_a_wrong_command(args, bad):
     problems = check_parse3d(args)
     assert problems and bad in problems[0]
     assert not check_parse3d(["solve", "x.json", "--seed", "0", "--out", "DIR"])
+
+
+def test_make_bench_runs_scripts_that_exist():
+    import ast
+
+    tree = ast.parse((ROOT / "benchmarks" / "run_all.py").read_text(encoding="utf-8"))
+    benches = next(ast.literal_eval(node.value) for node in tree.body
+                   if isinstance(node, ast.Assign) and getattr(node.targets[0], "id", "") == "BENCHES")
+    missing = [n for n in benches if not (ROOT / "benchmarks" / f"bench_{n}.py").is_file()]
+    assert not missing, f"benchmarks/run_all.py runs scripts that do not exist: {missing}"
+    for name, args in benches.items():
+        assert not [p for p in check_python([f"benchmarks/bench_{name}.py", *args])], name
