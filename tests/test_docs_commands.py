@@ -29,7 +29,7 @@ DOCS = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
 
 _FENCE = re.compile(r"^```(\w*)\s*$")
 _SHELL_TAGS = {"", "bash", "sh", "shell", "console"}
-_INLINE = re.compile(r"`([^`\n]+)`")
+_INLINE = re.compile(r"`([^`]+)`")
 _STARTS = ("parse3d ", ".venv/bin/", "python ", "python3 ", "make ")
 #: Words that stand for a value the reader picks, where a command path could also go.
 _PLACEHOLDERS = {"...", "FILE", "DIR", "RUN", "PAG", "N", "CMD", "COMMAND"}
@@ -93,6 +93,8 @@ def doc_commands() -> list[tuple[str, int, list[str]]]:
         tag: str | None = None
         block: list[str] = []
         start = 0
+        para: list[str] = []  # the lines of the paragraph being read, outside code blocks
+        para_start = 0
         for i, line in enumerate(lines, 1):
             m = _FENCE.match(line.strip())
             if m and tag is None:
@@ -102,7 +104,7 @@ def doc_commands() -> list[tuple[str, int, list[str]]]:
                 if tag in _SHELL_TAGS:
                     logicals: list[str] = []
                     for logical in _logical_lines("\n".join(block)):
-                        if logicals and logical.startswith(("[", "--")):  # a wrapped option list
+                        if logicals and logical.lstrip("'").startswith(("[", "--")):  # a wrapped option list
                             logicals[-1] += " " + logical
                         else:
                             logicals.append(logical)
@@ -114,10 +116,19 @@ def doc_commands() -> list[tuple[str, int, list[str]]]:
             if tag is not None:
                 block.append(line)
                 continue
-            for span in _INLINE.findall(line):
+            if line.strip():
+                if not para:
+                    para_start = i
+                para.append(line.strip())
+                if i < len(lines) and lines[i].strip() and not lines[i].lstrip().startswith("```"):
+                    continue  # the paragraph goes on: a code span may wrap onto the next line
+            text = "\n".join(para)
+            for m in _INLINE.finditer(text):
+                span = m.group(1).replace("\n", " ")
                 if span.startswith(_STARTS) and not span.startswith("python -c"):
                     for cmd in _split_commands(span):
-                        found.append((doc.name, i, cmd))
+                        found.append((doc.name, para_start + text.count("\n", 0, m.start()), cmd))
+            para = []
     return found
 
 
