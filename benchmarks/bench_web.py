@@ -168,8 +168,10 @@ def main() -> int:
             only = set(args.only.split(","))
             if "paint" in only:
                 fcp, ready = first_paint(browser, url, args.runs)
-                print(f"first paint: first contentful paint median {statistics.median(fcp):.0f} ms "
-                      f"(max {max(fcp):.0f}), ready median {statistics.median(ready):.0f} ms "
+                paint = (f"first contentful paint median {statistics.median(fcp):.0f} ms "
+                         f"(max {max(fcp):.0f}, {len(fcp)} of {args.runs} loads had one)" if fcp
+                         else "no paint entry in any load (headless Chromium composited no frame)")
+                print(f"first paint: {paint}, ready median {statistics.median(ready):.0f} ms "
                       f"(max {max(ready):.0f}) over {args.runs} fresh loads   [goal <= 2000 ms]")
 
             page = open_page(browser, url, os.environ.get("BENCH_WEB_QUERY", ""))

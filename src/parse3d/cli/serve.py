@@ -28,7 +28,7 @@ def register(app: typer.Typer) -> None:
 
         Example:
 
-            parse3d serve --port 8765 --workdir my-rooms --open
+            mkdir -p my-rooms && parse3d serve --port 8765 --workdir my-rooms --open
         """
         try:
             import uvicorn
