@@ -1,0 +1,194 @@
+"""Physics guidance while denoising: the objects' collision pieces pushed out of each other.
+
+What the layout models get wrong is not a centimetre here and there: on held-out scenes the
+pairs that interpenetrate by more than 1 cm do so by 10 cm (median), a book sunk into its shelf
+board, a pillow into the mattress, a nightstand into the bed. The network's clean-pose estimate
+is that far off, and no sampler setting changes it (more denoising steps, raw weights instead
+of EMA, no clipping, the assets' real scales, upright rotations: all within a few points of
+the collision rate). PhyScene's answer is guidance: during the last denoising steps, the
+estimate of the clean layout is moved down the gradient of a physical penalty, and the noise
+estimate is made consistent with the moved estimate, so the sampler continues from a layout
+that does not interpenetrate.
+
+The penalty here is on the objects' own collision geometry, which the sampler knows (each
+object's asset): every convex collision piece of every asset as a box in the asset's frame,
+scaled, turned and moved with the object to an axis-aligned world box. For every pair of
+objects whose piece boxes overlap, each of the six directions (up, down, sideways) has the
+move that clears every overlapping pair of their pieces; the pair's objects move apart along
+the shortest one, the larger object by less (inverse to volume), and a direction that would
+push either of them out of the room costs four times what it would leave. Boxes of pieces, not of whole objects: a book between a bookcase's
+boards overlaps none of them, one sunk into a board is lifted out of it onto the board. The
+room penalty moves an object back inside the room's bounding box and its footprint (an
+L-shaped room's inner corner included). The displacements of all pairs are summed and damped
+by half, and the pass is repeated ``passes`` times per guided step; its result is the negative
+gradient step of the sum of squared minimum-translation depths, with a step size that makes a
+single pair separate in one pass.
+
+The guidance uses no PAG relation: it is the same for the PAG-conditioned and the
+unconditioned rows (``SampleOptions.guide``). It runs inside the sampler; the random baseline,
+which has no denoising steps, does not get it, but ``eval --guide`` also reports the random
+poses after the same number of passes as a control.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..assets.model import Asset
+from .pose import room_box, rotation_from_6d
+
+__all__ = ["PieceBoxes", "piece_boxes", "guide_push", "guide_poses", "PASSES"]
+
+#: Passes of :func:`guide_push` per guided denoising step.
+PASSES = 4
+_DAMP = 0.5
+#: Overlaps shallower than this (m) are left alone (the collision metric counts 1 cm).
+_SLACK = 0.001
+#: Cost per metre that a move would take an object out of the room's box.
+_BLOCKED = 4.0
+
+
+class PieceBoxes:
+    """The collision pieces of a scene's assets as boxes in each asset's frame.
+
+    Attributes
+    ----------
+    lo, hi : (M, 3) float
+        Bounds of every piece, asset frame, unscaled.
+    owner : (M,) int
+        The object each piece belongs to.
+    extents : (N, 3) float
+        Each asset's extents (for the equal-volume scale of a generated size).
+    """
+
+    def __init__(self, assets: list[Asset]):
+        from ..physics.collision import asset_collision
+
+        lo, hi, owner = [], [], []
+        for k, a in enumerate(assets):
+            b = np.asarray(asset_collision(a).pieces.bounds, float).reshape(-1, 2, 3)
+            lo.append(b[:, 0])
+            hi.append(b[:, 1])
+            owner.append(np.full(len(b), k))
+        self.lo = np.concatenate(lo) if lo else np.zeros((0, 3))
+        self.hi = np.concatenate(hi) if hi else np.zeros((0, 3))
+        self.owner = np.concatenate(owner).astype(int) if owner else np.zeros(0, int)
+        self.extents = np.array([np.maximum(a.extents, 1e-4) for a in assets], float).reshape(-1, 3)
+
+    def scales(self, poses: np.ndarray) -> np.ndarray:
+        """(N,) the uniform scale of equal volume of every asset and its generated size (as the
+        assets are placed), clipped to the sampler's range."""
+        from .sample import SCALE_RANGE
+
+        size = np.maximum(np.asarray(poses, float)[:, 3:6], 1e-3)
+        return np.clip(np.cbrt(np.prod(size, 1) / np.prod(self.extents, 1)), *SCALE_RANGE)
+
+    def world(self, poses: np.ndarray, scales: np.ndarray | None = None
+              ) -> tuple[np.ndarray, np.ndarray]:
+        """(M, 3) world centres and half extents of the pieces' axis-aligned boxes."""
+        p = np.asarray(poses, float)
+        s = self.scales(p) if scales is None else np.asarray(scales, float)
+        R = rotation_from_6d(p[:, 6:12])[self.owner]
+        sc = s[self.owner][:, None]
+        c_loc = 0.5 * (self.lo + self.hi) * sc
+        h_loc = 0.5 * (self.hi - self.lo) * sc
+        centre = np.einsum("mij,mj->mi", R, c_loc) + p[self.owner, :3]
+        half = np.einsum("mij,mj->mi", np.abs(R), h_loc)
+        return centre, half
+
+
+def piece_boxes(assets: list[Asset]) -> PieceBoxes:
+    """:class:`PieceBoxes` of ``assets`` (one per object, in order)."""
+    return PieceBoxes(assets)
+
+
+def _room_push(lo: np.ndarray, hi: np.ndarray, footprint: np.ndarray, height: float
+               ) -> np.ndarray:
+    """(N, 3) moves that bring every object's box back into the room (where it fits)."""
+    import shapely
+    from shapely.geometry import Polygon
+
+    rlo, rhi = room_box(footprint, height)
+    fits = (hi - lo) <= (rhi - rlo)
+    d = np.where(fits, np.maximum(rlo - lo, 0) - np.maximum(hi - rhi, 0), 0.0)
+    poly = Polygon(footprint)
+    if abs(poly.area - float(np.prod((rhi - rlo)[:2]))) < 1e-9:
+        return d  # a rectangular room: its box is the room
+    # plan corners outside a non-rectangular footprint: towards the nearest boundary point
+    nlo, nhi = lo + d, hi + d
+    corners = np.stack([np.c_[nlo[:, 0], nlo[:, 1]], np.c_[nhi[:, 0], nlo[:, 1]],
+                        np.c_[nhi[:, 0], nhi[:, 1]], np.c_[nlo[:, 0], nhi[:, 1]]], 1)
+    flat = corners.reshape(-1, 2)
+    inside = shapely.contains_xy(poly, flat[:, 0], flat[:, 1]).reshape(-1, 4)
+    ring = poly.exterior
+    for i in np.flatnonzero(~inside.all(1)):
+        if not fits[i, :2].all():
+            continue
+        mv = np.zeros(2)
+        for c in corners[i][~inside[i]]:
+            q = ring.interpolate(ring.project(shapely.Point(c)))
+            v = np.array([q.x, q.y]) - c
+            mv = np.where(np.abs(v) > np.abs(mv), v, mv)
+        d[i, :2] += mv
+    return d
+
+
+def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float,
+               scales: np.ndarray | None = None) -> np.ndarray:
+    """(N, 3) world displacements of one guidance pass over (N, 12) world poses.
+
+    Every pair of objects whose piece boxes overlap (more than 1 mm) moves apart along the
+    minimum translation of its deepest overlapping pair of pieces, shared inversely to the
+    objects' volumes; the sum over pairs is damped by half; then every object is brought back
+    inside the room (see the module docstring).
+    """
+    p = np.asarray(poses, float)
+    n = len(p)
+    c, h = boxes.world(p, scales)
+    lo, hi = c - h, c + h
+    own = boxes.owner
+    olo = np.full((n, 3), np.inf)
+    ohi = np.full((n, 3), -np.inf)
+    np.minimum.at(olo, own, lo)
+    np.maximum.at(ohi, own, hi)
+    empty = ~np.isfinite(olo).all(1)
+    olo[empty], ohi[empty] = p[empty, :3], p[empty, :3]
+    d = np.zeros((n, 3))
+    rlo, rhi = room_box(footprint, height)
+    vol = np.prod(np.maximum(ohi - olo, 1e-3), 1)
+    # objects whose boxes overlap, then their pieces
+    ov = np.all((olo[:, None] < ohi[None]) & (olo[None] < ohi[:, None]), axis=2)
+    ia, ib = np.nonzero(np.triu(ov, 1))
+    if len(ia):
+        idx = [np.flatnonzero(own == k) for k in range(n)]
+        for a, b in zip(ia, ib, strict=True):
+            pa, pb = idx[a], idx[b]
+            la, ha, lb, hb = lo[pa][:, None], hi[pa][:, None], lo[pb][None], hi[pb][None]
+            # moves of a that clear b: + along an axis (hb - la) or - (ha - lb)
+            plus, minus = hb - la, ha - lb
+            hit = np.all((plus > _SLACK) & (minus > _SLACK), axis=2)
+            if not hit.any():
+                continue
+            # per direction, the move that clears every overlapping pair of pieces
+            need = np.concatenate([plus, minus], axis=2)[hit].max(0)  # (6,)
+            wa = vol[b] / (vol[a] + vol[b])
+            u = np.concatenate([np.eye(3), -np.eye(3)])  # (6, 3) directions of a
+            ma, mb = u * (need * wa)[:, None], -u * (need * (1.0 - wa))[:, None]
+            # a direction that would push either object out of the room costs what it leaves
+            out = (np.maximum(rlo - (olo[a] + ma), 0) + np.maximum(ohi[a] + ma - rhi, 0)
+                   + np.maximum(rlo - (olo[b] + mb), 0) + np.maximum(ohi[b] + mb - rhi, 0))
+            k = int(np.argmin(need + _BLOCKED * out.sum(1)))
+            d[a] += ma[k]
+            d[b] += mb[k]
+        d *= _DAMP
+    return d + _room_push(olo + d, ohi + d, footprint, height)
+
+
+def guide_poses(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float, *,
+                passes: int = PASSES, scales: np.ndarray | None = None) -> np.ndarray:
+    """(N, 12) world poses after ``passes`` passes of :func:`guide_push` (objects move alone):
+    the control the random baseline gets in ``eval --guide``."""
+    out = np.array(poses, float, copy=True)
+    for _ in range(passes):
+        out[:, :3] += guide_push(out, boxes, footprint, height, scales)
+    return out
