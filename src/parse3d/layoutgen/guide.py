@@ -40,7 +40,7 @@ from .pose import room_box, rotation_from_6d
 __all__ = ["PieceBoxes", "piece_boxes", "guide_push", "guide_poses", "PASSES"]
 
 #: Passes of :func:`guide_push` per guided denoising step.
-PASSES = 4
+PASSES = 8
 _DAMP = 0.5
 #: Overlaps shallower than this (m) are left alone (the collision metric counts 1 cm).
 _SLACK = 0.001

@@ -284,10 +284,14 @@ def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
     poses = generate_poses(run, cat_list, drawn, rels, fp, pag.room.height, seed=seed,
                            options=options)
     t1 = time.perf_counter()
-    scene = layout_scene(pag, ids, cat_list, poses, seed=seed, meta={
+    placed: dict = {}
+    if options.guide > 0:  # the assets the guidance kept apart, not a better fitting slot
+        placed = {"assets": drawn, "scales": list(piece_boxes(drawn).scales(poses))}
+    scene = layout_scene(pag, ids, cat_list, poses, seed=seed, **placed, meta={
         "generator": "layoutgen", "run": run.name, "run_step": run.step,
         "cond": run.config.cond if options.cond else "none", "guidance": options.guidance,
-        "sample_steps": options.steps}, separate=options.separate > 0, fit=options.fit)
+        "sample_steps": options.steps, **({"guide": options.guide} if options.guide else {})},
+        separate=options.separate > 0, fit=options.fit)
     scene.timings["generate"] = round(t1 - t0, 4)
     scene.timings["assets"] = round(time.perf_counter() - t1, 4)
     return scene
