@@ -16,11 +16,14 @@ scaled, turned and moved with the object to an axis-aligned world box. For every
 objects whose piece boxes overlap, each of the six directions (up, down, sideways) has the
 move that clears every overlapping pair of their pieces; the pair's objects move apart along
 the shortest one, the larger object by less (inverse to volume), and a direction that would
-push either of them out of the room costs four times what it would leave. Boxes of pieces, not of whole objects: a book between a bookcase's
+push either of them out of the room costs four times what it would leave; one that would lift
+an object standing on the floor is taken only when no other is left (a chair in a desk goes
+sideways, not onto it). Boxes of pieces, not of whole objects: a book between a bookcase's
 boards overlaps none of them, one sunk into a board is lifted out of it onto the board. The
 room penalty moves an object back inside the room's bounding box and its footprint (an
 L-shaped room's inner corner included). The displacements of all pairs are summed and damped
-by half, and the pass is repeated ``passes`` times per guided step; its result is the negative
+by half, and the pass is repeated per guided step until nothing moves (at most
+:data:`PASSES` times); its result is the negative
 gradient step of the sum of squared minimum-translation depths, with a step size that makes a
 single pair separate in one pass.
 
@@ -37,15 +40,22 @@ import numpy as np
 from ..assets.model import Asset
 from .pose import room_box, rotation_from_6d
 
-__all__ = ["PieceBoxes", "piece_boxes", "guide_push", "guide_poses", "PASSES"]
+__all__ = ["PieceBoxes", "piece_boxes", "grounded", "guide_push", "guide_poses", "PASSES",
+           "still"]
 
-#: Passes of :func:`guide_push` per guided denoising step.
-PASSES = 8
+#: Passes of :func:`guide_push` per guided denoising step, at most (they stop once nothing
+#: moves by more than :data:`_STILL`).
+PASSES = 16
+_STILL = 1e-4
 _DAMP = 0.5
 #: Overlaps shallower than this (m) are left alone (the collision metric counts 1 cm).
 _SLACK = 0.001
 #: Cost per metre that a move would take an object out of the room's box.
 _BLOCKED = 4.0
+#: Cost per metre of lifting an object that stands on the floor: only when nothing else is left.
+_GROUNDED = 1e3
+#: An object whose lowest point is this close to the floor (m) stands on it.
+_ON_FLOOR = 0.02
 
 
 class PieceBoxes:
@@ -133,14 +143,26 @@ def _room_push(lo: np.ndarray, hi: np.ndarray, footprint: np.ndarray, height: fl
     return d
 
 
+def grounded(poses: np.ndarray, boxes: PieceBoxes, scales: np.ndarray | None = None
+             ) -> np.ndarray:
+    """(N,) bool: the objects whose lowest piece is within 2 cm of the floor."""
+    c, h = boxes.world(poses, scales)
+    low = np.full(len(poses), np.inf)
+    np.minimum.at(low, boxes.owner, c[:, 2] - h[:, 2])
+    return low < _ON_FLOOR
+
+
 def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float,
-               scales: np.ndarray | None = None) -> np.ndarray:
+               scales: np.ndarray | None = None, ground: np.ndarray | None = None
+               ) -> np.ndarray:
     """(N, 3) world displacements of one guidance pass over (N, 12) world poses.
 
     Every pair of objects whose piece boxes overlap (more than 1 mm) moves apart along the
     minimum translation of its deepest overlapping pair of pieces, shared inversely to the
     objects' volumes; the sum over pairs is damped by half; then every object is brought back
-    inside the room (see the module docstring).
+    inside the room (see the module docstring). ``ground``: the objects that stand on the floor
+    and are not to be lifted (default: :func:`grounded` of ``poses``; a series of passes fixes
+    it at its start, so that a lifted object does not stop counting as grounded).
     """
     p = np.asarray(poses, float)
     n = len(p)
@@ -153,6 +175,9 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
     np.maximum.at(ohi, own, hi)
     empty = ~np.isfinite(olo).all(1)
     olo[empty], ohi[empty] = p[empty, :3], p[empty, :3]
+    if ground is None:
+        ground = grounded(p, boxes, scales)
+    ground = np.asarray(ground, float)
     d = np.zeros((n, 3))
     rlo, rhi = room_box(footprint, height)
     vol = np.prod(np.maximum(ohi - olo, 1e-3), 1)
@@ -177,11 +202,18 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
             # a direction that would push either object out of the room costs what it leaves
             out = (np.maximum(rlo - (olo[a] + ma), 0) + np.maximum(ohi[a] + ma - rhi, 0)
                    + np.maximum(rlo - (olo[b] + mb), 0) + np.maximum(ohi[b] + mb - rhi, 0))
-            k = int(np.argmin(need + _BLOCKED * out.sum(1)))
+            # lifting what stands on the floor leaves it hanging in the air: as costly
+            lift = np.maximum(ma[:, 2], 0) * ground[a] + np.maximum(mb[:, 2], 0) * ground[b]
+            k = int(np.argmin(need + _BLOCKED * out.sum(1) + _GROUNDED * lift))
             d[a] += ma[k]
             d[b] += mb[k]
         d *= _DAMP
     return d + _room_push(olo + d, ohi + d, footprint, height)
+
+
+def still(d: np.ndarray) -> bool:
+    """Whether a pass's displacements ``d`` are all negligible (the passes may stop)."""
+    return bool(np.abs(d).max(initial=0.0) < _STILL)
 
 
 def guide_poses(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float, *,
@@ -189,6 +221,10 @@ def guide_poses(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, hei
     """(N, 12) world poses after ``passes`` passes of :func:`guide_push` (objects move alone):
     the control the random baseline gets in ``eval --guide``."""
     out = np.array(poses, float, copy=True)
+    ground = grounded(out, boxes, scales)
     for _ in range(passes):
-        out[:, :3] += guide_push(out, boxes, footprint, height, scales)
+        d = guide_push(out, boxes, footprint, height, scales, ground)
+        out[:, :3] += d
+        if still(d):
+            break
     return out

@@ -27,7 +27,7 @@ from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .data import graph_arrays, pag_relations, support_parents
-from .guide import PASSES, guide_push, piece_boxes
+from .guide import PASSES, grounded, guide_push, piece_boxes, still
 from .pose import denormalise_poses, room_box, rotation_from_6d
 from .separate import box_push
 from .train import LayoutRun, make_scheduler, scene_tensors
@@ -65,7 +65,7 @@ class SampleOptions:
     guide : int
         Physics guidance (:mod:`.guide`): in the last ``guide`` denoising steps the estimate
         of the clean poses is moved so that the objects' collision pieces do not overlap and
-        stay in the room (:data:`.guide.PASSES` passes per step), and the noise estimate is
+        stay in the room (up to :data:`.guide.PASSES` passes per step), and the noise estimate is
         made consistent with it; 0 (default) samples without it. No PAG relation is used.
     """
 
@@ -140,9 +140,15 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
 
     def guide(x0: np.ndarray) -> np.ndarray:
         """The physics guidance passes of one step (:mod:`.guide`) on normalised poses."""
+        ground = None
         for _ in range(PASSES):
             world = denormalise_poses(x0, footprint, height, run.stats, parents)
-            x0 = moved(x0, world, guide_push(world, boxes, footprint, height))
+            if ground is None:
+                ground = grounded(world, boxes)
+            d = guide_push(world, boxes, footprint, height, ground=ground)
+            x0 = moved(x0, world, d)
+            if still(d):
+                break
         return x0
 
     def last(k: int) -> set[int]:
