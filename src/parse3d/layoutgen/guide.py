@@ -45,7 +45,7 @@ __all__ = ["PieceBoxes", "piece_boxes", "grounded", "guide_push", "guide_poses",
 
 #: Passes of :func:`guide_push` per guided denoising step, at most (they stop once nothing
 #: moves by more than :data:`_STILL`).
-PASSES = 16
+PASSES = 48
 _STILL = 1e-4
 _DAMP = 0.5
 #: Overlaps shallower than this (m) are left alone (the collision metric counts 1 cm).
