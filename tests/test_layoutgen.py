@@ -657,7 +657,7 @@ def test_guided_sampling_ends_on_the_guided_estimate(dataset):
     assert np.abs(guided[:, 3:] - plain[:, 3:]).max() < 1e-4  # only translations move
 
 
-def test_eval_with_guidance_has_a_random_control_row(run_dir, dataset):
+def test_eval_with_guidance_has_a_random_control_row(run_dir, dataset, tmp_path):
     run = load_run(run_dir)
     files = sorted((dataset / "scenes").glob("*/scene.json"))[:1]
     res = evaluate([run], files, seeds=1, physics=False, sample_steps=5, previews=0, guide=2)
@@ -667,3 +667,9 @@ def test_eval_with_guidance_has_a_random_control_row(run_dir, dataset):
     assert res.rows[2].mean_std("outside")[0] == 0.0
     for r in res.rows[3:]:
         assert r.mean_std("outside")[0] == 0.0
+    # the CLI: a guided sample places the assets the guidance saw, inside the room
+    out = tmp_path / "guided"
+    assert _rc(["layout", "sample", str(run_dir), "--pag", str(_write(tmp_path, PAGS[1])),
+                "--out", str(out), "--sample-steps", "5", "--guide", "2"]) == 0
+    sc = read_scene(out)
+    assert sc.meta["guide"] == 2 and outside_room(sc) == []
