@@ -21,11 +21,13 @@ an object standing on the floor is taken only when no other is left (a chair in 
 sideways, not onto it). Boxes of pieces, not of whole objects: a book between a bookcase's
 boards overlaps none of them, one sunk into a board is lifted out of it onto the board. The
 room penalty moves an object back inside the room's bounding box and its footprint (an
-L-shaped room's inner corner included). The displacements of all pairs are summed and damped
-by half, and the pass is repeated per guided step until nothing moves (at most
-:data:`PASSES` times); its result is the negative
-gradient step of the sum of squared minimum-translation depths, with a step size that makes a
-single pair separate in one pass.
+L-shaped room's inner corner included). The pairs are resolved one after the other, each
+seeing the moves of those before it (summing the moves of all pairs at once lets two
+neighbours pushing one object from both sides cancel out, and leaves it stuck in both), and
+the pass is repeated per guided step until nothing moves (at most
+:data:`PASSES` times); each pair's move is the
+gradient step of its squared depth along that direction, with the step size that separates
+the pair in one move.
 
 The guidance uses no PAG relation: it is the same for the PAG-conditioned and the
 unconditioned rows (``SampleOptions.guide``). It runs inside the sampler; the random baseline,
@@ -47,7 +49,6 @@ __all__ = ["PieceBoxes", "piece_boxes", "grounded", "guide_push", "guide_poses",
 #: moves by more than :data:`_STILL`).
 PASSES = 48
 _STILL = 1e-4
-_DAMP = 0.5
 #: Overlaps shallower than this (m) are left alone (the collision metric counts 1 cm).
 _SLACK = 0.001
 #: Cost per metre that a move would take an object out of the room's box.
@@ -157,10 +158,10 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
                ) -> np.ndarray:
     """(N, 3) world displacements of one guidance pass over (N, 12) world poses.
 
-    Every pair of objects whose piece boxes overlap (more than 1 mm) moves apart along the
-    minimum translation of its deepest overlapping pair of pieces, shared inversely to the
-    objects' volumes; the sum over pairs is damped by half; then every object is brought back
-    inside the room (see the module docstring). ``ground``: the objects that stand on the floor
+    Every pair of objects whose piece boxes overlap (more than 1 mm), in turn, moves apart
+    along the cheapest direction that clears all their overlapping pieces, shared inversely
+    to the objects' volumes; a pair sees the moves of the pairs before it. Then every object
+    is brought back inside the room (see the module docstring). ``ground``: the objects that stand on the floor
     and are not to be lifted (default: :func:`grounded` of ``poses``; a series of passes fixes
     it at its start, so that a lifted object does not stop counting as grounded).
     """
@@ -205,9 +206,13 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
             # lifting what stands on the floor leaves it hanging in the air: as costly
             lift = np.maximum(ma[:, 2], 0) * ground[a] + np.maximum(mb[:, 2], 0) * ground[b]
             k = int(np.argmin(need + _BLOCKED * out.sum(1) + _GROUNDED * lift))
-            d[a] += ma[k]
-            d[b] += mb[k]
-        d *= _DAMP
+            for o, m in ((a, ma[k]), (b, mb[k])):  # resolved now: later pairs see it moved
+                lo[idx[o]] += m
+                hi[idx[o]] += m
+                olo[o] += m
+                ohi[o] += m
+                d[o] += m
+        olo, ohi = olo - d, ohi - d
     return d + _room_push(olo + d, ohi + d, footprint, height)
 
 
