@@ -11,7 +11,9 @@ volume scale) and measures the layout as ``eval --no-physics`` does. Per variant
 prints the collision rate, the colliding pairs per scene split by what they are to the PAG
 (one carries the other, siblings on one support, both on the room, other), how deep they are
 (quartiles and the share under 3 cm: cm-off contacts or objects inside each other), and the
-support, relation and outside rates. Variants:
+support, relation and outside rates; then, per model variant, how far the scale taken from
+the generated size is from the dataset's and how far the rotations tilt from upright (sampled
+again, outside the CPU figures). Variants:
 
 - ``plain``: the sampler as ``eval`` runs it;
 - ``steps=N``: N denoising steps (the paper samples with all 1000);
@@ -116,6 +118,7 @@ def main() -> None:
           "| depth quartiles (cm) | < 3 cm | support_rate | relations | relations_spatial "
           "| outside | CPU s |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    extra: list[str] = []
     for variant in args.variants.split(","):
         model = not (variant == "solver" or variant.startswith("random"))
         for run in (runs if model else [None]):
@@ -137,6 +140,17 @@ def main() -> None:
                 rel.append(m.relations)
                 sp.append(m.relations_spatial)
                 out.append(m.outside)
+            cpu = time.process_time() - t0
+            if model:  # how far the generated scale and rotation are from the dataset's
+                errs, tilts = [], []
+                for ls in scenes:
+                    p, scales = poses_for(variant, run, ls)
+                    errs += list(np.abs(np.log(np.asarray(equal_volume(ls, p)) / ls.scales)))
+                    up = np.clip(rotation_from_6d(p[:, 6:12])[:, 2, 2], -1.0, 1.0)
+                    tilts += list(np.degrees(np.arccos(up)))
+                extra.append(f"{variant} {run.name}: |log(scale / dataset scale)| median "
+                             f"{np.median(errs):.3f}, 90th percentile {np.percentile(errs, 90):.3f}; "
+                             f"tilt from upright median {np.median(tilts):.2f} deg")
             n = max(len(scenes), 1)
             d = np.array(depths)
             q = " / ".join(f"{x * 100:.1f}" for x in np.percentile(d, [25, 50, 75])) if len(d) else "-"
@@ -144,7 +158,9 @@ def main() -> None:
                   f"| {np.mean(pairs):.1f} | " + " | ".join(f"{by[k] / n:.1f}" for k in kinds)
                   + f" | {q} | {np.mean(d < 0.03) if len(d) else 0:.2f} | {np.nanmean(sup):.3f} "
                   f"| {np.nanmean(rel):.3f} | {np.nanmean(sp):.3f} | {np.mean(out):.3f} "
-                  f"| {time.process_time() - t0:.0f} |", flush=True)
+                  f"| {cpu:.0f} |", flush=True)
+    print()
+    print("\n".join(extra))
 
 
 if __name__ == "__main__":
