@@ -612,6 +612,46 @@ def test_guidance_separates_collision_pieces_and_keeps_the_room(dataset):
     assert abs(scene.objects["mug"].world_bounds(settled=False)[0, 2] - top) < 0.01
 
 
+def test_pag_guidance_lifts_children_onto_parents_and_parts_siblings_on_them(dataset):
+    """The PAG-conditioned guidance on real assets: a mug and a book both sunk 4 cm into the
+    desk top and into each other are lifted onto the top (not stacked: siblings part within
+    their support surface, still over the desk), and the desk, pushed out of the chair,
+    carries them along."""
+    from parse3d.layoutgen.guide import guide_poses, pag_supports, piece_boxes
+
+    ls = next(s for s in data.load_dataset(dataset) if s.pag.name.startswith("desk-wall"))
+    pag = PAG.from_dict(json.loads((ls.path / "scene.json").read_text())["pag"])
+    k = {o: i for i, o in enumerate(ls.object_ids)}
+    sup = pag_supports(ls.relations, len(k))
+    assert sup[k["mug"]] == k["desk"] and sup[k["book"]] == k["desk"] and sup[k["desk"]] == -1
+    p = (ls.poses if ls.solved_poses is None else ls.solved_poses).copy()
+    bad = p.copy()
+    bad[k["mug"], 2] -= 0.04
+    bad[k["book"], :2] = bad[k["mug"], :2] + [0.02, 0.0]
+    bad[k["book"], 2] = bad[k["mug"], 2] + 0.01
+    boxes = piece_boxes(ls.assets)
+    got = guide_poses(bad, boxes, ls.footprint, ls.height, passes=16, scales=ls.scales,
+                      supports=sup)
+    scene = layout_scene(pag, ls.object_ids, ls.categories, got, seed=0, assets=ls.assets,
+                         scales=list(ls.scales))
+    assert collisions(scene) == [] and outside_room(scene) == []
+    desk = scene.objects["desk"].world_bounds(settled=False)
+    for oid in ("mug", "book"):
+        b = scene.objects[oid].world_bounds(settled=False)
+        assert abs(b[0, 2] - desk[1, 2]) < 0.01, oid  # on the top, not on each other
+        c = b.mean(0)[:2]
+        assert (desk[0, :2] <= c).all() and (c <= desk[1, :2]).all(), oid  # over the desk
+    # the chair driven into the desk: the desk moves out of it with what it carries
+    bad = p.copy()
+    bad[[k["desk"], k["mug"], k["book"]], 1] += 0.5  # off the wall, free to move
+    bad[k["chair"], :2] = bad[k["desk"], :2] + [0.2, 0.1]
+    got = guide_poses(bad, boxes, ls.footprint, ls.height, passes=16, scales=ls.scales,
+                      supports=sup)
+    moved = got[:, :3] - bad[:, :3]
+    assert np.abs(moved[k["desk"]]).max() > 1e-3
+    assert np.allclose(moved[k["mug"]], moved[k["desk"]]) and \
+        np.allclose(moved[k["book"]], moved[k["desk"]])
+
 def test_guided_sampling_ends_on_the_guided_estimate(dataset):
     """Guidance inside the sampler: a 'network' that knows one colliding layout exactly gives
     it back without guidance and a layout without collisions with it (the noise estimate is

@@ -434,12 +434,14 @@ def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0,
     w = "" if guidance == 1.0 else f", guidance {guidance:g}"
     sep = ("" if separate <= 0 else f", separated {separate}") + \
         ("" if guide <= 0 else f", guided {guide}")
+    # conditioned on the PAG, the guidance uses it too (:mod:`.guide`); unconditioned, not
+    psep = sep if guide <= 0 or guidance == 0.0 else sep.replace("guided", "PAG-guided")
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True, False,
+            rows.append((f"PAG-conditioned ({run.name}{w}{psep})", "pag", run, True, False,
                          False))
             if fit:
-                rows.append((f"PAG-conditioned ({run.name}{w}{sep}, relation-aware)", "pag",
+                rows.append((f"PAG-conditioned ({run.name}{w}{psep}, relation-aware)", "pag",
                              run, True, True, False))
             if run.config.cond_dropout > 0:
                 rows.append((f"unconditioned ({run.name}, condition dropped{sep})", "none", run,

@@ -29,8 +29,20 @@ the pass is repeated per guided step until nothing moves (at most
 gradient step of its squared depth along that direction, with the step size that separates
 the pair in one move.
 
-The guidance uses no PAG relation: it is the same for the PAG-conditioned and the
-unconditioned rows (``SampleOptions.guide``). It runs inside the sampler; the random baseline,
+The PAG-conditioned sampler guides with its condition, as classifier guidance steers with
+the class (``supports``, the ``ON``/``IN`` parent of every object, :func:`pag_supports`):
+
+- a child overlapping the object that carries it moves alone, up along the support normal
+  onto the parent's surface, or sideways only as far as it stays over the parent (never off
+  it, never down through it);
+- siblings on one support move apart within the support surface (sideways only), each kept
+  over the parent;
+- a supported object is not lifted or lowered off its support by any other pair (as one
+  standing on the floor);
+- an object carries what it supports: a nightstand pushed out of the bed takes its lamp.
+
+The unconditioned rows (and a ``pag`` run sampled with its condition dropped) never see the
+PAG: they get the PAG-free push above (``supports`` None). It runs inside the sampler; the random baseline,
 which has no denoising steps, does not get it, but ``eval --guide`` also reports the random
 poses after the same number of passes as a control.
 """
@@ -43,7 +55,7 @@ from ..assets.model import Asset
 from .pose import room_box, rotation_from_6d
 
 __all__ = ["PieceBoxes", "piece_boxes", "grounded", "guide_push", "guide_poses", "PASSES",
-           "still"]
+           "still", "pag_supports"]
 
 #: Passes of :func:`guide_push` per guided denoising step, at most (they stop once nothing
 #: moves by more than :data:`_STILL`).
@@ -153,9 +165,45 @@ def grounded(poses: np.ndarray, boxes: PieceBoxes, scales: np.ndarray | None = N
     return low < _ON_FLOOR
 
 
+def pag_supports(relations, n: int) -> np.ndarray:
+    """(n,) the object each object stands ``ON`` or is ``IN`` (-1: none, the room, or carried
+    another way), from the PAG's relations (:class:`.data.RelationSpec`): the object's first
+    support relation, as :func:`.data.support_parents` reads it."""
+    from .data import support_parents
+
+    parents = support_parents(relations, n)
+    first: dict[int, str] = {}
+    for r in relations:
+        if r.relation in ("ON", "IN", "HANGING_BELOW", "SECURED_TO"):
+            first.setdefault(r.child, r.relation)
+    for k in range(n):
+        if first.get(k) not in ("ON", "IN"):
+            parents[k] = -1
+    return parents
+
+
+def _carried(supports: np.ndarray) -> list[list[int]]:
+    """Per object, itself and every object it carries (its support subtree)."""
+    n = len(supports)
+    kids: list[list[int]] = [[] for _ in range(n)]
+    for k, p in enumerate(supports):
+        if p >= 0:
+            kids[int(p)].append(k)
+    out = []
+    for k in range(n):
+        seen, todo = [], [k]
+        while todo:
+            x = todo.pop()
+            if x not in seen:
+                seen.append(x)
+                todo.extend(kids[x])
+        out.append(seen)
+    return out
+
+
 def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float,
-               scales: np.ndarray | None = None, ground: np.ndarray | None = None
-               ) -> np.ndarray:
+               scales: np.ndarray | None = None, ground: np.ndarray | None = None,
+               supports: np.ndarray | None = None) -> np.ndarray:
     """(N, 3) world displacements of one guidance pass over (N, 12) world poses.
 
     Every pair of objects whose piece boxes overlap (more than 1 mm), in turn, moves apart
@@ -164,6 +212,9 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
     is brought back inside the room (see the module docstring). ``ground``: the objects that stand on the floor
     and are not to be lifted (default: :func:`grounded` of ``poses``; a series of passes fixes
     it at its start, so that a lifted object does not stop counting as grounded).
+    ``supports``: the PAG's ``ON``/``IN`` parent of every object (:func:`pag_supports`), for
+    the PAG-conditioned sampler only: child and parent, siblings and what an object carries
+    are then moved the PAG's way (see the module docstring); None: PAG-free.
     """
     p = np.asarray(poses, float)
     n = len(p)
@@ -179,9 +230,26 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
     if ground is None:
         ground = grounded(p, boxes, scales)
     ground = np.asarray(ground, float)
+    sup = None if supports is None else np.asarray(supports, int)
+    # what moves with an object: itself, and under the PAG what it carries
+    group = [[k] for k in range(n)] if sup is None else _carried(sup)
+    # lifting or lowering an object off what carries it: as costly as lifting off the floor
+    held = np.zeros(n) if sup is None else (sup >= 0).astype(float)
     d = np.zeros((n, 3))
     rlo, rhi = room_box(footprint, height)
     vol = np.prod(np.maximum(ohi - olo, 1e-3), 1)
+    u = np.concatenate([np.eye(3), -np.eye(3)])  # (6, 3) directions of a
+    flat = np.array([1.0, 1.0, 0.0, 1.0, 1.0, 0.0])  # the sideways directions
+
+    def off(o: int, m: np.ndarray) -> np.ndarray:
+        """How far (per direction) object ``o`` moved by ``m`` (6, 3) leaves the plan of what
+        carries it (0 without a carrier)."""
+        if sup is None or sup[o] < 0:
+            return np.zeros(len(m))
+        q = int(sup[o])
+        cen = 0.5 * (olo[o] + ohi[o])[:2] + m[:, :2]
+        return (np.maximum(olo[q, :2] - cen, 0) + np.maximum(cen - ohi[q, :2], 0)).sum(1)
+
     # objects whose boxes overlap, then their pieces
     ov = np.all((olo[:, None] < ohi[None]) & (olo[None] < ohi[:, None]), axis=2)
     ia, ib = np.nonzero(np.triu(ov, 1))
@@ -198,20 +266,37 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
             # per direction, the move that clears every overlapping pair of pieces
             need = np.concatenate([plus, minus], axis=2)[hit].max(0)  # (6,)
             wa = vol[b] / (vol[a] + vol[b])
-            u = np.concatenate([np.eye(3), -np.eye(3)])  # (6, 3) directions of a
+            if sup is not None and (sup[a] == b or sup[b] == a):
+                wa = 1.0 if sup[a] == b else 0.0  # the child moves, its parent stays
             ma, mb = u * (need * wa)[:, None], -u * (need * (1.0 - wa))[:, None]
             # a direction that would push either object out of the room costs what it leaves
             out = (np.maximum(rlo - (olo[a] + ma), 0) + np.maximum(ohi[a] + ma - rhi, 0)
                    + np.maximum(rlo - (olo[b] + mb), 0) + np.maximum(ohi[b] + mb - rhi, 0))
             # lifting what stands on the floor leaves it hanging in the air: as costly
             lift = np.maximum(ma[:, 2], 0) * ground[a] + np.maximum(mb[:, 2], 0) * ground[b]
-            k = int(np.argmin(need + _BLOCKED * out.sum(1) + _GROUNDED * lift))
+            cost = need + _BLOCKED * out.sum(1) + _GROUNDED * lift
+            if sup is not None:
+                if sup[a] == b or sup[b] == a:
+                    # the child up onto its parent's surface, or sideways over it: never
+                    # down through it, never off it
+                    mc = ma if sup[a] == b else mb
+                    cost = need + _BLOCKED * out.sum(1) + _GROUNDED * (
+                        np.maximum(-mc[:, 2], 0) + off(a if sup[a] == b else b, mc))
+                else:
+                    lift = np.abs(ma[:, 2]) * held[a] + np.abs(mb[:, 2]) * held[b]
+                    cost = cost + _GROUNDED * (lift + off(a, ma) + off(b, mb))
+                    if sup[a] == sup[b] and sup[a] >= 0:  # siblings: within their surface
+                        cost = cost + _GROUNDED * (1.0 - flat) * need
+            k = int(np.argmin(cost))
             for o, m in ((a, ma[k]), (b, mb[k])):  # resolved now: later pairs see it moved
-                lo[idx[o]] += m
-                hi[idx[o]] += m
-                olo[o] += m
-                ohi[o] += m
-                d[o] += m
+                if not m.any():
+                    continue
+                for x in group[o]:
+                    lo[idx[x]] += m
+                    hi[idx[x]] += m
+                    olo[x] += m
+                    ohi[x] += m
+                    d[x] += m
         olo, ohi = olo - d, ohi - d
     return d + _room_push(olo + d, ohi + d, footprint, height)
 
@@ -222,13 +307,14 @@ def still(d: np.ndarray) -> bool:
 
 
 def guide_poses(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float, *,
-                passes: int = PASSES, scales: np.ndarray | None = None) -> np.ndarray:
-    """(N, 12) world poses after ``passes`` passes of :func:`guide_push` (objects move alone):
-    the control the random baseline gets in ``eval --guide``."""
+                passes: int = PASSES, scales: np.ndarray | None = None,
+                supports: np.ndarray | None = None) -> np.ndarray:
+    """(N, 12) world poses after ``passes`` passes of :func:`guide_push` (PAG-free unless
+    ``supports`` is given): the control the random baseline gets in ``eval --guide``."""
     out = np.array(poses, float, copy=True)
     ground = grounded(out, boxes, scales)
     for _ in range(passes):
-        d = guide_push(out, boxes, footprint, height, scales, ground)
+        d = guide_push(out, boxes, footprint, height, scales, ground, supports)
         out[:, :3] += d
         if still(d):
             break

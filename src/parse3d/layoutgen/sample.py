@@ -27,7 +27,7 @@ from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .data import graph_arrays, pag_relations, support_parents
-from .guide import PASSES, grounded, guide_push, piece_boxes, still
+from .guide import PASSES, grounded, guide_push, pag_supports, piece_boxes, still
 from .pose import denormalise_poses, room_box, rotation_from_6d
 from .separate import box_push
 from .train import LayoutRun, make_scheduler, scene_tensors
@@ -66,7 +66,9 @@ class SampleOptions:
         Physics guidance (:mod:`.guide`): in the last ``guide`` denoising steps the estimate
         of the clean poses is moved so that the objects' collision pieces do not overlap and
         stay in the room (up to :data:`.guide.PASSES` passes per step), and the noise estimate is
-        made consistent with it; 0 (default) samples without it. No PAG relation is used.
+        made consistent with it; 0 (default) samples without it. Conditioned on the PAG
+        (``cond`` and a ``pag`` run), the guidance uses the PAG's supports too (children
+        lifted onto their parents, siblings apart on their support); unconditioned, none.
     """
 
     steps: int = 100
@@ -137,6 +139,8 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
         return moved(x0, world, box_push(world, footprint, height))
 
     boxes = piece_boxes(assets) if options.guide > 0 else None
+    # the PAG steers the guidance of the rows conditioned on it, and of those only
+    supports = pag_supports(relations, n) if options.guide > 0 and w != 0.0 else None
 
     def guide(x0: np.ndarray) -> np.ndarray:
         """The physics guidance passes of one step (:mod:`.guide`) on normalised poses."""
@@ -145,7 +149,7 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
             world = denormalise_poses(x0, footprint, height, run.stats, parents)
             if ground is None:
                 ground = grounded(world, boxes)
-            d = guide_push(world, boxes, footprint, height, ground=ground)
+            d = guide_push(world, boxes, footprint, height, ground=ground, supports=supports)
             x0 = moved(x0, world, d)
             if still(d):
                 break
