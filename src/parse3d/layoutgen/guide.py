@@ -201,6 +201,36 @@ def _carried(supports: np.ndarray) -> list[list[int]]:
     return out
 
 
+def _into_slot(clo: np.ndarray, chi: np.ndarray, plo: np.ndarray, phi: np.ndarray
+               ) -> np.ndarray:
+    """(3,) the move of a child (box ``clo``-``chi``) out of the pieces of its parent that it
+    overlaps (boxes ``plo``-``phi``), each piece its own way: a piece under the child's middle
+    (a shelf board, a desk top) lifts it onto the piece, one over it (the board above a
+    shelf) lowers it, one across it (a side panel, a mattress the child sank into) lifts it
+    or pushes it sideways, whichever is shorter; a book sunk into the corner of its
+    compartment comes out into the compartment. Per axis the largest move counts, a lift
+    before a lowering."""
+    mid = 0.5 * (clo[2] + chi[2])
+    up = phi[:, 2] - clo[2]
+    below = phi[:, 2] <= mid
+    above = plo[:, 2] >= mid
+    m = np.zeros(3)
+    lift = 0.0
+    for j in np.flatnonzero(~below & ~above):
+        opts = np.array([phi[j, 0] - clo[0], -(chi[0] - plo[j, 0]),
+                         phi[j, 1] - clo[1], -(chi[1] - plo[j, 1]), up[j]])
+        k = int(np.argmin(np.abs(opts)))
+        if k == 4:
+            lift = max(lift, up[j])
+        elif abs(opts[k]) > abs(m[k // 2]):
+            m[k // 2] = opts[k]
+    if below.any() or lift > 0:
+        m[2] = max(up[below].max(initial=0.0), lift)
+    elif above.any():
+        m[2] = -(chi[2] - plo[above, 2]).max()
+    return np.where(np.abs(m) > _SLACK, m, 0.0)
+
+
 def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, height: float,
                scales: np.ndarray | None = None, ground: np.ndarray | None = None,
                supports: np.ndarray | None = None) -> np.ndarray:
@@ -288,7 +318,14 @@ def guide_push(poses: np.ndarray, boxes: PieceBoxes, footprint: np.ndarray, heig
                     if sup[a] == sup[b] and sup[a] >= 0:  # siblings: within their surface
                         cost = cost + _GROUNDED * (1.0 - flat) * need
             k = int(np.argmin(cost))
-            for o, m in ((a, ma[k]), (b, mb[k])):  # resolved now: later pairs see it moved
+            moves = ((a, ma[k]), (b, mb[k]))
+            if sup is not None and (sup[a] == b or sup[b] == a):
+                ch = a if sup[a] == b else b
+                pieces = (pb if ch == a else pa)[(hit.any(0) if ch == a else hit.any(1))]
+                m = _into_slot(olo[ch], ohi[ch], lo[pieces], hi[pieces])
+                if m.any():
+                    moves = ((ch, m),)
+            for o, m in moves:  # resolved now: later pairs see it moved
                 if not m.any():
                     continue
                 for x in group[o]:
