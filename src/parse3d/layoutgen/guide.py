@@ -32,9 +32,10 @@ the pair in one move.
 The PAG-conditioned sampler guides with its condition, as classifier guidance steers with
 the class (``supports``, the ``ON``/``IN`` parent of every object, :func:`pag_supports`):
 
-- a child overlapping the object that carries it moves alone, up along the support normal
-  onto the parent's surface, or sideways only as far as it stays over the parent (never off
-  it, never down through it);
+- a child overlapping the object that carries it moves alone (:func:`_into_slot`): out of
+  each parent piece its own way, up onto a piece under its middle (a shelf board, a desk
+  top), down from one over it (the board above a shelf), up or sideways from one across it
+  (a side panel), never down through its parent or off its plan;
 - siblings on one support move apart within the support surface (sideways only), each kept
   over the parent;
 - a supported object is not lifted or lowered off its support by any other pair (as one
@@ -42,9 +43,9 @@ the class (``supports``, the ``ON``/``IN`` parent of every object, :func:`pag_su
 - an object carries what it supports: a nightstand pushed out of the bed takes its lamp.
 
 The unconditioned rows (and a ``pag`` run sampled with its condition dropped) never see the
-PAG: they get the PAG-free push above (``supports`` None). It runs inside the sampler; the random baseline,
-which has no denoising steps, does not get it, but ``eval --guide`` also reports the random
-poses after the same number of passes as a control.
+PAG: they get the PAG-free push above (``supports`` None). It runs inside the sampler; the
+random baseline, which has no denoising steps, does not get it, but ``eval --guide`` also
+reports the random poses after the same number of PAG-free passes as a control.
 """
 
 from __future__ import annotations
