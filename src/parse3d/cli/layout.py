@@ -130,7 +130,8 @@ def register(app: typer.Typer) -> None:
         guide: int = typer.Option(0, "--guide", min=0,
                                   help="Physics guidance: keep the objects' collision pieces "
                                        "apart and in the room during the last N denoising "
-                                       "steps (0: off)."),
+                                       "steps, with the PAG's supports when conditioned on "
+                                       "it (0: off)."),
         fit: bool = typer.Option(False, "--fit",
                                  help="Relation-aware step: bring the PAG's contacts (ON, IN, "
                                       "AGAINST, SECURED_TO) to their surfaces and move what "
@@ -206,7 +207,8 @@ def register(app: typer.Typer) -> None:
                                           "random one too): the last N denoising steps (0: off)."),
         guide: int = typer.Option(0, "--guide", min=0,
                                   help="Physics guidance in every model row: the last N "
-                                       "denoising steps (0: off); adds random poses after as "
+                                       "denoising steps (0: off), with the PAG's supports in "
+                                       "the PAG-conditioned rows; adds random poses after as "
                                        "many guidance passes as a control row."),
         fit: bool = typer.Option(False, "--fit",
                                  help="Add each PAG-conditioned row's samples after the "
