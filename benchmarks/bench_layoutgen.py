@@ -4,7 +4,7 @@ Usage::
 
     python benchmarks/bench_layoutgen.py --dataset out/mini --out out/layout-bench \\
         [--steps 2000] [--seeds 3] [--max-scenes 0] [--preset cpu] [--relations text] \\
-        [--shape descriptor] [--guidance 1] [--device cpu] [--cpu-limit 30] [--fit]
+        [--shape descriptor] [--guidance 1] [--device cpu] [--cpu-limit 30] [--fit] [--guide 5]
     python benchmarks/bench_layoutgen.py --build 1000 --rooms bedroom,study,bathroom ...
 
 A small end-to-end check (a few minutes of CPU)::
@@ -32,7 +32,9 @@ The issue's full claim is >= 1,000 scenes of 2-3 room types and 30 CPU minutes p
 ``--steps 100000 --cpu-limit 30`` stops each training after 30 minutes of its CPU time (about
 0.18 s of CPU per step for 60-object scenes with the ``cpu`` preset). ``--fit`` adds the
 PAG-conditioned sampler's relation-aware step as a row of its own (and random poses with it);
-the claim is then judged for the PAG-conditioned row with and without it.
+the claim is then judged for the PAG-conditioned row with and without it. ``--guide N``
+samples every model row with physics guidance (``parse3d layout eval --guide``); the claim is
+judged against the plain random poses (the guided control row is not the baseline).
 """
 
 from __future__ import annotations
@@ -60,6 +62,8 @@ def main() -> int:
                     help="the PAG-conditioned run's translations of supported objects")
     ap.add_argument("--separate", type=int, default=0,
                     help="separation guidance in the last N denoising steps (every row)")
+    ap.add_argument("--guide", type=int, default=0,
+                    help="physics guidance in the last N denoising steps (every model row)")
     ap.add_argument("--device", default="cpu")
     ap.add_argument("--no-settle", action="store_true", help="build without settling (faster)")
     ap.add_argument("--seeds", type=int, default=3)
@@ -117,7 +121,7 @@ def main() -> int:
     res = evaluate(runs, files, seeds=args.seeds, physics=not args.no_physics,
                    sample_steps=args.sample_steps, previews=2, out=dest,
                    progress=lambda s: print("  " + s, flush=True), guidance=args.guidance,
-                   separate=args.separate, fit=args.fit)
+                   separate=args.separate, fit=args.fit, guide=args.guide)
     write_result(res, dest)
     _loss_figure(args.out, dest / "losses.png")
     print(f"evaluation: {len(res.scenes)} scenes, {time.process_time() - c0:.0f} s CPU\n")

@@ -127,6 +127,11 @@ def register(app: typer.Typer) -> None:
         separate: int = typer.Option(0, "--separate", min=0,
                                      help="Separation guidance: push interpenetrating objects "
                                           "apart during the last N denoising steps (0: off)."),
+        guide: int = typer.Option(0, "--guide", min=0,
+                                  help="Physics guidance: keep the objects' collision pieces "
+                                       "apart and in the room during the last N denoising "
+                                       "steps, with the PAG's supports when conditioned on "
+                                       "it (0: off)."),
         fit: bool = typer.Option(False, "--fit",
                                  help="Relation-aware step: bring the PAG's contacts (ON, IN, "
                                       "AGAINST, SECURED_TO) to their surfaces and move what "
@@ -158,7 +163,7 @@ def register(app: typer.Typer) -> None:
         scene = sample_layout(r, pag, seed=seed, file=str(pag_file),
                               options=SampleOptions(steps=sample_steps, guidance=guidance,
                                                     cond=not uncond, separate=separate,
-                                                    fit=fit))
+                                                    fit=fit, guide=guide))
         gen_held = sum(1 for c in scene.relations if c.holds)
         rep = None
         if refine:
@@ -200,6 +205,11 @@ def register(app: typer.Typer) -> None:
         separate: int = typer.Option(0, "--separate", min=0,
                                      help="Separation guidance in every generated row (the "
                                           "random one too): the last N denoising steps (0: off)."),
+        guide: int = typer.Option(0, "--guide", min=0,
+                                  help="Physics guidance in every model row: the last N "
+                                       "denoising steps (0: off), with the PAG's supports in "
+                                       "the PAG-conditioned rows; adds random poses after as "
+                                       "many guidance passes as a control row."),
         fit: bool = typer.Option(False, "--fit",
                                  help="Add each PAG-conditioned row's samples after the "
                                       "relation-aware step, and random poses with it."),
@@ -232,7 +242,7 @@ def register(app: typer.Typer) -> None:
             res = evaluate(loaded, files, seeds=seeds, physics=not no_physics,
                            sample_steps=sample_steps, previews=previews, out=dest,
                            progress=None if as_json else (lambda s: st.update(s)),
-                           guidance=guidance, separate=separate, fit=fit)
+                           guidance=guidance, separate=separate, fit=fit, guide=guide)
         if not res.scenes:
             raise InputError(Problem("", "no held-out scene has only categories the runs know",
                                      str(dataset or runs[0]), "vocabulary"))

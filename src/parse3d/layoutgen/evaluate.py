@@ -11,7 +11,12 @@ laid out by each *row* and measured the same way:
   and a second random row, **random poses, separated**, gets the same box passes
   (``separate`` + 3) and the same separation on the meshes;
 - one row per run: a ``pag`` run conditioned on the PAG, and (trained with condition dropout)
-  the same network with the condition dropped; a ``none`` run unconditioned.
+  the same network with the condition dropped; a ``none`` run unconditioned;
+- with physics guidance (``guide`` > 0, :mod:`.guide`), every model row is sampled with it (the
+  last ``guide`` denoising steps), and the row **random poses, guided (control)** gives the
+  random poses the same number of guidance passes: not a baseline the models must beat (the
+  random poses have no denoising steps to guide), but what the passes alone make of poses
+  that know nothing.
 
 A model row places each given asset at the generated translation and rotation, at the uniform
 scale whose volume matches the generated size. Metrics of one layout (:func:`layout_metrics`):
@@ -57,6 +62,7 @@ from ..measure import check_relations
 from ..pag.model import PAG
 from ..scene.model import Scene
 from .data import LayoutScene, find_scenes, load_scene
+from .guide import PASSES, guide_poses, piece_boxes
 from .pose import rotation_to_6d
 from .sample import SampleOptions, generate_poses, layout_scene
 from .separate import separate_poses
@@ -412,28 +418,36 @@ class EvalResult:
 
 
 def _rows_for(runs: list[LayoutRun], guidance: float = 1.0, separate: int = 0,
-              fit: bool = False) -> list[tuple[str, str, LayoutRun | None, bool, bool]]:
-    """(name, kind, run, cond, fit) per row; ``cond`` of a random row: separated."""
-    rows = [("solver (solved poses)", "solver", None, False, False),
-            ("random poses", "random", None, False, False)]
+              fit: bool = False, guide: int = 0
+              ) -> list[tuple[str, str, LayoutRun | None, bool, bool, bool]]:
+    """(name, kind, run, cond, fit, guided) per row; ``cond`` of a random row: separated;
+    ``guided``: the random control row of physics guidance."""
+    rows = [("solver (solved poses)", "solver", None, False, False, False),
+            ("random poses", "random", None, False, False, False)]
     if separate > 0:
-        rows.append(("random poses, separated", "random", None, True, False))
+        rows.append(("random poses, separated", "random", None, True, False, False))
     if fit:
         rows.append((f"random poses{', separated' if separate > 0 else ''}, relation-aware",
-                     "random", None, separate > 0, True))
+                     "random", None, separate > 0, True, False))
+    if guide > 0:
+        rows.append(("random poses, guided (control)", "random", None, False, False, True))
     w = "" if guidance == 1.0 else f", guidance {guidance:g}"
-    sep = "" if separate <= 0 else f", separated {separate}"
+    sep = ("" if separate <= 0 else f", separated {separate}") + \
+        ("" if guide <= 0 else f", guided {guide}")
+    # conditioned on the PAG, the guidance uses it too (:mod:`.guide`); unconditioned, not
+    psep = sep if guide <= 0 or guidance == 0.0 else sep.replace("guided", "PAG-guided")
     for run in runs:
         if run.config.cond == "pag":
-            rows.append((f"PAG-conditioned ({run.name}{w}{sep})", "pag", run, True, False))
+            rows.append((f"PAG-conditioned ({run.name}{w}{psep})", "pag", run, True, False,
+                         False))
             if fit:
-                rows.append((f"PAG-conditioned ({run.name}{w}{sep}, relation-aware)", "pag",
-                             run, True, True))
+                rows.append((f"PAG-conditioned ({run.name}{w}{psep}, relation-aware)", "pag",
+                             run, True, True, False))
             if run.config.cond_dropout > 0:
                 rows.append((f"unconditioned ({run.name}, condition dropped{sep})", "none", run,
-                             False, False))
+                             False, False, False))
         else:
-            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False, False))
+            rows.append((f"unconditioned ({run.name}{sep})", "none", run, False, False, False))
     return rows
 
 
@@ -456,7 +470,8 @@ def _compose(images: list[tuple[str, np.ndarray]], path: Path) -> None:
 def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
              physics: bool = True, sample_steps: int = 100, previews: int = 2,
              out: Path | None = None, progress: Callable[[str], None] | None = None,
-             guidance: float = 1.0, separate: int = 0, fit: bool = False) -> EvalResult:
+             guidance: float = 1.0, separate: int = 0, fit: bool = False,
+             guide: int = 0) -> EvalResult:
     """Lay out every scene with every row and measure it (see the module docstring).
 
     Parameters
@@ -484,8 +499,12 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
     fit : bool
         Adds, after every PAG-conditioned row, the same samples with the relation-aware step
         (:mod:`.fit`), and the random poses with it as a control row.
+    guide : int
+        Physics guidance of every model row (the last ``guide`` denoising steps, see
+        :mod:`.guide`), plus the random poses after as many guidance passes as a control
+        row; 0: none.
     """
-    rows = _rows_for(runs, guidance, separate, fit)
+    rows = _rows_for(runs, guidance, separate, fit, guide)
     result = EvalResult([EvalRow(name, kind) for name, kind, *_ in rows], [], seeds, physics)
     acc: list[list[list[dict]]] = [[[] for _ in range(seeds)] for _ in rows]
     for si, f in enumerate(scene_files):
@@ -501,7 +520,7 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
         shots: list[tuple[str, np.ndarray]] = []
         cam = None
         generated: dict[tuple, np.ndarray] = {}  # a relation-aware row reuses its samples
-        for ri, (name, kind, run, cond, fit_row) in enumerate(rows):
+        for ri, (name, kind, run, cond, fit_row, guided) in enumerate(rows):
             for seed in range(1 if kind == "solver" else seeds):
                 if progress is not None:
                     progress(f"{ls.scene_id}: {name}, seed {seed}")
@@ -513,6 +532,9 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                     poses = random_poses(ls, rng)
                     if cond:  # the separated random row
                         poses = separate_poses(poses, ls.footprint, ls.height, rounds=separate + 3)
+                    if guided:  # the control row: as many passes as a guided sample gets
+                        poses = guide_poses(poses, piece_boxes(ls.assets), ls.footprint,
+                                            ls.height, passes=guide * PASSES, scales=ls.scales)
                     scene = _scene_for(ls, pag, poses, seed, given_scale=True, label=kind,
                                        separate=cond, fit=fit_row)
                 else:
@@ -522,7 +544,7 @@ def evaluate(runs: list[LayoutRun], scene_files: list[Path], *, seeds: int = 3,
                             run, ls.categories, ls.assets, ls.relations, ls.footprint,
                             ls.height, seed=seed, options=SampleOptions(
                                 steps=sample_steps, cond=cond, guidance=guidance,
-                                separate=separate))
+                                separate=separate, guide=guide))
                     scene = _scene_for(ls, pag, generated[key], seed, given_scale=False,
                                        label=name, separate=separate > 0, fit=fit_row)
                 if out is not None and si < previews and seed == 0:

@@ -57,7 +57,7 @@ ALIGN_DEG = 30.0
 #: Metres left between surfaces brought into contact (the checks allow -1...+2 mm).
 GAP = 1e-3
 #: Rounds of collision resolution.
-ROUNDS = 4
+ROUNDS = 12
 _CONTACT = ("ON", "IN", "AGAINST", "SECURED_TO")
 _SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
 

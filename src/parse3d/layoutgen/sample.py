@@ -27,6 +27,7 @@ from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .data import graph_arrays, pag_relations, support_parents
+from .guide import PASSES, grounded, guide_push, pag_supports, piece_boxes, still
 from .pose import denormalise_poses, room_box, rotation_from_6d
 from .separate import box_push
 from .train import LayoutRun, make_scheduler, scene_tensors
@@ -59,8 +60,15 @@ class SampleOptions:
     fit : bool
         The relation-aware step (:mod:`.fit`): once the assets are placed, contacts the PAG
         names are brought to their surfaces and what still collides is moved within the
-        freedom its relations leave (before the separation on the meshes, with ``separate``). It uses the PAG: part of the PAG-conditioned
-        sampler.
+        freedom its relations leave (before the separation on the meshes, with ``separate``).
+        It uses the PAG: part of the PAG-conditioned sampler.
+    guide : int
+        Physics guidance (:mod:`.guide`): in the last ``guide`` denoising steps the estimate
+        of the clean poses is moved so that the objects' collision pieces do not overlap and
+        stay in the room (up to :data:`.guide.PASSES` passes per step), and the noise estimate is
+        made consistent with it; 0 (default) samples without it. Conditioned on the PAG
+        (``cond`` and a ``pag`` run), the guidance uses the PAG's supports too (children
+        lifted onto their parents, siblings apart on their support); unconditioned, none.
     """
 
     steps: int = 100
@@ -68,6 +76,7 @@ class SampleOptions:
     cond: bool = True
     separate: int = 0
     fit: bool = False
+    guide: int = 0
 
 
 def _pick_categories(pag: PAG, run: LayoutRun, rng: np.random.Generator,
@@ -113,20 +122,43 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
     lo, hi = room_box(footprint, height)
     span = np.maximum(hi - lo, 1e-6)
 
-    def push(x0: np.ndarray) -> np.ndarray:
-        """One separation pass on normalised poses, in the model's own coordinates."""
-        world = denormalise_poses(x0, footprint, height, run.stats, parents)
-        d = box_push(world, footprint, height)
+    def moved(x0: np.ndarray, world: np.ndarray, d: np.ndarray) -> np.ndarray:
+        """``x0`` with world displacements ``d`` applied in the model's own coordinates."""
         if parents is not None:  # a supported object moves in its parent's frame
             R = rotation_from_6d(world[:, 6:12])
             rel = parents >= 0
+            d = d.copy()
             d[rel] = np.einsum("nji,nj->ni", R[parents[rel]], d[rel])
         out = x0.copy()
         out[:, :3] += (2.0 * d / span).astype(out.dtype)
         return out
 
-    guided = set(sched.timesteps[max(len(sched.timesteps) - options.separate, 0):].tolist()) \
-        if options.separate > 0 else set()
+    def push(x0: np.ndarray) -> np.ndarray:
+        """One separation pass on normalised poses, in the model's own coordinates."""
+        world = denormalise_poses(x0, footprint, height, run.stats, parents)
+        return moved(x0, world, box_push(world, footprint, height))
+
+    boxes = piece_boxes(assets) if options.guide > 0 else None
+    # the PAG steers the guidance of the rows conditioned on it, and of those only
+    supports = pag_supports(relations, n) if options.guide > 0 and w != 0.0 else None
+
+    def guide(x0: np.ndarray) -> np.ndarray:
+        """The physics guidance passes of one step (:mod:`.guide`) on normalised poses."""
+        ground = None
+        for _ in range(PASSES):
+            world = denormalise_poses(x0, footprint, height, run.stats, parents)
+            if ground is None:
+                ground = grounded(world, boxes)
+            d = guide_push(world, boxes, footprint, height, ground=ground, supports=supports)
+            x0 = moved(x0, world, d)
+            if still(d):
+                break
+        return x0
+
+    def last(k: int) -> set[int]:
+        return set(sched.timesteps[max(len(sched.timesteps) - k, 0):].tolist()) if k > 0 else set()
+
+    separated, guided = last(options.separate), last(options.guide)
     with torch.no_grad():
         cond = run.model.condition(g)
         for t in sched.timesteps:
@@ -140,11 +172,16 @@ def generate_poses(run: LayoutRun, categories: list[str], assets: list[Asset], r
                                  g, torch.tensor([0.0, 1.0], device=dev), cond=cond)
                 eps = both[:1] + w * (both[1:] - both[:1])
             eps, x = eps.cpu(), x.cpu()
-            if int(t) in guided:  # move the clean-pose estimate, and the noise to match it
+            if int(t) in separated or int(t) in guided:
+                # move the clean-pose estimate, and the noise to match it
                 ab = float(sched.alphas_cumprod[int(t)])
                 x0 = ((x - (1 - ab) ** 0.5 * eps) / ab ** 0.5).clamp(-1, 1)
-                moved = torch.as_tensor(push(x0[0].numpy()))[None]
-                eps = eps + (ab / (1 - ab)) ** 0.5 * (x0 - moved)
+                x1 = x0[0].numpy()
+                if int(t) in separated:
+                    x1 = push(x1)
+                if int(t) in guided:
+                    x1 = guide(x1)
+                eps = eps + (ab / (1 - ab)) ** 0.5 * (x0 - torch.as_tensor(x1)[None])
             x = sched.step(eps, t, x, generator=gen).prev_sample.to(dev)
     x = x[0].cpu().numpy()
     if options.separate > 0:
@@ -257,10 +294,14 @@ def sample_layout(run: LayoutRun, pag: PAG, *, seed: int = 0,
     poses = generate_poses(run, cat_list, drawn, rels, fp, pag.room.height, seed=seed,
                            options=options)
     t1 = time.perf_counter()
-    scene = layout_scene(pag, ids, cat_list, poses, seed=seed, meta={
+    placed: dict = {}
+    if options.guide > 0:  # the assets the guidance kept apart, not a better fitting slot
+        placed = {"assets": drawn, "scales": list(piece_boxes(drawn).scales(poses))}
+    scene = layout_scene(pag, ids, cat_list, poses, seed=seed, **placed, meta={
         "generator": "layoutgen", "run": run.name, "run_step": run.step,
         "cond": run.config.cond if options.cond else "none", "guidance": options.guidance,
-        "sample_steps": options.steps}, separate=options.separate > 0, fit=options.fit)
+        "sample_steps": options.steps, **({"guide": options.guide} if options.guide else {})},
+        separate=options.separate > 0, fit=options.fit)
     scene.timings["generate"] = round(t1 - t0, 4)
     scene.timings["assets"] = round(time.perf_counter() - t1, 4)
     return scene
