@@ -3,7 +3,7 @@
     python benchmarks/bench_layout_overfit.py --dataset DIR --out RUN --steps 500
     python benchmarks/bench_layout_overfit.py --dataset DIR --out RUN --steps 1000   # resumes
 
-``DIR`` holds one or two scene folders (all of them are training scenes then). The model is
+``DIR`` holds one or two scene folders (all of them are training scenes then; with more, only the run's training scenes are generated back). The model is
 trained PAG-conditioned without condition dropout (``--preset small``, learned relation
 tokens; resumed when ``RUN`` holds a checkpoint), then every training scene is generated back
 with sampling seeds 0 and 1 and compared with its own poses: the mean absolute error per pose
@@ -58,7 +58,15 @@ def main() -> None:
     print("| scene | seed | weights | t err | size err | r6 err | dxy (m) | dz (m) | support_rate "
           "| relations | relations_spatial | collision_rate | outside |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    import json
+    from pathlib import Path
+
+    # the scenes the run trained on (with more than two scenes, the split holds some out, and
+    # their categories may be unknown to it)
+    trained = set(json.loads((Path(args.out) / "split.json").read_text())["train"])
     for ls in load_dataset(args.dataset):
+        if ls.scene_id not in trained:
+            continue
         gt = normalise_poses(ls.poses, ls.footprint, ls.height, run.stats)
         for seed in (0, 1):
             p = generate_poses(run, ls.categories, ls.asset_info, ls.relations, ls.footprint,
