@@ -126,6 +126,15 @@ def test_progress_deadline_proposals_and_strict():
     desk = scene.objects["desk"]
     again = solve(small_room(), seed=5, proposals={"desk": (desk.rotation, desk.position)})
     assert np.allclose(again.objects["desk"].position, desk.position)
+    # with its asset and scale, the proposal places that asset (a generated layout's own),
+    # where seed 5 draws another one
+    other = solve(small_room(), seed=5)
+    assert other.objects["desk"].asset.asset_id != desk.asset.asset_id
+    kept = solve(small_room(), seed=5, proposals={
+        "desk": (desk.rotation, desk.position, desk.asset, desk.scale)})
+    assert kept.objects["desk"].asset.asset_id == desk.asset.asset_id
+    assert kept.objects["desk"].scale == pytest.approx(desk.scale)
+    assert np.allclose(kept.objects["desk"].position, desk.position)
     # a deadline already passed fails everything with "time limit"
     late = solve(small_room(), seed=0, deadline=0.0)
     assert all(o.reason.startswith("time limit") for o in late.objects.values())

@@ -400,7 +400,11 @@ def refine_layout(generated: Scene, *, seed: int = 0, library=None) -> tuple[Sce
     pag = generated.pag
     props = snap_proposals(pag, generated)
     t0 = time.perf_counter()
-    scene = solve(pag, seed=seed, library=library, proposals=props)
+    # each proposal with the generated asset and scale: the pose fits that asset, not the one
+    # the solver would draw
+    full = {oid: (R, t, generated.objects[oid].asset, generated.objects[oid].scale)
+            for oid, (R, t) in props.items() if generated.objects[oid].asset is not None}
+    scene = solve(pag, seed=seed, library=library, proposals={**props, **full})
     kept = []
     for oid, (R, t) in props.items():
         o = scene.objects.get(oid)

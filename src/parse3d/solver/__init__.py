@@ -46,8 +46,10 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
         Called with a :class:`SolveProgress` each time an object is placed or fails.
     deadline : float, optional
         Seconds; objects not placed by then fail with ``time limit``.
-    proposals : dict of str to (R (3, 3), t (3,)), optional
-        World poses (rotation, asset-origin position in metres) tried first per object id.
+    proposals : dict of str to (R (3, 3), t (3,)) or (R, t, asset, scale), optional
+        World poses (rotation, asset-origin position in metres) tried first per object id;
+        with an :class:`~parse3d.assets.Asset` and its uniform scale, the first attempt places
+        that asset at that scale (a generated layout's own assets).
     strict : bool
         Raise :class:`InfeasibleError` (carrying the scene as its report) when an object fails.
 

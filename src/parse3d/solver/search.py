@@ -588,8 +588,9 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
         Called with a :class:`SolveProgress` after each object is decided.
     deadline : float, optional
         Seconds of wall time; objects not placed by then fail with ``time limit``.
-    proposals : dict of str to (R (3, 3), t (3,)), optional
-        World poses tried first for these objects (then the usual sampling).
+    proposals : dict of str to (R (3, 3), t (3,)) or (R, t, asset, scale), optional
+        World poses tried first for these objects (then the usual sampling); with an asset and
+        its scale, the first attempt places that asset at that scale.
     """
     from .library import default_library
 
@@ -613,7 +614,15 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
             srch.fail(oid, f"its support {sup.parent.object!r} failed")
         else:
             try:
-                srch.commit(srch.try_place(oid, f"object:{oid}", proposals.get(oid)))
+                prop = proposals.get(oid)
+                keep = None
+                if prop is not None and len(prop) == 4:
+                    # a proposed asset and scale too: tried first with the proposed pose
+                    R, t, asset, scale = prop
+                    prop = (R, t)
+                    keep = PlacedObject(oid, asset.category, asset, float(scale),
+                                        np.asarray(R, float), np.asarray(t, float))
+                srch.commit(srch.try_place(oid, f"object:{oid}", prop, keep))
             except Fail as f:
                 # re-placing others cannot fix what the object's own geometry rules out
                 got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
