@@ -15,6 +15,7 @@ from shapely.geometry import box as shapely_box
 from shapely.geometry.base import BaseGeometry
 
 from .hulls import hull_indices_2d
+from .memo import per_object
 
 #: Precision grid (m) of region overlays: snapping makes GEOS's overlay robust to nearly
 #: coincident vertices that different computations of the same edge produce.
@@ -160,19 +161,12 @@ def _erode_convex(poly: Polygon, neg: np.ndarray) -> BaseGeometry:
     return got if got is not None else _clip_box(poly, n, off)
 
 
-_EDGES: dict[int, tuple] = {}
-
-
+@per_object()
 def _convex_edges(poly: Polygon) -> tuple:
     """``(rect, n, cn)`` of a convex polygon: ``rect`` its ``(lo, hi)`` corners when it is an
     axis-aligned rectangle (else None), otherwise the outward unit normals ``n`` (E, 2) of its
     counter-clockwise edges and each edge's offset ``cn`` (E,) along its normal. Kept per
     polygon object (a support's region is eroded again and again)."""
-    got = _EDGES.get(id(poly))
-    if got is not None and got[0] is poly:
-        return got[1]
-    if len(_EDGES) > 4096:
-        _EDGES.clear()
     c = np.asarray(poly.exterior.coords)[:-1]
     out = None
     if len(c) == 4:
@@ -189,26 +183,17 @@ def _convex_edges(poly: Polygon) -> tuple:
     for a in (*(out[0] or ()), *out[1:]):
         if a is not None:
             a.flags.writeable = False  # shared by every erosion of the polygon
-    _EDGES[id(poly)] = (poly, out)  # holding the polygon keeps its id valid
     return out
 
 
-_ONE_CONVEX: dict[int, tuple] = {}
-
-
+@per_object()
 def _one_convex(region: BaseGeometry) -> bool:
     """Whether ``region`` is one convex polygon without holes, of at most 64 vertices (the
     case :func:`erode` moves edges for); kept per region object."""
-    got = _ONE_CONVEX.get(id(region))
-    if got is not None and got[0] is region:
-        return got[1]
-    if len(_ONE_CONVEX) > 4096:
-        _ONE_CONVEX.clear()
     polys = list(region.geoms) if hasattr(region, "geoms") else [region]
     out = bool(len(polys) == 1 and isinstance(polys[0], Polygon) and not polys[0].interiors
                and len(polys[0].exterior.coords) <= 64
                and polys[0].convex_hull.area - polys[0].area < 1e-9 * max(polys[0].area, 1.0))
-    _ONE_CONVEX[id(region)] = (region, out)
     return out
 
 
@@ -352,19 +337,14 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
 
 #: Batches of draws :func:`free_samples` tries before leaving the region to be built.
 FREE_SAMPLE_ROUNDS = 6
-_CONVEX: dict[int, tuple] = {}
 
 
+@per_object()
 def _convex_half_planes(poly: Polygon) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """``(N, c, bounds)`` of a convex polygon: outward unit edge normals (E, 2) and offsets
     (E,) with the polygon ``{x : N x <= c}``, and its bounds (4,); None when ``poly`` is not
     one convex polygon. Cached per polygon object (a support's region is asked for again and
     again)."""
-    got = _CONVEX.get(id(poly))
-    if got is not None and got[0] is poly:
-        return got[1]
-    if len(_CONVEX) > 4096:
-        _CONVEX.clear()
     hp = None
     if (isinstance(poly, Polygon) and not poly.is_empty and not poly.interiors
             and len(poly.exterior.coords) <= 64
@@ -377,7 +357,6 @@ def _convex_half_planes(poly: Polygon) -> tuple[np.ndarray, np.ndarray, np.ndarr
         v, e = v[keep], e[keep]
         nrm = np.column_stack([e[:, 1], -e[:, 0]]) / np.hypot(e[:, 0], e[:, 1])[:, None]
         hp = (nrm, np.einsum("ij,ij->i", nrm, v), np.array(poly.bounds))
-    _CONVEX[id(poly)] = (poly, hp)  # holding the polygon keeps its id valid
     return hp
 
 

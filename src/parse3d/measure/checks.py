@@ -21,6 +21,7 @@ from typing import NamedTuple
 import numpy as np
 
 from ..geometry.frames import angle_between
+from ..geometry.memo import per_object
 from ..geometry.surfaces import Surface, surface_from_bbox
 from ..pag.model import Edge
 from ..pag.refs import Ref
@@ -240,22 +241,14 @@ def _in_polygon(s: Surface, p3: np.ndarray) -> bool:
     return any(shell.distance(pt) <= 1e-3 for shell in _shells(s.polygon))
 
 
-_SHELLS: dict[int, tuple] = {}
-
-
+@per_object(8192)
 def _shells(poly) -> list:
     """The pieces of ``poly`` without their holes (an object on a rim spans the hole), made
     once per polygon object."""
     from shapely.geometry import Polygon
 
-    got = _SHELLS.get(id(poly))
-    if got is not None and got[0] is poly:
-        return got[1]
-    if len(_SHELLS) > 8192:
-        _SHELLS.clear()
     parts = list(poly.geoms) if hasattr(poly, "geoms") else [poly]
     shells = [Polygon(p.exterior) for p in parts if not p.is_empty]
-    _SHELLS[id(poly)] = (poly, shells)  # holding the polygon keeps its id valid
     return shells
 
 

@@ -10,6 +10,7 @@ import numpy as np
 
 from ..assets.model import Asset, Part
 from ..geometry import regions as RG
+from ..geometry.memo import per_object
 from ..geometry.surfaces import Surface
 from ..measure.checks import world_points
 from ..pag.model import PAG
@@ -141,38 +142,23 @@ def plane_coords(surf: Surface, pts: np.ndarray) -> np.ndarray:
     return np.column_stack([d @ surf.u, d @ surf.v])
 
 
+@per_object()
 def plane_key(s: Surface) -> tuple:
     """A hashable key of a support plane (its origin and normal rounded to 1e-9), made once
     per surface object (a parent's supports are kept on the solve state and asked for by
     every child)."""
-    got = _PLANE_KEYS.get(id(s))
-    if got is not None and got[0] is s:
-        return got[1]
-    if len(_PLANE_KEYS) > 4096:
-        _PLANE_KEYS.clear()
     key = (*np.asarray(s.origin).round(9).tolist(), *np.asarray(s.normal).round(9).tolist())
-    _PLANE_KEYS[id(s)] = (s, key)  # holding the surface keeps its id valid
     return key
 
 
-_PLANE_KEYS: dict[int, tuple] = {}
-
-
+@per_object()
 def frame_key(s: Surface) -> bytes:
     """A hashable key of a surface's plane frame, exact (origin, normal and in-plane axes, as
     bytes): geometry in its plane coordinates may be kept under it. Made once per surface
     object."""
-    got = _FRAME_KEYS.get(id(s))
-    if got is not None and got[0] is s:
-        return got[1]
-    if len(_FRAME_KEYS) > 4096:
-        _FRAME_KEYS.clear()
     key = b"".join(np.asarray(x, float).tobytes() for x in (s.origin, s.normal, s.u, s.v))
-    _FRAME_KEYS[id(s)] = (s, key)  # holding the surface keeps its id valid
     return key
 
-
-_FRAME_KEYS: dict[int, tuple] = {}
 
 
 def angle_to(vec: np.ndarray, target: np.ndarray, n: np.ndarray) -> float | None:
