@@ -903,7 +903,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         seats.sort(key=lambda a: _covered(F, a, centres))
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
-    same = 0
+    same = hung = 0
     for k in range(cfg.max_trials + (proposal is not None)):
         trials += 1
         if proposal is not None and k == 0:
@@ -921,6 +921,15 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             # above the owner's low parts; the drop below brings it onto them or the surface
             t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+        if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid,
+                                            upright=rel == "ON"):
+            # tested before the drop, which moves the child along the normal only (the test
+            # reads positions in the plane and heights relative to the lowest point)
+            hung = hung + 1 if last == HANGS_OFF else 1
+            last = HANGS_OFF
+            if rel == "ON" and hung >= STRUCTURAL_FAILURES:
+                break  # the base misses the support wherever it is drawn: structural
+            continue
         dropped = False
         if rel == "ON" and sup.owner != "room":
             # settle onto the parent's actual geometry: a plate on a plate sits in its well
@@ -943,11 +952,6 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if not region0.contains(Polygon(RG.convex_footprint(Fw))):
                 last = f"footprint leaves {sup.name}"
                 continue
-        if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid,
-                                            upright=rel == "ON"):
-            last = "a foot or the base would hang off the support (centre of mass outside " \
-                   "what rests on it)"
-            continue
         ok, why, checks = _validate(st, cand, support_edge, others, sup)
         if not ok:
             # the region makes relations hold by construction; the same relation failing
@@ -973,6 +977,11 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                         body), trials, checks, None
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
+
+
+#: Why an overhanging child's pose fails when its base is not held.
+HANGS_OFF = ("a foot or the base would hang off the support (centre of mass outside what rests "
+             "on it)")
 
 
 def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float):
