@@ -27,6 +27,7 @@ __all__ = [
     "minkowski_convex",
     "erode",
     "free_samples",
+    "draw_outside",
     "half_plane",
     "strip",
     "line",
@@ -330,7 +331,7 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
         idx = np.repeat(np.arange(len(total)), total + 1)
         cut.extend(shapely.polygons(shapely.linearrings(pts[ring], indices=idx)))
     base = inner if inner is not None else region
-    if not cut:
+    if not cut or base.is_empty:
         return base
     return shapely.difference(base, shapely.union_all(cut), grid_size=GRID)
 
@@ -427,6 +428,98 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         ok = (S[:, :k0] <= 0).all(axis=1)
         if grown:
             ok &= ~np.logical_and.reduceat(S[:, k0:] < 0, starts, axis=1).any(axis=1)
+        drawn += m
+        if ok.any():
+            out.append(P[ok])
+            have += int(ok.sum())
+        if have >= n:
+            return np.concatenate(out)[:n]
+    return None
+
+
+def _grown_half_planes(grown: list[np.ndarray], neg: np.ndarray):
+    """The obstacles ``grown`` by the footprint ``-neg`` as half-planes: ``(N, c, starts)``,
+    a point ``x`` inside sum ``k`` when ``N[j] . x < c[j]`` for every row ``j`` from
+    ``starts[k]`` to the next start (repeated vertices give rows that hold everywhere)."""
+    V, counts = _minkowski_stack(grown, neg)
+    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    nxt = np.arange(1, len(V) + 1)
+    nxt[starts + counts - 1] = starts
+    E = V[nxt] - V
+    Ng = np.empty_like(E)
+    Ng[:, 0], Ng[:, 1] = E[:, 1], -E[:, 0]
+    cg = Ng[:, 0] * V[:, 0] + Ng[:, 1] * V[:, 1]
+    flat = np.abs(E).max(axis=1) < 1e-12  # repeated vertices: no constraint
+    Ng[flat], cg[flat] = 0.0, 1.0
+    return Ng, cg, starts
+
+
+def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarray,
+                 rng: np.random.Generator, n: int, rounds: int = FREE_SAMPLE_ROUNDS
+                 ) -> np.ndarray | None:
+    """(n, 2) positions uniform over ``region`` less the obstacles grown by the footprint,
+    drawn without building that set; None when ``rounds`` batches did not find ``n``.
+
+    ``region`` holds positions already (a support eroded by the footprint and clipped by
+    relations): polygons (drawn by area, from their bounding box), segments (by length) or
+    points. A draw is kept when it lies in no obstacle's Minkowski sum with the footprint (one
+    vectorised half-plane test per batch), so the positions are those of :func:`erode` of the
+    support by the obstacles, clipped the same way, as a set.
+    """
+    if region.is_empty:
+        return None
+    neg = -np.asarray(footprint, float)
+    neg = neg if _strictly_convex_ccw(neg) else convex_footprint(neg)
+    x0, y0, x1, y1 = region.bounds
+    parts = list(region.geoms) if hasattr(region, "geoms") else [region]
+    areal = [g for g in parts if g.area > 1e-12]
+    segs = None
+    if not areal:
+        linear = [g for g in parts if g.length > 1e-12]
+        if linear:
+            c = [shapely.get_coordinates(ls) for g in linear
+                 for ls in (g.geoms if hasattr(g, "geoms") else [g])]
+            segs = np.concatenate([np.stack([p[:-1], p[1:]], axis=1) for p in c])
+            ln = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
+            cum = np.cumsum(ln) / ln.sum()
+        else:
+            pts = np.array([shapely.get_coordinates(g)[0] for g in parts if not g.is_empty])
+    else:
+        geom = areal[0] if len(areal) == 1 else shapely.MultiPolygon(
+            [p for g in areal for p in (g.geoms if hasattr(g, "geoms") else [g])])
+        shapely.prepare(geom)
+    # only obstacles whose grown box meets the region's box matter
+    lo, hi = neg.min(axis=0), neg.max(axis=0)
+    grown = []
+    if obstacles:
+        A = np.concatenate(obstacles)
+        at = np.concatenate([[0], np.cumsum([len(ob) for ob in obstacles])[:-1]])
+        olo = np.minimum.reduceat(A, at) + lo
+        ohi = np.maximum.reduceat(A, at) + hi
+        hit = (olo[:, 0] <= x1) & (ohi[:, 0] >= x0) & (olo[:, 1] <= y1) & (ohi[:, 1] >= y0)
+        grown = [obstacles[k] for k in np.flatnonzero(hit)]
+    if grown:
+        N, c, starts = _grown_half_planes(grown, neg)
+    out, have, drawn = [], 0, 0
+    for _ in range(rounds):
+        rate = max(have / drawn, 0.05) if drawn else 0.5
+        m = int(math.ceil((n - have) / rate * 1.25)) + 4
+        if areal:
+            P = np.empty((m, 2))
+            P[:, 0] = x0 + rng.random(m) * (x1 - x0)
+            P[:, 1] = y0 + rng.random(m) * (y1 - y0)
+            ok = shapely.contains_xy(geom, P[:, 0], P[:, 1])
+        elif segs is not None:
+            k = np.minimum(np.searchsorted(cum, rng.random(m)), len(segs) - 1)
+            t = rng.random(m)[:, None]
+            P = segs[k, 0] + t * (segs[k, 1] - segs[k, 0])
+            ok = np.ones(m, bool)
+        else:
+            P = pts[rng.integers(len(pts), size=m)]
+            ok = np.ones(m, bool)
+        if grown:
+            S = P @ N.T - c
+            ok &= ~np.logical_and.reduceat(S < 0, starts, axis=1).any(axis=1)
         drawn += m
         if ok.any():
             out.append(P[ok])

@@ -771,6 +771,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     base_solid = None
     lift = 0.0
     if strategy == "constrained":
+        ruled = _rules_region(st, oid, asset, scale, R, h, sup, support_edge, others, region0, F)
         # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
         step = STEP if rel == "ON" and sup.owner != "room" else 0.0
         obst = obstacles(st, sup, exclude, height + EPS,
@@ -822,6 +823,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
                            f"{height:.2f} m tall {asset.category} below {sup.name}: "
                            f"{names} in the way")
+        elif ruled is not None and sup.owner == "room" and (samples := RG.draw_outside(
+                ruled, obst + holes, F, rng, cfg.max_trials)) is not None:
+            pass  # drawn from the rules' region less the obstacles, without building it
         else:
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
@@ -833,14 +837,15 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 # parent object (no wardrobe on a mug), up to STACK_OVER times its area in a
                 # stack of one category (a picture book on a paperback)
                 com = (asset_geometry(asset).com * scale) @ R.T
-                obst = obstacles(st, sup, exclude, height + EPS, _reach(region0, F, 5.0),
-                                 step=step)
                 solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
                     if holes else region0
                 # across several parts (a suitcase on a luggage rack's straps): the centre of
                 # mass anywhere over their hull, the base on the parts (checked per sample)
                 over = region0 if sup.spans else solid
                 region = shapely.affinity.translate(over, -float(com @ s.u), -float(com @ s.v))
+                # only obstacles that can reach the positions kept matter
+                obst = obstacles(st, sup, exclude, height + EPS, _reach(region, F, 0.0),
+                                 step=step)
                 region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
                 room = st.scene.room.elements["floor"].surface
                 fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
@@ -982,6 +987,44 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
 #: Why an overhanging child's pose fails when its base is not held.
 HANGS_OFF = ("a foot or the base would hang off the support (centre of mass outside what rests "
              "on it)")
+
+
+def _rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+                  h: float, sup: Support, support_edge: Edge, others: list[Edge], region0,
+                  F: np.ndarray):
+    """The positions the child's relations allow on this support whatever stands on it; Fail
+    when there are none.
+
+    The region rules (and SECURED_TO's height band) are applied to the support eroded by the
+    footprint alone, before the obstacles are gathered and the support is eroded by them (the
+    costly part of a region). The rules clip, so a region they empty here stays empty with
+    obstacles: a cabinet NEAR another and AGAINST a wall far from it fails that wall at once,
+    with the rule's message about the free support. The region less the obstacles' grown
+    footprints is the region ``_place_on`` builds, as a set (positions may be drawn from it
+    without building it: :func:`RG.draw_outside`).
+
+    None where this does not apply: no rule (nor height band), a rule that may keep a region
+    it cannot clip (TOWARD), stacks, hanging children and supports too small for the
+    footprint (overhanging children), whose regions are built otherwise."""
+    rel = support_edge.relation
+    if rel == "HANGING_BELOW" or any(e.relation == "TOWARD" for e in others) or (
+            rel != "SECURED_TO" and all(REGION_RULES[e.relation][0] == "none" for e in others)):
+        return None
+    if rel == "ON" and sup.owner != "room" and (
+            set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates)):
+        return None  # a stack
+    holes = [RG.convex_footprint(hole) for hole in sup.holes]
+    free = RG.erode(region0, holes, F)
+    if free.is_empty or free.area < 1e-10:
+        return None  # too small even when empty: _place_on says why (or overhangs)
+    s = sup.surface
+    c3 = (asset_geometry(asset).center * scale) @ R.T
+    ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
+                        c3 + h * s.normal)
+    free = apply_region_rules(ctx, others, free, "object")
+    if rel == "SECURED_TO":
+        free = height_band(ctx, support_edge, free)
+    return apply_region_rules(ctx, others, free, "part")
 
 
 def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float):
