@@ -500,6 +500,13 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         grown = [obstacles[k] for k in np.flatnonzero(hit)]
     if grown:
         N, c, starts = _grown_half_planes(grown, neg)
+        if segs is not None:  # the free pieces of the segments, exactly
+            segs = _segments_outside(segs, N, c, starts)
+            if not len(segs):
+                return None
+            ln = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
+            cum = np.cumsum(ln) / ln.sum()
+            grown = []
     out, have, drawn = [], 0, 0
     for _ in range(rounds):
         rate = max(have / drawn, 0.05) if drawn else 0.5
@@ -527,6 +534,33 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         if have >= n:
             return np.concatenate(out)[:n]
     return None
+
+
+def _segments_outside(segs: np.ndarray, N: np.ndarray, c: np.ndarray,
+                      starts: np.ndarray) -> np.ndarray:
+    """The pieces (M, 2, 2) of segments ``segs`` (S, 2, 2) outside every convex polygon given
+    as half-planes by :func:`_grown_half_planes` (pieces shorter than 1e-9 m dropped)."""
+    a0, d = segs[:, 0], segs[:, 1] - segs[:, 0]
+    a = a0 @ N.T - c  # row j holds inside where a + t * d < 0, t in [0, 1] along the segment
+    b = d @ N.T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = -a / b
+    inf = np.inf
+    flat_in = a < 0  # a row parallel to the segment holds everywhere or nowhere
+    lo = np.where(b < 0, r, np.where(b > 0, -inf, np.where(flat_in, -inf, inf)))
+    hi = np.where(b > 0, r, np.where(b < 0, inf, np.where(flat_in, inf, -inf)))
+    LO = np.maximum.reduceat(lo, starts, axis=1)
+    HI = np.minimum.reduceat(hi, starts, axis=1)
+    out = []
+    for k in range(len(segs)):
+        cut = sorted((max(x, 0.0), min(y, 1.0)) for x, y in zip(LO[k], HI[k], strict=True)
+                     if y > 0.0 and x < 1.0 and y > x)
+        t0, L = 0.0, float(np.hypot(*d[k]))
+        for x, y in [*cut, (1.0, 1.0)]:
+            if (x - t0) * L > 1e-9:
+                out.append((a0[k] + t0 * d[k], a0[k] + x * d[k]))
+            t0 = max(t0, y)
+    return np.array(out, float).reshape(-1, 2, 2)
 
 
 _UNIT_32GON = np.column_stack([np.cos(np.arange(32) * np.pi / 16), np.sin(np.arange(32) * np.pi / 16)])

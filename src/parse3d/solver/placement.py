@@ -823,8 +823,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
                            f"{height:.2f} m tall {asset.category} below {sup.name}: "
                            f"{names} in the way")
-        elif ruled is not None and sup.owner == "room" and (samples := RG.draw_outside(
-                ruled, obst + holes, F, rng, cfg.max_trials)) is not None:
+        elif ruled is not None and lift == 0 and (
+                sup.owner == "room" or rel == "IN" or _inside_margin(F, height) == 0) and (
+                samples := RG.draw_outside(ruled, obst + holes, F, rng, cfg.max_trials)) is not None:
             pass  # drawn from the rules' region less the obstacles, without building it
         else:
             region = RG.erode(region0, obst + holes, F)
@@ -1003,11 +1004,14 @@ def _rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nd
     footprints is the region ``_place_on`` builds, as a set (positions may be drawn from it
     without building it: :func:`RG.draw_outside`).
 
-    None where this does not apply: no rule (nor height band), a rule that may keep a region
-    it cannot clip (TOWARD), stacks, hanging children and supports too small for the
-    footprint (overhanging children), whose regions are built otherwise."""
+    None where this does not apply: no rule (nor height band), stacks, hanging children and
+    supports too small for the footprint (overhanging children), whose regions are built
+    otherwise. TOWARD, which keeps
+    a region its cones miss, leaves the region as it finds it here; positions drawn from the
+    result are still positions of the built region (when the obstacles leave its cones
+    nothing, nothing is drawn and the region is built), but a rule emptying it is no proof."""
     rel = support_edge.relation
-    if rel == "HANGING_BELOW" or any(e.relation == "TOWARD" for e in others) or (
+    if rel == "HANGING_BELOW" or (
             rel != "SECURED_TO" and all(REGION_RULES[e.relation][0] == "none" for e in others)):
         return None
     if rel == "ON" and sup.owner != "room" and (
@@ -1021,10 +1025,17 @@ def _rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nd
     c3 = (asset_geometry(asset).center * scale) @ R.T
     ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
                         c3 + h * s.normal)
-    free = apply_region_rules(ctx, others, free, "object")
-    if rel == "SECURED_TO":
-        free = height_band(ctx, support_edge, free)
-    return apply_region_rules(ctx, others, free, "part")
+    try:
+        free = apply_region_rules(ctx, others, free, "object")
+        if rel == "SECURED_TO":
+            free = height_band(ctx, support_edge, free)
+        return apply_region_rules(ctx, others, free, "part")
+    except Fail:
+        if any(e.relation == "TOWARD" for e in others):
+            # TOWARD keeps a region its cones miss, so with obstacles a later rule may still
+            # find room: only the region built with them can tell
+            return None
+        raise
 
 
 def _owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float):
