@@ -26,6 +26,7 @@ __all__ = [
     "clip",
     "minkowski_convex",
     "erode",
+    "eroded_area",
     "free_samples",
     "draw_outside",
     "half_plane",
@@ -277,6 +278,20 @@ def _clip_box(poly: Polygon, n: np.ndarray, off: np.ndarray) -> BaseGeometry:
     return out if out.is_valid and out.area > 0 else Polygon()
 
 
+def eroded_area(region: BaseGeometry, footprint: np.ndarray) -> float:
+    """Area of ``erode(region, [], footprint)``: for an axis-aligned rectangle (a tabletop, a
+    shelf) the product of its sides less the footprint's extents, without a polygon."""
+    if _one_convex(region):
+        poly = region.geoms[0] if hasattr(region, "geoms") else region
+        rect = _convex_edges(poly)[0]
+        if rect is not None:
+            lo, hi = rect
+            f = np.asarray(footprint, float)
+            w = (hi - lo) - (f.max(axis=0) - f.min(axis=0))
+            return float(w[0] * w[1]) if (w > 0).all() else 0.0
+    return float(erode(region, [], footprint).area)
+
+
 def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarray) -> BaseGeometry:
     """Positions ``p`` where ``p + footprint`` lies inside ``region`` and misses every obstacle.
 
@@ -403,20 +418,8 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         grown = [obstacles[k] for k in np.flatnonzero(hit)]
     else:
         grown = []
-    if grown:
-        # every grown obstacle as half-planes too: inside it when inside all of its edges
-        V, counts = _minkowski_stack(grown, neg)
-        starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
-        nxt = np.arange(1, len(V) + 1)
-        nxt[starts + counts - 1] = starts
-        E = V[nxt] - V
-        Ng = np.empty_like(E)
-        Ng[:, 0], Ng[:, 1] = E[:, 1], -E[:, 0]
-        cg = Ng[:, 0] * V[:, 0] + Ng[:, 1] * V[:, 1]
-        flat = np.abs(E).max(axis=1) < 1e-12  # repeated vertices: no constraint
-        Ng[flat], cg[flat] = 0.0, 1.0
-        N, c = np.concatenate([N0, Ng]), np.concatenate([c0, cg])
-    k0 = len(N0)
+    # every grown obstacle as half-planes too: inside it when inside all of its edges
+    test = _GrownTest(grown, neg) if grown else None
     out, have, drawn = [], 0, 0
     for _ in range(FREE_SAMPLE_ROUNDS):
         rate = max(have / drawn, 0.05) if drawn else 0.5
@@ -424,10 +427,9 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         P = np.empty((m, 2))
         P[:, 0] = x0 + rng.random(m) * (x1 - x0)
         P[:, 1] = y0 + rng.random(m) * (y1 - y0)
-        S = P @ N.T - c
-        ok = (S[:, :k0] <= 0).all(axis=1)
-        if grown:
-            ok &= ~np.logical_and.reduceat(S[:, k0:] < 0, starts, axis=1).any(axis=1)
+        ok = ((P @ N.T - c) <= 0).all(axis=1)
+        if test is not None:
+            ok &= ~test.inside(P)
         drawn += m
         if ok.any():
             out.append(P[ok])
@@ -437,10 +439,11 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
     return None
 
 
-def _grown_half_planes(grown: list[np.ndarray], neg: np.ndarray):
+def _grown_half_planes(grown: list[np.ndarray], neg: np.ndarray, vertices: bool = False):
     """The obstacles ``grown`` by the footprint ``-neg`` as half-planes: ``(N, c, starts)``,
     a point ``x`` inside sum ``k`` when ``N[j] . x < c[j]`` for every row ``j`` from
-    ``starts[k]`` to the next start (repeated vertices give rows that hold everywhere)."""
+    ``starts[k]`` to the next start (repeated vertices give rows that hold everywhere); with
+    ``vertices`` the sums' vertices (one per row) follow."""
     V, counts = _minkowski_stack(grown, neg)
     starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
     nxt = np.arange(1, len(V) + 1)
@@ -451,7 +454,7 @@ def _grown_half_planes(grown: list[np.ndarray], neg: np.ndarray):
     cg = Ng[:, 0] * V[:, 0] + Ng[:, 1] * V[:, 1]
     flat = np.abs(E).max(axis=1) < 1e-12  # repeated vertices: no constraint
     Ng[flat], cg[flat] = 0.0, 1.0
-    return Ng, cg, starts
+    return (Ng, cg, starts, V) if vertices else (Ng, cg, starts)
 
 
 def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarray,
@@ -498,10 +501,12 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         ohi = np.maximum.reduceat(A, at) + hi
         hit = (olo[:, 0] <= x1) & (ohi[:, 0] >= x0) & (olo[:, 1] <= y1) & (ohi[:, 1] >= y0)
         grown = [obstacles[k] for k in np.flatnonzero(hit)]
+    test = None
     if grown:
-        N, c, starts = _grown_half_planes(grown, neg)
-        if segs is not None:  # the free pieces of the segments, exactly
-            segs = _segments_outside(segs, N, c, starts)
+        if segs is None:
+            test = _GrownTest(grown, neg)
+        else:  # the free pieces of the segments, exactly
+            segs = _segments_outside(segs, *_grown_half_planes(grown, neg))
             if not len(segs):
                 return None
             ln = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
@@ -524,9 +529,8 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         else:
             P = pts[rng.integers(len(pts), size=m)]
             ok = np.ones(m, bool)
-        if grown:
-            S = P @ N.T - c
-            ok &= ~np.logical_and.reduceat(S < 0, starts, axis=1).any(axis=1)
+        if test is not None:
+            ok &= ~test.inside(P)
         drawn += m
         if ok.any():
             out.append(P[ok])
@@ -534,6 +538,35 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         if have >= n:
             return np.concatenate(out)[:n]
     return None
+
+
+class _GrownTest:
+    """Which points lie strictly inside some obstacle grown by a footprint: each grown
+    obstacle's half-planes padded to one width, tested only for the points inside its box
+    (a point inside a convex polygon is inside the polygon's box)."""
+
+    def __init__(self, grown: list[np.ndarray], neg: np.ndarray):
+        N, c, starts, V = _grown_half_planes(grown, neg, vertices=True)
+        counts = np.diff(np.append(starts, len(N)))
+        g = np.repeat(np.arange(len(counts)), counts)
+        j = np.arange(len(N)) - np.repeat(starts, counts)
+        self.N = np.zeros((len(counts), int(counts.max()), 2))
+        self.c = np.ones((len(counts), int(counts.max())))  # padding holds everywhere
+        self.N[g, j], self.c[g, j] = N, c
+        self.lo = np.minimum.reduceat(V, starts)
+        self.hi = np.maximum.reduceat(V, starts)
+
+    def inside(self, P: np.ndarray) -> np.ndarray:
+        lo, hi = self.lo, self.hi
+        x, y = P[:, 0:1], P[:, 1:2]
+        box = (x >= lo[:, 0]) & (x <= hi[:, 0]) & (y >= lo[:, 1]) & (y <= hi[:, 1])
+        pi, ki = np.nonzero(box)
+        out = np.zeros(len(P), bool)
+        if len(pi):
+            Nk = self.N[ki]
+            S = P[pi, 0:1] * Nk[:, :, 0] + P[pi, 1:2] * Nk[:, :, 1] - self.c[ki]
+            out[pi[(S < 0).all(axis=1)]] = True
+        return out
 
 
 def _segments_outside(segs: np.ndarray, N: np.ndarray, c: np.ndarray,

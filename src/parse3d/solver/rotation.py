@@ -222,7 +222,7 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
         Y = hull @ R.T
         F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
                               outline_indices(asset, R.T @ s.normal))
-        return float(RG.erode(sup.region, [], F).area)
+        return RG.eroded_area(sup.region, F)
 
     quarter = [base + k * np.pi / 2 for k in range(4)]
     Y0 = hull @ R0.T
