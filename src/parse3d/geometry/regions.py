@@ -353,6 +353,8 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
 
 #: Batches of draws :func:`free_samples` tries before leaving the region to be built.
 FREE_SAMPLE_ROUNDS = 6
+#: Draws after which :func:`free_samples` and :func:`draw_outside` give up when none was free.
+EMPTY_AFTER = 600
 
 
 @per_object()
@@ -436,6 +438,8 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
             have += int(ok.sum())
         if have >= n:
             return np.concatenate(out)[:n]
+        if not have and drawn >= EMPTY_AFTER:
+            return None  # (nearly) nothing free: the built region tells which
     return None
 
 
@@ -537,6 +541,8 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
             have += int(ok.sum())
         if have >= n:
             return np.concatenate(out)[:n]
+        if not have and drawn >= EMPTY_AFTER:
+            return None  # (nearly) nothing free: the built region tells which
     return None
 
 
