@@ -910,6 +910,14 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
     same = hung = 0
+    if overhang and rel == "ON" and proposal is None and toward is None \
+            and strategy == "constrained" and len(samples) \
+            and _never_upright(asset, scale, R, s, base_solid):
+        # the loop below would find the base hanging off at every sample and give up after
+        # STRUCTURAL_FAILURES of them: say so at once, the draws made all the same
+        raise Fail(f"no valid pose on {sup.name} in "
+                   f"{min(len(samples), cfg.max_trials, STRUCTURAL_FAILURES)} trials "
+                   f"(last: {HANGS_OFF})")
     for k in range(cfg.max_trials + (proposal is not None)):
         trials += 1
         if proposal is not None and k == 0:
@@ -1234,6 +1242,20 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
             return False
         inner = hull.buffer(1e-6)  # a support narrower than the margin: the centre of mass over it
     return inner.contains(shapely.Point(com))
+
+
+def _never_upright(asset: Asset, scale: float, R: np.ndarray, s, solid) -> bool:
+    """Whether :func:`_base_supported` with ``upright`` fails wherever the child stands on
+    ``solid``: what it holds lies in ``solid``, so its short side is at most the square root
+    of the area of any rectangle about ``solid`` (its oriented envelope), which is narrower
+    than 30 % of the short side of the child's base (a handbag on a bench's button)."""
+    n = s.normal
+    pieces = [(w := (part_points([p]) * scale) @ R.T, w @ n) for p in asset.parts]
+    low = min(float(h.min()) for _, h in pieces)
+    base = shapely.MultiPoint(plane_coords(s, np.vstack(
+        [w[h <= low + 3e-3] for w, h in pieces]))).convex_hull
+    held = float(np.sqrt(max(solid.minimum_rotated_rectangle.area, 0.0)))
+    return held < 0.3 * _sides(base)[0] * (1.0 - 1e-6)
 
 
 def _sides(poly) -> tuple[float, float]:
