@@ -13,6 +13,7 @@ from shapely.geometry import Polygon
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
+from ..geometry.memo import per_object
 from ..geometry.meshes import MeshArrays, scaled_vertices
 from ..measure.checks import EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
@@ -519,7 +520,12 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
     order = rng.permutation(len(sups)) if len(sups) > 1 and support_edge.parent.surface is None \
         and support_edge.relation != "ON" else np.arange(len(sups))
     if support_edge.relation == "ON" and len(sups) > 1:
-        order = np.arange(len(sups))
+        # in their order (the highest first), but those the child's footprint cannot fit in
+        # any turn after the others: a bag on a bench's seat before its buttons, a cushion on
+        # a rug's field before its border strips (they stay, for a child that must overhang)
+        axis = _AXES[support_edge.child.surface or support_edge.spec.child_surface]
+        ext = sorted(scale * float(x) for k, x in enumerate(hull_extents(asset)[0]) if k != axis)
+        order = np.array(sorted(range(len(sups)), key=lambda i: not _may_fit(sups[i], ext)))
     if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
         order = rng.permutation(len(sups))
         if support_edge.relation == "IN":  # across a cradle's bars before on one of them
@@ -910,7 +916,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
     same = hung = 0
-    if overhang and rel == "ON" and proposal is None and toward is None \
+    if overhang and rel == "ON" and not sup.spans and proposal is None and toward is None \
             and strategy == "constrained" and len(samples) \
             and _never_upright(asset, scale, R, s, base_solid):
         # the loop below would find the base hanging off at every sample and give up after
@@ -941,8 +947,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             # reads positions in the plane and heights relative to the lowest point)
             hung = hung + 1 if last == HANGS_OFF else 1
             last = HANGS_OFF
-            if rel == "ON" and hung >= STRUCTURAL_FAILURES:
-                break  # the base misses the support wherever it is drawn: structural
+            if rel == "ON" and not sup.spans and hung >= STRUCTURAL_FAILURES:
+                # the base misses the support wherever it is drawn: structural (across the
+                # parts of a spanning support, feet on two straps, fewer draws hold)
+                break
             continue
         dropped = False
         if rel == "ON" and sup.owner != "room":
@@ -1242,6 +1250,19 @@ def _base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
             return False
         inner = hull.buffer(1e-6)  # a support narrower than the margin: the centre of mass over it
     return inner.contains(shapely.Point(com))
+
+
+def _may_fit(sup: Support, ext: list[float]) -> bool:
+    """Whether a footprint of sides ``ext`` (short, long) may fit the support's region in
+    some turn: not longer or wider than the sides of the region's oriented envelope."""
+    short, long = _region_sides(sup.region)
+    return ext[0] <= short + 1e-9 and ext[1] <= long + 1e-9
+
+
+@per_object()
+def _region_sides(region) -> tuple[float, float]:
+    """:func:`_sides` of a support region, kept per region object."""
+    return _sides(region)
 
 
 def _never_upright(asset: Asset, scale: float, R: np.ndarray, s, solid) -> bool:
