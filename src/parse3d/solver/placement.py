@@ -780,8 +780,6 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         ruled = _rules_region(st, oid, asset, scale, R, h, sup, support_edge, others, region0, F)
         # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
         step = STEP if rel == "ON" and sup.owner != "room" else 0.0
-        obst = obstacles(st, sup, exclude, height + EPS,
-                         _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0), step=step)
         if step:
             lift = st.memo(sup.owner, ("step", plane_key(s), step),
                            lambda: _step_height(st, sup, step))
@@ -790,8 +788,20 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         # a stack: ON an object of the same kind (their PAG nodes share a category)
         stack = rel == "ON" and sup.owner != "room" and bool(
             set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates))
-        samples = None if stack else _free_positions(rel, sup, others, region0, obst + holes, F,
-                                                     height, lift, rng, cfg.max_trials)
+        samples = None
+        if ruled is not None and lift == 0 and (
+                sup.owner == "room" or rel == "IN" or _inside_margin(F, height) == 0):
+            # drawn from the relations' region less the obstacles near it, without building
+            # it (the obstacles whose grown footprint can reach the region are those listed)
+            obst = obstacles(st, sup, exclude, height + EPS, _reach(ruled, F, 0.0), step=step)
+            samples = RG.draw_outside(ruled, obst + holes, F, rng, cfg.max_trials)
+        if samples is None:
+            obst = obstacles(st, sup, exclude, height + EPS,
+                             _reach(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0),
+                             step=step)
+            if not stack:
+                samples = _free_positions(rel, sup, others, region0, obst + holes, F, height,
+                                          lift, rng, cfg.max_trials)
         if samples is not None:
             pass  # drawn from the free space without building the region
         elif rel == "HANGING_BELOW":
@@ -829,10 +839,6 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
                            f"{height:.2f} m tall {asset.category} below {sup.name}: "
                            f"{names} in the way")
-        elif ruled is not None and lift == 0 and (
-                sup.owner == "room" or rel == "IN" or _inside_margin(F, height) == 0) and (
-                samples := RG.draw_outside(ruled, obst + holes, F, rng, cfg.max_trials)) is not None:
-            pass  # drawn from the rules' region less the obstacles, without building it
         else:
             region = RG.erode(region0, obst + holes, F)
             if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
