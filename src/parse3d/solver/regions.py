@@ -19,11 +19,12 @@ from shapely.geometry.base import BaseGeometry
 
 from ..assets.model import Asset, Part
 from ..geometry import regions as RG
+from ..geometry.hulls import hull_indices_2d
 from ..measure.checks import EPS, object_centroid
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
-from .geometry import asset_geometry, part_points
+from .geometry import asset_geometry, outline_indices, part_points
 from .rotation import parent_surface_world
 from .state import SolveState, frame_key, parts_for, plane_coords, plane_key
 from .support import Support
@@ -397,19 +398,21 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
             got = st.memo(oid, fkey, lambda pts=pts: _hull_heights(pts, sup.surface))
             if got[1] <= 1e-3 or got[0] >= height - 1e-3:
                 continue
-            if got[2] is None:
-                got[2] = RG.convex_footprint(plane_coords(sup.surface, pts))
+            if got[2] is None:  # the object's outline seen along the normal (kept per asset)
+                o = st.scene.objects[oid]
+                got[2] = RG.convex_outline(plane_coords(sup.surface, pts),
+                                           outline_indices(o.asset, o.rotation.T @ n))
             out.append(got[2])
     # the supporting objects themselves are not whole obstacles, but their other parts are:
     # a cabinet's sides and back around its shelf, the other burners of a stove
     key = ("pieces", *plane_key(sup.surface))
     for oid in (exclude if parts else ()):
         for piece in st.memo(oid, key, lambda oid=oid: _piece_heights(st, oid, sup)):
-            lo_h, hi_h, pts, fp = piece
+            lo_h, hi_h, pts, fp = piece[:4]
             if hi_h <= 1e-3 or lo_h >= height - 1e-3:
                 continue
             if fp is None:  # footprints are made when first needed, then kept
-                fp = piece[3] = RG.convex_footprint(plane_coords(sup.surface, pts))
+                fp = piece[3] = RG.convex_outline(plane_coords(sup.surface, pts), piece[4])
             if hi_h <= step and steps_on(sup, fp):
                 continue
             out.append(fp)
@@ -441,12 +444,36 @@ def _hull_heights(pts: np.ndarray, s) -> list:
 
 
 def _piece_heights(st: SolveState, oid: str, sup: Support) -> list[list]:
-    """``[lowest, highest, points, None]`` for each convex piece of a placed object: heights
-    above the support plane, world points; the last slot holds the piece's footprint in the
-    plane once made (see :func:`obstacles`)."""
+    """``[lowest, highest, points, None, outline]`` for each convex piece of a placed object:
+    heights above the support plane, world points, a slot for the piece's footprint in the
+    plane once made (see :func:`obstacles`) and the indices of its vertices there."""
     s = sup.surface
+    o = st.scene.objects[oid]
+    d = o.rotation.T @ s.normal  # the normal in the asset's frame
     out = []
-    for _, pts in st.world_pieces(oid):
+    for k, (_, pts) in enumerate(st.world_pieces(oid)):
         h = (pts - s.origin) @ s.normal
-        out.append([float(h.min()), float(h.max()), pts, None])
+        out.append([float(h.min()), float(h.max()), pts, None, _piece_outline(o.asset, k, d)])
     return out
+
+
+#: Hull indices of a convex piece's vertices seen along a direction (asset frame), per
+#: ``(asset id, piece, direction rounded to 1e-9)``.
+_PIECE_OUTLINES: dict[tuple, np.ndarray | None] = {}
+
+
+def _piece_outline(asset: Asset, k: int, d: np.ndarray) -> np.ndarray | None:
+    """Indices into the ``k``-th convex piece's vertices (in :meth:`SolveState.world_pieces`
+    order) of its outline seen along ``d`` (asset frame): any pose's footprint of the piece in
+    a plane of that normal has its vertices there (as :func:`outline_indices` for a whole
+    asset), so a footprint costs a gather instead of a hull. None when degenerate."""
+    key = (asset.asset_id, k, *np.asarray(d, float).round(9).tolist())
+    if key not in _PIECE_OUTLINES:
+        if len(_PIECE_OUTLINES) > 65536:
+            _PIECE_OUTLINES.clear()
+        v = [pc.vertices for p in asset.parts for pc in p.piece_arrays][k]
+        d = np.asarray(d, float) / np.linalg.norm(d)
+        a = np.cross(d, [1.0, 0, 0] if abs(d[0]) < 0.9 else [0, 1.0, 0])
+        a /= np.linalg.norm(a)
+        _PIECE_OUTLINES[key] = hull_indices_2d(np.c_[v @ a, v @ np.cross(d, a)])
+    return _PIECE_OUTLINES[key]
