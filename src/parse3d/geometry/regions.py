@@ -443,24 +443,6 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
     return None
 
 
-def _grown_half_planes(grown: list[np.ndarray], neg: np.ndarray, vertices: bool = False):
-    """The obstacles ``grown`` by the footprint ``-neg`` as half-planes: ``(N, c, starts)``,
-    a point ``x`` inside sum ``k`` when ``N[j] . x < c[j]`` for every row ``j`` from
-    ``starts[k]`` to the next start (repeated vertices give rows that hold everywhere); with
-    ``vertices`` the sums' vertices (one per row) follow."""
-    V, counts = _minkowski_stack(grown, neg)
-    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
-    nxt = np.arange(1, len(V) + 1)
-    nxt[starts + counts - 1] = starts
-    E = V[nxt] - V
-    Ng = np.empty_like(E)
-    Ng[:, 0], Ng[:, 1] = E[:, 1], -E[:, 0]
-    cg = Ng[:, 0] * V[:, 0] + Ng[:, 1] * V[:, 1]
-    flat = np.abs(E).max(axis=1) < 1e-12  # repeated vertices: no constraint
-    Ng[flat], cg[flat] = 0.0, 1.0
-    return (Ng, cg, starts, V) if vertices else (Ng, cg, starts)
-
-
 def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarray,
                  rng: np.random.Generator, n: int, rounds: int = FREE_SAMPLE_ROUNDS
                  ) -> np.ndarray | None:
@@ -507,10 +489,10 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         grown = [obstacles[k] for k in np.flatnonzero(hit)]
     test = None
     if grown:
-        if segs is None:
-            test = _GrownTest(grown, neg)
-        else:  # the free pieces of the segments, exactly
-            segs = _segments_outside(segs, *_grown_half_planes(grown, neg))
+        test = _GrownTest(grown, neg)
+        if segs is not None:  # the free pieces of the segments, exactly
+            segs = _segments_outside(segs, test.N, test.c)
+            test = None
             if not len(segs):
                 return None
             ln = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
@@ -547,20 +529,40 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
 
 
 class _GrownTest:
-    """Which points lie strictly inside some obstacle grown by a footprint: each grown
-    obstacle's half-planes padded to one width, tested only for the points inside its box
-    (a point inside a convex polygon is inside the polygon's box)."""
+    """Which points lie strictly inside some obstacle grown by a footprint.
+
+    The Minkowski sum of a convex obstacle ``O`` and the convex ``-F`` is the intersection of
+    the half-planes ``n . x < h_O(n) + h_-F(n)`` over the edge normals ``n`` of both (``h`` a
+    support function): no sum is built. Each obstacle's rows are padded to one width (rows
+    that hold everywhere), and a point is tested only against the obstacles whose box (the
+    obstacle's box grown by the footprint's) holds it.
+    """
 
     def __init__(self, grown: list[np.ndarray], neg: np.ndarray):
-        N, c, starts, V = _grown_half_planes(grown, neg, vertices=True)
-        counts = np.diff(np.append(starts, len(N)))
-        g = np.repeat(np.arange(len(counts)), counts)
-        j = np.arange(len(N)) - np.repeat(starts, counts)
-        self.N = np.zeros((len(counts), int(counts.max()), 2))
-        self.c = np.ones((len(counts), int(counts.max())))  # padding holds everywhere
-        self.N[g, j], self.c[g, j] = N, c
-        self.lo = np.minimum.reduceat(V, starts)
-        self.hi = np.maximum.reduceat(V, starts)
+        counts = np.array([len(o) for o in grown])
+        A = np.concatenate(grown).astype(float, copy=False)
+        starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+        nxt = np.arange(1, len(A) + 1)
+        nxt[starts + counts - 1] = starts
+        E = A[nxt] - A
+        No = np.column_stack([E[:, 1], -E[:, 0]])  # outward normals of counter-clockwise rings
+        co = (No * A).sum(axis=1) + (No @ neg.T).max(axis=1)
+        flat = np.abs(E).max(axis=1) < 1e-12  # repeated vertices: no constraint
+        No[flat], co[flat] = 0.0, 1.0
+        Ef = np.roll(neg, -1, axis=0) - neg
+        Nf = np.column_stack([Ef[:, 1], -Ef[:, 0]])
+        keep = np.abs(Ef).max(axis=1) >= 1e-12
+        Nf = Nf[keep]
+        cf = np.maximum.reduceat(A @ Nf.T, starts, axis=0) + (Nf * neg[keep]).sum(axis=1)
+        K, W = len(counts), int(counts.max())
+        self.N = np.zeros((K, W + len(Nf), 2))
+        self.c = np.ones((K, W + len(Nf)))
+        g = np.repeat(np.arange(K), counts)
+        j = np.arange(len(A)) - np.repeat(starts, counts)
+        self.N[g, j], self.c[g, j] = No, co
+        self.N[:, W:], self.c[:, W:] = Nf, cf
+        self.lo = np.minimum.reduceat(A, starts) + neg.min(axis=0)
+        self.hi = np.maximum.reduceat(A, starts) + neg.max(axis=0)
 
     def inside(self, P: np.ndarray) -> np.ndarray:
         lo, hi = self.lo, self.hi
@@ -575,21 +577,21 @@ class _GrownTest:
         return out
 
 
-def _segments_outside(segs: np.ndarray, N: np.ndarray, c: np.ndarray,
-                      starts: np.ndarray) -> np.ndarray:
+def _segments_outside(segs: np.ndarray, N: np.ndarray, c: np.ndarray) -> np.ndarray:
     """The pieces (M, 2, 2) of segments ``segs`` (S, 2, 2) outside every convex polygon given
-    as half-planes by :func:`_grown_half_planes` (pieces shorter than 1e-9 m dropped)."""
+    as padded half-planes ``N . x < c`` (K, W, 2) and (K, W), as :class:`_GrownTest` holds
+    them (pieces shorter than 1e-9 m dropped)."""
     a0, d = segs[:, 0], segs[:, 1] - segs[:, 0]
-    a = a0 @ N.T - c  # row j holds inside where a + t * d < 0, t in [0, 1] along the segment
-    b = d @ N.T
+    # row (k, w) holds inside where a + t * b < 0, t in [0, 1] along the segment
+    a = np.einsum("sx,kwx->skw", a0, N) - c[None]
+    b = np.einsum("sx,kwx->skw", d, N)
     with np.errstate(divide="ignore", invalid="ignore"):
         r = -a / b
     inf = np.inf
     flat_in = a < 0  # a row parallel to the segment holds everywhere or nowhere
     lo = np.where(b < 0, r, np.where(b > 0, -inf, np.where(flat_in, -inf, inf)))
     hi = np.where(b > 0, r, np.where(b < 0, inf, np.where(flat_in, inf, -inf)))
-    LO = np.maximum.reduceat(lo, starts, axis=1)
-    HI = np.minimum.reduceat(hi, starts, axis=1)
+    LO, HI = lo.max(axis=2), hi.min(axis=2)
     out = []
     for k in range(len(segs)):
         cut = sorted((max(x, 0.0), min(y, 1.0)) for x, y in zip(LO[k], HI[k], strict=True)
