@@ -110,7 +110,7 @@ def asset_points(asset: Asset) -> np.ndarray:
     """:func:`part_points` of all the asset's parts, stacked once per asset (read-only)."""
     pts = _POINTS.get(asset.asset_id)
     if pts is None:
-        if len(_POINTS) > 512:
+        if len(_POINTS) > 4096:
             _POINTS.clear()
         pts = part_points(asset.parts)
         pts.flags.writeable = False
