@@ -200,3 +200,17 @@ def test_unhashable_enum_value_is_a_problem_not_a_crash():
     problems = validate_data(doc)
     assert [p.pointer for p in problems] == ["/relations/2/side"]
     assert "unknown side" in problems[0].message
+
+
+def test_a_number_json_cannot_hold_is_a_problem_where_it_is():
+    """NaN or infinity anywhere (``meta`` too) makes a PAG that could not be written back:
+    a problem at its place, not an error when the PAG is saved."""
+    doc = {"format": "pag/1", "name": "a",
+           "room": {"type": "study", "footprint": [[0, 0], [2.0, 0], [2.0, 2.0], [0, 2.0]],
+                    "height": 3.0},
+           "objects": [{"id": "o0", "category": "book"}],
+           "relations": [{"relation": "ON", "child": "o0", "parent": "floor"}],
+           "meta": {"source": float("nan"), "seed": 0, "w": [1.0, float("inf")]}}
+    problems = validate_data(doc)
+    assert {p.pointer for p in problems} == {"/meta/source", "/meta/w/1"}
+    assert all("finite" in p.message for p in problems)

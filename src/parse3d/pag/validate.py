@@ -157,9 +157,29 @@ def validate_data(
         for p in _Checker(data, vocabulary).run():
             if p.pointer not in seen:
                 problems.append(Problem(p.pointer, p.message, file, p.kind))
+        # a number JSON cannot hold, wherever it is (in ``meta`` too): the PAG could not be
+        # written back
+        seen = {p.pointer for p in problems}
+        for ptr, v in _non_finite(data, ""):
+            if not any(ptr == q or ptr.startswith(q + "/") for q in seen):
+                problems.append(Problem(ptr, f"{v} is not a finite number (JSON has no NaN or "
+                                        f"infinity): write a number or leave the field out",
+                                        file, "parameter"))
     if raise_errors and problems:
         raise error_for(problems, file=file)
     return problems
+
+
+def _non_finite(v: Any, pointer: str):
+    """``(pointer, value)`` of every float in ``v`` that is NaN or infinite."""
+    if isinstance(v, float) and not math.isfinite(v):
+        yield pointer, v
+    elif isinstance(v, dict):
+        for k, x in v.items():
+            yield from _non_finite(x, f"{pointer}/{str(k).replace('~', '~0').replace('/', '~1')}")
+    elif isinstance(v, list):
+        for i, x in enumerate(v):
+            yield from _non_finite(x, f"{pointer}/{i}")
 
 
 def _size_problems(data: Any, file: str | None) -> list[Problem]:

@@ -969,10 +969,19 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 t = t - (d - EPS) * s.normal
                 cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
             if lift > 0:  # rest on the low parts under its base (rays may miss a burner)
-                up = _step_under(st, sup, world_points(cand, hull_only=True), STEP)
+                pts = world_points(cand, hull_only=True)
+                up = _step_under(st, sup, pts, STEP)
                 if up > 0:
                     t = t + up * s.normal
                     cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
+                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS and \
+                        not _base_supported(asset, scale, Rt, t, s, _low_parts(st, sup, STEP),
+                                            upright=True):
+                    # raised onto low parts, its centre of mass must be over what holds it:
+                    # a pot half on a burner's edge tips into the gap in settling
+                    last = "its base would rest on the edge of a low part (centre of mass " \
+                           "outside what holds it)"
+                    continue
         # footprint inside the support polygon: the region guarantees it, except after a TOWARD
         # turn, for rejection samples and proposals
         if not overhang and (Rt is not R or strategy == "rejection"):
@@ -1314,6 +1323,23 @@ def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | Non
     if best is None or "top" not in owner.asset.part(best).surfaces:
         return None
     return best
+
+
+def _low_parts(st: SolveState, sup: Support, step: float):
+    """The footprints (plane coordinates, as one geometry) of the owner's parts that rise at
+    most ``step`` above ``sup`` and are stood on (the burners of a cooktop), as
+    :func:`_step_under` finds them; kept while the owner keeps its pose."""
+    def make():
+        n = sup.surface.normal
+        feet = []
+        for _, q in st.world_pieces(sup.owner):
+            hq = (q - sup.surface.origin) @ n
+            if 1e-3 < float(hq.max()) <= step and float(hq.min()) > -step:
+                fp = plane_coords(sup.surface, q)
+                if steps_on(sup, fp):
+                    feet.append(Polygon(RG.convex_footprint(fp)))
+        return shapely.union_all(feet) if feet else Polygon()
+    return st.memo(sup.owner, ("low parts", plane_key(sup.surface), step), make)
 
 
 def _covered(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:
