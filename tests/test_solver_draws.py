@@ -127,3 +127,16 @@ def test_a_cabinet_near_another_finds_its_wall(seed):
         if e.parent.object == "wall":
             continue
         assert check_edge(scene, e, scene.objects["b"])[0], e
+
+
+def test_a_curtain_hangs_with_its_centre_in_its_height_band():
+    """``SECURED_TO wall height [0.8, 1.0]`` is the centre's height: floor-length curtains too
+    tall for it are followed by the lowest untried instance, and one hangs in the band."""
+    for seed in range(6):
+        pag = PAG("curtain", Room("bedroom", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
+        pag.add("dressing", "curtain")
+        pag.relate("dressing", "SECURED_TO", "wall", height=(0.8, 1.0))
+        scene = solve(pag, seed=seed)
+        assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+        centre = float(np.mean(scene.objects["dressing"].world_bounds(settled=False)[:, 2]))
+        assert 0.8 - 1e-6 <= centre <= 1.0 + 1e-6

@@ -88,6 +88,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                smallest=True)
             if alt is not None:
                 category, asset = alt
+        elif reasons and _too_tall(reasons[-1]):
+            # too tall for its height band on a wall (curtains hung at 0.8-1 m): the lowest
+            # untried instance next (its up axis)
+            alt = _alternative(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
+                               key=lambda a: _extent(a, 2))
+            if alt is not None:
+                category, asset = alt
         elif asset.asset_id in tried or lacks(asset, reqs):
             # constraint-aware selection: another instance that has what the relations need
             alt = _alternative(library, node.candidates, reqs, tried, rng)
@@ -454,6 +461,11 @@ def _free_top(asset: Asset, part) -> bool:
 
 #: Pool slots examined per candidate category when looking for a suitable instance.
 RANKED_SLOTS = 6
+
+
+def _too_tall(reason: str) -> bool:
+    """Whether a failure was a height band the instance is too tall for (SECURED_TO)."""
+    return "height is the centre's" in reason
 
 
 def _space(reason: str) -> bool:
@@ -953,7 +965,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             # reads positions in the plane and heights relative to the lowest point)
             hung = hung + 1 if last == HANGS_OFF else 1
             last = HANGS_OFF
-            if rel == "ON" and not sup.spans and hung >= STRUCTURAL_FAILURES:
+            if rel == "ON" and not sup.spans and not stack and hung >= STRUCTURAL_FAILURES:
                 # the base misses the support wherever it is drawn: structural (across the
                 # parts of a spanning support, feet on two straps, fewer draws hold)
                 break
@@ -974,9 +986,11 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 if up > 0:
                     t = t + up * s.normal
                     cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS and \
-                        not _base_supported(asset, scale, Rt, t, s, _low_parts(st, sup, STEP),
-                                            upright=True):
+                low = _low_parts(st, sup, STEP)
+                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS \
+                        and not low.is_empty and low.intersects(
+                            Polygon(RG.convex_footprint(plane_coords(s, pts)))) \
+                        and not _base_supported(asset, scale, Rt, t, s, low, upright=True):
                     # raised onto low parts, its centre of mass must be over what holds it:
                     # a pot half on a burner's edge tips into the gap in settling
                     last = "its base would rest on the edge of a low part (centre of mass " \
@@ -1327,7 +1341,8 @@ def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | Non
 
 def _low_parts(st: SolveState, sup: Support, step: float):
     """The footprints (plane coordinates, as one geometry) of the owner's parts that rise at
-    most ``step`` above ``sup`` and are stood on (the burners of a cooktop), as
+    most ``step`` above ``sup``, are stood on, and are at least ``SPAN_PART`` wide (the burners
+    of a cooktop, not the buttons of a tufted seat: a cushion rests over those), as
     :func:`_step_under` finds them; kept while the owner keeps its pose."""
     def make():
         n = sup.surface.normal
@@ -1337,7 +1352,9 @@ def _low_parts(st: SolveState, sup: Support, step: float):
             if 1e-3 < float(hq.max()) <= step and float(hq.min()) > -step:
                 fp = plane_coords(sup.surface, q)
                 if steps_on(sup, fp):
-                    feet.append(Polygon(RG.convex_footprint(fp)))
+                    foot = Polygon(RG.convex_footprint(fp))
+                    if _sides(foot)[0] >= SPAN_PART:
+                        feet.append(foot)
         return shapely.union_all(feet) if feet else Polygon()
     return st.memo(sup.owner, ("low parts", plane_key(sup.surface), step), make)
 
