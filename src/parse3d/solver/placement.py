@@ -986,11 +986,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 if up > 0:
                     t = t + up * s.normal
                     cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-                low = _low_parts(st, sup, STEP)
-                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS \
-                        and not low.is_empty and low.intersects(
-                            Polygon(RG.convex_footprint(plane_coords(s, pts)))) \
-                        and not _base_supported(asset, scale, Rt, t, s, low, upright=True):
+                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS and \
+                        not _base_supported(asset, scale, Rt, t, s, _low_parts(st, sup, STEP),
+                                            upright=True):
                     # raised onto low parts, its centre of mass must be over what holds it:
                     # a pot half on a burner's edge tips into the gap in settling
                     last = "its base would rest on the edge of a low part (centre of mass " \
@@ -1341,8 +1339,7 @@ def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | Non
 
 def _low_parts(st: SolveState, sup: Support, step: float):
     """The footprints (plane coordinates, as one geometry) of the owner's parts that rise at
-    most ``step`` above ``sup``, are stood on, and are at least ``SPAN_PART`` wide (the burners
-    of a cooktop, not the buttons of a tufted seat: a cushion rests over those), as
+    most ``step`` above ``sup`` and are stood on (the burners of a cooktop), as
     :func:`_step_under` finds them; kept while the owner keeps its pose."""
     def make():
         n = sup.surface.normal
@@ -1352,9 +1349,7 @@ def _low_parts(st: SolveState, sup: Support, step: float):
             if 1e-3 < float(hq.max()) <= step and float(hq.min()) > -step:
                 fp = plane_coords(sup.surface, q)
                 if steps_on(sup, fp):
-                    foot = Polygon(RG.convex_footprint(fp))
-                    if _sides(foot)[0] >= SPAN_PART:
-                        feet.append(foot)
+                    feet.append(Polygon(RG.convex_footprint(fp)))
         return shapely.union_all(feet) if feet else Polygon()
     return st.memo(sup.owner, ("low parts", plane_key(sup.surface), step), make)
 
