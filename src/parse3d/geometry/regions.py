@@ -422,16 +422,28 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         grown = []
     # every grown obstacle as half-planes too: inside it when inside all of its edges
     test = _GrownTest(grown, neg) if grown else None
-    out, have, drawn = [], 0, 0
-    for _ in range(FREE_SAMPLE_ROUNDS):
-        rate = max(have / drawn, 0.05) if drawn else 0.5
-        m = int(math.ceil((n - have) / rate * 1.25)) + 4
+
+    def batch(m: int) -> tuple[np.ndarray, np.ndarray]:
         P = np.empty((m, 2))
         P[:, 0] = x0 + rng.random(m) * (x1 - x0)
         P[:, 1] = y0 + rng.random(m) * (y1 - y0)
         ok = ((P @ N.T - c) <= 0).all(axis=1)
         if test is not None:
             ok &= ~test.inside(P)
+        return P, ok
+
+    return _kept_draws(batch, n, FREE_SAMPLE_ROUNDS)
+
+
+def _kept_draws(batch, n: int, rounds: int) -> np.ndarray | None:
+    """The first ``n`` positions kept from batches of draws, ``batch(m) -> (P, ok)``, each
+    batch sized by the share kept so far; None when ``rounds`` batches did not keep ``n``, or
+    :data:`EMPTY_AFTER` draws kept none (the built region then tells why)."""
+    out, have, drawn = [], 0, 0
+    for _ in range(rounds):
+        rate = max(have / drawn, 0.05) if drawn else 0.5
+        m = int(math.ceil((n - have) / rate * 1.25)) + 4
+        P, ok = batch(m)
         drawn += m
         if ok.any():
             out.append(P[ok])
@@ -439,7 +451,7 @@ def free_samples(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
         if have >= n:
             return np.concatenate(out)[:n]
         if not have and drawn >= EMPTY_AFTER:
-            return None  # (nearly) nothing free: the built region tells which
+            return None  # (nearly) nothing free
     return None
 
 
@@ -498,10 +510,8 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
             ln = np.hypot(*(segs[:, 1] - segs[:, 0]).T)
             cum = np.cumsum(ln) / ln.sum()
             grown = []
-    out, have, drawn = [], 0, 0
-    for _ in range(rounds):
-        rate = max(have / drawn, 0.05) if drawn else 0.5
-        m = int(math.ceil((n - have) / rate * 1.25)) + 4
+
+    def batch(m: int) -> tuple[np.ndarray, np.ndarray]:
         if areal:
             P = np.empty((m, 2))
             P[:, 0] = x0 + rng.random(m) * (x1 - x0)
@@ -517,15 +527,9 @@ def draw_outside(region: BaseGeometry, obstacles: list[np.ndarray], footprint: n
             ok = np.ones(m, bool)
         if test is not None:
             ok &= ~test.inside(P)
-        drawn += m
-        if ok.any():
-            out.append(P[ok])
-            have += int(ok.sum())
-        if have >= n:
-            return np.concatenate(out)[:n]
-        if not have and drawn >= EMPTY_AFTER:
-            return None  # (nearly) nothing free: the built region tells which
-    return None
+        return P, ok
+
+    return _kept_draws(batch, n, rounds)
 
 
 class _GrownTest:

@@ -789,17 +789,18 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     base_solid = None
     lift = 0.0
     if strategy == "constrained":
-        ruled = _rules_region(st, oid, asset, scale, R, h, sup, support_edge, others, region0, F)
-        # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
-        step = STEP if rel == "ON" and sup.owner != "room" else 0.0
-        if step:
-            lift = st.memo(sup.owner, ("step", plane_key(s), step),
-                           lambda: _step_height(st, sup, step))
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
         # a stack: ON an object of the same kind (their PAG nodes share a category)
         stack = rel == "ON" and sup.owner != "room" and bool(
             set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates))
+        ruled = None if stack else _rules_region(st, oid, asset, scale, R, h, sup, support_edge,
+                                                 others, region0, F, holes)
+        # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
+        step = STEP if rel == "ON" and sup.owner != "room" else 0.0
+        if step:
+            lift = st.memo(sup.owner, ("step", plane_key(s), step),
+                           lambda: _step_height(st, sup, step))
         samples = None
         if ruled is not None and lift == 0 and (
                 sup.owner == "room" or rel == "IN" or _inside_margin(F, height) == 0):
@@ -880,9 +881,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             raise Fail(_no_space(st, sup, F, region0, obst + holes),
                        intrinsic=RG.erode(region0, holes, F).is_empty and not overhang)
         if samples is None:
-            c3 = (asset_geometry(asset).center * scale) @ R.T
-            ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
-                                c3 + h * s.normal)
+            ctx = _region_context(st, oid, asset, scale, R, h, sup)
             region = apply_region_rules(ctx, others, region, "object")
             if rel == "SECURED_TO":
                 region = height_band(ctx, support_edge, region)
@@ -1033,9 +1032,18 @@ HANGS_OFF = ("a foot or the base would hang off the support (centre of mass outs
              "on it)")
 
 
+def _region_context(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+                    h: float, sup: Support) -> RegionContext:
+    """The posed child the region rules clip for (its bbox centre's offset from its origin)."""
+    s = sup.surface
+    c3 = (asset_geometry(asset).center * scale) @ R.T
+    return RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
+                         c3 + h * s.normal)
+
+
 def _rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
                   h: float, sup: Support, support_edge: Edge, others: list[Edge], region0,
-                  F: np.ndarray):
+                  F: np.ndarray, holes: list[np.ndarray]):
     """The positions the child's relations allow on this support whatever stands on it; Fail
     when there are none.
 
@@ -1047,27 +1055,20 @@ def _rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nd
     footprints is the region ``_place_on`` builds, as a set (positions may be drawn from it
     without building it: :func:`RG.draw_outside`).
 
-    None where this does not apply: no rule (nor height band), stacks, hanging children and
-    supports too small for the footprint (overhanging children), whose regions are built
-    otherwise. TOWARD, which keeps
-    a region its cones miss, leaves the region as it finds it here; positions drawn from the
-    result are still positions of the built region (when the obstacles leave its cones
-    nothing, nothing is drawn and the region is built), but a rule emptying it is no proof."""
+    None where this does not apply: no rule (nor height band), hanging children and supports
+    too small for the footprint (overhanging children), whose regions are built otherwise
+    (stacks are not asked). TOWARD, which keeps a region its cones miss, leaves the region as
+    it finds it here; positions drawn from the result are still positions of the built region
+    (when the obstacles leave its cones nothing, nothing is drawn and the region is built),
+    but a rule emptying it is no proof."""
     rel = support_edge.relation
     if rel == "HANGING_BELOW" or (
             rel != "SECURED_TO" and all(REGION_RULES[e.relation][0] == "none" for e in others)):
         return None
-    if rel == "ON" and sup.owner != "room" and (
-            set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates)):
-        return None  # a stack
-    holes = [RG.convex_footprint(hole) for hole in sup.holes]
     free = RG.erode(region0, holes, F)
     if free.is_empty or free.area < 1e-10:
         return None  # too small even when empty: _place_on says why (or overhangs)
-    s = sup.surface
-    c3 = (asset_geometry(asset).center * scale) @ R.T
-    ctx = RegionContext(st, oid, asset, scale, R, h, sup, np.array([c3 @ s.u, c3 @ s.v]),
-                        c3 + h * s.normal)
+    ctx = _region_context(st, oid, asset, scale, R, h, sup)
     try:
         free = apply_region_rules(ctx, others, free, "object")
         if rel == "SECURED_TO":
@@ -1155,14 +1156,26 @@ def _step_under(st: SolveState, sup: Support, pts: np.ndarray, step: float) -> f
     base = pts[h <= h.min() + 3e-3]
     foot = Polygon(RG.convex_footprint(plane_coords(sup.surface, base))).buffer(1e-4)
     need = float(h.min())
-    for _, q in st.world_pieces(sup.owner):
-        hq = (q - sup.surface.origin) @ n
-        if not (1e-3 < float(hq.max()) <= step and float(hq.min()) > -step) \
-                or not steps_on(sup, plane_coords(sup.surface, q)):
-            continue
-        if foot.intersects(Polygon(RG.convex_footprint(plane_coords(sup.surface, q)))):
-            need = max(need, float(hq.max()) + EPS)
+    for top, piece in _low_pieces(st, sup, step):
+        if foot.intersects(piece):
+            need = max(need, top + EPS)
     return need - float(h.min())
+
+
+def _low_pieces(st: SolveState, sup: Support, step: float) -> list[tuple[float, Polygon]]:
+    """``(height of its top, footprint)`` (plane coordinates) of each piece of the owner that
+    rises at most ``step`` above ``sup`` and is stood on (a burner of a cooktop); kept while
+    the owner keeps its pose."""
+    def make():
+        n, out = sup.surface.normal, []
+        for _, q in st.world_pieces(sup.owner):
+            hq = (q - sup.surface.origin) @ n
+            if 1e-3 < float(hq.max()) <= step and float(hq.min()) > -step:
+                fp = plane_coords(sup.surface, q)
+                if steps_on(sup, fp):
+                    out.append((float(hq.max()), Polygon(RG.convex_footprint(fp))))
+        return out
+    return st.memo(sup.owner, ("low pieces", plane_key(sup.surface), step), make)
 
 
 def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndarray,
@@ -1338,20 +1351,9 @@ def _resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | Non
 
 
 def _low_parts(st: SolveState, sup: Support, step: float):
-    """The footprints (plane coordinates, as one geometry) of the owner's parts that rise at
-    most ``step`` above ``sup`` and are stood on (the burners of a cooktop), as
-    :func:`_step_under` finds them; kept while the owner keeps its pose."""
-    def make():
-        n = sup.surface.normal
-        feet = []
-        for _, q in st.world_pieces(sup.owner):
-            hq = (q - sup.surface.origin) @ n
-            if 1e-3 < float(hq.max()) <= step and float(hq.min()) > -step:
-                fp = plane_coords(sup.surface, q)
-                if steps_on(sup, fp):
-                    feet.append(Polygon(RG.convex_footprint(fp)))
-        return shapely.union_all(feet) if feet else Polygon()
-    return st.memo(sup.owner, ("low parts", plane_key(sup.surface), step), make)
+    """The footprints of :func:`_low_pieces` as one geometry (the burners a pot may rest on)."""
+    pieces = _low_pieces(st, sup, step)
+    return shapely.union_all([p for _, p in pieces]) if pieces else Polygon()
 
 
 def _covered(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:
