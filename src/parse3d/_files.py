@@ -259,7 +259,8 @@ def read_json_lines(path: str | Path, *, limit: int = MAX_INPUT_BYTES, what: str
             out.append((n, loads_json(line, file=str(path), depth=depth)))
         except SchemaError as e:
             msg = e.problems[0].message if e.problems else str(e)
-            raise SchemaError(Problem(f"line {n}", msg, str(path), "syntax")) from None
+            raise SchemaError(Problem(f"line {n}", f"not valid JSON ({msg}); one JSON value per "
+                                                   "line", str(path), "syntax")) from None
     return out
 
 

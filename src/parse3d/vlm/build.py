@@ -101,21 +101,15 @@ def record_schema() -> dict[str, Any]:
 
 
 def read_jsonl(path: str | Path) -> list[dict[str, Any]]:
-    """Read a JSONL file; a broken line is an :class:`InputError` naming it."""
-    p = Path(path)
-    if not p.exists():
-        raise InputError(Problem("", "no such file", str(p), "io"))
+    """Read a JSONL file of objects through the bounded reader (a regular file of at most
+    64 MiB, UTF-8, nesting at most 64 deep); a broken line is an :class:`InputError` naming it.
+    """
+    from .._files import read_json_lines
+
     rows = []
-    for n, line in enumerate(p.read_text().splitlines(), 1):
-        if not line.strip():
-            continue
-        try:
-            row = json.loads(line)
-        except json.JSONDecodeError as e:
-            raise InputError(Problem(f"line {n}", f"not valid JSON ({e.msg}); one JSON object "
-                                                  "per line", str(p), "syntax")) from None
+    for n, row in read_json_lines(path, what="JSON Lines file"):
         if not isinstance(row, dict):
-            raise InputError(Problem(f"line {n}", "expected a JSON object", str(p), "syntax"))
+            raise InputError(Problem(f"line {n}", "expected a JSON object", str(path), "syntax"))
         rows.append(row)
     return rows
 
