@@ -202,6 +202,25 @@ def test_build_bad_input(dataset, tmp_path, capsys):
     assert code == 2 and "outside the dataset" in out
     code, out = _main(capsys, "vlm", "build", src, "--out", tmp_path / "o2")
     assert code == 2 and "not a dataset folder" in out
+    # a corrupt views.json, and a mask box from an instance mask of another size
+    for name, change in (("corrupt", lambda d: d[:len(d) // 2]),
+                         ("listed", lambda d: "[]"),
+                         ("big-mask", lambda d: json.dumps(_widen_boxes(json.loads(d))))):
+        copy = tmp_path / name
+        shutil.copytree(dataset, copy, ignore=shutil.ignore_patterns("vlm"))
+        views = copy / "scenes" / "00000" / "views.json"
+        views.write_text(change(views.read_text()))
+        code, out = _main(capsys, "vlm", "build", copy, "--out", tmp_path / f"o-{name}")
+        assert code == 2 and str(views) in out and "Traceback" not in out, out
+
+
+def _widen_boxes(doc: dict) -> dict:
+    """views.json as if its masks were rendered at twice the camera's size."""
+    for v in doc["views"]:
+        for rec in v.get("objects", []):
+            rec["bbox"] = [2 * x + 1 for x in rec["bbox"]]
+            rec["pixels"] *= 4
+    return doc
 
 
 def test_build_renders_missing_views_outside_the_dataset(dataset, tmp_path):
@@ -484,3 +503,28 @@ def test_finetune_tiny_qwen3vl_then_ask_local_and_eval(bench, tmp_path, capsys):
     assert code == 0, text
     d = json.loads(text)
     assert d["missing"]["count"] == 0 and d["relation_mcq"]["accuracy"] is not None
+    # damaged or pickled models and adapters: exit 2 naming the folder, nothing answered
+    import shutil
+
+    def ask(model_dir, adapter_dir=None) -> tuple[int, str]:
+        args = ["vlm", "ask", "--local", model_dir, "--data", bench / "test.jsonl", "--out",
+                tmp_path / "bad.jsonl", "--max-tokens", 1]
+        return _main(capsys, *args, *(["--adapter", adapter_dir] if adapter_dir else []))
+
+    broken = tmp_path / "broken"
+    shutil.copytree(model, broken)
+    w = next(broken.glob("*.safetensors"))
+    w.write_bytes(w.read_bytes()[:len(w.read_bytes()) // 2])
+    code, text = ask(broken)
+    assert code == 2 and str(broken) in text and "Traceback" not in text, text
+    half = tmp_path / "half"
+    shutil.copytree(model, half)
+    (half / "config.json").write_text((half / "config.json").read_text()[:50])
+    code, text = ask(half)
+    assert code == 2 and str(half) in text, text
+    pickled = tmp_path / "pickled"
+    shutil.copytree(adapter, pickled)
+    (pickled / "adapter_model.safetensors").rename(pickled / "adapter_model.bin")
+    code, text = ask(model, pickled)
+    assert code == 2 and "safetensors" in text, text
+    assert not (tmp_path / "bad.jsonl").exists() or read_jsonl(tmp_path / "bad.jsonl") == []
