@@ -365,6 +365,23 @@ def _cases() -> list[dict]:
     add("assets-size-range-absurd", ["assets", "add", "src", "--category", "thing",
                                      "--size-range", "0,1e9"], 2, ["size range"],
         files={"src/a.glb": "@glb:seat,back"})
+    lib = {"PARSE3D_CACHE": "{case}/cache"}  # the user library of the case: nothing created
+    for kind, words, code in (("zero-area", ["positive area", "back"], 2),
+                              ("instanced", ["at most 1,000,000 faces"], 2),
+                              ("declared-huge", ["at most 1,000,000 faces"], 2)):
+        add(f"assets-glb-{kind}", ["assets", "add", "src", "--category", "thing"], code, words,
+            files={"src/a.glb": f"@bad-glb:{kind}"}, env=lib, group="assets",
+            absent=["cache/library/thing"])
+    add("assets-glb-flat-triangle", ["assets", "add", "src", "--category", "thing"], 0,
+        ["thing"], files={"src/a.glb": "@bad-glb:flat-triangle"}, env=lib, group="assets",
+        outputs=["cache"], present=["cache/library/thing/a.npz"])
+    for kind, words in (("cycle", ["two joint paths"]), ("nan-origin", ["finite"]),
+                        ("huge-scale", ["finite number of at most 1e6"]),
+                        ("outside", ["outside the PartNet folder"]),
+                        ("many-faces", ["1,000,000 faces"])):
+        add(f"assets-partnet-{kind}", ["assets", "add", "src/obj", "--category", "cupboard"],
+            2, words, files={"src/obj": f"@partnet:{kind}"}, env=lib, group="assets",
+            absent=["cache/library/cupboard"])
     add("assets-add-missing", ["assets", "add", "nowhere", "--category", "thing"], 2,
         ["not found"])
     add("assets-show-unknown", ["assets", "show", "spaceship"], 2, ["unknown category"])
