@@ -390,6 +390,15 @@ def _cases() -> list[dict]:
     add("assets-render-out-is-dir", ["assets", "render", "storage_box", "-o", "o.png"], 2,
         ["o.png"], files={"o.png": "@dir"})
 
+    # ---------------------------------------------------------------- exports
+    for fmt, name in (("mjcf", "scene.xml"), ("obj", "scene.obj"), ("glb", "scene.glb")):
+        add(f"export-foreign-{fmt}", ["export", "scene", "--format", fmt, "-o", "mine"], 2,
+            [name, "not written by parse3d", "--force"],
+            files={**SCENE_FILES, f"mine/{name}": "my own file", "mine/notes.txt": "mine"})
+    add("export-foreign-force", ["export", "scene", "--format", "obj", "-o", "mine", "--force"],
+        0, ["wrote"], files={**SCENE_FILES, "mine/scene.obj": "my own file"},
+        outputs=["mine"], present=["mine/scene.obj"])
+
     # ---------------------------------------------------------------- layout runs (models)
     sample = ["layout", "sample", "run", "--pag", "p.json", "--out", "o"]
     add("layout-crafted-checkpoint", sample, 2, ["checkpoint.pt", "plain weights"],

@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from ..._files import read_input_text
+from ..._files import MAX_DEPTH, loads_json, read_input_text
 from ...errors import AssetError, InputError, Problem
 from ..collision import convex_pieces
 from ..model import Asset, Joint, Material, Part, finalize_asset
@@ -30,6 +30,8 @@ MAX_FACES = 1_000_000
 MAX_VERTICES = 1_000_000
 #: Most parts (mesh nodes or URDF links with geometry) an imported asset may have.
 MAX_PARTS = 256
+#: Largest mapping file read.
+MAX_MAPPING_BYTES = 1024 * 1024
 #: Largest source file read (a GLB, a glTF and its buffers, one OBJ of a PartNet folder).
 MAX_SOURCE_BYTES = 512 * 1024 * 1024
 
@@ -122,11 +124,11 @@ def read_mapping(mapping: Mapping[str, str | None] | str | Path | None) -> tuple
     path = Path(mapping)
     if not path.exists():
         raise InputError(Problem("", "mapping file not found", str(path), "io"))
-    from ...pag.io import loads_document
-
-    text = read_input_text(path, what="mapping file")
-    data = loads_document(text, kind="yaml" if path.suffix.lower() in (".yaml", ".yml")
-                          else "json", file=str(path))
+    text = read_input_text(path, limit=MAX_MAPPING_BYTES, what="mapping file")
+    if path.suffix.lower() in (".yaml", ".yml"):
+        data = _mapping_yaml(text, str(path))
+    else:
+        data = loads_json(text, file=str(path))
     if not isinstance(data, dict):
         raise InputError(Problem("", "a mapping must be an object {name: part label}", str(path), "schema"))
     bad = [k for k, v in data.items() if v is not None and not isinstance(v, str)]
@@ -134,6 +136,30 @@ def read_mapping(mapping: Mapping[str, str | None] | str | Path | None) -> tuple
         raise InputError([Problem(f"/{k}", "must be a part label (string) or null", str(path), "schema")
                           for k in bad])
     return data, str(path)
+
+
+def _mapping_yaml(text: str, file: str):
+    """A YAML mapping file, parsed safely: aliases (which can expand without bound) and
+    nesting deeper than :data:`~parse3d._files.MAX_DEPTH` are refused before it is built."""
+    import yaml
+
+    depth = 0
+    try:
+        for ev in yaml.parse(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)):
+            if isinstance(ev, yaml.AliasEvent):
+                raise InputError(Problem("", "a mapping file may not use YAML aliases (*name)",
+                                         file, "syntax"))
+            if isinstance(ev, yaml.CollectionStartEvent):
+                depth += 1
+                if depth > MAX_DEPTH:
+                    raise InputError(Problem("", f"nested more than {MAX_DEPTH} levels deep",
+                                             file, "syntax"))
+            elif isinstance(ev, yaml.CollectionEndEvent):
+                depth -= 1
+        return yaml.safe_load(text)
+    except yaml.YAMLError as e:
+        raise InputError(Problem("", f"cannot parse the mapping: {str(e)[:200]}", file,
+                                 "syntax")) from None
 
 
 def check_mapping_labels(mapping: dict, vocabulary: tuple[str, ...] | None, file: str | None) -> None:
