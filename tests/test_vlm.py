@@ -461,6 +461,17 @@ def test_ask_bad_endpoint_and_arguments(bench, server, tmp_path, capsys):
     code, text = _main(capsys, "vlm", "ask", "--local", tmp_path, "--data", test,
                        "--out", tmp_path / "p.jsonl")
     assert code == 2 and "not a model folder" in text
+    # a record naming an image outside its split's folder is never read, nor sent
+    secret = tmp_path / "secret.png"
+    secret.write_bytes(b"private")
+    rec = dict(read_jsonl(test)[0], id="evil", images=[f"../{'../' * 12}{secret}"])
+    (tmp_path / "split").mkdir()
+    evil = tmp_path / "split" / "test.jsonl"
+    evil.write_text(json.dumps(rec) + "\n")
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl", "--data",
+                       evil, "--out", tmp_path / "evil.jsonl", "--retries", 1)
+    assert code == 2 and "outside" in text and "Traceback" not in text, text
+    assert not any("private" in t for t in server[1]["answered"])
 
 
 # -- fine-tuning a tiny offline Qwen3-VL ---------------------------------------------------------

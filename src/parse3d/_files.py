@@ -38,6 +38,7 @@ __all__ = [
     "read_npz",
     "read_torch",
     "check_json_depth",
+    "inside",
     "atomic_write_bytes",
     "atomic_write_text",
     "check_output_dir",
@@ -262,6 +263,24 @@ def read_json_lines(path: str | Path, *, limit: int = MAX_INPUT_BYTES, what: str
             raise SchemaError(Problem(f"line {n}", f"not valid JSON ({msg}); one JSON value per "
                                                    "line", str(path), "syntax")) from None
     return out
+
+
+def inside(base: str | Path, rel: Any, *, what: str = "file", file: str | None = None
+           ) -> Path:
+    """``base / rel`` when ``rel`` is a relative path that stays inside ``base`` once symbolic
+    links are resolved; an :class:`InputError` otherwise (``../../etc/passwd``, ``/home/x``).
+
+    A record naming its images, or a URDF naming its meshes, must never reach a file outside
+    the folder it came with (an image is uploaded to a model endpoint as it is)."""
+    root = Path(base).resolve()
+    if not isinstance(rel, str) or not rel or "\0" in rel or Path(rel).is_absolute():
+        raise InputError(Problem("", f"the {what} {rel!r} is not a relative path in "
+                                     f"{root.name or root}", file, "io"))
+    p = (root / rel).resolve()
+    if not p.is_relative_to(root):
+        raise InputError(Problem("", f"the {what} {rel!r} lies outside {root.name or root}: "
+                                     "only files inside it are read", file, "io"))
+    return p
 
 
 def read_npz(path: str | Path, *, limit: int = MAX_MODEL_BYTES, what: str = "file"

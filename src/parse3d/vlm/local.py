@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from .._files import inside
 from ..errors import DependencyError, InputError, Problem
 
 __all__ = ["VLProcessor", "load_processor", "load_model", "encode", "collate", "generate", "require_ml",
@@ -176,7 +177,14 @@ def encode(proc: VLProcessor, record: dict[str, Any], base: Path, *, with_answer
     from PIL import Image
 
     user, images, answer = _user_parts(record)
-    pics = [Image.open(base / p).convert("RGB") for p in images]
+    pics = []
+    for p in images:
+        path = inside(base, p, what="image", file=str(record.get("id")))
+        try:
+            pics.append(Image.open(path).convert("RGB"))
+        except (OSError, ValueError) as e:
+            raise InputError(Problem("", f"not a readable image ({e})", str(path), "io")
+                             ) from None
     feats = proc.image_processor(images=pics, return_tensors="pt") if pics else {}
     grids = feats["image_grid_thw"].tolist() if pics else []
     chunks = user.split("<image>")
