@@ -249,7 +249,7 @@ def test_corpus_is_large_and_covers_every_command():
     assert len({c["id"] for c in CASES}) == len(CASES)
     commands = {c["argv"][0] for c in CASES}
     assert {"validate", "pag", "solve", "generate", "settle", "render", "template", "dataset",
-            "assets"} <= commands
+            "assets", "export", "layout", "vlm", "serve"} <= commands
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])

@@ -390,6 +390,10 @@ def _cases() -> list[dict]:
     add("assets-render-out-is-dir", ["assets", "render", "storage_box", "-o", "o.png"], 2,
         ["o.png"], files={"o.png": "@dir"})
 
+    # ---------------------------------------------------------------- the designer server
+    add("serve-unknown-host", ["serve", "--host", "no-such-host.invalid"], 2, ["--host"])
+    add("serve-workdir-missing", ["serve", "--workdir", "nowhere"], 2, ["no such folder"])
+
     # ---------------------------------------------------------------- exports
     for fmt, name in (("mjcf", "scene.xml"), ("obj", "scene.obj"), ("glb", "scene.glb")):
         add(f"export-foreign-{fmt}", ["export", "scene", "--format", fmt, "-o", "mine"], 2,
