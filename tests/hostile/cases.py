@@ -425,6 +425,12 @@ def _cases() -> list[dict]:
             '{"name": "descriptor"', '{"name": "pointcloud"'), "shape_encoder.pt": CRAFTED}),
         absent=["pwned"])
 
+    for id, text in (("layout-train-scene-list", "[1]"),
+                     ("layout-train-scene-no-pag", J({"format": "parse3d-scene/2"})),
+                     ("layout-train-scene-deep", "[" * 100_000 + "]" * 100_000)):
+        add(id, ["layout", "train", "ds", "--out", "r"], 2, ["scene.json"],
+            files={"ds/scenes/00000/scene.json": text}, absent=["r"])
+
     # ---------------------------------------------------------------- vlm eval
     ev = ["vlm", "eval", "--gt", "gt.jsonl", "--pred", "pred.jsonl"]
     add("vlm-eval-10mb-response", ev + ["--json"], 0, ["sgg"],
