@@ -49,7 +49,9 @@ def register(app: typer.Typer) -> None:
                 "anyone who can reach this machine may read and overwrite the PAG files in "
                 f"{workdir.resolve()} and start solves (the API has no login). Use the default "
                 "127.0.0.1 unless this network is yours alone.")
-        application = create_app(workdir, host=host, port=port)
+        application = create_app(workdir, host=host, port=port,
+                                  other_hosts=_machine_names() if host in ("0.0.0.0", "::")
+                                  else ())
         shown = host if host not in ("0.0.0.0", "::") else "127.0.0.1"
         url = f"http://{shown if ':' not in shown else f'[{shown}]'}:{port}/"
         console.print(f"PAG designer on [bold]{url}[/] (working folder {workdir.resolve()}); "
@@ -95,3 +97,15 @@ def _check_port(host: str, port: int, family: int) -> int:
             raise InputError(Problem("", f"port {port} on {host} {why}", "serve", "parameter")
                              ) from None
         return s.getsockname()[1] if port == 0 else port
+
+
+def _machine_names() -> tuple[str, ...]:
+    """This machine's host names and addresses: what a browser on the network puts in the
+    ``Host`` header when the server listens on every interface."""
+    import contextlib
+    import socket
+
+    names = {socket.gethostname(), socket.getfqdn()}
+    with contextlib.suppress(socket.gaierror, UnicodeError):
+        names |= {i[4][0] for i in socket.getaddrinfo(socket.gethostname(), None)}
+    return tuple(sorted(n for n in names if n))

@@ -313,7 +313,8 @@ def template_index() -> dict[str, dict[str, Any]]:
 
 
 def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_BODY_BYTES,
-               host: str | None = None, port: int | None = None, max_queue: int = MAX_QUEUE,
+               host: str | None = None, port: int | None = None,
+               other_hosts: tuple[str, ...] = (), max_queue: int = MAX_QUEUE,
                solve_time_limit: float = SOLVE_TIME_LIMIT) -> FastAPI:
     """The designer application serving ``workdir``, the only folder it writes.
 
@@ -328,6 +329,9 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
     host, port : str and int, optional
         The address the server listens on: requests must name it (or a loopback name) in
         their ``Host`` header, with this port (any port when None).
+    other_hosts : tuple of str
+        More names the server answers to (this machine's name and addresses when it listens
+        on every interface).
     max_queue : int
         Solves queued or running at once; more are answered 429.
     solve_time_limit : float
@@ -341,7 +345,8 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
     app = FastAPI(title="parse3d PAG designer", docs_url=None, redoc_url=None,
                   openapi_url="/api/openapi.json")
     app.add_middleware(_BodyLimit, max_bytes=max_body)
-    hosts = LOOPBACK_HOSTS + ((host,) if host and host not in ("0.0.0.0", "::") else ())
+    hosts = LOOPBACK_HOSTS + ((host,) if host and host not in ("0.0.0.0", "::") else ()) \
+        + tuple(other_hosts)
     app.add_middleware(_Guard, hosts=hosts, port=port)  # added last: runs first
     jobs: OrderedDict[str, Job] = OrderedDict()
     # one solve at a time: the physics engine and the machine are shared
