@@ -53,6 +53,10 @@ def _bad_glb(kind: str) -> bytes:
     back = trimesh.creation.box(extents=(0.4, 0.1, 0.4)).apply_translation((0, 0.15, 0.3))
     if kind == "zero-area":
         back = trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 2]], process=False)
+    elif kind == "nan":
+        v = back.vertices.copy()
+        v[0, 0] = float("nan")
+        back = trimesh.Trimesh(v, back.faces, process=False)
     elif kind == "flat-triangle":
         back = trimesh.Trimesh([[0, 0, .5], [.3, 0, .5], [0, .3, .5]], [[0, 1, 2]],
                                process=False)

@@ -368,7 +368,8 @@ def _cases() -> list[dict]:
     lib = {"PARSE3D_CACHE": "{case}/cache"}  # the user library of the case: nothing created
     for kind, words, code in (("zero-area", ["positive area", "back"], 2),
                               ("instanced", ["at most 1,000,000 faces"], 2),
-                              ("declared-huge", ["at most 1,000,000 faces"], 2)):
+                              ("declared-huge", ["at most 1,000,000 faces"], 2),
+                              ("nan", ["NaN"], 2)):
         add(f"assets-glb-{kind}", ["assets", "add", "src", "--category", "thing"], code, words,
             files={"src/a.glb": f"@bad-glb:{kind}"}, env=lib, group="assets",
             absent=["cache/library/thing"])

@@ -129,7 +129,13 @@ def _check_gltf_size(path: Path) -> None:
                              ) from None
     else:
         text = read_input_bytes(path, limit=MAX_SOURCE_BYTES).decode("utf-8", "replace")
-    doc = loads_json(text, file=file)
+    try:
+        doc = loads_json(text, file=file)
+    except InputError as e:  # NaN in accessor bounds is how NaN vertices usually show
+        msg = e.problems[0].message if e.problems else str(e)
+        raise InputError(Problem("", f"the glTF JSON is damaged ({msg}): a NaN or infinite "
+                                     "value means the mesh has non-finite vertices", file,
+                                 "syntax")) from None
     if not isinstance(doc, dict):
         raise InputError(Problem("", "not a glTF document", file, "syntax"))
     faces, verts = _declared_counts(doc)
