@@ -45,6 +45,88 @@ def _glb(spec: str) -> bytes:
     return s.export(file_type="glb")
 
 
+def _bad_glb(kind: str) -> bytes:
+    """A GLB with one damaged part beside a good one (``seat``, ``back``)."""
+    import trimesh
+
+    seat = trimesh.creation.box(extents=(0.4, 0.4, 0.2))
+    back = trimesh.creation.box(extents=(0.4, 0.1, 0.4)).apply_translation((0, 0.15, 0.3))
+    if kind == "zero-area":
+        back = trimesh.Trimesh([[0, 0, 0], [1, 0, 0], [2, 0, 0]], [[0, 1, 2]], process=False)
+    elif kind == "nan":
+        v = back.vertices.copy()
+        v[0, 0] = float("nan")
+        back = trimesh.Trimesh(v, back.faces, process=False)
+    elif kind == "flat-triangle":
+        back = trimesh.Trimesh([[0, 0, .5], [.3, 0, .5], [0, .3, .5]], [[0, 1, 2]],
+                               process=False)
+    s = trimesh.Scene()
+    s.add_geometry(seat, node_name="seat", geom_name="seat")
+    s.add_geometry(back, node_name="back", geom_name="back")
+    data = s.export(file_type="glb")
+    if kind in ("declared-huge", "instanced"):
+        import struct
+
+        n = struct.unpack("<I", data[12:16])[0]
+        doc = json.loads(data[20:20 + n])
+        if kind == "declared-huge":  # the JSON claims ten million triangles
+            for a in doc["accessors"]:
+                a["count"] = 30_000_000
+        else:  # one mesh drawn by 100,000 nodes: 1.2 million triangles
+            first = len(doc["nodes"])
+            doc["nodes"] += [{"name": f"back_{k}", "mesh": doc["nodes"][-1]["mesh"]}
+                             for k in range(100_000)]
+            doc["scenes"][0]["nodes"] += list(range(first, first + 100_000))
+        js = json.dumps(doc).encode()
+        js += b" " * (-len(js) % 4)
+        rest = data[20 + n:]
+        data = b"glTF" + struct.pack("<II", 2, 12 + 8 + len(js) + len(rest)) + \
+            struct.pack("<I4s", len(js), b"JSON") + js + rest
+    return data
+
+
+def _obj(box) -> str:
+    return "".join(f"v {x} {y} {z}\n" for x, y, z in box.vertices) + \
+        "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in box.faces)
+
+
+def _partnet(folder: Path, kind: str) -> None:
+    """A PartNet-Mobility folder (base, door on a hinge) damaged as ``kind`` says."""
+    import trimesh
+
+    (folder / "textured_objs").mkdir(parents=True)
+    (folder / "textured_objs" / "base.obj").write_text(_obj(trimesh.creation.box((1, 1, 1))))
+    (folder / "textured_objs" / "door.obj").write_text(
+        _obj(trimesh.creation.box((0.1, 1, 1)).apply_translation((0.6, 0, 0))))
+    (folder / "semantics.txt").write_text("base free cabinet\ndoor hinge door\n")
+    door_mesh, origin, scale, extra = "textured_objs/door.obj", "0 0 0", "1 1 1", ""
+    if kind == "cycle":
+        extra = ('<joint name="back" type="fixed"><parent link="door"/><child link="base"/>'
+                 '</joint><joint name="loop" type="fixed"><parent link="base"/>'
+                 '<child link="door"/></joint>')
+    elif kind == "nan-origin":
+        origin = "nan 0 inf"
+    elif kind == "huge-scale":
+        scale = "1e308 1e308 1e308"
+    elif kind == "outside":
+        (folder.parent / "secret.obj").write_text(_obj(trimesh.creation.box((1, 1, 1))))
+        door_mesh = "../secret.obj"
+    elif kind == "many-faces":
+        (folder / "textured_objs" / "door.obj").write_text(
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\n" + "f 1 2 3\n" * 1_000_001)
+    (folder / "mobility.urdf").write_text(f"""<robot name="r">
+  <link name="root"/>
+  <link name="base"><visual><geometry><mesh filename="textured_objs/base.obj"/></geometry>
+  </visual></link>
+  <link name="door"><visual><origin xyz="{origin}"/><geometry>
+    <mesh filename="{door_mesh}" scale="{scale}"/></geometry></visual></link>
+  <joint name="j0" type="fixed"><parent link="root"/><child link="base"/></joint>
+  <joint name="j1" type="revolute"><parent link="base"/><child link="door"/>
+    <axis xyz="0 0 1"/><limit lower="0" upper="1.5"/></joint>
+  {extra}
+</robot>""")
+
+
 def _materialise(root: Path, case: dict) -> None:
     work = root / case["id"]
     work.mkdir(parents=True)
@@ -65,6 +147,10 @@ def _materialise(root: Path, case: dict) -> None:
             write_manifest(p, [])
         elif content.startswith("@glb:"):
             p.write_bytes(_glb(content[len("@glb:"):]))
+        elif content.startswith("@bad-glb:"):
+            p.write_bytes(_bad_glb(content[len("@bad-glb:"):]))
+        elif content.startswith("@partnet:"):
+            _partnet(p, content[len("@partnet:"):])
         else:
             p.write_text(content.replace("{hostname}", socket.gethostname()), encoding="utf-8")
 
@@ -167,7 +253,7 @@ def test_corpus_is_large_and_covers_every_command():
     assert len({c["id"] for c in CASES}) == len(CASES)
     commands = {c["argv"][0] for c in CASES}
     assert {"validate", "pag", "solve", "generate", "settle", "render", "template", "dataset",
-            "assets"} <= commands
+            "assets", "export", "layout", "vlm", "serve"} <= commands
 
 
 @pytest.mark.parametrize("case", CASES, ids=[c["id"] for c in CASES])

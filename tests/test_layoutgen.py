@@ -719,3 +719,70 @@ def test_eval_with_guidance_has_a_random_control_row(run_dir, dataset, tmp_path)
                 "--out", str(out), "--sample-steps", "5", "--guide", "2"]) == 0
     sc = read_scene(out)
     assert sc.meta["guide"] == 2 and outside_room(sc) == []
+
+
+class _Marker:
+    """Unpickling this calls ``os.mkdir('pwned')``: what a crafted checkpoint would run."""
+
+    def __reduce__(self):
+        return (os.mkdir, ("pwned",))
+
+
+def test_a_crafted_checkpoint_runs_no_code_and_damaged_runs_exit_2(run_dir, tmp_path, capsys,
+                                                                   monkeypatch):
+    import shutil
+
+    monkeypatch.chdir(tmp_path)
+    pag = str(_write(tmp_path, PAGS[0]))
+
+    def copy(name: str) -> Path:
+        d = tmp_path / name
+        shutil.copytree(run_dir, d)
+        return d
+
+    def sample(run: Path) -> tuple[int, str]:
+        rc = _rc(["layout", "sample", str(run), "--pag", pag, "--out", str(tmp_path / "o")])
+        return rc, capsys.readouterr().err
+
+    # the crafted file is a real exploit: the unsafe loader runs it
+    evil = copy("evil")
+    ck = torch.load(evil / "checkpoint.pt", weights_only=True)
+    ck["step"] = _Marker()
+    torch.save(ck, evil / "checkpoint.pt")
+    torch.load(evil / "checkpoint.pt", weights_only=False)
+    assert (tmp_path / "pwned").is_dir()
+    (tmp_path / "pwned").rmdir()
+    for argv in (["layout", "sample", str(evil), "--pag", pag, "--out", str(tmp_path / "o")],
+                 ["layout", "eval", str(evil), "--out", str(tmp_path / "e")],
+                 ["layout", "train", "nowhere", "--out", str(evil)]):
+        assert _rc(argv) == 2
+        assert not (tmp_path / "pwned").exists()
+    assert "checkpoint.pt" in capsys.readouterr().err
+
+    def damaged(name: str, file: str, change) -> None:
+        d = copy(name)
+        change(d / file)
+        rc, err = sample(d)
+        assert rc == 2, err
+        assert str(d / file) in err and "Traceback" not in err
+        assert not (tmp_path / "o").exists()
+
+    damaged("truncated", "checkpoint.pt", lambda p: p.write_bytes(p.read_bytes()[:1000]))
+    damaged("random", "checkpoint.pt", lambda p: p.write_bytes(os.urandom(5000)))
+
+    def no_ema(p):
+        ck = torch.load(p, weights_only=True)
+        del ck["ema"]
+        torch.save(ck, p)
+
+    damaged("no-ema", "checkpoint.pt", no_ema)
+    damaged("half-config", "config.json", lambda p: p.write_text(p.read_text()[:200]))
+
+    def unknown_key(p):
+        doc = json.loads(p.read_text())
+        doc["train"]["surprise"] = 1
+        p.write_text(json.dumps(doc))
+
+    damaged("unknown-key", "config.json", unknown_key)
+    damaged("stats", "stats.json", lambda p: p.write_text('{"log_size_mean": 3}'))
+    damaged("split", "split.json", lambda p: p.write_text("[1, 2]"))

@@ -202,6 +202,25 @@ def test_build_bad_input(dataset, tmp_path, capsys):
     assert code == 2 and "outside the dataset" in out
     code, out = _main(capsys, "vlm", "build", src, "--out", tmp_path / "o2")
     assert code == 2 and "not a dataset folder" in out
+    # a corrupt views.json, and a mask box from an instance mask of another size
+    for name, change in (("corrupt", lambda d: d[:len(d) // 2]),
+                         ("listed", lambda d: "[]"),
+                         ("big-mask", lambda d: json.dumps(_widen_boxes(json.loads(d))))):
+        copy = tmp_path / name
+        shutil.copytree(dataset, copy, ignore=shutil.ignore_patterns("vlm"))
+        views = copy / "scenes" / "00000" / "views.json"
+        views.write_text(change(views.read_text()))
+        code, out = _main(capsys, "vlm", "build", copy, "--out", tmp_path / f"o-{name}")
+        assert code == 2 and str(views) in out and "Traceback" not in out, out
+
+
+def _widen_boxes(doc: dict) -> dict:
+    """views.json as if its masks were rendered at twice the camera's size."""
+    for v in doc["views"]:
+        for rec in v.get("objects", []):
+            rec["bbox"] = [2 * x + 1 for x in rec["bbox"]]
+            rec["pixels"] *= 4
+    return doc
 
 
 def test_build_renders_missing_views_outside_the_dataset(dataset, tmp_path):
@@ -442,6 +461,17 @@ def test_ask_bad_endpoint_and_arguments(bench, server, tmp_path, capsys):
     code, text = _main(capsys, "vlm", "ask", "--local", tmp_path, "--data", test,
                        "--out", tmp_path / "p.jsonl")
     assert code == 2 and "not a model folder" in text
+    # a record naming an image outside its split's folder is never read, nor sent
+    secret = tmp_path / "secret.png"
+    secret.write_bytes(b"private")
+    rec = dict(read_jsonl(test)[0], id="evil", images=[f"../{'../' * 12}{secret}"])
+    (tmp_path / "split").mkdir()
+    evil = tmp_path / "split" / "test.jsonl"
+    evil.write_text(json.dumps(rec) + "\n")
+    code, text = _main(capsys, "vlm", "ask", "--endpoint", url, "--model", "tiny-vl", "--data",
+                       evil, "--out", tmp_path / "evil.jsonl", "--retries", 1)
+    assert code == 2 and "outside" in text and "Traceback" not in text, text
+    assert not any("private" in t for t in server[1]["answered"])
 
 
 # -- fine-tuning a tiny offline Qwen3-VL ---------------------------------------------------------
@@ -484,3 +514,28 @@ def test_finetune_tiny_qwen3vl_then_ask_local_and_eval(bench, tmp_path, capsys):
     assert code == 0, text
     d = json.loads(text)
     assert d["missing"]["count"] == 0 and d["relation_mcq"]["accuracy"] is not None
+    # damaged or pickled models and adapters: exit 2 naming the folder, nothing answered
+    import shutil
+
+    def ask(model_dir, adapter_dir=None) -> tuple[int, str]:
+        args = ["vlm", "ask", "--local", model_dir, "--data", bench / "test.jsonl", "--out",
+                tmp_path / "bad.jsonl", "--max-tokens", 1]
+        return _main(capsys, *args, *(["--adapter", adapter_dir] if adapter_dir else []))
+
+    broken = tmp_path / "broken"
+    shutil.copytree(model, broken)
+    w = next(broken.glob("*.safetensors"))
+    w.write_bytes(w.read_bytes()[:len(w.read_bytes()) // 2])
+    code, text = ask(broken)
+    assert code == 2 and str(broken) in text and "Traceback" not in text, text
+    half = tmp_path / "half"
+    shutil.copytree(model, half)
+    (half / "config.json").write_text((half / "config.json").read_text()[:50])
+    code, text = ask(half)
+    assert code == 2 and str(half) in text, text
+    pickled = tmp_path / "pickled"
+    shutil.copytree(adapter, pickled)
+    (pickled / "adapter_model.safetensors").rename(pickled / "adapter_model.bin")
+    code, text = ask(model, pickled)
+    assert code == 2 and "safetensors" in text, text
+    assert not (tmp_path / "bad.jsonl").exists() or read_jsonl(tmp_path / "bad.jsonl") == []

@@ -34,9 +34,13 @@ def workdir(tmp_path_factory):
     return tmp_path_factory.mktemp("designer")
 
 
+#: What the designer's own page sends: its address, and JSON bodies.
+PAGE = {"base_url": "http://127.0.0.1:8765", "headers": {"Content-Type": "application/json"}}
+
+
 @pytest.fixture(scope="module")
 def client(workdir):
-    with TestClient(create_app(workdir)) as c:
+    with TestClient(create_app(workdir, port=8765), **PAGE) as c:
         yield c
 
 
@@ -136,6 +140,11 @@ def test_validation_gives_the_cli_problems_and_pointers(client, workdir):
     ("post", "/api/solve", b"[1, 2]", 400, "must be a JSON object"),
     ("post", "/api/solve", b'{"seed": 1}', 400, "needs the key 'pag'"),
     ("post", "/api/solve", b'{"pag": {}, "seed": -3}', 400, "non-negative integer"),
+    ("post", "/api/solve", b'{"pag": {}, "seed": 4294967296}', 400, "4,294,967,295"),
+    ("post", "/api/validate", b'{"name": "\\ud800"}', 400, "surrogate"),
+    ("put", "/api/files/lone.json", b'{"pag": {"name": "x\\udc00"}}', 400, "surrogate"),
+    ("put", "/api/files/lone.yaml", b'{"pag": {"\\ud83d": 1}}', 400, "surrogate"),
+    ("post", "/api/validate", b'{"a": 1, "a": 2}', 400, "repeated"),
     ("post", "/api/solve", b'{"pag": {}, "settle": "yes"}', 400, "true or false"),
     ("post", "/api/convert?to=xml", b"{}", 400, "use json or yaml"),
     ("put", "/api/files/room.json", b'{"pag": {}, "overwrite": 1}', 400, "true or false"),
@@ -311,3 +320,101 @@ def test_committed_front_end_is_the_build_of_its_sources():
     pinned = json.loads((src / "package.json").read_text())["dependencies"]["three"]
     three = (STATIC_DIR / "vendor" / "three.module.min.js").read_text()
     assert f'const t="{pinned.split(".")[1]}"' in three[:1000], "vendored three.js is not the pinned one"
+
+
+# ------------------------------------------------------------------- a laptop's server
+
+
+def test_foreign_hosts_and_cross_site_requests_are_refused(client, workdir):
+    """DNS rebinding (a foreign Host) and CSRF (a foreign Origin, a form's text/plain body)
+    never reach the API; nothing is read or written."""
+    (workdir / "mine.json").write_text(json.dumps(small_pag("mine")))
+    before = (workdir / "mine.json").read_text()
+    body = json.dumps({"pag": small_pag("evil"), "overwrite": True})
+    for host in ("evil.example:8765", "127.0.0.1:9999", "localhost.evil.example", ""):
+        r = client.get("/api/files/mine.json", headers={"Host": host})
+        assert r.status_code == 403 and "Host" in r.json()["error"], host
+        r = client.put("/api/files/mine.json", content=body, headers={"Host": host})
+        assert r.status_code == 403
+    for host in ("localhost:8765", "[::1]:8765", "127.0.0.1:8765"):
+        assert client.get("/api/files", headers={"Host": host}).status_code == 200
+    for origin in ("http://evil.example", "http://127.0.0.1:9999", "null"):
+        r = client.put("/api/files/mine.json", content=body, headers={"Origin": origin})
+        assert r.status_code == 403 and "refused" in r.json()["error"], origin
+        r = client.post("/api/solve", content=body, headers={"Origin": origin})
+        assert r.status_code == 403
+    r = client.post("/api/validate", content=body, headers={"Sec-Fetch-Site": "cross-site"})
+    assert r.status_code == 403
+    for ctype in ("text/plain", "application/x-www-form-urlencoded", "multipart/form-data", ""):
+        for method, url in (("put", "/api/files/mine.json"), ("post", "/api/solve"),
+                            ("post", "/api/validate"), ("post", "/api/convert"),
+                            ("delete", "/api/jobs/x")):
+            r = client.request(method, url, content=body, headers={"Content-Type": ctype})
+            assert r.status_code == 415 and "application/json" in r.json()["error"]
+    assert (workdir / "mine.json").read_text() == before
+    assert not (workdir / "out" / "evil-0").exists()
+    # the page itself (same origin, JSON) works
+    r = client.post("/api/validate", content=body, headers={
+        "Origin": "http://127.0.0.1:8765", "Sec-Fetch-Site": "same-origin"})
+    assert r.status_code == 200
+
+
+def test_the_solve_queue_is_bounded_cancellable_and_never_forgets_a_running_job(tmp_path):
+    with TestClient(create_app(tmp_path, max_queue=2), **PAGE) as c:
+        ids = []
+        for seed in range(2):
+            r = c.post("/api/solve", json={"pag": small_pag(), "seed": seed, "settle": True})
+            assert r.status_code == 202
+            ids.append(r.json()["job"])
+        r = c.post("/api/solve", json={"pag": small_pag(), "seed": 9})
+        assert r.status_code == 429 and "cancel" in r.json()["error"]
+        assert c.delete(f"/api/jobs/{ids[1]}").json()["state"] in ("cancelled", "running")
+        events = sse(c.get(f"/api/jobs/{ids[1]}/events").text)
+        assert events[-1] == {**events[-1], "type": "error", "message": "cancelled"}
+        assert sse(c.get(f"/api/jobs/{ids[0]}/events").text)[-1]["type"] == "done"
+        assert c.get(f"/api/jobs/{ids[1]}").json()["state"] == "cancelled"
+        assert not (tmp_path / "out" / "corner-1").exists()
+        assert c.delete("/api/jobs/nope").status_code == 404
+        # a queue with room again takes a solve
+        assert c.post("/api/solve", json={"pag": small_pag(), "seed": 3}).status_code == 202
+
+
+def test_solves_never_write_through_a_link_out_of_the_folder(tmp_path):
+    work, elsewhere = tmp_path / "work", tmp_path / "elsewhere"
+    work.mkdir()
+    elsewhere.mkdir()
+    (work / "out").symlink_to(elsewhere)
+    (work / "dir.json").mkdir()
+    with TestClient(create_app(work), **PAGE) as c:
+        job = c.post("/api/solve", json={"pag": small_pag(), "settle": False}).json()["job"]
+        events = sse(c.get(f"/api/jobs/{job}/events").text)
+        assert events[-1]["type"] == "error" and "link out of the working folder" in \
+            events[-1]["message"]
+        r = c.put("/api/files/dir.json", json={"pag": small_pag(), "overwrite": True})
+        assert r.status_code == 400 and "folder" in r.json()["error"]
+    assert list(elsewhere.iterdir()) == []
+    assert sorted(p.name for p in work.iterdir()) == ["dir.json", "out"]  # no temporary files
+
+
+def test_serve_refuses_a_busy_port_and_warns_about_a_public_address(tmp_path):
+    import socket
+    import subprocess
+    import sys
+
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        s.listen()
+        port = s.getsockname()[1]
+        r = subprocess.run([sys.executable, "-m", "parse3d", "serve", "--workdir", str(tmp_path),
+                            "--port", str(port)], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 2
+    lines = [ln for ln in r.stderr.splitlines() if ln.strip()]
+    assert len(lines) == 1 and f"port {port}" in lines[0] and "in use" in lines[0], r.stderr
+    r = subprocess.run([sys.executable, "-m", "parse3d", "serve", "--workdir", str(tmp_path),
+                        "--host", "no-such-host.invalid"], capture_output=True, text=True,
+                       timeout=60)
+    assert r.returncode == 2 and "--host" in r.stderr and "Traceback" not in r.stderr
+    from parse3d.cli.serve import _check_address
+
+    assert _check_address("127.0.0.1")[1] and _check_address("localhost")[1]
+    assert not _check_address("0.0.0.0")[1]

@@ -14,13 +14,16 @@ from __future__ import annotations
 
 import errno
 import json
+import math
 import os
+import re
 import socket
 import stat
 import tempfile
 from pathlib import Path
+from typing import Any
 
-from .errors import InputError, Problem
+from .errors import InputError, Problem, SchemaError
 
 __all__ = [
     "MAX_INPUT_BYTES",
@@ -28,6 +31,14 @@ __all__ = [
     "user_mode",
     "read_input_bytes",
     "read_input_text",
+    "MAX_DEPTH",
+    "loads_json",
+    "read_json",
+    "read_json_lines",
+    "read_npz",
+    "read_torch",
+    "check_json_depth",
+    "inside",
     "atomic_write_bytes",
     "atomic_write_text",
     "check_output_dir",
@@ -37,6 +48,10 @@ __all__ = [
 #: Largest input document read (PAGs, templates, scene files), bytes. A PAG of the largest
 #: allowed size is far below it.
 MAX_INPUT_BYTES = 64 * 1024 * 1024
+#: Deepest nesting of lists and objects a JSON or YAML input may have (a PAG needs 4).
+MAX_DEPTH = 64
+#: Largest binary model file read (a layout checkpoint, a shape encoder, a ``.npz`` cache).
+MAX_MODEL_BYTES = 2 * 1024**3
 
 
 def current_umask() -> int:
@@ -115,6 +130,208 @@ def read_input_text(path: str | Path, *, limit: int = MAX_INPUT_BYTES, what: str
     except UnicodeDecodeError as e:
         raise InputError(Problem("", f"not UTF-8 text (byte {e.start}): save the {what} as "
                                      "UTF-8", str(path), "syntax")) from None
+
+
+# ------------------------------------------------------------------------ reading user files
+#
+# Every file a user hands to parse3d is read through one of the functions below: the path must
+# be a regular file within a size bound (never opened for a blocking read), text must be UTF-8,
+# JSON nesting is bounded before a recursive parser runs, and binary formats never unpickle.
+
+
+class _DupDict(dict):
+    """A JSON object that had repeated keys (``dups`` lists them, in order)."""
+
+    dups: list[str]
+
+
+def _pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    d: dict[str, Any] = {}
+    dups = []
+    for k, v in pairs:
+        if k in d:
+            dups.append(k)
+        d[k] = v
+    if dups:
+        d = _DupDict(d)
+        d.dups = dups
+    return d
+
+
+def _duplicates(v: Any, ptr: str) -> list[tuple[str, str]]:
+    out: list[tuple[str, str]] = []
+    stack = [(v, ptr)]
+    while stack:
+        v, ptr = stack.pop()
+        if isinstance(v, dict):
+            if isinstance(v, _DupDict):
+                out += [(f"{ptr}/{_esc(k)}", k) for k in v.dups]
+            stack += [(x, f"{ptr}/{_esc(k)}") for k, x in v.items()]
+        elif isinstance(v, list):
+            stack += [(x, f"{ptr}/{i}") for i, x in enumerate(v)]
+    return sorted(out)
+
+
+
+def _esc(key: str) -> str:
+    return str(key).replace("~", "~0").replace("/", "~1")
+
+
+_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
+
+
+def check_json_depth(text: str, file: str | None, *, limit: int | None = None) -> None:
+    """Refuse nesting deeper than ``limit`` (:data:`MAX_DEPTH`) before the recursive JSON
+    decoder sees it (a linear scan of the text)."""
+    limit = MAX_DEPTH if limit is None else limit
+    depth = 0
+    for m in _JSON_TOKENS.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            if depth > limit:
+                line = text.count("\n", 0, m.start()) + 1
+                raise SchemaError(Problem("", f"nested more than {limit} levels deep (at "
+                                              f"line {line}): the formats parse3d reads need only a few",
+                                          file, "syntax"))
+        elif c in "]}":
+            depth -= 1
+
+
+
+def _reject_constant(name: str) -> Any:
+    raise ValueError(f"{name} is not a number (JSON has no NaN or Infinity)")
+
+
+def _finite_float(text: str) -> float:
+    v = float(text)
+    if not math.isfinite(v):
+        raise ValueError(f"{text} is too large to be a finite number")
+    return v
+
+
+
+
+def loads_json(text: str, *, file: str | None = None, depth: int | None = None) -> Any:
+    """Parse JSON text, bounded: nesting, repeated keys and non-finite numbers are errors.
+
+    Raises
+    ------
+    SchemaError
+        Syntax errors (with line and column), nesting deeper than ``depth``
+        (:data:`MAX_DEPTH`), a repeated key (at its pointer), ``NaN``/``Infinity``/``1e400``.
+    """
+    check_json_depth(text, file, limit=depth)
+    try:
+        data = json.loads(text, parse_constant=_reject_constant, parse_float=_finite_float,
+                          object_pairs_hook=_pairs)
+    except json.JSONDecodeError as e:
+        raise SchemaError(Problem("", f"invalid JSON at line {e.lineno}, column {e.colno}: "
+                                  f"{e.msg}", file, "syntax")) from None
+    except (ValueError, RecursionError) as e:
+        raise SchemaError(Problem("", f"invalid JSON: {e}", file, "syntax")) from None
+    dups = _duplicates(data, "")
+    if dups:
+        raise SchemaError([Problem(ptr, f"the key {key!r} is repeated in this object "
+                                        "(JSON keeps only one): remove or rename it",
+                                   file, "syntax") for ptr, key in dups])
+    return data
+
+
+def read_json(path: str | Path, *, limit: int = MAX_INPUT_BYTES, what: str = "file",
+              depth: int | None = None) -> Any:
+    """Read a user's JSON file: :func:`read_input_text` then :func:`loads_json`."""
+    return loads_json(read_input_text(path, limit=limit, what=what), file=str(path),
+                      depth=depth)
+
+
+def read_json_lines(path: str | Path, *, limit: int = MAX_INPUT_BYTES, what: str = "file",
+                    depth: int | None = None) -> list[tuple[int, Any]]:
+    """Read a JSON Lines file: ``[(line number, value)]`` for every non-blank line.
+
+    A bad line is an :class:`InputError` naming the file and the line (pointer ``line N``).
+    """
+    text = read_input_text(path, limit=limit, what=what)
+    out = []
+    for n, line in enumerate(text.splitlines(), 1):
+        if not line.strip():
+            continue
+        try:
+            out.append((n, loads_json(line, file=str(path), depth=depth)))
+        except SchemaError as e:
+            msg = e.problems[0].message if e.problems else str(e)
+            raise SchemaError(Problem(f"line {n}", f"not valid JSON ({msg}); one JSON value per "
+                                                   "line", str(path), "syntax")) from None
+    return out
+
+
+def inside(base: str | Path, rel: Any, *, what: str = "file", file: str | None = None
+           ) -> Path:
+    """``base / rel`` when ``rel`` is a relative path that stays inside ``base`` once symbolic
+    links are resolved; an :class:`InputError` otherwise (``../../etc/passwd``, ``/home/x``).
+
+    A record naming its images, or a URDF naming its meshes, must never reach a file outside
+    the folder it came with (an image is uploaded to a model endpoint as it is)."""
+    root = Path(base).resolve()
+    if not isinstance(rel, str) or not rel or "\0" in rel or Path(rel).is_absolute():
+        raise InputError(Problem("", f"the {what} {rel!r} is not a relative path in "
+                                     f"{root.name or root}", file, "io"))
+    p = (root / rel).resolve()
+    if not p.is_relative_to(root):
+        raise InputError(Problem("", f"the {what} {rel!r} lies outside {root.name or root}: "
+                                     "only files inside it are read", file, "io"))
+    return p
+
+
+def read_npz(path: str | Path, *, limit: int = MAX_MODEL_BYTES, what: str = "file"
+             ) -> dict[str, Any]:
+    """Read a ``.npz`` archive into ``{name: array}`` without pickles.
+
+    A damaged archive, an object array (a pickle) or a file that is not a zip is an
+    :class:`InputError` naming the file.
+    """
+    import io
+    import zipfile
+
+    import numpy as np
+
+    data = read_input_bytes(path, limit=limit, what=what)
+    try:
+        with np.load(io.BytesIO(data), allow_pickle=False) as z:
+            return {k: z[k] for k in z.files}
+    except (ValueError, OSError, EOFError, KeyError, zipfile.BadZipFile) as e:
+        raise InputError(Problem("", f"not a readable .npz archive ({_first_line(e)}): "
+                                     "it is damaged or was not written by parse3d", str(path),
+                                 "io")) from None
+
+
+def read_torch(path: str | Path, *, limit: int = MAX_MODEL_BYTES, what: str = "checkpoint"
+               ) -> Any:
+    """Read a PyTorch file with ``weights_only=True``: tensors, numbers, strings, lists and
+    dicts only. No code in the file ever runs (a pickle that would call a function is refused).
+
+    Raises
+    ------
+    InputError
+        The file is missing, damaged, truncated, or holds anything but plain weights.
+    """
+    import io
+
+    import torch
+
+    data = read_input_bytes(path, limit=limit, what=what)
+    try:
+        return torch.load(io.BytesIO(data), map_location="cpu", weights_only=True)
+    except Exception as e:  # noqa: BLE001 - the unpickler raises many types for damaged files
+        raise InputError(Problem("", f"not a readable {what} ({_first_line(e)}): it is "
+                                     "damaged, truncated or holds more than plain weights",
+                                 str(path), "io")) from None
+
+
+def _first_line(e: BaseException) -> str:
+    text = str(e).strip().splitlines()
+    line = text[0] if text else type(e).__name__
+    return line[:200]
 
 
 def check_output_dir(path: str | Path, *, option: str = "--out") -> Path:

@@ -20,6 +20,8 @@ Placeholders in file texts: ``{hostname}``.
 from __future__ import annotations
 
 import json
+import os
+import pickle
 from pathlib import Path
 
 DATA = Path(__file__).parent / "data"
@@ -92,6 +94,32 @@ relations:
 CIRCLE = [[round(5 + 4 * __import__("math").cos(2 * __import__("math").pi * k / 300), 4),
            round(5 + 4 * __import__("math").sin(2 * __import__("math").pi * k / 300), 4)]
           for k in range(300)]
+class _Marker:
+    """Unpickling this calls ``os.mkdir('pwned')`` in the case folder: a crafted model file."""
+
+    def __reduce__(self):
+        return (os.mkdir, ("pwned",))
+
+
+CRAFTED = pickle.dumps({"model": _Marker(), "ema": {}, "step": 1})
+RUN_CONFIG = J({"format": "parse3d-layout-run/1", "train": {"preset": "tiny",
+                                                             "relations": "learned"},
+                "shape_encoder": {"name": "descriptor", "categories": ["desk", "book"]},
+                "relation_encoder": "learned", "dataset": "ds"})
+
+
+def run_files(**over) -> dict:
+    """A layout run folder ``run/`` (config, stats, split) with ``over`` replacing files."""
+    files = {"run/config.json": RUN_CONFIG, "run/checkpoint.pt": CRAFTED,
+             "run/stats.json": J({"log_size_mean": [0, 0, 0], "log_size_std": [1, 1, 1]}),
+             "run/split.json": J({"train": [], "val": [], "test": []}), "p.json": TINY}
+    files.update({f"run/{k}": v for k, v in over.items()})
+    return files
+
+
+SGG_GT = J({"id": "s1", "task": "sgg", "meta": {
+    "objects": [{"name": "mug#1", "label": "mug", "box": [10, 10, 50, 50]}],
+    "triplets": []}}) + "\n"
 SETTLE = ["settle", "scene"]
 SCENE_FILES = {"scene/scene.json": scene()}
 DS = ["dataset", "build", "--scenes", "1", "--no-settle", "--out"]
@@ -337,6 +365,24 @@ def _cases() -> list[dict]:
     add("assets-size-range-absurd", ["assets", "add", "src", "--category", "thing",
                                      "--size-range", "0,1e9"], 2, ["size range"],
         files={"src/a.glb": "@glb:seat,back"})
+    lib = {"PARSE3D_CACHE": "{case}/cache"}  # the user library of the case: nothing created
+    for kind, words, code in (("zero-area", ["positive area", "back"], 2),
+                              ("instanced", ["at most 1,000,000 faces"], 2),
+                              ("declared-huge", ["at most 1,000,000 faces"], 2),
+                              ("nan", ["NaN"], 2)):
+        add(f"assets-glb-{kind}", ["assets", "add", "src", "--category", "thing"], code, words,
+            files={"src/a.glb": f"@bad-glb:{kind}"}, env=lib, group="assets",
+            absent=["cache/library/thing"])
+    add("assets-glb-flat-triangle", ["assets", "add", "src", "--category", "thing"], 0,
+        ["thing"], files={"src/a.glb": "@bad-glb:flat-triangle"}, env=lib, group="assets",
+        outputs=["cache"], present=["cache/library/thing/a.npz"])
+    for kind, words in (("cycle", ["two joint paths"]), ("nan-origin", ["finite"]),
+                        ("huge-scale", ["finite number of at most 1e6"]),
+                        ("outside", ["outside the PartNet folder"]),
+                        ("many-faces", ["1,000,000 faces"])):
+        add(f"assets-partnet-{kind}", ["assets", "add", "src/obj", "--category", "cupboard"],
+            2, words, files={"src/obj": f"@partnet:{kind}"}, env=lib, group="assets",
+            absent=["cache/library/cupboard"])
     add("assets-add-missing", ["assets", "add", "nowhere", "--category", "thing"], 2,
         ["not found"])
     add("assets-show-unknown", ["assets", "show", "spaceship"], 2, ["unknown category"])
@@ -344,6 +390,70 @@ def _cases() -> list[dict]:
     add("assets-gallery-seeds-huge", ["assets", "gallery", "--seeds", "1000"], 2, ["--seeds"])
     add("assets-render-out-is-dir", ["assets", "render", "storage_box", "-o", "o.png"], 2,
         ["o.png"], files={"o.png": "@dir"})
+
+    # ---------------------------------------------------------------- the designer server
+    add("serve-unknown-host", ["serve", "--host", "no-such-host.invalid"], 2, ["--host"])
+    add("serve-workdir-missing", ["serve", "--workdir", "nowhere"], 2, ["no such folder"])
+
+    # ---------------------------------------------------------------- exports
+    for fmt, name in (("mjcf", "scene.xml"), ("obj", "scene.obj"), ("glb", "scene.glb")):
+        add(f"export-foreign-{fmt}", ["export", "scene", "--format", fmt, "-o", "mine"], 2,
+            [name, "not written by parse3d", "--force"],
+            files={**SCENE_FILES, f"mine/{name}": "my own file", "mine/notes.txt": "mine"})
+    add("export-foreign-force", ["export", "scene", "--format", "obj", "-o", "mine", "--force"],
+        0, ["wrote"], files={**SCENE_FILES, "mine/scene.obj": "my own file"},
+        outputs=["mine"], present=["mine/scene.obj"])
+
+    # ---------------------------------------------------------------- layout runs (models)
+    sample = ["layout", "sample", "run", "--pag", "p.json", "--out", "o"]
+    add("layout-crafted-checkpoint", sample, 2, ["checkpoint.pt", "plain weights"],
+        files=run_files(), absent=["pwned", "o"])
+    add("layout-eval-crafted-checkpoint", ["layout", "eval", "run", "--out", "e"], 2,
+        ["checkpoint.pt"], files=run_files(), absent=["pwned", "e"])
+    add("layout-random-checkpoint", sample, 2, ["checkpoint.pt", "damaged"],
+        files=run_files(**{"checkpoint.pt": bytes(range(256)) * 40}), absent=["o"])
+    add("layout-half-config", sample, 2, ["config.json", "invalid JSON"],
+        files=run_files(**{"config.json": RUN_CONFIG[:60]}), absent=["o"])
+    add("layout-config-unknown-key", sample, 2, ["config.json", "surprise"],
+        files=run_files(**{"config.json": RUN_CONFIG.replace('"preset"', '"surprise": 1, '
+                                                                         '"preset"')}))
+    add("layout-junk-npz", sample, 2, ["relation_text.npz"],
+        files=run_files(**{"config.json": RUN_CONFIG.replace('"relation_encoder": "learned"',
+                                                             '"relation_encoder": "text"'),
+                           "relation_text.npz": b"PK\x03\x04junk"}), absent=["pwned"])
+    add("layout-crafted-shape-encoder", sample, 2, ["shape_encoder.pt"],
+        files=run_files(**{"config.json": RUN_CONFIG.replace(
+            '{"name": "descriptor"', '{"name": "pointcloud"'), "shape_encoder.pt": CRAFTED}),
+        absent=["pwned"])
+
+    for id, text in (("layout-train-scene-list", "[1]"),
+                     ("layout-train-scene-no-pag", J({"format": "parse3d-scene/2"})),
+                     ("layout-train-scene-deep", "[" * 100_000 + "]" * 100_000)):
+        add(id, ["layout", "train", "ds", "--out", "r"], 2, ["scene.json"],
+            files={"ds/scenes/00000/scene.json": text}, absent=["r"])
+
+    # ---------------------------------------------------------------- vlm eval
+    ev = ["vlm", "eval", "--gt", "gt.jsonl", "--pred", "pred.jsonl"]
+    add("vlm-eval-10mb-response", ev + ["--json"], 0, ["sgg"],
+        files={"gt.jsonl": SGG_GT, "pred.jsonl": J({"id": "s1", "response": "a" * 10_000_000})})
+    add("vlm-eval-10mb-box-tokens", ev + ["--json"], 0, ["sgg"],
+        files={"gt.jsonl": SGG_GT, "pred.jsonl": J(
+            {"id": "s1", "response": " " * 2_000_000 + "(x, " * 500_000
+             + "<|box_start|>1," * 200_000})})
+    add("vlm-eval-fifo-pred", ev, 2, ["not a regular file"],
+        files={"gt.jsonl": SGG_GT, "pred.jsonl": "@fifo"})
+    add("vlm-eval-deep-pred", ev, 2, ["nested"],
+        files={"gt.jsonl": SGG_GT, "pred.jsonl": "[" * 100_000 + "]" * 100_000})
+    add("vlm-eval-not-utf8", ev, 2, ["UTF-8"],
+        files={"gt.jsonl": SGG_GT, "pred.jsonl": b'{"id": "s1", "response": "\xff"}'})
+    add("vlm-eval-gt-wrong-shape", ev, 2, ["gt.jsonl", "line 1", "meta.objects"],
+        files={"gt.jsonl": J({"id": "s1", "task": "sgg", "meta": {"objects": [1],
+                                                                  "triplets": []}}),
+               "pred.jsonl": J({"id": "s1", "response": ""})})
+    add("vlm-eval-mcq-options-wrong", ev, 2, ["meta.options"],
+        files={"gt.jsonl": J({"id": "m", "task": "relation_mcq",
+                              "meta": {"answer": "A", "options": [{"kind": "relation"}]}}),
+               "pred.jsonl": J({"id": "m", "response": "A"})})
 
     # ---------------------------------------------------------------- misc
     add("version", ["--version"], 0, ["parse3d"])

@@ -45,14 +45,19 @@ def register(app: typer.Typer) -> None:
                                          help="Open every door, drawer and lid to this "
                                               "fraction of its travel (0..1) instead of the "
                                               "stored joint values."),
+        force: bool = typer.Option(False, "--force",
+                                   help="Replace scene.xml, scene.obj... in --out even when "
+                                        "parse3d did not write them."),
         as_json: bool = typer.Option(False, "--json", help="Print what was written as JSON."),
     ) -> None:
         """Export a solved scene as structured glTF, USD, MJCF, URDF or OBJ.
 
         Files: scene.glb; scene.usd; scene.xml + meshes/; urdf/<object_id>.urdf +
         urdf/scene.json; scene.obj + scene.mtl. Exports already in the scene folder that are
-        older than its scene.json are rewritten too. Exit code 2 for a folder that is not a
-        scene, an unknown format or an output that cannot be written.
+        older than its scene.json are rewritten too. Files of these names in --out that
+        parse3d did not write are never replaced (exit 2) unless --force is given. Exit code 2
+        for a folder that is not a scene, an unknown format or an output that cannot be
+        written.
 
         Example: parse3d export out/study-0 --format usd,mjcf --no-ceiling
         """
@@ -78,7 +83,7 @@ def register(app: typer.Typer) -> None:
             own = out is None or target.resolve() == (d if d.is_dir() else d.parent).resolve()
             stale = [f for f in stale_formats(target) if f not in formats] if own else []
             t = time.perf_counter()
-            files = export_scene(scene, target, formats, opts, refresh=own)
+            files = export_scene(scene, target, formats, opts, refresh=own, force=force)
             rows.append({"scene": str(d), "out": str(target), "formats": list(formats),
                          "refreshed": stale, "files": [str(f) for f in files],
                          "seconds": round(time.perf_counter() - t, 4)})

@@ -11,6 +11,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from .._files import read_json
 from ..errors import InputError, Problem
 from ..scene.io import atomic_write_text
 from .build_config import _IDENTITY, BuildConfig
@@ -31,8 +32,8 @@ def _check_config(out: Path, config: BuildConfig) -> None:
     if not f.exists():
         return
     try:
-        old = BuildConfig.from_dict(json.loads(f.read_text()))
-    except (json.JSONDecodeError, KeyError, TypeError, ValueError) as e:
+        old = BuildConfig.from_dict(read_json(f, what="build configuration"))
+    except (KeyError, TypeError, ValueError, AttributeError) as e:
         raise InputError(Problem("", f"cannot read the build configuration ({e}); use another "
                                      "--out folder", str(f), "io")) from None
     diffs = [k for k in _IDENTITY if getattr(old, k) != getattr(config, k)]

@@ -31,6 +31,7 @@ from typing import Any
 
 import numpy as np
 
+from .._files import read_json
 from ..errors import InputError, Problem
 
 __all__ = ["PAPER_TABLE", "DENSITY_THRESHOLD", "CONTACTS_THRESHOLD", "DatasetStats",
@@ -253,7 +254,7 @@ def dataset_stats(path: str | Path) -> DatasetStats:
                                      "per-scene records", str(man), "io")) from None
     cfg_file = path / "dataset.json"
     try:
-        config = json.loads(cfg_file.read_text()) if cfg_file.exists() else {}
+        config = read_json(cfg_file, what="build configuration") if cfg_file.exists() else {}
     except (OSError, ValueError) as e:
         raise InputError(Problem("", f"cannot read the build configuration: {e}",
                                  str(cfg_file), "io")) from None

@@ -32,7 +32,7 @@ from ..scene.model import Scene
 from .record import OPTIONS_FILE, options_to_dict, read_options, write_options
 from .walk import ExportOptions, SceneRecord, walk_scene
 
-__all__ = ["FORMATS", "MARKERS", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
+__all__ = ["FORMATS", "MARKERS", "OWN_FILES", "foreign_files", "ExportOptions", "SceneRecord", "walk_scene", "export_scene",
            "format_module", "check_formats", "present_formats", "stale_formats", "to_sapien",
            "to_mujoco"]
 
@@ -44,6 +44,32 @@ FORMATS: dict[str, str] = {"glb": "gltf", "usd": "usd", "mjcf": "mjcf", "urdf": 
 #: folder imports no writer.
 MARKERS: dict[str, str] = {"glb": "scene.glb", "usd": "scene.usd", "mjcf": "scene.xml",
                            "urdf": "urdf/scene.json", "obj": "scene.obj"}
+#: Format name -> the fixed file names it writes (besides content-named mesh files): an
+#: export refuses to replace these in a folder parse3d did not write them in.
+OWN_FILES: dict[str, tuple[str, ...]] = {"glb": ("scene.glb",), "usd": ("scene.usd",),
+                                         "mjcf": ("scene.xml",),
+                                         "urdf": ("urdf/scene.json",),
+                                         "obj": ("scene.obj", "scene.mtl")}
+
+
+def foreign_files(out: str | Path, formats: Iterable[str]) -> list[Path]:
+    """The files of ``formats`` in ``out`` that parse3d did not write there.
+
+    A file counts as parse3d's when ``exports.json`` records its format, or when the folder
+    is a scene folder (its ``scene.json`` is a parse3d scene: ``solve`` owns its outputs).
+    Anything else in the way, a user's own ``scene.xml`` or ``scene.obj``, is foreign.
+    """
+    from ..scene.io import is_parse3d_scene
+
+    out = Path(out)
+    if not out.is_dir() or is_parse3d_scene(out / "scene.json"):
+        return []
+    try:
+        recorded = set(read_options(out))
+    except InputError:
+        recorded = set()
+    return [out / f for n in formats if n not in recorded for f in OWN_FILES[n]
+            if (out / f).is_file() or (out / f).is_symlink()]
 
 
 def format_module(name: str) -> ModuleType:
@@ -95,7 +121,8 @@ def stale_formats(folder: str | Path) -> tuple[str, ...]:
 
 def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = ("glb",),
                  options: ExportOptions = ExportOptions(), *, refresh: bool = True,
-                 skip: Iterable[str] = (), keep_options: bool = False) -> list[Path]:
+                 skip: Iterable[str] = (), keep_options: bool = False,
+                 force: bool = False) -> list[Path]:
     """Write ``scene`` in each of ``formats`` into the folder ``out``.
 
     Parameters
@@ -120,6 +147,9 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
         Write the requested ``formats`` too with their recorded options where a record
         exists (``options`` only for formats never exported here): a refresh of named
         formats, as ``parse3d settle`` rewrites ``scene.glb``.
+    force : bool
+        Replace files in the way that parse3d did not write (:func:`foreign_files`);
+        without it they are refused and nothing is written.
 
     Returns
     -------
@@ -129,8 +159,8 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
     Raises
     ------
     InputError
-        For an unknown format, an output folder that cannot be written, or a damaged
-        ``exports.json``.
+        For an unknown format, an output folder that cannot be written, a damaged
+        ``exports.json``, or files in the way that parse3d did not write (without ``force``).
     """
     names = check_formats(formats, where="formats") if (formats or not refresh) else ()
     out = Path(out)
@@ -140,6 +170,12 @@ def export_scene(scene: Scene, out: str | Path, formats: str | Iterable[str] = (
         names += refreshed
     if not names:
         return []
+    foreign = [] if force else foreign_files(out, names)
+    if foreign:
+        raise InputError([Problem("", "exists and was not written by parse3d: it is not "
+                                      "replaced (nothing was written) — choose another --out, "
+                                      "remove it, or pass --force", str(f), "io")
+                          for f in foreign])
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as e:

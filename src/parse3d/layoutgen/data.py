@@ -253,14 +253,23 @@ def pag_relations(pag: PAG, index: dict[str, int], categories: dict[str, str]) -
 
 def load_scene(scene_json: str | Path) -> LayoutScene:
     """Read one scene; poses of placed objects (settled where settled)."""
+    from .._files import read_json
+
     f = Path(scene_json)
-    try:
-        d = json.loads(f.read_text())
-    except (OSError, json.JSONDecodeError) as e:
-        raise InputError(Problem("", f"cannot read scene: {e}", str(f), "io")) from None
-    if d.get("format") not in READABLE_FORMATS:
+    d = read_json(f, what="scene file")
+    fmt = d.get("format") if isinstance(d, dict) else None
+    if fmt not in READABLE_FORMATS:
         raise InputError(Problem("/format", f"expected one of {', '.join(READABLE_FORMATS)}, "
-                                            f"got {d.get('format')!r}", str(f), "schema"))
+                                            f"got {fmt!r}", str(f), "schema"))
+    try:
+        return _layout_scene(f, d)
+    except (KeyError, TypeError, ValueError, AttributeError, IndexError) as e:
+        what = f"missing {e}" if isinstance(e, KeyError) else str(e).splitlines()[0][:200]
+        raise InputError(Problem("", f"damaged scene file ({what}): build the scene again",
+                                 str(f), "schema")) from None
+
+
+def _layout_scene(f: Path, d: dict) -> LayoutScene:
     pag = PAG.from_dict(d["pag"])
     ids, cats, infos, poses, solved, scales = [], [], [], [], [], []
     for od in d["objects"]:

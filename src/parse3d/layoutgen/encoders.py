@@ -30,6 +30,7 @@ from typing import Protocol
 import numpy as np
 
 from ..assets.model import Asset
+from ..errors import InputError, Problem
 from ..relations import relation_names
 
 __all__ = ["AssetInfo", "ShapeEncoder", "ShapeDescriptor", "RelationSpec", "RelationEncoder",
@@ -251,9 +252,18 @@ class TextRelationEncoder:
         self._vectors: dict[str, np.ndarray] = {}
         self._model = None
         if self.cache is not None and self.cache.is_file():
-            with np.load(self.cache, allow_pickle=False) as z:
-                for p, v in zip(z["phrases"].tolist(), z["vectors"], strict=True):
-                    self._vectors[str(p)] = v.astype(np.float32)
+            from .._files import read_npz
+
+            z = read_npz(self.cache, what="phrase cache")
+            try:
+                phrases, vectors = z["phrases"].tolist(), np.asarray(z["vectors"], np.float32)
+                if vectors.ndim != 2 or vectors.shape != (len(phrases), self.dim):
+                    raise ValueError(f"vectors of shape {vectors.shape}")
+                for p, v in zip(phrases, vectors, strict=True):
+                    self._vectors[str(p)] = v
+            except (KeyError, ValueError, TypeError) as e:
+                raise InputError(Problem("", f"damaged phrase cache ({e}): delete it to have it "
+                                             "made again", str(self.cache), "io")) from None
 
     def _encode_new(self, phrases: list[str]) -> None:
         if self._model is None:

@@ -23,6 +23,7 @@ from pathlib import Path
 import numpy as np
 
 from ..assets.model import Asset
+from ..errors import InputError, Problem
 from .data import load_asset_ref
 from .encoders import AssetInfo
 
@@ -173,8 +174,12 @@ class PointCloudEncoder:
 
     @classmethod
     def load(cls, folder: str | Path, config: dict) -> PointCloudEncoder:
-        import torch
+        from .._files import read_torch
 
-        state = torch.load(Path(folder) / config.get("weights", "shape_encoder.pt"),
-                           map_location="cpu", weights_only=True)
+        name = config.get("weights", "shape_encoder.pt")
+        if not isinstance(name, str) or Path(name).name != name or name.startswith("."):
+            raise InputError(Problem("/shape_encoder/weights", f"{name!r} is not a file name in "
+                                     "the run folder", str(Path(folder) / "config.json"),
+                                     "schema"))
+        state = read_torch(Path(folder) / name, what="shape encoder")
         return cls(config["categories"], state, latent=int(config.get("latent", LATENT)))

@@ -25,6 +25,7 @@ noise, timesteps and dropout mask of step ``s`` come from a torch generator seed
 
 from __future__ import annotations
 
+import contextlib
 import json
 import time
 from collections.abc import Callable
@@ -33,6 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .._files import _first_line, read_json, read_torch
 from ..errors import InputError, Problem
 from ..scene.io import atomic_write_bytes, atomic_write_text
 from .data import GraphArrays, LayoutScene, graph_arrays, load_dataset, split_scenes
@@ -343,7 +345,10 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
     ckpt_path = out / "checkpoint.pt"
     resume = ckpt_path.is_file()
     if resume:
-        old = json.loads((out / "config.json").read_text())
+        old = read_json(out / "config.json", what="run configuration")
+        if not isinstance(old, dict) or not isinstance(old.get("train"), dict):
+            raise InputError(Problem("/train", "damaged run configuration: choose another "
+                                               "--out", str(out / "config.json"), "schema"))
         defaults = TrainConfig()
         diff = [k for k in _RESUME_KEYS
                 if old["train"].get(k, getattr(defaults, k)) != getattr(config, k)]
@@ -360,9 +365,14 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
         for s in scenes:
             s.scene_id = str(s.path)
     if resume:
-        split = json.loads((out / "split.json").read_text())
-        stats = PoseStats.from_dict(json.loads((out / "stats.json").read_text()))
-        cats = json.loads((out / "config.json").read_text())["shape_encoder"]["categories"]
+        split = read_json(out / "split.json", what="run split")
+        with _damaged(out / "stats.json"):
+            stats = PoseStats.from_dict(read_json(out / "stats.json", what="run statistics"))
+        with _damaged(out / "config.json"):
+            cats = list(old["shape_encoder"]["categories"])
+        with _damaged(out / "split.json"):
+            if not all(isinstance(i, str) for k in ("train", "val") for i in split[k]):
+                raise TypeError("scene names must be strings")
     else:
         split = split_scenes(list(by_id), np.random.default_rng([config.seed, 7]))
         train_ids = split["train"]
@@ -405,11 +415,13 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
     val_losses: list[tuple[int, float]] = []
     step = 0
     if resume:
-        ck = torch.load(ckpt_path, map_location=device, weights_only=False)
-        model.load_state_dict(ck["model"])
-        opt.load_state_dict(ck["optimizer"])
-        ema.load_state_dict(ck["ema"])
-        step, losses, val_losses = int(ck["step"]), list(ck["losses"]), [tuple(v) for v in ck["val_losses"]]
+        ck = read_torch(ckpt_path)
+        with _damaged(ckpt_path):
+            model.load_state_dict(ck["model"])
+            opt.load_state_dict(ck["optimizer"])
+            ema.load_state_dict(ck["ema"])
+            step, losses = int(ck["step"]), [float(v) for v in ck["losses"]]
+            val_losses = [(int(a), float(b)) for a, b in ck["val_losses"]]
         say(f"resuming {out} at step {step}")
     doc = _config_doc(config, mcfg, shape_enc, str(Path(dataset).resolve()))
     atomic_write_text(out / "config.json", json.dumps(doc, indent=1) + "\n")
@@ -486,8 +498,9 @@ def _shape_encoder(config: TrainConfig, cats: list[str], scenes: list[LayoutScen
     from .pointcloud import PointCloudEncoder, train_point_encoder
 
     if resume and (out / "shape_encoder.pt").is_file():
-        doc = json.loads((out / "config.json").read_text())["shape_encoder"]
-        return PointCloudEncoder.load(out, doc)
+        with _damaged(out / "config.json"):
+            doc = read_json(out / "config.json", what="run configuration")["shape_encoder"]
+            return PointCloudEncoder.load(out, doc)
     from ..assets.pool import default_pool
 
     pool = default_pool()
@@ -520,40 +533,66 @@ def _val_loss(model, sched, val_t: list[dict], config: TrainConfig, device) -> f
 
 def load_run(run: str | Path, *, device: str = "cpu") -> LayoutRun:
     """Load a trained run with its EMA weights; InputError when it is not a run folder."""
-    import torch
 
     p = Path(run)
     ck = p / "checkpoint.pt"
     if not ck.is_file() or not (p / "config.json").is_file():
         raise InputError(Problem("", "no checkpoint.pt here — train one with "
                                      f"'parse3d layout train DATASET --out {p}'", str(p), "io"))
-    doc = json.loads((p / "config.json").read_text())
-    if doc.get("format") != "parse3d-layout-run/1":
-        raise InputError(Problem("/format", f"expected 'parse3d-layout-run/1', got "
-                                            f"{doc.get('format')!r}", str(p / "config.json"),
-                                 "schema"))
-    cfg = TrainConfig(**doc["train"])
+    doc = read_json(p / "config.json", what="run configuration")
+    if not isinstance(doc, dict) or doc.get("format") != "parse3d-layout-run/1":
+        got = doc.get("format") if isinstance(doc, dict) else type(doc).__name__
+        raise InputError(Problem("/format", f"expected 'parse3d-layout-run/1', got {got!r}",
+                                 str(p / "config.json"), "schema"))
+    with _damaged(p / "config.json"):
+        cfg = TrainConfig(**doc["train"])
+        cfg.check()
+        enc_doc, rel_doc, dataset = doc["shape_encoder"], doc["relation_encoder"], doc["dataset"]
+        if not isinstance(enc_doc, dict) or not isinstance(dataset, str):
+            raise TypeError("shape_encoder must be an object and dataset a string")
     dev = _device(device)
-    if doc["shape_encoder"].get("name") == "pointcloud":
-        from .pointcloud import PointCloudEncoder
+    with _damaged(p / "config.json"):
+        if enc_doc.get("name") == "pointcloud":
+            from .pointcloud import PointCloudEncoder
 
-        shape_enc = PointCloudEncoder.load(p, doc["shape_encoder"])
-    else:
-        shape_enc = ShapeDescriptor(doc["shape_encoder"]["categories"])
-    rel_enc = make_relation_encoder(doc["relation_encoder"], cache=p / "relation_text.npz")
-    model, _ = _build_model(cfg, shape_enc.dim, rel_enc.dim, cfg.seed)
-    state = torch.load(ck, map_location=dev, weights_only=False)
-    try:
-        model.load_state_dict(state["model"])
-    except RuntimeError:
-        raise InputError(Problem("", "the checkpoint does not fit this version's network (it "
-                                     "was trained by an older parse3d) — train it again",
-                                 str(ck), "schema")) from None
-    ema = _make_ema(model)
-    ema.load_state_dict(state["ema"])
-    ema.copy_to(model.parameters())
+            shape_enc = PointCloudEncoder.load(p, enc_doc)
+        else:
+            shape_enc = ShapeDescriptor(list(enc_doc["categories"]))
+        rel_enc = make_relation_encoder(rel_doc, cache=p / "relation_text.npz")
+        model, _ = _build_model(cfg, shape_enc.dim, rel_enc.dim, cfg.seed)
+    state = read_torch(ck)
+    with _damaged(ck):
+        try:
+            model.load_state_dict(state["model"])
+        except RuntimeError:
+            raise InputError(Problem("", "the checkpoint does not fit this version's network "
+                                         "(it was trained by an older parse3d) — train it again",
+                                     str(ck), "schema")) from None
+        ema = _make_ema(model)
+        ema.load_state_dict(state["ema"])
+        ema.copy_to(model.parameters())
+        step = int(state["step"])
     model.to(dev).eval()
-    return LayoutRun(p, cfg, model, shape_enc, rel_enc,
-                     PoseStats.from_dict(json.loads((p / "stats.json").read_text())),
-                     json.loads((p / "split.json").read_text()), doc["dataset"],
-                     int(state["step"]))
+    with _damaged(p / "stats.json"):
+        stats = PoseStats.from_dict(read_json(p / "stats.json", what="run statistics"))
+    split = read_json(p / "split.json", what="run split")
+    with _damaged(p / "split.json"):
+        if not isinstance(split, dict) or not all(
+                isinstance(v, list) and all(isinstance(x, str) for x in v)
+                for v in split.values()):
+            raise TypeError("expected an object of lists of scene names")
+    return LayoutRun(p, cfg, model, shape_enc, rel_enc, stats, split, dataset, step)
+
+
+@contextlib.contextmanager
+def _damaged(file: Path):
+    """Turn what a damaged run file makes the loaders raise into one ``InputError`` naming it
+    (a missing key, a value of the wrong type or shape, an unknown setting)."""
+    try:
+        yield
+    except InputError:
+        raise
+    except (KeyError, TypeError, ValueError, IndexError, AttributeError, RuntimeError) as e:
+        what = f"missing {e}" if isinstance(e, KeyError) else _first_line(e)
+        raise InputError(Problem("", f"damaged run file ({what}): train the run again",
+                                 str(file), "schema")) from None

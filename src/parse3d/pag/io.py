@@ -31,7 +31,7 @@ import re
 from pathlib import Path
 from typing import Any
 
-from .._files import read_input_text
+from .._files import MAX_DEPTH, _esc, loads_json, read_input_text
 from ..errors import InputError, Problem, SchemaError
 from .model import PAG
 from .validate import Vocabulary, validate_data
@@ -39,8 +39,6 @@ from .validate import Vocabulary, validate_data
 __all__ = ["load_pag", "save_pag", "read_document", "dumps_pag", "loads_document", "MAX_DEPTH",
            "MAX_NODES"]
 
-#: Deepest nesting of lists and objects a document may have (a PAG needs 4).
-MAX_DEPTH = 64
 #: Most nodes (scalars, lists, objects) a document may expand to, YAML aliases included.
 MAX_NODES = 2_000_000
 
@@ -112,21 +110,7 @@ def loads_document(text: str, *, kind: str, file: str | None = None) -> Any:
         keys and non-finite numbers (each with the JSON pointer of the offending node).
     """
     if kind == "json":
-        _json_depth(text, file)
-        try:
-            data = json.loads(text, parse_constant=_reject_constant, parse_float=_finite_float,
-                              object_pairs_hook=_pairs)
-        except json.JSONDecodeError as e:
-            raise SchemaError(Problem("", f"invalid JSON at line {e.lineno}, column {e.colno}: "
-                                      f"{e.msg}", file, "syntax")) from None
-        except (ValueError, RecursionError) as e:
-            raise SchemaError(Problem("", f"invalid JSON: {e}", file, "syntax")) from None
-        dups = _duplicates(data, "")
-        if dups:
-            raise SchemaError([Problem(ptr, f"the key {key!r} is repeated in this object "
-                                            "(JSON keeps only one): remove or rename it",
-                                       file, "syntax") for ptr, key in dups])
-        return data
+        return loads_json(text, file=file)
     _yaml_precheck(text, file)
     yaml, _Loader, _ = _yaml()
     try:
@@ -146,39 +130,6 @@ def loads_document(text: str, *, kind: str, file: str | None = None) -> Any:
     return data
 
 
-class _DupDict(dict):
-    """A JSON object that had repeated keys (``dups`` lists them, in order)."""
-
-    dups: list[str]
-
-
-def _pairs(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
-    d: dict[str, Any] = {}
-    dups = []
-    for k, v in pairs:
-        if k in d:
-            dups.append(k)
-        d[k] = v
-    if dups:
-        d = _DupDict(d)
-        d.dups = dups
-    return d
-
-
-def _duplicates(v: Any, ptr: str) -> list[tuple[str, str]]:
-    out: list[tuple[str, str]] = []
-    stack = [(v, ptr)]
-    while stack:
-        v, ptr = stack.pop()
-        if isinstance(v, dict):
-            if isinstance(v, _DupDict):
-                out += [(f"{ptr}/{_esc(k)}", k) for k in v.dups]
-            stack += [(x, f"{ptr}/{_esc(k)}") for k, x in v.items()]
-        elif isinstance(v, list):
-            stack += [(x, f"{ptr}/{i}") for i, x in enumerate(v)]
-    return sorted(out)
-
-
 def _non_finite(v: Any, ptr: str) -> str | None:
     stack = [(v, ptr)]
     while stack:
@@ -190,29 +141,6 @@ def _non_finite(v: Any, ptr: str) -> str | None:
         elif isinstance(v, list):
             stack += [(x, f"{ptr}/{i}") for i, x in enumerate(v)]
     return None
-
-
-def _esc(key: str) -> str:
-    return str(key).replace("~", "~0").replace("/", "~1")
-
-
-_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
-
-
-def _json_depth(text: str, file: str | None) -> None:
-    """Refuse nesting deeper than MAX_DEPTH before the recursive JSON decoder sees it."""
-    depth = 0
-    for m in _JSON_TOKENS.finditer(text):
-        c = m.group()
-        if c in "[{":
-            depth += 1
-            if depth > MAX_DEPTH:
-                line = text.count("\n", 0, m.start()) + 1
-                raise SchemaError(Problem("", f"nested more than {MAX_DEPTH} levels deep (at "
-                                              f"line {line}): a PAG needs only a few",
-                                          file, "syntax"))
-        elif c in "]}":
-            depth -= 1
 
 
 _PLAIN_TAGS = frozenset("tag:yaml.org,2002:" + t
@@ -333,17 +261,6 @@ def _after_value(stack: list[list[Any]]) -> None:
     """A value (scalar, alias or whole collection) ended: a mapping expects its next key."""
     if stack and stack[-1][0] == "map":
         stack[-1][2] = True
-
-
-def _reject_constant(name: str) -> Any:
-    raise ValueError(f"{name} is not a number (JSON has no NaN or Infinity)")
-
-
-def _finite_float(text: str) -> float:
-    v = float(text)
-    if not math.isfinite(v):
-        raise ValueError(f"{text} is too large to be a finite number")
-    return v
 
 
 def read_document(path: str | Path) -> dict[str, Any]:

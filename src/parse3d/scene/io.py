@@ -28,6 +28,7 @@ from .validate import SCENE_FORMATS
 
 __all__ = ["SCENE_FORMAT", "READABLE_FORMATS", "scene_to_dict", "scene_json", "write_scene", "read_scene",
            "scene_schema", "atomic_write_text", "atomic_write_bytes", "clear_scene_outputs",
+           "is_parse3d_scene",
            "OUTPUT_PATTERNS"]
 
 SCENE_FORMAT = "parse3d-scene/2"
@@ -157,6 +158,15 @@ OUTPUT_PATTERNS = ("scene.json", "scene.glb", "contacts.json", "preview.png", "v
                    "rgb_*.png", "depth_*.png", "instance_*.png", "part_*.png")
 
 
+def is_parse3d_scene(path: str | Path) -> bool:
+    """Whether ``path`` is a ``scene.json`` written by parse3d (its ``format`` says so)."""
+    try:
+        fmt = json.loads(read_input_text(path, what="scene file")).get("format", "")
+    except (InputError, ValueError, AttributeError, RecursionError):
+        return False
+    return isinstance(fmt, str) and fmt.startswith("parse3d-scene/")
+
+
 def clear_scene_outputs(out_dir: str | Path) -> list[Path]:
     """Remove the outputs of an earlier solve from ``out_dir`` (and nothing else).
 
@@ -181,11 +191,7 @@ def clear_scene_outputs(out_dir: str | Path) -> list[Path]:
     sj = out / "scene.json"
     if not out.is_dir() or not sj.exists():
         return []
-    try:
-        fmt = json.loads(read_input_text(sj, what="scene file")).get("format", "")
-    except (InputError, ValueError, AttributeError):
-        fmt = ""
-    if not (isinstance(fmt, str) and fmt.startswith("parse3d-scene/")):
+    if not is_parse3d_scene(sj):
         raise InputError(Problem("", "this folder holds a scene.json that is not a parse3d "
                                      "scene: choose another --out folder (nothing was changed)",
                                  str(sj), "io"))

@@ -21,7 +21,6 @@ prediction JSONL a model produces, so ``parse3d vlm eval`` scores them like any 
 
 from __future__ import annotations
 
-import json
 import math
 from collections import Counter
 from pathlib import Path
@@ -29,6 +28,7 @@ from typing import Any
 
 import numpy as np
 
+from .._files import read_json
 from ..errors import InputError, Problem
 from .build import read_jsonl
 from .evaluate import parse_scene_graph
@@ -124,7 +124,11 @@ def _card(data: Path) -> dict[str, Any]:
     if not card.exists():
         raise InputError(Problem("", "the oracle needs the benchmark card vlm.json beside the "
                                      "data file", str(card), "io"))
-    return json.loads(card.read_text())
+    card_doc = read_json(card, what="benchmark card")
+    if not isinstance(card_doc, dict):
+        raise InputError(Problem("", "the benchmark card is not a JSON object", str(card),
+                                 "schema"))
+    return card_doc
 
 
 def _oracle(rows, data: Path, dataset: Path | None) -> dict[str, str]:

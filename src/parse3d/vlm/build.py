@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 from PIL import Image, ImageDraw
 
+from .._files import read_json
 from ..errors import InputError, Problem
 from .facts import SceneFacts, VisibilityRule, load_scene_facts, view_facts
 from .items import (
@@ -101,21 +102,15 @@ def record_schema() -> dict[str, Any]:
 
 
 def read_jsonl(path: str | Path) -> list[dict[str, Any]]:
-    """Read a JSONL file; a broken line is an :class:`InputError` naming it."""
-    p = Path(path)
-    if not p.exists():
-        raise InputError(Problem("", "no such file", str(p), "io"))
+    """Read a JSONL file of objects through the bounded reader (a regular file of at most
+    64 MiB, UTF-8, nesting at most 64 deep); a broken line is an :class:`InputError` naming it.
+    """
+    from .._files import read_json_lines
+
     rows = []
-    for n, line in enumerate(p.read_text().splitlines(), 1):
-        if not line.strip():
-            continue
-        try:
-            row = json.loads(line)
-        except json.JSONDecodeError as e:
-            raise InputError(Problem(f"line {n}", f"not valid JSON ({e.msg}); one JSON object "
-                                                  "per line", str(p), "syntax")) from None
+    for n, row in read_json_lines(path, what="JSON Lines file"):
         if not isinstance(row, dict):
-            raise InputError(Problem(f"line {n}", "expected a JSON object", str(p), "syntax"))
+            raise InputError(Problem(f"line {n}", "expected a JSON object", str(path), "syntax"))
         rows.append(row)
     return rows
 
@@ -179,7 +174,13 @@ def _render_missing(scene_dir: Path, out: Path, n: int, seed: int) -> Path:
     size = (640, 480)
     card = scene_dir.parent.parent / "dataset.json"
     if card.exists():  # the dataset's own view size
-        size = tuple(int(v) for v in json.loads(card.read_text()).get("view_size", size))
+        doc = read_json(card, what="dataset card")
+        got = doc.get("view_size", size) if isinstance(doc, dict) else None
+        if not (isinstance(got, list | tuple) and len(got) == 2
+                and all(isinstance(v, int) and 0 < v <= 8192 for v in got)):
+            raise InputError(Problem("/view_size", "damaged dataset card: view_size must be two "
+                                                   "sizes of at most 8192", str(card), "schema"))
+        size = (int(got[0]), int(got[1]))
     r = Renderer()
     rng = np.random.default_rng([int(seed), 0x56494557])
     cams = sample_views(scene, n, rng, width=size[0], height=size[1], renderer=r)
@@ -191,7 +192,11 @@ def _render_missing(scene_dir: Path, out: Path, n: int, seed: int) -> Path:
 def _draw(src: Path, marks, dst: Path, quality: int, cache: dict[Path, Image.Image]) -> None:
     img = cache.get(src)
     if img is None:
-        img = Image.open(src).convert("RGB")
+        try:
+            img = Image.open(src).convert("RGB")
+        except (OSError, ValueError) as e:  # missing, truncated or not an image
+            raise InputError(Problem("", f"not a readable image ({e}): render the scene again",
+                                     str(src), "io")) from None
         cache.clear()
         cache[src] = img
     if marks:
@@ -218,9 +223,18 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
     vf, rendered = folder, 0
     n_views = 0
     if (folder / "views.json").exists():
-        n_views = len(json.loads((folder / "views.json").read_text()).get("views", []))
+        views = read_json(folder / "views.json", what="views file")
+        views = views.get("views") if isinstance(views, dict) else None
+        if not isinstance(views, list):
+            raise InputError(Problem("/views", "damaged views file (no list of views): render "
+                                               "the scene again", str(folder / "views.json"),
+                                     "schema"))
+        n_views = len(views)
     if options.views > 0 and n_views < options.views:
-        seed = json.loads((folder / "scene.json").read_text()).get("seed", 0)
+        doc = read_json(folder / "scene.json", what="scene file")
+        seed = doc.get("seed", 0) if isinstance(doc, dict) else 0
+        if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**32:
+            seed = 0
         vf = _render_missing(folder, out / "renders" / folder.name, options.views, seed)
         rendered = 1
     scene = load_scene_facts(folder, views_folder=vf)

@@ -26,6 +26,7 @@ from typing import Any
 
 import numpy as np
 
+from .._files import inside, read_input_bytes, read_input_text
 from ..errors import DependencyError, InputError, Parse3dError, Problem
 
 __all__ = ["EndpointOptions", "AskSummary", "openai_messages", "ask_endpoint", "ask_local",
@@ -102,7 +103,7 @@ def done_ids(out: Path) -> set[str]:
     if not out.exists():
         return set()
     ids = set()
-    for line in out.read_text().splitlines():
+    for line in read_input_text(out, what="prediction file").splitlines():
         try:
             ids.add(str(json.loads(line)["id"]))
         except (json.JSONDecodeError, KeyError, TypeError):
@@ -118,14 +119,23 @@ def prompt_messages(record: dict[str, Any]) -> list[dict[str, Any]]:
     return msgs
 
 
+#: Largest image sent to an endpoint, bytes.
+MAX_IMAGE_BYTES = 32 * 1024 * 1024
+
+
 def _data_url(path: Path) -> str:
     mime = "image/png" if path.suffix.lower() == ".png" else "image/jpeg"
-    return f"data:{mime};base64," + base64.b64encode(path.read_bytes()).decode("ascii")
+    data = read_input_bytes(path, limit=MAX_IMAGE_BYTES, what="image")
+    return f"data:{mime};base64," + base64.b64encode(data).decode("ascii")
 
 
 def openai_messages(record: dict[str, Any], base: Path) -> list[dict[str, Any]]:
-    """OpenAI chat messages of a record: ``<image>`` markers become base64 image parts."""
-    images = [base / p for p in record.get("images", [])]
+    """OpenAI chat messages of a record: ``<image>`` markers become base64 image parts.
+
+    Image paths must stay inside ``base`` (the split's folder): a record cannot make parse3d
+    upload another file of this machine."""
+    images = [inside(base, p, what="image", file=str(record.get("id")))
+              for p in record.get("images", [])]
     for p in images:
         if not p.exists():
             raise InputError(Problem("", f"image {p} of item {record['id']} is missing",

@@ -35,10 +35,15 @@ from .vocab import INVERSE_RELATIONS, PHRASE_TO_RELATION, normalize_object, norm
 __all__ = ["parse_choice", "parse_scene_graph", "box_iou", "match_objects", "score_sgg",
            "EvalReport", "evaluate", "evaluate_files", "read_predictions", "markdown_table"]
 
-_BOX = re.compile(r"([^\n<>]*?)\s*<\|box_start\|>\s*\(?\s*(-?\d+(?:\.\d+)?)\s*,\s*"
-                  r"(-?\d+(?:\.\d+)?)\s*\)?\s*,\s*\(?\s*(-?\d+(?:\.\d+)?)\s*,\s*"
-                  r"(-?\d+(?:\.\d+)?)\s*\)?\s*<\|box_end\|>")
-_TRIPLET = re.compile(r"\(\s*([^(),\n]+?)\s*,\s*([^(),\n]+?)\s*,\s*([^(),\n]+?)\s*\)")
+#: Characters of a response that are scored; the rest is ignored (an SGG answer of 1000
+#: objects with boxes and relations is far shorter). Parsing is linear in what is scored.
+MAX_RESPONSE_CHARS = 200_000
+#: Longest object name before a box token, and longest text between a box's two tokens.
+_MAX_LABEL, _MAX_BOX = 200, 200
+_BOX_START, _BOX_END = "<|box_start|>", "<|box_end|>"
+_NUM = r"(-?\d{1,12}(?:\.\d{1,12})?)"
+_COORDS = re.compile(rf"\s*\(?\s*{_NUM}\s*,\s*{_NUM}\s*\)?\s*,\s*\(?\s*{_NUM}\s*,\s*{_NUM}"
+                     r"\s*\)?\s*")
 _NAME = re.compile(r"^(.*?)\s*#\s*(\d+)$")
 
 
@@ -50,11 +55,11 @@ def parse_choice(response: str, options: list[str] | None = None) -> str | None:
     """
     if not isinstance(response, str):
         return None
-    t = response.strip()
+    t = response[:MAX_RESPONSE_CHARS].strip()
     m = re.fullmatch(r"[\s(\[*'\"]*([A-Da-d])[\s)\].:*'\"]*", t)
     if m:
         return m.group(1).upper()
-    m = re.search(r"answer\s*(?:is|:)?\s*(?:option\s*)?[(\[]?\s*([A-Da-d])\b", t, re.I)
+    m = re.search(r"answer\s*(?:(?:is|:)\s*)?(?:option\s*)?[(\[]?\s*([A-Da-d])\b", t, re.I)
     if m:
         return m.group(1).upper()
     m = re.match(r"[(\[]?([A-D])[)\].:]", t)
@@ -96,23 +101,22 @@ def parse_scene_graph(text: str) -> tuple[list[dict[str, Any]], list[tuple[str, 
         ``right of`` / ``behind`` turned into ``left of`` / ``in front of``; triplets whose
         relation is not in the vocabulary are kept with the relation ``?`` (never correct).
     """
+    text = text[:MAX_RESPONSE_CHARS] if isinstance(text, str) else ""
     objects: list[dict[str, Any]] = []
     count: Counter[str] = Counter()
     by_label: dict[str, list[str]] = {}
-    for m in _BOX.finditer(text if isinstance(text, str) else ""):
-        label, k = _split_name(m.group(1))
+    boxes, kept = _boxes(text)
+    for label_text, box in boxes:
+        label, k = _split_name(label_text)
         if not label:
             continue
         count[label] += 1
         name = f"{label}#{k if k is not None else count[label]}"
-        box = [float(m.group(i)) for i in range(2, 6)]
         objects.append({"name": name, "label": label, "box": box})
         by_label.setdefault(label, []).append(name)
     names = {o["name"] for o in objects}
-    rest = _BOX.sub("", text if isinstance(text, str) else "")
     triplets = []
-    for m in _TRIPLET.finditer(rest):
-        s, r, o = m.group(1), m.group(2), m.group(3)
+    for s, r, o in _triplets(kept):
         rel = normalize_relation(r) or "?"
 
         def resolve(x: str) -> str:
@@ -129,6 +133,55 @@ def parse_scene_graph(text: str) -> tuple[list[dict[str, Any]], list[tuple[str, 
             rel = {"LEFT_OF": "left of", "IN_FRONT_OF": "in front of"}[INVERSE_RELATIONS[key]]
         triplets.append((s, rel, o))
     return objects, triplets
+
+
+def _boxes(text: str) -> tuple[list[tuple[str, list[float]]], str]:
+    """``[(name before the box, [x1, y1, x2, y2])]`` and the text without them.
+
+    Anchored on the box tokens (found with ``str.find``): the name is the text since the last
+    line break, ``<`` or ``>`` (at most :data:`_MAX_LABEL` characters back) and the numbers lie
+    between the two tokens (at most :data:`_MAX_BOX` characters), so every character is looked
+    at a bounded number of times whatever the response holds.
+    """
+    out: list[tuple[str, list[float]]] = []
+    rest: list[str] = []
+    done = 0  # text before this is consumed (kept in rest or matched)
+    pos = text.find(_BOX_START)
+    while pos >= 0:
+        inner = pos + len(_BOX_START)
+        end = text.find(_BOX_END, inner, inner + _MAX_BOX + len(_BOX_END))
+        m = _COORDS.fullmatch(text, inner, end) if end >= 0 else None
+        if m is not None:
+            lo = max(done, pos - _MAX_LABEL)
+            start = max(lo, *(text.rfind(c, lo, pos) + 1 for c in "\n<>"))
+            out.append((text[start:pos].strip(), [float(g) for g in m.groups()]))
+            rest.append(text[done:start])
+            done = end + len(_BOX_END)
+            pos = text.find(_BOX_START, done)
+        else:
+            pos = text.find(_BOX_START, inner)
+    rest.append(text[done:])
+    return out, "".join(rest)
+
+
+def _triplets(text: str) -> list[tuple[str, str, str]]:
+    """``(a, b, c)`` groups of three non-empty fields without ``(``, ``)``, ``,`` or a line
+    break, stripped; one left-to-right pass."""
+    out = []
+    pos = text.find("(")
+    while pos >= 0:
+        close = pos + 1
+        n = len(text)
+        while close < n and text[close] not in "()\n":
+            close += 1
+        if close < n and text[close] == ")":
+            parts = [x.strip() for x in text[pos + 1:close].split(",")]
+            if len(parts) == 3 and all(parts):
+                out.append((parts[0], parts[1], parts[2]))
+                pos = text.find("(", close + 1)
+                continue
+        pos = text.find("(", pos + 1) if close >= n or text[close] != "(" else close
+    return out
 
 
 def box_iou(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -310,6 +363,11 @@ def evaluate_files(gt_path: str | Path, pred_path: str | Path, *, allow_missing:
             raise InputError(Problem(f"line {n}", "not a benchmark record (id, task, meta) — "
                                                   "pass a split written by parse3d vlm build",
                                      str(gt_path), "schema"))
+        why = _record_problem(r)
+        if why:
+            raise InputError(Problem(f"line {n}", f"a damaged benchmark record: {why} — pass a "
+                                                  "split written by parse3d vlm build",
+                                     str(gt_path), "schema"))
     pred = read_predictions(pred_path)
     rep = evaluate(gt, pred, model=model or Path(pred_path).stem, iou=iou)
     if (rep.missing or rep.unknown) and not allow_missing:
@@ -324,6 +382,45 @@ def evaluate_files(gt_path: str | Path, pred_path: str | Path, *, allow_missing:
                                      "(parse3d vlm ask resumes), or pass --allow-missing to "
                                      "score missing ones as wrong", str(pred_path), "io"))
     return rep
+
+
+def _record_problem(r: dict[str, Any]) -> str | None:
+    """What is wrong with the shape of a benchmark record, or None."""
+    import math
+
+    def number(v: Any) -> bool:
+        return isinstance(v, int | float) and not isinstance(v, bool) and math.isfinite(v)
+
+    if not isinstance(r["id"], str | int) or isinstance(r["id"], bool):
+        return "'id' must be a string"
+    meta = r["meta"]
+    if not isinstance(meta, dict):
+        return "'meta' must be an object"
+    if r["task"] in ("relation_mcq", "contact_mcq"):
+        if not isinstance(meta.get("answer"), str):
+            return "meta.answer must be a letter"
+        opts = meta.get("options", [])
+        if not isinstance(opts, list):
+            return "meta.options must be a list"
+        for k, o in enumerate(opts):
+            try:
+                if not isinstance(option_text(o), str):
+                    raise TypeError
+            except (KeyError, TypeError, AttributeError):
+                return f"meta.options[{k}] is not an option"
+    elif r["task"] == "sgg":
+        objs, trips = meta.get("objects"), meta.get("triplets")
+        if not isinstance(objs, list) or not isinstance(trips, list):
+            return "meta.objects and meta.triplets must be lists"
+        for k, o in enumerate(objs):
+            if not (isinstance(o, dict) and isinstance(o.get("name"), str)
+                    and isinstance(o.get("label"), str) and isinstance(o.get("box"), list)
+                    and len(o["box"]) == 4 and all(number(v) for v in o["box"])):
+                return f"meta.objects[{k}] needs a name, a label and a box of four numbers"
+        for k, t in enumerate(trips):
+            if not (isinstance(t, list) and len(t) == 3 and all(isinstance(x, str) for x in t)):
+                return f"meta.triplets[{k}] must be three strings"
+    return None
 
 
 def _f(v: Any) -> str:

@@ -20,7 +20,7 @@ Examples
 
 from __future__ import annotations
 
-import json
+import contextlib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -171,14 +171,26 @@ class SceneFacts:
 
 
 def _read_json(path: Path) -> Any:
-    try:
-        return json.loads(path.read_text())
-    except FileNotFoundError:
+    from .._files import read_json
+
+    if not path.exists() and not path.is_symlink():
         raise InputError(Problem("", "missing file — is this a scene folder of a dataset built "
-                                     "by parse3d dataset build?", str(path), "io")) from None
-    except json.JSONDecodeError as e:
-        raise InputError(Problem("", f"not valid JSON ({e}); rebuild this scene", str(path),
-                                 "syntax")) from None
+                                     "by parse3d dataset build?", str(path), "io"))
+    return read_json(path, what="scene file")
+
+
+@contextlib.contextmanager
+def _damaged(file: Path):
+    """A scene or views file of the wrong shape (a missing key, a list for an object, a box
+    outside its image) is one :class:`InputError` naming it."""
+    try:
+        yield
+    except InputError:
+        raise
+    except (KeyError, TypeError, ValueError, AttributeError, IndexError) as e:
+        what = f"missing {e}" if isinstance(e, KeyError) else str(e).splitlines()[0][:200]
+        raise InputError(Problem("", f"damaged file ({what}): rebuild this scene", str(file),
+                                 "schema")) from None
 
 
 def _object_of(ref: str) -> str | None:
@@ -220,9 +232,22 @@ def load_scene_facts(scene_dir: str | Path, *, views_folder: str | Path | None =
     contacts = _read_json(d / "contacts.json")
     vf = Path(views_folder) if views_folder is not None else d
     views_doc = _read_json(vf / "views.json") if (vf / "views.json").exists() else {"views": []}
+    with _damaged(vf / "views.json"):
+        views = list(views_doc["views"])
+        if not all(isinstance(v, dict) for v in views):
+            raise TypeError("every view must be an object")
+    if not isinstance(contacts, list) or not all(isinstance(c, dict) for c in contacts):
+        raise InputError(Problem("", "damaged file (expected a list of contacts): rebuild this "
+                                     "scene", str(d / "contacts.json"), "schema"))
     if not (d / "scene.glb").exists():
         raise InputError(Problem("", "missing scene.glb — rebuild this scene", str(d), "io"))
     verts = _glb_vertices(d / "scene.glb")
+    with _damaged(d / "scene.json"):
+        return _scene_facts(d, sj, contacts, verts, views, vf)
+
+
+def _scene_facts(d: Path, sj: dict, contacts: list, verts: dict, views: list, vf: Path
+                 ) -> SceneFacts:
     objects: dict[str, ObjectFacts] = {}
     for od in sj["objects"]:
         if od.get("status") != "placed":
@@ -262,8 +287,7 @@ def load_scene_facts(scene_dir: str | Path, *, views_folder: str | Path | None =
         pairs.setdefault((b, a), set()).add((pb, pa))
     return SceneFacts(d.name, int(d.name) if d.name.isdigit() else 0,
                       sj.get("pag", {}).get("room", {}).get("type", sj["room"].get("type", "")),
-                      objects, pag, pairs, list(views_doc.get("views", [])), vf,
-                      {"seed": sj.get("seed")})
+                      objects, pag, pairs, views, vf, {"seed": sj.get("seed")})
 
 
 def hull_area(uv: np.ndarray, width: int, height: int) -> float:
@@ -296,7 +320,26 @@ def _project_front(cam: Camera, pts: np.ndarray) -> np.ndarray:
 
 
 def view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) -> ViewFacts:
-    """Visible objects and parts of one ``views.json`` entry."""
+    """Visible objects and parts of one ``views.json`` entry.
+
+    Raises
+    ------
+    InputError
+        The entry is damaged, a mask's box lies outside the camera's image, or the image on
+        disk has another size than the camera's (boxes would be wrong).
+    """
+    with _damaged(scene.views_folder / "views.json"):
+        return _view_facts(scene, view, rule)
+
+
+def _check_box(bbox: Any, w: int, h: int) -> list[int]:
+    b = [int(v) for v in bbox]
+    if len(b) != 4 or not (0 <= b[0] <= b[2] < w and 0 <= b[1] <= b[3] < h):
+        raise ValueError(f"the mask box {b} is not inside the {w}x{h} image")
+    return b
+
+
+def _view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) -> ViewFacts:
     cam = Camera.from_dict(view["camera"])
     w, h = cam.width, cam.height
     objs: dict[str, dict[str, Any]] = {}
@@ -308,7 +351,7 @@ def view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) ->
         area = hull_area(_project_front(cam, o.vertices), w, h)
         share = rec["pixels"] / area if area > 0 else 0.0
         if share >= rule.min_share:
-            objs[oid] = {"pixels": int(rec["pixels"]), "bbox": list(rec["bbox"]),
+            objs[oid] = {"pixels": int(rec["pixels"]), "bbox": _check_box(rec["bbox"], w, h),
                          "share": round(min(share, 1.0), 3)}
     parts: dict[str, dict[str, Any]] = {}
     for rec in view.get("parts", []):
@@ -321,9 +364,23 @@ def view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) ->
         area = hull_area(_project_front(cam, o.part_vertices[pname]), w, h)
         share = rec["pixels"] / area if area > 0 else 0.0
         if share >= rule.min_share:
-            parts[rec["part"]] = {"pixels": int(rec["pixels"]), "bbox": list(rec["bbox"]),
+            parts[rec["part"]] = {"pixels": int(rec["pixels"]), "bbox": _check_box(rec["bbox"], w, h),
                                   "share": round(min(share, 1.0), 3)}
-    rgb = scene.views_folder / view["files"]["rgb"]
+    name = view["files"]["rgb"]
+    if not isinstance(name, str) or Path(name).name != name:
+        raise ValueError(f"the image {name!r} is not a file name in the views folder")
+    rgb = scene.views_folder / name
+    if rgb.is_file():
+        from PIL import Image, UnidentifiedImageError
+
+        try:
+            with Image.open(rgb) as im:  # reads the header only
+                size = im.size
+        except (OSError, UnidentifiedImageError):
+            raise InputError(Problem("", "not a readable image: rebuild this scene", str(rgb),
+                                     "io")) from None
+        if size != (w, h):
+            raise ValueError(f"{name} is {size[0]}x{size[1]} but its camera is {w}x{h}")
     return ViewFacts(int(view["index"]), cam, rgb, objs, parts)
 
 

@@ -164,7 +164,7 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
     from peft import LoraConfig, get_peft_model
     from transformers import AutoModelForImageTextToText
 
-    from .local import collate, encode, load_processor
+    from .local import check_safetensors, collate, encode, load_processor, reading_model
 
     _check(options)
     t0 = time.perf_counter()
@@ -187,8 +187,11 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
     accelerator = Accelerator(gradient_accumulation_steps=accumulation,
                               mixed_precision="bf16" if torch.cuda.is_available() else "no")
     proc = load_processor(model_dir, max_image_tokens=options.max_image_tokens)
-    model = AutoModelForImageTextToText.from_pretrained(
-        model_dir, dtype=torch.bfloat16 if torch.cuda.is_available() else torch.float32)
+    check_safetensors(Path(model_dir), "model folder")
+    with reading_model(model_dir):
+        model = AutoModelForImageTextToText.from_pretrained(
+            model_dir, dtype=torch.bfloat16 if torch.cuda.is_available() else torch.float32,
+            use_safetensors=True, trust_remote_code=False)
     targets = lora_targets(model)
     if not targets:
         raise InputError(Problem("", "found no linear layers of a language model to adapt — "

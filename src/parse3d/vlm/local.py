@@ -16,10 +16,12 @@ on a video processor that needs torchvision).
 
 from __future__ import annotations
 
+import contextlib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from .._files import inside
 from ..errors import DependencyError, InputError, Problem
 
 __all__ = ["VLProcessor", "load_processor", "load_model", "encode", "collate", "generate", "require_ml",
@@ -57,6 +59,34 @@ class VLProcessor:
     max_image_tokens: int = 1024
 
 
+@contextlib.contextmanager
+def reading_model(folder: str | Path, what: str = "model folder"):
+    """Turn whatever a damaged model or adapter folder makes the loaders raise (a truncated
+    safetensors file, half a config.json, a tokenizer of the wrong kind, shapes that do not
+    fit) into one :class:`InputError` naming the folder."""
+    try:
+        yield
+    except InputError:
+        raise
+    except Exception as e:  # noqa: BLE001 - transformers/peft/safetensors raise many types
+        line = (str(e).strip().splitlines() or [type(e).__name__])[0][:200]
+        raise InputError(Problem("", f"cannot read this {what} ({type(e).__name__}: {line}) — "
+                                     "is it complete and a Qwen-VL checkpoint?", str(folder),
+                                 "io")) from None
+
+
+def check_safetensors(folder: Path, what: str) -> None:
+    """Refuse a folder whose weights are only pickles (``*.bin``, ``*.pt``): loading those
+    could run code from the file, so only ``*.safetensors`` weights are read."""
+    if any(folder.glob("*.safetensors")):
+        return
+    if any(folder.glob("*.bin")) or any(folder.glob("*.pt")) or any(folder.glob("*.pth")):
+        raise InputError(Problem("", f"this {what} holds only pickled weights (.bin/.pt): "
+                                     "parse3d reads only .safetensors (a pickle can run code) "
+                                     "— convert it with save_pretrained(safe_serialization=True)",
+                                 str(folder), "io"))
+
+
 def _check_model_dir(model_dir: Path) -> None:
     if not (model_dir / "config.json").exists():
         raise InputError(Problem("", "not a model folder (no config.json) — pass a local "
@@ -71,8 +101,9 @@ def load_processor(model_dir: str | Path, *, max_image_tokens: int = 1024) -> VL
 
     d = Path(model_dir)
     _check_model_dir(d)
-    tok = AutoTokenizer.from_pretrained(d)
-    ip = Qwen2VLImageProcessorPil.from_pretrained(d)
+    with reading_model(d):
+        tok = AutoTokenizer.from_pretrained(d, trust_remote_code=False)
+        ip = Qwen2VLImageProcessorPil.from_pretrained(d)
     merge = int(getattr(ip, "merge_size", 2))
     patch = int(getattr(ip, "patch_size", 14))
     budget = int(max_image_tokens) * (patch * merge) ** 2
@@ -103,11 +134,20 @@ def load_model(model_dir: str | Path, *, adapter: str | Path | None = None,
 
     dev = device or ("cuda" if torch.cuda.is_available() else "cpu")
     dtype = torch.bfloat16 if dev.startswith("cuda") else torch.float32
-    model = AutoModelForImageTextToText.from_pretrained(d, dtype=dtype)
+    check_safetensors(d, "model folder")
+    with reading_model(d):
+        model = AutoModelForImageTextToText.from_pretrained(d, dtype=dtype, use_safetensors=True,
+                                                            trust_remote_code=False)
     if adapter is not None:
         from peft import PeftModel
 
-        model = PeftModel.from_pretrained(model, Path(adapter)).merge_and_unload()
+        a = Path(adapter)
+        if not (a / "adapter_model.safetensors").is_file():
+            raise InputError(Problem("", "no adapter_model.safetensors here: parse3d reads only "
+                                         "safetensors adapters (a .bin pickle can run code)",
+                                     str(a), "io"))
+        with reading_model(a, "LoRA adapter folder"):
+            model = PeftModel.from_pretrained(model, a).merge_and_unload()
     model.to(dev).eval()
     return model, load_processor(d, max_image_tokens=max_image_tokens)
 
@@ -137,7 +177,14 @@ def encode(proc: VLProcessor, record: dict[str, Any], base: Path, *, with_answer
     from PIL import Image
 
     user, images, answer = _user_parts(record)
-    pics = [Image.open(base / p).convert("RGB") for p in images]
+    pics = []
+    for p in images:
+        path = inside(base, p, what="image", file=str(record.get("id")))
+        try:
+            pics.append(Image.open(path).convert("RGB"))
+        except (OSError, ValueError) as e:
+            raise InputError(Problem("", f"not a readable image ({e})", str(path), "io")
+                             ) from None
     feats = proc.image_processor(images=pics, return_tensors="pt") if pics else {}
     grids = feats["image_grid_thw"].tolist() if pics else []
     chunks = user.split("<image>")

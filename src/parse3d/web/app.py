@@ -40,6 +40,7 @@ from fastapi.staticfiles import StaticFiles
 from starlette.concurrency import run_in_threadpool
 from starlette.exceptions import HTTPException as StarletteHTTPException
 
+from .._files import MAX_DEPTH, loads_json
 from ..errors import InputError, Problem
 from ..pag.io import dumps_pag
 from ..pag.validate import ROOM_PARENTS, ROOM_SURFACES, validate_data
@@ -47,18 +48,99 @@ from ..relations import RELATIONS, SURFACES
 from . import files as F
 from .jobs import SCENE_FILES, STAGES, Job, run_job
 
-__all__ = ["create_app", "MAX_BODY_BYTES", "STATIC_DIR"]
+__all__ = ["create_app", "MAX_BODY_BYTES", "MAX_QUEUE", "SOLVE_TIME_LIMIT", "STATIC_DIR"]
 
 #: Largest request body accepted, bytes.
 MAX_BODY_BYTES = 5 * 1024 * 1024
 
-#: Deepest nesting of lists and objects accepted in a request (a PAG needs five or so).
-MAX_DEPTH = 64
-
 #: The built front end (index.html, modules, three.js under vendor/).
 STATIC_DIR = Path(__file__).parent / "static"
 
+#: Finished jobs kept for their results and files (the oldest finished ones are forgotten).
 _MAX_JOBS = 32
+
+#: Solves queued or running at once; one more is answered 429.
+MAX_QUEUE = 4
+
+#: Wall-clock seconds a solve may take; objects not placed by then fail with "time limit".
+SOLVE_TIME_LIMIT = 120.0
+
+#: Largest seed, as on the command line.
+MAX_SEED = 2**32 - 1
+
+#: Host names the server answers to, besides the one it was started on.
+LOOPBACK_HOSTS = ("127.0.0.1", "localhost", "[::1]")
+
+_STATE_CHANGING = frozenset({"POST", "PUT", "DELETE", "PATCH"})
+
+
+def _host_name(host: str) -> str:
+    """``host`` as it appears in a Host header (IPv6 addresses in brackets), lower case."""
+    host = host.strip().lower()
+    if ":" in host and not host.startswith("["):
+        host = f"[{host}]"
+    return host
+
+
+class _Guard:
+    """ASGI middleware protecting a server on a developer's laptop from web pages.
+
+    * **DNS rebinding**: the ``Host`` header must name an allowed host (the loopback names and
+      the address the server was started on) with the server's port; else 403.
+    * **Cross-site requests**: every state-changing request (POST, PUT, DELETE, PATCH) must
+      send ``Content-Type: application/json`` (a cross-origin page cannot without a CORS
+      preflight, which this server never grants) and, when the browser sends one, an
+      ``Origin`` of an allowed host with the same port and ``Sec-Fetch-Site`` ``same-origin``
+      or ``none``; else 403 (415 for the content type).
+    """
+
+    def __init__(self, app, hosts: tuple[str, ...], port: int | None):
+        self.app = app
+        self.hosts = frozenset(_host_name(h) for h in hosts)
+        self.port = port
+
+    def _allowed(self, hostport: str) -> bool:
+        hostport = hostport.strip().lower()
+        if hostport.startswith("["):
+            host, _, rest = hostport.partition("]")
+            host += "]"
+            port = rest[1:] if rest.startswith(":") else ""
+        else:
+            host, _, port = hostport.partition(":")
+        if host not in self.hosts:
+            return False
+        if self.port is None:
+            return port == "" or port.isdigit()
+        return port == str(self.port) or (port == "" and self.port == 80)
+
+    async def __call__(self, scope, receive, send):
+        if scope["type"] != "http":
+            return await self.app(scope, receive, send)
+        headers = {}
+        for k, v in scope.get("headers") or []:
+            headers.setdefault(k.decode("latin-1").lower(), v.decode("latin-1"))
+        if not self._allowed(headers.get("host", "")):
+            return await _send_json(send, 403, {
+                "error": f"the Host {headers.get('host', '')!r} is not this server's: open the "
+                         "designer at http://127.0.0.1 (or the --host it was started on)"})
+        if scope.get("method", "GET").upper() in _STATE_CHANGING:
+            origin = headers.get("origin")
+            if origin is not None:
+                scheme, _, rest = origin.partition("://")
+                if scheme not in ("http", "https") or not self._allowed(rest.rstrip("/")):
+                    return await _send_json(send, 403, {
+                        "error": f"requests from the page {origin!r} are refused: only the "
+                                 "designer's own page may change files or start solves"})
+            site = headers.get("sec-fetch-site")
+            if site is not None and site not in ("same-origin", "none"):
+                return await _send_json(send, 403, {
+                    "error": f"a {site} request is refused: only the designer's own page may "
+                             "change files or start solves"})
+            ctype = headers.get("content-type", "").split(";")[0].strip().lower()
+            if ctype != "application/json":
+                return await _send_json(send, 415, {
+                    "error": "state-changing requests must send Content-Type: application/json"})
+        return await self.app(scope, receive, send)
 
 
 class _BodyLimit:
@@ -120,22 +202,41 @@ async def _json_body(request: Request) -> Any:
     if not raw:
         raise InputError(Problem("", "the request needs a JSON body", None, "syntax"))
     try:
-        data = json.loads(raw.decode("utf-8"), parse_constant=_no_constant)
+        text = raw.decode("utf-8")
     except UnicodeDecodeError:
         raise InputError(Problem("", "the request body is not UTF-8 text", None, "syntax")) from None
-    except json.JSONDecodeError as e:
-        raise InputError(Problem("", f"invalid JSON at line {e.lineno}, column {e.colno}: "
-                                 f"{e.msg}", None, "syntax")) from None
-    except ValueError as e:
-        raise InputError(Problem("", f"invalid JSON: {e}", None, "syntax")) from None
-    except RecursionError:
-        raise InputError(Problem("", f"the JSON is nested more than {MAX_DEPTH} levels deep: "
-                                 "a PAG never is", None,
-                                 "syntax")) from None
-    if _depth(data) > MAX_DEPTH:
-        raise InputError(Problem("", f"the JSON is nested more than {MAX_DEPTH} levels deep: "
-                                 "a PAG never is", None, "syntax"))
+    data = loads_json(text)
+    bad = _lone_surrogate(data)
+    if bad is not None:
+        raise InputError(Problem(bad, "a string holds a lone UTF-16 surrogate (\\ud800-\\udfff "
+                                      "without its pair): it is not text", None, "syntax"))
     return data
+
+
+def _lone_surrogate(value: Any) -> str | None:
+    """The JSON pointer of the first string (or key) that is not encodable text, or None."""
+    stack = [(value, "")]
+    while stack:
+        v, ptr = stack.pop()
+        if isinstance(v, str):
+            if not _encodable(v):
+                return ptr or "/"
+        elif isinstance(v, dict):
+            for k, x in v.items():
+                if not _encodable(k):
+                    return ptr or "/"
+                stack.append((x, f"{ptr}/{k}"))
+        elif isinstance(v, list):
+            stack += [(x, f"{ptr}/{i}") for i, x in enumerate(v)]
+    return None
+
+
+def _encodable(text: str) -> bool:
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        return False
+    return True
 
 
 def _depth(value: Any) -> int:
@@ -152,10 +253,6 @@ def _depth(value: Any) -> int:
     return deepest
 
 
-def _no_constant(name: str) -> Any:
-    raise ValueError(f"{name} is not a number a PAG may contain")
-
-
 def _object_body(body: Any, key: str | None = None) -> dict[str, Any]:
     if not isinstance(body, dict):
         raise InputError(Problem("", "the request body must be a JSON object", None, "schema"))
@@ -165,11 +262,12 @@ def _object_body(body: Any, key: str | None = None) -> dict[str, Any]:
     return body
 
 
-def _int_field(body: dict[str, Any], key: str, default: int) -> int:
+def _int_field(body: dict[str, Any], key: str, default: int, high: int = MAX_SEED) -> int:
     v = body.get(key, default)
-    if isinstance(v, bool) or not isinstance(v, int) or v < 0:
-        raise InputError(Problem(f"/{key}", f"{key} must be a non-negative integer, got "
-                                 f"{json.dumps(v)}", None, "parameter"))
+    if isinstance(v, bool) or not isinstance(v, int) or not 0 <= v <= high:
+        raise InputError(Problem(f"/{key}", f"{key} must be a non-negative integer of at most "
+                                 f"{high:,} (as on the command line), got {json.dumps(v)}",
+                                 None, "parameter"))
     return v
 
 
@@ -214,8 +312,10 @@ def template_index() -> dict[str, dict[str, Any]]:
     return dict(sorted(out.items(), key=lambda kv: (kv[1]["room_type"], kv[0])))
 
 
-def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_BODY_BYTES
-               ) -> FastAPI:
+def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_BODY_BYTES,
+               host: str | None = None, port: int | None = None,
+               other_hosts: tuple[str, ...] = (), max_queue: int = MAX_QUEUE,
+               solve_time_limit: float = SOLVE_TIME_LIMIT) -> FastAPI:
     """The designer application serving ``workdir``, the only folder it writes.
 
     Parameters
@@ -226,6 +326,16 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
         Where the solver takes assets from (default: the on-disk pool).
     max_body : int
         Largest request body, bytes (default 5 MB).
+    host, port : str and int, optional
+        The address the server listens on: requests must name it (or a loopback name) in
+        their ``Host`` header, with this port (any port when None).
+    other_hosts : tuple of str
+        More names the server answers to (this machine's name and addresses when it listens
+        on every interface).
+    max_queue : int
+        Solves queued or running at once; more are answered 429.
+    solve_time_limit : float
+        Seconds a solve may run; objects not placed by then fail with "time limit".
     """
     root = Path(workdir).resolve()
     if not root.is_dir():
@@ -235,6 +345,9 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
     app = FastAPI(title="parse3d PAG designer", docs_url=None, redoc_url=None,
                   openapi_url="/api/openapi.json")
     app.add_middleware(_BodyLimit, max_bytes=max_body)
+    hosts = LOOPBACK_HOSTS + ((host,) if host and host not in ("0.0.0.0", "::") else ()) \
+        + tuple(other_hosts)
+    app.add_middleware(_Guard, hosts=hosts, port=port)  # added last: runs first
     jobs: OrderedDict[str, Job] = OrderedDict()
     # one solve at a time: the physics engine and the machine are shared
     executor = ThreadPoolExecutor(max_workers=1, thread_name_prefix="parse3d-solve")
@@ -315,12 +428,20 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
         if not isinstance(settle, bool):
             raise InputError(Problem("/settle", "settle must be true or false", None,
                                      "parameter"))
+        busy = sum(not j.finished for j in jobs.values())
+        if busy >= max_queue:
+            return JSONResponse({"error": f"{busy} solves are queued or running, the most this "
+                                          "server takes: wait for one to finish or cancel one "
+                                          "(DELETE /api/jobs/{id})"}, status_code=429,
+                                headers={"Retry-After": "5"})
         job = Job.new(seed, settle)
         jobs[job.id] = job
-        while len(jobs) > _MAX_JOBS:
-            jobs.popitem(last=False)
+        finished = [k for k, j in jobs.items() if j.finished]
+        for k in finished[:max(0, len(finished) - _MAX_JOBS)]:
+            del jobs[k]  # only finished jobs are forgotten: a running one stays listed
         voc = await run_in_threadpool(cached, "vocab", vocab)
-        executor.submit(run_job, job, body["pag"], workdir=root, vocabulary=voc, library=library)
+        executor.submit(run_job, job, body["pag"], workdir=root, vocabulary=voc, library=library,
+                        time_limit=solve_time_limit)
         return {"job": job.id, "events": f"/api/jobs/{job.id}/events",
                 "status": f"/api/jobs/{job.id}"}
 
@@ -334,6 +455,12 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
         job = get_job(job_id)
         return {"job": job.id, "state": job.state, "seed": job.seed,
                 "events": job.events_since(0), "result": job.result}
+
+    @app.delete("/api/jobs/{job_id}")
+    async def cancel_job(job_id: str):
+        job = get_job(job_id)
+        job.cancel()
+        return {"job": job.id, "state": job.state}
 
     @app.get("/api/jobs/{job_id}/events")
     async def job_events(job_id: str, request: Request):
@@ -412,7 +539,8 @@ def create_app(workdir: str | Path = ".", *, library=None, max_body: int = MAX_B
         if not isinstance(overwrite, bool):
             raise InputError(Problem("/overwrite", "overwrite must be true or false", None,
                                      "parameter"))
-        p = F.write_pag_file(root, name, body["pag"], overwrite=overwrite)
+        p = await run_in_threadpool(F.write_pag_file, root, name, body["pag"],
+                                    overwrite=overwrite)
         problems = await run_in_threadpool(
             lambda: validate_data(body["pag"], file=name, vocabulary=cached("vocab", vocab)))
         return {"name": p.name, "bytes": p.stat().st_size, "valid": not problems,

@@ -92,6 +92,9 @@ def write_pag_file(workdir: Path, name: str, data: dict[str, Any], *,
     leaves an existing file untouched.
     """
     p = _path(workdir, name)
+    if p.is_dir() or (p.exists() and not p.is_file()):
+        raise InputError(Problem("/name", f"{name!r} is a folder (or not a regular file) in the "
+                                 "working folder: choose another name", None, "io"))
     if p.exists() and not overwrite:
         raise FileExistsProblem(Problem("/name", f"{name!r} exists already: save with "
                                         "overwrite to replace it, or choose another name",
@@ -100,8 +103,15 @@ def write_pag_file(workdir: Path, name: str, data: dict[str, Any], *,
         raise InputError(Problem("/pag", "the PAG must be a JSON object", None, "schema"))
     if p.suffix.lower() == ".json":
         dumps_pag(data)  # raises on values JSON cannot hold before anything is written
-    tmp = save_pag(data, p.with_name(f".{p.stem}.saving{p.suffix}"))
-    tmp.replace(p)  # atomic: a reader never sees half a file
+    tmp = p.with_name(f".{p.stem}.saving{p.suffix}")
+    try:
+        save_pag(data, tmp)
+        tmp.replace(p)  # atomic: a reader never sees half a file
+    except (ValueError, TypeError, UnicodeError) as e:
+        raise InputError(Problem("/pag", f"the PAG cannot be written as {p.suffix[1:]}: {e}",
+                                 None, "schema")) from None
+    finally:
+        tmp.unlink(missing_ok=True)  # never leave a half-written temporary file behind
     return p
 
 

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from ..errors import InputError, Parse3dError
+from ..errors import InputError, Parse3dError, Problem
 from ..pag.model import PAG
 from ..pag.validate import validate_data
 from ..scene.model import Scene
@@ -50,8 +50,8 @@ class Job:
     events : list of dict
         Appended by the worker; read by any number of event streams.
     state : str
-        ``queued``, ``running``, ``done`` (the scene exists, possibly with failed objects) or
-        ``failed`` (no scene: invalid PAG or an error).
+        ``queued``, ``running``, ``done`` (the scene exists, possibly with failed objects),
+        ``failed`` (no scene: invalid PAG or an error) or ``cancelled``.
     out : Path or None
         The folder the scene files were written to.
     result : dict or None
@@ -66,7 +66,22 @@ class Job:
     out: Path | None = None
     result: dict[str, Any] | None = None
     created: float = field(default_factory=time.time)
+    cancelled: threading.Event = field(default_factory=threading.Event, repr=False)
     _lock: threading.Lock = field(default_factory=threading.Lock, repr=False)
+
+    def cancel(self) -> None:
+        """Stop the job: a queued one never starts; a running one stops at the next object
+        it places (or between stages) and writes nothing more."""
+        if self.finished:
+            return
+        self.cancelled.set()
+        if self.state == "queued":
+            self.state = "cancelled"
+            self.emit("error", stage="queue", message="cancelled", problems=[])
+
+    def check_cancelled(self) -> None:
+        if self.cancelled.is_set():
+            raise _Cancelled()
 
     @classmethod
     def new(cls, seed: int, settle: bool) -> Job:
@@ -82,16 +97,38 @@ class Job:
 
     @property
     def finished(self) -> bool:
-        return self.state in ("done", "failed")
+        return self.state in ("done", "failed", "cancelled")
+
+
+class _Cancelled(Exception):
+    """Raised inside a running job once it was cancelled."""
 
 
 def out_folder(workdir: Path, name: str, seed: int) -> Path:
-    """``workdir/out/<name>-<seed>``, the name reduced to letters, digits, ``_`` and ``-``."""
+    """``workdir/out/<name>-<seed>``, the name reduced to letters, digits, ``_`` and ``-``.
+
+    Raises
+    ------
+    InputError
+        ``out`` or the scene's folder is a symbolic link (or resolves) outside ``workdir``:
+        the server writes nowhere else.
+    """
     safe = re.sub(r"[^A-Za-z0-9_\-]+", "-", name or "").strip("-")[:60] or "scene"
-    return Path(workdir) / "out" / f"{safe}-{int(seed)}"
+    root = Path(workdir).resolve()
+    out = root / "out" / f"{safe}-{int(seed)}"
+    for p in (out.parent, out):
+        if p.is_symlink() or (p.exists() and not p.resolve().is_relative_to(root)):
+            raise InputError(Problem("", f"{p.relative_to(root)} is a link out of the working "
+                                         "folder: the designer writes only inside it (remove "
+                                         "the link)", str(p.relative_to(root)), "io"))
+        if p.exists() and not p.is_dir():
+            raise InputError(Problem("", f"{p.relative_to(root)} is a file, not a folder",
+                                     str(p.relative_to(root)), "io"))
+    return out
 
 
-def _solve(pag: PAG, seed: int, library, on_object: Callable[[str, str, str | None], None]) -> Scene:
+def _solve(pag: PAG, seed: int, library, on_object: Callable[[str, str, str | None], None],
+           time_limit: float | None = None) -> Scene:
     """Run the solver, announcing each object as it is placed or fails.
 
     ``on_object(object_id, status, reason)`` is called from the solver's progress callback;
@@ -99,12 +136,19 @@ def _solve(pag: PAG, seed: int, library, on_object: Callable[[str, str, str | No
     """
     from ..solver import solve
 
-    return solve(pag, seed=seed, library=library, validate=False,
+    return solve(pag, seed=seed, library=library, validate=False, deadline=time_limit,
                  progress=lambda p: on_object(p.object_id, p.status, None))
 
 
-def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> None:
-    """Run every stage of ``job`` on the document ``data``; never raises."""
+def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None,
+            time_limit: float | None = None) -> None:
+    """Run every stage of ``job`` on the document ``data``; never raises.
+
+    ``time_limit`` (seconds) bounds the solve: objects not placed by then fail with
+    ``time limit``. A cancelled job stops at its next object or stage.
+    """
+    if job.finished:  # cancelled while queued
+        return
     job.state = "running"
     stage = "validate"
     try:
@@ -123,9 +167,12 @@ def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> 
         stage = "solve"
         job.emit("stage", stage=stage, status="start", objects=len(pag.objects))
         t = time.perf_counter()
-        scene = _solve(pag, job.seed, library,
-                       lambda oid, status, reason: job.emit("object", id=oid, status=status,
-                                                            reason=reason))
+        def on_object(oid, status, reason):
+            job.check_cancelled()
+            job.emit("object", id=oid, status=status, reason=reason)
+
+        scene = _solve(pag, job.seed, library, on_object, time_limit)
+        job.check_cancelled()
         job.emit("stage", stage=stage, status="done", seconds=round(time.perf_counter() - t, 4),
                  placed=len(scene.placed), failed=len(scene.failed))
 
@@ -139,6 +186,7 @@ def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> 
             settle_and_repair(scene, library=library)
             scene.timings["settle"] = time.perf_counter() - t
             job.emit("stage", stage=stage, status="done", seconds=round(scene.timings["settle"], 4))
+            job.check_cancelled()
             stage = "contacts"
             job.emit("stage", stage=stage, status="start")
             t = time.perf_counter()
@@ -152,17 +200,25 @@ def run_job(job: Job, data: Any, *, workdir: Path, vocabulary, library=None) -> 
 
         from ..pipeline import write_outputs
 
+        job.check_cancelled()
         stage = "export"
         job.emit("stage", stage=stage, status="start")
         t = time.perf_counter()
-        job.out = out_folder(workdir, pag.name, job.seed)
-        write_outputs(scene, job.out)
+        out = out_folder(workdir, pag.name, job.seed)
+        from ..scene.io import clear_scene_outputs
+
+        clear_scene_outputs(out)  # refuses a folder whose scene.json parse3d did not write
+        write_outputs(scene, out)
+        job.out = out
         job.emit("stage", stage=stage, status="done", seconds=round(time.perf_counter() - t, 4),
                  out=str(job.out.relative_to(workdir)))
         job.result = scene_payload(scene, out=str(job.out.relative_to(workdir)))
         job.state = "done"
         job.emit("done", ok=scene.ok, placed=len(scene.placed), objects=len(scene.objects),
                  failed=[{"id": o.id, "reason": o.reason} for o in scene.failed])
+    except _Cancelled:
+        job.state = "cancelled"
+        job.emit("error", stage=stage, message="cancelled", problems=[])
     except InputError as e:
         job.state = "failed"
         job.emit("error", stage=stage, message=str(e.problems[0].message if e.problems else e),

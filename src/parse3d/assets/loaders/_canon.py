@@ -7,7 +7,6 @@ recentres, computes convex pieces and resolves surfaces.
 
 from __future__ import annotations
 
-import json
 import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -16,12 +15,25 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from ...errors import InputError, Problem
+from ..._files import MAX_DEPTH, loads_json, read_input_text
+from ...errors import AssetError, InputError, Problem
 from ..collision import convex_pieces
 from ..model import Asset, Joint, Material, Part, finalize_asset
 
 __all__ = ["SourceFrame", "RawPart", "RawAsset", "frame_rotation", "default_label", "read_mapping",
-           "label_for", "finish_asset", "material_of", "GLTF_FRAME", "PARTNET_FRAME"]
+           "label_for", "finish_asset", "material_of", "GLTF_FRAME", "PARTNET_FRAME",
+           "MAX_FACES", "MAX_VERTICES", "MAX_PARTS", "MAX_SOURCE_BYTES", "check_part_mesh"]
+
+#: Most triangles an imported asset may have (all parts together, instances counted).
+MAX_FACES = 1_000_000
+#: Most vertices an imported asset may have (all parts together).
+MAX_VERTICES = 1_000_000
+#: Most parts (mesh nodes or URDF links with geometry) an imported asset may have.
+MAX_PARTS = 256
+#: Largest mapping file read.
+MAX_MAPPING_BYTES = 1024 * 1024
+#: Largest source file read (a GLB, a glTF and its buffers, one OBJ of a PartNet folder).
+MAX_SOURCE_BYTES = 512 * 1024 * 1024
 
 _AXES = {"x": (1.0, 0.0, 0.0), "y": (0.0, 1.0, 0.0), "z": (0.0, 0.0, 1.0)}
 
@@ -110,18 +122,13 @@ def read_mapping(mapping: Mapping[str, str | None] | str | Path | None) -> tuple
     if isinstance(mapping, Mapping):
         return dict(mapping), None
     path = Path(mapping)
-    if not path.is_file():
+    if not path.exists():
         raise InputError(Problem("", "mapping file not found", str(path), "io"))
-    text = path.read_text(encoding="utf-8")
-    try:
-        if path.suffix.lower() in (".yaml", ".yml"):
-            import yaml
-
-            data = yaml.safe_load(text)
-        else:
-            data = json.loads(text)
-    except (ValueError, ImportError) as e:
-        raise InputError(Problem("", f"cannot parse the mapping: {e}", str(path), "syntax")) from None
+    text = read_input_text(path, limit=MAX_MAPPING_BYTES, what="mapping file")
+    if path.suffix.lower() in (".yaml", ".yml"):
+        data = _mapping_yaml(text, str(path))
+    else:
+        data = loads_json(text, file=str(path))
     if not isinstance(data, dict):
         raise InputError(Problem("", "a mapping must be an object {name: part label}", str(path), "schema"))
     bad = [k for k, v in data.items() if v is not None and not isinstance(v, str)]
@@ -129,6 +136,30 @@ def read_mapping(mapping: Mapping[str, str | None] | str | Path | None) -> tuple
         raise InputError([Problem(f"/{k}", "must be a part label (string) or null", str(path), "schema")
                           for k in bad])
     return data, str(path)
+
+
+def _mapping_yaml(text: str, file: str):
+    """A YAML mapping file, parsed safely: aliases (which can expand without bound) and
+    nesting deeper than :data:`~parse3d._files.MAX_DEPTH` are refused before it is built."""
+    import yaml
+
+    depth = 0
+    try:
+        for ev in yaml.parse(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader)):
+            if isinstance(ev, yaml.AliasEvent):
+                raise InputError(Problem("", "a mapping file may not use YAML aliases (*name)",
+                                         file, "syntax"))
+            if isinstance(ev, yaml.CollectionStartEvent):
+                depth += 1
+                if depth > MAX_DEPTH:
+                    raise InputError(Problem("", f"nested more than {MAX_DEPTH} levels deep",
+                                             file, "syntax"))
+            elif isinstance(ev, yaml.CollectionEndEvent):
+                depth -= 1
+        return yaml.safe_load(text)
+    except yaml.YAMLError as e:
+        raise InputError(Problem("", f"cannot parse the mapping: {str(e)[:200]}", file,
+                                 "syntax")) from None
 
 
 def check_mapping_labels(mapping: dict, vocabulary: tuple[str, ...] | None, file: str | None) -> None:
@@ -229,6 +260,55 @@ class RawAsset:
         return {p.label for p in self.parts}
 
 
+def check_part_mesh(mesh: trimesh.Trimesh, where: str, file: str | None) -> list[Problem]:
+    """Problems of one part's mesh as read: non-finite or absurdly large coordinates."""
+    v = np.asarray(mesh.vertices, float)
+    if v.size and not np.isfinite(v).all():
+        return [Problem(where, "the mesh has NaN or infinite vertex coordinates", file,
+                        "geometry")]
+    if v.size and np.abs(v).max() > 1e6:
+        return [Problem(where, f"vertex coordinates reach {np.abs(v).max():.3g}: more than "
+                        "1e6 source units from the origin (check the units or --scale)", file,
+                        "geometry")]
+    return []
+
+
+def check_raw_asset(raw: RawAsset, file: str | None) -> None:
+    """Bounds every imported asset must meet before it is canonicalised.
+
+    Raises
+    ------
+    InputError
+        More than :data:`MAX_PARTS` parts, :data:`MAX_FACES` faces or :data:`MAX_VERTICES`
+        vertices; a part left without any face of positive area after degenerate faces are
+        dropped; NaN or infinite coordinates.
+    """
+    probs = []
+    if len(raw.parts) > MAX_PARTS:
+        probs.append(Problem("", f"{len(raw.parts)} parts: an asset may have at most "
+                                 f"{MAX_PARTS}", file, "geometry"))
+    faces = sum(len(p.mesh.faces) for p in raw.parts)
+    verts = sum(len(p.mesh.vertices) for p in raw.parts)
+    if faces > MAX_FACES or verts > MAX_VERTICES:
+        probs.append(Problem("", f"{faces:,} faces and {verts:,} vertices: an imported asset may "
+                                 f"have at most {MAX_FACES:,} faces and {MAX_VERTICES:,} vertices "
+                                 "(simplify it first)", file, "geometry"))
+    for p in raw.parts:
+        probs += check_part_mesh(p.mesh, f"/{p.source}", file)
+        if len(p.mesh.faces) == 0 or not float(p.mesh.area) > 0.0:
+            probs.append(Problem(f"/{p.source}", f"part {p.source!r} ({p.label}) has no face of "
+                                 "positive area (only degenerate triangles): remove it or map "
+                                 "it to null", file, "geometry"))
+    if probs:
+        raise InputError(probs)
+    b = np.array([p.mesh.bounds for p in raw.parts])
+    ext = b[:, 1].max(axis=0) - b[:, 0].min(axis=0)
+    if not (ext > 0).all():
+        raise InputError(Problem("", f"the asset is flat (extents {ext.round(6).tolist()}): a "
+                                     "part-split asset needs some thickness on every axis",
+                                 file, "geometry"))
+
+
 def clean_mesh(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
     """Merge duplicate vertices and drop degenerate faces (files often carry both)."""
     m = trimesh.Trimesh(np.asarray(mesh.vertices, float), np.asarray(mesh.faces, np.int64),
@@ -241,6 +321,22 @@ def clean_mesh(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
     return m
 
 
+#: Thickness given to the collision piece of a flat part (a picture's canvas, a mirror), m.
+FLAT_THICKNESS = 0.001
+
+
+def _flat_pieces(mesh: trimesh.Trimesh) -> list[trimesh.Trimesh]:
+    """One thin convex piece for a part whose vertices lie in a plane (no convex hull of its
+    own); an empty list for a part with volume."""
+    v = np.asarray(mesh.vertices, float)
+    c = v - v.mean(axis=0)
+    _, sv, vh = np.linalg.svd(c, full_matrices=False)
+    if len(sv) < 3 or sv[2] > 1e-9 * max(sv[0], 1e-12):
+        return []
+    n = vh[2] * (FLAT_THICKNESS / 2)
+    return [trimesh.convex.convex_hull(np.vstack([v + n, v - n]))]
+
+
 def finish_asset(raw: RawAsset, *, category: str, asset_id: str,
                  size_range: tuple[float, float] | None, density: float,
                  coacd_threshold: float = 0.05, cache_dir: str | Path | None = None) -> Asset:
@@ -251,7 +347,25 @@ def finish_asset(raw: RawAsset, *, category: str, asset_id: str,
     parts (``label`` when unique, else ``label_k`` in the ``#k`` order: bottom-to-top,
     left-to-right, back-to-front), decomposes every part into convex pieces and resolves
     surfaces and internal surfaces.
+
+    Raises
+    ------
+    InputError
+        The asset breaks a bound of :func:`check_raw_asset`, or its parts cannot be
+        decomposed into convex pieces (named with the source file).
     """
+    check_raw_asset(raw, raw.source)
+    try:
+        return _finish(raw, category=category, asset_id=asset_id, size_range=size_range,
+                       density=density, coacd_threshold=coacd_threshold, cache_dir=cache_dir)
+    except (ValueError, ArithmeticError, IndexError, RuntimeError, AssetError) as e:
+        raise InputError(Problem("", f"cannot make an asset of it ({type(e).__name__}: "
+                                     f"{str(e)[:200]})", raw.source, "geometry")) from None
+
+
+def _finish(raw: RawAsset, *, category: str, asset_id: str,
+            size_range: tuple[float, float] | None, density: float, coacd_threshold: float,
+            cache_dir: str | Path | None) -> Asset:
     meshes = [p.mesh.copy() for p in raw.parts]
     b = np.array([m.bounds for m in meshes])
     lo, hi = b[:, 0].min(axis=0), b[:, 1].max(axis=0)
@@ -286,7 +400,8 @@ def finish_asset(raw: RawAsset, *, category: str, asset_id: str,
             names[i] = f"{label}_{k}"
     parts = []
     for i, (rp, m) in enumerate(zip(raw.parts, meshes, strict=True)):
-        pieces = convex_pieces(m, threshold=coacd_threshold, cache_dir=cache_dir)
+        pieces = _flat_pieces(m) or convex_pieces(m, threshold=coacd_threshold,
+                                                  cache_dir=cache_dir)
         parts.append(Part(names[i], rp.label, m, rp.material, pieces, watertight=bool(m.is_watertight)))
     meta = dict(raw.meta)
     meta.update({"generator": "loaded", "source": raw.source, "fit_scale": fit})

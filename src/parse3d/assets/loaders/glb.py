@@ -19,10 +19,15 @@ from ...errors import InputError, Problem
 from ..model import Asset
 from ._canon import (
     GLTF_FRAME,
+    MAX_FACES,
+    MAX_SOURCE_BYTES,
+    MAX_VERTICES,
     RawAsset,
     RawPart,
     SourceFrame,
     check_mapping_labels,
+    check_part_mesh,
+    check_raw_asset,
     clean_mesh,
     finish_asset,
     label_for,
@@ -50,6 +55,7 @@ def read_glb(path: str | os.PathLike, *, mapping=None, frame: SourceFrame = GLTF
         raise InputError(Problem("", "file not found", file, "io"))
     mapping, mfile = read_mapping(mapping)
     check_mapping_labels(mapping, vocabulary, mfile)
+    _check_gltf_size(path)
     try:
         scene = trimesh.load(str(path), force="scene")
     except Exception as e:  # trimesh raises many types for a broken file
@@ -57,7 +63,7 @@ def read_glb(path: str | os.PathLike, *, mapping=None, frame: SourceFrame = GLTF
     R = frame.rotation()
     T_src = np.eye(4)
     T_src[:3, :3] = R * float(frame.unit_scale)
-    parts = []
+    parts, probs = [], []
     for node in sorted(scene.graph.nodes_geometry):
         T, geom_name = scene.graph[node]
         geom = scene.geometry.get(geom_name)
@@ -67,16 +73,106 @@ def read_glb(path: str | os.PathLike, *, mapping=None, frame: SourceFrame = GLTF
         if label is None:
             continue
         mesh = geom.copy()
+        bad = check_part_mesh(mesh, f"/nodes/{node}", file)
+        if bad or not np.isfinite(T).all():
+            probs += bad or [Problem(f"/nodes/{node}", "the node's transform is not finite",
+                                     file, "geometry")]
+            continue
         mesh.apply_transform(T_src @ T)
         material = material_of(geom)
         parts.append(RawPart(str(node), label, clean_mesh(mesh), material))
+    if probs:
+        raise InputError(probs)
     if len(parts) < 2:
         raise InputError(Problem("", f"found {len(parts)} mesh node(s); a part-split asset has one "
                                  "mesh node per part (at least two)", file, "geometry"))
     probs = part_label_problems(parts, vocabulary, file, "/nodes")
     if probs:
         raise InputError(probs)
-    return RawAsset(file, parts, {"source_format": "gltf", "frame": frame.__dict__.copy()})
+    raw = RawAsset(file, parts, {"source_format": "gltf", "frame": frame.__dict__.copy()})
+    check_raw_asset(raw, file)
+    return raw
+
+
+def _check_gltf_size(path: Path) -> None:
+    """Refuse, before any mesh is built, a file larger than :data:`MAX_SOURCE_BYTES` or whose
+    glTF JSON declares more than :data:`MAX_FACES` triangles or :data:`MAX_VERTICES` vertices
+    (mesh instances counted once per node that uses them)."""
+    import struct
+
+    from ..._files import loads_json, read_input_bytes
+
+    file = str(path)
+    try:
+        size = path.stat().st_size
+    except OSError as e:
+        raise InputError(Problem("", f"cannot read the file: {e.strerror}", file, "io")) from None
+    if size > MAX_SOURCE_BYTES:
+        raise InputError(Problem("", f"the file is {size / 2**20:.0f} MiB: an imported asset "
+                                     f"may be at most {MAX_SOURCE_BYTES // 2**20} MiB", file,
+                                 "io"))
+    with open(path, "rb") as f:
+        head = f.read(20)
+    if path.suffix.lower() == ".glb" or head[:4] == b"glTF":
+        if len(head) < 20 or head[:4] != b"glTF":
+            raise InputError(Problem("", "not a GLB file (no glTF header)", file, "syntax"))
+        n, kind = struct.unpack("<I4s", head[12:20])
+        if kind != b"JSON" or n > size - 20:
+            raise InputError(Problem("", "not a GLB file (no JSON chunk)", file, "syntax"))
+        with open(path, "rb") as f:
+            f.seek(20)
+            raw = f.read(n)
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError:
+            raise InputError(Problem("", "the GLB's JSON chunk is not UTF-8", file, "syntax")
+                             ) from None
+    else:
+        text = read_input_bytes(path, limit=MAX_SOURCE_BYTES).decode("utf-8", "replace")
+    try:
+        doc = loads_json(text, file=file)
+    except InputError as e:  # NaN in accessor bounds is how NaN vertices usually show
+        msg = e.problems[0].message if e.problems else str(e)
+        raise InputError(Problem("", f"the glTF JSON is damaged ({msg}): a NaN or infinite "
+                                     "value means the mesh has non-finite vertices", file,
+                                 "syntax")) from None
+    if not isinstance(doc, dict):
+        raise InputError(Problem("", "not a glTF document", file, "syntax"))
+    faces, verts = _declared_counts(doc)
+    if faces > MAX_FACES or verts > MAX_VERTICES:
+        raise InputError(Problem("", f"the file declares {faces:,} triangles and {verts:,} "
+                                     f"vertices: an imported asset may have at most "
+                                     f"{MAX_FACES:,} faces and {MAX_VERTICES:,} vertices "
+                                     "(simplify it first)", file, "geometry"))
+
+
+def _declared_counts(doc: dict) -> tuple[int, int]:
+    """(triangles, vertices) the glTF JSON declares, summed over the nodes that use meshes."""
+    def count(i) -> int:
+        acc = doc.get("accessors")
+        if isinstance(i, int) and isinstance(acc, list) and 0 <= i < len(acc) \
+                and isinstance(acc[i], dict) and isinstance(acc[i].get("count"), int):
+            return max(0, acc[i]["count"])
+        return 0
+
+    per_mesh = []
+    for m in doc.get("meshes") or []:
+        f = v = 0
+        for prim in (m.get("primitives") or []) if isinstance(m, dict) else []:
+            if not isinstance(prim, dict):
+                continue
+            attrs = prim.get("attributes") if isinstance(prim.get("attributes"), dict) else {}
+            n = count(attrs.get("POSITION"))
+            v += n
+            f += (count(prim["indices"]) if "indices" in prim else n) // 3
+        per_mesh.append((f, v))
+    faces = verts = 0
+    uses = [n.get("mesh") for n in doc.get("nodes") or [] if isinstance(n, dict)]
+    for i in uses or range(len(per_mesh)):
+        if isinstance(i, int) and 0 <= i < len(per_mesh):
+            faces += per_mesh[i][0]
+            verts += per_mesh[i][1]
+    return faces, verts
 
 
 def load_glb(path: str | os.PathLike, *, category: str, mapping=None,

@@ -163,6 +163,21 @@ def find_sources(src: Path) -> list[Path]:
     return out
 
 
+def _asset_problem(asset) -> str | None:
+    """What makes a built asset unusable (non-finite geometry, a size outside the bounds),
+    or None."""
+    import numpy as np
+
+    for part in asset.parts:
+        arrays = [part.mesh.vertices] + [c.vertices for c in part.pieces]
+        if not all(np.isfinite(np.asarray(a, float)).all() for a in arrays):
+            return f"part {part.name!r} has non-finite coordinates after fitting"
+    size = float(asset.size)
+    if not (math.isfinite(size) and MIN_ASSET_SIZE * 0.5 <= size <= MAX_ASSET_SIZE * 2):
+        return f"the fitted asset is {size:g} m across"
+    return None
+
+
 def _stem(p: Path) -> str:
     s = re.sub(r"[^A-Za-z0-9_.-]+", "_", p.stem if p.is_file() else p.name)
     return s.strip("._") or "asset"
@@ -283,11 +298,18 @@ def add_assets(src: str | os.PathLike, *, category: str, mapping=None,
     if density is None:
         density = existing.density if existing is not None else float((old or {}).get("density", 500.0))
     names = list(old["assets"]) if old else []
+    # every asset is built and checked before anything is created in the library: a file
+    # that fails leaves no folder, no half category behind
+    built = [(_stem(s), finish_asset(raw, category=category, asset_id=f"{category}-{_stem(s)}",
+                                     size_range=size_range, density=density,
+                                     cache_dir=cache_dir)) for s, raw in raws]
+    for stem, asset in built:
+        bad = _asset_problem(asset)
+        if bad:
+            raise InputError(Problem("", bad, next(str(s) for s in sources if _stem(s) == stem),
+                                     "geometry"))
     folder.mkdir(parents=True, exist_ok=True)
-    for s, raw in raws:
-        stem = _stem(s)
-        asset = finish_asset(raw, category=category, asset_id=f"{category}-{stem}",
-                             size_range=size_range, density=density, cache_dir=cache_dir)
+    for stem, asset in built:
         save_asset(asset, folder / f"{stem}.npz")
         if f"{stem}.npz" not in names:
             names.append(f"{stem}.npz")

@@ -20,15 +20,20 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
+from ..._files import read_input_bytes, read_input_text
 from ...errors import InputError, Problem
 from ...geometry.frames import axis_angle, rot_x, rot_y, rot_z
 from ..model import Asset, Joint
 from ._canon import (
+    MAX_FACES,
+    MAX_SOURCE_BYTES,
     PARTNET_FRAME,
     RawAsset,
     RawPart,
     SourceFrame,
     check_mapping_labels,
+    check_part_mesh,
+    check_raw_asset,
     clean_mesh,
     default_label,
     finish_asset,
@@ -48,9 +53,11 @@ def is_partnet_folder(path: str | os.PathLike) -> bool:
 def _floats(s: str | None, n: int) -> np.ndarray:
     if not s:
         return np.zeros(n)
-    v = np.array([float(x) for x in s.split()])
+    v = np.array([float(x) for x in s.split()[:n + 1]])
     if len(v) != n:
-        raise ValueError(f"expected {n} numbers, got {s!r}")
+        raise ValueError(f"expected {n} numbers, got {s[:100]!r}")
+    if not np.isfinite(v).all() or np.abs(v).max() > 1e6:
+        raise ValueError(f"{s[:100]!r} holds a value that is not a finite number of at most 1e6")
     return v
 
 
@@ -74,8 +81,8 @@ def _joint_motion(joint) -> np.ndarray:
     lim = joint.find("limit")
     q = 0.0
     if lim is not None and kind != "continuous":
-        lo = float(lim.get("lower", "0") or 0)
-        hi = float(lim.get("upper", "0") or 0)
+        lo = _floats(lim.get("lower", "0") or "0", 1)[0]
+        hi = _floats(lim.get("upper", "0") or "0", 1)[0]
         if lo <= hi:
             q = float(np.clip(0.0, lo, hi))
     if q == 0.0:
@@ -91,10 +98,10 @@ def _joint_motion(joint) -> np.ndarray:
 
 
 def _read_semantics(path: Path) -> dict[str, str]:
-    out = {}
-    if not path.is_file():
+    out: dict[str, str] = {}
+    if not path.exists():
         return out
-    for line in path.read_text(encoding="utf-8").splitlines():
+    for line in read_input_text(path, what="semantics file").splitlines():
         f = line.split()
         if len(f) >= 3:
             out[f[0]] = f[2]
@@ -122,32 +129,27 @@ def read_partnet_mobility(folder: str | os.PathLike, *, mapping=None,
     check_mapping_labels(mapping, vocabulary, mfile)
     file = str(urdf)
     try:
-        root = ET.parse(urdf).getroot()
+        root = ET.fromstring(read_input_bytes(urdf, what="URDF file"))
     except ET.ParseError as e:
         raise InputError(Problem("", f"malformed URDF: {e}", file, "syntax")) from None
     links = {ln.get("name"): ln for ln in root.findall("link")}
+    if None in links or "" in links:
+        raise InputError(Problem("/link", "a link without a name", file, "schema"))
     children: dict[str, list] = {}
     child_of = set()
     for j in root.findall("joint"):
         p, c = j.find("parent"), j.find("child")
-        if p is None or c is None:
+        if p is None or c is None or p.get("link") is None or c.get("link") is None:
             raise InputError(Problem(f"/joint/{j.get('name')}", "joint without parent or child", file, "schema"))
         children.setdefault(p.get("link"), []).append(j)
         child_of.add(c.get("link"))
-    world: dict[str, np.ndarray] = {}
-    stack = [(name, np.eye(4)) for name in links if name not in child_of]
-    try:
-        while stack:
-            name, T = stack.pop()
-            world[name] = T
-            for j in children.get(name, []):
-                stack.append((j.find("child").get("link"), T @ _origin(j.find("origin")) @ _joint_motion(j)))
-    except ValueError as e:
-        raise InputError(Problem("", f"bad joint origin: {e}", file, "syntax")) from None
+    world = _link_frames(links, children, child_of, file)
     semantics = _read_semantics(folder / "semantics.txt")
     S = np.eye(4)
     S[:3, :3] = frame.rotation() * float(frame.unit_scale)
     parts, unlabelled, probs = [], [], []
+    base = folder.resolve()
+    budget = [MAX_FACES]  # faces still allowed; an OBJ is refused before it is loaded
     for name in sorted(links, key=_natural):
         link = links[name]
         meshes = []
@@ -156,24 +158,53 @@ def read_partnet_mobility(folder: str | os.PathLike, *, mapping=None,
             m_el = vis.find("geometry/mesh")
             if m_el is None:
                 continue
+            where = f"/link/{name}/visual"
             mpath = folder / m_el.get("filename", "")
+            try:
+                inside = mpath.resolve().is_relative_to(base)
+            except (OSError, RuntimeError):  # a symlink loop
+                inside = False
+            if not inside:
+                probs.append(Problem(where, f"mesh file {m_el.get('filename')!r} lies outside "
+                                     "the PartNet folder: only files inside it are read", file,
+                                     "io"))
+                continue
             if not mpath.is_file():
-                probs.append(Problem(f"/link/{name}/visual", f"mesh file {m_el.get('filename')!r} not found",
+                probs.append(Problem(where, f"mesh file {m_el.get('filename')!r} not found",
                                      file, "io"))
                 continue
             try:
+                _check_obj_size(mpath, budget)
                 mesh = trimesh.load(str(mpath), force="mesh")
-            except Exception as e:  # trimesh raises many types for a broken file
-                probs.append(Problem(f"/link/{name}/visual", f"cannot read {mpath.name}: {e}", file, "syntax"))
+            except InputError as e:
+                probs += e.problems
+                break
+            except Exception as e:  # noqa: BLE001 - trimesh raises many types for a broken file
+                probs.append(Problem(where, f"cannot read {mpath.name}: {str(e)[:200]}", file,
+                                     "syntax"))
                 continue
             if not isinstance(mesh, trimesh.Trimesh) or len(mesh.faces) == 0:
                 continue
-            scale = _floats(m_el.get("scale"), 3) if m_el.get("scale") else np.ones(3)
+            budget[0] -= len(mesh.faces)
+            try:
+                scale = _floats(m_el.get("scale"), 3) if m_el.get("scale") else np.ones(3)
+                T_vis = _origin(vis.find("origin"))
+            except ValueError as e:
+                probs.append(Problem(where, f"bad origin or scale: {e}", file, "syntax"))
+                continue
+            if not (np.abs(scale) >= 1e-6).all():
+                probs.append(Problem(where, "a mesh scale of 0 (or below 1e-6) flattens the "
+                                     "part", file, "geometry"))
+                continue
+            bad = check_part_mesh(mesh, where, file)
+            if bad:
+                probs += bad
+                continue
             mat = mat or material_of(mesh)
             m = mesh.copy()
             if not np.allclose(scale, 1.0):
                 m.apply_transform(np.diag([*scale, 1.0]))
-            m.apply_transform(S @ world.get(name, np.eye(4)) @ _origin(vis.find("origin")))
+            m.apply_transform(S @ world.get(name, np.eye(4)) @ T_vis)
             meshes.append(m)
         if not meshes:
             continue
@@ -198,9 +229,56 @@ def read_partnet_mobility(folder: str | os.PathLike, *, mapping=None,
     if len(parts) < 2:
         raise InputError(Problem("", f"found {len(parts)} labelled link(s) with geometry; a part-split "
                                  "asset needs at least two", file, "geometry"))
-    joints = _read_joints(root, world, {p.source for p in parts}, S, file)
-    return RawAsset(str(folder), parts, {"source_format": "partnet-mobility",
+    try:
+        joints = _read_joints(root, world, {p.source for p in parts}, S, file)
+    except ValueError as e:
+        raise InputError(Problem("", f"bad joint: {e}", file, "syntax")) from None
+    raw = RawAsset(str(folder), parts, {"source_format": "partnet-mobility",
                                          "frame": frame.__dict__.copy()}, joints)
+    check_raw_asset(raw, file)
+    return raw
+
+
+def _link_frames(links: dict, children: dict[str, list], child_of: set, file: str
+                 ) -> dict[str, np.ndarray]:
+    """World (4, 4) frame of every link reachable from a root, in the rest pose.
+
+    Raises
+    ------
+    InputError
+        A link reached twice (a joint cycle, or a link with two parent joints), or a joint
+        origin, axis or limit that is not a finite number.
+    """
+    world: dict[str, np.ndarray] = {}
+    stack = [(name, np.eye(4)) for name in links if name not in child_of]
+    try:
+        while stack:
+            name, T = stack.pop()
+            if name in world:
+                raise InputError(Problem(f"/link/{name}", f"link {name!r} is reached by two "
+                                         "joint paths (a joint cycle or two parents): a URDF "
+                                         "is a tree", file, "schema"))
+            world[name] = T
+            for j in children.get(name, []):
+                stack.append((j.find("child").get("link"),
+                              T @ _origin(j.find("origin")) @ _joint_motion(j)))
+    except ValueError as e:
+        raise InputError(Problem("", f"bad joint origin: {e}", file, "syntax")) from None
+    if len(child_of) and not any(n not in child_of for n in links):
+        raise InputError(Problem("", "every link is the child of a joint (a joint cycle): a "
+                                     "URDF needs a root link", file, "schema"))
+    return world
+
+
+def _check_obj_size(path: Path, budget: list[int]) -> None:
+    """Refuse a mesh file over :data:`MAX_SOURCE_BYTES`, or an OBJ whose face lines exceed
+    what is left of the asset's :data:`MAX_FACES` (counted without parsing it)."""
+    data = read_input_bytes(path, limit=MAX_SOURCE_BYTES, what="mesh file")
+    if path.suffix.lower() == ".obj":
+        faces = data.count(b"\nf ") + data.startswith(b"f ")
+        if faces > budget[0]:
+            raise InputError(Problem("", f"the asset's meshes have more than {MAX_FACES:,} "
+                                         "faces (simplify them first)", str(path), "geometry"))
 
 
 def _read_joints(root, world: dict[str, np.ndarray], with_parts: set[str], S: np.ndarray,
@@ -254,7 +332,8 @@ def _read_joints(root, world: dict[str, np.ndarray], with_parts: set[str], S: np
         if kind == "continuous" or lim is None:
             lo, hi = (0.0, 2 * np.pi) if kind != "prismatic" else (0.0, 0.0)
         else:
-            lo, hi = float(lim.get("lower", "0") or 0), float(lim.get("upper", "0") or 0)
+            lo = _floats(lim.get("lower", "0") or "0", 1)[0]
+            hi = _floats(lim.get("upper", "0") or "0", 1)[0]
         rest = float(np.clip(0.0, min(lo, hi), max(lo, hi)))
         lo, hi = min(lo, hi) - rest, max(lo, hi) - rest
         if lo < 0 < hi:
