@@ -38,6 +38,7 @@ from .geometry import (
     part_points,
     ray_caster,
 )
+from .reach import face_slabs, nearest_in_prism, piece_data
 
 __all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "Check", "CheckContext",
            "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
@@ -743,8 +744,18 @@ def _check_leaning(ctx: CheckContext) -> Check:
     parts = select_parts(child, ctx.edge.child)
     if not parts:
         return Check(False, {}, f"child has no part {ctx.edge.child.part!r}")
-    gap = float(_plane_dist(world_points(child, settled=settled, parts=parts), sB).min())
-    whole = float(_plane_dist(world_points(child, settled=settled), sB).min())
+    # within the face's extent, not its infinite plane: a book beside a box touches nothing
+    T, slabs = child.transform(settled), face_slabs(sB)
+    near = nearest_in_prism(piece_data(child.asset, parts), T, sB.normal, sB.origin, slabs)
+    if near is None:
+        off = float(_plane_dist(world_points(child, settled=settled, parts=parts), sB).min())
+        return Check(False, {"distance": round(off, 6), "outside_face": 1.0},
+                     f"{ctx.edge.child} is not in front of {ctx.edge.parent} (beside or past "
+                     f"the face's extent)")
+    gap = near[0]
+    whole_near = nearest_in_prism(piece_data(child.asset, child.asset.parts), T, sB.normal,
+                                  sB.origin, slabs)
+    whole = gap if whole_near is None else whole_near[0]
     up = child.transform(settled)[:3, :3] @ np.array([0, 0, 1.0]) / child.scale
     tilt = float(np.degrees(angle_between(up, [0, 0, 1.0])))
     face = float(np.degrees(angle_between(_child_normal(child, _child_label(ctx), settled),

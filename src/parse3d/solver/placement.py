@@ -22,6 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
+from .leaning import involves_object, lean_samples
 from .ledge import may_lean, place_leaning
 from .regions import (
     REGION_RULES,
@@ -788,7 +789,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     overhang = False
     base_solid = None
     lift = 0.0
-    if strategy == "constrained":
+    leaned = lean_samples(st, oid, asset, scale, R, h, sup, others, region0, rng,
+                          cfg.max_trials) \
+        if strategy == "constrained" and involves_object(sup, lean) else None
+    if leaned is not None:  # leaning on or from an object (solver/leaning.py)
+        region, samples = leaned
+    elif strategy == "constrained":
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
         # a stack: ON an object of the same kind (their PAG nodes share a category)

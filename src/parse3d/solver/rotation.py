@@ -182,7 +182,9 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
         e, d = o.lean
         k = np.cross(n_s, d)
         if np.linalg.norm(k) > 1e-6:
-            theta = _lean_angle(asset, scale, R, k, d, e, rng)
+            from .leaning import lean_tilt  # a face of finite extent (an object's)
+            theta = lean_tilt(st, sup, asset, scale, R, k, d, e, rng,
+                              lambda: _lean_angle(asset, scale, R, k, d, e, rng))
             R = axis_angle(k, theta) @ R
             lean = [(e, theta, d)]
     return R, o.toward, lean
