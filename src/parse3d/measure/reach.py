@@ -17,7 +17,23 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["piece_data", "nearest_in_prism", "face_slabs"]
+__all__ = ["piece_data", "nearest_in_prism", "face_slabs", "lean_range", "WIDE_LEAN_DEG",
+           "stands_to_lean", "STAND", "THIN_SHARE", "standing_label",
+           "pieces_distance"]
+
+#: Tilts (degrees) a child may lean at against an object's face when the PAG gives no
+#: ``angle_deg``: the default range is tried first, then this one (a pillow slumped against a
+#: headboard, a book against a short box). The check accepts the same range.
+WIDE_LEAN_DEG = (4.0, 35.0)
+
+
+def lean_range(edge, parent_is_object: bool) -> tuple[float, float]:
+    """The tilt range (degrees) a leaning child may take: ``angle_deg`` as written, or, not
+    written and leaning on an object, :data:`WIDE_LEAN_DEG` widened to include the default."""
+    lo, hi = edge.param("angle_deg")
+    if parent_is_object and "angle_deg" not in edge.params:
+        return min(lo, WIDE_LEAN_DEG[0]), max(hi, WIDE_LEAN_DEG[1])
+    return lo, hi
 
 _DATA: dict[tuple, list] = {}
 
@@ -126,3 +142,63 @@ def face_slabs(surface, grow: float = 1e-3) -> list[tuple[np.ndarray, float, flo
     o = surface.origin
     return [(surface.u, float(o @ surface.u + x0 - grow), float(o @ surface.u + x1 + grow)),
             (surface.v, float(o @ surface.v + y0 - grow), float(o @ surface.v + y1 + grow))]
+
+
+#: A child is flat when its height is at most this share of its smaller horizontal extent.
+THIN_SHARE = 0.5
+#: The turn (asset frame) that stands a flat child on its front edge, its bottom facing back:
+#: a rotation of -90 degrees about its x axis.
+STAND = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+
+
+def stands_to_lean(asset, pag, oid: str) -> bool:
+    """Whether a leaning child is flat (a pillow, a cushion, a tray, a plate: its height at
+    most :data:`THIN_SHARE` of its smaller horizontal extent) and so stands on its front edge
+    to lean, its large face toward the parent: ``pillow@back`` then means its bottom face
+    (``@front`` its top). The solver poses it so and the checks read it so."""
+    if asset is None or not any(e.relation == "LEANING_AGAINST" and e.child.object == oid
+                                and (e.child.surface or "back") in ("back", "front")
+                                for e in pag.edges_of(oid)):
+        return False
+    from .geometry import asset_geometry
+
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    return bool(ext[2] <= THIN_SHARE * min(ext[0], ext[1]))
+
+
+def standing_label(label: str) -> str:
+    """The asset surface a flat child standing on its front edge shows as ``label``."""
+    return {"back": "bottom", "front": "top", "bottom": "front", "top": "back"}.get(label, label)
+
+
+def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
+                    limit: float = 0.01) -> float:
+    """Exact distance (GJK, FCL) between two sets of convex pieces (asset frames, moved by the
+    4x4 similarity transforms), 0 where they overlap; ``inf`` beyond ``limit`` (boxes apart)."""
+    import fcl
+
+    def world(pieces, T):
+        out = []
+        for V0, F, _ in pieces:
+            if not len(F):
+                continue
+            V = V0 @ T[:3, :3].T + T[:3, 3]
+            out.append((V, F, V.min(axis=0), V.max(axis=0)))
+        return out
+
+    A, B = world(pieces_a, T_a), world(pieces_b, T_b)
+    best = np.inf
+    req = fcl.DistanceRequest()
+    for Va, Fa, la, ha in A:
+        for Vb, Fb, lb, hb in B:
+            if np.any(la > hb + limit) or np.any(lb > ha + limit):
+                continue
+            oa = fcl.CollisionObject(fcl.Convex(Va, len(Fa), np.c_[np.full(len(Fa), 3), Fa]
+                                                .ravel().astype(np.int32)))
+            ob = fcl.CollisionObject(fcl.Convex(Vb, len(Fb), np.c_[np.full(len(Fb), 3), Fb]
+                                                .ravel().astype(np.int32)))
+            d = fcl.distance(oa, ob, req, fcl.DistanceResult())
+            best = min(best, max(float(d), 0.0))
+            if best == 0.0:
+                return 0.0
+    return best

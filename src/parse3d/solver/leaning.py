@@ -14,13 +14,14 @@ from __future__ import annotations
 
 import numpy as np
 import shapely
+import shapely.affinity
 from shapely.geometry.base import BaseGeometry
 
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..measure.checks import EPS
-from ..measure.reach import nearest_in_prism, piece_data
+from ..measure.reach import lean_range, nearest_in_prism, piece_data, stands_to_lean
 from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry
@@ -28,36 +29,34 @@ from .rotation import parent_surface_world
 from .state import SolveState, parts_for
 from .support import Support
 
-__all__ = ["lean_tilt", "lean_line", "lean_range", "WIDE_LEAN_DEG"]
+__all__ = ["lean_tilt", "lean_line", "lean_samples", "involves_object"]
 
-#: Tilts (degrees) a child may lean at on an object's face when the PAG gives no ``angle_deg``:
-#: the default range is tried first, then this one (a pillow slumped against a headboard, a
-#: book against a short box). The check accepts the same range.
-WIDE_LEAN_DEG = (4.0, 35.0)
 #: Metres within which another part counts as level with the named part toward the face.
 LEVEL = 2e-3
 _UP = np.array([0.0, 0.0, 1.0])
 
 
-def lean_range(edge: Edge, parent_is_object: bool) -> tuple[float, float]:
-    """The tilt range (degrees) a leaning child may take: ``angle_deg`` as written, or, not
-    written and leaning on an object, :data:`WIDE_LEAN_DEG` widened to include the default."""
-    lo, hi = edge.param("angle_deg")
-    if parent_is_object and "angle_deg" not in edge.params:
-        return min(lo, WIDE_LEAN_DEG[0]), max(hi, WIDE_LEAN_DEG[1])
-    return lo, hi
-
-
-def _face(st: SolveState, e: Edge):
-    """The parent's world face, its height slab and its width axis; None when the face is not
-    upright (the plain plane test applies)."""
-    sB, _, _ = parent_surface_world(st, e.parent, e.spec.parent_surface)
+def _faces(st: SolveState, e: Edge) -> list:
+    """The parent's world faces (one per part its reference names: a sofa's back cushions),
+    each ``(surface, (z low, z high), width axis, outline along it)``; empty when the face is
+    not upright (the plain plane test applies)."""
+    sB, _, label = parent_surface_world(st, e.parent, e.spec.parent_surface)
     if abs(float(sB.normal[2])) > 0.3:
-        return None
-    out = sB.outline_3d()
-    t = np.cross(sB.normal, _UP)
-    t /= np.linalg.norm(t)
-    return sB, (float(out[:, 2].min()), float(out[:, 2].max())), t, out @ t
+        return []
+    faces = [sB]
+    if not e.parent.is_room_element and e.parent.part is not None and e.parent.index is None:
+        parent = st.scene.objects[e.parent.object]
+        more = parts_for(parent.asset, e.parent)
+        if len(more) > 1:
+            T = parent.transform()
+            faces = [p.surfaces[label].transformed(T) for p in more if label in p.surfaces]
+    out = []
+    for f in faces:
+        o = f.outline_3d()
+        t = np.cross(f.normal, _UP)
+        t /= np.linalg.norm(t)
+        out.append((f, (float(o[:, 2].min()), float(o[:, 2].max())), t, o @ t))
+    return out
 
 
 def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.ndarray,
@@ -67,12 +66,15 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
 
     ``fallback()`` is the plain-plane choice, used for faces that are not upright, for
     supports that are not level and for walls (a wall spans every height)."""
+    if _lying_roller(asset, R):
+        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {asset.asset_id} lies on its round "
+                   f"side and would roll off what it leans on", intrinsic=True)
     if e.parent.is_room_element or abs(float(sup.surface.normal[2])) < 0.9:
         return fallback()
-    face = _face(st, e)
-    if face is None:
+    faces = _faces(st, e)
+    if not faces:
         return fallback()
-    sB, (zlo, zhi), _, _ = face
+    sB, (zlo, zhi), _, _ = faces[0]
     from .rotation import _pressing
 
     parts = parts_for(asset, e.child) if e.child.part is not None else list(asset.parts)
@@ -87,6 +89,9 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     lo, hi = e.param("angle_deg")
     wide = lean_range(e, True)
     ranges = [(lo, hi)] + ([wide] if wide != (lo, hi) else [])
+    stood = stands_to_lean(asset, st.pag, e.child.object)
+    if stood:  # a pillow on its edge: the whole range, pressed firmly (it would roll upright)
+        ranges = [wide]
     worst = (0.0, None)
     for a, b in ranges:
         ok = []
@@ -107,6 +112,8 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
                 ok.append(th)
             elif ahead > worst[0]:
                 worst = (ahead, th)
+        if ok and stood:
+            return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
             return _pressing(asset, scale, R, k, d, ok, rng)
     if worst[1] is None:
@@ -121,6 +128,41 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
                f"{ranges[-1][1]:g} deg {why}")
 
 
+def _lying_roller(asset: Asset, R: np.ndarray) -> bool:
+    """An elongated child with a round-ish cross-section (its two smaller extents within 30%,
+    the longest beyond 1.5 times them: a bolster) whose long axis lies level in ``R``."""
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    k = np.argsort(ext)
+    if ext[k[1]] > 1.3 * ext[k[0]] or ext[k[2]] < 1.5 * ext[k[1]]:
+        return False
+    return abs(float(R[2, k[2]])) < 0.5
+
+
+#: Share of its thickness by which a flat child standing on its edge keeps its centre of mass
+#: beyond the edge it pivots on, toward the parent: its rounded edge rolls, a thin margin lets
+#: it stand up off the parent in settling.
+FIRM_SHARE = 0.3
+
+
+def _firm(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray,
+          tilts: list[float], rng: np.random.Generator) -> float:
+    """One of ``tilts`` at which the centre of mass lies :data:`FIRM_SHARE` of the child's
+    thickness beyond its base toward the parent (random among them); else the firmest."""
+    g = asset_geometry(asset)
+    hull, com = g.hull * scale, g.com * scale
+    need = FIRM_SHARE * float(np.ptp(g.hull[:, 2])) * scale
+    margins = []
+    for th in tilts:
+        Rt = axis_angle(k, th) @ R
+        Y = hull @ Rt.T
+        base = Y[Y[:, 2] <= Y[:, 2].min() + 2e-3]
+        margins.append(float((Rt @ com) @ d - np.max(base @ d)))
+    good = [t for t, m in zip(tilts, margins, strict=True) if m >= need]
+    if good:
+        return float(good[int(rng.integers(len(good)))])
+    return float(tilts[int(np.argmax(margins))])
+
+
 def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:
     """The child's origins (support-plane coordinates) at which its named part touches the
     parent's upright face within the face's extent: on the contact line, and with the middle
@@ -129,11 +171,9 @@ def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:
     st, s, asset, scale, R = ctx.st, ctx.sup.surface, ctx.asset, ctx.scale, ctx.R
     if abs(float(s.normal[2])) < 0.9:
         return None
-    face = _face(st, e)
-    if face is None:
+    faces = _faces(st, e)
+    if not faces:
         return None
-    sB, (zlo, zhi), t, along = face
-    nB = sB.normal
     parts = parts_for(asset, e.child) if e.child.part is not None else list(asset.parts)
     if not parts:
         raise Fail(f"{e.child.object!r} has no part {e.child.part!r}")
@@ -141,17 +181,35 @@ def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:
     T = np.eye(4)
     T[:3, :3] = R * scale
     T[:3, 3] = base
-    got = nearest_in_prism(piece_data(asset, parts), T, nB, sB.origin, [(_UP, zlo, zhi)],
-                           band=LEVEL)
+    got, widths = [], []
+    for sB, (zlo, zhi), t, along in faces:
+        new = _on_face(e, s, sB, zlo, zhi, t, along, piece_data(asset, parts), T, region)
+        widths.append(float(np.ptp(along)))
+        if new is not None and not new.is_empty:
+            got.append(new)
+    if not got:
+        b = region.bounds if not region.is_empty else None
+        room = "no free space was left there" if b is None else \
+            f"the free positions span {b[2] - b[0]:.2f} x {b[3] - b[1]:.2f} m elsewhere"
+        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent} emptied the feasible region on "
+                   f"{ctx.sup.name}: where {e.child} touches {e.parent} within its "
+                   f"{max(widths):.2f} m wide face, {room}")
+    return got[0] if len(got) == 1 else shapely.union_all(got)
+
+
+def _on_face(e: Edge, s, sB, zlo: float, zhi: float, t: np.ndarray, along: np.ndarray, pieces,
+             T: np.ndarray, region: BaseGeometry) -> BaseGeometry | None:
+    """The part of ``region`` where the child (posed by ``T`` at the plane's origin) touches
+    the face ``sB`` within its extent; None when its named part never comes level with it."""
+    nB = sB.normal
+    got = nearest_in_prism(pieces, T, nB, sB.origin, [(_UP, zlo, zhi)], band=LEVEL)
     if got is None:
-        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {e.child} is never level with "
-                   f"{e.parent} on {ctx.sup.name}")
+        return None
     dist, _, band = got
     g = np.array([s.u @ nB, s.v @ nB])
     gt = np.array([s.u @ t, s.v @ t])
     if np.linalg.norm(g) < 1e-6 or np.linalg.norm(gt) < 1e-6:
-        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: the parent surface is parallel "
-                   f"to the support, no position satisfies it")
+        return None
     # moving the origin by (x, y) moves the contact by g . (x, y) along the face normal
     ln = RG.line(np.zeros(2), g / np.linalg.norm(g), (EPS - dist) / np.linalg.norm(g))
     new = RG.clip(region, ln)
@@ -164,15 +222,7 @@ def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:
     if a1 - a0 > 2 * m:
         nt = np.linalg.norm(gt)
         new = RG.clip(new, RG.strip(np.zeros(2), gt / nt, (a0 + m - c) / nt, (a1 - m - c) / nt))
-    if new.is_empty or shapely.get_num_geometries(new) == 0:
-        b = region.bounds if not region.is_empty else None
-        room = "no free space was left there" if b is None else \
-            f"the free positions span {b[2] - b[0]:.2f} x {b[3] - b[1]:.2f} m elsewhere"
-        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent} emptied the feasible region on "
-                   f"{ctx.sup.name}: where {e.child} touches {e.parent} within its "
-                   f"{a1 - a0:.2f} m wide face, {room}")
     return new
-
 
 #: Metres above its lowest point within which a leaning child's points are its base.
 BASE_BAND = 3e-3
@@ -201,7 +251,11 @@ def lean_samples(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nda
     base = Y[hN <= hN.min() + BASE_BAND]
     pts = np.c_[base @ s.u, base @ s.v]
     Fb = RG.convex_footprint(np.vstack([pts, pts + 1e-4, pts + [1e-4, 0.0]]))
-    region = RG.erode(region0, [], Fb)
+    # the erosion wants the reference point inside the footprint: erode about the base's
+    # centre, then move back to the origin
+    c = Fb.mean(axis=0)
+    region = shapely.affinity.translate(RG.erode(region0, [], Fb - c), -float(c[0]),
+                                        -float(c[1]))
     if region.is_empty or region.area < 1e-10:
         raise Fail(f"no room on {sup.name} for the base of a leaning {asset.category}",
                    intrinsic=True)

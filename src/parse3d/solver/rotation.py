@@ -18,6 +18,7 @@ from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle, rotation_between
 from ..geometry.surfaces import Surface, surface_from_bbox
+from ..measure.reach import STAND, stands_to_lean
 from ..pag.model import Edge
 from ..pag.refs import Ref
 from ..relations import SURFACES
@@ -114,6 +115,8 @@ def _facing(st, asset, o, e):
     rel = e.relation
     sB, _, _ = parent_surface_world(st, e.parent, e.spec.parent_surface)
     nA = contact_normal(e.child, e.spec.child_surface)
+    if rel == "LEANING_AGAINST" and stands_to_lean(asset, st.pag, e.child.object):
+        nA = STAND.T @ nA  # a flat child on its edge: its bottom faces the parent
     sign = 1.0 if rel in ("ALIGNED_WITH", "PARALLEL_TO") else -1.0
     ang = angle_to(o.R0 @ nA, sign * sB.normal, o.n_s)
     if ang is None:
@@ -157,6 +160,8 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
     """
     n_s = sup.surface.normal
     R0 = _base_rotation(support_edge.child.surface or support_edge.spec.child_surface, n_s)
+    if support_edge.relation == "ON" and stands_to_lean(asset, st.pag, oid):
+        R0 = R0 @ STAND  # a flat leaner (a pillow) stands on its front edge
     o = Orientation(R0, n_s)
     if abs(n_s[2]) <= 0.9:  # on a wall: stay upright
         o.phi, o.source = _upright_angle(R0, n_s), "upright"
