@@ -517,7 +517,7 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         ang = abs(90.0 - float(np.degrees(angle_between(long_axis, sB.normal))))
     elif rel == "ON" and child.rests_on:  # on its lower edge, leaning back on the ledge
         ang_tol = LEDGE_LEAN_DEG + 1.0
-    elif rel == "ON":  # a leaning object stands on its support tilted by its lean angle
+    elif rel in ("ON", "IN"):  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
                 ang_tol = max(ang_tol, lean_range(le, not le.parent.is_room_element)[1] + 1.0)
@@ -533,7 +533,7 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         detail += f", resting on {pile}"
     elif on_wall:
         detail += f", resting on {e.parent.object}'s wall"
-    leans = rel == "ON" and any(le.relation == "LEANING_AGAINST"
+    leans = rel in ("ON", "IN") and any(le.relation == "LEANING_AGAINST"
                                 for le in ctx.scene.pag.edges_of(e.child.object))
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG or leans
 
@@ -798,9 +798,6 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
                             piece_data(ctx.parent.asset, pp), ctx.parent.transform(settled))
         if d <= DIST_TOL:
             gap = d
-    whole_near = nearest_in_prism(piece_data(child.asset, child.asset.parts), T, sB.normal,
-                                  sB.origin, slabs)
-    whole = gap if whole_near is None else whole_near[0]
     # a flat child standing on its front edge to lean (a pillow) has its back as its up axis
     up_local = np.array([0, -1.0, 0]) if stands_to_lean(child.asset, ctx.scene.pag, child.id) \
         else np.array([0, 0, 1.0])
@@ -813,6 +810,11 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
     touches = -PENETRATION_TOL <= gap <= DIST_TOL
     ok = touches and lo - 1.0 <= tilt <= hi + 1.0 and face <= hi + ANGLE_TOL_DEG
     detail = f"{ctx.edge.child} {gap * 1000:.2f} mm from the parent, tilt {tilt:.1f} deg"
+    whole = gap
+    if not touches and gap > DIST_TOL:  # does another part touch instead?
+        whole_near = nearest_in_prism(piece_data(child.asset, child.asset.parts), T, sB.normal,
+                                      sB.origin, slabs)
+        whole = gap if whole_near is None else whole_near[0]
     if not touches and gap > DIST_TOL and whole < gap - DIST_TOL:
         detail += f" (another part touches it; the named part is {1000 * (gap - whole):.0f} mm off)"
     return Check(ok, res, detail)

@@ -38,28 +38,32 @@ def lean_range(edge, parent_is_object: bool) -> tuple[float, float]:
 _DATA: dict[tuple, list] = {}
 
 
-def piece_data(asset, parts) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
-    """``[(vertices, faces, edges)]`` of the parts' convex pieces in the asset frame (cached
-    per asset and part names); parts without pieces give their mesh vertices as one piece
-    with no faces (vertices only)."""
+def piece_data(asset, parts) -> list[tuple]:
+    """``[(vertices, faces, edges, planes, offsets)]`` of the parts' convex pieces in the asset
+    frame (cached per asset and part names; ``planes @ x <= offsets`` inside); parts without
+    pieces give their mesh vertices as one piece with no faces (vertices only)."""
     key = (asset.asset_id, tuple(p.name for p in parts))
     got = _DATA.get(key)
     if got is None:
         if len(_DATA) > 4096:
             _DATA.clear()
         got = []
+        none = (np.zeros((0, 3), int), np.zeros((0, 2), int), np.zeros((0, 3)), np.zeros(0))
         for p in parts:
             pieces = p.piece_arrays
             if not pieces:
-                got.append((np.asarray(p.vertices, float), np.zeros((0, 3), int),
-                            np.zeros((0, 2), int)))
+                got.append((np.asarray(p.vertices, float), *none))
                 continue
             for pc in pieces:
                 V = np.asarray(pc.vertices, float)
                 F = np.asarray(pc.faces, int).reshape(-1, 3)
+                if not len(F):
+                    got.append((V, *none))
+                    continue
                 E = np.unique(np.sort(np.vstack([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]]),
-                                      axis=1), axis=0) if len(F) else np.zeros((0, 2), int)
-                got.append((V, F, E))
+                                      axis=1), axis=0)
+                A, d = _planes(V, F)
+                got.append((V, F, E, A, d))
         _DATA[key] = got
     return got
 
@@ -84,10 +88,40 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
     ``None`` when no piece reaches into the prism. With ``band``, ``(distance, point,
     points)``: also the (K, 3) candidate points within ``band`` of the smallest distance (the
     band of the child that touches)."""
+    M, t0 = T[:3, :3], T[:3, 3]
+    Mi = np.linalg.inv(M)
+    corners = []
+    if len(slabs) == 2:  # lines where two slab planes meet, in the asset frame
+        (a1, l1, h1), (a2, l2, h2) = slabs
+        w = np.cross(a1, a2)
+        if np.linalg.norm(w) > 1e-9:
+            S = np.array([a1, a2, w])
+            wl = Mi @ w
+            for c1 in (l1, h1):
+                for c2 in (l2, h2):
+                    corners.append((Mi @ (np.linalg.solve(S, [c1, c2, 0.0]) - t0), wl))
+    todo = []
+    for piece in pieces:
+        V = piece[0] @ M.T + t0
+        dv = (V - origin) @ normal
+        todo.append((float(dv.min()), V, piece))
+    todo.sort(key=lambda x: x[0])
     keep_x, keep_d = [], []
-    tol = 1e-9
-    for V0, F, E in pieces:
-        V = V0 @ T[:3, :3].T + T[:3, 3]
+    best = np.inf
+    margin = 0.0 if band is None else band
+    for lower, V, (_, F, E, A, d) in todo:
+        if lower > best + margin:
+            break  # no point of this piece (or the rest) comes nearer
+        lo_box, hi_box = V.min(axis=0), V.max(axis=0)
+        skip = False
+        for a, lo, hi in slabs:  # the piece's box misses the slab
+            r = np.abs(a) @ ((hi_box - lo_box) / 2)
+            c = ((hi_box + lo_box) / 2) @ a
+            if c + r < lo - 1e-7 or c - r > hi + 1e-7:
+                skip = True
+                break
+        if skip:
+            continue
         cands = [V]
         for a, lo, hi in slabs:  # edges crossing a slab plane
             if not len(E):
@@ -97,35 +131,31 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
             for c in (lo, hi):
                 m = (sp - c) * (sq - c) < 0
                 if m.any():
-                    t = (c - sp[m]) / (sq[m] - sp[m])
-                    cands.append(p[m] + t[:, None] * (q[m] - p[m]))
-        if len(slabs) == 2 and len(F):  # lines where two slab planes meet
-            (a1, l1, h1), (a2, l2, h2) = slabs
-            w = np.cross(a1, a2)
-            if np.linalg.norm(w) > 1e-9:
-                A, d = _planes(V, F)
-                M = np.array([a1, a2, w])
-                for c1 in (l1, h1):
-                    for c2 in (l2, h2):
-                        p0 = np.linalg.solve(M, [c1, c2, 0.0])
-                        aw, r = A @ w, d - A @ p0
-                        if np.any((np.abs(aw) < 1e-12) & (r < -tol)):
-                            continue
-                        pos, neg = aw > 1e-12, aw < -1e-12
-                        t1 = np.min(r[pos] / aw[pos]) if pos.any() else np.inf
-                        t0 = np.max(r[neg] / aw[neg]) if neg.any() else -np.inf
-                        if t0 <= t1 and np.isfinite(t0) and np.isfinite(t1):
-                            cands.append(np.array([p0 + t0 * w, p0 + t1 * w]))
+                    tt = (c - sp[m]) / (sq[m] - sp[m])
+                    cands.append(p[m] + tt[:, None] * (q[m] - p[m]))
+        if corners and len(A):
+            for p0, wl in corners:
+                aw, r = A @ wl, d - A @ p0
+                if np.any((np.abs(aw) < 1e-12) & (r < -1e-9)):
+                    continue
+                pos, neg = aw > 1e-12, aw < -1e-12
+                t1 = np.min(r[pos] / aw[pos]) if pos.any() else np.inf
+                tb = np.max(r[neg] / aw[neg]) if neg.any() else -np.inf
+                if tb <= t1 and np.isfinite(tb) and np.isfinite(t1):
+                    ends = np.array([p0 + tb * wl, p0 + t1 * wl])
+                    cands.append(ends @ M.T + t0)
         X = np.vstack(cands)
         inside = np.ones(len(X), bool)
         for a, lo, hi in slabs:
-            s = X @ a
-            inside &= (s >= lo - 1e-7) & (s <= hi + 1e-7)
+            sa = X @ a
+            inside &= (sa >= lo - 1e-7) & (sa <= hi + 1e-7)
         if not inside.any():
             continue
         X = X[inside]
+        dist = (X - origin) @ normal
         keep_x.append(X)
-        keep_d.append((X - origin) @ normal)
+        keep_d.append(dist)
+        best = min(best, float(dist.min()))
     if not keep_x:
         return None
     X, dist = np.vstack(keep_x), np.concatenate(keep_d)
@@ -179,7 +209,7 @@ def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
 
     def world(pieces, T):
         out = []
-        for V0, F, _ in pieces:
+        for V0, F, *_ in pieces:
             if not len(F):
                 continue
             V = V0 @ T[:3, :3].T + T[:3, 3]
