@@ -75,8 +75,6 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     if not faces:
         return fallback()
     sB, (zlo, zhi), _, _ = faces[0]
-    from .rotation import _pressing
-
     parts = parts_for(asset, e.child) if e.child.part is not None else list(asset.parts)
     if not parts:
         raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {asset.asset_id} has no part "
@@ -115,7 +113,7 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
         if ok and stood:
             return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
-            return _pressing(asset, scale, R, k, d, ok, rng)
+            return pressed(asset, scale, R, k, d, ok, rng, e)
     if worst[1] is None:
         why = (f"{e.child} never comes level with {e.parent} ({zhi - z0:.2f} m high above "
                f"{sup.name})")
@@ -126,6 +124,32 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     # not intrinsic, so the search may re-place the parent
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {ranges[-1][0]:g}-"
                f"{ranges[-1][1]:g} deg {why}")
+
+
+def pressed(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray,
+            tilts: list[float], rng: np.random.Generator, e: Edge) -> float:
+    """One of ``tilts`` (those at which the named part touches) at which gravity presses the
+    child toward its parent (:func:`parse3d.solver.rotation._pressing`); Fail when at every one
+    of them its centre of mass lies behind the edge it pivots on: it would stand up off the
+    parent in settling (a flat-bottomed guitar leaning by its body only below 4 degrees)."""
+    from .rotation import _pressing
+
+    g = asset_geometry(asset)
+    hull, com = g.hull * scale, g.com * scale
+    best = -np.inf
+    for th in tilts:
+        Rt = axis_angle(k, th) @ R
+        Y = hull @ Rt.T
+        base = Y[Y[:, 2] <= Y[:, 2].min() + 2e-3]
+        best = max(best, float((Rt @ com) @ d - np.max(base @ d)))
+    if best < 0.0:
+        lo, hi = np.rad2deg(min(tilts)), np.rad2deg(max(tilts))
+        raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {e.child.part or 'it'} touches "
+                   f"only at tilts of {lo:.0f}-{hi:.0f} deg, where {asset.asset_id} stands up "
+                   f"by itself (its centre of mass {-best * 1000:.0f} mm short of its base's "
+                   f"edge), so settling would undo the lean (name {e.child.object}@"
+                   f"{e.child.surface or 'back'} to lean on any part)", intrinsic=True)
+    return _pressing(asset, scale, R, k, d, tilts, rng)
 
 
 def _lying_roller(asset: Asset, R: np.ndarray) -> bool:

@@ -291,8 +291,9 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
             best = max(others, key=lambda p: float(np.max(part_points([p]) @ Rt.T @ d)),
                        default=None)
             worst = (reach_all - reach_part, best)
-    if ok:
-        return _pressing(asset, scale, R, k, d, ok, rng)
+    if ok:  # Fail when gravity would stand it up off the parent (solver/leaning.py)
+        from .leaning import pressed
+        return pressed(asset, scale, R, k, d, ok, rng, e)
     # the largest tilt at which it would work, for the message
     fit = [t for t in np.deg2rad(np.linspace(0.0, 45.0, 91))
            if float(np.max(hull @ (axis_angle(k, t) @ R).T @ d))
