@@ -109,7 +109,7 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
     keep_x, keep_d = [], []
     best = np.inf
     margin = 0.0 if band is None else band
-    for lower, V, (_, F, E, A, d) in todo:
+    for lower, V, (_, _, E, A, d) in todo:
         if lower > best + margin:
             break  # no point of this piece (or the rest) comes nearer
         lo_box, hi_box = V.min(axis=0), V.max(axis=0)
