@@ -24,6 +24,7 @@ from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
 from .leaning import involves_object, lean_samples
 from .ledge import may_lean, place_leaning
+from .nesting import concentric_first
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -920,6 +921,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
+        # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
+        samples = concentric_first(st, oid, sup, asset, scale, R, samples)
     if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
             and _round_asset(asset):
         samples = _middle_first(samples, region0, F, asset, scale, R, s)
