@@ -454,6 +454,9 @@ def _child_label(ctx: CheckContext) -> str:
     return label
 
 
+#: Degrees a child resting on a pile of its siblings (apples, towels in a basket) or on its
+#: container's wall (a bowl nested in a bowl) may tilt.
+PILE_TILT_DEG = 15.0
 #: Degrees a child standing on a ledge on another face (``rests_on``) may lean back.
 LEDGE_LEAN_DEG = 35.0
 
@@ -484,6 +487,16 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
             gap = d
     pile = None
     on_wall = False
+    if rel == "IN" and pobj is not None and gap < -PENETRATION_TOL:
+        # below the internal surface's plane, resting on the container's curved inside (a
+        # bowl nested in a bowl, its foot ring below the plane of the inner floor's flat)
+        d = drop_distance(world_points(child, hull_only=True, settled=settled), child.asset,
+                          child.transform(settled),
+                          world_points(pobj, hull_only=True, settled=settled), pobj.asset,
+                          pobj.transform(settled), -sB.normal)
+        d = _refined_drop(d, child, pobj, settled, -sB.normal)
+        if np.isfinite(d) and -PENETRATION_TOL <= d <= DIST_TOL:
+            gap, on_wall = float(d), True
     if rel in ("ON", "IN") and pobj is not None and gap > DIST_TOL:
         pile = _resting_on_sibling(ctx, -sB.normal)
         if pile is not None:
@@ -521,6 +534,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
                 ang_tol = max(ang_tol, lean_range(le, not le.parent.is_room_element)[1] + 1.0)
+    if pile is not None or on_wall:  # on a pile (a rolled towel on towels) or on the
+        ang_tol = max(ang_tol, PILE_TILT_DEG)  # container's wall (a bowl in a bowl), as it lands
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
     if pile is not None:
         res["piled"] = 1.0

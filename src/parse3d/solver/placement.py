@@ -24,7 +24,7 @@ from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
 from .leaning import involves_object, lean_samples
 from .ledge import may_lean, place_leaning
-from .nesting import concentric_first
+from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -313,6 +313,8 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
         if e.parent.object == oid and e.relation == "ON" and e.child.object != oid and set(
                 pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
             out.append((e.parent.part, e.parent.index, text, "stack_base"))
+        if e.parent.object == oid and e.relation == "IN" and e.parent.part is None:
+            out.append((None, None, text, "internal"))  # IN the whole object: any inside
         for ref, role in ((e.child, "child"), (e.parent, "parent")):
             if ref.object != oid or ref.part is None:
                 continue
@@ -330,6 +332,10 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
 def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
     for label, idx, text, kind in reqs:
+        if kind == "internal" and label is None:
+            if not asset.internal:
+                return f"{asset.asset_id} holds nothing inside ({text})"
+            continue
         if kind == "stack_base" and label is None:
             if not any(_lies_flat(asset, p) for p in asset.parts):
                 return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "
@@ -793,7 +799,9 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     leaned = lean_samples(st, oid, asset, scale, R, h, sup, others, region0, rng,
                           cfg.max_trials) \
         if strategy == "constrained" and involves_object(sup, lean) else None
-    if leaned is not None:  # leaning on or from an object (solver/leaning.py)
+    if leaned is None and strategy == "constrained" and rel == "IN":
+        leaned = nest_samples(st, oid, sup, asset, scale, R, rng, cfg.max_trials)
+    if leaned is not None:  # leaning on or from an object, or nested (leaning.py, nesting.py)
         region, samples = leaned
     elif strategy == "constrained":
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
@@ -896,7 +904,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if rel == "ON" and sup.owner != "room":
                 if not overhang:
                     region = _well_inside(region, F, height)
-                elif _roller(F, height):
+                elif _roller(F, height) and not stack:  # a loaf on a loaf: centred below
                     # a roller overhanging the support (a baguette longer than the side table)
                     # keeps its centre of mass ROLL_EDGE widths from the edge
                     w = _widths(F)[0]
@@ -921,8 +929,6 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
-        # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
-        samples = concentric_first(st, oid, sup, asset, scale, R, samples)
     if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
             and _round_asset(asset):
         samples = _middle_first(samples, region0, F, asset, scale, R, s)
@@ -941,7 +947,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         seats.sort(key=lambda a: _covered(F, a, centres))
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
+    if strategy == "constrained" and len(samples):
+        # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
+        samples = concentric_first(st, oid, sup, asset, scale, R, samples)
     same = hung = 0
+    # a bowl in a bowl, a cup in a cup: from the parent's rim down onto its inside
+    rise = nest_rise(st, oid, sup) if strategy == "constrained" and rel == "IN" else 0.0
     if overhang and rel == "ON" and not sup.spans and proposal is None and toward is None \
             and strategy == "constrained" and len(samples) \
             and _never_upright(asset, scale, R, s, base_solid):
@@ -965,7 +976,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if toward is not None and strategy == "constrained":
                 Rt, h = _face(st, toward, R, hull, s, ab, h, drop, others)
             # above the owner's low parts; the drop below brings it onto them or the surface
-            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift) * s.normal
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift + rise) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid,
                                             upright=rel == "ON"):
@@ -979,11 +990,13 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 break
             continue
         dropped = False
-        if rel == "ON" and sup.owner != "room":
+        if (rel == "ON" or rise) and sup.owner != "room":
             # settle onto the parent's actual geometry: a plate on a plate sits in its well
             parent = st.scene.objects[sup.owner]
             d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
                               st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+            if rise and np.isfinite(d):  # nested: rays miss curved walls touching between vertices
+                d = pieces_drop(asset, cand.transform(), parent, -s.normal, d + 5e-3)
             dropped = bool(np.isfinite(d) and d > 2 * EPS)
             if dropped:
                 t = t - (d - EPS) * s.normal
