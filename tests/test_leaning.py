@@ -142,3 +142,23 @@ def test_a_guitar_leans_by_its_body_on_an_amplifier_and_not_stood_up_on_a_wall(s
     assert scene.objects["guitar"].placed and on_amp.holds_settled is True, on_amp
     g2 = scene.objects["guitar2"]
     assert not g2.placed and "name guitar2@back" in g2.reason, g2.reason
+
+
+def test_every_relation_broken_by_settling_is_named():
+    """``broken_after_settling`` (printed by ``parse3d solve`` and ``parse3d demo``) names each
+    relation that held as solved and fails on the settled poses, with what was measured."""
+    from parse3d.measure.stability import broken_after_settling
+
+    scene = solve(PAG.from_dict(ROUND), seed=0)
+    settle(scene)
+    assert [x.split(" (")[0] for x in broken_after_settling(scene)] == [
+        f"{c.relation} {c.child} -> {c.parent}" for c in scene.relations
+        if c.holds is True and c.holds_settled is False]
+    # move an apple off the table: its IN no longer holds on the settled poses
+    apple = scene.objects["apple0"]
+    apple.settled_position = apple.settled_position + np.array([0.0, 0.0, 0.5])
+    from parse3d.measure import check_relations
+
+    check_relations(scene, settled=True)
+    lines = broken_after_settling(scene)
+    assert any(x.startswith("IN apple0 -> bowl") for x in lines), lines
