@@ -4,6 +4,7 @@ settled and repaired as ``parse3d solve`` does (real SAPIEN physics)."""
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -50,4 +51,35 @@ def test_the_kitchen_example_plates_stay_level():
     scene = solve(load_pag(EXAMPLES / "kitchen.json"), seed=0)
     settle_and_repair(scene)
     broken = [(c.child, c.parent) for c in scene.relations if c.holds_settled is not True]
+    assert not broken, broken
+
+
+CROWD = {
+    "format": "pag/1", "name": "crowd",
+    "room": {"type": "living_room", "footprint": [[0, 0], [3.5, 0], [3.5, 3], [0, 3]],
+             "height": 2.6},
+    "objects": [{"id": "stool", "category": "side_table"}, {"id": "plate", "category": "plate"}]
+    + [{"id": f"a{i}", "category": "apple"} for i in range(6)],
+    "relations": [{"relation": "ON", "child": "stool", "parent": "floor"},
+                  {"relation": "ON", "child": "plate", "parent": "stool:tabletop"}]
+    + [{"relation": "ON", "child": f"a{i}", "parent": "plate"} for i in range(6)],
+}
+
+
+def test_crowding_places_as_many_as_fit_then_says_how_many():
+    """Six apples ON a side plate: those that fit are placed and stay after settling; the rest
+    fail saying how many the plate holds (a round thing piled on a flat plate rolls off), none
+    left unstable."""
+    from parse3d.pag.model import PAG
+
+    scene = solve(PAG.from_dict(CROWD), seed=1)
+    settle_and_repair(scene)
+    placed = [o for o in scene.objects.values() if o.category == "apple" and o.placed]
+    assert len(placed) >= 3
+    for o in scene.failed:
+        assert re.search(r"holds \d+ object\(s\) already", o.reason), o.reason
+    assert scene.meta["repair"]["unrepaired"] == 0
+    broken = [(c.child, c.residual_settled) for c in scene.relations
+              if scene.objects[c.child.split("@")[0].split(":")[0]].placed
+              and c.holds_settled is not True]
     assert not broken, broken

@@ -695,6 +695,15 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
     if container:
         return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
                           [owner, *pile], own_fp)
+    if support_edge.relation == "ON" and _round_asset(asset):
+        # dropped on another, a round thing touches it at one point and rolls off a flat
+        # plate in settling: as many as fit, then a failure that says how many there are
+        there = [o.id for o in st.scene.objects.values() if o.placed
+                 and o.support_choice is not None and o.support_choice.owner == sup.owner]
+        raise Fail(f"no free space on {sup.name}: it holds {len(there)} object(s) already "
+                   f"({', '.join(there[:6])}{', ...' if len(there) > 6 else ''}), and a round "
+                   f"{asset.category} piled on a flat {owner.category} rolls off (put them IN a "
+                   f"bowl or basket to pile them)")
     bases = [pile[int(k)] for k in rng.permutation(len(pile))[:PILE_BASES]]
     if not bases:
         raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
