@@ -24,7 +24,7 @@ from ..measure.checks import EPS
 from ..measure.reach import lean_range, nearest_in_prism, piece_data, stands_to_lean
 from ..pag.model import Edge
 from .config import Fail
-from .geometry import asset_geometry
+from .geometry import asset_geometry, part_points
 from .rotation import parent_surface_world
 from .state import SolveState, parts_for
 from .support import Support
@@ -91,6 +91,8 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     if stood:  # a pillow on its edge: the whole range, pressed firmly (it would roll upright)
         ranges = [wide]
     worst = (0.0, None)
+    above = _parts_above(st, e, faces[0])
+    blocked = None
     for a, b in ranges:
         ok = []
         for th in np.deg2rad(np.linspace(a, b, 25)):
@@ -100,6 +102,10 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
             T[2, 3] = z0 - float((hull @ Rt.T)[:, 2].min())
             mine = nearest_in_prism(named, T, sB.normal, sB.origin, slab)
             if mine is None:
+                continue
+            hit = _hits_above(whole, T, sB, mine[0], above)
+            if hit is not None:  # the neck would run into what sits on the face's top
+                blocked = hit
                 continue
             if e.child.part is None:
                 ok.append(th)
@@ -114,7 +120,10 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
             return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
             return pressed(asset, scale, R, k, d, ok, rng, e)
-    if worst[1] is None:
+    if blocked is not None and worst[1] is None:
+        why = (f"leaning there it would run into {e.parent.object}:{blocked} above the face "
+               f"(another instance of {e.parent.object} may have none)")
+    elif worst[1] is None:
         why = (f"{e.child} never comes level with {e.parent} ({zhi - z0:.2f} m high above "
                f"{sup.name})")
     else:
@@ -124,6 +133,40 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     # not intrinsic, so the search may re-place the parent
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {ranges[-1][0]:g}-"
                f"{ranges[-1][1]:g} deg {why}")
+
+
+def _parts_above(st: SolveState, e: Edge, face) -> list[tuple[str, float, float, float]]:
+    """The parent's parts standing on top of the face (an amplifier's head on its cabinet),
+    over its width: ``(label, z low, z high, how far in front of the face's plane)``."""
+    sB, (zlo, zhi), t, along = face
+    if e.parent.is_room_element:
+        return []
+    parent = st.scene.objects[e.parent.object]
+    T = parent.transform()
+    own = {p.name for p in parts_for(parent.asset, e.parent)}
+    out = []
+    for p in parent.asset.parts:
+        if p.name in own:
+            continue
+        P = part_points([p]) @ T[:3, :3].T + T[:3, 3]
+        if float(P[:, 2].min()) < zhi - 0.01:
+            continue
+        a = P @ t
+        if float(a.max()) < float(along.min()) or float(a.min()) > float(along.max()):
+            continue
+        out.append((p.label, float(P[:, 2].min()), float(P[:, 2].max()),
+                    float(np.max((P - sB.origin) @ sB.normal))))
+    return out
+
+
+def _hits_above(whole, T: np.ndarray, sB, touch: float, above) -> str | None:
+    """The label of a part in ``above`` the child (posed by ``T``, then moved so that its named
+    part, now ``touch`` from the face's plane, touches it) would reach into; None when none."""
+    for label, z0, z1, front in above:
+        got = nearest_in_prism(whole, T, sB.normal, sB.origin, [(_UP, z0, z1)])
+        if got is not None and got[0] - touch + EPS < front - LEVEL:
+            return label
+    return None
 
 
 def pressed(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray,
