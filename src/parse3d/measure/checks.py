@@ -41,6 +41,7 @@ from .geometry import (
 from .reach import (
     face_slabs,
     lean_range,
+    mounted_parts,
     nearest_in_prism,
     piece_data,
     pieces_distance,
@@ -805,12 +806,16 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
                      f"{ctx.edge.child} is not in front of {ctx.edge.parent} (beside or past "
                      f"the face's extent)")
     gap = near[0]
-    if gap < -PENETRATION_TOL and ctx.parent is not None and ctx.edge.parent.part is not None:
-        # past the face's plane: resting on the parent's real surface behind it (a sofa's
-        # back cushion slanted back from the front of its box): the exact distance decides
+    if not -PENETRATION_TOL <= gap <= DIST_TOL and ctx.parent is not None \
+            and ctx.edge.parent.part is not None:
+        # past the face's plane, resting on the parent's real surface behind it (a sofa's back
+        # cushion slanted back from the front of its box), or in front of it on what is
+        # mounted on it (an amplifier's grille and knobs): the exact distance decides
         pp = select_parts(ctx.parent, ctx.edge.parent)
+        Tp = ctx.parent.transform(settled)
+        on, _ = mounted_parts(ctx.parent, pp, sB, Tp)
         d = pieces_distance(piece_data(child.asset, parts), T,
-                            piece_data(ctx.parent.asset, pp), ctx.parent.transform(settled))
+                            piece_data(ctx.parent.asset, pp + on), Tp)
         if d <= DIST_TOL:
             gap = d
     # a flat child standing on its front edge to lean (a pillow) has its back as its up axis

@@ -19,7 +19,7 @@ import numpy as np
 
 __all__ = ["piece_data", "nearest_in_prism", "face_slabs", "lean_range", "WIDE_LEAN_DEG",
            "stands_to_lean", "STAND", "THIN_SHARE", "standing_label",
-           "pieces_distance"]
+           "pieces_distance", "mounted_parts", "MOUNTED_DEPTH"]
 
 #: Tilts (degrees) a child may lean at against an object's face when the PAG gives no
 #: ``angle_deg``: the default range is tried first, then this one (a pillow slumped against a
@@ -232,3 +232,36 @@ def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
             if best == 0.0:
                 return 0.0
     return best
+
+
+#: Share of a face a mounted part must cover for what leans on the face to rest on it.
+COVERING = 0.3
+#: Metres in front of a face within which a parent's other parts count as mounted on it (an
+#: amplifier's grille and knobs on its cabinet's front).
+MOUNTED_DEPTH = 0.03
+
+
+def mounted_parts(parent, face_parts, surface, T: np.ndarray) -> tuple[list, float]:
+    """The parent's parts mounted on a face (other parts within :data:`MOUNTED_DEPTH` in front
+    of its plane and over its extent: an amplifier's grille and knobs on its cabinet's front),
+    and how far the frontmost of those covering at least :data:`COVERING` of the face reaches
+    in front of its plane (the grille, not a knob; 0 with none). ``T``: the parent's pose."""
+    own = {p.name for p in face_parts}
+    slabs = face_slabs(surface)
+    out, front = [], 0.0
+    for p in parent.asset.parts:
+        if p.name in own:
+            continue
+        V = np.vstack([pc.vertices for pc in p.piece_arrays] or [p.vertices])
+        P = V @ T[:3, :3].T + T[:3, 3]
+        h = (P - surface.origin) @ surface.normal
+        if float(h.min()) < -0.005 or float(h.max()) > MOUNTED_DEPTH or float(h.max()) <= 1e-4:
+            continue
+        if any(float((P @ a).max()) < lo or float((P @ a).min()) > hi for a, lo, hi in slabs):
+            continue
+        out.append(p)
+        (u0, u1), (v0, v1) = ((float((P @ a).min()), float((P @ a).max())) for a, _, _ in
+                              slabs[:2])
+        if (u1 - u0) * (v1 - v0) >= COVERING * surface.area:
+            front = max(front, float(h.max()))
+    return out, front

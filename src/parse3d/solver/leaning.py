@@ -21,7 +21,13 @@ from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..measure.checks import EPS
-from ..measure.reach import lean_range, nearest_in_prism, piece_data, stands_to_lean
+from ..measure.reach import (
+    lean_range,
+    mounted_parts,
+    nearest_in_prism,
+    piece_data,
+    stands_to_lean,
+)
 from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry, part_points
@@ -51,11 +57,16 @@ def _faces(st: SolveState, e: Edge) -> list:
             T = parent.transform()
             faces = [p.surfaces[label].transformed(T) for p in more if label in p.surfaces]
     out = []
+    parent = None if e.parent.is_room_element else st.scene.objects[e.parent.object]
+    own = [] if parent is None else parts_for(parent.asset, e.parent)
     for f in faces:
         o = f.outline_3d()
         t = np.cross(f.normal, _UP)
         t /= np.linalg.norm(t)
-        out.append((f, (float(o[:, 2].min()), float(o[:, 2].max())), t, o @ t))
+        # what is mounted on the face (an amplifier's knobs) is touched first
+        front = 0.0 if parent is None or e.parent.part is None else \
+            mounted_parts(parent, own, f, parent.transform())[1]
+        out.append((f, (float(o[:, 2].min()), float(o[:, 2].max())), t, o @ t, front))
     return out
 
 
@@ -74,7 +85,7 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     faces = _faces(st, e)
     if not faces:
         return fallback()
-    sB, (zlo, zhi), _, _ = faces[0]
+    sB, (zlo, zhi), _, _, _ = faces[0]
     parts = parts_for(asset, e.child) if e.child.part is not None else list(asset.parts)
     if not parts:
         raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {asset.asset_id} has no part "
@@ -138,7 +149,7 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
 def _parts_above(st: SolveState, e: Edge, face) -> list[tuple[str, float, float, float]]:
     """The parent's parts standing on top of the face (an amplifier's head on its cabinet),
     over its width: ``(label, z low, z high, how far in front of the face's plane)``."""
-    sB, (zlo, zhi), t, along = face
+    sB, (zlo, zhi), t, along, _ = face
     if e.parent.is_room_element:
         return []
     parent = st.scene.objects[e.parent.object]
@@ -152,9 +163,12 @@ def _parts_above(st: SolveState, e: Edge, face) -> list[tuple[str, float, float,
         if float(P[:, 2].min()) < zhi - 0.01:
             continue
         a = P @ t
-        if float(a.max()) < float(along.min()) or float(a.min()) > float(along.max()):
+        # over most of the face's width (else the child may lean beside it)
+        cover = min(float(a.max()), float(along.max())) - max(float(a.min()), float(along.min()))
+        if cover < 0.8 * float(np.ptp(along)):
             continue
-        out.append((p.label, float(P[:, 2].min()), float(P[:, 2].max()),
+        # from 1 cm above its foot: the child touches the face up to the face's top edge
+        out.append((p.label, float(P[:, 2].min()) + 0.01, float(P[:, 2].max()),
                     float(np.max((P - sB.origin) @ sB.normal))))
     return out
 
@@ -174,7 +188,9 @@ def pressed(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndar
     """One of ``tilts`` (those at which the named part touches) at which gravity presses the
     child toward its parent (:func:`parse3d.solver.rotation._pressing`); Fail when at every one
     of them its centre of mass lies behind the edge it pivots on: it would stand up off the
-    parent in settling (a flat-bottomed guitar leaning by its body only below 4 degrees)."""
+    parent in settling (a guitar leaning by its body, which touches only below about 4
+    degrees; even a flat-bottomed one 8 mm behind may stay, a round-bottomed one 17 mm
+    behind rolled upright)."""
     from .rotation import _pressing
 
     g = asset_geometry(asset)
@@ -249,8 +265,9 @@ def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:
     T[:3, :3] = R * scale
     T[:3, 3] = base
     got, widths = [], []
-    for sB, (zlo, zhi), t, along in faces:
-        new = _on_face(e, s, sB, zlo, zhi, t, along, piece_data(asset, parts), T, region)
+    for sB, (zlo, zhi), t, along, front in faces:
+        new = _on_face(e, s, sB, zlo, zhi, t, along, piece_data(asset, parts), T, region,
+                       front)
         widths.append(float(np.ptp(along)))
         if new is not None and not new.is_empty:
             got.append(new)
@@ -265,7 +282,7 @@ def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:
 
 
 def _on_face(e: Edge, s, sB, zlo: float, zhi: float, t: np.ndarray, along: np.ndarray, pieces,
-             T: np.ndarray, region: BaseGeometry) -> BaseGeometry | None:
+             T: np.ndarray, region: BaseGeometry, front: float = 0.0) -> BaseGeometry | None:
     """The part of ``region`` where the child (posed by ``T`` at the plane's origin) touches
     the face ``sB`` within its extent; None when its named part never comes level with it."""
     nB = sB.normal
@@ -278,7 +295,7 @@ def _on_face(e: Edge, s, sB, zlo: float, zhi: float, t: np.ndarray, along: np.nd
     if np.linalg.norm(g) < 1e-6 or np.linalg.norm(gt) < 1e-6:
         return None
     # moving the origin by (x, y) moves the contact by g . (x, y) along the face normal
-    ln = RG.line(np.zeros(2), g / np.linalg.norm(g), (EPS - dist) / np.linalg.norm(g))
+    ln = RG.line(np.zeros(2), g / np.linalg.norm(g), (EPS + front - dist) / np.linalg.norm(g))
     new = RG.clip(region, ln)
     # the middle of the touching band within the face's width (a margin of a quarter of the
     # narrower of the two, at most 2 cm)
