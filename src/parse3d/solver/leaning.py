@@ -349,3 +349,30 @@ def lean_samples(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nda
     region = apply_region_rules(ctx, others, region, "object")
     region = apply_region_rules(ctx, others, region, "part")
     return region, RG.sample_uniform(region, rng, n)
+
+
+#: Metres a leaning child is backed off its contact line before it slides onto its parent.
+SLIDE_BACK = 0.08
+
+
+def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+               t: np.ndarray, lean: tuple):
+    """The child's position after sliding it, from ``SLIDE_BACK`` behind ``t``, horizontally
+    toward the object it leans on until its collision pieces touch the parent's: the face's
+    plane is a patch of the part, which may slant back above it (a sofa's reclined back
+    cushion) or carry parts in front of it; the pieces are what settling simulates. ``t``
+    unchanged when nothing is met within reach."""
+    from .nesting import pieces_drop
+
+    e, _, d = lean
+    parent = st.scene.objects[e.parent.object]
+    d = np.asarray(d, float) / np.linalg.norm(d)
+    start = np.asarray(t, float) - SLIDE_BACK * d
+    T = np.eye(4)
+    T[:3, :3] = R * scale
+    T[:3, 3] = start
+    reach = SLIDE_BACK + 0.05
+    got = pieces_drop(asset, T, parent, d, reach, tol=5e-4)
+    if got >= reach:
+        return t
+    return start + max(got - EPS, 0.0) * d

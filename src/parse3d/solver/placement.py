@@ -22,7 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
-from .leaning import involves_object, lean_samples
+from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import (
@@ -1024,6 +1024,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                     last = "its base would rest on the edge of a low part (centre of mass " \
                            "outside what holds it)"
                     continue
+        if leaned is not None and lean and not lean[0][0].parent.is_room_element:
+            # onto the parent's pieces, not its face's plane (a reclined back cushion)
+            t = lean_slide(st, oid, asset, scale, Rt, t, lean[0])
+            cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         # footprint inside the support polygon: the region guarantees it, except after a TOWARD
         # turn, for rejection samples and proposals
         if not overhang and (Rt is not R or strategy == "rejection"):
