@@ -12,6 +12,7 @@ import numpy as np
 
 from ..assets.model import Asset
 from ..measure.checks import object_centroid, world_points
+from .config import Fail
 from .geometry import asset_geometry
 from .state import SolveState
 from .support import Support
@@ -55,6 +56,8 @@ def concentric_first(st: SolveState, oid: str, sup: Support, asset: Asset, scale
     return np.vstack([at, samples])[:max(len(samples), 1)] if len(samples) else at
 
 
+#: Largest ratio of a nested child's width to its parent's (a bowl in a bowl).
+NEST_WIDER = 1.05
 #: Metres around the parent's axis within which a nested child's later draws fall.
 NEST_JITTER = 0.004
 
@@ -69,6 +72,14 @@ def nest_samples(st: SolveState, oid: str, sup: Support, asset: Asset, scale: fl
 
     if not same_kind(st, oid, sup):
         return None
+    parent = st.scene.objects[sup.owner]
+    mine = float(np.ptp(((asset_geometry(asset).hull * scale) @ R.T)[:, :2], axis=0).max())
+    theirs = float(np.ptp(world_points(parent, hull_only=True, settled=False)[:, :2],
+                          axis=0).max())
+    if mine > NEST_WIDER * theirs:
+        # a bowl wider than the one it sits in rests on its rim, top-heavy: the pair tipped
+        raise Fail(f"no room in {sup.owner}: a {mine:.2f} m wide {asset.category} does not nest "
+                   f"in a {theirs:.2f} m wide one (it would rest on its rim and tip it over)")
     at = concentric_first(st, oid, sup, asset, scale, R, np.zeros((0, 2)))
     if not len(at):
         return None
