@@ -201,36 +201,66 @@ def standing_label(label: str) -> str:
     return {"back": "bottom", "front": "top", "bottom": "front", "top": "back"}.get(label, label)
 
 
+_FCL: dict[tuple, list] = {}
+
+
+def _fcl_pieces(pieces, scale: float) -> list:
+    """FCL convex shapes of ``pieces`` scaled by ``scale`` (FCL moves rigidly only), each with
+    the 8 corners of its box, made once per pieces list and scale."""
+    import fcl
+
+    key = (id(pieces), round(float(scale), 9))
+    got = _FCL.get(key)
+    if got is not None and got[0] is pieces:
+        return got[1]
+    if len(_FCL) > 4096:
+        _FCL.clear()
+    out = []
+    for V0, F, *_ in pieces:
+        if not len(F):
+            continue
+        V = np.asarray(V0, float) * scale
+        lo, hi = V.min(axis=0), V.max(axis=0)
+        corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                            for z in (lo[2], hi[2])])
+        geom = fcl.Convex(V, len(F), np.c_[np.full(len(F), 3), F].ravel().astype(np.int32))
+        out.append((geom, corners))
+    _FCL[key] = (pieces, out)  # holding the list keeps its id valid
+    return out
+
+
 def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
                     limit: float = 0.01) -> float:
     """Exact distance (GJK, FCL) between two sets of convex pieces (asset frames, moved by the
     4x4 similarity transforms), 0 where they overlap; ``inf`` beyond ``limit`` (boxes apart)."""
     import fcl
 
-    def world(pieces, T):
-        out = []
-        for V0, F, *_ in pieces:
-            if not len(F):
-                continue
-            V = V0 @ T[:3, :3].T + T[:3, 3]
-            out.append((V, F, V.min(axis=0), V.max(axis=0)))
-        return out
+    def posed(pieces, T):
+        s = float(np.cbrt(abs(np.linalg.det(T[:3, :3]))))
+        R, t = T[:3, :3] / s, T[:3, 3]
+        shapes = _fcl_pieces(pieces, s)
+        if not shapes:
+            return [], np.zeros((0, 3)), np.zeros((0, 3)), R, t
+        C = np.stack([c for _, c in shapes]) @ R.T + t
+        return [g for g, _ in shapes], C.min(axis=1), C.max(axis=1), R, t
 
-    A, B = world(pieces_a, T_a), world(pieces_b, T_b)
+    ga, la, ha, Ra, ta = posed(pieces_a, T_a)
+    gb, lb, hb, Rb, tb = posed(pieces_b, T_b)
+    if not ga or not gb:
+        return np.inf
+    near = np.all((la[:, None, :] <= hb[None, :, :] + limit)
+                  & (lb[None, :, :] <= ha[:, None, :] + limit), axis=2)
+    if not near.any():
+        return np.inf
     best = np.inf
     req = fcl.DistanceRequest()
-    for Va, Fa, la, ha in A:
-        for Vb, Fb, lb, hb in B:
-            if np.any(la > hb + limit) or np.any(lb > ha + limit):
-                continue
-            oa = fcl.CollisionObject(fcl.Convex(Va, len(Fa), np.c_[np.full(len(Fa), 3), Fa]
-                                                .ravel().astype(np.int32)))
-            ob = fcl.CollisionObject(fcl.Convex(Vb, len(Fb), np.c_[np.full(len(Fb), 3), Fb]
-                                                .ravel().astype(np.int32)))
-            d = fcl.distance(oa, ob, req, fcl.DistanceResult())
-            best = min(best, max(float(d), 0.0))
-            if best == 0.0:
-                return 0.0
+    Ta, Tb = fcl.Transform(Ra, ta), fcl.Transform(Rb, tb)
+    for i, j in zip(*np.nonzero(near), strict=True):
+        d = fcl.distance(fcl.CollisionObject(ga[i], Ta), fcl.CollisionObject(gb[j], Tb), req,
+                         fcl.DistanceResult())
+        best = min(best, max(float(d), 0.0))
+        if best == 0.0:
+            return 0.0
     return best
 
 

@@ -362,6 +362,7 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     plane is a patch of the part, which may slant back above it (a sofa's reclined back
     cushion) or carry parts in front of it; the pieces are what settling simulates. ``t``
     unchanged when nothing is met within reach."""
+    from ..measure.geometry import drop_distance
     from .nesting import pieces_drop
 
     e, _, d = lean
@@ -372,7 +373,15 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     T[:3, :3] = R * scale
     T[:3, 3] = start
     reach = SLIDE_BACK + 0.05
-    got = pieces_drop(asset, T, parent, d, reach, tol=5e-4)
-    if got >= reach:
+    # the rays of the mesh vertices first (fast), then the pieces near where they meet
+    ray = drop_distance((asset_geometry(asset).hull * scale) @ R.T + start, asset, T,
+                        st.hulls[parent.id], parent.asset, parent.transform(), d)
+    lo = 0.0
+    if np.isfinite(ray) and ray < reach:
+        lo = max(0.0, float(ray) - 0.01)
+        reach = min(reach, float(ray) + 0.005)
+    T[:3, 3] = start + lo * d
+    got = lo + pieces_drop(asset, T, parent, d, reach - lo, tol=5e-4)
+    if got >= SLIDE_BACK + 0.05:
         return t
     return start + max(got - EPS, 0.0) * d
