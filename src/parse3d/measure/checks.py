@@ -784,6 +784,12 @@ def _check_leaning(ctx: CheckContext) -> Check:
                 if label in p.surfaces]
         faces = more or faces
     best = None
+    if len(faces) > 1:  # faces the child's box comes nowhere near cannot hold it: skip them
+        H = world_points(ctx.child, hull_only=True, settled=ctx.settled)
+        lo, hi = H.min(axis=0) - 0.02, H.max(axis=0) + 0.02
+        near = [f for f in faces if np.all(f.outline_3d().min(axis=0) <= hi)
+                and np.all(f.outline_3d().max(axis=0) >= lo)]
+        faces = near or faces[:1]
     for f in faces:
         c = _lean_on(ctx, f)
         if c.holds:
