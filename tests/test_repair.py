@@ -138,3 +138,17 @@ def test_settling_the_same_poses_again_gives_the_same_scene(solved):
             for k, o in scene.objects.items() if o.placed} == first
     assert [(c.index, c.holds_settled, c.residual_settled) for c in scene.relations] == rel
     assert scene.meta["settle"] == meta and "mug" in meta["fell"]
+
+
+def test_repairs_stop_at_their_time_budget(solved):
+    """With the budget spent (0 s) no repair round starts: the fallen mug is not re-placed, it
+    fails as unstable, and the scene says the budget stopped the repairs."""
+    import copy
+
+    scene = copy.deepcopy(solved)
+    _push_off(scene, "mug")
+    stats = settle_and_repair(scene, rounds=3, budget=0.0)
+    mug = scene.objects["mug"]
+    assert not mug.placed and not mug.repairs and "unstable" in mug.reason, mug.reason
+    assert stats == {"repaired": 0, "unrepaired": 1}
+    assert scene.meta["repair"]["budget"] is True

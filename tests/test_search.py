@@ -389,8 +389,8 @@ def test_a_corpus_dining_set_completes_and_its_checks_are_fresh():
 def test_a_wall_object_displaced_by_a_clearing_clears_a_stretch_of_its_own():
     """A small laundry of the robustness corpus (laundry-basement-09, corpus seed 0, scaled
     below x0.9): clearing a stretch of wall for the ironing board displaces a wall object
-    that then finds no room; it clears a stretch of its own (one level deep), and every
-    object is placed."""
+    that then found no room and cleared a stretch of its own (one level deep); every object is
+    placed."""
     import json
     from pathlib import Path
 
@@ -402,6 +402,6 @@ def test_a_wall_object_displaced_by_a_clearing_clears_a_stretch_of_its_own():
     assert scene.ok, [(o.id, o.reason) for o in scene.failed]
     fresh = {c.index: c.holds for c in check_relations(scene)}
     assert all(c.holds == fresh[c.index] for c in scene.relations)
-    greedy = solve(PAG.from_dict(case["pag"]), seed=case["seed"],
-                   config=SolverConfig(search="greedy"))
-    assert not greedy.ok
+    # Since an IN parent named without a part must hold something inside (the pool draws
+    # change with it), greedy search places this laundry too: the case no longer shows the
+    # nested clearing by itself, only that the crowded laundry is placed whole.

@@ -26,11 +26,17 @@ from .solver import SolverConfig, solve
 from .solver.search import mark_unmet, replace_objects, support_descendants
 
 __all__ = ["PipelineOptions", "run_pipeline", "settle_and_repair", "write_outputs", "unstable_objects",
-           "UNSTABLE_FLAGS"]
+           "UNSTABLE_FLAGS", "REPAIR_BUDGET"]
 
 #: Physics flags that may make an object unstable (set by settling; whether it is, is decided by
 #: :func:`parse3d.measure.verify_settled`).
 UNSTABLE_FLAGS = ("fell", "tipped", "left_support")
+
+
+#: Seconds after which no further repair round is started (the first settling and a round
+#: under way always finish): a scene whose repairs keep failing costs at most about this much
+#: more than one that needs none.
+REPAIR_BUDGET = 4.0
 
 
 @dataclass(frozen=True)
@@ -50,6 +56,8 @@ class PipelineOptions:
         Settle-verify-repair rounds after the first settling (0: no repair).
     time_limit : float or None
         Seconds the solver may spend before unplaced objects fail with ``time limit``.
+    repair_budget : float or None
+        Seconds after which no further repair round starts (:func:`settle_and_repair`).
     """
 
     settle: bool = True
@@ -58,6 +66,7 @@ class PipelineOptions:
     formats: tuple[str, ...] = ("glb",)
     repair_rounds: int = 3
     time_limit: float | None = None
+    repair_budget: float | None = REPAIR_BUDGET
 
 
 def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
@@ -87,13 +96,18 @@ def _settle(scene: Scene) -> None:
 
 
 def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
-                      config: SolverConfig | None = None) -> dict[str, int]:
-    """Settle ``scene``, then re-place what is unstable and settle again, up to ``rounds``.
+                      config: SolverConfig | None = None,
+                      budget: float | None = REPAIR_BUDGET) -> dict[str, int]:
+    """Settle ``scene``, then re-place what is unstable and settle again, up to ``rounds``,
+    starting no round once ``budget`` seconds have passed since the start (None: no bound).
 
     Returns ``{"repaired": n, "unrepaired": m}``: objects repaired into a stable pose, and
-    objects that became ``failed`` because they were still unstable.
+    objects that became ``failed`` because they were still unstable (``scene.meta["repair"]``
+    also says ``"budget": true`` when the budget stopped the rounds).
     """
     cfg = config or SolverConfig()
+    t0 = time.perf_counter()
+    over = False
     _settle(scene)
     touched: set[str] = set()
     still: dict[str, str] | None = None  # unstable_objects(relations=False) as settled now
@@ -103,6 +117,10 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         if rnd > 1 or not bad:
             still = bad  # round 1 found none even with the relations: none without them
         if not bad:
+            break
+        if budget is not None and time.perf_counter() - t0 > budget:
+            over = True
+            still = unstable_objects(scene, relations=False)
             break
         action = "pose" if rnd == 1 else "asset"
         done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
@@ -138,7 +156,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         check_relations(scene, settled=True)
     mark_unmet(scene)  # settling re-checked them as failing
     stats = {"repaired": len(touched - set(still)), "unrepaired": len(still)}
-    scene.meta["repair"] = stats
+    scene.meta["repair"] = dict(stats, budget=True) if over else stats
     return stats
 
 
@@ -158,7 +176,7 @@ def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
 
         t = time.perf_counter()
         settle_and_repair(scene, rounds=options.repair_rounds, library=library,
-                          config=options.solver)
+                          config=options.solver, budget=options.repair_budget)
         scene.timings["settle"] = time.perf_counter() - t
         t = time.perf_counter()
         scene.contacts = extract_contacts(scene)

@@ -24,6 +24,7 @@ def register(app: typer.Typer) -> None:
         Example: parse3d demo --out out/demo
         """
         from ..assets.registry import vocabulary
+        from ..measure.stability import broken_after_settling
         from ..pag.io import load_pag
         from ..pipeline import PipelineOptions, run_pipeline
         from ..scenes import bundled_paths
@@ -34,6 +35,7 @@ def register(app: typer.Typer) -> None:
         table = Table(title="parse3d demo")
         for col in ("room", "objects", "placed", "relations hold", "contacts", "solve s", "settle s", "folder"):
             table.add_column(col)
+        broken: list[str] = []
         for path in bundled_paths():
             pag = load_pag(path, vocabulary=vocab)
             folder = out / safe_name(pag.name, path.stem)
@@ -47,7 +49,10 @@ def register(app: typer.Typer) -> None:
                           "-" if scene.contacts is None else str(len(scene.contacts)),
                           f"{scene.timings.get('solve', 0):.2f}",
                           f"{scene.timings.get('settle', 0):.2f}", str(folder))
+            broken += [f"{pag.name}: {b}" for b in broken_after_settling(scene)]
         # a wide console even when the output is not a terminal (make demo, CI logs)
         Console(highlight=False, width=max(console.width, 140)).print(table)
+        for b in broken:
+            console.print(f"broken after settling: {b}")
         console.print(f"Open the .glb files in Blender or any glTF viewer; preview.png shows each room. "
                       f"Files are in {out}/")

@@ -21,6 +21,8 @@ MAX_TIME_LIMIT = 86_400.0
 
 
 def _summary(scene, out: Path | None) -> dict:
+    from ..measure.stability import broken_after_settling
+
     s = {
         "name": scene.pag.name,
         "room": scene.pag.room.type,
@@ -32,6 +34,7 @@ def _summary(scene, out: Path | None) -> dict:
         "relations": len(scene.relations),
         "relations_holding_settled": (sum(1 for c in scene.relations if c.holds_settled)
                                       if scene.settled else None),
+        "broken_after_settling": broken_after_settling(scene),
         "contacts": None if scene.contacts is None else len(scene.contacts),
         "repaired": scene.meta.get("repair", {}).get("repaired", 0),
         "unrepaired": scene.meta.get("repair", {}).get("unrepaired", 0),
@@ -54,6 +57,8 @@ def _print_summary(s: dict) -> None:
         console.print(f"  repaired after settling: {s['repaired']}, still unstable: {s['unrepaired']}")
     for f in s["failed"]:
         console.print(f"  [red]failed[/] {f['id']}: {f['reason']}")
+    for b in s.get("broken_after_settling", []):
+        console.print(f"  [yellow]broken after settling[/] {b}")
     if s["out"]:
         console.print(f"  wrote {s['out']}/scene.json"
                       + (", scene.glb" if (Path(s['out']) / 'scene.glb').exists() else "")

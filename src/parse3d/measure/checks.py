@@ -38,6 +38,16 @@ from .geometry import (
     part_points,
     ray_caster,
 )
+from .reach import (
+    face_slabs,
+    lean_range,
+    mounted_parts,
+    nearest_in_prism,
+    piece_data,
+    pieces_distance,
+    standing_label,
+    stands_to_lean,
+)
 
 __all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "Check", "CheckContext",
            "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
@@ -438,9 +448,16 @@ def _target_surface(ctx: CheckContext) -> Surface | str:
 def _child_label(ctx: CheckContext) -> str:
     if ctx.edge.relation == "ON" and ctx.child.rests_on:
         return ctx.child.rests_on  # standing on another face (sheet music on a ledge)
-    return ctx.edge.child.surface or ctx.edge.spec.child_surface
+    label = ctx.edge.child.surface or ctx.edge.spec.child_surface
+    if ctx.edge.relation in ("ON", "LEANING_AGAINST") \
+            and stands_to_lean(ctx.child.asset, ctx.scene.pag, ctx.child.id):
+        return standing_label(label)  # a pillow on its edge, its bottom against the headboard
+    return label
 
 
+#: Degrees a child resting on a pile of its siblings (apples, towels in a basket) or on its
+#: container's wall (a bowl nested in a bowl) may tilt.
+PILE_TILT_DEG = 15.0
 #: Degrees a child standing on a ledge on another face (``rests_on``) may lean back.
 LEDGE_LEAN_DEG = 35.0
 
@@ -471,6 +488,16 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
             gap = d
     pile = None
     on_wall = False
+    if rel == "IN" and pobj is not None and gap < -PENETRATION_TOL:
+        # below the internal surface's plane, resting on the container's curved inside (a
+        # bowl nested in a bowl, its foot ring below the plane of the inner floor's flat)
+        d = drop_distance(world_points(child, hull_only=True, settled=settled), child.asset,
+                          child.transform(settled),
+                          world_points(pobj, hull_only=True, settled=settled), pobj.asset,
+                          pobj.transform(settled), -sB.normal)
+        d = _refined_drop(d, child, pobj, settled, -sB.normal)
+        if np.isfinite(d) and -PENETRATION_TOL <= d <= DIST_TOL:
+            gap, on_wall = float(d), True
     if rel in ("ON", "IN") and pobj is not None and gap > DIST_TOL:
         pile = _resting_on_sibling(ctx, -sB.normal)
         if pile is not None:
@@ -504,10 +531,12 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         ang = abs(90.0 - float(np.degrees(angle_between(long_axis, sB.normal))))
     elif rel == "ON" and child.rests_on:  # on its lower edge, leaning back on the ledge
         ang_tol = LEDGE_LEAN_DEG + 1.0
-    elif rel == "ON":  # a leaning object stands on its support tilted by its lean angle
+    elif rel in ("ON", "IN"):  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
-                ang_tol = max(ang_tol, le.param("angle_deg")[1] + 1.0)
+                ang_tol = max(ang_tol, lean_range(le, not le.parent.is_room_element)[1] + 1.0)
+    if pile is not None or on_wall:  # on a pile (a rolled towel on towels) or on the
+        ang_tol = max(ang_tol, PILE_TILT_DEG)  # container's wall (a bowl in a bowl), as it lands
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
     if pile is not None:
         res["piled"] = 1.0
@@ -520,7 +549,9 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         detail += f", resting on {pile}"
     elif on_wall:
         detail += f", resting on {e.parent.object}'s wall"
-    return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG
+    leans = rel in ("ON", "IN") and any(le.relation == "LEANING_AGAINST"
+                                for le in ctx.scene.pag.edges_of(e.child.object))
+    return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG or leans
 
 
 #: Two extents within this ratio count as one round cross-section; the third must exceed
@@ -733,27 +764,83 @@ def _check_secured(ctx: CheckContext) -> Check:
 
 @check_rule("LEANING_AGAINST")
 def _check_leaning(ctx: CheckContext) -> Check:
-    """The named part touches the parent plane (-1...+2 mm), its named surface faces the
-    parent (normals anti-parallel within the tilt + 2 deg), and the up axis is tilted from
-    vertical by ``angle_deg`` (+-1 deg)."""
+    """The named part touches the parent face *within its extent* (-1...+2 mm; a book beside a
+    box touches nothing), its named surface faces the parent (normals anti-parallel within the
+    tilt + 2 deg), and the up axis is tilted from vertical by ``angle_deg`` (+-1 deg; see
+    :func:`parse3d.measure.reach.lean_range`). A parent label naming several parts (a sofa's
+    back cushions) holds when the child leans on any of them."""
     sB = _resolve_or_fail(ctx)
     if isinstance(sB, Check):
         return sB
+    if not select_parts(ctx.child, ctx.edge.child):
+        return Check(False, {}, f"child has no part {ctx.edge.child.part!r}")
+    faces = [sB]
+    ref, pobj = ctx.edge.parent, ctx.parent
+    if pobj is not None and ref.part is not None and ref.index is None \
+            and not ctx.resolved.get("parent_part"):
+        label = ref.surface or ctx.edge.spec.parent_surface
+        T = pobj.transform(ctx.settled)
+        more = [_world_surface(p.surfaces[label], T) for p in select_parts(pobj, ref)
+                if label in p.surfaces]
+        faces = more or faces
+    best = None
+    if len(faces) > 1:  # faces the child's box comes nowhere near cannot hold it: skip them
+        H = world_points(ctx.child, hull_only=True, settled=ctx.settled)
+        lo, hi = H.min(axis=0) - 0.02, H.max(axis=0) + 0.02
+        near = [f for f in faces if np.all(f.outline_3d().min(axis=0) <= hi)
+                and np.all(f.outline_3d().max(axis=0) >= lo)]
+        faces = near or faces[:1]
+    for f in faces:
+        c = _lean_on(ctx, f)
+        if c.holds:
+            return c
+        d = abs(c.residual.get("distance", np.inf))
+        if best is None or d < best[0]:
+            best = (d, c)
+    return best[1]
+
+
+def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
+    """:func:`_check_leaning` against one face."""
     child, settled = ctx.child, ctx.settled
     parts = select_parts(child, ctx.edge.child)
-    if not parts:
-        return Check(False, {}, f"child has no part {ctx.edge.child.part!r}")
-    gap = float(_plane_dist(world_points(child, settled=settled, parts=parts), sB).min())
-    whole = float(_plane_dist(world_points(child, settled=settled), sB).min())
-    up = child.transform(settled)[:3, :3] @ np.array([0, 0, 1.0]) / child.scale
+    T, slabs = child.transform(settled), face_slabs(sB)
+    near = nearest_in_prism(piece_data(child.asset, parts), T, sB.normal, sB.origin, slabs)
+    if near is None:
+        off = float(_plane_dist(world_points(child, settled=settled, parts=parts), sB).min())
+        return Check(False, {"distance": round(off, 6), "outside_face": 1.0},
+                     f"{ctx.edge.child} is not in front of {ctx.edge.parent} (beside or past "
+                     f"the face's extent)")
+    gap = near[0]
+    if not -PENETRATION_TOL <= gap <= DIST_TOL and ctx.parent is not None \
+            and ctx.edge.parent.part is not None:
+        # past the face's plane, resting on the parent's real surface behind it (a sofa's back
+        # cushion slanted back from the front of its box), or in front of it on what is
+        # mounted on it (an amplifier's grille and knobs): the exact distance decides
+        pp = select_parts(ctx.parent, ctx.edge.parent)
+        Tp = ctx.parent.transform(settled)
+        on, _ = mounted_parts(ctx.parent, pp, sB, Tp)
+        d = pieces_distance(piece_data(child.asset, parts), T,
+                            piece_data(ctx.parent.asset, pp + on), Tp)
+        if d <= DIST_TOL:
+            gap = d
+    # a flat child standing on its front edge to lean (a pillow) has its back as its up axis
+    up_local = np.array([0, -1.0, 0]) if stands_to_lean(child.asset, ctx.scene.pag, child.id) \
+        else np.array([0, 0, 1.0])
+    up = T[:3, :3] @ up_local / child.scale
     tilt = float(np.degrees(angle_between(up, [0, 0, 1.0])))
     face = float(np.degrees(angle_between(_child_normal(child, _child_label(ctx), settled),
                                           -sB.normal)))
-    lo, hi = ctx.param("angle_deg")
+    lo, hi = lean_range(ctx.edge, ctx.parent is not None)
     res = {"distance": round(gap, 6), "angle_deg": round(tilt, 4), "facing_deg": round(face, 4)}
     touches = -PENETRATION_TOL <= gap <= DIST_TOL
     ok = touches and lo - 1.0 <= tilt <= hi + 1.0 and face <= hi + ANGLE_TOL_DEG
     detail = f"{ctx.edge.child} {gap * 1000:.2f} mm from the parent, tilt {tilt:.1f} deg"
+    whole = gap
+    if not touches and gap > DIST_TOL:  # does another part touch instead?
+        whole_near = nearest_in_prism(piece_data(child.asset, child.asset.parts), T, sB.normal,
+                                      sB.origin, slabs)
+        whole = gap if whole_near is None else whole_near[0]
     if not touches and gap > DIST_TOL and whole < gap - DIST_TOL:
         detail += f" (another part touches it; the named part is {1000 * (gap - whole):.0f} mm off)"
     return Check(ok, res, detail)

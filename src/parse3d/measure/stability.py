@@ -43,7 +43,7 @@ from .checks import check_edge, world_points
 from .geometry import asset_geometry, is_round
 
 __all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by", "is_round",
-           "SettledSummary", "summarize_settled"]
+           "SettledSummary", "summarize_settled", "broken_after_settling"]
 
 #: The causes :func:`verify_settled` reports, in the order it reports them per object.
 INSTABILITY_CAUSES = ("fell", "tipped", "left_support", "broke_support")
@@ -263,3 +263,22 @@ def summarize_settled(scene: Scene) -> SettledSummary:
             ot, oh = ot + 1, oh + ok
     return SettledSummary(len(scene.objects), sum(o.placed for o in scene.objects.values()),
                           st, sh, ot, oh, len({i.object_id for i in verify_settled(scene)}))
+
+
+def broken_after_settling(scene: Scene) -> list[str]:
+    """Every relation of a placed child that held after solving and fails on the settled
+    poses, as ``"ON plate2 -> plate1:body (normals off by 10.77 deg)"`` lines, in PAG order;
+    empty for a scene not settled."""
+    if not scene.settled:
+        return []
+    out = []
+    for c in scene.relations:
+        if c.holds is True and c.holds_settled is False:
+            e = scene.pag.relations[c.index]
+            child = scene.objects.get(e.child.object)
+            if child is None or not child.placed:
+                continue
+            res = c.residual_settled or {}
+            what = ", ".join(f"{k} {v:g}" for k, v in res.items())
+            out.append(f"{c.relation} {c.child} -> {c.parent}" + (f" ({what})" if what else ""))
+    return out

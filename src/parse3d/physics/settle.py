@@ -14,10 +14,13 @@ Choices of this implementation (see ``docs/physics.md``):
   no force is applied), so the remaining steps would not change any pose;
 - PhysX runs on the calling thread (``cpu_workers=0``): one core per scene, deterministic.
 
-After the run every object gets its settled pose and, in ``PlacedObject.flags``, ``fell``
-(dropped more than 5 cm), ``tipped`` (its up axis tilted more than 15 degrees),
-``left_support`` (no longer within the contact threshold of the part that supported it) and
-``sank`` (a collision vertex ends more than the contact tolerance below the floor).
+After the run every object gets its settled pose and, in ``PlacedObject.flags``, what the
+settled scene shows, with the definitions of :func:`parse3d.measure.verify_settled`: ``fell``
+(dropped more than 5 cm and off what held it), ``tipped`` (its up axis tilted more than 15
+degrees, its centre of mass 2 cm lower, not round), ``left_support`` (no part of it within the
+contact threshold of any part of its supporter, the contacts' exact geometry, and its support
+relation failing on the settled poses) and ``sank`` (a collision vertex ends more than the
+contact tolerance below the floor).
 
 The simulation runs in a local frame centred on the room (:func:`local_origin`): PhysX is
 single precision, and a room 1 km from the origin must settle as it does at the origin.
@@ -227,9 +230,40 @@ def _left_support(scene: Scene, ids: list[str], threshold: float) -> set[str]:
         wanted[oid] = key
     if not wanted:
         return set()
-    near = touching_parts(scene, [(c, p, part) for c, (p, part) in wanted.items()],
+    # any part of the supporting object (the contacts' pairs), the named element of the room
+    key = {c: (p, part if p == ROOM else None) for c, (p, part) in wanted.items()}
+    near = touching_parts(scene, [(c, p, part) for c, (p, part) in key.items()],
                           threshold=threshold, settled=True)
-    return {c for c, (p, part) in wanted.items() if (c, p, part) not in near}
+    return {c for c, (p, part) in key.items() if (c, p, part) not in near}
+
+
+def _final_flags(scene: Scene, motions: dict, lost: set[str], cfg) -> None:
+    """Make ``fell`` / ``tipped`` / ``left_support`` say what the settled scene shows, with the
+    definitions of :func:`parse3d.measure.verify_settled`: an object turned in place is not
+    ``tipped`` (its centre of mass no lower), nor is a round one (an apple rolls); one that
+    dropped onto a lower part of what held it did not ``fall``; and ``left_support`` needs it
+    touching no part of its supporter (the contacts' geometry) while its support relation
+    fails on the settled poses (a pile, or a child resting on the next part of its support,
+    still holds)."""
+    from ..measure.stability import verify_settled
+
+    holds = {c.index: c.holds_settled for c in scene.relations}
+    index = {id(e): i for i, e in enumerate(scene.pag.relations)}
+    for oid in lost:
+        e = scene.pag.supporter(oid)
+        if e is not None and holds.get(index[id(e)]) is True:
+            motions[oid].flags.remove("left_support")
+            scene.objects[oid].flags.remove("left_support")
+    causes: dict[str, set[str]] = {}
+    for bad in verify_settled(scene, fall_distance=cfg.fall_distance,
+                              tip_angle_deg=cfg.tip_angle_deg):
+        causes.setdefault(bad.object_id, set()).add(bad.cause)
+    for oid, m in motions.items():
+        got = causes.get(oid, set())
+        m.flags = [f for f in ("fell", "tipped") if f in got] + \
+            [f for f in m.flags if f not in ("fell", "tipped")]
+        o = scene.objects[oid]
+        o.flags = [f for f in o.flags if f not in PHYSICS_FLAGS] + m.flags
 
 
 def _recheck_relations(scene: Scene) -> bool:
@@ -349,14 +383,16 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
         if not obj.fixed and _floor_sink(obj) > max(cfg.contact_threshold, SINK_TOLERANCE):
             m.flags.append("sank")
         motions[oid] = m
-    for lost in _left_support(scene, [k for k, m in motions.items() if not m.fixed],
-                              cfg.contact_threshold):
-        motions[lost].flags.append("left_support")
+    lost = _left_support(scene, [k for k, m in motions.items() if not m.fixed],
+                         cfg.contact_threshold)
+    for oid in lost:
+        motions[oid].flags.append("left_support")
     for oid, m in motions.items():
         o = scene.objects[oid]
         o.flags = [f for f in o.flags if f not in PHYSICS_FLAGS] + m.flags
     scene.settled = True
     checked = _recheck_relations(scene)
+    _final_flags(scene, motions, lost, cfg)
     t3 = time.perf_counter()
     report = SettleReport(cfg, n, early, t3 - t0, t1 - t0, t2 - t1, motions, checked)
     scene.timings["settle"] = round(t3 - t0, 4)

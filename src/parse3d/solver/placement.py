@@ -22,7 +22,9 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
+from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
+from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -311,6 +313,8 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
         if e.parent.object == oid and e.relation == "ON" and e.child.object != oid and set(
                 pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
             out.append((e.parent.part, e.parent.index, text, "stack_base"))
+        if e.parent.object == oid and e.relation == "IN" and e.parent.part is None:
+            out.append((None, None, text, "internal"))  # IN the whole object: any inside
         for ref, role in ((e.child, "child"), (e.parent, "parent")):
             if ref.object != oid or ref.part is None:
                 continue
@@ -328,6 +332,10 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
 def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
     for label, idx, text, kind in reqs:
+        if kind == "internal" and label is None:
+            if not asset.internal:
+                return f"{asset.asset_id} holds nothing inside ({text})"
+            continue
         if kind == "stack_base" and label is None:
             if not any(_lies_flat(asset, p) for p in asset.parts):
                 return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "
@@ -687,6 +695,15 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
     if container:
         return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
                           [owner, *pile], own_fp)
+    if support_edge.relation == "ON" and _round_asset(asset):
+        # dropped on another, a round thing touches it at one point and rolls off a flat
+        # plate in settling: as many as fit, then a failure that says how many there are
+        there = [o.id for o in st.scene.objects.values() if o.placed
+                 and o.support_choice is not None and o.support_choice.owner == sup.owner]
+        raise Fail(f"no free space on {sup.name}: it holds {len(there)} object(s) already "
+                   f"({', '.join(there[:6])}{', ...' if len(there) > 6 else ''}), and a round "
+                   f"{asset.category} piled on a flat {owner.category} rolls off (put them IN a "
+                   f"bowl or basket to pile them)")
     bases = [pile[int(k)] for k in rng.permutation(len(pile))[:PILE_BASES]]
     if not bases:
         raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
@@ -788,7 +805,14 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     overhang = False
     base_solid = None
     lift = 0.0
-    if strategy == "constrained":
+    leaned = lean_samples(st, oid, asset, scale, R, h, sup, others, region0, rng,
+                          cfg.max_trials) \
+        if strategy == "constrained" and involves_object(sup, lean) else None
+    if leaned is None and strategy == "constrained" and rel == "IN":
+        leaned = nest_samples(st, oid, sup, asset, scale, R, rng, cfg.max_trials)
+    if leaned is not None:  # leaning on or from an object, or nested (leaning.py, nesting.py)
+        region, samples = leaned
+    elif strategy == "constrained":
         # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
         holes = [RG.convex_footprint(hole) for hole in sup.holes]
         # a stack: ON an object of the same kind (their PAG nodes share a category)
@@ -889,7 +913,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if rel == "ON" and sup.owner != "room":
                 if not overhang:
                     region = _well_inside(region, F, height)
-                elif _roller(F, height):
+                elif _roller(F, height) and not stack:  # a loaf on a loaf: centred below
                     # a roller overhanging the support (a baguette longer than the side table)
                     # keeps its centre of mass ROLL_EDGE widths from the edge
                     w = _widths(F)[0]
@@ -932,7 +956,12 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         seats.sort(key=lambda a: _covered(F, a, centres))
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
+    if strategy == "constrained" and len(samples):
+        # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
+        samples = concentric_first(st, oid, sup, asset, scale, R, samples)
     same = hung = 0
+    # a bowl in a bowl, a cup in a cup: from the parent's rim down onto its inside
+    rise = nest_rise(st, oid, sup) if strategy == "constrained" and rel == "IN" else 0.0
     if overhang and rel == "ON" and not sup.spans and proposal is None and toward is None \
             and strategy == "constrained" and len(samples) \
             and _never_upright(asset, scale, R, s, base_solid):
@@ -956,7 +985,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             if toward is not None and strategy == "constrained":
                 Rt, h = _face(st, toward, R, hull, s, ab, h, drop, others)
             # above the owner's low parts; the drop below brings it onto them or the surface
-            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift) * s.normal
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift + rise) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         if overhang and not _base_supported(asset, scale, Rt, t, s, base_solid,
                                             upright=rel == "ON"):
@@ -970,11 +999,13 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 break
             continue
         dropped = False
-        if rel == "ON" and sup.owner != "room":
+        if (rel == "ON" or rise) and sup.owner != "room":
             # settle onto the parent's actual geometry: a plate on a plate sits in its well
             parent = st.scene.objects[sup.owner]
             d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
                               st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+            if rise and np.isfinite(d):  # nested: rays miss curved walls touching between vertices
+                d = pieces_drop(asset, cand.transform(), parent, -s.normal, d + 5e-3)
             dropped = bool(np.isfinite(d) and d > 2 * EPS)
             if dropped:
                 t = t - (d - EPS) * s.normal
@@ -993,6 +1024,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                     last = "its base would rest on the edge of a low part (centre of mass " \
                            "outside what holds it)"
                     continue
+        if leaned is not None and lean and not lean[0][0].parent.is_room_element:
+            # onto the parent's pieces, not its face's plane (a reclined back cushion)
+            t = lean_slide(st, oid, asset, scale, Rt, t, lean[0])
+            cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         # footprint inside the support polygon: the region guarantees it, except after a TOWARD
         # turn, for rejection samples and proposals
         if not overhang and (Rt is not R or strategy == "rejection"):

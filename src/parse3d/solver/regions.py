@@ -263,6 +263,11 @@ def _contact_line(ctx, e, region):
     ``gap``, ALIGNED_WITH / OPPOSITE_TO with coplanar surfaces, LEANING_AGAINST where the tilted
     child's named part (or, naming none, its extreme point) touches."""
     st, s, rel = ctx.st, ctx.sup.surface, e.relation
+    if rel == "LEANING_AGAINST":  # within the parent face's extent (solver/leaning.py)
+        from .leaning import lean_line
+        got = lean_line(ctx, e, region)
+        if got is not None:
+            return got
     asset, scale, R, sup = ctx.asset, ctx.scale, ctx.R, ctx.sup
     sB, _, _ = parent_surface_world(st, e.parent, e.spec.parent_surface)
     nB = sB.normal

@@ -18,6 +18,7 @@ from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle, rotation_between
 from ..geometry.surfaces import Surface, surface_from_bbox
+from ..measure.reach import STAND, stands_to_lean
 from ..pag.model import Edge
 from ..pag.refs import Ref
 from ..relations import SURFACES
@@ -114,6 +115,8 @@ def _facing(st, asset, o, e):
     rel = e.relation
     sB, _, _ = parent_surface_world(st, e.parent, e.spec.parent_surface)
     nA = contact_normal(e.child, e.spec.child_surface)
+    if rel == "LEANING_AGAINST" and stands_to_lean(asset, st.pag, e.child.object):
+        nA = STAND.T @ nA  # a flat child on its edge: its bottom faces the parent
     sign = 1.0 if rel in ("ALIGNED_WITH", "PARALLEL_TO") else -1.0
     ang = angle_to(o.R0 @ nA, sign * sB.normal, o.n_s)
     if ang is None:
@@ -157,6 +160,8 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
     """
     n_s = sup.surface.normal
     R0 = _base_rotation(support_edge.child.surface or support_edge.spec.child_surface, n_s)
+    if support_edge.relation == "ON" and stands_to_lean(asset, st.pag, oid):
+        R0 = R0 @ STAND  # a flat leaner (a pillow) stands on its front edge
     o = Orientation(R0, n_s)
     if abs(n_s[2]) <= 0.9:  # on a wall: stay upright
         o.phi, o.source = _upright_angle(R0, n_s), "upright"
@@ -182,7 +187,9 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
         e, d = o.lean
         k = np.cross(n_s, d)
         if np.linalg.norm(k) > 1e-6:
-            theta = _lean_angle(asset, scale, R, k, d, e, rng)
+            from .leaning import lean_tilt  # a face of finite extent (an object's)
+            theta = lean_tilt(st, sup, asset, scale, R, k, d, e, rng,
+                              lambda: _lean_angle(asset, scale, R, k, d, e, rng))
             R = axis_angle(k, theta) @ R
             lean = [(e, theta, d)]
     return R, o.toward, lean
@@ -284,8 +291,9 @@ def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.
             best = max(others, key=lambda p: float(np.max(part_points([p]) @ Rt.T @ d)),
                        default=None)
             worst = (reach_all - reach_part, best)
-    if ok:
-        return _pressing(asset, scale, R, k, d, ok, rng)
+    if ok:  # Fail when gravity would stand it up off the parent (solver/leaning.py)
+        from .leaning import pressed
+        return pressed(asset, scale, R, k, d, ok, rng, e)
     # the largest tilt at which it would work, for the message
     fit = [t for t in np.deg2rad(np.linspace(0.0, 45.0, 91))
            if float(np.max(hull @ (axis_angle(k, t) @ R).T @ d))

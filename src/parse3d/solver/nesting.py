@@ -1,0 +1,119 @@
+"""Nesting and stacks of like round things: a plate on a plate, a bowl in a bowl, a cup in a cup.
+
+A round child resting on (or in) a round parent of its own kind goes on the parent's axis first:
+a small plate off-centre in a dinner plate's well rests with one side on the well's slope and
+tips in settling (the kitchen example's side plate ended 10.8 degrees off), a dinner plate
+off-centre on a side plate rests on one side of its rim. Concentric, each rests evenly all round.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..assets.model import Asset
+from ..measure.checks import object_centroid, world_points
+from .config import Fail
+from .geometry import asset_geometry
+from .state import SolveState
+from .support import Support
+
+__all__ = ["concentric_first", "nest_rise", "nest_samples", "pieces_drop", "same_kind"]
+
+def same_kind(st: SolveState, oid: str, sup: Support) -> bool:
+    """Whether the child rests on or in a placed object of its own kind (their PAG nodes share
+    a category)."""
+    if sup.owner == "room" or sup.owner not in st.scene.objects:
+        return False
+    parent = st.scene.objects[sup.owner]
+    return bool(parent.placed and parent.asset is not None
+                and set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates))
+
+
+def nest_rise(st: SolveState, oid: str, sup: Support) -> float:
+    """Metres from an internal surface up to its owner's top, for a child IN an object of its
+    own kind (a bowl in a bowl): it starts there and drops onto the parent's inside, resting on
+    its wall when it is too wide for its floor. 0 otherwise."""
+    if not same_kind(st, oid, sup):
+        return 0.0
+    parent = st.scene.objects[sup.owner]
+    top = float(np.max(world_points(parent, hull_only=True, settled=False)[:, 2]))
+    return max(0.0, top - float(sup.surface.origin[2]))
+
+
+def concentric_first(st: SolveState, oid: str, sup: Support, asset: Asset, scale: float,
+                     R: np.ndarray, samples: np.ndarray) -> np.ndarray:
+    """``samples`` (origins in the support plane) with, first, the one that puts the child's
+    centre of mass on the vertical through its parent's centre, when the child rests on or in
+    an object of its own kind (their PAG nodes share a category): a loaf on a loaf, a book on
+    a book, plates and bowls concentric."""
+    if not same_kind(st, oid, sup):
+        return samples
+    parent = st.scene.objects[sup.owner]
+    s = sup.surface
+    com = (asset_geometry(asset).com * scale) @ R.T
+    d = object_centroid(parent, False) - s.origin - com
+    at = np.array([[float(d @ s.u), float(d @ s.v)]])
+    return np.vstack([at, samples])[:max(len(samples), 1)] if len(samples) else at
+
+
+#: Largest ratio of a nested child's width to its parent's (a bowl in a bowl).
+NEST_WIDER = 1.05
+#: Metres around the parent's axis within which a nested child's later draws fall.
+NEST_JITTER = 0.004
+
+
+def nest_samples(st: SolveState, oid: str, sup: Support, asset: Asset, scale: float,
+                 R: np.ndarray, rng: np.random.Generator, n: int):
+    """``(region, samples)`` for a child IN an object of its own kind (a bowl in a bowl, a cup
+    in a cup): on the parent's axis, then within :data:`NEST_JITTER` of it. It need not fit
+    the parent's floor: it starts at the rim (:func:`nest_rise`) and drops onto the inside,
+    resting on the wall all round when it is wider than the floor. None otherwise."""
+    import shapely
+
+    if not same_kind(st, oid, sup):
+        return None
+    parent = st.scene.objects[sup.owner]
+    mine = float(np.ptp(((asset_geometry(asset).hull * scale) @ R.T)[:, :2], axis=0).max())
+    theirs = float(np.ptp(world_points(parent, hull_only=True, settled=False)[:, :2],
+                          axis=0).max())
+    if mine > NEST_WIDER * theirs:
+        # a bowl wider than the one it sits in rests on its rim, top-heavy: the pair tipped
+        raise Fail(f"no room in {sup.owner}: a {mine:.2f} m wide {asset.category} does not nest "
+                   f"in a {theirs:.2f} m wide one (it would rest on its rim and tip it over)")
+    at = concentric_first(st, oid, sup, asset, scale, R, np.zeros((0, 2)))
+    if not len(at):
+        return None
+    c = at[0]
+    r = NEST_JITTER * np.sqrt(rng.uniform(0, 1, max(n - 1, 0)))
+    a = rng.uniform(0, 2 * np.pi, len(r))
+    samples = np.vstack([c, c + np.c_[r * np.cos(a), r * np.sin(a)]])
+    return shapely.Point(c).buffer(NEST_JITTER), samples
+
+
+def pieces_drop(asset: Asset, T: np.ndarray, parent, down: np.ndarray, upper: float,
+                tol: float = 2.5e-4) -> float:
+    """How far the child (asset at the 4x4 ``T``) can move along ``down`` before its convex
+    collision pieces touch the parent's (what settling simulates; a bowl's inside is a ring of
+    pieces standing a little proud of its mesh): bisected to ``tol``; ``upper`` when they do
+    not touch even there, 0 when they already do."""
+    from ..measure.reach import piece_data, pieces_distance
+
+    mine = piece_data(asset, asset.parts)
+    theirs = piece_data(parent.asset, parent.asset.parts)
+    Tp = parent.transform(False)
+    d0 = np.asarray(down, float) / np.linalg.norm(down)
+
+    def hits(shift: float) -> bool:
+        Ts = np.array(T, float)
+        Ts[:3, 3] += shift * d0
+        return pieces_distance(mine, Ts, theirs, Tp, limit=1e-3) <= 0.0
+
+    if not hits(upper):
+        return float(upper)
+    if hits(0.0):
+        return 0.0
+    lo, hi = 0.0, float(upper)
+    while hi - lo > tol:
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if hits(mid) else (mid, hi)
+    return lo
