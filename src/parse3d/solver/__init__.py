@@ -15,14 +15,25 @@ from collections.abc import Callable
 
 from ..errors import InfeasibleError
 from ..measure.checks import check_relations
+from ..pag.canonical import canonical_document
 from ..pag.model import PAG
 from ..scene.model import Scene
+from ..words import Resolver
 from .config import SEARCHES, STRATEGIES, SolverConfig
 from .library import AssetLibrary
 from .search import SolveProgress, solve_scene
 
 __all__ = ["solve", "SolverConfig", "SolveProgress", "AssetLibrary", "check_relations",
            "STRATEGIES", "SEARCHES"]
+
+
+def canonical_pag(pag: PAG, vocabulary) -> PAG:
+    """``pag`` with its words resolved (:func:`parse3d.pag.canonical.canonical_document`): a
+    hypernym becomes the list of its members the solver draws among, a synonym its category,
+    a part word its label. The same object when every word already is one."""
+    data = pag.to_dict()
+    out = canonical_document(data, Resolver(vocabulary))
+    return pag if out is data else PAG.from_dict(out)
 
 
 def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
@@ -36,7 +47,8 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
     ----------
     pag : PAG
         The graph (validated first, against the asset registry's vocabulary, unless
-        ``validate=False``).
+        ``validate=False``). Its words are resolved first (:func:`canonical_pag`): the scene
+        holds the resolved graph, and each object's category is the one drawn.
     seed : int
         Scene seed; the same PAG, seed and library give the same scene.
     library : AssetLibrary, optional
@@ -66,10 +78,12 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
     InfeasibleError
         With ``strict=True``, when some object could not be placed.
     """
-    if validate:
-        from ..assets.registry import vocabulary
+    from ..assets.registry import vocabulary
 
-        pag.validate(vocabulary=vocabulary())
+    vocab = vocabulary()
+    if validate:
+        pag.validate(vocabulary=vocab)
+    pag = canonical_pag(pag, vocab)
     scene = solve_scene(pag, seed=seed, library=library, config=config, progress=progress,
                         deadline=deadline, proposals=proposals)
     if strict and not scene.ok:
