@@ -429,3 +429,20 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("cord", "cord", S.tube([(-L / 2 + 0.002, 0, h / 2), (-L / 2 - 0.05, 0.0, 0.005), (-L / 2 - 0.08, 0.04, 0.005)],
                                                 0.004, sections=6), black()))
     return out
+
+
+@register("toilet_seat_cover_dispenser", parts=("housing", "slot"), extra_parts=("cover_stack", "window"),
+          size_range=(0.3, 0.48), density=700, variants=("steel", "plastic", "recessed"),
+          placement="wall")
+def toilet_seat_cover_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, h = rng.uniform(0.38, 0.44), rng.uniform(0.26, 0.32)
+    d = 0.05 if variant != "recessed" else 0.02
+    mat = M.metal(rng) if variant != "plastic" else white(rng, "plastic")
+    out = [make_part("housing", "housing", S.box((w, d, h), center=(0, d / 2, h / 2), bevel=0.004), mat),
+           make_part("slot", "slot", S.box((w * 0.5, 0.004, 0.08), center=(0, d + 0.001, h * 0.4)), black()),
+           make_part("cover_stack", "cover_stack", S.box((w * 0.45, 0.003, 0.07), center=(0, d + 0.0045, h * 0.4)),
+                     white(rng, "paper"))]
+    if variant == "plastic":
+        out.append(make_part("window", "window", S.box((0.06, 0.003, 0.03), center=(w * 0.3, d + 0.0015, h * 0.8)),
+                             M.glass(rng)))
+    return out
