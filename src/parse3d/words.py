@@ -393,9 +393,10 @@ def _edits(a: str, b: str) -> int:
 
 def is_typo(word: str, target: str, *, whole: bool = True) -> bool:
     """``word`` is a misspelling of ``target`` (with ``whole=False``, of one of its words): at
-    most one edit, two for words of 8 letters or more."""
+    most one edit, two for words of 10 letters or more (``pegboard`` is no misspelling of
+    ``keyboard``)."""
     a = normalize(word)
-    limit = 1 if len(a) < 8 else 2
+    limit = 1 if len(a) < 10 else 2
     b = normalize(target)
     return any(0 < _edits(a, t) <= limit for t in ({b} if whole else set(b.split("_")))
                if abs(len(t) - len(a)) <= limit)
