@@ -224,3 +224,12 @@ def test_scannet200_object_labels_resolve(resolver):
     objects = [x for x in labels if x not in ref["excluded"]]
     resolved = [x for x in objects if resolver.categories_for(x)]
     assert len(resolved) / len(objects) >= 0.95, sorted(set(objects) - set(resolved))
+
+
+def test_the_vlm_scorer_reads_the_same_synonyms():
+    from parse3d.vlm.vocab import normalize_object
+
+    assert normalize_object("The Photocopiers") == "copier"
+    assert normalize_object("couches") == "sofa"
+    assert normalize_object("chair") == "dining chair"  # the benchmark's own choice first
+    assert normalize_object("zebra") == "zebra"

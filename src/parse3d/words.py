@@ -38,7 +38,7 @@ from pathlib import Path
 from typing import Any
 
 __all__ = ["VOCABULARY_FORMAT", "Lexicon", "lexicon", "normalize", "Resolver", "PartWord",
-           "PartResolution", "suggest", "ranked", "reference_labels", "use_library",
+           "PartResolution", "suggest", "ranked", "reference_labels", "singulars", "is_typo", "use_library",
            "library_vocabulary"]
 
 VOCABULARY_FORMAT = "parse3d-vocabulary/1"
@@ -52,7 +52,7 @@ def normalize(word: str) -> str:
     return _SEP.sub("_", str(word).strip().lower()).strip("_")
 
 
-def _singulars(w: str) -> list[str]:
+def singulars(w: str) -> list[str]:
     """Singular candidates of a (normalised) plural, most likely first; the last word of a
     compound is the one made plural (``coffee_tables``)."""
     head, _, last = w.rpartition("_")
@@ -225,7 +225,7 @@ class Resolver:
     def categories_for(self, word: str) -> tuple[str, ...] | None:
         """The categories a word names (several for a hypernym), or None when unknown."""
         w = normalize(word)
-        for form in [w, *_singulars(w)]:
+        for form in [w, *singulars(w)]:
             got = self._resolve(form, 0)
             if got:
                 return got
@@ -268,7 +268,7 @@ class Resolver:
         labels = self.labels(category)
         have = set(labels)
         w = normalize(word)
-        for form in [w, *_singulars(w)]:
+        for form in [w, *singulars(w)]:
             if form in have:
                 return PartResolution(form)
             pw = self.part_word(category, form)
