@@ -101,9 +101,9 @@ def compare_release(rev: str, seeds: int) -> None:
             ("articulated categories", lambda d: str(d["articulated"]), ""),
             ("generation ms per asset, median", lambda d: f"{d['generation_ms_median']:.1f}",
              "goal <= 40")]
-    print(f"{'measure':<36}{rev:>14}{'now':>14}   ({seeds} assets per category)")
+    print(f"{'measure':<36}{rev:>16}{'now':>16}   ({seeds} assets per category)")
     for name, fmt, goal in rows:
-        print(f"{name:<36}{fmt(base):>14}{fmt(now):>14}   {goal}")
+        print(f"{name:<36}{fmt(base):>16}{fmt(now):>16}   {goal}")
 
 
 def _handle(req: dict) -> dict:

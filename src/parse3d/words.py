@@ -1,6 +1,6 @@
 """The words people write for categories and parts, resolved against the asset library.
 
-One data file, ``parse3d/data/vocabulary.yaml`` (``format: parse3d-vocabulary/1``), holds the
+One data file, ``parse3d/data/vocabulary.json`` (``format: parse3d-vocabulary/1``), holds the
 synonyms (``couch`` -> ``sofa``), hypernyms (``chair`` -> any chair category) and part words
 per category (a table's ``top`` is its ``tabletop``; a book's ``cover@front`` is its front
 cover). :class:`Resolver` applies it over a category vocabulary (what the asset registry or its
@@ -150,11 +150,10 @@ class Lexicon:
 
 @functools.cache
 def lexicon() -> Lexicon:
-    """The package's vocabulary file, read once."""
-    import yaml
-
-    text = resources.files("parse3d").joinpath("data/vocabulary.yaml").read_text("utf-8")
-    return Lexicon.from_dict(yaml.safe_load(text), where="parse3d/data/vocabulary.yaml")
+    """The package's vocabulary file, read once (JSON: no YAML parser on the way of
+    ``parse3d validate``)."""
+    text = resources.files("parse3d").joinpath("data/vocabulary.json").read_text("utf-8")
+    return Lexicon.from_dict(json.loads(text), where="parse3d/data/vocabulary.json")
 
 
 @functools.cache

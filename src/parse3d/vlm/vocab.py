@@ -103,7 +103,7 @@ RELATION_SYNONYMS: MappingProxyType[str, str] = MappingProxyType({
 
 #: Object names a model may use -> the benchmark's label (the category with spaces). Checked
 #: first (it settles what a hypernym such as "chair" counts as in the benchmark); then the
-#: synonyms of the package's vocabulary file (``parse3d/data/vocabulary.yaml``).
+#: synonyms of the package's vocabulary file (``parse3d/data/vocabulary.json``).
 OBJECT_SYNONYMS: MappingProxyType[str, str] = MappingProxyType({
     "couch": "sofa", "settee": "sofa", "television": "tv", "tv set": "tv",
     "bedside table": "nightstand", "night stand": "nightstand", "bedside cabinet": "nightstand",
