@@ -28,6 +28,14 @@ MOTIFS = {
     "bedroom_shoes_and_toys": ("bedroom", "{wall: wall_0}", "teddy_bear"),
     "storage_luggage_store": ("storage", "{wall: wall_0}"),
     "hotel_wardrobe_clothes": ("hotel", "{wall: wall_0}", "hanging_clothes"),
+    # the motifs of the categories added for the words people write (ScanNet200's labels)
+    "kitchen_appliance_cart": ("kitchen", "{wall: wall_0}"),
+    "bathroom_accessories": ("bathroom", "{wall: wall_0}"),
+    "office_equipment_corner": ("office", "{wall: wall_0}"),
+    "study_desk_gear": ("study", "{wall: wall_0}"),
+    "storage_workshop": ("storage", "{wall: wall_0}"),
+    "dormitory_personal": ("dormitory", "{wall: wall_0}"),
+    "utility_room_extras": ("laundry", "{wall: wall_0}"),
 }
 
 

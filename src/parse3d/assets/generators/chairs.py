@@ -121,20 +121,21 @@ def stool(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("bench", parts=("seat", "leg"), extra_parts=("slat", "back", "armrest", "stretcher",
-                                                       "cushion"),
+@register("bench", parts=("seat", "leg"), extra_parts=("rail", "back", "armrest", "frame"),
           size_range=(0.9, 1.9), density=550, variants=("slatted", "park", "upholstered"))
 def bench(rng: np.random.Generator, variant: str) -> list[Part]:
+    """The seat is what one sits on: the slats of a slatted or park bench (on two rails), the
+    padded top of an upholstered one (on its frame)."""
     w, d = rng.uniform(1.0, 1.8), rng.uniform(0.32, 0.45)
     hs = rng.uniform(0.42, 0.47)
     wood, metal = M.wood(rng), M.metal(rng)
     out: list[Part] = []
     t = 0.03
     if variant == "upholstered":
-        out.append(make_part("seat", "seat", S.box((w, d, 0.04), center=(0, 0, hs - 0.1),
-                                                   bevel=0.004), wood))
-        out.append(make_part("cushion", "cushion", S.box((w - 0.02, d - 0.02, 0.06),
-                                                         center=(0, 0, hs - 0.03), bevel=0.015),
+        out.append(make_part("frame", "frame", S.box((w, d, 0.04), center=(0, 0, hs - 0.1),
+                                                     bevel=0.004), wood))
+        out.append(make_part("seat", "seat", S.box((w - 0.02, d - 0.02, 0.06),
+                                                   center=(0, 0, hs - 0.03), bevel=0.015),
                              M.fabric(rng)))
         out += legs4("leg", "leg", w=w, d=d, h=hs - 0.12, size=0.045, mat=wood, inset=0.03)
         return out
@@ -143,12 +144,12 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     sw = (d - gap * (n - 1)) / n
     for k in range(n):
         y = -d / 2 + sw / 2 + k * (sw + gap)
-        out.append(make_part(f"slat_{k}", "slat", S.box((w, sw, t), center=(0, y, hs - t / 2),
+        out.append(make_part(f"seat_{k}", "seat", S.box((w, sw, t), center=(0, y, hs - t / 2),
                                                         bevel=0.003), wood))
-    # the seat is the frame under the slats: two rails along the length
+    # two rails along the length carry the slats
     rail = [S.box((w - 0.1, 0.03, 0.05), center=(0, sy * (d / 2 - 0.05), hs - t - 0.025))
             for sy in (-1, 1)]
-    out.append(make_part("seat", "seat", rail, wood if variant == "slatted" else metal))
+    out.append(make_part("rail", "rail", rail, wood if variant == "slatted" else metal))
     legmat = wood if variant == "slatted" else metal
     out += legs4("leg", "leg", w=w - 0.1, d=d, h=hs - t - 0.05, size=0.045, mat=legmat, inset=0.0)
     if variant == "park":

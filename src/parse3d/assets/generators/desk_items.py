@@ -271,14 +271,13 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
     cap_l = 0.02
     mat = M.plastic(rng)
     x0 = -L / 2
-    body = S.hull(np.vstack([np.c_[np.full(12, x0 + cap_l), r * np.cos(np.linspace(0, 2 * np.pi, 12, endpoint=False)),
-                                   r + r * np.sin(np.linspace(0, 2 * np.pi, 12, endpoint=False))],
-                             [[L / 2 - 0.01, -r * 1.4, r * 0.9], [L / 2 - 0.01, r * 1.4, r * 0.9],
-                              [L / 2 - 0.01, -r * 1.4, r * 1.1], [L / 2 - 0.01, r * 1.4, r * 1.1]]]))
+    # lying flat: a squeezed, rounded slab from the cap to the crimped end
+    body = S.box((L - cap_l - 0.01, r * 2.4, r * 1.6), center=(x0 + cap_l + (L - cap_l - 0.01) / 2, 0, r * 0.8),
+                 bevel=r * 0.5)
     return [make_part("body", "body", body, mat),
-            make_part("cap", "cap", S.cylinder(r * 0.6, cap_l, center=(x0 + cap_l / 2, 0, r), axis=(1, 0, 0),
+            make_part("cap", "cap", S.cylinder(r * 0.6, cap_l, center=(x0 + cap_l / 2, 0, r * 0.8), axis=(1, 0, 0),
                                                sections=16), white(rng, "plastic")),
-            make_part("crimp", "crimp", S.box((0.01, r * 2.8, r * 0.25), center=(L / 2 - 0.005, 0, r)), mat)]
+            make_part("crimp", "crimp", S.box((0.01, r * 2.8, r * 0.25), center=(L / 2 - 0.005, 0, r * 0.8)), mat)]
 
 
 @register("ball", parts=("body",), extra_parts=("seam", "valve"),

@@ -306,9 +306,9 @@ def cart(rng: np.random.Generator, variant: str) -> list[Part]:
     out: list[Part] = []
     for k in range(n):
         z = ch + 0.03 + (h - ch - 0.06) * k / (n - 1)
-        out.append(make_part(f"shelf_{k}", "shelf", [S.box((w, d, 0.02), center=(0, 0, z)),
-                                                     S.box((w, 0.01, 0.04), center=(0, d / 2 - 0.005, z + 0.03)),
-                                                     S.box((w, 0.01, 0.04), center=(0, -d / 2 + 0.005, z + 0.03))], mat))
+        out.append(make_part(f"shelf_{k}", "shelf", S.box((w, d, 0.02), center=(0, 0, z)), mat))
+        out.append(make_part(f"rail_{k}", "rail", [S.box((w, 0.01, 0.04), center=(0, sy * (d / 2 - 0.005), z + 0.03))
+                                                  for sy in (-1, 1)], mat))
     out.append(make_part("post", "post", [S.cylinder(0.015, h - ch, center=(sx * (w / 2 - 0.02), sy * (d / 2 - 0.02), ch + (h - ch) / 2),
                                                      sections=12) for sx in (-1, 1) for sy in (-1, 1)], M.metal(rng)))
     out.append(make_part("caster", "caster", [S.cylinder(0.045, 0.03, center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), 0.045),
