@@ -233,3 +233,13 @@ def test_the_vlm_scorer_reads_the_same_synonyms():
     assert normalize_object("couches") == "sofa"
     assert normalize_object("chair") == "dining chair"  # the benchmark's own choice first
     assert normalize_object("zebra") == "zebra"
+
+
+def test_the_foreign_rooms_use_only_words_that_resolve():
+    """Rooms written by outsiders (tests/data/foreign) validate: every category and part word
+    they use names something the library has."""
+    rooms = sorted((Path(__file__).parent / "data" / "foreign").glob("*.json"))
+    assert len(rooms) >= 20
+    results = validate_files(rooms, vocabulary=_cli_vocabulary())
+    bad = [f"{p}" for _, probs in results for p in probs]
+    assert not bad, "\n".join(bad)

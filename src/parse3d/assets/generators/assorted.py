@@ -258,7 +258,7 @@ def flowers(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.3, 0.5)
     green = M.plant(rng)
     stems, blooms = [], []
-    for k in range(n):
+    for _ in range(n):
         a = rng.uniform(-0.35, 0.35)
         y = rng.uniform(-0.03, 0.03) if n > 1 else 0.0
         end = np.array([-L / 2 + L, y + np.sin(a) * 0.05, 0.02])
@@ -711,7 +711,7 @@ def garment_bag(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 # --------------------------------------------------------------------- lights, signs and decor
-@register("lantern", parts=("body", "top"), extra_parts=("handle", "base", "tassel", "candle"), size_range=(0.2, 0.6),
+@register("lantern", parts=("body", "top"), extra_parts=("handle", "base", "tassel", "candle", "cord"), size_range=(0.2, 0.9),
           density=300, variants=("paper", "hurricane", "chinese"), placement="ceiling")
 def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.1, 0.18) if variant != "hurricane" else rng.uniform(0.07, 0.09)
@@ -727,6 +727,8 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
            _c("top", "top", r * 0.45, 0.02, (0, 0, base_h + h + 0.01), black("wood")),
            make_part("handle", "handle", S.tube([(-r * 0.3, 0, base_h + h + 0.02), (0, 0, base_h + h + 0.08), (r * 0.3, 0, base_h + h + 0.02)],
                                                 0.003), M.metal(rng))]
+    if variant != "hurricane":  # paper lanterns hang by a cord from their top
+        out.append(_c("cord", "cord", 0.003, 0.25, (0, 0, base_h + h + 0.08 + 0.125), black("fabric"), sections=6))
     if variant == "chinese":
         out[0] = _c("base", "base", r * 0.6, base_h, (0, 0, 0.06 + base_h / 2), black("wood"))
         out.append(_c("tassel", "tassel", 0.012, 0.06, (0, 0, 0.03), M.solid((0.9, 0.7, 0.1), "fabric", 0.8), sections=8))
@@ -876,4 +878,231 @@ def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         out.append(make_part("log", "log", [S.cylinder(0.05, ow * 0.7, center=(0, -d * 0.1 + k * 0.06, hearth_h + 0.05 + k * 0.04), axis=(1, 0, 0))
                                             for k in range(2)], M.wood(rng)))
+    return out
+
+
+# ------------------------------------------------------------------- bar, shop and game room
+@register("beer_tap", parts=("tower", "handle"), extra_parts=("spout", "drip_tray", "base"), size_range=(0.3, 0.65),
+          density=3000, variants=("single", "double", "triple"), placement="surface")
+def beer_tap(rng: np.random.Generator, variant: str) -> list[Part]:
+    n = {"single": 1, "double": 2, "triple": 3}[variant]
+    w = 0.12 + 0.12 * (n - 1)
+    h = rng.uniform(0.4, 0.5)
+    steel = M.metal(rng)
+    out = [_b("base", "base", (w, 0.1, 0.02), (0, 0, 0.01), steel),
+           _b("tower", "tower", (w, 0.08, h - 0.1), (0, 0, 0.02 + (h - 0.1) / 2), steel, bevel=0.01),
+           _b("drip_tray", "drip_tray", (w + 0.05, 0.12, 0.02), (0, 0.11, 0.01), steel)]
+    for k in range(n):
+        x = (k - (n - 1) / 2) * 0.12
+        out.append(_c(f"spout_{k}", "spout", 0.008, 0.06, (x, 0.06, h - 0.18), steel, axis=(0, 1, 0), sections=10))
+        out.append(_c(f"handle_{k}", "handle", 0.015, 0.12, (x, 0.07, h - 0.1 + 0.06), black(), sections=10))
+    return out
+
+
+@register("bar_mat", parts=("mat",), extra_parts=("rib", "rim"), size_range=(0.3, 0.9), density=1200,
+          variants=("rubber", "service", "runner"), placement="surface")
+def bar_mat(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = {"rubber": rng.uniform(0.3, 0.45), "service": rng.uniform(0.45, 0.6), "runner": rng.uniform(0.6, 0.85)}[variant]
+    w = rng.uniform(0.08, 0.15) if variant == "runner" else rng.uniform(0.2, 0.3)
+    rubber = black("rubber")
+    return [_b("mat", "mat", (L, w, 0.004), (0, 0, 0.002), rubber),
+            make_part("rim", "rim", [S.box((L, 0.008, 0.01), center=(0, sy * (w / 2 - 0.004), 0.005)) for sy in (-1, 1)], rubber),
+            make_part("rib", "rib", [S.box((0.004, w - 0.02, 0.006), center=(x, 0, 0.007)) for x in np.linspace(-L / 2 + 0.02, L / 2 - 0.02, 8)],
+                      rubber)]
+
+
+@register("cash_register", parts=("body", "drawer"), extra_parts=("display", "keypad", "printer", "handle"),
+          size_range=(0.3, 0.5), density=700, variants=("classic", "pos_terminal", "drawer_only"), placement="surface")
+def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d = rng.uniform(0.36, 0.44), rng.uniform(0.38, 0.44)
+    dh = 0.1
+    mat = black() if variant != "classic" else white(rng, "plastic")
+    out: list[Part | Joint] = [_b("body", "body", (w, d - 0.02, dh), (0, -0.01, dh / 2), mat),
+                               _b("drawer", "drawer", (w * 0.9, d * 0.8, dh * 0.7), (0, d / 2 - d * 0.4, dh * 0.45), mat),
+                               _b("handle", "handle", (0.08, 0.01, 0.015), (0, d / 2 + 0.005, dh * 0.6), M.metal(rng))]
+    out.append(prismatic_joint("drawer_slide", "body", "drawer", d * 0.5))
+    out.append(Joint("handle_mount", "prismatic", "drawer", "handle", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    if variant != "drawer_only":
+        out.append(_b("keypad", "keypad", (w * 0.6, d * 0.4, 0.05), (0, -d * 0.1, dh + 0.025), mat, bevel=0.005))
+        out.append(_b("display", "display", (w * 0.35, 0.02, 0.12), (0, -d * 0.35, dh + 0.06 + 0.05), black("glass")))
+        out.append(_b("printer", "printer", (0.1, 0.1, 0.06), (w * 0.32, -d * 0.2, dh + 0.03), mat))
+    return out
+
+
+def prismatic_joint(name: str, parent: str, child: str, travel: float) -> Joint:
+    return Joint(name, "prismatic", parent, child, (0.0, 1.0, 0.0), (0.0, 0.0, 0.0), (0.0, float(travel)))
+
+
+@register("pool_ball", parts=("ball",), extra_parts=("spot",), size_range=(0.05, 0.062), density=1700,
+          variants=("solid", "stripe", "cue"), placement="surface")
+def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = 0.0286
+    col = (0.95, 0.95, 0.92) if variant == "cue" else M.jitter(rng, [(0.9, 0.75, 0.1), (0.1, 0.2, 0.7), (0.8, 0.1, 0.1),
+                                                                     (0.4, 0.1, 0.5), (0.9, 0.4, 0.1), (0.1, 0.5, 0.2)][int(rng.integers(6))], 0.02)[:3]
+    out = [make_part("ball", "ball", S.ellipsoid((r, r, r), center=(0, 0, r), subdivisions=3), M.solid(col, "plastic", 0.1))]
+    if variant != "cue":
+        out.append(_c("spot", "spot", r * 0.35, 0.002, (0, 0, 2 * r - 0.0005), white(rng, "plastic"), sections=16))
+    return out
+
+
+@register("pool_cue", parts=("shaft", "butt"), extra_parts=("tip", "ferrule", "wrap"), size_range=(1.2, 1.5), density=700,
+          variants=("maple", "two_piece", "short"), placement="floor")
+def pool_cue(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = rng.uniform(1.4, 1.47) if variant != "short" else rng.uniform(1.22, 1.3)
+    r0 = 0.015
+    wood = M.wood(rng)
+    x0 = -L / 2
+    return [make_part("butt", "butt", S.frustum(r0, r0 * 0.8, L * 0.45, center=(x0, 0, r0), axis=(1, 0, 0), sections=12),
+                      M.solid(M.jitter(rng, (0.3, 0.15, 0.08), 0.03), "wood", 0.4)),
+            make_part("wrap", "wrap", S.frustum(r0 * 1.02, r0 * 0.9, L * 0.2, center=(x0 + L * 0.05, 0, r0), axis=(1, 0, 0), sections=12),
+                      black("leather")),
+            make_part("shaft", "shaft", S.frustum(r0 * 0.8, r0 * 0.45, L * 0.53, center=(x0 + L * 0.45, 0, r0), axis=(1, 0, 0), sections=12), wood),
+            _c("ferrule", "ferrule", r0 * 0.45, 0.02, (x0 + L * 0.98 - 0.002, 0, r0), white(rng, "plastic"), axis=(1, 0, 0), sections=10),
+            _c("tip", "tip", r0 * 0.44, 0.01, (x0 + L - 0.005, 0, r0), M.solid((0.2, 0.3, 0.6), "leather", 0.9), axis=(1, 0, 0), sections=10)]
+
+
+@register("chalk", parts=("block",), extra_parts=("cup",), size_range=(0.02, 0.1), density=1500,
+          variants=("cue_chalk", "stick", "box"), placement="surface")
+def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
+    if variant == "stick":
+        return [_c("block", "block", 0.005, 0.08, (0, 0, 0.005), white(rng, "stone"), axis=(1, 0, 0), sections=8),
+                _c("cup", "cup", 0.0055, 0.015, (-0.035, 0, 0.005), M.paper(rng), axis=(1, 0, 0), sections=8)]
+    if variant == "box":
+        return [_b("cup", "cup", (0.09, 0.06, 0.04), (0, 0, 0.02), M.paper(rng)),
+                _b("block", "block", (0.08, 0.05, 0.012), (0, 0, 0.046), white(rng, "stone"))]
+    col = M.solid(M.jitter(rng, (0.2, 0.4, 0.8), 0.05), "stone", 0.9)
+    return [_b("block", "block", (0.022, 0.022, 0.02), (0, 0, 0.01), col),
+            _b("cup", "cup", (0.024, 0.024, 0.003), (0, 0, 0.0215), M.paper(rng))]
+
+
+@register("cue_rack", parts=("frame", "holder"), extra_parts=("shelf", "ball_tray", "cue"), size_range=(0.6, 1.55),
+          density=700, variants=("wall", "floor", "corner"), placement="wall")
+def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.55, 0.8) if variant != "corner" else 0.5
+    h = rng.uniform(0.7, 0.9) if variant != "floor" else rng.uniform(1.3, 1.5)
+    wood = M.wood(rng)
+    out = [make_part("frame", "frame", [S.box((0.03, 0.06, h), center=(sx * (w / 2 - 0.015), 0.03, h / 2)) for sx in (-1, 1)], wood),
+           make_part("holder", "holder", [S.box((w, 0.08, 0.025), center=(0, 0.04, z)) for z in (h * 0.15, h * 0.85)], wood),
+           make_part("shelf", "shelf", S.box((w, 0.12, 0.02), center=(0, 0.06, h * 0.45)), wood)]
+    if variant != "corner":
+        out.append(make_part("cue", "cue", [S.cylinder(0.012, h * 0.85, center=(x, 0.05, h * 0.46)) for x in np.linspace(-w * 0.35, w * 0.35, 5)],
+                             M.wood(rng)))
+    return out
+
+
+@register("game_console", parts=("body",), extra_parts=("disc_slot", "button", "stand", "vent"), size_range=(0.18, 0.42),
+          density=600, variants=("tower", "flat", "handheld_dock"), placement="surface")
+def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = black() if rng.uniform() < 0.6 else white(rng, "plastic")
+    if variant == "tower":
+        w, d, h = rng.uniform(0.09, 0.11), rng.uniform(0.25, 0.3), rng.uniform(0.3, 0.38)
+        return [_b("body", "body", (w, d, h - 0.01), (0, 0, 0.01 + (h - 0.01) / 2), mat, bevel=0.01),
+                _b("stand", "stand", (w * 1.6, d * 0.5, 0.01), (0, 0, 0.005), mat),
+                _b("disc_slot", "disc_slot", (0.004, 0.002, 0.13), (0, d / 2 + 0.001, h * 0.6), black()),
+                _c("button", "button", 0.006, 0.003, (0, d / 2 + 0.0015, h * 0.2), white(rng, "plastic"), axis=(0, 1, 0), sections=10)]
+    w, d, h = rng.uniform(0.26, 0.33), rng.uniform(0.2, 0.27), rng.uniform(0.04, 0.07)
+    out = [_b("body", "body", (w, d, h), (0, 0, h / 2), mat, bevel=0.006),
+           _b("vent", "vent", (w * 0.6, 0.004, h * 0.5), (0, -d / 2 - 0.001, h / 2), black()),
+           _c("button", "button", 0.005, 0.003, (w * 0.4, d / 2 + 0.0015, h / 2), white(rng, "plastic"), axis=(0, 1, 0), sections=10)]
+    if variant == "handheld_dock":
+        out[0] = _b("body", "body", (w * 0.6, d * 0.4, h * 1.6), (0, 0, h * 0.8), mat, bevel=0.006)
+        out[1] = _b("vent", "vent", (w * 0.4, 0.004, h * 0.6), (0, -d * 0.2 - 0.001, h * 0.8), black())
+        out[2] = _c("button", "button", 0.005, 0.003, (w * 0.2, d * 0.2 + 0.0015, h * 0.8), white(rng, "plastic"), axis=(0, 1, 0), sections=10)
+    return out
+
+
+@register("game_controller", parts=("body", "grip"), extra_parts=("stick", "button", "trigger"), size_range=(0.1, 0.2),
+          density=600, variants=("gamepad", "joystick", "wheel_remote"), placement="surface")
+def game_controller(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = black() if rng.uniform() < 0.6 else white(rng, "plastic")
+    if variant == "wheel_remote":
+        return [_b("body", "body", (0.15, 0.036, 0.03), (0, 0, 0.015), mat, bevel=0.008),
+                make_part("grip", "grip", [S.box((0.03, 0.038, 0.032), center=(sx * 0.065, 0, 0.016)) for sx in (-1, 1)], black("rubber")),
+                make_part("button", "button", [S.cylinder(0.005, 0.004, center=(x, 0, 0.032)) for x in (-0.03, 0.0, 0.03)], _colour(rng))]
+    w = rng.uniform(0.14, 0.16)
+    out = [_b("body", "body", (w * 0.6, 0.06, 0.03), (0, 0.01, 0.018), mat, bevel=0.01),
+           make_part("grip", "grip", [S.ellipsoid((0.025, 0.045, 0.02), center=(sx * w * 0.35, -0.01, 0.02)) for sx in (-1, 1)], mat),
+           make_part("stick", "stick", [S.cylinder(0.008, 0.012, center=(sx * w * 0.15, 0.0, 0.04)) for sx in (-1, 1)], black("rubber")),
+           make_part("button", "button", [S.cylinder(0.005, 0.004, center=(w * 0.22 + dx, 0.02 + dy, 0.034))
+                                          for dx, dy in ((0.01, 0), (-0.01, 0), (0, 0.01), (0, -0.01))], _colour(rng))]
+    if variant == "joystick":
+        out[2] = make_part("stick", "stick", S.cylinder(0.012, 0.12, center=(0, 0.01, 0.09)), black("rubber"))
+    return out
+
+
+# ----------------------------------------------------------------------------- home and pets
+@register("beanbag", parts=("body",), extra_parts=("seam", "handle"), size_range=(0.6, 1.3), density=60,
+          variants=("classic", "lounger", "pouf"), placement="floor")
+def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
+    fab = M.fabric(rng)
+    if variant == "lounger":
+        L, w, h = rng.uniform(1.0, 1.25), rng.uniform(0.7, 0.85), rng.uniform(0.45, 0.6)
+        body = S.hull(np.vstack([S.ellipsoid((L / 2, w / 2, h * 0.35), center=(0, 0, h * 0.35)).mesh.vertices,
+                                 S.ellipsoid((L * 0.15, w * 0.45, h * 0.5), center=(-L * 0.3, 0, h * 0.5)).mesh.vertices]))
+        seam_z = h * 0.35
+    else:
+        r = rng.uniform(0.35, 0.5) if variant == "classic" else rng.uniform(0.3, 0.35)
+        h = r * (1.3 if variant == "classic" else 1.0)
+        body = S.lathe([(r * 0.8, 0.0), (r, h * 0.35), (r * 0.85, h * 0.75), (r * 0.3, h)])
+        seam_z = h * 0.35
+        L = 2 * r
+    out = [make_part("body", "body", body, fab),
+           _c("handle", "handle", 0.02, 0.06, (0, 0, 0.0), fab, sections=8)]
+    out[1] = _b("handle", "handle", (0.1, 0.02, 0.02), (0, 0, seam_z + 0.02), fab) if variant == "pouf" else _b(
+        "seam", "seam", (L * 0.6, 0.006, 0.006), (0, 0, seam_z), fab)
+    return out
+
+
+@register("dog_bed", parts=("cushion", "bolster"), extra_parts=("base",), size_range=(0.45, 1.2), density=150,
+          variants=("round", "rectangular", "basket"), placement="floor")
+def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
+    fab = M.fabric(rng)
+    if variant == "round":
+        r = rng.uniform(0.25, 0.5)
+        return [_c("cushion", "cushion", r * 0.8, 0.06, (0, 0, 0.03), fab, sections=28),
+                make_part("bolster", "bolster", ring([(r * 0.8, 0.0), (r, 0.0), (r, 0.16), (r * 0.8, 0.16)], sections=28), fab)]
+    w, d = rng.uniform(0.55, 1.1), rng.uniform(0.45, 0.75)
+    out = [_b("cushion", "cushion", (w - 0.16, d - 0.12, 0.07), (0, 0.06 - 0.06, 0.035), fab, bevel=0.02),
+           make_part("bolster", "bolster", [S.box((w, 0.08, 0.18), center=(0, -d / 2 + 0.04, 0.09), bevel=0.03),
+                                            S.box((0.08, d - 0.08, 0.15), center=(-w / 2 + 0.04, 0.04, 0.075), bevel=0.03),
+                                            S.box((0.08, d - 0.08, 0.15), center=(w / 2 - 0.04, 0.04, 0.075), bevel=0.03)], fab)]
+    if variant == "basket":
+        out.append(_b("base", "base", (w, d, 0.02), (0, 0, 0.01), M.wood(rng)))
+        out[0] = _b("cushion", "cushion", (w - 0.16, d - 0.12, 0.07), (0, 0.0, 0.02 + 0.035), fab, bevel=0.02)
+    return out
+
+
+@register("laptop_stand", parts=("platform", "base"), extra_parts=("arm", "lip"), size_range=(0.22, 0.32), density=2700,
+          variants=("riser", "folding", "vertical"), placement="surface")
+def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.24, 0.3), rng.uniform(0.22, 0.26)
+    alu = M.metal(rng)
+    if variant == "vertical":
+        return [_b("base", "base", (0.1, 0.22, 0.012), (0, 0, 0.006), alu),
+                make_part("platform", "platform", [S.box((0.006, 0.2, 0.06), center=(sx * 0.015, 0, 0.042)) for sx in (-1, 1)], alu),
+                _b("lip", "lip", (0.04, 0.2, 0.004), (0, 0, 0.014), black("rubber"))]
+    h = rng.uniform(0.12, 0.18)
+    tilt = rot((1, 0, 0), -0.25)
+    return [_b("base", "base", (w, 0.05, 0.012), (0, -d / 2 + 0.025, 0.006), alu),
+            make_part("arm", "arm", [S.box((0.02, 0.02, h), center=(sx * (w / 2 - 0.02), -d / 2 + 0.03, h / 2)) for sx in (-1, 1)], alu),
+            _b("platform", "platform", (w, d, 0.006), (0, 0.0, h * 0.75), alu, R=tilt),
+            _b("lip", "lip", (w, 0.012, 0.02), (0, d / 2 - 0.01, h * 0.75 - d * 0.12 + 0.01), alu)]
+
+
+@register("rolling_tv_stand", parts=("base", "pole", "mount"), extra_parts=("caster", "shelf"), size_range=(1.2, 1.9),
+          density=1500, variants=("single_pole", "dual_pole", "with_shelf"))
+def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.7, 0.9), rng.uniform(0.5, 0.6)
+    h = rng.uniform(1.3, 1.8)
+    steel = black("metal")
+    ch = 0.08
+    xs = (0.0,) if variant == "single_pole" else (-0.2, 0.2)
+    out = [make_part("base", "base", [S.box((0.06, d, 0.04), center=(sx * w / 2 - sx * 0.03, 0, ch + 0.02)) for sx in (-1, 1)]
+                     + [S.box((w, 0.06, 0.04), center=(0, 0, ch + 0.02))], steel),
+           make_part("pole", "pole", [S.box((0.05, 0.05, h - ch - 0.04), center=(x, 0, ch + 0.04 + (h - ch - 0.04) / 2)) for x in xs], steel),
+           _b("mount", "mount", (0.4, 0.03, 0.3), (0, 0.04, h * 0.8), steel),
+           make_part("caster", "caster", [S.cylinder(ch / 2, 0.03, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.04), ch / 2), axis=(1, 0, 0))
+                                          for sx in (-1, 1) for sy in (-1, 1)], black("rubber"))]
+    if variant == "with_shelf":
+        out.append(_b("shelf", "shelf", (0.5, 0.35, 0.012), (0, 0.12, h * 0.45), M.glass(rng)))
     return out
