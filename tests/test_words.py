@@ -203,9 +203,10 @@ def test_suggestions_by_meaning(resolver):
     pool = [w for w in resolver.words() if w not in ("pegboard", "saucer")]
     boards = {"board", "whiteboard", "bulletin_board", "blackboard"}
     assert boards & set(ranked("pegboard", pool, n=3))
-    # MiniLM places a bare "saucer" near kitchen appliances; a plate is among the closest
-    # few (saucer is a category of its own now, so this only matters for suggestions)
-    assert "plate" in ranked("saucer", pool, n=6)
+    # MiniLM places a bare "saucer" among kitchen things, a plate within the closest 5% of
+    # the words (saucer is a category of its own now, so this only matters for suggestions)
+    order = ranked("saucer", pool, n=len(pool))
+    assert order.index("plate") < 0.05 * len(pool)
 
 
 def test_suggestions_fall_back_to_spelling_without_the_model():
