@@ -36,6 +36,16 @@ MOTIFS = {
     "storage_workshop": ("storage", "{wall: wall_0}"),
     "dormitory_personal": ("dormitory", "{wall: wall_0}"),
     "utility_room_extras": ("laundry", "{wall: wall_0}"),
+    "bar_taps_and_till": ("bar", "{wall: wall_0}"),
+    "game_room_extras": ("game_room", "{wall: wall_0}"),
+    "kitchen_prep_counter": ("kitchen", "{wall: wall_0}"),
+    "music_room_extras": ("music_room", "{wall: wall_0}"),
+    "office_stationery": ("office", "{wall: wall_0}"),
+    "laundry_and_tools": ("laundry", "{wall: wall_0}"),
+    "bathroom_brushes": ("bathroom", "{wall: wall_0}"),
+    "living_hearth": ("living_room", "{wall: wall_0}"),
+    "tea_house_lanterns": ("tea_house", "{wall: wall_0}"),
+    "hotel_luggage_hooks": ("hotel", "{wall: wall_0}"),
 }
 
 

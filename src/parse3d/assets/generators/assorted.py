@@ -261,9 +261,9 @@ def flowers(rng: np.random.Generator, variant: str) -> list[Part]:
     for _ in range(n):
         a = rng.uniform(-0.35, 0.35)
         y = rng.uniform(-0.03, 0.03) if n > 1 else 0.0
-        end = np.array([-L / 2 + L, y + np.sin(a) * 0.05, 0.02])
-        stems.append(S.tube([(-L / 2, y * 0.3, 0.006), end], 0.003, sections=6))
-        blooms.append(S.ellipsoid((0.025, 0.03, 0.02), center=end + [0.015, 0, 0.0]))
+        end = np.array([-L / 2 + L, y + np.sin(a) * 0.05, 0.003])
+        stems.append(S.tube([(-L / 2, y * 0.3, 0.003), end], 0.003, sections=6))
+        blooms.append(S.ellipsoid((0.025, 0.03, 0.02), center=end + [0.015, 0, 0.017]))
     out = [make_part("stem", "stem", stems, green),
            make_part("bloom", "bloom", blooms, M.solid(M.jitter(rng, (0.9, 0.4, 0.5), 0.2)[:3], "plant", 0.8))]
     if variant == "wrapped":
