@@ -112,10 +112,10 @@ def pegboard(rng: np.random.Generator, variant: str) -> list[Part]:
     t = 0.006
     mat = (M.solid(M.jitter(rng, (0.72, 0.58, 0.4), 0.03), "wood", 0.8) if variant != "metal"
            else M.solid(M.jitter(rng, (0.2, 0.3, 0.45), 0.05), "metal", 0.4, 0.6))
-    out: list[Part] = [make_part("board", "board", S.box((w, t, h), center=(0, 0.01 + t / 2, h / 2)),
-                                 mat)]
-    # standoffs keep the board 1 cm off the wall so hooks can pass through the holes
-    out.append(make_part("frame", "frame", [S.box((w, 0.01, 0.03), center=(0, 0.005, z))
+    # the board's back is on the wall; a frame of strips around its face holds it (and keeps
+    # what hangs on the hooks off the holes)
+    out: list[Part] = [make_part("board", "board", S.box((w, t, h), center=(0, t / 2, h / 2)), mat)]
+    out.append(make_part("frame", "frame", [S.box((w, 0.01, 0.03), center=(0, t + 0.005, z))
                                             for z in (0.015, h - 0.015)], mat))
     steel = M.metal(rng)
     n = int(rng.integers(3, 8))
@@ -123,13 +123,13 @@ def pegboard(rng: np.random.Generator, variant: str) -> list[Part]:
         x = -w / 2 + 0.06 + (w - 0.12) * rng.uniform()
         z = 0.1 + (h - 0.2) * rng.uniform()
         out.append(make_part(f"hook_{k}", "hook",
-                             S.tube([(x, 0.016, z), (x, 0.07, z), (x, 0.075, z + 0.02)], 0.0025,
+                             S.tube([(x, t, z), (x, t + 0.06, z), (x, t + 0.065, z + 0.02)], 0.0025,
                                     sections=8), steel))
     if variant == "framed":
         out.append(make_part("shelf", "shelf", S.box((min(0.35, w * 0.6), 0.1, 0.012),
-                                                     center=(0, 0.016 + 0.05, h * 0.3)), steel))
+                                                     center=(0, t + 0.05, h * 0.3)), steel))
         out.append(make_part("bin", "bin", S.box((0.12, 0.08, 0.07),
-                                                 center=(w / 4, 0.016 + 0.04, h * 0.65)),
+                                                 center=(w / 4, t + 0.04, h * 0.65)),
                              M.plastic(rng)))
     return out
 
