@@ -453,8 +453,9 @@ def guitar_stand(rng: np.random.Generator, variant: str) -> list[Part]:
                 make_part("foot", "foot", [S.box((0.03, 0.03, 0.01), center=(sx * w / 2, sy, 0.005)) for sx in (-1, 1) for sy in (-0.15, 0.1)],
                           black("rubber"))]
     h = rng.uniform(0.75, 0.9)
-    out = [_c("frame", "frame", 0.012, h, (0, 0, h / 2), steel, sections=10),
-           make_part("leg", "leg", [S.tube([(0, 0, 0.2), (np.cos(a) * 0.25, np.sin(a) * 0.25, 0.01)], 0.008)
+    # the tripod's legs stand on the floor; the pole starts above their feet
+    out = [_c("frame", "frame", 0.012, h - 0.03, (0, 0, 0.03 + (h - 0.03) / 2), steel, sections=10),
+           make_part("leg", "leg", [S.tube([(0, 0, 0.2), (np.cos(a) * 0.25, np.sin(a) * 0.25, 0.008)], 0.008)
                                     for a in np.linspace(0, 2 * np.pi, 3, endpoint=False) + np.pi / 2], steel),
            make_part("cradle", "cradle", S.tube([(-w / 2, 0.08, 0.32), (0, 0.01, 0.3), (w / 2, 0.08, 0.32)], 0.012), black("rubber")),
            make_part("neck_rest", "neck_rest", S.tube([(-0.04, 0.04, h), (0, 0.0, h - 0.02), (0.04, 0.04, h)], 0.008), black("rubber"))]
