@@ -1107,3 +1107,383 @@ def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "with_shelf":
         out.append(_b("shelf", "shelf", (0.5, 0.35, 0.012), (0, 0.12, h * 0.45), M.glass(rng)))
     return out
+
+
+# ---------------------------------------------------------- pub, café, bathroom, tea room
+@register("bar_table", parts=("tabletop", "pedestal"), extra_parts=("base", "footrest"), size_range=(0.95, 1.15),
+          density=700, variants=("round", "square", "footrest"))
+def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
+    h, r = rng.uniform(1.0, 1.08), rng.uniform(0.3, 0.4)
+    wood, steel = M.wood(rng), M.metal(rng)
+    top = (S.cylinder(r, 0.03, center=(0, 0, h - 0.015), sections=28) if variant != "square" else
+           S.box((2 * r, 2 * r, 0.03), center=(0, 0, h - 0.015), bevel=0.004))
+    out = [make_part("tabletop", "tabletop", top, wood),
+           _c("pedestal", "pedestal", 0.035, h - 0.05, (0, 0, 0.02 + (h - 0.05) / 2), steel, sections=14),
+           _c("base", "base", r * 0.8, 0.02, (0, 0, 0.01), steel, sections=24)]
+    if variant == "footrest":
+        out.append(make_part("footrest", "footrest", ring([(r * 0.6, 0.3), (r * 0.65, 0.3), (r * 0.65, 0.32), (r * 0.6, 0.32)],
+                                                          sections=24), steel))
+    return out
+
+
+@register("coaster", parts=("disc",), extra_parts=("backing",), size_range=(0.08, 0.11), density=600,
+          variants=("cardboard", "cork", "stone"), placement="surface")
+def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.045, 0.053)
+    mat = {"cardboard": M.paper(rng), "cork": M.solid((0.7, 0.55, 0.38), "wood", 0.9), "stone": M.stone(rng)}[variant]
+    t = 0.003 if variant == "cardboard" else 0.006
+    return [_c("disc", "disc", r, t, (0, 0, 0.001 + t / 2), mat, sections=24),
+            _c("backing", "backing", r * 0.95, 0.001, (0, 0, 0.0005), M.solid((0.3, 0.3, 0.3), "rubber", 0.9), sections=24)]
+
+
+@register("pint_glass", parts=("body",), extra_parts=("beer", "foam"), size_range=(0.14, 0.18), density=2500,
+          variants=("empty", "full", "nonic"), placement="surface")
+def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
+    h, r0, r1 = rng.uniform(0.145, 0.16), 0.03, rng.uniform(0.042, 0.045)
+    prof = [(r0, 0.0), (r1, h)] if variant != "nonic" else [(r0, 0.0), (r1, h * 0.82), (r1 * 1.06, h * 0.88), (r1, h)]
+    out = [make_part("body", "body", shell(prof, 0.003, bottom=0.01, sections=24), M.glass(rng))]
+    if variant == "full":
+        out.append(make_part("beer", "beer", S.frustum(r0 - 0.003, r1 * 0.94, h * 0.8, center=(0, 0, 0.01), sections=20),
+                             M.food(rng, (0.8, 0.5, 0.1))))
+        out.append(_c("foam", "foam", r1 * 0.93, h * 0.06, (0, 0, 0.01 + h * 0.83), white(rng, "food"), sections=20))
+    return out
+
+
+@register("jukebox", parts=("cabinet", "dome"), extra_parts=("grille", "window", "button", "light"), size_range=(1.2, 1.6),
+          density=300, variants=("classic", "retro", "wall_box"))
+def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.8, 0.95), rng.uniform(0.5, 0.65), rng.uniform(1.25, 1.5)
+    wood = M.wood(rng)
+    body_h = h - w / 2
+    return [_b("cabinet", "cabinet", (w, d, body_h), (0, 0, body_h / 2), wood, bevel=0.01),
+            make_part("dome", "dome", S.transformed(S.cylinder(w / 2, d, sections=24, axis=(0, 1, 0)),
+                                                    np.array([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, body_h], [0, 0, 0, 1.0]])), wood),
+            _b("window", "window", (w * 0.6, 0.01, body_h * 0.25), (0, d / 2 + 0.003, body_h * 0.75), M.glass(rng)),
+            _b("grille", "grille", (w * 0.6, 0.01, body_h * 0.3), (0, d / 2 + 0.003, body_h * 0.3), M.metal(rng)),
+            make_part("light", "light", [S.box((0.04, 0.01, body_h * 0.8), center=(sx * (w / 2 - 0.05), d / 2 + 0.003, body_h * 0.5))
+                                         for sx in (-1, 1)], M.solid((1.0, 0.6, 0.2), "glass", 0.1))]
+
+
+@register("faucet", parts=("spout", "base"), extra_parts=("handle", "aerator"), size_range=(0.12, 0.4), density=7000,
+          variants=("single_lever", "two_handle", "tall_vessel"), placement="surface")
+def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
+    h = rng.uniform(0.15, 0.22) if variant != "tall_vessel" else rng.uniform(0.28, 0.35)
+    reach = rng.uniform(0.1, 0.16)
+    steel = M.metal(rng)
+    out = [_c("base", "base", 0.025, 0.02, (0, 0, 0.01), steel, sections=16),
+           make_part("spout", "spout", S.tube([(0, 0, 0.02), (0, 0, h), (0, reach, h), (0, reach, h - 0.03)], 0.012, sections=10), steel),
+           _c("aerator", "aerator", 0.013, 0.015, (0, reach, h - 0.04), steel, sections=12)]
+    if variant == "two_handle":
+        out.append(make_part("handle", "handle", [S.cylinder(0.015, 0.05, center=(sx * 0.08, 0, 0.025)) for sx in (-1, 1)], steel))
+    else:
+        out.append(_b("handle", "handle", (0.012, 0.07, 0.012), (0, -0.035, h * 0.6), steel))
+    return out
+
+
+@register("shower", parts=("tray", "panel", "head", "niche"), extra_parts=("door", "valve", "drain", "hinge"), size_range=(1.9, 2.2),
+          density=800, variants=("corner", "alcove", "walk_in"))
+def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    """A shower enclosure standing on the floor: a tray, glass panels, a door and a shower head."""
+    w, d, h = rng.uniform(0.8, 1.0), rng.uniform(0.8, 1.0), rng.uniform(1.9, 2.05)
+    glass, steel = M.glass(rng), M.metal(rng)
+    out: list[Part | Joint] = [_b("tray", "tray", (w, d, 0.05), (0, 0, 0.025), white(rng, "ceramic")),
+                               _c("drain", "drain", 0.04, 0.003, (0, 0, 0.0515), steel, sections=16),
+                               make_part("panel", "panel", [S.box((w, 0.01, h - 0.05), center=(0, -d / 2 + 0.005, 0.05 + (h - 0.05) / 2))]
+                                         + ([S.box((0.01, d - 0.01, h - 0.05), center=(-w / 2 + 0.005, 0.005, 0.05 + (h - 0.05) / 2))]
+                                            if variant != "alcove" else []), glass if variant != "alcove" else white(rng, "ceramic")),
+                               _c("head", "head", 0.1, 0.015, (0, -d / 2 + 0.25, h - 0.1), steel, sections=20),
+                               _b("valve", "valve", (0.08, 0.04, 0.08), (w * 0.2, -d / 2 + 0.03, 1.0), steel),
+                               # a niche: a small shelf on the back wall for bottles
+                               _b("niche", "niche", (0.3, 0.1, 0.015), (-w * 0.2, -d / 2 + 0.06, 1.2), white(rng, "ceramic"))]
+    if variant != "walk_in":
+        out.append(_b("door", "door", (w - 0.02, 0.008, h - 0.1), (0, d / 2 - 0.004, 0.05 + (h - 0.1) / 2), glass))
+        out += hinge_barrels("door_hinge", x=-w / 2 + 0.01, y=d / 2 - 0.008, z0=0.05, z1=h - 0.05, mat=steel)
+        out.append(revolute("door_hinge", "tray", "door", axis=(0, 0, 1), origin=(-w / 2 + 0.01, d / 2 - 0.008, 0.05)))
+    return out
+
+
+def hinge_barrels(prefix: str, *, x: float, y: float, z0: float, z1: float, mat) -> list[Part]:
+    return [make_part(f"{prefix}_{k}", "hinge", S.cylinder(0.006, 0.05, center=(x, y, z), sections=10), mat)
+            for k, z in enumerate((z0 + 0.15, z1 - 0.15))]
+
+
+@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump"), size_range=(0.14, 0.3), density=1000,
+          variants=("flip_cap", "pump", "tall"), placement="surface")
+def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.06, 0.08), rng.uniform(0.035, 0.05)
+    h = rng.uniform(0.15, 0.2) if variant != "tall" else rng.uniform(0.22, 0.26)
+    col = _colour(rng)
+    out = [_b("body", "body", (w, d, h), (0, 0, h / 2), col, bevel=0.012),
+           _c("cap", "cap", 0.016, 0.025, (0, 0, h + 0.0125), white(rng, "plastic"), sections=14),
+           _b("label", "label", (w * 0.8, 0.001, h * 0.5), (0, d / 2 + 0.0005, h * 0.45), M.paper(rng))]
+    if variant == "pump":
+        out.append(_b("pump", "pump", (0.01, 0.04, 0.01), (0, 0.012, h + 0.03), white(rng, "plastic")))
+    return out
+
+
+@register("jewelry_box", parts=("box", "lid"), extra_parts=("drawer", "mirror", "hinge", "clasp"), size_range=(0.15, 0.35),
+          density=600, variants=("lidded", "drawers", "music"), placement="surface")
+def jewelry_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d, h = rng.uniform(0.18, 0.3), rng.uniform(0.12, 0.2), rng.uniform(0.08, 0.15)
+    mat = M.wood(rng) if variant != "music" else M.leather(rng)
+    out: list[Part | Joint] = [_b("box", "box", (w, d, h), (0, 0, h / 2), mat, bevel=0.003),
+                               _b("lid", "lid", (w, d, 0.025), (0, 0, h + 0.0125), mat, bevel=0.004),
+                               _b("clasp", "clasp", (0.015, 0.004, 0.015), (0, d / 2 + 0.002, h), M.metal(rng))]
+    out.append(revolute("lid_hinge", "box", "lid", axis=(1, 0, 0), origin=(0, -d / 2, h), opens=1.6))
+    if variant == "drawers":
+        out.append(_b("drawer", "drawer", (w * 0.9, 0.006, h * 0.35), (0, d / 2 + 0.003, h * 0.25), mat))
+    return out
+
+
+@register("croissant", parts=("body",), extra_parts=("tip",), size_range=(0.07, 0.16), density=300,
+          variants=("plain", "large", "mini"), placement="surface")
+def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
+    s = {"plain": 1.0, "large": 1.2, "mini": 0.65}[variant]
+    L, r = 0.11 * s, 0.025 * s
+    bake = M.food(rng, (0.8, 0.55, 0.25))
+    return [make_part("body", "body", S.ellipsoid((L * 0.35, r * 1.3, r), center=(0, 0, r)), bake),
+            make_part("tip", "tip", [S.ellipsoid((L * 0.2, r * 0.6, r * 0.55), center=(sx * L * 0.35, -r * 0.6, r * 0.55)) for sx in (-1, 1)],
+                      bake)]
+
+
+@register("wagashi", parts=("sweet",), extra_parts=("leaf", "paper"), size_range=(0.03, 0.09), density=1200,
+          variants=("round", "square", "on_paper"), placement="surface")
+def wagashi(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.02, 0.03)
+    col = M.food(rng, M.jitter(rng, (0.9, 0.6, 0.7), 0.15)[:3])
+    z0 = 0.001 if variant == "on_paper" else 0.0
+    sweet = (S.ellipsoid((r, r, r * 0.7), center=(0, 0, z0 + r * 0.7)) if variant != "square" else
+             S.box((2 * r, 2 * r, r), center=(0, 0, z0 + r / 2), bevel=r * 0.2))
+    out = [make_part("sweet", "sweet", sweet, col),
+           make_part("leaf", "leaf", S.box((r * 0.8, r * 0.4, 0.002), center=(0, 0, z0 + (r * 1.4 if variant != "square" else r) + 0.001)),
+                     M.plant(rng))]
+    if variant == "on_paper":
+        out.append(_b("paper", "paper", (r * 3.5, r * 3.5, 0.001), (0, 0, 0.0005), M.paper(rng)))
+    return out
+
+
+@register("high_chair", parts=("seat", "leg", "tray"), extra_parts=("back", "footrest", "armrest"), size_range=(0.8, 1.1),
+          density=500, variants=("wooden", "plastic", "folding"))
+def high_chair(rng: np.random.Generator, variant: str) -> list[Part]:
+    hs = rng.uniform(0.55, 0.62)
+    w, d = rng.uniform(0.4, 0.48), rng.uniform(0.45, 0.55)
+    mat = M.wood(rng) if variant == "wooden" else white(rng, "plastic")
+    out = [_b("seat", "seat", (0.32, 0.3, 0.025), (0, 0, hs), mat, bevel=0.004),
+           _b("back", "back", (0.32, 0.02, 0.3), (0, -0.15, hs + 0.16), mat, bevel=0.004),
+           _b("tray", "tray", (0.4, 0.2, 0.02), (0, 0.2, hs + 0.2), mat, bevel=0.004),
+           make_part("armrest", "armrest", [S.box((0.02, 0.3, 0.02), center=(sx * 0.17, 0.05, hs + 0.17)) for sx in (-1, 1)], mat),
+           _b("footrest", "footrest", (0.3, 0.08, 0.015), (0, 0.18, hs - 0.25), mat)]
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"leg_{k}", "leg", S.tube([(sx * 0.15, sy * 0.12, hs - 0.0125), (sx * w / 2, sy * d / 2, 0.015)], 0.015,
+                                                      sections=10), mat))
+    return out
+
+
+@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle"), size_range=(0.1, 0.2), density=1000,
+          variants=("handles", "plain", "straw"), placement="surface")
+def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
+    r, h = rng.uniform(0.035, 0.04), rng.uniform(0.1, 0.13)
+    col = _colour(rng)
+    out = [_c("body", "body", r, h, (0, 0, h / 2), col, sections=20),
+           _c("lid", "lid", r * 1.05, 0.015, (0, 0, h + 0.0075), white(rng, "plastic"), sections=20),
+           make_part("spout", "spout", S.frustum(0.012, 0.006, 0.025, center=(0, r * 0.5, h + 0.015)), white(rng, "plastic"))]
+    if variant == "handles":
+        out.append(make_part("handle", "handle", [S.box((0.02, 0.012, 0.05), center=(sx * (r + 0.01), 0, h * 0.55)) for sx in (-1, 1)], col))
+    return out
+
+
+@register("hutch", parts=("base_cabinet", "upper_shelf"), extra_parts=("door", "handle", "hinge", "back_panel", "top_panel"),
+          size_range=(1.4, 2.1), density=600, variants=("open_top", "glass_top", "plate_rack"))
+def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d = rng.uniform(1.0, 1.6), rng.uniform(0.42, 0.5)
+    hb, ht = rng.uniform(0.8, 0.9), rng.uniform(0.7, 1.0)
+    wood = M.wood(rng)
+    out: list[Part | Joint] = [_b("base_cabinet", "base_cabinet", (w, d, hb), (0, 0, hb / 2), wood, bevel=0.004),
+                               _b("back_panel", "back_panel", (w, 0.02, ht), (0, -d / 2 + 0.01, hb + ht / 2), wood),
+                               _b("top_panel", "top_panel", (w, 0.3, 0.03), (0, -d / 2 + 0.15, hb + ht - 0.015), wood)]
+    for k in range(2):
+        out.append(_b(f"upper_shelf_{k}", "upper_shelf", (w - 0.04, 0.28, 0.02), (0, -d / 2 + 0.16, hb + ht * (k + 1) / 3), wood))
+    for k, sx in enumerate((-1, 1)):
+        x0 = -w / 2 + 0.01 if sx < 0 else 0.005
+        x1 = -0.005 if sx < 0 else w / 2 - 0.01
+        out.append(_b(f"door_{k}", "door", (x1 - x0, 0.02, hb - 0.1), ((x0 + x1) / 2, d / 2 + 0.01, hb / 2), wood))
+        out.append(_b(f"door_{k}_handle", "handle", (0.015, 0.02, 0.1), ((x1 - 0.04) if sx < 0 else (x0 + 0.04), d / 2 + 0.03, hb * 0.55),
+                      M.metal(rng)))
+        xh = x0 if sx < 0 else x1
+        out.append(revolute(f"door_{k}_hinge", "base_cabinet", f"door_{k}", axis=(0, 0, 1), origin=(xh, d / 2, 0.05),
+                            opens=1.75 if sx < 0 else -1.75))
+        out.append(Joint(f"door_{k}_handle_mount", "prismatic", f"door_{k}", f"door_{k}_handle", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    return out
+
+
+@register("locker", parts=("body", "door"), extra_parts=("handle", "vent", "shelf", "hinge", "lock"), size_range=(0.9, 1.95),
+          density=500, variants=("full_height", "two_tier", "half_height"))
+def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d = rng.uniform(0.3, 0.4), rng.uniform(0.45, 0.5)
+    h = rng.uniform(1.8, 1.9) if variant != "half_height" else rng.uniform(0.9, 1.0)
+    steel = M.solid(M.jitter(rng, (0.4, 0.45, 0.5), 0.1), "metal", 0.4, 0.6)
+    t = 0.01
+    out: list[Part | Joint] = [make_part("body", "body", [S.box((w, d - 0.02, t), center=(0, -0.01, t / 2)), S.box((w, d - 0.02, t), center=(0, -0.01, h - t / 2)),
+                                                          S.box((t, d - 0.02, h - 2 * t), center=(-w / 2 + t / 2, -0.01, h / 2)),
+                                                          S.box((t, d - 0.02, h - 2 * t), center=(w / 2 - t / 2, -0.01, h / 2)),
+                                                          S.box((w - 2 * t, t, h - 2 * t), center=(0, -d / 2 + t / 2, h / 2))], steel),
+                               _b("shelf", "shelf", (w - 2 * t, d - 0.04, 0.01), (0, -0.01, h * 0.8), steel)]
+    n = 2 if variant == "two_tier" else 1
+    dh = (h - 0.02) / n
+    for k in range(n):
+        z0 = 0.01 + k * dh
+        out.append(_b(f"door_{k}", "door", (w - 0.004, 0.02, dh - 0.01), (0, d / 2 - 0.01, z0 + dh / 2), steel))
+        out.append(_b(f"door_{k}_vent", "vent", (w * 0.6, 0.004, 0.08), (0, d / 2 + 0.002, z0 + dh * 0.85), black("metal")))
+        out.append(_b(f"door_{k}_handle", "handle", (0.02, 0.025, 0.1), (w / 2 - 0.05, d / 2 + 0.0125, z0 + dh * 0.5), M.metal(rng)))
+        out.append(revolute(f"door_{k}_hinge", "body", f"door_{k}", axis=(0, 0, 1), origin=(-w / 2, d / 2 - 0.02, z0)))
+        for part in (f"door_{k}_vent", f"door_{k}_handle"):
+            out.append(Joint(f"{part}_mount", "prismatic", f"door_{k}", part, (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    return out
+
+
+@register("toiletry_bag", parts=("body", "handle"), extra_parts=("zipper", "hook"), size_range=(0.2, 0.32), density=200,
+          variants=("zip", "hanging", "roll"), placement="surface")
+def toiletry_bag(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.22, 0.28), rng.uniform(0.1, 0.14), rng.uniform(0.1, 0.15)
+    fab = M.fabric(rng)
+    out = [_b("body", "body", (w, d, h), (0, 0, h / 2), fab, bevel=0.02),
+           make_part("handle", "handle", S.tube([(-w / 2, 0, h * 0.7), (-w / 2 - 0.03, 0, h * 0.7), (-w / 2 - 0.03, 0, h * 0.3),
+                                                 (-w / 2, 0, h * 0.3)], 0.005), fab),
+           _b("zipper", "zipper", (w * 0.8, 0.01, 0.004), (0, 0, h + 0.001), M.metal(rng))]
+    if variant == "hanging":
+        out.append(make_part("hook", "hook", S.tube([(0, 0, h), (0, 0, h + 0.05), (0, 0.02, h + 0.06)], 0.003), M.metal(rng)))
+    return out
+
+
+@register("deodorant", parts=("body", "cap"), extra_parts=("label",), size_range=(0.1, 0.18), density=900,
+          variants=("stick", "spray", "roll_on"), placement="surface")
+def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
+    col = _colour(rng)
+    if variant == "spray":
+        r, h = 0.025, rng.uniform(0.13, 0.16)
+        return [_c("body", "body", r, h, (0, 0, h / 2), M.metal(rng), sections=20), _c("cap", "cap", r, 0.03, (0, 0, h + 0.015), col, sections=20),
+                _c("label", "label", r + 0.0005, h * 0.5, (0, 0, h * 0.45), M.paper(rng), sections=20)]
+    w, d, h = 0.065, 0.035, rng.uniform(0.1, 0.12)
+    return [_b("body", "body", (w, d, h), (0, 0, h / 2), col, bevel=0.01), _b("cap", "cap", (w, d, 0.03), (0, 0, h + 0.015), col, bevel=0.01),
+            _b("label", "label", (w * 0.8, 0.001, h * 0.5), (0, d / 2 + 0.0005, h * 0.45), M.paper(rng))]
+
+
+@register("chess_board", parts=("board",), extra_parts=("square", "frame"), size_range=(0.3, 0.55), density=700,
+          variants=("wood", "folding", "tournament"), placement="surface")
+def chess_board(rng: np.random.Generator, variant: str) -> list[Part]:
+    s = rng.uniform(0.3, 0.5)
+    t = 0.015
+    dark = M.solid(M.jitter(rng, (0.35, 0.2, 0.1), 0.03), "wood", 0.5)
+    out = [_b("board", "board", (s, s, t), (0, 0, t / 2), M.wood(rng)),
+           _b("frame", "frame", (s + 0.02, s + 0.02, t * 0.8), (0, 0, t * 0.4), dark)]
+    q = s * 0.9 / 8
+    out.append(make_part("square", "square", [S.box((q, q, 0.001), center=((i - 3.5) * q, (j - 3.5) * q, t + 0.0005))
+                                              for i in range(8) for j in range(8) if (i + j) % 2 == 0], dark))
+    return out
+
+
+@register("chess_piece", parts=("base", "body"), extra_parts=("head",), size_range=(0.04, 0.11), density=800,
+          variants=("pawn", "rook", "king"), placement="surface")
+def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
+    h = {"pawn": 0.05, "rook": 0.06, "king": 0.095}[variant]
+    r = h * 0.28 if variant != "king" else h * 0.22
+    mat = M.solid((0.92, 0.88, 0.8) if rng.uniform() < 0.5 else (0.12, 0.1, 0.1), "wood", 0.4)
+    out = [_c("base", "base", r, h * 0.15, (0, 0, h * 0.075), mat, sections=18),
+           make_part("body", "body", S.frustum(r * 0.8, r * 0.45, h * 0.55, center=(0, 0, h * 0.15), sections=16), mat)]
+    if variant == "pawn":
+        out.append(make_part("head", "head", S.ellipsoid((r * 0.55, r * 0.55, r * 0.55), center=(0, 0, h * 0.7 + r * 0.5)), mat))
+    elif variant == "rook":
+        out.append(_c("head", "head", r * 0.7, h * 0.3, (0, 0, h * 0.7 + h * 0.15), mat, sections=8))
+    else:
+        out.append(make_part("head", "head", [S.box((0.006, 0.006, h * 0.25), center=(0, 0, h * 0.82)),
+                                              S.box((0.02, 0.006, 0.006), center=(0, 0, h * 0.88))], mat))
+    return out
+
+
+@register("hanging_scale", parts=("dial", "hook", "pan"), extra_parts=("chain",), size_range=(0.4, 0.8), density=1500,
+          variants=("dial", "spring", "digital"), placement="ceiling")
+def hanging_scale(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.14, 0.2)
+    L = rng.uniform(0.25, 0.4)
+    steel = M.metal(rng)
+    pan = shell([(r * 0.5, 0.0), (r, 0.06)], 0.002, bottom=0.003, sections=24)
+    dial_z = 0.06 + L + 0.1
+    out = [make_part("pan", "pan", pan, steel),
+           make_part("chain", "chain", [S.tube([(np.cos(a) * r * 0.9, np.sin(a) * r * 0.9, 0.06), (0, 0, 0.06 + L)], 0.002, sections=6)
+                                        for a in np.linspace(0, 2 * np.pi, 3, endpoint=False)], steel),
+           (_c("dial", "dial", 0.1, 0.05, (0, 0, dial_z), white(rng, "metal"), axis=(0, 1, 0), sections=24) if variant != "spring" else
+            _c("dial", "dial", 0.025, 0.2, (0, 0, dial_z), steel, sections=14)),
+           make_part("hook", "hook", S.tube([(0, 0, dial_z + 0.1), (0, 0, dial_z + 0.16), (0, 0.03, dial_z + 0.18)], 0.005, sections=8), steel)]
+    return out
+
+
+@register("tea_whisk", parts=("handle", "tines"), extra_parts=("holder",), size_range=(0.09, 0.17), density=400,
+          variants=("standing", "on_holder", "lying"), placement="surface")
+def tea_whisk(rng: np.random.Generator, variant: str) -> list[Part]:
+    bamboo = M.solid(M.jitter(rng, (0.85, 0.75, 0.5), 0.03), "wood", 0.6)
+    z0 = 0.04 if variant == "on_holder" else 0.0
+    out = [make_part("tines", "tines", S.lathe([(0.012, z0), (0.03, z0 + 0.02), (0.028, z0 + 0.06), (0.014, z0 + 0.07)]), bamboo),
+           _c("handle", "handle", 0.009, 0.045, (0, 0, z0 + 0.07 + 0.0225), bamboo, sections=12)]
+    if variant == "on_holder":
+        out.append(make_part("holder", "holder", S.lathe([(0.03, 0.0), (0.03, 0.03), (0.015, 0.045)]), M.ceramic(rng)))
+    return out
+
+
+@register("tea_scoop", parts=("scoop", "handle"), extra_parts=("node",), size_range=(0.16, 0.2), density=600,
+          variants=("bamboo", "dark", "spoon"), placement="surface")
+def tea_scoop(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = rng.uniform(0.17, 0.19)
+    mat = M.solid(M.jitter(rng, (0.8, 0.68, 0.45) if variant != "dark" else (0.3, 0.2, 0.12), 0.03), "wood", 0.6)
+    return [_b("handle", "handle", (L * 0.8, 0.009, 0.003), (-L * 0.1, 0, 0.0015), mat),
+            _b("scoop", "scoop", (L * 0.2, 0.012 if variant != "spoon" else 0.025, 0.006), (L * 0.4, 0, 0.003), mat),
+            _b("node", "node", (0.006, 0.01, 0.005), (-L * 0.05, 0, 0.0025), mat)]
+
+
+@register("dais", parts=("platform",), extra_parts=("step", "edge"), size_range=(0.8, 2.6), density=600,
+          variants=("tatami", "stage", "stepped"))
+def dais(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.9, 2.4), rng.uniform(0.9, 1.8)
+    h = rng.uniform(0.15, 0.4)
+    top = (M.solid(M.jitter(rng, (0.78, 0.75, 0.5), 0.03), "fabric", 0.9) if variant == "tatami" else M.wood(rng))
+    out = [_b("platform", "platform", (w, d, h), (0, 0, h / 2), top),
+           make_part("edge", "edge", [S.box((w + 0.01, 0.02, h * 0.3), center=(0, sy * (d / 2), h * 0.85)) for sy in (-1, 1)], M.wood(rng))]
+    if variant == "stepped":
+        out.append(_b("step", "step", (w * 0.5, 0.3, h / 2), (0, d / 2 + 0.15, h / 4), M.wood(rng)))
+    return out
+
+
+@register("incense_burner", parts=("body", "lid"), extra_parts=("foot", "holder", "stick"), size_range=(0.08, 0.3), density=2000,
+          variants=("censer", "stick_holder", "cone"), placement="surface")
+def incense_burner(rng: np.random.Generator, variant: str) -> list[Part]:
+    bronze = M.solid(M.jitter(rng, (0.5, 0.35, 0.2), 0.04), "metal", 0.4, 0.8)
+    if variant == "stick_holder":
+        L = rng.uniform(0.22, 0.27)
+        return [_b("body", "body", (L, 0.035, 0.012), (0, 0, 0.006), M.wood(rng)),
+                _c("lid", "lid", 0.006, 0.008, (-L / 2 + 0.02, 0, 0.016), bronze, sections=10),
+                make_part("stick", "stick", S.tube([(-L / 2 + 0.02, 0, 0.02), (L / 2 - 0.02, 0, 0.1)], 0.0015, sections=6),
+                          M.solid((0.5, 0.3, 0.2), "wood", 0.9))]
+    r = rng.uniform(0.05, 0.08)
+    out = [make_part("body", "body", S.lathe([(r * 0.6, 0.02), (r, 0.05), (r * 0.9, 0.08)]), bronze),
+           make_part("lid", "lid", S.lathe([(r * 0.9, 0.08), (r * 0.5, 0.11), (0.01, 0.13)]), bronze),
+           make_part("foot", "foot", [S.cylinder(0.008, 0.02, center=(np.cos(a) * r * 0.5, np.sin(a) * r * 0.5, 0.01), sections=8)
+                                      for a in np.linspace(0, 2 * np.pi, 3, endpoint=False)], bronze)]
+    return out
+
+
+@register("brazier", parts=("bowl", "stand"), extra_parts=("grate", "leg", "handle"), size_range=(0.25, 0.7), density=2500,
+          variants=("hibachi", "tripod", "box"), placement="floor")
+def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
+    iron = M.solid((0.15, 0.13, 0.12), "metal", 0.6, 0.7)
+    if variant == "hibachi":
+        r, h = rng.uniform(0.15, 0.2), rng.uniform(0.22, 0.3)
+        return [make_part("bowl", "bowl", shell([(r * 0.8, 0.03), (r, h)], 0.01, bottom=0.015, sections=24), M.ceramic(rng)),
+                _c("stand", "stand", r * 0.75, 0.03, (0, 0, 0.015), M.wood(rng), sections=24),
+                _c("grate", "grate", r * 0.7, 0.004, (0, 0, h * 0.6), iron, sections=16)]
+    w = rng.uniform(0.3, 0.5)
+    h = rng.uniform(0.35, 0.6)
+    out = [make_part("bowl", "bowl", shell([(w * 0.3, h - 0.12), (w / 2, h)], 0.004, bottom=0.006, sections=20) if variant == "tripod"
+                     else S.box((w, w * 0.6, 0.12), center=(0, 0, h - 0.06)), iron),
+           _c("stand", "stand", w * 0.2, 0.02, (0, 0, h - 0.13), iron, sections=16),
+           make_part("leg", "leg", [S.tube([(np.cos(a) * w * 0.2, np.sin(a) * w * 0.2, h - 0.13), (np.cos(a) * w * 0.45, np.sin(a) * w * 0.45, 0.01)],
+                                           0.01, sections=8) for a in np.linspace(0, 2 * np.pi, 3, endpoint=False)], iron)]
+    return out
