@@ -46,6 +46,11 @@ MOTIFS = {
     "living_hearth": ("living_room", "{wall: wall_0}"),
     "tea_house_lanterns": ("tea_house", "{wall: wall_0}"),
     "hotel_luggage_hooks": ("hotel", "{wall: wall_0}"),
+    "bar_pub_table": ("bar", "{wall: wall_0}"),
+    "bathroom_shower_corner": ("bathroom", "{wall: wall_0}"),
+    "dining_nook_hutch": ("dining_room", "{wall: wall_0}"),
+    "game_chess_table": ("game_room", "{wall: wall_0}"),
+    "tea_ceremony_set": ("tea_house", "{wall: wall_0}"),
 }
 
 
