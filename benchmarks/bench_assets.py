@@ -12,6 +12,13 @@ pool of 20 per category for every category on 2 workers in < 5 minutes.
     python benchmarks/bench_assets.py --profile mug         # where the time goes
     python benchmarks/bench_assets.py --stats --seeds 3     # the `assets stats` figures
     python benchmarks/bench_assets.py --seeds 2 --per-category 0 --baseline-rev c5b3064
+    python benchmarks/bench_assets.py --release main --seeds 2   # the library beside a release
+
+``--release REV`` prints the library's figures beside those of git revision REV, both measured
+in this run (REV from a temporary worktree, in its own process): ScanNet200 object labels that
+resolve to a category (a release without the vocabulary file understands a label only when it
+is a category's name, spaces as underscores), categories, parts per asset (mean, median, p10),
+articulated categories and the median generation time per asset.
 
 ``--baseline-rev REV`` times the same generation with the package of git revision REV beside
 this one: each revision runs in its own long-lived process and the two take turns, a round
@@ -50,8 +57,60 @@ def bench_generate(categories: list[str], seeds: int) -> dict[str, float]:
     return out
 
 
+def _summary(req: dict) -> dict:
+    """The worker's side of ``--release``: this revision's library figures."""
+    from parse3d.assets.stats import library_stats
+
+    st = library_stats(seeds=req["seeds"]).to_dict()
+    cats = set(registry.categories())
+    try:
+        from parse3d.words import Resolver
+
+        words = Resolver(registry.vocabulary())
+
+        def understood(label: str) -> bool:
+            return bool(words.categories_for(label))
+    except ImportError:  # a release before the vocabulary file: category names only
+        def understood(label: str) -> bool:
+            return label.replace(" ", "_") in cats
+    return {"labels_resolved": sum(map(understood, req["labels"])),
+            "categories": st["categories"], "parts_mean": st["parts_per_asset_mean"],
+            "parts_median": st["parts_per_asset_median"], "parts_p10": st["parts_per_asset_p10"],
+            "articulated": len(st["articulated_categories"]),
+            "generation_ms_median": st["generation_ms_median"]}
+
+
+def compare_release(rev: str, seeds: int) -> None:
+    """Print this library's figures beside revision ``rev``'s, both measured now."""
+    from parse3d.words import reference_labels
+
+    ref = reference_labels()
+    labels = [x["label"] for x in ref["labels"] if x["label"] not in ref["excluded"]]
+    here = Path(__file__).resolve()
+    with revision_tree(rev) as wt, Worker(here) as now_w, \
+            Worker(here, src=wt / "src", cwd=wt) as base_w:
+        base = base_w.ask(summary=True, seeds=seeds, labels=labels)
+        now = now_w.ask(summary=True, seeds=seeds, labels=labels)
+    n = len(labels)
+    rows = [("ScanNet200 object labels resolved", lambda d: f"{d['labels_resolved']}/{n} "
+             f"({d['labels_resolved'] / n:.0%})", "goal >= 95%"),
+            ("categories", lambda d: str(d["categories"]), "paper 132"),
+            ("parts per asset, mean", lambda d: f"{d['parts_mean']:.1f}", "paper 17.4"),
+            ("parts per asset, median", lambda d: f"{d['parts_median']:.0f}", ""),
+            ("parts per asset, p10", lambda d: f"{d['parts_p10']:.0f}", "goal >= 6"),
+            ("articulated categories", lambda d: str(d["articulated"]), ""),
+            ("generation ms per asset, median", lambda d: f"{d['generation_ms_median']:.1f}",
+             "goal <= 40")]
+    print(f"{'measure':<36}{rev:>16}{'now':>16}   ({seeds} assets per category)")
+    for name, fmt, goal in rows:
+        print(f"{name:<36}{fmt(base):>16}{fmt(now):>16}   {goal}")
+
+
 def _handle(req: dict) -> dict:
-    """The worker's side of ``--baseline-rev``: time one round over the categories asked."""
+    """The worker's side of ``--baseline-rev`` (time one round over the categories asked) and
+    of ``--release``."""
+    if req.get("summary"):
+        return _summary(req)
     if req.get("categories") is None:
         return {"categories": list(registry.categories())}
     out: dict[str, list[float]] = {}
@@ -113,10 +172,15 @@ def main() -> None:
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="also time git revision REV, alternating rounds with this one")
     ap.add_argument("--rounds", type=int, default=2, help="alternating rounds per revision (--baseline-rev)")
+    ap.add_argument("--release", metavar="REV",
+                    help="print the library's figures beside git revision REV's (e.g. main) and stop")
     ap.add_argument("--cpu", action="store_true",
                     help="time by process CPU time instead of wall-clock (steadier on a busy machine)")
     args = ap.parse_args()
     cats = [c for c in args.categories.split(",") if c] or list(registry.categories())
+    if args.release:
+        compare_release(args.release, args.seeds)
+        return
     if args.baseline_rev:
         compare_revisions(cats, args.seeds, args.baseline_rev, args.rounds, args.cpu)
         if args.per_category <= 0:

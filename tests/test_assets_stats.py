@@ -40,8 +40,11 @@ def test_cli_stats_json_and_errors(capsys) -> None:
                 "generation_ms_median", "per_category"):
         assert key in data
     assert data["categories"] == 2 and data["paper"]["categories"] == PAPER_CATEGORIES
+    ref = data["scannet200"]
+    assert ref["object_labels"] == 170 and ref["resolved"] == 170 - len(ref["unresolved"])
     code, out, _ = run(capsys, "assets", "stats", "--categories", "tea_caddy")
     assert code == 0 and "parts per asset" in out and "132" in out
+    assert "ScanNet200 object labels resolved" in out
     code, out, err = run(capsys, "assets", "stats", "--categories", "tea_cady")
     assert code == 2 and "did you mean 'tea_caddy'" in out + err
 

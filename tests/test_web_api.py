@@ -58,6 +58,8 @@ def test_vocabulary_lists_categories_parts_and_relation_parameters(client):
     cats = {c["name"]: c for c in v["categories"]}
     assert set(cats) == set(registry.categories())
     assert {"tabletop", "leg"} <= set(cats["desk"]["parts"])
+    assert "top" in cats["desk"]["part_words"]  # the vocabulary file's words for its parts
+    assert v["words"]["couch"] == ["sofa"] and "dining_chair" in v["words"]["chair"]
     assert cats["table_lamp"]["variants"] == list(registry.get("table_lamp").variants)
     rel = {r["name"]: r for r in v["relations"]}
     assert rel["ON"]["kind"] == "support" and rel["ON"]["child_surface"] == "bottom"

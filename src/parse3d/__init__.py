@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from . import words as _words
 from .errors import InfeasibleError, InputError, Parse3dError
 
 __version__ = "0.1.0"
@@ -23,6 +24,16 @@ __all__ = ["__version__", "InputError", "InfeasibleError", "Parse3dError", "PAG"
 
 if TYPE_CHECKING:  # pragma: no cover
     from .pag.model import PAG
+
+
+def _library_vocabulary():
+    # the registry's vocabulary, from its snapshot when current (no generator imported)
+    from .cli._vocab import cli_vocabulary
+
+    return cli_vocabulary()
+
+
+_words.use_library(_library_vocabulary)
 
 
 def __getattr__(name: str) -> Any:

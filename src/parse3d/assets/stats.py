@@ -21,7 +21,8 @@ import numpy as np
 
 from . import registry
 
-__all__ = ["LibraryStats", "library_stats", "PAPER_CATEGORIES", "PAPER_PARTS_PER_ASSET"]
+__all__ = ["LibraryStats", "library_stats", "reference_coverage", "PAPER_CATEGORIES",
+           "PAPER_PARTS_PER_ASSET"]
 
 #: PARSE-10K draws from 132 categories averaging 17.4 parts per object (the paper, Sec. 4).
 PAPER_CATEGORIES = 132
@@ -46,6 +47,8 @@ class LibraryStats:
         Wall time of ``registry.generate`` per asset, milliseconds.
     per_category : dict
         ``{category: {"variants", "parts_mean", "joints_mean", "generation_ms_median"}}``.
+    scannet200 : dict
+        :func:`reference_coverage`: ScanNet200's object labels and how many resolve.
     """
 
     categories: int
@@ -59,11 +62,34 @@ class LibraryStats:
     generation_ms_median: float
     generation_ms_p90: float
     per_category: dict[str, dict[str, float]] = field(default_factory=dict)
+    scannet200: dict = field(default_factory=dict)
     paper: dict[str, float] = field(default_factory=lambda: {"categories": PAPER_CATEGORIES,
                                                               "parts_per_asset_mean": PAPER_PARTS_PER_ASSET})
 
     def to_dict(self) -> dict:
         return asdict(self)
+
+
+def reference_coverage() -> dict:
+    """How many of ScanNet200's object labels (its 200 indoor labels less those naming no
+    movable or mountable object, ``parse3d/data/scannet200.json``) resolve to a category of
+    the library, directly, through a synonym or a hypernym of the vocabulary file.
+
+    Returns
+    -------
+    dict
+        ``object_labels``, ``resolved`` (counts), ``fraction``, ``unresolved`` (labels),
+        ``excluded`` (count) and ``source``.
+    """
+    from ..words import Resolver, reference_labels
+
+    ref = reference_labels()
+    words = Resolver(registry.vocabulary())
+    objects = [x["label"] for x in ref["labels"] if x["label"] not in ref["excluded"]]
+    missing = [x for x in objects if not words.categories_for(x)]
+    return {"object_labels": len(objects), "resolved": len(objects) - len(missing),
+            "fraction": round((len(objects) - len(missing)) / max(len(objects), 1), 4),
+            "unresolved": missing, "excluded": len(ref["excluded"]), "source": ref["source"]}
 
 
 def library_stats(categories: Iterable[str] | None = None, *, seeds: int = 3,
@@ -112,4 +138,5 @@ def library_stats(categories: Iterable[str] | None = None, *, seeds: int = 3,
         parts_per_asset_median=round(float(np.median(p)), 2),
         joints_per_asset_mean=round(float(np.mean(joints)) if joints else 0.0, 2),
         articulated_categories=articulated, generation_ms_median=round(float(np.median(t)), 1),
-        generation_ms_p90=round(float(np.percentile(t, 90)), 1), per_category=per)
+        generation_ms_p90=round(float(np.percentile(t, 90)), 1), per_category=per,
+        scannet200=reference_coverage())

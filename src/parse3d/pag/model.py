@@ -234,10 +234,18 @@ class PAG:
         self.relations.append(edge)
         return edge
 
-    def validate(self, *, vocabulary=None, file: str | None = None) -> PAG:
-        """Validate this graph as a file would be; raise InputError with every problem."""
+    def validate(self, *, vocabulary=None, file: str | None = None, words: bool = True) -> PAG:
+        """Validate this graph as ``parse3d validate`` validates a file; raise InputError with
+        every problem.
+
+        Category and part words are checked against ``vocabulary``, by default the asset
+        library's (the one the command line uses); ``words=False`` skips those checks.
+        """
+        from ..words import library_vocabulary
         from .validate import validate_data
 
+        if vocabulary is None and words:
+            vocabulary = library_vocabulary()
         validate_data(self.to_dict(), file=file, vocabulary=vocabulary, raise_errors=True)
         return self
 

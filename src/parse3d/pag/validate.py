@@ -18,7 +18,9 @@ errors elsewhere:
   :data:`MAX_COORDINATE` of the origin and at most :data:`MAX_WALLS` vertices, the height is at
   most :data:`MAX_ROOM_HEIGHT`, scale factors lie in [:data:`MIN_SCALE`, :data:`MAX_SCALE`],
   and a PAG has at most :data:`MAX_OBJECTS` objects and :data:`MAX_RELATIONS` relations;
-* the vocabulary, when one is given: category names and part labels.
+* the vocabulary, when one is given: category words and part words, resolved through the
+  vocabulary file (:mod:`parse3d.words`: synonyms, hypernyms, part words), with suggestions by
+  meaning for unknown words.
 
 A document that passes is solvable in principle: no later stage fails for a reason these
 checks could have caught.
@@ -43,6 +45,8 @@ from ..errors import (
     VocabularyError,
 )
 from ..relations import RELATIONS, SURFACES, Param, Relation
+from ..words import Resolver
+from ..words import suggest as suggest_word
 from .refs import Ref, RefSyntaxError, is_room_element, parse_ref, wall_index
 from .schema import schema_problems, suggest
 
@@ -208,11 +212,13 @@ class _Checker:
     def __init__(self, data: dict[str, Any], vocabulary: Vocabulary | None):
         self.data = data
         self.vocab = vocabulary
+        self.resolver = Resolver(vocabulary) if vocabulary is not None else None
+        #: per object id, the categories that came from a hypernym (any member may serve)
+        self.drawn: dict[str, set[str]] = {}
         self.problems: list[Problem] = []
         self.n_walls: int | None = None
         self.ids: dict[str, int] = {}
         self.candidates: dict[str, tuple[str, ...]] = {}
-        self._vocab_names: list[str] | None = None
         self.objects_known = True  # False when the object list is unreadable
 
     def add(self, pointer: str, message: str, kind: str) -> None:
@@ -327,33 +333,40 @@ class _Checker:
                     valid_id = False
                 else:
                     self.ids[oid] = j
-            cands = self.check_category(base, o.get("category"))
+            cands, drawn = self.check_category(base, o.get("category"))
             if valid_id:
                 self.candidates[oid] = cands
+                self.drawn[oid] = drawn
             self.check_scale(base, o.get("scale"))
 
-    def check_category(self, base: str, cat: Any) -> tuple[str, ...]:
+    def check_category(self, base: str, cat: Any) -> tuple[tuple[str, ...], set[str]]:
+        """The categories an object's words name, and those of them a hypernym gave."""
         if isinstance(cat, str):
             items = [(f"{base}/category", cat)]
         elif isinstance(cat, list):
             items = [(f"{base}/category/{k}", c) for k, c in enumerate(cat) if isinstance(c, str)]
         else:
-            return ()
-        known = []
+            return (), set()
+        known: list[str] = []
+        drawn: set[str] = set()
+        explicit: set[str] = set()
         for ptr, c in items:
             if not c:
                 continue
-            if self.vocab is None or self.vocab.has_category(c):
+            if self.resolver is None:
                 known.append(c)
                 continue
-            self.add(ptr, f"unknown category {c!r}{suggest(c, self.vocab_names())}",
+            got = self.resolver.categories_for(c)
+            if got:
+                known += [m for m in got if m not in known]
+                if self.resolver.is_hypernym(c):
+                    drawn.update(got)
+                else:
+                    explicit.update(got)
+                continue
+            self.add(ptr, f"unknown category {c!r}{suggest_word(c, self.resolver.words())}",
                      "vocabulary")
-        return tuple(known)
-
-    def vocab_names(self) -> list[str]:
-        if self._vocab_names is None:
-            self._vocab_names = list(self.vocab.categories()) if self.vocab is not None else []
-        return self._vocab_names
+        return tuple(known), drawn - explicit
 
     def check_scale(self, base: str, scale: Any) -> None:
         if not (isinstance(scale, list) and len(scale) == 2 and all(map(_is_number, scale))):
@@ -476,14 +489,28 @@ class _Checker:
         if spec is not None and spec.is_object_level and (ref.part or ref.surface):
             self.add(ptr, f"{spec.name} relates whole objects: write {obj!r} without a part or "
                      "surface", "reference")
-        if ref.part is not None and self.vocab is not None:
-            for cat in self.candidates.get(obj, ()):
-                parts = tuple(self.vocab.parts(cat))
-                if ref.part not in parts:
-                    self.add(ptr, f"category {cat!r} has no part {ref.part!r}"
-                             f"{suggest(ref.part, parts)} (parts: {', '.join(parts)})",
-                             "vocabulary")
+        if ref.part is not None and self.resolver is not None:
+            self.check_part(ptr, obj, ref)
         return ok
+
+    def check_part(self, ptr: str, obj: str, ref: Ref) -> None:
+        """A part word must name parts of every category the object may be; of a hypernym's
+        members, those that have it are drawn among (at least one must)."""
+        cands = self.candidates.get(obj, ())
+        drawn = self.drawn.get(obj, set())
+        results = {c: self.resolver.part(c, ref.part, ref.surface) for c in cands}
+        ambiguous = [r.problem for r in results.values()
+                     if r.label is None and "names several" in (r.problem or "")]
+        if ambiguous:
+            self.add(ptr, ambiguous[0], "vocabulary")
+            return
+        for c, r in results.items():
+            if r.label is None and c not in drawn:
+                self.add(ptr, r.problem, "vocabulary")
+        if drawn and not any(results[c].label for c in drawn if c in results):
+            first = next(c for c in cands if c in drawn)
+            self.add(ptr, f"no {'/'.join(sorted(drawn))} has a part {ref.part!r}: "
+                     f"{results[first].problem}", "vocabulary")
 
     def check_room_parent(self, ptr: str, spec: Relation, parent: Ref) -> None:
         obj = parent.object

@@ -15,14 +15,55 @@ from collections.abc import Callable
 
 from ..errors import InfeasibleError
 from ..measure.checks import check_relations
+from ..pag.canonical import canonical_document
 from ..pag.model import PAG
 from ..scene.model import Scene
+from ..words import Resolver
 from .config import SEARCHES, STRATEGIES, SolverConfig
 from .library import AssetLibrary
 from .search import SolveProgress, solve_scene
 
 __all__ = ["solve", "SolverConfig", "SolveProgress", "AssetLibrary", "check_relations",
            "STRATEGIES", "SEARCHES"]
+
+
+def canonical_pag(pag: PAG, vocabulary) -> PAG:
+    """``pag`` with its words resolved (:func:`parse3d.pag.canonical.canonical_document`): a
+    hypernym becomes the list of its members the solver draws among, a synonym its category,
+    a part word its label. The same object when every word already is one.
+
+    ``vocabulary`` is the category vocabulary or a function giving it, called only when some
+    word is not plainly a category name or a label (bundled templates never need it)."""
+    if _plain_words(pag):
+        return pag
+    if callable(vocabulary):
+        vocabulary = vocabulary()
+    data = pag.to_dict()
+    out = canonical_document(data, Resolver(vocabulary))
+    return pag if out is data else PAG.from_dict(out)
+
+
+def _plain_words(pag: PAG) -> bool:
+    """Every category word is written as a category is named and is no hypernym or synonym,
+    and no part word is one the vocabulary file lists (what a validated PAG then means)."""
+    from ..words import lexicon, normalize
+
+    lex = lexicon()
+    for node in pag.objects.values():
+        for c in node.candidates:
+            if c != normalize(c) or c in lex.hypernyms or c in lex.synonyms:
+                return False
+    for e in pag.relations:
+        for ref in (e.child, e.parent):
+            if ref.part is None:
+                continue
+            if ref.part != normalize(ref.part):
+                return False
+            for c in pag.objects[ref.object].candidates if ref.object in pag.objects else ():
+                if ref.part in lex.parts.get(c, ()) or any(
+                        ref.part in lex.parts.get(h, ()) for h, ms in lex.hypernyms.items() if c in ms):
+                    return False
+    return True
 
 
 def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
@@ -36,7 +77,8 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
     ----------
     pag : PAG
         The graph (validated first, against the asset registry's vocabulary, unless
-        ``validate=False``).
+        ``validate=False``). Its words are resolved first (:func:`canonical_pag`): the scene
+        holds the resolved graph, and each object's category is the one drawn.
     seed : int
         Scene seed; the same PAG, seed and library give the same scene.
     library : AssetLibrary, optional
@@ -66,10 +108,14 @@ def solve(pag: PAG, seed: int = 0, *, library: AssetLibrary | None = None,
     InfeasibleError
         With ``strict=True``, when some object could not be placed.
     """
-    if validate:
-        from ..assets.registry import vocabulary
+    from ..assets.registry import vocabulary
 
-        pag.validate(vocabulary=vocabulary())
+    if validate:
+        vocab = vocabulary()
+        pag.validate(vocabulary=vocab)
+        pag = canonical_pag(pag, vocab)
+    else:
+        pag = canonical_pag(pag, vocabulary)
     scene = solve_scene(pag, seed=seed, library=library, config=config, progress=progress,
                         deadline=deadline, proposals=proposals)
     if strict and not scene.ok:

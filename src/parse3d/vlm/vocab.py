@@ -101,7 +101,9 @@ RELATION_SYNONYMS: MappingProxyType[str, str] = MappingProxyType({
     "no contact with": "no contact", "not in contact": "no contact",
 })
 
-#: Object names a model may use -> the benchmark's label (the category with spaces).
+#: Object names a model may use -> the benchmark's label (the category with spaces). Checked
+#: first (it settles what a hypernym such as "chair" counts as in the benchmark); then the
+#: synonyms of the package's vocabulary file (``parse3d/data/vocabulary.json``).
 OBJECT_SYNONYMS: MappingProxyType[str, str] = MappingProxyType({
     "couch": "sofa", "settee": "sofa", "television": "tv", "tv set": "tv",
     "bedside table": "nightstand", "night stand": "nightstand", "bedside cabinet": "nightstand",
@@ -156,6 +158,16 @@ def normalize_object(name: str) -> str:
         return OBJECT_SYNONYMS[t]
     if t.endswith("s") and t[:-1] in OBJECT_SYNONYMS:
         return OBJECT_SYNONYMS[t[:-1]]
+    # the package's vocabulary file: a synonym naming one category (``bookshelf``, ``fridge``)
+    from ..words import lexicon, normalize, singulars
+
+    lex = lexicon()
+    w = normalize(t)
+    for form in (w, *singulars(w)):
+        target = lex.synonyms.get(form)
+        members = lex.hypernyms.get(target, (target,))
+        if target is not None and len(members) == 1:  # one category, not a kind of several
+            return object_label(members[0])
     return t
 
 

@@ -272,14 +272,22 @@ def _int_field(body: dict[str, Any], key: str, default: int, high: int = MAX_SEE
 
 
 def vocabulary_payload() -> dict[str, Any]:
-    """Everything the editor offers: categories, surfaces, relations, room elements."""
-    from ..assets.registry import categories
+    """Everything the editor offers: categories (with the part words each understands),
+    the words naming categories (synonyms and hypernyms, from the vocabulary file), surfaces,
+    relations, room elements."""
+    from ..assets.registry import categories, vocabulary
     from ..datagen.templates import ROOM_TYPES
+    from ..words import Resolver
 
+    words = Resolver(vocabulary())
     cats = [{"name": c.name, "variants": list(c.variants), "parts": list(c.parts),
              "vocabulary": list(c.vocabulary), "placement": c.placement,
-             "size_range": list(c.size_range), "source": c.source}
+             "size_range": list(c.size_range), "source": c.source,
+             "part_words": words.part_words(c.name)}
             for c in categories().values()]
+    names = {w: list(words.categories_for(w) or ())
+             for w in words.words(synonyms=True)
+             if w not in words.category_names() or words.is_hypernym(w)}
     relations = []
     for r in RELATIONS.values():
         parents = sorted(x for e in ROOM_PARENTS[r.name]
@@ -293,7 +301,8 @@ def vocabulary_payload() -> dict[str, Any]:
                         else p.default, "choices": list(p.choices), "doc": p.doc,
                         "required": p.required} for p in r.params],
         })
-    return {"categories": cats, "surfaces": {k: list(v) for k, v in SURFACES.items()},
+    return {"categories": cats, "words": names,
+            "surfaces": {k: list(v) for k, v in SURFACES.items()},
             "relations": relations, "room_types": list(ROOM_TYPES),
             "room_surfaces": ROOM_SURFACES, "stages": list(STAGES)}
 

@@ -69,7 +69,7 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw",), size_range=(0.4, 1.6), density=600,
+@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw", "hook"), size_range=(0.4, 1.6), density=600,
           variants=("bracketed", "floating", "two_tier"), placement="wall")
 def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.45, 1.2)
@@ -115,4 +115,11 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"screw_{2 * i + k}", "screw",
                                    S.cylinder(0.0045, 0.003, center=(x, y_face + 0.0015, z), axis=(0, 1, 0),
                                               sections=10), steel))
+    if variant == "bracketed":
+        # cup hooks under the board between the brackets (mugs, towels hang from them)
+        for k, x in enumerate(np.linspace(-w / 2 + 0.15, w / 2 - 0.15, 3 if w < 0.9 else 5)):
+            y = d * 0.6
+            parts.append(make_part(f"hook_{k}", "hook",
+                                   S.tube([(x, y, z_low), (x, y, z_low - 0.04), (x, y + 0.015, z_low - 0.05),
+                                           (x, y + 0.025, z_low - 0.035)], 0.0025, sections=6), steel))
     return parts

@@ -164,10 +164,20 @@ def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
 
 
-@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf"),
           size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
 def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
-    return _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True)
+    parts = _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True)
+    legs = [p for p in parts if p.label == "leg"]
+    if variant == "four_leg" and len(legs) == 4:
+        # a lower shelf between the legs (for magazines, a lamp's books)
+        lo = np.min([p.bounds[0] for p in legs], axis=0)
+        hi = np.max([p.bounds[1] for p in legs], axis=0)
+        top = next(p for p in parts if p.label == "tabletop")
+        parts.append(make_part("shelf", "shelf", S.box((hi[0] - lo[0] - 0.01, hi[1] - lo[1] - 0.01, 0.015),
+                                                       center=((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, lo[2] + 0.12)),
+                               top.material))
+    return parts
 
 
 @register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),

@@ -1,0 +1,411 @@
+"""Household and office appliances: microwave, toaster, toaster oven, coffee maker, mini
+fridge, dishwasher, clothes dryer, water cooler, range hood, printer, copier and computer tower.
+
+Fronts face +Y. Appliances with a cavity (microwave, toaster oven, mini fridge) are built from
+walls, so the cavity floor is an internal support surface (``IN``); their doors are hinged
+(revolute joints) and drawers and trays slide (prismatic).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Joint, Part, make_part
+from ..registry import register
+from ._casework import black, door_parts, drawer_parts, knob, white
+from ._kit import feet4, hinge_parts, prismatic, revolute
+
+
+def _shell(w: float, d: float, h: float, *, z0: float = 0.0, x0: float | None = None,
+           x1: float | None = None, t: float = 0.015) -> list[S.Shape]:
+    """Five walls (bottom, top, left, right, back) of a box open at the front (+Y), spanning
+    ``[x0, x1] x [-d/2, d/2] x [z0, z0 + h]``."""
+    x0 = -w / 2 if x0 is None else x0
+    x1 = w / 2 if x1 is None else x1
+    cw, cx = x1 - x0, (x0 + x1) / 2
+    return [S.box((cw, d, t), center=(cx, 0, z0 + t / 2)),
+            S.box((cw, d, t), center=(cx, 0, z0 + h - t / 2)),
+            S.box((t, d, h - 2 * t), center=(x0 + t / 2, 0, z0 + h / 2)),
+            S.box((t, d, h - 2 * t), center=(x1 - t / 2, 0, z0 + h / 2)),
+            S.box((cw - 2 * t, t, h - 2 * t), center=(cx, -d / 2 + t / 2, z0 + h / 2))]
+
+
+def _buttons(prefix: str, x: float, y: float, zs, mat, r: float = 0.008) -> list[Part]:
+    return [make_part(f"{prefix}_{k}", "button", S.cylinder(r, 0.006, center=(x, y + 0.002, z),
+                                                            axis=(0, 1, 0), sections=12), mat)
+            for k, z in enumerate(zs)]
+
+
+@register("microwave", parts=("body", "door"),
+          extra_parts=("control_panel", "button", "handle", "glass", "hinge", "foot", "turntable"),
+          size_range=(0.42, 0.62), density=250, variants=("countertop", "white", "steel"),
+          placement="surface")
+def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.33, 0.42), rng.uniform(0.26, 0.33)
+    mat = white(rng) if variant == "white" else (M.metal(rng) if variant == "steel" else black())
+    fh = 0.012
+    panel = w * 0.26
+    xc = w / 2 - panel  # the cavity runs from the left side to the control panel
+    out: list[Part | Joint] = [make_part("body", "body", _shell(w, d, h - fh, z0=fh, x1=xc + 0.015), mat)]
+    out.append(make_part("control_panel", "control_panel",
+                         S.box((panel, d, h - fh), center=(xc + panel / 2, 0, fh + (h - fh) / 2)), mat))
+    out += _buttons("button", xc + panel / 2, d / 2, np.linspace(fh + 0.06, h - 0.06, 4), black())
+    out += feet4("foot", w=w, d=d, r=0.012, h=fh, mat=black("rubber"), inset=0.02)
+    out.append(make_part("turntable", "turntable", S.cylinder(min(xc + w / 2, d) * 0.4, 0.006,
+                                                              center=((xc - w / 2) / 2, 0, fh + 0.018)),
+                         M.glass(rng)))
+    out += door_parts("door", x0=-w / 2, x1=xc, z0=fh, z1=h, y_back=d / 2, thick=0.02, mat=mat,
+                      handle_mat=mat, hinge_left=True, style="glass", glass=M.glass(rng),
+                      handle_len=(h - fh) * 0.6)
+    return out
+
+
+@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray"),
+          size_range=(0.2, 0.42), density=300, variants=("two_slot", "four_slot", "long_slot"),
+          placement="surface")
+def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    n = 4 if variant == "four_slot" else 2
+    w = rng.uniform(0.26, 0.32) if variant == "four_slot" else rng.uniform(0.22, 0.28)
+    d = rng.uniform(0.15, 0.19) if variant != "four_slot" else rng.uniform(0.26, 0.3)
+    h = rng.uniform(0.18, 0.21)
+    mat = M.metal(rng) if rng.uniform() < 0.5 else white(rng)
+    fh = 0.008
+    out: list[Part | Joint] = [make_part("body", "body", S.box((w, d, h - fh), center=(0, 0, fh + (h - fh) / 2),
+                                                               bevel=0.02), mat)]
+    rows = 2 if n == 4 else 1
+    cols = 2 if variant != "long_slot" else 1
+    sl = (d * 0.8) if variant == "long_slot" else (d * 0.75 / rows)
+    for i in range(cols):
+        for j in range(rows):
+            x = (i - (cols - 1) / 2) * w * 0.3
+            y = (j - (rows - 1) / 2) * d * 0.45
+            if variant == "long_slot":
+                x, sl_w, sl_d = (i - 0.5) * 0.04, 0.012, w * 0.8
+                out.append(make_part(f"slot_{i}_{j}", "slot", S.box((sl_d, sl_w, 0.004),
+                                                                    center=(0, y + (i - 0.5) * 0.04, h + 0.001)),
+                                     black()))
+                continue
+            out.append(make_part(f"slot_{i}_{j}", "slot", S.box((0.014, sl, 0.004), center=(x, y, h + 0.001)),
+                                 black()))
+    out.append(make_part("lever", "lever", S.box((0.03, 0.03, 0.015), center=(w / 2 + 0.012, 0, h * 0.7)),
+                         black()))
+    out.append(make_part("knob", "knob", knob((w / 2, 0, h * 0.35), 0.012, 0.01, axis=(1, 0, 0)), black()))
+    out.append(make_part("crumb_tray", "crumb_tray", S.box((w * 0.8, d * 0.8, 0.006),
+                                                           center=(0, 0, fh + 0.004)), mat))
+    out += feet4("foot", w=w, d=d, r=0.01, h=fh, mat=black("rubber"), inset=0.02)
+    return out
+
+
+@register("toaster_oven", parts=("body", "door"),
+          extra_parts=("control_panel", "knob", "handle", "glass", "hinge", "rack", "foot"),
+          size_range=(0.38, 0.56), density=300, variants=("steel", "black", "white"),
+          placement="surface")
+def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d, h = rng.uniform(0.4, 0.52), rng.uniform(0.3, 0.38), rng.uniform(0.22, 0.28)
+    mat = {"steel": M.metal(rng), "black": black(), "white": white(rng)}[variant]
+    fh = 0.02
+    panel = w * 0.22
+    xc = w / 2 - panel
+    out: list[Part | Joint] = [make_part("body", "body", _shell(w, d, h - fh, z0=fh, x1=xc + 0.015), mat)]
+    out.append(make_part("control_panel", "control_panel",
+                         S.box((panel, d, h - fh), center=(xc + panel / 2, 0, fh + (h - fh) / 2)), mat))
+    for k, z in enumerate(np.linspace(fh + 0.05, h - 0.05, 3)):
+        out.append(make_part(f"knob_{k}", "knob", knob((xc + panel / 2, d / 2, z), 0.016, 0.018), black()))
+    out.append(make_part("rack", "rack", [S.box((xc + w / 2 - 0.04, 0.006, 0.006),
+                                                center=((xc - w / 2) / 2, y, fh + (h - fh) * 0.4))
+                                          for y in np.linspace(-d / 2 + 0.04, d / 2 - 0.05, 6)],
+                         M.metal(rng)))
+    out += feet4("foot", w=w, d=d, r=0.012, h=fh, mat=black("rubber"), inset=0.02)
+    out += door_parts("door", x0=-w / 2, x1=xc, z0=fh, z1=h, y_back=d / 2, thick=0.015, mat=mat,
+                      handle_mat=M.metal(rng), hinge_left=True, style="glass", glass=M.glass(rng),
+                      handle_len=(xc + w / 2) * 0.7, handle_at="top")
+    return out
+
+
+@register("coffee_maker", parts=("base", "reservoir", "head"),
+          extra_parts=("carafe", "handle", "button", "drip_tray", "lid"),
+          size_range=(0.25, 0.45), density=400, variants=("drip", "pod", "espresso"),
+          placement="surface")
+def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d, h = rng.uniform(0.18, 0.28), rng.uniform(0.22, 0.3), rng.uniform(0.28, 0.4)
+    mat = black() if rng.uniform() < 0.5 else M.metal(rng)
+    bh = 0.04
+    out = [make_part("base", "base", S.box((w, d, bh), center=(0, 0, bh / 2), bevel=0.005), mat),
+           make_part("reservoir", "reservoir", S.box((w, d * 0.35, h - bh), center=(0, -d / 2 + d * 0.175, bh + (h - bh) / 2),
+                                                     bevel=0.006), M.glass(rng)),
+           make_part("head", "head", S.box((w, d * 0.65, h * 0.22), center=(0, d * 0.175, h - h * 0.11),
+                                           bevel=0.008), mat)]
+    out.append(make_part("lid", "lid", S.box((w * 0.9, d * 0.3, 0.01), center=(0, -d / 2 + d * 0.175, h + 0.005)),
+                         mat))
+    if variant == "drip":
+        r = min(w, d * 0.6) * 0.38
+        ch = (h - bh) - h * 0.22 - 0.02
+        yc = d * 0.175
+        out.append(make_part("carafe", "carafe", S.transformed(
+            S.lathe([(r * 0.9, 0.0), (r, ch * 0.5), (r * 0.8, ch)]),
+            np.array([[1, 0, 0, 0], [0, 1, 0, yc], [0, 0, 1, bh], [0, 0, 0, 1.0]])), M.glass(rng)))
+        out.append(make_part("handle", "handle", S.tube([(0, yc + r - 0.002, bh + ch * 0.8),
+                                                         (0, yc + r + 0.03, bh + ch * 0.8),
+                                                         (0, yc + r + 0.03, bh + ch * 0.3),
+                                                         (0, yc + r - 0.002, bh + ch * 0.3)], 0.006),
+                             black()))
+    else:
+        out.append(make_part("drip_tray", "drip_tray", S.box((w * 0.7, d * 0.35, 0.015),
+                                                             center=(0, d * 0.25, bh + 0.0075)),
+                             M.metal(rng)))
+    out += _buttons("button", w * 0.3, d / 2, [h - h * 0.11], black(), r=0.007)
+    return out
+
+
+@register("mini_fridge", parts=("body", "door"),
+          extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass"),
+          size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
+          placement="floor")
+def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    if variant == "cube":
+        w, d, h = rng.uniform(0.42, 0.48), rng.uniform(0.44, 0.5), rng.uniform(0.48, 0.55)
+    else:
+        w, d, h = rng.uniform(0.48, 0.55), rng.uniform(0.5, 0.58), rng.uniform(0.8, 0.88)
+    mat = white(rng) if variant != "glass_door" else black()
+    fh = 0.02
+    t = 0.04  # insulated walls
+    out: list[Part | Joint] = [make_part("body", "body", _shell(w, d - 0.05, h - fh, z0=fh, t=t), mat)]
+    out[0] = make_part("body", "body", [S.transformed(s, np.array([[1, 0, 0, 0], [0, 1, 0, -0.025],
+                                                                   [0, 0, 1, 0], [0, 0, 0, 1.0]]))
+                                        for s in _shell(w, d - 0.05, h - fh, z0=fh, t=t)], mat)
+    zi = fh + (h - fh) * 0.5
+    out.append(make_part("shelf", "shelf", S.box((w - 2 * t, d - 0.05 - t - 0.02, 0.006),
+                                                 center=(0, -0.025 + t / 2 - 0.01, zi)), M.glass(rng)))
+    if variant != "glass_door":
+        out.append(make_part("freezer_compartment", "freezer_compartment",
+                             S.box((w - 2 * t - 0.02, (d - 0.05) * 0.6, 0.1),
+                                   center=(0, -0.025, h - t - 0.06)), white(rng)))
+    out += feet4("foot", w=w, d=d - 0.05, r=0.015, h=fh, mat=black("rubber"), inset=0.02)
+    out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
+                      handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
+                      else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
+    return out
+
+
+@register("dishwasher", parts=("body", "door"),
+          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button"),
+          size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
+def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
+    mat = {"steel": M.metal(rng), "white": white(rng), "panel_ready": M.wood(rng)}[variant]
+    tk = 0.1
+    out: list[Part | Joint] = [make_part("body", "body", _shell(w, d - 0.03, h - tk, z0=tk, t=0.02), mat)]
+    out[0] = make_part("body", "body", [S.transformed(s, np.array([[1, 0, 0, 0], [0, 1, 0, -0.015],
+                                                                   [0, 0, 1, 0], [0, 0, 0, 1.0]]))
+                                        for s in _shell(w, d - 0.03, h - tk, z0=tk, t=0.02)], mat)
+    out.append(make_part("toe_kick", "toe_kick", S.box((w, d - 0.1, tk), center=(0, -0.05, tk / 2)),
+                         black()))
+    for k, z in enumerate((tk + 0.1, tk + 0.4)):
+        out.append(make_part(f"rack_{k}", "rack", S.box((w - 0.08, d - 0.12, 0.1),
+                                                        center=(0, -0.03, z + 0.05)), M.metal(rng)))
+    out.append(make_part("control_panel", "control_panel",
+                         S.box((w, 0.03, 0.08), center=(0, d / 2 - 0.015, h - 0.04)), mat))
+    out += _buttons("button", w * 0.3, d / 2, [h - 0.04], black(), r=0.006)
+    out += door_parts("door", x0=-w / 2, x1=w / 2, z0=tk, z1=h - 0.08, y_back=d / 2 - 0.03,
+                      thick=0.03, mat=mat, handle_mat=M.metal(rng), hinge_left=True, style="flat",
+                      handle_len=w * 0.6, handle_at="top")
+    return out
+
+
+@register("clothes_dryer", parts=("body", "door"),
+          extra_parts=("control_panel", "knob", "display", "drum", "foot", "hinge", "lint_filter"),
+          size_range=(0.8, 1.0), density=300, variants=("front_load", "stacked_steel", "compact"))
+def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    if variant == "compact":
+        w, d, h = rng.uniform(0.58, 0.6), rng.uniform(0.45, 0.5), rng.uniform(0.8, 0.84)
+    else:
+        w, d, h = rng.uniform(0.6, 0.69), rng.uniform(0.6, 0.7), rng.uniform(0.84, 0.98)
+    mat = white(rng) if variant != "stacked_steel" else M.metal(rng)
+    fh = 0.02
+    out: list[Part | Joint] = [make_part("body", "body", S.box((w, d, h - fh - 0.12),
+                                                               center=(0, 0, fh + (h - fh - 0.12) / 2),
+                                                               bevel=0.006), mat)]
+    out.append(make_part("control_panel", "control_panel",
+                         S.box((w, d, 0.12), center=(0, 0, h - 0.06), bevel=0.006), mat))
+    out.append(make_part("knob", "knob", knob((-w * 0.3, d / 2, h - 0.06), 0.025, 0.02), black()))
+    out.append(make_part("display", "display", S.box((0.1, 0.004, 0.04), center=(w * 0.15, d / 2 + 0.001, h - 0.06)),
+                         black()))
+    out.append(make_part("lint_filter", "lint_filter", S.box((0.12, 0.01, 0.04),
+                                                             center=(w * 0.3, d / 2 + 0.004, fh + 0.05)),
+                         M.plastic(rng)))
+    out += feet4("foot", w=w, d=d, r=0.02, h=fh, mat=black("rubber"), inset=0.03)
+    r = min(w, h - 0.14) * 0.33
+    zc = fh + (h - fh - 0.12) / 2
+    out.append(make_part("drum", "drum", S.cylinder(r * 0.9, 0.004, center=(0, d / 2 + 0.002, zc),
+                                                    axis=(0, 1, 0), sections=28), M.metal(rng)))
+    door = S.cylinder(r, 0.04, center=(0, d / 2 + 0.024, zc), axis=(0, 1, 0), sections=28)
+    out.append(make_part("door", "door", door, M.glass(rng)))
+    out += hinge_parts("door_hinge", x=-r, y=d / 2 + 0.004, z0=zc - r * 0.5, z1=zc + r * 0.5,
+                       mat=M.metal(rng), radius=0.006, length=0.03)
+    out.append(revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(-r, d / 2 + 0.004, zc)))
+    return out
+
+
+@register("water_cooler", parts=("body", "bottle"),
+          extra_parts=("tap", "drip_tray", "cabinet_door", "collar"),
+          size_range=(0.55, 1.55), density=300, variants=("top_load", "bottom_load", "countertop"))
+def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.3, 0.34)
+    h = rng.uniform(0.9, 1.05) if variant != "countertop" else rng.uniform(0.5, 0.6)
+    mat = white(rng)
+    out = [make_part("body", "body", S.box((w, w, h), center=(0, 0, h / 2), bevel=0.01), mat)]
+    blue = M.solid(M.jitter(rng, (0.55, 0.75, 0.95), 0.03), "plastic", 0.2)
+    rb = w * 0.42
+    bh = rng.uniform(0.4, 0.48)
+    if variant == "bottom_load":
+        out.append(make_part("bottle", "bottle", S.cylinder(rb * 0.9, 0.04, center=(0, 0, h + 0.02)), blue))
+        out.append(make_part("cabinet_door", "cabinet_door", S.box((w * 0.8, 0.01, h * 0.5),
+                                                                   center=(0, w / 2 + 0.005, h * 0.3)), mat))
+    else:
+        out.append(make_part("collar", "collar", S.cylinder(rb * 0.6, 0.03, center=(0, 0, h + 0.015)), mat))
+        out.append(make_part("bottle", "bottle", S.lathe([(rb * 0.25, h + 0.03), (rb, h + 0.1),
+                                                          (rb, h + 0.03 + bh - 0.05), (rb * 0.9, h + 0.03 + bh)]),
+                             blue))
+    for k, sx in enumerate((-1, 1)):
+        col = (0.8, 0.1, 0.1) if sx > 0 else (0.1, 0.3, 0.8)
+        out.append(make_part(f"tap_{k}", "tap", S.box((0.03, 0.04, 0.04),
+                                                      center=(sx * w * 0.2, w / 2 + 0.02, h * 0.85)),
+                             M.solid(col)))
+    out.append(make_part("drip_tray", "drip_tray", S.box((w * 0.6, 0.06, 0.015),
+                                                         center=(0, w / 2 + 0.03, h * 0.65)), black()))
+    return out
+
+
+@register("range_hood", parts=("canopy", "chimney"), extra_parts=("filter", "light", "button"),
+          size_range=(0.6, 1.25), density=200, variants=("chimney", "slim", "island"),
+          placement="wall")
+def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.6, 0.9), rng.uniform(0.45, 0.55)
+    steel = M.metal(rng)
+    ch = rng.uniform(0.08, 0.15)
+    chimney_h = rng.uniform(0.35, 0.6) if variant != "slim" else 0.1
+    top_w = w * 0.4
+    canopy = S.hull(np.array([[-w / 2, -d / 2, 0], [w / 2, -d / 2, 0], [-w / 2, d / 2, 0], [w / 2, d / 2, 0],
+                              [-top_w / 2, -d / 2, ch + 0.08], [top_w / 2, -d / 2, ch + 0.08],
+                              [-top_w / 2, -d / 2 + 0.25, ch + 0.08], [top_w / 2, -d / 2 + 0.25, ch + 0.08],
+                              [-w / 2, -d / 2, ch * 0.4], [w / 2, -d / 2, ch * 0.4],
+                              [-w / 2, d / 2, ch * 0.4], [w / 2, d / 2, ch * 0.4]]))
+    out = [make_part("canopy", "canopy", canopy, steel),
+           make_part("chimney", "chimney", S.box((top_w * 0.9, 0.22, chimney_h),
+                                                 center=(0, -d / 2 + 0.125, ch + 0.08 + chimney_h / 2)),
+                     steel),
+           make_part("filter", "filter", S.box((w * 0.8, d * 0.7, 0.006), center=(0, 0.02, 0.004)),
+                     M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8))]
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"light_{k}", "light", S.cylinder(0.025, 0.004, center=(sx * w * 0.35, d * 0.3, 0.003)),
+                             M.solid((1.0, 0.97, 0.85), "glass", 0.1)))
+    out += _buttons("button", 0, d / 2, [ch * 0.2], black(), r=0.006)
+    return out
+
+
+@register("printer", parts=("body", "paper_tray"),
+          extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge"),
+          size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
+          placement="surface")
+def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d = rng.uniform(0.38, 0.5), rng.uniform(0.3, 0.42)
+    h = rng.uniform(0.14, 0.2) if variant == "inkjet" else rng.uniform(0.22, 0.32)
+    mat = black() if rng.uniform() < 0.5 else white(rng, "plastic")
+    lid_h = 0.04 if variant == "all_in_one" else 0.0
+    bh = h - lid_h
+    out: list[Part | Joint] = [make_part("body", "body", S.box((w, d, bh), center=(0, 0, bh / 2), bevel=0.008),
+                                         mat)]
+    out.append(make_part("paper_tray", "paper_tray", S.box((w * 0.7, d * 0.6, 0.04),
+                                                           center=(0, d / 2 + 0.005 - d * 0.3, 0.03)), mat))
+    out.append(prismatic("paper_tray_slide", "body", "paper_tray", travel=d * 0.45))
+    out.append(make_part("output_tray", "output_tray", S.box((w * 0.6, 0.12, 0.006),
+                                                             center=(0, d / 2 + 0.06, bh * 0.55)), mat))
+    out.append(make_part("control_panel", "control_panel", S.box((w * 0.3, 0.04, 0.03),
+                                                                 center=(w * 0.3, d / 2 - 0.02, bh + 0.001 - 0.015)),
+                         black()))
+    out.append(make_part("display", "display", S.box((0.06, 0.002, 0.02),
+                                                     center=(w * 0.3, d / 2 + 0.0005, bh - 0.015)),
+                         M.solid((0.2, 0.4, 0.6), "glass", 0.1)))
+    out += _buttons("button", w * 0.42, d / 2, [bh - 0.015], M.solid((0.3, 0.8, 0.3)), r=0.005)
+    if variant == "all_in_one":
+        out.append(make_part("lid", "lid", S.box((w, d * 0.8, lid_h), center=(0, -d * 0.1, bh + lid_h / 2),
+                                                 bevel=0.004), mat))
+        out += hinge_parts("lid_hinge", x=bh, y=-d / 2, z0=-w * 0.3, z1=w * 0.3, mat=black(), axis="x",
+                           radius=0.005, length=0.03)
+        out.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, bh), opens=1.2))
+    return out
+
+
+@register("copier", parts=("body", "scanner", "drawer"),
+          extra_parts=("lid", "output_tray", "control_panel", "display", "drawer_box", "handle",
+                       "caster", "hinge"),
+          size_range=(0.9, 1.3), density=350, variants=("floor", "floor_finisher", "cabinet"))
+def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d = rng.uniform(0.58, 0.68), rng.uniform(0.6, 0.72)
+    h = rng.uniform(0.95, 1.2)
+    mat = white(rng, "plastic")
+    ch = 0.06
+    sh = 0.12  # the scanner on top
+    bh = h - sh - ch - 0.03
+    out: list[Part | Joint] = [make_part("body", "body", S.box((w, d - 0.03, bh - 0.05), center=(0, -0.015, ch + 0.05 + (bh - 0.05) / 2)),
+                                         mat)]
+    out.append(make_part("body_plinth", "body", S.box((w, d, 0.05), center=(0, 0, ch + 0.025)), mat))
+    n = 3 if variant != "cabinet" else 2
+    zt = ch + 0.05
+    dh = (bh * 0.55 - 0.05) / n
+    for k in range(n):
+        out += drawer_parts(f"drawer_{k}", x0=-w / 2 + 0.01, x1=w / 2 - 0.01, z0=zt + k * dh,
+                            z1=zt + (k + 1) * dh - 0.005, y_front=d / 2, depth=d * 0.6, thick=0.02,
+                            mat=mat, handle_mat=black(), parent="body")
+    out.append(make_part("scanner", "scanner", S.box((w, d, sh), center=(0, 0, ch + bh + sh / 2),
+                                                     bevel=0.006), mat))
+    out.append(make_part("scanner_post", "body", S.box((w * 0.3, d * 0.9, 0.03),
+                                                       center=(-w * 0.35, 0, ch + bh - 0.015)), mat))
+    out.append(make_part("lid", "lid", S.box((w, d * 0.9, 0.03), center=(0, -d * 0.05, ch + bh + sh + 0.015)),
+                         mat))
+    out += hinge_parts("lid_hinge", x=ch + bh + sh, y=-d / 2, z0=-w * 0.3, z1=w * 0.3, mat=black(), axis="x",
+                       radius=0.006, length=0.04)
+    out.append(revolute("lid_hinge", "scanner", "lid", axis=(1, 0, 0), origin=(0, -d / 2, ch + bh + sh),
+                        opens=1.2))
+    out.append(make_part("control_panel", "control_panel", S.box((w * 0.45, 0.1, 0.03),
+                                                                 center=(w * 0.2, d / 2 - 0.05, ch + bh + sh + 0.016)),
+                         black()))
+    out.append(make_part("output_tray", "output_tray", S.box((w * 0.5, d * 0.6, 0.01),
+                                                             center=(-w * 0.1, 0.0, ch + bh - 0.02)),
+                         M.plastic(rng)))
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"caster_{k}", "caster", S.cylinder(ch / 2, 0.03, center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), ch / 2),
+                                                                  axis=(1, 0, 0), sections=14), black()))
+    return out
+
+
+@register("computer_tower", parts=("case",),
+          extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel"),
+          size_range=(0.3, 0.58), density=400, variants=("mid_tower", "full_tower", "mini"),
+          placement="floor")
+def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.18, 0.23)
+    d, h = {"mid_tower": (rng.uniform(0.4, 0.48), rng.uniform(0.42, 0.48)),
+            "full_tower": (rng.uniform(0.48, 0.55), rng.uniform(0.5, 0.55)),
+            "mini": (rng.uniform(0.28, 0.34), rng.uniform(0.3, 0.36))}[variant]
+    mat = black() if rng.uniform() < 0.7 else white(rng, "metal")
+    fh = 0.015
+    out = [make_part("case", "case", S.box((w, d, h - fh), center=(0, -0.01, fh + (h - fh) / 2)), mat),
+           make_part("front_panel", "front_panel", S.box((w, 0.02, h - fh), center=(0, d / 2 - 0.01, fh + (h - fh) / 2),
+                                                         bevel=0.004), mat),
+           make_part("side_panel", "side_panel", S.box((0.004, d * 0.7, (h - fh) * 0.7),
+                                                       center=(w / 2 + 0.002 - 0.004, -0.02, fh + (h - fh) * 0.5)),
+                     M.glass(rng))]
+    out.append(make_part("power_button", "power_button", S.cylinder(0.008, 0.006, center=(0, d / 2 + 0.002, h - 0.04),
+                                                                    axis=(0, 1, 0), sections=12),
+                         M.solid((0.3, 0.5, 0.9))))
+    if variant != "mini":
+        out.append(make_part("drive_bay", "drive_bay", S.box((w * 0.8, 0.004, 0.045),
+                                                             center=(0, d / 2 + 0.001, h - 0.1)), black()))
+    out.append(make_part("vent", "vent", S.box((w * 0.6, 0.004, 0.12), center=(0, d / 2 + 0.001, fh + 0.12)),
+                         black()))
+    out += feet4("foot", w=w, d=d - 0.02, r=0.012, h=fh, mat=black("rubber"), inset=0.01)
+    return out
+

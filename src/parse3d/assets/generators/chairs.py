@@ -1,0 +1,248 @@
+"""Plain seats: a chair, a stool, a bench, an ottoman and a folding chair.
+
+Seats face +Y (a sitter looks toward +Y); the back, where there is one, is at -Y. Legs stand on
+z = 0. The ``chair`` is the everyday side chair people mean when they write "chair": four legs,
+a seat and a back, in wood, a moulded shell or stacking tube.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Part, make_part
+from ..registry import register
+from ._kit import legs4, rot
+
+
+def _stretchers(w: float, d: float, z: float, size: float, inset: float, mat,
+                label: str = "stretcher") -> list[Part]:
+    """Four bars joining four corner legs at height ``z`` (left, right, back, front)."""
+    xs, ys = w / 2 - inset - size / 2, d / 2 - inset - size / 2
+    bars = [S.box((size * 0.7, 2 * ys, size * 0.7), center=(-xs, 0, z)),
+            S.box((size * 0.7, 2 * ys, size * 0.7), center=(xs, 0, z)),
+            S.box((2 * xs, size * 0.7, size * 0.7), center=(0, -ys, z)),
+            S.box((2 * xs, size * 0.7, size * 0.7), center=(0, ys, z))]
+    return [make_part(f"{label}_{k}", label, b, mat) for k, b in enumerate(bars)]
+
+
+@register("chair", parts=("seat", "back", "leg"),
+          extra_parts=("stretcher", "back_post", "slat", "foot"), size_range=(0.72, 1.0),
+          density=600, variants=("wooden", "shell", "stacking"))
+def chair(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.40, 0.48), rng.uniform(0.40, 0.47)
+    hs = rng.uniform(0.43, 0.47)
+    hb = rng.uniform(0.34, 0.44)  # back height above the seat
+    out: list[Part] = []
+    if variant == "wooden":
+        mat = M.wood(rng)
+        st, leg = 0.025, rng.uniform(0.032, 0.04)
+        out.append(make_part("seat", "seat", S.box((w, d, st), center=(0, 0, hs - st / 2),
+                                                   bevel=0.004), mat))
+        out += legs4("leg", "leg", w=w, d=d, h=hs - st, size=leg, mat=mat, inset=0.01)
+        out += _stretchers(w, d, rng.uniform(0.12, 0.18), leg, 0.01, mat)
+        px = w / 2 - 0.01 - leg / 2
+        py = -d / 2 + 0.01 + leg / 2
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"back_post_{k}", "back_post",
+                                 S.box((leg, leg, hb), center=(sx * px, py, hs + hb / 2)), mat))
+        rail = rng.uniform(0.08, 0.14)
+        out.append(make_part("back", "back", S.box((2 * px - leg, leg * 0.8, rail),
+                                                   center=(0, py, hs + hb - rail / 2)), mat))
+        n = int(rng.integers(2, 5))
+        zl = hs + 0.05
+        for k in range(n):
+            x = -px + leg / 2 + (2 * px - leg) * (k + 0.5) / n
+            out.append(make_part(f"slat_{k}", "slat",
+                                 S.box((0.018, leg * 0.5, hb - rail - 0.05),
+                                       center=(x, py, zl + (hb - rail - 0.05) / 2)), mat))
+        return out
+    shell = variant == "shell"
+    body = M.plastic(rng)
+    metal = M.metal(rng)
+    st = 0.012 if shell else 0.02
+    r = 0.011 if shell else 0.012
+    out.append(make_part("seat", "seat", S.box((w, d, st), center=(0, 0, hs - st / 2),
+                                               bevel=0.004), body))
+    tilt = rot((1, 0, 0), -0.12)
+    back_c = (0, -d / 2 + 0.02, hs + hb / 2 + 0.02)
+    out.append(make_part("back", "back", S.box((w * 0.95, st, hb * 0.8), center=back_c,
+                                               bevel=0.003, R=tilt), body))
+    # legs splayed a little (shell) or straight tubes (stacking)
+    splay = 0.03 if shell else 0.0
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        top = np.array([sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), hs - st])
+        foot = top + np.array([sx * splay, sy * splay, 0.0])
+        foot[2] = r
+        out.append(make_part(f"leg_{k}", "leg", S.tube([foot, top], r, sections=10), metal))
+        out.append(make_part(f"foot_{k}", "foot", S.cylinder(r * 1.2, 0.008,
+                                                            center=(foot[0], foot[1], 0.004)),
+                             M.solid((0.1, 0.1, 0.1))))
+    if not shell:  # the stacking chair's back posts run from the back legs up the back
+        for k, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - 0.05)
+            out.append(make_part(f"back_post_{k}", "back_post",
+                                 S.tube([(x, -d / 2 + 0.05, hs - st), (x, -d / 2 + 0.03, hs + hb * 0.7)],
+                                        r, sections=10), metal))
+    return out
+
+
+@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step"),
+          size_range=(0.28, 0.68), density=600, variants=("round", "square", "step"))
+def stool(rng: np.random.Generator, variant: str) -> list[Part]:
+    mat = M.wood(rng)
+    if variant == "step":  # a two-step kitchen step stool
+        w, d, h = rng.uniform(0.38, 0.45), rng.uniform(0.32, 0.4), rng.uniform(0.4, 0.5)
+        t = 0.022
+        out = [make_part("seat", "seat", S.box((w, d * 0.55, t), center=(0, -d * 0.225, h - t / 2),
+                                               bevel=0.003), mat),
+               make_part("step", "step", S.box((w, d * 0.45, t),
+                                               center=(0, d * 0.275, h * 0.5 - t / 2),
+                                               bevel=0.003), mat)]
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"leg_{k}", "leg", S.box((t, d, h - t), center=(sx * (w / 2 - t / 2),
+                                                                                0, (h - t) / 2)),
+                                 mat))
+        return out
+    h = rng.uniform(0.42, 0.6)
+    st = 0.03
+    if variant == "round":
+        r = rng.uniform(0.15, 0.18)
+        seat = S.cylinder(r, st, center=(0, 0, h - st / 2), sections=28)
+        w = d = r * 1.4
+    else:
+        w = d = rng.uniform(0.3, 0.36)
+        seat = S.box((w, d, st), center=(0, 0, h - st / 2), bevel=0.004)
+    out = [make_part("seat", "seat", seat, mat)]
+    leg = 0.03
+    out += legs4("leg", "leg", w=w, d=d, h=h - st, size=leg, mat=mat, round_=variant == "round")
+    out += _stretchers(w, d, h * 0.3, leg, 0.0, mat)
+    return out
+
+
+@register("bench", parts=("seat", "leg"), extra_parts=("rail", "back", "armrest", "frame"),
+          size_range=(0.9, 1.9), density=550, variants=("slatted", "park", "upholstered"))
+def bench(rng: np.random.Generator, variant: str) -> list[Part]:
+    """The seat is what one sits on: the slats of a slatted or park bench (on two rails), the
+    padded top of an upholstered one (on its frame)."""
+    w, d = rng.uniform(1.0, 1.8), rng.uniform(0.32, 0.45)
+    hs = rng.uniform(0.42, 0.47)
+    wood, metal = M.wood(rng), M.metal(rng)
+    out: list[Part] = []
+    t = 0.03
+    if variant == "upholstered":
+        out.append(make_part("frame", "frame", S.box((w, d, 0.04), center=(0, 0, hs - 0.1),
+                                                     bevel=0.004), wood))
+        out.append(make_part("seat", "seat", S.box((w - 0.02, d - 0.02, 0.06),
+                                                   center=(0, 0, hs - 0.03), bevel=0.015),
+                             M.fabric(rng)))
+        out += legs4("leg", "leg", w=w, d=d, h=hs - 0.12, size=0.045, mat=wood, inset=0.03)
+        return out
+    n = int(rng.integers(3, 6))
+    gap = 0.012
+    sw = (d - gap * (n - 1)) / n
+    for k in range(n):
+        y = -d / 2 + sw / 2 + k * (sw + gap)
+        out.append(make_part(f"seat_{k}", "seat", S.box((w, sw, t), center=(0, y, hs - t / 2),
+                                                        bevel=0.003), wood))
+    # two rails along the length carry the slats
+    rail = [S.box((w - 0.1, 0.03, 0.05), center=(0, sy * (d / 2 - 0.05), hs - t - 0.025))
+            for sy in (-1, 1)]
+    out.append(make_part("rail", "rail", rail, wood if variant == "slatted" else metal))
+    legmat = wood if variant == "slatted" else metal
+    out += legs4("leg", "leg", w=w - 0.1, d=d, h=hs - t - 0.05, size=0.045, mat=legmat, inset=0.0)
+    if variant == "park":
+        hb = rng.uniform(0.35, 0.45)
+        back = [S.box((w, 0.025, 0.08), center=(0, -d / 2 - 0.03, hs + z), bevel=0.003)
+                for z in (hb * 0.35, hb * 0.75)]
+        out.append(make_part("back", "back", back, wood))
+        for k, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - 0.05)
+            out.append(make_part(f"armrest_{k}", "armrest",
+                                 [S.tube([(x, -d / 2 - 0.03, hs + 0.2), (x, d / 2 - 0.04, hs + 0.2)],
+                                         0.012, sections=10),
+                                  S.tube([(x, d / 2 - 0.04, hs + 0.2), (x, d / 2 - 0.04, hs)],
+                                         0.012, sections=10)], metal))
+    return out
+
+
+@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping"),
+          size_range=(0.35, 1.0), density=300, variants=("cube", "round", "tufted"))
+def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
+    h = rng.uniform(0.38, 0.46)
+    fab = M.fabric(rng)
+    foot_h = 0.04 if variant != "round" else 0.0
+    top = 0.08
+    if variant == "round":
+        r = rng.uniform(0.2, 0.3)
+        body = S.cylinder(r, h - top, center=(0, 0, (h - top) / 2), sections=28)
+        cush = S.cylinder(r, top, center=(0, 0, h - top / 2), sections=28)
+        out = [make_part("body", "body", body, fab), make_part("cushion", "cushion", cush, fab)]
+        out.append(make_part("piping", "piping", S.cylinder(r + 0.006, 0.012,
+                                                           center=(0, 0, h - top), sections=28), fab))
+        return out
+    w = rng.uniform(0.42, 0.95)
+    d = min(w, rng.uniform(0.42, 0.6))
+    out = [make_part("body", "body", S.box((w, d, h - top - foot_h),
+                                           center=(0, 0, foot_h + (h - top - foot_h) / 2),
+                                           bevel=0.01), fab),
+           make_part("cushion", "cushion", S.box((w, d, top), center=(0, 0, h - top / 2),
+                                                 bevel=0.02), fab)]
+    wood = M.wood(rng)
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"foot_{k}", "foot",
+                             S.cylinder(0.02, foot_h, center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05),
+                                                             foot_h / 2), sections=12), wood))
+    if variant == "tufted":
+        for i in range(3):
+            for j in range(2):
+                x, y = (i - 1) * w / 4, (j - 0.5) * d / 2.5
+                out.append(make_part(f"button_{i}_{j}", "button",
+                                     S.cylinder(0.012, 0.008, center=(x, y, h - 0.003),
+                                                sections=10), fab))
+    return out
+
+
+@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot"),
+          size_range=(0.72, 0.95), density=700, variants=("open", "folded"))
+def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.42, 0.46)
+    hs, hb = rng.uniform(0.43, 0.46), rng.uniform(0.36, 0.42)
+    metal, body = M.metal(rng), M.plastic(rng)
+    r = 0.011
+    out: list[Part] = []
+    if variant == "folded":  # seat swung up against the back: a flat frame standing upright
+        depth = 0.06
+        for k, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - r)
+            out.append(make_part(f"leg_{k}", "leg", S.tube([(x, 0, r), (x, 0, hs + hb)], r,
+                                                           sections=10), metal))
+            out.append(make_part(f"leg_{k + 2}", "leg", S.tube([(x * 0.9, depth - r, r),
+                                                               (x * 0.9, depth - r, hs + 0.05)],
+                                                              r, sections=10), metal))
+        out.append(make_part("back", "back", S.box((w - 4 * r, 0.012, hb * 0.45),
+                                                   center=(0, 0.0, hs + hb * 0.7)), body))
+        out.append(make_part("seat", "seat", S.box((w * 0.9 - 4 * r, 0.012, 0.4),
+                                                   center=(0, depth / 2, hs * 0.55)), body))
+        out.append(make_part("crossbar", "crossbar", S.tube([(-w / 2 + r, 0, 0.15),
+                                                             (w / 2 - r, 0, 0.15)], r * 0.8),
+                             metal))
+        return out
+    d = rng.uniform(0.4, 0.45)
+    out.append(make_part("seat", "seat", S.box((w - 4 * r, d, 0.015), center=(0, 0, hs - 0.0075),
+                                               bevel=0.003), body))
+    for k, sx in enumerate((-1, 1)):
+        x = sx * (w / 2 - r)
+        # the back legs rise into the back posts; the front legs run to the back's foot
+        out.append(make_part(f"leg_{k}", "leg", S.tube([(x, -d / 2, r), (x, -d / 2 + 0.02, hs + hb)],
+                                                       r, sections=10), metal))
+        out.append(make_part(f"leg_{k + 2}", "leg", S.tube([(x * 0.93, d / 2 - 0.02, r),
+                                                           (x * 0.93, -d / 2 + 0.1, hs - 0.02)],
+                                                          r, sections=10), metal))
+    out.append(make_part("back", "back", S.box((w - 4 * r, 0.012, hb * 0.45),
+                                               center=(0, -d / 2 + 0.02, hs + hb * 0.7)), body))
+    out.append(make_part("crossbar", "crossbar", S.tube([(-w / 2 + r, -d / 2 + 0.01, 0.2),
+                                                         (w / 2 - r, -d / 2 + 0.01, 0.2)], r * 0.8),
+                         metal))
+    return out

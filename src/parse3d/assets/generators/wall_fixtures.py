@@ -1,0 +1,448 @@
+"""Things fixed to walls and ceilings: toilet paper and its holder, paper towel dispenser and
+roll, grab bar, shower head, curtain and closet rods, smoke detector, air vent, ceiling light,
+mailbox, sign, poster, calendar, bulletin board and blackboard; and a power strip.
+
+Wall items have their back (-Y) on the wall and face +Y; ceiling items hang from their top.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Joint, Part, make_part
+from ..registry import register
+from ._casework import black, white
+from ._household import ring
+from ._kit import hinge_parts, revolute
+
+
+@register("toilet_paper", parts=("roll",), extra_parts=("core", "sheet"),
+          size_range=(0.09, 0.2), density=300, variants=("standard", "double", "flat_packed"),
+          placement="surface")
+def toilet_paper(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.095, 0.105)
+    r = {"standard": rng.uniform(0.05, 0.056), "double": rng.uniform(0.06, 0.066),
+         "flat_packed": rng.uniform(0.045, 0.05)}[variant]
+    white_p = white(rng, "paper")
+    # lying on its side, the axis along X
+    roll = ring([(0.02, -w / 2), (r, -w / 2), (r, w / 2), (0.02, w / 2)], sections=28)
+    T = np.array([[0, 0, 1, 0], [0, 1, 0, 0], [-1, 0, 0, r], [0, 0, 0, 1.0]])
+    out = [make_part("roll", "roll", S.transformed(roll, T), white_p),
+           make_part("core", "core", S.transformed(ring([(0.018, -w / 2 + 0.001), (0.02, -w / 2 + 0.001),
+                                                         (0.02, w / 2 - 0.001), (0.018, w / 2 - 0.001)],
+                                                        sections=20), T), M.paper(rng))]
+    out.append(make_part("sheet", "sheet", S.box((w * 0.98, 0.06, 0.001), center=(0, r + 0.03, 0.0005)), white_p))
+    return out
+
+
+@register("toilet_paper_holder", parts=("bar", "bracket"), extra_parts=("roll", "cover", "plate"),
+          size_range=(0.12, 0.3), density=3000, variants=("bar", "covered", "double"),
+          placement="wall")
+def toilet_paper_holder(rng: np.random.Generator, variant: str) -> list[Part]:
+    metal = M.metal(rng)
+    w = 0.15 if variant != "double" else 0.28
+    out: list[Part] = []
+    n = 2 if variant == "double" else 1
+    for k in range(n):
+        x = (k - (n - 1) / 2) * 0.14
+        out.append(make_part(f"bracket_{k}", "bracket", S.box((0.02, 0.09, 0.025), center=(x - 0.065, 0.045, 0.06)), metal))
+        out.append(make_part(f"bar_{k}", "bar", S.cylinder(0.01, 0.12, center=(x, 0.075, 0.06), axis=(1, 0, 0),
+                                                          sections=14), metal))
+        out.append(make_part(f"roll_{k}", "roll",
+                             S.transformed(ring([(0.02, -0.05), (0.055, -0.05), (0.055, 0.05), (0.02, 0.05)], sections=24),
+                                           np.array([[0, 0, 1, x], [0, 1, 0, 0.075], [-1, 0, 0, 0.06], [0, 0, 0, 1.0]])),
+                             white(rng, "paper")))
+    out.append(make_part("plate", "plate", S.box((w, 0.008, 0.05), center=(0, 0.004, 0.06)), metal))
+    if variant == "covered":
+        out.append(make_part("cover", "cover", S.box((0.14, 0.1, 0.006), center=(0, 0.06, 0.12)), metal))
+    return out
+
+
+@register("paper_towel_dispenser", parts=("housing", "cover"), extra_parts=("window", "lever", "lock", "hinge"),
+          size_range=(0.25, 0.45), density=500, variants=("roll", "folded", "lever"),
+          placement="wall")
+def paper_towel_dispenser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    w, d, h = rng.uniform(0.27, 0.33), rng.uniform(0.1, 0.22), rng.uniform(0.25, 0.42)
+    mat = white(rng, "plastic") if rng.uniform() < 0.6 else black()
+    out: list[Part | Joint] = [make_part("housing", "housing", S.box((w, d * 0.6, h), center=(0, d * 0.3, h / 2), bevel=0.006), mat),
+                               make_part("cover", "cover", S.box((w, d * 0.4, h * 0.9), center=(0, d * 0.6 + d * 0.2, h * 0.55),
+                                                                 bevel=0.01), mat),
+                               make_part("window", "window", S.box((0.04, 0.004, h * 0.3), center=(w * 0.3, d + 0.001, h * 0.6)),
+                                         M.glass(rng)),
+                               make_part("lock", "lock", S.cylinder(0.008, 0.006, center=(0, d + 0.002, h * 0.9), axis=(0, 1, 0)),
+                                         M.metal(rng))]
+    if variant == "lever":
+        out.append(make_part("lever", "lever", S.box((0.04, 0.03, 0.12), center=(w / 2 + 0.02, d * 0.5, h * 0.5)), black()))
+    out += hinge_parts("cover_hinge", x=h * 0.1, y=d * 0.6, z0=-w * 0.35, z1=w * 0.35, mat=mat, axis="x",
+                       radius=0.006, length=0.03)
+    out.append(revolute("cover_hinge", "housing", "cover", axis=(1, 0, 0), origin=(0, d * 0.6, h * 0.1), opens=-1.2))
+    out.append(Joint("window_mount", "prismatic", "cover", "window", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    out.append(Joint("lock_mount", "prismatic", "cover", "lock", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    return out
+
+
+@register("paper_towel_roll", parts=("roll",), extra_parts=("core", "holder", "pole", "sheet"),
+          size_range=(0.2, 0.36), density=300, variants=("roll", "on_holder", "lying"),
+          placement="surface")
+def paper_towel_roll(rng: np.random.Generator, variant: str) -> list[Part]:
+    h, r = rng.uniform(0.22, 0.28), rng.uniform(0.055, 0.07)
+    base_h = 0.015 if variant == "on_holder" else 0.0
+    roll = ring([(0.02, base_h), (r, base_h), (r, base_h + h), (0.02, base_h + h)], sections=28)
+    core = ring([(0.018, base_h), (0.02, base_h), (0.02, base_h + h), (0.018, base_h + h)], sections=20)
+    if variant == "lying":
+        T = np.array([[0, 0, 1, -h / 2], [0, 1, 0, 0], [-1, 0, 0, r], [0, 0, 0, 1.0]])
+        roll, core = S.transformed(roll, T), S.transformed(core, T)
+    out = [make_part("roll", "roll", roll, white(rng, "paper")), make_part("core", "core", core, M.paper(rng))]
+    if variant == "on_holder":
+        wood = M.wood(rng)
+        out.append(make_part("holder", "holder", S.cylinder(r * 1.2, base_h, center=(0, 0, base_h / 2), sections=24), wood))
+        out.append(make_part("pole", "pole", S.cylinder(0.012, h + 0.03, center=(0, 0, base_h + (h + 0.03) / 2),
+                                                        sections=12), wood))
+    elif variant == "roll":
+        out.append(make_part("sheet", "sheet", S.box((0.002, 0.06, h * 0.95), center=(r * 0.7, r + 0.03 - 0.03, h / 2),
+                                                     ), white(rng, "paper")))
+    return out
+
+
+@register("grab_bar", parts=("bar", "flange"), extra_parts=("screw_cover",),
+          size_range=(0.3, 0.95), density=3000, variants=("straight", "angled", "l_shaped"),
+          placement="wall")
+def grab_bar(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = rng.uniform(0.3, 0.9)
+    metal = M.metal(rng)
+    y = 0.05
+    if variant == "straight":
+        path = [(-L / 2, y, 0.04), (L / 2, y, 0.04)]
+        ends = [(-L / 2, 0.04), (L / 2, 0.04)]
+    elif variant == "angled":
+        path = [(-L / 2, y, 0.04), (L / 2, y, 0.04 + L * 0.5)]
+        ends = [(-L / 2, 0.04), (L / 2, 0.04 + L * 0.5)]
+    else:
+        path = [(-L / 2, y, 0.04), (L / 2, y, 0.04), (L / 2, y, 0.04 + L * 0.7)]
+        ends = [(-L / 2, 0.04), (L / 2, 0.04 + L * 0.7)]
+    out = [make_part("bar", "bar", S.tube(path, 0.016, sections=14), metal)]
+    for k, (x, z) in enumerate(ends):
+        out.append(make_part(f"flange_{k}", "flange", [S.cylinder(0.035, 0.008, center=(x, 0.004, z), axis=(0, 1, 0)),
+                                                       S.cylinder(0.014, y - 0.008, center=(x, 0.008 + (y - 0.008) / 2, z),
+                                                                  axis=(0, 1, 0), sections=12)], metal))
+    return out
+
+
+@register("shower_head", parts=("head", "arm"), extra_parts=("flange", "face", "hose", "slide_bar"),
+          size_range=(0.18, 1.1), density=2000, variants=("fixed", "rain", "handheld"),
+          placement="wall")
+def shower_head(rng: np.random.Generator, variant: str) -> list[Part]:
+    metal = M.metal(rng)
+    if variant == "handheld":
+        L = rng.uniform(0.6, 1.0)
+        out = [make_part("slide_bar", "slide_bar", S.cylinder(0.012, L, center=(0, 0.04, L / 2)), metal),
+               make_part("flange", "flange", [S.cylinder(0.025, 0.04, center=(0, 0.02, z), axis=(0, 1, 0)) for z in (0.02, L - 0.02)],
+                         metal),
+               make_part("arm", "arm", S.box((0.03, 0.05, 0.04), center=(0, 0.07, L * 0.75)), metal),
+               make_part("head", "head", S.cylinder(0.012, 0.2, center=(0, 0.1, L * 0.75 + 0.02), sections=14), metal),
+               make_part("face", "face", S.cylinder(0.045, 0.015, center=(0, 0.1, L * 0.75 + 0.12 + 0.0075)), metal),
+               make_part("hose", "hose", S.tube([(0, 0.1, L * 0.75 - 0.08), (0, 0.12, L * 0.3), (0, 0.06, 0.1)], 0.008),
+                         metal)]
+        return out
+    r = rng.uniform(0.05, 0.07) if variant == "fixed" else rng.uniform(0.1, 0.15)
+    reach = rng.uniform(0.15, 0.3) if variant == "fixed" else rng.uniform(0.3, 0.4)
+    z = 0.1
+    out = [make_part("flange", "flange", S.cylinder(0.03, 0.01, center=(0, 0.005, z), axis=(0, 1, 0)), metal),
+           make_part("arm", "arm", S.tube([(0, 0.01, z), (0, reach, z), (0, reach, z - 0.04)] if variant == "rain"
+                                          else [(0, 0.01, z), (0, reach, z - 0.06)], 0.01), metal)]
+    zc = z - (0.05 if variant == "rain" else 0.08)
+    out.append(make_part("head", "head", S.frustum(r * 0.5, r, 0.03, center=(0, reach, zc - 0.03), axis=(0, 0, 1)), metal))
+    out.append(make_part("face", "face", S.cylinder(r * 0.95, 0.004, center=(0, reach, zc - 0.032)), M.solid((0.7, 0.7, 0.72), "metal")))
+    return out
+
+
+def _rod(rng, *, label_rod: str, span: float, y: float, z: float, r: float, variant_finials: bool) -> list[Part]:
+    metal = M.metal(rng)
+    out = [make_part("rod", label_rod, S.cylinder(r, span, center=(0, y, z), axis=(1, 0, 0), sections=14), metal)]
+    for k, sx in enumerate((-1, 1)):
+        x = sx * (span / 2 - 0.04)
+        out.append(make_part(f"bracket_{k}", "bracket", [S.cylinder(0.025, 0.008, center=(x, 0.004, z), axis=(0, 1, 0)),
+                                                         S.cylinder(0.007, y, center=(x, y / 2, z), axis=(0, 1, 0), sections=10)],
+                             metal))
+        if variant_finials:
+            out.append(make_part(f"finial_{k}", "finial", S.ellipsoid((0.025, 0.025, 0.025), center=(sx * (span / 2 + 0.02), y, z)),
+                                 metal))
+    return out
+
+
+@register("curtain_rod", parts=("rod", "bracket"), extra_parts=("finial", "ring"),
+          size_range=(0.8, 3.1), density=2000, variants=("finials", "tension", "shower"),
+          placement="wall")
+def curtain_rod(rng: np.random.Generator, variant: str) -> list[Part]:
+    span = rng.uniform(0.8, 2.8)
+    out = _rod(rng, label_rod="rod", span=span, y=0.08, z=0.03, r=0.012, variant_finials=variant == "finials")
+    if variant == "shower":
+        out.append(make_part("ring", "ring", [S.transformed(ring([(0.014, -0.003), (0.02, -0.003), (0.02, 0.003), (0.014, 0.003)],
+                                                                sections=12),
+                                                           np.array([[0, 0, 1, x], [0, 1, 0, 0.08], [-1, 0, 0, 0.03], [0, 0, 0, 1.0]]))
+                                             for x in np.linspace(-span / 2 + 0.1, -span / 2 + 0.5, 6)], M.plastic(rng)))
+    return out
+
+
+@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial",),
+          size_range=(0.6, 2.5), density=2000, variants=("round", "oval", "wooden"),
+          placement="wall")
+def closet_rod(rng: np.random.Generator, variant: str) -> list[Part]:
+    span = rng.uniform(0.6, 2.4)
+    return _rod(rng, label_rod="rod", span=span, y=0.3, z=0.03, r=0.016 if variant != "oval" else 0.013,
+                variant_finials=False)
+
+
+@register("smoke_detector", parts=("base", "cover"), extra_parts=("light", "grille", "test_button"),
+          size_range=(0.09, 0.16), density=600, variants=("round", "square", "combo"),
+          placement="ceiling")
+def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
+    r = rng.uniform(0.05, 0.075)
+    h = rng.uniform(0.035, 0.05)
+    mat = white(rng, "plastic")
+    if variant == "square":
+        cover = S.box((2 * r, 2 * r, h - 0.01), center=(0, 0, (h - 0.01) / 2), bevel=0.008)
+    else:
+        cover = S.lathe([(r * 0.7, 0.0), (r, h * 0.5), (r, h - 0.01)])
+    out = [make_part("base", "base", S.cylinder(r * 0.95, 0.01, center=(0, 0, h - 0.005)), mat),
+           make_part("cover", "cover", cover, mat),
+           make_part("light", "light", S.cylinder(0.003, 0.004, center=(r * 0.35, 0, 0.002), sections=8),
+                     M.solid((0.9, 0.1, 0.1), "plastic", 0.2)),
+           make_part("test_button", "test_button", S.cylinder(0.01, 0.003, center=(0, 0, 0.0015)), mat)]
+    return out
+
+
+@register("vent", parts=("frame", "louver"), extra_parts=("damper",),
+          size_range=(0.15, 0.65), density=2000, variants=("wall_grille", "ceiling_diffuser", "floor_register"),
+          placement="wall")
+def vent(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, h = rng.uniform(0.2, 0.6), rng.uniform(0.12, 0.3)
+    mat = white(rng, "metal")
+    t, f = 0.012, 0.02
+    out = [make_part("frame", "frame", [S.box((w, t, f), center=(0, t / 2, f / 2)), S.box((w, t, f), center=(0, t / 2, h - f / 2)),
+                                        S.box((f, t, h - 2 * f), center=(-w / 2 + f / 2, t / 2, h / 2)),
+                                        S.box((f, t, h - 2 * f), center=(w / 2 - f / 2, t / 2, h / 2))], mat)]
+    n = max(3, int((h - 2 * f) / 0.02))
+    for k in range(n):
+        z = f + (h - 2 * f) * (k + 0.5) / n
+        out.append(make_part(f"louver_{k}", "louver", S.box((w - 2 * f, 0.004, (h - 2 * f) / n * 0.6),
+                                                            center=(0, t * 0.6, z)), mat))
+    if variant == "floor_register":
+        out.append(make_part("damper", "damper", S.box((0.03, 0.006, 0.015), center=(w / 2 - f - 0.03, t + 0.003, h / 2)),
+                             black("metal")))
+    return out
+
+
+@register("ceiling_light", parts=("canopy", "diffuser"), extra_parts=("trim", "bulb"),
+          size_range=(0.2, 0.65), density=800, variants=("dome", "flat_panel", "drum"),
+          placement="ceiling")
+def ceiling_light(rng: np.random.Generator, variant: str) -> list[Part]:
+    metal = white(rng, "metal")
+    glow = M.solid((0.98, 0.96, 0.9), "glass", 0.2)
+    if variant == "flat_panel":
+        w = rng.uniform(0.3, 0.6)
+        return [make_part("canopy", "canopy", S.box((w, w, 0.03), center=(0, 0, 0.04 + 0.015)), metal),
+                make_part("diffuser", "diffuser", S.box((w - 0.02, w - 0.02, 0.01), center=(0, 0, 0.035)), glow),
+                make_part("trim", "trim", S.box((w + 0.01, w + 0.01, 0.03), center=(0, 0, 0.015)), metal)]
+    r = rng.uniform(0.12, 0.25)
+    h = rng.uniform(0.08, 0.15)
+    if variant == "dome":
+        diff = S.ellipsoid((r, r, h), center=(0, 0, h))
+        pts = diff.mesh.vertices
+        diff = S.hull(np.clip(pts, [-1, -1, 0], [1, 1, h]))
+    else:
+        diff = S.cylinder(r, h, center=(0, 0, h / 2), sections=28)
+    return [make_part("diffuser", "diffuser", diff, glow),
+            make_part("canopy", "canopy", S.cylinder(r * 0.5, 0.025, center=(0, 0, h + 0.0125)), metal),
+            make_part("trim", "trim", S.cylinder(r * 1.03, 0.012, center=(0, 0, h - 0.006), sections=28), metal)]
+
+
+@register("mailbox", parts=("body", "door"), extra_parts=("flag", "post", "hinge", "slot", "lock"),
+          size_range=(0.3, 1.35), density=900, variants=("wall", "post", "locker"),
+          placement="wall")
+def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
+    metal = M.metal(rng)
+    if variant == "post":
+        w, d, h = rng.uniform(0.17, 0.2), rng.uniform(0.45, 0.5), rng.uniform(0.2, 0.24)
+        ph = rng.uniform(0.95, 1.05)
+        out: list[Part | Joint] = [make_part("post", "post", S.box((0.09, 0.09, ph), center=(0, 0, ph / 2)), M.wood(rng)),
+                                   make_part("body", "body", [S.box((w, d - 0.01, h * 0.6), center=(0, -0.005, ph + h * 0.3)),
+                                                              S.cylinder(w / 2, d - 0.01, center=(0, -0.005, ph + h * 0.6), axis=(0, 1, 0),
+                                                                         sections=20)], metal),
+                                   make_part("flag", "flag", S.box((0.006, 0.08, 0.12), center=(w / 2 + 0.003, -d * 0.2, ph + h * 0.6)),
+                                             M.solid((0.85, 0.1, 0.1), "metal"))]
+        out.append(make_part("door", "door", S.box((w, 0.01, h * 0.6 + w / 2), center=(0, d / 2 - 0.005, ph + (h * 0.6 + w / 2) / 2)),
+                             metal))
+        out.append(revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(-w / 2, d / 2 - 0.01, ph)))
+        return out
+    w, d, h = rng.uniform(0.3, 0.4), rng.uniform(0.1, 0.14), rng.uniform(0.35, 0.45)
+    out = [make_part("body", "body", S.box((w, d - 0.012, h), center=(0, (d - 0.012) / 2, h / 2)), metal),
+           make_part("door", "door", S.box((w, 0.012, h * 0.75), center=(0, d - 0.006, h * 0.375)), metal),
+           make_part("slot", "slot", S.box((w * 0.7, 0.004, 0.02), center=(0, d - 0.002 - 0.012, h * 0.88)), black())]
+    out.append(make_part("lock", "lock", S.cylinder(0.008, 0.008, center=(w * 0.35, d + 0.004, h * 0.6), axis=(0, 1, 0)),
+                         M.metal(rng)))
+    out += hinge_parts("door_hinge", x=-w / 2, y=d - 0.012, z0=0.0, z1=h * 0.75, mat=metal, radius=0.005, length=0.03)
+    out.append(revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(-w / 2, d - 0.012, 0.0)))
+    out.append(Joint("lock_mount", "prismatic", "door", "lock", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    return out
+
+
+@register("sign", parts=("panel",), extra_parts=("lettering", "frame", "standoff", "post", "base"),
+          size_range=(0.15, 1.9), density=900, variants=("wall_plaque", "exit", "standing"),
+          placement="wall")
+def sign(rng: np.random.Generator, variant: str) -> list[Part]:
+    if variant == "standing":
+        w, h = rng.uniform(0.3, 0.5), rng.uniform(0.4, 0.6)
+        ph = rng.uniform(1.0, 1.3)
+        metal = M.metal(rng)
+        return [make_part("base", "base", S.cylinder(0.18, 0.03, center=(0, 0, 0.015), sections=24), metal),
+                make_part("post", "post", S.cylinder(0.015, ph, center=(0, 0, 0.03 + ph / 2)), metal),
+                make_part("panel", "panel", S.box((w, 0.01, h), center=(0, 0.02, 0.03 + ph + h / 2)), white(rng, "plastic")),
+                make_part("lettering", "lettering", S.box((w * 0.7, 0.002, h * 0.2), center=(0, 0.026, 0.03 + ph + h * 0.6)),
+                          black())]
+    w, h = (rng.uniform(0.2, 0.5), rng.uniform(0.1, 0.3)) if variant == "wall_plaque" else (0.36, 0.18)
+    col = (0.1, 0.6, 0.2) if variant == "exit" else M.jitter(rng, (0.2, 0.3, 0.5), 0.1)[:3]
+    out = [make_part("panel", "panel", S.box((w, 0.006, h), center=(0, 0.015, h / 2)), M.solid(col, "plastic", 0.4)),
+           make_part("lettering", "lettering", S.box((w * 0.7, 0.002, h * 0.35), center=(0, 0.019, h / 2)),
+                     M.solid((0.95, 0.95, 0.95)))]
+    out.append(make_part("standoff", "standoff", [S.cylinder(0.006, 0.012, center=(sx * (w / 2 - 0.02), 0.006, h / 2), axis=(0, 1, 0),
+                                                             sections=10) for sx in (-1, 1)], M.metal(rng)))
+    return out
+
+
+@register("poster", parts=("sheet",), extra_parts=("tape", "frame", "image"),
+          size_range=(0.3, 1.05), density=700, variants=("taped", "clip_frame", "rolled_edges"),
+          placement="wall")
+def poster(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, h = rng.uniform(0.3, 0.7), rng.uniform(0.42, 1.0)
+    out = [make_part("sheet", "sheet", S.box((w, 0.001, h), center=(0, 0.0005, h / 2)), white(rng, "paper")),
+           make_part("image", "image", S.box((w * 0.9, 0.0005, h * 0.9), center=(0, 0.00125, h / 2)),
+                     M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.8))]
+    if variant == "taped":
+        out.append(make_part("tape", "tape", [S.box((0.04, 0.0004, 0.02), center=(sx * (w / 2 - 0.01), 0.0017, z))
+                                              for sx in (-1, 1) for z in (0.01, h - 0.01)], M.glass(rng)))
+    elif variant == "clip_frame":
+        out.append(make_part("frame", "frame", S.box((w + 0.01, 0.003, h + 0.01), center=(0, 0.0035, h / 2)), M.glass(rng)))
+        out[0] = make_part("sheet", "sheet", S.box((w, 0.001, h), center=(0, 0.0005, 0.005 + h / 2)), white(rng, "paper"))
+        out[1] = make_part("image", "image", S.box((w * 0.9, 0.0005, h * 0.9), center=(0, 0.00125, 0.005 + h / 2)),
+                           M.solid((0.5, 0.4, 0.3), "paper", 0.8))
+    return out
+
+
+@register("calendar", parts=("page",), extra_parts=("binding", "hanger", "backing"),
+          size_range=(0.2, 0.62), density=700, variants=("wall", "desk", "poster"),
+          placement="wall")
+def calendar(rng: np.random.Generator, variant: str) -> list[Part]:
+    if variant == "desk":  # a tent standing on a desk
+        w, h = rng.uniform(0.18, 0.24), rng.uniform(0.12, 0.16)
+        d = h * 0.6
+        back = S.hull(np.array([[-w / 2, -d / 2, 0], [w / 2, -d / 2, 0], [-w / 2, -d / 2 + 0.003, 0], [w / 2, -d / 2 + 0.003, 0],
+                                [-w / 2, -0.002, h], [w / 2, -0.002, h], [-w / 2, 0.001, h], [w / 2, 0.001, h]]))
+        page = S.hull(np.array([[-w / 2, d / 2, 0], [w / 2, d / 2, 0], [-w / 2, d / 2 - 0.003, 0], [w / 2, d / 2 - 0.003, 0],
+                                [-w / 2, 0.002, h], [w / 2, 0.002, h], [-w / 2, 0.005, h], [w / 2, 0.005, h]]))
+        return [make_part("backing", "backing", back, M.paper(rng)), make_part("page", "page", page, white(rng, "paper")),
+                make_part("binding", "binding", S.cylinder(0.006, w, center=(0, 0.0015, h), axis=(1, 0, 0), sections=10),
+                          black("metal"))]
+    w = rng.uniform(0.22, 0.32) if variant == "wall" else rng.uniform(0.4, 0.6)
+    h = w * (1.4 if variant == "wall" else 1.0)
+    out = [make_part("backing", "backing", S.box((w, 0.002, h), center=(0, 0.001, h / 2)), M.paper(rng)),
+           make_part("page", "page", S.box((w * 0.96, 0.004, h * 0.5), center=(0, 0.004, h * 0.25)), white(rng, "paper"))]
+    out.append(make_part("binding", "binding", S.cylinder(0.005, w * 0.9, center=(0, 0.006, h * 0.5), axis=(1, 0, 0),
+                                                          sections=10), black("metal")))
+    out.append(make_part("hanger", "hanger", S.box((0.02, 0.003, 0.02), center=(0, 0.0015, h - 0.01)), black("metal")))
+    return out
+
+
+def _board(rng, *, w: float, h: float, surface_mat, frame_mat, label: str) -> list[Part]:
+    f, t = 0.02, 0.018
+    return [make_part(label, label, S.box((w - 2 * f, t * 0.6, h - 2 * f), center=(0, t * 0.3, h / 2)),
+                      surface_mat),
+            make_part("frame", "frame", [S.box((w, t, f), center=(0, t / 2, f / 2)), S.box((w, t, f), center=(0, t / 2, h - f / 2)),
+                                         S.box((f, t, h - 2 * f), center=(-w / 2 + f / 2, t / 2, h / 2)),
+                                         S.box((f, t, h - 2 * f), center=(w / 2 - f / 2, t / 2, h / 2))], frame_mat)]
+
+
+@register("bulletin_board", parts=("board", "frame"), extra_parts=("pin", "note"),
+          size_range=(0.4, 1.85), density=400, variants=("cork", "fabric", "large"),
+          placement="wall")
+def bulletin_board(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = rng.uniform(0.45, 0.9) if variant != "large" else rng.uniform(1.2, 1.8)
+    h = w * rng.uniform(0.6, 0.8)
+    surf = (M.solid(M.jitter(rng, (0.7, 0.55, 0.38), 0.03), "wood", 0.9) if variant != "fabric"
+            else M.fabric(rng))
+    out = _board(rng, w=w, h=h, surface_mat=surf, frame_mat=M.wood(rng), label="board")
+    n = int(rng.integers(2, 7))
+    for k in range(n):
+        x, z = (rng.uniform(-0.35, 0.35) * w, rng.uniform(0.25, 0.75) * h)
+        out.append(make_part(f"note_{k}", "note", S.box((0.1, 0.001, 0.12), center=(x, 0.0115, z)),
+                             M.solid(M.jitter(rng, (0.95, 0.9, 0.5), 0.1)[:3], "paper", 0.9)))
+        out.append(make_part(f"pin_{k}", "pin", S.cylinder(0.005, 0.008, center=(x, 0.016, z + 0.05), axis=(0, 1, 0),
+                                                          sections=8), M.solid((0.9, 0.1, 0.1))))
+    return out
+
+
+@register("blackboard", parts=("board", "frame"), extra_parts=("tray", "chalk", "eraser", "leg"),
+          size_range=(0.5, 3.1), density=700, variants=("wall", "classroom", "easel"),
+          placement="wall")
+def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
+    w = {"wall": rng.uniform(0.5, 1.0), "classroom": rng.uniform(1.8, 3.0), "easel": rng.uniform(0.5, 0.7)}[variant]
+    h = w * (0.6 if variant != "easel" else 1.2)
+    slate = M.solid(M.jitter(rng, (0.12, 0.2, 0.16), 0.03), "stone", 0.9)
+    z0 = 0.0 if variant != "easel" else 0.7
+    shift = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, z0], [0, 0, 0, 1.0]])
+    f, t = 0.02, 0.018
+    out = [make_part("board", "board", S.transformed(S.box((w - 2 * f, t * 0.6, h - 2 * f), center=(0, t * 0.3, h / 2)),
+                                                     shift), slate),
+           make_part("frame", "frame", [S.transformed(s, shift) for s in (
+               S.box((w, t, f), center=(0, t / 2, f / 2)), S.box((w, t, f), center=(0, t / 2, h - f / 2)),
+               S.box((f, t, h - 2 * f), center=(-w / 2 + f / 2, t / 2, h / 2)),
+               S.box((f, t, h - 2 * f), center=(w / 2 - f / 2, t / 2, h / 2)))], M.wood(rng))]
+    if z0:  # an easel: three legs
+        wood = M.wood(rng)
+        out.append(make_part("leg_0", "leg", S.box((0.03, 0.03, z0 + h), center=(-w / 2 + 0.05, -0.02, (z0 + h) / 2)), wood))
+        out.append(make_part("leg_1", "leg", S.box((0.03, 0.03, z0 + h), center=(w / 2 - 0.05, -0.02, (z0 + h) / 2)), wood))
+        out.append(make_part("leg_2", "leg", S.box((0.03, 0.03, z0 + h * 0.9), center=(0, -0.4, (z0 + h * 0.9) / 2)), wood))
+    out.append(make_part("tray", "tray", S.box((w * 0.9, 0.06, 0.015), center=(0, 0.03, z0 + 0.0075 + 0.005)), M.wood(rng)))
+    out.append(make_part("chalk", "chalk", S.cylinder(0.005, 0.08, center=(w * 0.2, 0.04, z0 + 0.0175), axis=(1, 0, 0),
+                                                      sections=8), white(rng, "plastic")))
+    return out
+
+
+@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug"),
+          size_range=(0.2, 0.56), density=900, variants=("four", "six", "surge"),
+          placement="floor")
+def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
+    n = {"four": 4, "six": 6, "surge": 8}[variant]
+    pitch = 0.045
+    L = n * pitch + 0.06
+    w, h = 0.055, 0.04
+    mat = white(rng, "plastic") if rng.uniform() < 0.6 else black()
+    out = [make_part("body", "body", S.box((L, w, h), center=(0, 0, h / 2), bevel=0.006), mat)]
+    for k in range(n):
+        x = -L / 2 + 0.03 + pitch * (k + 0.5)
+        out.append(make_part(f"socket_{k}", "socket", S.cylinder(0.016, 0.002, center=(x, 0, h + 0.001), sections=14),
+                             M.solid((0.85, 0.85, 0.85))))
+    out.append(make_part("switch", "switch", S.box((0.02, 0.03, 0.008), center=(L / 2 - 0.018, 0, h + 0.004)),
+                         M.solid((0.85, 0.1, 0.1))))
+    out.append(make_part("cord", "cord", S.tube([(-L / 2 + 0.002, 0, h / 2), (-L / 2 - 0.05, 0.0, 0.005), (-L / 2 - 0.08, 0.04, 0.005)],
+                                                0.004, sections=6), black()))
+    return out
+
+
+@register("toilet_seat_cover_dispenser", parts=("housing", "slot"), extra_parts=("cover_stack", "window"),
+          size_range=(0.3, 0.48), density=700, variants=("steel", "plastic", "recessed"),
+          placement="wall")
+def toilet_seat_cover_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, h = rng.uniform(0.38, 0.44), rng.uniform(0.26, 0.32)
+    d = 0.05 if variant != "recessed" else 0.02
+    mat = M.metal(rng) if variant != "plastic" else white(rng, "plastic")
+    out = [make_part("housing", "housing", S.box((w, d, h), center=(0, d / 2, h / 2), bevel=0.004), mat),
+           make_part("slot", "slot", S.box((w * 0.5, 0.004, 0.08), center=(0, d + 0.001, h * 0.4)), black()),
+           make_part("cover_stack", "cover_stack", S.box((w * 0.45, 0.003, 0.07), center=(0, d + 0.0045, h * 0.4)),
+                     white(rng, "paper"))]
+    if variant == "plastic":
+        out.append(make_part("window", "window", S.box((0.06, 0.003, 0.03), center=(w * 0.3, d + 0.0015, h * 0.8)),
+                             M.glass(rng)))
+    return out
