@@ -250,6 +250,14 @@ def register(app: typer.Typer) -> None:
                                    help="Task sampling ratios."),
         max_items: int = typer.Option(None, "--max-items", help="Train on the first N items."),
         seed: int = typer.Option(0, "--seed", help="Seed of mixing and initialisation."),
+        checkpointing: bool = typer.Option(True, "--gradient-checkpointing/--no-gradient-"
+                                                 "checkpointing",
+                                           help="Recompute activations (less memory)."),
+        group_by_length: bool = typer.Option(True, "--group-by-length/--no-group-by-length",
+                                             help="Micro-batches of similar lengths."),
+        device_map: str = typer.Option(None, "--device-map",
+                                       help="transformers device_map, e.g. auto: spread a "
+                                            "model too large for one GPU over the GPUs."),
         as_json: bool = typer.Option(False, "--json", help="Print the result as JSON."),
     ) -> None:
         """Fine-tune a LoRA adapter with the paper's recipe (rank 8, alpha 32, lr 1e-4, ...).
@@ -272,7 +280,9 @@ def register(app: typer.Typer) -> None:
         opts = FinetuneOptions(rank=rank, alpha=alpha, lr=lr, min_lr=min_lr, warmup=warmup,
                                global_batch=global_batch, micro_batch=micro_batch,
                                epochs=epochs, max_image_tokens=max_image_tokens, ratios=mix,
-                               max_items=max_items, seed=seed)
+                               max_items=max_items, seed=seed,
+                               gradient_checkpointing=checkpointing,
+                               group_by_length=group_by_length, device_map=device_map)
 
         def show(step: int, total: int, loss: float, rate: float) -> None:
             if not as_json:
