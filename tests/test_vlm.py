@@ -143,6 +143,13 @@ def test_build_records_splits_and_card(bench, dataset):
     assert 0 <= card["counts"]["all"]["no_contact_share"]["contact_mcq"] <= 1
     # nothing was written into the dataset
     assert not any(p.suffix == ".jpg" for p in dataset.rglob("*"))
+    # LLaMA-Factory's declaration: its files exist and their images resolve from the folder
+    info = json.loads((bench / "dataset_info.json").read_text())
+    assert set(info) == {"parse3d_vlm_train", "parse3d_vlm_val", "parse3d_vlm_test"}
+    for d in info.values():
+        recs = read_jsonl(bench / d["file_name"])
+        assert d["formatting"] == "sharegpt" and set(d["columns"].values()) <= set(recs[0])
+        assert all((bench / im).is_file() for r in recs for im in r["images"])
 
 
 def test_questions_ask_about_visible_things_and_have_one_true_option(bench, dataset):
