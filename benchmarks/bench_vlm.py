@@ -9,9 +9,20 @@ Usage::
 Runs ``parse3d vlm build`` (exactly the library call) on a dataset that already has its
 views (rendering is not part of the measurement), then prints the items per task, per scene
 and per view, the seconds per scene (wall clock; the asset registry's import is timed apart),
-the answer-letter and "no contact" shares, the oracle and random scores on the test split,
-and a linear extrapolation to the issue's target: a 200-scene dataset with 4 views should
+the answer-letter and "no contact" shares, the share of relations by how they were derived
+(``meta.source`` / ``meta.sources``), an independent audit, the oracle and random scores on
+the test split, and a linear extrapolation to the issue's target: a 200-scene dataset with 4 views should
 give at least 5,000 MCQ and 800 SGG items in at most 3 minutes on 2 cores.
+
+The audit re-derives labels from the dataset's files without the builder's code: it reads
+``scene.glb`` with trimesh, the settled quaternions with scipy, the cameras' ``K, R, t`` and
+``contacts.json``, and checks, for ``--audit-mcq`` random relation / part-contact MCQ (the
+answer) and ``--audit-sgg`` random SGG images (every triplet of ``meta.holds``), that
+``near`` / ``far from`` match the horizontal distance of the oriented-box centres (< 0.9 m /
+> 2.2 m), the camera-frame sides their margins (0.15 m / 0.30 m), ``on`` / ``in`` /
+``against``-type relations and part contacts a contact in ``contacts.json`` and ``no
+contact`` its absence. Relations without a geometric test (``facing``, ``aligned with``) are
+counted apart as not audited.
 """
 
 from __future__ import annotations
@@ -20,7 +31,10 @@ import argparse
 import json
 import tempfile
 import time
+from collections import Counter
 from pathlib import Path
+
+import numpy as np
 
 from parse3d.datagen.build import BuildConfig, build_dataset
 from parse3d.vlm.baselines import run_baseline
@@ -42,6 +56,8 @@ def main() -> None:
     ap.add_argument("--build", type=int, default=0,
                     help="first build a template dataset of this many scenes with 4 views")
     ap.add_argument("--target-scenes", type=int, default=200)
+    ap.add_argument("--audit-mcq", type=int, default=200)
+    ap.add_argument("--audit-sgg", type=int, default=50)
     args = ap.parse_args()
     tmp = tempfile.TemporaryDirectory(prefix="bench-vlm-")
     ds = args.dataset
@@ -83,6 +99,19 @@ def main() -> None:
                                                        for k, v in letters.items()))
     print(f"  'no contact' answers: {json.dumps(c['no_contact_share'])}")
     print(f"  relations asked: {json.dumps(c['relations'])}")
+    rows = [r for s in ("train", "val", "test") for r in read_jsonl(out / f"{s}.jsonl")]
+    for task in ("relation_mcq", "contact_mcq"):
+        src = Counter(r["meta"].get("source", "?") for r in rows if r["task"] == task)
+        n = sum(src.values()) or 1
+        print(f"  {task} answers by derivation: " + ", ".join(
+            f"{k} {v / n:.1%}" for k, v in src.most_common()))
+    src = Counter(x for r in rows if r["task"] == "sgg" for x in r["meta"].get("sources", []))
+    n = sum(src.values()) or 1
+    holds = sum(len(r["meta"].get("holds", [])) for r in rows if r["task"] == "sgg")
+    print("  SGG answer triplets by derivation: " + ", ".join(
+        f"{k} {v / n:.1%}" for k, v in src.most_common())
+          + f"; relations that hold per image (precision's reference) {holds / max(sgg, 1):.1f}")
+    audit(ds, rows, args.audit_mcq, args.audit_sgg)
     test = out / "test.jsonl"
     gt = read_jsonl(test)
     for name in ("oracle", "random"):
@@ -95,6 +124,98 @@ def main() -> None:
           f"{sgg / scenes * n:,.0f} SGG (goal >= 800), {fixed + wall / scenes * n:,.0f} s "
           f"(goal <= 180 s on 2 cores)")
     tmp.cleanup()
+
+
+_CONTACT_PHRASES = {"on", "in", "hanging below", "mounted on", "against", "leaning against",
+                    "contact"}
+
+
+def _scene_geometry(scene_dir: Path) -> tuple[dict, set, dict]:
+    """Oriented-box centres (Z-up world), touching object pairs and cameras by view index,
+    read from the files directly."""
+    import trimesh
+    from scipy.spatial.transform import Rotation
+
+    sj = json.loads((scene_dir / "scene.json").read_text())
+    ts = trimesh.load(str(scene_dir / "scene.glb"), force="scene")
+    y_to_z = np.array([[1, 0, 0], [0, 0, -1], [0, 1, 0]], float)  # glTF is Y-up
+    verts: dict[str, list] = {}
+    for node in ts.graph.nodes_geometry:
+        T, g = ts.graph[node]
+        v = np.asarray(ts.geometry[g].vertices) @ T[:3, :3].T + T[:3, 3]
+        verts.setdefault(str(node).split(":")[0], []).append(v @ y_to_z.T)
+    centre = {}
+    for od in sj["objects"]:
+        if od.get("status") != "placed" or od["id"] not in verts:
+            continue
+        pose = od.get("settled_pose") or od["pose"]
+        w, x, y, z = pose["quaternion"]
+        R = Rotation.from_quat([x, y, z, w]).as_matrix()
+        local = np.vstack(verts[od["id"]]) @ R
+        centre[od["id"]] = R @ ((local.min(axis=0) + local.max(axis=0)) / 2)
+    touching = set()
+    for c in json.loads((scene_dir / "contacts.json").read_text()):
+        a, b = c["a"].split(":")[0], c["b"].split(":")[0]
+        touching |= {(a, b), (b, a)}
+    cams = {}
+    vf = json.loads((scene_dir / "views.json").read_text())["views"]
+    for v in vf:
+        cams[int(v["index"])] = (np.asarray(v["camera"]["R"], float),
+                                 np.asarray(v["camera"]["t"], float))
+    return centre, touching, cams
+
+
+def _agrees(rel: str, a: str, b: str, geo) -> bool | None:
+    centre, touching, (R, t) = geo
+    ca, cb = centre[a], centre[b]
+    d = float(np.hypot(*(ca[:2] - cb[:2])))
+    pa, pb = R @ ca + t, R @ cb + t
+    tests = {"near": d < 0.9, "far from": d > 2.2, "left of": pb[0] - pa[0] > 0.15,
+             "right of": pa[0] - pb[0] > 0.15, "in front of": pb[2] - pa[2] > 0.30,
+             "behind": pa[2] - pb[2] > 0.30, "no contact": (a, b) not in touching}
+    if rel in tests:
+        return tests[rel]
+    if rel in _CONTACT_PHRASES:
+        return (a, b) in touching
+    return None
+
+
+def audit(ds: Path, rows: list[dict], n_mcq: int, n_sgg: int) -> None:
+    """Labels re-derived from the files agree with the benchmark's (printed)."""
+    rng = np.random.default_rng(0)
+    mcq = [r for r in rows if r["task"] != "sgg"]
+    sgg = [r for r in rows if r["task"] == "sgg"]
+    pick_m = [mcq[int(i)] for i in rng.choice(len(mcq), min(n_mcq, len(mcq)), replace=False)]
+    pick_s = [sgg[int(i)] for i in rng.choice(len(sgg), min(n_sgg, len(sgg)), replace=False)]
+    cache: dict[str, tuple] = {}
+
+    def geo(r):
+        if r["scene"] not in cache:
+            cache[r["scene"]] = _scene_geometry(ds / "scenes" / r["scene"])
+        centre, touching, cams = cache[r["scene"]]
+        return centre, touching, cams[int(r["view"])]
+
+    for name, checks in (
+            ("MCQ", [(r["id"], r["meta"]["red"],
+                      r["meta"].get("phrase", r["meta"]["relation"]), r["meta"]["blue"], r)
+                     for r in pick_m]),
+            ("SGG triplets", [(r["id"], ids[s], rel, ids[o], r) for r in pick_s
+                              for ids in [{x["name"]: x["object"] for x in r["meta"]["objects"]}]
+                              for s, rel, o in r["meta"].get("holds", r["meta"]["triplets"])])):
+        ok = bad = skipped = 0
+        wrong = []
+        for rid, a, rel, b, r in checks:
+            v = _agrees(rel, a, b, geo(r))
+            if v is None:
+                skipped += 1
+            elif v:
+                ok += 1
+            else:
+                bad += 1
+                wrong.append(f"{rid}: {a} {rel} {b}")
+        n = ok + bad
+        print(f"  audit {name}: {ok}/{n} agree ({100 * ok / max(n, 1):.2f}%, goal >= 99%); "
+              f"{skipped} without a geometric test" + (f"; e.g. {wrong[:3]}" if wrong else ""))
 
 
 if __name__ == "__main__":

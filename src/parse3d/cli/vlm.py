@@ -45,8 +45,10 @@ def register(app: typer.Typer) -> None:
                                   help="SGG boxes: projected (3-D boxes) or mask (tight)."),
         min_pixels: int = typer.Option(400, "--min-pixels",
                                        help="Least mask pixels of a visible object or part."),
-        min_share: float = typer.Option(0.30, "--min-share",
-                                        help="Least share of the projected hull visible."),
+        min_in_image: float = typer.Option(0.60, "--min-in-image",
+                                           help="Least share of an object's projection "
+                                                "inside the image (cut-off objects are "
+                                                "not asked about)."),
         workers: int = typer.Option(1, "--workers", "-w",
                                     help="Worker processes (the output does not change)."),
         as_json: bool = typer.Option(False, "--json", help="Print the card as JSON."),
@@ -61,12 +63,13 @@ def register(app: typer.Typer) -> None:
         from ..vlm.build import BuildOptions, build_benchmark
         from ..vlm.facts import VisibilityRule
 
-        if min_pixels < 1 or not 0 <= min_share <= 1:
-            raise InputError(Problem("", "--min-pixels must be >= 1 and --min-share in [0, 1]",
+        if min_pixels < 1 or not 0 <= min_in_image <= 1:
+            raise InputError(Problem("", "--min-pixels must be >= 1 and --min-in-image in "
+                                         "[0, 1]",
                                      "--min-pixels", "parameter"))
         opts = BuildOptions(seed=seed, views=views, boxes=boxes,
                             visibility=VisibilityRule(min_pixels=min_pixels,
-                                                      min_share=min_share))
+                                                      min_in_image=min_in_image))
         prog, update = _progress("scenes", not as_json and sys.stderr.isatty())
         try:
             res = build_benchmark(dataset, out, opts, workers=workers, progress=update)
@@ -98,6 +101,8 @@ def register(app: typer.Typer) -> None:
         pred: list[Path] = typer.Option(..., "--pred",
                                         help="Prediction JSONL ({id, response} per line); "
                                              "repeat to compare several."),
+        more: list[Path] = typer.Argument(None, metavar="[PRED]...",
+                                          help="More prediction files (--pred a b)."),
         allow_missing: bool = typer.Option(False, "--allow-missing",
                                            help="Score missing ids as wrong instead of "
                                                 "refusing."),
@@ -116,7 +121,7 @@ def register(app: typer.Typer) -> None:
         if not 0 < iou <= 1:
             raise InputError(Problem("", "--iou must be in (0, 1]", "--iou", "parameter"))
         reports = []
-        for p in pred:
+        for p in [*pred, *(more or [])]:
             reports.append(evaluate_files(gt, p, allow_missing=allow_missing, iou=iou))
         if as_json:
             print_json([r.to_dict() for r in reports] if len(reports) > 1
@@ -245,6 +250,14 @@ def register(app: typer.Typer) -> None:
                                    help="Task sampling ratios."),
         max_items: int = typer.Option(None, "--max-items", help="Train on the first N items."),
         seed: int = typer.Option(0, "--seed", help="Seed of mixing and initialisation."),
+        checkpointing: bool = typer.Option(True, "--gradient-checkpointing/--no-gradient-"
+                                                 "checkpointing",
+                                           help="Recompute activations (less memory)."),
+        group_by_length: bool = typer.Option(True, "--group-by-length/--no-group-by-length",
+                                             help="Micro-batches of similar lengths."),
+        device_map: str = typer.Option(None, "--device-map",
+                                       help="transformers device_map, e.g. auto: spread a "
+                                            "model too large for one GPU over the GPUs."),
         as_json: bool = typer.Option(False, "--json", help="Print the result as JSON."),
     ) -> None:
         """Fine-tune a LoRA adapter with the paper's recipe (rank 8, alpha 32, lr 1e-4, ...).
@@ -267,7 +280,9 @@ def register(app: typer.Typer) -> None:
         opts = FinetuneOptions(rank=rank, alpha=alpha, lr=lr, min_lr=min_lr, warmup=warmup,
                                global_batch=global_batch, micro_batch=micro_batch,
                                epochs=epochs, max_image_tokens=max_image_tokens, ratios=mix,
-                               max_items=max_items, seed=seed)
+                               max_items=max_items, seed=seed,
+                               gradient_checkpointing=checkpointing,
+                               group_by_length=group_by_length, device_map=device_map)
 
         def show(step: int, total: int, loss: float, rate: float) -> None:
             if not as_json:

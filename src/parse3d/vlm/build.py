@@ -6,6 +6,7 @@ Output folder::
       vlm.json                 the card (format parse3d-vlm/1): settings, counts per split,
                                task, relation, answer letter and room type, "no contact" share
       train.jsonl val.jsonl test.jsonl
+      dataset_info.json        the three splits declared for LLaMA-Factory (sharegpt layout)
       images/NNNNN/vK.jpg      the view (SGG) and copies with the red/blue boxes (MCQ)
       renders/NNNNN/           views rendered by --views for scenes that had too few
 
@@ -277,6 +278,19 @@ def _check_views(folders: list[Path], views: int, dataset: Path) -> None:
                 "with parse3d dataset build --views 4", str(dataset), "io"))
 
 
+def dataset_info() -> dict[str, Any]:
+    """LLaMA-Factory's ``dataset_info.json`` for a benchmark folder: ``parse3d_vlm_train``,
+    ``_val`` and ``_test``, in the sharegpt layout with OpenAI-style role tags. Image paths in
+    the records are relative to the folder, which LLaMA-Factory resolves against its
+    ``dataset_dir`` (pass the benchmark folder)."""
+    tags = {"role_tag": "role", "content_tag": "content", "user_tag": "user",
+            "assistant_tag": "assistant"}
+    return {f"parse3d_vlm_{split}": {"file_name": f"{split}.jsonl", "formatting": "sharegpt",
+                                     "columns": {"messages": "messages", "images": "images"},
+                                     "tags": tags}
+            for split in ("train", "val", "test")}
+
+
 def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions = BuildOptions(),
                     *, workers: int = 1, progress=None) -> BuildResult:
     """Build the benchmark of a dataset into ``out``.
@@ -335,6 +349,7 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
         os.replace(tmp, out / f"{split}.jsonl")
     card = _card(ds, options, splits, rows, time.perf_counter() - t0, rendered)
     (out / "vlm.json").write_text(json.dumps(card, indent=1) + "\n")
+    (out / "dataset_info.json").write_text(json.dumps(dataset_info(), indent=1) + "\n")
     return BuildResult(out, card, time.perf_counter() - t0, rendered)
 
 

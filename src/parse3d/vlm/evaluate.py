@@ -6,14 +6,20 @@ Predictions are JSONL lines ``{"id": ..., "response": "..."}``, one per benchmar
   reads ``C``, ``(C)``, ``C.``, ``The answer is C.``, ``Answer: (C) the mug ...`` or an
   option's text; anything else is *unparseable* and counts as wrong.
 * **SGG**: objects ``name#k <|box_start|>x1, y1, x2, y2<|box_end|>`` (0-1000 grid) and
-  triplets ``(subject#k, relation, object#k)``; names and relations pass the synonym tables of
-  :mod:`parse3d.vlm.vocab`. Objects are matched class by class with the Hungarian algorithm
+  triplets ``(subject#k, relation, object#k)``, or Qwen3-VL's native grounding JSON
+  (``[{"bbox_2d": [x1, y1, x2, y2], "label": "mug"}, ...]`` on the same grid, with relations
+  as ``{"subject", "relation" | "predicate", "object"}`` entries); names and relations pass
+  :func:`parse3d.vlm.vocab.normalize_object` (case, articles, plurals of the benchmark's
+  labels, synonyms) and the relation synonyms. A symmetric relation (``near``, ``far from``,
+  ...) matches in either order. Objects are matched class by class with the Hungarian algorithm
   on IoU (threshold 0.5). A predicted triplet is correct *with box matching* when both its
   objects are matched to ground-truth objects that carry that relation, and *without box
   matching* (grounding-agnostic) when a ground-truth triplet has the same subject label,
-  relation and object label. Precision, recall and F1 are micro-averaged over all items
-  (total correct / total predicted, total correct / total ground truth); ``Avg.`` is the mean
-  number of predicted triplets per item.
+  relation and object label. Recall counts the answer's triplets predicted; precision counts
+  the predicted triplets that hold in the image (``meta.holds``: every relation true of the
+  pair in the settled geometry, of which the answer lists the salient ones), so a true
+  relation the answer leaves out is not a false positive. Both are micro-averaged over all
+  items; ``Avg.`` is the mean number of predicted triplets per item.
 """
 
 from __future__ import annotations
@@ -29,7 +35,7 @@ from scipy.optimize import linear_sum_assignment
 
 from ..errors import InputError, Problem
 from .build import read_jsonl
-from .items import option_text
+from .items import SYMMETRIC_RELATIONS, option_text
 from .vocab import INVERSE_RELATIONS, PHRASE_TO_RELATION, normalize_object, normalize_relation
 
 __all__ = ["parse_choice", "parse_scene_graph", "box_iou", "match_objects", "score_sgg",
@@ -50,8 +56,11 @@ _NAME = re.compile(r"^(.*?)\s*#\s*(\d+)$")
 def parse_choice(response: str, options: list[str] | None = None) -> str | None:
     """The letter A-D a response chooses, or None when it cannot be read.
 
-    >>> [parse_choice(t) for t in ("C", "(C)", "The answer is C.", "Answer: (b)", "maybe")]
-    ['C', 'C', 'C', 'B', None]
+    A capital ``A`` before a word is the article, not a choice:
+
+    >>> [parse_choice(t) for t in ("C", "(C)", "The answer is C.", "Answer: (b)", "maybe",
+    ...                            "A mug is on the desk.", "A is correct")]
+    ['C', 'C', 'C', 'B', None, None, 'A']
     """
     if not isinstance(response, str):
         return None
@@ -73,23 +82,32 @@ def parse_choice(response: str, options: list[str] | None = None) -> str | None:
         hits = [i for i, o in enumerate(options) if o.lower().strip(" .") == low]
         if len(hits) == 1:
             return "ABCD"[hits[0]]
-    found = set(re.findall(r"\b([A-D])\b", t))
+    found = {m.group(1) for m in re.finditer(r"\b([A-D])\b", t)
+             if not (m.group(1) == "A" and _ARTICLE.match(t, m.end()))}
     if len(found) == 1:
         return found.pop()
     return None
 
 
-def _split_name(name: str) -> tuple[str, int | None]:
+#: After a capital "A": a following word that makes it the article ("A mug is ..."), not a
+#: letter ("A is correct").
+_ARTICLE = re.compile(r"\s+(?!(?:is|was|seems|fits|matches|describes|and|or)\b)[A-Za-z]")
+
+
+def _split_name(name: str, known: frozenset[str] = frozenset()) -> tuple[str, int | None]:
     n = name.strip().strip("-*•").strip()
     n = re.sub(r"^\d+[.)]\s*", "", n)
     m = _NAME.match(n)
     if m:
-        return normalize_object(m.group(1)), int(m.group(2))
-    return normalize_object(n), None
+        return normalize_object(m.group(1), known), int(m.group(2))
+    return normalize_object(n, known), None
 
 
-def parse_scene_graph(text: str) -> tuple[list[dict[str, Any]], list[tuple[str, str, str]]]:
+def parse_scene_graph(text: str, known: frozenset[str] = frozenset()
+                      ) -> tuple[list[dict[str, Any]], list[tuple[str, str, str]]]:
     """Objects and canonical triplets of an SGG response.
+
+    ``known`` are the benchmark's object labels (plurals of them are read as the label).
 
     Returns
     -------
@@ -106,8 +124,13 @@ def parse_scene_graph(text: str) -> tuple[list[dict[str, Any]], list[tuple[str, 
     count: Counter[str] = Counter()
     by_label: dict[str, list[str]] = {}
     boxes, kept = _boxes(text)
+    trips = _triplets(kept)
+    native = _native_json(kept)
+    if native is not None:
+        boxes += native[0]
+        trips += native[1]
     for label_text, box in boxes:
-        label, k = _split_name(label_text)
+        label, k = _split_name(label_text, known)
         if not label:
             continue
         count[label] += 1
@@ -116,11 +139,11 @@ def parse_scene_graph(text: str) -> tuple[list[dict[str, Any]], list[tuple[str, 
         by_label.setdefault(label, []).append(name)
     names = {o["name"] for o in objects}
     triplets = []
-    for s, r, o in _triplets(kept):
+    for s, r, o in trips:
         rel = normalize_relation(r) or "?"
 
         def resolve(x: str) -> str:
-            label, k = _split_name(x)
+            label, k = _split_name(x, known)
             name = f"{label}#{k if k is not None else 1}"
             if name not in names and by_label.get(label):
                 name = by_label[label][0]
@@ -162,6 +185,55 @@ def _boxes(text: str) -> tuple[list[tuple[str, list[float]]], str]:
             pos = text.find(_BOX_START, inner)
     rest.append(text[done:])
     return out, "".join(rest)
+
+
+_FENCE = re.compile(r"```(?:json)?", re.I)
+
+
+def _native_json(text: str) -> tuple[list[tuple[str, list[float]]],
+                                     list[tuple[str, str, str]]] | None:
+    """Boxes and triplets of Qwen3-VL's grounding JSON in a response, or None when it holds
+    none: a list of ``{"bbox_2d": [x1, y1, x2, y2], "label": ...}`` (0-1000 grid), or an
+    object with such a list under ``objects`` and relation entries under ``relations``
+    (``{"subject", "relation" | "predicate", "object"}`` or ``[s, r, o]``). One ``json``
+    parse of the text from its first ``[`` or ``{`` to its last ``]`` or ``}``."""
+    import json
+
+    t = _FENCE.sub("", text)
+    starts = [i for i in (t.find("["), t.find("{")) if i >= 0]
+    end = max(t.rfind("]"), t.rfind("}"))
+    if not starts or end < min(starts):
+        return None
+    try:
+        doc = json.loads(t[min(starts):end + 1])
+    except (ValueError, RecursionError):
+        return None
+    if isinstance(doc, dict):
+        entries = [*(doc.get("objects") or []), *(doc.get("relations") or [])]
+    elif isinstance(doc, list):
+        entries = doc
+    else:
+        return None
+    boxes: list[tuple[str, list[float]]] = []
+    trips: list[tuple[str, str, str]] = []
+    for e in entries if isinstance(entries, list) else []:
+        if isinstance(e, dict):
+            box = e.get("bbox_2d", e.get("bbox"))
+            label = e.get("label", e.get("name"))
+            if (isinstance(label, str) and isinstance(box, list) and len(box) == 4
+                    and all(isinstance(v, int | float) and not isinstance(v, bool)
+                            for v in box)):
+                boxes.append((label, [float(v) for v in box]))
+                continue
+            rel = e.get("relation", e.get("predicate"))
+            trip = (e.get("subject"), rel, e.get("object"))
+        elif isinstance(e, list) and len(e) == 3:
+            trip = tuple(e)
+        else:
+            continue
+        if all(isinstance(x, str) and x.strip() for x in trip):
+            trips.append(tuple(x.strip() for x in trip))
+    return (boxes, trips) if boxes or trips else None
 
 
 def _triplets(text: str) -> list[tuple[str, str, str]]:
@@ -215,7 +287,9 @@ def match_objects(pred: list[dict[str, Any]], gt: list[dict[str, Any]],
 
 @dataclass
 class SggScore:
-    """Counts of one or more SGG items (sums)."""
+    """Counts of one or more SGG items (sums): ``correct_*`` answer triplets predicted
+    (recall), ``true_*`` predicted triplets that hold (precision), with and without box
+    matching."""
 
     items: int = 0
     pred: int = 0
@@ -225,20 +299,22 @@ class SggScore:
     pred_objects: int = 0
     gt_objects: int = 0
     matched_objects: int = 0
+    true_matched: int = 0
+    true_unmatched: int = 0
 
     def add(self, other: SggScore) -> None:
         for k in self.__dataclass_fields__:
             setattr(self, k, getattr(self, k) + getattr(other, k))
 
     def metrics(self) -> dict[str, float]:
-        def prf(c: int) -> tuple[float, float, float]:
-            p = c / self.pred if self.pred else 0.0
+        def prf(c: int, t: int) -> tuple[float, float, float]:
+            p = t / self.pred if self.pred else 0.0
             r = c / self.gt if self.gt else 0.0
             f = 2 * p * r / (p + r) if p + r else 0.0
             return 100 * p, 100 * r, 100 * f
 
-        pm, rm, fm = prf(self.correct_matched)
-        pu, ru, fu = prf(self.correct_unmatched)
+        pm, rm, fm = prf(self.correct_matched, self.true_matched)
+        pu, ru, fu = prf(self.correct_unmatched, self.true_unmatched)
         return {"recall": rm, "precision": pm, "f1": fm, "recall_nomatch": ru,
                 "precision_nomatch": pu, "f1_nomatch": fu,
                 "avg_relations": self.pred / self.items if self.items else 0.0,
@@ -248,30 +324,60 @@ class SggScore:
                 if self.pred_objects else 0.0}
 
 
-def score_sgg(gt_meta: dict[str, Any], response: str, threshold: float = 0.5) -> SggScore:
-    """Score one SGG response against an item's ``meta`` (objects and triplets)."""
+def _canonical(s: str, r: str, o: str) -> tuple[str, str, str]:
+    """A symmetric relation's triplet with its two ends in sorted order."""
+    if PHRASE_TO_RELATION.get(r) in SYMMETRIC_RELATIONS and o < s:
+        return o, r, s
+    return s, r, o
+
+
+def score_sgg(gt_meta: dict[str, Any], response: str, threshold: float = 0.5,
+              known: frozenset[str] = frozenset()) -> SggScore:
+    """Score one SGG response against an item's ``meta`` (objects and triplets).
+
+    ``known``: the benchmark's object labels (default: this item's), whose plurals are read
+    as them.
+    """
     gt_objs = gt_meta["objects"]
     gt_trip = [tuple(t) for t in gt_meta["triplets"]]
-    pred_objs, pred_trip = parse_scene_graph(response)
+    known = known or frozenset(o["label"] for o in gt_objs)
+    pred_objs, pred_trip = parse_scene_graph(response, known)
     m = match_objects(pred_objs, gt_objs, threshold)
-    gt_set = Counter(gt_trip)
-    ok_m = 0
-    for s, r, o in pred_trip:
-        key = (m.get(s), r, m.get(o))
-        if key[0] is not None and key[2] is not None and gt_set[key] > 0:
-            gt_set[key] -= 1
-            ok_m += 1
+    holds = [tuple(t) for t in gt_meta.get("holds", gt_trip)]
+    ok_m = _hits(pred_trip, gt_trip, holds, lambda x: m.get(x))
     glabel = {o["name"]: o["label"] for o in gt_objs}
     plabel = {o["name"]: o["label"] for o in pred_objs}
-    gl = Counter((glabel.get(s, s), r, glabel.get(o, o)) for s, r, o in gt_trip)
-    ok_u = 0
-    for s, r, o in pred_trip:
-        key = (plabel.get(s, s.split("#")[0]), r, plabel.get(o, o.split("#")[0]))
-        if gl[key] > 0:
-            gl[key] -= 1
-            ok_u += 1
-    return SggScore(1, len(pred_trip), len(gt_trip), ok_m, ok_u, len(pred_objs), len(gt_objs),
-                    len(m))
+    ok_u = _hits([(plabel.get(s, s.split("#")[0]), r, plabel.get(o, o.split("#")[0]))
+                  for s, r, o in pred_trip],
+                 [(glabel.get(s, s), r, glabel.get(o, o)) for s, r, o in gt_trip],
+                 [(glabel.get(s, s), r, glabel.get(o, o)) for s, r, o in holds], lambda x: x)
+    return SggScore(1, len(pred_trip), len(gt_trip), ok_m[0], ok_u[0], len(pred_objs),
+                    len(gt_objs), len(m), ok_m[1], ok_u[1])
+
+
+def _hits(pred, answer, holds, name) -> tuple[int, int]:
+    """(answer triplets predicted, predicted triplets that hold): each ground-truth triplet
+    counts once; ``name`` maps a predicted name to the ground truth's (None: unmatched)."""
+    mapped = []
+    for s, r, o in pred:
+        a, b = name(s), name(o)
+        if a is not None and b is not None:
+            mapped.append(_canonical(a, r, b))
+    want = Counter(_canonical(*t) for t in answer)
+    recalled = 0
+    for t in mapped:
+        if want[t] > 0:
+            want[t] -= 1
+            recalled += 1
+    true = Counter(_canonical(*t) for t in holds)
+    for t in answer:  # an answer triplet holds, whatever an older record's holds list says
+        true[_canonical(*t)] = max(true[_canonical(*t)], 1)
+    right = 0
+    for t in mapped:
+        if true[t] > 0:
+            true[t] -= 1
+            right += 1
+    return recalled, right
 
 
 @dataclass
@@ -332,6 +438,8 @@ def evaluate(gt: list[dict[str, Any]], pred: dict[str, str], *, model: str = "mo
     rep.unknown = sorted(set(pred) - ids)
     rel, con = [], []
     sgg = SggScore()
+    known = frozenset(o.get("label") for r in gt if r["task"] == "sgg"
+                      for o in r["meta"].get("objects", []))
     for r in gt:
         resp = pred.get(r["id"])
         if resp is None:
@@ -345,7 +453,7 @@ def evaluate(gt: list[dict[str, Any]], pred: dict[str, str], *, model: str = "mo
             (rel if r["task"] == "relation_mcq" else con).append(
                 (r, choice == r["meta"]["answer"]))
         elif r["task"] == "sgg":
-            sgg.add(score_sgg(r["meta"], resp, iou))
+            sgg.add(score_sgg(r["meta"], resp, iou, known))
     rep.items = dict(sorted(Counter(r["task"] for r in gt).items()))
     rep.relation, rep.contact = _mcq(rel), _mcq(con)
     rep.sgg = {k: round(v, 2) for k, v in sgg.metrics().items()} if sgg.items else {}
@@ -417,9 +525,14 @@ def _record_problem(r: dict[str, Any]) -> str | None:
                     and isinstance(o.get("label"), str) and isinstance(o.get("box"), list)
                     and len(o["box"]) == 4 and all(number(v) for v in o["box"])):
                 return f"meta.objects[{k}] needs a name, a label and a box of four numbers"
-        for k, t in enumerate(trips):
-            if not (isinstance(t, list) and len(t) == 3 and all(isinstance(x, str) for x in t)):
-                return f"meta.triplets[{k}] must be three strings"
+        holds = meta.get("holds", [])
+        if not isinstance(holds, list):
+            return "meta.holds must be a list"
+        for key, rows in (("triplets", trips), ("holds", holds)):
+            for k, t in enumerate(rows):
+                if not (isinstance(t, list) and len(t) == 3
+                        and all(isinstance(x, str) for x in t)):
+                    return f"meta.{key}[{k}] must be three strings"
     return None
 
 

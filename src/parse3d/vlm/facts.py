@@ -6,16 +6,21 @@ relations and whether they hold after settling), ``contacts.json`` (the part-lev
 graph), ``scene.glb`` (every part's world mesh) and ``views.json`` with the masks' pixel
 counts and boxes.
 
-Visibility (the issue's rule): an object is visible in a view when its instance mask has at
-least ``min_pixels`` pixels and covers at least ``min_share`` of its *projected hull* — the
-convex hull of its mesh projected into the image, clipped to the image; a part likewise from
-the part mask.
+Visibility by what is seen: an object is visible in a view when its instance mask has at
+least ``min_pixels`` pixels and at least ``min_in_image`` of its projection lies inside the
+image (the convex hull of its mesh projected on the unbounded image plane, clipped to the
+image, over the same hull unclipped; an object reaching behind the near plane is cut off).
+The share is a ratio of one hull to itself, so a floor lamp's pole or a cord, which make the
+hull large and the mask thin, do not hide the object; occlusion is judged by the pixel floor
+alone. A part likewise from the part mask.
 
 Examples
 --------
 >>> import numpy as np
 >>> float(hull_area(np.array([[0, 0], [10, 0], [10, 10], [0, 10], [5, 5]]), 640, 480))
 100.0
+>>> round(in_image_share(np.array([[-20.5, 0], [19.5, 0], [19.5, 10], [-20.5, 10]]), 640, 480), 3)
+0.5
 """
 
 from __future__ import annotations
@@ -51,6 +56,8 @@ __all__ = [
     "SceneFacts",
     "load_scene_facts",
     "hull_area",
+    "in_image_share",
+    "relation_sources",
     "view_facts",
     "pair_truth",
     "projected_box",
@@ -68,8 +75,9 @@ class VisibilityRule:
     ----------
     min_pixels : int
         Least mask pixels.
-    min_share : float
-        Least fraction of the projected hull (clipped to the image) the mask covers.
+    min_in_image : float
+        Least fraction of the object's projection (its projected convex hull) inside the
+        image; an object cut off beyond it is not asked about.
     lateral_margin : float
         Metres: ``A left of B`` holds when A's centroid is at least this much further left
         than B's in the camera frame (camera x); within the margin neither holds nor is
@@ -79,7 +87,7 @@ class VisibilityRule:
     """
 
     min_pixels: int = 400
-    min_share: float = 0.30
+    min_in_image: float = 0.60
     lateral_margin: float = 0.15
     depth_margin: float = 0.30
 
@@ -314,9 +322,38 @@ def hull_area(uv: np.ndarray, width: int, height: int) -> float:
     return float(poly.intersection(box(-0.5, -0.5, width - 0.5, height - 0.5)).area)
 
 
-def _project_front(cam: Camera, pts: np.ndarray) -> np.ndarray:
+def in_image_share(uv: np.ndarray, width: int, height: int) -> float:
+    """Fraction of the convex hull of image points that lies inside the image.
+
+    Parameters
+    ----------
+    uv : (N, 2) float
+        Pixel coordinates on the unbounded image plane (OpenCV: u right, v down).
+    width, height : int
+        Image size.
+
+    Returns
+    -------
+    float
+        0 when the points span no area.
+    """
+    uv = np.asarray(uv, float).reshape(-1, 2)
+    uv = uv[np.isfinite(uv).all(axis=1)]
+    if len(uv) < 3:
+        return 0.0
+    try:
+        full = float(ConvexHull(uv).volume)  # a 2-D hull's volume is its area
+    except QhullError:
+        return 0.0
+    return min(hull_area(uv, width, height) / full, 1.0) if full > 0 else 0.0
+
+
+def _share_in_view(cam: Camera, pts: np.ndarray) -> float:
+    """In-image share of points seen by ``cam``; 0 when any reaches behind the near plane."""
     uv, z = cam.project(pts)
-    return uv[z > cam.near]
+    if (z <= cam.near).any():
+        return 0.0
+    return in_image_share(uv, cam.width, cam.height)
 
 
 def view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) -> ViewFacts:
@@ -348,9 +385,8 @@ def _view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) -
         o = scene.objects.get(oid)
         if rec.get("room") or o is None or rec["pixels"] < rule.min_pixels:
             continue
-        area = hull_area(_project_front(cam, o.vertices), w, h)
-        share = rec["pixels"] / area if area > 0 else 0.0
-        if share >= rule.min_share:
+        share = _share_in_view(cam, o.vertices)
+        if share >= rule.min_in_image:
             objs[oid] = {"pixels": int(rec["pixels"]), "bbox": _check_box(rec["bbox"], w, h),
                          "share": round(min(share, 1.0), 3)}
     parts: dict[str, dict[str, Any]] = {}
@@ -361,9 +397,8 @@ def _view_facts(scene: SceneFacts, view: dict[str, Any], rule: VisibilityRule) -
             continue
         if rec["pixels"] < rule.min_pixels:
             continue
-        area = hull_area(_project_front(cam, o.part_vertices[pname]), w, h)
-        share = rec["pixels"] / area if area > 0 else 0.0
-        if share >= rule.min_share:
+        share = _share_in_view(cam, o.part_vertices[pname])
+        if share >= rule.min_in_image:
             parts[rec["part"]] = {"pixels": int(rec["pixels"]), "bbox": _check_box(rec["bbox"], w, h),
                                   "share": round(min(share, 1.0), 3)}
     name = view["files"]["rgb"]
@@ -388,24 +423,69 @@ def _horizontal_distance(a: ObjectFacts, b: ObjectFacts) -> float:
     return float(np.linalg.norm(a.centroid[:2] - b.centroid[:2]))
 
 
-def pair_truth(scene: SceneFacts, cam: Camera, a: str, b: str, rule: VisibilityRule
-               ) -> tuple[set[str], set[str]]:
-    """Which vocabulary relations hold for "``a`` REL ``b``", and which are undecided.
+#: ``near`` holds below this horizontal centroid distance (metres) and is false beyond
+#: :data:`NEAR_FALSE`; ``far from`` holds beyond :data:`FAR_TRUE` and is false below
+#: :data:`FAR_FALSE`; between the two the relation is undecided.
+NEAR_TRUE, NEAR_FALSE, FAR_FALSE, FAR_TRUE = 0.9, 1.1, 1.8, 2.2
+#: A resting object's lowest point lies within this many metres of the top of the parts of
+#: its support it touches.
+SUPPORT_GAP = 0.03
+
+#: How a true relation was derived (``relation_sources`` values).
+SOURCES = ("pag+contact", "contact", "pag+settled", "camera", "distance", "no contact")
+
+
+def _rests_on(scene: SceneFacts, a: str, b: str) -> bool:
+    """``a`` rests on ``b`` in the settled geometry: the two touch (``contacts.json``), the
+    lowest point of ``a`` is within :data:`SUPPORT_GAP` of the top of the parts of ``b`` it
+    touches, and ``a``'s centre lies over ``b``'s oriented box (in plan)."""
+    pairs = scene.contacts.get((a, b))
+    if not pairs:
+        return False
+    oa, ob = scene.objects[a], scene.objects[b]
+    touched = [ob.part_vertices[q] for _, q in pairs if q in ob.part_vertices]
+    if not touched:
+        return False
+    top = max(float(v[:, 2].max()) for v in touched)
+    if abs(float(oa.vertices[:, 2].min()) - top) > SUPPORT_GAP or oa.centroid[2] <= top:
+        return False
+    c = ob.corners[:, :2]
+    ux, uy = c[4] - c[0], c[2] - c[0]  # the box's two plan edges (corner order x, y, z)
+    d = oa.centroid[:2] - c[0]
+    s, t = d @ ux / max(ux @ ux, 1e-12), d @ uy / max(uy @ uy, 1e-12)
+    return bool(0 <= s <= 1 and 0 <= t <= 1)
+
+
+def relation_sources(scene: SceneFacts, cam: Camera, a: str, b: str, rule: VisibilityRule
+                     ) -> tuple[dict[str, str], set[str]]:
+    """The relations that hold for "``a`` REL ``b``", each with how it was derived, and
+    those left undecided.
+
+    Derivations (:data:`SOURCES`):
+
+    - ``pag+contact``: a contact relation (``on``, ``in``, ``against``, ...) stated in the PAG,
+      holding after settling, and the two objects touch in ``contacts.json``;
+    - ``contact``: ``on`` from the settled geometry alone (:func:`_rests_on`);
+    - ``pag+settled``: a PAG relation without a contact or distance test (``facing``,
+      ``aligned with``, ...) that the dataset reports as holding after settling;
+    - ``camera``: ``left of`` / ``right of`` / ``in front of`` / ``behind`` on the oriented-box
+      centres in the camera frame beyond the rule's margins;
+    - ``distance``: ``near`` / ``far from`` by the horizontal centroid distance (below
+      :data:`NEAR_TRUE` / above :data:`FAR_TRUE`); a PAG-stated ``near`` or ``far from`` is
+      true only when this test agrees;
+    - ``no contact``: no part-level contact in ``contacts.json``.
 
     Returns
     -------
-    true : set of str
-        Relations that hold: PAG relations stated between the pair that hold after
-        settling; the camera-frame relations beyond their margins; ``NO_CONTACT`` when the
-        two share no part-level contact; ``NEAR`` / ``FAR_FROM`` from the horizontal centroid
-        distance when clearly inside / beyond the relation's default distance.
+    true : dict of str to str
+        Relation -> derivation.
     undecided : set of str
-        Relations that may or may not hold (a PAG relation not stated between two objects
-        that touch, a camera-frame relation inside its margin, a relation that cannot be
-        measured here): never used as a distractor for this pair.
+        Relations that may or may not hold (a contact relation not stated between two objects
+        that touch, a camera-frame relation inside its margin, a distance in the undecided
+        band, a PAG relation without a geometric test not stated): never a distractor.
     """
     oa, ob = scene.objects[a], scene.objects[b]
-    true: set[str] = set()
+    true: dict[str, str] = {}
     undecided: set[str] = set()
     pa = cam.R @ oa.centroid + cam.t
     pb = cam.R @ ob.centroid + cam.t
@@ -415,40 +495,53 @@ def pair_truth(scene: SceneFacts, cam: Camera, a: str, b: str, rule: VisibilityR
                              ("IN_FRONT_OF", -dz, rule.depth_margin),
                              ("BEHIND", dz, rule.depth_margin)):
         if val > margin:
-            true.add(rel)
+            true[rel] = "camera"
         elif val > -margin:
             undecided.add(rel)
     touching = (a, b) in scene.contacts
     if not touching:
-        true.add(NO_CONTACT)
+        true[NO_CONTACT] = "no contact"
     dist = _horizontal_distance(oa, ob)
-    if dist < 0.9:
-        true.add("NEAR")
-    elif dist <= 1.1:
+    if dist < NEAR_TRUE:
+        true["NEAR"] = "distance"
+    elif dist <= NEAR_FALSE:
         undecided.add("NEAR")
-    if dist > 2.2:
-        true.add("FAR_FROM")
-    elif dist >= 1.8:
+    if dist > FAR_TRUE:
+        true["FAR_FROM"] = "distance"
+    elif dist >= FAR_FALSE:
         undecided.add("FAR_FROM")
     for rel in RELATION_PHRASES:
         if rel in CAMERA_RELATIONS or rel in ("NEAR", "FAR_FROM", NO_CONTACT):
             continue
-        if (a, rel, b) in scene.pag:
-            true.add(rel)
-        elif rel in CONTACT_RELATIONS and not touching:
-            pass  # cannot hold without contact: decidably false
+        stated = (a, rel, b) in scene.pag
+        if rel in CONTACT_RELATIONS:
+            if stated and touching:
+                true[rel] = "pag+contact"
+            elif rel == "ON" and _rests_on(scene, a, b):
+                true[rel] = "contact"
+            elif touching:
+                undecided.add(rel)
+            # without contact a contact relation is decidably false
+        elif stated:
+            true[rel] = "pag+settled"
         else:
             undecided.add(rel)
-    for rel in ("NEAR", "FAR_FROM"):
-        if (a, rel, b) in scene.pag:
-            true.add(rel)
-            undecided.discard(rel)
-    undecided -= true
+    undecided -= set(true)
     return true, undecided
 
 
-def projected_box(cam: Camera, corners: np.ndarray) -> list[float] | None:
-    """2-D box ``[x1, y1, x2, y2]`` (pixels) of projected 3-D box corners, clipped to the image.
+def pair_truth(scene: SceneFacts, cam: Camera, a: str, b: str, rule: VisibilityRule
+               ) -> tuple[set[str], set[str]]:
+    """Which vocabulary relations hold for "``a`` REL ``b``", and which are undecided
+    (:func:`relation_sources` without the derivations)."""
+    true, undecided = relation_sources(scene, cam, a, b, rule)
+    return set(true), undecided
+
+
+def projected_box(cam: Camera, corners: np.ndarray, *, clip: bool = True
+                  ) -> list[float] | None:
+    """2-D box ``[x1, y1, x2, y2]`` (pixels) of projected 3-D box corners, clipped to the image
+    (``clip=False``: on the unbounded image plane).
 
     Corners behind the camera are replaced by the box's points on the near plane (the edges
     of the box are clipped), so a box that reaches behind the camera still gets a box.
@@ -466,6 +559,8 @@ def projected_box(cam: Camera, corners: np.ndarray) -> list[float] | None:
             pts.append(pc[i] + s * (pc[j] - pc[i]))
     p = np.array(pts)
     uv = p[:, :2] / p[:, 2:3] * [cam.fx, cam.fy] + [cam.cx, cam.cy]
+    if not clip:
+        return [float(v) for v in (*uv.min(axis=0), *uv.max(axis=0))]
     x1, y1 = np.clip(uv.min(axis=0), [0, 0], [cam.width - 1, cam.height - 1])
     x2, y2 = np.clip(uv.max(axis=0), [0, 0], [cam.width - 1, cam.height - 1])
     if x2 <= x1 or y2 <= y1:

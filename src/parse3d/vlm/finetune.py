@@ -1,12 +1,16 @@
 """``parse3d vlm finetune``: the paper's LoRA recipe (Appendix A.4) with transformers + peft.
 
 Defaults are the paper's: LoRA rank 8, alpha 32 on every linear layer of the language model
-(attention and MLP projections; the vision tower and the LM head stay frozen), AdamW at
+(attention and MLP projections; the vision tower and the LM head stay frozen) and, in a
+mixture-of-experts model (Qwen3-VL-30B-A3B, -235B-A22B), on its experts, which are 3-D
+parameters rather than linear layers (peft's ``target_parameters``), AdamW at
 1e-4 with a linear warm-up over 5% of the updates then a cosine decay to 1e-5, a global
 batch of 16 (micro-batch 2 per device, gradient accumulation making up the rest), one
 epoch, images capped at 1024 merged tokens, the three tasks mixed by fixed ratios. GPUs are
 used when present (bfloat16); under ``accelerate launch`` every process takes its share of
-the global batch. The adapter, the recipe and the loss log are saved into ``out``;
+the global batch; ``device_map="auto"`` spreads a model too large for one GPU over the GPUs
+of one process. Gradient checkpointing is on by default, and micro-batches hold items of
+similar length (length-grouped, so little of a batch is padding). The adapter, the recipe and the loss log are saved into ``out``;
 ``parse3d vlm ask --local MODEL --adapter OUT`` uses them.
 """
 
@@ -25,7 +29,7 @@ from ..errors import InputError, Problem
 from .build import TASKS, read_jsonl
 
 __all__ = ["FinetuneOptions", "FinetuneResult", "mix_tasks", "lr_at", "lora_targets",
-           "finetune"]
+           "expert_parameters", "length_grouped", "finetune"]
 
 
 @dataclass(frozen=True)
@@ -54,6 +58,14 @@ class FinetuneOptions:
     val_items : int
         Validation items whose loss is reported at the end.
     seed : int
+    gradient_checkpointing : bool
+        Recompute activations in the backward pass (memory for time).
+    group_by_length : bool
+        Micro-batches of items of similar length (within windows of 64 micro-batches, the
+        batches' order shuffled).
+    device_map : str or None
+        transformers' ``device_map`` (``auto``: layers spread over this process's GPUs, for
+        a model that does not fit one); None puts the whole model on this process's device.
     """
 
     rank: int = 8
@@ -71,6 +83,9 @@ class FinetuneOptions:
     max_items: int | None = None
     val_items: int = 64
     seed: int = 0
+    gradient_checkpointing: bool = True
+    group_by_length: bool = True
+    device_map: str | None = None
 
 
 @dataclass
@@ -123,6 +138,34 @@ def lora_targets(model) -> list[str]:
                 and "visual" not in name and not name.endswith("lm_head"):
             names.append(name)
     return names
+
+
+def expert_parameters(model) -> list[str]:
+    """Names of the language model's expert weights stored as 3-D parameters
+    (``(experts, out, in)``: a mixture-of-experts block), which LoRA reaches through peft's
+    ``target_parameters``; empty for a dense model."""
+    return [name for name, p in model.named_parameters()
+            if p.ndim == 3 and "language_model" in name and "visual" not in name
+            and ".experts." in name]
+
+
+def length_grouped(items: list[dict[str, Any]], micro_batch: int, rng: np.random.Generator,
+                   *, window: int = 64) -> list[dict[str, Any]]:
+    """``items`` reordered so that each run of ``micro_batch`` has similar lengths.
+
+    Within windows of ``window`` micro-batches the items are sorted by the length of their
+    text (images have one size per benchmark), cut into micro-batches, and the micro-batches
+    of the whole run shuffled. Every item stays exactly once.
+    """
+    def length(r: dict[str, Any]) -> int:
+        return sum(len(str(m.get("content", ""))) for m in r.get("messages", []))
+
+    span = max(1, micro_batch * window)
+    batches = []
+    for w in range(0, len(items), span):
+        chunk = sorted(items[w:w + span], key=length)
+        batches += [chunk[i:i + micro_batch] for i in range(0, len(chunk), micro_batch)]
+    return [r for k in rng.permutation(len(batches)) for r in batches[int(k)]]
 
 
 def _check(opts: FinetuneOptions) -> None:
@@ -191,16 +234,27 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
     with reading_model(model_dir):
         model = AutoModelForImageTextToText.from_pretrained(
             model_dir, dtype=torch.bfloat16 if torch.cuda.is_available() else torch.float32,
-            use_safetensors=True, trust_remote_code=False)
+            use_safetensors=True, trust_remote_code=False, device_map=options.device_map)
     targets = lora_targets(model)
+    experts = expert_parameters(model)
     if not targets:
         raise InputError(Problem("", "found no linear layers of a language model to adapt — "
                                      "is this a Qwen2.5-VL / Qwen3-VL folder?", str(model_dir),
                                  "io"))
-    cfg = LoraConfig(r=options.rank, lora_alpha=options.alpha, lora_dropout=options.dropout,
-                     target_modules=targets, bias="none")
+    # peft's parameter targeting cannot apply dropout (x is not factored out of the expert
+    # product), so a mixture-of-experts model trains its adapters without it
+    dropout = 0.0 if experts else options.dropout
+    cfg = LoraConfig(r=options.rank, lora_alpha=options.alpha, lora_dropout=dropout,
+                     target_modules=targets, target_parameters=experts or None, bias="none")
     model = get_peft_model(model, cfg)
     model.config.use_cache = False
+    if options.gradient_checkpointing:
+        kw = {"use_reentrant": False}
+        if hasattr(model, "activation_checkpointing_enable"):  # the newer name
+            model.activation_checkpointing_enable(activation_checkpointing_kwargs=kw)
+        else:
+            model.gradient_checkpointing_enable(gradient_checkpointing_kwargs=kw)
+        model.enable_input_require_grads()  # the frozen embeddings' output needs a grad
     opt = torch.optim.AdamW([p for p in model.parameters() if p.requires_grad], lr=options.lr,
                             weight_decay=options.weight_decay)
     n_epochs = options.epochs
@@ -219,6 +273,8 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
     for e in range(full):
         order += mixed if e == 0 else [mixed[int(i)] for i in rng.permutation(len(mixed))]
     order += mixed[: int(round((n_epochs - full) * len(mixed)))]
+    if options.group_by_length:
+        order = length_grouped(order, per_update, rng)
     mine = order[accelerator.process_index::world]
     losses: list[float] = []
     model.train()
@@ -262,7 +318,9 @@ def finetune(model_dir: str | Path, data: str | Path, out: str | Path,
                "data": str(train_file), "recipe": asdict(options), "items": len(mixed),
                "devices": world, "accumulation": accumulation, "updates": len(losses),
                "losses": [round(x, 5) for x in losses], "val_loss": val_loss,
-               "lora_targets": len(targets), "wall_s": round(time.perf_counter() - t0, 2)}
+               "lora_targets": len(targets), "lora_expert_parameters": len(experts),
+               "lora_dropout_used": dropout,
+               "wall_s": round(time.perf_counter() - t0, 2)}
         (out / "finetune.json").write_text(json.dumps(rec, indent=1) + "\n")
     return FinetuneResult(out, len(losses), losses, val_loss, time.perf_counter() - t0,
                           accumulation, world)

@@ -17,7 +17,15 @@ from typing import Any
 
 import numpy as np
 
-from .facts import SceneFacts, ViewFacts, VisibilityRule, pair_truth, projected_box, to_grid
+from .facts import (
+    SceneFacts,
+    ViewFacts,
+    VisibilityRule,
+    pair_truth,
+    projected_box,
+    relation_sources,
+    to_grid,
+)
 from .vocab import (
     CAMERA_RELATIONS,
     INVERSE_RELATIONS,
@@ -216,7 +224,7 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
     """
     vis = list(view.objects)
     stated = [(c, r, p) for (c, r, p) in sorted(scene.pag) if c in view.objects
-              and p in view.objects]
+              and p in view.objects and r in pair_truth(scene, view.camera, c, p, rule)[0]]
     rng.shuffle(stated)
     chosen: list[tuple[str, str, str]] = []
     used: set[frozenset[str]] = set()
@@ -241,7 +249,8 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
         chosen.append((a, cands[int(rng.integers(len(cands)))], b))
     items = []
     for a, rel, b in chosen[: limits.relation]:
-        true, undecided = pair_truth(scene, view.camera, a, b, rule)
+        sources, undecided = relation_sources(scene, view.camera, a, b, rule)
+        true = set(sources)
         if rel not in true:
             continue
         la, lb = scene.objects[a].label, scene.objects[b].label
@@ -251,7 +260,8 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
             continue
         prompt, letter, meta = _finish_mcq(
             RELATION_PROMPT, correct, dis, counts, rng,
-            {"red": a, "blue": b, "relation": rel, "phrase": RELATION_PHRASES[rel]})
+            {"red": a, "blue": b, "relation": rel, "phrase": RELATION_PHRASES[rel],
+             "source": sources[rel]})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
             continue
@@ -343,7 +353,8 @@ def contact_items(scene: SceneFacts, view: ViewFacts, part_map: dict[str, list[s
             continue
         prompt, letter, meta = _finish_mcq(
             CONTACT_PROMPT, correct, uniq[:3], counts, rng,
-            {"red": a, "blue": b, "relation": "no contact" if pairs is None else "contact"})
+            {"red": a, "blue": b, "relation": "no contact" if pairs is None else "contact",
+             "source": "contacts"})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
             continue
@@ -358,33 +369,69 @@ def format_box(box: list[int]) -> str:
 
 
 def sgg_triplets(scene: SceneFacts, view: ViewFacts, rule: VisibilityRule
-                 ) -> list[tuple[str, str, str]]:
-    """The scene graph of a view: object ids and vocabulary relations.
+                 ) -> list[tuple[str, str, str, str]]:
+    """The scene graph of a view: every true relation between two visible objects.
 
-    PAG relations that hold after settling between two visible objects, plus ``left of``
-    between neighbours (in camera x) among the visible objects that stand on the same
-    supporting object (a mug and a book on one desk), where it is decided. Camera-frame relations are given in their canonical
-    direction (``left of``, ``in front of``).
+    For every ordered pair of visible objects, the relations :func:`relation_sources` finds
+    true, each with its derivation; ``no contact`` is left out (it is the absence of an
+    edge), camera-frame relations are given in their canonical direction (``left of``,
+    ``in front of``; the inverse is the same triplet turned around) and a symmetric relation
+    once per pair (subject first by id).
+
+    Returns
+    -------
+    list of (subject id, RELATION, object id, derivation), sorted.
     """
-    out = {(c, r, p) for c, r, p in scene.pag if c in view.objects and p in view.objects}
-    support: dict[str, str] = {c: p for c, r, p in scene.pag if r in SUPPORT_RELATIONS}
-    groups: dict[str, list[tuple[float, str]]] = {}
-    for oid in sorted(view.objects):
-        if support.get(oid) is not None:
-            x = float((view.camera.R @ scene.objects[oid].centroid + view.camera.t)[0])
-            groups.setdefault(support[oid], []).append((x, oid))
-    for members in groups.values():
-        members.sort()
-        for (_, a), (_, b) in zip(members, members[1:], strict=False):
-            true, _ = pair_truth(scene, view.camera, a, b, rule)
-            if "LEFT_OF" in true:
-                out.add((a, "LEFT_OF", b))
-    canon = set()
-    for s, r, o in out:
-        if r in INVERSE_RELATIONS:
-            s, r, o = o, INVERSE_RELATIONS[r], s
-        canon.add((s, r, o))
-    return sorted(canon)
+    out: set[tuple[str, str, str, str]] = set()
+    vis = sorted(view.objects)
+    for a in vis:
+        for b in vis:
+            if a == b:
+                continue
+            true, _ = relation_sources(scene, view.camera, a, b, rule)
+            for r, how in true.items():
+                if r == NO_CONTACT or r in INVERSE_RELATIONS:
+                    continue
+                if r in SYMMETRIC_RELATIONS and a > b:
+                    continue
+                out.add((a, r, b, how))
+    return sorted(out)
+
+
+#: An SGG box is the projected 3-D box unless less than this share of it lies in the image;
+#: then the visible mask's tight box (a projected box mostly outside the image, clipped,
+#: covers whatever neighbour is at the border).
+MIN_BOX_IN_IMAGE = 0.5
+
+
+def _answer_graph(scene: SceneFacts, holds: list[tuple[str, str, str, str]]
+                  ) -> list[tuple[str, str, str, str]]:
+    """The scene graph an SGG answer lists: of the relations that hold, every contact and PAG
+    relation, and the camera-frame and distance relations between each object and its
+    nearest visible neighbour (horizontal centroid distance). Every relation that holds is
+    kept in ``meta.holds``, against which predictions are judged true or false."""
+    objs = sorted({t[0] for t in holds} | {t[2] for t in holds})
+    nearest: set[frozenset[str]] = set()
+    for a in objs:
+        others = [b for b in objs if b != a]
+        if others:
+            ca = scene.objects[a].centroid[:2]
+            b = min(others, key=lambda b: (float(np.linalg.norm(scene.objects[b].centroid[:2]
+                                                                 - ca)), b))
+            nearest.add(frozenset((a, b)))
+    return [t for t in holds
+            if t[3] not in ("camera", "distance") or frozenset((t[0], t[2])) in nearest]
+
+
+def _in_image(px: list[float], width: int, height: int) -> float:
+    """Share of a pixel box's area inside the image."""
+    x1, y1, x2, y2 = px
+    area = max(x2 - x1, 0.0) * max(y2 - y1, 0.0)
+    if area <= 0:
+        return 0.0
+    ix = max(min(x2, width) - max(x1, 0.0), 0.0)
+    iy = max(min(y2, height) - max(y1, 0.0), 0.0)
+    return ix * iy / area
 
 
 def sgg_item(scene: SceneFacts, view: ViewFacts, candidates: list[str], rule: VisibilityRule,
@@ -394,39 +441,45 @@ def sgg_item(scene: SceneFacts, view: ViewFacts, candidates: list[str], rule: Vi
     Parameters
     ----------
     boxes : str
-        ``projected`` (the paper: the 3-D oriented box projected into the image) or ``mask``
-        (the tight box of the visible mask).
+        ``projected`` (the paper: the 3-D oriented box projected into the image, except where
+        less than :data:`MIN_BOX_IN_IMAGE` of it lies in the image: then the mask's box) or
+        ``mask`` (the tight box of the visible mask). Each object records ``box_from``.
     """
     if not view.objects:
         return None
     cam = view.camera
     rows = []
     for oid, rec in view.objects.items():
-        if boxes == "mask":
-            x1, y1, x2, y2 = rec["bbox"]
-            px = [x1, y1, x2 + 1, y2 + 1]
-        else:
-            px = projected_box(cam, scene.objects[oid].corners)
-            if px is None:
-                continue
-        rows.append((oid, to_grid(px, cam.width, cam.height)))
+        x1, y1, x2, y2 = rec["bbox"]
+        px, how = [x1, y1, x2 + 1, y2 + 1], "mask"
+        if boxes != "mask":
+            full = projected_box(cam, scene.objects[oid].corners, clip=False)
+            if full is not None and _in_image(full, cam.width, cam.height) >= MIN_BOX_IN_IMAGE:
+                px, how = projected_box(cam, scene.objects[oid].corners), "projected"
+        rows.append((oid, to_grid(px, cam.width, cam.height), how))
     if not rows:
         return None
     rows.sort(key=lambda r: (scene.objects[r[0]].label, r[1][0], r[1][1], r[0]))
     names: dict[str, str] = {}
     seen: dict[str, int] = {}
     objects = []
-    for oid, g in rows:
+    for oid, g, how in rows:
         lab = scene.objects[oid].label
         seen[lab] = seen.get(lab, 0) + 1
         names[oid] = f"{lab}#{seen[lab]}"
-        objects.append({"name": names[oid], "label": lab, "object": oid, "box": g})
-    triplets = [[names[s], RELATION_PHRASES[r], names[o]]
-                for s, r, o in sgg_triplets(scene, view, rule) if s in names and o in names]
+        objects.append({"name": names[oid], "label": lab, "object": oid, "box": g,
+                        "box_from": how})
+    holds = [t for t in sgg_triplets(scene, view, rule) if t[0] in names and t[2] in names]
+    graph = _answer_graph(scene, holds)
+    triplets = [[names[s], RELATION_PHRASES[r], names[o]] for s, r, o, _ in graph]
     answer = "Objects:\n" + "\n".join(f"{o['name']} {format_box(o['box'])}" for o in objects)
     answer += "\nRelations:\n" + "\n".join(f"({s}, {r}, {o})" for s, r, o in triplets)
     rels = [RELATION_PHRASES[r] for r in RELATION_PHRASES
             if r not in CAMERA_RELATIONS[1::2] and r != NO_CONTACT]
     prompt = SGG_PROMPT.format(objects=", ".join(candidates), relations=", ".join(rels))
     return Item("sgg", prompt, answer.rstrip(), {"objects": objects, "triplets": triplets,
+                                                  "sources": [t[3] for t in graph],
+                                                  "holds": [[names[s], RELATION_PHRASES[r],
+                                                             names[o]]
+                                                            for s, r, o, _ in holds],
                                                   "boxes": boxes})

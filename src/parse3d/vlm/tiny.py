@@ -58,7 +58,7 @@ def _tokenizer(texts: Iterable[str], vocab_size: int):
 
 def make_tiny_qwen3vl(out: str | Path, texts: Iterable[str], *, vocab_size: int = 600,
                       hidden: int = 64, layers: int = 2, max_pixels: int = 64 * 64,
-                      seed: int = 0) -> Path:
+                      experts: int = 0, seed: int = 0) -> Path:
     """Build and save a tiny random Qwen3-VL (model, tokenizer, processor) into ``out``.
 
     Parameters
@@ -71,12 +71,17 @@ def make_tiny_qwen3vl(out: str | Path, texts: Iterable[str], *, vocab_size: int 
         Hidden size of the language model (4 heads of ``hidden / 4``).
     max_pixels : int
         The image processor's pixel budget (an image of 64x64 pixels gives 4 tokens).
+    experts : int
+        0: a dense Qwen3-VL; otherwise a Qwen3-VL-MoE with this many experts per layer (two
+        routed per token), the architecture of Qwen3-VL-30B-A3B and -235B-A22B.
     """
     import torch
     from transformers import (
         Qwen2VLImageProcessorPil,
         Qwen3VLConfig,
         Qwen3VLForConditionalGeneration,
+        Qwen3VLMoeConfig,
+        Qwen3VLMoeForConditionalGeneration,
     )
 
     out = Path(out)
@@ -86,8 +91,12 @@ def make_tiny_qwen3vl(out: str | Path, texts: Iterable[str], *, vocab_size: int 
     head_dim = hidden // heads
     half = head_dim // 2
     mrope = [half - 2 * (half // 3), half // 3, half // 3]  # temporal, height, width
-    cfg = Qwen3VLConfig(
-        text_config={"hidden_size": hidden, "intermediate_size": 2 * hidden,
+    moe = {"num_experts": experts, "num_experts_per_tok": min(2, experts),
+           "moe_intermediate_size": hidden, "decoder_sparse_step": 1} if experts else {}
+    config_cls, model_cls = ((Qwen3VLMoeConfig, Qwen3VLMoeForConditionalGeneration) if experts
+                             else (Qwen3VLConfig, Qwen3VLForConditionalGeneration))
+    cfg = config_cls(
+        text_config={**moe, "hidden_size": hidden, "intermediate_size": 2 * hidden,
                      "num_hidden_layers": layers, "num_attention_heads": heads,
                      "num_key_value_heads": 2, "head_dim": head_dim, "vocab_size": len(tok),
                      "max_position_embeddings": 4096,
@@ -103,7 +112,7 @@ def make_tiny_qwen3vl(out: str | Path, texts: Iterable[str], *, vocab_size: int 
         vision_start_token_id=ids["<|vision_start|>"], vision_end_token_id=ids["<|vision_end|>"],
         tie_word_embeddings=False)
     torch.manual_seed(seed)
-    model = Qwen3VLForConditionalGeneration(cfg)
+    model = model_cls(cfg)
     model.generation_config.eos_token_id = ids["<|im_end|>"]
     model.generation_config.pad_token_id = ids["<|endoftext|>"]
     budget = {"shortest_edge": 32 * 32, "longest_edge": int(max_pixels)}

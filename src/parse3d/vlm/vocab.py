@@ -21,6 +21,7 @@ Examples
 
 from __future__ import annotations
 
+import functools
 import re
 from types import MappingProxyType
 
@@ -147,17 +148,58 @@ def _clean(text: str) -> str:
     return re.sub(r"^(the|a|an) ", "", t)
 
 
-def normalize_object(name: str) -> str:
-    """A model's object name -> the benchmark label (synonyms, case, articles, plurals).
+def _singulars(t: str) -> list[str]:
+    """Singular candidates of a plural name, most likely first; the last word of a compound
+    is the one made plural (``coffee tables``, ``shelves``, ``boxes``, ``bodies``)."""
+    head, _, last = t.rpartition(" ")
+    out = []
+    if last.endswith("ies") and len(last) > 4:
+        out.append(last[:-3] + "y")
+    if last.endswith("ves") and len(last) > 4:
+        out += [last[:-3] + "f", last[:-3] + "fe"]
+    if last.endswith("es") and len(last) > 3:
+        out.append(last[:-2])
+    if last.endswith("s") and not last.endswith("ss") and len(last) > 2:
+        out.append(last[:-1])
+    return [f"{head} {s}" if head else s for s in out]
 
-    The names the benchmark uses are returned unchanged; unknown names come back cleaned
-    (lower case, single spaces, no article), so they simply never match.
+
+def _shared_resolver(known: frozenset[str]):
+    """The project's shared vocabulary resolver over ``known`` labels, or None where the
+    shared vocabulary module is not part of this installation."""
+    try:
+        from ..words import Resolver
+    except ImportError:
+        return None
+    return Resolver({k.replace(" ", "_"): () for k in known})
+
+
+def normalize_object(name: str, known: frozenset[str] | set[str] = frozenset()) -> str:
+    """A model's object name -> the benchmark label: case, articles, plurals, synonyms.
+
+    ``known`` are the benchmark's labels (an SGG split's object labels): a plural of one of
+    them (``books``, ``shelves``, ``glasses``) is its singular. The synonym table
+    :data:`OBJECT_SYNONYMS` applies to a name and its singular, then the shared vocabulary's
+    synonyms where that module is installed. Unknown names come back cleaned (lower case,
+    single spaces, no article), so they simply never match.
+
+    >>> normalize_object("Books", {"book"}), normalize_object("the couches")
+    ('book', 'sofa')
     """
     t = _clean(name)
-    if t in OBJECT_SYNONYMS:
-        return OBJECT_SYNONYMS[t]
-    if t.endswith("s") and t[:-1] in OBJECT_SYNONYMS:
-        return OBJECT_SYNONYMS[t[:-1]]
+    if t in known:
+        return t
+    for c in (t, *_singulars(t)):
+        if c in known:
+            return c
+        if c in OBJECT_SYNONYMS:
+            return OBJECT_SYNONYMS[c]
+    if known:
+        r = _resolver(frozenset(known))
+        if r is not None:
+            hits = {c.replace("_", " ") for c in r.categories_for(t) or ()} & set(known)
+            if len(hits) == 1:
+                return hits.pop()
     # the package's vocabulary file: a synonym naming one category (``bookshelf``, ``fridge``)
     from ..words import lexicon, normalize, singulars
 
@@ -169,6 +211,9 @@ def normalize_object(name: str) -> str:
         if target is not None and len(members) == 1:  # one category, not a kind of several
             return object_label(members[0])
     return t
+
+
+_resolver = functools.lru_cache(maxsize=8)(_shared_resolver)
 
 
 def normalize_relation(phrase: str) -> str | None:
