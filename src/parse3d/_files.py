@@ -177,7 +177,9 @@ def _esc(key: str) -> str:
     return str(key).replace("~", "~0").replace("/", "~1")
 
 
-_JSON_TOKENS = re.compile(r'"(?:[^"\\]|\\.)*"|[\[\]{}]')
+# a string as one run of plain characters between escapes (the "unrolled loop"): the regex
+# engine keeps no backtracking point per character, so a 10 MB string costs no memory
+_JSON_TOKENS = re.compile(r'"[^"\\]*(?:\\.[^"\\]*)*"|[\[\]{}]')
 
 
 def check_json_depth(text: str, file: str | None, *, limit: int | None = None) -> None:
