@@ -39,6 +39,9 @@ class SolverConfig:
         ``search_budget``) or ``greedy`` (one pass in assembly order).
     search_budget : int
         Re-placements of already placed objects the backtracking search may spend per scene.
+    relax : bool
+        Relax a non-support relation that cannot be met (recorded ``holds: false`` with what
+        blocked it) rather than fail the object; False keeps every relation hard (``--strict``).
     """
 
     max_trials: int = 30
@@ -48,6 +51,7 @@ class SolverConfig:
     wall_thickness: float = 0.12
     search: str = "backtracking"
     search_budget: int = 24
+    relax: bool = True
 
     def __post_init__(self):
         if self.strategy not in STRATEGIES:
@@ -61,7 +65,7 @@ class SolverConfig:
         return {"max_trials": self.max_trials, "asset_attempts": self.asset_attempts,
                 "strategy": self.strategy, "margin": self.margin,
                 "wall_thickness": self.wall_thickness, "search": self.search,
-                "search_budget": int(self.search_budget)}
+                "search_budget": int(self.search_budget), "relax": bool(self.relax)}
 
 
 def stage_rng(seed: int, stage: str) -> np.random.Generator:

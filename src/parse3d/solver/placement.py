@@ -52,7 +52,8 @@ class Placement:
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
                  library, *, skip: frozenset[int] = frozenset(),
                  proposal: tuple[np.ndarray, np.ndarray] | None = None,
-                 keep: PlacedObject | None = None, smallest: bool = False) -> Placement:
+                 keep: PlacedObject | None = None, smallest: bool = False,
+                 loosen: dict[int, Edge] | None = None) -> Placement:
     """Place one object (its parents are placed); raise Fail with the reason otherwise.
 
     ``skip`` holds indices (into ``pag.edges_of(oid)``) of non-support relations left out
@@ -60,16 +61,21 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     is an earlier placement of the object whose asset and scale the first attempt reuses (a
     repair by another pose). ``smallest`` starts with the suitable instance of least
     footprint among those looked at (a table that must leave room for its chairs).
+    ``loosen`` maps indices of relaxed part-level edges to the edge placed instead (the same
+    relation by the whole object: the part that reaches furthest touches); their checks are
+    left None (measured on the edge as written afterwards).
     """
     pag = st.pag
     node = pag.objects[oid]
     edges = pag.edges_of(oid)
     support_edge = edges[0]
-    others = [e for i, e in enumerate(edges[1:], 1) if i not in skip]
+    loosen = loosen or {}
+    others = [loosen.get(i, e) for i, e in enumerate(edges[1:], 1) if i not in skip]
     reasons: list[str] = []
     intrinsic: list[bool] = []
     total_trials = 0
-    reqs = requirements(pag, oid)
+    dropped = {_edge_text(edges[i]) for i in (*skip, *loosen)}
+    reqs = [r for r in requirements(pag, oid) if r[2] not in dropped]
     tried: set[str] = set()
     headroom = _headroom(st, support_edge)
     axis = _AXES[support_edge.child.surface or support_edge.spec.child_surface]
@@ -102,8 +108,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                 if asset.asset_id in tried:
                     break  # every suitable instance was tried
                 why = lacks(asset, reqs)
+                n = k_slots(library, reqs)
                 raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
-                           f"{RANKED_SLOTS} per category) fits the relations: {why}",
+                           f"{n} per category) fits the relations: {why}",
                            intrinsic=True)
             category, asset = alt
         tried.add(asset.asset_id)
@@ -171,6 +178,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
+        for i in loosen:
+            full[i] = None
         return Placement(obj, body, full)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
 
@@ -282,6 +291,11 @@ def _contents_scale(pag, oid: str, asset: Asset) -> float:
     return float(np.sqrt(need / area)) if area > 0 else 0.0
 
 
+def _edge_text(e: Edge) -> str:
+    """An edge as failure reasons and requirements write it: ``AGAINST a:b@back -> wall_1``."""
+    return f"{e.relation} {e.child} -> {e.parent}"
+
+
 def touching(pag, oid: str) -> list[Edge]:
     """The edges of ``pag`` naming ``oid`` as child or parent, in file order (an index kept on
     the graph, rebuilt whenever its relations change)."""
@@ -307,7 +321,7 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
     AGAINST child part reaches furthest along its surface normal)."""
     out = []
     for e in touching(pag, oid):
-        text = f"{e.relation} {e.child} -> {e.parent}"
+        text = _edge_text(e)
         if e.parent.object == oid and e.relation == "ON" and e.child.object != oid and set(
                 pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
             out.append((e.parent.part, e.parent.index, text, "stack_base"))
@@ -483,10 +497,12 @@ def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Gene
     if load is None:
         return None
     k = int(getattr(library, "per_category", 20))
+    # a part that must reach furthest (AGAINST by a part) is rare among instances: every slot
+    slots = k if any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
     best = None
     for ci in rng.permutation(len(categories)):
         cat = categories[int(ci)]
-        for slot in rng.permutation(k)[:RANKED_SLOTS]:
+        for slot in rng.permutation(k)[:slots]:
             asset = load(cat, int(slot))
             if asset.asset_id in tried or lacks(asset, reqs) is not None:
                 continue
@@ -500,6 +516,13 @@ def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Gene
             if best is None or area < best[0]:
                 best = (area, cat, asset)
     return None if best is None else (best[1], best[2])
+
+
+def k_slots(library, reqs) -> int:
+    """Pool slots per category :func:`_alternative` looks at for ``reqs``."""
+    if any(r[3].startswith("extreme:") for r in reqs):
+        return int(getattr(library, "per_category", 20))
+    return RANKED_SLOTS
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
