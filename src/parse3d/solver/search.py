@@ -201,13 +201,14 @@ class _Search:
             loose = {i: whole_object(edges[i]) for i, how in step.items() if how == "loose"}
             self.loose[oid] = loose
             try:
-                p = place_object(self.st, oid, stage_rng(self.seed, f"object:{oid}:relax{k}"),
-                                 cheap, self.library, skip=self.skipped(oid) - set(loose),
-                                 loosen=loose)
-            except Fail:
+                p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"), cheap,
+                               loosen=loose)
+            except Fail as f:
                 for key in keys.values():
                     self.relaxed.pop(key, None)
                 self.loose.pop(oid, None)
+                if str(f).startswith(INTERNAL):
+                    return None
                 continue
             self.commit(p)
             return p
@@ -217,9 +218,21 @@ class _Search:
                   smallest: bool = False) -> Placement:
         rng = stage_rng(self.seed, stage)
         loose = self.loose.get(oid, {})
-        return place_object(self.st, oid, rng, self.cfg, self.library,
-                            skip=self.skipped(oid) - set(loose), proposal=proposal, keep=keep,
-                            smallest=smallest, loosen=loose)
+        return self.place(oid, rng, self.cfg, proposal=proposal, keep=keep, smallest=smallest,
+                          loosen=loose)
+
+    def place(self, oid: str, rng, cfg: SolverConfig, **kw) -> Placement:
+        """:func:`place_object` for ``oid``; an exception other than :class:`Fail` becomes a
+        Fail ``internal error: ...`` (intrinsic: no move of others is tried for it) with its
+        traceback in the log and ``scene.log``, so one object's fault never stops a solve."""
+        loose = kw.get("loosen") or {}
+        try:
+            return place_object(self.st, oid, rng, cfg, self.library,
+                                skip=self.skipped(oid) - set(loose), **kw)
+        except Fail:
+            raise
+        except Exception as e:  # noqa: BLE001 - one object's fault is its failure
+            raise _internal(self.st.scene, oid, e) from e
 
     def commit(self, p: Placement) -> None:
         self.placements[p.obj.id] = p
@@ -732,13 +745,17 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
                 srch.commit(srch.try_place(oid, f"object:{oid}", prop, keep))
             except Fail as f:
                 try:
-                    got = _recover(srch, oid, f)
+                    got = None if str(f).startswith(INTERNAL) else _recover(srch, oid, f)
+                    reason = None if got is not None else srch.explain(oid, str(f))
                 except Exception as e:  # noqa: BLE001 - one object's fault is its failure
-                    got = None
-                    f = _internal(scene, oid, e)
-                if got is None:
-                    srch.fail(oid, srch.explain(oid, str(f)), cfg.max_trials * cfg.asset_attempts)
+                    reason = str(_internal(scene, oid, e))
+                if reason is not None:
+                    if oid in srch.placements:
+                        srch.uncommit(oid)
+                    srch.fail(oid, reason, cfg.max_trials * cfg.asset_attempts)
             except Exception as e:  # noqa: BLE001 - one object's fault is its failure
+                if oid in srch.placements:
+                    srch.uncommit(oid)
                 srch.fail(oid, str(_internal(scene, oid, e)))
         if progress is not None:
             progress(SolveProgress(oid, scene.objects[oid].status, n + 1, len(order)))
@@ -769,8 +786,11 @@ def _internal(scene: Scene, oid: str, e: Exception) -> Fail:
     tb = traceback.format_exc()
     log.error("internal error while placing %s\n%s", oid, tb)
     scene.log.append(f"internal error while placing {oid}\n{tb}")
-    scene.objects.pop(oid, None)
-    return Fail(f"internal error: {type(e).__name__}: {e}")
+    return Fail(f"{INTERNAL}{type(e).__name__}: {e}", intrinsic=True)
+
+
+#: How the failure of an object whose placement raised an exception begins.
+INTERNAL = "internal error: "
 
 
 def _resolve_any_wall(scene: Scene, resolved: dict[str, dict]) -> None:
