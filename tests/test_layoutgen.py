@@ -267,7 +267,7 @@ def test_text_relation_encoder_caches(tmp_path):
     assert np.allclose(v[0], v[2]) and not np.allclose(v[0], v[1])
     assert encoders.relation_phrase(r) == "mug on desk tabletop"
     again = encoders.TextRelationEncoder(cache)  # from the cache, no model loaded
-    assert np.allclose(again.encode([near]), v[1:2], atol=1e-6) and again._model is None
+    assert np.allclose(again.encode([near]), v[1:2], rtol=1e-4, atol=1e-5) and again._model is None
 
 
 def test_model_shapes_and_condition_matters():
@@ -289,7 +289,8 @@ def test_model_shapes_and_condition_matters():
     # carry a relation: the edge stream holds only those pairs)
     other = {**g, "rel_vec": torch.randn(3, 5), "rel_child": torch.tensor([0, 2, 1]),
              "rel_parent": torch.tensor([2, 1, -1])}
-    assert torch.allclose(m(x, t, other, torch.zeros(4)), y0, atol=1e-6)
+    scale = float(y0.abs().max())  # outputs reach tens: compare relative to their size
+    assert torch.allclose(m(x, t, other, torch.zeros(4)), y0, rtol=1e-5, atol=1e-5 * scale)
     assert not torch.allclose(m(x, t, other, torch.ones(4)), y1)
 
 
