@@ -151,3 +151,23 @@ def test_cli_exits_0_with_relaxed_relations_and_3_with_strict(tmp_path):
     res = runner.invoke(app, ["solve", str(SOFA), "--out", str(tmp_path / "b"), "--no-settle",
                               "--no-preview", "--strict"])
     assert res.exit_code == 3, res.output
+
+
+def test_a_thin_thing_hangs_edge_up_below_a_rail():
+    """A folded towel hung below a towel bar by no named surface hangs edge-up (by its back,
+    recorded in ``rests_on``), so its thin side is across the bar and two fit on it; the
+    relation holds as written."""
+    import numpy as np
+
+    from parse3d.measure.checks import world_points
+
+    scene = solve(load_pag(ROOMS / "hung_on_rails.json"), seed=0)
+    towels = [scene.objects[t] for t in ("towel_1", "towel_2", "towel_3")]
+    hung = [t for t in towels if t.placed and t.rests_on == "back"]
+    assert len(hung) >= 2, [(t.id, t.reason) for t in towels]
+    for t in hung:
+        pts = world_points(t)
+        ext = np.ptp(pts, axis=0)
+        assert ext[2] > 2 * min(ext[0], ext[1])  # taller than thick: edge-up
+        c = next(c for c in scene.relations if c.child == t.id)
+        assert c.relation == "HANGING_BELOW" and c.holds, c.detail

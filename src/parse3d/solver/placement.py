@@ -161,9 +161,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
                 intrinsic.append(False)
                 continue
+        hang = _hung_edge_up(support_edge, asset)
         try:
-            pose, trials, checks, under = _place_asset(st, oid, asset, scale, support_edge,
-                                                       others, rng, cfg,
+            pose, trials, checks, under = _place_asset(st, oid, asset, scale,
+                                                       hang or support_edge, others, rng, cfg,
                                                        proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
@@ -174,7 +175,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         R, t, sup, body = pose[:4]
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
-        obj.rests_on = pose[4] if len(pose) > 4 else None
+        obj.rests_on = pose[4] if len(pose) > 4 else ("back" if hang is not None else None)
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
@@ -182,6 +183,28 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             full[i] = None
         return Placement(obj, body, full)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
+
+
+#: A child whose height is at most this share of its next smaller extent is thin (a folded
+#: towel, a flat bag): hung from an object's part it hangs edge-up, not flat.
+THIN_HANG = 0.35
+
+
+def _hung_edge_up(edge: Edge, asset: Asset) -> Edge | None:
+    """The support edge by which a thin child named by no surface hangs below an object's part
+    (a towel on a bar, a flat bag on a hook): by its back, so it hangs edge-up, thin across the
+    rail, and several hang along one rail; None for anything else (the edge as written)."""
+    if edge.relation != "HANGING_BELOW" or edge.child.surface is not None \
+            or edge.parent.is_room_element:
+        return None
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    if ext[2] > THIN_HANG * float(np.sort(ext)[1]):
+        return None
+    from ..pag.refs import format_ref
+
+    c = edge.child
+    return replace(edge, child=replace(c, surface="back",
+                                       text=format_ref(c.object, c.part, c.index, "back")))
 
 
 #: Fraction of a shelf's free height an instance chosen or shrunk to fit under it may fill.
@@ -937,6 +960,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
+        if rel == "HANGING_BELOW" and _hung_siblings(st, oid, support_edge):
+            samples = _from_one_end(samples, region0)
     if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
             and _round_asset(asset):
         samples = _middle_first(samples, region0, F, asset, scale, R, s)
@@ -1199,6 +1224,26 @@ def _low_pieces(st: SolveState, sup: Support, step: float) -> list[tuple[float, 
                     out.append((float(hq.max()), Polygon(RG.convex_footprint(fp))))
         return out
     return st.memo(sup.owner, ("low pieces", plane_key(sup.surface), step), make)
+
+
+def _hung_siblings(st: SolveState, oid: str, edge: Edge) -> bool:
+    """Whether objects still to be placed hang below the same object as ``oid``."""
+    if edge.parent.is_room_element:
+        return False
+    return any(e.relation == "HANGING_BELOW" and e.parent.object == edge.parent.object
+               and e.child.object != oid and e.child.object not in st.xy
+               for e in touching(st.pag, edge.parent.object))
+
+
+def _from_one_end(samples: np.ndarray, region0) -> np.ndarray:
+    """Samples ordered along the support's longest direction, from one end: what hangs on a
+    rail with more to come goes beside the last one, not in the middle."""
+    pts = np.asarray(shapely.get_coordinates(region0), float)
+    if len(pts) < 3:
+        return samples
+    d = pts - pts.mean(axis=0)
+    axis = np.linalg.svd(d, full_matrices=False)[2][0]
+    return samples[np.argsort(samples @ axis, kind="stable")]
 
 
 def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndarray,
