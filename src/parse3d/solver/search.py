@@ -174,6 +174,13 @@ class _Search:
         self.relaxed: dict[str, str] = st.scene.meta.setdefault("relaxed", {})
         #: relaxed part-level edges placed by the whole object instead, per object
         self.loose: dict[str, dict] = {}
+        #: re-placements spent on the moves for the object now failing
+        self.spent = 0
+
+    def late(self) -> bool:
+        """Whether the moves for the object now failing have spent their share
+        (``cfg.moves_per_failure`` re-placements; counted, so a solve stays deterministic)."""
+        return self.spent >= self.cfg.moves_per_failure
 
     # ------------------------------------------------------------ bookkeeping
     def skipped(self, oid: str) -> frozenset[int]:
@@ -307,11 +314,14 @@ class _Search:
         rounds = max(JUMP_ROUNDS, JUMP_TRIES // max(len(culprits), 1))
         tries = [(r, c) for r in range(rounds) for c in culprits]
         for k, (_, culprit) in enumerate(tries):
+            if self.late():
+                break
             moved = [culprit, *[d for d in support_descendants(self.pag, culprit)
                                 if d in self.placements]]
             if self.budget < len(moved):
                 continue
             self.budget -= len(moved)
+            self.spent += len(moved)
             self.backjumps += 1
             # a moved object the failed one relates to goes first (a parent of its layout
             # relation); occupants of its support go after it (it takes its room first)
@@ -491,9 +501,12 @@ class _Search:
         moved = [o for o in self.order if o in group]
         seq = [o for o in self.order if o in group or o == oid]
         for r in range(SUPPORT_DRAWS):
+            if self.late():
+                break
             if self.reserve < len(moved):
                 break
             self.reserve -= len(moved)
+            self.spent += len(moved)
             self.backjumps += 1
             got = self.relocate(oid, moved, seq, f"support{r}")
             if got is not None:
@@ -518,10 +531,13 @@ class _Search:
                 if not more & protected and len(group | around | more) <= room:
                     around |= more
             for r, extra in enumerate([set()] * GROUP_DRAWS + ([around] if around else [])):
+                if self.late():
+                    break
                 moved = [o for o in self.order if o in group or o in extra]
                 if self.reserve < len(moved):
                     break
                 self.reserve -= len(moved)
+                self.spent += len(moved)
                 self.backjumps += 1
                 seq = [o for o in self.order if o in group or o == oid] + \
                     [o for o in self.order if o in extra]
@@ -599,11 +615,14 @@ class _Search:
         ``CLEAR_WINDOWS`` stretches, from the clearing reserve. None with the scene restored
         when none works."""
         for k, win in enumerate(self.wall_windows(oid)[:CLEAR_WINDOWS]):
+            if self.late():
+                break
             group = {m for b in win.blockers for m in self.movers(b)}
             moved = [o for o in self.order if o in group]
             if self.reserve < len(moved):
                 continue
             self.reserve -= len(moved)
+            self.spent += len(moved)
             self.backjumps += 1
             got = self.relocate(oid, moved, [oid, *moved], f"{tag}{k}")
             if got is not None:
@@ -744,6 +763,7 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
                                         np.asarray(R, float), np.asarray(t, float))
                 srch.commit(srch.try_place(oid, f"object:{oid}", prop, keep))
             except Fail as f:
+                srch.spent = 0
                 try:
                     got = None if str(f).startswith(INTERNAL) else _recover(srch, oid, f)
                     reason = None if got is not None else srch.explain(oid, str(f))
