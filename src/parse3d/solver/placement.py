@@ -84,6 +84,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         asset = library.get(category, rng)
         if keep is not None and attempt == 0:
             category, asset = keep.category, keep.asset
+        elif attempt == 0 and (flush := _flush_edges(loosen)):
+            # a contact relaxed to the whole object: the instance whose named part is least
+            # overhung (a shelf's back panel 2 cm in front of its posts, not 45 cm)
+            alt = _alternative(library, node.candidates, reqs, tried, rng,
+                               key=lambda a: max(_overhang(a, e) for e in flush))
+            if alt is not None:
+                category, asset = alt
         elif smallest and attempt == 0:
             alt = _alternative(library, node.candidates, reqs, tried, rng, smallest=True)
             if alt is not None:
@@ -539,6 +546,24 @@ def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Gene
             if best is None or area < best[0]:
                 best = (area, cat, asset)
     return None if best is None else (best[1], best[2])
+
+
+def _flush_edges(loosen: dict[int, Edge]) -> list[Edge]:
+    """The edges, as written, of relaxed AGAINST contacts named by a child part."""
+    return [e for e in loosen.values() if e.relation == "AGAINST"
+            and getattr(e, "_named_part", None) is not None]
+
+
+def _overhang(asset: Asset, e: Edge) -> float:
+    """Metres by which another part of ``asset`` reaches further along the named child
+    surface's normal than the part ``e`` names (infinite when the asset lacks it)."""
+    label, idx = e._named_part
+    ps = asset.parts_by_label(label)
+    if not ps or (idx is not None and idx >= len(ps)):
+        return float("inf")
+    ps = ps[idx:idx + 1] if idx is not None else ps
+    n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
+    return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
 
 
 def k_slots(library, reqs) -> int:

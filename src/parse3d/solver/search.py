@@ -667,8 +667,11 @@ def whole_object(e):
     from ..pag.refs import format_ref
 
     c = e.child
-    return replace(e, child=replace(c, part=None, index=None,
-                                    text=format_ref(c.object, None, None, c.surface)))
+    out = replace(e, child=replace(c, part=None, index=None,
+                                   text=format_ref(c.object, None, None, c.surface)))
+    # the part as written, for the choice of the least overhung instance
+    object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
+    return out
 
 
 def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset()
