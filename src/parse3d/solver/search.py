@@ -678,8 +678,9 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
                ) -> list[dict[int, str]]:
     """The steps by which ``oid``'s non-support relations are relaxed, each ``{edge index:
     "skip" | "loose"}`` (``loose``: a part-level contact named by a part, placed by the whole
-    object instead): the edges the failure ``reason`` names alone first, then every
-    object-level relation, then part-level contacts as well (loose, then dropped). Support
+    object instead): each edge the failure ``reason`` names alone first (the last named
+    first), then every object-level relation, then part-level contacts as well by the whole
+    object, and last every one left out (at most ``MAX_RELAX_STEPS`` steps). Support
     relations are never relaxed; ``done`` (edges already left out) is left out."""
     edges = pag.edges_of(oid)
     free = [i for i, e in enumerate(edges) if i > 0 and i not in done
@@ -693,25 +694,28 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
 
     steps: list[dict[int, str]] = []
     named = [i for i in _named_edges(pag, oid, reason) if i in free]
-    if named:
-        steps.append({i: soft(i) for i in named})
-        if any(v == "loose" for v in steps[-1].values()):
-            steps.append(dict.fromkeys(named, "skip"))
+    # the edges the failure names, each alone (the last named first: "AGAINST a needs a
+    # different orientation than AGAINST b" may be met without b), by the whole object first
+    for i in reversed(named):
+        steps.append({i: soft(i)})
+        if soft(i) == "loose":
+            steps.append({i: "skip"})
     if obj:
         steps.append(dict.fromkeys(obj, "skip"))
-    if part:
-        if any(soft(i) == "loose" for i in part):
-            steps.append({**dict.fromkeys(obj, "skip"), **{i: soft(i) for i in part}})
-        steps.append(dict.fromkeys(obj + part, "skip"))
+    if any(soft(i) == "loose" for i in part):
+        steps.append({**dict.fromkeys(obj, "skip"), **{i: soft(i) for i in part}})
     out: list[dict[int, str]] = []
     for st in steps:
         if st and st not in out:
             out.append(st)
-    return out[:MAX_RELAX_STEPS]
+    last = dict.fromkeys(obj + part, "skip")  # every one left out: always tried, last
+    out = [st for st in out if st != last][:MAX_RELAX_STEPS - 1]
+    return out + ([last] if last else [])
 
 
-#: Placements tried when relaxing one object's relations (each with half the draws).
-MAX_RELAX_STEPS = 4
+#: Placements tried when relaxing one object's relations (each with half the draws and two
+#: assets; the last one leaves every non-support relation out).
+MAX_RELAX_STEPS = 5
 
 
 def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig | None = None,
