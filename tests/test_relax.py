@@ -148,6 +148,18 @@ def test_cli_exits_0_with_relaxed_relations_and_3_with_strict(tmp_path):
     doc = json.loads((tmp_path / "a" / "scene.json").read_text())
     assert [r["relaxed"]["instead"] for r in doc["relations"] if "relaxed" in r] == [
         "name sofa:frame@back or sofa@back"]
+    # the record is in the shipped schema, and read back
+    import importlib.resources
+
+    import jsonschema
+
+    from parse3d.scene.io import read_scene
+
+    schema = json.loads((importlib.resources.files("parse3d.scene")
+                         / "scene-2.schema.json").read_text())
+    jsonschema.validate(doc, schema)
+    back = read_scene(tmp_path / "a")
+    assert [c.relaxed["instead"] for c in back.relaxed] == ["name sofa:frame@back or sofa@back"]
     res = runner.invoke(app, ["solve", str(SOFA), "--out", str(tmp_path / "b"), "--no-settle",
                               "--no-preview", "--strict"])
     assert res.exit_code == 3, res.output
