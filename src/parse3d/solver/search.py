@@ -172,8 +172,9 @@ class _Search:
         self.order = placement_order(pag)
         #: relaxed edges (global index as text) and what blocked them, kept in the scene
         self.relaxed: dict[str, str] = st.scene.meta.setdefault("relaxed", {})
-        #: relaxed part-level edges placed by the whole object instead, per object
-        self.loose: dict[str, dict] = {}
+        #: relaxed part-level edges placed by the whole object instead (kept in the scene, so a
+        #: re-placement, by a backjump or a repair, places them so again)
+        self.whole: list[str] = st.scene.meta.setdefault("relaxed_whole", [])
         #: re-placements spent on the moves for the object now failing
         self.spent = 0
 
@@ -206,14 +207,14 @@ class _Search:
             for key in keys.values():
                 self.relaxed[key] = reason
             loose = {i: whole_object(edges[i]) for i, how in step.items() if how == "loose"}
-            self.loose[oid] = loose
+            self.whole.extend(keys[i] for i in loose)
             try:
                 p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"), cheap,
                                loosen=loose)
             except Fail as f:
                 for key in keys.values():
                     self.relaxed.pop(key, None)
-                self.loose.pop(oid, None)
+                self.whole[:] = [w for w in self.whole if w not in keys.values()]
                 if str(f).startswith(INTERNAL):
                     return None
                 continue
@@ -224,7 +225,8 @@ class _Search:
     def try_place(self, oid: str, stage: str, proposal=None, keep=None,
                   smallest: bool = False) -> Placement:
         rng = stage_rng(self.seed, stage)
-        loose = self.loose.get(oid, {})
+        loose = {i: whole_object(e) for i, e in enumerate(self.pag.edges_of(oid))
+                 if i > 0 and str(self.edge_index[id(e)]) in self.whole}
         return self.place(oid, rng, self.cfg, proposal=proposal, keep=keep, smallest=smallest,
                           loosen=loose)
 
