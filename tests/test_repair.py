@@ -111,11 +111,21 @@ def test_unmet_relations_stay_unmet_after_settling():
     pag.add("chair", "armchair")
     pag.relate("chair", "ON", "floor")
     pag.relate("chair", "NEAR", "sofa", distance=1.5)
-    scene = run_pipeline(pag, seed=0, out=None, options=PipelineOptions(preview=False))
+    from parse3d.solver import SolverConfig
+
+    # every relation hard, so the sofa fails
+    scene = run_pipeline(pag, seed=0, out=None,
+                         options=PipelineOptions(preview=False,
+                                                 solver=SolverConfig(relax=False)))
     assert not scene.ok and scene.objects["chair"].placed and scene.settled
     near = next(c for c in scene.relations if c.relation == "NEAR")
     assert (near.holds, near.holds_settled) == (None, None)
     assert near.detail == "unmet: parent 'sofa' failed"
+    # relaxed instead: the sofa is placed, its FAR_FROM recorded relaxed after settling too
+    scene = run_pipeline(pag, seed=0, out=None, options=PipelineOptions(preview=False))
+    assert scene.ok and scene.settled
+    far = next(c for c in scene.relations if c.relation == "FAR_FROM")
+    assert far.holds is False and far.holds_settled is False and far.relaxed
     on = next(c for c in scene.relations if c.relation == "ON" and c.child == "chair")
     assert on.holds and on.holds_settled
 

@@ -16,7 +16,8 @@ from pathlib import Path
 
 __all__ = ["solve_args", "run"]
 
-_FLAGS = {"--no-settle": "no_settle", "--no-preview": "no_preview", "--json": "as_json"}
+_FLAGS = {"--no-settle": "no_settle", "--no-preview": "no_preview", "--json": "as_json",
+          "--strict": "strict"}
 _INT = re.compile(r"-?[0-9]+\Z")
 _FLOAT = re.compile(r"-?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][-+]?[0-9]+)?\Z")
 _TEXT = re.compile(r"[^-\s][^\s]*\Z")

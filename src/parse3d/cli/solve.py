@@ -38,6 +38,9 @@ def _summary(scene, out: Path | None) -> dict:
         "contacts": None if scene.contacts is None else len(scene.contacts),
         "repaired": scene.meta.get("repair", {}).get("repaired", 0),
         "unrepaired": scene.meta.get("repair", {}).get("unrepaired", 0),
+        "relaxed": [{"index": c.index, "relation": c.relation, "child": c.child,
+                     "parent": c.parent, "residual": c.residual, **c.relaxed}
+                    for c in scene.relaxed],
         "timings": {k: round(v, 4) for k, v in scene.timings.items()},
         "out": str(out) if out else None,
     }
@@ -55,6 +58,9 @@ def _print_summary(s: dict) -> None:
     console.print("  time: " + ", ".join(f"{k} {v:.3f} s" for k, v in t.items()))
     if s["repaired"] or s["unrepaired"]:
         console.print(f"  repaired after settling: {s['repaired']}, still unstable: {s['unrepaired']}")
+    for r in s["relaxed"]:
+        console.print(f"  [yellow]relaxed[/] {r['relation']} {r['child']} -> {r['parent']}: "
+                      f"{r['blocked']}; instead: {r['instead']}", highlight=False)
     for f in s["failed"]:
         console.print(f"  [red]failed[/] {f['id']}: {f['reason']}")
     for b in s.get("broken_after_settling", []):
@@ -67,7 +73,7 @@ def _print_summary(s: dict) -> None:
 
 
 def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb",
-         search="backtracking", search_budget=24, time_limit=None) -> None:
+         search="backtracking", search_budget=24, time_limit=None, strict=False) -> None:
     from ..export import check_formats
     from ..pipeline import PipelineOptions, run_pipeline
     from ..solver import SEARCHES, STRATEGIES, SolverConfig
@@ -83,7 +89,7 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb"
         check_range("--time-limit", time_limit, 0, MAX_TIME_LIMIT, unit="s", low_open=True)
     opts = PipelineOptions(settle=not no_settle, preview=not no_preview,
                            solver=SolverConfig(strategy=strategy, search=search,
-                                               search_budget=search_budget),
+                                               search_budget=search_budget, relax=not strict),
                            formats=check_formats(formats, where="--formats"),
                            time_limit=time_limit)
     if not no_settle:
@@ -98,7 +104,7 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb"
         print_json(s)
     else:
         _print_summary(s)
-    if not scene.ok:
+    if not scene.ok or (strict and scene.relaxed):
         sys.exit(EXIT_INFEASIBLE)
 
 
@@ -145,7 +151,7 @@ def solve_file(pag_file: Path, *, seed: int = 0, out: Path | None = None,
                strategy: str = "constrained", search: str = "backtracking",
                search_budget: int = 24, time_limit: float | None = None,
                no_settle: bool = False, no_preview: bool = False, formats: str = "glb",
-               as_json: bool = False) -> None:
+               as_json: bool = False, strict: bool = False) -> None:
     """``parse3d solve``: the typer command and the plain command line (``_fast``) call this
     with the option values (the defaults are the options' defaults)."""
     from ..pag.io import load_pag
@@ -155,7 +161,7 @@ def solve_file(pag_file: Path, *, seed: int = 0, out: Path | None = None,
     pag = load_pag(pag_file, vocabulary=solve_vocabulary())
     out = out or Path("out") / f"{safe_name(pag.name, pag_file.stem)}-{seed}"
     _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats, search,
-         search_budget, time_limit)
+         search_budget, time_limit, strict)
 
 
 def register(app: typer.Typer) -> None:
@@ -176,18 +182,23 @@ def register(app: typer.Typer) -> None:
                                     help="Export formats: glb, usd, mjcf, urdf, obj "
                                          "(comma-separated)."),
         as_json: bool = typer.Option(False, "--json", help="Print the summary as JSON."),
+        strict: bool = typer.Option(False, "--strict",
+                                    help="Every relation is hard: an object whose relations "
+                                         "cannot be met fails (exit 3) instead of relaxing them."),
     ) -> None:
         """Solve a PAG into a settled scene: scene.json, scene.glb, contacts.json, preview.png.
 
-        Exit codes: 0 all objects placed and stable, 2 invalid PAG, 3 some objects could not be
-        placed or stayed unstable after repair (the scene is still written, failed objects
-        marked with their reason).
+        Exit codes: 0 all objects placed and stable (relations that could not be met are
+        relaxed, printed and recorded holds: false in scene.json), 2 invalid PAG, 3 some
+        objects could not be placed or stayed unstable after repair (the scene is still
+        written, failed objects marked with their reason); with --strict also 3 when a
+        relation could not be met.
 
         Example: parse3d solve examples/study.json --seed 3 --search greedy --time-limit 20 --out out/study
         """
         solve_file(pag_file, seed=seed, out=out, strategy=strategy, search=search,
                    search_budget=search_budget, time_limit=time_limit, no_settle=no_settle,
-                   no_preview=no_preview, formats=formats, as_json=as_json)
+                   no_preview=no_preview, formats=formats, as_json=as_json, strict=strict)
 
     @app.command("generate")
     def generate_cmd(

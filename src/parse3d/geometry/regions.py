@@ -24,6 +24,7 @@ GRID = 1e-9
 __all__ = [
     "GRID",
     "clip",
+    "one_dimension",
     "minkowski_convex",
     "erode",
     "eroded_area",
@@ -628,8 +629,26 @@ def _strictly_convex_ccw(p: np.ndarray) -> bool:
 
 
 def clip(a: BaseGeometry, b: BaseGeometry) -> BaseGeometry:
-    """``a`` intersected with ``b`` on the precision grid."""
-    return shapely.intersection(a, b, grid_size=GRID)
+    """``a`` intersected with ``b`` on the precision grid, as one dimension (see
+    :func:`one_dimension`): GEOS's overlay refuses a collection mixing dimensions, which an
+    area whose pieces touch along an edge or at a corner leaves behind."""
+    return one_dimension(shapely.intersection(one_dimension(a), one_dimension(b),
+                                              grid_size=GRID))
+
+
+def one_dimension(g: BaseGeometry) -> BaseGeometry:
+    """``g`` with only its pieces of the highest dimension when it is a collection mixing
+    dimensions (an area with a line or a point where two pieces touched: those have no area
+    to place anything in; a line with points where it touched an obstacle's corner)."""
+    if g.geom_type != "GeometryCollection" or g.is_empty:
+        return g
+    parts = list(shapely.get_parts(g))
+    dims = [int(shapely.get_dimensions(p)) for p in parts]
+    top = max(dims)
+    if min(dims) == top:
+        return g
+    keep = [p for p, d in zip(parts, dims, strict=True) if d == top]
+    return shapely.union_all(keep) if len(keep) > 1 else keep[0]
 
 
 def half_plane(point, normal, extent: float = 1e3) -> Polygon:

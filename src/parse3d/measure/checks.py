@@ -446,8 +446,9 @@ def _target_surface(ctx: CheckContext) -> Surface | str:
 
 
 def _child_label(ctx: CheckContext) -> str:
-    if ctx.edge.relation == "ON" and ctx.child.rests_on:
-        return ctx.child.rests_on  # standing on another face (sheet music on a ledge)
+    if ctx.edge.relation in ("ON", "HANGING_BELOW") and ctx.child.rests_on:
+        # standing on another face (sheet music on a ledge), hung by it (a towel edge-up)
+        return ctx.child.rests_on
     label = ctx.edge.child.surface or ctx.edge.spec.child_surface
     if ctx.edge.relation in ("ON", "LEANING_AGAINST") \
             and stands_to_lean(ctx.child.asset, ctx.scene.pag, ctx.child.id):

@@ -92,7 +92,8 @@ def scene_to_dict(scene: Scene) -> dict[str, Any]:
         rels.append({"index": c.index, "relation": c.relation, "child": c.child,
                      "parent": c.parent, "holds": c.holds, "residual": c.residual,
                      "detail": c.detail, "holds_settled": c.holds_settled,
-                     "residual_settled": c.residual_settled})
+                     "residual_settled": c.residual_settled,
+                     **({"relaxed": c.relaxed} if c.relaxed else {})})
     return {
         "format": SCENE_FORMAT,
         "seed": int(scene.seed),
@@ -150,11 +151,14 @@ def write_scene(scene: Scene, out_dir: str | Path, *, glb: bool = False) -> Path
     if scene.contacts is not None:
         atomic_write_text(out / "contacts.json",
                           json.dumps([c.to_dict() for c in scene.contacts], indent=1) + "\n")
+    if scene.log:  # internal errors met while solving, with their tracebacks
+        atomic_write_text(out / "solve.log", "\n".join(scene.log) + "\n")
     return out
 
 
 #: Files a solve, settle or render writes into a scene folder (``*`` is a view index).
 OUTPUT_PATTERNS = ("scene.json", "scene.glb", "contacts.json", "preview.png", "views.json",
+                   "solve.log",
                    "rgb_*.png", "depth_*.png", "instance_*.png", "part_*.png")
 
 
@@ -274,7 +278,7 @@ def read_scene(path: str | Path) -> Scene:
         scene.relations.append(RelationCheck(r["index"], r["relation"], r["child"], r["parent"],
                                              r["holds"], r.get("residual") or {},
                                              r.get("holds_settled"), r.get("residual_settled"),
-                                             r.get("detail", "")))
+                                             r.get("detail", ""), r.get("relaxed")))
     cf = f.parent / "contacts.json"
     n_contacts = (d.get("summary") or {}).get("contacts")
     if cf.exists() and n_contacts is not None:  # None: the contacts.json is not this scene's

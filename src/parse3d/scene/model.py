@@ -261,6 +261,9 @@ class RelationCheck:
     holds_settled : bool or None
         After settling (None until settled).
     residual_settled : dict or None
+    relaxed : dict or None
+        For a relation the solver relaxed (it could not be met with the object's support):
+        ``{"blocked": what blocked it, "instead": what the writer could say instead}``.
     """
 
     index: int
@@ -272,6 +275,7 @@ class RelationCheck:
     holds_settled: bool | None = None
     residual_settled: dict[str, float] | None = None
     detail: str = ""
+    relaxed: dict[str, str] | None = None
 
 
 @dataclass(frozen=True)
@@ -310,6 +314,9 @@ class Scene:
     settled : bool
     meta : dict
         Solver configuration and statistics.
+    log : list of str
+        Internal errors met while solving, with their tracebacks (written to ``solve.log``,
+        not to scene.json).
     """
 
     pag: PAG
@@ -321,6 +328,7 @@ class Scene:
     contacts: list[Contact] | None = None
     settled: bool = False
     meta: dict[str, Any] = field(default_factory=dict)
+    log: list[str] = field(default_factory=list)
 
     @property
     def placed(self) -> list[PlacedObject]:
@@ -333,6 +341,11 @@ class Scene:
     @property
     def ok(self) -> bool:
         return not self.failed
+
+    @property
+    def relaxed(self) -> list[RelationCheck]:
+        """Relations the solver relaxed and that do not hold."""
+        return [c for c in self.relations if c.relaxed]
 
     def __repr__(self) -> str:
         # the dataclass repr would print every mesh of every asset (hundreds of kB)

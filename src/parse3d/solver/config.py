@@ -39,6 +39,12 @@ class SolverConfig:
         ``search_budget``) or ``greedy`` (one pass in assembly order).
     search_budget : int
         Re-placements of already placed objects the backtracking search may spend per scene.
+    moves_per_failure : int
+        Re-placements of other objects (backjumps, clearing a wall, moving a group or the
+        support) one failing object may spend before it is relaxed or fails.
+    relax : bool
+        Relax a non-support relation that cannot be met (recorded ``holds: false`` with what
+        blocked it) rather than fail the object; False keeps every relation hard (``--strict``).
     """
 
     max_trials: int = 30
@@ -48,6 +54,8 @@ class SolverConfig:
     wall_thickness: float = 0.12
     search: str = "backtracking"
     search_budget: int = 24
+    moves_per_failure: int = 24
+    relax: bool = True
 
     def __post_init__(self):
         if self.strategy not in STRATEGIES:
@@ -61,7 +69,8 @@ class SolverConfig:
         return {"max_trials": self.max_trials, "asset_attempts": self.asset_attempts,
                 "strategy": self.strategy, "margin": self.margin,
                 "wall_thickness": self.wall_thickness, "search": self.search,
-                "search_budget": int(self.search_budget)}
+                "search_budget": int(self.search_budget),
+                "moves_per_failure": int(self.moves_per_failure), "relax": bool(self.relax)}
 
 
 def stage_rng(seed: int, stage: str) -> np.random.Generator:

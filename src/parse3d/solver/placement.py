@@ -54,7 +54,8 @@ class Placement:
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
                  library, *, skip: frozenset[int] = frozenset(),
                  proposal: tuple[np.ndarray, np.ndarray] | None = None,
-                 keep: PlacedObject | None = None, smallest: bool = False) -> Placement:
+                 keep: PlacedObject | None = None, smallest: bool = False,
+                 loosen: dict[int, Edge] | None = None) -> Placement:
     """Place one object (its parents are placed); raise Fail with the reason otherwise.
 
     ``skip`` holds indices (into ``pag.edges_of(oid)``) of non-support relations left out
@@ -62,16 +63,21 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     is an earlier placement of the object whose asset and scale the first attempt reuses (a
     repair by another pose). ``smallest`` starts with the suitable instance of least
     footprint among those looked at (a table that must leave room for its chairs).
+    ``loosen`` maps indices of relaxed part-level edges to the edge placed instead (the same
+    relation by the whole object: the part that reaches furthest touches); their checks are
+    left None (measured on the edge as written afterwards).
     """
     pag = st.pag
     node = pag.objects[oid]
     edges = pag.edges_of(oid)
     support_edge = edges[0]
-    others = [e for i, e in enumerate(edges[1:], 1) if i not in skip]
+    loosen = loosen or {}
+    others = [loosen.get(i, e) for i, e in enumerate(edges[1:], 1) if i not in skip]
     reasons: list[str] = []
     intrinsic: list[bool] = []
     total_trials = 0
-    reqs = requirements(pag, oid)
+    dropped = {_edge_text(edges[i]) for i in (*skip, *loosen)}
+    reqs = [r for r in requirements(pag, oid) if r[2] not in dropped]
     tried: set[str] = set()
     headroom = _headroom(st, support_edge)
     axis = _AXES[support_edge.child.surface or support_edge.spec.child_surface]
@@ -80,6 +86,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         asset = library.get(category, rng)
         if keep is not None and attempt == 0:
             category, asset = keep.category, keep.asset
+        elif attempt == 0 and (flush := _flush_edges(loosen)):
+            # a contact relaxed to the whole object: the instance whose named part is least
+            # overhung (a shelf's back panel 2 cm in front of its posts, not 45 cm)
+            alt = _alternative(library, node.candidates, reqs, tried, rng,
+                               key=lambda a: max(_overhang(a, e) for e in flush))
+            if alt is not None:
+                category, asset = alt
         elif smallest and attempt == 0:
             alt = _alternative(library, node.candidates, reqs, tried, rng, smallest=True)
             if alt is not None:
@@ -104,8 +117,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                 if asset.asset_id in tried:
                     break  # every suitable instance was tried
                 why = lacks(asset, reqs)
+                n = k_slots(library, reqs)
                 raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
-                           f"{RANKED_SLOTS} per category) fits the relations: {why}",
+                           f"{n} per category) fits the relations: {why}",
                            intrinsic=True)
             category, asset = alt
         tried.add(asset.asset_id)
@@ -156,9 +170,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
                 intrinsic.append(False)
                 continue
+        hang = _hung_edge_up(support_edge, asset)
         try:
-            pose, trials, checks, under = _place_asset(st, oid, asset, scale, support_edge,
-                                                       others, rng, cfg,
+            pose, trials, checks, under = _place_asset(st, oid, asset, scale,
+                                                       hang or support_edge, others, rng, cfg,
                                                        proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
@@ -169,12 +184,36 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         R, t, sup, body = pose[:4]
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
-        obj.rests_on = pose[4] if len(pose) > 4 else None
+        obj.rests_on = pose[4] if len(pose) > 4 else ("back" if hang is not None else None)
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
+        for i in loosen:
+            full[i] = None
         return Placement(obj, body, full)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
+
+
+#: A child whose height is at most this share of its next smaller extent is thin (a folded
+#: towel, a flat bag): hung from an object's part it hangs edge-up, not flat.
+THIN_HANG = 0.35
+
+
+def _hung_edge_up(edge: Edge, asset: Asset) -> Edge | None:
+    """The support edge by which a thin child named by no surface hangs below an object's part
+    (a towel on a bar, a flat bag on a hook): by its back, so it hangs edge-up, thin across the
+    rail, and several hang along one rail; None for anything else (the edge as written)."""
+    if edge.relation != "HANGING_BELOW" or edge.child.surface is not None \
+            or edge.parent.is_room_element:
+        return None
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    if ext[2] > THIN_HANG * float(np.sort(ext)[1]):
+        return None
+    from ..pag.refs import format_ref
+
+    c = edge.child
+    return replace(edge, child=replace(c, surface="back",
+                                       text=format_ref(c.object, c.part, c.index, "back")))
 
 
 #: Fraction of a shelf's free height an instance chosen or shrunk to fit under it may fill.
@@ -284,6 +323,11 @@ def _contents_scale(pag, oid: str, asset: Asset) -> float:
     return float(np.sqrt(need / area)) if area > 0 else 0.0
 
 
+def _edge_text(e: Edge) -> str:
+    """An edge as failure reasons and requirements write it: ``AGAINST a:b@back -> wall_1``."""
+    return f"{e.relation} {e.child} -> {e.parent}"
+
+
 def touching(pag, oid: str) -> list[Edge]:
     """The edges of ``pag`` naming ``oid`` as child or parent, in file order (an index kept on
     the graph, rebuilt whenever its relations change)."""
@@ -309,7 +353,7 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
     AGAINST child part reaches furthest along its surface normal)."""
     out = []
     for e in touching(pag, oid):
-        text = f"{e.relation} {e.child} -> {e.parent}"
+        text = _edge_text(e)
         if e.parent.object == oid and e.relation == "ON" and e.child.object != oid and set(
                 pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
             out.append((e.parent.part, e.parent.index, text, "stack_base"))
@@ -491,10 +535,12 @@ def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Gene
     if load is None:
         return None
     k = int(getattr(library, "per_category", 20))
+    # a part that must reach furthest (AGAINST by a part) is rare among instances: every slot
+    slots = k if any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
     best = None
     for ci in rng.permutation(len(categories)):
         cat = categories[int(ci)]
-        for slot in rng.permutation(k)[:RANKED_SLOTS]:
+        for slot in rng.permutation(k)[:slots]:
             asset = load(cat, int(slot))
             if asset.asset_id in tried or lacks(asset, reqs) is not None:
                 continue
@@ -508,6 +554,31 @@ def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Gene
             if best is None or area < best[0]:
                 best = (area, cat, asset)
     return None if best is None else (best[1], best[2])
+
+
+def _flush_edges(loosen: dict[int, Edge]) -> list[Edge]:
+    """The edges, as written, of relaxed AGAINST contacts named by a child part."""
+    return [e for e in loosen.values() if e.relation == "AGAINST"
+            and getattr(e, "_named_part", None) is not None]
+
+
+def _overhang(asset: Asset, e: Edge) -> float:
+    """Metres by which another part of ``asset`` reaches further along the named child
+    surface's normal than the part ``e`` names (infinite when the asset lacks it)."""
+    label, idx = e._named_part
+    ps = asset.parts_by_label(label)
+    if not ps or (idx is not None and idx >= len(ps)):
+        return float("inf")
+    ps = ps[idx:idx + 1] if idx is not None else ps
+    n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
+    return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
+
+
+def k_slots(library, reqs) -> int:
+    """Pool slots per category :func:`_alternative` looks at for ``reqs``."""
+    if any(r[3].startswith("extreme:") for r in reqs):
+        return int(getattr(library, "per_category", 20))
+    return RANKED_SLOTS
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
@@ -938,6 +1009,8 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
     if strategy == "constrained" and len(samples):
         samples = _leave_room(st, oid, sup, R, F, region0, samples)
+        if rel == "HANGING_BELOW" and _hung_siblings(st, oid, support_edge):
+            samples = _from_one_end(samples, region0)
     if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
             and _round_asset(asset):
         samples = _middle_first(samples, region0, F, asset, scale, R, s)
@@ -1211,6 +1284,26 @@ def _low_pieces(st: SolveState, sup: Support, step: float) -> list[tuple[float, 
                     out.append((float(hq.max()), Polygon(RG.convex_footprint(fp))))
         return out
     return st.memo(sup.owner, ("low pieces", plane_key(sup.surface), step), make)
+
+
+def _hung_siblings(st: SolveState, oid: str, edge: Edge) -> bool:
+    """Whether objects still to be placed hang below the same object as ``oid``."""
+    if edge.parent.is_room_element:
+        return False
+    return any(e.relation == "HANGING_BELOW" and e.parent.object == edge.parent.object
+               and e.child.object != oid and e.child.object not in st.xy
+               for e in touching(st.pag, edge.parent.object))
+
+
+def _from_one_end(samples: np.ndarray, region0) -> np.ndarray:
+    """Samples ordered along the support's longest direction, from one end: what hangs on a
+    rail with more to come goes beside the last one, not in the middle."""
+    pts = np.asarray(shapely.get_coordinates(region0), float)
+    if len(pts) < 3:
+        return samples
+    d = pts - pts.mean(axis=0)
+    axis = np.linalg.svd(d, full_matrices=False)[2][0]
+    return samples[np.argsort(samples @ axis, kind="stable")]
 
 
 def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndarray,

@@ -239,7 +239,15 @@ def _side(ctx, e, region):
     nw = frame @ np.array(_SIDE_DIRS[side])
     g = np.array([nw @ s.u, nw @ s.v])
     if np.linalg.norm(g) < 1e-6:
-        raise Fail(f"{rel} side {side!r} of {e.parent.object!r} is not in the support plane")
+        # the side is across the support (a mirror on the wall behind a vanity, SIDE_OF its
+        # back): measured in 3-D, as the check does, every position on the support is on the
+        # same side of the parent's centroid
+        d = float((np.asarray(s.origin, float) - xB) @ nw)
+        if rel == "SIDE_OF" and d > 0:
+            return region
+        raise Fail(f"{rel} side {side!r} of {e.parent.object!r} is across {ctx.sup.name}"
+                   + (f", which lies {-d:.2f} m on the other side of its centroid"
+                      if rel == "SIDE_OF" else ": no strip beside that face lies on it"))
     g /= np.linalg.norm(g)
     if rel == "SIDE_OF":
         clip = RG.half_plane(cB, g)

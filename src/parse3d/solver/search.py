@@ -8,7 +8,10 @@ draws from ``stage_rng(seed, "object:<id>:<round>")``, so a solve is determinist
 
 from __future__ import annotations
 
+import logging
+import re
 import time
+import traceback
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -18,6 +21,7 @@ import shapely
 from ..measure.checks import check_edge, check_relations, object_centroid
 from ..pag.algorithms import assembly_order
 from ..pag.model import PAG
+from ..relations import OBJECT, SUPPORT
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .collision import CollisionWorld, cached_body, static_body
@@ -28,7 +32,9 @@ from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
 
 __all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants",
-           "wall_conflicts"]
+           "wall_conflicts", "mark_unmet", "relax_plan"]
+
+log = logging.getLogger("parse3d.solver")
 
 
 @dataclass(frozen=True)
@@ -164,18 +170,78 @@ class _Search:
         self.depth = 0
         self.nest_reserve = self.budget
         self.order = placement_order(pag)
+        #: relaxed edges (global index as text) and what blocked them, kept in the scene
+        self.relaxed: dict[str, str] = st.scene.meta.setdefault("relaxed", {})
+        #: relaxed part-level edges placed by the whole object instead (kept in the scene, so a
+        #: re-placement, by a backjump or a repair, places them so again)
+        self.whole: list[str] = st.scene.meta.setdefault("relaxed_whole", [])
+        #: re-placements spent on the moves for the object now failing
+        self.spent = 0
+
+    def late(self) -> bool:
+        """Whether the moves for the object now failing have spent their share
+        (``cfg.moves_per_failure`` re-placements; counted, so a solve stays deterministic)."""
+        return self.spent >= self.cfg.moves_per_failure
 
     # ------------------------------------------------------------ bookkeeping
     def skipped(self, oid: str) -> frozenset[int]:
-        """Indices of ``oid``'s non-support edges whose parent object failed."""
+        """Indices of ``oid``'s non-support edges whose parent object failed or that were
+        relaxed (``scene.meta["relaxed"]``)."""
         return frozenset(i for i, e in enumerate(self.pag.edges_of(oid))
-                         if i > 0 and e.parent.object in self.failed)
+                         if i > 0 and (e.parent.object in self.failed
+                                       or str(self.edge_index[id(e)]) in self.relaxed))
+
+    def relax(self, oid: str, reason: str) -> Placement | None:
+        """Place ``oid`` with its unmet relations relaxed, step by step as
+        :func:`relax_plan` orders them (the relation the failure names, then object-level
+        relations, then part-level contacts by the whole object, then dropped), each step one
+        placement with half the draws and two assets; the relaxed edges are recorded in
+        ``relaxed`` (global index as text: what blocked them). None when even with every
+        non-support relation relaxed the support cannot hold the object."""
+        cfg = self.cfg
+        cheap = SolverConfig(**{**cfg.to_dict(), "max_trials": max(1, cfg.max_trials // 2),
+                                "asset_attempts": min(2, cfg.asset_attempts)})
+        edges = self.pag.edges_of(oid)
+        for k, step in enumerate(relax_plan(self.pag, oid, reason, self.skipped(oid))):
+            keys = {i: str(self.edge_index[id(edges[i])]) for i in step}
+            for key in keys.values():
+                self.relaxed[key] = reason
+            loose = {i: whole_object(edges[i]) for i, how in step.items() if how == "loose"}
+            self.whole.extend(keys[i] for i in loose)
+            try:
+                p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"), cheap,
+                               loosen=loose)
+            except Fail as f:
+                for key in keys.values():
+                    self.relaxed.pop(key, None)
+                self.whole[:] = [w for w in self.whole if w not in keys.values()]
+                if str(f).startswith(INTERNAL):
+                    return None
+                continue
+            self.commit(p)
+            return p
+        return None
 
     def try_place(self, oid: str, stage: str, proposal=None, keep=None,
                   smallest: bool = False) -> Placement:
         rng = stage_rng(self.seed, stage)
-        return place_object(self.st, oid, rng, self.cfg, self.library, skip=self.skipped(oid),
-                            proposal=proposal, keep=keep, smallest=smallest)
+        loose = {i: whole_object(e) for i, e in enumerate(self.pag.edges_of(oid))
+                 if i > 0 and str(self.edge_index[id(e)]) in self.whole}
+        return self.place(oid, rng, self.cfg, proposal=proposal, keep=keep, smallest=smallest,
+                          loosen=loose)
+
+    def place(self, oid: str, rng, cfg: SolverConfig, **kw) -> Placement:
+        """:func:`place_object` for ``oid``; an exception other than :class:`Fail` becomes a
+        Fail ``internal error: ...`` (intrinsic: no move of others is tried for it) with its
+        traceback in the log and ``scene.log``, so one object's fault never stops a solve."""
+        loose = kw.get("loosen") or {}
+        try:
+            return place_object(self.st, oid, rng, cfg, self.library,
+                                skip=self.skipped(oid) - set(loose), **kw)
+        except Fail:
+            raise
+        except Exception as e:  # noqa: BLE001 - one object's fault is its failure
+            raise _internal(self.st.scene, oid, e) from e
 
     def commit(self, p: Placement) -> None:
         self.placements[p.obj.id] = p
@@ -250,11 +316,14 @@ class _Search:
         rounds = max(JUMP_ROUNDS, JUMP_TRIES // max(len(culprits), 1))
         tries = [(r, c) for r in range(rounds) for c in culprits]
         for k, (_, culprit) in enumerate(tries):
+            if self.late():
+                break
             moved = [culprit, *[d for d in support_descendants(self.pag, culprit)
                                 if d in self.placements]]
             if self.budget < len(moved):
                 continue
             self.budget -= len(moved)
+            self.spent += len(moved)
             self.backjumps += 1
             # a moved object the failed one relates to goes first (a parent of its layout
             # relation); occupants of its support go after it (it takes its room first)
@@ -434,9 +503,12 @@ class _Search:
         moved = [o for o in self.order if o in group]
         seq = [o for o in self.order if o in group or o == oid]
         for r in range(SUPPORT_DRAWS):
+            if self.late():
+                break
             if self.reserve < len(moved):
                 break
             self.reserve -= len(moved)
+            self.spent += len(moved)
             self.backjumps += 1
             got = self.relocate(oid, moved, seq, f"support{r}")
             if got is not None:
@@ -461,10 +533,13 @@ class _Search:
                 if not more & protected and len(group | around | more) <= room:
                     around |= more
             for r, extra in enumerate([set()] * GROUP_DRAWS + ([around] if around else [])):
+                if self.late():
+                    break
                 moved = [o for o in self.order if o in group or o in extra]
                 if self.reserve < len(moved):
                     break
                 self.reserve -= len(moved)
+                self.spent += len(moved)
                 self.backjumps += 1
                 seq = [o for o in self.order if o in group or o == oid] + \
                     [o for o in self.order if o in extra]
@@ -542,11 +617,14 @@ class _Search:
         ``CLEAR_WINDOWS`` stretches, from the clearing reserve. None with the scene restored
         when none works."""
         for k, win in enumerate(self.wall_windows(oid)[:CLEAR_WINDOWS]):
+            if self.late():
+                break
             group = {m for b in win.blockers for m in self.movers(b)}
             moved = [o for o in self.order if o in group]
             if self.reserve < len(moved):
                 continue
             self.reserve -= len(moved)
+            self.spent += len(moved)
             self.backjumps += 1
             got = self.relocate(oid, moved, [oid, *moved], f"{tag}{k}")
             if got is not None:
@@ -570,6 +648,76 @@ class _Search:
         return (f"{reason}; {w} ({length:.2f} m) is taken by {', '.join(names[:6])}"
                 f"{', ...' if len(names) > 6 else ''}: its longest free stretch is {run:.2f} m, "
                 f"{oid} needs about {width:.2f} m")
+
+
+#: Edge text in failure reasons: ``AGAINST sofa:back_cushion@back -> wall_2``.
+_EDGE_RE = re.compile(r"\b([A-Z_]{2,}) (\S+) -> (\S+?)[:;,)]?(?:\s|$)")
+
+
+def _named_edges(pag: PAG, oid: str, reason: str) -> list[int]:
+    """Indices (into ``pag.edges_of(oid)``) of the edges a failure reason names."""
+    texts = {f"{r} {c} -> {p}" for r, c, p in _EDGE_RE.findall(reason)}
+    return [i for i, e in enumerate(pag.edges_of(oid))
+            if i > 0 and f"{e.relation} {e.child} -> {e.parent}" in texts]
+
+
+def whole_object(e):
+    """The edge ``e`` by the whole child object (no part named): the part that reaches
+    furthest then touches (a shelf flush by its posts when its back panel is set in)."""
+    from dataclasses import replace
+
+    from ..pag.refs import format_ref
+
+    c = e.child
+    out = replace(e, child=replace(c, part=None, index=None,
+                                   text=format_ref(c.object, None, None, c.surface)))
+    # the part as written, for the choice of the least overhung instance
+    object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
+    return out
+
+
+def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset()
+               ) -> list[dict[int, str]]:
+    """The steps by which ``oid``'s non-support relations are relaxed, each ``{edge index:
+    "skip" | "loose"}`` (``loose``: a part-level contact named by a part, placed by the whole
+    object instead): each edge the failure ``reason`` names alone first (the last named
+    first), then every object-level relation, then part-level contacts as well by the whole
+    object, and last every one left out (at most ``MAX_RELAX_STEPS`` steps). Support
+    relations are never relaxed; ``done`` (edges already left out) is left out."""
+    edges = pag.edges_of(oid)
+    free = [i for i, e in enumerate(edges) if i > 0 and i not in done
+            and e.spec.kind != SUPPORT]
+    obj = [i for i in free if edges[i].spec.kind == OBJECT]
+    part = [i for i in free if edges[i].spec.kind != OBJECT]
+
+    def soft(i: int) -> str:
+        e = edges[i]
+        return "loose" if e.child.part is not None and e.spec.kind != OBJECT else "skip"
+
+    steps: list[dict[int, str]] = []
+    named = [i for i in _named_edges(pag, oid, reason) if i in free]
+    # the edges the failure names, each alone (the last named first: "AGAINST a needs a
+    # different orientation than AGAINST b" may be met without b), by the whole object first
+    for i in reversed(named):
+        steps.append({i: soft(i)})
+        if soft(i) == "loose":
+            steps.append({i: "skip"})
+    if obj:
+        steps.append(dict.fromkeys(obj, "skip"))
+    if any(soft(i) == "loose" for i in part):
+        steps.append({**dict.fromkeys(obj, "skip"), **{i: soft(i) for i in part}})
+    out: list[dict[int, str]] = []
+    for st in steps:
+        if st and st not in out:
+            out.append(st)
+    last = dict.fromkeys(obj + part, "skip")  # every one left out: always tried, last
+    out = [st for st in out if st != last][:MAX_RELAX_STEPS - 1]
+    return out + ([last] if last else [])
+
+
+#: Placements tried when relaxing one object's relations (each with half the draws and two
+#: assets; the last one leaves every non-support relation out).
+MAX_RELAX_STEPS = 5
 
 
 def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig | None = None,
@@ -624,12 +772,20 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
                                         np.asarray(R, float), np.asarray(t, float))
                 srch.commit(srch.try_place(oid, f"object:{oid}", prop, keep))
             except Fail as f:
-                # re-placing others cannot fix what the object's own geometry rules out
-                got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None
-                if got is None and srch.reserve > 0 and not f.intrinsic:
-                    got = srch.make_room(oid, str(f))
-                if got is None:
-                    srch.fail(oid, srch.explain(oid, str(f)), cfg.max_trials * cfg.asset_attempts)
+                srch.spent = 0
+                try:
+                    got = None if str(f).startswith(INTERNAL) else _recover(srch, oid, f)
+                    reason = None if got is not None else srch.explain(oid, str(f))
+                except Exception as e:  # noqa: BLE001 - one object's fault is its failure
+                    reason = str(_internal(scene, oid, e))
+                if reason is not None:
+                    if oid in srch.placements:
+                        srch.uncommit(oid)
+                    srch.fail(oid, reason, cfg.max_trials * cfg.asset_attempts)
+            except Exception as e:  # noqa: BLE001 - one object's fault is its failure
+                if oid in srch.placements:
+                    srch.uncommit(oid)
+                srch.fail(oid, str(_internal(scene, oid, e)))
         if progress is not None:
             progress(SolveProgress(oid, scene.objects[oid].status, n + 1, len(order)))
     # keep the PAG's assembly order in scene.objects
@@ -639,6 +795,31 @@ def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig |
     scene.timings["solve"] = time.perf_counter() - t0
     _finish(scene, srch)
     return scene
+
+
+def _recover(srch: _Search, oid: str, f: Fail) -> Placement | None:
+    """After ``oid`` failed with ``f``: re-place what conflicts (backjumping, larger moves),
+    then relax its relations (``relax`` in the config); the placement or None."""
+    # re-placing others cannot fix what the object's own geometry rules out
+    got = srch.backjump(oid) if srch.budget > 0 and not f.intrinsic else None  # committed
+    if got is None and srch.reserve > 0 and not f.intrinsic:
+        got = srch.make_room(oid, str(f))
+    if got is None and srch.cfg.relax:
+        got = srch.relax(oid, srch.explain(oid, str(f)))
+    return got
+
+
+def _internal(scene: Scene, oid: str, e: Exception) -> Fail:
+    """An exception while placing ``oid`` as its failure (``internal error: ...``); the
+    traceback goes to the log (``parse3d.solver``) and ``scene.log``, the scene goes on."""
+    tb = traceback.format_exc()
+    log.error("internal error while placing %s\n%s", oid, tb)
+    scene.log.append(f"internal error while placing {oid}\n{tb}")
+    return Fail(f"{INTERNAL}{type(e).__name__}: {e}", intrinsic=True)
+
+
+#: How the failure of an object whose placement raised an exception begins.
+INTERNAL = "internal error: "
 
 
 def _resolve_any_wall(scene: Scene, resolved: dict[str, dict]) -> None:
@@ -685,7 +866,14 @@ def _finish(scene: Scene, srch: _Search) -> None:
 
 def mark_unmet(scene: Scene) -> None:
     """Relations of a placed child whose (non-support) parent failed: ``holds`` None and
-    ``detail`` ``unmet: parent 'x' failed`` (after settling too)."""
+    ``detail`` ``unmet: parent 'x' failed`` (after settling too); relaxed relations
+    (``scene.meta["relaxed"]``) that do not hold get ``relaxed`` (what blocked them and what
+    to write instead)."""
+    relaxed = scene.meta.get("relaxed") or {}
+    for c in scene.relations:
+        why = relaxed.get(str(c.index))
+        if why is not None and c.holds is False:
+            c.relaxed = {"blocked": why, "instead": _instead(scene.pag.relations[c.index], why)}
     for c in scene.relations:
         e = scene.pag.relations[c.index]
         child = scene.objects.get(e.child.object)
@@ -695,6 +883,24 @@ def mark_unmet(scene: Scene) -> None:
         c.holds, c.residual, c.detail = None, {}, f"unmet: parent {e.parent.object!r} failed"
         if scene.settled:
             c.holds_settled, c.residual_settled = None, None
+
+
+_SAY_RE = re.compile(r"\bname (\S+ or \S+?)(?:[;,)]|\s|$)")
+
+
+def _instead(e, why: str) -> str:
+    """What the writer could say instead of a relaxed relation: the reason's own advice
+    (``name sofa:frame@back or sofa@back``), else a general one per relation family."""
+    m = _SAY_RE.search(why)
+    if m:
+        return f"name {m.group(1)}"
+    if e.spec.kind == OBJECT:
+        return (f"loosen or drop {e.relation} {e.child} -> {e.parent} (another side, a larger "
+                f"distance or width), or give {e.child.object} more room")
+    if e.child.part is not None:
+        return (f"name {e.child.object}@{e.child.surface or e.spec.child_surface} (the whole "
+                f"object) or drop the contact")
+    return f"drop {e.relation} {e.child} -> {e.parent} or free room for it"
 
 
 def wall_conflicts(scene: Scene, oid: str, *, seed: int, library=None,
