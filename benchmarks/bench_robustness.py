@@ -206,7 +206,12 @@ def foreign_cases(seeds: range) -> tuple[list[dict], str]:
 
     out, dropped, parts, skipped, rooms = [], 0, 0, [], 0
     for p in sorted(FOREIGN.glob("*.json")):
-        doc, n_obj, n_part = known_words(json.loads(p.read_text()))
+        written = json.loads(p.read_text())
+        try:  # a room the vocabulary understands as written is measured as written
+            PAG.from_dict(written).validate()
+            doc, n_obj, n_part = written, 0, 0
+        except Exception:  # noqa: BLE001 - a revision without those words: take them out
+            doc, n_obj, n_part = known_words(written)
         try:
             pag = PAG.from_dict(doc).validate(vocabulary=vocabulary())
         except Exception as e:  # noqa: BLE001 - a room still invalid is skipped and named
