@@ -15,7 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._casework import black, white
+from ._casework import black
 from ._household import ring, shell
 from ._kit import feet4, mount, revolute
 
