@@ -1,6 +1,6 @@
 """Bar and shop counter equipment: bar mats, beer taps and cash registers.
 
-A bar mat lies on a counter: glasses stand ON its ``rib``s, inside its raised ``rim``. A beer
+A bar mat lies on a counter: glasses stand ON its ``mat`` sheet, inside its raised ``rim``. A beer
 tap stands on the counter, its ``faucet``s at the front (+Y) with a ``tap_handle`` on each that
 pulls forward on a hinge, over a ``drip_tray``. A cash register faces the cashier at +Y: its
 ``cash_drawer`` slides out of the ``body`` towards +Y, the ``keypad`` sits on the sloping top and
@@ -28,29 +28,31 @@ def _white_plastic(rng: np.random.Generator) -> Material:
     return Material(M.jitter(rng, (0.92, 0.92, 0.9), 0.02), 0.4, 0.0, "plastic")
 
 
-@register("bar_mat", parts=("mat", "rib"), extra_parts=("rim",), size_range=(0.25, 0.75),
+@register("bar_mat", parts=("mat",), extra_parts=("channel", "rim"), size_range=(0.25, 0.75),
           density=1100, variants=("service", "square", "runner"), placement="surface")
 def bar_mat(rng: np.random.Generator, variant: str) -> list[Part]:
-    """A rubber mat along X: a base sheet, a raised rim round the edge and ribs across it."""
+    """A rubber mat along X: a sheet whose top holds the glasses, drainage ``channel``s moulded
+    into it and a raised ``rim`` round the edge that keeps the spill in."""
     rubber = _rubber(rng)
     w, d = {"service": (rng.uniform(0.45, 0.6), rng.uniform(0.13, 0.16)),
             "square": (rng.uniform(0.28, 0.32), rng.uniform(0.28, 0.32)),
             "runner": (rng.uniform(0.6, 0.7), rng.uniform(0.08, 0.1))}[variant]
-    tb = 0.004
-    parts = [make_part("mat", "mat", S.box((w, d, tb), center=(0, 0, tb / 2), bevel=0.001), rubber)]
-    rh, rw = 0.01, 0.008
-    rim = [S.box((w, rw, rh), center=(0, d / 2 - rw / 2, rh / 2)),
-           S.box((w, rw, rh), center=(0, -d / 2 + rw / 2, rh / 2)),
-           S.box((rw, d - 2 * rw, rh), center=(w / 2 - rw / 2, 0, rh / 2)),
-           S.box((rw, d - 2 * rw, rh), center=(-w / 2 + rw / 2, 0, rh / 2))]
+    tb, rh, rw = 0.007, 0.011, 0.008
+    parts = [make_part("mat", "mat", S.box((w - 2 * rw + 0.002, d - 2 * rw + 0.002, tb),
+                                           center=(0, 0, tb / 2)), rubber)]
+    rim = [S.box((w, rw, rh), center=(0, d / 2 - rw / 2, rh / 2), bevel=0.001),
+           S.box((w, rw, rh), center=(0, -d / 2 + rw / 2, rh / 2), bevel=0.001),
+           S.box((rw, d - 2 * rw, rh), center=(w / 2 - rw / 2, 0, rh / 2), bevel=0.001),
+           S.box((rw, d - 2 * rw, rh), center=(-w / 2 + rw / 2, 0, rh / 2), bevel=0.001)]
     parts.append(make_part("rim", "rim", rim, rubber))
-    pitch = 0.018 if variant != "square" else 0.02
-    n = int((w - 2 * rw) / pitch)
-    hr = rh - 0.0015
+    # the channels between the ribs, moulded into the sheet just below its top
+    groove = Material(tuple(max(0.0, c * 0.6) for c in rubber.color[:3]) + (1.0,), 0.9, 0.0, "rubber")
+    pitch = 0.02
+    n = int((w - 2 * rw) / pitch) - 1
     for k in range(n):
-        x = -w / 2 + rw + pitch * (k + 0.5)
-        parts.append(make_part(f"rib_{k}", "rib", S.box((0.005, d - 2 * rw - 0.004, hr - tb + 0.001),
-                                                        center=(x, 0, (tb + hr) / 2 - 0.0005)), rubber))
+        x = -w / 2 + rw + pitch * (k + 1)
+        parts.append(make_part(f"channel_{k}", "channel",
+                               S.box((0.006, d - 2 * rw - 0.01, 0.003), center=(x, 0, tb - 0.0018)), groove))
     return parts
 
 
