@@ -35,7 +35,7 @@ def _tapered(x0: float, x1: float, w0: float, w1: float, z0a: float, z0b: float,
 
 
 @register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet"),
-          size_range=(0.16, 0.36), density=4000, variants=("chef", "table", "paring", "bread"),
+          size_range=(0.16, 0.38), density=4000, variants=("chef", "table", "paring", "bread"),
           placement="surface")
 def knife(rng: np.random.Generator, variant: str) -> list[Part]:
     """A knife on its side: the blade (edge towards -Y) towards +X, the handle towards -X."""

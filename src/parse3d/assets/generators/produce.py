@@ -50,7 +50,7 @@ def tomato(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("onion", parts=("body",), extra_parts=("neck", "root_plate", "root"),
-          size_range=(0.025, 0.13), density=900, variants=("yellow", "red", "white", "shallot"),
+          size_range=(0.022, 0.13), density=900, variants=("yellow", "red", "white", "shallot"),
           placement="surface")
 def onion(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.012, 0.016) if variant == "shallot" else rng.uniform(0.032, 0.043)
