@@ -36,8 +36,6 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     hmat = M.metal(rng)
     z0 = 0.08
     hb = hl - t
-    n = 2 if w < 1.3 else 3
-    bay = (w - 2 * t) / n
     zd = hb - t - 0.15 if variant == "drawers" else hb - t
     body = [S.box((t, d, hb - z0), center=(-w / 2 + t / 2, 0, (z0 + hb) / 2)),
             S.box((t, d, hb - z0), center=(w / 2 - t / 2, 0, (z0 + hb) / 2)),
