@@ -3,8 +3,7 @@
 A bar table's ``tabletop`` stands at 1.0-1.1 m on a pedestal or four legs with a ``footrest``
 ring. A jukebox stands on the floor, back to the wall: its arched ``body``, the ``glass``
 window over the record mechanism, the ``speaker`` grille below and the ``button`` row. An
-A-frame sign stand's two ``board``s lean against each other on a top ``hinge`` (modelled
-standing open, rigid).
+sign stand holds a sign in its ``frame`` over a ``base``.
 """
 
 from __future__ import annotations
@@ -123,35 +122,54 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("sign_stand", parts=("board", "hinge"), extra_parts=("frame", "chain", "sign_face"),
-          size_range=(0.6, 1.3), density=600, variants=("chalkboard", "poster", "metal"), placement="floor")
+@register("sign_stand", parts=("base", "frame"), extra_parts=("post", "sign_face", "board", "hinge", "foot"),
+          size_range=(0.7, 1.9), density=600, variants=("poster", "twin_post", "a_frame"), placement="floor")
 def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
-    """An A-frame pavement sign standing open: the front board faces +Y, the back board leans
-    back; a hinge joins them at the top and a chain keeps them from spreading."""
-    wood = M.wood(rng)
-    w, L = rng.uniform(0.5, 0.65), rng.uniform(0.8, 1.1)
-    spread = np.deg2rad(rng.uniform(12, 16))
-    t = 0.02
-    face = {"chalkboard": Material((0.1, 0.12, 0.1, 1.0), 0.9, 0.0, "stone"),
-            "poster": M.paper(rng),
-            "metal": Material((0.85, 0.85, 0.85, 1.0), 0.4, 0.6, "metal")}[variant]
-    frame_mat = wood if variant != "metal" else Material((0.15, 0.15, 0.15, 1.0), 0.5, 0.6, "metal")
-    H = L * np.cos(spread)
+    """A free-standing sign holder facing +Y: a weighted ``base``, a ``post`` (two for
+    ``twin_post``) and the ``frame`` whose front face takes a sign (``SECURED_TO
+    sign_stand:frame``); an ``a_frame`` pavement sign stands open on its two boards."""
+    metal = Material((0.15, 0.15, 0.16, 1.0), 0.45, 0.7, "metal") if rng.random() < 0.6 else M.metal(rng)
+    face = M.paper(rng) if variant != "a_frame" else Material((0.1, 0.12, 0.1, 1.0), 0.9, 0.0, "stone")
     parts: list[Part] = []
-    for k, sgn in enumerate((1, -1)):
-        R = rot((1, 0, 0), -sgn * spread)
-        T = np.eye(4)
-        T[:3, :3] = R
-        T[:3, 3] = (0, 0, H)
-        board = S.box((w, t, L), center=(0, sgn * t / 2, -L / 2)).apply(T)
-        name = "board" if k == 0 else "back_board"
-        parts.append(make_part(name, "board", board, frame_mat))
-        if k == 0:
-            inset = S.box((w - 0.08, 0.003, L - 0.12), center=(0, t + 0.0015, -L / 2 - 0.02)).apply(T)
-            parts.append(make_part("sign_face", "sign_face", inset, face))
-    parts.append(make_part("hinge", "hinge", S.cylinder(0.012, w * 0.9, center=(0, 0, H - 0.004), axis=(1, 0, 0),
-                                                       sections=12), M.metal(rng)))
-    parts.append(make_part("chain", "chain", S.tube([(0, np.tan(spread) * H * 0.5 - 0.001, H * 0.5),
-                                                     (0, -np.tan(spread) * H * 0.5 + 0.001, H * 0.5)], 0.003,
-                                                    sections=6), M.metal(rng)))
+    if variant == "a_frame":
+        wood = M.wood(rng)
+        w, L = rng.uniform(0.5, 0.65), rng.uniform(0.8, 1.1)
+        spread = np.deg2rad(rng.uniform(12, 16))
+        t = 0.02
+        H = L * np.cos(spread)
+        for k, sgn in enumerate((1, -1)):
+            T = np.eye(4)
+            T[:3, :3] = rot((1, 0, 0), -sgn * spread)
+            T[:3, 3] = (0, 0, H)
+            board = S.box((w, t, L), center=(0, sgn * t / 2, -L / 2)).apply(T)
+            parts.append(make_part("frame" if k == 0 else "board", "frame" if k == 0 else "board", board, wood))
+            if k == 0:
+                inset = S.box((w - 0.08, 0.003, L - 0.12), center=(0, t + 0.0015, -L / 2 - 0.02)).apply(T)
+                parts.append(make_part("sign_face", "sign_face", inset, face))
+        parts.append(make_part("hinge", "hinge", S.cylinder(0.012, w * 0.9, center=(0, 0, H - 0.004), axis=(1, 0, 0),
+                                                           sections=12), M.metal(rng)))
+        # the base: a chain-like spreader bar low between the boards keeps them from sliding apart
+        yb = np.tan(spread) * H * 0.15
+        parts.append(make_part("base", "base", S.tube([(0, yb - 0.001, H * 0.15), (0, -yb + 0.001, H * 0.15)], 0.004,
+                                                      sections=6), M.metal(rng)))
+        return parts
+    fw, fh = rng.uniform(0.5, 0.65), rng.uniform(0.7, 0.95)
+    top = rng.uniform(1.5, 1.75)
+    t = 0.025
+    z0 = top - fh
+    frame = [S.box((fw, t, fh), center=(0, 0, z0 + fh / 2), bevel=0.003)]
+    parts.append(make_part("frame", "frame", frame, metal))
+    parts.append(make_part("sign_face", "sign_face", S.box((fw - 0.05, 0.003, fh - 0.05),
+                                                           center=(0, t / 2 + 0.0015, z0 + fh / 2)), face))
+    if variant == "poster":
+        parts.append(make_part("base", "base", S.frustum(0.2, 0.17, 0.02, center=(0, 0, 0), sections=32), metal))
+        parts.append(make_part("post", "post", S.cylinder(0.015, z0 + 0.05 - 0.019, center=(0, -t / 2 - 0.015, (z0 + 0.05 + 0.019) / 2),
+                                                         sections=12), metal))
+    else:
+        parts.append(make_part("base", "base", S.box((fw + 0.1, 0.06, 0.02), center=(0, 0, 0.03), bevel=0.004), metal))
+        for k, sx in enumerate((-1, 1)):
+            x = sx * (fw / 2 + 0.012)
+            parts.append(make_part(f"post_{k}", "post", S.box((0.025, 0.025, top - 0.04), center=(x, 0, 0.04 + (top - 0.04) / 2 - 0.001),
+                                                              bevel=0.002), metal))
+            parts.append(make_part(f"foot_{k}", "foot", S.box((0.05, 0.4, 0.02), center=(x, 0, 0.01), bevel=0.004), metal))
     return parts
