@@ -139,7 +139,7 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         H = L * np.cos(spread)
         for k, sgn in enumerate((1, -1)):
             T = np.eye(4)
-            T[:3, :3] = rot((1, 0, 0), -sgn * spread)
+            T[:3, :3] = rot((1, 0, 0), sgn * spread)
             T[:3, 3] = (0, 0, H)
             board = S.box((w, t, L), center=(0, sgn * t / 2, -L / 2)).apply(T)
             parts.append(make_part("frame" if k == 0 else "board", "frame" if k == 0 else "board", board, wood))
@@ -149,7 +149,7 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("hinge", "hinge", S.cylinder(0.012, w * 0.9, center=(0, 0, H - 0.004), axis=(1, 0, 0),
                                                            sections=12), M.metal(rng)))
         # the base: a chain-like spreader bar low between the boards keeps them from sliding apart
-        yb = np.tan(spread) * H * 0.15
+        yb = np.tan(spread) * H * 0.85  # the boards' inner faces at that height
         parts.append(make_part("base", "base", S.tube([(0, yb - 0.001, H * 0.15), (0, -yb + 0.001, H * 0.15)], 0.004,
                                                       sections=6), M.metal(rng)))
         return parts
