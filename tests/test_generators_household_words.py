@@ -24,9 +24,13 @@ from parse3d.solver import solve
 CATEGORIES = ("knife", "fork", "spoon", "tomato", "onion", "carrot", "potato", "knife_block",
               "cutting_board", "stand_mixer", "thermos", "pot_rail", "sideboard", "display_table",
               "table_runner", "flowers", "toothbrush", "toilet_brush", "mirror_cabinet", "iron", "mop",
-              "bar_mat", "beer_tap", "cash_register")
+              "bar_mat", "beer_tap", "cash_register", "hutch", "locker", "bar_table", "jukebox",
+              "sign_stand", "high_chair", "shower", "tea_whisk", "tea_scoop", "wagashi", "brazier",
+              "incense_burner", "toiletry_bag", "deodorant", "hanging_scale")
 WALL = ("pot_rail", "mirror_cabinet")
-FLOOR = ("sideboard", "display_table", "toilet_brush", "mop")
+CEILING = ("hanging_scale",)
+FLOOR = ("sideboard", "display_table", "toilet_brush", "mop", "hutch", "locker", "bar_table", "jukebox",
+         "sign_stand", "high_chair", "shower", "brazier")
 ROOM = ((0, 0), (4, 0), (4, 3.5), (0, 3.5))
 
 
@@ -48,7 +52,8 @@ def test_registered_with_variants_and_placement():
     cats = registry.categories()
     for c in CATEGORIES:
         assert len(cats[c].variants) >= 2, c
-        want = "wall" if c in WALL else ("floor" if c in FLOOR else "surface")
+        want = ("wall" if c in WALL else "ceiling" if c in CEILING else
+                "floor" if c in FLOOR else "surface")
         assert cats[c].placement == want, c
 
 
@@ -90,9 +95,11 @@ def test_pot_rail_hooks_hang_below_the_rail_in_front_of_the_wall():
 
 
 @pytest.mark.parametrize(("category", "label"), [("sideboard", "shelf"), ("mirror_cabinet", "shelf"),
-                                                 ("stand_mixer", "bowl")])
+                                                 ("stand_mixer", "bowl"), ("hutch", "shelf"),
+                                                 ("hanging_scale", "pan")])
 def test_supports_inside(category, label):
-    """A sideboard's and a mirror cabinet's shelves and a mixer's bowl are internal supports."""
+    """Shelves behind doors or between side panels, a mixer's bowl and a scale's pan are
+    internal supports."""
     for v in registry.get(category).variants:
         a = _asset(category, v)
         inside = {s.part for s in a.internal}
@@ -166,6 +173,48 @@ def test_toilet_brush_stands_in_its_holder():
         assert a.part("handle").bounds[1, 2] > holder[1, 2] + 0.1
 
 
+def test_hutch_plates_lean_on_the_back_panel_behind_a_plate_rail():
+    a = _asset("hutch", "open")
+    back = a.part("back_panel")
+    upper = [p for p in a.parts_by_label("shelf") if p.bounds[0, 2] > a.part("countertop").bounds[1, 2]]
+    rails = a.parts_by_label("plate_rail")
+    assert len(upper) >= 2 and len(rails) == len(upper)
+    for shelf, rail in zip(upper, rails, strict=True):
+        assert shelf.bounds[0, 1] == pytest.approx(back.bounds[1, 1], abs=1e-3)
+        assert rail.bounds[0, 2] == pytest.approx(shelf.bounds[1, 2], abs=1e-3)
+        assert 0.04 < rail.bounds[0, 1] - back.bounds[1, 1] < 0.1  # a plate's foot fits behind it
+
+
+def test_high_chair_tray_is_at_table_height_in_front_of_the_seat():
+    for v in registry.get("high_chair").variants:
+        a = _asset("high_chair", v)
+        tray, seat = a.part("tray"), a.part("seat")
+        assert 0.7 < tray.bounds[1, 2] < 0.9 and tray.bounds[1, 1] > seat.bounds[1, 1] + 0.1
+        assert tray.surfaces["top"].area > 0.08
+
+
+def test_shower_door_moves_and_the_niche_holds_bottles():
+    for v, kind in (("corner_slider", "prismatic"), ("hinged", "revolute")):
+        a = _asset("shower", v)
+        assert [j.type for j in a.joints if j.child_part == "door"] == [kind]
+        opened = a.posed(ratio=1.0)
+        assert not np.allclose(opened.part("door").bounds, a.part("door").bounds)
+        niche = a.part("niche")
+        assert 1.0 < niche.bounds[0, 2] < 1.4
+    assert not _asset("shower", "walk_in").joints
+
+
+def test_brazier_trivet_is_over_the_opening_and_the_scale_hook_is_on_top():
+    for v in registry.get("brazier").variants:
+        a = _asset("brazier", v)
+        assert a.part("trivet").bounds[1, 2] == pytest.approx(a.bounds[1, 2], abs=0.03)
+        assert a.part("trivet").surfaces["top"].area > 0.02
+    for v in registry.get("hanging_scale").variants:
+        a = _asset("hanging_scale", v)
+        assert a.part("hook").bounds[1, 2] == pytest.approx(a.bounds[1, 2], abs=1e-6)
+        assert a.part("pan").bounds[0, 2] == pytest.approx(0.0, abs=1e-6)
+
+
 def _kitchen() -> PAG:
     pag = PAG("kitchen-tools", Room("kitchen", ROOM, 2.7))
     pag.add("counter", "kitchen_counter")
@@ -225,7 +274,47 @@ def _bar() -> PAG:
     return pag
 
 
-@pytest.mark.parametrize("room", [_kitchen, _dining, _bar], ids=["kitchen", "dining", "bar"])
+def _nook() -> PAG:
+    pag = PAG("breakfast-nook", Room("dining_room", ROOM, 2.7))
+    pag.add("hutch", "hutch")
+    pag.relate("hutch", "ON", "floor")
+    pag.relate("hutch:back_panel@back", "AGAINST", "wall")
+    pag.add("bowl", "bowl")
+    pag.relate("bowl", "ON", "hutch:countertop")
+    pag.add("chair", "high_chair")
+    pag.relate("chair", "ON", "floor")
+    pag.add("cup", "cup")
+    pag.relate("cup", "ON", "chair:tray")
+    pag.add("brazier", "brazier")
+    pag.relate("brazier", "ON", "floor")
+    pag.add("kettle", "kettle")
+    pag.relate("kettle", "ON", "brazier:trivet")
+    pag.add("scale", "hanging_scale")
+    pag.relate("scale:hook", "HANGING_BELOW", "ceiling", drop=[0.6, 0.9])
+    pag.add("apple", "apple")
+    pag.relate("apple", "IN", "scale:pan")
+    return pag
+
+
+def _bathroom() -> PAG:
+    pag = PAG("shower-corner", Room("bathroom", ROOM, 2.7))
+    pag.add("shower", "shower")
+    pag.relate("shower", "ON", "floor")
+    pag.relate("shower@back", "AGAINST", "wall")
+    pag.add("shampoo", "detergent_bottle")
+    pag.relate("shampoo", "ON", "shower:niche")
+    pag.add("locker", "locker")
+    pag.relate("locker", "ON", "floor")
+    pag.relate("locker@back", "AGAINST", "wall")
+    pag.add("bag", "toiletry_bag")
+    pag.relate("bag", "IN", "locker:shelf")
+    pag.add("brush", "toilet_brush")
+    pag.relate("brush", "ON", "floor")
+    return pag
+
+
+@pytest.mark.parametrize("room", [_kitchen, _dining, _bar, _nook, _bathroom],
+                         ids=["kitchen", "dining", "bar", "nook", "bathroom"])
 @pytest.mark.parametrize("seed", [0, 1])
 def test_rooms_using_them_solve(room, seed):
     scene = solve(room(), seed=seed)

@@ -47,7 +47,7 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts: list[Part | Joint] = [make_part("body", "body", body, mat)]
     parts.append(make_part("plinth", "plinth", S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)), mat))
     parts.append(make_part("countertop", "countertop",
-                           S.box((w + 0.03, d + 0.02, t), center=(0, 0.005, hl - t / 2), bevel=0.004), mat))
+                           S.box((w + 0.03, d + 0.02, t), center=(0, 0.01, hl - t / 2), bevel=0.004), mat))
     dw = (w - 2 * t) / 2
     for i in range(2):
         x0, x1 = -w / 2 + t + i * dw + 0.002, -w / 2 + t + (i + 1) * dw - 0.002
