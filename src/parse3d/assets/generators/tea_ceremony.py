@@ -3,7 +3,7 @@
 A tea whisk stands on its bamboo ``handle`` with its ``tine``s curling up and out. A tea scoop
 lies along X, its curved ``tip`` at +X. A wagashi sweet sits on the table with its ``garnish``
 on top and a ``pick`` beside it. A brazier's ``trivet`` on its rim holds the kettle
-(``ON brazier:trivet``). An incense burner stands on three ``foot``s under a pierced ``lid``.
+(``ON brazier:trivet``). An incense burner stands on three ``foot``s (tripod) under a domed ``lid``.
 """
 
 from __future__ import annotations
@@ -151,7 +151,7 @@ def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("incense_burner", parts=("body", "lid"), extra_parts=("foot", "ear", "knob", "ash"),
+@register("incense_burner", parts=("body", "lid"), extra_parts=("foot", "ear", "knob"),
           size_range=(0.06, 0.25), density=2500, variants=("tripod", "bowl", "tower"), placement="surface")
 def incense_burner(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if variant == "bowl" else Material(M.jitter(rng, (0.45, 0.35, 0.2), 0.05), 0.4, 0.8, "metal")
