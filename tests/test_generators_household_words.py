@@ -322,3 +322,42 @@ def test_rooms_using_them_solve(room, seed):
     support = {"ON", "IN", "HANGING_BELOW", "SECURED_TO"}
     held = [c for c in scene.relations if c.relation in support]
     assert held and all(c.holds for c in held), [c for c in held if not c.holds]
+
+
+#: The motifs that put these categories in the bundled templates, each alone in a small room
+#: (with the motif holding the counter it uses): room type, its params, a motif it builds on.
+MOTIFS = {
+    "kitchen_prep_corner": ("kitchen", "{wall: wall_0}", ""),
+    "dining_room_dressed_sideboard": ("dining_room", "{wall: wall_0}", ""),
+    "dining_room_hutch_nook": ("dining_room", "{wall: wall_0}", ""),
+    "bathroom_shower_corner": ("bathroom", "{wall: wall_0}", ""),
+    "bar_counter_taps": ("bar", "{counter: bc_counter, wall: wall_1}",
+                         "{motif: bar_counter_set, prefix: bc, params: {away: wall_0, distance: 1.0}}"),
+    "grocery_produce_display": ("grocery", "{counter: ck_counter, wall: wall_1}",
+                                "{motif: grocery_checkout, prefix: ck, params: {wall: wall_0}}"),
+    "laundry_iron_and_mop": ("laundry", "{wall: wall_0}", ""),
+    "dormitory_lockers": ("dormitory", "{wall: wall_0}", ""),
+    "tea_house_brazier": ("tea_house", "{wall: wall_0}", ""),
+}
+
+
+@pytest.mark.parametrize("motif", sorted(MOTIFS))
+def test_motifs_using_them_solve(tmp_path, motif):
+    from parse3d.datagen.templates import expand_template, load_template
+
+    room_type, params, base = MOTIFS[motif]
+    p = tmp_path / f"only-{motif.replace('_', '-')}.yaml"
+    p.write_text("format: pag-template/1\n"
+                 f"name: only-{motif.replace('_', '-')}\n"
+                 f"room_type: {room_type}\n"
+                 f'description: "A test room holding one {motif} motif."\n'
+                 "room: {width: [4.6, 4.6], depth: [4.2, 4.2], height: [2.7, 2.7]}\n"
+                 "objects: []\nrelations: []\nmotifs:\n"
+                 + (f"  - {base}\n" if base else "")
+                 + f"  - {{motif: {motif}, prefix: m, params: {params}}}\n")
+    template = load_template(p)
+    for seed in (0, 1):
+        pag = expand_template(template, seed)
+        scene = solve(pag, seed=seed)
+        failed = {o.id: o.reason for o in scene.objects.values() if not o.placed}
+        assert not failed, f"{motif} at seed {seed}: {failed}"
