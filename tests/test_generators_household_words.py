@@ -88,10 +88,24 @@ def test_pot_rail_hooks_hang_below_the_rail_in_front_of_the_wall():
         assert len(hooks) >= 3, a.asset_id
         for h in hooks:
             # the curl reaches over the rail and the open bottom hangs well below it
-            assert h.bounds[1, 2] >= rail[1, 2] - 1e-3 and h.bounds[0, 2] < rail[0, 2] - 0.08, h.name
+            assert h.bounds[1, 2] >= rail[1, 2] - 1e-3 and h.bounds[0, 2] < rail[0, 2] - 0.05, h.name
             assert h.surfaces["bottom"].normal[2] < -0.99
         # brackets reach the wall at the back (-Y)
         assert abs(_bounds(a, "bracket")[0, 1] - a.bounds[0, 1]) < 1e-3
+        # "the bar" is the rail with its hooks, so a pan hangs below the bar from a hook
+        assert {p.label for p in a.parts_by_label("bar")} == {"rail", "hook"}
+
+
+def test_a_pan_hangs_below_the_pot_rails_bar_by_its_handle():
+    """As rooms write it: the pan's handle 2-10 cm below the bar (the S-hook's length)."""
+    pag = PAG("pot-rail", Room("kitchen", ROOM, 2.7))
+    pag.add("rail", "pot_rail")
+    pag.relate("rail:bracket@back", "SECURED_TO", "wall", height=[1.3, 1.45])
+    pag.add("pan", "frying_pan")
+    pag.relate("pan:handle@top", "HANGING_BELOW", "rail:bar@bottom", drop=[0.02, 0.1])
+    scene = solve(pag, seed=1)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    assert scene.objects["pan"].support_choice.part.startswith("hook")
 
 
 @pytest.mark.parametrize(("category", "label"), [("sideboard", "shelf"), ("mirror_cabinet", "shelf"),
@@ -154,6 +168,11 @@ def test_beer_tap_handles_pull_forward_over_the_drip_tray():
     for f in a.parts_by_label("faucet"):
         x, y = (f.bounds[0, :2] + f.bounds[1, :2]) / 2
         assert tray[0, 0] < x < tray[1, 0] and f.bounds[1, 1] > tray[0, 1]
+
+
+def test_a_table_runners_body_is_the_whole_runner():
+    a = _asset("table_runner", "bordered")
+    assert {p.label for p in a.parts_by_label("body")} == {"runner", "hem", "border"}
 
 
 def test_bar_mat_rim_stands_above_the_sheet_glasses_rest_on():

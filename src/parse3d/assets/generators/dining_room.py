@@ -132,7 +132,7 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel"),
           size_range=(0.9, 2.8), density=300, variants=("plain", "bordered", "tasselled"),
-          placement="surface")
+          placement="surface", groups={"body": ("runner", "hem", "border")})
 def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
     """A fabric strip along X; laid ON a table's top, it holds what stands on it."""
     cloth = M.fabric(rng)

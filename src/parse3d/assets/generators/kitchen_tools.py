@@ -215,10 +215,10 @@ def thermos(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("pot_rail", parts=("rail", "hook"), extra_parts=("bracket", "end_cap"),
           size_range=(0.4, 1.25), density=3000, variants=("round_bar", "flat_bar", "double"),
-          placement="wall")
+          placement="wall", groups={"bar": ("rail", "hook")})
 def pot_rail(rng: np.random.Generator, variant: str) -> list[Part]:
     """A wall rail: brackets against the wall (-Y), the bar in front, S-hooks hanging from it.
-    Each hook's bottom curl is where a pot's handle hangs."""
+    Each hook's bottom curl is where a pot's handle hangs; ``bar`` names the rail with its hooks."""
     mat = M.metal(rng) if rng.random() < 0.7 else Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.7, "metal")
     L = rng.uniform(0.45, 1.2)
     off = rng.uniform(0.05, 0.065)  # bar axis from the wall
@@ -258,7 +258,7 @@ def pot_rail(rng: np.random.Generator, variant: str) -> list[Part]:
         # an S-hook: a curl over the bar, a shank, a curl open to the front at the bottom
         a = np.linspace(np.pi * 0.15, np.pi * 1.05, 4)
         upper = np.c_[np.full(4, x), y - top_r * np.cos(a), z + top_r * np.sin(a)]
-        zb = z - 0.11
+        zb = z - 0.075  # a 7-8 cm S-hook
         b = np.linspace(np.pi, np.pi * 1.9, 4)
         lower = np.c_[np.full(4, x), y + 0.014 + 0.014 * np.cos(b), zb + 0.014 * np.sin(b) + 0.014]
         path = np.vstack([upper[::-1], [(x, y + top_r, z - 0.03)], lower])
