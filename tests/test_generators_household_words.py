@@ -130,6 +130,13 @@ def test_sideboard_doors_swing_out_and_drawers_slide_out():
         assert opened.part(p.name).bounds[1, 1] > p.bounds[1, 1] + 0.2
     top = a.part("top_panel")
     assert top.bounds[1, 2] == pytest.approx(a.bounds[1, 2], rel=1e-6)
+    # nothing reaches behind the body, so sideboard:body@back AGAINST a wall holds
+    for v in registry.get("sideboard").variants:
+        b = _asset("sideboard", v)
+        assert b.bounds[0, 1] == pytest.approx(b.part("body").bounds[0, 1], abs=1e-6)
+    for v in registry.get("hutch").variants:
+        h = _asset("hutch", v)
+        assert h.bounds[0, 1] == pytest.approx(h.part("back_panel").bounds[0, 1], abs=1e-6)
     assert top.surfaces["top"].area > 0.4
 
 

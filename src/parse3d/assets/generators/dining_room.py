@@ -49,7 +49,7 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         body.append(S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)))
     parts: list[Part | Joint] = [make_part("body", "body", body, mat)]
     parts.append(make_part("top_panel", "top_panel",
-                           S.box((w + 0.02, d + 0.02, t), center=(0, 0.005, h - t / 2), bevel=0.004), mat))
+                           S.box((w + 0.02, d + 0.02, t), center=(0, 0.01, h - t / 2), bevel=0.004), mat))
     if legged:
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             x, y = sx * (w / 2 - 0.05), sy * (d / 2 - 0.05)
