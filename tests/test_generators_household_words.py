@@ -177,6 +177,15 @@ def test_beer_tap_handles_pull_forward_over_the_drip_tray():
         assert tray[0, 0] < x < tray[1, 0] and f.bounds[1, 1] > tray[0, 1]
 
 
+@pytest.mark.parametrize(("category", "variants"), [("locker", None), ("jukebox", None), ("hutch", None),
+                                                    ("sideboard", ("drawers_over_doors", "three_door"))])
+def test_the_body_stands_on_the_floor(category, variants):
+    """Rooms write ``locker:body@bottom ON floor``: the body includes its base or plinth."""
+    for v in variants or registry.get(category).variants:
+        a = _asset(category, v)
+        assert a.part("body").bounds[0, 2] == pytest.approx(0.0, abs=1e-6), a.asset_id
+
+
 def test_a_table_runners_body_is_the_whole_runner():
     a = _asset("table_runner", "bordered")
     assert {p.label for p in a.parts_by_label("body")} == {"runner", "hem", "border"}

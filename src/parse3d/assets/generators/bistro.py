@@ -75,7 +75,7 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light", "base"),
+@register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light"),
           size_range=(1.0, 1.7), density=400, variants=("bubbler", "wallbox_cabinet", "retro"),
           placement="floor")
 def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -85,14 +85,15 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.7, 0.85), rng.uniform(0.55, 0.7)
     hb = rng.uniform(1.05, 1.2) if variant != "retro" else rng.uniform(1.3, 1.45)
     zb = 0.06
-    parts = [make_part("base", "base", S.box((w - 0.04, d - 0.04, zb), center=(0, 0, zb / 2)), black())]
+    plinth = S.box((w - 0.04, d - 0.04, zb), center=(0, 0, zb / 2))  # part of the body: it stands on it
+    parts: list[Part] = []
     if variant == "bubbler":
         body = S.box((w, d, hb - zb - w / 2 + 0.001), center=(0, 0, zb + (hb - zb - w / 2) / 2))
         dome = S.cylinder(w / 2, d, center=(0, 0, hb - w / 2), axis=(0, 1, 0), sections=24)
         # keep only the upper half of the dome: a hull of its upper vertices
         v = dome.mesh.vertices
         dome = S.hull(np.asarray(v[v[:, 2] >= hb - w / 2 - 1e-9]))
-        parts.append(make_part("body", "body", [body, dome], wood))
+        parts.append(make_part("body", "body", [plinth, body, dome], wood))
         light = S.tube([(x, d / 2 + 0.004, z) for x, z in
                         zip(w / 2 * 0.9 * np.cos(np.linspace(0, np.pi, 9)),
                             hb - w / 2 + w / 2 * 0.9 * np.sin(np.linspace(0, np.pi, 9)), strict=True)],
@@ -100,7 +101,7 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("light", "light", light, Material((1.0, 0.6, 0.2, 1.0), 0.2, 0.0, "plastic")))
     else:
         body = S.box((w, d, hb - zb), center=(0, 0, (zb + hb) / 2), bevel=0.02)
-        parts.append(make_part("body", "body", body, wood if variant == "wallbox_cabinet" else black()))
+        parts.append(make_part("body", "body", [plinth, body], wood if variant == "wallbox_cabinet" else black()))
         if variant == "retro":
             parts.append(make_part("light", "light", S.box((0.04, 0.02, hb - zb - 0.1),
                                                            center=(-w / 2 + 0.05, d / 2 + 0.009, (zb + hb) / 2)),

@@ -22,7 +22,7 @@ from ._kit import mount
 
 @register("hutch", parts=("countertop", "body", "shelf", "back_panel"),
           extra_parts=("side_panel", "top_panel", "door", "drawer", "drawer_box", "handle", "hinge",
-                       "plate_rail", "glass", "plinth"),
+                       "plate_rail", "glass"),
           size_range=(1.5, 2.3), density=550, variants=("open", "glass_doors", "drawers"),
           placement="floor")
 def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -44,8 +44,8 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             S.box((w - 2 * t, 0.008, hb - z0 - 2 * t), center=(0, -d / 2 + 0.004, (z0 + hb) / 2))]
     if zd < hb - t - 1e-6:
         body.append(S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)))
+    body.append(S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)))  # the plinth
     parts: list[Part | Joint] = [make_part("body", "body", body, mat)]
-    parts.append(make_part("plinth", "plinth", S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)), mat))
     parts.append(make_part("countertop", "countertop",
                            S.box((w + 0.03, d + 0.02, t), center=(0, 0.01, hl - t / 2), bevel=0.004), mat))
     dw = (w - 2 * t) / 2
@@ -91,7 +91,7 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("locker", parts=("body", "door"), extra_parts=("handle", "hinge", "shelf", "hook", "vent",
-                                                          "nameplate", "base"),
+                                                          "nameplate"),
           size_range=(1.2, 2.0), density=400, variants=("single", "two_tier", "bank"), placement="floor")
 def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     """A steel locker (a ``bank`` is three side by side): a door per compartment with vent
@@ -114,9 +114,9 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     zt = [zb + (H - zb) * k / tiers for k in range(tiers + 1)]
     for k in range(1, tiers):
         body.append(S.box((w - 2 * t, dc, t), center=(0, yc, zt[k])))
+    # the recessed base is part of the body, so the body stands on the floor (locker:body@bottom)
+    body.append(S.box((w - 0.02, dc - 0.03, zb), center=(0, yc - 0.015, zb / 2)))
     parts: list[Part | Joint] = [make_part("body", "body", body, steel)]
-    parts.append(make_part("base", "base", S.box((w - 0.02, dc - 0.03, zb), center=(0, yc - 0.015, zb / 2)),
-                           Material((0.12, 0.12, 0.13, 1.0), 0.6, 0.3, "metal")))
     yf = yc + dc / 2
     hmat = Material((0.7, 0.7, 0.72, 1.0), 0.3, 0.9, "metal")
     k_shelf = 0

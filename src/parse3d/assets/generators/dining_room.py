@@ -21,7 +21,7 @@ from ._kit import rot
 
 
 @register("sideboard", parts=("top_panel", "body", "shelf"),
-          extra_parts=("door", "drawer", "drawer_box", "handle", "hinge", "leg", "plinth"),
+          extra_parts=("door", "drawer", "drawer_box", "handle", "hinge", "leg"),
           size_range=(0.9, 2.2), density=550, variants=("drawers_over_doors", "three_door", "legged"),
           placement="floor")
 def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -47,6 +47,8 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         body.append(S.box((t, d - 0.008, hb - z0 - 2 * t), center=(x, 0.004, (z0 + hb) / 2)))
     if zd < hb - t - 1e-6:  # the rail the drawers run above
         body.append(S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)))
+    if not legged:  # the plinth is part of the body, which then stands on the floor
+        body.append(S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)))
     parts: list[Part | Joint] = [make_part("body", "body", body, mat)]
     parts.append(make_part("top_panel", "top_panel",
                            S.box((w + 0.02, d + 0.02, t), center=(0, 0.01, h - t / 2), bevel=0.004), mat))
@@ -55,9 +57,6 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             x, y = sx * (w / 2 - 0.05), sy * (d / 2 - 0.05)
             parts.append(make_part(f"leg_{i}", "leg", S.frustum(0.014, 0.022, z0, center=(x, y, 0),
                                                                  sections=12), mat))
-    else:
-        parts.append(make_part("plinth", "plinth", S.box((w - 0.04, d - 0.04, z0),
-                                                         center=(0, -0.01, z0 / 2)), mat))
     for b in range(n):
         sx0 = -w / 2 + t + b * bay + (t / 2 if b > 0 else 0)
         sx1 = -w / 2 + t + (b + 1) * bay - (t / 2 if b < n - 1 else 0)
