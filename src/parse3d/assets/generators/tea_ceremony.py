@@ -1,8 +1,8 @@
 """Tea ceremony things: whisks, scoops, sweets, braziers and incense burners.
 
 A tea whisk stands on its bamboo ``handle`` with its ``tine``s curling up and out. A tea scoop
-lies along X, its curved ``tip`` at +X. A wagashi sweet sits on the table with its ``garnish``
-on top and a ``pick`` beside it. A brazier's ``trivet`` on its rim holds the kettle
+lies along X, its curved ``tip`` at +X. A wagashi sweet sits on a plate with its ``garnish``
+on top and a ``pick`` stuck in it. A brazier's ``trivet`` on its rim holds the kettle
 (``ON brazier:trivet``). An incense burner stands on three ``foot``s (tripod) under a domed ``lid``.
 """
 
@@ -64,31 +64,32 @@ def tea_scoop(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wagashi", parts=("body",), extra_parts=("garnish", "pick", "paper"), size_range=(0.03, 0.16),
+@register("wagashi", parts=("body",), extra_parts=("garnish", "pick"), size_range=(0.03, 0.12),
           density=1200, variants=("nerikiri", "daifuku", "yokan"), placement="surface")
 def wagashi(rng: np.random.Generator, variant: str) -> list[Part]:
-    """A sweet on a folded sheet of kaishi paper, a wooden pick beside it."""
+    """A sweet with its garnish on top and a wooden pick stuck in it, leaning out to the right,
+    small enough for a plate's well."""
     colours = [(0.95, 0.7, 0.75), (0.7, 0.85, 0.55), (0.98, 0.95, 0.9), (0.55, 0.3, 0.45)]
     food = M.food(rng, colours[int(rng.integers(len(colours)))])
-    pw, pd, pt = rng.uniform(0.1, 0.13), rng.uniform(0.08, 0.1), 0.0015
-    parts = [make_part("paper", "paper", S.box((pw, pd, pt), center=(0, 0, pt / 2)),
-                       Material((0.97, 0.96, 0.93, 1.0), 0.9, 0.0, "paper"))]
     r = rng.uniform(0.022, 0.028)
     if variant == "yokan":
-        body = S.box((0.055, 0.022, 0.028), center=(0, 0, pt + 0.014), bevel=0.001)
+        body = S.box((0.055, 0.022, 0.028), center=(0, 0, 0.014), bevel=0.001)
         food = M.food(rng, (0.3, 0.12, 0.1))
-        top = pt + 0.028
+        top = 0.028
     elif variant == "daifuku":
-        body = S.lathe([(r * 0.9, pt), (r, pt + r * 0.3), (r * 0.8, pt + r * 0.8), (r * 0.3, pt + r)], sections=20)
-        top = pt + r
+        body = S.lathe([(r * 0.9, 0.0), (r, r * 0.3), (r * 0.8, r * 0.8), (r * 0.3, r)], sections=20)
+        top = r
     else:
-        body = S.lathe([(r * 0.85, pt), (r, pt + r * 0.35), (r * 0.85, pt + r * 0.75), (r * 0.4, pt + r * 0.9)],
+        body = S.lathe([(r * 0.85, 0.0), (r, r * 0.35), (r * 0.85, r * 0.75), (r * 0.4, r * 0.9)],
                        sections=10)  # a few facets read as the petals
-        top = pt + r * 0.9
-    parts.append(make_part("body", "body", body, food))
+        top = r * 0.9
+    parts = [make_part("body", "body", body, food)]
     garnish = S.ellipsoid((0.006, 0.004, 0.0015), center=(0, 0, top + 0.0008), subdivisions=1)
     parts.append(make_part("garnish", "garnish", garnish, M.food(rng, (0.95, 0.85, 0.3))))
-    pick = S.box((0.075, 0.004, 0.003), center=(0, -pd / 2 + 0.012, pt + 0.0015))
+    lean = np.deg2rad(rng.uniform(30, 45))
+    x0 = 0.012
+    pick = S.tube([(x0, 0, top * 0.45), (x0 + 0.06 * np.sin(lean), 0, top * 0.45 + 0.06 * np.cos(lean))],
+                  0.0015, sections=6)
     parts.append(make_part("pick", "pick", pick, _bamboo(rng)))
     return parts
 
