@@ -1,0 +1,197 @@
+"""Desk and classroom things: pens, notebooks, chalk and globes.
+
+A pen and a chalk stick lie flat along X (a pen's tip at +X); a notebook lies closed, its spine
+at -X and the front cover on top, opening on a hinge along the spine. A globe stands on its
+base with the sphere's axis tilted 23.4 degrees in its meridian ring.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+from ._household import ring
+from ._kit import revolute, rot
+
+
+@register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap"),
+          size_range=(0.11, 0.17), density=1100, variants=("ballpoint", "capped", "fountain"), placement="surface")
+def pen(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = rng.uniform(0.13, 0.15)
+    r = rng.uniform(0.0045, 0.0055) if variant != "fountain" else rng.uniform(0.006, 0.007)
+    body = M.solid(M.jitter(rng, [(0.1, 0.2, 0.6), (0.05, 0.05, 0.05), (0.8, 0.1, 0.1), (0.9, 0.9, 0.9)][int(rng.integers(4))],
+                            0.03)[:3], "plastic", 0.4)
+    chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.25, 0.9)
+    black = M.solid((0.05, 0.05, 0.05), "rubber", 0.7)
+    zc = r + 0.0015  # lying on its clip side up, the clip's thickness above
+    lt = 0.018
+    x0, x1 = -L / 2, L / 2
+    parts = [make_part("tip", "tip", S.frustum(r * 0.9, r * 0.15, lt, center=(x1 - lt, 0, zc), axis=(1, 0, 0), sections=16),
+                       chrome if variant != "capped" else body)]
+    if variant == "fountain":
+        parts.append(make_part("nib", "nib", S.frustum(r * 0.3, 0.0003, 0.008, center=(x1 - 0.0005, 0, zc), axis=(1, 0, 0), sections=8),
+                               M.solid((0.85, 0.7, 0.3), "metal", 0.3, 0.9)))
+        parts[0] = make_part("tip", "tip", S.frustum(r * 0.9, r * 0.3, lt, center=(x1 - lt - 0.0075, 0, zc), axis=(1, 0, 0), sections=16),
+                             black)
+        x1 -= 0.0075
+    parts.append(make_part("grip", "grip", S.cylinder(r * 1.02, 0.03, center=(x1 - lt - 0.015, 0, zc), axis=(1, 0, 0), sections=16),
+                           black))
+    lb = (x1 - lt - 0.03) - x0
+    if variant == "capped":  # the cap over the tip end; the barrel's tail bare
+        lcap = 0.055
+        parts.append(make_part("barrel", "barrel", S.cylinder(r, lb, center=(x0 + lb / 2, 0, zc), axis=(1, 0, 0), sections=16), body))
+        parts.append(make_part("cap", "cap", S.cylinder(r * 1.18, lcap, center=(x1 - lcap / 2 + 0.002, 0, zc), axis=(1, 0, 0),
+                                                        sections=16), body))
+        parts.append(make_part("end_cap", "end_cap", S.cylinder(r * 0.9, 0.004, center=(x0 - 0.002, 0, zc), axis=(1, 0, 0),
+                                                                sections=12), body))
+        xc = x1 - lcap / 2
+        rc = r * 1.18
+    else:
+        parts.append(make_part("barrel", "barrel", S.cylinder(r, lb, center=(x0 + lb / 2, 0, zc), axis=(1, 0, 0), sections=16), body))
+        if variant == "ballpoint":
+            parts.append(make_part("button", "button", S.cylinder(r * 0.6, 0.01, center=(x0 - 0.005, 0, zc), axis=(1, 0, 0),
+                                                                  sections=12), chrome))
+        else:
+            parts.append(make_part("end_cap", "end_cap", S.cylinder(r * 0.95, 0.008, center=(x0 - 0.004, 0, zc), axis=(1, 0, 0),
+                                                                    sections=12), chrome))
+        xc = x0 + 0.025
+        rc = r
+    parts.append(make_part("clip", "clip", S.box((0.04, 0.003, 0.0015), center=(xc, 0, zc + rc + 0.00075)), chrome))
+    return parts
+
+
+@register("notebook", parts=("front_cover", "back_cover", "pages"),
+          extra_parts=("spine", "spiral", "band", "ribbon", "binding"),
+          groups={"cover": ("front_cover", "back_cover")},
+          size_range=(0.14, 0.32), density=600, variants=("spiral", "bound", "legal_pad"), placement="surface")
+def notebook(rng: np.random.Generator, variant: str) -> list:
+    w, d = [(0.148, 0.21), (0.21, 0.297), (0.19, 0.25), (0.13, 0.21)][int(rng.integers(4))]
+    if variant == "legal_pad":
+        w, d = 0.216, rng.uniform(0.3, 0.31)
+    # lying with its long side along Y, spine at -X; a legal pad is bound at its top edge (+Y)
+    n_pages = rng.uniform(0.008, 0.016) if variant != "legal_pad" else rng.uniform(0.006, 0.012)
+    tc = 0.0012 if variant != "bound" else 0.0025
+    cover = M.paper(rng) if variant != "bound" else M.leather(rng)
+    paper = M.solid((0.95, 0.94, 0.9), "paper", 0.9)
+    z = 0.0
+    parts = [make_part("back_cover", "back_cover", S.box((w, d, tc), center=(0, 0, tc / 2)), cover if variant != "legal_pad"
+                       else M.solid((0.6, 0.5, 0.35), "paper", 0.9))]
+    z = tc
+    inset = 0.002
+    parts.append(make_part("pages", "pages", S.box((w - 2 * inset, d - 2 * inset, n_pages), center=(0, 0, z + n_pages / 2)),
+                           paper if variant != "legal_pad" else M.solid((0.98, 0.93, 0.55), "paper", 0.9)))
+    z += n_pages
+    front = S.box((w, d, tc), center=(0, 0, z + tc / 2))
+    parts.append(make_part("front_cover", "front_cover", front, cover))
+    zt = z + tc
+    if variant == "spiral":
+        n = int(d / 0.0085)
+        rr = (zt / 2) + 0.002
+        coil = [S.cylinder(rr, 0.0016, center=(-w / 2, -d / 2 + 0.006 + k * (d - 0.012) / max(n - 1, 1), zt / 2), axis=(0, 1, 0),
+                           sections=10) for k in range(n)]
+        parts.append(make_part("spiral", "spiral", coil, M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+        origin = (-w / 2, 0.0, zt / 2)
+    elif variant == "bound":
+        parts.append(make_part("spine", "spine", S.box((0.004, d, zt), center=(-w / 2 - 0.002, 0, zt / 2)), cover))
+        parts.append(make_part("band", "band", S.box((0.006, d + 0.002, zt + 0.002), center=(w / 2 - 0.025, 0, zt / 2 + 0.001)),
+                               M.solid((0.05, 0.05, 0.05), "rubber", 0.8)))
+        parts.append(make_part("ribbon", "ribbon", S.box((0.006, 0.05, 0.0005), center=(-w * 0.1, -d / 2 - 0.02, 0.00025)),
+                               Material(M.jitter(rng, (0.6, 0.1, 0.1)), 0.6, 0.0, "fabric")))
+        origin = (-w / 2, 0.0, zt)
+    else:
+        parts.append(make_part("binding", "binding", S.box((w + 0.002, 0.02, zt + 0.002), center=(0, d / 2 - 0.009, zt / 2 + 0.001)),
+                               M.solid((0.5, 0.1, 0.1), "paper", 0.7)))
+        parts.append(make_part("spine", "spine", S.box((w, 0.001, zt), center=(0, d / 2 + 0.0015, zt / 2)),
+                               M.solid((0.6, 0.5, 0.35), "paper", 0.9)))
+        # a pad's top sheet flips over its binding at the top edge
+        return parts + [revolute("front_cover_hinge", "binding", "front_cover", axis=(1, 0, 0), origin=(0, d / 2 - 0.02, zt),
+                                 opens=np.pi * 0.9)]
+    parts.append(revolute("front_cover_hinge", "pages", "front_cover", axis=(0, -1, 0), origin=origin, opens=np.pi * 0.9))
+    return parts
+
+
+@register("chalk", parts=("stick",), extra_parts=("box", "lid"),
+          size_range=(0.06, 0.16), density=1500, variants=("stick", "box", "sidewalk"), placement="surface")
+def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
+    colours = [(0.96, 0.96, 0.94), (0.95, 0.85, 0.3), (0.95, 0.5, 0.6), (0.5, 0.75, 0.95), (0.6, 0.9, 0.5)]
+
+    def chalk_mat():
+        return Material(M.jitter(rng, colours[int(rng.integers(len(colours)))], 0.02), 0.95, 0.0, "stone")
+
+    if variant == "stick":
+        L, r = rng.uniform(0.07, 0.085), 0.0055
+        return [make_part("stick", "stick", S.frustum(r, r * 0.9, L, center=(-L / 2, 0, r), axis=(1, 0, 0), sections=12), chalk_mat())]
+    if variant == "sidewalk":
+        L, r = rng.uniform(0.1, 0.12), rng.uniform(0.012, 0.014)
+        return [make_part(f"stick_{k}", "stick", S.cylinder(r, L, center=(0, (k - 1) * 2.1 * r, r), axis=(1, 0, 0), sections=16),
+                          chalk_mat()) for k in range(3)]
+    # an open box of a dozen sticks standing in rows
+    n_x, n_y = 4, 3
+    r, L = 0.0055, 0.08
+    w, d, h = n_x * 2.2 * r + 0.006, n_y * 2.2 * r + 0.006, L * 0.7
+    card = M.paper(rng)
+    walls = [S.box((w, 0.0015, h), center=(0, sy * (d / 2 - 0.00075), h / 2)) for sy in (-1, 1)]
+    walls += [S.box((0.0015, d - 0.003, h), center=(sx * (w / 2 - 0.00075), 0, h / 2)) for sx in (-1, 1)]
+    walls.append(S.box((w - 0.003, d - 0.003, 0.0015), center=(0, 0, 0.00075)))
+    parts = [make_part("box", "box", walls, card),
+             make_part("lid", "lid", S.box((w, 0.0015, h * 0.9), center=(0, -d / 2 - 0.00075 - 0.0003, h * 0.45)), card)]
+    for i in range(n_x):
+        for j in range(n_y):
+            parts.append(make_part(f"stick_{i}_{j}", "stick",
+                                   S.cylinder(r, L, center=(-w / 2 + 0.003 + 2.2 * r * (i + 0.5), -d / 2 + 0.003 + 2.2 * r * (j + 0.5),
+                                                            0.0015 + L / 2), sections=10), chalk_mat()))
+    return parts
+
+
+@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial"),
+          size_range=(0.2, 1.1), density=250, variants=("desk", "floor", "cradle"), placement="surface")
+def globe(rng: np.random.Generator, variant: str) -> list[Part]:
+    wood = M.wood(rng)
+    brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
+    sea = Material(M.jitter(rng, [(0.35, 0.55, 0.75), (0.75, 0.65, 0.45), (0.1, 0.15, 0.3)][int(rng.integers(3))], 0.03), 0.5, 0.0,
+                   "paper")
+    R = rng.uniform(0.13, 0.17) if variant != "floor" else rng.uniform(0.2, 0.25)
+    tilt = np.deg2rad(23.4)
+    parts = []
+    if variant == "floor":
+        zc = rng.uniform(0.62, 0.7)
+        zr = zc - R - 0.05  # the horizon ring's stand top
+        for k in range(3):
+            a = np.pi / 2 + 2 * np.pi * k / 3
+            parts.append(make_part(f"leg_{k}", "leg", S.tube([(0.08 * np.cos(a), 0.08 * np.sin(a), zr),
+                                                            (0.3 * np.cos(a), 0.3 * np.sin(a), 0.015)], 0.015, sections=10), wood))
+        parts.append(make_part("base", "base", S.cylinder(0.1, 0.04, center=(0, 0, zr + 0.02), sections=24), wood))
+        parts.append(make_part("stand", "stand", S.cylinder(0.02, 0.05, center=(0, 0, zr + 0.065), sections=12), wood))
+    elif variant == "cradle":  # the sphere sits in a low ring on short feet, no meridian
+        zc = R * 0.75 + 0.03
+        parts.append(make_part("base", "base", ring([(R * 0.6, 0.0), (R * 0.75, 0.0), (R * 0.75, 0.03), (R * 0.6, 0.03)]), wood))
+        parts.append(make_part("stand", "stand", ring([(R * 0.62, 0.03), (R * 0.7, 0.03), (R * 0.7, zc - R * 0.6),
+                                                       (R * 0.62, zc - R * 0.6)]), brass))
+        parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=3), sea))
+        return parts
+    else:
+        zc = R + rng.uniform(0.12, 0.16)
+        parts.append(make_part("base", "base", S.lathe([(0.001, 0.0), (R * 0.65, 0.0), (R * 0.6, 0.02), (R * 0.2, 0.04), (0.001, 0.045)],
+                                                       sections=24), wood))
+        parts.append(make_part("stand", "stand", S.cylinder(0.012, zc - R - 0.045 - 0.01, center=(0, 0, 0.045 + (zc - R - 0.055) / 2),
+                                                            sections=12), wood))
+    # the meridian: a half ring around the sphere in the x-z plane tilted about y, with axle pins
+    rm = R + 0.012
+    Rm = rot((0, 1, 0), tilt) @ rot((1, 0, 0), np.pi / 2)
+    T = np.eye(4)
+    T[:3, :3] = Rm
+    T[:3, 3] = (0, 0, zc)
+    mer = S.transformed(ring([(rm - 0.004, -0.006), (rm + 0.004, -0.006), (rm + 0.004, 0.006), (rm - 0.004, 0.006)], sections=32,
+                             piece_sections=32), T)
+    parts.append(make_part("meridian", "meridian", mer, brass))
+    ax = rot((0, 1, 0), tilt) @ np.array([0, 0, 1.0])
+    parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=3), sea))
+    for k, s in enumerate((-1, 1)):
+        c = np.array([0, 0, zc]) + s * ax * (R + 0.006)
+        parts.append(make_part(f"axle_{k}", "axle", S.cylinder(0.004, 0.014, center=tuple(c), axis=tuple(ax), sections=8), brass))
+    top = np.array([0, 0, zc]) + ax * (rm + 0.012)
+    parts.append(make_part("finial", "finial", S.ellipsoid((0.008, 0.008, 0.008), center=tuple(top), subdivisions=1), brass))
+    return parts
