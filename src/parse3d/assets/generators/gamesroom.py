@@ -2,8 +2,9 @@
 and their controllers, bean bags and neon signs.
 
 A pool cue stands upright (butt down, tip up) as it leans on a wall or stands in a rack; a cue
-rack hangs on a wall with its cues' butts in the cups of its lower ``rest`` and their shafts in
-the slots of the upper ``holder``. A neon sign's tubes face +Y in front of its backplate.
+rack hangs on a wall with its cues' butts in the cups on its lower ``rest`` and their shafts in
+the slots of the upper ``clip``; ``holder`` names the cups and the clip together, so a cue IN
+``cue_rack:holder`` stands in a cup. A neon sign's tubes face +Y in front of its backplate.
 """
 
 from __future__ import annotations
@@ -66,8 +67,14 @@ def pool_cue(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cue_rack", parts=("holder", "rest"), extra_parts=("back_panel", "shelf", "cup", "screw", "cue", "base",
-                                                             "post", "lip"),
+def _cup() -> S.Shape:
+    """A cup a cue's butt stands in: 4.4 cm across, 2.5 cm deep, its floor an internal support."""
+    return S.vessel([(0.022, 0.0), (0.022, 0.025)], 0.003, bottom=0.003, sections=12, piece_sections=12)
+
+
+@register("cue_rack", parts=("holder", "rest"), extra_parts=("back_panel", "shelf", "cup", "clip", "screw", "base", "post",
+                                                             "lip"),
+          groups={"holder": ("clip", "cup")},
           size_range=(0.6, 1.4), density=600, variants=("wall", "wall_shelf", "floor"), placement="wall")
 def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -82,8 +89,11 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("post", "post", S.cylinder(0.025, h - 0.04, center=(0, 0, 0.04 + (h - 0.04) / 2), sections=16),
                                wood))
         parts.append(make_part("rest", "rest", S.cylinder(w / 2 - 0.01, 0.03, center=(0, 0, 0.055), sections=32), wood))
-        parts.append(make_part("holder", "holder", S.cylinder(w / 2 - 0.01, 0.03, center=(0, 0, h - 0.25), sections=32),
-                               wood))
+        parts.append(make_part("clip", "clip", S.cylinder(w / 2 - 0.01, 0.03, center=(0, 0, h - 0.25), sections=32), wood))
+        for k in range(n):  # a cup for each butt round the rest
+            a = 2 * np.pi * k / n
+            c = ((w / 2 - 0.04) * np.cos(a), (w / 2 - 0.04) * np.sin(a))
+            parts.append(make_part(f"cup_{k}", "cup", _cup().moved((c[0], c[1], 0.07)), wood))
         parts.append(make_part("lip", "lip", S.cylinder(0.05, 0.03, center=(0, 0, h - 0.015), sections=16), wood))
         return parts
     t = 0.02
@@ -93,13 +103,14 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("rest", "rest", S.box((w, d, 0.03), center=(0, t + d / 2, 0.015), bevel=0.003), wood))
     for k in range(n):
         x = -w / 2 + 0.03 + pitch * (k + 0.5)
-        parts.append(make_part(f"cup_{k}", "cup", S.cylinder(0.018, 0.008, center=(x, t + d / 2, 0.034), sections=12), brass))
-    # the holder: a bar near the top with a tooth between neighbouring slots
+        parts.append(make_part(f"cup_{k}", "cup", _cup().moved((x, t + d / 2, 0.03)), brass))
+    # the clip: a bar near the top with a tooth between neighbouring slots (the cups and the clip
+    # together are what a person calls the holder)
     zh = h - 0.2
-    parts.append(make_part("holder", "holder", S.box((w, 0.03, 0.04), center=(0, t + 0.015, zh), bevel=0.003), wood))
+    parts.append(make_part("clip", "clip", S.box((w, 0.03, 0.04), center=(0, t + 0.015, zh), bevel=0.003), wood))
     for k in range(n + 1):
         x = -w / 2 + 0.03 + pitch * k
-        parts.append(make_part(f"holder_tooth_{k}", "holder", S.box((0.016, d - 0.03, 0.04),
+        parts.append(make_part(f"clip_tooth_{k}", "clip", S.box((0.016, d - 0.03, 0.04),
                                                                     center=(x, t + 0.03 + (d - 0.03) / 2, zh), bevel=0.002),
                                wood))
     if variant == "wall_shelf":  # a small shelf at the top for the balls and chalk
