@@ -14,6 +14,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, revolute, rot
 
 
@@ -28,7 +29,7 @@ def _lid_box(w: float, d: float, h: float, t: float, z0: float) -> list[S.Shape]
 
 @register("record_player", parts=("base", "platter", "tonearm"),
           extra_parts=("dust_cover", "spindle", "headshell", "counterweight", "knob", "button", "foot",
-                       "hinge", "handle", "slipmat"),
+                       "hinge", "handle"),
           size_range=(0.3, 0.52), density=450, variants=("hifi", "open", "suitcase"), placement="surface")
 def record_player(rng: np.random.Generator, variant: str) -> list:
     w, d = rng.uniform(0.40, 0.46), rng.uniform(0.33, 0.37)
@@ -44,24 +45,22 @@ def record_player(rng: np.random.Generator, variant: str) -> list:
     parts = [make_part("base", "base", S.box((w, d, hb), center=(0, 0, z0 + hb / 2), bevel=0.004), plinth)]
     parts += feet4("foot", w=w, d=d, r=0.02, h=z0, mat=black, inset=0.01)
     zt = z0 + hb
-    r = 0.15 if variant != "suitcase" else rng.uniform(0.12, 0.13)
+    r = 0.156 if variant != "suitcase" else rng.uniform(0.12, 0.13)  # an LP (30.5 cm) fits a full-size platter
     px = -w / 2 + r + 0.03
-    parts.append(make_part("platter", "platter", S.cylinder(r, 0.02, center=(px, 0.0, zt + 0.01), sections=32), alu))
-    parts.append(make_part("slipmat", "slipmat", S.cylinder(r - 0.004, 0.003, center=(px, 0.0, zt + 0.0215),
-                                                            sections=32), black))
-    parts.append(make_part("spindle", "spindle", S.cylinder(0.0036, 0.018, center=(px, 0.0, zt + 0.032),
+    # the platter with its felt mat on top (one part: its top is where a record lies)
+    parts.append(make_part("platter", "platter", [S.cylinder(r, 0.02, center=(px, 0.0, zt + 0.01), sections=32),
+                                                  S.cylinder(r - 0.0015, 0.003, center=(px, 0.0, zt + 0.0215), sections=32)],
+                           alu))
+    parts.append(make_part("spindle", "spindle", S.cylinder(0.003, 0.018, center=(px, 0.0, zt + 0.032),
                                                             sections=8), alu))
-    # the tonearm: a pivot post at the back right, the arm resting over the record's edge
-    ax, ay = px + r + 0.04, -0.08
-    if ax > w / 2 - 0.025:
-        ax = w / 2 - 0.025
+    # the tonearm: a pivot post at the back right, the arm in its rest beside the platter
+    ax, ay = min(px + r + 0.04, w / 2 - 0.025), -0.08
     parts.append(make_part("tonearm_base", "tonearm", S.cylinder(0.022, 0.025, center=(ax, ay, zt + 0.0125),
                                                                  sections=16), alu))
-    tip = (px + r * 0.45, 0.1, zt + 0.035)
-    parts.append(make_part("tonearm", "tonearm", S.tube([(ax, ay, zt + 0.035), (ax - 0.01, 0.04, zt + 0.035), tip],
-                                                        0.004, sections=8), alu))
-    parts.append(make_part("headshell", "headshell", S.box((0.018, 0.045, 0.01), center=(tip[0] - 0.004, tip[1] + 0.02,
-                                                                                      zt + 0.033)), black))
+    tip = (max(ax - 0.012, px + r + 0.012), 0.1, zt + 0.035)
+    parts.append(make_part("tonearm", "tonearm", S.tube([(ax, ay, zt + 0.035), tip], 0.004, sections=8), alu))
+    parts.append(make_part("headshell", "headshell", S.box((0.012, 0.04, 0.01), center=(tip[0], tip[1] + 0.02,
+                                                                                     zt + 0.033)), black))
     parts.append(make_part("counterweight", "counterweight", S.cylinder(0.013, 0.025, center=(ax, ay - 0.035, zt + 0.035),
                                                                         axis=(0, 1, 0), sections=12), alu))
     parts.append(make_part("knob", "knob", S.cylinder(0.012, 0.012, center=(w / 2 - 0.035, d / 2 - 0.04, zt + 0.006),
@@ -95,9 +94,13 @@ def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
         s = 0.314
         parts.append(make_part("sleeve", "sleeve", S.box((s, s, 0.003), center=(0, 0, 0.0015)), M.paper(rng)))
         z = 0.003
-    parts.append(make_part("disc", "disc", S.cylinder(r, 0.0018, center=(0, 0, z + 0.0009), sections=40), vinyl))
-    parts.append(make_part("label", "label", S.cylinder(0.05 if variant != "single" else 0.045, 0.0004,
-                                                        center=(0, 0, z + 0.002), sections=24), M.paper(rng)))
+    # the disc and its label are rings round the centre hole (7.24 mm; a single's 38 mm), so a
+    # record lies on a platter over its spindle
+    hole = 0.00362 if variant != "single" else 0.019
+    rl = 0.05 if variant != "single" else 0.045
+    parts.append(make_part("disc", "disc", ring([(rl, z), (r, z), (r, z + 0.0018), (rl, z + 0.0018)], sections=32), vinyl))
+    parts.append(make_part("label", "label", ring([(hole, z), (rl, z), (rl, z + 0.0022), (hole, z + 0.0022)], sections=16),
+                           M.paper(rng)))
     return parts
 
 

@@ -18,6 +18,7 @@ from ._kit import revolute, rot
 
 
 @register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap"),
+          groups={"body": ("barrel", "grip", "cap", "end_cap", "button")},
           size_range=(0.11, 0.17), density=1100, variants=("ballpoint", "capped", "fountain"), placement="surface")
 def pen(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.13, 0.15)
