@@ -1,8 +1,11 @@
-"""Desk and classroom things: pens, notebooks, chalk and globes.
+"""Desk and classroom things: pens and markers, notebooks, binders and magazines, sticky notes,
+chalk, board erasers and globes.
 
-A pen and a chalk stick lie flat along X (a pen's tip at +X); a notebook lies closed, its spine
-at -X and the front cover on top, opening on a hinge along the spine. A globe stands on its
-base with the sphere's axis tilted 23.4 degrees in its meridian ring.
+A pen, a marker and a chalk stick lie flat along X (the tip at +X). Notebooks, binders and
+magazines stand in a book's frame (``book``): upright, the front cover facing +Y, the spine at
+-X, so ``notebook:back_cover@back ON table`` lays one down as it does a book; a notebook's front
+cover opens on a hinge along its spine. A globe stands on its base with the sphere's axis tilted
+23.4 degrees in its meridian ring.
 """
 
 from __future__ import annotations
@@ -11,10 +14,35 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Material, Part, make_part
+from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._household import ring
 from ._kit import revolute, rot
+
+
+#: Lying (front cover up, top edge at -Y) to the book frame (front cover +Y, top edge up).
+_UP = rot((1, 0, 0), -np.pi / 2)
+
+
+def _stand_up(items: list) -> list:
+    """Parts and joints built lying flat, turned into the book frame (a rotation about X)."""
+    T = np.eye(4)
+    T[:3, :3] = _UP
+    out = []
+    for it in items:
+        if isinstance(it, Joint):
+            out.append(Joint(it.name, it.type, it.parent_part, it.child_part, tuple(float(x) for x in _UP @ it.axis),
+                             tuple(float(x) for x in _UP @ it.origin), it.limits))
+            continue
+        mesh = it.mesh.copy()
+        mesh.apply_transform(T)
+        pieces = []
+        for p in it.pieces:
+            q = p.copy()
+            q.apply_transform(T)
+            pieces.append(q)
+        out.append(Part(it.name, it.label, mesh, it.material, pieces, watertight=it.watertight))
+    return out
 
 
 @register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap"),
@@ -69,10 +97,15 @@ def pen(rng: np.random.Generator, variant: str) -> list[Part]:
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.14, 0.32), density=600, variants=("spiral", "bound", "legal_pad"), placement="surface")
 def notebook(rng: np.random.Generator, variant: str) -> list:
+    return _stand_up(_notebook_lying(rng, variant))
+
+
+def _notebook_lying(rng: np.random.Generator, variant: str) -> list:
     w, d = [(0.148, 0.21), (0.21, 0.297), (0.19, 0.25), (0.13, 0.21)][int(rng.integers(4))]
     if variant == "legal_pad":
         w, d = 0.216, rng.uniform(0.3, 0.31)
-    # lying with its long side along Y, spine at -X; a legal pad is bound at its top edge (+Y)
+    # built lying, its long side along Y with the top edge at -Y, spine at -X; a legal pad is
+    # bound at its top edge
     n_pages = rng.uniform(0.008, 0.016) if variant != "legal_pad" else rng.uniform(0.006, 0.012)
     tc = 0.0012 if variant != "bound" else 0.0025
     cover = M.paper(rng) if variant != "bound" else M.leather(rng)
@@ -99,16 +132,16 @@ def notebook(rng: np.random.Generator, variant: str) -> list:
         parts.append(make_part("spine", "spine", S.box((0.004, d, zt), center=(-w / 2 - 0.002, 0, zt / 2)), cover))
         parts.append(make_part("band", "band", S.box((0.006, d + 0.002, zt + 0.002), center=(w / 2 - 0.025, 0, zt / 2 + 0.001)),
                                M.solid((0.05, 0.05, 0.05), "rubber", 0.8)))
-        parts.append(make_part("ribbon", "ribbon", S.box((0.006, 0.05, 0.0005), center=(-w * 0.1, -d / 2 - 0.02, 0.00025)),
+        parts.append(make_part("ribbon", "ribbon", S.box((0.006, 0.05, 0.0005), center=(-w * 0.1, d / 2 + 0.02, 0.00025)),
                                Material(M.jitter(rng, (0.6, 0.1, 0.1)), 0.6, 0.0, "fabric")))
         origin = (-w / 2, 0.0, zt)
     else:
-        parts.append(make_part("binding", "binding", S.box((w + 0.002, 0.02, zt + 0.002), center=(0, d / 2 - 0.009, zt / 2 + 0.001)),
+        parts.append(make_part("binding", "binding", S.box((w + 0.002, 0.02, zt + 0.002), center=(0, -d / 2 + 0.009, zt / 2 + 0.001)),
                                M.solid((0.5, 0.1, 0.1), "paper", 0.7)))
-        parts.append(make_part("spine", "spine", S.box((w, 0.001, zt), center=(0, d / 2 + 0.0015, zt / 2)),
+        parts.append(make_part("spine", "spine", S.box((w, 0.001, zt), center=(0, -d / 2 - 0.0015, zt / 2)),
                                M.solid((0.6, 0.5, 0.35), "paper", 0.9)))
         # a pad's top sheet flips over its binding at the top edge
-        return parts + [revolute("front_cover_hinge", "binding", "front_cover", axis=(1, 0, 0), origin=(0, d / 2 - 0.02, zt),
+        return parts + [revolute("front_cover_hinge", "binding", "front_cover", axis=(1, 0, 0), origin=(0, -d / 2 + 0.02, zt),
                                  opens=np.pi * 0.9)]
     parts.append(revolute("front_cover_hinge", "pages", "front_cover", axis=(0, -1, 0), origin=origin, opens=np.pi * 0.9))
     return parts
