@@ -19,7 +19,6 @@ from ..registry import register
 from ._household import ring
 from ._kit import revolute, rot
 
-
 #: Lying (front cover up, top edge at -Y) to the book frame (front cover +Y, top edge up).
 _UP = rot((1, 0, 0), -np.pi / 2)
 
@@ -228,4 +227,139 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"axle_{k}", "axle", S.cylinder(0.004, 0.014, center=tuple(c), axis=tuple(ax), sections=8), brass))
     top = np.array([0, 0, zc]) + ax * (rm + 0.012)
     parts.append(make_part("finial", "finial", S.ellipsoid((0.008, 0.008, 0.008), center=tuple(top), subdivisions=1), brass))
+    return parts
+
+
+@register("binder", parts=("front_cover", "back_cover", "spine"),
+          extra_parts=("ring", "mechanism", "pages", "label", "finger_hole", "lever"),
+          groups={"cover": ("front_cover", "back_cover")},
+          size_range=(0.24, 0.34), density=450, variants=("ring", "slim", "lever_arch"), placement="surface")
+def binder(rng: np.random.Generator, variant: str) -> list:
+    return _stand_up(_binder_lying(rng, variant))
+
+
+def _binder_lying(rng: np.random.Generator, variant: str) -> list:
+    w, d = rng.uniform(0.27, 0.29), rng.uniform(0.31, 0.32)  # A4 / letter, lying, top edge at -Y
+    T = {"ring": rng.uniform(0.04, 0.06), "slim": rng.uniform(0.02, 0.03), "lever_arch": rng.uniform(0.075, 0.085)}[variant]
+    tc = 0.003
+    cover = Material(M.jitter(rng, [(0.1, 0.2, 0.6), (0.05, 0.05, 0.05), (0.7, 0.1, 0.1), (0.9, 0.9, 0.9), (0.2, 0.5, 0.3)]
+                              [int(rng.integers(5))], 0.03), 0.5, 0.0, "plastic")
+    metal = M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)
+    parts = [make_part("back_cover", "back_cover", S.box((w, d, tc), center=(0, 0, tc / 2)), cover),
+             make_part("spine", "spine", S.box((tc, d, T), center=(-w / 2 - tc / 2, 0, T / 2)), cover),
+             make_part("front_cover", "front_cover", S.box((w, d, tc), center=(0, 0, T - tc / 2)), cover)]
+    # the ring mechanism on the back cover near the spine, the rings through the punched pages
+    xm = -w / 2 + 0.03
+    parts.append(make_part("mechanism", "mechanism", S.box((0.03, d * 0.7, 0.004), center=(xm, 0, tc + 0.002)), metal))
+    n = 2 if variant != "ring" else 3
+    rr = min(T / 2 - tc - 0.002, 0.03)
+    Tr = np.eye(4)
+    Tr[:3, :3] = rot((1, 0, 0), np.pi / 2)
+    for k in range(n):
+        y = (k - (n - 1) / 2) * (0.108 if n == 3 else 0.08)
+        Tr[:3, 3] = (xm, y, tc + 0.004 + rr)
+        parts.append(make_part(f"ring_{k}", "ring", S.transformed(ring([(rr - 0.0025, -0.0015), (rr, -0.0015), (rr, 0.0015),
+                                                                        (rr - 0.0025, 0.0015)], sections=12), Tr), metal))
+    pw = w - 0.05
+    ph = max(T - 2 * tc - 0.006, 0.004) * rng.uniform(0.4, 0.9)
+    parts.append(make_part("pages", "pages", S.box((pw, d - 0.01, ph), center=(w / 2 - 0.005 - pw / 2, 0, tc + ph / 2)),
+                           M.solid((0.95, 0.94, 0.9), "paper", 0.9)))
+    parts.append(make_part("label", "label", S.box((0.0008, d * 0.35, T * 0.6), center=(-w / 2 - tc - 0.0004, -d * 0.15, T / 2)),
+                           M.solid((0.95, 0.95, 0.92), "paper", 0.9)))
+    if variant == "lever_arch":
+        parts.append(make_part("finger_hole", "finger_hole", ring([(0.012, 0), (0.016, 0), (0.016, 0.002), (0.012, 0.002)],
+                                                                  sections=12).apply(_x_out(-w / 2 - tc, d * 0.3, T / 2)), metal))
+        parts.append(make_part("lever", "lever", S.box((0.012, 0.06, 0.01), center=(xm + 0.02, d * 0.3, tc + 0.009)), metal))
+    return parts + [revolute("front_cover_hinge", "spine", "front_cover", axis=(0, -1, 0), origin=(-w / 2, 0.0, T - tc),
+                             opens=np.pi * 0.9)]
+
+
+def _x_out(x: float, y: float, z: float) -> np.ndarray:
+    """A ring about +Z turned to face -X and moved to (x, y, z)."""
+    T = np.eye(4)
+    T[:3, :3] = rot((0, 1, 0), -np.pi / 2)
+    T[:3, 3] = (x, y, z)
+    return T
+
+
+@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple"),
+          groups={"cover": ("front_cover", "back_cover")},
+          size_range=(0.2, 0.42), density=800, variants=("glossy", "stapled", "tabloid"), placement="surface")
+def magazine(rng: np.random.Generator, variant: str) -> list:
+    w, d = (rng.uniform(0.2, 0.23), rng.uniform(0.27, 0.3)) if variant != "tabloid" else (rng.uniform(0.27, 0.29),
+                                                                                           rng.uniform(0.36, 0.4))
+    T = rng.uniform(0.004, 0.012) if variant == "glossy" else rng.uniform(0.002, 0.005)
+    tc = 0.0004
+    cover = M.paper(rng)
+    parts = [make_part("back_cover", "back_cover", S.box((w, d, tc), center=(0, 0, tc / 2)), cover),
+             make_part("pages", "pages", S.box((w - 0.001, d - 0.001, T - 2 * tc), center=(0.0005, 0, T / 2)),
+                       M.solid((0.93, 0.92, 0.9), "paper", 0.6)),
+             make_part("front_cover", "front_cover", S.box((w, d, tc), center=(0, 0, T - tc / 2)), cover)]
+    if variant == "glossy":
+        parts.append(make_part("spine", "spine", S.box((0.0008, d, T), center=(-w / 2 - 0.0004, 0, T / 2)), cover))
+    else:
+        for k, y in enumerate((-d * 0.25, d * 0.25)):
+            parts.append(make_part(f"staple_{k}", "staple", S.box((0.0012, 0.012, T + 0.0004), center=(-w / 2 + 0.0006, y, T / 2)),
+                                   M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+    return _stand_up(parts)
+
+
+@register("marker", parts=("barrel", "cap"), extra_parts=("tip", "clip", "end_cap", "grip"),
+          groups={"body": ("barrel", "end_cap")},
+          size_range=(0.1, 0.16), density=900, variants=("whiteboard", "permanent", "highlighter"), placement="surface")
+def marker(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = rng.uniform(0.125, 0.14)
+    r = {"whiteboard": 0.0085, "permanent": 0.0065, "highlighter": 0.008}[variant]
+    ink = M.solid([(0.05, 0.05, 0.05), (0.1, 0.2, 0.7), (0.75, 0.1, 0.1), (0.1, 0.5, 0.2), (0.95, 0.9, 0.1)][int(rng.integers(5))],
+                  "plastic", 0.4)
+    body = M.solid((0.95, 0.95, 0.93), "plastic", 0.4) if variant != "highlighter" else ink
+    zc = r + (0.002 if variant == "permanent" else 0.0)
+    lcap = 0.045
+    lb = L - lcap + 0.01
+    x0 = -L / 2
+    parts = [make_part("barrel", "barrel", S.cylinder(r, lb, center=(x0 + lb / 2, 0, zc), axis=(1, 0, 0), sections=16), body),
+             make_part("end_cap", "end_cap", S.cylinder(r * 0.95, 0.008, center=(x0 + 0.004, 0, zc), axis=(1, 0, 0), sections=16), ink),
+             make_part("cap", "cap", S.cylinder(r * 1.12, lcap, center=(L / 2 - lcap / 2, 0, zc), axis=(1, 0, 0), sections=16), ink)]
+    parts.append(make_part("tip", "tip", S.frustum(r * 0.5, r * 0.3, 0.012, center=(x0 + lb, 0, zc), axis=(1, 0, 0), sections=10),
+                           M.solid((0.9, 0.9, 0.9), "fabric", 0.9)))
+    if variant == "permanent":
+        parts.append(make_part("clip", "clip", S.box((0.03, 0.003, 0.002), center=(L / 2 - 0.02, 0, zc + r * 1.12 + 0.001)), ink))
+    return parts
+
+
+@register("sticky_note", parts=("sheet",), extra_parts=("pad", "holder"),
+          size_range=(0.04, 0.13), density=700, variants=("pad", "cube", "single"), placement="surface")
+def sticky_note(rng: np.random.Generator, variant: str) -> list[Part]:
+    s = [0.076, 0.076, 0.051, 0.127][int(rng.integers(4))]
+    col = M.solid(M.jitter(rng, [(0.98, 0.92, 0.4), (0.98, 0.6, 0.7), (0.6, 0.85, 0.95), (0.7, 0.95, 0.5)][int(rng.integers(4))],
+                           0.02)[:3], "paper", 0.9)
+    if variant == "single":
+        return [make_part("sheet", "sheet", S.box((s, s, 0.0003), center=(0, 0, 0.00015)), col)]
+    h = rng.uniform(0.005, 0.012) if variant == "pad" else rng.uniform(0.035, 0.05)
+    parts = [make_part("pad", "pad", S.box((s, s, h), center=(0, 0, h / 2)), col),
+             make_part("sheet", "sheet", S.box((s, s, 0.0003), center=(0, 0, h + 0.00015)), col)]
+    if variant == "cube":  # in a clear holder open at the top
+        t = 0.002
+        walls = [S.box((s + 2 * t, t, h * 0.8), center=(0, sy * (s / 2 + t / 2), h * 0.4)) for sy in (-1, 1)]
+        walls += [S.box((t, s, h * 0.8), center=(sx * (s / 2 + t / 2), 0, h * 0.4)) for sx in (-1, 1)]
+        parts.append(make_part("holder", "holder", walls, Material((0.9, 0.92, 0.95, 0.3), 0.1, 0.0, "plastic")))
+    return parts
+
+
+@register("whiteboard_eraser", parts=("body", "pad"), extra_parts=("grip", "felt_layer"),
+          size_range=(0.1, 0.17), density=400, variants=("block", "handled", "magnetic"), placement="surface")
+def whiteboard_eraser(rng: np.random.Generator, variant: str) -> list[Part]:
+    w, d = rng.uniform(0.12, 0.155), rng.uniform(0.05, 0.06)
+    felt = M.solid((0.2, 0.2, 0.22) if rng.random() < 0.5 else (0.9, 0.9, 0.88), "fabric", 0.95)
+    shell = M.plastic(rng) if variant != "block" else M.wood(rng)
+    hp = 0.012
+    parts = [make_part("pad", "pad", S.box((w, d, hp), center=(0, 0, hp / 2)), felt)]
+    hb = 0.02 if variant != "block" else 0.03
+    parts.append(make_part("body", "body", S.box((w, d, hb), center=(0, 0, hp + hb / 2), bevel=0.004), shell))
+    if variant == "handled":
+        parts.append(make_part("grip", "grip", [S.box((w * 0.7, 0.025, 0.02), center=(0, 0, hp + hb + 0.02), bevel=0.006)]
+                               + [S.box((0.015, 0.02, 0.012), center=(sx * w * 0.3, 0, hp + hb + 0.006)) for sx in (-1, 1)], shell))
+    if variant == "magnetic":
+        parts.append(make_part("felt_layer", "felt_layer", S.box((w - 0.01, d - 0.01, 0.004), center=(0, 0, hp + hb + 0.002)),
+                               M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
     return parts
