@@ -19,7 +19,10 @@ from parse3d.solver import solve
 
 NEW = ["record_player", "vinyl_record", "metronome", "piano_bench", "midi_keyboard", "guitar_stand", "pool_ball",
        "pool_cue", "cue_rack", "game_console", "game_controller", "beanbag", "neon_sign", "vise", "pliers", "paint_can",
-       "toolbox", "coat_hook", "pen", "notebook", "chalk", "globe", "blanket", "bicycle"]
+       "toolbox", "coat_hook", "pen", "notebook", "chalk", "globe", "blanket", "bicycle", "binder", "magazine", "marker",
+       "sticky_note", "whiteboard_eraser", "jar", "lantern", "hanging_scroll", "violin_case", "service_bell", "chess_board",
+       "chess_piece", "faucet", "vessel_sink", "pedestal_sink", "utility_sink", "coaster", "croissant", "jewelry_box",
+       "folding_screen", "dog_bed", "laptop_stand"]
 
 
 @cache
@@ -43,6 +46,8 @@ def test_every_new_category_is_registered_with_its_variants():
 @pytest.mark.parametrize(("category", "variant", "label"), [
     ("toolbox", "metal", "tray"), ("toolbox", "plastic", "tray"),
     ("piano_bench", "storage", "compartment"), ("cue_rack", "wall", "cup"), ("cue_rack", "floor", "cup"),
+    ("jar", "mason", "body"), ("jar", "water", "body"), ("jewelry_box", "hinged", "tray"), ("vessel_sink", "oval", "basin"),
+    ("pedestal_sink", "round", "basin"), ("utility_sink", "double", "basin"),
 ])
 def test_supports_inside(category, variant, label):
     """A toolbox's lift-out tray, a storage bench's compartment floor and a cue rack's cups are
@@ -70,6 +75,7 @@ def test_cue_rack_holder_names_its_cups_and_clip():
     ("toolbox", "metal", "lid", "revolute"), ("record_player", "hifi", "dust_cover", "revolute"),
     ("piano_bench", "storage", "seat", "revolute"), ("vise", "bench", "jaw_1", "prismatic"),
     ("notebook", "spiral", "front_cover", "revolute"), ("notebook", "legal_pad", "front_cover", "revolute"),
+    ("violin_case", "shaped", "lid", "revolute"), ("jewelry_box", "drawers", "lid", "revolute"),
 ])
 def test_joints_where_the_real_thing_has_them(category, variant, moving, kind):
     a = _asset(category, variant)
@@ -82,7 +88,7 @@ def test_joints_where_the_real_thing_has_them(category, variant, moving, kind):
     if kind == "revolute":  # lids and covers swing out of the closed asset's box
         box = a.bounds
         assert max((after[1] - box[1]).max(), (box[0] - after[0]).max()) > 0.02
-        if category != "notebook":  # lids lift
+        if category not in ("notebook", "binder"):  # lids lift
             assert after[1, 2] > before[1, 2] + 0.02
         else:  # a notebook stands like a book: its front cover swings forward (+Y)
             assert after[1, 1] > box[1, 1] + 0.02
@@ -160,3 +166,25 @@ def test_small_rooms_solve(room):
     assert not failed
     assert all(c.holds for c in scene.relations), [(c.child, c.relation, c.parent, c.detail) for c in scene.relations
                                                    if not c.holds]
+
+
+def test_book_frame_and_part_words():
+    """Binders and magazines stand like books (covers facing ±Y, spine at -X), as the outsiders'
+    ``binder:cover@front`` and ``magazine:back_cover@back ON table`` take them; ``cover`` names
+    both covers."""
+    for cat, variant in (("binder", "lever_arch"), ("magazine", "glossy")):
+        a = _asset(cat, variant)
+        assert {p.label for p in a.parts_by_label("cover")} == {"front_cover", "back_cover"}
+        assert a.part("front_cover").bounds[0, 1] > a.part("back_cover").bounds[1, 1]
+        assert a.extents[2] > 3 * a.extents[1]  # upright and thin
+    scroll = _asset("hanging_scroll", "vertical")
+    assert scroll.part("paper").bounds[0, 1] <= scroll.bounds[0, 1] + 1e-9  # the paper lies flat on the wall
+    lamp = _asset("lantern", "paper")
+    assert _box(lamp, "cord")[1, 2] >= lamp.bounds[1, 2] - 1e-9  # it hangs from its cord
+    assert len(_asset("chess_board", "flat").parts_by_label("square")) == 32
+
+
+def test_chess_pieces_differ_by_their_heads():
+    heights = {v: _asset("chess_piece", v).extents[2] for v in ("king", "queen", "bishop", "rook", "pawn")}
+    assert heights["king"] > heights["bishop"] > heights["pawn"]
+    assert heights["queen"] > heights["rook"]

@@ -87,10 +87,10 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
                                                            subdivisions=1), brass))
         parts += [prismatic("drawer_slide", "case", "drawer_box", travel=bd * 0.7), mount("drawer_box", "drawer"), mount("drawer", "knob")]
         z += hd
-    h = rng.uniform(0.05, 0.08)
+    h = rng.uniform(0.075, 0.095)
     parts.append(make_part("body", "body", [s.moved((0, 0, z)) for s in open_box(w, d, h, t)], wood))
     parts.append(make_part("lining", "lining", S.box((w - 2 * t, d - 2 * t, 0.003), center=(0, 0, z + t + 0.0015)), velvet))
-    ht = 0.025
+    ht = 0.046  # deep enough to hold rings and watches under the closed lid
     parts.append(make_part("tray", "tray", [s.moved((0, 0, z + h - ht - 0.002)) for s in open_box(w - 2 * t - 0.004, d - 2 * t - 0.004, ht, 0.004)],
                            velvet))
     zl = z + h

@@ -49,11 +49,7 @@ def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
     return _faucet("", 0.0, 0.0, 0.0, reach=rng.uniform(0.12, 0.2), h=h, mat=chrome, style=variant)
 
 
-def _drain(x: float, y: float, z: float, mat: Material) -> Part:
-    return make_part("drain", "drain", S.cylinder(0.022, 0.003, center=(x, y, z + 0.0015), sections=12), mat)
-
-
-@register("vessel_sink", parts=("basin",), extra_parts=("rim", "base", "drain"),
+@register("vessel_sink", parts=("basin",), extra_parts=("rim", "base"),
           size_range=(0.3, 0.62), density=1500, variants=("round", "oval", "square"), placement="surface")
 def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if rng.random() < 0.7 else M.stone(rng)
@@ -80,12 +76,10 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "oval":
             rim = S.transformed(rim, np.diag([1.0, 0.75, 1.0, 1.0]))
         parts.append(make_part("rim", "rim", rim, mat))
-    parts.append(_drain(0, 0, zb + 0.012, chrome))
     return parts
 
 
-@register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("deck", "rim", "base", "drain", "spout", "handle", "body",
-                                                                     "overflow"),
+@register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("deck", "rim", "base", "spout", "handle", "body", "overflow"),
           size_range=(0.85, 1.05), density=1400, variants=("round", "square", "console"))
 def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     porcelain = M.solid(M.jitter(rng, (0.95, 0.95, 0.94), 0.01)[:3], "ceramic", 0.2)
@@ -112,11 +106,9 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         r = min(w / 2, (d - dd))
         bowl = S.vessel([(r * 0.5, 0.0), (r * 0.85, hb * 0.5), (r, hb)], 0.02, bottom=0.03, sections=24, piece_sections=24)
         T = np.diag([1.0, (d - dd) / (2 * r), 1.0, 1.0])
-        T[1, 3] = -d / 2 + dd
+        T[1, 3] = -d / 2 + dd + (d - dd) / 2
         T[2, 3] = zb
         parts.append(make_part("basin", "basin", S.transformed(bowl, T), porcelain))
-    parts.append(make_part("drain", "drain", S.cylinder(0.02, 0.003, center=(0, -d / 2 + dd + (d - dd) / 2 * 0.9, zb + 0.0315), sections=12),
-                           chrome))
     parts.append(make_part("overflow", "overflow", S.box((0.03, 0.004, 0.012), center=(0, -d / 2 + dd + 0.002, zb + hb - 0.04)), chrome))
     parts += _faucet("faucet_", 0.0, -d / 2 + dd / 2, H, reach=dd * 0.8, h=0.1, mat=chrome, style="single_lever")
     return parts
