@@ -53,7 +53,6 @@ def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
           size_range=(0.3, 0.62), density=1500, variants=("round", "oval", "square"), placement="surface")
 def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if rng.random() < 0.7 else M.stone(rng)
-    chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.15, 0.95)
     h = rng.uniform(0.12, 0.16)
     zb = 0.01
     if variant == "square":
