@@ -84,14 +84,14 @@ def record_player(rng: np.random.Generator, variant: str) -> list:
 
 
 @register("vinyl_record", parts=("disc",), extra_parts=("label", "sleeve"),
-          size_range=(0.17, 0.32), density=900, variants=("lp", "single", "sleeved"), placement="surface")
+          size_range=(0.17, 0.32), density=900, variants=("lp", "single", "bare"), placement="surface")
 def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
     r = 0.1524 if variant != "single" else 0.0889
     vinyl = M.solid((0.03, 0.03, 0.035), "plastic", 0.3)
     z = 0.0
     parts = []
-    if variant == "sleeved":  # lying in its card sleeve; the disc shows at the open edge
-        s = 0.314
+    if variant != "bare":  # lying on its card sleeve
+        s = 0.314 if variant == "lp" else 0.18
         parts.append(make_part("sleeve", "sleeve", S.box((s, s, 0.003), center=(0, 0, 0.0015)), M.paper(rng)))
         z = 0.003
     # the disc and its label are rings round the centre hole (7.24 mm; a single's 38 mm), so a
