@@ -1,5 +1,6 @@
 """Small furnishings the outsiders' rooms name: coasters, jewelry boxes, folding screens, dog
-beds and laptop stands, and a croissant for the café table.
+beds, laptop stands, console tables, a dais, paper towel holders, and a croissant for the café
+table.
 
 A jewelry box's lid lifts on a back hinge over a lift-out ``tray`` (an internal support); a
 folding screen stands as a zigzag of ``panel``s, its back (-Y) the side towards a wall; a
@@ -216,4 +217,95 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
         parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
                                                              sections=10), rubber))
+    return parts
+
+
+@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher"),
+          size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
+def console_table(rng: np.random.Generator, variant: str) -> list:
+    w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
+    wood = M.wood(rng)
+    t = 0.03
+    parts = [make_part("tabletop", "tabletop", S.box((w, d, t), center=(0, 0, h - t / 2), bevel=0.004), wood)]
+    ha = 0.08
+    apron = [S.box((w - 0.08, 0.02, ha), center=(0, sy * (d / 2 - 0.03), h - t - ha / 2)) for sy in (-1, 1)]
+    apron += [S.box((0.02, d - 0.08, ha), center=(sx * (w / 2 - 0.03), 0, h - t - ha / 2)) for sx in (-1, 1)]
+    if variant == "trestle":  # two panel ends joined by a stretcher
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"leg_{k}", "leg", S.box((0.04, d - 0.04, h - t), center=(sx * (w / 2 - 0.06), 0, (h - t) / 2)), wood))
+        parts.append(make_part("stretcher", "stretcher", S.box((w - 0.16, 0.04, 0.06), center=(0, 0, 0.2)), wood))
+        parts.append(make_part("apron", "apron", apron[:2], wood))
+        return parts
+    parts += legs4("leg", "leg", w=w, d=d, h=h - t, size=0.04, mat=wood, inset=0.01)
+    if variant == "drawers":
+        parts.append(make_part("apron", "apron", [apron[0]] + apron[2:], wood))
+        n = 2
+        dw = (w - 0.1) / n
+        for k in range(n):
+            x = -w / 2 + 0.05 + dw * (k + 0.5)
+            bd = d - 0.08
+            parts.append(make_part(f"drawer_{k}_box", "drawer_box", [s.moved((x, 0.0, h - t - ha + 0.004))
+                                                                     for s in open_box(dw - 0.02, bd, ha - 0.012, 0.008)], wood))
+            parts.append(make_part(f"drawer_{k}", "drawer", S.box((dw - 0.012, 0.018, ha - 0.008), center=(x, d / 2 - 0.03 + 0.009, h - t - ha / 2)),
+                                   wood))
+            parts.append(make_part(f"knob_{k}", "knob", S.ellipsoid((0.012, 0.012, 0.012), center=(x, d / 2 - 0.012 + 0.01, h - t - ha / 2),
+                                                                    subdivisions=1), M.metal(rng)))
+            parts += [prismatic(f"drawer_{k}_slide", "tabletop", f"drawer_{k}_box", travel=bd * 0.7),
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"knob_{k}")]
+    else:
+        parts.append(make_part("apron", "apron", apron, wood))
+        parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, rng.uniform(0.15, 0.25))), wood))
+    return parts
+
+
+@register("dais", parts=("top", "base"), extra_parts=("fascia", "foot"),
+          size_range=(0.6, 2.6), density=500, variants=("tokonoma", "stage", "plinth"))
+def dais(rng: np.random.Generator, variant: str) -> list[Part]:
+    wood = M.wood(rng)
+    if variant == "tokonoma":  # a low alcove platform: a thick board on a frame, a lacquered front fascia
+        w, d, h = rng.uniform(1.2, 1.9), rng.uniform(0.45, 0.7), rng.uniform(0.08, 0.15)
+    elif variant == "stage":
+        w, d, h = rng.uniform(1.6, 2.5), rng.uniform(1.0, 1.6), rng.uniform(0.2, 0.4)
+    else:
+        w, d, h = rng.uniform(0.6, 1.0), rng.uniform(0.5, 0.8), rng.uniform(0.2, 0.35)
+    t = 0.03
+    zf = 0.01
+    parts = [make_part("base", "base", S.box((w - 0.04, d - 0.04, h - t - zf), center=(0, -0.01, zf + (h - t - zf) / 2)), wood),
+             make_part("top", "top", S.box((w, d, t), center=(0, 0, h - t / 2), bevel=0.003), wood),
+             make_part("fascia", "fascia", S.box((w, 0.02, h - t), center=(0, d / 2 - 0.01, (h - t) / 2)),
+                       Material(M.jitter(rng, (0.1, 0.06, 0.05), 0.02), 0.3, 0.0, "wood"))]
+    parts += feet4("foot", w=w - 0.06, d=d - 0.06, r=0.02, h=zf, mat=wood)
+    return parts
+
+
+@register("paper_towel_holder", parts=("roll", "rod"), extra_parts=("bracket", "base", "arm", "cap"),
+          size_range=(0.25, 0.4), density=300, variants=("under_cabinet", "wall", "countertop"), placement="wall")
+def paper_towel_holder(rng: np.random.Generator, variant: str) -> list[Part]:
+    L, rr = rng.uniform(0.27, 0.28), rng.uniform(0.055, 0.065)
+    metal = M.solid(M.jitter(rng, (0.75, 0.75, 0.77), 0.03)[:3], "metal", 0.3, 0.9) if rng.random() < 0.6 else M.wood(rng)
+    towel = M.solid((0.96, 0.96, 0.94), "paper", 0.95)
+    parts = []
+    if variant == "countertop":  # a round base with an upright rod, the roll standing on it
+        parts.append(make_part("base", "base", S.cylinder(0.08, 0.015, center=(0, 0, 0.0075), sections=24), metal))
+        parts.append(make_part("rod", "rod", S.cylinder(0.01, L + 0.03, center=(0, 0, 0.015 + (L + 0.03) / 2), sections=12), metal))
+        parts.append(make_part("roll", "roll", S.cylinder(rr, L, center=(0, 0, 0.016 + L / 2), sections=20), towel))
+        parts.append(make_part("cap", "cap", S.ellipsoid((0.016, 0.016, 0.016), center=(0, 0, 0.015 + L + 0.03), subdivisions=1), metal))
+        return parts
+    # a rod across two arms; under a cabinet the bracket is on top, on a wall it is at the back
+    arm = rr + 0.02
+    if variant == "under_cabinet":
+        zc = arm
+        parts.append(make_part("bracket", "bracket", S.box((L + 0.05, 0.06, 0.006), center=(0, 0, 2 * arm - 0.003)), metal))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm", S.box((0.006, 0.04, arm), center=(sx * (L / 2 + 0.015), 0, 2 * arm - 0.006 - arm / 2)),
+                                   metal))
+        yc = 0.0
+    else:
+        zc = arm
+        parts.append(make_part("bracket", "bracket", S.box((L + 0.05, 0.006, 0.06), center=(0, 0.003, zc)), metal))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm", S.box((0.006, arm, 0.04), center=(sx * (L / 2 + 0.015), 0.006 + arm / 2, zc)), metal))
+        yc = 0.006 + arm
+    parts.append(make_part("rod", "rod", S.cylinder(0.01, L + 0.03, center=(0, yc, zc), axis=(1, 0, 0), sections=12), metal))
+    parts.append(make_part("roll", "roll", S.cylinder(rr, L, center=(0, yc, zc), axis=(1, 0, 0), sections=20), towel))
     return parts
