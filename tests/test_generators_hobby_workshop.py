@@ -22,7 +22,7 @@ NEW = ["record_player", "vinyl_record", "metronome", "piano_bench", "midi_keyboa
        "toolbox", "coat_hook", "pen", "notebook", "chalk", "globe", "blanket", "bicycle", "binder", "magazine", "marker",
        "sticky_note", "whiteboard_eraser", "jar", "lantern", "hanging_scroll", "violin_case", "service_bell", "chess_board",
        "chess_piece", "faucet", "vessel_sink", "pedestal_sink", "utility_sink", "coaster", "croissant", "jewelry_box",
-       "folding_screen", "dog_bed", "laptop_stand"]
+       "folding_screen", "dog_bed", "laptop_stand", "console_table", "dais", "paper_towel_holder", "clothes", "luggage_cart"]
 
 
 @cache
@@ -159,7 +159,30 @@ def _music_corner() -> PAG:
     return pag
 
 
-@pytest.mark.parametrize("room", [_garage, _music_corner])
+def _lobby_corner() -> PAG:
+    pag = PAG("lobby-corner", Room("hotel_lobby", ((0, 0), (5, 0), (5, 4), (0, 4)), 2.8))
+    pag.add("cart", "luggage_cart")
+    pag.relate("cart", "ON", "floor")
+    pag.add("case", "suitcase")
+    pag.relate("case", "ON", "cart:deck@top")
+    pag.add("console", "console_table")
+    pag.relate("console", "ON", "floor")
+    pag.relate("console:tabletop@back", "AGAINST", "wall_1")
+    pag.add("player", "record_player")
+    pag.relate("player:base", "ON", "console:tabletop@top")
+    pag.add("jar", "jar")
+    pag.relate("jar", "ON", "console:tabletop@top")
+    pag.add("bell", "service_bell")
+    pag.relate("bell", "ON", "console:tabletop@top")
+    pag.add("scroll", "hanging_scroll")
+    pag.relate("scroll:paper@back", "SECURED_TO", "wall_2", height=[1.1, 1.4])
+    pag.add("sink", "utility_sink")
+    pag.relate("sink", "ON", "floor")
+    pag.relate("sink@back", "AGAINST", "wall_3")
+    return pag
+
+
+@pytest.mark.parametrize("room", [_garage, _music_corner, _lobby_corner])
 def test_small_rooms_solve(room):
     scene = solve(room(), seed=0)
     failed = {o.id: o.reason for o in scene.objects.values() if not o.placed}

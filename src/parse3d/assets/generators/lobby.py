@@ -14,7 +14,7 @@ from ..model import Part, make_part
 from ..registry import register
 
 
-@register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "carpet", "hanger_bar", "basket"),
+@register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "hanger_bar", "basket"),
           size_range=(1.6, 2.0), density=300, variants=("arched", "square", "two_tier"))
 def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     brass = M.solid((0.8, 0.65, 0.3), "metal", 0.25, 0.9) if rng.random() < 0.6 else M.solid((0.8, 0.8, 0.82), "metal", 0.2, 0.95)
@@ -30,12 +30,13 @@ def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
                                                          S.box((0.05, 0.05, zd - 2 * rc), center=(sx * (w / 2 - 0.08), sy * (d / 2 - 0.08),
                                                                                                  2 * rc + (zd - 2 * rc) / 2))],
                                M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
-    parts.append(make_part("deck", "deck", S.box((w, d, td), center=(0, 0, zd + td / 2), bevel=0.01), M.wood(rng)))
-    parts.append(make_part("carpet", "carpet", S.box((w - 0.04, d - 0.04, 0.006), center=(0, 0, zd + td + 0.003)), M.fabric(rng)))
+    # the deck with its carpet (one part: the carpet's top is where luggage stands)
+    parts.append(make_part("deck", "deck", [S.box((w, d, td), center=(0, 0, zd + td / 2), bevel=0.01),
+                                            S.box((w - 0.04, d - 0.04, 0.006), center=(0, 0, zd + td + 0.003))], M.fabric(rng)))
     parts.append(make_part("bumper", "bumper", [S.box((w + 0.03, 0.02, 0.04), center=(0, sy * (d / 2 + 0.01), zd + td / 2)) for sy in (-1, 1)],
                            M.solid((0.15, 0.15, 0.15), "rubber", 0.8)))
     r = 0.019
-    zt = zd + td
+    zt = zd + td + 0.006
     for k, sx in enumerate((-1, 1)):
         parts.append(make_part(f"post_{k}", "post", S.cylinder(r, H - zt - 0.25, center=(sx * (w / 2 - 0.03), 0, zt + (H - zt - 0.25) / 2),
                                                                sections=12), brass))
