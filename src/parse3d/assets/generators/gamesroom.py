@@ -16,6 +16,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._kit import feet4
+from ._rods import rod, segments
 
 _BALL_COLOURS = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.85, 0.1, 0.1), (0.4, 0.1, 0.5), (0.95, 0.45, 0.05),
                  (0.05, 0.45, 0.2), (0.5, 0.1, 0.1), (0.05, 0.05, 0.05)]
@@ -255,11 +256,6 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-def _segments(path, r: float) -> list[S.Shape]:
-    """A bent glass tube as straight pieces, one per segment (sharp bends keep the volume exact)."""
-    return [S.tube([a, b], r, sections=8) for a, b in zip(path[:-1], path[1:], strict=True)]
-
-
 def _sign_stroke(points, z0: float, scale: float, y: float) -> list[tuple[float, float, float]]:
     return [(x * scale, y, z0 + z * scale) for x, z in points]
 
@@ -288,7 +284,7 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
         name = list(_SHAPES)[int(rng.integers(len(_SHAPES)))]
         w, h = s * 1.05, s * 1.05
         path = _sign_stroke(_SHAPES[name], h / 2, s, yt)
-        parts.append(make_part("tube_0", "tube", _segments(path, rt), glow))
+        parts.append(make_part("tube_0", "tube", segments(path, rt), glow))
     else:  # a word: letters as zigzag strokes side by side
         n = int(rng.integers(3, 7))
         lw, lh = rng.uniform(0.08, 0.12), rng.uniform(0.14, 0.2)
@@ -299,7 +295,7 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
             zz = rng.uniform(0.2, 0.8)
             stroke = [(xa, yt, 0.05), (xa, yt, 0.05 + lh), (xa + lw * 0.5, yt, 0.05 + lh * zz), (xa + lw, yt, 0.05 + lh),
                       (xa + lw, yt, 0.05)]
-            parts.append(make_part(f"tube_{k}", "tube", _segments(stroke, rt), glow))
+            parts.append(make_part(f"tube_{k}", "tube", segments(stroke, rt), glow))
     parts.append(make_part("backplate", "backplate", S.box((w, t, h), center=(0, t / 2, h / 2)), acrylic))
     if variant == "framed":
         metal = M.solid((0.1, 0.1, 0.1), "metal", 0.4, 0.6)
@@ -313,6 +309,6 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)))
     parts.append(make_part("transformer", "transformer", S.box((0.06, 0.02, 0.04), center=(w / 2 - 0.06, t + 0.01, 0.03)),
                            M.solid((0.1, 0.1, 0.1), "plastic", 0.6)))
-    parts.append(make_part("cable", "cable", S.tube([(w / 2 - 0.06, t + 0.01, 0.01), (w / 2 - 0.06, 0.004, 0.004)], 0.0025,
+    parts.append(make_part("cable", "cable", rod((w / 2 - 0.06, t + 0.01, 0.01), (w / 2 - 0.06, 0.004, 0.004), 0.0025,
                                                     sections=6), M.solid((0.9, 0.9, 0.9), "plastic", 0.6)))
     return parts

@@ -17,11 +17,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, hinge_parts, mount, prismatic, revolute
-
-
-def _segments(path, r: float, sections: int = 8) -> list[S.Shape]:
-    """A bent rod as straight pieces, one per segment (sharp bends keep the volume exact)."""
-    return [S.tube([a, b], r, sections=sections) for a, b in zip(path[:-1], path[1:], strict=True)]
+from ._rods import rod, segments
 
 
 @register("vise", parts=("jaw", "base"),
@@ -103,10 +99,10 @@ def pliers(rng: np.random.Generator, variant: str) -> list:
         jaw = S.hull(np.array([[0.0, s * 0.0, z - t / 2], [0.0, s * 0.012, z - t / 2], [lj, s * 0.0, z - t / 2], [lj, s * tipw, z - t / 2],
                                [0.0, s * 0.0, z + t / 2], [0.0, s * 0.012, z + t / 2], [lj, s * 0.0, z + t / 2], [lj, s * tipw, z + t / 2]]))
         parts.append(make_part(f"jaw_{k}", "jaw", jaw, steel))
-        handle = S.tube([(0.0, -s * 0.004, z), (-lh, -s * spread, z)], 0.0045, sections=8)
+        handle = rod((0.0, -s * 0.004, z), (-lh, -s * spread, z), 0.0045, sections=8)
         parts.append(make_part(f"handle_{k}", "handle", handle, steel))
-        parts.append(make_part(f"grip_{k}", "grip", S.tube([(-lh * 0.3, -s * (0.004 + (spread - 0.004) * 0.3), z),
-                                                            (-lh + 0.005, -s * (spread - 0.0003), z)], 0.0075, sections=10), grip))
+        parts.append(make_part(f"grip_{k}", "grip", rod((-lh * 0.3, -s * (0.004 + (spread - 0.004) * 0.3), z),
+                                                            (-lh + 0.005, -s * (spread - 0.0003), z), 0.0075, sections=10), grip))
     parts.append(make_part("pivot", "pivot", S.cylinder(0.008, 2 * t + 0.002, center=(0, 0, t), sections=12), steel))
     if variant == "locking":
         parts.append(make_part("adjuster", "adjuster", S.cylinder(0.006, 0.02, center=(-lh - 0.008, spread, t * 1.5), axis=(1, 0, 0),
@@ -147,7 +143,7 @@ def paint_can(rng: np.random.Generator, variant: str) -> list[Part]:
     a = np.linspace(0.0, np.pi, 9)
     rr = r + 0.006
     arc = [(rr * np.cos(t), 0.0, hz + 0.5 * rr * np.sin(t)) for t in a]
-    parts.append(make_part("handle", "handle", _segments(arc, 0.0022, sections=6), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    parts.append(make_part("handle", "handle", segments(arc, 0.0022, sections=6), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
     return parts
 
 
@@ -234,12 +230,12 @@ def coat_hook(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, x in enumerate(xs):
         # out from the plate, down a little, then up to a knobbed tip: coats hang from the bottom bend
         path = [(x, y0 - 0.002, zc), (x, y0 + reach * 0.7, zc - 0.02), (x, y0 + reach, zc + 0.01)]
-        parts.append(make_part(f"hook_{k}", "hook", _segments(path, r), metal))
+        parts.append(make_part(f"hook_{k}", "hook", segments(path, r), metal))
         parts.append(make_part(f"tip_{k}", "tip", S.ellipsoid((r * 1.6, r * 1.6, r * 1.6), center=(x, y0 + reach, zc + 0.01 + r),
                                                               subdivisions=1), metal))
         if variant == "double":  # the upper, shorter arm for a hat
             up = [(x, y0 - 0.002, zc + 0.012), (x, y0 + reach * 0.5, zc + 0.05)]
-            parts.append(make_part(f"hook_upper_{k}", "hook", _segments(up, r * 0.9), metal))
+            parts.append(make_part(f"hook_upper_{k}", "hook", segments(up, r * 0.9), metal))
             parts.append(make_part(f"tip_upper_{k}", "tip", S.ellipsoid((r * 1.5, r * 1.5, r * 1.5),
                                                                         center=(x, y0 + reach * 0.5, zc + 0.05 + r * 0.5),
                                                                         subdivisions=1), metal))

@@ -46,11 +46,11 @@ def jar(rng: np.random.Generator, variant: str) -> list[Part]:
     rl = prof[-1][0]
     if variant == "mason":  # a metal lid disc inside a screw band
         metal = M.solid(M.jitter(rng, (0.8, 0.7, 0.35), 0.05)[:3], "metal", 0.3, 0.8)
-        parts.append(make_part("lid", "lid", S.cylinder(rl + 0.001, 0.003, center=(0, 0, h + 0.0015), sections=24), metal))
+        parts.append(make_part("lid", "lid", S.cylinder(rl + 0.001, 0.003, center=(0, 0, h + 0.0015), sections=16), metal))
         parts.append(make_part("band", "band", ring([(rl + 0.001, h - 0.01), (rl + 0.004, h - 0.01), (rl + 0.004, h + 0.004),
-                                                     (rl + 0.001, h + 0.004)], sections=24), metal))
+                                                     (rl + 0.001, h + 0.004)], sections=16), metal))
         parts.append(make_part("label", "label", ring([(r, h * 0.3), (r + 0.0006, h * 0.3), (r + 0.0006, h * 0.55), (r, h * 0.55)],
-                                                      sections=24), M.paper(rng)))
+                                                      sections=16), M.paper(rng)))
     elif variant == "canister":  # a wooden or glass lid with a seal, a wire clamp at the front
         lidm = M.wood(rng) if rng.random() < 0.5 else mat
         parts.append(make_part("lid", "lid", S.cylinder(r + 0.003, 0.02, center=(0, 0, h + 0.01), sections=24), lidm))

@@ -65,13 +65,13 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         r = rng.uniform(0.19, 0.23)
         prof = [(r * 0.45, 0.0), (r * 0.8, h * 0.3), (r * 0.97, h * 0.75), (r, h)]
-        basin = S.vessel(prof, 0.01, bottom=0.012, sections=24, piece_sections=24).moved((0, 0, zb))
+        basin = S.vessel(prof, 0.01, bottom=0.012, sections=16, piece_sections=16).moved((0, 0, zb))
         if variant == "oval":
             T = np.diag([1.0, 0.75, 1.0, 1.0])
             basin = S.transformed(basin, T)
         parts = [make_part("base", "base", ring([(r * 0.3, 0.0), (r * 0.45, 0.0), (r * 0.45, zb), (r * 0.3, zb)], sections=16), mat),
                  make_part("basin", "basin", basin, mat)]
-        rim = ring([(r - 0.012, zb + h), (r + 0.002, zb + h), (r + 0.002, zb + h + 0.006), (r - 0.012, zb + h + 0.006)], sections=24)
+        rim = ring([(r - 0.012, zb + h), (r + 0.002, zb + h), (r + 0.002, zb + h + 0.006), (r - 0.012, zb + h + 0.006)], sections=16)
         if variant == "oval":
             rim = S.transformed(rim, np.diag([1.0, 0.75, 1.0, 1.0]))
         parts.append(make_part("rim", "rim", rim, mat))

@@ -203,7 +203,7 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("base", "base", ring([(R * 0.6, 0.0), (R * 0.75, 0.0), (R * 0.75, 0.03), (R * 0.6, 0.03)]), wood))
         parts.append(make_part("stand", "stand", ring([(R * 0.62, 0.03), (R * 0.7, 0.03), (R * 0.7, zc - R * 0.6),
                                                        (R * 0.62, zc - R * 0.6)]), brass))
-        parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=3), sea))
+        parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=2), sea))
         return parts
     else:
         zc = R + rng.uniform(0.12, 0.16)
@@ -217,11 +217,11 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
     T = np.eye(4)
     T[:3, :3] = Rm
     T[:3, 3] = (0, 0, zc)
-    mer = S.transformed(ring([(rm - 0.004, -0.006), (rm + 0.004, -0.006), (rm + 0.004, 0.006), (rm - 0.004, 0.006)], sections=32,
-                             piece_sections=32), T)
+    mer = S.transformed(ring([(rm - 0.004, -0.006), (rm + 0.004, -0.006), (rm + 0.004, 0.006), (rm - 0.004, 0.006)], sections=20,
+                             piece_sections=20), T)
     parts.append(make_part("meridian", "meridian", mer, brass))
     ax = rot((0, 1, 0), tilt) @ np.array([0, 0, 1.0])
-    parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=3), sea))
+    parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=2), sea))
     for k, s in enumerate((-1, 1)):
         c = np.array([0, 0, zc]) + s * ax * (R + 0.006)
         parts.append(make_part(f"axle_{k}", "axle", S.cylinder(0.004, 0.014, center=tuple(c), axis=tuple(ax), sections=8), brass))
