@@ -15,6 +15,7 @@ from ..registry import register
 
 
 @register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "hanger_bar", "basket"),
+          groups={"wheel": ("caster",)},
           size_range=(1.6, 2.0), density=300, variants=("arched", "square", "two_tier"))
 def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     brass = M.solid((0.8, 0.65, 0.3), "metal", 0.25, 0.9) if rng.random() < 0.6 else M.solid((0.8, 0.8, 0.82), "metal", 0.2, 0.95)
