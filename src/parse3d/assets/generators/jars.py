@@ -42,7 +42,7 @@ def jar(rng: np.random.Generator, variant: str) -> list[Part]:
         prof = [(r * 0.55, 0.0), (r * 0.9, h * 0.25), (r, h * 0.5), (r * 0.85, h * 0.78), (rn, h * 0.92), (rn * 1.1, h)]
         mat = Material(M.jitter(rng, (0.6, 0.35, 0.2), 0.05), 0.8, 0.0, "ceramic")
         t = 0.012
-    parts = [make_part("body", "body", S.vessel(prof, t, bottom=t, sections=16, piece_sections=16), mat)]
+    parts = [make_part("body", "body", S.vessel(prof, t, bottom=t, sections=12, piece_sections=12), mat)]
     rl = prof[-1][0]
     if variant == "mason":  # a metal lid disc inside a screw band
         metal = M.solid(M.jitter(rng, (0.8, 0.7, 0.35), 0.05)[:3], "metal", 0.3, 0.8)
