@@ -208,6 +208,8 @@ def test_book_frame_and_part_words():
 
 
 def test_chess_pieces_differ_by_their_heads():
-    heights = {v: _asset("chess_piece", v).extents[2] for v in ("king", "queen", "bishop", "rook", "pawn")}
-    assert heights["king"] > heights["bishop"] > heights["pawn"]
-    assert heights["queen"] > heights["rook"]
+    """Kings and queens stand tallest, then bishops and knights, rooks and pawns lowest."""
+    def tallest(variant):
+        return max(registry.generate("chess_piece", s, variant).extents[2] for s in range(4))
+    assert tallest("royal") > tallest("minor") > tallest("pawn")
+    assert tallest("royal") > tallest("rook")

@@ -58,8 +58,11 @@ def chess_board(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("chess_piece", parts=("base", "body", "head"), extra_parts=("collar", "felt"),
           size_range=(0.03, 0.12), density=900,
-          variants=("king", "queen", "rook", "bishop", "knight", "pawn"), placement="surface")
+          variants=("royal", "minor", "rook", "pawn"), placement="surface")
 def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
+    # royal: a king or a queen; minor: a bishop or a knight
+    kind = {"royal": ("king", "queen"), "minor": ("bishop", "knight")}.get(variant, (variant,))
+    variant = kind[int(rng.integers(len(kind)))]
     white = rng.random() < 0.5
     mat = Material(M.jitter(rng, (0.9, 0.82, 0.62) if white else (0.12, 0.08, 0.06), 0.02), 0.35, 0.0, "wood")
     H = {"king": 0.095, "queen": 0.085, "bishop": 0.07, "knight": 0.06, "rook": 0.055, "pawn": 0.048}[variant]
