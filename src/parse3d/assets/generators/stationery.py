@@ -336,8 +336,12 @@ def sticky_note(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "single":
         return [make_part("sheet", "sheet", S.box((s, s, 0.0003), center=(0, 0, 0.00015)), col)]
     h = rng.uniform(0.005, 0.012) if variant == "pad" else rng.uniform(0.035, 0.05)
-    parts = [make_part("pad", "pad", S.box((s, s, h), center=(0, 0, h / 2)), col),
-             make_part("sheet", "sheet", S.box((s, s, 0.0003), center=(0, 0, h + 0.00015)), col)]
+    # the pad's block, and its top sheets each a part (the top one is what gets written on)
+    n_top, ts = 4, 0.0003
+    h0 = h - n_top * ts
+    parts = [make_part("pad", "pad", S.box((s, s, h0), center=(0, 0, h0 / 2)), col)]
+    for k in range(n_top):
+        parts.append(make_part(f"sheet_{k}", "sheet", S.box((s, s, ts), center=(0, 0, h0 + ts * (k + 0.5))), col))
     if variant == "cube":  # in a clear holder open at the top
         t = 0.002
         walls = [S.box((s + 2 * t, t, h * 0.8), center=(0, sy * (s / 2 + t / 2), h * 0.4)) for sy in (-1, 1)]
