@@ -54,7 +54,9 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
         x = f * L * 0.38
         y = -bend * f * f
         r = rmax * (1 - 0.55 * f * f)
-        seg = S.ellipsoid((L * 0.13, r * 0.95, r * 0.75), center=(x, y, r * 0.75), subdivisions=1)
+        pts = S.ellipsoid((L * 0.13, r * 0.95, r * 0.75), center=(x, y, r * 0.6), subdivisions=1).mesh.vertices.copy()
+        pts[:, 2] = np.maximum(pts[:, 2], 0.0)  # baked flat where it lay on the tray
+        seg = S.hull(pts)
         name = "body" if k == n // 2 else (f"horn_{0 if k < n // 2 else 1}" if k in (0, n - 1) else f"body_{k}")
         label = "horn" if k in (0, n - 1) else "body"
         parts.append(make_part(name, label, seg, crust))
@@ -114,7 +116,7 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "foot"),
+@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge"),
           size_range=(1.2, 2.4), density=400, variants=("three_panel", "four_panel", "shoji"))
 def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 4 if variant == "four_panel" else 3
@@ -131,8 +133,8 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         dx, dy = pw * np.cos(ang), s * pw * np.sin(ang)
         cx, cy = x + dx / 2, y + dy / 2
         R = rot((0, 0, 1), float(np.arctan2(dy, dx)))
-        zf = 0.03
-        parts.append(make_part(f"panel_{k}", "panel", S.box((pw - 0.06, 0.008, h - zf - 0.06), center=(cx, cy, zf + (h - zf) / 2), R=R), infill))
+        zf = 0.0  # the leaves stand on their bottom rails
+        parts.append(make_part(f"panel_{k}", "panel", S.box((pw, t, h - 0.03), center=(cx, cy, (h - 0.03) / 2), R=R), infill))
         frame = [S.box((0.03, t, h - zf), center=(cx + sgn * (pw / 2 - 0.015) * np.cos(np.arctan2(dy, dx)),
                                                cy + sgn * (pw / 2 - 0.015) * np.sin(np.arctan2(dy, dx)), zf + (h - zf) / 2), R=R)
                  for sgn in (-1, 1)]
@@ -140,10 +142,6 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "shoji":
             frame += [S.box((pw - 0.06, t * 0.6, 0.012), center=(cx, cy, zf + (h - zf) * f), R=R) for f in (0.25, 0.5, 0.75)]
         parts.append(make_part(f"frame_{k}", "frame", frame, wood))
-        for e, sgn in enumerate((-1, 1)):
-            parts.append(make_part(f"foot_{k}_{e}", "foot", S.box((0.03, 0.05, zf), center=(cx + sgn * (pw / 2 - 0.015) * np.cos(np.arctan2(dy, dx)),
-                                                                                          cy + sgn * (pw / 2 - 0.015) * np.sin(np.arctan2(dy, dx)),
-                                                                                          zf / 2)), wood))
         if k > 0:
             parts += hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), n=3,
                                  radius=0.008, length=0.06)

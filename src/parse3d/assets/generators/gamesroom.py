@@ -104,7 +104,7 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("rest", "rest", S.box((w, d, 0.03), center=(0, t + d / 2, 0.015), bevel=0.003), wood))
     for k in range(n):
         x = -w / 2 + 0.03 + pitch * (k + 0.5)
-        parts.append(make_part(f"cup_{k}", "cup", _cup().moved((x, t + d / 2, 0.03)), brass))
+        parts.append(make_part(f"cup_{k}", "cup", _cup().moved((x, t + 0.048, 0.03)), brass))
     # the clip: a bar near the top with a tooth between neighbouring slots (the cups and the clip
     # together are what a person calls the holder)
     zh = h - 0.2

@@ -131,18 +131,18 @@ def paint_can(rng: np.random.Generator, variant: str) -> list[Part]:
                            tin),
                  make_part("bottom_rim", "bottom_rim", ring([(r - 0.004, 0.0), (r, 0.0), (r, 0.006), (r - 0.004, 0.006)]), tin),
                  make_part("rim", "rim", ring([(r - 0.01, h - 0.007), (r, h - 0.007), (r, h), (r - 0.01, h)]), tin),
-                 make_part("lid", "lid", S.cylinder(r - 0.01, 0.004, center=(0, 0, h - 0.002), sections=32),
+                 make_part("lid", "lid", S.cylinder(r + 0.001, 0.004, center=(0, 0, h + 0.002), sections=32),
                            M.solid(M.jitter(rng, (0.7, 0.7, 0.7), 0.1)[:3], "metal", 0.4, 0.6))]
         parts.append(make_part("label", "label", ring([(r - 0.0015, h * 0.2), (r + 0.0005, h * 0.2), (r + 0.0005, h * 0.75),
                                                        (r - 0.0015, h * 0.75)]), M.paper(rng)))
         hz = h * 0.8
         rim_mat = tin
-    # the bail handle: a wire arc over the top between two ears on the sides
+    # the bail handle between two ears on the sides, folded down round the front (cans stack)
     for k, sx in enumerate((-1, 1)):
         parts.append(make_part(f"ear_{k}", "ear", S.box((0.006, 0.02, 0.02), center=(sx * (r + 0.003), 0, hz)), rim_mat))
     a = np.linspace(0.0, np.pi, 9)
-    rr = r + 0.006
-    arc = [(rr * np.cos(t), 0.0, hz + 0.5 * rr * np.sin(t)) for t in a]
+    rr = r + 0.008
+    arc = [(rr * np.cos(t), rr * np.sin(t), hz - 0.02 * np.sin(t)) for t in a]
     parts.append(make_part("handle", "handle", segments(arc, 0.0022, sections=6), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
     return parts
 

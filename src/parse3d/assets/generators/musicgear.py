@@ -92,8 +92,9 @@ def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     if variant != "bare":  # lying on its card sleeve
         s = 0.314 if variant == "lp" else 0.18
-        parts.append(make_part("sleeve", "sleeve", S.box((s, s, 0.003), center=(0, 0, 0.0015)), M.paper(rng)))
-        z = 0.003
+        # the disc lies inside its sleeve (the sleeve's top is the record's top)
+        parts.append(make_part("sleeve", "sleeve", S.box((s, s, 0.0045), center=(0, 0, 0.00225)), M.paper(rng)))
+        z = 0.0012
     # the disc and its label are rings round the centre hole (7.24 mm; a single's 38 mm), so a
     # record lies on a platter over its spindle
     hole = 0.00362 if variant != "single" else 0.019
@@ -279,12 +280,14 @@ def guitar_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.7, 0.85)
     if variant == "wooden":
         wood = M.wood(rng)
-        parts.append(make_part("base", "frame", S.box((0.32, 0.3, 0.025), center=(0, 0, 0.0125), bevel=0.003), wood))
-        parts.append(make_part("post", "post", S.box((0.04, 0.04, h - 0.025), center=(0, -0.1, 0.025 + (h - 0.025) / 2)), wood))
+        # two runners (the legs) on the floor, the base plate on them, the post at its back
         for k, sx in enumerate((-1, 1)):
-            parts.append(make_part(f"leg_{k}", "leg", S.box((0.03, 0.3, 0.03), center=(sx * 0.145, 0, 0.04)), wood))
-            parts.append(make_part(f"cradle_{k}", "cradle", S.box((0.05, 0.09, 0.07), center=(sx * 0.1, 0.09, 0.06)), wood))
-        parts.append(make_part("padding", "padding", S.box((0.22, 0.02, 0.02), center=(0, 0.06, 0.1)), rubber))
+            parts.append(make_part(f"leg_{k}", "leg", S.box((0.03, 0.3, 0.03), center=(sx * 0.145, 0, 0.015)), wood))
+        parts.append(make_part("base", "frame", S.box((0.32, 0.3, 0.025), center=(0, 0, 0.0425), bevel=0.003), wood))
+        parts.append(make_part("post", "post", S.box((0.04, 0.04, h - 0.055), center=(0, -0.1, 0.055 + (h - 0.055) / 2)), wood))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"cradle_{k}", "cradle", S.box((0.05, 0.09, 0.07), center=(sx * 0.1, 0.09, 0.09)), wood))
+        parts.append(make_part("padding", "padding", S.box((0.22, 0.02, 0.02), center=(0, 0.06, 0.13)), rubber))
         yk = -0.1
     else:
         for k in range(3):  # tripod legs splayed from a collar

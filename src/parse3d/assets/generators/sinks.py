@@ -36,7 +36,8 @@ def _faucet(prefix: str, x: float, y: float, z: float, *, reach: float, h: float
                                                                    S.box((0.04, 0.008, 0.008), center=(x + sx * 0.09, y, z + 0.034))],
                                  mat))
     else:
-        out.append(make_part(f"{prefix}handle", "handle", S.box((0.012, 0.07, 0.012), center=(x, y - 0.035, zt + 0.01), bevel=0.003), mat))
+        # a side lever (nothing reaches behind the base, so the sink's back can meet the wall)
+        out.append(make_part(f"{prefix}handle", "handle", S.box((0.06, 0.012, 0.012), center=(x + 0.017 + 0.03, y, zt - 0.03), bevel=0.003), mat))
     return out
 
 
@@ -78,7 +79,8 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("deck", "rim", "base", "spout", "handle", "body", "overflow"),
+@register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow"),
+          groups={"basin": ("bowl", "deck")},
           size_range=(0.85, 1.05), density=1400, variants=("round", "square", "console"))
 def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     porcelain = M.solid(M.jitter(rng, (0.95, 0.95, 0.94), 0.01)[:3], "ceramic", 0.2)
@@ -99,7 +101,7 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("deck", "deck", S.box((w, dd, hb), center=(0, -d / 2 + dd / 2, zb + hb / 2), bevel=0.01), porcelain))
     if variant == "square":
         bw, bd = w, d - dd
-        parts.append(make_part("basin", "basin", [s.moved((0, -d / 2 + dd + bd / 2, zb)) for s in open_box(bw, bd, hb, 0.02, bottom=0.03)],
+        parts.append(make_part("bowl", "bowl", [s.moved((0, -d / 2 + dd + bd / 2, zb)) for s in open_box(bw, bd, hb, 0.02, bottom=0.03)],
                                porcelain))
     else:
         r = min(w / 2, (d - dd))
@@ -107,9 +109,9 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         T = np.diag([1.0, (d - dd) / (2 * r), 1.0, 1.0])
         T[1, 3] = -d / 2 + dd + (d - dd) / 2
         T[2, 3] = zb
-        parts.append(make_part("basin", "basin", S.transformed(bowl, T), porcelain))
+        parts.append(make_part("bowl", "bowl", S.transformed(bowl, T), porcelain))
     parts.append(make_part("overflow", "overflow", S.box((0.03, 0.004, 0.012), center=(0, -d / 2 + dd + 0.002, zb + hb - 0.04)), chrome))
-    parts += _faucet("faucet_", 0.0, -d / 2 + dd / 2, H, reach=dd * 0.8, h=0.1, mat=chrome, style="single_lever")
+    parts += _faucet("faucet_", 0.0, -d / 2 + dd / 2 + 0.005, H, reach=dd * 0.8, h=0.1, mat=chrome, style="single_lever")
     return parts
 
 
@@ -140,11 +142,12 @@ def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
                                tub))
         parts.append(make_part("drain" if n == 1 else f"drain_{k}", "drain",
                                S.cylinder(0.025, 0.003, center=(-w / 2 + bw * (k + 0.5), 0.05, zb + 0.0165), sections=12), chrome))
-    rim = [S.box((w + 0.02, 0.03, 0.015), center=(0, sy * (d / 2 - 0.005), H + 0.0075)) for sy in (-1, 1)]
-    rim += [S.box((0.03, d - 0.05, 0.015), center=(sx * (w / 2 - 0.005), 0, H + 0.0075)) for sx in (-1, 1)]
+    # the rim: a narrow lip at the front and sides, a deck at the back (soap stands on it)
+    rim = [S.box((w, 0.03, 0.015), center=(0, d / 2 - 0.015, H + 0.0075)), S.box((w, 0.12, 0.015), center=(0, -d / 2 + 0.06, H + 0.0075))]
+    rim += [S.box((0.03, d - 0.06, 0.015), center=(sx * (w / 2 - 0.015), 0, H + 0.0075)) for sx in (-1, 1)]
     parts.append(make_part("rim", "rim", rim, tub))
-    parts.append(make_part("backsplash", "backsplash", S.box((w + 0.02, 0.03, 0.12), center=(0, -d / 2 - 0.005, H + 0.015 + 0.06)), tub))
-    fp = _faucet("faucet_", 0.0, -d / 2 - 0.005, H + 0.135, reach=0.18, h=0.05, mat=chrome, style="gooseneck")
+    parts.append(make_part("backsplash", "backsplash", S.box((w, 0.03, 0.12), center=(0, -d / 2 + 0.015, H + 0.015 + 0.06)), tub))
+    fp = _faucet("faucet_", 0.0, -d / 2 + 0.03, H + 0.135, reach=0.18, h=0.05, mat=chrome, style="gooseneck")
     for p in fp:
         if p.label == "body":
             p.label = "faucet"
