@@ -365,7 +365,7 @@ MOTIFS = {
     "kitchen_prep_corner": ("kitchen", "{wall: wall_0}", ""),
     "dining_room_dressed_sideboard": ("dining_room", "{wall: wall_0}", ""),
     "dining_room_hutch_nook": ("dining_room", "{wall: wall_0}", ""),
-    "bathroom_shower_corner": ("bathroom", "{wall: wall_0}", ""),
+    "bathroom_shower_cabinet": ("bathroom", "{wall: wall_0}", ""),
     "bar_counter_taps": ("bar", "{counter: bc_counter, wall: wall_1}",
                          "{motif: bar_counter_set, prefix: bc, params: {away: wall_0, distance: 1.0}}"),
     "grocery_produce_display": ("grocery", "{counter: ck_counter, wall: wall_1}",
