@@ -18,44 +18,6 @@ from ._household import ring, shell
 from ._kit import hinge_parts, revolute, rot
 
 
-def _wheel(name: str, x: float, r: float, y: float, mat, spokes_mat) -> list[Part]:
-    tyre = S.transformed(ring([(r - 0.02, -0.012), (r, -0.012), (r, 0.012), (r - 0.02, 0.012)],
-                              sections=28),
-                         np.array([[1, 0, 0, x], [0, 0, -1, y], [0, 1, 0, r], [0, 0, 0, 1.0]]))
-    hub = S.cylinder(0.02, 0.08, center=(x, y, r), axis=(0, 1, 0), sections=12)
-    return [make_part(name, "wheel", tyre, mat), make_part(f"{name}_hub", "hub", hub, spokes_mat)]
-
-
-@register("bicycle", parts=("frame", "wheel"),
-          extra_parts=("hub", "handlebar", "saddle", "pedal", "fork", "chainring", "seat_post"),
-          size_range=(1.2, 1.9), density=300, variants=("city", "road", "kids"))
-def bicycle(rng: np.random.Generator, variant: str) -> list[Part]:
-    r = {"city": 0.35, "road": 0.34, "kids": 0.26}[variant] * rng.uniform(0.97, 1.03)
-    wb = r * rng.uniform(2.8, 3.1)
-    steel, rubber = M.metal(rng), black("rubber")
-    paint = M.solid(M.jitter(rng, [(0.7, 0.1, 0.1), (0.1, 0.2, 0.6), (0.1, 0.1, 0.1), (0.2, 0.5, 0.3)][int(rng.integers(4))], 0.03),
-                    "metal", 0.3, 0.6)
-    xr, xf = -wb / 2, wb / 2
-    bb = np.array([xr + wb * 0.42, 0.0, r * 0.85])
-    seat = np.array([xr + wb * 0.35, 0.0, r * 2.2])
-    head = np.array([xf - wb * 0.12, 0.0, r * 2.1])
-    out: list[Part] = []
-    out += _wheel("wheel_0", xr, r, 0.0, rubber, steel)
-    out += _wheel("wheel_1", xf, r, 0.0, rubber, steel)
-    frame = [S.tube([(xr, 0, r), bb], 0.014), S.tube([(xr, 0, r), seat], 0.012), S.tube([bb, seat], 0.018),
-             S.tube([bb, head - [0, 0, 0.1]], 0.02), S.tube([seat - [0, 0, 0.05], head], 0.018)]
-    out.append(make_part("frame", "frame", frame, paint))
-    out.append(make_part("fork", "fork", S.tube([head, (xf, 0, r)], 0.014), paint))
-    out.append(make_part("seat_post", "seat_post", S.tube([seat, seat + [0, 0, 0.08]], 0.012), steel))
-    out.append(make_part("saddle", "saddle", S.box((0.26, 0.14, 0.05), center=seat + [0.02, 0, 0.105], bevel=0.015), black("leather")))
-    out.append(make_part("handlebar", "handlebar", [S.tube([head, head + [0, 0, 0.12]], 0.014),
-                                                    S.tube([head + [0, -0.28, 0.12], head + [0, 0.28, 0.12]], 0.012)], steel))
-    out.append(make_part("chainring", "chainring", S.cylinder(0.1, 0.006, center=bb + [0, 0.05, 0], axis=(0, 1, 0), sections=24), steel))
-    for k, sy in enumerate((-1, 1)):
-        out.append(make_part(f"pedal_{k}", "pedal", S.box((0.1, 0.06, 0.02), center=bb + [sy * 0.08, sy * 0.14, -sy * 0.12]), black()))
-    return out
-
-
 @register("vacuum_cleaner", parts=("body", "hose"), extra_parts=("wand", "nozzle", "wheel", "handle", "bin"),
           size_range=(0.3, 1.45), density=300, variants=("canister", "upright", "robot"),
           placement="floor")
@@ -404,35 +366,6 @@ def sink(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("blanket", parts=("body",), extra_parts=("fold", "hem", "fringe"),
-          size_range=(0.3, 2.3), density=200, variants=("folded", "spread", "rolled"),
-          placement="surface")
-def blanket(rng: np.random.Generator, variant: str) -> list[Part]:
-    fab = M.fabric(rng)
-    if variant == "spread":  # laid out flat (on a bed or a sofa back)
-        w, d, t = rng.uniform(1.3, 2.2), rng.uniform(1.1, 2.0), rng.uniform(0.008, 0.015)
-        out = [make_part("body", "body", S.box((w - 0.06, d - 0.06, t), center=(0, 0, t / 2)), fab),
-               make_part("hem", "hem", [S.box((w, 0.03, t * 1.3), center=(0, sy * (d / 2 - 0.015), t * 0.65)) for sy in (-1, 1)]
-                         + [S.box((0.03, d - 0.06, t * 1.3), center=(sx * (w / 2 - 0.015), 0, t * 0.65)) for sx in (-1, 1)], fab)]
-        if rng.uniform() < 0.5:
-            out.append(make_part("fringe", "fringe", [S.box((w, 0.04, 0.003), center=(0, sy * (d / 2 + 0.02), 0.0015)) for sy in (-1, 1)],
-                                 fab))
-        return out
-    if variant == "rolled":
-        L, r = rng.uniform(0.45, 0.7), rng.uniform(0.08, 0.12)
-        return [make_part("body", "body", S.cylinder(r, L, center=(0, 0, r), axis=(1, 0, 0), sections=20), fab),
-                make_part("hem", "hem", S.box((L, 0.004, r * 0.8), center=(0, r + 0.002, r * 0.6)), fab)]
-    # folded in a neat stack of layers
-    w, d = rng.uniform(0.35, 0.5), rng.uniform(0.3, 0.42)
-    n = int(rng.integers(3, 6))
-    lt = rng.uniform(0.015, 0.025)
-    out = [make_part("body", "body", S.box((w, d, lt), center=(0, 0, lt / 2), bevel=lt * 0.3), fab)]
-    for k in range(1, n):
-        out.append(make_part(f"fold_{k}", "fold", S.box((w, d, lt), center=(0, 0, lt * k + lt / 2), bevel=lt * 0.3), fab))
-    out.append(make_part("hem", "hem", S.cylinder(lt * n / 2, d, center=(w / 2, 0, lt * n / 2), axis=(0, 1, 0), sections=12), fab))
-    return out
-
-
 @register("mattress", parts=("body",), extra_parts=("top_panel", "border", "handle", "piping"),
           size_range=(1.85, 2.15), density=150, variants=("twin", "double", "king"))
 def mattress(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -505,6 +438,5 @@ def paper_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         out.append(make_part("fold", "fold", S.box((w * 0.98, 0.004, 0.03), center=(0, d * 0.35, h - 0.015)), mat))
     return out
-
 
 

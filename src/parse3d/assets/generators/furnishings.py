@@ -1,0 +1,309 @@
+"""Small furnishings the outsiders' rooms name: coasters, jewelry boxes, folding screens, dog
+beds, laptop stands, console tables, a dais, paper towel holders, and a croissant for the café
+table.
+
+A jewelry box's lid lifts on a back hinge over a lift-out ``tray`` (an internal support); a
+folding screen stands as a zigzag of ``panel``s, its back (-Y) the side towards a wall; a
+laptop stand's ``platform`` slopes up towards the back, a ``lip`` at its front edge holding the
+laptop.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+from ._household import open_box, ring
+from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
+
+
+@register("coaster", parts=("body",), extra_parts=("pad", "rim"),
+          size_range=(0.08, 0.12), density=800, variants=("round", "square", "rimmed"), placement="surface")
+def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
+    s = rng.uniform(0.09, 0.105)
+    mat = [M.wood(rng), M.stone(rng), M.ceramic(rng), Material(M.jitter(rng, (0.7, 0.55, 0.35), 0.03), 0.9, 0.0, "wood")][int(rng.integers(4))]
+    cork = Material(M.jitter(rng, (0.65, 0.5, 0.35), 0.03), 0.95, 0.0, "wood")
+    tp = 0.0015
+    t = rng.uniform(0.004, 0.008)
+    if variant == "square":
+        parts = [make_part("pad", "pad", S.box((s - 0.004, s - 0.004, tp), center=(0, 0, tp / 2)), cork),
+                 make_part("body", "body", S.box((s, s, t), center=(0, 0, tp + t / 2), bevel=0.001), mat)]
+        return parts
+    parts = [make_part("pad", "pad", S.cylinder(s / 2 - 0.002, tp, center=(0, 0, tp / 2), sections=24), cork),
+             make_part("body", "body", S.cylinder(s / 2, t, center=(0, 0, tp + t / 2), sections=24), mat)]
+    if variant == "rimmed":
+        parts.append(make_part("rim", "rim", ring([(s / 2 - 0.004, tp + t), (s / 2, tp + t), (s / 2, tp + t + 0.004),
+                                                   (s / 2 - 0.004, tp + t + 0.004)], sections=24), mat))
+    return parts
+
+
+@register("croissant", parts=("body",), extra_parts=("horn",),
+          size_range=(0.09, 0.18), density=250, variants=("curved", "straight", "mini"), placement="surface")
+def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
+    L = rng.uniform(0.12, 0.16) if variant != "mini" else rng.uniform(0.09, 0.1)
+    crust = M.food(rng, (0.78, 0.52, 0.22))
+    rmax = L * 0.22
+    bend = 0.0 if variant == "straight" else L * 0.25
+    parts = []
+    n = 5
+    for k in range(n):  # rolled segments, fattest in the middle, bending towards -Y at the ends
+        f = (k - (n - 1) / 2) / ((n - 1) / 2)
+        x = f * L * 0.38
+        y = -bend * f * f
+        r = rmax * (1 - 0.55 * f * f)
+        pts = S.ellipsoid((L * 0.13, r * 0.95, r * 0.75), center=(x, y, r * 0.6), subdivisions=1).mesh.vertices.copy()
+        pts[:, 2] = np.maximum(pts[:, 2], 0.0)  # baked flat where it lay on the tray
+        seg = S.hull(pts)
+        name = "body" if k == n // 2 else (f"horn_{0 if k < n // 2 else 1}" if k in (0, n - 1) else f"body_{k}")
+        label = "horn" if k in (0, n - 1) else "body"
+        parts.append(make_part(name, label, seg, crust))
+    return parts
+
+
+@register("jewelry_box", parts=("body", "lid"), extra_parts=("tray", "mirror", "clasp", "hinge", "foot", "drawer", "drawer_box",
+                                                             "knob", "lining"),
+          size_range=(0.12, 0.4), density=600, variants=("hinged", "drawers", "chest"), placement="surface")
+def jewelry_box(rng: np.random.Generator, variant: str) -> list:
+    wood = M.wood(rng) if rng.random() < 0.7 else M.leather(rng)
+    velvet = Material(M.jitter(rng, [(0.5, 0.05, 0.1), (0.1, 0.15, 0.35), (0.1, 0.1, 0.1)][int(rng.integers(3))], 0.03), 0.95, 0.0, "fabric")
+    brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
+    w, d = rng.uniform(0.2, 0.3), rng.uniform(0.13, 0.2)
+    t = 0.008
+    zf = 0.006
+    parts = feet4("foot", w=w, d=d, r=0.008, h=zf, mat=brass, inset=0.005)
+    z = zf
+    if variant == "drawers":  # a drawer below the lidded compartment
+        hd = rng.uniform(0.045, 0.06)
+        parts.append(make_part("case", "body", [S.box((w, d, t), center=(0, 0, z + t / 2)),
+                                                S.box((w, t, hd), center=(0, -d / 2 + t / 2, z + hd / 2)),
+                                                S.box((t, d - t, hd), center=(-w / 2 + t / 2, t / 2, z + hd / 2)),
+                                                S.box((t, d - t, hd), center=(w / 2 - t / 2, t / 2, z + hd / 2))], wood))
+        bw, bd, bh = w - 2 * t - 0.004, d - t - 0.006, hd - t - 0.004
+        parts.append(make_part("drawer_box", "drawer_box", [s.moved((0, -d / 2 + t + 0.002 + bd / 2 - 0.003, z + t + 0.001))
+                                                            for s in open_box(bw, bd, bh, 0.005)], velvet))
+        parts.append(make_part("drawer", "drawer", S.box((w - 2 * t, 0.008, hd - t - 0.002), center=(0, d / 2 - 0.004, z + t + (hd - t) / 2)),
+                               wood))
+        parts.append(make_part("knob", "knob", S.ellipsoid((0.007, 0.007, 0.007), center=(0, d / 2 + 0.004, z + t + (hd - t) / 2),
+                                                           subdivisions=1), brass))
+        parts += [prismatic("drawer_slide", "case", "drawer_box", travel=bd * 0.7), mount("drawer_box", "drawer"), mount("drawer", "knob")]
+        z += hd
+    h = rng.uniform(0.075, 0.095)
+    parts.append(make_part("body", "body", [s.moved((0, 0, z)) for s in open_box(w, d, h, t)], wood))
+    parts.append(make_part("lining", "lining", S.box((w - 2 * t, d - 2 * t, 0.003), center=(0, 0, z + t + 0.0015)), velvet))
+    ht = 0.046  # deep enough to hold rings and watches under the closed lid
+    parts.append(make_part("tray", "tray", [s.moved((0, 0, z + h - ht - 0.002)) for s in open_box(w - 2 * t - 0.004, d - 2 * t - 0.004, ht, 0.004)],
+                           velvet))
+    zl = z + h
+    hl = rng.uniform(0.02, 0.03) if variant != "chest" else rng.uniform(0.05, 0.06)
+    if variant == "chest":  # a rounded chest lid
+        lid = S.hull(np.vstack([[sx * w / 2, sy * d / 2, zl] for sx in (-1, 1) for sy in (-1, 1)]
+                               + [[sx * w / 2, d / 2 * np.cos(a), zl + hl * np.sin(a)] for sx in (-1, 1)
+                                  for a in np.linspace(0.3, np.pi - 0.3, 5)]))
+    else:
+        lid = S.box((w, d, hl), center=(0, 0, zl + hl / 2), bevel=0.003)
+    parts.append(make_part("lid", "lid", lid, wood))
+    if variant != "chest":
+        parts.append(make_part("mirror", "mirror", S.box((w - 2 * t - 0.01, d - 2 * t - 0.01, 0.002), center=(0, 0, zl - 0.001 + 0.0)),
+                               M.solid((0.8, 0.85, 0.9), "glass", 0.05, 0.9)))
+        parts.append(mount("lid", "mirror"))
+    parts.append(make_part("clasp", "clasp", S.box((0.02, 0.004, 0.02), center=(0, d / 2 + 0.002, zl)), brass))
+    parts += hinge_parts("hinge", x=zl, y=-d / 2 - 0.003, z0=-w / 2 + 0.02, z1=w / 2 - 0.02, mat=brass, axis="x", radius=0.003,
+                         length=0.025)
+    parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR * 0.6))
+    return parts
+
+
+@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge"),
+          size_range=(1.2, 2.4), density=400, variants=("three_panel", "four_panel", "shoji"))
+def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
+    n = 4 if variant == "four_panel" else 3
+    pw, h = rng.uniform(0.4, 0.55), rng.uniform(1.6, 1.85)
+    t = 0.025
+    ang = np.deg2rad(rng.uniform(20, 35))
+    wood = M.wood(rng)
+    infill = M.fabric(rng) if variant != "shoji" else M.solid((0.95, 0.93, 0.86), "paper", 0.9)
+    parts = []
+    x = -n * pw * np.cos(ang) / 2
+    y = 0.0
+    for k in range(n):
+        s = 1 if k % 2 == 0 else -1  # a zigzag: each panel turns back the other way
+        dx, dy = pw * np.cos(ang), s * pw * np.sin(ang)
+        cx, cy = x + dx / 2, y + dy / 2
+        R = rot((0, 0, 1), float(np.arctan2(dy, dx)))
+        zf = 0.0  # the leaves stand on their bottom rails
+        parts.append(make_part(f"panel_{k}", "panel", S.box((pw, t, h - 0.03), center=(cx, cy, (h - 0.03) / 2), R=R), infill))
+        frame = [S.box((0.03, t, h - zf), center=(cx + sgn * (pw / 2 - 0.015) * np.cos(np.arctan2(dy, dx)),
+                                               cy + sgn * (pw / 2 - 0.015) * np.sin(np.arctan2(dy, dx)), zf + (h - zf) / 2), R=R)
+                 for sgn in (-1, 1)]
+        frame += [S.box((pw - 0.06, t, 0.03), center=(cx, cy, zc), R=R) for zc in (zf + 0.015, h - 0.015)]
+        if variant == "shoji":
+            frame += [S.box((pw - 0.06, t * 0.6, 0.012), center=(cx, cy, zf + (h - zf) * f), R=R) for f in (0.25, 0.5, 0.75)]
+        parts.append(make_part(f"frame_{k}", "frame", frame, wood))
+        if k > 0:
+            parts += hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), n=3,
+                                 radius=0.008, length=0.06)
+        x, y = x + dx, y + dy
+    return parts
+
+
+@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow"),
+          size_range=(0.5, 1.2), density=150, variants=("round", "rectangular", "elevated"))
+def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
+    fab = M.fabric(rng)
+    inner = M.fabric(rng)
+    if variant == "round":  # a donut: a cushion inside a bolster ring
+        r = rng.uniform(0.3, 0.5)
+        hb = rng.uniform(0.15, 0.22)
+        return [make_part("base", "base", S.cylinder(r, 0.03, center=(0, 0, 0.015), sections=24), fab),
+                make_part("bolster", "bolster", ring([(r * 0.65, 0.03), (r, 0.03), (r, hb), (r * 0.7, hb), (r * 0.62, hb * 0.6)],
+                                                     sections=24), fab),
+                make_part("cushion", "cushion", S.cylinder(r * 0.64, 0.06, center=(0, 0, 0.06), sections=24), inner)]
+    w, d = rng.uniform(0.6, 1.1), rng.uniform(0.5, 0.8)
+    if variant == "elevated":  # a fabric sling on a frame with four short legs
+        hl = rng.uniform(0.12, 0.2)
+        metal = M.solid((0.2, 0.2, 0.22), "metal", 0.4, 0.7)
+        parts = legs4("leg", "leg", w=w, d=d, h=hl, size=0.03, mat=metal, round_=True)
+        parts.append(make_part("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
+                               + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal))
+        parts.append(make_part("cushion", "cushion", S.box((w - 0.06, d - 0.06, 0.012), center=(0, 0, hl + 0.024)), fab))
+        return parts
+    hb = rng.uniform(0.18, 0.25)
+    b = 0.1
+    parts = [make_part("base", "base", S.box((w, d, 0.04), center=(0, 0, 0.02), bevel=0.01), fab)]
+    parts.append(make_part("cushion", "cushion", S.box((w - 2 * b, d - b, 0.06), center=(0, b / 2, 0.07), bevel=0.02), inner))
+    parts.append(make_part("bolster_0", "bolster", S.box((w, b, hb - 0.04), center=(0, -d / 2 + b / 2, 0.04 + (hb - 0.04) / 2), bevel=0.04),
+                           fab))
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"bolster_{k + 1}", "bolster", S.box((b, d - b, hb * 0.8 - 0.04), center=(sx * (w / 2 - b / 2), b / 2,
+                                                                                                         0.04 + (hb * 0.8 - 0.04) / 2),
+                                                                    bevel=0.04), fab))
+    return parts
+
+
+@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge"),
+          size_range=(0.2, 0.4), density=1500, variants=("angled", "adjustable", "riser"), placement="surface")
+def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
+    alu = M.solid(M.jitter(rng, (0.78, 0.78, 0.8), 0.03)[:3], "metal", 0.3, 0.9)
+    rubber = M.solid((0.08, 0.08, 0.08), "rubber", 0.9)
+    w, d = rng.uniform(0.24, 0.3), rng.uniform(0.22, 0.26)
+    parts = []
+    if variant == "riser":  # a flat shelf on four short legs
+        h = rng.uniform(0.08, 0.14)
+        parts += legs4("leg", "leg", w=w, d=d, h=h - 0.012, size=0.02, mat=alu)
+        parts.append(make_part("platform", "platform", S.box((w, d, 0.012), center=(0, 0, h - 0.006), bevel=0.002), M.wood(rng)))
+        parts.append(make_part("base", "base", [S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)) for sy in (-1, 1)], alu))
+        return parts
+    tilt = np.deg2rad(rng.uniform(15, 25))
+    hf = 0.03  # the platform's front edge height
+    hb_ = hf + d * np.sin(tilt)
+    R = rot((1, 0, 0), -tilt)  # sloping up towards the back (-Y)
+    parts.append(make_part("platform", "platform", S.box((w, d, 0.006), center=(0, 0, (hf + hb_) / 2), R=R), alu))
+    parts.append(make_part("lip", "lip", S.box((w * 0.8, 0.008, 0.018), center=(0, d / 2 * np.cos(tilt) - 0.004, hf + 0.009)), alu))
+    parts.append(make_part("base", "base", S.box((w * 0.9, d * 0.9, 0.008), center=(0, 0, 0.004)), alu))
+    if variant == "angled":
+        parts.append(make_part("arm", "arm", [S.box((0.012, d * 0.85, 0.012), center=(sx * w * 0.4, 0, (hf + hb_) / 2 - 0.01), R=R)
+                                               for sx in (-1, 1)] + [S.box((0.012, 0.012, hb_ - 0.01), center=(sx * w * 0.4, -d * 0.4 * np.cos(tilt),
+                                                                                                        (hb_ - 0.01) / 2 + 0.004))
+                                                                     for sx in (-1, 1)], alu))
+    else:  # an arm on hinges: one strut from the base's front to the platform's back
+        parts.append(make_part("arm", "arm", [S.tube([(sx * w * 0.35, d * 0.35, 0.008), (sx * w * 0.35, -d * 0.35, hb_ - 0.012)], 0.008,
+                                                     sections=8) for sx in (-1, 1)], alu))
+        parts += hinge_parts("hinge", x=0.012, y=d * 0.35, z0=-w * 0.4, z1=w * 0.4, mat=alu, axis="x", radius=0.008, length=0.03)
+    for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
+        parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
+                                                             sections=10), rubber))
+    return parts
+
+
+@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher"),
+          size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
+def console_table(rng: np.random.Generator, variant: str) -> list:
+    w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
+    wood = M.wood(rng)
+    t = 0.03
+    parts = [make_part("tabletop", "tabletop", S.box((w, d, t), center=(0, 0, h - t / 2), bevel=0.004), wood)]
+    ha = 0.08
+    apron = [S.box((w - 0.08, 0.02, ha), center=(0, sy * (d / 2 - 0.03), h - t - ha / 2)) for sy in (-1, 1)]
+    apron += [S.box((0.02, d - 0.08, ha), center=(sx * (w / 2 - 0.03), 0, h - t - ha / 2)) for sx in (-1, 1)]
+    if variant == "trestle":  # two panel ends joined by a stretcher
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"leg_{k}", "leg", S.box((0.04, d - 0.04, h - t), center=(sx * (w / 2 - 0.06), 0, (h - t) / 2)), wood))
+        parts.append(make_part("stretcher", "stretcher", S.box((w - 0.16, 0.04, 0.06), center=(0, 0, 0.2)), wood))
+        parts.append(make_part("apron", "apron", apron[:2], wood))
+        return parts
+    parts += legs4("leg", "leg", w=w, d=d, h=h - t, size=0.04, mat=wood, inset=0.01)
+    if variant == "drawers":
+        parts.append(make_part("apron", "apron", [apron[0]] + apron[2:], wood))
+        n = 2
+        dw = (w - 0.1) / n
+        for k in range(n):
+            x = -w / 2 + 0.05 + dw * (k + 0.5)
+            bd = d - 0.08
+            parts.append(make_part(f"drawer_{k}_box", "drawer_box", [s.moved((x, 0.0, h - t - ha + 0.004))
+                                                                     for s in open_box(dw - 0.02, bd, ha - 0.012, 0.008)], wood))
+            parts.append(make_part(f"drawer_{k}", "drawer", S.box((dw - 0.012, 0.018, ha - 0.008), center=(x, d / 2 - 0.03 + 0.009, h - t - ha / 2)),
+                                   wood))
+            parts.append(make_part(f"knob_{k}", "knob", S.ellipsoid((0.012, 0.012, 0.012), center=(x, d / 2 - 0.012 + 0.01, h - t - ha / 2),
+                                                                    subdivisions=1), M.metal(rng)))
+            parts += [prismatic(f"drawer_{k}_slide", "tabletop", f"drawer_{k}_box", travel=bd * 0.7),
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"knob_{k}")]
+    else:
+        parts.append(make_part("apron", "apron", apron, wood))
+        parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, rng.uniform(0.15, 0.25))), wood))
+    return parts
+
+
+@register("dais", parts=("top", "base"), extra_parts=("fascia", "foot"),
+          size_range=(0.6, 2.6), density=500, variants=("tokonoma", "stage", "plinth"))
+def dais(rng: np.random.Generator, variant: str) -> list[Part]:
+    wood = M.wood(rng)
+    if variant == "tokonoma":  # a low alcove platform: a thick board on a frame, a lacquered front fascia
+        w, d, h = rng.uniform(1.2, 1.9), rng.uniform(0.45, 0.7), rng.uniform(0.08, 0.15)
+    elif variant == "stage":
+        w, d, h = rng.uniform(1.6, 2.5), rng.uniform(1.0, 1.6), rng.uniform(0.2, 0.4)
+    else:
+        w, d, h = rng.uniform(0.6, 1.0), rng.uniform(0.5, 0.8), rng.uniform(0.2, 0.35)
+    t = 0.03
+    zf = 0.01
+    parts = [make_part("base", "base", S.box((w - 0.04, d - 0.04, h - t - zf), center=(0, -0.01, zf + (h - t - zf) / 2)), wood),
+             make_part("top", "top", S.box((w, d, t), center=(0, 0, h - t / 2), bevel=0.003), wood),
+             make_part("fascia", "fascia", S.box((w, 0.02, h - t), center=(0, d / 2 - 0.01, (h - t) / 2)),
+                       Material(M.jitter(rng, (0.1, 0.06, 0.05), 0.02), 0.3, 0.0, "wood"))]
+    parts += feet4("foot", w=w - 0.06, d=d - 0.06, r=0.02, h=zf, mat=wood)
+    return parts
+
+
+@register("paper_towel_holder", parts=("roll", "rod"), extra_parts=("bracket", "base", "arm", "cap"),
+          size_range=(0.25, 0.4), density=300, variants=("under_cabinet", "wall", "countertop"), placement="wall")
+def paper_towel_holder(rng: np.random.Generator, variant: str) -> list[Part]:
+    L, rr = rng.uniform(0.27, 0.28), rng.uniform(0.055, 0.065)
+    metal = M.solid(M.jitter(rng, (0.75, 0.75, 0.77), 0.03)[:3], "metal", 0.3, 0.9) if rng.random() < 0.6 else M.wood(rng)
+    towel = M.solid((0.96, 0.96, 0.94), "paper", 0.95)
+    parts = []
+    if variant == "countertop":  # a round base with an upright rod, the roll standing on it
+        parts.append(make_part("base", "base", S.cylinder(0.08, 0.015, center=(0, 0, 0.0075), sections=24), metal))
+        parts.append(make_part("rod", "rod", S.cylinder(0.01, L + 0.03, center=(0, 0, 0.015 + (L + 0.03) / 2), sections=12), metal))
+        parts.append(make_part("roll", "roll", S.cylinder(rr, L, center=(0, 0, 0.016 + L / 2), sections=20), towel))
+        parts.append(make_part("cap", "cap", S.ellipsoid((0.016, 0.016, 0.016), center=(0, 0, 0.015 + L + 0.03), subdivisions=1), metal))
+        return parts
+    # a rod across two arms; under a cabinet the bracket is on top, on a wall it is at the back
+    arm = rr + 0.02
+    if variant == "under_cabinet":
+        zc = arm
+        parts.append(make_part("bracket", "bracket", S.box((L + 0.05, 0.06, 0.006), center=(0, 0, 2 * arm - 0.003)), metal))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm", S.box((0.006, 0.04, arm), center=(sx * (L / 2 + 0.015), 0, 2 * arm - 0.006 - arm / 2)),
+                                   metal))
+        yc = 0.0
+    else:
+        zc = arm
+        parts.append(make_part("bracket", "bracket", S.box((L + 0.05, 0.006, 0.06), center=(0, 0.003, zc)), metal))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm", S.box((0.006, arm, 0.04), center=(sx * (L / 2 + 0.015), 0.006 + arm / 2, zc)), metal))
+        yc = 0.006 + arm
+    parts.append(make_part("rod", "rod", S.cylinder(0.01, L + 0.03, center=(0, yc, zc), axis=(1, 0, 0), sections=12), metal))
+    parts.append(make_part("roll", "roll", S.cylinder(rr, L, center=(0, yc, zc), axis=(1, 0, 0), sections=20), towel))
+    return parts

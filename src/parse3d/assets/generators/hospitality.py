@@ -1,0 +1,45 @@
+"""The reception desk's small things: a service (call) bell.
+
+The bell's dome sits on a base; the ``button`` (the plunger) rises through its top.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ...geometry import shapes as S
+from .. import materials as M
+from ..model import Material, Part, make_part
+from ..registry import register
+
+
+@register("service_bell", parts=("bell", "base", "button"), extra_parts=("foot", "post"),
+          size_range=(0.07, 0.13), density=2500, variants=("classic", "square_base", "wooden_base"), placement="surface")
+def service_bell(rng: np.random.Generator, variant: str) -> list[Part]:
+    chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.2, 0.95) if rng.random() < 0.6 else M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
+    rb = rng.uniform(0.04, 0.048)
+    hb = 0.012
+    if variant == "classic":
+        parts = [make_part("base", "base", S.cylinder(rb, hb, center=(0, 0, hb / 2), sections=24),
+                           M.solid((0.08, 0.08, 0.08), "metal", 0.4, 0.5))]
+    elif variant == "square_base":
+        parts = [make_part("base", "base", S.box((2 * rb + 0.01, 2 * rb + 0.01, hb), center=(0, 0, hb / 2), bevel=0.002),
+                           M.solid((0.08, 0.08, 0.08), "metal", 0.4, 0.5))]
+    else:
+        parts = [make_part("base", "base", S.box((2 * rb + 0.02, 2 * rb + 0.02, hb + 0.006), center=(0, 0, (hb + 0.006) / 2),
+                                                 bevel=0.003), M.wood(rng))]
+        hb += 0.006
+    for k in range(3):
+        a = 2 * np.pi * k / 3 + np.pi / 2
+        parts.append(make_part(f"foot_{k}", "foot", S.box((0.006, 0.006, 0.004), center=(rb * 0.6 * np.cos(a), rb * 0.6 * np.sin(a),
+                                                                                      hb + 0.002)), chrome))
+    rd = rb * 0.85
+    hd = rd * 0.6
+    z0 = hb + 0.004
+    dome = S.lathe([(0.001, z0), (rd, z0), (rd * 0.95, z0 + hd * 0.35), (rd * 0.75, z0 + hd * 0.75), (rd * 0.4, z0 + hd * 0.97),
+                    (0.001, z0 + hd)], sections=24)
+    parts.append(make_part("bell", "bell", dome, chrome))
+    parts.append(make_part("post", "post", S.cylinder(0.0025, 0.012, center=(0, 0, z0 + hd + 0.006), sections=8), chrome))
+    parts.append(make_part("button", "button", S.cylinder(0.007, 0.004, center=(0, 0, z0 + hd + 0.014), sections=12),
+                           Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.3, "metal")))
+    return parts
