@@ -347,6 +347,23 @@ class Scene:
         """Relations the solver relaxed and that do not hold."""
         return [c for c in self.relations if c.relaxed]
 
+    def save(self, out, *, formats=("glb",), preview: bool = False):
+        """Write the scene into the folder ``out`` as ``parse3d solve`` does: ``scene.json``,
+        ``contacts.json`` when extracted, ``scene.glb`` (or ``formats``), ``preview.png`` with
+        ``preview``. Read it back with :func:`parse3d.load_scene`. Returns the folder."""
+        from .api import save_scene
+
+        return save_scene(self, out, formats=tuple(formats), preview=preview)
+
+    def export(self, path, *, settled: bool | None = None):
+        """Write the scene to ``path`` in the format its suffix names: ``.glb``, ``.gltf``,
+        ``.usd``/``.usda``/``.usdc``, ``.xml`` (MJCF), ``.urdf`` (the folder ``urdf/`` beside
+        it), ``.obj``. ``settled`` picks the pose (None: the scene's own). Returns the files
+        written."""
+        from .api import export_file
+
+        return export_file(self, path, settled=settled)
+
     def __repr__(self) -> str:
         # the dataclass repr would print every mesh of every asset (hundreds of kB)
         n_c = "not extracted" if self.contacts is None else len(self.contacts)

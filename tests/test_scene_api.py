@@ -1,0 +1,94 @@
+"""The Python API of a scene: save, load_scene, export by suffix, the notebook viewer."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+import trimesh
+
+import parse3d
+from parse3d.errors import InputError
+from parse3d.pag import load_pag
+from parse3d.pipeline import PipelineOptions, run_pipeline
+
+PAG_DOC = {"format": "pag/1", "name": "tiny",
+           "room": {"type": "study", "footprint": [[0, 0], [3, 0], [3, 3], [0, 3]],
+                    "height": 2.6},
+           "objects": [{"id": "desk", "category": "desk"}, {"id": "mug", "category": "mug"}],
+           "relations": [{"relation": "ON", "child": "desk", "parent": "floor"},
+                         {"relation": "ON", "child": "mug", "parent": "desk:tabletop"}]}
+
+
+@pytest.fixture(scope="module")
+def scene(tmp_path_factory):
+    """A desk with a mug, solved, settled, contacts extracted."""
+    from parse3d.assets.registry import vocabulary
+
+    path = tmp_path_factory.mktemp("pag") / "tiny.json"
+    path.write_text(json.dumps(PAG_DOC))
+    pag = load_pag(path, vocabulary=vocabulary())
+    return run_pipeline(pag, seed=0, out=None, options=PipelineOptions(preview=False, formats=()))
+
+
+def test_save_writes_what_solve_writes_and_load_scene_reads_it_back(scene, tmp_path):
+    assert scene.contacts is not None
+    out = scene.save(tmp_path / "s")
+    assert {p.name for p in out.iterdir()} >= {"scene.json", "scene.glb", "contacts.json"}
+    assert not (out / "preview.png").exists()
+    back = parse3d.load_scene(out)
+    assert back.objects.keys() == scene.objects.keys()
+    np.testing.assert_allclose(back.objects["mug"].transform(), scene.objects["mug"].transform(),
+                               rtol=1e-5, atol=1e-6)
+    assert parse3d.load_scene(out / "scene.json").seed == scene.seed
+    # a reloaded scene exports again, and an unknown format is refused by name
+    files = back.export(tmp_path / "again.glb")
+    assert trimesh.load(files[0]).geometry
+    with pytest.raises(InputError, match="unknown format 'fbx'"):
+        scene.save(tmp_path / "t", formats=("fbx",))
+
+
+def test_export_by_suffix_writes_files_their_readers_parse(scene, tmp_path):
+    import mujoco
+    import yourdfpy
+    from pxr import Usd
+
+    glb = trimesh.load(scene.export(tmp_path / "a" / "room.glb")[0])
+    names = set(glb.graph.nodes)
+    assert "mug" in names and "desk" in names
+    gltf = scene.export(tmp_path / "room.gltf")[0]
+    assert json.loads(gltf.read_text())["buffers"][0]["uri"].startswith("data:")
+    assert len(trimesh.load(gltf).geometry) == len(glb.geometry)
+    for suffix in (".usd", ".usda", ".usdc"):
+        stage = Usd.Stage.Open(str(scene.export(tmp_path / f"room{suffix}")[0]))
+        assert stage.GetPrimAtPath("/World/Objects/mug").IsValid()
+    assert (tmp_path / "room.usda").read_text().startswith("#usda")
+    xml = scene.export(tmp_path / "m" / "room.xml")[0]
+    model = mujoco.MjModel.from_xml_path(str(xml))
+    assert model.nbody > 2
+    files = scene.export(tmp_path / "u" / "room.urdf")
+    placed = json.loads((tmp_path / "u" / "urdf" / "scene.json").read_text())
+    assert {r["id"] for r in placed} == {"desk", "mug", "room"}
+    mug = next(f for f in files if f.name == "mug.urdf")
+    assert yourdfpy.URDF.load(str(mug)).link_map
+    obj = scene.export(tmp_path / "o" / "room.obj")
+    assert [p.name for p in obj] == ["room.obj", "room.mtl"]
+    assert "mtllib room.mtl" in obj[0].read_text()
+    assert trimesh.load(obj[0], force="scene").geometry
+
+
+def test_export_refuses_an_unknown_suffix_with_the_known_ones(scene, tmp_path):
+    with pytest.raises(InputError, match=r"'\.fbx'.*\.glb"):
+        scene.export(tmp_path / "room.fbx")
+    with pytest.raises(InputError, match="no export format"):
+        scene.export(tmp_path / "room")
+
+
+def test_save_with_preview_writes_the_png_and_records_its_time(scene, tmp_path):
+    from PIL import Image
+
+    out = scene.save(tmp_path / "p", formats=(), preview=True)
+    assert Image.open(out / "preview.png").size == (640, 480)
+    assert not (out / "scene.glb").exists()
+    assert "preview" in json.loads((out / "scene.json").read_text())["timings"]
