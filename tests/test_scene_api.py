@@ -92,3 +92,48 @@ def test_save_with_preview_writes_the_png_and_records_its_time(scene, tmp_path):
     assert Image.open(out / "preview.png").size == (640, 480)
     assert not (out / "scene.glb").exists()
     assert "preview" in json.loads((out / "scene.json").read_text())["timings"]
+
+
+def test_notebook_html_embeds_the_glb_and_the_viewer_scripts(scene):
+    import base64
+    import html
+    import re
+
+    snippet = scene._repr_html_()
+    assert snippet.startswith("<iframe srcdoc=")
+    page = html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1))
+    glb = base64.b64decode(re.search(r'id="p3d-glb"[^>]*>([^<]*)<', page).group(1))
+    assert glb[:4] == b"glTF"
+    assert {"mug", "desk"} <= set(trimesh.load(trimesh.util.wrap_as_stream(glb),
+                                               file_type="glb").graph.nodes)
+    # three.js and its loaders are inside (works offline): no script fetched from anywhere
+    assert all(f'id="{i}"' in page for i in ("p3d-three", "p3d-gltf", "p3d-orbit", "p3d-bgu"))
+    assert "<script>" in page and "src=" not in page and "://" not in page
+
+
+def test_show_writes_a_page_that_chromium_draws_with_the_part_names(scene, tmp_path):
+    import os
+
+    if not os.path.exists("/usr/bin/chromium"):
+        pytest.skip("needs Debian's Chromium (apt-get install chromium)")
+    from playwright.sync_api import sync_playwright
+
+    path = scene.show(tmp_path / "view.html", open_browser=False)
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path="/usr/bin/chromium", args=[
+            "--no-sandbox", "--headless", "--use-gl=angle", "--use-angle=swiftshader",
+            "--enable-unsafe-swiftshader"])
+        page = browser.new_page(viewport={"width": 640, "height": 480})
+        errors: list[str] = []
+        page.on("pageerror", lambda e: errors.append(str(e)))
+        page.goto(path.as_uri())
+        page.wait_for_selector("body[data-ready]", timeout=60_000)
+        ready = page.evaluate("document.body.dataset.ready")
+        viewer = page.evaluate("window.parse3dViewer")
+        label = page.text_content("#p3d-label")
+        browser.close()
+    assert ready == "1", label
+    assert not errors
+    assert viewer["meshes"] > 2
+    names = viewer["names"]
+    assert any(n.startswith("mug : ") for n in names) and any(n.startswith("desk : ") for n in names), names

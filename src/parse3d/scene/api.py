@@ -14,7 +14,7 @@ from pathlib import Path
 from ..errors import InputError, Problem
 from .model import Scene
 
-__all__ = ["SUFFIXES", "save_scene", "export_file"]
+__all__ = ["SUFFIXES", "save_scene", "export_file", "viewer_page_of", "show_scene"]
 
 #: File suffix -> export format (:data:`parse3d.export.FORMATS`).
 SUFFIXES: dict[str, str] = {".glb": "glb", ".gltf": "glb", ".usd": "usd", ".usda": "usd",
@@ -125,3 +125,37 @@ def export_file(scene: Scene, path: str | Path, *, settled: bool | None = None) 
     from ..export.urdf import write
 
     return write(rec, path.parent)
+
+
+def viewer_page_of(scene: Scene, *, settled: bool | None = None) -> str:
+    """The scene in a self-contained three.js page (:mod:`parse3d.scene.viewer`), without its
+    ceiling so the room is seen from above."""
+    from ..export import walk_scene
+    from ..export.gltf import to_glb
+    from .viewer import viewer_page
+
+    opts = _options(settled)
+    opts = type(opts)(settled=opts.settled, ceiling=False, friction=opts.friction)
+    return viewer_page(to_glb(walk_scene(scene, opts)),
+                       title=f"{scene.pag.name or 'scene'} (seed {scene.seed})")
+
+
+def show_scene(scene: Scene, *, path: str | Path | None = None, open_browser: bool = True) -> Path:
+    """Write the viewer page of ``scene`` to ``path`` (a new temporary file when None) and open
+    it in the web browser; returns the file."""
+    import os
+    import tempfile
+    import webbrowser
+
+    from .._files import atomic_write_text
+
+    page = viewer_page_of(scene)
+    if path is None:
+        fd, name = tempfile.mkstemp(prefix="parse3d-scene-", suffix=".html")
+        os.close(fd)
+        path = name
+    path = Path(path)
+    atomic_write_text(path, page)
+    if open_browser:
+        webbrowser.open(path.resolve().as_uri())
+    return path

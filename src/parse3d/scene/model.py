@@ -364,6 +364,20 @@ class Scene:
 
         return export_file(self, path, settled=settled)
 
+    def show(self, path=None, *, open_browser: bool = True):
+        """Open the scene in the web browser: a self-contained three.js page (orbit, zoom,
+        hover names the object and part), written to ``path`` or a temporary file, which is
+        returned. In a notebook, displaying the scene shows the same viewer inline."""
+        from .api import show_scene
+
+        return show_scene(self, path=path, open_browser=open_browser)
+
+    def _repr_html_(self) -> str:
+        from .api import viewer_page_of
+        from .viewer import viewer_iframe
+
+        return viewer_iframe(viewer_page_of(self))
+
     def __repr__(self) -> str:
         # the dataclass repr would print every mesh of every asset (hundreds of kB)
         n_c = "not extracted" if self.contacts is None else len(self.contacts)
