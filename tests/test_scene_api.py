@@ -137,3 +137,18 @@ def test_show_writes_a_page_that_chromium_draws_with_the_part_names(scene, tmp_p
     assert viewer["meshes"] > 2
     names = viewer["names"]
     assert any(n.startswith("mug : ") for n in names) and any(n.startswith("desk : ") for n in names), names
+
+
+def test_render_returns_the_preview_image_and_takes_a_camera(scene, tmp_path):
+    from PIL import Image
+
+    from parse3d.render import overview_camera, save_preview
+
+    rgb = scene.render(160, 120)
+    assert rgb.shape == (120, 160, 3) and rgb.dtype == np.uint8
+    assert rgb.std() > 5  # a room, not a blank frame
+    # the same pixels as the preview parse3d solve writes
+    ref = np.asarray(Image.open(save_preview(scene, tmp_path / "p.png", width=160, height=120)))
+    np.testing.assert_array_equal(rgb, ref)
+    cam = overview_camera(scene, width=96, height=64)
+    assert scene.render(camera=cam).shape == (64, 96, 3)

@@ -364,6 +364,19 @@ class Scene:
 
         return export_file(self, path, settled=settled)
 
+    def render(self, width: int = 640, height: int = 480, *, camera=None,
+               settled: bool | None = None) -> np.ndarray:
+        """The scene as an (H, W, 3) uint8 sRGB image, from the preview's viewpoint
+        (:func:`parse3d.render.preview_camera`) or ``camera`` (a
+        :class:`parse3d.render.Camera`, whose own size then applies). Depth and instance and
+        part masks: :func:`parse3d.render.render_scene`."""
+        from ..render import default_renderer, preview_camera
+
+        r = default_renderer()
+        if camera is None:
+            camera = preview_camera(self, width=width, height=height, settled=settled, renderer=r)
+        return r.render_rgb(self, camera, settled=settled)
+
     def show(self, path=None, *, open_browser: bool = True):
         """Open the scene in the web browser: a self-contained three.js page (orbit, zoom,
         hover names the object and part), written to ``path`` or a temporary file, which is
