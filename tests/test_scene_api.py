@@ -118,6 +118,9 @@ def test_show_writes_a_page_that_chromium_draws_with_the_part_names(scene, tmp_p
         pytest.skip("needs Debian's Chromium (apt-get install chromium)")
     from playwright.sync_api import sync_playwright
 
+    from parse3d.scene.api import in_notebook
+
+    assert not in_notebook()  # so show() writes the page rather than displaying it
     path = scene.show(tmp_path / "view.html", open_browser=False)
     with sync_playwright() as p:
         browser = p.chromium.launch(executable_path="/usr/bin/chromium", args=[
@@ -131,9 +134,12 @@ def test_show_writes_a_page_that_chromium_draws_with_the_part_names(scene, tmp_p
         ready = page.evaluate("document.body.dataset.ready")
         viewer = page.evaluate("window.parse3dViewer")
         label = page.text_content("#p3d-label")
+        page.mouse.move(320, 240)  # the view's centre: the room or an object, named on hover
+        hovered = page.text_content("#p3d-label")
         browser.close()
     assert ready == "1", label
     assert not errors
+    assert hovered in viewer["names"]
     assert viewer["meshes"] > 2
     names = viewer["names"]
     assert any(n.startswith("mug : ") for n in names) and any(n.startswith("desk : ") for n in names), names

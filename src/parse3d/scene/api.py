@@ -14,7 +14,8 @@ from pathlib import Path
 from ..errors import InputError, Problem
 from .model import Scene
 
-__all__ = ["SUFFIXES", "save_scene", "export_file", "viewer_page_of", "show_scene"]
+__all__ = ["SUFFIXES", "save_scene", "export_file", "viewer_page_of", "show_scene",
+           "in_notebook"]
 
 #: File suffix -> export format (:data:`parse3d.export.FORMATS`).
 SUFFIXES: dict[str, str] = {".glb": "glb", ".gltf": "glb", ".usd": "usd", ".usda": "usd",
@@ -140,9 +141,30 @@ def viewer_page_of(scene: Scene, *, settled: bool | None = None) -> str:
                        title=f"{scene.pag.name or 'scene'} (seed {scene.seed})")
 
 
-def show_scene(scene: Scene, *, path: str | Path | None = None, open_browser: bool = True) -> Path:
-    """Write the viewer page of ``scene`` to ``path`` (a new temporary file when None) and open
-    it in the web browser; returns the file."""
+def in_notebook() -> bool:
+    """Whether this runs in a Jupyter kernel (IPython already imported and serving one)."""
+    import sys
+
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None else None
+    return shell is not None and "IPKernelApp" in getattr(shell, "config", {})
+
+
+def show_scene(scene: Scene, *, path: str | Path | None = None,
+               open_browser: bool = True) -> Path | None:
+    """Show ``scene`` in the three.js viewer.
+
+    In a Jupyter kernel (and no ``path``) the viewer is displayed in the cell's output and
+    None is returned. Elsewhere the page is written to ``path`` (a new temporary file when
+    None), opened in the web browser unless ``open_browser`` is False, and its path returned.
+    """
+    if path is None and in_notebook():
+        from IPython.display import HTML, display
+
+        from .viewer import viewer_iframe
+
+        display(HTML(viewer_iframe(viewer_page_of(scene))))
+        return None
     import os
     import tempfile
     import webbrowser

@@ -380,7 +380,8 @@ class Scene:
     def show(self, path=None, *, open_browser: bool = True):
         """Open the scene in the web browser: a self-contained three.js page (orbit, zoom,
         hover names the object and part), written to ``path`` or a temporary file, which is
-        returned. In a notebook, displaying the scene shows the same viewer inline."""
+        returned. In a Jupyter notebook the viewer is shown in the cell's output instead (as
+        when the scene is the cell's value)."""
         from .api import show_scene
 
         return show_scene(self, path=path, open_browser=open_browser)
