@@ -5,7 +5,10 @@ The main entry points::
     import parse3d
     pag = parse3d.load_pag("examples/study.json")
     scene = parse3d.solve(pag, seed=0)
+    scene.save("out/study-0")                   # what parse3d solve writes
     scene = parse3d.load_scene("out/study-0")   # a folder written by parse3d solve
+    scene.export("study.usd")                   # the format by suffix
+    scene.render(640, 480); scene.show()        # an image array; the three.js viewer
 
 See the README for the command line.
 """

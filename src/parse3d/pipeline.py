@@ -182,20 +182,14 @@ def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
         scene.contacts = extract_contacts(scene)
         scene.timings["contacts"] = time.perf_counter() - t
     if out is not None:
-        write_outputs(scene, out, options.formats)
-        if options.preview:
-            from .render import save_preview
-            from .scene.io import write_scene
-
-            t = time.perf_counter()
-            save_preview(scene, Path(out) / "preview.png")
-            scene.timings["preview"] = time.perf_counter() - t
-            write_scene(scene, out)
+        write_outputs(scene, out, options.formats, preview=options.preview)
     return scene
 
 
-def write_outputs(scene: Scene, out: str | Path, formats: tuple[str, ...] = ("glb",)) -> Path:
-    """Write ``scene.json`` (and ``contacts.json``) and the export ``formats`` into ``out``.
+def write_outputs(scene: Scene, out: str | Path, formats: tuple[str, ...] = ("glb",), *,
+                  preview: bool = False) -> Path:
+    """Write ``scene.json`` (and ``contacts.json``), the export ``formats`` and, with
+    ``preview``, ``preview.png`` into ``out`` (:meth:`Scene.save` is the public door).
 
     The exports carry the friction table settling used, so simulators see the same contacts.
     Returns the path of ``scene.json``.
@@ -206,4 +200,11 @@ def write_outputs(scene: Scene, out: str | Path, formats: tuple[str, ...] = ("gl
 
     path = write_scene(scene, out)
     export_scene(scene, out, formats, ExportOptions(friction=settling_friction()))
+    if preview:
+        from .render import save_preview
+
+        t = time.perf_counter()
+        save_preview(scene, Path(out) / "preview.png")
+        scene.timings["preview"] = time.perf_counter() - t
+        write_scene(scene, out)  # with the preview's time
     return path
