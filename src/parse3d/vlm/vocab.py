@@ -148,22 +148,6 @@ def _clean(text: str) -> str:
     return re.sub(r"^(the|a|an) ", "", t)
 
 
-def _singulars(t: str) -> list[str]:
-    """Singular candidates of a plural name, most likely first; the last word of a compound
-    is the one made plural (``coffee tables``, ``shelves``, ``boxes``, ``bodies``)."""
-    head, _, last = t.rpartition(" ")
-    out = []
-    if last.endswith("ies") and len(last) > 4:
-        out.append(last[:-3] + "y")
-    if last.endswith("ves") and len(last) > 4:
-        out += [last[:-3] + "f", last[:-3] + "fe"]
-    if last.endswith("es") and len(last) > 3:
-        out.append(last[:-2])
-    if last.endswith("s") and not last.endswith("ss") and len(last) > 2:
-        out.append(last[:-1])
-    return [f"{head} {s}" if head else s for s in out]
-
-
 def _shared_resolver(known: frozenset[str]):
     """The project's shared vocabulary resolver over ``known`` labels, or None where the
     shared vocabulary module is not part of this installation."""
@@ -189,7 +173,10 @@ def normalize_object(name: str, known: frozenset[str] | set[str] = frozenset()) 
     t = _clean(name)
     if t in known:
         return t
-    for c in (t, *_singulars(t)):
+    from ..words import lexicon, normalize, singulars
+
+    # the shared vocabulary's plural rule, on the label's words (``coffee tables``)
+    for c in (t, *(x.replace("_", " ") for x in singulars(t.replace(" ", "_")))):
         if c in known:
             return c
         if c in OBJECT_SYNONYMS:
@@ -201,8 +188,6 @@ def normalize_object(name: str, known: frozenset[str] | set[str] = frozenset()) 
             if len(hits) == 1:
                 return hits.pop()
     # the package's vocabulary file: a synonym naming one category (``bookshelf``, ``fridge``)
-    from ..words import lexicon, normalize, singulars
-
     lex = lexicon()
     w = normalize(t)
     for form in (w, *singulars(w)):
