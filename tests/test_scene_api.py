@@ -118,7 +118,7 @@ def test_show_writes_a_page_that_chromium_draws_with_the_part_names(scene, tmp_p
         pytest.skip("needs Debian's Chromium (apt-get install chromium)")
     from playwright.sync_api import sync_playwright
 
-    from parse3d.scene.api import in_notebook
+    from parse3d.outputs import in_notebook
 
     assert not in_notebook()  # so show() writes the page rather than displaying it
     path = scene.show(tmp_path / "view.html", open_browser=False)

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
+from . import _hooks
 from . import words as _words
 from .errors import InfeasibleError, InputError, Parse3dError
 
@@ -37,6 +38,16 @@ def _library_vocabulary():
 
 
 _words.use_library(_library_vocabulary)
+
+
+def _scene_outputs():
+    # Scene.save/export/render/show live in parse3d.outputs, above the scene layer
+    from . import outputs
+
+    return outputs
+
+
+_hooks.use_scene_outputs(_scene_outputs)
 
 
 def __getattr__(name: str) -> Any:

@@ -295,6 +295,13 @@ class Contact:
                 "min_distance": round(float(self.min_distance), 6)}
 
 
+def _outputs():
+    # parse3d.outputs, found through the package root (it sits above this layer)
+    from .._hooks import scene_outputs
+
+    return scene_outputs()
+
+
 @dataclass
 class Scene:
     """A solved PAG.
@@ -351,18 +358,14 @@ class Scene:
         """Write the scene into the folder ``out`` as ``parse3d solve`` does: ``scene.json``,
         ``contacts.json`` when extracted, ``scene.glb`` (or ``formats``), ``preview.png`` with
         ``preview``. Read it back with :func:`parse3d.load_scene`. Returns the folder."""
-        from .api import save_scene
-
-        return save_scene(self, out, formats=tuple(formats), preview=preview)
+        return _outputs().save_scene(self, out, formats=tuple(formats), preview=preview)
 
     def export(self, path, *, settled: bool | None = None):
         """Write the scene to ``path`` in the format its suffix names: ``.glb``, ``.gltf``,
         ``.usd``/``.usda``/``.usdc``, ``.xml`` (MJCF), ``.urdf`` (the folder ``urdf/`` beside
         it), ``.obj``. ``settled`` picks the pose (None: the scene's own). Returns the files
         written."""
-        from .api import export_file
-
-        return export_file(self, path, settled=settled)
+        return _outputs().export_file(self, path, settled=settled)
 
     def render(self, width: int = 640, height: int = 480, *, camera=None,
                settled: bool | None = None) -> np.ndarray:
@@ -370,27 +373,17 @@ class Scene:
         (:func:`parse3d.render.preview_camera`) or ``camera`` (a
         :class:`parse3d.render.Camera`, whose own size then applies). Depth and instance and
         part masks: :func:`parse3d.render.render_scene`."""
-        from ..render import default_renderer, preview_camera
-
-        r = default_renderer()
-        if camera is None:
-            camera = preview_camera(self, width=width, height=height, settled=settled, renderer=r)
-        return r.render_rgb(self, camera, settled=settled)
+        return _outputs().render_scene_rgb(self, width, height, camera=camera, settled=settled)
 
     def show(self, path=None, *, open_browser: bool = True):
         """Open the scene in the web browser: a self-contained three.js page (orbit, zoom,
         hover names the object and part), written to ``path`` or a temporary file, which is
         returned. In a Jupyter notebook the viewer is shown in the cell's output instead (as
         when the scene is the cell's value)."""
-        from .api import show_scene
-
-        return show_scene(self, path=path, open_browser=open_browser)
+        return _outputs().show_scene(self, path=path, open_browser=open_browser)
 
     def _repr_html_(self) -> str:
-        from .api import viewer_page_of
-        from .viewer import viewer_iframe
-
-        return viewer_iframe(viewer_page_of(self))
+        return _outputs().repr_html(self)
 
     def __repr__(self) -> str:
         # the dataclass repr would print every mesh of every asset (hundreds of kB)

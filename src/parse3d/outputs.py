@@ -11,8 +11,8 @@ import json
 import struct
 from pathlib import Path
 
-from ..errors import InputError, Problem
-from .model import Scene
+from .errors import InputError, Problem
+from .scene.model import Scene
 
 __all__ = ["SUFFIXES", "save_scene", "export_file", "viewer_page_of", "show_scene",
            "in_notebook"]
@@ -23,8 +23,8 @@ SUFFIXES: dict[str, str] = {".glb": "glb", ".gltf": "glb", ".usd": "usd", ".usda
 
 
 def _options(settled: bool | None = None):
-    from ..export import ExportOptions
-    from ..physics.mujoco import settling_friction
+    from .export import ExportOptions
+    from .physics.mujoco import settling_friction
 
     # the friction table settling used, as parse3d solve writes it
     return ExportOptions(settled=settled, friction=settling_friction())
@@ -39,9 +39,9 @@ def save_scene(scene: Scene, out: str | Path, *, formats: tuple[str, ...] = ("gl
     an earlier solve in ``out`` are replaced; a ``scene.json`` that parse3d did not write is
     refused. Returns the folder.
     """
-    from ..export import check_formats
-    from ..pipeline import write_outputs
-    from .io import clear_scene_outputs
+    from .export import check_formats
+    from .pipeline import write_outputs
+    from .scene.io import clear_scene_outputs
 
     formats = check_formats(formats, where="formats") if formats else ()
     out = Path(out)
@@ -72,7 +72,7 @@ def export_file(scene: Scene, path: str | Path, *, settled: bool | None = None) 
     writes ``urdf/`` beside ``path`` (one ``<object>.urdf`` per object, ``room.urdf`` and
     ``urdf/scene.json`` placing them), as ``parse3d export --format urdf`` does.
     """
-    from .._files import atomic_write_bytes, atomic_write_text
+    from ._files import atomic_write_bytes, atomic_write_text
 
     path = Path(path)
     fmt = SUFFIXES.get(path.suffix.lower())
@@ -83,12 +83,12 @@ def export_file(scene: Scene, path: str | Path, *, settled: bool | None = None) 
     if path.is_dir():
         raise InputError(Problem("", "this is a folder: export to a file path in it, such as "
                                      f"{path / ('scene' + path.suffix)}", str(path), "io"))
-    from ..export import walk_scene
+    from .export import walk_scene
 
     rec = walk_scene(scene, _options(settled))
     path.parent.mkdir(parents=True, exist_ok=True)
     if fmt == "glb":
-        from ..export.gltf import to_glb
+        from .export.gltf import to_glb
 
         glb = to_glb(rec)
         if path.suffix.lower() == ".gltf":
@@ -97,7 +97,7 @@ def export_file(scene: Scene, path: str | Path, *, settled: bool | None = None) 
             atomic_write_bytes(path, glb)
         return [path]
     if fmt == "usd":
-        from ..export.usd import build_layer
+        from .export.usd import build_layer
 
         tmp = path.with_name(f".{path.stem}.tmp{path.suffix}")
         try:
@@ -110,20 +110,20 @@ def export_file(scene: Scene, path: str | Path, *, settled: bool | None = None) 
             raise
         return [path]
     if fmt == "mjcf":
-        from ..export.mjcf import build_xml
+        from .export.mjcf import build_xml
 
         xml, files = build_xml(rec, path.parent)
         atomic_write_text(path, xml)
         return [path, *files.close()]
     if fmt == "obj":
-        from ..export.obj import to_obj
+        from .export.obj import to_obj
 
         mtl_path = path.with_suffix(".mtl")
         obj, mtl = to_obj(rec, mtl_path.name)
         atomic_write_text(mtl_path, mtl)
         atomic_write_text(path, obj)
         return [path, mtl_path]
-    from ..export.urdf import write
+    from .export.urdf import write
 
     return write(rec, path.parent)
 
@@ -131,9 +131,9 @@ def export_file(scene: Scene, path: str | Path, *, settled: bool | None = None) 
 def viewer_page_of(scene: Scene, *, settled: bool | None = None) -> str:
     """The scene in a self-contained three.js page (:mod:`parse3d.scene.viewer`), without its
     ceiling so the room is seen from above."""
-    from ..export import walk_scene
-    from ..export.gltf import to_glb
-    from .viewer import viewer_page
+    from .export import walk_scene
+    from .export.gltf import to_glb
+    from .scene.viewer import viewer_page
 
     opts = _options(settled)
     opts = type(opts)(settled=opts.settled, ceiling=False, friction=opts.friction)
@@ -161,7 +161,7 @@ def show_scene(scene: Scene, *, path: str | Path | None = None,
     if path is None and in_notebook():
         from IPython.display import HTML, display
 
-        from .viewer import viewer_iframe
+        from .scene.viewer import viewer_iframe
 
         display(HTML(viewer_iframe(viewer_page_of(scene))))
         return None
@@ -169,7 +169,7 @@ def show_scene(scene: Scene, *, path: str | Path | None = None,
     import tempfile
     import webbrowser
 
-    from .._files import atomic_write_text
+    from ._files import atomic_write_text
 
     page = viewer_page_of(scene)
     if path is None:
@@ -181,3 +181,22 @@ def show_scene(scene: Scene, *, path: str | Path | None = None,
     if open_browser:
         webbrowser.open(path.resolve().as_uri())
     return path
+
+
+def render_scene_rgb(scene: Scene, width: int = 640, height: int = 480, *, camera=None,
+                     settled: bool | None = None):
+    """What :meth:`Scene.render` returns: an (H, W, 3) uint8 image from the preview's
+    viewpoint or ``camera``."""
+    from .render import default_renderer, preview_camera
+
+    r = default_renderer()
+    if camera is None:
+        camera = preview_camera(scene, width=width, height=height, settled=settled, renderer=r)
+    return r.render_rgb(scene, camera, settled=settled)
+
+
+def repr_html(scene: Scene) -> str:
+    """What :meth:`Scene._repr_html_` returns: the viewer page in an ``<iframe srcdoc>``."""
+    from .scene.viewer import viewer_iframe
+
+    return viewer_iframe(viewer_page_of(scene))
