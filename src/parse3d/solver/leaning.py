@@ -31,7 +31,7 @@ from ..measure.reach import (
 from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry, part_points
-from .rotation import parent_surface_world
+from .rotation import _pressing, parent_surface_world
 from .state import SolveState, parts_for
 from .support import Support
 
@@ -191,8 +191,6 @@ def pressed(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndar
     parent in settling (a guitar leaning by its body, which touches only below about 4
     degrees; even a flat-bottomed one 8 mm behind may stay, a round-bottomed one 17 mm
     behind rolled upright)."""
-    from .rotation import _pressing
-
     g = asset_geometry(asset)
     hull, com = g.hull * scale, g.com * scale
     best = -np.inf
@@ -231,19 +229,8 @@ def _firm(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarra
           tilts: list[float], rng: np.random.Generator) -> float:
     """One of ``tilts`` at which the centre of mass lies :data:`FIRM_SHARE` of the child's
     thickness beyond its base toward the parent (random among them); else the firmest."""
-    g = asset_geometry(asset)
-    hull, com = g.hull * scale, g.com * scale
-    need = FIRM_SHARE * float(np.ptp(g.hull[:, 2])) * scale
-    margins = []
-    for th in tilts:
-        Rt = axis_angle(k, th) @ R
-        Y = hull @ Rt.T
-        base = Y[Y[:, 2] <= Y[:, 2].min() + 2e-3]
-        margins.append(float((Rt @ com) @ d - np.max(base @ d)))
-    good = [t for t, m in zip(tilts, margins, strict=True) if m >= need]
-    if good:
-        return float(good[int(rng.integers(len(good)))])
-    return float(tilts[int(np.argmax(margins))])
+    need = FIRM_SHARE * float(np.ptp(asset_geometry(asset).hull[:, 2])) * scale
+    return _pressing(asset, scale, R, k, d, tilts, rng, margin=need)
 
 
 def lean_line(ctx, e: Edge, region: BaseGeometry) -> BaseGeometry | None:

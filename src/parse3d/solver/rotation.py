@@ -313,9 +313,10 @@ LEAN_MARGIN = 0.004
 
 
 def _pressing(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray,
-              tilts: list[float], rng: np.random.Generator) -> float:
+              tilts: list[float], rng: np.random.Generator, *,
+              margin: float = LEAN_MARGIN) -> float:
     """One of ``tilts`` (radians about ``k``) at which gravity presses the object toward ``d``
-    (its parent): its centre of mass lies at least ``LEAN_MARGIN`` beyond its lowest points
+    (its parent): its centre of mass lies at least ``margin`` (metres) beyond its lowest points
     (the base edge it pivots on) along ``d``. A random one of those; when none, the tilt that
     comes closest (a flat-bottomed guitar with a low centre of mass at a small tilt would stand
     up off the wall in settling)."""
@@ -327,7 +328,7 @@ def _pressing(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.nd
         Y = hull @ Rt.T
         base = Y[Y[:, 2] <= Y[:, 2].min() + 2e-3]
         margins.append(float((Rt @ com) @ d - np.max(base @ d)))
-    good = [t for t, m in zip(tilts, margins, strict=True) if m >= LEAN_MARGIN]
+    good = [t for t, m in zip(tilts, margins, strict=True) if m >= margin]
     if good:
         return float(good[int(rng.integers(len(good)))])
     return float(tilts[int(np.argmax(margins))])
