@@ -361,7 +361,22 @@ def test_foreign_hosts_and_cross_site_requests_are_refused(client, workdir):
     assert r.status_code == 200
 
 
-def test_the_solve_queue_is_bounded_cancellable_and_never_forgets_a_running_job(tmp_path):
+def test_the_solve_queue_is_bounded_cancellable_and_never_forgets_a_running_job(
+        tmp_path, monkeypatch):
+    import threading
+
+    from parse3d.web import app as web_app
+
+    # the first job waits until the second is cancelled, so the second is surely still queued
+    # then (a fast machine, or a slow one, must not decide which state it is in)
+    go, real_run = threading.Event(), web_app.run_job
+
+    def first_waits(job, *args, **kwargs):
+        if job.seed == 0:
+            go.wait(60)
+        return real_run(job, *args, **kwargs)
+
+    monkeypatch.setattr(web_app, "run_job", first_waits)
     with TestClient(create_app(tmp_path, max_queue=2), **PAGE) as c:
         ids = []
         for seed in range(2):
@@ -371,6 +386,7 @@ def test_the_solve_queue_is_bounded_cancellable_and_never_forgets_a_running_job(
         r = c.post("/api/solve", json={"pag": small_pag(), "seed": 9})
         assert r.status_code == 429 and "cancel" in r.json()["error"]
         assert c.delete(f"/api/jobs/{ids[1]}").json()["state"] in ("cancelled", "running")
+        go.set()
         events = sse(c.get(f"/api/jobs/{ids[1]}/events").text)
         assert events[-1] == {**events[-1], "type": "error", "message": "cancelled"}
         assert sse(c.get(f"/api/jobs/{ids[0]}/events").text)[-1]["type"] == "done"
