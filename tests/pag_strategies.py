@@ -108,6 +108,11 @@ def pag_documents(draw, max_objects: int = 10) -> dict:
         "objects": objects,
         "relations": list(relations),
     }
+    if any(r.get("frame") == "camera" for r in relations) or draw(st.booleans()):
+        # sides read in the camera's frame need a viewpoint
+        doc["viewpoint"] = draw(st.one_of(
+            st.builds(lambda i: {"wall": f"wall_{i}"}, st.integers(0, n_walls - 1)),
+            st.just({"position": [0.5, 0.5], "look_at": [w / 2, d / 2]})))
     if draw(st.booleans()):
         doc["meta"] = {"source": "hypothesis", "seed": draw(st.integers(0, 99))}
     return doc

@@ -143,7 +143,15 @@ _SIDE = Param(
     "enum",
     choices=("left", "right", "front", "back"),
     default=None,
-    doc="which side of the parent, in the parent's own frame",
+    doc="which side of the parent, in the parent's own frame (or the camera's: `frame`)",
+)
+_FRAME = Param(
+    "frame",
+    "enum",
+    choices=("parent", "camera"),
+    default="parent",
+    doc="whose left, right, front and back `side` means: the parent's own frame, or the "
+    "camera's (as seen from the PAG's `viewpoint`, where the photograph was taken)",
 )
 
 _RELATIONS = (
@@ -286,9 +294,10 @@ _RELATIONS = (
         OBJECT,
         None,
         None,
-        (_SIDE,),
+        (_SIDE, _FRAME),
         "is on one side of",
-        "(x_A - x_B) . n_side > 0, with n_side in the parent's frame",
+        "(x_A - x_B) . n_side > 0, with n_side in the parent's frame (or, with frame camera, "
+        "the camera's)",
         "beside",
     ),
     Relation(
@@ -299,6 +308,7 @@ _RELATIONS = (
         (
             _SIDE,
             Param("width", "float", "m", 0.01, 20.0, 0.6, doc="depth of the strip along that side"),
+            _FRAME,
         ),
         "is lined up along",
         "0 <= (x_A - x_B) . n_side - h_B <= width and |(x_A - x_B) . n_side^perp| <= e/2: the strip "

@@ -331,7 +331,8 @@ def _sub_pag(ls: LayoutScene) -> PAG:
     pag = ls.pag
     rels = [e for e in pag.relations if e.child.object in keep
             and (e.parent.is_room_element or e.parent.object in keep)]
-    return PAG(pag.name, pag.room, [pag.objects[o] for o in ls.object_ids], rels, meta=pag.meta)
+    return PAG(pag.name, pag.room, [pag.objects[o] for o in ls.object_ids], rels, meta=pag.meta,
+               viewpoint=pag.viewpoint)
 
 
 def _scene_for(ls: LayoutScene, pag: PAG, poses: np.ndarray, seed: int, *, given_scale: bool,

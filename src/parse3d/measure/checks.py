@@ -346,10 +346,15 @@ def _check_toward(ctx: CheckContext) -> Check:
 
 
 def _side_offset(ctx: CheckContext) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
-    """Child centroid, parent centroid, horizontal unit n_side and the offset along it."""
+    """Child centroid, parent centroid, horizontal unit n_side (the parent's frame, or the
+    camera's) and the offset along it."""
     xA = object_centroid(ctx.child, ctx.settled)
     xB, RB = _frame(ctx.scene, ctx.edge.parent.object, ctx.settled, near=xA)
-    n = RB @ np.array(_SIDE[ctx.param("side")])
+    if ctx.param("frame") == "camera":  # as seen from the PAG's viewpoint
+        pag = ctx.scene.pag
+        n = np.array(pag.viewpoint.side_direction(pag.room, ctx.param("side")))
+    else:
+        n = RB @ np.array(_SIDE[ctx.param("side")])
     n[2] = 0
     n /= max(np.linalg.norm(n), 1e-9)
     return xA, xB, n, float((xA - xB) @ n)

@@ -12,7 +12,7 @@ Examples
 
 from .algorithms import assembly_order, dependency_graph, descendants, support_depth, support_tree
 from .io import dumps_pag, load_pag, read_document, save_pag
-from .model import PAG, PAG_FORMAT, Edge, ObjectNode, Room, param_value
+from .model import PAG, PAG_FORMAT, Edge, ObjectNode, Room, Viewpoint, param_value
 from .refs import Ref, RefSyntaxError, is_room_element, parse_ref
 from .schema import pag_schema, schema_problems
 from .validate import validate_data
@@ -21,6 +21,7 @@ __all__ = [
     "PAG",
     "PAG_FORMAT",
     "Room",
+    "Viewpoint",
     "ObjectNode",
     "Edge",
     "Ref",

@@ -12,6 +12,7 @@ Algorithms over the graph (support tree, assembly order, descendants) are free f
 from __future__ import annotations
 
 import copy
+import math
 import operator
 from dataclasses import dataclass, field
 from typing import Any
@@ -19,7 +20,7 @@ from typing import Any
 from ..relations import RELATIONS, Param
 from .refs import Ref, parse_ref
 
-__all__ = ["PAG_FORMAT", "Room", "ObjectNode", "Edge", "PAG", "param_value"]
+__all__ = ["PAG_FORMAT", "Room", "Viewpoint", "ObjectNode", "Edge", "PAG", "param_value"]
 
 PAG_FORMAT = "pag/1"
 
@@ -56,6 +57,57 @@ class Room:
             "footprint": [list(p) for p in self.footprint],
             "height": self.height,
         }
+
+
+@dataclass(frozen=True)
+class Viewpoint:
+    """Where the scene is seen from: the camera of the photograph a PAG describes.
+
+    Relations with ``"frame": "camera"`` (``SIDE_OF``, ``ALONG``) read their ``side`` as seen
+    from here: ``left``/``right`` as the viewer sees them, ``front`` nearer the viewer, ``back``
+    further away. Give either a wall (the camera stands at the middle of that wall's inner face,
+    looking straight into the room) or a position and a point looked at (metres, floor plan).
+
+    Attributes
+    ----------
+    wall : str or None
+        ``"wall_i"``.
+    position, look_at : (x, y) or None
+    """
+
+    wall: str | None = None
+    position: tuple[float, float] | None = None
+    look_at: tuple[float, float] | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        if self.wall is not None:
+            return {"wall": self.wall}
+        return {"position": list(self.position), "look_at": list(self.look_at)}
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> Viewpoint:
+        if "wall" in d:
+            return cls(wall=str(d["wall"]))
+        return cls(position=(float(d["position"][0]), float(d["position"][1])),
+                   look_at=(float(d["look_at"][0]), float(d["look_at"][1])))
+
+    def view_direction(self, room: Room) -> tuple[float, float]:
+        """Horizontal unit vector the camera looks along (world frame)."""
+        if self.wall is not None:
+            i = int(self.wall.split("_")[1])
+            (x0, y0), (x1, y1) = room.footprint[i], room.footprint[(i + 1) % room.n_walls]
+            dx, dy = -(y1 - y0), x1 - x0  # the inward normal of a counter-clockwise footprint
+        else:
+            dx, dy = self.look_at[0] - self.position[0], self.look_at[1] - self.position[1]
+        n = math.hypot(dx, dy)
+        return (dx / n, dy / n)
+
+    def side_direction(self, room: Room, side: str) -> tuple[float, float, float]:
+        """World unit vector of ``side`` as the camera sees it: ``right`` is the viewer's
+        right, ``front`` points toward the camera, ``back`` away from it."""
+        dx, dy = self.view_direction(room)
+        return {"right": (dy, -dx, 0.0), "left": (-dy, dx, 0.0),
+                "front": (-dx, -dy, 0.0), "back": (dx, dy, 0.0)}[side]
 
 
 @dataclass(frozen=True)
@@ -171,6 +223,8 @@ class PAG:
         In declaration order.
     meta : dict
         Free-form metadata (kept for round-trip).
+    viewpoint : Viewpoint or None
+        Where the scene is seen from, for relations with ``"frame": "camera"``.
     """
 
     def __init__(
@@ -181,12 +235,14 @@ class PAG:
         relations: list[Edge] | None = None,
         *,
         meta: dict[str, Any] | None = None,
+        viewpoint: Viewpoint | None = None,
     ):
         self.name = name
         self.room = room
         self.objects: dict[str, ObjectNode] = {}
         self.relations: list[Edge] = []
         self.meta: dict[str, Any] = dict(meta or {})
+        self.viewpoint = viewpoint
         for o in objects or []:
             self.objects[o.id] = o
         for e in relations or []:
@@ -300,6 +356,8 @@ class PAG:
             "objects": [o.to_dict() for o in self.objects.values()],
             "relations": [e.to_dict() for e in self.relations],
         }
+        if self.viewpoint is not None:
+            d["viewpoint"] = self.viewpoint.to_dict()
         if self.meta:
             d["meta"] = copy.deepcopy(self.meta)
         return d
@@ -330,7 +388,8 @@ class PAG:
                       if k not in ("relation", "child", "parent")}
             relations.append(Edge(r["relation"], parse_ref(r["child"]), parse_ref(r["parent"]), params))
         return cls(str(data.get("name", "")), room, objects, relations,
-                   meta=copy.deepcopy(data.get("meta") or {}))
+                   meta=copy.deepcopy(data.get("meta") or {}),
+                   viewpoint=Viewpoint.from_dict(data["viewpoint"]) if "viewpoint" in data else None)
 
     def copy(self) -> PAG:
         return PAG.from_dict(self.to_dict())

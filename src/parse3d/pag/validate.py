@@ -228,7 +228,44 @@ class _Checker:
         self.check_room(self.data.get("room"))
         self.check_objects(self.data.get("objects"))
         self.check_relations(self.data.get("relations"))
+        self.check_viewpoint(self.data.get("viewpoint"))
         return self.problems
+
+    def check_viewpoint(self, vp: Any) -> None:
+        """The viewpoint names a wall or a position and a point looked at (not both); relations
+        read in the camera's frame need one."""
+        rels = self.data.get("relations")
+        camera = [i for i, r in enumerate(rels if isinstance(rels, list) else [])
+                  if isinstance(r, dict) and r.get("frame") == "camera"]
+        if vp is None:
+            if camera:
+                self.add(f"/relations/{camera[0]}/frame", "\"frame\": \"camera\" reads the side as "
+                         "seen from the PAG's viewpoint, and this PAG has none: add "
+                         "\"viewpoint\": {\"wall\": \"wall_i\"} (the wall the photograph was taken "
+                         "from) or {\"position\": [x, y], \"look_at\": [x, y]} at the top level",
+                         "reference")
+            return
+        if not isinstance(vp, dict):
+            return
+        has_wall, has_pos = "wall" in vp, ("position" in vp or "look_at" in vp)
+        if has_wall and has_pos:
+            self.add("/viewpoint", "give either \"wall\" or \"position\" with \"look_at\", "
+                     "not both", "reference")
+        elif not has_wall and not ("position" in vp and "look_at" in vp):
+            self.add("/viewpoint", "a viewpoint needs \"wall\": \"wall_i\", or both "
+                     "\"position\": [x, y] and \"look_at\": [x, y]", "reference")
+        elif has_wall:
+            w = vp["wall"]
+            if isinstance(w, str) and w.startswith("wall_") and w[5:].isdigit() \
+                    and self.n_walls is not None and int(w[5:]) >= self.n_walls:
+                self.add("/viewpoint/wall", f"{w!r} does not exist: this room has walls wall_0 "
+                         f"to wall_{self.n_walls - 1}", "reference")
+        else:
+            p, q = vp["position"], vp["look_at"]
+            if all(isinstance(v, list) and len(v) == 2 and all(_is_number(c) for c in v)
+                   for v in (p, q)) and math.hypot(q[0] - p[0], q[1] - p[1]) < 1e-3:
+                self.add("/viewpoint/look_at", "the point looked at must differ from the "
+                         "position (at least 1 mm away on the floor plan)", "geometry")
 
     # ------------------------------------------------------------------ room
     def check_room(self, room: Any) -> None:

@@ -32,6 +32,7 @@ from .regions import (
     height_band,
     obstacles,
     parent_frame,
+    side_vector,
     steps_on,
 )
 from .rotation import solve_rotation
@@ -1345,9 +1346,7 @@ def _leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.nda
 
     wants: list[tuple[np.ndarray, float]] = []
     for e in beside(oid):
-        from .regions import _SIDE_DIRS
-
-        d = R @ np.array(_SIDE_DIRS[e.param("side")])
+        d = side_vector(st, e, R)
         g = np.array([d @ s.u, d @ s.v])
         if np.linalg.norm(g) < 1e-6:
             continue

@@ -30,7 +30,7 @@ from .state import SolveState, frame_key, parts_for, plane_coords, plane_key
 from .support import Support
 
 __all__ = ["REGION_RULES", "RegionContext", "obstacles", "apply_region_rules", "height_band",
-           "parent_frame", "polygonal"]
+           "parent_frame", "polygonal", "side_vector"]
 
 _SIDE_DIRS = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
               "right": (1.0, 0.0, 0.0), "left": (-1.0, 0.0, 0.0)}
@@ -227,16 +227,25 @@ def _distance(ctx, e, region):
     return new
 
 
+def side_vector(st: SolveState, e, R: np.ndarray) -> np.ndarray:
+    """World direction of a ``SIDE_OF`` / ``ALONG`` edge's ``side``: in the parent's frame
+    (rotation ``R``), or with ``frame: camera`` as the PAG's viewpoint sees it."""
+    if e.param("frame") == "camera":  # the side as the photograph shows it
+        return np.array(st.pag.viewpoint.side_direction(st.pag.room, e.param("side")))
+    return R @ np.array(_SIDE_DIRS[e.param("side")])
+
+
 @region_rule("object", "SIDE_OF", "ALONG")
 def _side(ctx, e, region):
-    """SIDE_OF: the half-plane beyond the parent's centroid on ``side`` (parent frame).
+    """SIDE_OF: the half-plane beyond the parent's centroid on ``side`` (parent frame, or the
+    camera's with ``frame: camera``).
     ALONG: the strip beside the parent's ``side`` face, from the face outwards up to ``width``,
     within the parent's extent along that face (as :mod:`parse3d.measure` checks it)."""
     st, s, rel = ctx.st, ctx.sup.surface, e.relation
     xB, frame, hull = parent_frame(st, e.parent.object)
     cB = plane_coords(s, xB[None])[0] - ctx.off
     side = e.param("side")
-    nw = frame @ np.array(_SIDE_DIRS[side])
+    nw = side_vector(st, e, frame)
     g = np.array([nw @ s.u, nw @ s.v])
     if np.linalg.norm(g) < 1e-6:
         # the side is across the support (a mirror on the wall behind a vanity, SIDE_OF its
