@@ -29,6 +29,8 @@ __all__ = [
     "Param",
     "Relation",
     "RELATIONS",
+    "SUPPORT_RELATIONS",
+    "CONTACT_RELATIONS",
     "relation_names",
     "get_relation",
 ]
@@ -49,6 +51,9 @@ SURFACES: MappingProxyType[str, tuple[float, float, float]] = MappingProxyType(
 SUPPORT = "support"
 PART = "part"
 OBJECT = "object"
+
+_CONTACT_PART_RELATIONS = frozenset({"AGAINST", "LEANING_AGAINST"})
+_SYMMETRIC_RELATIONS = frozenset({"NEAR", "FAR_FROM", "ALIGNED_WITH", "OPPOSITE_TO", "PARALLEL_TO"})
 
 
 @dataclass(frozen=True)
@@ -108,6 +113,8 @@ class Relation:
         One line, written so that "<child> <meaning> <parent>" reads as a sentence.
     constraints : str
         The geometric constraints the solver enforces, as in the paper's table.
+    phrase : str
+        A short English phrase ("on", "leaning against").
     """
 
     name: str
@@ -118,6 +125,19 @@ class Relation:
     meaning: str
     constraints: str
     phrase: str = ""
+
+    @property
+    def is_contact(self) -> bool:
+        """Whether the relation holds only with the two touching: every support relation,
+        ``AGAINST`` and ``LEANING_AGAINST`` (``ALIGNED_WITH`` and the other surface relations
+        hold at any distance)."""
+        return self.kind == SUPPORT or self.name in _CONTACT_PART_RELATIONS
+
+    @property
+    def is_symmetric(self) -> bool:
+        """Whether "A rel B" says the same as "B rel A" (``NEAR``, ``FAR_FROM``,
+        ``ALIGNED_WITH``, ``OPPOSITE_TO``, ``PARALLEL_TO``)."""
+        return self.name in _SYMMETRIC_RELATIONS
 
     @property
     def is_support(self) -> bool:
@@ -359,6 +379,10 @@ _RELATIONS = (
 
 #: Every relation by name, in the paper's order.
 RELATIONS: MappingProxyType[str, Relation] = MappingProxyType({r.name: r for r in _RELATIONS})
+#: Names of the support relations (each object has exactly one), in the paper's order.
+SUPPORT_RELATIONS: tuple[str, ...] = tuple(r.name for r in _RELATIONS if r.is_support)
+#: Names of the relations that hold only in contact (:attr:`Relation.is_contact`).
+CONTACT_RELATIONS: tuple[str, ...] = tuple(r.name for r in _RELATIONS if r.is_contact)
 
 
 def relation_names() -> tuple[str, ...]:

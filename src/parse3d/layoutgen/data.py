@@ -28,6 +28,7 @@ from ..errors import InputError, Problem
 from ..geometry.frames import quat_to_matrix
 from ..pag.model import PAG
 from ..pag.refs import wall_index
+from ..relations import SUPPORT_RELATIONS
 from ..scene.io import READABLE_FORMATS
 from .encoders import AssetInfo, RelationEncoder, RelationSpec, ShapeEncoder
 from .pose import PoseStats, normalise_poses, rotation_to_6d, support_order
@@ -385,7 +386,7 @@ def _room_features(footprint: np.ndarray, height: float, relations: list[Relatio
     return geo, ctx
 
 
-_SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+_SUPPORT = SUPPORT_RELATIONS
 
 
 def support_parents(relations: list[RelationSpec], n: int) -> np.ndarray:

@@ -60,6 +60,7 @@ import numpy as np
 
 from ..measure import check_relations
 from ..pag.model import PAG
+from ..relations import SUPPORT_RELATIONS
 from ..scene.model import Scene
 from .data import LayoutScene, find_scenes, load_scene
 from .guide import PASSES, guide_poses, piece_boxes
@@ -74,7 +75,7 @@ __all__ = ["LayoutMetrics", "pair_kind", "EvalRow", "EvalResult", "layout_metric
 
 PENETRATION = 0.01
 SUPPORT_TOL = 0.02
-_SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+_SUPPORT = SUPPORT_RELATIONS
 #: Relations judged on centroids and regions, without contact tolerances.
 SPATIAL = ("SIDE_OF", "ALONG", "NEAR", "FAR_FROM", "TOWARD")
 

@@ -48,6 +48,7 @@ from ..measure.checks import (
     world_points,
 )
 from ..pag.algorithms import assembly_order
+from ..relations import SUPPORT_RELATIONS
 from ..scene.model import Scene
 
 __all__ = ["FitReport", "fit_scene", "ALIGN_DEG", "GAP", "ROUNDS"]
@@ -59,7 +60,7 @@ GAP = 1e-3
 #: Rounds of collision resolution.
 ROUNDS = 12
 _CONTACT = ("ON", "IN", "AGAINST", "SECURED_TO")
-_SUPPORT = ("ON", "IN", "HANGING_BELOW", "SECURED_TO")
+_SUPPORT = SUPPORT_RELATIONS
 
 
 @dataclass

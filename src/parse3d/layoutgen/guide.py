@@ -53,6 +53,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..assets.model import Asset
+from ..relations import SUPPORT_RELATIONS
 from .pose import room_box, rotation_from_6d
 
 __all__ = ["PieceBoxes", "piece_boxes", "grounded", "guide_push", "guide_poses", "PASSES",
@@ -175,7 +176,7 @@ def pag_supports(relations, n: int) -> np.ndarray:
     parents = support_parents(relations, n)
     first: dict[int, str] = {}
     for r in relations:
-        if r.relation in ("ON", "IN", "HANGING_BELOW", "SECURED_TO"):
+        if r.relation in SUPPORT_RELATIONS:
             first.setdefault(r.child, r.relation)
     for k in range(n):
         if first.get(k) not in ("ON", "IN"):
