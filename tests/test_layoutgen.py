@@ -401,6 +401,7 @@ def test_metrics_see_collisions_and_the_room(dataset):
     m = layout_metrics(good, physics=True)
     assert m.collision_rate == 0 and m.support_rate == 1.0 and m.relations == 1.0
     assert m.displacement < 0.02 and m.object_contacts >= 2
+    assert m.stable >= 0.75  # a settled scene stays where it is (1 cm, 2 degrees)
     bad_poses = ls.poses.copy()
     bad_poses[3, :3] = bad_poses[0, :3]  # the chair inside the desk
     bad_poses[1, :2] = [-1.0, -1.0]  # the mug outside the room
