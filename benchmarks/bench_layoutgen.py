@@ -13,10 +13,18 @@ A small end-to-end check (a few minutes of CPU)::
         --steps 20 --preset tiny --relations learned --seeds 2 --max-scenes 1 --no-physics \\
         --sample-steps 10
 
-The issue's full run on a GPU machine (the paper's sizes: ``--preset paper``)::
+The issue's full run on one GPU (the paper's sizes, ``--preset paper``: 512-d, 16 noisy
+copies per scene; three training seeds per model; the table with and without guidance)::
 
     python benchmarks/bench_layoutgen.py --build 1000 --rooms bedroom,study,bathroom \\
-        --workers 16 --out out/lb-gpu --steps 30000 --preset paper --device cuda --seeds 3
+        --workers 16 --out out/lb-gpu --steps 30000 --preset paper --device cuda --seeds 3 \\
+        --train-seeds 3 --guide 5 --shape pointcloud
+
+With ``--train-seeds K`` each model is trained K times (seeds 0..K-1, one train/test split)
+under ``OUT/train-seed-k/``, and each row reports the mean ± spread over the K training seeds
+(each seed's figure the mean over sampling seeds and held-out scenes). With ``--guide N`` the
+table has every model row twice, ``[model only]`` and ``[model + guidance (N steps)]``, and the
+claim is judged for each part.
 
 With ``--build N`` it first builds (or resumes) an N-scene template dataset into
 ``OUT/dataset`` (``--workers`` processes). It then trains two runs on the same split,
@@ -66,7 +74,10 @@ def main() -> int:
                     help="physics guidance in the last N denoising steps (every model row)")
     ap.add_argument("--device", default="cpu")
     ap.add_argument("--no-settle", action="store_true", help="build without settling (faster)")
-    ap.add_argument("--seeds", type=int, default=3)
+    ap.add_argument("--seeds", type=int, default=3, help="sampling seeds per evaluation")
+    ap.add_argument("--train-seeds", type=int, default=1,
+                    help="train each model this many times (seeds 0..K-1); rows report the "
+                    "mean and spread over training seeds")
     ap.add_argument("--max-scenes", type=int, default=0, help="evaluate at most this many test scenes")
     ap.add_argument("--sample-steps", type=int, default=100)
     ap.add_argument("--no-physics", action="store_true")
@@ -96,40 +107,97 @@ def main() -> int:
     if dataset is None:
         ap.error("give --dataset or --build N")
 
-    cpu = {}
-    for cond in ("pag", "none"):
-        cfg = TrainConfig(cond=cond, steps=args.steps, preset=args.preset, relations=args.relations,
-                          shape=args.shape, noise_draws=args.noise_draws, device=args.device,
-                          checkpoint_every=max(args.steps // 8, 1),
-                          frame=args.frame if cond == "pag" else "world",
-                          cpu_limit=None if args.cpu_limit is None
-                          else args.cpu_limit + time.process_time() / 60.0)
-        c0, w0 = time.process_time(), time.perf_counter()
-        rep = train(dataset, args.out / cond, cfg, log=print)
-        cpu[cond] = (time.process_time() - c0, time.perf_counter() - w0)
-        last = rep.losses[-50:]
-        print(f"{cond}: {rep.steps} steps, {cpu[cond][0]:.0f} s CPU ({cpu[cond][1]:.0f} s wall); "
-              f"loss {rep.losses[0]:.3f} -> {sum(last) / len(last):.3f}; val {rep.val_losses[-1:]}")
+    cpu: dict[str, list[float]] = {"pag": [0.0, 0.0], "none": [0.0, 0.0]}
+    guides = (0, args.guide) if args.guide > 0 else (0,)
+    # per training seed, per guidance setting: the evaluation of that seed's two runs
+    results: list[list] = []
+    for k in range(args.train_seeds):
+        sub = args.out if args.train_seeds == 1 else args.out / f"train-seed-{k}"
+        for cond in ("pag", "none"):
+            cfg = TrainConfig(cond=cond, steps=args.steps, preset=args.preset,
+                              relations=args.relations, shape=args.shape,
+                              noise_draws=args.noise_draws, device=args.device, seed=k,
+                              split_seed=0 if args.train_seeds > 1 else None,
+                              checkpoint_every=max(args.steps // 8, 1),
+                              frame=args.frame if cond == "pag" else "world",
+                              cpu_limit=None if args.cpu_limit is None
+                              else args.cpu_limit + time.process_time() / 60.0)
+            c0, w0 = time.process_time(), time.perf_counter()
+            rep = train(dataset, sub / cond, cfg, log=print)
+            cpu[cond][0] += time.process_time() - c0
+            cpu[cond][1] += time.perf_counter() - w0
+            last = rep.losses[-50:]
+            print(f"{cond} (training seed {k}): {rep.steps} steps; loss {rep.losses[0]:.3f} -> "
+                  f"{sum(last) / len(last):.3f}; val {rep.val_losses[-1:]}")
+        runs = [load_run(sub / "pag", device=args.device),
+                load_run(sub / "none", device=args.device)]
+        files = held_out_scenes(runs[0])
+        if args.max_scenes:
+            files = files[:args.max_scenes]
+        per_guide = []
+        for g in guides:
+            dest = sub / ("eval" if g == 0 else f"eval-guided-{g}")
+            c0 = time.process_time()
+            res = evaluate(runs, files, seeds=args.seeds, physics=not args.no_physics,
+                           sample_steps=args.sample_steps, previews=2, out=dest,
+                           progress=lambda s: print("  " + s, flush=True),
+                           guidance=args.guidance, separate=args.separate, fit=args.fit, guide=g)
+            write_result(res, dest)
+            print(f"evaluation (training seed {k}, guide {g}): {len(res.scenes)} scenes, "
+                  f"{time.process_time() - c0:.0f} s CPU")
+            per_guide.append(res)
+        _loss_figure(sub, sub / "eval" / "losses.png")
+        results.append(per_guide)
 
-    runs = [load_run(args.out / "pag", device=args.device),
-            load_run(args.out / "none", device=args.device)]
-    files = held_out_scenes(runs[0])
-    if args.max_scenes:
-        files = files[:args.max_scenes]
-    dest = args.out / "eval"
-    c0 = time.process_time()
-    res = evaluate(runs, files, seeds=args.seeds, physics=not args.no_physics,
-                   sample_steps=args.sample_steps, previews=2, out=dest,
-                   progress=lambda s: print("  " + s, flush=True), guidance=args.guidance,
-                   separate=args.separate, fit=args.fit, guide=args.guide)
-    write_result(res, dest)
-    _loss_figure(args.out, dest / "losses.png")
-    print(f"evaluation: {len(res.scenes)} scenes, {time.process_time() - c0:.0f} s CPU\n")
+    res = _combine(results, guides)
+    print()
     print(res.markdown())
-    print(json.dumps({"train_cpu_s": {k: round(v[0]) for k, v in cpu.items()},
-                      "train_wall_s": {k: round(v[1]) for k, v in cpu.items()}}))
-    _claim(res)
+    if args.train_seeds > 1:
+        print(f"Rows: mean ± standard deviation over {args.train_seeds} training seeds (each "
+              f"the mean over {args.seeds} sampling seeds and the held-out scenes).")
+    print(json.dumps({"training_scenes": _training_scenes(args.out, args.train_seeds),
+                      "train_cpu_minutes": {k: round(v[0] / 60, 1) for k, v in cpu.items()},
+                      "train_wall_minutes": {k: round(v[1] / 60, 1) for k, v in cpu.items()}}))
+    for g in guides:
+        label = "model only" if g == 0 else f"model + guidance ({g} steps)"
+        rows = [r for r in res.rows if r.name.endswith(f"[{label}]")
+                or (r.kind in ("solver", "random") and r.name.endswith("[model only]"))]
+        print(f"\n{label}:")
+        _claim(type(res)(rows, res.scenes, res.seeds, res.physics))
     return 0
+
+
+def _training_scenes(out: Path, train_seeds: int) -> int | None:
+    """Scenes in the first run's training split."""
+    sub = out if train_seeds == 1 else out / "train-seed-0"
+    try:
+        return len(json.loads((sub / "pag" / "split.json").read_text())["train"])
+    except (OSError, KeyError, ValueError):
+        return None
+
+
+def _combine(results: list[list], guides: tuple[int, ...]):
+    """One table: every row of every guidance setting, labelled ``[model only]`` or
+    ``[model + guidance (N steps)]``; with several training seeds each row's per-seed entries
+    are the training seeds' means (over sampling seeds), so its ± is the spread over training."""
+    from parse3d.layoutgen.evaluate import METRICS, EvalResult, EvalRow
+
+    first = results[0][0]
+    rows = []
+    plain = {r.name for r in first.rows}
+    for gi, g in enumerate(guides):
+        label = "model only" if g == 0 else f"model + guidance ({g} steps)"
+        for ri, row in enumerate(results[0][gi].rows):
+            if gi > 0 and row.name in plain:
+                continue  # the solver and the plain random poses: once, in the first part
+            if len(results) == 1:
+                per_seed = row.per_seed
+            else:
+                per_seed = [{m: r[gi].rows[ri].mean_std(m)[0] for m, _, _ in METRICS}
+                            for r in results]
+            rows.append(EvalRow(f"{row.name} [{label}]", row.kind, per_seed, []))
+    return EvalResult(rows, first.scenes, len(results) if len(results) > 1 else first.seeds,
+                      first.physics)
 
 
 def _loss_figure(out: Path, path: Path) -> None:

@@ -74,6 +74,10 @@ class TrainConfig:
     cond_dropout : float
         Probability of dropping the PAG condition of a draw (``pag`` runs only).
     seed : int
+        Initialisation, scene order, noise and (without ``split_seed``) the split.
+    split_seed : int or None
+        Seed of the train/val/test split (default: ``seed``); runs trained with different
+        seeds on one split are compared on the same held-out scenes.
     checkpoint_every : int
     device : str
         ``cpu`` or ``cuda``.
@@ -103,6 +107,7 @@ class TrainConfig:
     weight_decay: float = 1e-4
     cond_dropout: float = 0.1
     seed: int = 0
+    split_seed: int | None = None
     checkpoint_every: int = 250
     device: str = "cpu"
     frame: str = "world"
@@ -374,7 +379,8 @@ def train(dataset: str | Path, out: str | Path, config: TrainConfig, *,
             if not all(isinstance(i, str) for k in ("train", "val") for i in split[k]):
                 raise TypeError("scene names must be strings")
     else:
-        split = split_scenes(list(by_id), np.random.default_rng([config.seed, 7]))
+        split_seed = config.seed if config.split_seed is None else config.split_seed
+        split = split_scenes(list(by_id), np.random.default_rng([split_seed, 7]))
         train_ids = split["train"]
         stats = PoseStats.fit([by_id[i].poses for i in train_ids])
         cats = sorted({c for i in train_ids for c in by_id[i].categories})
