@@ -243,3 +243,36 @@ def test_footprint_drawn_clockwise_is_turned_counter_clockwise(page):
     page.once("dialog", lambda d: d.accept())
     page.click("#new")
     assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [4, 0], [4, 3.5], [0, 3.5]]
+
+
+def test_threejs_keeps_the_exported_names_and_owners(page, tmp_path):
+    """scene.glb loaded by three.js's GLTFLoader in the page: every node keeps the name the
+    exporter gave it (three.js drops colons, which the names avoid), under its object, with
+    the exact ``object:part`` in ``userData``."""
+    import base64
+
+    from parse3d.assets.registry import vocabulary
+    from parse3d.export import walk_scene
+    from parse3d.pag import load_pag
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    pag = load_pag(Path(__file__).parents[1] / "examples" / "study.json", vocabulary=vocabulary())
+    scene = run_pipeline(pag, seed=0, out=tmp_path,
+                         options=PipelineOptions(settle=False, preview=False))
+    want = {}
+    for o in walk_scene(scene).objects:
+        want[o.node] = [o.id, None]
+        want.update({p.node: [p.key, o.node] for p in o.parts})
+    want.update({f"room__{n}": [f"room:{n}", None] for n in scene.room.elements})
+    got = page.evaluate("""async (b64) => {
+        const { GLTFLoader } = await import("three/addons/loaders/GLTFLoader.js");
+        const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+        const gltf = await new GLTFLoader().parseAsync(bytes.buffer, "");
+        const out = {};
+        gltf.scene.traverse((n) => {
+          if (n === gltf.scene) return;
+          out[n.name] = [n.userData.name ?? null, n.parent === gltf.scene ? null : n.parent.name];
+        });
+        return out;
+    }""", base64.b64encode((tmp_path / "scene.glb").read_bytes()).decode())
+    assert got == want
