@@ -423,6 +423,84 @@ def test_blender_imports_glb_and_usd_with_the_names_and_owners(exported):
             assert {n: tree[n]["name"] for n in want} == {n: e for n, (e, _) in want.items()}
 
 
+# -- masses -------------------------------------------------------------------------------
+
+#: Real masses, kg, of the objects of MASS_PAG: low and high ends of what such things weigh.
+#: Sources: retailers' specification sheets and manufacturers' data (typical figures).
+REAL_MASS = {
+    "kettle": (0.5, 2.0),     # electric 1.7 l kettles 0.7-1.4 kg; stainless stovetop 1-2 kg
+    "mug": (0.2, 0.5),        # stoneware and porcelain mugs 250-450 g
+    "book": (0.15, 2.5),      # paperbacks 0.2-0.4 kg, hardcovers 0.5-1 kg, art books to 2.5 kg
+    "toaster": (0.8, 3.0),    # two-slot 1-1.5 kg, four-slot 1.8-2.8 kg
+    "pot": (1.0, 6.0),        # stainless stock pots 1.5-3 kg, enamelled cast iron 4-6 kg
+    "microwave": (4.0, 20.0),  # countertop microwaves 10-16 kg, compact ones from 5 kg
+    "lamp": (0.5, 4.0),       # pendant lights 1-3 kg on manufacturers' data sheets
+    "suitcase": (2.0, 12.0),  # empty: carry-on 2-3.5 kg, check-in 3.5-6 kg, trunks to 12 kg
+    "bin": (0.5, 12.0),       # kitchen bins: plastic 1-2 kg, stainless pedal bins 4-8 kg
+    "case": (1.0, 6.0),       # gig bags 1-2 kg, hard guitar cases 3-5.5 kg
+}
+
+MASS_PAG = {"format": "pag/1", "name": "masses",
+            "room": {"type": "kitchen", "footprint": [[0, 0], [5, 0], [5, 4], [0, 4]],
+                     "height": 2.7},
+            "objects": [{"id": "table", "category": "dining_table"},
+                        {"id": "kettle", "category": "kettle"}, {"id": "mug", "category": "mug"},
+                        {"id": "book", "category": "book"},
+                        {"id": "toaster", "category": "toaster"},
+                        {"id": "pot", "category": "cooking_pot"},
+                        {"id": "microwave", "category": "microwave"},
+                        {"id": "lamp", "category": "pendant_lamp"},
+                        {"id": "suitcase", "category": "suitcase"},
+                        {"id": "bin", "category": "trash_can"},
+                        {"id": "case", "category": "guitar_case"}],
+            "relations": [{"relation": "ON", "child": "table", "parent": "floor"},
+                          *({"relation": "ON", "child": c, "parent": "table:tabletop"}
+                            for c in ("kettle", "mug", "book", "toaster", "pot", "microwave")),
+                          {"relation": "HANGING_BELOW", "child": "lamp", "parent": "ceiling"},
+                          *({"relation": "ON", "child": c, "parent": "floor"}
+                            for c in ("suitcase", "bin", "case"))]}
+
+
+def test_masses_of_ten_objects_are_real_in_mujoco_and_usd(tmp_path):
+    import mujoco
+    from pxr import Usd, UsdPhysics
+
+    from parse3d.assets.registry import vocabulary
+
+    (tmp_path / "masses.json").write_text(json.dumps(MASS_PAG))
+    pag = load_pag(tmp_path / "masses.json", vocabulary=vocabulary())
+    scene = run_pipeline(pag, seed=0, out=tmp_path / "s",
+                         options=PipelineOptions(settle=False, preview=False, formats=()))
+    assert len(scene.placed) == len(MASS_PAG["objects"])
+    export_scene(scene, tmp_path / "s", ["mjcf", "usd"])
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "s" / "scene.xml"))
+    stage = Usd.Stage.Open(str(tmp_path / "s" / "scene.usd"))
+    for oid, (lo, hi) in REAL_MASS.items():
+        body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, oid)
+        in_mujoco = float(model.body_subtreemass[body])  # the object and its moving parts
+        in_usd = sum(UsdPhysics.MassAPI(p).GetMassAttr().Get()
+                     for p in Usd.PrimRange(stage.GetPrimAtPath(f"/World/Objects/{oid}"))
+                     if p.HasAPI(UsdPhysics.MassAPI))
+        assert in_usd == pytest.approx(in_mujoco, rel=1e-4), oid
+        assert lo <= in_mujoco <= hi, f"{oid}: {in_mujoco:.2f} kg, real {lo}-{hi} kg"
+
+
+def test_shell_categories_weigh_their_walls_and_solid_ones_their_volume():
+    from parse3d.export.mass import MATERIAL_DENSITY, WALL, part_mass
+
+    # a closed 1-litre plastic body of 0.06 m2: a 2 mm shell, not a litre of solid
+    shell = part_mass(1e-3, 0.06, scale=1.0, density=1500.0, material="plastic", shell=True)
+    assert shell == pytest.approx(0.06 * WALL["plastic"] * MATERIAL_DENSITY["plastic"])
+    # a part already thinner than the wall keeps its volume; a solid category its density
+    assert part_mass(1e-5, 0.06, scale=1.0, density=1500.0, material="plastic",
+                     shell=True) == pytest.approx(1e-5 * MATERIAL_DENSITY["plastic"])
+    assert part_mass(1e-3, 0.06, scale=2.0, density=1500.0, material="plastic",
+                     shell=False) == pytest.approx(8e-3 * 1500.0)
+    # twice the size: four times the wall area
+    assert part_mass(1e-3, 0.06, scale=2.0, density=1500.0, material="plastic",
+                     shell=True) == pytest.approx(4 * shell)
+
+
 # -- MJCF ---------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("room", [Path(r).stem for r in ROOMS])

@@ -8,8 +8,8 @@ so the file and the live model are one description. It holds:
 - One body per object at its world pose: a free joint for a loose object, none for a fixed
   one (SECURED_TO, HANGING_BELOW: welded to the world by being a plain child of it).
 - Per part a visual mesh geom (group 1, the part's colour, no collisions, no mass) and a
-  collision mesh geom per convex piece (group 3, the asset's density, the part material's
-  friction); MuJoCo takes a mesh geom's convex hull for collisions, which the pieces are.
+  collision mesh geom per convex piece (group 3, the density that gives the part its mass,
+  :meth:`~parse3d.export.walk.LinkRecord.part_density`; the part material's friction); MuJoCo takes a mesh geom's convex hull for collisions, which the pieces are.
 - Articulated parts are child bodies with a ``hinge`` or ``slide`` joint (axis, anchor,
   range, ``ref`` = the stored value, so the model's initial configuration is the exported
   one); each is locked at that value by a joint equality unless ``lock_joints=False``, so a
@@ -170,7 +170,7 @@ def _xml_object(world, equality, meshes: _XmlMeshes, rec: SceneRecord, o: Object
             for i, (v, f) in enumerate(p.pieces):
                 cm = meshes.get(f"{o.asset_id}:{p.name}:c{i}", f"{stem}_c{i}", v, f, s,
                                 inline=True)
-                _xml_collision(body, cm, f"{p.key}:c{i}", o.density, fr)
+                _xml_collision(body, cm, f"{p.key}:c{i}", lk.part_density(p), fr)
 
 
 def build_xml(rec: SceneRecord, out: Path | None = None, *, timestep: float = 0.002,

@@ -124,7 +124,7 @@ def object_urdf(o: ObjectRecord, meshes: MeshFiles) -> str:
     for p in o.parts:
         vm, cm = _part_meshes(meshes, f"{o.asset_id}__{p.name}", p.mesh, p.material,
                               p.pieces)
-        mass = o.density * s**3 * p.volume
+        mass = o.link(p.link).part_mass(p)
         links.append(_link(p.name, p, vm, cm, mass, s, -anchor[p.name] * s))
         if p.name == root:
             continue

@@ -30,6 +30,7 @@ from ..geometry.frames import make_transform
 from ..geometry.meshes import MeshArrays
 from ..pag.refs import RefSyntaxError, parse_ref
 from ..scene.model import PlacedObject, Scene
+from .mass import is_shell, part_mass, pieces_area
 
 if TYPE_CHECKING:
     import trimesh
@@ -214,6 +215,7 @@ class PartRecord:
     source: Part
     node: str = ""
     _hulls: _HullCache = field(repr=False, default=None)
+    _area: float | None = field(repr=False, default=None)
 
     @property
     def pieces(self) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -226,6 +228,13 @@ class PartRecord:
     def volume(self) -> float:
         """Collision volume of the pieces, m^3, unscaled."""
         return self._hulls.get(self.source)[1]
+
+    @property
+    def area(self) -> float:
+        """Surface area of the pieces, m^2, unscaled."""
+        if self._area is None:
+            self._area = pieces_area(self.pieces)
+        return self._area
 
 
 @dataclass
@@ -241,9 +250,12 @@ class LinkRecord:
         Pose of the link relative to the asset frame at the exported joint values (identity
         for ``base``), unscaled.
     density : float
-        kg / m^3.
+        kg / m^3 of the category (the solid model).
     scale : float
         The object's uniform scale.
+    shell : bool
+        Whether the category is built as a shell (:data:`parse3d.export.mass.SHELLS`): parts
+        weigh their shell, not their solid volume.
     """
 
     name: str
@@ -251,11 +263,28 @@ class LinkRecord:
     motion: np.ndarray
     density: float
     scale: float
+    shell: bool = False
+
+    def part_mass(self, part: PartRecord) -> float:
+        """kg of one of the link's parts at the object's scale
+        (:func:`parse3d.export.mass.part_mass`)."""
+        return part_mass(part.volume, part.area if self.shell else 0.0, scale=self.scale,
+                         density=self.density, material=part.material.name, shell=self.shell)
+
+    def part_density(self, part: PartRecord) -> float:
+        """kg / m^3 that gives the part its :meth:`part_mass` over its solid collision volume
+        (what simulators that take a density per shape need); the category density for a
+        solid category."""
+        v = part.volume * self.scale**3
+        if not self.shell or v <= 0:
+            return self.density
+        return self.part_mass(part) / v
 
     @property
     def mass(self) -> float:
-        """kg: the pieces' volume at the object's scale times the density."""
-        return self.density * self.scale**3 * sum(p.volume for p in self.parts)
+        """kg: the sum of the parts' masses (solid volume times the category density, or the
+        shell's volume times the material density)."""
+        return float(sum(self.part_mass(p) for p in self.parts))
 
 
 @dataclass
@@ -566,7 +595,8 @@ def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
                                 hulls))
         hulls.register(p)
     density = float(asset.density)
-    link_recs = [LinkRecord(n, [p for p in parts if p.link == n], T, density, float(o.scale))
+    shell = is_shell(o.category)
+    link_recs = [LinkRecord(n, [p for p in parts if p.link == n], T, density, float(o.scale), shell)
                  for n, T in links]
     use_settled = settled and o.settled_position is not None
     R = o.settled_rotation if use_settled else o.rotation
