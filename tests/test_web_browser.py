@@ -114,24 +114,26 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     page.select_option("#child-object", "table_lamp")
     wait_preview(page, "child", "table_lamp")
     click_at(page, page.evaluate("window.designer.pickers.child.screenPoint('base')"))
-    assert page.inner_text("#child-ref").startswith("table_lamp:base@")
+    # clicking a part picks the part, not the face clicked: the default surface applies
+    assert page.inner_text("#child-ref") == "table_lamp:base"
+    assert "on" in page.locator("#child-surfaces button[data-surface='']").get_attribute("class")
     assert page.locator("#child-preview").get_attribute("class") == "preview"
     click_at(page, page.evaluate("window.designer.pickers.child.screenPoint('base', 'bottom')"))
     assert page.inner_text("#child-ref") == "table_lamp:base@bottom"
     assert "on" in page.locator("#child-surfaces button[data-surface='bottom']").get_attribute("class")
 
-    # the desk's tabletop, clicked from above: its top surface
+    # the desk's tabletop, clicked: the part, with ON's default surface (its top)
     page.select_option("#parent-object", "desk")
     wait_preview(page, "parent", "desk")
     click_at(page, page.evaluate("window.designer.pickers.parent.screenPoint('tabletop')"))
-    assert page.inner_text("#parent-ref") == "desk:tabletop@top"
+    assert page.inner_text("#parent-ref") == "desk:tabletop"
     page.select_option("#relation", "ON")
     page.click("#add-relation")
     page.locator(".problem").first.wait_for(state="detached")
     page.wait_for_function("document.querySelector('#validity').textContent === 'valid'")
     rel = page.locator("#relations .row").nth(1)
     assert rel.locator(".rel-child").input_value() == "table_lamp:base@bottom"
-    assert rel.locator(".rel-parent").input_value() == "desk:tabletop@top"
+    assert rel.locator(".rel-parent").input_value() == "desk:tabletop"
 
     # a bad room height: the problem shows next to the field, and goes when fixed
     page.fill("#room-height", "-2")
@@ -170,7 +172,7 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     info = page.locator("#scene-info")
     info.locator("h4").wait_for()
     assert info.locator("h4").inner_text().startswith("table_lamp")
-    row = info.locator("tr", has_text="table_lamp:base@bottom ON desk:tabletop@top")
+    row = info.locator("tr", has_text="table_lamp:base@bottom ON desk:tabletop")
     assert row.locator("td").nth(2).inner_text() == "✓"
     page.check("#contacts")
     assert page.evaluate("window.designer.viewer.overlay.visible")
@@ -187,7 +189,7 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     saved = workdir / "corner.json"
     data = json.loads(saved.read_text())
     assert data["relations"][1] == {"relation": "ON", "child": "table_lamp:base@bottom",
-                                    "parent": "desk:tabletop@top"}
+                                    "parent": "desk:tabletop"}
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).parents[1] / "src")}
     cli = subprocess.run([sys.executable, "-m", "parse3d", "validate", str(saved)],
                          capture_output=True, text=True, env=env, timeout=120)
