@@ -12,6 +12,15 @@ cost of the first export in a process (importing pxr or mujoco), not in the best
 
 Goal (issue 15): each format in <= 1 s.
 
+``--simulate SECONDS`` measures the MJCF model instead: a 64-object living room (template
+``living-room-bright-11``, seed 0) is solved and settled, built by ``to_mujoco`` (collision
+geoms only) and stepped for SECONDS of simulated time; it prints the real-time factor
+(simulated / wall seconds, goal of issue 31: >= 0.5), the contacts and the largest distance an
+object moved (the settled room should rest: < 1 cm). With ``--baseline-rev`` both revisions
+simulate the same settled room, rounds interleaved.
+
+    python benchmarks/bench_export.py --simulate 2 --baseline-rev HEAD~1
+
     python benchmarks/bench_export.py                 # every format
     python benchmarks/bench_export.py --formats usd --profile
     python benchmarks/bench_export.py --formats urdf --baseline-rev 20249ea
@@ -74,14 +83,104 @@ def export_once(scene: Scene, fmt: str) -> dict:
                 "mb": sum(p.stat().st_size for p in written) / 1e6}
 
 
+ROOM_TEMPLATE, ROOM_SEED = "living-room-bright-11", 0  # 64 objects
+
+
+def settled_room(folder: Path) -> Path:
+    """Solve and settle the 64-object room into ``folder``; returns the scene folder."""
+    from parse3d.assets.registry import vocabulary
+    from parse3d.datagen.templates import expand_template, load_template
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    pag = expand_template(load_template(ROOM_TEMPLATE), ROOM_SEED, vocabulary=vocabulary())
+    run_pipeline(pag, seed=ROOM_SEED, out=folder,
+                 options=PipelineOptions(preview=False, formats=()))
+    return folder
+
+
+def simulate(folder: str, seconds: float) -> dict:
+    """Step the MJCF model of the scene in ``folder`` for ``seconds`` of simulated time:
+    real-time factor, wall seconds of stepping, contacts at the end, the largest distance a
+    loose object moved (mm)."""
+    import mujoco
+
+    import parse3d
+    from parse3d.export import to_mujoco
+
+    scene = parse3d.load_scene(folder)
+    model, data = to_mujoco(scene, ExportOptions(friction=settling_friction()), visual=False)
+    free = [model.jnt_qposadr[j] for j in range(model.njnt)
+            if model.jnt_type[j] == mujoco.mjtJoint.mjJNT_FREE]
+    p0 = np.array([data.qpos[a:a + 3] for a in free])
+    steps = int(round(seconds / model.opt.timestep))
+    t = time.perf_counter()
+    for _ in range(steps):
+        mujoco.mj_step(model, data)
+    wall = time.perf_counter() - t
+    moved = np.linalg.norm(np.array([data.qpos[a:a + 3] for a in free]) - p0, axis=1)
+    return {"rtf": steps * model.opt.timestep / wall, "wall": wall, "contacts": int(data.ncon),
+            "geoms": int(model.ngeom), "moved_mm": float(moved.max() * 1000)}
+
+
+def print_simulation(side: str, r: dict) -> None:
+    print(f"{side[:10]:<10} {r['rtf']:8.3f} {r['wall']:8.2f} {r['geoms']:6d} {r['contacts']:8d} "
+          f"{r['moved_mm']:9.2f}", flush=True)
+
+
+def simulation(seconds: float, rev: str | None, repeats: int) -> None:
+    """Real-time factor of the 64-object room, this checkout (and ``rev``)."""
+    with tempfile.TemporaryDirectory() as d:
+        t = time.perf_counter()
+        folder = settled_room(Path(d) / "room")
+        print(f"{ROOM_TEMPLATE} seed {ROOM_SEED}: solved and settled in "
+              f"{time.perf_counter() - t:.1f} s; {seconds:g} s simulated, best of {repeats}")
+        print(f"{'side':<10} {'RTF':>8} {'wall s':>8} {'geoms':>6} {'contacts':>8} "
+              f"{'moved mm':>9}")
+        if rev is None:
+            print_simulation("this", max((simulate(str(folder), seconds)
+                                          for _ in range(repeats)), key=lambda r: r["rtf"]))
+            return
+        from _common import ROOT, Worker, revision_tree
+
+        with revision_tree(rev) as tree:
+            sides = {"this": Worker(Path(__file__), src=ROOT / "src"),
+                     rev: Worker(Path(__file__), src=tree / "src")}
+            try:
+                best: dict[str, dict] = {}
+                for _ in range(repeats):
+                    for k, w in sides.items():
+                        r = w.ask(sim=seconds, scene=str(folder))
+                        if "error" in r:
+                            raise SystemExit(f"{k}: {r['error']}")
+                        if k not in best or r["rtf"] > best[k]["rtf"]:
+                            best[k] = r
+            finally:
+                for w in sides.values():
+                    w.close()
+        for k in sides:
+            print_simulation(k, best[k])
+        print(f"{'ratio':<10} {best['this']['rtf'] / best[rev]['rtf']:7.2f}x   "
+              f"(this checkout / {rev})")
+
+
 def worker(objects: int) -> None:
-    """Answer ``{"fmt": F}`` requests with :func:`export_once` (for ``--baseline-rev``)."""
+    """Answer ``{"fmt": F}`` requests with :func:`export_once` and ``{"sim": S, "scene": D}``
+    with :func:`simulate` (for ``--baseline-rev``)."""
     from _common import serve
 
-    scene = big_scene(objects)
-    for fmt in FORMATS:  # imports (pxr, mujoco) and first-use caches, untimed
-        export_once(scene, fmt)
-    serve(lambda req: export_once(scene, req["fmt"]))
+    scene = None
+
+    def handle(req: dict) -> dict:
+        nonlocal scene
+        if "sim" in req:
+            return simulate(req["scene"], req["sim"])
+        if scene is None:
+            scene = big_scene(objects)
+            for fmt in FORMATS:  # imports (pxr, mujoco) and first-use caches, untimed
+                export_once(scene, fmt)
+        return export_once(scene, req["fmt"])
+
+    serve(handle)
 
 
 def compare(rev: str, formats: list[str], objects: int, repeats: int) -> None:
@@ -131,7 +230,12 @@ def main() -> None:
     ap.add_argument("--profile", action="store_true", help="profile one export per format")
     ap.add_argument("--baseline-rev", metavar="REV",
                     help="compare with git revision REV, rounds interleaved")
+    ap.add_argument("--simulate", type=float, metavar="SECONDS",
+                    help="real-time factor of the 64-object room's MJCF model instead")
     args = ap.parse_args()
+    if args.simulate:
+        simulation(args.simulate, args.baseline_rev, args.repeats)
+        return
     if args.baseline_rev:
         compare(args.baseline_rev, args.formats.split(","), args.objects, args.repeats)
         return

@@ -10,10 +10,13 @@ checks that settling and re-exporting keep a folder's exports in step with its s
 
 from __future__ import annotations
 
+import importlib.util
 import json
 import os
+import re
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -25,6 +28,7 @@ from parse3d.assets.model import Asset, Joint, Material, finalize_asset, make_pa
 from parse3d.cli import main
 from parse3d.export import ExportOptions, export_scene, to_mujoco, to_sapien, walk_scene
 from parse3d.export.gltf import Z_UP_TO_Y_UP
+from parse3d.export.walk import _unique, node_name, split_node_name
 from parse3d.geometry import shapes
 from parse3d.geometry.frames import make_transform, quat_to_matrix, rot_z
 from parse3d.pag import load_pag
@@ -196,19 +200,19 @@ def test_glb_has_object_and_part_nodes_with_extras(exported, room):
         assert o.id in sc.graph.nodes
         for p in o.asset.parts:
             key = f"{o.id}:{p.name}"
-            T, geom = sc.graph[key]
+            T, geom = sc.graph[node_name(key)]
             m = sc.geometry[geom].copy()
             m.apply_transform(back @ T)
             assert np.allclose(m.bounds, expected[key].bounds, atol=1e-4), key
-            meta = sc.graph.transforms.edge_data[(o.id, key)]["metadata"]
+            meta = sc.graph.transforms.edge_data[(o.id, node_name(key))]["metadata"]
             assert meta["name"] == key and meta["object_id"] == o.id
             assert meta["category"] == o.category and meta["asset_id"] == o.asset.asset_id
             assert meta["label"] == p.label
     for el in ("floor", "wall_0", "ceiling"):
-        assert f"room:{el}" in sc.graph.nodes
+        assert f"room__{el}" in sc.graph.nodes
     doc = _glb_json(out / "scene.glb")
     roots = {doc["nodes"][i]["name"] for i in doc["scenes"][0]["nodes"]}
-    assert "room:ceiling" in roots and {o.id for o in scene.placed} <= roots
+    assert "room__ceiling" in roots and {o.id for o in scene.placed} <= roots
     # a mesh per distinct (asset, part), not per object: shared assets are instanced
     distinct = {(o.asset.asset_id, p.name) for o in scene.placed for p in o.asset.parts}
     assert len(doc["meshes"]) == len(distinct) + len(scene.room.elements)
@@ -223,14 +227,14 @@ def test_solve_writes_the_structured_glb(rooms):
     _, d = rooms["study"]
     doc = _glb_json(d / "scene.glb")
     names = {n["name"] for n in doc["nodes"]}
-    assert "desk" in names and "desk:tabletop" in names and "room:ceiling" in names
+    assert "desk" in names and "desk__tabletop" in names and "room__ceiling" in names
 
 
 def test_no_ceiling_leaves_the_ceiling_out(rooms, tmp_path):
     scene, _ = rooms["bathroom"]
     export_scene(scene, tmp_path, ["glb", "obj"], ExportOptions(ceiling=False))
     names = {n["name"] for n in _glb_json(tmp_path / "scene.glb")["nodes"]}
-    assert "room:floor" in names and "room:ceiling" not in names
+    assert "room__floor" in names and "room__ceiling" not in names
     assert "o room:ceiling" not in (tmp_path / "scene.obj").read_text()
 
 
@@ -291,7 +295,7 @@ def test_usd_stage_has_bodies_colliders_and_metadata(exported, room):
     assert "room:ceiling" in keys
     visual = stage.GetPrimAtPath(str(parts[-1].GetPath()) + "/visual")
     assert UsdShade.MaterialBindingAPI(visual).ComputeBoundMaterial()[0]
-    floor = stage.GetPrimAtPath("/World/Room/floor/collision/piece_0")
+    floor = stage.GetPrimAtPath("/World/Room/room__floor/collision/piece_0")
     bound = UsdShade.MaterialBindingAPI(floor).ComputeBoundMaterial("physics")[0]
     assert UsdPhysics.MaterialAPI(bound.GetPrim()).GetStaticFrictionAttr().Get() == \
         pytest.approx(settling_friction()["room"])
@@ -309,6 +313,203 @@ def test_usd_passes_the_usd_validators(every_room, cabinets):
         assert [e.GetMessage() for e in errors] == []
 
 
+# -- names in consumers ---------------------------------------------------------------------
+
+def node_tree(rec) -> dict[str, tuple[str, str | None]]:
+    """What every viewer should show: node name -> (exact name, the node name of the object
+    it belongs to, or None for an object or a shell element)."""
+    out = {}
+    for o in rec.objects:
+        out[o.node] = (o.id, None)
+        for p in o.parts:
+            out[p.node] = (p.key, o.node)
+    for s in rec.shell:
+        out[s.node] = (s.key, None)
+    return out
+
+
+def test_node_names_survive_viewers_and_map_back(exported, cabinets):
+    # three.js's PropertyBinding.sanitizeNodeName: white space to "_", then [ ] . : / dropped
+    three = lambda n: re.sub(r"[\[\]./:]", "", re.sub(r"\s", "_", n))  # noqa: E731
+    for scene in [exported[r][0] for r in exported] + [cabinets[0]]:
+        tree = node_tree(walk_scene(scene))
+        assert len(tree) == sum(1 + len(o.asset.parts) for o in scene.placed) + \
+            len(scene.room.elements)  # unique in the scene: no viewer renames one
+        for name, (exact, owner) in tree.items():
+            assert re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", name), name  # a USD prim name
+            assert three(name) == name
+            obj, part = split_node_name(name)
+            if owner is not None:
+                assert (obj, part) == (owner, exact.split(":", 1)[1])
+    assert node_name("reading-lamp:shade_0") == "reading_lamp__shade_0"
+    # ids that differ only in "-" against "_" still get names of their own
+    taken: set[str] = set()
+    assert [_unique(node_name(i), taken) for i in ("a-b", "a_b", "a-b")] == ["a_b", "a_b_2", "a_b_3"]
+
+
+def test_glb_and_usd_give_parts_the_same_names_and_owners(exported):
+    from pxr import Usd
+
+    scene, out, _ = exported["study"]
+    want = node_tree(walk_scene(scene, ExportOptions()))
+    # glTF: part nodes are children of their object's node; extras keep the exact name
+    doc = _glb_json(out / "scene.glb")
+    got = {}
+    for n in doc["nodes"]:
+        got.setdefault(n["name"], [n["extras"]["name"], None])
+        for c in n.get("children", []):
+            got[doc["nodes"][c]["name"]] = [doc["nodes"][c]["extras"]["name"], n["name"]]
+    assert {k: tuple(v) for k, v in got.items()} == want
+    # USD: prim names are the node names; the owner is the nearest prim with an object id
+    stage = Usd.Stage.Open(str(out / "scene.usd"))
+    got = {}
+    for prim in stage.Traverse():
+        exact = prim.GetAttribute("parse3d:partName")
+        if not exact.IsValid():
+            if prim.GetParent().GetPath() == "/World/Objects":
+                got[prim.GetName()] = (prim.GetAttribute("parse3d:objectId").Get(), None)
+            continue
+        if exact.Get().startswith("room:"):
+            got[prim.GetName()] = (exact.Get(), None)
+            continue
+        owner = prim.GetParent()
+        while not owner.GetAttribute("parse3d:objectId").IsValid():
+            owner = owner.GetParent()
+        got[prim.GetName()] = (exact.Get(), owner.GetName())
+    assert got == want
+
+
+BLENDER_SCRIPT = """
+import json, sys
+import bpy
+
+out = {}
+for fmt, path in (("glb", sys.argv[1]), ("usd", sys.argv[2])):
+    bpy.ops.wm.read_factory_settings(use_empty=True)
+    if fmt == "glb":
+        bpy.ops.import_scene.gltf(filepath=path)
+    else:
+        bpy.ops.wm.usd_import(filepath=path)
+    tree = {}
+    for o in bpy.data.objects:
+        chain, p = [], o.parent
+        while p is not None:
+            chain.append(p.name)
+            p = p.parent
+        tree[o.name] = {"ancestors": chain, "name": o.get("name")}
+    out[fmt] = tree
+print("BLENDER" + json.dumps(out))
+"""
+
+
+def blender_python() -> str | None:
+    """A Python that imports bpy: this one, or ``$PARSE3D_BLENDER_PYTHON`` (bpy needs numpy<2,
+    so it usually lives in an environment of its own: ``pip install 'parse3d[blender]'``)."""
+    if importlib.util.find_spec("bpy") is not None:
+        return sys.executable
+    return os.environ.get("PARSE3D_BLENDER_PYTHON") or None
+
+
+@pytest.mark.skipif(blender_python() is None,
+                    reason="needs Blender as a module: a Python with bpy (pip install "
+                           "'parse3d[blender]') here or named by PARSE3D_BLENDER_PYTHON")
+def test_blender_imports_glb_and_usd_with_the_names_and_owners(exported):
+    scene, out, _ = exported["study"]
+    want = node_tree(walk_scene(scene))
+    # Blender's own process: bpy carries its own USD libraries, which must not meet pxr's
+    proc = subprocess.run([blender_python(), "-c", BLENDER_SCRIPT, str(out / "scene.glb"),
+                           str(out / "scene.usd")], capture_output=True, text=True,
+                          timeout=600, check=True)
+    line = next(ln for ln in proc.stdout.splitlines() if ln.startswith("BLENDER"))
+    got = json.loads(line[len("BLENDER"):])
+    for fmt in ("glb", "usd"):
+        tree = got[fmt]
+        for name, (_, owner) in want.items():
+            assert name in tree, (fmt, name)  # as written: no prefix dropped, no ".001"
+            if owner is not None:
+                assert owner in tree[name]["ancestors"], (fmt, name, tree[name]["ancestors"])
+        if fmt == "glb":  # glTF extras become custom properties
+            assert {n: tree[n]["name"] for n in want} == {n: e for n, (e, _) in want.items()}
+
+
+# -- masses -------------------------------------------------------------------------------
+
+#: Real masses, kg, of the objects of MASS_PAG: low and high ends of what such things weigh.
+#: Sources: retailers' specification sheets and manufacturers' data (typical figures).
+REAL_MASS = {
+    "kettle": (0.5, 2.0),     # electric 1.7 l kettles 0.7-1.4 kg; stainless stovetop 1-2 kg
+    "mug": (0.2, 0.5),        # stoneware and porcelain mugs 250-450 g
+    "book": (0.15, 2.5),      # paperbacks 0.2-0.4 kg, hardcovers 0.5-1 kg, art books to 2.5 kg
+    "toaster": (0.8, 3.0),    # two-slot 1-1.5 kg, four-slot 1.8-2.8 kg
+    "pot": (1.0, 6.0),        # stainless stock pots 1.5-3 kg, enamelled cast iron 4-6 kg
+    "microwave": (4.0, 20.0),  # countertop microwaves 10-16 kg, compact ones from 5 kg
+    "lamp": (0.5, 4.0),       # pendant lights 1-3 kg on manufacturers' data sheets
+    "suitcase": (2.0, 12.0),  # empty: carry-on 2-3.5 kg, check-in 3.5-6 kg, trunks to 12 kg
+    "bin": (0.5, 12.0),       # kitchen bins: plastic 1-2 kg, stainless pedal bins 4-8 kg
+    "case": (1.0, 6.0),       # gig bags 1-2 kg, hard guitar cases 3-5.5 kg
+}
+
+MASS_PAG = {"format": "pag/1", "name": "masses",
+            "room": {"type": "kitchen", "footprint": [[0, 0], [5, 0], [5, 4], [0, 4]],
+                     "height": 2.7},
+            "objects": [{"id": "table", "category": "dining_table"},
+                        {"id": "kettle", "category": "kettle"}, {"id": "mug", "category": "mug"},
+                        {"id": "book", "category": "book"},
+                        {"id": "toaster", "category": "toaster"},
+                        {"id": "pot", "category": "cooking_pot"},
+                        {"id": "microwave", "category": "microwave"},
+                        {"id": "lamp", "category": "pendant_lamp"},
+                        {"id": "suitcase", "category": "suitcase"},
+                        {"id": "bin", "category": "trash_can"},
+                        {"id": "case", "category": "guitar_case"}],
+            "relations": [{"relation": "ON", "child": "table", "parent": "floor"},
+                          *({"relation": "ON", "child": c, "parent": "table:tabletop"}
+                            for c in ("kettle", "mug", "book", "toaster", "pot", "microwave")),
+                          {"relation": "HANGING_BELOW", "child": "lamp", "parent": "ceiling"},
+                          *({"relation": "ON", "child": c, "parent": "floor"}
+                            for c in ("suitcase", "bin", "case"))]}
+
+
+def test_masses_of_ten_objects_are_real_in_mujoco_and_usd(tmp_path):
+    import mujoco
+    from pxr import Usd, UsdPhysics
+
+    from parse3d.assets.registry import vocabulary
+
+    (tmp_path / "masses.json").write_text(json.dumps(MASS_PAG))
+    pag = load_pag(tmp_path / "masses.json", vocabulary=vocabulary())
+    scene = run_pipeline(pag, seed=0, out=tmp_path / "s",
+                         options=PipelineOptions(settle=False, preview=False, formats=()))
+    assert len(scene.placed) == len(MASS_PAG["objects"])
+    export_scene(scene, tmp_path / "s", ["mjcf", "usd"])
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "s" / "scene.xml"))
+    stage = Usd.Stage.Open(str(tmp_path / "s" / "scene.usd"))
+    for oid, (lo, hi) in REAL_MASS.items():
+        body = mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_BODY, oid)
+        in_mujoco = float(model.body_subtreemass[body])  # the object and its moving parts
+        in_usd = sum(UsdPhysics.MassAPI(p).GetMassAttr().Get()
+                     for p in Usd.PrimRange(stage.GetPrimAtPath(f"/World/Objects/{oid}"))
+                     if p.HasAPI(UsdPhysics.MassAPI))
+        assert in_usd == pytest.approx(in_mujoco, rel=1e-4), oid
+        assert lo <= in_mujoco <= hi, f"{oid}: {in_mujoco:.2f} kg, real {lo}-{hi} kg"
+
+
+def test_shell_categories_weigh_their_walls_and_solid_ones_their_volume():
+    from parse3d.export.mass import MATERIAL_DENSITY, WALL, part_mass
+
+    # a closed 1-litre plastic body of 0.06 m2: a 2 mm shell, not a litre of solid
+    shell = part_mass(1e-3, 0.06, scale=1.0, density=1500.0, material="plastic", shell=True)
+    assert shell == pytest.approx(0.06 * WALL["plastic"] * MATERIAL_DENSITY["plastic"])
+    # a part already thinner than the wall keeps its volume; a solid category its density
+    assert part_mass(1e-5, 0.06, scale=1.0, density=1500.0, material="plastic",
+                     shell=True) == pytest.approx(1e-5 * MATERIAL_DENSITY["plastic"])
+    assert part_mass(1e-3, 0.06, scale=2.0, density=1500.0, material="plastic",
+                     shell=False) == pytest.approx(8e-3 * 1500.0)
+    # twice the size: four times the wall area
+    assert part_mass(1e-3, 0.06, scale=2.0, density=1500.0, material="plastic",
+                     shell=True) == pytest.approx(4 * shell)
+
+
 # -- MJCF ---------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("room", [Path(r).stem for r in ROOMS])
@@ -317,7 +518,7 @@ def test_mjcf_loads_and_a_settled_room_rests_for_one_second(exported, room):
 
     scene, out, _ = exported[room]
     model = mujoco.MjModel.from_xml_path(str(out / "scene.xml"))
-    assert model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC and model.opt.noslip_iterations == 3
+    assert model.opt.cone == mujoco.mjtCone.mjCONE_ELLIPTIC and model.opt.noslip_iterations == 0
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
     ids = [o.id for o in scene.placed]
@@ -410,7 +611,7 @@ def test_every_format_of_every_example_room_loads_in_its_consumer(every_room, ro
     moving = sum(not j.is_mount for o in scene.placed for j in o.asset.joints)
     # glTF and OBJ in trimesh: a node per object and per part; a group per part
     sc = trimesh.load(out / "scene.glb", force="scene")
-    assert ids | keys | shell <= set(sc.graph.nodes)
+    assert {node_name(n) for n in ids | keys | shell} <= set(sc.graph.nodes)
     obj = trimesh.load(out / "scene.obj", force="scene", group_material=False,
                        split_groups=True)
     assert set(obj.geometry) == keys | shell
@@ -444,7 +645,7 @@ def test_joints_put_the_door_in_the_same_place_in_every_format(cabinets):
     want = door_centre(scene)
     # glTF
     sc = trimesh.load(out / "scene.glb", force="scene")
-    T, geom = sc.graph["cab:door"]
+    T, geom = sc.graph["cab__door"]
     m = sc.geometry[geom].copy()
     m.apply_transform(np.linalg.inv(Z_UP_TO_Y_UP) @ T)
     assert np.allclose(m.bounds.mean(0), want, atol=1e-5)
@@ -487,7 +688,7 @@ def test_joints_put_the_door_in_the_same_place_in_every_format(cabinets):
     assert np.allclose(mesh.bounds.mean(0), want, atol=1e-5)
     # USD
     stage = Usd.Stage.Open(str(out / "scene.usd"))
-    p = stage.GetPrimAtPath("/World/Objects/cab/Links/door/door/visual")
+    p = stage.GetPrimAtPath("/World/Objects/cab/Links/door/cab__door/visual")
     M = np.array(UsdGeom.XformCache().GetLocalToWorldTransform(p)).T
     pts = np.array(UsdGeom.Mesh(p).GetPointsAttr().Get()) @ M[:3, :3].T + M[:3, 3]
     assert np.allclose((pts.min(0) + pts.max(0)) / 2, want, atol=1e-5)
@@ -835,9 +1036,9 @@ def test_refreshes_keep_the_options_each_export_was_made_with(tiny_scene, tmp_pa
         glb = {n.get("name") for n in _glb_json(d / "scene.glb")["nodes"]}
         model = mujoco.MjModel.from_xml_path(str(d / "scene.xml"))
         stage = Usd.Stage.Open(str(d / "scene.usd"))  # held: its prims die with it
-        return {"glb": "room:ceiling" in glb,
+        return {"glb": "room__ceiling" in glb,
                 "mjcf": mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_GEOM, "room:ceiling") >= 0,
-                "usd": stage.GetPrimAtPath("/World/Room/ceiling").IsValid()}
+                "usd": stage.GetPrimAtPath("/World/Room/room__ceiling").IsValid()}
 
     # settling rewrote every export in the settled pose, but with the options it was made with
     assert ceilings() == {"glb": False, "mjcf": False, "usd": True}

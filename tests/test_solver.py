@@ -14,6 +14,7 @@ import trimesh
 import parse3d
 from parse3d.export import export_scene
 from parse3d.export.gltf import Z_UP_TO_Y_UP
+from parse3d.export.walk import split_node_name
 from parse3d.geometry.frames import quat_to_matrix
 from parse3d.pag import PAG, Room, load_pag
 from parse3d.scene.io import read_scene, scene_schema, scene_to_dict, write_scene
@@ -96,12 +97,12 @@ def _glb_parts(out: Path) -> dict[str, trimesh.Trimesh]:
 
 
 def _object_mesh(parts: dict[str, trimesh.Trimesh], oid: str) -> trimesh.Trimesh:
-    return trimesh.util.concatenate([m for n, m in parts.items() if n.split(":")[0] == oid])
+    return trimesh.util.concatenate([m for n, m in parts.items() if split_node_name(n)[0] == oid])
 
 
 def _part(parts, oid, label) -> trimesh.Trimesh:
     return trimesh.util.concatenate([m for n, m in parts.items()
-                                     if n.startswith(f"{oid}:{label}")])
+                                     if n.startswith(f"{oid}__{label}")])
 
 
 def test_every_object_placed_and_every_relation_holds(solved):
@@ -126,9 +127,9 @@ def test_scene_json_follows_its_schema(solved):
 def test_glb_node_names(solved):
     _, out = solved
     parts = _glb_parts(out)
-    assert {"room:floor", "room:ceiling", "room:wall_0", "room:wall_3"} <= set(parts)
-    assert any(n.startswith("desk:tabletop") for n in parts)
-    assert any(n.startswith("book:front_cover") for n in parts)
+    assert {"room__floor", "room__ceiling", "room__wall_0", "room__wall_3"} <= set(parts)
+    assert any(n.startswith("desk__tabletop") for n in parts)
+    assert any(n.startswith("book__front_cover") for n in parts)
 
 
 def test_contacts_measured_on_the_glb(solved):

@@ -265,7 +265,7 @@ def test_solve_streams_stage_progress_and_serves_the_scene(client, workdir):
     glb = client.get(f"/api/jobs/{job}/files/scene.glb")
     assert glb.status_code == 200
     names = {n["name"] for n in glb_json(glb.content)["nodes"]}
-    assert {"lamp:base", "desk:tabletop", "room:ceiling", "room:floor"} <= names
+    assert {"lamp__base", "desk__tabletop", "room__ceiling", "room__floor"} <= names
     scene = client.get(f"/api/jobs/{job}/files/scene.json").json()
     assert scene["format"] == SCENE_FORMAT and scene["seed"] == 2
     assert (workdir / "out" / "corner-2" / "contacts.json").is_file()

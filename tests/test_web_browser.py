@@ -114,24 +114,26 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     page.select_option("#child-object", "table_lamp")
     wait_preview(page, "child", "table_lamp")
     click_at(page, page.evaluate("window.designer.pickers.child.screenPoint('base')"))
-    assert page.inner_text("#child-ref").startswith("table_lamp:base@")
+    # clicking a part picks the part, not the face clicked: the default surface applies
+    assert page.inner_text("#child-ref") == "table_lamp:base"
+    assert "on" in page.locator("#child-surfaces button[data-surface='']").get_attribute("class")
     assert page.locator("#child-preview").get_attribute("class") == "preview"
     click_at(page, page.evaluate("window.designer.pickers.child.screenPoint('base', 'bottom')"))
     assert page.inner_text("#child-ref") == "table_lamp:base@bottom"
     assert "on" in page.locator("#child-surfaces button[data-surface='bottom']").get_attribute("class")
 
-    # the desk's tabletop, clicked from above: its top surface
+    # the desk's tabletop, clicked: the part, with ON's default surface (its top)
     page.select_option("#parent-object", "desk")
     wait_preview(page, "parent", "desk")
     click_at(page, page.evaluate("window.designer.pickers.parent.screenPoint('tabletop')"))
-    assert page.inner_text("#parent-ref") == "desk:tabletop@top"
+    assert page.inner_text("#parent-ref") == "desk:tabletop"
     page.select_option("#relation", "ON")
     page.click("#add-relation")
     page.locator(".problem").first.wait_for(state="detached")
     page.wait_for_function("document.querySelector('#validity').textContent === 'valid'")
     rel = page.locator("#relations .row").nth(1)
     assert rel.locator(".rel-child").input_value() == "table_lamp:base@bottom"
-    assert rel.locator(".rel-parent").input_value() == "desk:tabletop@top"
+    assert rel.locator(".rel-parent").input_value() == "desk:tabletop"
 
     # a bad room height: the problem shows next to the field, and goes when fixed
     page.fill("#room-height", "-2")
@@ -170,7 +172,7 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     info = page.locator("#scene-info")
     info.locator("h4").wait_for()
     assert info.locator("h4").inner_text().startswith("table_lamp")
-    row = info.locator("tr", has_text="table_lamp:base@bottom ON desk:tabletop@top")
+    row = info.locator("tr", has_text="table_lamp:base@bottom ON desk:tabletop")
     assert row.locator("td").nth(2).inner_text() == "✓"
     page.check("#contacts")
     assert page.evaluate("window.designer.viewer.overlay.visible")
@@ -187,7 +189,7 @@ def test_build_validate_solve_and_save_by_clicking(page, server):
     saved = workdir / "corner.json"
     data = json.loads(saved.read_text())
     assert data["relations"][1] == {"relation": "ON", "child": "table_lamp:base@bottom",
-                                    "parent": "desk:tabletop@top"}
+                                    "parent": "desk:tabletop"}
     env = {**os.environ, "PYTHONPATH": str(Path(__file__).parents[1] / "src")}
     cli = subprocess.run([sys.executable, "-m", "parse3d", "validate", str(saved)],
                          capture_output=True, text=True, env=env, timeout=120)
@@ -243,3 +245,204 @@ def test_footprint_drawn_clockwise_is_turned_counter_clockwise(page):
     page.once("dialog", lambda d: d.accept())
     page.click("#new")
     assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [4, 0], [4, 3.5], [0, 3.5]]
+
+
+def test_threejs_keeps_the_exported_names_and_owners(page, tmp_path):
+    """scene.glb loaded by three.js's GLTFLoader in the page: every node keeps the name the
+    exporter gave it (three.js drops colons, which the names avoid), under its object, with
+    the exact ``object:part`` in ``userData``."""
+    import base64
+
+    from parse3d.assets.registry import vocabulary
+    from parse3d.export import walk_scene
+    from parse3d.pag import load_pag
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    pag = load_pag(Path(__file__).parents[1] / "examples" / "study.json", vocabulary=vocabulary())
+    scene = run_pipeline(pag, seed=0, out=tmp_path,
+                         options=PipelineOptions(settle=False, preview=False))
+    want = {}
+    for o in walk_scene(scene).objects:
+        want[o.node] = [o.id, None]
+        want.update({p.node: [p.key, o.node] for p in o.parts})
+    want.update({f"room__{n}": [f"room:{n}", None] for n in scene.room.elements})
+    got = page.evaluate("""async (b64) => {
+        const { GLTFLoader } = await import("three/addons/loaders/GLTFLoader.js");
+        const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+        const gltf = await new GLTFLoader().parseAsync(bytes.buffer, "");
+        const out = {};
+        gltf.scene.traverse((n) => {
+          if (n === gltf.scene) return;
+          out[n.name] = [n.userData.name ?? null, n.parent === gltf.scene ? null : n.parent.name];
+        });
+        return out;
+    }""", base64.b64encode((tmp_path / "scene.glb").read_bytes()).decode())
+    assert got == want
+
+
+def fresh(page) -> None:
+    """A new, empty PAG (accepting the discard question if there are unsaved edits)."""
+    page.once("dialog", lambda d: d.accept())
+    page.click("#new")
+    page.wait_for_function("window.designer.state.doc.objects.length === 0")
+    page.evaluate("window.scrollTo(0, 0)")
+
+
+def objects(page) -> list[str]:
+    return page.evaluate("window.designer.state.doc.objects.map(o => o.id)")
+
+
+def test_undo_and_redo_step_through_edits(page):
+    fresh(page)
+    assert page.locator("#undo").is_disabled() and page.locator("#redo").is_disabled()
+    for cat in ("desk", "mug"):
+        page.fill("#add-category", cat)
+        page.click("#add-object")
+    page.select_option("#child-object", "desk")
+    page.select_option("#relation", "ON")
+    page.select_option("#parent-object", "floor")
+    page.click("#add-relation")
+    assert objects(page) == ["desk", "mug"]
+    page.click("#undo")  # the relation
+    assert page.evaluate("window.designer.state.doc.relations.length") == 0
+    page.click("#undo")  # the mug
+    assert objects(page) == ["desk"]
+    assert page.locator("#objects .row").count() == 1
+    page.click("#redo")
+    assert objects(page) == ["desk", "mug"]
+    # the keyboard too (outside text fields, where the browser undoes typing)
+    page.locator("#graph").click()
+    page.keyboard.press("Control+z")
+    assert objects(page) == ["desk"]
+    page.keyboard.press("Control+Shift+z")
+    page.keyboard.press("Control+y")
+    assert objects(page) == ["desk", "mug"]
+    assert page.evaluate("window.designer.state.doc.relations.length") == 1
+    # a new edit drops what could be redone
+    page.click("#undo")
+    page.fill("#add-category", "book")
+    page.click("#add-object")
+    assert page.locator("#redo").is_disabled()
+    assert objects(page) == ["desk", "mug", "book"]
+    # typing a name is one step, not one per key
+    page.fill("#pag-name", "")
+    page.type("#pag-name", "reading-nook", delay=20)
+    page.click("#undo")
+    assert page.evaluate("window.designer.state.doc.name") in ("", "my-room")
+    assert page.input_value("#pag-name") == page.evaluate("window.designer.state.doc.name")
+
+
+def test_save_over_an_existing_file_asks_first(page, server):
+    _, workdir = server
+    fresh(page)
+    page.fill("#add-category", "desk")
+    page.click("#add-object")
+    page.fill("#file-name", "overwrite-me.json")
+    page.click("#save")
+    page.wait_for_function("document.querySelector('#message').textContent.startsWith('saved')")
+    saved = workdir / "overwrite-me.json"
+    assert [o["id"] for o in json.loads(saved.read_text())["objects"]] == ["desk"]
+    page.fill("#add-category", "mug")
+    page.click("#add-object")
+    # dismissed: the file stays as it was
+    asked = []
+    page.once("dialog", lambda d: (asked.append(d.message), d.dismiss()))
+    page.click("#save")
+    page.wait_for_function("document.querySelector('#message').textContent.startsWith('save:')")
+    assert "overwrite-me.json exists. Replace it?" in asked[0]
+    assert [o["id"] for o in json.loads(saved.read_text())["objects"]] == ["desk"]
+    # accepted: replaced
+    page.once("dialog", lambda d: d.accept())
+    page.click("#save")
+    page.wait_for_function("document.querySelector('#message').textContent.startsWith('saved')")
+    assert [o["id"] for o in json.loads(saved.read_text())["objects"]] == ["desk", "mug"]
+
+
+def quadrants() -> bytes:
+    """A 320 x 240 PNG: red, green, blue and yellow quadrants."""
+    img = Image.new("RGB", (320, 240))
+    for (x, y), c in {(0, 0): (220, 30, 30), (160, 0): (30, 200, 60),
+                      (0, 120): (40, 60, 220), (160, 120): (240, 220, 40)}.items():
+        img.paste(c, (x, y, x + 160, y + 120))
+    buf = io.BytesIO()
+    img.save(buf, "PNG")
+    return buf.getvalue()
+
+
+def test_reference_image_stays_beside_the_viewer(page):
+    fresh(page)
+    page.set_input_files("#reference-file", files=[
+        {"name": "room-photo.png", "mimeType": "image/png", "buffer": quadrants()}])
+    page.wait_for_function("window.designer.referenceLoaded === 'room-photo.png'")
+    shot = np.asarray(Image.open(io.BytesIO(page.locator("#reference-img").screenshot())).convert("RGB"))
+    h, w = shot.shape[:2]
+    assert w > 200  # shown large enough to read
+    for (fy, fx), colour in {(0.25, 0.25): (220, 30, 30), (0.25, 0.75): (30, 200, 60),
+                             (0.75, 0.25): (40, 60, 220), (0.75, 0.75): (240, 220, 40)}.items():
+        np.testing.assert_allclose(shot[int(fy * h), int(fx * w)], colour, atol=12)
+    # adding objects and relations scrolls the page: the viewer and the photo stay in view
+    for _ in range(14):
+        page.fill("#add-category", "book")
+        page.click("#add-object")
+    page.locator("#relations").scroll_into_view_if_needed()
+    page.evaluate("window.scrollTo(0, document.body.scrollHeight)")
+    assert page.evaluate("window.scrollY") > 100
+    vh = page.viewport_size["height"]
+    for sel in ("#viewer", "#reference-img"):
+        box = page.locator(sel).bounding_box()
+        assert box["y"] >= 0 and box["y"] + box["height"] <= vh, (sel, box)
+    # it stays for the session, and goes with ✕
+    page.reload()
+    page.wait_for_selector("body[data-ready='1']")
+    page.wait_for_function("window.designer.referenceLoaded === 'room-photo.png'")
+    page.click("#reference-clear")
+    assert page.locator("#reference-img").count() == 0
+
+
+def test_viewer_is_in_view_on_a_laptop_screen(page, server):
+    pg = page.context.browser.new_page(viewport={"width": 1366, "height": 768})
+    try:
+        pg.goto(server[0] + "/")
+        pg.wait_for_selector("body[data-ready='1']", timeout=30_000)
+        box = pg.locator("#viewer").bounding_box()
+        assert box["height"] >= 300 and box["y"] + box["height"] <= 768, box
+    finally:
+        pg.close()
+
+
+def test_graph_of_sixty_objects_is_readable(page):
+    fresh(page)
+    page.click("#load-templates")
+    page.select_option("#templates", "living-room-bright-11")
+    page.fill("#template-seed", "0")
+    page.click("#expand")
+    page.wait_for_function("window.designer.state.doc.objects.length >= 60")
+    n = page.evaluate("window.designer.state.doc.objects.length")
+    assert page.locator("#graph .node.object").count() == n
+    boxes = page.evaluate("""() => [...document.querySelectorAll('#graph .node.object')].map(g => {
+        const c = g.querySelector('circle').getBoundingClientRect();
+        const t = g.querySelector('text').getBoundingClientRect();
+        return {c: [c.left, c.top, c.right, c.bottom], t: [t.left, t.top, t.right, t.bottom],
+                font: parseFloat(getComputedStyle(g.querySelector('text')).fontSize)
+                      * g.querySelector('text').getScreenCTM().a};
+    })""")
+    overlap = lambda a, b: min(a[2], b[2]) - max(a[0], b[0]) > 0.5 and min(a[3], b[3]) - max(a[1], b[1]) > 0.5  # noqa: E731
+    for i, a in enumerate(boxes):
+        assert a["font"] >= 9.5, "labels shrink with the graph"
+        assert a["c"][2] - a["c"][0] >= 24, "nodes shrink with the graph"
+        for b in boxes[i + 1:]:
+            assert not overlap(a["c"], b["c"]), "object nodes overlap"
+            assert not overlap(a["t"], b["t"]), "object labels overlap"
+    # every object under its supporter's band or cluster: supporters above what they hold
+    centre = page.evaluate("""() => Object.fromEntries([...document.querySelectorAll('#graph .node.object')]
+        .map(g => [g.dataset.id, g.querySelector('circle').getBoundingClientRect().top]))""")
+    doc = page.evaluate("window.designer.state.doc")
+    supports = {"ON", "IN", "HANGING_BELOW", "SECURED_TO"}
+    for r in doc["relations"]:
+        parent = r["parent"].split(":")[0].split("@")[0]
+        if r["relation"] in supports and parent in centre:
+            assert centre[parent] < centre[r["child"].split(":")[0].split("@")[0]]
+    # and the drawing is drawn: the graph panel's pixels are not blank
+    shot = np.asarray(Image.open(io.BytesIO(page.locator(".graph-box").screenshot())).convert("RGB"))
+    assert len(np.unique(shot.reshape(-1, 3), axis=0)) > 20
+    assert (shot.sum(axis=-1) < 600).mean() > 0.02  # ink: nodes, labels, edges

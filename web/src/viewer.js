@@ -5,12 +5,16 @@ import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { antialias } from "./gl.js";
 
-// three.js strips these characters from node names ("desk:leg_0" becomes "deskleg_0")
-const sanitize = (name) => name.replace(/\s/g, "_").replace(/[[\]./:]/g, "");
+// The exporter's node name of "<object_id>:<part_name>": "desk__leg_0" (three.js would strip a
+// colon: its PropertyBinding drops [ ] . : / from node names), as parse3d.export.walk.node_name.
+const nodeName = (key) => {
+  const s = key.replace(":", "__").replace(/[^A-Za-z0-9_]/g, "_") || "_";
+  return /^[0-9]/.test(s) ? "_" + s : s;
+};
 
 // Which object and part a mesh shows: from the node's extras when the exporter writes them
-// (object id and part name), else from its name, "<object_id>:<part_name>" with the colon
-// stripped by three.js; a mesh under a part node inherits the part.
+// (object id and part name, in userData), else from its node name; a mesh under a part node
+// inherits the part.
 function refOf(node, names) {
   for (let n = node; n; n = n.parent) {
     const x = n.userData || {};
@@ -96,22 +100,24 @@ export class SceneViewer {
     this.result = result;
     const names = new Map();
     for (const o of result.objects) {
-      for (const p of o.parts || []) names.set(sanitize(`${o.id}:${p.name}`), { object: o.id, part: p.name });
+      for (const p of o.parts || []) names.set(nodeName(`${o.id}:${p.name}`), { object: o.id, part: p.name });
     }
     this.meshes = [];
     this.walls = new Map();
     this.root.traverse((node) => {
-      // the shell: "room:floor", "room:wall_3", "room:ceiling" (an object may be called "roomba")
-      const shell = node.userData.object_id === "room" || /^room(floor|ceiling|wall_\d+)(_\d+)?$/.test(node.name);
+      // the shell: nodes "room__floor", "room__wall_3", "room__ceiling", extras object_id "room"
+      const shellName = /^room__(floor|ceiling|wall_\d+)(_\d+)?$/.exec(node.name);
+      const shell = node.userData.object_id === "room" || !!shellName;
       const inRoom = shell || (node.parent && node.parent.userData.room);
       node.userData.room = !!inRoom;
-      const wall = /^roomwall_(\d+)/.exec(node.name);
+      const element = node.userData.object_id === "room" ? node.userData.part : shellName && shellName[1];
+      const wall = element ? /^wall_(\d+)$/.exec(element) : null;
       if (wall) {
         const i = Number(wall[1]);
         if (!this.walls.has(i)) this.walls.set(i, []);
         this.walls.get(i).push(node); // a node or its mesh: children follow their parent
       }
-      if (node.name.startsWith(sanitize("room:ceiling"))) node.visible = false;
+      if (element === "ceiling") node.visible = false;
       if (node.isMesh) {
         node.material = node.material.clone();
         node.userData.ref = inRoom ? null : refOf(node, names);

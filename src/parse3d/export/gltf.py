@@ -2,15 +2,18 @@
 
 Layout (DESIGN §5):
 
-- a root node per object, named by its id, carrying its world pose (rotation, translation and
-  uniform scale, converted to glTF's Y-up) and ``extras`` (object id, category, asset id,
-  fixed, support, relation summary);
-- under it one node per part named ``<object_id>:<part_name>`` with ``extras`` repeating that
-  name (viewers strip colons) plus the part label, relations naming it and its contacts; a
-  part moved by a joint carries the joint's motion as its transform;
+- a root node per object, named by its id (:func:`~parse3d.export.walk.node_name`: ``-`` made
+  ``_``), carrying its world pose (rotation, translation and uniform scale, converted to
+  glTF's Y-up) and ``extras`` (object id, category, asset id, fixed, support, relation
+  summary);
+- under it one node per part named ``<object_id>__<part_name>`` (a name three.js, Blender
+  and USD keep as it is: three.js drops colons) with ``extras.name`` holding the exact
+  ``<object_id>:<part_name>``, plus the part label, relations naming it and its contacts
+  (three.js puts ``extras`` in ``userData``); a part moved by a joint carries the joint's
+  motion as its transform;
 - meshes stay in the asset's frame and are written once per asset: objects that share an
   asset share its meshes (glTF instancing);
-- the room shell as root nodes ``room:floor``, ``room:wall_i`` and ``room:ceiling`` (its own
+- the room shell as root nodes ``room__floor``, ``room__wall_i`` and ``room__ceiling`` (its own
   node, so viewers can hide it; left out with ``ExportOptions(ceiling=False)``).
 
 No normals are written: glTF viewers then shade every triangle flat, which is what the
@@ -160,20 +163,20 @@ def to_glb(rec: SceneRecord) -> bytes:
             if k not in part_mesh:
                 part_mesh[k] = b.mesh(f"{o.asset_id}:{p.name}", p.mesh.vertices, p.mesh.faces,
                                       b.material(p.material))
-            node = {"name": p.key, "mesh": part_mesh[k], **_trs(link_motion[p.link]),
+            node = {"name": p.node, "mesh": part_mesh[k], **_trs(link_motion[p.link]),
                     "extras": {"name": p.key, "object_id": o.id, "part": p.name,
                                "label": p.label, "category": o.category,
                                "asset_id": o.asset_id, "link": p.link,
                                "relations": p.relations, "contacts": p.contacts}}
             children.append(b.node(node))
-        extras = {"object_id": o.id, "category": o.category, "asset_id": o.asset_id,
+        extras = {"name": o.id, "object_id": o.id, "category": o.category, "asset_id": o.asset_id,
                   "fixed": o.fixed, "support": o.support, "relations": o.relations,
                   "joints": {j.name: round(j.value, 9) for j in o.joints}}
-        roots.append(b.node({"name": o.id, **_trs(Z_UP_TO_Y_UP @ o.transform),
+        roots.append(b.node({"name": o.node, **_trs(Z_UP_TO_Y_UP @ o.transform),
                              "children": children, "extras": extras}))
     for s in rec.shell:
         m = b.mesh(s.key, s.mesh.vertices, s.mesh.faces, b.material(s.material))
-        roots.append(b.node({"name": s.key, "mesh": m, **_trs(Z_UP_TO_Y_UP),
+        roots.append(b.node({"name": s.node, "mesh": m, **_trs(Z_UP_TO_Y_UP),
                              "extras": {"name": s.key, "object_id": "room", "part": s.name,
                                         "label": s.name.split("_")[0]}}))
     return b.glb(roots, rec.meta)

@@ -24,6 +24,9 @@ part's convex pieces as one OBJ object each, and its mass with the inertia of a 
 its pieces. Where a part's visual mesh is its pieces joined, as for most generated parts,
 visual and collision name the same file, so a part usually costs one mesh file.
 
+Documents are built as ``yourdfpy`` objects (``Robot``, ``Link``, ``Joint``, ...) and written by
+yourdfpy.
+
 Loaders read an OBJ object as one convex shape: PyBullet does by default, SAPIEN with
 ``loader.load_multiple_collisions_from_file = True`` (set by :mod:`parse3d.export.sapien`);
 a loader that takes the file as a single convex shape gets the hull of the whole part.
@@ -34,11 +37,11 @@ from __future__ import annotations
 import json
 import re
 from pathlib import Path
-from xml.sax.saxutils import quoteattr
 
 import numpy as np
 
 from .._files import user_mode
+from ..errors import DependencyError
 from ..geometry.frames import matrix_to_quat
 from ..scene.io import atomic_write_text
 from . import MARKERS
@@ -53,44 +56,54 @@ FILES = ("urdf/",)
 MARKER = MARKERS["urdf"]
 
 
-def _f(a) -> str:
-    return " ".join(f"{float(x):.7g}" for x in np.asarray(a, float).ravel())
+def _yourdfpy():
+    try:
+        import yourdfpy
+    except ImportError as e:  # pragma: no cover - yourdfpy is a declared dependency
+        raise DependencyError("URDF export needs yourdfpy: pip install 'parse3d[export]'") from e
+    return yourdfpy
 
 
-def _inertial(pieces: list[tuple[np.ndarray, np.ndarray]], mass: float, scale: float,
-              offset: np.ndarray) -> str:
+def _at(xyz) -> np.ndarray:
+    """(4, 4) translation by ``xyz``."""
+    T = np.eye(4)
+    T[:3, 3] = np.round(np.asarray(xyz, float), 9) + 0.0  # no "-0.0" in the file
+    return T
+
+
+def _inertial(urdf, pieces: list[tuple[np.ndarray, np.ndarray]], mass: float, scale: float,
+              offset: np.ndarray):
     """``<inertial>`` of a solid box over the pieces (link frame = asset frame + offset)."""
     if not pieces or mass <= 0:
-        return ('<inertial><origin xyz="0 0 0"/><mass value="0.001"/>'
-                '<inertia ixx="1e-06" iyy="1e-06" izz="1e-06" ixy="0" ixz="0" iyz="0"/>'
-                '</inertial>')
+        return urdf.Inertial(origin=_at((0, 0, 0)), mass=0.001, inertia=np.eye(3) * 1e-6)
     pts = np.vstack([v for v, _ in pieces]) * scale
     lo, hi = pts.min(axis=0), pts.max(axis=0)
-    c = (lo + hi) / 2 + offset
     e = np.maximum(hi - lo, 1e-4)
-    ixx = mass * (e[1] ** 2 + e[2] ** 2) / 12
-    iyy = mass * (e[0] ** 2 + e[2] ** 2) / 12
-    izz = mass * (e[0] ** 2 + e[1] ** 2) / 12
-    return (f'<inertial><origin xyz="{_f(c)}"/><mass value="{mass:.7g}"/>'
-            f'<inertia ixx="{ixx:.7g}" iyy="{iyy:.7g}" izz="{izz:.7g}" ixy="0" ixz="0" '
-            'iyz="0"/></inertial>')
+    diag = mass * np.array([e[1] ** 2 + e[2] ** 2, e[0] ** 2 + e[2] ** 2, e[0] ** 2 + e[1] ** 2]) / 12
+    return urdf.Inertial(origin=_at((lo + hi) / 2 + offset), mass=float(f"{mass:.7g}"),
+                         inertia=np.diag([float(f"{d:.7g}") for d in diag]))
 
 
-def _link(name: str, part: PartRecord | None, visual_mesh: str | None,
-          collision_mesh: str | None, mass: float, scale: float, offset: np.ndarray) -> str:
-    xml = [f"<link name={quoteattr(name)}>"]
-    sc = _f([scale] * 3)
-    o = f'<origin xyz="{_f(offset)}"/>'
-    if part is not None:
-        xml.append(_inertial(part.pieces, mass, scale, offset))
-    if visual_mesh:
-        xml.append(f"<visual>{o}<geometry><mesh filename={quoteattr(visual_mesh)} "
-                   f'scale="{sc}"/></geometry></visual>')
-    if collision_mesh:
-        xml.append(f"<collision>{o}<geometry><mesh filename={quoteattr(collision_mesh)} "
-                   f'scale="{sc}"/></geometry></collision>')
-    xml.append("</link>")
-    return "".join(xml)
+def _link(urdf, name: str, part: PartRecord | None, visual_mesh: str | None,
+          collision_mesh: str | None, mass: float, scale: float, offset: np.ndarray):
+    def geometry(filename: str):
+        return urdf.Geometry(mesh=urdf.Mesh(filename=filename, scale=np.full(3, float(scale))))
+
+    return urdf.Link(
+        name=name,
+        inertial=None if part is None else _inertial(urdf, part.pieces, mass, scale, offset),
+        visuals=[urdf.Visual(origin=_at(offset), geometry=geometry(visual_mesh))]
+        if visual_mesh else [],
+        collisions=[urdf.Collision(name=None, origin=_at(offset), geometry=geometry(collision_mesh))]
+        if collision_mesh else [])
+
+
+def _document(urdf, robot) -> str:
+    """The URDF text of a ``yourdfpy.Robot``, as yourdfpy writes it."""
+    from lxml import etree
+
+    xml = urdf.URDF(robot=robot, build_scene_graph=False, load_meshes=False).write_xml()
+    return '<?xml version="1.0"?>\n' + etree.tostring(xml, encoding="unicode") + "\n"
 
 
 def _part_meshes(meshes: MeshFiles, stem: str, mesh, material,
@@ -111,7 +124,9 @@ def _part_meshes(meshes: MeshFiles, stem: str, mesh, material,
 
 
 def object_urdf(o: ObjectRecord, meshes: MeshFiles) -> str:
-    """The URDF document of one object (meshes written through ``meshes``)."""
+    """The URDF document of one object (meshes written through ``meshes``), built as
+    ``yourdfpy`` objects and written by yourdfpy."""
+    urdf = _yourdfpy()
     s = o.scale
     joint_of = {j.child_link: j for j in o.joints}
     # the frame of each link, in the asset frame at the modelled (closed) pose: the asset
@@ -124,41 +139,40 @@ def object_urdf(o: ObjectRecord, meshes: MeshFiles) -> str:
     for p in o.parts:
         vm, cm = _part_meshes(meshes, f"{o.asset_id}__{p.name}", p.mesh, p.material,
                               p.pieces)
-        mass = o.density * s**3 * p.volume
-        links.append(_link(p.name, p, vm, cm, mass, s, -anchor[p.name] * s))
+        mass = o.link(p.link).part_mass(p)
+        links.append(_link(urdf, p.name, p, vm, cm, mass, s, -anchor[p.name] * s))
         if p.name == root:
             continue
         if p.name in joint_of:
             j = joint_of[p.name]
             parent = j.joint.parent_part if j.joint.parent_part in anchor else root
-            xyz = (anchor[p.name] - anchor[parent]) * s
             lo, hi = sorted(float(v) for v in j.joint.limits)
             k = 1.0 if j.joint.type == "revolute" else s
-            joints.append(
-                f'<joint name={quoteattr(j.name)} type="{j.joint.type}">'
-                f"<parent link={quoteattr(parent)}/><child link={quoteattr(p.name)}/>"
-                f'<origin xyz="{_f(xyz)}"/><axis xyz="{_f(j.joint.axis)}"/>'
-                f'<limit lower="{lo * k:.7g}" upper="{hi * k:.7g}" effort="100" velocity="1"/>'
-                '<dynamics damping="0.1"/></joint>')
+            joints.append(urdf.Joint(
+                name=j.name, type=j.joint.type, parent=parent, child=p.name,
+                origin=_at((anchor[p.name] - anchor[parent]) * s),
+                axis=np.asarray(j.joint.axis, float),
+                limit=urdf.Limit(effort=100.0, velocity=1.0, lower=float(f"{lo * k:.7g}"),
+                                 upper=float(f"{hi * k:.7g}")),
+                dynamics=urdf.Dynamics(damping=0.1)))
         else:
-            joints.append(f'<joint name={quoteattr(f"{root}__{p.name}")} type="fixed">'
-                          f"<parent link={quoteattr(root)}/><child link={quoteattr(p.name)}/>"
-                          f'<origin xyz="{_f(-anchor[root] * s)}"/></joint>')
+            joints.append(urdf.Joint(name=f"{root}__{p.name}", type="fixed", parent=root,
+                                     child=p.name, origin=_at(-anchor[root] * s)))
     # URDF needs the root link first and parents before children in no particular order
-    return (f'<?xml version="1.0"?>\n<robot name={quoteattr(o.id)}>' + "".join(links) + "".join(joints) + "</robot>\n")
+    return _document(urdf, urdf.Robot(name=o.id, links=links, joints=joints))
 
 
 def _room_urdf(rec: SceneRecord, meshes: MeshFiles) -> str:
+    urdf = _yourdfpy()
     links, joints = [], []
     root = rec.shell[0].name
     for s in rec.shell:
         vm, cm = _part_meshes(meshes, f"room__{s.name}", s.mesh, s.material, s.pieces)
-        links.append(_link(s.name, None, vm, cm, 0.0, 1.0, np.zeros(3)))
+        links.append(_link(urdf, s.name, None, vm, cm, 0.0, 1.0, np.zeros(3)))
         if s.name != root:
-            joints.append(f'<joint name="{root}__{s.name}" type="fixed"><parent link="{root}"/>'
-                          f'<child link="{s.name}"/></joint>')
-    return ('<?xml version="1.0"?>\n<robot name="room">' + "".join(links) + "".join(joints)
-            + "</robot>\n")
+            joints.append(urdf.Joint(name=f"{root}__{s.name}", type="fixed", parent=root,
+                                     child=s.name, origin=_at((0, 0, 0))))
+    return _document(urdf, urdf.Robot(name="room", links=links, joints=joints))
 
 
 def _previous_files(folder: Path) -> set[str]:

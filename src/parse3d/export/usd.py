@@ -20,8 +20,11 @@ Stage: Z-up, ``metersPerUnit = 1``, default prim ``/World``.
 - Custom attributes ``parse3d:objectId``, ``parse3d:category``, ``parse3d:assetId``,
   ``parse3d:partName`` (``object:part``), ``parse3d:partLabel``.
 
-USD prim names cannot hold colons or start with a digit; ``parse3d:*`` attributes keep the
-real names.
+Prim names of objects, parts and shell elements are the glTF node names
+(:func:`~parse3d.export.walk.node_name`: ``desk``, ``desk__tabletop``, ``room__floor``), unique
+in the scene, so Blender's importer (which flattens nothing but keeps one namespace for all
+objects) and three.js show the same names; USD prim names cannot hold colons, and the
+``parse3d:*`` attributes keep the exact ones.
 """
 
 from __future__ import annotations
@@ -259,7 +262,7 @@ class _Writer:
         self._xform("/World/Room")
         taken: set[str] = set()
         for s in self.rec.shell:
-            path = f"/World/Room/{_ident(s.name, taken)}"
+            path = f"/World/Room/{_ident(s.node, taken)}"
             x = self._xform(path)
             self._attrs(x, objectId="room", partName=s.key, partLabel=s.name.split("_")[0])
             self._visual(f"{path}/visual", s.mesh.vertices, s.mesh.faces, s.material)
@@ -268,7 +271,7 @@ class _Writer:
 
     def obj(self, o: ObjectRecord, taken: set[str]) -> None:
         T = self.T
-        path = f"/World/Objects/{_ident(o.id, taken)}"
+        path = f"/World/Objects/{_ident(o.node, taken)}"
         articulated = bool(o.joints)
         body_api = ("PhysicsRigidBodyAPI", "PhysicsMassAPI")
         x = self._xform(path, o.transform, o.scale,
@@ -287,10 +290,9 @@ class _Writer:
                 bp, body = path, x
             self.attr(body, "physics:mass", T.Float, float(lk.mass))
             body_path[lk.name] = bp
-            names: set[str] = set()
             for p in lk.parts:
                 proto = self._prototype(o, p)
-                prim = self.prim(f"{bp}/{_ident(p.name, names)}", "Xform")
+                prim = self.prim(f"{bp}/{_ident(p.node, taken)}", "Xform")
                 prim.referenceList.Prepend(self.Sdf.Reference("", proto))
                 self._attrs(prim, objectId=o.id, partName=p.key, partLabel=p.label,
                             category=o.category, assetId=o.asset_id)

@@ -17,6 +17,7 @@ World frame: +Z up, metres. An object's ``transform`` maps asset-frame points ``
 from __future__ import annotations
 
 import hashlib
+import re
 from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -29,15 +30,56 @@ from ..geometry.frames import make_transform
 from ..geometry.meshes import MeshArrays
 from ..pag.refs import RefSyntaxError, parse_ref
 from ..scene.model import PlacedObject, Scene
+from .mass import is_shell, part_mass, pieces_area
 
 if TYPE_CHECKING:
     import trimesh
 
 __all__ = ["ExportOptions", "PartRecord", "LinkRecord", "JointRecord", "ObjectRecord",
            "ShellRecord", "SceneRecord", "walk_scene", "SHELL_MATERIALS", "BASE_LINK",
-           "convex_pieces", "clear_cache"]
+           "convex_pieces", "clear_cache", "NODE_SEPARATOR", "node_name", "split_node_name"]
 
-#: Name of the link holding every part that no joint moves.
+#: What stands for the colon of ``object:part`` in the node names of the viewer formats (glTF,
+#: USD). three.js drops ``[ ] . : /`` from node names and turns white space into ``_``; USD
+#: prim names allow ``[A-Za-z0-9_]`` only; Blender keeps both as they are. Part names never
+#: hold two underscores in a row, so a name splits back at its last ``__``.
+NODE_SEPARATOR = "__"
+
+
+def node_name(key: str) -> str:
+    """The node name of ``object:part`` (or of an object id) in glTF and USD.
+
+    ``desk:tabletop`` -> ``desk__tabletop``, ``room:wall_0`` -> ``room__wall_0``; characters
+    outside ``[A-Za-z0-9_]`` (a ``-`` in an object id) become ``_``, and a leading digit gets
+    a ``_`` before it. The exact name stays in each node's ``extras`` / attributes.
+
+    >>> node_name("reading-lamp:shade_0")
+    'reading_lamp__shade_0'
+    """
+    s = re.sub(r"[^A-Za-z0-9_]", "_", key.replace(":", NODE_SEPARATOR, 1)) or "_"
+    return "_" + s if s[0].isdigit() else s
+
+
+def split_node_name(name: str) -> tuple[str, str | None]:
+    """``(object, part)`` of a node name (``part`` None for an object's own node); the
+    object is the node name of its id (the exact id is in the node's ``extras``).
+
+    >>> split_node_name("desk__leg_0")
+    ('desk', 'leg_0')
+    """
+    obj, sep, part = name.rpartition(NODE_SEPARATOR)
+    return (obj, part) if sep else (name, None)
+
+
+def _unique(name: str, taken: set[str]) -> str:
+    """``name``, or ``name_<k>`` with the smallest k >= 2 not taken (two ids that differ only
+    in a ``-`` against a ``_``); remembers the result."""
+    out, k = name, 2
+    while out in taken:
+        out, k = f"{name}_{k}", k + 1
+    taken.add(out)
+    return out
+
 
 #: Display materials of the room shell, by element kind.
 SHELL_MATERIALS = {"floor": Material((0.78, 0.74, 0.68, 1.0), 0.8, 0.0, "wood"),
@@ -144,7 +186,10 @@ class PartRecord:
     name, label : str
         Unique part name (``leg_0``) and vocabulary label (``leg``).
     key : str
-        ``<object_id>:<part_name>``, the name every format gives the part.
+        ``<object_id>:<part_name>``, the exact name (MJCF, URDF and OBJ name the part so;
+        glTF and USD keep it in ``extras`` and attributes).
+    node : str
+        The part's node name in glTF and USD, unique in the scene (:func:`node_name`).
     mesh : MeshArrays
         Visual mesh (``vertices``, ``faces``), asset frame, unscaled (shared with the asset: do
         not modify).
@@ -168,7 +213,9 @@ class PartRecord:
     relations: list[dict[str, Any]]
     contacts: list[str]
     source: Part
+    node: str = ""
     _hulls: _HullCache = field(repr=False, default=None)
+    _area: float | None = field(repr=False, default=None)
 
     @property
     def pieces(self) -> list[tuple[np.ndarray, np.ndarray]]:
@@ -181,6 +228,13 @@ class PartRecord:
     def volume(self) -> float:
         """Collision volume of the pieces, m^3, unscaled."""
         return self._hulls.get(self.source)[1]
+
+    @property
+    def area(self) -> float:
+        """Surface area of the pieces, m^2, unscaled."""
+        if self._area is None:
+            self._area = pieces_area(self.pieces)
+        return self._area
 
 
 @dataclass
@@ -196,9 +250,12 @@ class LinkRecord:
         Pose of the link relative to the asset frame at the exported joint values (identity
         for ``base``), unscaled.
     density : float
-        kg / m^3.
+        kg / m^3 of the category (the solid model).
     scale : float
         The object's uniform scale.
+    shell : bool
+        Whether the category is built as a shell (:data:`parse3d.export.mass.SHELLS`): parts
+        weigh their shell, not their solid volume.
     """
 
     name: str
@@ -206,11 +263,28 @@ class LinkRecord:
     motion: np.ndarray
     density: float
     scale: float
+    shell: bool = False
+
+    def part_mass(self, part: PartRecord) -> float:
+        """kg of one of the link's parts at the object's scale
+        (:func:`parse3d.export.mass.part_mass`)."""
+        return part_mass(part.volume, part.area if self.shell else 0.0, scale=self.scale,
+                         density=self.density, material=part.material.name, shell=self.shell)
+
+    def part_density(self, part: PartRecord) -> float:
+        """kg / m^3 that gives the part its :meth:`part_mass` over its solid collision volume
+        (what simulators that take a density per shape need); the category density for a
+        solid category."""
+        v = part.volume * self.scale**3
+        if not self.shell or v <= 0:
+            return self.density
+        return self.part_mass(part) / v
 
     @property
     def mass(self) -> float:
-        """kg: the pieces' volume at the object's scale times the density."""
-        return self.density * self.scale**3 * sum(p.volume for p in self.parts)
+        """kg: the sum of the parts' masses (solid volume times the category density, or the
+        shell's volume times the material density)."""
+        return float(sum(self.part_mass(p) for p in self.parts))
 
 
 @dataclass
@@ -243,6 +317,8 @@ class ObjectRecord:
     Attributes
     ----------
     id, category, asset_id : str
+    node : str
+        The object's node name in glTF and USD, unique in the scene (:func:`node_name`).
     asset : Asset
     scale : float
     rotation : (3, 3) float
@@ -267,6 +343,7 @@ class ObjectRecord:
     id: str
     category: str
     asset_id: str
+    node: str
     asset: Asset
     scale: float
     rotation: np.ndarray
@@ -308,6 +385,8 @@ class ShellRecord:
         ``floor``, ``wall_i`` or ``ceiling``.
     key : str
         ``room:<name>``.
+    node : str
+        ``room__<name>``, its node name in glTF and USD.
     mesh : MeshArrays
         World-frame slab (``vertices``, ``faces``).
     material : Material
@@ -318,6 +397,7 @@ class ShellRecord:
 
     name: str
     key: str
+    node: str
     mesh: MeshArrays
     material: Material
     _scene: Scene = field(repr=False, default=None)
@@ -499,8 +579,10 @@ def _links(asset: Asset, values: dict[str, float]) -> tuple[dict[str, str], list
 
 def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
                    relations: list[tuple[dict[str, Any], tuple, tuple]],
-                   touching: dict[str, list[str]], hulls: _HullCache) -> ObjectRecord:
+                   touching: dict[str, list[str]], hulls: _HullCache,
+                   taken: set[str]) -> ObjectRecord:
     asset = o.asset
+    node = _unique(node_name(o.id), taken)
     values = {j.name: _joint_value(j, o.joints, opts.open_ratio) for j in asset.joints}
     part_link, links, joints = _links(asset, values)
     mine = [r for r in relations if r[1][0] == o.id or r[2][0] == o.id]
@@ -509,15 +591,17 @@ def _object_record(o: PlacedObject, settled: bool, opts: ExportOptions,
         prel = [r[0] for r in mine if (o.id, p.label) in (r[1], r[2])]
         key = f"{o.id}:{p.name}"
         parts.append(PartRecord(p.name, p.label, key, p.mesh_arrays, p.material, part_link[p.name],
-                                prel, touching.get(key, []), p, hulls))
+                                prel, touching.get(key, []), p, _unique(node_name(key), taken),
+                                hulls))
         hulls.register(p)
     density = float(asset.density)
-    link_recs = [LinkRecord(n, [p for p in parts if p.link == n], T, density, float(o.scale))
+    shell = is_shell(o.category)
+    link_recs = [LinkRecord(n, [p for p in parts if p.link == n], T, density, float(o.scale), shell)
                  for n, T in links]
     use_settled = settled and o.settled_position is not None
     R = o.settled_rotation if use_settled else o.rotation
     t = o.settled_position if use_settled else o.position
-    return ObjectRecord(o.id, o.category, asset.asset_id, asset, float(o.scale),
+    return ObjectRecord(o.id, o.category, asset.asset_id, node, asset, float(o.scale),
                         np.asarray(R, float), np.asarray(t, float), bool(o.fixed), o.support,
                         density, parts, link_recs,
                         [JointRecord(j, a, b, values[j.name]) for j, a, b in joints],
@@ -566,7 +650,9 @@ def walk_scene(scene: Scene, options: ExportOptions = ExportOptions()) -> SceneR
         touching.setdefault(c.a, []).append(c.b)
         touching.setdefault(c.b, []).append(c.a)
     hulls = _HullCache()
-    objects = [_object_record(o, settled, options, relations, touching, hulls)
+    # shell names first: a user's object may not take ``room__floor`` from the floor
+    taken = {node_name(f"room:{n}") for n in scene.room.elements}
+    objects = [_object_record(o, settled, options, relations, touching, hulls, taken)
                for o in scene.placed if o.asset is not None]
     shell = []
     names = [n for n in scene.room.elements if n != "ceiling"]
@@ -575,7 +661,8 @@ def walk_scene(scene: Scene, options: ExportOptions = ExportOptions()) -> SceneR
     for n in names:
         el = scene.room.elements[n]
         kind = "wall" if n.startswith("wall_") else n
-        shell.append(ShellRecord(n, f"room:{n}", el.mesh_arrays, SHELL_MATERIALS[kind], scene))
+        shell.append(ShellRecord(n, f"room:{n}", node_name(f"room:{n}"), el.mesh_arrays,
+                                 SHELL_MATERIALS[kind], scene))
     meta = {"name": scene.pag.name, "seed": int(scene.seed), "room": scene.pag.room.type,
             "pose": "settled" if settled else "solved", "generator": "parse3d"}
     return SceneRecord(scene.pag.name, settled, objects, shell, meta,

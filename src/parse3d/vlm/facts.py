@@ -37,6 +37,7 @@ from shapely.geometry import Polygon, box
 
 from ..errors import InputError, Problem
 from ..export.gltf import Z_UP_TO_Y_UP
+from ..export.walk import node_name
 from ..geometry.frames import quat_to_matrix
 from ..pag.refs import RefSyntaxError, parse_ref, wall_index
 from ..render.camera import Camera
@@ -262,7 +263,9 @@ def _scene_facts(d: Path, sj: dict, contacts: list, verts: dict, views: list, vf
             continue
         oid = od["id"]
         parts = {p["name"]: part_label(p.get("label", p["name"])) for p in od.get("parts", [])}
-        pv = {n: verts[f"{oid}:{n}"] for n in parts if f"{oid}:{n}" in verts}
+        # scene.glb names a part's node "<object>__<part>" (node_name: viewers drop colons)
+        pv = {n: verts[node_name(f"{oid}:{n}")] for n in parts
+              if node_name(f"{oid}:{n}") in verts}
         if not pv:
             continue
         allv = np.vstack(list(pv.values()))

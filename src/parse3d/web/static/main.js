@@ -41,10 +41,74 @@ function say(text, kind = "info") {
   box.className = `message ${kind}`;
 }
 
+// ------------------------------------------------------------------ undo / redo
+// Snapshots of the PAG document: every change is one step (typing into one field within a
+// moment is one step, not one per key); undo and redo restore the document and re-render,
+// leaving the relation editor's picks alone.
+const history = { past: [], future: [], current: null, at: 0, field: null };
+window.designer.history = history;
+
+function remember({ coalesce = false } = {}) {
+  const snap = JSON.stringify(state.doc);
+  if (snap === history.current) return;
+  const now = performance.now();
+  if (history.current !== null && !(coalesce && history.field && now - history.at < 800)) {
+    history.past.push(history.current);
+    if (history.past.length > 300) history.past.shift();
+  }
+  history.current = snap;
+  history.future = [];
+  history.at = now;
+  history.field = coalesce;
+  updateUndo();
+}
+
+function resetHistory() {
+  history.past = []; history.future = [];
+  history.current = JSON.stringify(state.doc);
+  history.field = null;
+  updateUndo();
+}
+
+function updateUndo() {
+  $("#undo").disabled = !history.past.length;
+  $("#redo").disabled = !history.future.length;
+}
+
+function travel(from, to, verb) {
+  if (!from.length) return;
+  to.push(history.current);
+  history.current = from.pop();
+  history.field = null;
+  state.doc = JSON.parse(history.current);
+  renderRoom();
+  changed({ record: false });
+  updateUndo();
+  say(`${verb} (${history.past.length} step${history.past.length === 1 ? "" : "s"} to undo)`);
+}
+const undo = () => travel(history.past, history.future, "undone");
+const redo = () => travel(history.future, history.past, "redone");
+
+function setupUndo() {
+  $("#undo").addEventListener("click", undo);
+  $("#redo").addEventListener("click", redo);
+  document.addEventListener("keydown", (e) => {
+    if (!(e.ctrlKey || e.metaKey)) return;
+    // inside a text field the browser's own undo edits the text being typed
+    const t = e.target;
+    if (t && (t.tagName === "TEXTAREA" || (t.tagName === "INPUT" && !["checkbox", "button", "file"].includes(t.type)))) return;
+    const key = e.key.toLowerCase();
+    if (key === "z" && !e.shiftKey) { e.preventDefault(); undo(); }
+    else if ((key === "z" && e.shiftKey) || key === "y") { e.preventDefault(); redo(); }
+  });
+  updateUndo();
+}
+
 // ------------------------------------------------------------------ validation
 let validateTimer = null;
-function changed({ structure = true } = {}) {
+function changed({ structure = true, record = true } = {}) {
   state.dirty = true;
+  if (record) remember({ coalesce: !structure });
   if (structure) { renderObjects(); renderRelations(); renderEditorChoices(); }
   drawGraph($("#graph"), state.doc, state.vocab.relations);
   clearTimeout(validateTimer);
@@ -287,7 +351,7 @@ async function setSide(side, id) {
   box.classList.remove("empty");
   $(`#${side}-hint`).textContent = "loading preview…";
   await loadPreview(side);
-  if (state.ed[side] === ed) $(`#${side}-hint`).textContent = "click a part; click an arrow to choose another surface";
+  if (state.ed[side] === ed) $(`#${side}-hint`).textContent = "click a part; then an arrow to choose a surface other than the default";
 }
 
 async function loadPreview(side) {
@@ -418,10 +482,10 @@ function setupEditor() {
         updateReadouts();
         sel.pickedAt = performance.now();
       },
-      onHover: (info, arrow, surface) => {
-        $(`#${side}-hint`).textContent = arrow ? `surface: ${arrow}` :
-          info ? `${info.label}${info.count > 1 ? ` (${info.part})` : ""} · ${surface}` :
-          "click a part; click an arrow to choose another surface";
+      onHover: (info, arrow) => {
+        $(`#${side}-hint`).textContent = arrow ? `surface: ${arrow} (click to choose it)` :
+          info ? `${info.label}${info.count > 1 ? ` (${info.part})` : ""} · click to pick the part` :
+          "click a part; then an arrow to choose a surface other than the default";
       },
     });
     $(`#${side}-object`).addEventListener("change", (e) => setSide(side, e.target.value));
@@ -476,7 +540,8 @@ function setDoc(doc) {
   state.ed = { child: {}, parent: {}, relation: state.ed.relation };
   setSide("child", ""); setSide("parent", "");
   renderRoom();
-  changed();
+  changed({ record: false });
+  resetHistory();
   state.dirty = false;
 }
 
@@ -612,6 +677,56 @@ function setupSolve() {
   showSelection(null);
 }
 
+// ------------------------------------------------------------------ reference image
+// A photo of the room to design from (the paper's workflow: a PAG written from a real image),
+// kept beside the scene viewer. It stays in this browser (session storage), not in the PAG.
+const REFERENCE_KEY = "parse3d-reference";
+
+function showReference(url, name) {
+  const box = $("#reference");
+  box.replaceChildren();
+  box.classList.toggle("empty", !url);
+  $("#reference-clear").hidden = !url;
+  if (!url) {
+    box.append(h("small", {}, "Load a photo of the room (or drop or paste one here) to design its PAG beside it."));
+    return;
+  }
+  const img = h("img", { src: url, alt: name || "reference image", id: "reference-img" });
+  img.addEventListener("load", () => { window.designer.referenceLoaded = name || "image"; });
+  box.append(img);
+}
+
+function loadReference(file) {
+  if (!file || !file.type.startsWith("image/")) return say("reference: choose an image file (PNG, JPEG, …)", "bad");
+  const reader = new FileReader();
+  reader.onload = () => {
+    showReference(reader.result, file.name);
+    try { sessionStorage.setItem(REFERENCE_KEY, JSON.stringify({ url: reader.result, name: file.name })); } catch { /* too large to keep */ }
+    say(`reference image: ${file.name}`);
+  };
+  reader.onerror = () => say(`reference: could not read ${file.name}`, "bad");
+  reader.readAsDataURL(file);
+}
+
+function setupReference() {
+  $("#reference-file").addEventListener("change", (e) => loadReference(e.target.files[0]));
+  $("#reference-clear").addEventListener("click", () => {
+    sessionStorage.removeItem(REFERENCE_KEY);
+    $("#reference-file").value = "";
+    showReference(null);
+  });
+  const box = $("#reference");
+  box.addEventListener("dragover", (e) => e.preventDefault());
+  box.addEventListener("drop", (e) => { e.preventDefault(); loadReference(e.dataTransfer.files[0]); });
+  document.addEventListener("paste", (e) => {
+    const item = [...(e.clipboardData?.items || [])].find((i) => i.type.startsWith("image/"));
+    if (item) loadReference(item.getAsFile());
+  });
+  let kept = null;
+  try { kept = JSON.parse(sessionStorage.getItem(REFERENCE_KEY) || "null"); } catch { kept = null; }
+  showReference(kept && kept.url, kept && kept.name);
+}
+
 // ------------------------------------------------------------------ start
 async function main() {
   state.vocab = await api.vocabulary();
@@ -621,11 +736,14 @@ async function main() {
   setupEditor();
   setupFiles();
   setupSolve();
+  setupUndo();
+  setupReference();
   window.designer.pickers = pickers;
   $("#add-object").addEventListener("click", () => addObject($("#add-category").value));
   $("#add-category").addEventListener("keydown", (e) => { if (e.key === "Enter") addObject(e.target.value); });
   renderRoom();
-  changed();
+  changed({ record: false });
+  resetHistory();
   state.dirty = false;
   document.body.dataset.ready = "1";
   window.designer.readyAt = performance.now();

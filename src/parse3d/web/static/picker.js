@@ -1,7 +1,7 @@
 // A 3-D preview of one asset in which the user picks a part and one of its surfaces.
 // Parts light up under the pointer; the selected part shows its six directional surfaces as
-// arrows. Clicking a part picks it and the surface facing the click; clicking an arrow picks
-// that surface. The preview GLB's nodes carry {part, label, k, count, surfaces} in extras.
+// arrows. Clicking a part picks the part only (the relation's default surface applies);
+// clicking an arrow, or a surface button, picks that surface explicitly. The preview GLB's nodes carry {part, label, k, count, surfaces} in extras.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
@@ -171,7 +171,8 @@ export class AssetPicker {
       if (this.selected) this.select(this.selected.mesh.userData.part, h.arrow);
       return;
     }
-    this.select(h.mesh.userData.part, this._faceSurface(h));
+    // the part, not the face clicked: a mug clicked on its side is still ON by its bottom
+    this.select(h.mesh.userData.part, null);
   }
 
   // Select a part by name (and a surface label, or null); shows its arrows; calls onPick.
