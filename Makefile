@@ -6,10 +6,11 @@ SYSTEM_PACKAGES := libegl1 libegl-mesa0 libgl1-mesa-dri libvulkan1
 # The browser for the PAG designer's tests (Debian's build; never a downloaded one).
 TEST_SYSTEM_PACKAGES := $(SYSTEM_PACKAGES) chromium
 
-.PHONY: demo test lint system system-test _apt venv install-main install-all bench gallery clean
+.PHONY: demo test lint system system-test _apt venv install-demo install-all bench gallery clean
 
-demo: install-main
+demo: install-demo
 	$(BIN)/parse3d demo --out out/demo
+	@echo "venv: $$(du -sh $(VENV) | cut -f1) in $(VENV) (the demo's packages only; make test adds the rest)"
 
 test: install-all
 	@# the Khronos glTF validator (npm) for the GLB export test; skipped where npm is missing
@@ -41,19 +42,20 @@ $(BIN)/python:
 
 venv: $(BIN)/python
 
-# What the README's documented commands need (solve, settle, render, dataset build), pinned.
-# Everything the README's commands use (exports, the VLM and layout experiments, the designer,
-# Ray); torch is the CPU build pinned in constraints.txt.
-install-main: system venv
-	$(BIN)/pip install -q -c constraints.txt -e ".[physics,render,dataset,cluster,check,export,ml,web]"
+# What the demo runs (solve, settle, contacts, preview: the `demo` extra), pinned. The other
+# extras (exports to USD, datasets, Ray, the VLM and layout experiments, the designer) come
+# with `make test`, or one at a time: pip install -e '.[export]' (README, "Install").
+install-demo: system venv
+	$(BIN)/pip install -q -c constraints.txt -e ".[demo]"
 
+# Everything (every extra and the test tools); torch is the CPU build pinned in constraints.txt.
 install-all: system-test venv
 	$(BIN)/pip install -q -c constraints.txt -e ".[all]"
 
 bench: install-all
 	$(BIN)/python benchmarks/run_all.py
 
-gallery: install-main
+gallery: install-demo
 	$(BIN)/parse3d assets gallery --out docs/gallery.png
 
 clean:

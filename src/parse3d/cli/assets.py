@@ -8,6 +8,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem, VocabularyError
 from ._common import console, print_json
 
@@ -107,6 +108,7 @@ def render(category: str = typer.Argument(..., help="Category name."),
     """
     from ..render.gallery import save_thumbnail
 
+    require("moderngl", feature="assets render")
     asset = _generate(category, seed)
     save_thumbnail(asset, out)
     console.print(f"wrote {out}")
@@ -127,6 +129,7 @@ def gallery(out: Path = typer.Option(Path("gallery.png"), "--out", "-o",
     from ..assets import registry
     from ..render.gallery import contact_sheet
 
+    require("moderngl", feature="assets gallery")
     names = [c.strip() for c in categories.split(",") if c.strip()] or list(registry.categories())
     for n in names:
         _category(n)

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
 from ._common import console, err_console, print_json
 
@@ -62,6 +63,9 @@ def register(app: typer.Typer) -> None:
         """
         from ..vlm.build import BuildOptions, build_benchmark
         from ..vlm.facts import VisibilityRule
+
+        if views > 0:
+            require("moderngl", feature="vlm build --views (rendering)")
 
         if min_pixels < 1 or not 0 <= min_in_image <= 1:
             raise InputError(Problem("", "--min-pixels must be >= 1 and --min-in-image in "
@@ -187,6 +191,12 @@ def register(app: typer.Typer) -> None:
         from ..vlm.build import read_jsonl
         from ..vlm.client import EndpointOptions, api_key_from_env, ask_endpoint, ask_local
 
+        if local is not None:
+            require("torch", "transformers", *(("peft",) if adapter is not None else ()),
+                    feature="vlm ask --local")
+        else:
+            require("httpx", feature="vlm ask --endpoint")
+
         remote = endpoint is not None or model is not None
         if remote == (local is not None) or (remote and (endpoint is None or model is None)):
             raise InputError(Problem("", "give exactly one of --endpoint URL --model NAME, or "
@@ -265,6 +275,8 @@ def register(app: typer.Typer) -> None:
         Example: parse3d vlm finetune --model models/Qwen3-VL-8B-Instruct --data out/mini-vlm --out out/lora
         """
         from ..vlm.finetune import FinetuneOptions, finetune
+
+        require("torch", "transformers", "peft", feature="vlm finetune")
 
         mix = {}
         for part in ratios.split(","):
