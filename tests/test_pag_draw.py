@@ -39,3 +39,47 @@ def test_layout_layers_follow_support_depth():
 def test_draw_rejects_other_formats(tmp_path):
     with pytest.raises(InputError, match="use .png or .svg"):
         draw_pag(load_pag(ROOT / "examples" / "bathroom.yaml"), tmp_path / "x.jpg")
+
+
+def _label_boxes(fig):
+    """gid -> (x0, y0, x1, y1) pixels of every labelled text of a PAG drawing."""
+    r = fig.canvas.get_renderer()
+    out = {}
+    for t in fig.axes[0].texts:
+        if t.get_gid():
+            e = t.get_window_extent(r)
+            out[t.get_gid()] = (e.x0, e.y0, e.x1, e.y1)
+    return out
+
+
+def _overlap(a, b, pad=0.5):
+    return min(a[2], b[2]) - max(a[0], b[0]) > pad and min(a[3], b[3]) - max(a[1], b[1]) > pad
+
+
+@pytest.mark.parametrize("name", ["study.json", "living_room.json", "kitchen.json"])
+def test_labels_do_not_overlap_and_names_fit_their_circles(name):
+    import matplotlib.pyplot as plt
+
+    from parse3d.pag.draw import pag_figure
+
+    pag = load_pag(ROOT / "examples" / name)
+    fig = pag_figure(pag)
+    try:
+        boxes = _label_boxes(fig)
+        movable = [g for g in boxes if g.startswith(("relation:", "part:"))]
+        assert len([g for g in movable if g.startswith("relation:")]) == len(pag.relations)
+        others = [g for g in boxes if not g.startswith("object:")]
+        clashes = [(a, b) for a in movable for b in others
+                   if a != b and _overlap(boxes[a], boxes[b])]
+        assert not clashes, clashes[:5]
+        # every object's id lies inside its circle, whole (wrapped at '_' when long)
+        nodes = {p.get_gid(): p for p in fig.axes[0].patches if p.get_gid()}
+        r = fig.canvas.get_renderer()
+        for oid in pag.objects:
+            e = nodes[f"node:{oid}"].get_window_extent(r)
+            x0, y0, x1, y1 = boxes[f"object:{oid}"]
+            assert e.x0 <= x0 and x1 <= e.x1 and e.y0 <= y0 and y1 <= e.y1, oid
+            text = next(t.get_text() for t in fig.axes[0].texts if t.get_gid() == f"object:{oid}")
+            assert text.replace("\n", "") == oid
+    finally:
+        plt.close(fig)
