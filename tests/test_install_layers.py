@@ -118,6 +118,8 @@ def blocked_runs(tmp_path_factory):
         "layout": (["layout", "train", "heavy-ds", "--out", "heavy-run"], "ml", "heavy-run"),
         "vlm-finetune": (["vlm", "finetune", "--model", "m", "--data", "d", "--out", "heavy-lora"],
                          "ml", "heavy-lora"),
+        "vlm-ask-local": (["vlm", "ask", "--local", "m", "--data", "d.jsonl", "--out",
+                           "heavy-ask.jsonl"], "ml", "heavy-ask.jsonl"),
         "serve": (["serve", "--port", "0"], "web", None),
     }
     runs = _run_blocked(light + [argv for argv, _, _ in heavy.values()], work)
@@ -140,7 +142,8 @@ def test_light_path_runs_without_any_extra(blocked_runs):
 
 @pytest.mark.parametrize("case", ["solve", "preview", "usd", "generate", "settle", "render",
                                   "export-usd", "demo", "demo-no-settle", "assets-render",
-                                  "assets-gallery", "dataset", "dataset-stats", "layout", "vlm-finetune", "serve"])
+                                  "assets-gallery", "dataset", "dataset-stats", "layout",
+                                  "vlm-finetune", "vlm-ask-local", "serve"])
 def test_missing_extra_is_one_line_naming_it(blocked_runs, case):
     work, _, heavy = blocked_runs
     r, (_, extra, output) = heavy[case]

@@ -191,12 +191,6 @@ def register(app: typer.Typer) -> None:
         from ..vlm.build import read_jsonl
         from ..vlm.client import EndpointOptions, api_key_from_env, ask_endpoint, ask_local
 
-        if local is not None:
-            require("torch", "transformers", *(("peft",) if adapter is not None else ()),
-                    feature="vlm ask --local")
-        else:
-            require("httpx", feature="vlm ask --endpoint")
-
         remote = endpoint is not None or model is not None
         if remote == (local is not None) or (remote and (endpoint is None or model is None)):
             raise InputError(Problem("", "give exactly one of --endpoint URL --model NAME, or "
@@ -208,6 +202,11 @@ def register(app: typer.Typer) -> None:
         if endpoint is not None and not endpoint.startswith(("http://", "https://")):
             raise InputError(Problem("", f"--endpoint must be an http(s) URL, got {endpoint!r}",
                                      "--endpoint", "parameter"))
+        if local is not None:
+            require("torch", "transformers", *(("peft",) if adapter is not None else ()),
+                    feature="vlm ask --local")
+        else:
+            require("httpx", feature="vlm ask --endpoint")
         rows = read_jsonl(data)
         if limit is not None:
             rows = rows[:limit]
