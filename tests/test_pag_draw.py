@@ -56,13 +56,34 @@ def _overlap(a, b, pad=0.5):
     return min(a[2], b[2]) - max(a[0], b[0]) > pad and min(a[3], b[3]) - max(a[1], b[1]) > pad
 
 
-@pytest.mark.parametrize("name", ["study.json", "living_room.json", "kitchen.json"])
-def test_labels_do_not_overlap_and_names_fit_their_circles(name):
+LONG_IDS = {"format": "pag/1", "name": "long-ids",
+            "room": {"type": "study", "footprint": [[0, 0], [4, 0], [4, 3], [0, 3]], "height": 2.5},
+            "objects": [{"id": "writing_desk_by_the_window", "category": "desk"},
+                        {"id": "reading_lamp_of_grandmother", "category": "table_lamp"},
+                        {"id": "verylongidentifierwithoutbreaks", "category": "book"}],
+            "relations": [
+                {"relation": "ON", "child": "writing_desk_by_the_window", "parent": "floor"},
+                {"relation": "ON", "child": "reading_lamp_of_grandmother",
+                 "parent": "writing_desk_by_the_window:tabletop"},
+                {"relation": "ON", "child": "verylongidentifierwithoutbreaks",
+                 "parent": "writing_desk_by_the_window:tabletop"},
+                {"relation": "NEAR", "child": "verylongidentifierwithoutbreaks",
+                 "parent": "reading_lamp_of_grandmother"}]}
+
+
+@pytest.mark.parametrize("name", ["study.json", "living_room.json", "kitchen.json", "long"])
+def test_labels_do_not_overlap_and_names_fit_their_circles(name, tmp_path):
+    import json
+
     import matplotlib.pyplot as plt
 
     from parse3d.pag.draw import pag_figure
 
-    pag = load_pag(ROOT / "examples" / name)
+    if name == "long":  # ids too long for one line at the smallest size
+        (tmp_path / "long.json").write_text(json.dumps(LONG_IDS))
+        pag = load_pag(tmp_path / "long.json")
+    else:
+        pag = load_pag(ROOT / "examples" / name)
     fig = pag_figure(pag)
     try:
         boxes = _label_boxes(fig)

@@ -279,25 +279,42 @@ def _along_arc(a, b, rad: float, *, nudge: float, n: int = 9):
 
 
 def _fit_name(name: str, width_px: float, *, dpi: int) -> tuple[str, float]:
-    """An object id and the font size (points) that fit it into ``width_px`` pixels (at
-    ``dpi``): the full size if it fits, smaller down to 5.5 pt, else wrapped at an
-    underscore into two lines (down to 4.5 pt)."""
+    """An object id and the font size (points) that fit it into a circle ``width_px`` pixels
+    across inside (at ``dpi``): one line at up to 7.5 pt if it fits at 5.5 pt or more, else
+    two, then three lines (cut at underscores where one is near, else anywhere)."""
     from matplotlib.font_manager import FontProperties
     from matplotlib.textpath import TextPath
 
     bold = FontProperties(weight="bold")
 
-    def px_per_pt(text: str) -> float:  # width in pixels of 1 pt text
-        return max(TextPath((0, 0), line, size=1, prop=bold).get_extents().width
+    def fit(text: str) -> float:  # the largest size (pt) at which ``text`` fits
+        wide = max(TextPath((0, 0), line, size=1, prop=bold).get_extents().width
                    for line in text.split("\n")) * dpi / 72
+        tall = (text.count("\n") + 1) * 1.2 * dpi / 72
+        return min(7.5, width_px / wide, 0.9 * width_px / tall)
 
-    size = min(7.5, width_px / px_per_pt(name))
-    if size >= 5.5 or "_" not in name:
-        return name, max(size, 4.5)
-    cuts = [i for i, ch in enumerate(name) if ch == "_"]
-    cut = min(cuts, key=lambda i: abs(i - len(name) / 2))
-    wrapped = name[:cut + 1] + "\n" + name[cut + 1:]
-    return wrapped, max(4.5, min(7.5, width_px / px_per_pt(wrapped)))
+    text, size = name, fit(name)
+    for lines in (2, 3):
+        if size >= 5.5:
+            break
+        text = _split(name, lines)
+        size = fit(text)
+    return text, size
+
+
+def _split(name: str, lines: int) -> str:
+    """``name`` in ``lines`` pieces of about equal length, cut after an underscore when one
+    is within three characters of the even cut."""
+    cuts, start = [], 0
+    for k in range(1, lines):
+        even = round(k * len(name) / lines)
+        near = [i + 1 for i, ch in enumerate(name) if ch == "_" and abs(i + 1 - even) <= 3
+                and i + 1 > start]
+        cut = min(near, key=lambda i: abs(i - even)) if near else even
+        cuts.append(cut)
+        start = cut
+    bounds = [0, *cuts, len(name)]
+    return "\n".join(name[a:b] for a, b in zip(bounds, bounds[1:], strict=False) if b > a)
 
 
 class _Labels:
