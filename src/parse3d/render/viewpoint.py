@@ -41,7 +41,7 @@ MIN_PIXELS = 200
 #: Least distance (m) from the eye to any object's box: nothing is cut by the near plane.
 MIN_CLEARANCE = 0.3
 #: Size of the masks the candidates are judged on.
-PROBE = (160, 120)
+PROBE = (240, 180)
 #: Eye-height candidates judged (the best by projected boxes).
 INTERIOR_PROBES = 4
 #: Elevations (degrees above the horizontal) and field of view of the cut-away views.
