@@ -46,7 +46,7 @@ PROBE = (240, 180)
 INTERIOR_PROBES = 4
 #: Elevations (degrees above the horizontal) and field of view of the cut-away views.
 CUTAWAY_ELEVATIONS = (35.0, 50.0, 65.0)
-CUTAWAY_FOV = 55.0
+CUTAWAY_FOV = 35.0
 #: Distance factor of the cut-away views over the one that just fits every object's box: a
 #: little room at the edges, so no object is cut by the frame (a closer 0.92, with a fourth
 #: near-vertical elevation, saw about one point more of the benchmark's objects in a trial,
