@@ -10,7 +10,8 @@ import pytest
 import parse3d
 from parse3d.pag import load_pag
 
-EXAMPLES = sorted((Path(__file__).parent.parent / "examples").glob("*.*"))
+EXAMPLES = sorted(p for p in (Path(__file__).parent.parent / "examples").glob("*.*")
+                  if p.suffix in (".json", ".yaml"))  # not the notebook
 
 
 @pytest.mark.parametrize("path", EXAMPLES, ids=[p.stem for p in EXAMPLES])

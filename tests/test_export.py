@@ -42,7 +42,8 @@ ROOT = Path(__file__).resolve().parents[1]
 VALIDATOR = ROOT / "tests" / "gltf_validator"
 FORMATS = ["glb", "usd", "mjcf", "urdf", "obj"]
 ROOMS = ["bathroom.yaml", "study.json"]  # solved and settled
-EXAMPLES = sorted(p.name for p in (ROOT / "examples").iterdir())
+EXAMPLES = sorted(p.name for p in (ROOT / "examples").iterdir()
+                  if p.suffix in (".json", ".yaml"))  # not the notebook
 OTHER_ROOMS = [r for r in EXAMPLES if r not in ROOMS]  # solved only
 
 

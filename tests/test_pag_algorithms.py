@@ -19,7 +19,8 @@ from parse3d.pag import (
     support_tree,
 )
 
-EXAMPLES = sorted((Path(__file__).parent.parent / "examples").glob("*.*"))
+EXAMPLES = sorted(p for p in (Path(__file__).parent.parent / "examples").glob("*.*")
+                  if p.suffix in (".json", ".yaml"))  # not the notebook
 
 
 def small() -> PAG:

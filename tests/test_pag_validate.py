@@ -21,7 +21,8 @@ from parse3d.errors import (
 from parse3d.pag import PAG, Room, load_pag, pag_schema, read_document, validate_data
 from parse3d.relations import RELATIONS
 
-EXAMPLES = sorted((Path(__file__).parent.parent / "examples").glob("*.*"))
+EXAMPLES = sorted(p for p in (Path(__file__).parent.parent / "examples").glob("*.*")
+                  if p.suffix in (".json", ".yaml"))  # not the notebook
 
 BASE = {
     "format": "pag/1",

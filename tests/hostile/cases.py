@@ -330,7 +330,7 @@ def _cases() -> list[dict]:
                                     "time_limit": 600.0}),
                "d/scenes/00000/mine.txt": "precious"},
         outputs=["d/dataset.json", "d/.parse3d-build.lock", "d/.parse3d-journal"])
-    add("dataset-no-pyarrow", DS + ["new"], 1, ["parse3d[dataset]"], block=["pyarrow"],
+    add("dataset-no-pyarrow", DS + ["new"], 2, ["parse3d[dataset]"], block=["pyarrow"],
         absent=["new"])
     for id, args, word in (("dataset-scenes-negative", ["--scenes", "-1"], "--scenes"),
                            ("dataset-scenes-huge", ["--scenes", str(10**9)], "--scenes"),

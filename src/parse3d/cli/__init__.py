@@ -2,7 +2,8 @@
 
 Each command group lives in its own module of this package and exposes ``register(app)``;
 the typer application that holds them is :mod:`parse3d.cli._app` (``parse3d.cli.app``).
-Input mistakes (:class:`parse3d.errors.InputError`) print one line per problem and exit 2;
+Input mistakes (:class:`parse3d.errors.InputError`) print one line per problem and exit 2, as
+does a missing optional extra (:class:`parse3d.errors.DependencyError`, naming the extra);
 infeasible scenes exit 3 (DESIGN §6). No traceback reaches the user for an input mistake.
 
 Importing typer and building the application cost more than a small solve's own work, so a
@@ -16,7 +17,14 @@ import errno
 import sys
 from collections.abc import Callable
 
-from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InfeasibleError, InputError, Parse3dError
+from ..errors import (
+    EXIT_INFEASIBLE,
+    EXIT_INPUT,
+    DependencyError,
+    InfeasibleError,
+    InputError,
+    Parse3dError,
+)
 
 __all__ = ["app", "main"]
 
@@ -56,6 +64,11 @@ def run_guarded(run: Callable[[], None]) -> None:
     except InfeasibleError as e:
         _echo_err(f"infeasible: {e}")
         sys.exit(EXIT_INFEASIBLE)
+    except DependencyError as e:
+        # a missing extra (or system library) is the user's set-up to fix, as an input
+        # mistake is: one line naming what to install, exit 2
+        _echo_err(f"error: {e}")
+        sys.exit(EXIT_INPUT)
     except Parse3dError as e:
         _echo_err(f"error: {e}")
         sys.exit(1)

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem, VocabularyError
 from ._common import console, print_json
 
@@ -53,14 +54,31 @@ def list_(json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> No
     if json_:
         print_json(rows)
         return
+    from rich.padding import Padding
     from rich.table import Table
+    from rich.text import Text
 
-    t = Table("category", "parts (required in bold)", "size (m)", "placement", "variants")
-    for r in rows:
-        parts = ", ".join(f"[bold]{p}[/bold]" if p in r["required"] else p for p in r["parts"])
-        t.add_row(r["category"], parts, f"{r['size_range'][0]:.2f}–{r['size_range'][1]:.2f}",
-                  r["placement"], ", ".join(r["variants"]))
-    console.print(t)
+    def parts_of(r: dict) -> str:
+        return ", ".join(f"[bold]{p}[/bold]" if p in r["required"] else p for p in r["parts"])
+
+    out = console.get()
+    if out.width >= 140:
+        t = Table("category", "parts (required in bold)", "size (m)", "placement", "variants")
+        for r in rows:
+            t.add_row(r["category"], parts_of(r),
+                      f"{r['size_range'][0]:.2f}–{r['size_range'][1]:.2f}", r["placement"],
+                      ", ".join(r["variants"]))
+        out.print(t)
+    else:
+        # a narrow terminal: one heading line per category, its parts wrapped beneath
+        out.print("[dim]category  size range (m)  placement  (variants)\n"
+                  "    parts (required in bold)[/dim]")
+        for r in rows:
+            variants = f"  [dim]({', '.join(r['variants'])})[/dim]" if r["variants"] else ""
+            out.print(f"[bold cyan]{r['category']}[/bold cyan]  "
+                      f"{r['size_range'][0]:.2f}–{r['size_range'][1]:.2f}  {r['placement']}"
+                      f"{variants}", overflow="fold")
+            out.print(Padding(Text.from_markup(parts_of(r)), (0, 0, 0, 4)), soft_wrap=False)
     console.print(f"{len(rows)} categories")
 
 
@@ -82,19 +100,38 @@ def show(category: str = typer.Argument(..., help="Category name."),
 
     console.print(f"[bold]{asset.asset_id}[/bold]  size {asset.size:.3f} m  extents "
                   f"{[round(float(x), 3) for x in asset.extents]}  mass {asset.mass:.2f} kg")
-    t = Table("part", "label", "material", "pieces", "surfaces (normal, area m²)")
+    # What a PAG can name comes first: each part label, how to reference it, what it is made of
+    by_label: dict[str, list] = {}
     for p in asset.parts:
-        surf = "  ".join(f"{k}{'*' if s.source == 'bbox' else ''} {s.area:.4f}"
-                         for k, s in p.surfaces.items())
-        t.add_row(p.name, p.label, p.material.name, str(len(p.pieces)), surf)
+        by_label.setdefault(p.label, []).append(p)
+    t = Table("label", "count", f"reference (object id {category!r})", "material",
+              title="parts a PAG can name",
+              title_justify="left")
+    for label, ps in by_label.items():
+        ref = (f"{category}:{label}" if len(ps) == 1
+               else f"{category}:{label}#k  (k = 0..{len(ps) - 1}: bottom to top, then "
+                    "left to right)")
+        t.add_row(label, str(len(ps)), ref,
+                  ", ".join(dict.fromkeys(p.material.name for p in ps)))
     console.print(t)
-    console.print("(* = bounding-box fallback)")
     if asset.internal:
-        t2 = Table("internal surface of", "height (m)", "area (m²)", "clearance (m)", "depth (m)")
+        t2 = Table("internal surface of", "height (m)", "area (m²)", "clearance (m)", "depth (m)",
+                   title="internal surfaces (targets of IN)", title_justify="left")
         for s in asset.internal:
             t2.add_row(s.part, f"{s.surface.origin[2]:.3f}", f"{s.surface.area:.4f}",
                        "open" if s.clearance == float("inf") else f"{s.clearance:.3f}", f"{s.depth:.3f}")
         console.print(t2)
+    if asset.joints:
+        console.print("joints: " + ", ".join(
+            f"{j.child_part} ({j.type} on {j.parent_part})" for j in asset.joints))
+    # then the detail: every part's six directional surfaces
+    t3 = Table("part", "label", "pieces", "surfaces (area m²; * = bounding-box fallback)",
+               title="surfaces of each part", title_justify="left")
+    for p in asset.parts:
+        surf = "  ".join(f"{k}{'*' if s.source == 'bbox' else ''} {s.area:.4f}"
+                         for k, s in p.surfaces.items())
+        t3.add_row(p.name, p.label, str(len(p.pieces)), surf)
+    console.print(t3)
 
 
 @assets_app.command("render")
@@ -107,6 +144,7 @@ def render(category: str = typer.Argument(..., help="Category name."),
     """
     from ..render.gallery import save_thumbnail
 
+    require("moderngl", feature="assets render")
     asset = _generate(category, seed)
     save_thumbnail(asset, out)
     console.print(f"wrote {out}")
@@ -127,6 +165,7 @@ def gallery(out: Path = typer.Option(Path("gallery.png"), "--out", "-o",
     from ..assets import registry
     from ..render.gallery import contact_sheet
 
+    require("moderngl", feature="assets gallery")
     names = [c.strip() for c in categories.split(",") if c.strip()] or list(registry.categories())
     for n in names:
         _category(n)

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
 from ._common import console, err_console, print_json
 
@@ -200,6 +201,7 @@ def register(app: typer.Typer) -> None:
         """
         from ..datagen.stats import dataset_stats, write_stats
 
+        require("pyarrow", feature="dataset stats (manifest.parquet)")
         stats = dataset_stats(dataset_dir)
         files = write_stats(stats, out if out is not None else dataset_dir / "stats")
         if as_json:

@@ -8,6 +8,7 @@ import typer
 from rich.console import Console
 from rich.table import Table
 
+from .._deps import require
 from ._common import check_seed, console, safe_name
 
 
@@ -31,6 +32,10 @@ def register(app: typer.Typer) -> None:
         from .solve import _prepare_out
 
         check_seed(seed)
+        # name the extras before any folder is written (make demo installs both)
+        if not no_settle:
+            require("sapien", feature="the demo's settling (or pass --no-settle)")
+        require("moderngl", feature="the demo's previews")
         vocab = vocabulary()
         table = Table(title="parse3d demo")
         for col in ("room", "objects", "placed", "relations hold", "contacts", "solve s", "settle s", "folder"):

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require_formats
 from ..errors import InputError, Problem
 from ._common import console, print_json
 
@@ -66,6 +67,7 @@ def register(app: typer.Typer) -> None:
         from ..scene.io import read_scene
 
         formats = check_formats(fmt, where="--format")
+        require_formats(formats)
         dirs = _scene_dirs(scene_dir)
         opts = ExportOptions(settled=settled, ceiling=not no_ceiling, open_ratio=open_ratio,
                              friction=settling_friction())

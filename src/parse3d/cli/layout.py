@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
 from ._common import console, err_console, print_json
 
@@ -15,6 +16,8 @@ def _threads(n: int) -> None:
     if n < 1:
         raise InputError(Problem("", f"--threads must be at least 1, got {n}", "--threads",
                                  "parameter"))
+    # every layout command runs the diffusion model: name the extra before any work
+    require("torch", "diffusers", feature="layout diffusion")
     import torch
 
     torch.set_num_threads(n)

@@ -8,7 +8,7 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from .._deps import require
+from .._deps import require, require_formats
 from ..errors import EXIT_INFEASIBLE, EXIT_INPUT, InputError, Problem
 from ._common import check_range, check_seed, console, err_console, print_json, safe_name
 
@@ -92,6 +92,7 @@ def _run(pag, seed, out, strategy, no_settle, no_preview, as_json, formats="glb"
                                                search_budget=search_budget, relax=not strict),
                            formats=check_formats(formats, where="--formats"),
                            time_limit=time_limit)
+    require_formats(opts.formats)
     if not no_settle:
         require("sapien", feature="settling (or pass --no-settle)")
     if not no_preview:

@@ -12,6 +12,25 @@ from ._common import console, print_json
 __all__ = ["register"]
 
 
+def objects_by_seed(counts: list[int] | tuple[int, ...]) -> str:
+    """The objects a template expanded into, per seed, said as such.
+
+    Optional motifs and counts are drawn per seed, so one template expands into different
+    numbers of objects (``63, 62`` is seed 0 then seed 1, not "63 of 62").
+
+    Examples
+    --------
+    >>> objects_by_seed([63, 62])
+    '62-63 objects (by seed: 63, 62)'
+    >>> objects_by_seed([40, 40])
+    '40 objects (each seed)'
+    """
+    lo, hi = min(counts), max(counts)
+    if lo == hi:
+        return f"{lo} objects" + (" (each seed)" if len(counts) > 1 else "")
+    return f"{lo}-{hi} objects (by seed: {', '.join(map(str, counts))})"
+
+
 def register(app: typer.Typer) -> None:
     group = typer.Typer(help="Room templates (pag-template/1): list, expand into PAGs, check.",
                         no_args_is_help=True)
@@ -95,9 +114,8 @@ def register(app: typer.Typer) -> None:
             results.append(r)
             if not json_out:
                 mark = "ok " if r.placed_fraction >= threshold else "LOW"
-                console.print(f"{mark} {t.name:<32} placed {r.placed_fraction:6.1%}  objects "
-                              f"{'/'.join(map(str, r.n_objects))}  "
-                              f"{sum(r.seconds):5.1f} s")
+                console.print(f"{mark} {t.name:<32} placed {r.placed_fraction:6.1%}  "
+                              f"{objects_by_seed(r.n_objects)}  {sum(r.seconds):5.1f} s")
                 for s, oid, reason in r.failures:
                     console.print(f"      seed {s} {oid}: {reason}")
         if json_out:

@@ -7,6 +7,7 @@ from pathlib import Path
 
 import typer
 
+from .._deps import require
 from ..errors import InputError, Problem
 from ._common import console, err_console, print_json
 
@@ -62,6 +63,9 @@ def register(app: typer.Typer) -> None:
         """
         from ..vlm.build import BuildOptions, build_benchmark
         from ..vlm.facts import VisibilityRule
+
+        if views > 0:
+            require("moderngl", feature="vlm build --views (rendering)")
 
         if min_pixels < 1 or not 0 <= min_in_image <= 1:
             raise InputError(Problem("", "--min-pixels must be >= 1 and --min-in-image in "
@@ -198,6 +202,11 @@ def register(app: typer.Typer) -> None:
         if endpoint is not None and not endpoint.startswith(("http://", "https://")):
             raise InputError(Problem("", f"--endpoint must be an http(s) URL, got {endpoint!r}",
                                      "--endpoint", "parameter"))
+        if local is not None:
+            require("torch", "transformers", *(("peft",) if adapter is not None else ()),
+                    feature="vlm ask --local")
+        else:
+            require("httpx", feature="vlm ask --endpoint")
         rows = read_jsonl(data)
         if limit is not None:
             rows = rows[:limit]
@@ -265,6 +274,8 @@ def register(app: typer.Typer) -> None:
         Example: parse3d vlm finetune --model models/Qwen3-VL-8B-Instruct --data out/mini-vlm --out out/lora
         """
         from ..vlm.finetune import FinetuneOptions, finetune
+
+        require("torch", "transformers", "peft", feature="vlm finetune")
 
         mix = {}
         for part in ratios.split(","):

@@ -23,7 +23,7 @@ from PIL import Image
 
 from ..errors import InputError
 from ..scene.model import Scene
-from .camera import MAX_OBJECT_SHARE, Camera, overview_candidates
+from .camera import Camera
 from .renderer import Renderer, default_renderer, scene_id_tables
 from .result import RenderResult, view_record
 
@@ -104,40 +104,14 @@ def write_views(scene: Scene, cameras: list[Camera], out_dir: str | Path, *,
     return doc
 
 
-#: Size of the masks the preview viewpoint is chosen on, pixels.
-_PROBE = (96, 72)
-#: Candidate viewpoints the preview renders at most.
-_PROBES = 16
-
-
 def preview_camera(scene: Scene, *, width: int = 640, height: int = 480,
                    settled: bool | None = None, renderer: Renderer | None = None) -> Camera:
-    """The overview viewpoint chosen by what it sees.
+    """The preview's viewpoint, chosen by what it sees (occluders considered): see
+    :func:`parse3d.render.viewpoint.visibility_camera`."""
+    from .viewpoint import visibility_camera
 
-    The best :func:`~parse3d.render.camera.overview_candidates` are rendered as small
-    instance masks (no colour); the preview is the candidate where no object covers more
-    than :data:`~parse3d.render.camera.MAX_OBJECT_SHARE` of the frame and the most objects
-    are visible (ties: the candidates' own order). When every candidate has an object above
-    the share, the one with the smallest largest share is used.
-    """
     r = renderer if renderer is not None else default_renderer()
-    cands = overview_candidates(scene, width=width, height=height, settled=settled)
-    ids = {o.id for o in scene.placed}
-    instances, _ = scene_id_tables(scene)
-    masks = r.instance_masks(scene, [cam.resized(*_PROBE) for cam in cands[:_PROBES]],
-                             settled=settled)
-    best, best_key = cands[0], None
-    for k, (cam, mask) in enumerate(zip(cands, masks, strict=False)):
-        vals, counts = np.unique(mask, return_counts=True)
-        share = {instances.get(int(v)): n / mask.size
-                 for v, n in zip(vals, counts, strict=True) if v > 0}
-        objs = [s for name, s in share.items() if name in ids]
-        top = max(objs, default=0.0)
-        ok = top <= MAX_OBJECT_SHARE
-        key = (ok, len(objs) if ok else -top, -k)
-        if best_key is None or key > best_key:
-            best, best_key = cam, key
-    return best
+    return visibility_camera(scene, width=width, height=height, settled=settled, renderer=r)
 
 
 #: zlib level of the preview PNG: level 1 encodes a 640x480 preview in about two thirds of

@@ -1,0 +1,65 @@
+"""The preview's viewpoint shows the room: chosen by rendered visibility, occluders considered."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+pytest.importorskip("moderngl")
+
+from parse3d.pag.io import load_pag  # noqa: E402
+from parse3d.render import Renderer, overview_camera, preview_camera  # noqa: E402
+from parse3d.render.camera import MAX_OBJECT_SHARE  # noqa: E402
+from parse3d.render.renderer import scene_id_tables  # noqa: E402
+from parse3d.render.viewpoint import MIN_CLEARANCE, MIN_PIXELS  # noqa: E402
+from parse3d.solver import solve  # noqa: E402
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def _pixels(r, scene, cam) -> dict[str, int]:
+    mask = r.instance_masks(scene, [cam])[0]
+    inst, _ = scene_id_tables(scene)
+    vals, counts = np.unique(mask, return_counts=True)
+    return {inst.get(int(v)): int(n) for v, n in zip(vals, counts, strict=True) if v > 0}
+
+
+@pytest.fixture(scope="module")
+def kitchen():
+    # the kitchen whose eye-height preview hid its floor cabinets behind the island
+    return solve(load_pag(ROOT / "examples" / "kitchen.json"), seed=0)
+
+
+def test_kitchen_preview_sees_the_room(kitchen):
+    scene, r = kitchen, Renderer()
+    cam = preview_camera(scene, renderer=r)
+    assert (cam.width, cam.height) == (640, 480)
+    px = _pixels(r, scene, cam)
+    ids = [o.id for o in scene.placed]
+    seen = {i for i in ids if px.get(i, 0) >= MIN_PIXELS}
+    walls = {e.child.object for e in scene.pag.relations
+             if e.relation == "SECURED_TO" and e.parent.object.startswith("wall")}
+    assert walls and walls <= seen, walls - seen  # every wall-mounted object in view
+    assert len(seen) >= 0.6 * len(ids), (len(seen), len(ids))
+    # more of the room than the eye-height overview ranked by projected boxes alone
+    old = _pixels(r, scene, overview_camera(scene))
+    assert len(seen) > sum(1 for i in ids if old.get(i, 0) >= MIN_PIXELS)
+    assert max(px.get(i, 0) for i in ids) / (640 * 480) <= MAX_OBJECT_SHARE
+
+
+def test_kitchen_preview_cuts_nothing_at_the_near_plane(kitchen):
+    scene, r = kitchen, Renderer()
+    cam = preview_camera(scene, renderer=r)
+    for o in scene.placed:
+        lo, hi = o.world_bounds(None)
+        # the eye is clear of every object's box, so no box reaches the near plane
+        assert np.linalg.norm(np.maximum(np.maximum(lo - cam.position, cam.position - hi), 0)) \
+            >= MIN_CLEARANCE, o.id
+        corners = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                            for z in (lo[2], hi[2])])
+        uv, depth = cam.project(corners)
+        assert (depth > cam.near).all() or (depth < 0).all(), o.id  # never straddling
+        if cam.meta["preset"] == "cutaway":  # framed whole: nothing cut at the frame's edges
+            assert ((uv >= 0) & (uv <= [cam.width, cam.height])).all(), o.id
