@@ -51,7 +51,7 @@ from .reach import (
 
 __all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "Check", "CheckContext",
            "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
-           "world_points", "select_parts"]
+           "world_points", "select_parts", "end_pads", "END_DEPTH"]
 
 #: Gap left between surfaces in contact when placing (m): FCL then sees no collision.
 EPS = 5e-4
@@ -474,6 +474,11 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         return Check(False, {}, f"child has no part {e.child.part!r}"), False
     pts = world_points(child, settled=settled, parts=parts)
     gap = float(_plane_dist(pts, sB).min())
+    ends: list[str] = []
+    if rel in END_RELATIONS and e.child.part is not None and gap > DIST_TOL:
+        # the named parts stand on pads at their ends (a chair's legs on glides): those
+        # touch for them
+        ends, gap = _ends(child, parts, sB, settled, gap)
     if rel == "ON" and pobj is not None and (gap < -PENETRATION_TOL
                                              or DIST_TOL < gap <= STEP + DIST_TOL):
         # resting below the surface plane, inside the parent's hollow (a plate in a plate),
@@ -546,6 +551,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
     ok = ok and ang <= ang_tol
     detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
+    if ends:
+        detail += f", through {', '.join(ends)}"
     if pile is not None:
         detail += f", resting on {pile}"
     elif on_wall:
@@ -553,6 +560,68 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     leans = rel in ("ON", "IN") and any(le.relation == "LEANING_AGAINST"
                                 for le in ctx.scene.pag.edges_of(e.child.object))
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG or leans
+
+
+#: Relations whose named child part may touch through pads at its end (:func:`_ends`).
+END_RELATIONS = ("ON", "AGAINST", "SECURED_TO")
+#: Metres a pad at the end of a named part (a chair leg's glide, a table foot, a bumper on a
+#: cabinet's back) may reach beyond it; a part reaching further (an armchair's legs under its
+#: frame) is a part of its own, not the named part's end.
+END_DEPTH = 0.02
+
+
+def end_pads(named: list[np.ndarray], others: list[tuple[str, np.ndarray]], d: np.ndarray,
+             depth: float = END_DEPTH) -> list[str]:
+    """The names among ``others`` (name, points) of the pads ending the named parts (points
+    ``named``, one array per part) toward direction ``d``: each lies within ``depth`` of the
+    named parts' furthest point along ``d``, reaching beyond it, its near end within 1 mm of
+    it, and its footprint across ``d`` meets one of theirs (a chair leg's glide, a table's
+    foot; not a shelf's post running along its set-in back panel)."""
+    from shapely.geometry import Polygon
+
+    from ..geometry.regions import convex_footprint
+
+    d = np.asarray(d, float) / np.linalg.norm(d)
+    u = np.cross(d, [1.0, 0.0, 0.0] if abs(d[0]) < 0.9 else [0.0, 1.0, 0.0])
+    u /= np.linalg.norm(u)
+    v = np.cross(d, u)
+    reach = max(float(np.max(q @ d)) for q in named)
+
+    def foot(q):
+        return Polygon(convex_footprint(np.c_[q @ u, q @ v])).buffer(2e-3)
+
+    base = None
+    out = []
+    for name, q in others:
+        h = q @ d
+        if not (reach < float(h.max()) <= reach + depth
+                and reach - depth <= float(h.min()) <= reach + 1e-3):
+            continue
+        if base is None:
+            base = [foot(n) for n in named]
+        f = foot(q)
+        if any(f.intersects(b) for b in base):
+            out.append(name)
+    return out
+
+
+def _ends(child: PlacedObject, parts: list, sB: Surface, settled, gap: float
+          ) -> tuple[list[str], float]:
+    """The child's other parts ending the named ``parts`` toward ``sB`` (:func:`end_pads`),
+    and the gap of the named parts with them (``gap`` when there are none)."""
+    T = child.transform(settled)
+    named = {id(p) for p in parts}
+
+    def world(p):
+        return part_points([p]) @ T[:3, :3].T + T[:3, 3]
+
+    others = [(p.name, world(p)) for p in child.asset.parts if id(p) not in named]
+    pads = end_pads([world(p) for p in parts], others, -sB.normal,
+                    END_DEPTH * child.scale)
+    if not pads:
+        return [], gap
+    low = min(float(_plane_dist(q, sB).min()) for name, q in others if name in pads)
+    return pads, min(gap, low)
 
 
 #: Two extents within this ratio count as one round cross-section; the third must exceed

@@ -22,6 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
+from .intent import loose_reason, names_part, overhang, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
@@ -49,6 +50,8 @@ class Placement:
     obj: PlacedObject
     body: Body
     checks: list[tuple]
+    #: the support edge placed by the whole object (its named part cannot touch): why
+    loose_support: str | None = None
 
 
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
@@ -84,6 +87,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     for attempt in range(cfg.asset_attempts):
         category = node.candidates[int(rng.integers(len(node.candidates)))]
         asset = library.get(category, rng)
+        picked = True  # by a rule below, else drawn
         if keep is not None and attempt == 0:
             category, asset = keep.category, keep.asset
         elif attempt == 0 and (flush := _flush_edges(loosen)):
@@ -110,18 +114,32 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                key=lambda a: _extent(a, 2))
             if alt is not None:
                 category, asset = alt
-        elif asset.asset_id in tried or lacks(asset, reqs):
-            # constraint-aware selection: another instance that has what the relations need
-            alt = _alternative(library, node.candidates, reqs, tried, rng)
+        else:
+            picked = False
+        if not (keep is not None and attempt == 0) and (
+                not picked and asset.asset_id in tried or lacks(asset, reqs)):
+            # constraint-aware selection (also when a rule above found nothing and kept the
+            # draw): another instance that has what the relations need, among a sample of
+            # slots, then among every slot (a board game with a lid: most are card decks)
+            alt = _alternative(library, node.candidates, reqs, tried, rng) or _alternative(
+                library, node.candidates, reqs, tried, rng, every=True)
             if alt is None:
                 if asset.asset_id in tried:
                     break  # every suitable instance was tried
                 why = lacks(asset, reqs)
-                n = k_slots(library, reqs)
+                n = int(getattr(library, "per_category", 20))
                 raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
                            f"{n} per category) fits the relations: {why}",
                            intrinsic=True)
             category, asset = alt
+        if keep is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+            # the named part is not where the support needs it (a frame raised on legs): the
+            # instance whose named part reaches furthest toward the support, of every slot
+            alt = _alternative(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
+                               key=lambda a: overhang(a, support_edge)[0], every=True)
+            if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
+                    asset, support_edge)[0]:
+                category, asset = alt
         tried.add(asset.asset_id)
         # generators already make real-world sizes: keep them (times the node's scale range),
         # clamped so the size stays in the category's range (this normalises loaded assets)
@@ -171,9 +189,15 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                 intrinsic.append(False)
                 continue
         hang = _hung_edge_up(support_edge, asset)
+        loose = None
+        placed_edge = support_edge
+        if names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+            # even the best instance is overhung: it rests by the part that reaches furthest
+            loose = loose_reason(asset, support_edge, scale)
+            placed_edge = whole_object(support_edge)
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale,
-                                                       hang or support_edge, others, rng, cfg,
+                                                       hang or placed_edge, others, rng, cfg,
                                                        proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
@@ -190,7 +214,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         full = _full_checks(edges, skip, checks)
         for i in loosen:
             full[i] = None
-        return Placement(obj, body, full)
+        if loose is not None:
+            full[0] = None  # measured on the edge as written afterwards
+        return Placement(obj, body, full, loose)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
 
 
@@ -499,8 +525,8 @@ def _free_top(asset: Asset, part) -> bool:
                 continue
             for pc in p.piece_arrays:  # per convex piece: a part's pieces may frame the top
                 h = (pc.vertices - s.origin) @ s.normal
-                if h.max() <= 1e-3 or h.min() >= 0.2:
-                    continue
+                if h.max() <= 1e-3 or h.min() >= 0.2 or (h.min() >= -1e-3 and h.max() <= LAYER):
+                    continue  # below, high above, or a layer lying on it that holds as well
                 free = free.difference(Polygon(RG.convex_footprint(plane_coords(s, pc.vertices))))
         # room for an item, or at least mostly uncovered (a bathtub's thin rim holds bottles
         # by their centre of mass)
@@ -511,6 +537,9 @@ def _free_top(asset: Asset, part) -> bool:
     return got
 
 
+#: Metres of a layer lying on a part's top (a card table's felt, a glass top) that does not
+#: cover it: what stands on the part stands on the layer (the ``ON`` check's step).
+LAYER = 0.01
 #: Pool slots examined per candidate category when looking for a suitable instance.
 RANKED_SLOTS = 6
 
@@ -526,17 +555,17 @@ def _space(reason: str) -> bool:
 
 
 def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,
-                 smallest: bool = False, key=None):
+                 smallest: bool = False, key=None, every: bool = False):
     """An untried instance, over the candidate categories and a random sample of their pool
-    slots, that meets ``reqs``: the first found, or with ``smallest`` the one with the
-    smallest footprint, or with ``key`` (a function of the asset) the one of least key; None
-    when there is none."""
+    slots (``every``: all of them), that meets ``reqs``: the first found, or with
+    ``smallest`` the one with the smallest footprint, or with ``key`` (a function of the
+    asset) the one of least key; None when there is none."""
     load = getattr(library, "load", None)
     if load is None:
         return None
     k = int(getattr(library, "per_category", 20))
     # a part that must reach furthest (AGAINST by a part) is rare among instances: every slot
-    slots = k if any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
+    slots = k if every or any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
     best = None
     for ci in rng.permutation(len(categories)):
         cat = categories[int(ci)]
@@ -572,13 +601,6 @@ def _overhang(asset: Asset, e: Edge) -> float:
     ps = ps[idx:idx + 1] if idx is not None else ps
     n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
     return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
-
-
-def k_slots(library, reqs) -> int:
-    """Pool slots per category :func:`_alternative` looks at for ``reqs``."""
-    if any(r[3].startswith("extreme:") for r in reqs):
-        return int(getattr(library, "per_category", 20))
-    return RANKED_SLOTS
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:

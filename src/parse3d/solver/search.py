@@ -27,6 +27,7 @@ from ..scene.shell import build_shell
 from .collision import CollisionWorld, cached_body, static_body
 from .config import Fail, SolverConfig, stage_rng
 from .geometry import asset_geometry
+from .intent import whole_object
 from .placement import Placement, _space, place_object, resolution, scaled_mesh
 from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
@@ -244,6 +245,11 @@ class _Search:
             raise _internal(self.st.scene, oid, e) from e
 
     def commit(self, p: Placement) -> None:
+        key = str(self.edge_index[id(self.pag.edges_of(p.obj.id)[0])])
+        if p.loose_support is not None:
+            self.relaxed[key] = p.loose_support
+        else:
+            self.relaxed.pop(key, None)
         self.placements[p.obj.id] = p
         self.failed.pop(p.obj.id, None)
         self.st.add(p.obj, p.body)
@@ -659,21 +665,6 @@ def _named_edges(pag: PAG, oid: str, reason: str) -> list[int]:
     texts = {f"{r} {c} -> {p}" for r, c, p in _EDGE_RE.findall(reason)}
     return [i for i, e in enumerate(pag.edges_of(oid))
             if i > 0 and f"{e.relation} {e.child} -> {e.parent}" in texts]
-
-
-def whole_object(e):
-    """The edge ``e`` by the whole child object (no part named): the part that reaches
-    furthest then touches (a shelf flush by its posts when its back panel is set in)."""
-    from dataclasses import replace
-
-    from ..pag.refs import format_ref
-
-    c = e.child
-    out = replace(e, child=replace(c, part=None, index=None,
-                                   text=format_ref(c.object, None, None, c.surface)))
-    # the part as written, for the choice of the least overhung instance
-    object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
-    return out
 
 
 def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset()
