@@ -83,3 +83,19 @@ def test_a_stack_on_a_lid_draws_an_instance_with_a_lid(scene):
     """Most board games of the pool are card decks without a lid: every slot is looked at."""
     assert scene.objects["game_1"].asset.parts_by_label("lid")
     assert _check(scene, "game_2:box@bottom").holds
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_in_a_board_that_holds_nothing_inside_means_on_its_top(seed):
+    """No wall shelf of the pool has an internal surface on its board: records IN it stand on
+    its top, and IN holds (on top of the board, said so in the detail)."""
+    scene = solve(load_pag(ROOMS / "in_on_a_board.json"), seed=seed)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    shelf = scene.objects["shelf"]
+    for rid in ("rec1", "rec2"):
+        c = _check(scene, f"{rid}:sleeve@bottom")
+        assert c.relation == "IN" and c.holds, c.detail
+        assert "on top of the shelf" in c.detail
+        rec = scene.objects[rid]
+        assert rec.support_choice.owner == "shelf"
+        assert shelf.asset.part(rec.support_choice.part).label == "shelf"

@@ -770,6 +770,21 @@ def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
 
 #: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.
 OPEN_SUPPORT_LABELS = frozenset({"shelf"})
+#: Part labels of boards: ``IN`` one that holds nothing inside (a wall shelf's board) means ON
+#: its top.
+BOARD_LABELS = frozenset({"shelf", "tier", "board", "plank", "ledge"})
+
+
+def on_board(pobj: PlacedObject, ref: Ref, part_name: str | None = None) -> bool:
+    """Whether ``IN`` the parent part ``ref`` (or the resolved ``part_name``) means ON its top:
+    a board (:data:`BOARD_LABELS`) of which no named part holds an internal surface."""
+    if part_name is not None:
+        parts = [p for p in pobj.asset.parts if p.name == part_name]
+    else:
+        parts = select_parts(pobj, ref) if ref.part is not None else []
+    names = {p.name for p in parts}
+    return bool(parts) and all(p.label in BOARD_LABELS for p in parts) \
+        and not any(i.part in names for i in pobj.asset.internal)
 
 
 @check_rule("IN")
@@ -783,6 +798,14 @@ def _check_in(ctx: CheckContext) -> Check:
         return Check(False, {}, "IN needs an object parent")
     got = _internal_surface(ctx)
     if isinstance(got, str):
+        if on_board(pobj, ctx.edge.parent, ctx.resolved.get("parent_part")):
+            # a board holds what is IN it on its top (records on a wall shelf)
+            from dataclasses import replace
+
+            c = _check_on(replace(ctx, edge=replace(ctx.edge, relation="ON"),
+                                  resolved={**ctx.resolved, "parent_surface": "top"}))
+            return Check(c.holds, c.residual, f"{c.detail}; on top of the "
+                         f"{ctx.edge.parent.part} (it holds nothing inside)")
         return Check(False, {}, got)
     sB, part = got
     c, _ = _contact(ctx, sB)

@@ -15,7 +15,7 @@ from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..geometry.memo import per_object
 from ..geometry.meshes import MeshArrays, scaled_vertices
-from ..measure.checks import EPS, STEP, check_edge, world_points
+from ..measure.checks import BOARD_LABELS, EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
@@ -123,6 +123,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             # slots, then among every slot (a board game with a lid: most are card decks)
             alt = _alternative(library, node.candidates, reqs, tried, rng) or _alternative(
                 library, node.candidates, reqs, tried, rng, every=True)
+            if alt is None and (boards := _boards(reqs)) != reqs:
+                # no instance holds anything inside the named shelf: one whose shelf is a
+                # board, and what is IN it stands on its top (a wall shelf)
+                alt = _alternative(library, node.candidates, boards, tried, rng, every=True)
+                if alt is not None:
+                    reqs = boards
             if alt is None:
                 if asset.asset_id in tried:
                     break  # every suitable instance was tried
@@ -417,8 +423,12 @@ def lacks(asset: Asset, reqs) -> str | None:
         if idx is not None and idx >= len(ps):
             return f"{asset.asset_id} has {len(ps)} {label} part(s), no #{idx} ({text})"
         ps = ps[idx:idx + 1] if idx is not None else ps
-        if kind == "internal":
+        if kind in ("internal", "internal_or_board"):
             names = {p.name for p in ps}
+            if kind == "internal_or_board" and label in BOARD_LABELS \
+                    and not any(i.part in names for i in asset.internal) \
+                    and any(_free_top(asset, p) for p in ps):
+                continue  # a board holds what is IN it on its top
             if not any(i.part in names for i in asset.internal):
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
         elif kind == "free_top":
@@ -542,6 +552,14 @@ def _free_top(asset: Asset, part) -> bool:
 LAYER = 0.01
 #: Pool slots examined per candidate category when looking for a suitable instance.
 RANKED_SLOTS = 6
+
+
+def _boards(reqs):
+    """``reqs`` with each internal surface required of a board part (:data:`BOARD_LABELS`)
+    met by its free top as well."""
+    return [(label, idx, text, "internal_or_board")
+            if kind == "internal" and label in BOARD_LABELS else (label, idx, text, kind)
+            for label, idx, text, kind in reqs]
 
 
 def _too_tall(reason: str) -> bool:

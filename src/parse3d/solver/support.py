@@ -11,6 +11,7 @@ from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface, hull_area_2d
+from ..measure.checks import on_board
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
@@ -224,10 +225,12 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 s = ins.surface.transformed(T)
                 out.append(Support(s, SupportChoice(parent.id, carrier, "top"), s.polygon,
                                    ins.clearance * parent.scale))
-        if not out:
+        if out:
+            return _span_bars(out)
+        if not on_board(parent, ref):
             raise Fail(f"IN: {ref} has no internal support surface"
                        f" (parts: {', '.join(sorted({p.label for p in parts}))})")
-        return _span_bars(out)
+        rel, label = "ON", "top"  # a board holds what is IN it on its top (a wall shelf)
     want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
     slanted = []
     for p in parts:
