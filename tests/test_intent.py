@@ -2,14 +2,15 @@
 stands on the floor, the armchair rests on it) is placed, and what could not be met as written
 is recorded with what to write instead.
 
-Real solves of a hand-written room (tests/data/rooms/named_support_parts.json) on the pool's
-real assets.
+Real solves of hand-written rooms (tests/data/rooms/: named_support_parts, in_on_a_board,
+heap_of_round_things) on the pool's real assets.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from parse3d.measure import check_edge
@@ -99,3 +100,28 @@ def test_in_a_board_that_holds_nothing_inside_means_on_its_top(seed):
         rec = scene.objects[rid]
         assert rec.support_choice.owner == "shelf"
         assert shelf.asset.part(rec.support_choice.part).label == "shelf"
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_round_thing_on_one_of_its_kind_rests_beside_it(seed):
+    """Nothing stacks on an apple or a tomato: the one below is placed all the same (no
+    instance is a flat base), the one written ON it rests on the same support touching it (a
+    heap), and the ON is recorded relaxed saying so and what to write instead."""
+    from parse3d.measure import summarize_settled
+    from parse3d.pipeline import settle_and_repair
+
+    scene = solve(load_pag(ROOMS / "heap_of_round_things.json"), seed=seed)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    for child, below, under in (("apple3", "apple1", "crate"), ("tomato2", "tomato1", "table")):
+        c = _check(scene, child)
+        assert c.relaxed is not None, c.detail
+        assert f"{below} (" in c.relaxed["blocked"] and "is round" in c.relaxed["blocked"]
+        assert c.relaxed["instead"].startswith(f"write {'IN' if under == 'crate' else 'ON'} "
+                                               f"{child} -> {under}")
+        o = scene.objects[child]
+        assert o.support_choice.owner == under
+        gap = np.linalg.norm(o.position[:2] - scene.objects[below].position[:2])
+        assert gap < 0.2  # beside it, within the NEAR the heap adds
+    settle_and_repair(scene)
+    s = summarize_settled(scene)
+    assert s.complete and s.unstable == 0

@@ -17,11 +17,13 @@ import numpy as np
 
 from ..assets.model import Asset
 from ..measure.checks import DIST_TOL, end_pads
+from ..measure.geometry import is_round
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .geometry import part_points
 
-__all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason"]
+__all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
+           "beside"]
 
 #: Support relations whose named child part is placed by the whole object when another part
 #: of the instance reaches further toward the support.
@@ -87,3 +89,44 @@ def loose_reason(asset: Asset, e: Edge, scale: float) -> str:
     return (f"{oid}:{e.child.part} cannot touch {e.parent} ({asset.asset_id}: {oid}:{who} "
             f"reaches {d * scale:.2f} m further {way}), so {oid}:{who} touches it: name "
             f"{oid}:{who}@{side} or {oid}@{side}")
+
+
+#: Stack requirements a parent may be drawn without when no instance meets them (the base of
+#: a stack of round things: what would stack on it rests beside it instead).
+SOFT_REQUIREMENTS = ("stack_base",)
+
+
+def soft(reqs: list) -> list:
+    """``reqs`` without :data:`SOFT_REQUIREMENTS`."""
+    return [r for r in reqs if r[3] not in SOFT_REQUIREMENTS]
+
+
+def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
+    """For ``ON child -> parent`` where the placed parent is of the child's kind and round
+    (extents within 30%) or rolls (``rolls(asset, ref)``: neither its top nor its bottom is
+    flat): an apple, a tomato; a heap:
+    the child takes the parent's own support relation (the crate, the bowl) and a ``NEAR``
+    to the parent close enough to touch it, so it rests beside it or, on a pile, in the hollow
+    by it. Returns (the support edge placed, the NEAR edge, why), or None."""
+    if e.relation != "ON" or e.parent.is_room_element:
+        return None
+    cid, pid = e.child.object, e.parent.object
+    parent = scene.objects.get(pid)
+    if parent is None or not parent.placed or not (
+            set(pag.objects[cid].candidates) & set(pag.objects[pid].candidates)):
+        return None
+    under = pag.supporter(pid)
+    if under is None or under.relation not in ("ON", "IN") or not (
+            is_round(parent) or rolls(parent.asset, e.parent)):
+        return None
+    from .geometry import asset_geometry
+
+    sup = replace(under, child=e.child)
+    ext = np.ptp(asset_geometry(parent.asset).bounds, axis=0) * parent.scale
+    near = Edge("NEAR", replace(e.child, part=None, index=None, surface=None, text=cid),
+                replace(e.parent, part=None, index=None, surface=None, text=pid),
+                {"distance": round(float(1.6 * max(ext[:2])), 4)})
+    why = (f"{pid} ({parent.asset.asset_id}) is round: nothing stacks on it, so {cid} rests "
+           f"beside it, {under.relation} {under.parent} (write {under.relation} {cid} -> "
+           f"{under.parent}, a heap, or stack on a flat base)")
+    return sup, near, why

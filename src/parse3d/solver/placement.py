@@ -22,7 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
-from .intent import loose_reason, names_part, overhang, whole_object
+from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
@@ -82,6 +82,11 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     dropped = {_edge_text(edges[i]) for i in (*skip, *loosen)}
     reqs = [r for r in requirements(pag, oid) if r[2] not in dropped]
     tried: set[str] = set()
+    # ON a round thing of its kind (an apple on an apple): beside it, a heap
+    heap = beside(pag, st.scene, support_edge,
+                  lambda a, ref: lacks(a, [(ref.part, ref.index, "", "stack_base")]) is not None)
+    if heap is not None:
+        others = [*others, heap[1]]
     headroom = _headroom(st, support_edge)
     axis = _AXES[support_edge.child.surface or support_edge.spec.child_surface]
     for attempt in range(cfg.asset_attempts):
@@ -123,6 +128,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             # slots, then among every slot (a board game with a lid: most are card decks)
             alt = _alternative(library, node.candidates, reqs, tried, rng) or _alternative(
                 library, node.candidates, reqs, tried, rng, every=True)
+            if alt is None and (loose_reqs := soft(reqs)) != reqs:
+                # no instance is the flat base a stack of its kind needs (apples): any one,
+                # and what would stack on it rests beside it
+                alt = _alternative(library, node.candidates, loose_reqs, tried, rng)
+                if alt is not None:
+                    reqs = loose_reqs
             if alt is None and (boards := _boards(reqs)) != reqs:
                 # no instance holds anything inside the named shelf: one whose shelf is a
                 # board, and what is IN it stands on its top (a wall shelf)
@@ -197,7 +208,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         hang = _hung_edge_up(support_edge, asset)
         loose = None
         placed_edge = support_edge
-        if names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+        if heap is not None:
+            placed_edge, loose = heap[0], heap[2]
+        elif names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
             # even the best instance is overhung: it rests by the part that reaches furthest
             loose = loose_reason(asset, support_edge, scale)
             placed_edge = whole_object(support_edge)

@@ -844,8 +844,10 @@ def _finish(scene: Scene, srch: _Search) -> None:
         for e, r in zip(edges, p.checks, strict=False):
             if r is not None:
                 known[srch.edge_index[id(e)]] = r
-        resolved[str(srch.edge_index[id(edges[0])])] = resolution(
-            edges[0], p.obj.support_choice, final=True)
+        if p.obj.support_choice.owner in (edges[0].parent.object, "room"):
+            # (not when it rests on another object than written: an apple beside a round one)
+            resolved[str(srch.edge_index[id(edges[0])])] = resolution(
+                edges[0], p.obj.support_choice, final=True)
     _resolve_any_wall(scene, resolved)
     scene.meta["resolved"] = resolved
     t1 = time.perf_counter()
@@ -876,6 +878,7 @@ def mark_unmet(scene: Scene) -> None:
             c.holds_settled, c.residual_settled = None, None
 
 
+_INSTEAD_RE = re.compile(r"\((write [^)]+)\)")
 _SAY_RE = re.compile(r"\bname (\S+ or \S+?)(?:[;,)]|\s|$)")
 
 
@@ -885,6 +888,9 @@ def _instead(e, why: str) -> str:
     m = _SAY_RE.search(why)
     if m:
         return f"name {m.group(1)}"
+    m = _INSTEAD_RE.search(why)
+    if m:
+        return m.group(1)
     if e.spec.kind == OBJECT:
         return (f"loosen or drop {e.relation} {e.child} -> {e.parent} (another side, a larger "
                 f"distance or width), or give {e.child.object} more room")
@@ -972,6 +978,11 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
         for e, r in zip(pag.edges_of(oid), p.checks, strict=False):
             if r is not None:
                 known[srch.edge_index[id(e)]] = r
-        scene.meta.setdefault("resolved", {})[str(srch.edge_index[id(pag.edges_of(oid)[0])])] = \
-            resolution(pag.edges_of(oid)[0], p.obj.support_choice, final=True)
+        sup = pag.edges_of(oid)[0]
+        key = str(srch.edge_index[id(sup)])
+        if p.obj.support_choice.owner in (sup.parent.object, "room"):
+            scene.meta.setdefault("resolved", {})[key] = resolution(
+                sup, p.obj.support_choice, final=True)
+        else:  # resting on another object than written (an apple beside a round one)
+            scene.meta.setdefault("resolved", {}).pop(key, None)
     return done
