@@ -2,7 +2,7 @@
 stands on the floor, the armchair rests on it) is placed, and what could not be met as written
 is recorded with what to write instead.
 
-Real solves of hand-written rooms (tests/data/rooms/: named_support_parts, in_on_a_board,
+Real solves of hand-written rooms (tests/data/rooms/: named_support_parts, in_on_a_board, covered_top,
 heap_of_round_things) on the pool's real assets.
 """
 
@@ -125,3 +125,17 @@ def test_a_round_thing_on_one_of_its_kind_rests_beside_it(seed):
     settle_and_repair(scene)
     s = summarize_settled(scene)
     assert s.complete and s.unstable == 0
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_on_a_part_under_a_covering_part_stands_on_the_cover(seed):
+    """Every dryer of the pool has its control panel over the whole top of its body: a basket
+    ON dryer:body@top stands on the panel, recorded as the part it touches, and holds."""
+    scene = solve(load_pag(ROOMS / "covered_top.json"), seed=seed)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    basket, dryer = scene.objects["basket"], scene.objects["dryer"]
+    assert basket.support_choice.owner == "dryer"
+    assert dryer.asset.part(basket.support_choice.part).label == "control_panel"
+    c = _check(scene, "basket:body@bottom")
+    assert c.holds, c.detail
+    assert abs(c.residual["distance"]) <= 2e-3

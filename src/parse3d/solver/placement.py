@@ -37,7 +37,15 @@ from .regions import (
 )
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, plane_key, support_chain
-from .support import BAR_WIDTH, Support, _flat_cached, _flat_enough, filled, support_candidates
+from .support import (
+    BAR_WIDTH,
+    Support,
+    _flat_cached,
+    _flat_enough,
+    cover_part,
+    filled,
+    support_candidates,
+)
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
@@ -448,7 +456,8 @@ def lacks(asset: Asset, reqs) -> str | None:
             if all(_rounded_rim(asset, p) for p in ps):
                 return (f"{asset.asset_id}'s {label} top is a rounded rim, no flat band "
                         f"{RIM_WIDTH * 100:.0f} cm wide: what stands on it tips over ({text})")
-            if not any(_free_top(asset, p) for p in ps):
+            if not any(_free_top(asset, p) or (q := cover_part(asset, p)) is not None
+                       and _free_top(asset, q) for p in ps):
                 if not any(_flat_cached(asset.asset_id, p, "top") for p in ps):
                     return (f"{asset.asset_id}'s {label} is slanted: its top is no surface to "
                             f"stand on ({text})")

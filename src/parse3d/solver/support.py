@@ -89,6 +89,44 @@ def _flat_cached(asset_id: str, part, label: str) -> bool:
     return got
 
 
+#: Share of a part's top another part lying on it must cover to be the top instead (a
+#: dryer's control panel over its body): what is ON the part stands on that part.
+COVERS = 0.9
+_COVER: dict[tuple[str, str], str | None] = {}
+
+
+def cover_part(asset, part):
+    """The part lying on ``part``'s top (its bottom within 1 cm above it) whose footprint
+    covers ``COVERS`` of that top and whose own top is flat: ``ON dryer:body@top`` stands on
+    the dryer's control panel when the panel covers the body. None when there is none."""
+    key = (asset.asset_id, part.name)
+    if key not in _COVER:
+        got = None
+        top = part.surfaces.get("top")
+        if top is not None:
+            area = filled(top.polygon).area
+            for q in asset.parts:
+                if q is part or "top" not in q.surfaces or not q.piece_arrays:
+                    continue
+                pts = np.vstack([pc.vertices for pc in q.piece_arrays])
+                h = (pts - top.origin) @ top.normal
+                if not -1e-3 <= float(h.min()) <= 0.01:
+                    continue
+                foot = shapely.union_all([  # per convex piece: a rail round a shelf is a frame
+                    shapely.MultiPoint(np.c_[(pc.vertices - top.origin) @ top.u,
+                                             (pc.vertices - top.origin) @ top.v]).convex_hull
+                    for pc in q.piece_arrays])
+                if area > 0 and foot.intersection(filled(top.polygon)).area >= COVERS * area \
+                        and _flat_cached(asset.asset_id, q, "top"):
+                    got = q.name
+                    break
+        if len(_COVER) > 8192:
+            _COVER.clear()
+        _COVER[key] = got
+    name = _COVER[key]
+    return None if name is None else asset.part(name)
+
+
 def _flat_enough(part, label: str, tol: float = 0.02, frac: float = 0.2) -> bool:
     """Whether the part's geometry really reaches its bbox face ``label`` over an area.
 
@@ -233,6 +271,10 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         rel, label = "ON", "top"  # a board holds what is IN it on its top (a wall shelf)
     want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
     slanted = []
+    if rel == "ON" and ref.part is not None and label == "top":
+        # a part whose top another part covers (a dryer's body under its control panel):
+        # what is ON it stands on that part
+        parts = [cover_part(parent.asset, p) or p for p in parts]
     for p in parts:
         labels = [label] if (ref.surface or rel != "ON") else ["top"]
         for lb in labels:
