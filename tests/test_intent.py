@@ -2,8 +2,8 @@
 stands on the floor, the armchair rests on it) is placed, and what could not be met as written
 is recorded with what to write instead.
 
-Real solves of hand-written rooms (tests/data/rooms/: named_support_parts, in_on_a_board, covered_top,
-heap_of_round_things) on the pool's real assets.
+Real solves of hand-written rooms (tests/data/rooms/: named_support_parts, in_on_a_board,
+covered_top, marker_tray, heap_of_round_things) on the pool's real assets.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 from parse3d.measure import check_edge
+from parse3d.measure.checks import world_points
 from parse3d.pag import load_pag
 from parse3d.solver import solve
 from parse3d.solver.intent import overhang, whole_object
@@ -139,3 +140,17 @@ def test_on_a_part_under_a_covering_part_stands_on_the_cover(seed):
     c = _check(scene, "basket:body@bottom")
     assert c.holds, c.detail
     assert abs(c.residual["distance"]) <= 2e-3
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_on_a_channel_lies_on_its_floor_between_its_lips(seed):
+    """A whiteboard's tray is a channel whose top surface is its 6 mm front lip: markers ON
+    it lie on the channel's floor, below the lip, and ON holds there."""
+    scene = solve(load_pag(ROOMS / "marker_tray.json"), seed=seed)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    board = scene.objects["whiteboard"]
+    lip = float(world_points(board, parts=board.asset.parts_by_label("tray"))[:, 2].max())
+    for mid in ("marker_1", "marker_2"):
+        c = _check(scene, mid)
+        assert c.holds, c.detail
+        assert float(world_points(scene.objects[mid])[:, 2].min()) < lip - 5e-3

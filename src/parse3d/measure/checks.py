@@ -729,7 +729,8 @@ def _check_on(ctx: CheckContext) -> Check:
         pts = world_points(ctx.child, hull_only=True, settled=ctx.settled)
         h = _plane_dist(pts, sB)
         com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
-    inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3])
+    inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3]) \
+        or _in_hollow(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
@@ -742,6 +743,28 @@ def _check_on(ctx: CheckContext) -> Check:
 
 #: Metres within which the tops of parts count as one level (a luggage rack's straps).
 LEVEL_TOL = 5e-3
+
+
+def _in_hollow(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
+    """Whether the child rests below the named parent part's top, in its hollow (a marker in
+    a whiteboard's tray, between its lips), with ``p3`` over that part's outline."""
+    pobj, ref = ctx.parent, ctx.edge.parent
+    if pobj is None or ref.part is None:
+        return False
+    low = float(_plane_dist(world_points(ctx.child, hull_only=True, settled=ctx.settled),
+                            sB).min())
+    if low >= -PENETRATION_TOL:
+        return False
+    from shapely.geometry import MultiPoint, Point
+
+    name = ctx.resolved.get("parent_part")
+    parts = [p for p in pobj.asset.parts if p.name == name] if name else select_parts(pobj, ref)
+    if not parts:
+        return False
+    d = world_points(pobj, settled=ctx.settled, parts=parts) - sB.origin
+    hull = MultiPoint(np.c_[d @ sB.u, d @ sB.v]).convex_hull
+    q = p3 - sB.origin
+    return bool(hull.distance(Point(float(q @ sB.u), float(q @ sB.v))) <= 1e-3)
 
 
 def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:

@@ -89,6 +89,57 @@ def _flat_cached(asset_id: str, part, label: str) -> bool:
     return got
 
 
+#: Metres: a part's top narrower than this over a lower, wider piece of it is the lip of a
+#: channel (a whiteboard's marker tray), not where things lie.
+LIP_WIDTH = 0.02
+_CHANNEL: dict[tuple[str, str], Surface | None] = {}
+
+
+def channel_floor(asset, part) -> Surface | None:
+    """The floor of a channel-shaped part, in the asset frame: the top face of its widest
+    convex piece lying lower than its top, when its top surface is a lip narrower than
+    ``LIP_WIDTH`` and that face is at least twice as wide and 3 cm wide. None otherwise."""
+    key = (asset.asset_id, part.name)
+    if key not in _CHANNEL:
+        got = None
+        top = part.surfaces.get("top")
+        if top is not None and len(part.piece_arrays) > 1 \
+                and _sides(filled(top.polygon))[0] < LIP_WIDTH:
+            best = None
+            for pc in part.piece_arrays:
+                z = float(pc.vertices[:, 2].max())
+                if z >= float(top.origin[2]) - 5e-3:
+                    continue
+                near = pc.vertices[pc.vertices[:, 2] >= z - 2e-3]
+                if len(near) < 3:
+                    continue
+                face = shapely.MultiPoint(near[:, :2]).convex_hull
+                w = _sides(face)[0]
+                if w >= max(2 * _sides(filled(top.polygon))[0], 0.03) \
+                        and (best is None or face.area > best[1].area):
+                    best = (z, face)
+            if best is not None:
+                z, face = best
+                c = np.array([face.centroid.x, face.centroid.y])
+                poly = shapely.affinity.translate(face, -c[0], -c[1])
+                got = Surface("top", np.array([c[0], c[1], z]), np.array([0.0, 0.0, 1.0]),
+                              np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), poly)
+        if len(_CHANNEL) > 8192:
+            _CHANNEL.clear()
+        _CHANNEL[key] = got
+    return _CHANNEL[key]
+
+
+def _sides(poly) -> tuple[float, float]:
+    """The short and long sides of a polygon's minimum rotated rectangle."""
+    r = poly.minimum_rotated_rectangle
+    if r.geom_type != "Polygon":
+        return 0.0, float(r.length) if hasattr(r, "length") else 0.0
+    xy = np.asarray(r.exterior.coords)[:3]
+    a, b = float(np.linalg.norm(xy[1] - xy[0])), float(np.linalg.norm(xy[2] - xy[1]))
+    return min(a, b), max(a, b)
+
+
 #: Share of a part's top another part lying on it must cover to be the top instead (a
 #: dryer's control panel over its body): what is ON the part stands on that part.
 COVERS = 0.9
@@ -288,6 +339,12 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
             # smaller than a hole (a bottle by a sink cut-out) off it
             region = filled(s.polygon) if rel == "ON" else s.polygon
             holes = _deep_holes(s, _holes(s.polygon), parent, (p.name, lb)) if rel == "ON" else []
+            if rel == "ON" and lb == "top" and ref.part is not None \
+                    and (floor := channel_floor(parent.asset, p)) is not None:
+                # a channel (a whiteboard's tray): what is ON it lies on its floor, between
+                # its lips; the lip's top after
+                f = floor.transformed(T)
+                out.append(Support(f, SupportChoice(parent.id, p.name, lb), f.polygon))
             out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
     if not out:
         if slanted:
