@@ -154,3 +154,29 @@ def test_on_a_channel_lies_on_its_floor_between_its_lips(seed):
         c = _check(scene, mid)
         assert c.holds, c.detail
         assert float(world_points(scene.objects[mid])[:, 2].min()) < lip - 5e-3
+
+
+def test_a_centre_of_mass_past_the_base_edge_is_no_stand():
+    """A gooseneck faucet whose spout puts its centre of mass 1 mm beyond its base's edge
+    tips in settling: ON by its base does not hold (the 2 mm tolerance is for round things,
+    which rest on a point)."""
+    from parse3d.assets import registry
+    from parse3d.measure.geometry import asset_geometry
+    from parse3d.pag import PAG, Room
+    from parse3d.scene.model import PlacedObject, Scene
+    from parse3d.scene.shell import build_shell
+
+    room = Room("bathroom", ((0, 0), (3, 0), (3, 3), (0, 3)), 2.6)
+    pag = PAG("faucet", room)
+    pag.add("faucet", "faucet")
+    pag.relate("faucet:base@bottom", "ON", "floor")
+    scene = Scene(pag, 0, build_shell(room))
+    asset = registry.generate("faucet", seed=16)
+    assert asset.asset_id == "faucet-gooseneck-16"
+    base = world_points(PlacedObject("x", "faucet", asset, 1.0, np.eye(3), np.zeros(3)),
+                        parts=asset.parts_by_label("base"))
+    assert asset_geometry(asset).com[1] > base[:, 1].max()  # past the base's back edge
+    o = PlacedObject("faucet", "faucet", asset, 1.0, np.eye(3), np.array([1.5, 1.5, 5e-4]))
+    scene.objects["faucet"] = o
+    holds, _, detail = check_edge(scene, pag.relations[0], o)
+    assert not holds and "tip over" in detail

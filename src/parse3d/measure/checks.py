@@ -284,7 +284,11 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     u /= np.linalg.norm(u)
     v = np.cross(n, u)
     hull = convex_footprint(np.c_[base @ u, base @ v])
-    got = inside_convex(hull, np.array([com @ u, com @ v]), tol=2e-3)
+    # a round child rests on a point (within 2 mm of it); anything else keeps its centre of
+    # mass over its base, not beyond its edge (a gooseneck faucet 1 mm past its base tips)
+    got = inside_convex(hull, np.array([com @ u, com @ v]),
+                        tol=2e-3 if is_round(child) or _lying_axis(child, n, settled) is not None
+                        else 0.0)
     if len(_STANDS) > 65536:
         _STANDS.clear()
     _STANDS[key] = got
