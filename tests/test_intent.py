@@ -3,7 +3,8 @@ stands on the floor, the armchair rests on it) is placed, and what could not be 
 is recorded with what to write instead.
 
 Real solves of hand-written rooms (tests/data/rooms/: named_support_parts, in_on_a_board,
-covered_top, marker_tray, heap_of_round_things) on the pool's real assets.
+covered_top, marker_tray, heap_of_round_things, hung_by_a_named_part) on the pool's real
+assets.
 """
 
 from __future__ import annotations
@@ -180,3 +181,16 @@ def test_a_centre_of_mass_past_the_base_edge_is_no_stand():
     scene.objects["faucet"] = o
     holds, _, detail = check_edge(scene, pag.relations[0], o)
     assert not holds and "tip over" in detail
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_a_coat_hung_by_its_collar_hangs_by_its_hanger(seed):
+    """Every coat of the pool has its hanger's hook above its collar: it hangs by the hook,
+    the HANGING_BELOW by the collar recorded relaxed with what to write instead."""
+    scene = solve(load_pag(ROOMS / "hung_by_a_named_part.json"), seed=seed)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    c = _check(scene, "coat:collar@top")
+    assert c.holds is False and c.relaxed is not None
+    assert c.relaxed["instead"] == "name coat:hook@top or coat@top"
+    e = scene.pag.relations[c.index]
+    assert check_edge(scene, whole_object(e), scene.objects["coat"])[0]

@@ -27,7 +27,7 @@ __all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_re
 
 #: Support relations whose named child part is placed by the whole object when another part
 #: of the instance reaches further toward the support.
-LOOSE_SUPPORTS = ("ON", "SECURED_TO")
+LOOSE_SUPPORTS = ("ON", "SECURED_TO", "HANGING_BELOW")
 
 _OVER: dict[tuple, tuple[float, str]] = {}
 

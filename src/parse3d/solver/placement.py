@@ -218,7 +218,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         placed_edge = support_edge
         if heap is not None:
             placed_edge, loose = heap[0], heap[2]
-        elif names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+        elif hang is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
             # even the best instance is overhung: it rests by the part that reaches furthest
             loose = loose_reason(asset, support_edge, scale)
             placed_edge = whole_object(support_edge)
