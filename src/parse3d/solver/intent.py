@@ -1,4 +1,4 @@
-"""Intent over letter for contacts named by a part of the child.
+"""Intent over letter for support relations: what the writer meant, where the letter fails.
 
 A writer who says ``ON armchair:frame@bottom -> floor`` means that the armchair stands on the
 floor; when the asset's frame is raised on legs, the letter cannot be met, the intent can. The
@@ -7,6 +7,10 @@ is ranked); when even that one is overhung by another part, the object is placed
 object (the part reaching furthest touches) and the relation is recorded as relaxed, naming
 the part that touches instead. Pads at the end of the named parts (a chair leg's glide) count
 as the named parts (:func:`parse3d.measure.checks.end_pads`).
+
+Likewise a round thing written ``ON`` one of its kind (an apple on an apple) rests beside it,
+a heap (:func:`beside`), and the base of such a stack is drawn even when no instance is flat
+(:data:`SOFT_REQUIREMENTS`).
 """
 
 from __future__ import annotations

@@ -58,7 +58,8 @@ class Placement:
     obj: PlacedObject
     body: Body
     checks: list[tuple]
-    #: the support edge placed by the whole object (its named part cannot touch): why
+    #: why the support edge was placed otherwise than written (by the whole object when its
+    #: named part cannot touch, beside a round parent), recorded as relaxed; None when not
     loose_support: str | None = None
 
 
@@ -218,7 +219,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         placed_edge = support_edge
         if heap is not None:
             placed_edge, loose = heap[0], heap[2]
-        elif hang is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+        elif hang is None and names_part(support_edge) \
+                and 0 < overhang(asset, support_edge)[0] < np.inf:
             # even the best instance is overhung: it rests by the part that reaches furthest
             loose = loose_reason(asset, support_edge, scale)
             placed_edge = whole_object(support_edge)
