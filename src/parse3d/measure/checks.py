@@ -51,7 +51,7 @@ from .reach import (
 
 __all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "Check", "CheckContext",
            "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
-           "world_points", "select_parts"]
+           "world_points", "select_parts", "end_pads", "END_DEPTH"]
 
 #: Gap left between surfaces in contact when placing (m): FCL then sees no collision.
 EPS = 5e-4
@@ -284,7 +284,11 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     u /= np.linalg.norm(u)
     v = np.cross(n, u)
     hull = convex_footprint(np.c_[base @ u, base @ v])
-    got = inside_convex(hull, np.array([com @ u, com @ v]), tol=2e-3)
+    # a round child rests on a point (within 2 mm of it); anything else keeps its centre of
+    # mass over its base, not beyond its edge (a gooseneck faucet 1 mm past its base tips)
+    got = inside_convex(hull, np.array([com @ u, com @ v]),
+                        tol=2e-3 if is_round(child) or _lying_axis(child, n, settled) is not None
+                        else 0.0)
     if len(_STANDS) > 65536:
         _STANDS.clear()
     _STANDS[key] = got
@@ -479,6 +483,11 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         return Check(False, {}, f"child has no part {e.child.part!r}"), False
     pts = world_points(child, settled=settled, parts=parts)
     gap = float(_plane_dist(pts, sB).min())
+    ends: list[str] = []
+    if rel in END_RELATIONS and e.child.part is not None and gap > DIST_TOL:
+        # the named parts stand on pads at their ends (a chair's legs on glides): those
+        # touch for them
+        ends, gap = _ends(child, parts, sB, settled, gap)
     if rel == "ON" and pobj is not None and (gap < -PENETRATION_TOL
                                              or DIST_TOL < gap <= STEP + DIST_TOL):
         # resting below the surface plane, inside the parent's hollow (a plate in a plate),
@@ -551,6 +560,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
     ok = ok and ang <= ang_tol
     detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
+    if ends:
+        detail += f", through {', '.join(ends)}"
     if pile is not None:
         detail += f", resting on {pile}"
     elif on_wall:
@@ -558,6 +569,68 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     leans = rel in ("ON", "IN") and any(le.relation == "LEANING_AGAINST"
                                 for le in ctx.scene.pag.edges_of(e.child.object))
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG or leans
+
+
+#: Relations whose named child part may touch through pads at its end (:func:`_ends`).
+END_RELATIONS = ("ON", "AGAINST", "SECURED_TO")
+#: Metres a pad at the end of a named part (a chair leg's glide, a table foot, a bumper on a
+#: cabinet's back) may reach beyond it; a part reaching further (an armchair's legs under its
+#: frame) is a part of its own, not the named part's end.
+END_DEPTH = 0.02
+
+
+def end_pads(named: list[np.ndarray], others: list[tuple[str, np.ndarray]], d: np.ndarray,
+             depth: float = END_DEPTH) -> list[str]:
+    """The names among ``others`` (name, points) of the pads ending the named parts (points
+    ``named``, one array per part) toward direction ``d``: each lies within ``depth`` of the
+    named parts' furthest point along ``d``, reaching beyond it, its near end within 1 mm of
+    it, and its footprint across ``d`` meets one of theirs (a chair leg's glide, a table's
+    foot; not a shelf's post running along its set-in back panel)."""
+    from shapely.geometry import Polygon
+
+    from ..geometry.regions import convex_footprint
+
+    d = np.asarray(d, float) / np.linalg.norm(d)
+    u = np.cross(d, [1.0, 0.0, 0.0] if abs(d[0]) < 0.9 else [0.0, 1.0, 0.0])
+    u /= np.linalg.norm(u)
+    v = np.cross(d, u)
+    reach = max(float(np.max(q @ d)) for q in named)
+
+    def foot(q):
+        return Polygon(convex_footprint(np.c_[q @ u, q @ v])).buffer(2e-3)
+
+    base = None
+    out = []
+    for name, q in others:
+        h = q @ d
+        if not (reach < float(h.max()) <= reach + depth
+                and reach - depth <= float(h.min()) <= reach + 1e-3):
+            continue
+        if base is None:
+            base = [foot(n) for n in named]
+        f = foot(q)
+        if any(f.intersects(b) for b in base):
+            out.append(name)
+    return out
+
+
+def _ends(child: PlacedObject, parts: list, sB: Surface, settled, gap: float
+          ) -> tuple[list[str], float]:
+    """The child's other parts ending the named ``parts`` toward ``sB`` (:func:`end_pads`),
+    and the gap of the named parts with them (``gap`` when there are none)."""
+    T = child.transform(settled)
+    named = {id(p) for p in parts}
+
+    def world(p):
+        return part_points([p]) @ T[:3, :3].T + T[:3, 3]
+
+    others = [(p.name, world(p)) for p in child.asset.parts if id(p) not in named]
+    pads = end_pads([world(p) for p in parts], others, -sB.normal,
+                    END_DEPTH * child.scale)
+    if not pads:
+        return [], gap
+    low = min(float(_plane_dist(q, sB).min()) for name, q in others if name in pads)
+    return pads, min(gap, low)
 
 
 #: Two extents within this ratio count as one round cross-section; the third must exceed
@@ -665,7 +738,8 @@ def _check_on(ctx: CheckContext) -> Check:
         pts = world_points(ctx.child, hull_only=True, settled=ctx.settled)
         h = _plane_dist(pts, sB)
         com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
-    inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3])
+    inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3]) \
+        or _in_hollow(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
@@ -678,6 +752,28 @@ def _check_on(ctx: CheckContext) -> Check:
 
 #: Metres within which the tops of parts count as one level (a luggage rack's straps).
 LEVEL_TOL = 5e-3
+
+
+def _in_hollow(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
+    """Whether the child rests below the named parent part's top, in its hollow (a marker in
+    a whiteboard's tray, between its lips), with ``p3`` over that part's outline."""
+    pobj, ref = ctx.parent, ctx.edge.parent
+    if pobj is None or ref.part is None:
+        return False
+    low = float(_plane_dist(world_points(ctx.child, hull_only=True, settled=ctx.settled),
+                            sB).min())
+    if low >= -PENETRATION_TOL:
+        return False
+    from shapely.geometry import MultiPoint, Point
+
+    name = ctx.resolved.get("parent_part")
+    parts = [p for p in pobj.asset.parts if p.name == name] if name else select_parts(pobj, ref)
+    if not parts:
+        return False
+    d = world_points(pobj, settled=ctx.settled, parts=parts) - sB.origin
+    hull = MultiPoint(np.c_[d @ sB.u, d @ sB.v]).convex_hull
+    q = p3 - sB.origin
+    return bool(hull.distance(Point(float(q @ sB.u), float(q @ sB.v))) <= 1e-3)
 
 
 def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
@@ -706,6 +802,21 @@ def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
 
 #: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.
 OPEN_SUPPORT_LABELS = frozenset({"shelf"})
+#: Part labels of boards: ``IN`` one that holds nothing inside (a wall shelf's board) means ON
+#: its top.
+BOARD_LABELS = frozenset({"shelf", "tier", "board", "plank", "ledge"})
+
+
+def on_board(pobj: PlacedObject, ref: Ref, part_name: str | None = None) -> bool:
+    """Whether ``IN`` the parent part ``ref`` (or the resolved ``part_name``) means ON its top:
+    a board (:data:`BOARD_LABELS`) of which no named part holds an internal surface."""
+    if part_name is not None:
+        parts = [p for p in pobj.asset.parts if p.name == part_name]
+    else:
+        parts = select_parts(pobj, ref) if ref.part is not None else []
+    names = {p.name for p in parts}
+    return bool(parts) and all(p.label in BOARD_LABELS for p in parts) \
+        and not any(i.part in names for i in pobj.asset.internal)
 
 
 @check_rule("IN")
@@ -719,6 +830,14 @@ def _check_in(ctx: CheckContext) -> Check:
         return Check(False, {}, "IN needs an object parent")
     got = _internal_surface(ctx)
     if isinstance(got, str):
+        if on_board(pobj, ctx.edge.parent, ctx.resolved.get("parent_part")):
+            # a board holds what is IN it on its top (records on a wall shelf)
+            from dataclasses import replace
+
+            c = _check_on(replace(ctx, edge=replace(ctx.edge, relation="ON"),
+                                  resolved={**ctx.resolved, "parent_surface": "top"}))
+            return Check(c.holds, c.residual, f"{c.detail}; on top of the "
+                         f"{ctx.edge.parent.part} (it holds nothing inside)")
         return Check(False, {}, got)
     sB, part = got
     c, _ = _contact(ctx, sB)

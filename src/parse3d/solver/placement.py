@@ -15,13 +15,14 @@ from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
 from ..geometry.memo import per_object
 from ..geometry.meshes import MeshArrays, scaled_vertices
-from ..measure.checks import EPS, STEP, check_edge, world_points
+from ..measure.checks import BOARD_LABELS, EPS, STEP, check_edge, world_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
+from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
@@ -37,7 +38,15 @@ from .regions import (
 )
 from .rotation import solve_rotation
 from .state import SolveState, angle_to, plane_coords, plane_key, support_chain
-from .support import BAR_WIDTH, Support, _flat_cached, _flat_enough, filled, support_candidates
+from .support import (
+    BAR_WIDTH,
+    Support,
+    _flat_cached,
+    _flat_enough,
+    cover_part,
+    filled,
+    support_candidates,
+)
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
 
@@ -50,6 +59,9 @@ class Placement:
     obj: PlacedObject
     body: Body
     checks: list[tuple]
+    #: why the support edge was placed otherwise than written (by the whole object when its
+    #: named part cannot touch, beside a round parent), recorded as relaxed; None when not
+    loose_support: str | None = None
 
 
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
@@ -80,11 +92,17 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     dropped = {_edge_text(edges[i]) for i in (*skip, *loosen)}
     reqs = [r for r in requirements(pag, oid) if r[2] not in dropped]
     tried: set[str] = set()
+    # ON a round thing of its kind (an apple on an apple): beside it, a heap
+    heap = beside(pag, st.scene, support_edge,
+                  lambda a, ref: lacks(a, [(ref.part, ref.index, "", "stack_base")]) is not None)
+    if heap is not None:
+        others = [*others, heap[1]]
     headroom = _headroom(st, support_edge)
     axis = _AXES[support_edge.child.surface or support_edge.spec.child_surface]
     for attempt in range(cfg.asset_attempts):
         category = node.candidates[int(rng.integers(len(node.candidates)))]
         asset = library.get(category, rng)
+        picked = True  # by a rule below, else drawn
         if keep is not None and attempt == 0:
             category, asset = keep.category, keep.asset
         elif attempt == 0 and (flush := _flush_edges(loosen)):
@@ -111,18 +129,44 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                key=lambda a: _extent(a, 2))
             if alt is not None:
                 category, asset = alt
-        elif asset.asset_id in tried or lacks(asset, reqs):
-            # constraint-aware selection: another instance that has what the relations need
-            alt = _alternative(library, node.candidates, reqs, tried, rng)
+        else:
+            picked = False
+        if not (keep is not None and attempt == 0) and (
+                not picked and asset.asset_id in tried or lacks(asset, reqs)):
+            # constraint-aware selection (also when a rule above found nothing and kept the
+            # draw): another instance that has what the relations need, among a sample of
+            # slots, then among every slot (a board game with a lid: most are card decks)
+            alt = _alternative(library, node.candidates, reqs, tried, rng) or _alternative(
+                library, node.candidates, reqs, tried, rng, every=True)
+            if alt is None and (loose_reqs := soft(reqs)) != reqs:
+                # no instance is the flat base a stack of its kind needs (apples): any one,
+                # and what would stack on it rests beside it
+                alt = _alternative(library, node.candidates, loose_reqs, tried, rng)
+                if alt is not None:
+                    reqs = loose_reqs
+            if alt is None and (boards := _boards(reqs)) != reqs:
+                # no instance holds anything inside the named shelf: one whose shelf is a
+                # board, and what is IN it stands on its top (a wall shelf)
+                alt = _alternative(library, node.candidates, boards, tried, rng, every=True)
+                if alt is not None:
+                    reqs = boards
             if alt is None:
                 if asset.asset_id in tried:
                     break  # every suitable instance was tried
                 why = lacks(asset, reqs)
-                n = k_slots(library, reqs)
+                n = int(getattr(library, "per_category", 20))
                 raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
                            f"{n} per category) fits the relations: {why}",
                            intrinsic=True)
             category, asset = alt
+        if keep is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+            # the named part is not where the support needs it (a frame raised on legs): the
+            # instance whose named part reaches furthest toward the support, of every slot
+            alt = _alternative(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
+                               key=lambda a: overhang(a, support_edge)[0], every=True)
+            if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
+                    asset, support_edge)[0]:
+                category, asset = alt
         tried.add(asset.asset_id)
         # generators already make real-world sizes: keep them (times the node's scale range),
         # clamped so the size stays in the category's range (this normalises loaded assets)
@@ -172,9 +216,18 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                 intrinsic.append(False)
                 continue
         hang = _hung_edge_up(support_edge, asset)
+        loose = None
+        placed_edge = support_edge
+        if heap is not None:
+            placed_edge, loose = heap[0], heap[2]
+        elif hang is None and names_part(support_edge) \
+                and 0 < overhang(asset, support_edge)[0] < np.inf:
+            # even the best instance is overhung: it rests by the part that reaches furthest
+            loose = loose_reason(asset, support_edge, scale)
+            placed_edge = whole_object(support_edge)
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale,
-                                                       hang or support_edge, others, rng, cfg,
+                                                       hang or placed_edge, others, rng, cfg,
                                                        proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
@@ -191,7 +244,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         full = _full_checks(edges, skip, checks)
         for i in loosen:
             full[i] = None
-        return Placement(obj, body, full)
+        if loose is not None:
+            full[0] = None  # measured on the edge as written afterwards
+        return Placement(obj, body, full, loose)
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
 
 
@@ -392,15 +447,20 @@ def lacks(asset: Asset, reqs) -> str | None:
         if idx is not None and idx >= len(ps):
             return f"{asset.asset_id} has {len(ps)} {label} part(s), no #{idx} ({text})"
         ps = ps[idx:idx + 1] if idx is not None else ps
-        if kind == "internal":
+        if kind in ("internal", "internal_or_board"):
             names = {p.name for p in ps}
+            if kind == "internal_or_board" and label in BOARD_LABELS \
+                    and not any(i.part in names for i in asset.internal) \
+                    and any(_free_top(asset, p) for p in ps):
+                continue  # a board holds what is IN it on its top
             if not any(i.part in names for i in asset.internal):
                 return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
         elif kind == "free_top":
             if all(_rounded_rim(asset, p) for p in ps):
                 return (f"{asset.asset_id}'s {label} top is a rounded rim, no flat band "
                         f"{RIM_WIDTH * 100:.0f} cm wide: what stands on it tips over ({text})")
-            if not any(_free_top(asset, p) for p in ps):
+            if not any(_free_top(asset, p) or (q := cover_part(asset, p)) is not None
+                       and _free_top(asset, q) for p in ps):
                 if not any(_flat_cached(asset.asset_id, p, "top") for p in ps):
                     return (f"{asset.asset_id}'s {label} is slanted: its top is no surface to "
                             f"stand on ({text})")
@@ -500,8 +560,8 @@ def _free_top(asset: Asset, part) -> bool:
                 continue
             for pc in p.piece_arrays:  # per convex piece: a part's pieces may frame the top
                 h = (pc.vertices - s.origin) @ s.normal
-                if h.max() <= 1e-3 or h.min() >= 0.2:
-                    continue
+                if h.max() <= 1e-3 or h.min() >= 0.2 or (h.min() >= -1e-3 and h.max() <= LAYER):
+                    continue  # below, high above, or a layer lying on it that holds as well
                 free = free.difference(Polygon(RG.convex_footprint(plane_coords(s, pc.vertices))))
         # room for an item, or at least mostly uncovered (a bathtub's thin rim holds bottles
         # by their centre of mass)
@@ -512,8 +572,19 @@ def _free_top(asset: Asset, part) -> bool:
     return got
 
 
+#: Metres of a layer lying on a part's top (a card table's felt, a glass top) that does not
+#: cover it: what stands on the part stands on the layer (the ``ON`` check's step).
+LAYER = 0.01
 #: Pool slots examined per candidate category when looking for a suitable instance.
 RANKED_SLOTS = 6
+
+
+def _boards(reqs):
+    """``reqs`` with each internal surface required of a board part (:data:`BOARD_LABELS`)
+    met by its free top as well."""
+    return [(label, idx, text, "internal_or_board")
+            if kind == "internal" and label in BOARD_LABELS else (label, idx, text, kind)
+            for label, idx, text, kind in reqs]
 
 
 def _too_tall(reason: str) -> bool:
@@ -527,17 +598,17 @@ def _space(reason: str) -> bool:
 
 
 def _alternative(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,
-                 smallest: bool = False, key=None):
+                 smallest: bool = False, key=None, every: bool = False):
     """An untried instance, over the candidate categories and a random sample of their pool
-    slots, that meets ``reqs``: the first found, or with ``smallest`` the one with the
-    smallest footprint, or with ``key`` (a function of the asset) the one of least key; None
-    when there is none."""
+    slots (``every``: all of them), that meets ``reqs``: the first found, or with
+    ``smallest`` the one with the smallest footprint, or with ``key`` (a function of the
+    asset) the one of least key; None when there is none."""
     load = getattr(library, "load", None)
     if load is None:
         return None
     k = int(getattr(library, "per_category", 20))
     # a part that must reach furthest (AGAINST by a part) is rare among instances: every slot
-    slots = k if any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
+    slots = k if every or any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
     best = None
     for ci in rng.permutation(len(categories)):
         cat = categories[int(ci)]
@@ -573,13 +644,6 @@ def _overhang(asset: Asset, e: Edge) -> float:
     ps = ps[idx:idx + 1] if idx is not None else ps
     n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
     return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
-
-
-def k_slots(library, reqs) -> int:
-    """Pool slots per category :func:`_alternative` looks at for ``reqs``."""
-    if any(r[3].startswith("extreme:") for r in reqs):
-        return int(getattr(library, "per_category", 20))
-    return RANKED_SLOTS
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:

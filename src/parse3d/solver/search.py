@@ -27,6 +27,7 @@ from ..scene.shell import build_shell
 from .collision import CollisionWorld, cached_body, static_body
 from .config import Fail, SolverConfig, stage_rng
 from .geometry import asset_geometry
+from .intent import whole_object
 from .placement import Placement, _space, place_object, resolution, scaled_mesh
 from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
@@ -244,6 +245,11 @@ class _Search:
             raise _internal(self.st.scene, oid, e) from e
 
     def commit(self, p: Placement) -> None:
+        key = str(self.edge_index[id(self.pag.edges_of(p.obj.id)[0])])
+        if p.loose_support is not None:
+            self.relaxed[key] = p.loose_support
+        else:
+            self.relaxed.pop(key, None)
         self.placements[p.obj.id] = p
         self.failed.pop(p.obj.id, None)
         self.st.add(p.obj, p.body)
@@ -661,21 +667,6 @@ def _named_edges(pag: PAG, oid: str, reason: str) -> list[int]:
             if i > 0 and f"{e.relation} {e.child} -> {e.parent}" in texts]
 
 
-def whole_object(e):
-    """The edge ``e`` by the whole child object (no part named): the part that reaches
-    furthest then touches (a shelf flush by its posts when its back panel is set in)."""
-    from dataclasses import replace
-
-    from ..pag.refs import format_ref
-
-    c = e.child
-    out = replace(e, child=replace(c, part=None, index=None,
-                                   text=format_ref(c.object, None, None, c.surface)))
-    # the part as written, for the choice of the least overhung instance
-    object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
-    return out
-
-
 def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset()
                ) -> list[dict[int, str]]:
     """The steps by which ``oid``'s non-support relations are relaxed, each ``{edge index:
@@ -853,8 +844,10 @@ def _finish(scene: Scene, srch: _Search) -> None:
         for e, r in zip(edges, p.checks, strict=False):
             if r is not None:
                 known[srch.edge_index[id(e)]] = r
-        resolved[str(srch.edge_index[id(edges[0])])] = resolution(
-            edges[0], p.obj.support_choice, final=True)
+        if p.obj.support_choice.owner in (edges[0].parent.object, "room"):
+            # (not when it rests on another object than written: an apple beside a round one)
+            resolved[str(srch.edge_index[id(edges[0])])] = resolution(
+                edges[0], p.obj.support_choice, final=True)
     _resolve_any_wall(scene, resolved)
     scene.meta["resolved"] = resolved
     t1 = time.perf_counter()
@@ -885,6 +878,7 @@ def mark_unmet(scene: Scene) -> None:
             c.holds_settled, c.residual_settled = None, None
 
 
+_INSTEAD_RE = re.compile(r"\((write [^)]+)\)")
 _SAY_RE = re.compile(r"\bname (\S+ or \S+?)(?:[;,)]|\s|$)")
 
 
@@ -894,6 +888,9 @@ def _instead(e, why: str) -> str:
     m = _SAY_RE.search(why)
     if m:
         return f"name {m.group(1)}"
+    m = _INSTEAD_RE.search(why)
+    if m:
+        return m.group(1)
     if e.spec.kind == OBJECT:
         return (f"loosen or drop {e.relation} {e.child} -> {e.parent} (another side, a larger "
                 f"distance or width), or give {e.child.object} more room")
@@ -981,6 +978,11 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
         for e, r in zip(pag.edges_of(oid), p.checks, strict=False):
             if r is not None:
                 known[srch.edge_index[id(e)]] = r
-        scene.meta.setdefault("resolved", {})[str(srch.edge_index[id(pag.edges_of(oid)[0])])] = \
-            resolution(pag.edges_of(oid)[0], p.obj.support_choice, final=True)
+        sup = pag.edges_of(oid)[0]
+        key = str(srch.edge_index[id(sup)])
+        if p.obj.support_choice.owner in (sup.parent.object, "room"):
+            scene.meta.setdefault("resolved", {})[key] = resolution(
+                sup, p.obj.support_choice, final=True)
+        else:  # resting on another object than written (an apple beside a round one)
+            scene.meta.setdefault("resolved", {}).pop(key, None)
     return done

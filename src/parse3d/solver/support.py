@@ -11,6 +11,7 @@ from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface, hull_area_2d
+from ..measure.checks import on_board
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
@@ -86,6 +87,95 @@ def _flat_cached(asset_id: str, part, label: str) -> bool:
             _FLAT.clear()
         got = _FLAT[key] = _flat_enough(part, label)
     return got
+
+
+#: Metres: a part's top narrower than this over a lower, wider piece of it is the lip of a
+#: channel (a whiteboard's marker tray), not where things lie.
+LIP_WIDTH = 0.02
+_CHANNEL: dict[tuple[str, str], Surface | None] = {}
+
+
+def channel_floor(asset, part) -> Surface | None:
+    """The floor of a channel-shaped part, in the asset frame: the top face of its widest
+    convex piece lying lower than its top, when its top surface is a lip narrower than
+    ``LIP_WIDTH`` and that face is at least twice as wide and 3 cm wide. None otherwise."""
+    key = (asset.asset_id, part.name)
+    if key not in _CHANNEL:
+        got = None
+        top = part.surfaces.get("top")
+        if top is not None and len(part.piece_arrays) > 1 \
+                and _sides(filled(top.polygon))[0] < LIP_WIDTH:
+            best = None
+            for pc in part.piece_arrays:
+                z = float(pc.vertices[:, 2].max())
+                if z >= float(top.origin[2]) - 5e-3:
+                    continue
+                near = pc.vertices[pc.vertices[:, 2] >= z - 2e-3]
+                if len(near) < 3:
+                    continue
+                face = shapely.MultiPoint(near[:, :2]).convex_hull
+                w = _sides(face)[0]
+                if w >= max(2 * _sides(filled(top.polygon))[0], 0.03) \
+                        and (best is None or face.area > best[1].area):
+                    best = (z, face)
+            if best is not None:
+                z, face = best
+                c = np.array([face.centroid.x, face.centroid.y])
+                poly = shapely.affinity.translate(face, -c[0], -c[1])
+                got = Surface("top", np.array([c[0], c[1], z]), np.array([0.0, 0.0, 1.0]),
+                              np.array([1.0, 0.0, 0.0]), np.array([0.0, 1.0, 0.0]), poly)
+        if len(_CHANNEL) > 8192:
+            _CHANNEL.clear()
+        _CHANNEL[key] = got
+    return _CHANNEL[key]
+
+
+def _sides(poly) -> tuple[float, float]:
+    """The short and long sides of a polygon's minimum rotated rectangle."""
+    r = poly.minimum_rotated_rectangle
+    if r.geom_type != "Polygon":
+        return 0.0, float(r.length) if hasattr(r, "length") else 0.0
+    xy = np.asarray(r.exterior.coords)[:3]
+    a, b = float(np.linalg.norm(xy[1] - xy[0])), float(np.linalg.norm(xy[2] - xy[1]))
+    return min(a, b), max(a, b)
+
+
+#: Share of a part's top another part lying on it must cover to be the top instead (a
+#: dryer's control panel over its body): what is ON the part stands on that part.
+COVERS = 0.9
+_COVER: dict[tuple[str, str], str | None] = {}
+
+
+def cover_part(asset, part):
+    """The part lying on ``part``'s top (its bottom within 1 cm above it) whose footprint
+    covers ``COVERS`` of that top and whose own top is flat: ``ON dryer:body@top`` stands on
+    the dryer's control panel when the panel covers the body. None when there is none."""
+    key = (asset.asset_id, part.name)
+    if key not in _COVER:
+        got = None
+        top = part.surfaces.get("top")
+        if top is not None:
+            area = filled(top.polygon).area
+            for q in asset.parts:
+                if q is part or "top" not in q.surfaces or not q.piece_arrays:
+                    continue
+                pts = np.vstack([pc.vertices for pc in q.piece_arrays])
+                h = (pts - top.origin) @ top.normal
+                if not -1e-3 <= float(h.min()) <= 0.01:
+                    continue
+                foot = shapely.union_all([  # per convex piece: a rail round a shelf is a frame
+                    shapely.MultiPoint(np.c_[(pc.vertices - top.origin) @ top.u,
+                                             (pc.vertices - top.origin) @ top.v]).convex_hull
+                    for pc in q.piece_arrays])
+                if area > 0 and foot.intersection(filled(top.polygon)).area >= COVERS * area \
+                        and _flat_cached(asset.asset_id, q, "top"):
+                    got = q.name
+                    break
+        if len(_COVER) > 8192:
+            _COVER.clear()
+        _COVER[key] = got
+    name = _COVER[key]
+    return None if name is None else asset.part(name)
 
 
 def _flat_enough(part, label: str, tol: float = 0.02, frac: float = 0.2) -> bool:
@@ -224,12 +314,18 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 s = ins.surface.transformed(T)
                 out.append(Support(s, SupportChoice(parent.id, carrier, "top"), s.polygon,
                                    ins.clearance * parent.scale))
-        if not out:
+        if out:
+            return _span_bars(out)
+        if not on_board(parent, ref):
             raise Fail(f"IN: {ref} has no internal support surface"
                        f" (parts: {', '.join(sorted({p.label for p in parts}))})")
-        return _span_bars(out)
+        rel, label = "ON", "top"  # a board holds what is IN it on its top (a wall shelf)
     want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
     slanted = []
+    if rel == "ON" and ref.part is not None and label == "top":
+        # a part whose top another part covers (a dryer's body under its control panel):
+        # what is ON it stands on that part
+        parts = [cover_part(parent.asset, p) or p for p in parts]
     for p in parts:
         labels = [label] if (ref.surface or rel != "ON") else ["top"]
         for lb in labels:
@@ -243,6 +339,12 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
             # smaller than a hole (a bottle by a sink cut-out) off it
             region = filled(s.polygon) if rel == "ON" else s.polygon
             holes = _deep_holes(s, _holes(s.polygon), parent, (p.name, lb)) if rel == "ON" else []
+            if rel == "ON" and lb == "top" and ref.part is not None \
+                    and (floor := channel_floor(parent.asset, p)) is not None:
+                # a channel (a whiteboard's tray): what is ON it lies on its floor, between
+                # its lips; the lip's top after
+                f = floor.transformed(T)
+                out.append(Support(f, SupportChoice(parent.id, p.name, lb), f.polygon))
             out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
     if not out:
         if slanted:

@@ -1,0 +1,136 @@
+"""Intent over letter for support relations: what the writer meant, where the letter fails.
+
+A writer who says ``ON armchair:frame@bottom -> floor`` means that the armchair stands on the
+floor; when the asset's frame is raised on legs, the letter cannot be met, the intent can. The
+instance whose named part reaches furthest toward the support is drawn first (every pool slot
+is ranked); when even that one is overhung by another part, the object is placed by the whole
+object (the part reaching furthest touches) and the relation is recorded as relaxed, naming
+the part that touches instead. Pads at the end of the named parts (a chair leg's glide) count
+as the named parts (:func:`parse3d.measure.checks.end_pads`).
+
+Likewise a round thing written ``ON`` one of its kind (an apple on an apple) rests beside it,
+a heap (:func:`beside`), and the base of such a stack is drawn even when no instance is flat
+(:data:`SOFT_REQUIREMENTS`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from ..assets.model import Asset
+from ..measure.checks import DIST_TOL, end_pads
+from ..measure.geometry import is_round
+from ..pag.model import Edge
+from ..relations import SURFACES
+from .geometry import part_points
+
+__all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
+           "beside"]
+
+#: Support relations whose named child part is placed by the whole object when another part
+#: of the instance reaches further toward the support.
+LOOSE_SUPPORTS = ("ON", "SECURED_TO", "HANGING_BELOW")
+
+_OVER: dict[tuple, tuple[float, str]] = {}
+
+
+def names_part(e: Edge) -> bool:
+    """Whether ``e`` is a support relation of :data:`LOOSE_SUPPORTS` naming a child part."""
+    return e.relation in LOOSE_SUPPORTS and e.child.part is not None
+
+
+def overhang(asset: Asset, e: Edge) -> tuple[float, str]:
+    """Metres by which another part of ``asset`` reaches further along the normal of the child
+    surface ``e`` names than the named part(s) with their end pads, and that part's label
+    (``(inf, "")`` when the asset lacks the part, ``(0, "")`` when nothing overhangs it)."""
+    label, idx = e.child.part, e.child.index
+    side = e.child.surface or e.spec.child_surface
+    key = (asset.asset_id, label, idx, side)
+    got = _OVER.get(key)
+    if got is not None:
+        return got
+    ps = asset.parts_by_label(label)
+    if not ps or (idx is not None and idx >= len(ps)):
+        got = (float("inf"), "")
+    else:
+        ps = ps[idx:idx + 1] if idx is not None else ps
+        n = np.asarray(SURFACES[side], float)
+        named = {id(p) for p in ps}
+        others = [(p.name, part_points([p])) for p in asset.parts if id(p) not in named]
+        pads = set(end_pads([part_points([p]) for p in ps], others, n))
+        mine = max(float(np.max(q @ n)) for name, q in others if name in pads) if pads else -np.inf
+        mine = max(mine, float(np.max(part_points(ps) @ n)))
+        who = max(((name, float(np.max(q @ n))) for name, q in others if name not in pads),
+                  key=lambda x: x[1], default=("", -np.inf))
+        d = who[1] - mine
+        got = (d, asset.part(who[0]).label) if d > DIST_TOL else (0.0, "")
+    if len(_OVER) > 8192:
+        _OVER.clear()
+    _OVER[key] = got
+    return got
+
+
+def whole_object(e: Edge) -> Edge:
+    """The edge ``e`` by the whole child object (no part named): the part that reaches
+    furthest then touches (a shelf flush by its posts when its back panel is set in). The
+    part as written is kept as ``_named_part`` (the choice of the least overhung instance)."""
+    from ..pag.refs import format_ref
+
+    c = e.child
+    out = replace(e, child=replace(c, part=None, index=None,
+                                   text=format_ref(c.object, None, None, c.surface)))
+    object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
+    return out
+
+
+def loose_reason(asset: Asset, e: Edge, scale: float) -> str:
+    """Why the support ``e`` was placed by the whole object, with what to write instead."""
+    d, who = overhang(asset, e)
+    oid, side = e.child.object, e.child.surface or e.spec.child_surface
+    way = {"bottom": "down", "top": "up"}.get(side, side)
+    return (f"{oid}:{e.child.part} cannot touch {e.parent} ({asset.asset_id}: {oid}:{who} "
+            f"reaches {d * scale:.2f} m further {way}), so {oid}:{who} touches it: name "
+            f"{oid}:{who}@{side} or {oid}@{side}")
+
+
+#: Stack requirements a parent may be drawn without when no instance meets them (the base of
+#: a stack of round things: what would stack on it rests beside it instead).
+SOFT_REQUIREMENTS = ("stack_base",)
+
+
+def soft(reqs: list) -> list:
+    """``reqs`` without :data:`SOFT_REQUIREMENTS`."""
+    return [r for r in reqs if r[3] not in SOFT_REQUIREMENTS]
+
+
+def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
+    """For ``ON child -> parent`` where the placed parent is of the child's kind and round
+    (extents within 30%) or rolls (``rolls(asset, ref)``: neither its top nor its bottom is
+    flat): an apple, a tomato; a heap:
+    the child takes the parent's own support relation (the crate, the bowl) and a ``NEAR``
+    to the parent close enough to touch it, so it rests beside it or, on a pile, in the hollow
+    by it. Returns (the support edge placed, the NEAR edge, why), or None."""
+    if e.relation != "ON" or e.parent.is_room_element:
+        return None
+    cid, pid = e.child.object, e.parent.object
+    parent = scene.objects.get(pid)
+    if parent is None or not parent.placed or not (
+            set(pag.objects[cid].candidates) & set(pag.objects[pid].candidates)):
+        return None
+    under = pag.supporter(pid)
+    if under is None or under.relation not in ("ON", "IN") or not (
+            is_round(parent) or rolls(parent.asset, e.parent)):
+        return None
+    from .geometry import asset_geometry
+
+    sup = replace(under, child=e.child)
+    ext = np.ptp(asset_geometry(parent.asset).bounds, axis=0) * parent.scale
+    near = Edge("NEAR", replace(e.child, part=None, index=None, surface=None, text=cid),
+                replace(e.parent, part=None, index=None, surface=None, text=pid),
+                {"distance": round(float(1.6 * max(ext[:2])), 4)})
+    why = (f"{pid} ({parent.asset.asset_id}) is round: nothing stacks on it, so {cid} rests "
+           f"beside it, {under.relation} {under.parent} (write {under.relation} {cid} -> "
+           f"{under.parent}, a heap, or stack on a flat base)")
+    return sup, near, why
