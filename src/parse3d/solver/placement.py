@@ -35,6 +35,7 @@ from .regions import (
     steps_on,
 )
 from .rotation import solve_rotation
+from .standing import may_stand_in, place_standing
 from .state import SolveState, angle_to, plane_coords, plane_key, support_chain
 from .support import BAR_WIDTH, Support, _flat_cached, _flat_enough, filled, support_candidates
 
@@ -643,6 +644,20 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                 return place_leaning(st, oid, asset, scale, sups[int(si)], support_edge, others,
                                      body, rng, lambda c, sp: _validate(st, c, support_edge,
                                                                         others, sp))
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and any(
+            may_stand_in(st, asset, scale, sups[int(si)], support_edge) for si in order):
+        # too long to lie in a narrow container: stand it up, leaning on the rim (a toothbrush
+        # in a tumbler, flowers in a vase)
+        for si in order:
+            if not may_stand_in(st, asset, scale, sups[int(si)], support_edge):
+                continue
+            try:
+                return place_standing(st, oid, asset, scale, sups[int(si)], support_edge,
+                                      others, body, rng,
+                                      lambda c, sp: _validate(st, c, support_edge, others, sp))
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
