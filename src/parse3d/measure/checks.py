@@ -457,6 +457,10 @@ def _child_label(ctx: CheckContext) -> str:
     return label
 
 
+#: Metres above its named part up to which a hung child may hang by a higher part (a coat
+#: named by its collar hangs by its hanger's hook).
+HUNG_ABOVE = 0.15
+
 #: Degrees a child resting on a pile of its siblings (apples, towels in a basket) or on its
 #: container's wall (a bowl nested in a bowl) may tilt.
 PILE_TILT_DEG = 15.0
@@ -478,6 +482,13 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         return Check(False, {}, f"child has no part {e.child.part!r}"), False
     pts = world_points(child, settled=settled, parts=parts)
     gap = float(_plane_dist(pts, sB).min())
+    named_gap = None
+    if rel == "HANGING_BELOW" and e.child.part is not None and not child.rests_on:
+        # what hangs is carried by its highest point: a coat named by its collar hangs from
+        # the hook by the hanger above the collar (up to HUNG_ABOVE above the named part)
+        whole = float(_plane_dist(world_points(child, settled=settled), sB).min())
+        if whole < gap - DIST_TOL and gap - whole <= HUNG_ABOVE:
+            named_gap, gap = gap, whole
     if rel == "ON" and pobj is not None and (gap < -PENETRATION_TOL
                                              or DIST_TOL < gap <= STEP + DIST_TOL):
         # resting below the surface plane, inside the parent's hollow (a plate in a plate),
@@ -545,6 +556,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     if pile is not None or on_wall:  # on a pile (a rolled towel on towels) or on the
         ang_tol = max(ang_tol, PILE_TILT_DEG)  # container's wall (a bowl in a bowl), as it lands
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
+    if named_gap is not None:
+        res["named_gap"] = round(named_gap, 6)
     if pile is not None:
         res["piled"] = 1.0
     if on_wall:
@@ -552,6 +565,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     ok = (lo_t <= gap - target <= hi_t) if rel != "HANGING_BELOW" else (lo_t <= gap <= hi_t)
     ok = ok and ang <= ang_tol
     detail = f"gap {gap * 1000:.2f} mm, normals off by {ang:.2f} deg"
+    if named_gap is not None:
+        detail += f", hung by a part {(named_gap - gap) * 1000:.0f} mm above {e.child}"
     if pile is not None:
         detail += f", resting on {pile}"
     elif on_wall:
