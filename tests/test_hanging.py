@@ -23,3 +23,27 @@ def test_a_jacket_named_by_its_collar_hangs_by_its_hanger(seed):
     res = jacket.residual_settled
     assert res["named_gap"] > res["distance"] + 0.01, res
     assert -0.001 <= res["distance"] <= 0.002, res
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_three_towels_share_one_bar_along_its_length(seed):
+    """Three towels named by their top below one towel bar: all placed, each hung edge-up
+    (by its back), side by side along the bar (their footprints do not overlap), every
+    relation held after settling."""
+    import shapely
+
+    from parse3d.measure.checks import world_points
+
+    scene = solved("towels_on_one_bar", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    towels = [scene.objects[f"towel{k}"] for k in (1, 2, 3)]
+    assert all(t.rests_on == "back" for t in towels), [t.rests_on for t in towels]
+    fps = [shapely.MultiPoint(world_points(t, hull_only=True, settled=True)[:, :2]).convex_hull
+           for t in towels]
+    for i in range(3):
+        for j in range(i + 1, 3):
+            overlap = fps[i].intersection(fps[j]).area
+            assert overlap <= 0.05 * min(fps[i].area, fps[j].area), (i, j, overlap)

@@ -22,6 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
+from .hanging import edge_up, rail_fit, rail_scale, thinness
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
@@ -94,6 +95,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                key=lambda a: max(_overhang(a, e) for e in flush))
             if alt is not None:
                 category, asset = alt
+        elif attempt == 0 and keep is None and edge_up(support_edge):
+            # a thin thing hung edge-up (a folded towel): its thickness stands out from the rail
+            # toward the wall behind it, so the thinnest instance looked at first
+            alt = _alternative(library, node.candidates, reqs, tried, rng, key=thinness)
+            if alt is not None:
+                category, asset = alt
         elif smallest and attempt == 0:
             alt = _alternative(library, node.candidates, reqs, tried, rng, smallest=True)
             if alt is not None:
@@ -133,6 +140,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         # a container with several things IN it (apples in a bowl) is drawn big enough to hold
         # them, within its category's size range
         scale = max(scale, min(_contents_scale(pag, oid, asset), hi / max(size, 1e-6)))
+        # and a rail with several things hung below it long enough for them (towels on a bar)
+        scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
         scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
         if keep is not None and attempt == 0:
             scale = keep.scale
@@ -172,6 +181,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                 intrinsic.append(False)
                 continue
         hang = _hung_edge_up(support_edge, asset)
+        # several hung below one rail share its length (towels along a bar)
+        scale = rail_fit(st, oid, support_edge, asset, scale, 1 if hang is not None else 2)
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale,
                                                        hang or support_edge, others, rng, cfg,
@@ -201,11 +212,12 @@ THIN_HANG = 0.35
 
 
 def _hung_edge_up(edge: Edge, asset: Asset) -> Edge | None:
-    """The support edge by which a thin child named by no surface hangs below an object's part
-    (a towel on a bar, a flat bag on a hook): by its back, so it hangs edge-up, thin across the
-    rail, and several hang along one rail; None for anything else (the edge as written)."""
-    if edge.relation != "HANGING_BELOW" or edge.child.surface is not None \
-            or edge.parent.is_room_element:
+    """The support edge by which a thin child named by no surface, or by its top, hangs below
+    an object's part (a towel on a bar, a flat bag on a hook): by its back, so it hangs
+    edge-up, thin across the rail, and several hang along one rail (a towel hung flat by its
+    top would stick out from the wall like a shelf); None for anything else (the edge as
+    written)."""
+    if not edge_up(edge):
         return None
     ext = np.ptp(asset_geometry(asset).bounds, axis=0)
     if ext[2] > THIN_HANG * float(np.sort(ext)[1]):
