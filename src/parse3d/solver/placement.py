@@ -753,6 +753,10 @@ def _drop(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedOb
 #: Objects of a pile tried as the base of a stack (at random), per support and asset.
 PILE_BASES = 6
 
+#: Footprint of a container, in units of the child's, up to which a child finding no free
+#: space and none of its kind there is piled on the other things in it (a fruit bowl).
+PILE_AREA = 40.0
+
 #: Parent categories that take a plate-like stack for ON (every IN support takes piles).
 STACK_ON = ("plate",)
 
@@ -787,12 +791,12 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
     child_area = Polygon(RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])).area
     # a small container (a bowl, a basket) holds a pile: it may rest on its wall too
     container = support_edge.relation == "IN" and own_fp.area <= 12 * child_area
-    pile = [o for o in st.scene.objects.values()
-            if o.placed and o.category == asset.category and o.support_choice == sup.choice
-            and o.id in st.hulls]
-    if container:
+    contents = [o for o in st.scene.objects.values()
+                if o.placed and o.support_choice == sup.choice and o.id in st.hulls]
+    pile = [o for o in contents if o.category == asset.category]
+    if container:  # onto whatever is in it (an apple on the bananas in a fruit bowl)
         return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
-                          [owner, *pile], own_fp)
+                          [owner, *contents], own_fp)
     if support_edge.relation == "ON" and _round_asset(asset):
         # dropped on another, a round thing touches it at one point and rolls off a flat
         # plate in settling: as many as fit, then a failure that says how many there are
@@ -803,6 +807,12 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
                    f"{asset.category} piled on a flat {owner.category} rolls off (put them IN a "
                    f"bowl or basket to pile them)")
     bases = [pile[int(k)] for k in rng.permutation(len(pile))[:PILE_BASES]]
+    if not bases and support_edge.relation == "IN" and contents \
+            and own_fp.area <= PILE_AREA * child_area:
+        # none of its kind there, other things are (an apple IN a fruit bowl that holds
+        # bananas and an orange): a pile on them
+        return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
+                          [owner, *contents], own_fp)
     if not bases:
         raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
     last = f"no {asset.category} on {sup.name} can take another on top"
@@ -1116,7 +1126,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 if up > 0:
                     t = t + up * s.normal
                     cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS and \
+                if float(np.min((pts - s.origin) @ s.normal)) + up > THIN_LOW + EPS and \
                         not _base_supported(asset, scale, Rt, t, s, _low_parts(st, sup, STEP),
                                             upright=True):
                     # raised onto low parts, its centre of mass must be over what holds it:
@@ -1161,6 +1171,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
 
+
+#: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
+#: its centre of mass: resting across them it tilts by under a degree, not into a gap.
+THIN_LOW = 3e-3
 
 #: Why an overhanging child's pose fails when its base is not held.
 HANGS_OFF = ("a foot or the base would hang off the support (centre of mass outside what rests "
