@@ -95,9 +95,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                key=lambda a: max(_overhang(a, e) for e in flush))
             if alt is not None:
                 category, asset = alt
-        elif attempt == 0 and keep is None and edge_up(support_edge):
-            # a thin thing hung edge-up (a folded towel): its thickness stands out from the rail
-            # toward the wall behind it, so the thinnest instance looked at first
+        elif attempt == 0 and keep is None and edge_up(support_edge) and thinness(asset) < 1:
+            # a flat thing hung edge-up (a folded towel, not a coat): its thickness stands out
+            # from the rail toward the wall behind it, so the thinnest instance looked at first
             alt = _alternative(library, node.candidates, reqs, tried, rng, key=thinness)
             if alt is not None:
                 category, asset = alt
