@@ -25,7 +25,7 @@ from .geometry import asset_geometry, drop_distance, hull_extents, outline_indic
 from .hanging import edge_up, rail_fit, rail_scale, thinness
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
-from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
+from .nesting import concentric_first, floor_fit, nest_rise, nest_samples, pieces_drop
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -159,6 +159,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             fit = HEADROOM_FIT * headroom / max(_extent(asset, axis), 1e-6)
             if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
                 scale = min(scale, fit)
+        if keep is None or attempt > 0:
+            # longer than a container's floor: shrunk to lie in it, within its size range
+            scale = floor_fit(st, support_edge, asset, scale, axis)
         reach = _span_need(st, support_edge)
         if reach > 0 and keep is None and scale * _across(asset, axis) < reach:
             # too short to rest across the parts it must span (a keyboard on a stand's two
