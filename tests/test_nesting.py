@@ -83,3 +83,33 @@ def test_crowding_places_as_many_as_fit_then_says_how_many():
               if scene.objects[c.child.split("@")[0].split(":")[0]].placed
               and c.holds_settled is not True]
     assert not broken, broken
+
+
+STANDING = (("pen1", "mug"), ("pen2", "mug"), ("pen3", "mug"), ("toothbrush1", "tumbler"),
+            ("toothbrush2", "tumbler"))
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_long_things_stand_in_narrow_containers(seed):
+    """Pens in a mug, toothbrushes in a tumbler (too long to lie on its floor): each is placed,
+    stands with its long axis within 45 degrees of vertical, its lower end inside the
+    container below its rim, and its IN relation holds after settling."""
+    from parse3d.measure.checks import world_points
+    from parse3d.measure.geometry import hull_extents
+
+    scene = solved("standing_in_cups", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    for child, cup in STANDING:
+        o, c = scene.objects[child], scene.objects[cup]
+        _, order = hull_extents(o.asset)
+        axis = o.transform(True)[:3, :3][:, order[2]] / o.scale
+        assert abs(axis[2]) >= np.cos(np.radians(45.0)), (child, axis)
+        pts, box = world_points(o, hull_only=True, settled=True), \
+            world_points(c, hull_only=True, settled=True)
+        low = pts[np.argmin(pts[:, 2])]
+        assert np.all(low[:2] >= box[:, :2].min(axis=0) - 1e-3), (child, low)
+        assert np.all(low[:2] <= box[:, :2].max(axis=0) + 1e-3), (child, low)
+        assert box[:, 2].min() <= low[2] < box[:, 2].max(), (child, low)

@@ -25,10 +25,7 @@ SEEDS = (0, 1, 2)
 
 #: Rooms that fail today, with the failure class that makes them fail (see the report of the
 #: robustness benchmark); the solver's fixes for those classes turn them green.
-KNOWN: dict[str, str] = {
-    "hung_on_rails": "hanging and crowding: two towels fit along the bar, not three; the "
-                     "backpack finds no hook free of the coats",
-}
+KNOWN: dict[str, str] = {}
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part
 #: overhangs): tests/test_relax.py and tests/test_intent.py check that the relation is relaxed

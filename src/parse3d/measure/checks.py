@@ -455,8 +455,9 @@ def _target_surface(ctx: CheckContext) -> Surface | str:
 
 
 def _child_label(ctx: CheckContext) -> str:
-    if ctx.edge.relation in ("ON", "HANGING_BELOW") and ctx.child.rests_on:
-        # standing on another face (sheet music on a ledge), hung by it (a towel edge-up)
+    if ctx.edge.relation in ("ON", "IN", "HANGING_BELOW") and ctx.child.rests_on:
+        # standing on another face (sheet music on a ledge, a toothbrush in a tumbler), hung
+        # by it (a towel edge-up)
         return ctx.child.rests_on
     label = ctx.edge.child.surface or ctx.edge.spec.child_surface
     if ctx.edge.relation in ("ON", "LEANING_AGAINST") \
@@ -470,6 +471,9 @@ def _child_label(ctx: CheckContext) -> str:
 PILE_TILT_DEG = 15.0
 #: Degrees a child standing on a ledge on another face (``rests_on``) may lean back.
 LEDGE_LEAN_DEG = 35.0
+#: Degrees a long child standing in a container on its lower end (``rests_on``: a toothbrush
+#: in a tumbler, pens in a mug) may lean on the rim.
+STAND_LEAN_DEG = 45.0
 
 
 def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
@@ -546,6 +550,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         ang = abs(90.0 - float(np.degrees(angle_between(long_axis, sB.normal))))
     elif rel == "ON" and child.rests_on:  # on its lower edge, leaning back on the ledge
         ang_tol = LEDGE_LEAN_DEG + 1.0
+    elif rel == "IN" and child.rests_on:  # on its lower end, leaning on the container's rim
+        ang_tol = STAND_LEAN_DEG
     elif rel in ("ON", "IN"):  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":

@@ -17,7 +17,8 @@ from .geometry import asset_geometry
 from .state import SolveState
 from .support import Support
 
-__all__ = ["concentric_first", "nest_rise", "nest_samples", "pieces_drop", "same_kind"]
+__all__ = ["concentric_first", "floor_fit", "nest_rise", "nest_samples", "pieces_drop",
+           "same_kind"]
 
 def same_kind(st: SolveState, oid: str, sup: Support) -> bool:
     """Whether the child rests on or in a placed object of its own kind (their PAG nodes share
@@ -117,3 +118,37 @@ def pieces_drop(asset: Asset, T: np.ndarray, parent, down: np.ndarray, upper: fl
         mid = 0.5 * (lo + hi)
         lo, hi = (lo, mid) if hits(mid) else (mid, hi)
     return lo
+
+
+#: Share of a container's floor a child shrunk to fit it may fill, along each side.
+FLOOR_FIT = 0.95
+
+
+def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> float:
+    """``scale``, or less when the child lying in its support orientation (``axis``, the asset
+    axis of its support normal) is longer or wider than every internal floor of the object it
+    goes IN but fits one shrunk within its category's size range (a rolled towel in a small
+    wicker basket, a plant in a plant basket a little narrower than its pot); unchanged for
+    anything else (a toothbrush far longer than a tumbler's floor stands in it instead)."""
+    from .geometry import hull_extents
+    from .support import support_candidates
+
+    if edge.relation != "IN" or edge.parent.is_room_element \
+            or edge.parent.object not in st.scene.objects:
+        return scale
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return scale
+    ext = hull_extents(asset)[0]
+    e1, e2 = sorted((scale * float(ext[k]) for k in range(3) if k != axis), reverse=True)
+    best = 0.0
+    for sup in sups:
+        x0, y0, x1, y1 = sup.region.bounds
+        w1, w2 = sorted((x1 - x0, y1 - y0), reverse=True)
+        best = max(best, min(w1 / max(e1, 1e-9), w2 / max(e2, 1e-9)))
+    if best >= 1.0 or best <= 0.0:
+        return scale
+    fit = FLOOR_FIT * best
+    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+    return scale * fit if scale * fit >= lo else scale

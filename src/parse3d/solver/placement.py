@@ -22,10 +22,11 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
+from .hanging import edge_up, rail_fit, rail_scale, thinness
 from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
-from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
+from .nesting import concentric_first, floor_fit, nest_rise, nest_samples, pieces_drop
 from .regions import (
     REGION_RULES,
     RegionContext,
@@ -37,6 +38,7 @@ from .regions import (
     steps_on,
 )
 from .rotation import solve_rotation
+from .standing import may_stand_in, place_standing
 from .state import SolveState, angle_to, plane_coords, plane_key, support_chain
 from .support import (
     BAR_WIDTH,
@@ -112,6 +114,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                key=lambda a: max(_overhang(a, e) for e in flush))
             if alt is not None:
                 category, asset = alt
+        elif attempt == 0 and keep is None and edge_up(support_edge) and thinness(asset) < 1:
+            # a flat thing hung edge-up (a folded towel, not a coat): its thickness stands out
+            # from the rail toward the wall behind it, so the thinnest instance looked at first
+            alt = _alternative(library, node.candidates, reqs, tried, rng, key=thinness)
+            if alt is not None:
+                category, asset = alt
         elif smallest and attempt == 0:
             alt = _alternative(library, node.candidates, reqs, tried, rng, smallest=True)
             if alt is not None:
@@ -177,6 +185,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         # a container with several things IN it (apples in a bowl) is drawn big enough to hold
         # them, within its category's size range
         scale = max(scale, min(_contents_scale(pag, oid, asset), hi / max(size, 1e-6)))
+        # and a rail with several things hung below it long enough for them (towels on a bar)
+        scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
         scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
         if keep is not None and attempt == 0:
             scale = keep.scale
@@ -194,6 +204,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             fit = HEADROOM_FIT * headroom / max(_extent(asset, axis), 1e-6)
             if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
                 scale = min(scale, fit)
+        if keep is None or attempt > 0:
+            # longer than a container's floor: shrunk to lie in it, within its size range
+            scale = floor_fit(st, support_edge, asset, scale, axis)
         reach = _span_need(st, support_edge)
         if reach > 0 and keep is None and scale * _across(asset, axis) < reach:
             # too short to rest across the parts it must span (a keyboard on a stand's two
@@ -216,6 +229,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                 intrinsic.append(False)
                 continue
         hang = _hung_edge_up(support_edge, asset)
+        # several hung below one rail share its length (towels along a bar)
+        scale = rail_fit(st, oid, support_edge, asset, scale, 1 if hang is not None else 2)
         loose = None
         placed_edge = support_edge
         if heap is not None:
@@ -256,11 +271,12 @@ THIN_HANG = 0.35
 
 
 def _hung_edge_up(edge: Edge, asset: Asset) -> Edge | None:
-    """The support edge by which a thin child named by no surface hangs below an object's part
-    (a towel on a bar, a flat bag on a hook): by its back, so it hangs edge-up, thin across the
-    rail, and several hang along one rail; None for anything else (the edge as written)."""
-    if edge.relation != "HANGING_BELOW" or edge.child.surface is not None \
-            or edge.parent.is_room_element:
+    """The support edge by which a thin child named by no surface, or by its top, hangs below
+    an object's part (a towel on a bar, a flat bag on a hook): by its back, so it hangs
+    edge-up, thin across the rail, and several hang along one rail (a towel hung flat by its
+    top would stick out from the wall like a shelf); None for anything else (the edge as
+    written)."""
+    if not edge_up(edge):
         return None
     ext = np.ptp(asset_geometry(asset).bounds, axis=0)
     if ext[2] > THIN_HANG * float(np.sort(ext)[1]):
@@ -711,6 +727,20 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and any(
+            may_stand_in(st, asset, scale, sups[int(si)], support_edge) for si in order):
+        # too long to lie in a narrow container: stand it up, leaning on the rim (a toothbrush
+        # in a tumbler, flowers in a vase)
+        for si in order:
+            if not may_stand_in(st, asset, scale, sups[int(si)], support_edge):
+                continue
+            try:
+                return place_standing(st, oid, asset, scale, sups[int(si)], support_edge,
+                                      others, body, rng,
+                                      lambda c, sp: _validate(st, c, support_edge, others, sp))
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
     if cfg.strategy == "constrained" and _may_stack(st, support_edge):
         # crowding: rest on an object of the same category already on that support
         for si in order:
@@ -791,6 +821,10 @@ def _drop(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedOb
 #: Objects of a pile tried as the base of a stack (at random), per support and asset.
 PILE_BASES = 6
 
+#: Footprint of a container, in units of the child's, up to which a child finding no free
+#: space and none of its kind there is piled on the other things in it (a fruit bowl).
+PILE_AREA = 40.0
+
 #: Parent categories that take a plate-like stack for ON (every IN support takes piles).
 STACK_ON = ("plate",)
 
@@ -825,12 +859,12 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
     child_area = Polygon(RG.convex_footprint(np.c_[Y @ s.u, Y @ s.v])).area
     # a small container (a bowl, a basket) holds a pile: it may rest on its wall too
     container = support_edge.relation == "IN" and own_fp.area <= 12 * child_area
-    pile = [o for o in st.scene.objects.values()
-            if o.placed and o.category == asset.category and o.support_choice == sup.choice
-            and o.id in st.hulls]
-    if container:
+    contents = [o for o in st.scene.objects.values()
+                if o.placed and o.support_choice == sup.choice and o.id in st.hulls]
+    pile = [o for o in contents if o.category == asset.category]
+    if container:  # onto whatever is in it (an apple on the bananas in a fruit bowl)
         return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
-                          [owner, *pile], own_fp)
+                          [owner, *contents], own_fp)
     if support_edge.relation == "ON" and _round_asset(asset):
         # dropped on another, a round thing touches it at one point and rolls off a flat
         # plate in settling: as many as fit, then a failure that says how many there are
@@ -841,6 +875,12 @@ def _place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: n
                    f"{asset.category} piled on a flat {owner.category} rolls off (put them IN a "
                    f"bowl or basket to pile them)")
     bases = [pile[int(k)] for k in rng.permutation(len(pile))[:PILE_BASES]]
+    if not bases and support_edge.relation == "IN" and contents \
+            and own_fp.area <= PILE_AREA * child_area:
+        # none of its kind there, other things are (an apple IN a fruit bowl that holds
+        # bananas and an orange): a pile on them
+        return _drop_into(st, oid, asset, scale, R, sup, support_edge, others, body, rng,
+                          [owner, *contents], own_fp)
     if not bases:
         raise Fail(f"no free space on {sup.name}, and no {asset.category} there to stack on")
     last = f"no {asset.category} on {sup.name} can take another on top"
@@ -1154,7 +1194,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
                 if up > 0:
                     t = t + up * s.normal
                     cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-                if float(np.min((pts - s.origin) @ s.normal)) + up > 1e-3 + EPS and \
+                if float(np.min((pts - s.origin) @ s.normal)) + up > THIN_LOW + EPS and \
                         not _base_supported(asset, scale, Rt, t, s, _low_parts(st, sup, STEP),
                                             upright=True):
                     # raised onto low parts, its centre of mass must be over what holds it:
@@ -1199,6 +1239,10 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
 
+
+#: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
+#: its centre of mass: resting across them it tilts by under a degree, not into a gap.
+THIN_LOW = 3e-3
 
 #: Why an overhanging child's pose fails when its base is not held.
 HANGS_OFF = ("a foot or the base would hang off the support (centre of mass outside what rests "

@@ -1,0 +1,120 @@
+"""Several things hanging below one rail: towels along a towel bar, cloths on a heated rail.
+
+What hangs below an object's part shares that part's length with the other objects hanging
+below the same parent: each is drawn, within its category's size range, no wider along the rail
+than an equal share of the rail's length (:func:`rail_fit`), so the last of three towels finds
+room beside the other two instead of failing with "towel_1 in the way". A thin thing hung
+edge-up (a folded towel) is drawn thinnest-first among the instances looked at
+(:func:`thinness`): its thickness stands out from the rail toward the wall behind it. A rail
+with several things to hang below it is drawn long enough for them, within its category's
+size range (:func:`rail_scale`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from ..assets.model import Asset
+from ..pag.model import Edge
+from .config import Fail
+from .geometry import asset_geometry, hull_extents
+from .state import SolveState
+from .support import support_candidates
+
+__all__ = ["edge_up", "rail_fit", "rail_scale", "thinness", "RAIL_GAP"]
+
+#: Share of a rail's length the objects hung on it may fill together (the rest: its brackets
+#: and the gaps between them).
+RAIL_GAP = 0.85
+
+
+def _along(asset: Asset, up: int) -> float:
+    """The asset's extent (unit scale) along a rail it hangs on: the longer of its two extents
+    across its vertical axis ``up`` (a towel's width, not its thickness)."""
+    ext = hull_extents(asset)[0]
+    return float(max(ext[k] for k in range(3) if k != up))
+
+
+def _rail_length(st: SolveState, edge: Edge) -> float:
+    """Metres of rail below which the edge's child may hang: the longest extent of the
+    longest support surface the parent reference resolves to (a double towel bar's back bar
+    lies close to the wall: what hangs there may not fit, so they share one)."""
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return 0.0
+    out = 0.0
+    for sup in sups:
+        x0, y0, x1, y1 = sup.region.bounds
+        out = max(out, x1 - x0, y1 - y0)
+    return out
+
+
+def rail_scale(pag, oid: str, asset: Asset) -> float:
+    """Scale at which ``asset`` (a towel bar, a coat rail) is long enough for the objects
+    hung below one of its parts side by side, each at its category's typical size, in
+    :data:`RAIL_GAP` of its length; 0 with fewer than two such objects."""
+    from ..assets import registry
+
+    groups: dict[tuple, list[str]] = {}
+    for e in pag.relations:
+        if e.relation == "HANGING_BELOW" and e.parent.object == oid \
+                and e.parent.part is not None:
+            groups.setdefault((e.parent.part, e.parent.index), []).append(e.child.object)
+    need = 0.0
+    for kids in groups.values():
+        if len(kids) < 2:
+            continue
+        total = 0.0
+        for k in kids:
+            sizes = []
+            for c in pag.objects[k].candidates:
+                try:
+                    lo, hi = registry.get(c).size_range
+                except KeyError:
+                    continue
+                sizes.append(0.5 * (lo + hi))
+            total += min(sizes, default=0.0)
+        need = max(need, total / RAIL_GAP)
+    length = float(np.max(hull_extents(asset)[0][:2]))
+    return need / max(length, 1e-6)
+
+
+def rail_fit(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float,
+             up: int) -> float:
+    """``scale``, or less when the child (hanging with its asset axis ``up`` vertical) is
+    wider than its share of the rail: :data:`RAIL_GAP` of the rail's length split equally
+    among everything hung below the same parent reference. Never below the category's size
+    range; unchanged for anything but HANGING_BELOW an object's part shared with other hung
+    objects."""
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
+            or edge.parent.part is None:
+        return scale
+    sibs = [e for e in st.pag.relations if e.relation == "HANGING_BELOW"
+            and e.child.object != oid and e.parent.object == edge.parent.object
+            and e.parent.part == edge.parent.part and e.parent.index == edge.parent.index]
+    if not sibs:
+        return scale
+    length = st.memo(edge.parent.object, ("rail-length", str(edge.parent)),
+                     lambda: _rail_length(st, edge))
+    share = RAIL_GAP * length / (1 + len(sibs))
+    width = scale * _along(asset, up)
+    if share <= 0 or width <= share:
+        return scale
+    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+    return max(scale * share / width, min(lo, scale))
+
+
+def edge_up(edge: Edge) -> bool:
+    """Whether a thin child of ``edge`` hangs edge-up: HANGING_BELOW an object's part, named
+    by no surface or by its top (a towel hung flat by its top would stick out from the wall
+    like a shelf)."""
+    return edge.relation == "HANGING_BELOW" and edge.child.surface in (None, "top") \
+        and not edge.parent.is_room_element
+
+
+def thinness(asset: Asset) -> float:
+    """An asset's height relative to its larger other extent (a folded towel lying: small):
+    the thinnest hangs edge-up with the least standing out from the rail."""
+    ext = hull_extents(asset)[0]
+    return float(ext[2] / max(ext[0], ext[1], 1e-9))
