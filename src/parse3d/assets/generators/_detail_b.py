@@ -14,7 +14,7 @@ import numpy as np
 from ...geometry import shapes as S
 from ..model import Material, Part, make_part
 
-__all__ = ["studs", "ring_points", "tufts", "stack"]
+__all__ = ["studs", "ring_points", "tufts", "stack", "each"]
 
 
 def studs(prefix: str, label: str, centers, *, r: float, h: float, mat: Material,
@@ -57,3 +57,9 @@ def stack(prefix: str, label: str, *, n: int, size, z0: float, mat: Material,
     return [make_part(f"{prefix}_{start + k}", label,
                       S.box((w, d, t), center=(center[0], center[1], z0 + t * (k + 0.5))), mat)
             for k in range(n)]
+
+
+def each(name: str, label: str, shapes, mat: Material) -> list[Part]:
+    """One part per shape of ``shapes`` (the wheels, latches or handles of one object, each a
+    piece a person points at): the first keeps ``name``, the others are ``<name>_1...``."""
+    return [make_part(name if k == 0 else f"{name}_{k}", label, s, mat) for k, s in enumerate(shapes)]

@@ -99,7 +99,7 @@ def paper_towel_dispenser(rng: np.random.Generator, variant: str) -> list[Part |
     return out
 
 
-@register("paper_towel_roll", parts=("roll",), extra_parts=("core", "holder", "pole", "sheet", "finial", "foot"),
+@register("paper_towel_roll", parts=("roll",), extra_parts=("core", "holder", "pole", "sheet", "finial"),
           size_range=(0.2, 0.36), density=300, variants=("roll", "on_holder", "lying"),
           placement="surface")
 def paper_towel_roll(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -116,11 +116,9 @@ def paper_towel_roll(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("holder", "holder", S.cylinder(r * 1.2, base_h, center=(0, 0, base_h / 2), sections=24), wood))
         out.append(make_part("pole", "pole", S.cylinder(0.012, h + 0.03, center=(0, 0, base_h + (h + 0.03) / 2),
                                                         sections=12), wood))
-        # a knob on the pole's top keeps the roll on; rubber pads under the base
+        # a knob on the pole's top keeps the roll on
         out.append(make_part("finial", "finial", S.ellipsoid((0.018, 0.018, 0.014), center=(0, 0, base_h + h + 0.03 + 0.01)),
                              wood))
-        out += studs("foot", "foot", ring_points(3, r * 0.9, center=(0, 0, 0.0015)), r=0.008, h=0.003,
-                     mat=black("rubber"))
     elif variant == "roll":
         out.append(make_part("sheet", "sheet", S.box((0.002, 0.06, h * 0.95), center=(r * 0.7, r + 0.03 - 0.03, h / 2),
                                                      ), white(rng, "paper")))
@@ -556,7 +554,7 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "foot"),
+@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator"),
           size_range=(0.2, 0.56), density=900, variants=("four", "six", "surge"),
           placement="floor")
 def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -574,14 +572,12 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid((0.85, 0.1, 0.1))))
     out.append(make_part("cord", "cord", S.tube([(-L / 2 + 0.002, 0, h / 2), (-L / 2 - 0.05, 0.0, 0.005), (-L / 2 - 0.08, 0.04, 0.005)],
                                                 0.004, sections=6), black()))
-    # the plug at the cord's end, the switch's pilot light, four rubber feet set into the base
+    # the plug at the cord's end and the switch's pilot light
     out.append(make_part("plug", "plug", [S.box((0.03, 0.04, 0.02), center=(-L / 2 - 0.08, 0.06, 0.01), bevel=0.003)]
                          + [S.box((0.002, 0.015, 0.006), center=(-L / 2 - 0.08 + dx, 0.0875, 0.01)) for dx in (-0.006, 0.006)],
                          mat))
     out.append(make_part("indicator", "indicator", S.cylinder(0.003, 0.002, center=(L / 2 - 0.018, -0.02, h + 0.001), sections=8),
                          M.solid((0.9, 0.2, 0.1), "plastic", 0.2)))
-    out += studs("foot", "foot", [(sx * (L / 2 - 0.015), sy * (w / 2 - 0.01), 0.001) for sy in (-1, 1) for sx in (-1, 1)],
-                 r=0.005, h=0.002, mat=black("rubber"))
     return out
 
 
