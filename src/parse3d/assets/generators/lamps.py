@@ -155,8 +155,10 @@ def _shade_fittings(shade: Part, metal: Material) -> list[Part]:
     r0, r1 = float(r[v[:, 2] < z0 + 1e-6].max()), float(r[v[:, 2] > z1 - 1e-6].max())
     band = 0.008
     trim = Material(tuple(min(1.0, c * 0.8) for c in shade.material.color[:3]) + (1.0,), 0.8, 0.0, "fabric")
-    out = [make_part("trim_0", "trim", ring([(r0 - 0.0015, z0), (r0 + 0.0015, z0), (r0 + 0.0015 - (r0 - r1) * band / (z1 - z0), z0 + band),
-                                            (r0 - 0.0015 - (r0 - r1) * band / (z1 - z0), z0 + band)], sections=24), trim)]
+    # a triangular section (no flat annulus: the costliest surface to resolve)
+    rb = r0 - (r0 - r1) * band / (z1 - z0)
+    out = [make_part("trim_0", "trim", ring([(r0 - 0.001, z0), (r0 + 0.0025, z0 + band * 0.5), (rb - 0.001, z0 + band)], sections=24),
+                     trim)]
     zs = z1 - 0.004
     out.append(make_part("spider", "spider", [S.tube([[0, 0, zs], [np.cos(a) * (r1 - 0.004), np.sin(a) * (r1 - 0.004), zs]], 0.0015,
                                                      sections=6) for a in (np.pi / 2, np.pi / 2 + 2 * np.pi / 3, np.pi / 2 + 4 * np.pi / 3)],
