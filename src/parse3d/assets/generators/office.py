@@ -44,7 +44,8 @@ def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("projector_screen", parts=("screen",), extra_parts=("case", "bottom_bar", "frame", "pull_handle", "end_cap"),
+@register("projector_screen", parts=("screen",), extra_parts=("case", "bottom_bar", "frame", "pull_handle", "end_cap", "bracket",
+                                                              "corner"),
           size_range=(1.2, 3.2), density=300, variants=("pull_down", "fixed_frame"), placement="wall")
 def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(1.5, 3.0)
@@ -55,8 +56,15 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         frame = [S.box((w, 0.04, f), center=(0, 0.02, f / 2)), S.box((w, 0.04, f), center=(0, 0.02, h - f / 2)),
                  S.box((f, 0.04, h - 2 * f), center=(-w / 2 + f / 2, 0.02, h / 2)),
                  S.box((f, 0.04, h - 2 * f), center=(w / 2 - f / 2, 0.02, h / 2))]
+        # the frame's mitred corners are joined by corner brackets on its back; it hangs on two
+        # wall brackets along its top
+        steel = M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)
         return [make_part("frame", "frame", frame, M.solid((0.05, 0.05, 0.05), "fabric", 0.95)),
-                make_part("screen", "screen", S.box((w - 2 * f, 0.004, h - 2 * f), center=(0, 0.03, h / 2)), fabric)]
+                make_part("screen", "screen", S.box((w - 2 * f, 0.004, h - 2 * f), center=(0, 0.03, h / 2)), fabric),
+                *[make_part(f"corner_{k}", "corner", S.box((0.12, 0.004, 0.12), center=(sx * (w / 2 - 0.06), -0.002, z)), steel)
+                  for k, (sx, z) in enumerate([(-1, 0.06), (1, 0.06), (-1, h - 0.06), (1, h - 0.06)])],
+                *[make_part(f"bracket_{k}", "bracket", S.box((0.06, 0.012, 0.1), center=(sx * w * 0.3, -0.006, h - 0.05)), steel)
+                  for k, sx in enumerate((-1, 1))]]
     case_r = 0.045
     zc = h + 0.06
     parts = [make_part("case", "case", S.box((w + 0.08, 0.09, 0.09), center=(0, 0.045, zc), bevel=0.02), white(rng, "metal")),
@@ -66,6 +74,9 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.02, 0.1, 0.1), center=(s * (w / 2 + 0.05), 0.05, zc)), black()))
     parts.append(make_part("pull_handle", "pull_handle", S.box((0.04, 0.02, 0.06), center=(0, 0.05, zc - case_r - h - 0.06)), black()))
+    # the case hangs on a bracket at each end
+    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.05, 0.02, 0.12), center=(s * (w / 2 - 0.05), -0.01, zc)),
+                        M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)) for k, s in enumerate((-1, 1))]
     return parts
 
 
