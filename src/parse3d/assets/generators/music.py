@@ -90,7 +90,7 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("music_stand", parts=("desk", "post"), extra_parts=("leg", "ledge", "knob", "base"),
+@register("music_stand", parts=("desk", "post"), extra_parts=("leg", "ledge", "knob", "base", "page_clip", "collar"),
           size_range=(0.9, 1.5), density=700, variants=("folding", "orchestral", "wooden"))
 def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.05, 1.35)
@@ -119,6 +119,12 @@ def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
                          mat=metal, phase=np.pi / 2)
     parts.append(make_part("knob", "knob", S.cylinder(0.012, 0.025, center=(0.015, -0.05, h * 0.6), axis=(1, 0, 0),
                                                       sections=10), metal))
+    # the height clamp's collar the knob screws through, and a spring page clip at each upper
+    # corner of the desk
+    parts.append(make_part("collar", "collar", S.cylinder(0.02, 0.04, center=(0, -0.05, h * 0.6), sections=12), metal))
+    for k, sx in enumerate((-1, 1)):
+        c = np.array([sx * (w / 2 - 0.04), 0.0, zc]) + R @ np.array([0.0, 0.006, dh / 2 - 0.03])
+        parts.append(make_part(f"page_clip_{k}", "page_clip", S.box((0.012, 0.004, 0.05), center=c, R=R), metal))
     return parts
 
 
@@ -279,7 +285,7 @@ def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("sheet_music", parts=("page",), extra_parts=("cover",), size_range=(0.22, 0.36), density=700,
+@register("sheet_music", parts=("page",), extra_parts=("cover", "staple", "clip"), size_range=(0.22, 0.36), density=700,
           variants=("booklet", "loose"), placement="surface")
 def sheet_music(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.21, 0.24), rng.uniform(0.297, 0.31)
@@ -291,6 +297,10 @@ def sheet_music(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("cover_0", "cover", S.box((w, d, 0.0008), center=(0, 0, 0.0004)), cov))
         parts.append(make_part("pages", "page", S.box((w - 0.003, d - 0.004, t), center=(0, 0, 0.0008 + t / 2)), paper))
         parts.append(make_part("cover_1", "cover", S.box((w, d, 0.0008), center=(0, 0, 0.0012 + t)), cov))
+        # saddle-stitched: two staples through the fold along the left edge
+        steel = M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)
+        parts += [make_part(f"staple_{k}", "staple", S.box((0.0012, 0.012, t + 0.0024), center=(-w / 2 + 0.0006, y, (t + 0.0024) / 2 + 0.0002)),
+                            steel) for k, y in enumerate((-d * 0.25, d * 0.25))]
     else:
         n = int(rng.integers(3, 7))
         for k in range(n):
@@ -298,4 +308,9 @@ def sheet_music(rng: np.random.Generator, variant: str) -> list[Part]:
             off = rng.uniform(-0.01, 0.01, 2)
             parts.append(make_part(f"page_{k}", "page", S.box((w, d, 0.0006), center=(off[0], off[1], 0.0003 + 0.0007 * k),
                                                                R=rot((0, 0, 1), a)), paper))
+        # a paper clip holding the pile at its top left corner
+        zt = 0.0007 * n
+        parts.append(make_part("clip", "clip", [S.box((0.008, 0.03, 0.001), center=(-w * 0.35, d * 0.45, zt + 0.0005)),
+                                                S.box((0.008, 0.03, 0.001), center=(-w * 0.35, d * 0.45, -0.0005))],
+                               M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     return parts
