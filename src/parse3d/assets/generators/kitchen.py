@@ -116,7 +116,7 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel"),
+@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail"),
           size_range=(1.4, 3.3), density=600, variants=("straight", "l_shaped"))
 def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(1.4, 2.6), rng.uniform(0.45, 0.6), rng.uniform(1.02, 1.1)
@@ -158,14 +158,23 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
         top_ret = S.box((xb - xr, ym - y0, top_t), center=((xr + xb) / 2, (y0 + ym) / 2, h - top_t / 2))
         main_top = S.Shape(mesh, main_top.pieces + top_ret.pieces)
     parts.insert(0, make_part("countertop", "countertop", main_top, top_mat))
-    rail = [S.tube(rail_path, 0.025, sections=12)]
-    for p, (dx, dy) in supports:
-        rail.append(S.tube([p, (p[0] + dx, p[1] + dy, rz + 0.04)], 0.012, sections=8))
-    parts.append(make_part("foot_rail", "foot_rail", rail, steel))
+    parts.append(make_part("foot_rail", "foot_rail", S.tube(rail_path, 0.025, sections=12), steel))
+    # the brackets holding the foot rail off the customer wall, each its own
+    parts += [make_part(f"bracket_{k}", "bracket", S.tube([p, (p[0] + dx, p[1] + dy, rz + 0.04)], 0.012, sections=8), steel)
+              for k, (p, (dx, dy)) in enumerate(supports)]
+    # corbels under the top's overhang on the customer side, and the bartender's speed rail of
+    # bottles hung on the inside of the customer wall
+    parts += [make_part(f"corbel_{k}", "corbel", S.prism([(0, 0), (oh - 0.03, 0), (0, -0.2)], 0, 0.03).apply(
+        np.array([[0, 0, 1, x - 0.015], [1, 0, 0, d / 2], [0, 1, 0, zb], [0, 0, 0, 1.0]])), mat)
+              for k, x in enumerate(np.linspace(-w / 2 + 0.2, w / 2 - 0.2, 3))]
+    parts.append(make_part("speed_rail", "speed_rail", [S.box((w * 0.5, 0.1, 0.006), center=(-w * 0.2, d / 2 - t - 0.05, zb * 0.6)),
+                                                        S.box((w * 0.5, 0.006, 0.06), center=(-w * 0.2, d / 2 - t - 0.1, zb * 0.6 + 0.027))],
+                           steel))
     return parts
 
 
-@register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge"),
+@register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
+                                                                     "thermostat"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -218,6 +227,11 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     crisper = S.union([S.box((iw - 0.02, y1 - y0 - 0.02, 0.006), center=(x_mid, (y0 + y1) / 2, z_lo + 0.003)),
                        S.box((iw - 0.02, 0.01, 0.16), center=(x_mid, y1 - 0.015, z_lo + 0.08))])
     parts.append(make_part("drawer", "drawer", crisper, liner))
+    # the lamp and the thermostat dial in the top of the fresh-food compartment
+    parts.append(make_part("light", "light", S.box((0.08, 0.04, 0.012), center=(x_mid, y0 + 0.08, z_hi - 0.006)),
+                           M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
+    parts.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(x_mid + iw * 0.25, y0 + 0.1, z_hi - 0.006),
+                                                                  sections=12), liner))
     return parts
 
 
