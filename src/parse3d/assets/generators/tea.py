@@ -44,7 +44,8 @@ def tea_tray(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("base", "base", S.box((w - 2 * t, d - 2 * t, 0.01), center=(0, 0, fh + 0.005)), wood))
     rim = [S.box((w, t, rh), center=(0, s * (d / 2 - t / 2), fh + rh / 2)) for s in (-1, 1)]
     rim += [S.box((t, d - 2 * t, rh), center=(s * (w / 2 - t / 2), 0, fh + rh / 2)) for s in (-1, 1)]
-    parts.append(make_part("rim", "rim", rim, wood))
+    # the four rails round the floor, each board its own (mitred at the corners)
+    parts += [make_part("rim" if k == 0 else f"rim_{k}", "rim", b, wood) for k, b in enumerate(rim)]
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"handle_{i}", "handle", S.box((0.012, 0.1, 0.02), center=(s * (w / 2 + 0.006), 0, fh + rh - 0.012)),
                                wood))
