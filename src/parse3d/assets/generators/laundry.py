@@ -181,7 +181,7 @@ def _shoe(x: float, L: float, W: float, *, kind: str, upper_mat, sole_mat):
     return sole, upper, laces
 
 
-@register("shoes", parts=("sole", "upper"), extra_parts=("laces", "heel"), size_range=(0.2, 0.35), density=300,
+@register("shoes", parts=("sole", "upper"), extra_parts=("laces", "heel", "tongue", "heel_tab", "toe_cap", "heel_tip"), size_range=(0.2, 0.35), density=300,
           variants=("sneakers", "boots", "heels"), placement="floor")
 def shoes(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.24, 0.31)
@@ -196,6 +196,16 @@ def shoes(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"upper_{i}", "upper", upper, up))
         if variant == "heels":
             parts.append(make_part(f"heel_{i}", "heel", S.box((0.015, 0.015, 0.07), center=(x, -L * 0.43, 0.035 + 0.02)), black()))
+            # the hard tip under the heel's end
+            parts.append(make_part(f"heel_tip_{i}", "heel_tip", S.box((0.017, 0.017, 0.008), center=(x, -L * 0.43, 0.02 + 0.004)),
+                                   M.solid((0.2, 0.2, 0.2), "rubber", 0.8)))
         else:
             parts.append(make_part(f"laces_{i}", "laces", laces, M.solid((0.95, 0.95, 0.95), "fabric")))
+            # the tongue under the laces and the pull tab at the back of the collar
+            parts.append(make_part(f"tongue_{i}", "tongue", S.box((W * 0.3, L * 0.12, 0.008), center=(x, L * 0.0, 0.099)), up))
+            ytab, ztab = (-L * 0.475 - 0.003, 0.085) if variant == "sneakers" else (-L * 0.48 - 0.003, 0.215)
+            parts.append(make_part(f"heel_tab_{i}", "heel_tab", S.box((0.02, 0.006, 0.03), center=(x, ytab, ztab)), up))
+            if variant == "sneakers":  # the rubber toe cap over the front of the upper
+                parts.append(make_part(f"toe_cap_{i}", "toe_cap", S.box((W * 0.9, L * 0.1, 0.035), center=(x, L * 0.44, 0.04),
+                                                                          bevel=0.01), sole_mat))
     return parts
