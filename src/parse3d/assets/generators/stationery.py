@@ -44,7 +44,7 @@ def _stand_up(items: list) -> list:
     return out
 
 
-@register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap"),
+@register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap", "ring"),
           groups={"body": ("barrel", "grip", "cap", "end_cap", "button")},
           size_range=(0.11, 0.17), density=1100, variants=("ballpoint", "capped", "fountain"), placement="surface")
 def pen(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -88,11 +88,14 @@ def pen(rng: np.random.Generator, variant: str) -> list[Part]:
         xc = x0 + 0.025
         rc = r
     parts.append(make_part("clip", "clip", S.box((0.04, 0.003, 0.0015), center=(xc, 0, zc + rc + 0.00075)), chrome))
+    # the metal band where the barrel meets the grip section
+    parts.append(make_part("ring", "ring", S.cylinder(r * 1.04, 0.003, center=(x1 - lt - 0.03 - 0.0015, 0, zc), axis=(1, 0, 0),
+                                                      sections=16), chrome))
     return parts
 
 
 @register("notebook", parts=("front_cover", "back_cover", "pages"),
-          extra_parts=("spine", "spiral", "band", "ribbon", "binding", "label", "headband"),
+          extra_parts=("spine", "spiral", "band", "ribbon", "binding", "label", "headband", "tab"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.14, 0.32), density=600, variants=("spiral", "bound", "legal_pad"), placement="surface")
 def notebook(rng: np.random.Generator, variant: str) -> list:
@@ -130,6 +133,11 @@ def _notebook_lying(rng: np.random.Generator, variant: str) -> list:
         coil = [S.cylinder(rr, 0.0016, center=(-w / 2, -d / 2 + 0.006 + k * (d - 0.012) / max(n - 1, 1), zt / 2), axis=(0, 1, 0),
                            sections=10) for k in range(n)]
         parts.append(make_part("spiral", "spiral", coil, M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+        # the subject dividers' tabs standing out of the pages' free edge
+        tab_cols = [(0.9, 0.3, 0.3), (0.3, 0.6, 0.9), (0.95, 0.8, 0.3)]
+        parts += [make_part(f"tab_{k}", "tab", S.box((0.012, 0.03, 0.0008), center=(w / 2 + 0.006 - 0.001, -d * 0.3 + k * d * 0.25,
+                                                                                    tc + n_pages * (k + 1) / 4)),
+                            M.solid(c, "plastic", 0.5)) for k, c in enumerate(tab_cols)]
         origin = (-w / 2, 0.0, zt / 2)
     elif variant == "bound":
         parts.append(make_part("spine", "spine", S.box((0.004, d, zt), center=(-w / 2 - 0.002, 0, zt / 2)), cover))
