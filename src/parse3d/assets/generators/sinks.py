@@ -63,7 +63,7 @@ def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
     return _faucet("", 0.0, 0.0, 0.0, reach=rng.uniform(0.12, 0.2), h=h, mat=chrome, style=variant)
 
 
-@register("vessel_sink", parts=("basin",), extra_parts=("rim", "base", "drain"),
+@register("vessel_sink", parts=("basin",), extra_parts=("rim", "base"),
           size_range=(0.3, 0.62), density=1500, variants=("round", "oval", "square"), placement="surface")
 def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if rng.random() < 0.7 else M.stone(rng)
@@ -89,10 +89,6 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "oval":
             rim = S.transformed(rim, np.diag([1.0, 0.75, 1.0, 1.0]))
         parts.append(make_part("rim", "rim", rim, mat))
-    # the pop-up drain cap in the basin's floor
-    z_floor = zb + 0.012
-    parts.append(make_part("drain", "drain", S.cylinder(0.03, 0.004, center=(0, 0, z_floor + 0.002), sections=16),
-                           M.solid((0.8, 0.8, 0.82), "metal", 0.15, 0.95)))
     return parts
 
 
