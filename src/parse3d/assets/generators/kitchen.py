@@ -292,7 +292,8 @@ def stove(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("washing_machine", parts=("body", "door"), extra_parts=("control_panel", "knob", "window", "drawer",
-                                                                   "display", "foot", "hinge"),
+                                                                   "display", "foot", "hinge", "button", "gasket", "filter_cover",
+                                                                   "handle"),
           size_range=(0.8, 1.0), density=250, variants=("front_loader", "top_loader"))
 def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.58, 0.62), rng.uniform(0.52, 0.64), rng.uniform(0.82, 0.88)
@@ -322,6 +323,16 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts += [make_part("hinge", "hinge", S.box((0.03, 0.03, 0.08), center=(xh, yf + 0.012, zc)), trim),
                   revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(xh, yf, zc), opens=OPEN_DOOR),
                   mount("door", "window")]
+        # the rubber boot sealing the drum's mouth round the porthole, the door's pull, the pump
+        # filter's flap low on the front, and the programme buttons beside the display
+        parts.append(make_part("gasket", "gasket", S.cylinder(r - 0.005, 0.004, center=(0, yf + 0.002, zc), axis=(0, 1, 0), sections=24),
+                               M.solid((0.25, 0.25, 0.27), "rubber", 0.8)))
+        parts.append(make_part("handle", "handle", S.box((0.03, 0.025, 0.09), center=(r + 0.02, yf + 0.035, zc), bevel=0.005), trim))
+        parts.append(mount("door", "handle"))
+        parts.append(make_part("filter_cover", "filter_cover", S.box((0.12, 0.006, 0.1), center=(w / 2 - 0.1, yf + 0.003, 0.09),
+                                                                      bevel=0.003), enamel))
+        parts += [make_part(f"button_{k}", "button", S.box((0.018, 0.008, 0.012), center=(0.1 + 0.025 * k, yf + 0.012, h - 0.07)),
+                            black()) for k in range(3)]
     else:
         console = S.box((w, 0.11, 0.12), center=(0, -d / 2 + 0.055, h + 0.06 - 0.01), bevel=0.01)
         parts.append(make_part("control_panel", "control_panel", console, enamel))
@@ -335,4 +346,10 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         yh = 0.04 - (d - 0.16) / 2  # the lid lifts on its back edge, against the console
         parts += [revolute("door_hinge", "body", "door", axis=(1, 0, 0), origin=(0, yh, h), opens=np.pi / 2),
                   mount("door", "window")]
+        # the lid's finger pull at its front edge and the programme buttons on the console
+        parts.append(make_part("handle", "handle", S.box((0.12, 0.015, 0.012), center=(0, 0.04 + (d - 0.16) / 2 + 0.0075, h + 0.014)),
+                               trim))
+        parts.append(mount("door", "handle"))
+        parts += [make_part(f"button_{k}", "button", S.box((0.018, 0.008, 0.012), center=(-w / 2 + 0.08 + 0.025 * k, -d / 2 + 0.114, h + 0.06)),
+                            black()) for k in range(3)]
     return parts
