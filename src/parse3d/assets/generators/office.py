@@ -109,7 +109,8 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel"),
+@register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel",
+                                                          "windscreen", "reading_light", "plaque"),
           size_range=(1.0, 1.45), density=500, variants=("box", "pedestal", "acrylic"), placement="floor")
 def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.5, 0.7), rng.uniform(0.4, 0.55), rng.uniform(1.05, 1.25)
@@ -139,6 +140,18 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("microphone", "microphone",
                            S.tube([(w / 2 - 0.06, -d / 2 + 0.05, h + 0.005), (w / 2 - 0.06, -d / 2 + 0.05, h + 0.15),
                                    (w / 2 - 0.08, -d / 2 + 0.2, h + 0.22)], 0.005), black()))
+    # the foam windscreen on the microphone's head, a gooseneck reading light on the other side
+    # and the name plaque on the front
+    parts.append(make_part("windscreen", "windscreen", S.ellipsoid((0.015, 0.022, 0.015), center=(w / 2 - 0.08, -d / 2 + 0.215, h + 0.225),
+                                                                   subdivisions=1), M.solid((0.1, 0.1, 0.1), "fabric", 0.9)))
+    parts.append(make_part("reading_light", "reading_light", [S.tube([(-w / 2 + 0.06, -d / 2 + 0.05, h + 0.005),
+                                                                     (-w / 2 + 0.06, -d / 2 + 0.05, h + 0.1),
+                                                                     (-w / 2 + 0.1, -d / 2 + 0.15, h + 0.14)], 0.004),
+                                                             S.frustum(0.012, 0.02, 0.03, center=(-w / 2 + 0.1, -d / 2 + 0.15, h + 0.14),
+                                                                       axis=(0.3, 0.3, -1.0), sections=10)], M.metal(rng)))
+    y_front = d * 0.4 if variant != "pedestal" else 0.09
+    parts.append(make_part("plaque", "plaque", S.box((min(0.3, w * 0.5), 0.004, 0.08), center=(0, y_front + 0.002, z_desk * 0.7)),
+                           M.solid((0.8, 0.65, 0.3), "metal", 0.3, 0.9)))
     return parts
 
 
@@ -165,7 +178,8 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2)), mat)]
     walls = [S.box((w, t, h), center=(0, s * (d / 2 - t / 2), h / 2)) for s in (-1, 1)]
     walls += [S.box((t, d - 2 * t, h), center=(s * (w / 2 - t / 2), 0, h / 2)) for s in (-1, 1)]
-    parts.append(make_part("wall", "wall", walls, mat))
+    # the four walls, each board its own
+    parts += [make_part("wall" if k == 0 else f"wall_{k}", "wall", wall, mat) for k, wall in enumerate(walls)]
     if variant == "compartments":
         n = int(rng.integers(2, 5))
         for k in range(1, n):
