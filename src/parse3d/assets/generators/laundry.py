@@ -16,7 +16,8 @@ from ..registry import register
 from ._casework import black
 
 
-@register("ironing_board", parts=("board", "leg"), extra_parts=("iron_rest", "foot", "cover"), size_range=(1.0, 1.55),
+@register("ironing_board", parts=("board", "leg"), extra_parts=("iron_rest", "foot", "cover", "pivot", "lever", "bracket",
+                                                                "cord_holder"), size_range=(1.0, 1.55),
           density=500, variants=("standard", "wide", "tabletop"))
 def ironing_board(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.1, 1.4) if variant != "tabletop" else rng.uniform(1.0, 1.1)
@@ -36,6 +37,16 @@ def ironing_board(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"leg_{2 * i + j}", "leg", S.tube([(xb, y, r), (xt, y, h - 0.03)], r, sections=8), steel))
         parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.014, W - 0.06 - 0.04 * i, center=(xb, 0, 0.014), axis=(0, 1, 0),
                                                                sections=10), black()))
+    # the rivet the two leg frames cross on (each side), the brackets under the board the legs
+    # hang in, the height lever at the leg's top and the cord holder clipped to the board's edge
+    zc = r + (h - 0.03 - r) * 0.5
+    parts += [make_part(f"pivot_{j}", "pivot", S.cylinder(0.01, 0.05, center=(a, sy * (W / 2 - 0.06), zc), axis=(0, 1, 0), sections=10),
+                        steel) for j, sy in enumerate((-1, 1))]
+    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.08, W * 0.8, 0.012), center=(x, 0, h - 0.031)), steel)
+              for k, x in enumerate((a + L * 0.1, a - L * 0.1))]
+    parts.append(make_part("lever", "lever", S.box((0.1, 0.02, 0.012), center=(a - L * 0.1 - 0.09, 0, h - 0.045), bevel=0.003), black()))
+    parts.append(make_part("cord_holder", "cord_holder", S.tube([(L * 0.05, W / 2 - 0.01, h - 0.025), (L * 0.05, W / 2 + 0.02, h + 0.1),
+                                                                  (L * 0.05 - 0.04, W / 2 + 0.02, h + 0.16)], 0.003, sections=6), steel))
     return parts
 
 

@@ -50,7 +50,8 @@ def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("shopping_cart", parts=("basket", "wheel", "handle"), extra_parts=("frame", "base", "child_seat", "bumper"),
+@register("shopping_cart", parts=("basket", "wheel", "handle"), extra_parts=("frame", "base", "child_seat", "bumper", "fork",
+                                                                            "coin_lock", "end_cap"),
           size_range=(0.85, 1.15), density=250, variants=("full_size", "compact"))
 def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     k = 1.0 if variant == "full_size" else 0.8
@@ -77,6 +78,15 @@ def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("child_seat", "child_seat", S.box((0.25, W - 0.1, 0.01), center=(-L * 0.3, 0, H - 0.18),
                                                                  R=_rx(0.0)), steel))
     parts.append(make_part("bumper", "bumper", S.box((0.02, W, 0.08), center=(L * 0.85 / 2 + 0.04, 0, zb + 0.1)), black()))
+    # the swivel fork each wheel turns in, the coin lock on the handle and the caps on its ends
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        x, y = sx * (L / 2 - 0.08), sy * (W / 2 - 0.06)
+        parts.append(make_part(f"fork_{i}", "fork", [S.box((0.05, 0.006, 0.07), center=(x, y + dy, 0.085)) for dy in (-0.02, 0.02)]
+                               + [S.box((0.05, 0.046, 0.01), center=(x, y, 0.12))], steel))
+    parts.append(make_part("coin_lock", "coin_lock", S.box((0.08, 0.06, 0.05), center=(xb + 0.03, -W * 0.3, H - 0.04), bevel=0.005),
+                           M.solid((0.85, 0.7, 0.1), "plastic", 0.4)))
+    parts += [make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.017, 0.012, center=(xb, sy * (W / 2 - 0.01 + 0.006), H), axis=(0, 1, 0),
+                                                              sections=12), black()) for k, sy in enumerate((-1, 1))]
     return parts
 
 
@@ -232,7 +242,8 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel"),
+@register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel",
+                                                              "lock", "drain_plug", "grille", "light"),
           size_range=(0.7, 1.8), density=300, variants=("small", "large", "glass_top"))
 def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = {"small": rng.uniform(0.7, 0.95), "large": rng.uniform(1.2, 1.6), "glass_top": rng.uniform(1.4, 1.75)}[variant]
@@ -270,6 +281,17 @@ def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                            black()))
     parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zt), opens=OPEN_DOOR * 0.6))
     parts.append(mount("lid", "handle"))
+    # the key lock beside the handle, the power and cooling lights on the control panel, the
+    # condenser grille low on the right side and the drain plug low on the front
+    parts.append(make_part("lock", "lock", S.cylinder(0.009, 0.01, center=(min(0.3, w * 0.4) / 2 + 0.06, d / 2 + 0.005, zt + lid_t * 0.4),
+                                                      axis=(0, 1, 0), sections=10), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    parts.append(mount("lid", "lock"))
+    parts += [make_part(f"light_{k}", "light", S.cylinder(0.004, 0.003, center=(w / 2 - 0.15 + 0.03 * k, d / 2 + 0.0075, fh + hb - 0.06),
+                                                          axis=(0, 1, 0), sections=8),
+                        M.solid((0.1, 0.8, 0.2) if k == 0 else (0.9, 0.6, 0.1), "plastic", 0.2)) for k in range(2)]
+    parts.append(make_part("grille", "grille", S.box((0.004, d * 0.4, 0.12), center=(w / 2 + 0.002, -d * 0.1, fh + 0.1)), black()))
+    parts.append(make_part("drain_plug", "drain_plug", S.cylinder(0.012, 0.008, center=(-w / 2 + 0.1, d / 2 + 0.004, fh + 0.04),
+                                                                  axis=(0, 1, 0), sections=10), black()))
     return parts
 
 
