@@ -227,11 +227,13 @@ def thermos(rng: np.random.Generator, variant: str) -> list[Part]:
                 (0, -r - 0.03, zf + h * 0.3), (0, -r + 0.002, zf + h * 0.25)]
         parts.append(make_part("handle", "handle", S.tube(path, 0.007, sections=8), black()))
     # the silicone seal ring showing under the cup's rim and the printed label on the body
-    parts.append(make_part("seal", "seal", ring([(r * 1.0, zt - ch * 0.55 - 0.004), (r * 1.025, zt - ch * 0.55 - 0.004),
-                                                 (r * 1.025, zt - ch * 0.55), (r * 1.0, zt - ch * 0.55)], sections=24),
+    # (triangular and sloped sections: no flat annulus, the costliest surface to resolve)
+    zs = zt - ch * 0.55
+    parts.append(make_part("seal", "seal", ring([(r * 0.99, zs - 0.004), (r * 1.025, zs - 0.002), (r * 0.99, zs)], sections=24),
                            black("rubber")))
-    parts.append(make_part("label", "label", ring([(r - 0.0005, zf + h * 0.55), (r + 0.0008, zf + h * 0.55), (r + 0.0008, zf + h * 0.68),
-                                                   (r - 0.0005, zf + h * 0.68)], sections=24), M.solid((0.95, 0.95, 0.92), "paper", 0.6)))
+    parts.append(make_part("label", "label", ring([(r - 0.0005, zf + h * 0.55), (r + 0.0008, zf + h * 0.55 + 0.002),
+                                                   (r + 0.0008, zf + h * 0.68 - 0.002), (r - 0.0005, zf + h * 0.68)], sections=24),
+                           M.solid((0.95, 0.95, 0.92), "paper", 0.6)))
     return parts
 
 

@@ -215,7 +215,7 @@ def teapot(rng: np.random.Generator, variant: str) -> list[Part]:
                          width=h * 0.5, thick=0.007, z_up=True)
     parts.append(make_part("handle", "handle", handle, mat))
     # the unglazed foot ring it stands on and the steam hole in the lid
-    parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.5, 0.0), (r * 0.63, 0.0), (r * 0.63, 0.004), (r * 0.5, 0.004)],
+    parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.5, 0.0), (r * 0.63, 0.0), (r * 0.56, 0.004)],
                                                           sections=24), mat))
     parts.append(make_part("vent", "vent", S.cylinder(0.0025, 0.003, center=(rl * 0.7, 0, h + 0.008 + 0.0), sections=8),
                            M.solid((0.05, 0.05, 0.05), "plastic", 0.8)))

@@ -47,12 +47,12 @@ def hanging_scale(rng: np.random.Generator, variant: str) -> list[Part]:
     # and the ring the three chains are gathered in under the dial
     parts.append(make_part("glass", "glass", S.cylinder(rd * 0.9, 0.002, center=(0, 0.0365, zd), axis=(0, 1, 0), sections=28),
                            Material((0.9, 0.95, 1.0, 0.3), 0.05, 0.0, "glass")))
-    parts.append(make_part("bezel", "bezel", ring([(rd * 0.88, -0.004), (rd * 1.0, -0.004), (rd * 1.0, 0.004), (rd * 0.88, 0.004)],
+    parts.append(make_part("bezel", "bezel", ring([(rd * 0.88, 0.0), (rd * 0.94, -0.004), (rd * 1.0, 0.0), (rd * 0.94, 0.004)],
                                                   sections=28).apply(np.array([[1, 0, 0, 0], [0, 0, -1, 0.034], [0, 1, 0, zd],
                                                                                [0, 0, 0, 1.0]])), metal))
     parts.append(make_part("hub", "hub", S.cylinder(0.008, 0.004, center=(0, 0.0375, zd), axis=(0, 1, 0), sections=10), steel))
     parts.append(make_part("knob", "knob", S.cylinder(0.01, 0.015, center=(rd * 0.5, 0, zd + rd * 0.87 + 0.006), sections=10),
                            Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.0, "plastic")))
-    parts.append(make_part("ring", "ring", ring([(0.006, zr - 0.003), (0.012, zr - 0.003), (0.012, zr + 0.003), (0.006, zr + 0.003)],
+    parts.append(make_part("ring", "ring", ring([(0.006, zr), (0.009, zr - 0.003), (0.012, zr), (0.009, zr + 0.003)],
                                                 sections=12), steel))
     return parts

@@ -188,6 +188,6 @@ def incense_burner(rng: np.random.Generator, variant: str) -> list[Part]:
         T[:3, 3] = (np.cos(a) * rv, np.sin(a) * rv, zv)
         parts.append(make_part(f"vent_{k}", "vent", S.box((0.003, r * 0.3, lid_h * 0.25)).apply(T), dark))
     if variant != "tripod":  # it stands on a low foot ring
-        parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.45, 0.0), (r * 0.62, 0.0), (r * 0.62, 0.004), (r * 0.45, 0.004)],
+        parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.45, 0.0), (r * 0.62, 0.0), (r * 0.54, 0.004)],
                                                               sections=20), mat))
     return parts

@@ -223,7 +223,8 @@ def curtain_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     out = _rod(rng, label_rod="rod", span=span, y=0.08, z=0.03, r=0.012, variant_finials=variant == "finials")
     # the rings the curtain hangs from, each its own part, bunched at the left end
     ring_mat = M.plastic(rng) if variant == "shower" else out[0].material
-    hoop = ring([(0.014, -0.003), (0.02, -0.003), (0.02, 0.003), (0.014, 0.003)], sections=12)
+    # a diamond section: no flat annulus, the costliest surface to resolve
+    hoop = ring([(0.014, 0.0), (0.017, -0.003), (0.02, 0.0), (0.017, 0.003)], sections=12)
     n = 6 if variant == "shower" else 8
     for k, x in enumerate(np.linspace(-span / 2 + 0.1, -span / 2 + 0.1 + 0.08 * (n - 1), n)):
         out.append(make_part("ring" if k == 0 else f"ring_{k}", "ring",
