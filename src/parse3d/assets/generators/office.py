@@ -18,7 +18,8 @@ from ._casework import bar_pull, black, white
 from ._kit import DRAWER_TRAVEL, feet4, mount, prismatic, rot
 
 
-@register("projector", parts=("body", "lens"), extra_parts=("foot", "vent", "button", "focus_ring"), size_range=(0.2, 0.45),
+@register("projector", parts=("body", "lens"), extra_parts=("foot", "vent", "button", "focus_ring", "zoom_ring", "sensor", "indicator",
+                                                          "port"), size_range=(0.2, 0.45),
           density=600, variants=("compact", "business", "short_throw"), placement="surface")
 def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = {"compact": (rng.uniform(0.2, 0.26), rng.uniform(0.15, 0.2), rng.uniform(0.07, 0.09)),
@@ -41,6 +42,19 @@ def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(4):
         parts.append(make_part(f"button_{k}", "button", S.cylinder(0.006, 0.006, center=(-w * 0.3 + 0.02 * k, -d * 0.3, fh + h + 0.002),
                                                                    sections=10), black()))
+    # the zoom ring before the focus ring, the exhaust vent on the other side, the remote's
+    # infrared window on the front, the power and lamp lights and the input ports at the back
+    if variant != "short_throw":
+        parts.append(make_part("zoom_ring", "zoom_ring", S.cylinder(h * 0.38, 0.006, center=(lx, d / 2 + 0.014, fh + h / 2),
+                                                                    axis=(0, 1, 0), sections=20), black()))
+    parts.append(make_part("vent_1", "vent", S.box((0.004, d * 0.5, h * 0.5), center=(w / 2 + 0.0015, 0, fh + h / 2)), black()))
+    parts.append(make_part("sensor", "sensor", S.box((0.02, 0.003, 0.012), center=(-w * 0.3, d / 2 + 0.0015, fh + h * 0.5)),
+                           M.solid((0.2, 0.05, 0.05), "glass", 0.1)))
+    parts += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.003, 0.002, center=(-w * 0.3 + 0.02 * k, -d * 0.15, fh + h + 0.001),
+                                                                  sections=8), M.solid(c, "plastic", 0.2))
+              for k, c in enumerate(((0.1, 0.8, 0.2), (0.9, 0.5, 0.1)))]
+    parts += [make_part(f"port_{k}", "port", S.box((0.016, 0.003, 0.008), center=(-w * 0.25 + 0.03 * k, -d / 2 - 0.0015, fh + h * 0.4)),
+                        black()) for k in range(3)]
     return parts
 
 
