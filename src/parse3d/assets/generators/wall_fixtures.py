@@ -233,13 +233,20 @@ def curtain_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial", "screw"),
+@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial", "screw", "support"),
           size_range=(0.6, 2.5), density=2000, variants=("round", "oval", "wooden"),
           placement="wall")
 def closet_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     span = rng.uniform(0.6, 2.4)
-    return _rod(rng, label_rod="rod", span=span, y=0.3, z=0.03, r=0.016 if variant != "oval" else 0.013,
-                variant_finials=False)
+    r = 0.016 if variant != "oval" else 0.013
+    out = _rod(rng, label_rod="rod", span=span, y=0.3, z=0.03, r=r, variant_finials=False)
+    if span > 1.2:  # a long rod sags without a centre support: a plate on the wall, an arm, a hook under the rod
+        metal = out[0].material
+        out.append(make_part("support", "support", [S.box((0.05, 0.006, 0.1), center=(0, 0.003, 0.06)),
+                                                    S.box((0.02, 0.3 - r - 0.006, 0.008), center=(0, (0.3 - r + 0.006) / 2, 0.03 - r - 0.004)),
+                                                    S.box((0.02, 2 * r + 0.008, 0.006), center=(0, 0.3, 0.03 - r - 0.003))], metal))
+        out += studs("screw", "screw", [(0, 0.0065, 0.085), (0, 0.0065, 0.035)], r=0.0035, h=0.001, mat=metal, axis=(0, 1, 0), start=4)
+    return out
 
 
 @register("smoke_detector", parts=("base", "cover"), extra_parts=("light", "grille", "test_button", "vent"),
