@@ -195,7 +195,7 @@ def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial"),
+@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial", "horizon", "post"),
           size_range=(0.2, 1.1), density=250, variants=("desk", "floor", "cradle"), placement="surface")
 def globe(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -214,6 +214,17 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
                                                             (0.3 * np.cos(a), 0.3 * np.sin(a), 0.015)], 0.015, sections=10), wood))
         parts.append(make_part("base", "base", S.cylinder(0.1, 0.04, center=(0, 0, zr + 0.02), sections=24), wood))
         parts.append(make_part("stand", "stand", S.cylinder(0.02, 0.05, center=(0, 0, zr + 0.065), sections=12), wood))
+        # the wooden horizon ring round the sphere's equator, on a post rising from each leg
+        rh = R + 0.035
+        parts.append(make_part("horizon", "horizon", ring([(rh - 0.02, zc - 0.006), (rh, zc - 0.003), (rh, zc + 0.003),
+                                                           (rh - 0.02, zc + 0.006)], sections=24), wood))
+        rp = rh - 0.01
+        z_leg = zr - (zr - 0.015) * (rp - 0.08) / 0.22  # where the leg passes under the ring
+        for k in range(3):
+            a = np.pi / 2 + 2 * np.pi * k / 3
+            parts.append(make_part(f"post_{k}", "post", S.cylinder(0.008, zc - 0.006 - z_leg,
+                                                                   center=(rp * np.cos(a), rp * np.sin(a), (zc - 0.006 + z_leg) / 2),
+                                                                   sections=8), wood))
     elif variant == "cradle":  # the sphere sits in a low ring on short feet, no meridian
         zc = R * 0.75 + 0.03
         parts.append(make_part("base", "base", ring([(R * 0.6, 0.0), (R * 0.75, 0.0), (R * 0.75, 0.03), (R * 0.6, 0.03)]), wood))
