@@ -160,8 +160,7 @@ def _rz(a: float) -> np.ndarray:
     return np.array([[c, -s_, 0], [s_, c, 0], [0, 0, 1]])
 
 
-@register("toolbox", parts=("body", "handle"), extra_parts=("lid", "tray", "latch", "hinge", "foot", "divider", "hasp",
-                                                           "tray_handle"),
+@register("toolbox", parts=("body", "handle"), extra_parts=("lid", "tray", "latch", "hinge", "foot", "divider", "hasp"),
           size_range=(0.3, 0.62), density=500, variants=("metal", "plastic", "tote"), placement="floor")
 def toolbox(rng: np.random.Generator, variant: str) -> list:
     w, d = rng.uniform(0.4, 0.56), rng.uniform(0.2, 0.26)
@@ -210,11 +209,9 @@ def toolbox(rng: np.random.Generator, variant: str) -> list:
                                                             bevel=0.002), M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)))
     parts += hinge_parts("hinge", x=zl, y=-d / 2 - 0.005, z0=-w / 2 + 0.03, z1=w / 2 - 0.03, mat=dark, axis="x", radius=0.005,
                          length=0.04)
-    # the hasp for a padlock between the latches, and the bar across the lift-out tray to carry it by
+    # the hasp for a padlock between the latches
     steel = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
     parts.append(make_part("hasp", "hasp", S.box((0.02, 0.006, 0.03), center=(0, d / 2 + 0.003, zl), bevel=0.002), steel))
-    parts.append(make_part("tray_handle", "tray_handle", S.box((0.012, d - 2 * t - 0.002, 0.012), center=(0, 0, zl - 0.009), bevel=0.003),
-                           dark))
     parts += [revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR),
               mount("lid", "handle")]
     return parts
