@@ -13,8 +13,8 @@ from parse3d.pag.validate import validate_data
 
 SPLIT = {  # category: the labels its ``body`` covers now
     "plate": {"well", "rim", "foot_ring"},
-    "pillow": {"cover", "piping"},
-    "rug": {"field", "border"},
+    "pillow": {"cover", "piping", "tag", "zipper"},
+    "rug": {"field", "border", "medallion", "motif"},
 }
 
 

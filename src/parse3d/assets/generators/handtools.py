@@ -112,7 +112,7 @@ def pliers(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("paint_can", parts=("body", "lid"), extra_parts=("rim", "handle", "ear", "label", "bottom_rim", "spout"),
+@register("paint_can", parts=("body", "lid"), extra_parts=("rim", "handle", "ear", "label", "bottom_rim", "spout", "grip", "tab"),
           size_range=(0.1, 0.42), density=1300, variants=("gallon", "quart", "bucket"), placement="floor")
 def paint_can(rng: np.random.Generator, variant: str) -> list[Part]:
     tin = M.solid((0.75, 0.75, 0.77), "metal", 0.35, 0.85)
@@ -144,10 +144,23 @@ def paint_can(rng: np.random.Generator, variant: str) -> list[Part]:
     rr = r + 0.008
     arc = [(rr * np.cos(t), rr * np.sin(t), hz - 0.02 * np.sin(t)) for t in a]
     parts.append(make_part("handle", "handle", segments(arc, 0.0022, sections=6), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    # the plastic grip threaded on the bail at its middle
+    mid = np.asarray(arc[4], float)
+    parts.append(make_part("grip", "grip", S.cylinder(0.007, 0.07, center=tuple(mid), axis=(1, 0, 0), sections=10),
+                           M.solid((0.1, 0.1, 0.1), "plastic", 0.6)))
+    if variant == "bucket":  # the tamper-evident tabs round the lid's skirt
+        parts += [make_part(f"tab_{k}", "tab", S.box((0.03, 0.006, 0.016), center=(np.cos(a_) * (r + 0.009), np.sin(a_) * (r + 0.009),
+                                                                                   h - 0.002), R=_rz(a_ + np.pi / 2)), rim_mat)
+                  for k, a_ in enumerate(np.linspace(0, 2 * np.pi, 4, endpoint=False) + np.pi / 4)]
     return parts
 
 
-@register("toolbox", parts=("body", "handle"), extra_parts=("lid", "tray", "latch", "hinge", "foot", "divider"),
+def _rz(a: float) -> np.ndarray:
+    c, s_ = np.cos(a), np.sin(a)
+    return np.array([[c, -s_, 0], [s_, c, 0], [0, 0, 1]])
+
+
+@register("toolbox", parts=("body", "handle"), extra_parts=("lid", "tray", "latch", "hinge", "foot", "divider", "hasp"),
           size_range=(0.3, 0.62), density=500, variants=("metal", "plastic", "tote"), placement="floor")
 def toolbox(rng: np.random.Generator, variant: str) -> list:
     w, d = rng.uniform(0.4, 0.56), rng.uniform(0.2, 0.26)
@@ -196,6 +209,9 @@ def toolbox(rng: np.random.Generator, variant: str) -> list:
                                                             bevel=0.002), M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)))
     parts += hinge_parts("hinge", x=zl, y=-d / 2 - 0.005, z0=-w / 2 + 0.03, z1=w / 2 - 0.03, mat=dark, axis="x", radius=0.005,
                          length=0.04)
+    # the hasp for a padlock between the latches
+    steel = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
+    parts.append(make_part("hasp", "hasp", S.box((0.02, 0.006, 0.03), center=(0, d / 2 + 0.003, zl), bevel=0.002), steel))
     parts += [revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR),
               mount("lid", "handle")]
     return parts

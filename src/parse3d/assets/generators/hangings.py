@@ -91,7 +91,7 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("hanging_scroll", parts=("paper", "roller"), extra_parts=("border", "top_rod", "knob", "cord"),
+@register("hanging_scroll", parts=("paper", "roller"), extra_parts=("border", "top_rod", "knob", "cord", "futai", "seal", "eye"),
           size_range=(0.6, 2.2), density=300, variants=("vertical", "wide", "narrow"), placement="wall")
 def hanging_scroll(rng: np.random.Generator, variant: str) -> list[Part]:
     w = {"vertical": rng.uniform(0.4, 0.6), "wide": rng.uniform(0.8, 1.3), "narrow": rng.uniform(0.25, 0.35)}[variant]
@@ -120,4 +120,14 @@ def hanging_scroll(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("cord", "cord", [S.tube([(-w * 0.3, t + 0.004, zt - 0.004), (0, t + 0.004, zt + 0.12)], 0.0015, sections=6),
                                             S.tube([(w * 0.3, t + 0.004, zt - 0.004), (0, t + 0.004, zt + 0.12)], 0.0015, sections=6)],
                            M.solid((0.6, 0.5, 0.3), "fabric", 0.9)))
+    # the two hanging strips (futai) down from the top rod, the artist's red seal on the paper
+    # and the metal eyes the cord is tied to
+    fw = min(0.03, b * 0.5)
+    parts += [make_part(f"futai_{k}", "futai", S.box((fw, 0.0008, bt * 0.9), center=(sx * (w / 2 - b - (w - 2 * b) / 4), t + 0.0004,
+                                                                                    zt - bt * 0.45 - 0.012)), silk)
+              for k, sx in enumerate((-1, 1))]
+    parts.append(make_part("seal", "seal", S.box((0.025, 0.0006, 0.025), center=((w - 2 * b) * 0.3, t + 0.0003, z0 + bb + 0.06)),
+                           M.solid((0.75, 0.1, 0.08), "paper", 0.8)))
+    parts += [make_part(f"eye_{k}", "eye", S.cylinder(0.004, 0.006, center=(sx * w * 0.3, t + 0.004, zt + 0.001), sections=8),
+                        M.solid((0.8, 0.65, 0.3), "metal", 0.3, 0.9)) for k, sx in enumerate((-1, 1))]
     return parts

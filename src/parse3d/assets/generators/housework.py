@@ -26,7 +26,7 @@ def _sole_outline(L: float, W: float, n: int = 9) -> np.ndarray:
 
 
 @register("iron", parts=("soleplate", "body", "handle"),
-          extra_parts=("water_tank", "dial", "cord", "heel", "button", "dock"),
+          extra_parts=("water_tank", "dial", "cord", "heel", "button", "dock", "fill_cap", "nozzle", "light"),
           size_range=(0.18, 0.37), density=900, variants=("steam", "travel", "cordless"),
           placement="surface")
 def iron(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -68,6 +68,14 @@ def iron(rng: np.random.Generator, variant: str) -> list[Part]:
                                                           sections=10), M.plastic(rng)))
     heel = S.box((W * 0.8, 0.012, hb * 0.45), center=(0, -L / 2 + 0.004, z0 + ts + hb * 0.22), bevel=0.003)
     parts.append(make_part("heel", "heel", heel, shell_mat))
+    # the tank's fill cap under the handle's front, the spray nozzle at the nose and the
+    # heating light beside the dial
+    parts.append(make_part("fill_cap", "fill_cap", S.cylinder(0.009, 0.006, center=(0, L * 0.2, z0 + ts + hb * 0.5), axis=(0, 1, 0),
+                                                              sections=10), shell_mat))
+    parts.append(make_part("nozzle", "nozzle", S.cylinder(0.004, 0.01, center=(0, L * 0.27, z0 + ts + hb * 0.32), axis=(0, 1, 0),
+                                                          sections=8), black()))
+    parts.append(make_part("light", "light", S.cylinder(0.003, 0.003, center=(0.025, -L * 0.05, z0 + ts + hb * 0.55), sections=8),
+                           Material((0.9, 0.3, 0.1, 1.0), 0.2, 0.0, "plastic")))
     if variant != "cordless":
         cord = S.tube([(0, -L / 2 - 0.002, z0 + ts + hb * 0.35), (0, -L / 2 - 0.03, z0 + ts + hb * 0.3),
                        (0.01, -L / 2 - 0.06, 0.005)], 0.004, sections=8)

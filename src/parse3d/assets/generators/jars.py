@@ -15,7 +15,7 @@ from ..registry import register
 from ._household import ring
 
 
-@register("jar", parts=("body", "lid"), extra_parts=("band", "label", "knob", "clamp", "ear", "neck"),
+@register("jar", parts=("body", "lid"), extra_parts=("band", "label", "knob", "clamp", "ear", "neck", "gasket", "hinge", "foot_ring"),
           size_range=(0.08, 0.75), density=900, variants=("mason", "canister", "ceramic", "water"), placement="surface")
 def jar(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "mason":
@@ -55,8 +55,13 @@ def jar(rng: np.random.Generator, variant: str) -> list[Part]:
         lidm = M.wood(rng) if rng.random() < 0.5 else mat
         parts.append(make_part("lid", "lid", S.cylinder(r + 0.003, 0.02, center=(0, 0, h + 0.01), sections=24), lidm))
         parts.append(make_part("knob", "knob", S.ellipsoid((0.012, 0.012, 0.012), center=(0, 0, h + 0.026), subdivisions=1), lidm))
-        parts.append(make_part("clamp", "clamp", S.box((0.012, 0.006, 0.03), center=(0, r + 0.006, h)),
-                               M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)))
+        wire = M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)
+        parts.append(make_part("clamp", "clamp", S.box((0.012, 0.006, 0.03), center=(0, r + 0.006, h)), wire))
+        # the rubber seal showing between lid and rim, and the wire hinge at the back
+        parts.append(make_part("gasket", "gasket", ring([(r - 0.003, h + 0.001), (r + 0.001, h - 0.0005), (r + 0.005, h + 0.001),
+                                                         (r + 0.001, h + 0.0025)], sections=24), M.solid((0.9, 0.45, 0.15), "rubber", 0.6)))
+        parts.append(make_part("hinge", "hinge", S.cylinder(0.004, 0.03, center=(0, -r - 0.006, h + 0.004), axis=(1, 0, 0), sections=8),
+                               wire))
     else:  # a domed lid on the mouth, a knob on top
         hl = rn * (0.6 if variant == "ceramic" else 0.35)
         parts.append(make_part("lid", "lid", S.lathe([(0.001, h), (rn + 0.006, h), (rn + 0.006, h + 0.008), (rn * 0.7, h + hl * 0.7),
@@ -65,6 +70,9 @@ def jar(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         (0.001, h + hl + 0.018)], sections=12), mat))
         parts.append(make_part("neck", "neck", ring([(rn, h * 0.86), (rn + 0.004, h * 0.86), (rn + 0.004, h * 0.9), (rn, h * 0.9)],
                                                     sections=24), mat))
+        # the unglazed foot ring it stands on
+        parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.45, 0.0), (prof[0][0] + 0.002, 0.0),
+                                                               ((r * 0.45 + prof[0][0]) / 2, 0.004)], sections=24), mat))
         if variant == "water":  # two lug ears at the shoulder
             for k, sx in enumerate((-1, 1)):
                 parts.append(make_part(f"ear_{k}", "ear", S.box((0.04, 0.05, 0.03), center=(sx * (r * 0.88 + 0.015), 0, h * 0.75),

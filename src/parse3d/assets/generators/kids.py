@@ -2,7 +2,7 @@
 
 A picture book stands like ``book`` and shares its labels (``front_cover``, ``back_cover``,
 ``spine``, ``pages``), so the two can be candidates of one PAG object; a set of toy blocks is a small stack or scatter of cubes, each its own
-``block`` part.
+``block`` part with the painted ``letter`` on its front face.
 """
 
 from __future__ import annotations
@@ -16,7 +16,8 @@ from ..registry import register
 from ._kit import rot
 
 
-@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), size_range=(0.15, 0.36), density=650,
+@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=("title", "barcode"),
+          size_range=(0.15, 0.36), density=650,
           variants=("square", "landscape", "board_book"), placement="surface")
 def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
     """Standing upright like ``book`` (same labels and frame): front cover at +Y, spine at -X."""
@@ -30,10 +31,16 @@ def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("back_cover", "back_cover", S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2)), art),
             make_part("spine", "spine", S.box((c, t, h), center=(-w / 2 + c / 2, 0, h / 2)), art),
             make_part("pages", "pages", S.box((w - c - 0.003, t - 2 * c, h - 0.006), center=(-w / 2 + c + (w - c - 0.003) / 2, 0, h / 2)),
-                      pages)]
+                      pages),
+            # the title printed down the spine and the barcode on the back cover
+            make_part("title", "title", S.box((0.0004, t * 0.6, h * 0.5), center=(-w / 2 - 0.0002, 0, h * 0.5)),
+                      M.solid((0.95, 0.95, 0.9), "paper", 0.6)),
+            make_part("barcode", "barcode", S.box((w * 0.25, 0.0004, h * 0.1), center=(w * 0.25, -t / 2 - 0.0002, h * 0.1)),
+                      M.solid((0.98, 0.98, 0.98), "paper", 0.6))]
 
 
-@register("toy_blocks", parts=("block",), size_range=(0.08, 0.4), density=600, variants=("tower", "scatter", "pyramid"),
+@register("toy_blocks", parts=("block",), extra_parts=("letter",), size_range=(0.08, 0.4), density=600,
+          variants=("tower", "scatter", "pyramid"),
           placement="surface")
 def toy_blocks(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.035, 0.05)
@@ -51,5 +58,13 @@ def toy_blocks(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(int(rng.integers(5, 10))):
             x, y = rng.uniform(-0.15, 0.15, 2)
             centres.append((x + (k % 3) * 0.001, y, s / 2, rng.uniform(0, np.pi / 2)))
-    return [make_part(f"block_{k}", "block", S.box((s, s, s), center=c[:3], bevel=0.002, R=rot((0, 0, 1), c[3])),
-                      M.solid(M.jitter(rng, cols[k % 5], 0.02)[:3], "wood", 0.6)) for k, c in enumerate(centres)]
+    blocks = [make_part(f"block_{k}", "block", S.box((s, s, s), center=c[:3], bevel=0.002, R=rot((0, 0, 1), c[3])),
+                        M.solid(M.jitter(rng, cols[k % 5], 0.02)[:3], "wood", 0.6)) for k, c in enumerate(centres)]
+    # each block's painted letter, raised a little on the face turned to the front
+    ink = M.solid((0.97, 0.97, 0.95), "plastic", 0.5)
+    letters = []
+    for k, c in enumerate(centres):
+        R = rot((0, 0, 1), c[3])
+        centre = np.asarray(c[:3]) + R @ np.array([0.0, s / 2 + 0.0004, 0.0])
+        letters.append(make_part(f"letter_{k}", "letter", S.box((s * 0.55, 0.0008, s * 0.55), center=centre, R=R), ink))
+    return blocks + letters

@@ -116,7 +116,7 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel"),
+@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail"),
           size_range=(1.4, 3.3), density=600, variants=("straight", "l_shaped"))
 def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(1.4, 2.6), rng.uniform(0.45, 0.6), rng.uniform(1.02, 1.1)
@@ -158,14 +158,23 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
         top_ret = S.box((xb - xr, ym - y0, top_t), center=((xr + xb) / 2, (y0 + ym) / 2, h - top_t / 2))
         main_top = S.Shape(mesh, main_top.pieces + top_ret.pieces)
     parts.insert(0, make_part("countertop", "countertop", main_top, top_mat))
-    rail = [S.tube(rail_path, 0.025, sections=12)]
-    for p, (dx, dy) in supports:
-        rail.append(S.tube([p, (p[0] + dx, p[1] + dy, rz + 0.04)], 0.012, sections=8))
-    parts.append(make_part("foot_rail", "foot_rail", rail, steel))
+    parts.append(make_part("foot_rail", "foot_rail", S.tube(rail_path, 0.025, sections=12), steel))
+    # the brackets holding the foot rail off the customer wall, each its own
+    parts += [make_part(f"bracket_{k}", "bracket", S.tube([p, (p[0] + dx, p[1] + dy, rz + 0.04)], 0.012, sections=8), steel)
+              for k, (p, (dx, dy)) in enumerate(supports)]
+    # corbels under the top's overhang on the customer side, and the bartender's speed rail of
+    # bottles hung on the inside of the customer wall
+    parts += [make_part(f"corbel_{k}", "corbel", S.prism([(0, 0), (oh - 0.03, 0), (0, -0.2)], 0, 0.03).apply(
+        np.array([[0, 0, 1, x - 0.015], [1, 0, 0, d / 2], [0, 1, 0, zb], [0, 0, 0, 1.0]])), mat)
+              for k, x in enumerate(np.linspace(-w / 2 + 0.2, w / 2 - 0.2, 3))]
+    parts.append(make_part("speed_rail", "speed_rail", [S.box((w * 0.5, 0.1, 0.006), center=(-w * 0.2, d / 2 - t - 0.05, zb * 0.6)),
+                                                        S.box((w * 0.5, 0.006, 0.06), center=(-w * 0.2, d / 2 - t - 0.1, zb * 0.6 + 0.027))],
+                           steel))
     return parts
 
 
-@register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge"),
+@register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
+                                                                     "thermostat"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -218,6 +227,11 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     crisper = S.union([S.box((iw - 0.02, y1 - y0 - 0.02, 0.006), center=(x_mid, (y0 + y1) / 2, z_lo + 0.003)),
                        S.box((iw - 0.02, 0.01, 0.16), center=(x_mid, y1 - 0.015, z_lo + 0.08))])
     parts.append(make_part("drawer", "drawer", crisper, liner))
+    # the lamp and the thermostat dial in the top of the fresh-food compartment
+    parts.append(make_part("light", "light", S.box((0.08, 0.04, 0.012), center=(x_mid, y0 + 0.08, z_hi - 0.006)),
+                           M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
+    parts.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(x_mid + iw * 0.25, y0 + 0.1, z_hi - 0.006),
+                                                                  sections=12), liner))
     return parts
 
 
@@ -278,7 +292,8 @@ def stove(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("washing_machine", parts=("body", "door"), extra_parts=("control_panel", "knob", "window", "drawer",
-                                                                   "display", "foot", "hinge"),
+                                                                   "display", "foot", "hinge", "button", "gasket", "filter_cover",
+                                                                   "handle"),
           size_range=(0.8, 1.0), density=250, variants=("front_loader", "top_loader"))
 def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.58, 0.62), rng.uniform(0.52, 0.64), rng.uniform(0.82, 0.88)
@@ -308,6 +323,16 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts += [make_part("hinge", "hinge", S.box((0.03, 0.03, 0.08), center=(xh, yf + 0.012, zc)), trim),
                   revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(xh, yf, zc), opens=OPEN_DOOR),
                   mount("door", "window")]
+        # the rubber boot sealing the drum's mouth round the porthole, the door's pull, the pump
+        # filter's flap low on the front, and the programme buttons beside the display
+        parts.append(make_part("gasket", "gasket", S.cylinder(r - 0.005, 0.004, center=(0, yf + 0.002, zc), axis=(0, 1, 0), sections=24),
+                               M.solid((0.25, 0.25, 0.27), "rubber", 0.8)))
+        parts.append(make_part("handle", "handle", S.box((0.03, 0.025, 0.09), center=(r + 0.02, yf + 0.035, zc), bevel=0.005), trim))
+        parts.append(mount("door", "handle"))
+        parts.append(make_part("filter_cover", "filter_cover", S.box((0.12, 0.006, 0.1), center=(w / 2 - 0.1, yf + 0.003, 0.09),
+                                                                      bevel=0.003), enamel))
+        parts += [make_part(f"button_{k}", "button", S.box((0.018, 0.008, 0.012), center=(0.1 + 0.025 * k, yf + 0.012, h - 0.07)),
+                            black()) for k in range(3)]
     else:
         console = S.box((w, 0.11, 0.12), center=(0, -d / 2 + 0.055, h + 0.06 - 0.01), bevel=0.01)
         parts.append(make_part("control_panel", "control_panel", console, enamel))
@@ -321,4 +346,10 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         yh = 0.04 - (d - 0.16) / 2  # the lid lifts on its back edge, against the console
         parts += [revolute("door_hinge", "body", "door", axis=(1, 0, 0), origin=(0, yh, h), opens=np.pi / 2),
                   mount("door", "window")]
+        # the lid's finger pull at its front edge and the programme buttons on the console
+        parts.append(make_part("handle", "handle", S.box((0.12, 0.015, 0.012), center=(0, 0.04 + (d - 0.16) / 2 + 0.0075, h + 0.014)),
+                               trim))
+        parts.append(mount("door", "handle"))
+        parts += [make_part(f"button_{k}", "button", S.box((0.018, 0.008, 0.012), center=(-w / 2 + 0.08 + 0.025 * k, -d / 2 + 0.114, h + 0.06)),
+                            black()) for k in range(3)]
     return parts

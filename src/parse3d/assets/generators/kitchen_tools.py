@@ -69,7 +69,7 @@ def knife_block(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cutting_board", parts=("board",), extra_parts=("handle", "groove", "foot"),
+@register("cutting_board", parts=("board",), extra_parts=("handle", "groove", "foot", "hang_hole", "strap"),
           size_range=(0.2, 0.55), density=700, variants=("rectangular", "paddle", "round"),
           placement="surface")
 def cutting_board(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -109,7 +109,23 @@ def cutting_board(rng: np.random.Generator, variant: str) -> list[Part]:
                                     sections=32), wood))
     if feet:
         parts += feet4("foot", w=w, d=d, r=0.012, h=z0 + 0.001, mat=black(), inset=0.02)
+    if variant != "rectangular":
+        # a hole near the end (in the paddle's handle) with a leather strap looped through it
+        hx = (w / 2 + _beyond_board(parts) * 0.6) if variant == "paddle" else (w / 2 - 0.012)
+        rh = 0.008 if variant == "paddle" else 0.005
+        parts.append(make_part("hang_hole", "hang_hole", S.cylinder(rh, t + 0.0004, center=(hx, 0, z0 + t / 2), sections=12),
+                               M.solid((0.05, 0.05, 0.05), "wood", 0.9)))
+        parts.append(make_part("strap", "strap", S.tube([(hx - rh * 0.5, -rh * 0.75, z0 + t + 0.002), (hx + 0.03, 0, z0 + t + 0.002),
+                                                         (hx - rh * 0.5, rh * 0.75, z0 + t + 0.002)], 0.003, sections=6),
+                               M.solid((0.45, 0.28, 0.15), "leather", 0.6)))
     return parts
+
+
+def _beyond_board(parts: list[Part]) -> float:
+    """The length of a paddle's handle beyond its board, read from the handle part."""
+    h = next(p for p in parts if p.label == "handle")
+    b = next(p for p in parts if p.label == "board")
+    return float(h.bounds[1, 0] - b.bounds[1, 0])
 
 
 @register("stand_mixer", parts=("base", "column", "head", "bowl"),
@@ -182,7 +198,7 @@ def stand_mixer(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("thermos", parts=("body", "cup"), extra_parts=("stopper", "band", "handle", "foot"),
+@register("thermos", parts=("body", "cup"), extra_parts=("stopper", "band", "handle", "foot", "seal", "label"),
           size_range=(0.18, 0.42), density=600, variants=("classic", "slim", "handled"),
           placement="surface")
 def thermos(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -210,6 +226,14 @@ def thermos(rng: np.random.Generator, variant: str) -> list[Part]:
         path = [(0, -r + 0.002, zf + h * 0.7), (0, -r - 0.03, zf + h * 0.66),
                 (0, -r - 0.03, zf + h * 0.3), (0, -r + 0.002, zf + h * 0.25)]
         parts.append(make_part("handle", "handle", S.tube(path, 0.007, sections=8), black()))
+    # the silicone seal ring showing under the cup's rim and the printed label on the body
+    # (triangular and sloped sections: no flat annulus, the costliest surface to resolve)
+    zs = zt - ch * 0.55
+    parts.append(make_part("seal", "seal", ring([(r * 0.99, zs - 0.004), (r * 1.025, zs - 0.002), (r * 0.99, zs)], sections=24),
+                           black("rubber")))
+    parts.append(make_part("label", "label", ring([(r - 0.0005, zf + h * 0.55), (r + 0.0008, zf + h * 0.55 + 0.002),
+                                                   (r + 0.0008, zf + h * 0.68 - 0.002), (r - 0.0005, zf + h * 0.68)], sections=24),
+                           M.solid((0.95, 0.95, 0.92), "paper", 0.6)))
     return parts
 
 

@@ -14,7 +14,8 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._household import arc, loop_handle, shell
+from ._detail_b import studs
+from ._household import arc, loop_handle, ring, shell
 
 
 def _cookware_metal(rng: np.random.Generator, variant: str) -> Material:
@@ -36,7 +37,7 @@ def _knob(z: float, *, r: float = 0.016, h: float = 0.022) -> S.Shape:
                    sections=16)
 
 
-@register("cooking_pot", parts=("body", "lid", "handle"), extra_parts=("lid_knob",),
+@register("cooking_pot", parts=("body", "lid", "handle"), extra_parts=("lid_knob", "rivet", "base", "vent"),
           size_range=(0.2, 0.45), density=2500,
           variants=("stock", "casserole", "dutch_oven"), placement="surface")
 def cooking_pot(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -60,10 +61,20 @@ def cooking_pot(rng: np.random.Generator, variant: str) -> list[Part]:
             shape = loop_handle(root, (sx, 0, 0), reach=rng.uniform(0.03, 0.045),
                                 width=rng.uniform(0.06, 0.09), thick=0.006 if t > 0.004 else 0.005)
         parts.append(make_part(f"handle_{i}", "handle", shape, mat))
+        # two rivets hold each handle to the wall, their heads inside the pot
+        parts += studs("rivet", "rivet", [(sx * (r - t - 0.001), y, zh) for y in (-0.02, 0.02)], r=0.004, h=0.002, mat=mat,
+                       axis=(1, 0, 0), sections=8, start=2 * i)
+    # the bonded base disc under a steel pot and the steam vent in the lid
+    if variant != "dutch_oven":
+        parts.append(make_part("base", "base", S.cylinder(r * 0.85, 0.003, center=(0, 0, 0.0015), sections=24),
+                               M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
+    parts.append(make_part("vent", "vent", S.cylinder(0.004, 0.003, center=(r * 0.5, 0, h + dome * 0.55), sections=8),
+                           M.solid((0.05, 0.05, 0.05), "metal", 0.8)))
     return parts
 
 
-@register("frying_pan", parts=("body", "handle"), extra_parts=("grip",), size_range=(0.3, 0.62),
+@register("frying_pan", parts=("body", "handle"), extra_parts=("grip", "rivet", "hang_hole", "base", "spout"),
+          size_range=(0.3, 0.62),
           density=2500, variants=("nonstick", "cast_iron", "wok"), placement="surface")
 def frying_pan(rng: np.random.Generator, variant: str) -> list[Part]:
     """The handle points along +X (the pan's right), rising slightly from the rim."""
@@ -94,6 +105,17 @@ def frying_pan(rng: np.random.Generator, variant: str) -> list[Part]:
                              width=0.05, thick=0.006)
         parts.append(make_part("handle_1", "handle", helper, mat))
         parts[1].name = "handle_0"
+        # the two pouring lips cast into the rim
+        parts += [make_part(f"spout_{k}", "spout", S.box((0.03, 0.012, 0.006), center=(0, sy * (r + 0.003), h - 0.003)), mat)
+                  for k, sy in enumerate((-1, 1))]
+    else:  # riveted handle, a hole in the grip's end to hang it by, the induction base disc
+        parts += studs("rivet", "rivet", [(r - t - 0.001, 0, z0 + dz) for dz in (-0.006, 0.006)], r=0.0045, h=0.002, mat=mat,
+                       axis=(1, 0, 0), sections=8)
+        parts.append(make_part("hang_hole", "hang_hole", S.cylinder(0.005, thick * 2.7 + 0.0004, center=path[-1] - d * 0.02,
+                                                                    axis=(0, 0, 1), sections=10),
+                               M.solid((0.05, 0.05, 0.05), "metal", 0.8)))
+        parts.append(make_part("base", "base", S.cylinder(prof[0][0] * 0.92, 0.002, center=(0, 0, 0.001), sections=24),
+                               M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
     return parts
 
 
@@ -106,7 +128,8 @@ def _spout(base, *, length: float, rise: float, r0: float, r1: float) -> list[S.
             for a, b, p, q in zip(t[:-1], t[1:], path[:-1], path[1:], strict=True)]
 
 
-@register("kettle", parts=("body", "spout", "handle"), extra_parts=("lid", "lid_knob", "base"),
+@register("kettle", parts=("body", "spout", "handle"), extra_parts=("lid", "lid_knob", "base", "whistle", "pivot", "switch",
+                                                                  "window", "lid_button", "cord"),
           size_range=(0.16, 0.34), density=1500, variants=("stovetop", "electric"),
           placement="surface")
 def kettle(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -147,10 +170,29 @@ def kettle(rng: np.random.Generator, variant: str) -> list[Part]:
         spout = _spout((0, r * 0.8, zt - 0.03), length=0.035, rise=0.02, r0=0.016, r1=0.012)
     parts.append(make_part("handle", "handle", handle, M.plastic(rng) if variant == "stovetop" else mat))
     parts.append(make_part("spout", "spout", spout, mat))
+    dark = M.solid((0.08, 0.08, 0.08), "plastic", 0.5)
+    if variant == "stovetop":
+        # the whistle cap on the spout's tip and the two pivots the handle swings on
+        tip = np.array([0, r * 0.75 + r * 0.75, h * 0.35 + h * 0.45])
+        parts.append(make_part("whistle", "whistle", S.cylinder(0.011, 0.02, center=tuple(tip + (0, -0.008, 0.006)), axis=(0, 0, 1),
+                                                                sections=10), dark))
+        parts += studs("pivot", "pivot", [(0, sy * span, zc) for sy in (-1, 1)], r=0.01, h=0.012, mat=mat, axis=(0, 1, 0))
+    else:
+        # the on switch at the handle's foot, the water gauge window, the lid's release button and
+        # the cord leaving the base
+        parts.append(make_part("switch", "switch", S.box((0.02, 0.025, 0.012), center=(0, -(r * 0.92) - 0.04, 0.02 + h * 0.2)), dark))
+        parts.append(make_part("window", "window", S.box((0.02, 0.004, h * 0.5), center=(r * 0.7, r * 0.7, 0.02 + h * 0.4),
+                                                         R=np.array([[np.cos(np.pi / 4), -np.sin(np.pi / 4), 0],
+                                                                     [np.sin(np.pi / 4), np.cos(np.pi / 4), 0], [0, 0, 1]])),
+                               M.glass(rng)))
+        parts.append(make_part("lid_button", "lid_button", S.box((0.02, 0.02, 0.008), center=(0, -(r * 0.92) - 0.02, zt + 0.004)),
+                               dark))
+        parts.append(make_part("cord", "cord", S.tube([(-r * 1.1, 0, 0.008), (-r * 1.1 - 0.04, 0.02, 0.005), (-r * 1.1 - 0.06, 0.06, 0.005)],
+                                                      0.003, sections=6), dark))
     return parts
 
 
-@register("teapot", parts=("body", "spout", "handle", "lid"), extra_parts=("lid_knob",),
+@register("teapot", parts=("body", "spout", "handle", "lid"), extra_parts=("lid_knob", "foot_ring", "vent"),
           size_range=(0.14, 0.34), density=1800, variants=("round", "tall", "squat"),
           placement="surface")
 def teapot(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -172,4 +214,9 @@ def teapot(rng: np.random.Generator, variant: str) -> list[Part]:
     handle = loop_handle((0, -(r * 0.9), h * 0.52), (0, -1, 0), reach=r * rng.uniform(0.45, 0.6),
                          width=h * 0.5, thick=0.007, z_up=True)
     parts.append(make_part("handle", "handle", handle, mat))
+    # the unglazed foot ring it stands on and the steam hole in the lid
+    parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.5, 0.0), (r * 0.63, 0.0), (r * 0.56, 0.004)],
+                                                          sections=24), mat))
+    parts.append(make_part("vent", "vent", S.cylinder(0.0025, 0.003, center=(rl * 0.7, 0, h + 0.008 + 0.0), sections=8),
+                           M.solid((0.05, 0.05, 0.05), "plastic", 0.8)))
     return parts

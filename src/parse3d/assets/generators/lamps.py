@@ -15,6 +15,7 @@ from ...geometry.frames import rot_x
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 
 __all__ = ["shell", "shade_material", "bulb_material"]
 
@@ -145,6 +146,26 @@ def _harp(z_socket: float, z_top: float, mat: Material) -> list[Part]:
             make_part("finial", "finial", finial, mat)]
 
 
+def _shade_fittings(shade: Part, metal: Material) -> list[Part]:
+    """The bound ``trim`` band round a drum shade's bottom edge and the wire ``spider`` fitter
+    across its top that rests on the harp."""
+    v = np.asarray(shade.mesh.vertices, float)
+    r = np.hypot(v[:, 0], v[:, 1])
+    z0, z1 = float(v[:, 2].min()), float(v[:, 2].max())
+    r0, r1 = float(r[v[:, 2] < z0 + 1e-6].max()), float(r[v[:, 2] > z1 - 1e-6].max())
+    band = 0.008
+    trim = Material(tuple(min(1.0, c * 0.8) for c in shade.material.color[:3]) + (1.0,), 0.8, 0.0, "fabric")
+    # a triangular section (no flat annulus: the costliest surface to resolve)
+    rb = r0 - (r0 - r1) * band / (z1 - z0)
+    out = [make_part("trim_0", "trim", ring([(r0 - 0.001, z0), (r0 + 0.0025, z0 + band * 0.5), (rb - 0.001, z0 + band)], sections=24),
+                     trim)]
+    zs = z1 - 0.004
+    out.append(make_part("spider", "spider", [S.tube([[0, 0, zs], [np.cos(a) * (r1 - 0.004), np.sin(a) * (r1 - 0.004), zs]], 0.0015,
+                                                     sections=6) for a in (np.pi / 2, np.pi / 2 + 2 * np.pi / 3, np.pi / 2 + 4 * np.pi / 3)],
+                         metal))
+    return out
+
+
 def _straight(rng, metal: Material, shade_mat: Material) -> list[Part]:
     r_b, h_b = rng.uniform(0.12, 0.17), rng.uniform(0.025, 0.04)
     base = S.lathe([(r_b, 0.0), (r_b, h_b * 0.5), (r_b * 0.75, h_b), (0.03, h_b + 0.012)], sections=28)
@@ -155,7 +176,7 @@ def _straight(rng, metal: Material, shade_mat: Material) -> list[Part]:
     shade = _drum_shade(rng, r_s, h_s, z_s, shade_mat)
     return [make_part("base", "base", base, metal), make_part("pole", "pole", pole, metal),
             _socket(0, 0, top, 0.05, metal), _bulb(0, 0, top + 0.05, 0.03), shade,
-            *_harp(top, z_s + h_s, metal)]
+            *_harp(top, z_s + h_s, metal), *_shade_fittings(shade, metal)]
 
 
 def _arc(rng, metal: Material, shade_mat: Material) -> list[Part]:
@@ -184,9 +205,13 @@ def _arc(rng, metal: Material, shade_mat: Material) -> list[Part]:
     shade = _hood(prof, rng.uniform(0.003, 0.004), (0, end[1], top))
     sock = _socket(0, end[1], top - 0.05 - 0.003, 0.05, metal)
     bulb = S.ellipsoid((0.03, 0.03, 0.038), center=(0, end[1], top - 0.09), subdivisions=1)
+    # the collar joining the pole to its base and the in-line dimmer on the pole
     return [make_part("base", "base", base, base_mat), make_part("pole", "pole", pole, metal),
             make_part("shade", "shade", shade, shade_mat), sock,
-            make_part("bulb", "bulb", bulb, bulb_material())]
+            make_part("bulb", "bulb", bulb, bulb_material()),
+            make_part("collar", "collar", S.cylinder(r_pole * 2.2, 0.03, center=(0, 0, h_b + 0.015), sections=12), metal),
+            make_part("switch", "switch", S.box((0.03, 0.02, 0.05), center=(0, 0.0, 0.8), bevel=0.005),
+                      Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.0, "plastic"))]
 
 
 def _tripod(rng, shade_mat: Material) -> list[Part]:
@@ -206,12 +231,14 @@ def _tripod(rng, shade_mat: Material) -> list[Part]:
     r_s, h_s = rng.uniform(0.2, 0.26), rng.uniform(0.26, 0.36)
     z_s = top + 0.05 - h_s * 0.45
     metal = M.metal(rng)
+    shade = _drum_shade(rng, r_s, h_s, z_s, shade_mat)
     return [make_part("base", "base", legs + pads, wood), make_part("pole", "pole", pole, wood),
             _socket(0, 0, top, 0.05, metal), _bulb(0, 0, top + 0.05, 0.03),
-            _drum_shade(rng, r_s, h_s, z_s, shade_mat), *_harp(top, z_s + h_s, metal)]
+            shade, *_harp(top, z_s + h_s, metal), *_shade_fittings(shade, metal)]
 
 
-@register("floor_lamp", parts=("base", "pole", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial"),
+@register("floor_lamp", parts=("base", "pole", "shade"),
+          extra_parts=("bulb", "socket", "switch", "harp", "finial", "trim", "spider", "collar"),
           size_range=(1.2, 2.1), density=700, variants=("straight", "arc", "tripod"))
 def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     shade_mat = shade_material(rng)
@@ -222,7 +249,7 @@ def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     return _straight(rng, M.metal(rng), shade_mat)
 
 
-@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial"),
+@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial", "trim", "spider"),
           size_range=(0.3, 0.8), density=900, variants=("vase", "column", "candlestick"),
           placement="surface")
 def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -254,12 +281,13 @@ def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     h_s = r_s * rng.uniform(0.9, 1.3)
     z_s = top + 0.05 - h_s * 0.45
     shade_mat = shade_material(rng)
+    shade = _drum_shade(rng, r_s, h_s, z_s, shade_mat)
     return [make_part("base", "base", base, base_mat), make_part("stem", "stem", stem, metal),
             _socket(0, 0, top, 0.04, metal), _bulb(0, 0, top + 0.04, 0.026),
-            _drum_shade(rng, r_s, h_s, z_s, shade_mat), *_harp(top, z_s + h_s, metal)]
+            shade, *_harp(top, z_s + h_s, metal), *_shade_fittings(shade, metal)]
 
 
-@register("pendant_lamp", parts=("cord", "shade"), extra_parts=("canopy", "socket", "bulb"),
+@register("pendant_lamp", parts=("cord", "shade"), extra_parts=("canopy", "socket", "bulb", "cord_grip", "screw"),
           size_range=(0.4, 1.45), density=800, variants=("dome", "cylinder", "globe"),
           placement="ceiling")
 def pendant_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -271,6 +299,11 @@ def pendant_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     cord = S.cylinder(0.003, cord_len, center=(0, 0, z_cord + cord_len / 2), sections=8)
     parts = [make_part("canopy", "canopy", canopy, metal),
              make_part("cord", "cord", cord, M.solid((0.1, 0.1, 0.1), "plastic"))]
+    # the strain-relief grip where the cord leaves the canopy and the two set screws holding the
+    # canopy on its ceiling plate
+    parts.append(make_part("cord_grip", "cord_grip", S.cylinder(0.008, 0.02, center=(0, 0, -h_c - 0.01), sections=10), metal))
+    parts += [make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.006, center=(sx * (r_c * 0.925 + 0.002), 0, -h_c * 0.5),
+                                                          axis=(1, 0, 0), sections=8), metal) for k, sx in enumerate((-1, 1))]
     if variant == "globe":
         r = rng.uniform(0.1, 0.18)
         collar = S.cylinder(0.03, 0.03, center=(0, 0, z_cord - 0.015), sections=14)

@@ -16,7 +16,8 @@ from ..registry import register
 from ._casework import black
 
 
-@register("ironing_board", parts=("board", "leg"), extra_parts=("iron_rest", "foot", "cover"), size_range=(1.0, 1.55),
+@register("ironing_board", parts=("board", "leg"), extra_parts=("iron_rest", "foot", "cover", "pivot", "lever", "bracket",
+                                                                "cord_holder"), size_range=(1.0, 1.55),
           density=500, variants=("standard", "wide", "tabletop"))
 def ironing_board(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.1, 1.4) if variant != "tabletop" else rng.uniform(1.0, 1.1)
@@ -36,6 +37,16 @@ def ironing_board(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"leg_{2 * i + j}", "leg", S.tube([(xb, y, r), (xt, y, h - 0.03)], r, sections=8), steel))
         parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.014, W - 0.06 - 0.04 * i, center=(xb, 0, 0.014), axis=(0, 1, 0),
                                                                sections=10), black()))
+    # the rivet the two leg frames cross on (each side), the brackets under the board the legs
+    # hang in, the height lever at the leg's top and the cord holder clipped to the board's edge
+    zc = r + (h - 0.03 - r) * 0.5
+    parts += [make_part(f"pivot_{j}", "pivot", S.cylinder(0.01, 0.05, center=(a, sy * (W / 2 - 0.06), zc), axis=(0, 1, 0), sections=10),
+                        steel) for j, sy in enumerate((-1, 1))]
+    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.08, W * 0.8, 0.012), center=(x, 0, h - 0.031)), steel)
+              for k, x in enumerate((a + L * 0.1, a - L * 0.1))]
+    parts.append(make_part("lever", "lever", S.box((0.1, 0.02, 0.012), center=(a - L * 0.1 - 0.09, 0, h - 0.045), bevel=0.003), black()))
+    parts.append(make_part("cord_holder", "cord_holder", S.tube([(L * 0.05, W / 2 - 0.01, h - 0.025), (L * 0.05, W / 2 + 0.02, h + 0.1),
+                                                                  (L * 0.05 - 0.04, W / 2 + 0.02, h + 0.16)], 0.003, sections=6), steel))
     return parts
 
 
@@ -100,7 +111,8 @@ def _rot_y(a: float) -> np.ndarray:
     return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
 
 
-@register("clothes_hanger", parts=("hook", "bar"), extra_parts=("crossbar",), size_range=(0.3, 0.48), density=700,
+@register("clothes_hanger", parts=("hook", "bar"), extra_parts=("crossbar", "neck", "twist", "strap_hook"), size_range=(0.3, 0.48),
+          density=700,
           variants=("wooden", "wire", "plastic"), placement="inside")
 def clothes_hanger(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.38, 0.45)
@@ -110,12 +122,23 @@ def clothes_hanger(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "wooden":
         parts.append(make_part("crossbar", "crossbar", S.cylinder(0.005, w * 0.8, center=(0, 0, -0.07 - 0.15), axis=(1, 0, 0),
                                                                   sections=8), mat))
-        parts.append(make_part("crossbar_post", "crossbar", [S.box((0.012, 0.012, 0.11), center=(s * w * 0.42, 0, -0.07 - 0.1))
-                                                             for s in (-1, 1)], mat))
+        parts += [make_part("crossbar_post" if k == 0 else f"crossbar_post_{k}", "crossbar",
+                            S.box((0.012, 0.012, 0.11), center=(s * w * 0.42, 0, -0.07 - 0.1)), mat) for k, s in enumerate((-1, 1))]
+    steel = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
+    if variant == "wire":  # the wire twisted round itself under the hook
+        parts.append(make_part("twist", "twist", S.cylinder(0.0045, 0.025, center=(0, 0, -0.07 - 0.0125 + 0.012), sections=8), steel))
+    else:  # the ferrule where the hook screws into the bar
+        parts.append(make_part("neck", "neck", S.cylinder(0.006, 0.016, center=(0, 0, -0.07 + 0.002), sections=8), steel))
+    if variant == "plastic":  # the little hooks on the shoulders for straps
+        for k, sx in enumerate((-1, 1)):
+            x = sx * w * 0.3
+            z = -0.07 - 0.04 - np.tan(0.35) * (abs(x) - w / 4) + 0.0125  # the shoulder's top there
+            parts.append(make_part(f"strap_hook_{k}", "strap_hook", S.box((0.006, 0.01, 0.018), center=(x, 0, z + 0.008)), mat))
     return parts
 
 
-@register("hanging_clothes", parts=("garment", "hook"), extra_parts=("bar", "sleeve", "collar", "button"),
+@register("hanging_clothes", parts=("garment", "hook"), extra_parts=("bar", "sleeve", "collar", "button", "strap", "sash", "pocket",
+                                                                   "cuff"),
           size_range=(0.5, 1.3), density=150, variants=("shirt", "coat", "dress"), placement="inside")
 def hanging_clothes(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.4, 0.46)
@@ -131,6 +154,17 @@ def hanging_clothes(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         body = S.box((w * 0.95, 2 * th, L), center=(0, 0, zt - L / 2), bevel=0.01)
     parts.append(make_part("garment", "garment", body, cloth))
+    if variant == "dress":  # its shoulder straps over the bar, and the sash at the waist
+        parts += [make_part(f"strap_{k}", "strap", S.box((0.025, 2 * th + 0.004, 0.05), center=(sx * w * 0.3, 0, zt + 0.015)), cloth)
+                  for k, sx in enumerate((-1, 1))]
+        zw = zt - L * 0.3
+        ww = w * 0.42 + (w * 0.7 - w * 0.42) * 0.3
+        parts.append(make_part("sash", "sash", S.box((2 * ww + 0.006, 2 * th + 0.006, 0.05), center=(0, 0, zw)), M.fabric(rng)))
+    else:  # a breast pocket on the front, and a cuff at each sleeve's end
+        parts.append(make_part("pocket", "pocket", S.box((0.1, 0.004, 0.12), center=(-w * 0.2, th + 0.002, zt - 0.2)), cloth))
+        for i, sx in enumerate((-1, 1)):
+            c = np.array([sx * (w * 0.475 + 0.06), 0, zt - 0.03 - L * 0.375]) + _rot_y(sx * 0.08) @ np.array([0, 0, -L * 0.375 + 0.03])
+            parts.append(make_part(f"cuff_{i}", "cuff", S.box((0.13, 2 * th * 0.85, 0.06), center=c, R=_rot_y(sx * 0.08)), cloth))
     if variant != "dress":
         for i, s in enumerate((-1, 1)):
             sl = S.box((0.12, 2 * th * 0.8, L * 0.75), center=(s * (w * 0.475 + 0.06), 0, zt - 0.03 - L * 0.375), R=_rot_y(s * 0.08))
@@ -158,7 +192,7 @@ def _shoe(x: float, L: float, W: float, *, kind: str, upper_mat, sole_mat):
     return sole, upper, laces
 
 
-@register("shoes", parts=("sole", "upper"), extra_parts=("laces", "heel"), size_range=(0.2, 0.35), density=300,
+@register("shoes", parts=("sole", "upper"), extra_parts=("laces", "heel", "tongue", "heel_tab", "toe_cap", "heel_tip"), size_range=(0.2, 0.35), density=300,
           variants=("sneakers", "boots", "heels"), placement="floor")
 def shoes(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.24, 0.31)
@@ -173,6 +207,16 @@ def shoes(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"upper_{i}", "upper", upper, up))
         if variant == "heels":
             parts.append(make_part(f"heel_{i}", "heel", S.box((0.015, 0.015, 0.07), center=(x, -L * 0.43, 0.035 + 0.02)), black()))
+            # the hard tip under the heel's end
+            parts.append(make_part(f"heel_tip_{i}", "heel_tip", S.box((0.017, 0.017, 0.008), center=(x, -L * 0.43, 0.02 + 0.004)),
+                                   M.solid((0.2, 0.2, 0.2), "rubber", 0.8)))
         else:
             parts.append(make_part(f"laces_{i}", "laces", laces, M.solid((0.95, 0.95, 0.95), "fabric")))
+            # the tongue under the laces and the pull tab at the back of the collar
+            parts.append(make_part(f"tongue_{i}", "tongue", S.box((W * 0.3, L * 0.12, 0.008), center=(x, L * 0.0, 0.099)), up))
+            ytab, ztab = (-L * 0.475 - 0.003, 0.085) if variant == "sneakers" else (-L * 0.48 - 0.003, 0.215)
+            parts.append(make_part(f"heel_tab_{i}", "heel_tab", S.box((0.02, 0.006, 0.03), center=(x, ytab, ztab)), up))
+            if variant == "sneakers":  # the rubber toe cap over the front of the upper
+                parts.append(make_part(f"toe_cap_{i}", "toe_cap", S.box((W * 0.9, L * 0.1, 0.035), center=(x, L * 0.44, 0.04),
+                                                                          bevel=0.01), sole_mat))
     return parts

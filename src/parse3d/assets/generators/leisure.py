@@ -182,7 +182,7 @@ def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("coat_rack", parts=("base", "pole", "hook"), extra_parts=("finial",), size_range=(1.5, 2.0),
+@register("coat_rack", parts=("base", "pole", "hook"), extra_parts=("finial", "tip", "collar"), size_range=(1.5, 2.0),
           density=650, variants=("tripod", "disc", "tree"))
 def coat_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.6, 1.9)
@@ -229,5 +229,11 @@ def coat_rack(rng: np.random.Generator, variant: str) -> list[Part]:
                               np.c_[dx * (r_pole + 0.06 + 0.03 * np.sin(t)), dy * (r_pole + 0.06 + 0.03 * np.sin(t)),
                                     z0 - 0.03 * (1 - np.cos(t))][1:]])
             shapes = [S.tube(path, 0.007, sections=8)]
+            # the ball tip that keeps a coat from slipping off the hook
+            parts.append(make_part(f"tip_{k}", "tip", S.ellipsoid((0.011, 0.011, 0.011), center=path[-1], subdivisions=1), hmat))
         parts.append(make_part(f"hook_{k}", "hook", shapes, hmat))
+    # the collars where the hooks ring the pole and where the pole meets its base
+    parts.append(make_part("collar", "collar", S.cylinder(r_pole * 1.5, 0.03, center=(0, 0, h - 0.12), sections=12), hmat))
+    parts.append(make_part("collar_1", "collar", S.cylinder(r_pole * 1.6, 0.05, center=(0, 0, (z_pole if z_pole else 0.26) + 0.025),
+                                                            sections=12), mat))
     return parts

@@ -14,7 +14,7 @@ from ..model import Part, make_part
 from ..registry import register
 
 
-@register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "hanger_bar", "basket"),
+@register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "hanger_bar", "basket", "flange", "hook"),
           groups={"wheel": ("caster",)},
           size_range=(1.6, 2.0), density=300, variants=("arched", "square", "two_tier"))
 def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -34,8 +34,8 @@ def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     # the deck with its carpet (one part: the carpet's top is where luggage stands)
     parts.append(make_part("deck", "deck", [S.box((w, d, td), center=(0, 0, zd + td / 2), bevel=0.01),
                                             S.box((w - 0.04, d - 0.04, 0.006), center=(0, 0, zd + td + 0.003))], M.fabric(rng)))
-    parts.append(make_part("bumper", "bumper", [S.box((w + 0.03, 0.02, 0.04), center=(0, sy * (d / 2 + 0.01), zd + td / 2)) for sy in (-1, 1)],
-                           M.solid((0.15, 0.15, 0.15), "rubber", 0.8)))
+    parts += [make_part("bumper" if k == 0 else f"bumper_{k}", "bumper", S.box((w + 0.03, 0.02, 0.04), center=(0, sy * (d / 2 + 0.01), zd + td / 2)),
+                        M.solid((0.15, 0.15, 0.15), "rubber", 0.8)) for k, sy in enumerate((-1, 1))]
     r = 0.019
     zt = zd + td + 0.006
     for k, sx in enumerate((-1, 1)):
@@ -50,6 +50,12 @@ def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("rail", "rail", [S.tube([p, q], r, sections=10) for p, q in zip(path[:-1], path[1:], strict=True)], brass))
     parts.append(make_part("hanger_bar", "hanger_bar", S.cylinder(0.012, w - 0.06, center=(0, 0, z0 - 0.05), axis=(1, 0, 0), sections=10),
                            brass))
+    # the flanges bolting the posts to the deck, and the garment hooks on the posts
+    parts += [make_part(f"flange_{k}", "flange", S.cylinder(0.045, 0.01, center=(sx * (w / 2 - 0.03), 0, zt + 0.005), sections=14), brass)
+              for k, sx in enumerate((-1, 1))]
+    parts += [make_part(f"hook_{k}", "hook", S.tube([(sx * (w / 2 - 0.03 - r * 0.5), 0, z0 - 0.15), (sx * (w / 2 - 0.09), 0, z0 - 0.14),
+                                                     (sx * (w / 2 - 0.1), 0, z0 - 0.11)], 0.005, sections=6), brass)
+              for k, sx in enumerate((-1, 1))]
     if variant == "two_tier":
         parts.append(make_part("basket", "basket", [S.box((w * 0.6, d * 0.5, 0.01), center=(0, 0, zt + 0.7))]
                                + [S.box((w * 0.6, 0.01, 0.08), center=(0, sy * d * 0.25, zt + 0.74)) for sy in (-1, 1)]

@@ -1,8 +1,9 @@
 """Books, guitars and brooms.
 
-Books are the commonest small object in a scene, so they stay four boxes: upright, with the
-``front_cover`` at +Y, the ``back_cover`` at −Y, the ``spine`` on the −X side and the ``pages``
-block between the covers. Guitars stand on the bottom of their body, neck up, strings facing
+Books stand upright, with the ``front_cover`` at +Y, the ``back_cover`` at −Y, the ``spine`` on
+the −X side and the ``pages`` block between the covers; the ``title`` printed on the spine and a
+``barcode`` on the back cover, and a bound book's ``headband`` s at both ends of the block and its
+``ribbon`` marker. Boxes all, since books are the commonest small object in a scene. Guitars stand on the bottom of their body, neck up, strings facing
 +Y; their flat back (−Y) is what leans against a wall. Brooms stand on their bristles.
 """
 
@@ -15,13 +16,15 @@ from ...geometry.frames import rot_x
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 
 
 def _page_colour(rng) -> Material:
     return M.solid(M.jitter(rng, (0.94, 0.92, 0.85), 0.02), "paper", 0.9)
 
 
-@register("book", parts=("front_cover", "back_cover", "spine", "pages"), size_range=(0.15, 0.42),
+@register("book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=("title", "barcode", "headband", "ribbon"),
+          size_range=(0.15, 0.42),
           density=650, variants=("paperback", "hardcover", "large"), placement="surface")
 def book(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "paperback":
@@ -39,10 +42,21 @@ def book(rng: np.random.Generator, variant: str) -> list[Part]:
     back = S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2))
     pw = w - c - inset
     pages = S.box((pw, t - 2 * c, h - 2 * inset), center=(-w / 2 + c + pw / 2, 0, h / 2))
-    return [make_part("front_cover", "front_cover", front, cover),
-            make_part("back_cover", "back_cover", back, cover),
-            make_part("spine", "spine", spine, cover),
-            make_part("pages", "pages", pages, _page_colour(rng))]
+    out = [make_part("front_cover", "front_cover", front, cover),
+           make_part("back_cover", "back_cover", back, cover),
+           make_part("spine", "spine", spine, cover),
+           make_part("pages", "pages", pages, _page_colour(rng))]
+    ink = M.solid((0.92, 0.88, 0.7), "paper", 0.6)
+    out.append(make_part("title", "title", S.box((0.0004, t * 0.6, h * 0.45), center=(-w / 2 - 0.0002, 0, h * 0.55)), ink))
+    out.append(make_part("barcode", "barcode", S.box((w * 0.3, 0.0004, h * 0.1), center=(w * 0.2, -t / 2 - 0.0002, h * 0.12)),
+                         M.solid((0.98, 0.98, 0.98), "paper", 0.6)))
+    if variant != "paperback":  # a sewn block: headbands at both ends and a ribbon marker
+        band = M.solid((0.7, 0.15, 0.15), "fabric", 0.8)
+        out += [make_part(f"headband_{k}", "headband", S.box((0.003, t - 2 * c, inset * 0.8), center=(-w / 2 + c + 0.0015, 0, z)),
+                          band) for k, z in enumerate((inset * 0.4, h - inset * 0.4))]
+        # the ribbon's tail lies along the foot of the block, between the covers
+        out.append(make_part("ribbon", "ribbon", S.box((0.006, t * 0.5, inset * 0.5), center=(-w * 0.1, 0, inset * 0.25)), band))
+    return out
 
 
 def _bout(cx: float, cz: float, rx: float, rz: float, y0: float, y1: float, *,
@@ -57,7 +71,8 @@ def _bout(cx: float, cz: float, rx: float, rz: float, y0: float, y1: float, *,
 
 
 @register("guitar", parts=("body", "neck", "head"),
-          extra_parts=("bridge", "soundhole", "pickguard", "pickup", "tuning_peg", "string", "nut"),
+          extra_parts=("bridge", "soundhole", "pickguard", "pickup", "tuning_peg", "string", "nut", "knob", "jack",
+                       "strap_button", "switch", "rosette"),
           size_range=(0.85, 1.15), density=450, variants=("acoustic", "electric"))
 def guitar(rng: np.random.Generator, variant: str) -> list[Part]:
     acoustic = variant == "acoustic"
@@ -119,6 +134,9 @@ def guitar(rng: np.random.Generator, variant: str) -> list[Part]:
         hole = S.cylinder(length * 0.085, 0.002, center=(0, y1 + 0.001, length * 0.62), axis=(0, 1, 0),
                           sections=20)
         parts.append(make_part("soundhole", "soundhole", hole, M.solid((0.05, 0.04, 0.03), "wood")))
+        parts.append(make_part("rosette", "rosette", S.transformed(
+            ring([(length * 0.085, -0.0008), (length * 0.1, -0.0008), (length * 0.1, 0.0008), (length * 0.085, 0.0008)], sections=20),
+            np.array([[1, 0, 0, 0], [0, 0, -1, y1 + 0.0005], [0, 1, 0, length * 0.62], [0, 0, 0, 1.0]])), dark))
         bridge = S.box((0.15, 0.008, 0.03), center=(0, y1 + 0.004, length * 0.3), bevel=0.002)
         parts.append(make_part("bridge", "bridge", bridge, dark))
     else:
@@ -126,18 +144,29 @@ def guitar(rng: np.random.Generator, variant: str) -> list[Part]:
                                  for y in (y1, y1 + 0.002) for z in (length * 0.28, length * 0.7)]))
         knobs = [S.cylinder(0.01, 0.012, center=(lower * 0.3, y1 + 0.006, z), axis=(0, 1, 0),
                             sections=10) for z in (length * 0.2, length * 0.28)]
-        parts.append(make_part("pickguard", "pickguard", [guard, *knobs],
-                               M.solid((0.95, 0.95, 0.93), "plastic")))
+        parts.append(make_part("pickguard", "pickguard", guard, M.solid((0.95, 0.95, 0.93), "plastic")))
+        # the volume and tone knobs, the pickups (each its own), the pickup selector switch and
+        # the output jack on the body's edge
+        parts += [make_part(f"knob_{k}", "knob", kn, M.solid((0.95, 0.95, 0.93), "plastic")) for k, kn in enumerate(knobs)]
         pickups = [S.box((0.075, 0.008, 0.02), center=(0, y1 + 0.006, z), bevel=0.002)
                    for z in (length * 0.38, length * 0.55)]
-        parts.append(make_part("pickups", "pickup", pickups, M.solid((0.1, 0.1, 0.1), "plastic")))
+        parts += [make_part("pickups" if k == 0 else f"pickups_{k}", "pickup", pu, M.solid((0.1, 0.1, 0.1), "plastic"))
+                  for k, pu in enumerate(pickups)]
+        parts.append(make_part("switch", "switch", S.cylinder(0.003, 0.02, center=(-lower * 0.25, y1 + 0.012, length * 0.62),
+                                                              axis=(0, 1, 0), sections=8), metal))
+        parts.append(make_part("jack", "jack", S.cylinder(0.009, 0.008, center=(lower * 0.4635 + 0.002, 0, length * 0.2),
+                                                          axis=(1, 0, 0), sections=10), metal))
         parts.append(make_part("bridge", "bridge", S.box((0.08, 0.01, 0.02),
                                                          center=(0, y1 + 0.005, length * 0.25)),
                                M.metal(rng)))
+    # the strap button on the upper bout, by the neck heel
+    parts.append(make_part("strap_button", "strap_button", S.cylinder(0.006, 0.01, center=(upper * 0.4635 + 0.002, 0, length * 0.85),
+                                                                      axis=(1, 0, 0), sections=8), metal))
     return parts
 
 
-@register("broom", parts=("handle", "head"), extra_parts=("bristles",), size_range=(1.0, 1.6),
+@register("broom", parts=("handle", "head"), extra_parts=("bristles", "ferrule", "hang_cap", "brace", "stitching"),
+          size_range=(1.0, 1.6),
           density=300, variants=("push", "angle", "corn"))
 def broom(rng: np.random.Generator, variant: str) -> list[Part]:
     bristle = M.solid(M.jitter(rng, [(0.85, 0.72, 0.45), (0.15, 0.15, 0.15), (0.2, 0.35, 0.7),
@@ -172,6 +201,17 @@ def broom(rng: np.random.Generator, variant: str) -> list[Part]:
         z_head = hb + 0.01
     length = rng.uniform(0.95, 1.18) if variant == "corn" else rng.uniform(1.05, 1.35)
     handle = S.cylinder(r_h, length, center=(0, 0, z_head - 0.02 + length / 2), sections=12)
-    return [make_part("bristles", "bristles", bristles, bristle),
-            make_part("head", "head", head, stock),
-            make_part("handle", "handle", handle, M.wood(rng) if rng.random() < 0.5 else M.metal(rng))]
+    out = [make_part("bristles", "bristles", bristles, bristle),
+           make_part("head", "head", head, stock),
+           make_part("handle", "handle", handle, M.wood(rng) if rng.random() < 0.5 else M.metal(rng))]
+    # the threaded collar the handle screws into and the cap with a hanging hole over its end
+    top = z_head - 0.02 + length
+    out.append(make_part("ferrule", "ferrule", S.cylinder(r_h * 1.35, 0.05, center=(0, 0, z_head + 0.025), sections=12), stock))
+    out.append(make_part("hang_cap", "hang_cap", S.cylinder(r_h * 1.15, 0.03, center=(0, 0, top - 0.015), sections=12), stock))
+    if variant == "push":  # the brace from the head to the handle that keeps it from working loose
+        out.append(make_part("brace", "brace", S.tube([(-w * 0.3, 0, z_head), (-r_h * 1.2, 0, z_head + 0.2)], 0.005, sections=8),
+                             M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    elif variant == "corn":  # the rows of stitching that flatten the straw into a fan
+        out += [make_part(f"stitching_{k}", "stitching", S.box((w * (0.5 - 0.08 * k), d + 0.004, 0.006), center=(0, 0, z)),
+                          M.solid((0.7, 0.15, 0.15), "fabric", 0.8)) for k, z in enumerate((hb * 0.45, hb * 0.6, hb * 0.75))]
+    return out

@@ -28,6 +28,18 @@ def _tripod(prefix: str, x: float, y: float, *, top: float, spread: float, r: fl
     return out
 
 
+def _tripod_fittings(x: float, y: float, *, top: float, spread: float, r: float, mat: Material,
+                     phase: float = 0.0) -> list[Part]:
+    """The rubber ``foot`` tip on each leg of :func:`_tripod` and the ``hub`` collar the legs are
+    hinged to at its top."""
+    rubber = M.solid((0.03, 0.03, 0.03), "rubber", 0.8)
+    out = [make_part(f"foot_{k}", "foot", S.cylinder(r * 1.5, r * 2, center=(x + spread * np.cos(a), y + spread * np.sin(a), r),
+                                                     sections=8), rubber)
+           for k, a in enumerate(phase + 2 * np.pi * np.arange(3) / 3)]
+    out.append(make_part("hub", "hub", S.cylinder(r * 2.6, 0.05, center=(x, y, top), sections=12), mat))
+    return out
+
+
 def _drum(r: float, h: float, center, *, axis=(0, 0, 1)) -> S.Shape:
     return S.cylinder(r, h, center=center, axis=axis, sections=24)
 
@@ -90,7 +102,7 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("music_stand", parts=("desk", "post"), extra_parts=("leg", "ledge", "knob", "base"),
+@register("music_stand", parts=("desk", "post"), extra_parts=("leg", "ledge", "knob", "base", "page_clip", "collar", "foot", "hub"),
           size_range=(0.9, 1.5), density=700, variants=("folding", "orchestral", "wooden"))
 def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.05, 1.35)
@@ -117,8 +129,16 @@ def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
                                                           sections=10), metal))
         parts += _tripod("leg", 0.0, -0.05, top=0.32, spread=0.28 if variant == "orchestral" else 0.24, r=0.007,
                          mat=metal, phase=np.pi / 2)
+        parts += _tripod_fittings(0.0, -0.05, top=0.32, spread=0.28 if variant == "orchestral" else 0.24, r=0.007,
+                                  mat=metal, phase=np.pi / 2)
     parts.append(make_part("knob", "knob", S.cylinder(0.012, 0.025, center=(0.015, -0.05, h * 0.6), axis=(1, 0, 0),
                                                       sections=10), metal))
+    # the height clamp's collar the knob screws through, and a spring page clip at each upper
+    # corner of the desk
+    parts.append(make_part("collar", "collar", S.cylinder(0.02, 0.04, center=(0, -0.05, h * 0.6), sections=12), metal))
+    for k, sx in enumerate((-1, 1)):
+        c = np.array([sx * (w / 2 - 0.04), 0.0, zc]) + R @ np.array([0.0, 0.006, dh / 2 - 0.03])
+        parts.append(make_part(f"page_clip_{k}", "page_clip", S.box((0.012, 0.004, 0.05), center=c, R=R), metal))
     return parts
 
 
@@ -205,7 +225,7 @@ def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("keyboard_stand", parts=("arm", "leg"), extra_parts=("foot", "knob", "rail"), size_range=(0.6, 1.2),
+@register("keyboard_stand", parts=("arm", "leg"), extra_parts=("foot", "knob", "rail", "end_cap"), size_range=(0.6, 1.2),
           density=700, variants=("x_frame", "table", "z_frame"))
 def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     w, h = rng.uniform(0.7, 1.0), rng.uniform(0.62, 0.9)
@@ -245,10 +265,14 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         arm_x = (-w / 2 + 0.02, w / 2 - 0.02)
     for i, x in enumerate(arm_x):
         parts.append(make_part(f"arm_{i}", "arm", S.box((0.035, d, 0.03), center=(x, 0, h - 0.015), bevel=0.003), steel))
+        # the caps closing the arm tube's ends
+        parts += [make_part(f"end_cap_{2 * i + j}", "end_cap", S.box((0.037, 0.01, 0.032), center=(x, sy * (d / 2 + 0.005), h - 0.015)),
+                            rubber) for j, sy in enumerate((-1, 1))]
     return parts
 
 
-@register("microphone_stand", parts=("pole", "microphone"), extra_parts=("leg", "base", "boom", "clip", "clutch"),
+@register("microphone_stand", parts=("pole", "microphone"), extra_parts=("leg", "base", "boom", "clip", "clutch", "foot", "hub",
+                                                                       "counterweight", "boom_clutch", "cable"),
           size_range=(1.0, 1.9), density=900, variants=("tripod_boom", "round_base", "tripod_straight"))
 def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.0, 1.45)
@@ -259,6 +283,7 @@ def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         pz0 = 0.025
     else:
         parts += _tripod("leg", 0.0, 0.0, top=0.3, spread=0.32, r=0.009, mat=steel, phase=np.pi / 2)
+        parts += _tripod_fittings(0.0, 0.0, top=0.3, spread=0.32, r=0.009, mat=steel, phase=np.pi / 2)
         pz0 = 0.2
     parts.append(make_part("pole", "pole", S.cylinder(0.011, h - pz0, center=(0, 0, (h + pz0) / 2), sections=10), steel))
     parts.append(make_part("clutch", "clutch", S.cylinder(0.018, 0.05, center=(0, 0, h * 0.6), sections=12), steel))
@@ -269,6 +294,11 @@ def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         back = (0, -0.25 * L * np.cos(a), h - 0.25 * L * np.sin(a))
         tip = np.array([0, 0.75 * L * np.cos(a), h + 0.75 * L * np.sin(a)])
         parts.append(make_part("boom", "boom", S.tube([back, tip], 0.009), steel))
+        # the weight on the boom's short end and the knob that locks its angle at the pivot
+        parts.append(make_part("counterweight", "counterweight", S.cylinder(0.022, 0.06, center=back, axis=(0, np.cos(a), np.sin(a)),
+                                                                            sections=12), steel))
+        parts.append(make_part("boom_clutch", "boom_clutch", S.cylinder(0.02, 0.05, center=(0.0, 0.0, h), axis=(1, 0, 0), sections=12),
+                               steel))
         head = tip + np.array([0, 0.03, 0.0])
     else:
         head = np.array([0, 0.0, h + 0.03])
@@ -276,10 +306,13 @@ def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     body = S.union([S.cylinder(0.02, 0.12, center=head + (0, 0.07, 0.0), axis=(0, 1, 0), sections=12),
                     S.ellipsoid((0.026, 0.028, 0.026), center=head + (0, 0.14, 0.0), subdivisions=2)])
     parts.append(make_part("microphone", "microphone", body, mic))
+    # the cable plugged into the microphone's tail, running down beside the clip
+    parts.append(make_part("cable", "cable", S.tube([head + (0, 0.005, -0.012), head + (0.02, -0.02, -0.08), head + (0.03, -0.03, -0.2)],
+                                                    0.003, sections=6), M.solid((0.03, 0.03, 0.03), "rubber", 0.8)))
     return parts
 
 
-@register("sheet_music", parts=("page",), extra_parts=("cover",), size_range=(0.22, 0.36), density=700,
+@register("sheet_music", parts=("page",), extra_parts=("cover", "staple", "clip"), size_range=(0.22, 0.36), density=700,
           variants=("booklet", "loose"), placement="surface")
 def sheet_music(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.21, 0.24), rng.uniform(0.297, 0.31)
@@ -291,6 +324,10 @@ def sheet_music(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("cover_0", "cover", S.box((w, d, 0.0008), center=(0, 0, 0.0004)), cov))
         parts.append(make_part("pages", "page", S.box((w - 0.003, d - 0.004, t), center=(0, 0, 0.0008 + t / 2)), paper))
         parts.append(make_part("cover_1", "cover", S.box((w, d, 0.0008), center=(0, 0, 0.0012 + t)), cov))
+        # saddle-stitched: two staples through the fold along the left edge
+        steel = M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)
+        parts += [make_part(f"staple_{k}", "staple", S.box((0.0012, 0.012, t + 0.0024), center=(-w / 2 + 0.0006, y, (t + 0.0024) / 2 + 0.0002)),
+                            steel) for k, y in enumerate((-d * 0.25, d * 0.25))]
     else:
         n = int(rng.integers(3, 7))
         for k in range(n):
@@ -298,4 +335,9 @@ def sheet_music(rng: np.random.Generator, variant: str) -> list[Part]:
             off = rng.uniform(-0.01, 0.01, 2)
             parts.append(make_part(f"page_{k}", "page", S.box((w, d, 0.0006), center=(off[0], off[1], 0.0003 + 0.0007 * k),
                                                                R=rot((0, 0, 1), a)), paper))
+        # a paper clip holding the pile at its top left corner
+        zt = 0.0007 * n
+        parts.append(make_part("clip", "clip", [S.box((0.008, 0.03, 0.001), center=(-w * 0.35, d * 0.45, zt + 0.0005)),
+                                                S.box((0.008, 0.03, 0.001), center=(-w * 0.35, d * 0.45, -0.0005))],
+                               M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     return parts

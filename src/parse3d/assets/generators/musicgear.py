@@ -83,7 +83,7 @@ def record_player(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("vinyl_record", parts=("disc",), extra_parts=("label", "sleeve"),
+@register("vinyl_record", parts=("disc",), extra_parts=("label", "sleeve", "inner_sleeve"),
           size_range=(0.17, 0.32), density=900, variants=("lp", "single", "bare"), placement="surface")
 def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
     r = 0.1524 if variant != "single" else 0.0889
@@ -100,12 +100,20 @@ def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
     hole = 0.00362 if variant != "single" else 0.019
     rl = 0.05 if variant != "single" else 0.045
     parts.append(make_part("disc", "disc", ring([(rl, z), (r, z), (r, z + 0.0018), (rl, z + 0.0018)], sections=32), vinyl))
-    parts.append(make_part("label", "label", ring([(hole, z), (rl, z), (rl, z + 0.0022), (hole, z + 0.0022)], sections=16),
+    parts.append(make_part("label", "label", ring([(hole, z + 0.0011), (rl, z + 0.0011), (rl, z + 0.0022), (hole, z + 0.0022)],
+                                                  sections=16), M.paper(rng)))
+    # side B's label underneath, and the paper inner sleeve inside the card sleeve
+    parts.append(make_part("label_1", "label", ring([(hole, z), (rl, z), (rl, z + 0.0011), (hole, z + 0.0011)], sections=16),
                            M.paper(rng)))
+    if variant != "bare":
+        # (its edge showing at the card sleeve's open side)
+        parts.append(make_part("inner_sleeve", "inner_sleeve", S.box((0.024, r * 2 * 0.9, 0.0006), center=(s / 2 - 0.008, 0, 0.0039)),
+                               M.solid((0.95, 0.94, 0.9), "paper", 0.8)))
     return parts
 
 
-@register("metronome", parts=("body", "pendulum"), extra_parts=("base", "weight", "scale", "key", "lid", "foot"),
+@register("metronome", parts=("body", "pendulum"), extra_parts=("base", "weight", "scale", "key", "lid", "foot", "button", "speaker",
+                                                                "dial"),
           size_range=(0.1, 0.26), density=600, variants=("pyramid", "digital"), placement="surface")
 def metronome(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -122,6 +130,15 @@ def metronome(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.9, 0.2, 0.2), "plastic")),
                  make_part("key", "key", S.cylinder(0.008, 0.006, center=(w / 2 - 0.012, -d * 0.1, h + 0.003),
                                                     sections=10), body)]
+        # the tempo and start buttons on the front under the display, the speaker grille and the
+        # volume dial on the side
+        dark = M.solid((0.15, 0.15, 0.16), "plastic", 0.5)
+        parts += [make_part(f"button_{k}", "button", S.box((0.012, 0.004, 0.008), center=(x, d * 0.25 + 0.002, h * 0.3)), dark)
+                  for k, x in enumerate((-w * 0.25, w * 0.25))]
+        parts.append(make_part("speaker", "speaker", S.cylinder(0.012, 0.002, center=(0, d * 0.25 + 0.001, h * 0.14), axis=(0, 1, 0),
+                                                                sections=12), dark))
+        parts.append(make_part("dial", "dial", S.cylinder(0.01, 0.005, center=(w / 2 + 0.0025, -d * 0.1, h * 0.5), axis=(1, 0, 0),
+                                                          sections=12), dark))
         return parts
     h = rng.uniform(0.2, 0.24)
     bw, bd = rng.uniform(0.1, 0.12), rng.uniform(0.09, 0.11)

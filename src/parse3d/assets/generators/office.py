@@ -18,7 +18,8 @@ from ._casework import bar_pull, black, white
 from ._kit import DRAWER_TRAVEL, feet4, mount, prismatic, rot
 
 
-@register("projector", parts=("body", "lens"), extra_parts=("foot", "vent", "button", "focus_ring"), size_range=(0.2, 0.45),
+@register("projector", parts=("body", "lens"), extra_parts=("foot", "vent", "button", "focus_ring", "zoom_ring", "sensor", "indicator",
+                                                          "port"), size_range=(0.2, 0.45),
           density=600, variants=("compact", "business", "short_throw"), placement="surface")
 def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = {"compact": (rng.uniform(0.2, 0.26), rng.uniform(0.15, 0.2), rng.uniform(0.07, 0.09)),
@@ -41,10 +42,24 @@ def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(4):
         parts.append(make_part(f"button_{k}", "button", S.cylinder(0.006, 0.006, center=(-w * 0.3 + 0.02 * k, -d * 0.3, fh + h + 0.002),
                                                                    sections=10), black()))
+    # the zoom ring before the focus ring, the exhaust vent on the other side, the remote's
+    # infrared window on the front, the power and lamp lights and the input ports at the back
+    if variant != "short_throw":
+        parts.append(make_part("zoom_ring", "zoom_ring", S.cylinder(h * 0.38, 0.006, center=(lx, d / 2 + 0.014, fh + h / 2),
+                                                                    axis=(0, 1, 0), sections=20), black()))
+    parts.append(make_part("vent_1", "vent", S.box((0.004, d * 0.5, h * 0.5), center=(w / 2 + 0.0015, 0, fh + h / 2)), black()))
+    parts.append(make_part("sensor", "sensor", S.box((0.02, 0.003, 0.012), center=(-w * 0.3, d / 2 + 0.0015, fh + h * 0.5)),
+                           M.solid((0.2, 0.05, 0.05), "glass", 0.1)))
+    parts += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.003, 0.002, center=(-w * 0.3 + 0.02 * k, -d * 0.15, fh + h + 0.001),
+                                                                  sections=8), M.solid(c, "plastic", 0.2))
+              for k, c in enumerate(((0.1, 0.8, 0.2), (0.9, 0.5, 0.1)))]
+    parts += [make_part(f"port_{k}", "port", S.box((0.016, 0.003, 0.008), center=(-w * 0.25 + 0.03 * k, -d / 2 - 0.0015, fh + h * 0.4)),
+                        black()) for k in range(3)]
     return parts
 
 
-@register("projector_screen", parts=("screen",), extra_parts=("case", "bottom_bar", "frame", "pull_handle", "end_cap"),
+@register("projector_screen", parts=("screen",), extra_parts=("case", "bottom_bar", "frame", "pull_handle", "end_cap", "bracket",
+                                                              "corner"),
           size_range=(1.2, 3.2), density=300, variants=("pull_down", "fixed_frame"), placement="wall")
 def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(1.5, 3.0)
@@ -55,8 +70,15 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         frame = [S.box((w, 0.04, f), center=(0, 0.02, f / 2)), S.box((w, 0.04, f), center=(0, 0.02, h - f / 2)),
                  S.box((f, 0.04, h - 2 * f), center=(-w / 2 + f / 2, 0.02, h / 2)),
                  S.box((f, 0.04, h - 2 * f), center=(w / 2 - f / 2, 0.02, h / 2))]
+        # the frame's mitred corners are joined by corner brackets on its back; it hangs on two
+        # wall brackets along its top
+        steel = M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)
         return [make_part("frame", "frame", frame, M.solid((0.05, 0.05, 0.05), "fabric", 0.95)),
-                make_part("screen", "screen", S.box((w - 2 * f, 0.004, h - 2 * f), center=(0, 0.03, h / 2)), fabric)]
+                make_part("screen", "screen", S.box((w - 2 * f, 0.004, h - 2 * f), center=(0, 0.03, h / 2)), fabric),
+                *[make_part(f"corner_{k}", "corner", S.box((0.12, 0.004, 0.12), center=(sx * (w / 2 - 0.06), -0.002, z)), steel)
+                  for k, (sx, z) in enumerate([(-1, 0.06), (1, 0.06), (-1, h - 0.06), (1, h - 0.06)])],
+                *[make_part(f"bracket_{k}", "bracket", S.box((0.06, 0.012, 0.1), center=(sx * w * 0.3, -0.006, h - 0.05)), steel)
+                  for k, sx in enumerate((-1, 1))]]
     case_r = 0.045
     zc = h + 0.06
     parts = [make_part("case", "case", S.box((w + 0.08, 0.09, 0.09), center=(0, 0.045, zc), bevel=0.02), white(rng, "metal")),
@@ -66,6 +88,9 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.02, 0.1, 0.1), center=(s * (w / 2 + 0.05), 0.05, zc)), black()))
     parts.append(make_part("pull_handle", "pull_handle", S.box((0.04, 0.02, 0.06), center=(0, 0.05, zc - case_r - h - 0.06)), black()))
+    # the case hangs on a bracket at each end
+    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.05, 0.02, 0.12), center=(s * (w / 2 - 0.05), -0.01, zc)),
+                        M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)) for k, s in enumerate((-1, 1))]
     return parts
 
 
@@ -98,7 +123,8 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel"),
+@register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel",
+                                                          "windscreen", "reading_light", "plaque"),
           size_range=(1.0, 1.45), density=500, variants=("box", "pedestal", "acrylic"), placement="floor")
 def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.5, 0.7), rng.uniform(0.4, 0.55), rng.uniform(1.05, 1.25)
@@ -128,6 +154,18 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("microphone", "microphone",
                            S.tube([(w / 2 - 0.06, -d / 2 + 0.05, h + 0.005), (w / 2 - 0.06, -d / 2 + 0.05, h + 0.15),
                                    (w / 2 - 0.08, -d / 2 + 0.2, h + 0.22)], 0.005), black()))
+    # the foam windscreen on the microphone's head, a gooseneck reading light on the other side
+    # and the name plaque on the front
+    parts.append(make_part("windscreen", "windscreen", S.ellipsoid((0.015, 0.022, 0.015), center=(w / 2 - 0.08, -d / 2 + 0.215, h + 0.225),
+                                                                   subdivisions=1), M.solid((0.1, 0.1, 0.1), "fabric", 0.9)))
+    parts.append(make_part("reading_light", "reading_light", [S.tube([(-w / 2 + 0.06, -d / 2 + 0.05, h + 0.005),
+                                                                     (-w / 2 + 0.06, -d / 2 + 0.05, h + 0.1),
+                                                                     (-w / 2 + 0.1, -d / 2 + 0.15, h + 0.14)], 0.004),
+                                                             S.frustum(0.012, 0.02, 0.03, center=(-w / 2 + 0.1, -d / 2 + 0.15, h + 0.14),
+                                                                       axis=(0.3, 0.3, -1.0), sections=10)], M.metal(rng)))
+    y_front = d * 0.4 if variant != "pedestal" else 0.09
+    parts.append(make_part("plaque", "plaque", S.box((min(0.3, w * 0.5), 0.004, 0.08), center=(0, y_front + 0.002, z_desk * 0.7)),
+                           M.solid((0.8, 0.65, 0.3), "metal", 0.3, 0.9)))
     return parts
 
 
@@ -154,7 +192,8 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2)), mat)]
     walls = [S.box((w, t, h), center=(0, s * (d / 2 - t / 2), h / 2)) for s in (-1, 1)]
     walls += [S.box((t, d - 2 * t, h), center=(s * (w / 2 - t / 2), 0, h / 2)) for s in (-1, 1)]
-    parts.append(make_part("wall", "wall", walls, mat))
+    # the four walls, each board its own
+    parts += [make_part("wall" if k == 0 else f"wall_{k}", "wall", wall, mat) for k, wall in enumerate(walls)]
     if variant == "compartments":
         n = int(rng.integers(2, 5))
         for k in range(1, n):

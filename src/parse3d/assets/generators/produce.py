@@ -77,7 +77,7 @@ def onion(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("carrot", parts=("body",), extra_parts=("crown", "leaf"), size_range=(0.05, 0.5),
+@register("carrot", parts=("body",), extra_parts=("crown", "leaf", "rootlet"), size_range=(0.05, 0.5),
           density=1000, variants=("trimmed", "topped", "baby"), placement="surface")
 def carrot(rng: np.random.Generator, variant: str) -> list[Part]:
     """Lying along X: the crown at -X, the tapering root towards +X."""
@@ -101,10 +101,17 @@ def carrot(rng: np.random.Generator, variant: str) -> list[Part]:
             start = np.array([-r * 0.2, 0, r])
             path = [start, start + d * ll * 0.5 + (0, 0, r * 0.2), start + d * ll + (0, 0, -r * 0.6)]
             parts.append(make_part(f"leaf_{k}", "leaf", S.tube(path, 0.0025, sections=6), green))
+    # the fine side roots growing out of the root's lower half, alternately left and right
+    for k, u in enumerate((0.35, 0.55, 0.72)):
+        x = L * u
+        rr = float(np.interp(x, [p_[1] for p_ in prof], [p_[0] for p_ in prof]))
+        sy = 1 if k % 2 == 0 else -1
+        path = [(x, sy * rr * 0.7, r), (x + L * 0.04, sy * (rr + L * 0.05), r * 0.8)]
+        parts.append(make_part(f"rootlet_{k}", "rootlet", S.tube(path, 0.0006, sections=5), orange))
     return parts
 
 
-@register("potato", parts=("body",), extra_parts=("eye",), size_range=(0.04, 0.15), density=1080,
+@register("potato", parts=("body",), extra_parts=("eye", "stem_end"), size_range=(0.04, 0.15), density=1080,
           variants=("russet", "round", "fingerling"), placement="surface")
 def potato(rng: np.random.Generator, variant: str) -> list[Part]:
     """An egg-shaped tuber lying along X with a few shallow eyes."""
@@ -128,4 +135,7 @@ def potato(rng: np.random.Generator, variant: str) -> list[Part]:
         eye = S.ellipsoid((0.003, 0.0025, 0.0012), center=p * 1.0 - np.array([0, 0, 0.0004]),
                           subdivisions=1)
         parts.append(make_part(f"eye_{k}", "eye", eye, eye_mat))
+    # the scar where the tuber hung on its stolon, at the end opposite the eyes' crowd
+    parts.append(make_part("stem_end", "stem_end", S.ellipsoid((0.0012, 0.004, 0.004), center=(-rx + 0.0008, 0, rz), subdivisions=1),
+                           eye_mat))
     return parts

@@ -2,7 +2,11 @@
 
 Everything faces +Y: the ``back`` (or the back cushions) sits at -Y, the sitter's right is +X,
 ``armrest_0`` is the left arm (-X) and ``armrest_1`` the right arm (+X). Seats and cushions are
-rounded, with real thickness; backs lean back a few degrees.
+rounded, with real thickness; backs lean back a few degrees. The structure people point at is
+modelled too: an office chair's seat ``shell``, height ``lever`` and tilt ``knob``; a dining
+chair's ``apron`` rails and ``corner_block`` s under the seat; the tufting ``button`` s of
+upholstered backs; a sofa's arm ``panel`` s and the ``piping`` of its seat cushions; a bar
+stool's seat ``plate`` and footrest ``bracket`` s.
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._bedbath_common import bevel_box, cushion
+from ._household import ring as ring_
 
 _UP = np.array([0.0, 0.0, 1.0])
 
@@ -36,7 +41,7 @@ def _upholstery(rng: np.random.Generator) -> Material:
 
 
 @register("office_chair", parts=("seat", "back", "base"),
-          extra_parts=("column", "caster", "armrest", "headrest"), size_range=(0.8, 1.35),
+          extra_parts=("column", "caster", "armrest", "headrest", "shell", "lever", "knob"), size_range=(0.8, 1.35),
           density=400, variants=("task", "arms", "executive"))
 def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     sw, sd = rng.uniform(0.46, 0.52), rng.uniform(0.44, 0.5)
@@ -71,6 +76,13 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("column", "column", col, shell))
     parts.append(make_part("seat", "seat", cushion(sw, sd, st, (0, 0.01, z_seat - st / 2),
                                                    round_xy=0.06, round_z=0.025), pad))
+    # the moulded shell under the seat's foam, the gas lift's lever and the tilt tension knob
+    # under the mechanism
+    parts.append(make_part("shell", "shell", bevel_box((sw * 0.92, sd * 0.9, 0.015), center=(0, 0.01, z_seat - st - 0.0075 + 0.001),
+                                                       bevel=0.005), shell))
+    parts.append(make_part("lever", "lever", S.tube([[0.09, 0.05, z_under + 0.025], [sw / 2 - 0.03, 0.09, z_under + 0.02]], 0.006,
+                                                    sections=8), shell))
+    parts.append(make_part("knob", "knob", S.cylinder(0.03, 0.025, center=(0, 0.09, z_under - 0.0125), sections=12), shell))
     # back: a padded panel on an L-shaped spine from under the seat
     bh = rng.uniform(0.45, 0.58) if variant != "executive" else rng.uniform(0.52, 0.6)
     bw = sw * rng.uniform(0.88, 0.98)
@@ -100,7 +112,8 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dining_chair", parts=("seat", "back", "leg"), extra_parts=("stretcher", "back_post", "spindle", "splat", "foot"),
+@register("dining_chair", parts=("seat", "back", "leg"),
+          extra_parts=("stretcher", "back_post", "spindle", "splat", "foot", "apron", "corner_block", "button"),
           size_range=(0.75, 1.1), density=550, variants=("spindle", "solid", "upholstered"))
 def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     sw, sd = rng.uniform(0.42, 0.5), rng.uniform(0.42, 0.48)
@@ -135,6 +148,17 @@ def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
                              sections=10)
             parts.append(make_part(f"foot_{i}", "foot", pad, M.solid((0.2, 0.2, 0.2), "fabric", 0.95)))
             i += 1
+    # the seat rails between the legs' tops and a glue block in each inside corner
+    ah = 0.05
+    ax, ay = sw - 2 * (leg + 0.01), sd - 2 * (leg + 0.01)
+    xa, ya = sw / 2 - leg / 2 - 0.01, sd / 2 - leg / 2 - 0.01
+    parts += [make_part(f"apron_{k}", "apron", S.box(size, center=c), wood) for k, (size, c) in enumerate([
+        ((ax, 0.02, ah), (0, -ya, z_leg - ah / 2)), ((ax, 0.02, ah), (0, ya, z_leg - ah / 2)),
+        ((0.02, ay, ah), (-xa, 0, z_leg - ah / 2)), ((0.02, ay, ah), (xa, 0, z_leg - ah / 2))])]
+    cb = 0.035
+    parts += [make_part(f"corner_block_{k}", "corner_block",
+                        S.box((cb, cb, ah * 0.7), center=(sx * (xa - leg / 2 - cb / 2), sy * (ya - 0.01 - cb / 2), z_leg - ah * 0.35)), wood)
+              for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
     if rng.random() < 0.5:
         z_st = z_leg * 0.3
         parts += [make_part(f"stretcher_{i}", "stretcher",
@@ -171,6 +195,10 @@ def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
         mat = wood
     if upholstered:
         parts.append(make_part("back", "back", [_leaning(s, lean, pivot) for s in back], mat))
+        # the back is buttoned: two rows of three covered buttons on its front
+        pts = [(x, 0.035, z) for z in (bh * 0.45, bh * 0.7) for x in (-sw * 0.25, 0.0, sw * 0.25)]
+        parts += [make_part(f"button_{k}", "button", _leaning(S.cylinder(0.008, 0.006, center=p, axis=(0, 1, 0), sections=8),
+                                                              lean, pivot), mat) for k, p in enumerate(pts)]
         return parts
     # the crest rail keeps the ``back`` label (it carries the back's front face); posts, spindles
     # and the splat are parts of their own
@@ -200,7 +228,7 @@ def _short_legs(rng, xs, ys, h: float, mat: Material, start: int = 0) -> list[Pa
     return parts
 
 
-@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing"),
+@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing", "button", "piping", "panel"),
           size_range=(0.7, 1.25), density=250, variants=("club", "wingback", "mid_century"))
 def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.75, 0.95)
@@ -251,10 +279,24 @@ def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
                            round_xy=0.03, round_z=0.03)
             wing = _leaning(wing, lean * 0.5, (sx * (w / 2 - 0.04), -d / 2 + d * 0.175, arm_h))
             parts.append(make_part(f"wing_{i}", "wing", wing, pad))
+    # the back is tufted: two rows of covered buttons on its front
+    y_front = -d / 2 + back_t
+    xs = np.linspace(-inner_w * 0.3, inner_w * 0.3, 3)
+    pts = [(x, back_t / 2, z) for z in (bh * 0.55, bh * 0.8) for x in xs]
+    parts += [make_part(f"button_{k}", "button", _leaning(S.cylinder(0.009, 0.008, center=p, axis=(0, 1, 0), sections=8), lean,
+                                                          (0, y_front - back_t / 2, deck_z)), pad) for k, p in enumerate(pts)]
+    if variant != "mid_century":
+        # the cord piping the seat cushion's front edge and the panels facing the arms' fronts
+        parts.append(make_part("piping", "piping", S.cylinder(0.006, inner_w - 0.03, center=(0, d / 2 - 0.01, z_seat - 0.004),
+                                                              axis=(1, 0, 0), sections=8), pad))
+        parts += [make_part(f"panel_{i}", "panel", bevel_box((arm_w * 0.8, 0.012, (arm_h - deck_z) * 0.8),
+                                                             center=(sx * (w / 2 - arm_w / 2), d / 2 + 0.002,
+                                                                     (arm_h + deck_z) / 2 - 0.01), bevel=0.004), wood)
+                  for i, sx in enumerate((-1, 1))]
     return parts
 
 
-@register("sofa", parts=("seat_cushion", "back_cushion", "armrest"), extra_parts=("frame", "leg"),
+@register("sofa", parts=("seat_cushion", "back_cushion", "armrest"), extra_parts=("frame", "leg", "panel", "piping", "button"),
           size_range=(1.4, 3.3), density=200, variants=("two_seat", "three_seat", "sectional"))
 def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 2 if variant == "two_seat" else 3
@@ -314,10 +356,26 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
         c = _leaning(c, lean, (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean),
                                z_seat + 0.005))
         parts.append(make_part(f"back_cushion_{k}", "back_cushion", c, pad))
+        # each back cushion is buttoned in its middle
+        parts.append(make_part(f"button_{k}", "button", _leaning(S.cylinder(0.01, 0.008, center=(0, bc_t / 2, bc_h * 0.55), axis=(0, 1, 0),
+                                                                           sections=8), lean,
+                                                                (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean),
+                                                                 z_seat + 0.005)), pad))
+    # the cord piping along each seat cushion's front edge, and the panels facing the arms
+    for k in range(n):
+        x = x0 + cw * (k + 0.5)
+        depth = sd + (chaise if (chaise and k == n - 1) else 0.0)
+        yf = -d / 2 + back_t + depth + 0.005
+        parts.append(make_part(f"piping_{k}", "piping", S.cylinder(0.006, cw - 0.06, center=(x, yf - 0.004, z_seat - ct * 0.5),
+                                                                   axis=(1, 0, 0), sections=8), pad))
+    for i, (sx, yf) in enumerate(((-1, d / 2), (1, depth_r - d / 2))):
+        parts.append(make_part(f"panel_{i}", "panel", bevel_box((arm_w * 0.8, 0.012, (arm_h - deck_z) * 0.8),
+                                                                center=(sx * (w / 2 - arm_w / 2), yf + 0.004, (arm_h + deck_z) / 2 - 0.01),
+                                                                bevel=0.004), pad))
     return parts
 
 
-@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot"),
+@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot", "plate", "bracket", "lever"),
           size_range=(0.6, 1.0), density=600, variants=("four_leg", "three_leg", "pedestal"))
 def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
     z_seat = rng.uniform(0.63, 0.78)
@@ -343,6 +401,11 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
         spokes = [S.tube([[0, 0, z_ring], [sx * rr, 0, z_ring]], 0.009, sections=8)
                   for sx in (-1, 1)]
         parts.append(make_part("footrest", "footrest", [ring, *spokes], frame_mat))
+        # the gas lift's lever under the seat and the glide ring round the base's rim
+        parts.append(make_part("lever", "lever", S.tube([[0.05, 0, z_seat - st - 0.015], [r * 0.9, 0.02, z_seat - st - 0.02]], 0.005,
+                                                        sections=8), frame_mat))
+        parts.append(make_part("foot", "foot", ring_([(rb - 0.012, 0.0), (rb + 0.002, 0.0), (rb + 0.002, 0.006), (rb - 0.012, 0.006)]),
+                               M.solid((0.08, 0.08, 0.08), "plastic", 0.7)))
         return parts
     n = 4 if variant == "four_leg" else 3
     r_top, r_foot = r * 0.62, r * rng.uniform(1.05, 1.25)
@@ -363,4 +426,12 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
     ring = S.tube(np.c_[rr * np.cos(a), rr * np.sin(a), np.full(24, z_ring)], 0.01, sections=8,
                   closed=True)
     parts.append(make_part("footrest", "footrest", ring, frame_mat))
+    # the ring is welded to each leg through a bracket; the seat is screwed to a mounting plate
+    # on the legs' tops
+    for k in range(n):
+        a = phase + 2 * np.pi * k / n
+        c = np.array([np.cos(a), np.sin(a), 0.0]) * rr + [0, 0, z_ring + 0.0]
+        parts.append(make_part(f"bracket_{k}", "bracket", S.box((0.03, 0.03, 0.024), center=c, R=rot_z(a)), frame_mat))
+    parts.append(make_part("plate", "plate", S.cylinder(r_top + lr, 0.008, center=(0, 0, z_seat - st - 0.004), sections=16),
+                           frame_mat))
     return parts

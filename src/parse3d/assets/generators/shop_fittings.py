@@ -13,10 +13,10 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._household import shell
+from ._household import ring, shell
 
 
-@register("hanging_scale", parts=("hook", "dial", "pan"), extra_parts=("chain", "face", "pointer", "hanger"),
+@register("hanging_scale", parts=("hook", "dial", "pan"), extra_parts=("chain", "face", "pointer", "hanger", "glass", "bezel", "ring", "knob", "hub"),
           size_range=(0.45, 0.9), density=1500, variants=("dish", "basket", "deep_pan"), placement="ceiling")
 def hanging_scale(rng: np.random.Generator, variant: str) -> list[Part]:
     metal = M.metal(rng) if rng.random() < 0.6 else Material(M.jitter(rng, (0.85, 0.2, 0.15), 0.05), 0.4, 0.3, "metal")
@@ -43,4 +43,16 @@ def hanging_scale(rng: np.random.Generator, variant: str) -> list[Part]:
     hook = S.tube([(0, 0, zt - 0.005), (0, 0, zt + 0.05), (0.015, 0, zt + 0.07), (0.03, 0, zt + 0.06),
                    (0.03, 0, zt + 0.045)], 0.004, sections=6)
     parts.append(make_part("hook", "hook", hook, steel))
+    # the glass over the face in its bezel, the pointer's hub, the tare knob on top of the case,
+    # and the ring the three chains are gathered in under the dial
+    parts.append(make_part("glass", "glass", S.cylinder(rd * 0.9, 0.002, center=(0, 0.0365, zd), axis=(0, 1, 0), sections=28),
+                           Material((0.9, 0.95, 1.0, 0.3), 0.05, 0.0, "glass")))
+    parts.append(make_part("bezel", "bezel", ring([(rd * 0.88, 0.0), (rd * 0.94, -0.004), (rd * 1.0, 0.0), (rd * 0.94, 0.004)],
+                                                  sections=28).apply(np.array([[1, 0, 0, 0], [0, 0, -1, 0.034], [0, 1, 0, zd],
+                                                                               [0, 0, 0, 1.0]])), metal))
+    parts.append(make_part("hub", "hub", S.cylinder(0.008, 0.004, center=(0, 0.0375, zd), axis=(0, 1, 0), sections=10), steel))
+    parts.append(make_part("knob", "knob", S.cylinder(0.01, 0.015, center=(rd * 0.5, 0, zd + rd * 0.87 + 0.006), sections=10),
+                           Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.0, "plastic")))
+    parts.append(make_part("ring", "ring", ring([(0.006, zr), (0.009, zr - 0.003), (0.012, zr), (0.009, zr + 0.003)],
+                                                sections=12), steel))
     return parts

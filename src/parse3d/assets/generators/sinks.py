@@ -18,7 +18,9 @@ from ._kit import legs4
 
 
 def _faucet(prefix: str, x: float, y: float, z: float, *, reach: float, h: float, mat: Material, style: str) -> list[Part]:
-    """A faucet standing at (x, y, z): deck ``base``, column ``body``, ``spout`` reaching +Y, ``handle``(s)."""
+    """A faucet standing at (x, y, z): deck ``base``, column ``body``, ``spout`` reaching +Y, ``handle``(s),
+    the ``collar`` where the column meets the base, the ``aerator`` in the spout's tip and the hot
+    and cold ``indicator`` s."""
     out = [make_part(f"{prefix}base", "base", S.cylinder(0.028, 0.008, center=(x, y, z + 0.004), sections=16), mat),
            make_part(f"{prefix}body", "body", S.cylinder(0.017, h, center=(x, y, z + 0.008 + h / 2), sections=12), mat)]
     zt = z + 0.008 + h
@@ -38,10 +40,21 @@ def _faucet(prefix: str, x: float, y: float, z: float, *, reach: float, h: float
     else:
         # a side lever (nothing reaches behind the base, so the sink's back can meet the wall)
         out.append(make_part(f"{prefix}handle", "handle", S.box((0.06, 0.012, 0.012), center=(x + 0.017 + 0.03, y, zt - 0.03), bevel=0.003), mat))
+    out.append(make_part(f"{prefix}collar", "collar", S.cylinder(0.021, 0.012, center=(x, y, z + 0.014), sections=12), mat))
+    tip = np.asarray(path[-1], float)
+    out.append(make_part(f"{prefix}aerator", "aerator", S.cylinder(0.0115, 0.008, center=tuple(tip - (0, 0, 0.002)), sections=10),
+                         M.solid((0.55, 0.55, 0.57), "metal", 0.3, 0.8)))
+    red, blue = M.solid((0.85, 0.1, 0.1), "plastic", 0.3), M.solid((0.1, 0.3, 0.85), "plastic", 0.3)
+    if style == "two_handle":
+        out += [make_part(f"{prefix}indicator_{k}", "indicator", S.cylinder(0.007, 0.002, center=(x + sx * 0.09, y, z + 0.039), sections=10),
+                          red if sx < 0 else blue) for k, sx in enumerate((-1, 1))]
+    else:
+        out.append(make_part(f"{prefix}indicator", "indicator", S.cylinder(0.005, 0.002, center=(x + 0.017 + 0.05, y, zt - 0.023), sections=10),
+                             red))
     return out
 
 
-@register("faucet", parts=("base", "spout"), extra_parts=("body", "handle"),
+@register("faucet", parts=("base", "spout"), extra_parts=("body", "handle", "collar", "aerator", "indicator"),
           size_range=(0.15, 0.45), density=4000, variants=("single_lever", "two_handle", "gooseneck"), placement="surface")
 def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
     chrome = M.solid(M.jitter(rng, (0.8, 0.8, 0.82), 0.02)[:3], "metal", 0.15, 0.95) if rng.random() < 0.7 else \
@@ -79,7 +92,8 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow"),
+@register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow",
+                                                                 "collar", "aerator", "indicator"),
           groups={"basin": ("bowl", "deck")},
           size_range=(0.85, 1.05), density=1400, variants=("round", "square", "console"))
 def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -116,7 +130,7 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("utility_sink", parts=("basin", "rim"), extra_parts=("leg", "faucet", "spout", "handle", "base", "body", "drain",
-                                                               "backsplash", "stretcher"),
+                                                               "backsplash", "stretcher", "collar", "aerator", "indicator"),
           size_range=(0.85, 1.2), density=600, variants=("legs", "cabinet", "double"))
 def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     tub = M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "plastic", 0.5) if rng.random() < 0.6 else \

@@ -17,7 +17,7 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._household import ring
-from ._kit import revolute, rot
+from ._kit import mount, revolute, rot
 
 #: Lying (front cover up, top edge at -Y) to the book frame (front cover +Y, top edge up).
 _UP = rot((1, 0, 0), -np.pi / 2)
@@ -44,7 +44,7 @@ def _stand_up(items: list) -> list:
     return out
 
 
-@register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap"),
+@register("pen", parts=("barrel", "tip"), extra_parts=("cap", "clip", "button", "grip", "nib", "end_cap", "ring"),
           groups={"body": ("barrel", "grip", "cap", "end_cap", "button")},
           size_range=(0.11, 0.17), density=1100, variants=("ballpoint", "capped", "fountain"), placement="surface")
 def pen(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -88,11 +88,14 @@ def pen(rng: np.random.Generator, variant: str) -> list[Part]:
         xc = x0 + 0.025
         rc = r
     parts.append(make_part("clip", "clip", S.box((0.04, 0.003, 0.0015), center=(xc, 0, zc + rc + 0.00075)), chrome))
+    # the metal band where the barrel meets the grip section
+    parts.append(make_part("ring", "ring", S.cylinder(r * 1.04, 0.003, center=(x1 - lt - 0.03 - 0.0015, 0, zc), axis=(1, 0, 0),
+                                                      sections=16), chrome))
     return parts
 
 
 @register("notebook", parts=("front_cover", "back_cover", "pages"),
-          extra_parts=("spine", "spiral", "band", "ribbon", "binding"),
+          extra_parts=("spine", "spiral", "band", "ribbon", "binding", "label", "headband", "tab"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.14, 0.32), density=600, variants=("spiral", "bound", "legal_pad"), placement="surface")
 def notebook(rng: np.random.Generator, variant: str) -> list:
@@ -120,12 +123,21 @@ def _notebook_lying(rng: np.random.Generator, variant: str) -> list:
     front = S.box((w, d, tc), center=(0, 0, z + tc / 2))
     parts.append(make_part("front_cover", "front_cover", front, cover))
     zt = z + tc
+    # the title label on the front cover (moving with it)
+    parts.append(make_part("label", "label", S.box((w * 0.5, d * 0.12, 0.0003), center=(w * 0.05, -d * 0.2, zt + 0.00015)),
+                           M.solid((0.97, 0.96, 0.92), "paper", 0.8)))
+    parts.append(mount("front_cover", "label"))
     if variant == "spiral":
         n = int(d / 0.0085)
         rr = (zt / 2) + 0.002
         coil = [S.cylinder(rr, 0.0016, center=(-w / 2, -d / 2 + 0.006 + k * (d - 0.012) / max(n - 1, 1), zt / 2), axis=(0, 1, 0),
                            sections=10) for k in range(n)]
         parts.append(make_part("spiral", "spiral", coil, M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+        # the subject dividers' tabs standing out of the pages' free edge
+        tab_cols = [(0.9, 0.3, 0.3), (0.3, 0.6, 0.9), (0.95, 0.8, 0.3)]
+        parts += [make_part(f"tab_{k}", "tab", S.box((0.012, 0.03, 0.0008), center=(w / 2 + 0.006 - 0.001, -d * 0.3 + k * d * 0.25,
+                                                                                    tc + n_pages * (k + 1) / 4)),
+                            M.solid(c, "plastic", 0.5)) for k, c in enumerate(tab_cols)]
         origin = (-w / 2, 0.0, zt / 2)
     elif variant == "bound":
         parts.append(make_part("spine", "spine", S.box((0.004, d, zt), center=(-w / 2 - 0.002, 0, zt / 2)), cover))
@@ -133,6 +145,10 @@ def _notebook_lying(rng: np.random.Generator, variant: str) -> list:
                                M.solid((0.05, 0.05, 0.05), "rubber", 0.8)))
         parts.append(make_part("ribbon", "ribbon", S.box((0.006, 0.05, 0.0005), center=(-w * 0.1, d / 2 + 0.02, 0.00025)),
                                Material(M.jitter(rng, (0.6, 0.1, 0.1)), 0.6, 0.0, "fabric")))
+        # the cloth headbands at the top and bottom of the sewn block
+        hb = M.solid((0.8, 0.75, 0.6), "fabric", 0.8)
+        parts += [make_part(f"headband_{k}", "headband", S.box((0.003, 0.002, n_pages), center=(-w / 2 + 0.0035, sy * (d / 2 - 0.003), tc + n_pages / 2)),
+                            hb) for k, sy in enumerate((-1, 1))]
         origin = (-w / 2, 0.0, zt)
     else:
         parts.append(make_part("binding", "binding", S.box((w + 0.002, 0.02, zt + 0.002), center=(0, -d / 2 + 0.009, zt / 2 + 0.001)),
@@ -179,7 +195,7 @@ def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial"),
+@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial", "horizon", "post"),
           size_range=(0.2, 1.1), density=250, variants=("desk", "floor", "cradle"), placement="surface")
 def globe(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -198,6 +214,17 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
                                                             (0.3 * np.cos(a), 0.3 * np.sin(a), 0.015)], 0.015, sections=10), wood))
         parts.append(make_part("base", "base", S.cylinder(0.1, 0.04, center=(0, 0, zr + 0.02), sections=24), wood))
         parts.append(make_part("stand", "stand", S.cylinder(0.02, 0.05, center=(0, 0, zr + 0.065), sections=12), wood))
+        # the wooden horizon ring round the sphere's equator, on a post rising from each leg
+        rh = R + 0.035
+        parts.append(make_part("horizon", "horizon", ring([(rh - 0.02, zc - 0.006), (rh, zc - 0.003), (rh, zc + 0.003),
+                                                           (rh - 0.02, zc + 0.006)], sections=24), wood))
+        rp = rh - 0.01
+        z_leg = zr - (zr - 0.015) * (rp - 0.08) / 0.22  # where the leg passes under the ring
+        for k in range(3):
+            a = np.pi / 2 + 2 * np.pi * k / 3
+            parts.append(make_part(f"post_{k}", "post", S.cylinder(0.008, zc - 0.006 - z_leg,
+                                                                   center=(rp * np.cos(a), rp * np.sin(a), (zc - 0.006 + z_leg) / 2),
+                                                                   sections=8), wood))
     elif variant == "cradle":  # the sphere sits in a low ring on short feet, no meridian
         zc = R * 0.75 + 0.03
         parts.append(make_part("base", "base", ring([(R * 0.6, 0.0), (R * 0.75, 0.0), (R * 0.75, 0.03), (R * 0.6, 0.03)]), wood))
@@ -282,7 +309,7 @@ def _x_out(x: float, y: float, z: float) -> np.ndarray:
     return T
 
 
-@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple"),
+@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "barcode", "mailing_label"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.2, 0.42), density=800, variants=("glossy", "stapled", "tabloid"), placement="surface")
 def magazine(rng: np.random.Generator, variant: str) -> list:
@@ -301,10 +328,15 @@ def magazine(rng: np.random.Generator, variant: str) -> list:
         for k, y in enumerate((-d * 0.25, d * 0.25)):
             parts.append(make_part(f"staple_{k}", "staple", S.box((0.0012, 0.012, T + 0.0004), center=(-w / 2 + 0.0006, y, T / 2)),
                                    M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+    # the barcode box printed in the front cover's corner, and a subscriber's address label
+    parts.append(make_part("barcode", "barcode", S.box((0.035, 0.025, 0.0002), center=(-w / 2 + 0.03, d / 2 - 0.025, T + 0.0001)),
+                           M.solid((0.98, 0.98, 0.98), "paper", 0.5)))
+    parts.append(make_part("mailing_label", "mailing_label", S.box((0.08, 0.03, 0.0002), center=(w * 0.15, -d / 2 + 0.03, T + 0.0001)),
+                           M.solid((0.98, 0.98, 0.96), "paper", 0.7)))
     return _stand_up(parts)
 
 
-@register("marker", parts=("barrel", "cap"), extra_parts=("tip", "clip", "end_cap", "grip"),
+@register("marker", parts=("barrel", "cap"), extra_parts=("tip", "clip", "end_cap", "grip", "label", "cap_end"),
           groups={"body": ("barrel", "end_cap")},
           size_range=(0.1, 0.16), density=900, variants=("whiteboard", "permanent", "highlighter"), placement="surface")
 def marker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -324,17 +356,24 @@ def marker(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.9, 0.9, 0.9), "fabric", 0.9)))
     if variant == "permanent":
         parts.append(make_part("clip", "clip", S.box((0.03, 0.003, 0.002), center=(L / 2 - 0.02, 0, zc + r * 1.12 + 0.001)), ink))
+    # the printed label wrapped round the barrel and the cap's closed end
+    parts.append(make_part("label", "label", S.cylinder(r + 0.0003, lb * 0.45, center=(x0 + 0.012 + lb * 0.225, 0, zc), axis=(1, 0, 0),
+                                                        sections=16), M.solid((0.2, 0.25, 0.5), "paper", 0.6)))
+    parts.append(make_part("cap_end", "cap_end", S.cylinder(r * 0.9, 0.003, center=(L / 2 + 0.0015, 0, zc), axis=(1, 0, 0),
+                                                            sections=12), ink))
     return parts
 
 
-@register("sticky_note", parts=("sheet",), extra_parts=("pad", "holder"),
+@register("sticky_note", parts=("sheet",), extra_parts=("pad", "holder", "adhesive"),
           size_range=(0.04, 0.13), density=700, variants=("pad", "cube", "single"), placement="surface")
 def sticky_note(rng: np.random.Generator, variant: str) -> list[Part]:
     s = [0.076, 0.076, 0.051, 0.127][int(rng.integers(4))]
     col = M.solid(M.jitter(rng, [(0.98, 0.92, 0.4), (0.98, 0.6, 0.7), (0.6, 0.85, 0.95), (0.7, 0.95, 0.5)][int(rng.integers(4))],
                            0.02)[:3], "paper", 0.9)
-    if variant == "single":
-        return [make_part("sheet", "sheet", S.box((s, s, 0.0003), center=(0, 0, 0.00015)), col)]
+    if variant == "single":  # the glue strip along the back of its top edge
+        return [make_part("sheet", "sheet", S.box((s, s, 0.0003), center=(0, 0, 0.00025)), col),
+                make_part("adhesive", "adhesive", S.box((s, 0.016, 0.0001), center=(0, -s / 2 + 0.008, 0.00005)),
+                          M.solid((0.9, 0.9, 0.85), "plastic", 0.3))]
     h = rng.uniform(0.005, 0.012) if variant == "pad" else rng.uniform(0.035, 0.05)
     # the pad's block, and its top sheets each a part (the top one is what gets written on)
     n_top, ts = 4, 0.0003

@@ -3,7 +3,9 @@
 Shelves are separate parts (``shelf_0`` at the bottom, upward), sized to the carcass interior
 so that :mod:`parse3d.assets.internal` finds an internal support surface on each one: covered
 by the next shelf or the top, walled by the sides and the back. Open racks get a lip (its own
-``beam`` part) around every shelf so the same holds without side panels.
+``beam`` part) around every shelf so the same holds without side panels. Adjustable shelves rest
+on four ``shelf_pin`` s each; a wire rack's shelves are held on its posts by a ``sleeve`` at every
+corner, an industrial rack's by a ``bracket``; gondola posts end in ``end_cap`` s.
 """
 
 from __future__ import annotations
@@ -41,6 +43,22 @@ def _shelves(levels, *, iw: float, y0: float, y1: float, t: float, mat, start: i
             for i, z in enumerate(levels)]
 
 
+def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0) -> list[Part]:
+    """Four shelf pins under each shelf (tops at ``levels``): short metal pegs standing out of
+    the side panels' inner faces (at x = +-``iw`` / 2) 3 cm in from the shelf's back and front."""
+    pin = M.solid((0.72, 0.7, 0.66), "metal", 0.3, 0.9)
+    out = []
+    k = start
+    for z in levels:
+        for y in (y0 + 0.03, y1 - 0.03):
+            for sx in (-1, 1):
+                out.append(make_part(f"shelf_pin_{k}", "shelf_pin",
+                                     S.cylinder(0.0025, 0.01, center=(sx * (iw / 2 - 0.005), y, z - t - 0.0025), axis=(1, 0, 0),
+                                                sections=8), pin))
+                k += 1
+    return out
+
+
 def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: int, mat, hmat,
               style: str, glass=None, start: int = 0, gap: float = 0.003,
               parents: tuple[str, str] = ("body", "body")) -> list[Part | Joint]:
@@ -59,7 +77,7 @@ def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: 
 
 
 @register("bookcase", parts=("shelf", "side_panel", "back_panel"),
-          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge"), size_range=(0.9, 2.3),
+          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin"), size_range=(0.9, 2.3),
           density=550, variants=("open", "doored", "glass_doored"))
 def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
@@ -85,6 +103,7 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n = int(np.clip(np.floor(inner / 0.3), 3, 6))
     levels = plinth + t + shelf_heights(0.0, inner, n)
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t, mat=mat)
+    parts += _pins(levels[1:], iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t)
     if variant == "doored":
         k = max(1, n // 2)
         z_top = plinth + k * inner / n + t
@@ -97,7 +116,8 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("storage_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box"),
+@register("storage_cabinet", parts=("body", "door", "shelf"),
+          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
 def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
@@ -125,10 +145,12 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
     n = int(np.clip(np.floor(inner / 0.32), 1, 5))
     levels = plinth + t + shelf_heights(0.0, inner, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t, mat=mat)
+    parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t)
     return parts
 
 
-@register("tv_stand", parts=("top_panel", "body"), extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box"),
+@register("tv_stand", parts=("top_panel", "body"),
+          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
 def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
@@ -173,10 +195,13 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             parts.append(make_part(f"shelf_{b}", "shelf",
                                    S.box((sx1 - sx0, d - 0.03, t), center=((sx0 + sx1) / 2, -0.011, mid)),
                                    mat))
+        # a cable grommet through the back panel of every bay, near its top
+        parts.append(make_part(f"grommet_{b}", "grommet", S.cylinder(0.03, 0.012, center=((sx0 + sx1) / 2, -d / 2 + 0.006, h_body - 0.07),
+                                                                     axis=(0, 1, 0), sections=12), black()))
     return parts
 
 
-@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge"),
+@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin"),
           size_range=(0.45, 1.1), density=550, variants=("solid", "glass", "lift_up"), placement="wall")
 def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.4, 1.0), rng.uniform(0.28, 0.36), rng.uniform(0.5, 0.9)
@@ -192,6 +217,7 @@ def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n = max(1, int(np.floor((h - 2 * t) / 0.22)) - 1)
     levels = t + shelf_heights(0.0, h - 2 * t, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t, mat=mat)
+    parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t)
     if variant == "lift_up":
         return parts + door_parts("door", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y_back=yf, thick=0.018,
                                   mat=mat, handle_mat=hmat, hinge_left=True, style="flat",
@@ -213,7 +239,7 @@ def _lip(w: float, d: float, z: float, hgt: float, t: float) -> list[S.Shape]:
             S.box((t, d, hh), center=(-w / 2 - t / 2, 0, zc))]
 
 
-@register("storage_rack", parts=("shelf", "post"), extra_parts=("beam", "foot"), size_range=(1.0, 2.1),
+@register("storage_rack", parts=("shelf", "post"), extra_parts=("beam", "foot", "sleeve", "bracket"), size_range=(1.0, 2.1),
           density=900, variants=("wire", "industrial"))
 def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.35, 0.6), rng.uniform(1.2, 2.0)
@@ -241,10 +267,20 @@ def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"shelf_{i}", "shelf", S.box((w, d, tk), center=(0, 0, top - tk / 2)), deck))
         parts.append(make_part(f"beam_{i}", "beam", _lip(w, d, top, lip_h, 0.01 if variant == "wire" else 0.02),
                                steel))
+        # where the shelf meets each post: a tapered plastic sleeve clamped round a wire rack's
+        # post, a gusset bracket bolted inside an angle post's corner
+        for j, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            x, y = sx * (w / 2 + 0.01), sy * (d / 2 + 0.01)
+            if variant == "wire":
+                parts.append(make_part(f"sleeve_{4 * i + j}", "sleeve", S.frustum(0.017, 0.0145, 0.035, center=(x, y, top - tk - 0.035),
+                                                                                sections=10), black()))
+            else:
+                parts.append(make_part(f"bracket_{4 * i + j}", "bracket",
+                                       S.prism([(x, y), (x - sx * 0.06, y), (x, y - sy * 0.06)], top - tk - 0.006, top - tk), steel))
     return parts
 
 
-@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail"),
+@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail", "end_cap"),
           size_range=(1.3, 2.3), density=800, variants=("single_sided", "double_sided"))
 def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w, h = rng.uniform(0.9, 1.33), rng.uniform(1.4, 2.2)
@@ -257,7 +293,9 @@ def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("back_panel", "back_panel", S.box((w - 0.08, 0.012, h - 0.15), center=(0, 0, 0.15 + (h - 0.15) / 2)),
                        steel)]
     for i, x in enumerate((-w / 2 + 0.02, w / 2 - 0.02)):
-        parts.append(make_part(f"post_{i}", "post", S.box((0.04, pt, h), center=(x, 0, h / 2), bevel=0.003), steel))
+        parts.append(make_part(f"post_{i}", "post", S.box((0.04, pt, h - 0.01), center=(x, 0, (h - 0.01) / 2), bevel=0.003), steel))
+        parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.042, pt + 0.002, 0.01), center=(x, 0, h - 0.005)),
+                               black()))
     base_h = rng.uniform(0.1, 0.15)
     bd = sd + 0.1
     z_top = h - rng.uniform(0.1, 0.2)

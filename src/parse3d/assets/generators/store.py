@@ -16,6 +16,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import bar_pull, black, white
+from ._detail_b import studs
 from ._kit import OPEN_DOOR, feet4, hinge_parts, mount, revolute
 
 
@@ -26,7 +27,7 @@ def _walls(w: float, d: float, h: float, t: float, z0: float = 0.0) -> list[S.Sh
             S.box((t, d - 2 * t, h), center=(w / 2 - t / 2, 0, z0 + h / 2))]
 
 
-@register("shopping_basket", parts=("basket", "handle"), extra_parts=("rim", "base"), size_range=(0.3, 0.55), density=300,
+@register("shopping_basket", parts=("basket", "handle"), extra_parts=("rim", "base", "pivot", "label"), size_range=(0.3, 0.55), density=300,
           variants=("plastic", "wire"), placement="surface")
 def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.4, 0.47), rng.uniform(0.28, 0.33), rng.uniform(0.2, 0.25)
@@ -41,10 +42,16 @@ def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"handle_{i}", "handle", S.tube([(-w * 0.3, y, h - 0.01), (-w * 0.2, y * 0.5, h + 0.12),
                                                                 (w * 0.2, y * 0.5, h + 0.12), (w * 0.3, y, h - 0.01)], 0.006),
                                black() if variant == "plastic" else mat))
+    # each handle end turns in a pivot on the rim; the store's name plate on the front
+    parts += studs("pivot", "pivot", [(sx * w * 0.3, sy * (d / 2 + 0.009), h - 0.012) for sy in (-1, 1) for sx in (-1, 1)],
+                   r=0.009, h=0.006, mat=black(), axis=(0, 1, 0))
+    parts.append(make_part("label", "label", S.box((0.12, 0.002, 0.04), center=(0, d / 2 + 0.001, h * 0.5)),
+                           M.solid((0.95, 0.95, 0.95), "plastic", 0.4)))
     return parts
 
 
-@register("shopping_cart", parts=("basket", "wheel", "handle"), extra_parts=("frame", "base", "child_seat", "bumper"),
+@register("shopping_cart", parts=("basket", "wheel", "handle"), extra_parts=("frame", "base", "child_seat", "bumper", "fork",
+                                                                            "coin_lock", "end_cap"),
           size_range=(0.85, 1.15), density=250, variants=("full_size", "compact"))
 def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     k = 1.0 if variant == "full_size" else 0.8
@@ -71,6 +78,15 @@ def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("child_seat", "child_seat", S.box((0.25, W - 0.1, 0.01), center=(-L * 0.3, 0, H - 0.18),
                                                                  R=_rx(0.0)), steel))
     parts.append(make_part("bumper", "bumper", S.box((0.02, W, 0.08), center=(L * 0.85 / 2 + 0.04, 0, zb + 0.1)), black()))
+    # the swivel fork each wheel turns in, the coin lock on the handle and the caps on its ends
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        x, y = sx * (L / 2 - 0.08), sy * (W / 2 - 0.06)
+        parts.append(make_part(f"fork_{i}", "fork", [S.box((0.05, 0.006, 0.07), center=(x, y + dy, 0.085)) for dy in (-0.02, 0.02)]
+                               + [S.box((0.05, 0.046, 0.01), center=(x, y, 0.12))], steel))
+    parts.append(make_part("coin_lock", "coin_lock", S.box((0.08, 0.06, 0.05), center=(xb + 0.03, -W * 0.3, H - 0.04), bevel=0.005),
+                           M.solid((0.85, 0.7, 0.1), "plastic", 0.4)))
+    parts += [make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.017, 0.012, center=(xb, sy * (W / 2 - 0.01 + 0.006), H), axis=(0, 1, 0),
+                                                              sections=12), black()) for k, sy in enumerate((-1, 1))]
     return parts
 
 
@@ -80,7 +96,8 @@ def _rx(a: float) -> np.ndarray:
 
 
 @register("checkout_counter", parts=("body", "countertop"), extra_parts=("conveyor", "register", "screen", "card_terminal",
-                                                                          "divider", "bag_well", "kick_plate"),
+                                                                          "divider", "bag_well", "kick_plate", "scanner",
+                                                                          "printer", "cash_drawer"),
           size_range=(1.4, 2.6), density=400, variants=("conveyor", "compact"))
 def checkout_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.8, 2.5) if variant == "conveyor" else rng.uniform(1.4, 1.7)
@@ -106,6 +123,14 @@ def checkout_counter(rng: np.random.Generator, variant: str) -> list[Part]:
                                                      R=_rx(-0.2)), M.solid((0.1, 0.12, 0.15), "glass", 0.1)))
     parts.append(make_part("card_terminal", "card_terminal", S.box((0.08, 0.14, 0.05), center=(x_reg + 0.3, d / 2 - 0.1, h + 0.025),
                                                                    bevel=0.008), black()))
+    # the barcode scanner's glass set in the top beside the register, the receipt printer and
+    # the cash drawer under the counter's top on the cashier's side
+    parts.append(make_part("scanner", "scanner", S.box((0.2, 0.2, 0.004), center=(x_reg - 0.28, d / 2 - 0.14, h + 0.002)),
+                           M.solid((0.1, 0.1, 0.12), "glass", 0.1)))
+    parts.append(make_part("printer", "printer", S.box((0.14, 0.18, 0.12), center=(x_reg + 0.27, -d / 2 + 0.12, h + 0.06), bevel=0.01),
+                           black()))
+    parts.append(make_part("cash_drawer", "cash_drawer", S.box((0.4, 0.02, 0.1), center=(x_reg, -d / 2 - 0.01, h - 0.03 - 0.07)),
+                           black()))
     return parts
 
 
@@ -172,7 +197,7 @@ def wooden_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cardboard_box", parts=("body",), extra_parts=("flap", "tape", "label", "wall", "bottom"), size_range=(0.15, 0.75),
+@register("cardboard_box", parts=("body",), extra_parts=("flap", "tape", "label", "wall", "bottom", "hand_hole"), size_range=(0.15, 0.75),
           density=150, variants=("closed", "open", "shoebox"), placement="floor")
 def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     card = M.solid(M.jitter(rng, (0.72, 0.56, 0.38), 0.03), "paper", 0.9)
@@ -193,7 +218,12 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                 make_part("tape_1", "tape", S.box((0.05, 0.001, h * 0.3), center=(0, d / 2 + 0.0005, h * 0.85)),
                           M.solid((0.75, 0.62, 0.4), "plastic", 0.2)),
                 make_part("label", "label", S.box((0.1, 0.001, 0.07), center=(w / 4, d / 2 + 0.0005, h / 2)),
-                          M.solid((0.95, 0.95, 0.95), "paper"))]
+                          M.solid((0.95, 0.95, 0.95), "paper")),
+                # the tape's other end down the back, and a hand hole cut in each end
+                make_part("tape_2", "tape", S.box((0.05, 0.001, h * 0.3), center=(0, -d / 2 - 0.0005, h * 0.85)),
+                          M.solid((0.75, 0.62, 0.4), "plastic", 0.2)),
+                *[make_part(f"hand_hole_{k}", "hand_hole", S.box((0.001, 0.09, 0.03), center=(sx * (w / 2 + 0.0005), 0, h * 0.75)),
+                            M.solid((0.2, 0.15, 0.1), "paper", 0.9)) for k, sx in enumerate((-1, 1))]]
     # open: the floor keeps the required label (it carries the internal support for IN)
     parts: list[Part | Joint] = [make_part("body", "body", S.box((w - 2 * t, d - 2 * t, t), center=(0, 0, t / 2)), card)]
     for nm, sh in zip(["wall_back", "wall_front", "wall_left", "wall_right"], _walls(w, d, h, t), strict=True):
@@ -212,7 +242,8 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel"),
+@register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel",
+                                                              "lock", "drain_plug", "grille", "light"),
           size_range=(0.7, 1.8), density=300, variants=("small", "large", "glass_top"))
 def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = {"small": rng.uniform(0.7, 0.95), "large": rng.uniform(1.2, 1.6), "glass_top": rng.uniform(1.4, 1.75)}[variant]
@@ -250,6 +281,17 @@ def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                            black()))
     parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zt), opens=OPEN_DOOR * 0.6))
     parts.append(mount("lid", "handle"))
+    # the key lock beside the handle, the power and cooling lights on the control panel, the
+    # condenser grille low on the right side and the drain plug low on the front
+    parts.append(make_part("lock", "lock", S.cylinder(0.009, 0.01, center=(min(0.3, w * 0.4) / 2 + 0.06, d / 2 + 0.005, zt + lid_t * 0.4),
+                                                      axis=(0, 1, 0), sections=10), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    parts.append(mount("lid", "lock"))
+    parts += [make_part(f"light_{k}", "light", S.cylinder(0.004, 0.003, center=(w / 2 - 0.15 + 0.03 * k, d / 2 + 0.0075, fh + hb - 0.06),
+                                                          axis=(0, 1, 0), sections=8),
+                        M.solid((0.1, 0.8, 0.2) if k == 0 else (0.9, 0.6, 0.1), "plastic", 0.2)) for k in range(2)]
+    parts.append(make_part("grille", "grille", S.box((0.004, d * 0.4, 0.12), center=(w / 2 + 0.002, -d * 0.1, fh + 0.1)), black()))
+    parts.append(make_part("drain_plug", "drain_plug", S.cylinder(0.012, 0.008, center=(-w / 2 + 0.1, d / 2 + 0.004, fh + 0.04),
+                                                                  axis=(0, 1, 0), sections=10), black()))
     return parts
 
 
@@ -282,13 +324,14 @@ def bread(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("banana_bunch", parts=("finger",), extra_parts=("stem",), size_range=(0.14, 0.26), density=950,
+@register("banana_bunch", parts=("finger",), extra_parts=("stem", "tip", "crown"), size_range=(0.14, 0.26), density=950,
           variants=("bunch", "single"), placement="surface")
 def banana_bunch(rng: np.random.Generator, variant: str) -> list[Part]:
     skin = M.food(rng, (0.95, 0.82, 0.2))
     n = 1 if variant == "single" else int(rng.integers(3, 7))
     L, r = rng.uniform(0.16, 0.22), rng.uniform(0.016, 0.019)
     parts = []
+    tips = []
     for k in range(n):
         a = (k - (n - 1) / 2) * 0.28
         t = np.linspace(0, 1, 7)
@@ -297,12 +340,18 @@ def banana_bunch(rng: np.random.Generator, variant: str) -> list[Part]:
         path = (R @ arc.T).T + [0, 0, 0.0]
         path[:, 2] += k * 0.002
         parts.append(make_part(f"finger_{k}", "finger", S.tube(path, r, sections=10), skin))
+        tips.append(path[-1] + (path[-1] - path[-2]) / np.linalg.norm(path[-1] - path[-2]) * 0.004)
+    stalk = M.food(rng, (0.4, 0.3, 0.15))
     parts.append(make_part("stem", "stem", S.cylinder(0.01, 0.03, center=(-0.012, 0, 0.035), axis=(1, 0, 0), sections=8),
-                           M.food(rng, (0.4, 0.3, 0.15))))
+                           stalk))
+    # each finger's dark blossom end, and the crown where the fingers join the stem
+    dark = M.solid((0.2, 0.15, 0.08), "plastic", 0.8)
+    parts += studs("tip", "tip", tips, r=r * 0.35, h=0.008, mat=dark, axis=(1, 0, 0), sections=8)
+    parts.append(make_part("crown", "crown", S.ellipsoid((0.012, 0.016 + 0.004 * (n - 1), 0.014), center=(0.004, 0, 0.035)), stalk))
     return parts
 
 
-@register("citrus_fruit", parts=("body",), extra_parts=("stem", "leaf"), size_range=(0.05, 0.13), density=950,
+@register("citrus_fruit", parts=("body",), extra_parts=("stem", "leaf", "calyx", "blossom_end"), size_range=(0.05, 0.13), density=950,
           variants=("orange", "lemon", "lime", "grapefruit"), placement="surface")
 def citrus_fruit(rng: np.random.Generator, variant: str) -> list[Part]:
     col, r, ex = {"orange": ((0.95, 0.55, 0.1), rng.uniform(0.035, 0.045), 1.0),
@@ -315,4 +364,11 @@ def citrus_fruit(rng: np.random.Generator, variant: str) -> list[Part]:
     if rng.random() < 0.5:
         parts.append(make_part("leaf", "leaf", S.box((0.04, 0.018, 0.002), center=(0.02, 0, r * 1.9 + 0.004), R=_rz(0.5)),
                                M.plant(rng)))
+    # the green star of sepals round the stem and the small nub of the blossom end underneath,
+    # pointed on a lemon
+    parts.append(make_part("calyx", "calyx", S.cylinder(0.008, 0.002, center=(0, 0, r * 1.9 - 0.0005), sections=5),
+                           M.food(rng, (0.35, 0.45, 0.15))))
+    nub = 0.006 if variant == "lemon" else 0.003
+    parts.append(make_part("blossom_end", "blossom_end", S.frustum(0.005, 0.002, nub, center=(r * ex - 0.0015, 0, r * 0.95),
+                                                                 axis=(1, 0, 0), sections=8), parts[0].material))
     return parts

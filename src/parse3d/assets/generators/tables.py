@@ -1,7 +1,10 @@
 """Tables and desks: four-leg, pedestal and trestle variants sharing one builder.
 
 Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
-``handle`` and a ``modesty_panel``.
+``handle`` and a ``modesty_panel``. Under the top: a four-leg table's glued ``corner_block`` s
+between its aprons and low ``stretcher`` s joining its legs; a pedestal table's two crossed
+``cleat`` s the column is screwed to; a trestle table's ``corbel`` s bracing each upright under the
+top and the ``wedge`` s locking the stretcher's ``tenon`` s.
 """
 
 from __future__ import annotations
@@ -75,6 +78,27 @@ def _glides(points, r: float) -> list[Part]:
             for k, (x, y) in enumerate(points)]
 
 
+def _corner_blocks(w, d, h_leg, inset: float, leg: float, mat) -> list[Part]:
+    """The four glue blocks in the inside corners between the aprons, under the top."""
+    ah = min(0.09, h_leg * 0.14)
+    b = 0.045
+    return [make_part(f"corner_block_{k}", "corner_block",
+                      S.box((b, b, ah * 0.7), center=(sx * (w / 2 - inset - leg / 2 - b / 2), sy * (d / 2 - inset - 0.015 - b / 2),
+                                                      h_leg - ah * 0.35)), mat)
+            for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
+
+
+def _stretchers(w, d, h_leg, inset: float, leg: float, mat, *, centre: bool) -> list[Part]:
+    """Low rails joining each end's legs, and (``centre``) one joining their middles: an H."""
+    z = h_leg * 0.18
+    t = min(0.03, leg * 0.6)
+    out = [make_part(f"stretcher_{k}", "stretcher", S.box((t, d - 2 * inset - leg, 0.03), center=(sx * (w / 2 - inset), 0, z)), mat)
+           for k, sx in enumerate((-1, 1))]
+    if centre:
+        out.append(make_part("stretcher_2", "stretcher", S.box((w - 2 * inset - t, t, 0.03), center=(0, 0, z)), mat))
+    return out
+
+
 def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
     """A turned column on a round base that stands on four glides."""
     g = _GLIDE
@@ -82,7 +106,11 @@ def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
                    (r_base * 0.2, h_leg - 0.05), (r_base * 0.45, h_leg)], sections=32)
     rg = r_base * 0.78
     pts = [(rg * np.cos(a), rg * np.sin(a)) for a in np.pi / 4 + np.pi / 2 * np.arange(4)]
-    return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12))]
+    # two battens crossed under the top, which the column's head is screwed to
+    cl = r_base * 2.4
+    cleats = [make_part(f"cleat_{k}", "cleat", S.box((cl, 0.05, 0.025) if k == 0 else (0.05, cl, 0.025),
+                                                     center=(0, 0, h_leg - 0.0125)), leg_mat) for k in range(2)]
+    return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12)), *cleats]
 
 
 def _trestle(rng, w, d, h_leg, leg_mat, leg: float) -> list[Part]:
@@ -96,13 +124,26 @@ def _trestle(rng, w, d, h_leg, leg_mat, leg: float) -> list[Part]:
         parts.append(make_part(f"leg_{i}", "leg", [upright, foot, cap], leg_mat))
     bar = S.box((w - 0.24 - leg, 0.04, 0.06), center=(0, 0, 0.25))
     parts.append(make_part("stretcher", "stretcher", bar, leg_mat))
+    # the stretcher's tenons come through the uprights, each locked by a wedge driven down
+    # through it outside; corbels brace each upright under the top, front and back
+    for i, sx in enumerate((-1, 1)):
+        x = sx * (w / 2 - 0.12)
+        parts.append(make_part(f"tenon_{i}", "tenon", S.box((0.04, 0.036, 0.05), center=(x + sx * (leg / 2 + 0.02), 0, 0.25)),
+                               leg_mat))
+        parts.append(make_part(f"wedge_{i}", "wedge", S.box((0.012, 0.026, 0.09), center=(x + sx * (leg / 2 + 0.026), 0, 0.25)),
+                               leg_mat))
+        for j, sy in enumerate((-1, 1)):
+            y0 = sy * leg * 0.7  # the upright's face
+            yz = [(y0, h_leg - 0.04), (y0 + sy * 0.12, h_leg - 0.04), (y0, h_leg - 0.2)]
+            pts = [(x + dx, y, z) for dx in (-leg * 0.4, leg * 0.4) for y, z in yz]
+            parts.append(make_part(f"corbel_{2 * i + j}", "corbel", S.hull(np.array(pts)), leg_mat))
     r = min(0.018, leg * 0.45)
     parts += _glides([(x, y) for x in (-w / 2 + 0.12, w / 2 - 0.12) for y in (-d * 0.4 + r + 0.01, d * 0.4 - r - 0.01)], r)
     return parts
 
 
 def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
-           desk: bool = False) -> list[Part]:
+           desk: bool = False, shelf: bool = False) -> list[Part]:
     w = rng.uniform(*w_rng)
     d = rng.uniform(*d_rng)
     h = rng.uniform(*h_rng)
@@ -119,6 +160,8 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
         inset = leg / 2 + rng.uniform(0.01, 0.05)
         parts += _four_legs(rng, w, d, h_leg, leg_mat, inset=inset, leg=leg, tapered=rng.random() < 0.4)
         parts += _aprons(w, d, h_leg, inset, leg, top_mat, sides="y" if desk else "xy")
+        parts += _corner_blocks(w, d, h_leg, inset, leg, top_mat)
+        parts += _stretchers(w, d, h_leg, inset, leg, leg_mat, centre=not desk and not shelf)
     elif variant == "pedestal":
         parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
     elif variant == "trestle":
@@ -146,28 +189,30 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
     return parts
 
 
-@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot"),
+@register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot",
+                                                       "corner_block", "corbel", "wedge", "tenon"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
 
 
-@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
+@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
           size_range=(1.2, 2.2), density=600, variants=("four_leg", "pedestal", "trestle"))
 def dining_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.3, 2.0), d_rng=(0.8, 1.0), h_rng=(0.73, 0.77), round_ok=True)
 
 
-@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
+@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
           size_range=(0.8, 1.4), density=600, variants=("four_leg", "pedestal"))
 def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
 
 
-@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf"),
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "corbel", "wedge", "tenon"),
           size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
 def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
-    parts = _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True)
+    parts = _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True,
+                   shelf=variant == "four_leg")
     legs = [p for p in parts if p.label == "leg"]
     if variant == "four_leg" and len(legs) == 4:
         # a lower shelf between the legs (for magazines, a lamp's books)
@@ -180,13 +225,13 @@ def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
+@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
           size_range=(0.6, 1.2), density=650, variants=("four_leg", "pedestal"))
 def tea_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.7, 1.1), d_rng=(0.5, 0.7), h_rng=(0.32, 0.5), round_ok=True)
 
 
-@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot"),
+@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
           size_range=(2.0, 4.0), density=600, variants=("four_leg", "trestle"))
 def conference_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(2.2, 3.6), d_rng=(1.0, 1.4), h_rng=(0.73, 0.76))

@@ -33,7 +33,7 @@ def _foot_ring(r: float, width: float, h: float) -> S.Shape:
     return ring([(r - width, 0.0), (r, 0.0), (r - width * 0.5, h + 0.0005)], sections=16)
 
 
-@register("bowl", parts=("body",), extra_parts=("foot_ring", "rim"), size_range=(0.10, 0.28),
+@register("bowl", parts=("body",), extra_parts=("foot_ring", "rim", "band"), size_range=(0.10, 0.28),
           density=1200, variants=("shallow", "deep", "footed"), placement="surface")
 def bowl(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.06, 0.11)
@@ -52,8 +52,14 @@ def bowl(rng: np.random.Generator, variant: str) -> list[Part]:
     body = shell(prof, t, bottom=t * 1.2, sections=20)
     foot = _foot_ring(rb, min(0.008, rb * 0.25), z0)
     rim = _lip(r, h + z0, t, rng.uniform(0.0015, 0.0025))
+    # a painted band round the outside just under the rim (a triangular section: no flat
+    # annulus to resolve)
+    zb0, zb1 = z0 + h * 0.72, z0 + h * 0.82
+    ro0, rom, ro1 = (float(np.interp(z, [p_[1] for p_ in prof], [p_[0] for p_ in prof])) for z in (zb0, (zb0 + zb1) / 2, zb1))
+    band = ring([(ro0 - 0.001, zb0), (rom + 0.0008, (zb0 + zb1) / 2), (ro1 - 0.001, zb1)], sections=20)
     return [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
-            make_part("rim", "rim", rim, mat)]
+            make_part("rim", "rim", rim, mat),
+            make_part("band", "band", band, M.solid((0.2, 0.3, 0.6), "ceramic", 0.3))]
 
 
 @register("plate", parts=("body",), extra_parts=("foot_ring",), size_range=(0.15, 0.30),
@@ -150,7 +156,8 @@ def _wax(rng: np.random.Generator) -> Material:
     return Material(M.jitter(rng, rgb[int(rng.integers(len(rgb)))], 0.02), 0.7, 0.0, "plastic")
 
 
-@register("candle", parts=("body",), extra_parts=("wick", "holder"), size_range=(0.06, 0.40),
+@register("candle", parts=("body",), extra_parts=("wick", "holder", "drip", "bobeche", "lid", "label", "wick_tab"),
+          size_range=(0.06, 0.40),
           density=900, variants=("pillar", "taper", "jar"), placement="surface")
 def candle(rng: np.random.Generator, variant: str) -> list[Part]:
     wax = _wax(rng)
@@ -183,4 +190,15 @@ def candle(rng: np.random.Generator, variant: str) -> list[Part]:
         body = S.lathe([(r_in(0.006), 0.006), (r_in(z_top), z_top)], sections=32)
     wick = S.cylinder(0.0012, 0.012, center=(0, 0, z_top + 0.006), sections=8)
     parts += [make_part("body", "body", body, wax), make_part("wick", "wick", wick, wick_mat)]
+    if variant == "pillar":  # wax that ran down the side when it burned
+        parts += [make_part(f"drip_{k}", "drip", S.ellipsoid((0.004, 0.003, 0.012), center=(np.cos(a) * r, np.sin(a) * r, h - 0.016),
+                                                             subdivisions=1), wax) for k, a in enumerate((0.4, 2.5))]
+    elif variant == "taper":  # the bobeche collar catching drips at the socket
+        parts.append(make_part("bobeche", "bobeche", S.cylinder(r * 2.6, 0.004, center=(0, 0, hz + 0.002), sections=16),
+                               parts[0].material))
+    else:  # the jar's label and the metal tab anchoring the wick
+        parts.append(make_part("label", "label", S.cylinder(r * 1.01 + 0.0005, h * 0.35, center=(0, 0, h * 0.45), sections=24),
+                               M.solid((0.95, 0.93, 0.88), "paper", 0.6)))
+        parts.append(make_part("wick_tab", "wick_tab", S.cylinder(0.005, 0.002, center=(0, 0, 0.006 + 0.001), sections=8),
+                               M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     return parts

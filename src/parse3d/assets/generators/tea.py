@@ -12,6 +12,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
+from ._household import ring
 from ._kit import OPEN_DOOR, hinge_parts, mount, revolute
 
 
@@ -44,7 +45,8 @@ def tea_tray(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("base", "base", S.box((w - 2 * t, d - 2 * t, 0.01), center=(0, 0, fh + 0.005)), wood))
     rim = [S.box((w, t, rh), center=(0, s * (d / 2 - t / 2), fh + rh / 2)) for s in (-1, 1)]
     rim += [S.box((t, d - 2 * t, rh), center=(s * (w / 2 - t / 2), 0, fh + rh / 2)) for s in (-1, 1)]
-    parts.append(make_part("rim", "rim", rim, wood))
+    # the four rails round the floor, each board its own (mitred at the corners)
+    parts += [make_part("rim" if k == 0 else f"rim_{k}", "rim", b, wood) for k, b in enumerate(rim)]
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"handle_{i}", "handle", S.box((0.012, 0.1, 0.02), center=(s * (w / 2 + 0.006), 0, fh + rh - 0.012)),
                                wood))
@@ -87,7 +89,7 @@ def floor_cushion(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_caddy", parts=("body", "lid"), extra_parts=("knob", "hinge", "label"), size_range=(0.07, 0.2), density=500,
+@register("tea_caddy", parts=("body", "lid"), extra_parts=("knob", "hinge", "label", "bead"), size_range=(0.07, 0.2), density=500,
           variants=("round", "square_hinged"), placement="surface")
 def tea_caddy(rng: np.random.Generator, variant: str) -> list[Part]:
     tin = M.solid(M.jitter(rng, [(0.1, 0.3, 0.2), (0.6, 0.1, 0.1), (0.1, 0.1, 0.1), (0.8, 0.65, 0.3)][int(rng.integers(4))],
@@ -98,7 +100,10 @@ def tea_caddy(rng: np.random.Generator, variant: str) -> list[Part]:
                 make_part("lid", "lid", S.cylinder(r + 0.002, 0.02, center=(0, 0, h + 0.008), sections=24), tin),
                 make_part("knob", "knob", S.ellipsoid((0.01, 0.01, 0.008), center=(0, 0, h + 0.02)), tin),
                 make_part("label", "label", S.cylinder(r + 0.0008, h * 0.4, center=(0, 0, h * 0.45), sections=24),
-                          M.paper(rng))]
+                          M.paper(rng)),
+                # the rolled beads stiffening the tin near its foot and under the lid
+                *[make_part(f"bead_{k}", "bead", ring([(r - 0.001, z - 0.002), (r + 0.0015, z), (r - 0.001, z + 0.002)], sections=24), tin)
+                  for k, z in enumerate((0.006, h - 0.03))]]
     w, h = rng.uniform(0.07, 0.1), rng.uniform(0.09, 0.15)
     parts = [make_part("body", "body", S.box((w, w, h), center=(0, 0, h / 2), bevel=0.003), tin),
              make_part("lid", "lid", S.box((w + 0.002, w + 0.002, 0.015), center=(0, 0, h + 0.0075), bevel=0.003), tin),

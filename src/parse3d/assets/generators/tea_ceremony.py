@@ -11,6 +11,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...geometry import shapes as S
+from ...geometry.frames import rot_z
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
@@ -152,7 +153,7 @@ def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("incense_burner", parts=("body", "lid"), extra_parts=("foot", "ear", "knob"),
+@register("incense_burner", parts=("body", "lid"), extra_parts=("foot", "ear", "knob", "vent", "foot_ring"),
           size_range=(0.06, 0.25), density=2500, variants=("tripod", "bowl", "tower"), placement="surface")
 def incense_burner(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if variant == "bowl" else Material(M.jitter(rng, (0.45, 0.35, 0.2), 0.05), 0.4, 0.8, "metal")
@@ -177,4 +178,16 @@ def incense_burner(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("lid", "lid", lid, mat))
     parts.append(make_part("knob", "knob", S.ellipsoid((r * 0.18, r * 0.18, r * 0.2), center=(0, 0, zt + lid_h + r * 0.12),
                                                        subdivisions=1), mat))
+    # the openings in the lid the smoke rises through, round its shoulder
+    dark = Material((0.05, 0.05, 0.05, 1.0), 0.9, 0.0, "metal")
+    zv = zt + lid_h * 0.5
+    rv = r * 0.8
+    for k, a in enumerate(np.linspace(0, 2 * np.pi, 4, endpoint=False) + np.pi / 4):
+        T = np.eye(4)
+        T[:3, :3] = rot_z(a)
+        T[:3, 3] = (np.cos(a) * rv, np.sin(a) * rv, zv)
+        parts.append(make_part(f"vent_{k}", "vent", S.box((0.003, r * 0.3, lid_h * 0.25)).apply(T), dark))
+    if variant != "tripod":  # it stands on a low foot ring
+        parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.45, 0.0), (r * 0.62, 0.0), (r * 0.54, 0.004)],
+                                                              sections=20), mat))
     return parts

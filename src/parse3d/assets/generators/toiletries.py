@@ -15,7 +15,7 @@ from ..registry import register
 from ._household import ring
 
 
-@register("toiletry_bag", parts=("body",), extra_parts=("zipper", "handle", "pull", "hook"),
+@register("toiletry_bag", parts=("body",), extra_parts=("zipper", "handle", "pull", "hook", "tab", "logo"),
           size_range=(0.18, 0.35), density=250, variants=("zipped", "hanging", "barrel"), placement="surface")
 def toiletry_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     cloth = M.fabric(rng) if rng.random() < 0.6 else M.leather(rng)
@@ -32,6 +32,14 @@ def toiletry_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("zipper", "zipper", S.box((L * 0.85, 0.008, 0.004), center=(0, 0, top + 0.001)),
                            Material((0.1, 0.1, 0.1, 1.0), 0.6, 0.0, "plastic")))
     parts.append(make_part("pull", "pull", S.box((0.012, 0.006, 0.025), center=(L * 0.42, 0.006, top - 0.008)), metal))
+    # the second slider of the two-way zip, the fabric tabs finishing the zip's ends and the
+    # maker's patch on the front
+    parts.append(make_part("pull_1", "pull", S.box((0.012, 0.006, 0.025), center=(-L * 0.42, 0.006, top - 0.008)), metal))
+    parts += [make_part(f"tab_{k}", "tab", S.box((0.02, 0.012, 0.008), center=(sx * (L * 0.425 + 0.01), 0, top)), cloth)
+              for k, sx in enumerate((-1, 1))]
+    y_front = r if variant == "barrel" else d / 2
+    z_logo = r if variant == "barrel" else h * 0.45
+    parts.append(make_part("logo", "logo", S.box((0.05, 0.002, 0.02), center=(0, y_front + 0.001, z_logo)), metal))
     handle = S.tube([(-L * 0.2, 0, top - 0.002), (-L * 0.15, 0, top + 0.025), (L * 0.15, 0, top + 0.025),
                      (L * 0.2, 0, top - 0.002)], 0.005, sections=6)
     parts.append(make_part("handle", "handle", handle, cloth))

@@ -16,7 +16,8 @@ from ._casework import black
 from ._kit import legs4
 
 
-@register("suitcase", parts=("shell",), extra_parts=("handle", "wheel", "zipper", "corner", "trolley_handle"),
+@register("suitcase", parts=("shell",), extra_parts=("handle", "wheel", "zipper", "corner", "trolley_handle", "pull", "lock", "tag",
+                                                     "foot", "side_handle"),
           size_range=(0.45, 0.95), density=180, variants=("spinner", "two_wheel", "hard_trunk"), placement="floor")
 def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.36, 0.5), rng.uniform(0.2, 0.3), rng.uniform(0.52, 0.78)
@@ -42,6 +43,17 @@ def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"corner_{i}", "corner", S.box((0.05, 0.05, h), center=(sx * (w / 2 - 0.02), sy * (d / 2 - 0.02), h / 2)),
                                    M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)))
     top = wz + h
+    # the zip's two pulls meeting at the combination lock, the name tag on the top handle's
+    # side and the carry handle on the side
+    dark = black()
+    parts += [make_part(f"pull_{k}", "pull", S.box((0.012, 0.02, 0.03), center=(w / 2 + 0.004, sy * 0.02, wz + h * 0.6)), dark)
+              for k, sy in enumerate((-1, 1))]
+    parts.append(make_part("lock", "lock", S.box((0.008, 0.05, 0.03), center=(w / 2 + 0.004, 0, wz + h * 0.7), bevel=0.002),
+                           M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    parts.append(make_part("side_handle", "side_handle", S.tube([(-w / 2 + 0.005, 0, wz + h * 0.4), (-w / 2 - 0.025, 0, wz + h * 0.45),
+                                                                 (-w / 2 - 0.025, 0, wz + h * 0.55), (-w / 2 + 0.005, 0, wz + h * 0.6)],
+                                                                0.008), dark))
+    parts.append(make_part("tag", "tag", S.box((0.06, 0.004, 0.04), center=(0.09, 0.02, top)), M.solid((0.45, 0.3, 0.2), "leather", 0.6)))
     parts.append(make_part("handle", "handle", S.tube([(-0.06, 0, top - 0.005), (-0.06, 0, top + 0.025), (0.06, 0, top + 0.025),
                                                        (0.06, 0, top - 0.005)], 0.01), black()))
     if variant != "hard_trunk":
@@ -113,7 +125,8 @@ def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("backpack", parts=("body",), extra_parts=("front_pocket", "strap", "top_handle", "flap", "zipper"),
+@register("backpack", parts=("body",), extra_parts=("front_pocket", "strap", "top_handle", "flap", "zipper", "pull", "side_pocket",
+                                                   "buckle", "back_panel", "sternum_strap"),
           size_range=(0.3, 0.65), density=150, variants=("daypack", "rucksack", "school"), placement="floor")
 def backpack(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.28, 0.34), rng.uniform(0.14, 0.2), rng.uniform(0.38, 0.48)
@@ -133,12 +146,25 @@ def backpack(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "rucksack":
         parts.append(make_part("flap", "flap", S.box((w * 0.9, d * 0.8, 0.03), center=(0, 0.01, h + 0.012), bevel=0.01),
                                M.fabric(rng)))
+        # the flap's two buckles down the front
+        parts += [make_part(f"buckle_{k}", "buckle", S.box((0.03, 0.008, 0.04), center=(sx * w * 0.25, d / 2 + 0.004, h * 0.82)), black())
+                  for k, sx in enumerate((-1, 1))]
     else:
         parts.append(make_part("zipper", "zipper", S.box((w * 0.8, 0.006, 0.012), center=(0, d / 2 - 0.01, h * 0.8)), black()))
+        parts += [make_part(f"pull_{k}", "pull", S.box((0.01, 0.006, 0.03), center=(sx * w * 0.3, d / 2 - 0.004, h * 0.8 - 0.02)), black())
+                  for k, sx in enumerate((-1, 1))]
+    # the mesh bottle pockets on the sides, the padded back panel and the strap across the chest
+    parts += [make_part(f"side_pocket_{k}", "side_pocket", S.box((0.03, d * 0.7, h * 0.3), center=(sx * (w / 2 + 0.01), 0, h * 0.2), bevel=0.008),
+                        cloth) for k, sx in enumerate((-1, 1))]
+    parts.append(make_part("back_panel", "back_panel", S.box((w * 0.8, 0.02, h * 0.75), center=(0, -d / 2 - 0.005, h * 0.5), bevel=0.006),
+                           black("fabric")))
+    parts.append(make_part("sternum_strap", "sternum_strap", S.box((w * 0.5 * 1.0, 0.008, 0.02), center=(0, -d / 2 - 0.035, h * 0.62)),
+                           black()))
     return parts
 
 
-@register("handbag", parts=("body", "handle"), extra_parts=("flap", "clasp", "strap", "foot"), size_range=(0.18, 0.45),
+@register("handbag", parts=("body", "handle"), extra_parts=("flap", "clasp", "strap", "foot", "ring", "zipper", "pull"),
+          size_range=(0.18, 0.45),
           density=200, variants=("tote", "satchel", "clutch"), placement="surface")
 def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
     leather = M.leather(rng)
@@ -168,6 +194,13 @@ def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.006, 0.004, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.02), -0.002),
                                                                    sections=8), metal))
+        # the zip across the mouth and its pull
+        parts.append(make_part("zipper", "zipper", S.box((w * 0.8, d * 0.7 * 0.3, 0.003), center=(0, 0, h + 0.0015)), black()))
+        parts.append(make_part("pull", "pull", S.box((0.012, 0.004, 0.03), center=(w * 0.38, d * 0.1, h - 0.012)), metal))
+    if variant != "clutch":  # a metal ring holds each handle end
+        hands = [(sx * w * 0.25, sy * d / 2 * 0.5) for sy in ((-1, 1) if variant == "tote" else (0,)) for sx in (-1, 1)]
+        parts += [make_part(f"ring_{k}", "ring", S.cylinder(0.011, 0.006, center=(x, y, h + 0.006), axis=(1, 0, 0), sections=10), metal)
+                  for k, (x, y) in enumerate(hands)]
     return parts
 
 

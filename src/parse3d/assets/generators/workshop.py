@@ -13,6 +13,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import drawer_parts
+from ._detail_b import each, studs
 from ._kit import legs4, rot
 
 
@@ -66,7 +67,8 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("workbench", parts=("worktop", "leg"),
-          extra_parts=("shelf", "drawer", "drawer_box", "handle", "vise", "back_panel", "stretcher"),
+          extra_parts=("shelf", "drawer", "drawer_box", "handle", "vise", "back_panel", "stretcher", "vise_jaw",
+                       "vise_screw", "vise_handle", "screw"),
           size_range=(1.1, 2.1), density=650, variants=("plain", "drawers", "pegboard_back"))
 def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.2, 2.0), rng.uniform(0.6, 0.8), rng.uniform(0.86, 0.95)
@@ -81,6 +83,9 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("shelf", "shelf", S.box((w - 0.1, d - 0.1, 0.02), center=(0, 0, zs)), wood))
     out.append(make_part("stretcher", "stretcher",
                          S.box((w - 0.12, 0.04, 0.06), center=(0, -d / 2 + 0.06, h - t - 0.1)), wood))
+    # the side stretchers joining front and back legs under the top
+    out += [make_part(f"stretcher_{k}", "stretcher", S.box((0.04, d - 0.2, 0.06), center=(sx * (w / 2 - 0.065), 0, h - t - 0.1)),
+                      wood) for k, sx in enumerate((-1, 1), start=1)]
     if variant == "drawers":
         dw = min(0.5, w * 0.3)
         x1 = w / 2 - 0.1
@@ -93,9 +98,14 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant != "plain":
         # a bench vise at the front-left corner
         vx = -w / 2 + 0.2
-        out.append(make_part("vise", "vise", [S.box((0.16, 0.12, 0.08), center=(vx, d / 2 - 0.02, h + 0.04)),
-                                              S.box((0.16, 0.03, 0.1), center=(vx, d / 2 + 0.055, h + 0.03))],
-                             steel))
+        # its body bolted to the top, the moving jaw in front, the screw and its tommy bar
+        out.append(make_part("vise", "vise", S.box((0.16, 0.12, 0.08), center=(vx, d / 2 - 0.02, h + 0.04)), steel))
+        out.append(make_part("vise_jaw", "vise_jaw", S.box((0.16, 0.03, 0.1), center=(vx, d / 2 + 0.055, h + 0.03)), steel))
+        out.append(make_part("vise_screw", "vise_screw", S.cylinder(0.01, 0.05, center=(vx, d / 2 + 0.095, h + 0.03), axis=(0, 1, 0),
+                                                                    sections=10), steel))
+        out.append(make_part("vise_handle", "vise_handle", S.cylinder(0.006, 0.16, center=(vx, d / 2 + 0.115, h + 0.03), axis=(1, 0, 0),
+                                                                      sections=8), steel))
+        out += studs("screw", "screw", [(vx + sx * 0.06, d / 2 - 0.06, h + 0.0015) for sx in (-1, 1)], r=0.007, h=0.003, mat=steel)
     if variant == "pegboard_back":
         ph = rng.uniform(0.5, 0.7)
         out.append(make_part("back_panel", "back_panel",
@@ -104,7 +114,7 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("pegboard", parts=("board", "hook"), extra_parts=("frame", "shelf", "bin"),
+@register("pegboard", parts=("board", "hook"), extra_parts=("frame", "shelf", "bin", "screw"),
           size_range=(0.4, 1.25), density=700, variants=("hardboard", "metal", "framed"),
           placement="wall")
 def pegboard(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -115,8 +125,10 @@ def pegboard(rng: np.random.Generator, variant: str) -> list[Part]:
     # the board's back is on the wall; a frame of strips around its face holds it (and keeps
     # what hangs on the hooks off the holes)
     out: list[Part] = [make_part("board", "board", S.box((w, t, h), center=(0, t / 2, h / 2)), mat)]
-    out.append(make_part("frame", "frame", [S.box((w, 0.01, 0.03), center=(0, t + 0.005, z))
-                                            for z in (0.015, h - 0.015)], mat))
+    out += each("frame", "frame", [S.box((w, 0.01, 0.03), center=(0, t + 0.005, z)) for z in (0.015, h - 0.015)], mat)
+    # the strips are screwed through the board into the wall, two at each end of each strip
+    out += studs("screw", "screw", [(sx * (w / 2 - 0.03), t + 0.0105, z) for z in (0.015, h - 0.015) for sx in (-1, 1)],
+                 r=0.005, h=0.001, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8), axis=(0, 1, 0))
     steel = M.metal(rng)
     n = int(rng.integers(3, 8))
     for k in range(n):
@@ -139,7 +151,7 @@ def _grip(rng) -> M.Material:
                                   (0.1, 0.1, 0.1)][int(rng.integers(4))], 0.03), "rubber", 0.8)
 
 
-@register("hammer", parts=("head", "handle"), extra_parts=("grip", "claw", "face"),
+@register("hammer", parts=("head", "handle"), extra_parts=("grip", "claw", "face", "wedge", "end_cap"),
           size_range=(0.24, 0.42), density=2500, variants=("claw", "ball_peen", "mallet"),
           placement="surface")
 def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -153,6 +165,9 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
            make_part("grip", "grip", S.cylinder(r * 1.2, L * 0.35, center=(-L / 2 + L * 0.175, 0, hr),
                                                 axis=(1, 0, 0), sections=12), _grip(rng))]
     x = L / 2 - 0.015
+    # the cap closing the grip's end
+    out.append(make_part("end_cap", "end_cap", S.cylinder(r * 1.25, 0.006, center=(-L / 2 + 0.003 - 0.0, 0, hr), axis=(1, 0, 0),
+                                                          sections=12), out[1].material))
     if variant == "mallet":
         out.append(make_part("head", "head", S.cylinder(0.03, 0.11, center=(x, 0, 0.03), axis=(0, 1, 0),
                                                         sections=16), M.solid((0.1, 0.1, 0.1), "rubber")))
@@ -160,6 +175,9 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("head", "head", S.box((0.03, 0.06, 0.03), center=(x, 0, hr)), steel))
     out.append(make_part("face", "face", S.cylinder(0.014, 0.035, center=(x, 0.045, hr), axis=(0, 1, 0),
                                                     sections=14), steel))
+    # the wedge driven into the handle's end across the head's eye
+    out.append(make_part("wedge", "wedge", S.box((0.0015, 0.02, 0.006), center=(x + 0.0155, 0, hr)), M.solid((0.55, 0.55, 0.58),
+                                                                                                          "metal", 0.4, 0.8)))
     if variant == "claw":
         out.append(make_part("claw", "claw", [S.box((0.008, 0.06, 0.02), center=(x + sx * 0.008, -0.055, hr),
                                                     R=rot((0, 0, 1), sx * 0.15)) for sx in (-1, 1)], steel))
@@ -169,7 +187,7 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("screwdriver", parts=("handle", "shaft"), extra_parts=("tip", "grip"),
+@register("screwdriver", parts=("handle", "shaft"), extra_parts=("tip", "grip", "ferrule", "end_cap"),
           size_range=(0.08, 0.36), density=2000, variants=("flat", "phillips", "stubby"),
           placement="surface")
 def screwdriver(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -189,10 +207,15 @@ def screwdriver(rng: np.random.Generator, variant: str) -> list[Part]:
            else S.frustum(0.0035, 0.0005, 0.01, center=(x0 + hl + sl - 0.01, 0, r), axis=(1, 0, 0),
                           sections=4))
     out.append(make_part("tip", "tip", tip, steel))
+    # the bolster where the shaft enters the handle, and the coloured cap on the handle's end
+    out.append(make_part("ferrule", "ferrule", S.frustum(r * 0.6, 0.006, 0.01, center=(x0 + hl, 0, r), axis=(1, 0, 0), sections=10),
+                         steel))
+    out.append(make_part("end_cap", "end_cap", S.cylinder(r * 0.7, 0.004, center=(x0 - 0.002, 0, r), axis=(1, 0, 0), sections=10),
+                         M.solid((0.1, 0.1, 0.1), "rubber")))
     return out
 
 
-@register("wrench", parts=("handle", "jaw"), extra_parts=("ring", "adjuster"),
+@register("wrench", parts=("handle", "jaw"), extra_parts=("ring", "adjuster", "lower_jaw", "pin", "hang_hole"),
           size_range=(0.12, 0.36), density=7800, variants=("combination", "adjustable", "open_end"),
           placement="surface")
 def wrench(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -216,4 +239,16 @@ def wrench(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("adjuster", "adjuster", S.cylinder(0.006 * s, 0.012 * s,
                                                                 center=(xh - 0.004 * s, 0, t / 2),
                                                                 axis=(0, 1, 0), sections=12), steel))
+        # the sliding lower jaw riding on the adjuster, the pin the worm turns on and the hole
+        # at the handle's end to hang it by
+        out.append(make_part("lower_jaw", "lower_jaw", S.box((jw * 0.8, 0.006 * s, t * 0.9), center=(xh + jw * 0.4, -0.0195 * s, t * 0.45)),
+                             steel))
+        out.append(make_part("pin", "pin", S.cylinder(0.0015 * s, 0.014 * s, center=(xh - 0.004 * s, 0, t / 2), axis=(0, 1, 0),
+                                                      sections=8), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+        out.append(make_part("hang_hole", "hang_hole", S.cylinder(0.004 * s, t + 0.0002, center=(-L / 2 + 2 * jw - 0.01 * s, 0, t / 2),
+                                                                  sections=10), M.solid((0.05, 0.05, 0.05), "metal", 0.8)))
+    else:  # a second open jaw, one size smaller, at the other end
+        out += [make_part("jaw_1", "jaw", [S.box((jw * 0.9, 0.008 * s, t), center=(-xh - jw * 0.45, sy * 0.011 * s, t / 2))
+                                           for sy in (-1, 1)] + [S.box((0.008 * s, 0.03 * s, t), center=(-xh - 0.004 * s, 0, t / 2))],
+                          steel)]
     return out
