@@ -10,8 +10,8 @@ Runs ``parse3d vlm build`` (exactly the library call) on a dataset that already 
 views (rendering is not part of the measurement), then prints the items per task, per scene
 and per view, the seconds per scene (wall clock; the asset registry's import is timed apart),
 the answer-letter and "no contact" shares, the share of relations by how they were derived
-(``meta.source`` / ``meta.sources``), an independent audit, the oracle and random scores on
-the test split, and a linear extrapolation to the issue's target: a 200-scene dataset with 4 views should
+(``meta.source`` / ``meta.sources``), an independent audit, chance and the oracle, random,
+prior and text-only (blind) scores on the test split, and a linear extrapolation to the issue's target: a 200-scene dataset with 4 views should
 give at least 5,000 MCQ and 800 SGG items in at most 3 minutes on 2 cores.
 
 The audit re-derives labels from the dataset's files without the builder's code: it reads
@@ -114,7 +114,8 @@ def main() -> None:
     audit(ds, rows, args.audit_mcq, args.audit_sgg)
     test = out / "test.jsonl"
     gt = read_jsonl(test)
-    for name in ("oracle", "random"):
+    print("  chance on test: relation 25.0, contact 25.0 (four options)")
+    for name in ("oracle", "random", "prior", "blind"):
         rep = evaluate(gt, run_baseline(name, test), model=name)
         print(f"  {name} on test: relation {rep.relation.get('accuracy')}, contact "
               f"{rep.contact.get('accuracy')}, SGG F1 {rep.sgg.get('f1')}/"

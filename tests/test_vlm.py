@@ -57,15 +57,19 @@ def _on(child, parent):
 
 PAGS = [
     _pag("tiny-study", "study",
-         [("desk", "desk"), ("mug", "mug"), ("book", "book"), ("chair", "office_chair")],
+         [("desk", "desk"), ("mug", "mug"), ("book", "book"), ("chair", "office_chair"),
+          ("book2", "book")],
          [_on("desk", "floor"), {"relation": "AGAINST", "child": "desk:tabletop@back",
                                  "parent": "wall_0"},
           _on("mug", "desk:tabletop"), _on("book", "desk:tabletop"), _on("chair", "floor"),
+          _on("book2", "chair:seat"),
           {"relation": "NEAR", "child": "chair", "parent": "desk", "distance": 1.0}],
          (3.0, 3.0)),
-    _pag("tiny-bedroom", "bedroom", [("ns", "nightstand"), ("lamp", "table_lamp"), ("bed", "bed")],
-         [_on("bed", "floor"), _on("ns", "floor"),
+    _pag("tiny-bedroom", "bedroom", [("ns", "nightstand"), ("lamp", "table_lamp"), ("bed", "bed"),
+                                     ("ns2", "nightstand")],
+         [_on("bed", "floor"), _on("ns", "floor"), _on("ns2", "floor"),
           {"relation": "AGAINST", "child": "ns@back", "parent": "wall_0"},
+          {"relation": "AGAINST", "child": "ns2@back", "parent": "wall_0"},
           _on("lamp", "ns:top_panel"), {"relation": "AGAINST", "child": "bed@back",
                                         "parent": "wall_0"}],
          (3.5, 3.5)),
@@ -720,3 +724,27 @@ def test_length_grouped_batches_keep_every_item():
     raw = [np.ptp([len(r["messages"][0]["content"]) for r in items[i:i + 4]])
            for i in range(0, 200, 4)]
     assert np.mean(spread) < 0.2 * np.mean(raw)
+
+
+def test_contact_questions_are_balanced_so_text_cannot_answer(bench):
+    """Every part-contact question offers a contact and "not in contact" for the marked
+    objects' categories and for another category pair; per split and category pair, as many
+    answers are a contact as are "not in contact"."""
+    for split in ("train", "val", "test"):
+        answers: dict[tuple, Counter] = {}
+        for r in read_jsonl(bench / f"{split}.jsonl"):
+            if r["task"] != "contact_mcq":
+                continue
+            opts = r["meta"]["options"]
+            pairs = Counter((o["subject"], o["object"]) for o in opts)
+            assert sorted(pairs.values()) == [2, 2]
+            for pair in pairs:
+                kinds = sorted(o["kind"] for o in opts if (o["subject"], o["object"]) == pair)
+                assert kinds == ["contact", "no_contact"]
+            right = opts["ABCD".index(r["meta"]["answer"])]
+            key = tuple(sorted((right["subject"], right["object"])))
+            answers.setdefault(key, Counter())[right["kind"]] += 1
+        for key, c in answers.items():
+            assert c["contact"] == c["no_contact"], (split, key, c)
+    n = sum(1 for r in _all(bench) if r["task"] == "contact_mcq")
+    assert n >= 2

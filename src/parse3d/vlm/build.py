@@ -37,6 +37,14 @@ from PIL import Image, ImageDraw
 
 from .._files import read_json
 from ..errors import InputError, Problem
+from .balance import (
+    ContactCandidate,
+    ContactPrior,
+    contact_candidates,
+    contact_counts,
+    contact_prior,
+    plan_contact_questions,
+)
 from .facts import SceneFacts, VisibilityRule, load_scene_facts, view_facts
 from .items import (
     LETTERS,
@@ -217,11 +225,8 @@ def _record(item: Item, rid: str, scene: SceneFacts, view: int, image: str) -> d
             "images": [image], "meta": meta}
 
 
-def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
-    """All records of one scene (run in the driver or a worker process)."""
-    folder, out, options, candidates, parts = job
-    rule, limits = options.visibility, options.limits
-    vf, rendered = folder, 0
+def _scene_views(folder: Path, out: Path, options: BuildOptions) -> tuple[Path, int]:
+    """Where a scene's views are (rendering them into ``out`` when too few): folder, rendered."""
     n_views = 0
     if (folder / "views.json").exists():
         views = read_json(folder / "views.json", what="views file")
@@ -236,8 +241,25 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
         seed = doc.get("seed", 0) if isinstance(doc, dict) else 0
         if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**32:
             seed = 0
-        vf = _render_missing(folder, out / "renders" / folder.name, options.views, seed)
-        rendered = 1
+        return _render_missing(folder, out / "renders" / folder.name, options.views, seed), 1
+    return folder, 0
+
+
+def _scene_survey(job) -> tuple[str, Path, int, Counter, list[ContactCandidate]]:
+    """First pass over one scene: its views (rendered when missing), its touching part pairs
+    by label and the object pairs a part-contact question may ask about."""
+    folder, out, options = job
+    vf, rendered = _scene_views(folder, out, options)
+    scene = load_scene_facts(folder, views_folder=vf)
+    cands = [c for v in scene.views
+             for c in contact_candidates(scene, view_facts(scene, v, options.visibility))]
+    return folder.name, vf, rendered, contact_counts(scene), cands
+
+
+def _scene_rows(job) -> tuple[str, list[dict[str, Any]]]:
+    """All records of one scene (run in the driver or a worker process)."""
+    folder, vf, out, options, candidates, parts, plan, prior = job
+    rule, limits = options.visibility, options.limits
     scene = load_scene_facts(folder, views_folder=vf)
     present = {o.label for o in scene.objects.values()}
     labels = [c for c in candidates if c not in present]
@@ -250,7 +272,8 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
         view = view_facts(scene, v, rule)
         rng = np.random.default_rng([int(options.seed), scene.index, view.index])
         items = relation_items(scene, view, labels, limits, rule, counts["relation_mcq"], rng)
-        items += contact_items(scene, view, parts, limits, rule, counts["contact_mcq"], rng)
+        items += contact_items(scene, view, [c for c in plan if c.view == view.index], prior,
+                               parts, rule, counts["contact_mcq"], rng)
         sg = sgg_item(scene, view, candidates, rule, boxes=options.boxes)
         if sg is not None:
             items.append(sg)
@@ -263,7 +286,30 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
                     else f"v{view.index}-{_SHORT[item.task]}{k}.jpg")
             _draw(view.rgb, item.marks, img_dir / name, options.jpeg_quality, cache)
             rows.append(_record(item, rid, scene, view.index, f"images/{scene.name}/{name}"))
-    return scene.name, rows, rendered
+    return scene.name, rows
+
+
+def _contact_plan(survey, splits: dict[str, str], options: BuildOptions
+                  ) -> tuple[dict[str, list[ContactCandidate]], dict[str, ContactPrior]]:
+    """The part-contact questions of every scene, balanced per split and category pair
+    (:mod:`parse3d.vlm.balance`), and the prior each scene's options draw from."""
+    plan: dict[str, list[ContactCandidate]] = {name: [] for name, *_ in survey}
+    asked: Counter = Counter()
+    for split in ("train", "val", "test"):
+        cands = [c for name, _, _, _, cs in survey if splits[name] == split for c in cs]
+        rng = np.random.default_rng([int(options.seed), 0x434F4E54, ("train", "val",
+                                                                      "test").index(split)])
+        for c in plan_contact_questions(cands, per_view=options.limits.contact, rng=rng):
+            plan[c.scene].append(c)
+            if split == "train":
+                asked[c.key] += 1
+    if not asked:  # too few training scenes: every split's questions
+        asked.update(c.key for cs in plan.values() for c in cs)
+    counts = {name: cnt for name, _, _, cnt, _ in survey}
+    priors = {name: contact_prior(name, counts, splits, asked) for name in plan}
+    for cs in plan.values():
+        cs.sort(key=lambda c: (c.view, c.a, c.b))
+    return plan, priors
 
 
 def _check_views(folders: list[Path], views: int, dataset: Path) -> None:
@@ -322,27 +368,27 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
     candidates = candidate_objects()
     parts = part_map()
     rows: dict[str, list[dict[str, Any]]] = {"train": [], "val": [], "test": []}
-    rendered = 0
-    jobs = [(folder, out, options, candidates, parts) for folder in folders]
+    pool = None
     if workers > 1 and len(folders) > 1:
         import multiprocessing as mp
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(min(workers, len(folders)),
-                                 mp_context=mp.get_context("forkserver")) as pool:
-            results = pool.map(_scene_rows, jobs)
-            for done, (name, srows, r) in enumerate(results, 1):
-                rows[splits[name]].extend(srows)
-                rendered += r
-                if progress is not None:
-                    progress(done, len(folders))
-    else:
-        for done, job in enumerate(jobs, 1):
-            name, srows, r = _scene_rows(job)
+        pool = ProcessPoolExecutor(min(workers, len(folders)),
+                                   mp_context=mp.get_context("forkserver"))
+    try:
+        run = pool.map if pool is not None else map
+        survey = list(run(_scene_survey, [(f, out, options) for f in folders]))
+        rendered = sum(s[2] for s in survey)
+        plan, priors = _contact_plan(survey, splits, options)
+        jobs = [(folder, vf, out, options, candidates, parts, plan[name], priors[name])
+                for folder, (name, vf, *_) in zip(folders, survey, strict=True)]
+        for done, (name, srows) in enumerate(run(_scene_rows, jobs), 1):
             rows[splits[name]].extend(srows)
-            rendered += r
             if progress is not None:
                 progress(done, len(folders))
+    finally:
+        if pool is not None:
+            pool.shutdown()
     for split, rs in rows.items():
         tmp = out / f".{split}.jsonl.tmp"
         tmp.write_text("".join(json.dumps(r) + "\n" for r in rs))

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from .balance import ContactCandidate, ContactPrior, visible_parts
 from .facts import (
     SceneFacts,
     ViewFacts,
@@ -88,15 +89,13 @@ class TaskLimits:
     relation : int
         Relation MCQs per view (pairs with a PAG relation first).
     contact : int
-        Part-contact MCQs per view about touching object pairs.
-    no_contact_ratio : float
-        Extra part-contact MCQs about pairs that do not touch ("no contact" is the answer),
-        as a fraction of the touching ones (at least one when a view has any such pair).
+        Part-contact MCQs per view about touching object pairs, and as many at most about
+        pairs that do not touch (the split's questions are chosen by
+        :func:`parse3d.vlm.balance.plan_contact_questions`).
     """
 
     relation: int = 8
     contact: int = 6
-    no_contact_ratio: float = 0.34
 
 
 @dataclass
@@ -270,90 +269,87 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
     return items
 
 
-def _visible_parts(scene: SceneFacts, view: ViewFacts, oid: str) -> set[str]:
-    return {n for n in scene.objects[oid].parts if f"{oid}:{n}" in view.parts}
+def _weighted(table: dict, rng: np.random.Generator, exclude=()):
+    """A key of ``table`` drawn with probability proportional to its count (None if none)."""
+    keys = sorted(k for k in table if k not in exclude and table[k] > 0)
+    if not keys:
+        return None
+    w = np.array([table[k] for k in keys], dtype=float)
+    return keys[int(rng.choice(len(keys), p=w / w.sum()))]
 
 
-def contact_items(scene: SceneFacts, view: ViewFacts, part_map: dict[str, list[str]],
-                  limits: TaskLimits, rule: VisibilityRule, counts: dict[str, int],
-                  rng: np.random.Generator) -> list[Item]:
-    """Part-contact MCQs of one view.
+def _contact(subject: str, sp: str, obj: str, op: str) -> dict[str, Any]:
+    return {"kind": "contact", "subject": subject, "subject_part": sp, "object": obj,
+            "object_part": op}
 
-    A question about touching objects asks which parts touch; its answer is a contact of
-    two visible parts from ``contacts.json``. A question about visible objects that do not
-    touch has "not in contact" as its answer. Every question offers the "not in contact"
-    option; the other distractors change the parts (through the object's own parts) or the
-    object (through ``part_map``, category label -> part labels).
+
+def _other_pair(la: str, lb: str, prior: ContactPrior, part_map: dict[str, list[str]],
+                present: set[str], rng: np.random.Generator) -> list[dict[str, Any]]:
+    """The second pair of options: another category pair (drawn by how often it is asked in
+    the training split), touching through a part pair seen touching, and not in contact."""
+    key = _weighted(prior.asked, rng, exclude={(min(la, lb), max(la, lb))})
+    if key is not None:
+        lc, ld = key if rng.random() < 0.5 else key[::-1]
+        parts = _weighted(prior.part_pairs.get((lc, ld), {}), rng)
+        if parts is not None:
+            return [_contact(lc, parts[0], ld, parts[1]),
+                    {"kind": "no_contact", "subject": lc, "object": ld}]
+    # a dataset with a single category pair that touches: an absent category replaces one
+    # of the two objects (false of the whole scene)
+    absent = sorted(lab for lab, ps in part_map.items() if lab not in present and ps)
+    if not absent:
+        return []
+    lab = absent[int(rng.integers(len(absent)))]
+    part = part_map[lab][int(rng.integers(len(part_map[lab])))]
+    pairs = prior.part_pairs.get((la, lb), {})
+    sp, op = next(iter(sorted(pairs))) if pairs else (part, part)
+    if rng.random() < 0.5:
+        return [_contact(lab, part, lb, op), {"kind": "no_contact", "subject": lab,
+                                                "object": lb}]
+    return [_contact(la, sp, lab, part), {"kind": "no_contact", "subject": la, "object": lab}]
+
+
+def contact_items(scene: SceneFacts, view: ViewFacts, plan: list[ContactCandidate],
+                  prior: ContactPrior, part_map: dict[str, list[str]], rule: VisibilityRule,
+                  counts: dict[str, int], rng: np.random.Generator) -> list[Item]:
+    """Part-contact MCQs of one view, about the pairs ``plan`` chose
+    (:func:`parse3d.vlm.balance.plan_contact_questions`).
+
+    Four options (:mod:`parse3d.vlm.balance`): for the marked objects' categories (A, B), a
+    part contact and "not in contact" — one of them true: the touching part pair when they
+    touch (a pair of visible parts from ``contacts.json``), else "not in contact" beside a
+    part pair that touches between such objects elsewhere (``prior.part_pairs``) — and the
+    same two for another category pair (C, D) drawn from ``prior.asked``, false of the
+    marked objects.
     """
-    vis = list(view.objects)
-    touching, apart = [], []
-    for i, a in enumerate(vis):
-        for b in vis[i + 1:]:
-            if (a, b) in scene.contacts:
-                va, vb = _visible_parts(scene, view, a), _visible_parts(scene, view, b)
-                pairs = sorted((pa, pb) for pa, pb in scene.contacts[(a, b)]
-                               if pa in va and pb in vb)
-                if pairs:
-                    touching.append((a, b, pairs))
-            else:
-                apart.append((a, b))
-    rng.shuffle(touching)
-    touching = touching[: limits.contact]
-    n_apart = min(len(apart), max(1, int(round(limits.no_contact_ratio * len(touching)))))
-    picked_apart = [apart[int(i)] for i in rng.permutation(len(apart))[:n_apart]]
+    present = {o.label for o in scene.objects.values()}
     items = []
-    for a, b, pairs in touching + [(a, b, None) for a, b in picked_apart]:
+    for cand in plan:
+        a, b = cand.a, cand.b
         if rng.random() < 0.5:
             a, b = b, a
-            pairs = None if pairs is None else [(q, p) for p, q in pairs]
         oa, ob = scene.objects[a], scene.objects[b]
-        truth = _label_contacts(scene, a, b)
-        no_contact = {"kind": "no_contact", "subject": oa.label, "object": ob.label}
-        la_parts = sorted(set(oa.parts.values()))
-        lb_parts = sorted(set(ob.parts.values()))
-        # two objects of one category: a part pair that touches the other way round would
-        # read as true, so it is no distractor
-        wrong = [(p, q) for p in la_parts for q in lb_parts if (p, q) not in truth
-                 and (oa.label != ob.label or (q, p) not in truth)]
-        rng.shuffle(wrong)
-        swaps = []
-        present = {o.label for o in scene.objects.values()}
-        for lab, parts in part_map.items():
-            if lab not in present and parts:
-                swaps.append((lab, parts))
-        if pairs is None:
-            correct = no_contact
-            dis = [{"kind": "contact", "subject": oa.label, "subject_part": p,
-                    "object": ob.label, "object_part": q} for p, q in wrong[:3]]
-        else:
+        la, lb = oa.label, ob.label
+        no_contact = {"kind": "no_contact", "subject": la, "object": lb}
+        if cand.touching:
+            va, vb = visible_parts(scene, view, a), visible_parts(scene, view, b)
+            pairs = sorted((pa, pb) for pa, pb in scene.contacts[(a, b)] if pa in va and pb in vb)
             pa, pb = pairs[int(rng.integers(len(pairs)))]
-            correct = {"kind": "contact", "subject": oa.label, "subject_part": oa.parts[pa],
-                       "object": ob.label, "object_part": ob.parts[pb]}
+            correct = _contact(la, oa.parts[pa], lb, ob.parts[pb])
             dis = [no_contact]
-            dis += [{"kind": "contact", "subject": oa.label, "subject_part": p,
-                     "object": ob.label, "object_part": q} for p, q in wrong[:1]]
-        while len(dis) < 3 and swaps:
-            lab, parts = swaps.pop(int(rng.integers(len(swaps))))
-            part = parts[int(rng.integers(len(parts)))]
-            if rng.random() < 0.5 and correct["kind"] == "contact":
-                dis.append({**correct, "object": lab, "object_part": part})
-            else:
-                base = correct if correct["kind"] == "contact" else {
-                    "kind": "contact", "subject": oa.label, "subject_part": la_parts[0],
-                    "object": ob.label, "object_part": lb_parts[0]}
-                dis.append({**base, "subject": lab, "subject_part": part})
-        texts = {option_text(correct)}
-        uniq = []
-        for d in dis:
-            t = option_text(d)
-            if t not in texts:
-                texts.add(t)
-                uniq.append(d)
-        if len(uniq) < 3:
+        else:
+            seen = _weighted(prior.part_pairs.get((la, lb), {}), rng)
+            if seen is None:
+                continue
+            correct = no_contact
+            dis = [_contact(la, seen[0], lb, seen[1])]
+        dis += _other_pair(la, lb, prior, part_map, present, rng)
+        texts = {option_text(o) for o in [correct, *dis]}
+        if len(dis) != 3 or len(texts) != 4:
             continue
         prompt, letter, meta = _finish_mcq(
-            CONTACT_PROMPT, correct, uniq[:3], counts, rng,
-            {"red": a, "blue": b, "relation": "no contact" if pairs is None else "contact",
+            CONTACT_PROMPT, correct, dis, counts, rng,
+            {"red": a, "blue": b, "relation": "contact" if cand.touching else "no contact",
              "source": "contacts"})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
