@@ -27,6 +27,7 @@ from typer.testing import CliRunner
 
 from parse3d.cli import app, main
 from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
+from parse3d.errors import InputError
 from parse3d.vlm.build import read_jsonl, record_schema
 from parse3d.vlm.evaluate import evaluate, parse_choice, parse_scene_graph, score_sgg
 from parse3d.vlm.facts import (
@@ -748,3 +749,28 @@ def test_contact_questions_are_balanced_so_text_cannot_answer(bench):
             assert c["contact"] == c["no_contact"], (split, key, c)
     n = sum(1 for r in _all(bench) if r["task"] == "contact_mcq")
     assert n >= 2
+
+
+def test_probe_trains_from_scratch_and_answers_the_test_split(bench, tmp_path):
+    """The learnability probe's CPU path: a small CNN and its text-only twin train on the
+    training MCQ and answer every test MCQ; with the images it can memorise a dozen
+    questions (the text alone cannot: questions with the same options have other answers)."""
+    from parse3d.vlm.probe import ProbeOptions, train_probe
+
+    test_ids = {r["id"] for r in read_jsonl(bench / "test.jsonl") if r["task"] != "sgg"}
+    for image in (True, False):
+        opts = ProbeOptions(size=(32, 24), epochs=40, batch=8, width=8, max_items=12,
+                            lr=3e-3, image=image, threads=1)
+        res = train_probe(bench, opts)
+        assert set(res.responses) == test_ids
+        assert set(res.responses.values()) <= set("ABCD")
+        assert res.items["train"] == 12 and len(res.losses) == 40
+        assert all(math.isfinite(x) for x in res.losses)
+        if image:  # the images tell a dozen questions apart: memorised
+            assert res.losses[-1] < 0.5 * res.losses[0]
+            assert min(res.train_accuracy.values()) >= 75.0, res.train_accuracy
+        report = evaluate(read_jsonl(bench / "test.jsonl"), res.responses)
+        assert report.relation["n"] + report.contact["n"] == len(test_ids)
+        assert json.loads(json.dumps(res.to_json()))["options"]["image"] is image
+    with pytest.raises(InputError, match="benchmark folder"):
+        train_probe(tmp_path)
