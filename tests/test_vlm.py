@@ -774,3 +774,81 @@ def test_probe_trains_from_scratch_and_answers_the_test_split(bench, tmp_path):
         assert json.loads(json.dumps(res.to_json()))["options"]["image"] is image
     with pytest.raises(InputError, match="benchmark folder"):
         train_probe(tmp_path)
+
+
+@pytest.fixture
+def tiny_server(bench, tmp_path):
+    """The tiny random Qwen3-VL served by parse3d.vlm.serve (uvicorn, a free local port)."""
+    import uvicorn
+
+    from parse3d.vlm.serve import make_app
+    from parse3d.vlm.tiny import make_tiny_qwen3vl
+
+    texts = [m["content"] for r in read_jsonl(bench / "train.jsonl") for m in r["messages"]]
+    model = make_tiny_qwen3vl(tmp_path / "tiny", texts, vocab_size=400)
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    srv = uvicorn.Server(uvicorn.Config(make_app(model, name="tiny-qwen3vl", max_tokens=16),
+                                        host="127.0.0.1", port=port, log_level="warning"))
+    t = threading.Thread(target=srv.run, daemon=True)
+    t.start()
+    for _ in range(400):
+        if srv.started:
+            break
+        threading.Event().wait(0.05)
+    assert srv.started
+    yield f"http://127.0.0.1:{port}/v1", model
+    srv.should_exit = True
+    t.join(timeout=10)
+
+
+def _gpu_run():
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "vlm_gpu_run.py"
+    spec = importlib.util.spec_from_file_location("vlm_gpu_run", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_one_gpu_run_on_cpu_with_a_served_tiny_model(bench, tiny_server, tmp_path):
+    """The one-GPU script's CPU path: zero-shot through the OpenAI-compatible client against
+    a served tiny Qwen3-VL, then LoRA (gradient checkpointing, length-grouped batches) and
+    the adapter's answers, each scored into report.json."""
+    import httpx
+
+    url, model = tiny_server
+    # the server speaks the API: a wrong model name is a 404, a file URL a 400
+    r = httpx.post(url + "/chat/completions", json={"model": "other", "messages": []})
+    assert r.status_code == 404
+    r = httpx.post(url + "/chat/completions", json={
+        "model": "tiny-qwen3vl", "messages": [{"role": "user", "content": [
+            {"type": "image_url", "image_url": {"url": "file:///etc/hostname"}},
+            {"type": "text", "text": "hi"}]}]})
+    assert r.status_code == 400 and "data URL" in r.text
+    assert httpx.get(url + "/models").json()["data"][0]["id"] == "tiny-qwen3vl"
+    run, out = _gpu_run(), tmp_path / "gpu"
+    run.main(["zero-shot", "--bench", str(bench), "--endpoint", url, "--model", "tiny-qwen3vl",
+              "--out", str(out), "--limit", "2", "--max-tokens", "8", "-j", "2"])
+    rows = run._test_rows(bench, 2)
+    n = Counter(r["task"] for r in rows)
+    assert n["relation_mcq"] == 2 and n["sgg"] == 2  # the first two of every task
+    pred = read_jsonl(out / "zero-shot.jsonl")
+    assert {p["id"] for p in pred} == {r["id"] for r in rows}
+    assert all(p["usage"]["prompt_tokens"] > 100 for p in pred)  # the image's tokens too
+    run.main(["lora", "--bench", str(bench), "--model", str(model), "--out", str(out),
+              "--max-items", "8", "--epochs", "2", "--global-batch", "4", "--micro-batch", "2",
+              "--lr", "3e-3", "--val-items", "2", "--limit", "2", "--max-tokens", "8"])
+    rec = json.loads((out / "lora" / "finetune.json").read_text())
+    assert rec["recipe"]["gradient_checkpointing"] and rec["recipe"]["group_by_length"]
+    assert rec["updates"] == 4 and rec["val_loss"] is not None
+    assert len(read_jsonl(out / "lora.jsonl")) == len(rows)
+    report = json.loads((out / "report.json").read_text())
+    for name in ("zero-shot", "lora"):
+        s = report[name]["scores"]
+        assert s["relation_mcq"]["n"] == 2 and s["contact_mcq"]["n"] == n["contact_mcq"]
+        assert report[name]["ask"]["answered"] == len(rows)
+    run.main(["fsdp-config", "--processes", "2", "--offload", "--out", str(out / "fsdp.yaml")])
+    assert "distributed_type: FSDP" in (out / "fsdp.yaml").read_text()
