@@ -852,3 +852,22 @@ def test_one_gpu_run_on_cpu_with_a_served_tiny_model(bench, tiny_server, tmp_pat
         assert report[name]["ask"]["answered"] == len(rows)
     run.main(["fsdp-config", "--processes", "2", "--offload", "--out", str(out / "fsdp.yaml")])
     assert "distributed_type: FSDP" in (out / "fsdp.yaml").read_text()
+
+
+def test_relation_options_pair_the_marked_objects_with_another_category_pair(bench):
+    """A relation MCQ offers two statements about the marked objects' categories (the answer
+    and a relation false of them) and two about another category pair (with too few training
+    answers for one, statements with an object replaced)."""
+    rows = [r for r in _all(bench) if r["task"] == "relation_mcq"]
+    assert rows
+    for r in rows:
+        opts = r["meta"]["options"]
+        right = opts["ABCD".index(r["meta"]["answer"])]
+        pairs = Counter((o["subject"], o["object"]) for o in opts)
+        assert pairs[(right["subject"], right["object"])] == 2, opts
+        if sorted(pairs.values()) != [2, 2]:  # too few training answers: the fallback,
+            for o in opts:  # an object replaced by a category absent from the scene
+                assert right["subject"] in (o["subject"], o["object"]) or \
+                    right["object"] in (o["subject"], o["object"]), opts
+        assert len({o["relation"] for o in opts if (o["subject"], o["object"])
+                    == (right["subject"], right["object"])}) == 2

@@ -29,7 +29,7 @@ import numpy as np
 
 from .facts import SceneFacts, ViewFacts
 
-__all__ = ["ContactCandidate", "ContactPrior", "contact_candidates", "contact_counts",
+__all__ = ["ContactCandidate", "ContactPrior", "RelationPrior", "relation_prior", "contact_candidates", "contact_counts",
            "plan_contact_questions", "contact_prior", "visible_parts"]
 
 LabelPair = tuple[str, str]
@@ -173,3 +173,44 @@ def contact_prior(scene: str, counts: dict[str, Counter], splits: dict[str, str]
                 found[(la, lb)][(pa, pb)] = n
         part_pairs.update(found)
     return ContactPrior(part_pairs, dict(asked))
+
+
+@dataclass
+class RelationPrior:
+    """What the training split answers in its relation MCQ, for one scene's options.
+
+    Attributes
+    ----------
+    statements : dict
+        ``(subject label, RELATION, object label) -> answers`` in other scenes of the
+        training split (other splits only when it has none).
+    pairs : dict
+        ``(subject label, object label) -> answers``.
+    relations : dict
+        ``RELATION -> answers``.
+    """
+
+    statements: dict[tuple[str, str, str], int] = field(default_factory=dict)
+    pairs: dict[LabelPair, int] = field(default_factory=dict)
+    relations: dict[str, int] = field(default_factory=dict)
+
+
+def relation_prior(scene: str, answers: dict[str, Counter], splits: dict[str, str]
+                   ) -> RelationPrior:
+    """The prior one scene's relation options draw from: the answers (``(la, REL, lb) ->
+    count`` per scene name) of the other training scenes, or of every other scene when the
+    training split has none besides this one."""
+    total: Counter = Counter()
+    for name, c in answers.items():
+        if name != scene and splits[name] == "train":
+            total.update(c)
+    if not total:
+        for name, c in answers.items():
+            if name != scene:
+                total.update(c)
+    pairs: Counter = Counter()
+    relations: Counter = Counter()
+    for (la, r, lb), n in total.items():
+        pairs[(la, lb)] += n
+        relations[r] += n
+    return RelationPrior(dict(total), dict(pairs), dict(relations))

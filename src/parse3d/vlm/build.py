@@ -44,6 +44,7 @@ from .balance import (
     contact_counts,
     contact_prior,
     plan_contact_questions,
+    relation_prior,
 )
 from .facts import SceneFacts, VisibilityRule, load_scene_facts, view_facts
 from .items import (
@@ -52,6 +53,7 @@ from .items import (
     TaskLimits,
     contact_items,
     relation_items,
+    relation_questions,
     sgg_item,
 )
 from .vocab import NO_CONTACT, RELATION_PHRASES, object_label, part_label
@@ -245,21 +247,28 @@ def _scene_views(folder: Path, out: Path, options: BuildOptions) -> tuple[Path, 
     return folder, 0
 
 
-def _scene_survey(job) -> tuple[str, Path, int, Counter, list[ContactCandidate]]:
+def _scene_survey(job):
     """First pass over one scene: its views (rendered when missing), its touching part pairs
-    by label and the object pairs a part-contact question may ask about."""
+    by label, the object pairs a part-contact question may ask about, and its relation
+    questions (before their options) with their answers by label."""
     folder, out, options = job
     vf, rendered = _scene_views(folder, out, options)
     scene = load_scene_facts(folder, views_folder=vf)
-    cands = [c for v in scene.views
-             for c in contact_candidates(scene, view_facts(scene, v, options.visibility))]
-    return folder.name, vf, rendered, contact_counts(scene), cands
+    cands, questions, answers = [], {}, Counter()
+    for v in scene.views:
+        view = view_facts(scene, v, options.visibility)
+        cands += contact_candidates(scene, view)
+        rng = np.random.default_rng([int(options.seed), scene.index, view.index, 0x52454C])
+        qs = relation_questions(scene, view, options.limits, options.visibility, rng)
+        questions[view.index] = qs
+        answers.update((scene.objects[a].label, r, scene.objects[b].label) for a, r, b in qs)
+    return folder.name, vf, rendered, contact_counts(scene), cands, questions, answers
 
 
 def _scene_rows(job) -> tuple[str, list[dict[str, Any]]]:
     """All records of one scene (run in the driver or a worker process)."""
-    folder, vf, out, options, candidates, parts, plan, prior = job
-    rule, limits = options.visibility, options.limits
+    folder, vf, out, options, candidates, parts, plan, prior, questions, rprior = job
+    rule = options.visibility
     scene = load_scene_facts(folder, views_folder=vf)
     present = {o.label for o in scene.objects.values()}
     labels = [c for c in candidates if c not in present]
@@ -271,7 +280,8 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]]]:
     for v in scene.views:
         view = view_facts(scene, v, rule)
         rng = np.random.default_rng([int(options.seed), scene.index, view.index])
-        items = relation_items(scene, view, labels, limits, rule, counts["relation_mcq"], rng)
+        items = relation_items(scene, view, questions.get(view.index, []), rprior, labels, rule,
+                               counts["relation_mcq"], rng)
         items += contact_items(scene, view, [c for c in plan if c.view == view.index], prior,
                                parts, rule, counts["contact_mcq"], rng)
         sg = sgg_item(scene, view, candidates, rule, boxes=options.boxes)
@@ -296,7 +306,7 @@ def _contact_plan(survey, splits: dict[str, str], options: BuildOptions
     plan: dict[str, list[ContactCandidate]] = {name: [] for name, *_ in survey}
     asked: Counter = Counter()
     for split in ("train", "val", "test"):
-        cands = [c for name, _, _, _, cs in survey if splits[name] == split for c in cs]
+        cands = [c for name, _, _, _, cs, *_ in survey if splits[name] == split for c in cs]
         rng = np.random.default_rng([int(options.seed), 0x434F4E54, ("train", "val",
                                                                       "test").index(split)])
         for c in plan_contact_questions(cands, per_view=options.limits.contact, rng=rng):
@@ -305,7 +315,7 @@ def _contact_plan(survey, splits: dict[str, str], options: BuildOptions
                 asked[c.key] += 1
     if not asked:  # too few training scenes: every split's questions
         asked.update(c.key for cs in plan.values() for c in cs)
-    counts = {name: cnt for name, _, _, cnt, _ in survey}
+    counts = {name: cnt for name, _, _, cnt, *_ in survey}
     priors = {name: contact_prior(name, counts, splits, asked) for name in plan}
     for cs in plan.values():
         cs.sort(key=lambda c: (c.view, c.a, c.b))
@@ -380,8 +390,11 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
         survey = list(run(_scene_survey, [(f, out, options) for f in folders]))
         rendered = sum(s[2] for s in survey)
         plan, priors = _contact_plan(survey, splits, options)
-        jobs = [(folder, vf, out, options, candidates, parts, plan[name], priors[name])
-                for folder, (name, vf, *_) in zip(folders, survey, strict=True)]
+        answers = {s[0]: s[6] for s in survey}
+        jobs = [(folder, vf, out, options, candidates, parts, plan[name], priors[name],
+                 questions, relation_prior(name, answers, splits))
+                for folder, (name, vf, _, _, _, questions, _) in zip(folders, survey,
+                                                                     strict=True)]
         for done, (name, srows) in enumerate(run(_scene_rows, jobs), 1):
             rows[splits[name]].extend(srows)
             if progress is not None:

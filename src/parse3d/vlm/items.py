@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from .balance import ContactCandidate, ContactPrior, visible_parts
+from .balance import ContactCandidate, ContactPrior, RelationPrior, visible_parts
 from .facts import (
     SceneFacts,
     ViewFacts,
@@ -42,6 +42,7 @@ __all__ = [
     "SGG_PROMPT",
     "Item",
     "TaskLimits",
+    "relation_questions",
     "relation_items",
     "contact_items",
     "sgg_item",
@@ -170,56 +171,14 @@ def _finish_mcq(template: str, correct: dict[str, Any],
     return template.format(options=text), LETTERS[k], meta
 
 
-def _relation_distractors(scene: SceneFacts, a: str, b: str, answer: str, true: set[str],
-                          undecided: set[str], labels: list[str],
-                          rng: np.random.Generator) -> list[dict[str, Any]]:
-    la, lb = scene.objects[a].label, scene.objects[b].label
-    wrong_rel = [r for r in RELATION_PHRASES if r not in true and r not in undecided]
-    rng.shuffle(wrong_rel)
-    others = [x for x in labels if x not in (la, lb)]
-    rng.shuffle(others)
-    pool: list[dict[str, Any]] = []
-    # one of each kind first (relation replaced, object replaced, order swapped), then more
-    # replaced relations: the options stay hard, and none of them holds
-    if wrong_rel:
-        pool.append({"kind": "relation", "subject": la, "relation": wrong_rel[0], "object": lb})
-    if others:
-        if rng.random() < 0.5:
-            pool.append({"kind": "relation", "subject": others[0], "relation": answer,
-                         "object": lb})
-        else:
-            pool.append({"kind": "relation", "subject": la, "relation": answer,
-                         "object": others[0]})
-    if la != lb and answer not in SYMMETRIC_RELATIONS:
-        pool.append({"kind": "relation", "subject": lb, "relation": answer, "object": la})
-    for r in wrong_rel[1:]:
-        pool.append({"kind": "relation", "subject": la, "relation": r, "object": lb})
-    for o in others[1:]:
-        pool.append({"kind": "relation", "subject": la, "relation": answer, "object": o})
-    seen: set[str] = {option_text({"kind": "relation", "subject": la, "relation": answer,
-                                   "object": lb})}
-    out = []
-    for p in pool:
-        t = option_text(p)
-        if t not in seen:
-            seen.add(t)
-            out.append(p)
-        if len(out) == 3:
-            break
-    return out
+def relation_questions(scene: SceneFacts, view: ViewFacts, limits: TaskLimits,
+                       rule: VisibilityRule, rng: np.random.Generator
+                       ) -> list[tuple[str, str, str]]:
+    """The relation MCQs of one view before their options: ``(red id, RELATION, blue id)``.
 
-
-def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits: TaskLimits,
-                   rule: VisibilityRule, counts: dict[str, int], rng: np.random.Generator
-                   ) -> list[Item]:
-    """Relation MCQs of one view: a pair of visible objects and one relation that holds.
-
-    ``labels`` are the object labels distractors may substitute: the builder passes the
-    vocabulary's labels of categories absent from the scene, so a distractor with a replaced
-    object is false of the whole scene, not only of the marked boxes.
-
-    Pairs with a PAG relation come first and ask about it; the other pairs ask about a
-    relation drawn among those that hold (camera-frame, near / far, no contact).
+    Pairs with a PAG relation that holds come first (asked about it); the other pairs of
+    visible objects ask about a relation drawn among those that hold (camera-frame, near /
+    far, no contact, ...). At most ``limits.relation``.
     """
     vis = list(view.objects)
     stated = [(c, r, p) for (c, r, p) in sorted(scene.pag) if c in view.objects
@@ -246,16 +205,72 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
         if not cands:
             continue
         chosen.append((a, cands[int(rng.integers(len(cands)))], b))
+    return chosen[: limits.relation]
+
+
+def _statement(subject: str, relation: str, obj: str) -> dict[str, Any]:
+    return {"kind": "relation", "subject": subject, "relation": relation, "object": obj}
+
+
+def _relation_options(la: str, lb: str, answer: str, false: list[str], prior: RelationPrior,
+                      labels: list[str], rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Three false options for "A answer B" (:mod:`parse3d.vlm.balance`): A and B with a
+    relation that is false of them, drawn by how often the training split answers it about
+    such objects; and two statements about another category pair, drawn the same way."""
+    out: list[dict[str, Any]] = []
+    weights = {r: prior.statements.get((la, r, lb), 0) for r in false}
+    r2 = _weighted(weights, rng) or _weighted({r: prior.relations.get(r, 0) + 1
+                                              for r in false}, rng)
+    if r2 is None:
+        return []
+    out.append(_statement(la, r2, lb))
+    key = _weighted(prior.pairs, rng, exclude={(la, lb), (lb, la)})
+    if key is not None:
+        lc, ld = key
+        rels = {r: n for (x, r, y), n in prior.statements.items() if (x, y) == key}
+        r3 = _weighted(rels, rng)
+        r4 = _weighted(rels, rng, exclude={r3}) or _weighted(
+            {r: n + 1 for r, n in prior.relations.items()}, rng, exclude={r3})
+        if r3 is not None and r4 is not None:
+            return out + [_statement(lc, r3, ld), _statement(lc, r4, ld)]
+    # too few training questions for a second category pair: an absent category replaces
+    # one of the two objects (false of the whole scene)
+    if not labels:
+        return []
+    others = [labels[int(i)] for i in rng.choice(len(labels), min(2, len(labels)),
+                                                 replace=False)]
+    for o in others:
+        out.append(_statement(o, answer, lb) if rng.random() < 0.5 else
+                   _statement(la, answer, o))
+    if len(out) < 3:
+        out.append(_statement(la, _weighted({r: 1 for r in false}, rng, exclude={r2})
+                              or r2, others[0]))
+    return out
+
+
+def relation_items(scene: SceneFacts, view: ViewFacts, questions: list[tuple[str, str, str]],
+                   prior: RelationPrior, labels: list[str], rule: VisibilityRule,
+                   counts: dict[str, int], rng: np.random.Generator) -> list[Item]:
+    """Relation MCQs of one view, about the ``questions`` of :func:`relation_questions`.
+
+    Four options: the answer "A REL B" and "A REL2 B" with a relation false of the two
+    (contact relations between objects that do not touch, camera-frame sides beyond the
+    opposite margin, near / far outside their bands; never an undecided one), and two
+    statements about another pair of categories drawn from ``prior`` (how often the
+    training split answers them). ``labels`` are object labels absent from the scene, used
+    only when the training split has no second category pair.
+    """
     items = []
-    for a, rel, b in chosen[: limits.relation]:
+    for a, rel, b in questions:
         sources, undecided = relation_sources(scene, view.camera, a, b, rule)
         true = set(sources)
         if rel not in true:
             continue
         la, lb = scene.objects[a].label, scene.objects[b].label
-        correct = {"kind": "relation", "subject": la, "relation": rel, "object": lb}
-        dis = _relation_distractors(scene, a, b, rel, true, undecided, labels, rng)
-        if len(dis) < 3:
+        false = [r for r in RELATION_PHRASES if r not in true and r not in undecided]
+        dis = _relation_options(la, lb, rel, false, prior, labels, rng)
+        correct = _statement(la, rel, lb)
+        if len(dis) != 3 or len({option_text(o) for o in [correct, *dis]}) != 4:
             continue
         prompt, letter, meta = _finish_mcq(
             RELATION_PROMPT, correct, dis, counts, rng,
