@@ -361,7 +361,8 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
     workers : int
         Worker processes (one scene each at a time); the output does not depend on it.
     progress : callable, optional
-        Called with ``(done, total)`` after each scene.
+        Called with ``(done, total)`` after each scene of each of the two passes (the
+        survey that chooses the questions, then the items): ``total`` is twice the scenes.
     """
     t0 = time.perf_counter()
     ds, out = Path(dataset), Path(out)
@@ -387,7 +388,12 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
                                    mp_context=mp.get_context("forkserver"))
     try:
         run = pool.map if pool is not None else map
-        survey = list(run(_scene_survey, [(f, out, options) for f in folders]))
+        survey = []
+        for done, res in enumerate(run(_scene_survey, [(f, out, options) for f in folders]),
+                                   1):
+            survey.append(res)
+            if progress is not None:
+                progress(done, 2 * len(folders))
         rendered = sum(s[2] for s in survey)
         plan, priors = _contact_plan(survey, splits, options)
         answers = {s[0]: s[6] for s in survey}
@@ -398,7 +404,7 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
         for done, (name, srows) in enumerate(run(_scene_rows, jobs), 1):
             rows[splits[name]].extend(srows)
             if progress is not None:
-                progress(done, len(folders))
+                progress(len(folders) + done, 2 * len(folders))
     finally:
         if pool is not None:
             pool.shutdown()
