@@ -17,6 +17,12 @@ geometry). So that "touching" and "not in contact" are equally likely for every 
 pair, questions are chosen per split and category pair: as many about touching pairs as about
 pairs that do not touch, drawn from all of the split's visible pairs.
 
+The relation MCQ borrows half of this: its options are the answer and a relation false of
+the marked pair, and two statements about another category pair, all drawn by how often the
+training split answers them (:class:`RelationPrior`). Its questions are not yet chosen per
+category pair and relation, so the answer and the false relation can still differ in how
+plausible they are.
+
 Everything here is data in, data out; the builder reads the scenes and writes the items.
 """
 
