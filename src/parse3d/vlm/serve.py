@@ -56,7 +56,8 @@ def record_of(messages: list[dict[str, Any]], folder: Path) -> dict[str, Any]:
         if kind == "text":
             text += str(part.get("text", ""))
         elif kind == "image_url":
-            url = str((part.get("image_url") or {}).get("url", ""))
+            ref = part.get("image_url")
+            url = str(ref.get("url", "") if isinstance(ref, dict) else ref or "")
             head, _, data = url.partition(",")
             mime = head.removeprefix("data:").removesuffix(";base64")
             if not head.startswith("data:") or mime not in _MIME:
