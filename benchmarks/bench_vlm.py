@@ -10,8 +10,8 @@ Runs ``parse3d vlm build`` (exactly the library call) on a dataset that already 
 views (rendering is not part of the measurement), then prints the items per task, per scene
 and per view, the seconds per scene (wall clock; the asset registry's import is timed apart),
 the answer-letter and "no contact" shares, the share of relations by how they were derived
-(``meta.source`` / ``meta.sources``), an independent audit, the oracle and random scores on
-the test split, and a linear extrapolation to the issue's target: a 200-scene dataset with 4 views should
+(``meta.source`` / ``meta.sources``), an independent audit, chance and the oracle, random,
+prior and text-only (blind) scores on the test split, and a linear extrapolation to the issue's target: a 200-scene dataset with 4 views should
 give at least 5,000 MCQ and 800 SGG items in at most 3 minutes on 2 cores.
 
 The audit re-derives labels from the dataset's files without the builder's code: it reads
@@ -21,7 +21,9 @@ answer) and ``--audit-sgg`` random SGG images (every triplet of ``meta.holds``),
 ``near`` / ``far from`` match the horizontal distance of the oriented-box centres (< 0.9 m /
 > 2.2 m), the camera-frame sides their margins (0.15 m / 0.30 m), ``on`` / ``in`` /
 ``against``-type relations and part contacts a contact in ``contacts.json`` and ``no
-contact`` its absence. Relations without a geometric test (``facing``, ``aligned with``) are
+contact`` its absence, and that every distractor of the part-contact MCQ among them is false
+(the opposite of the answer about the marked objects, by ``contacts.json``, or another
+category pair). Relations without a geometric test (``facing``, ``aligned with``) are
 counted apart as not audited.
 """
 
@@ -114,7 +116,8 @@ def main() -> None:
     audit(ds, rows, args.audit_mcq, args.audit_sgg)
     test = out / "test.jsonl"
     gt = read_jsonl(test)
-    for name in ("oracle", "random"):
+    print("  chance on test: relation 25.0, contact 25.0 (four options)")
+    for name in ("oracle", "random", "prior", "blind"):
         rep = evaluate(gt, run_baseline(name, test), model=name)
         print(f"  {name} on test: relation {rep.relation.get('accuracy')}, contact "
               f"{rep.contact.get('accuracy')}, SGG F1 {rep.sgg.get('f1')}/"
@@ -180,6 +183,30 @@ def _agrees(rel: str, a: str, b: str, geo) -> bool | None:
     return None
 
 
+def _contact_distractors_false(r: dict, touching: set) -> tuple[int, int]:
+    """A part-contact MCQ's distractors against ``contacts.json``: (false, checked).
+
+    A distractor naming the marked objects' categories is the opposite of the answer (a
+    contact when the two do not touch, "not in contact" when they do) and must be false by
+    the contacts; one naming other categories must name a category pair other than the
+    marked objects' (the answer's)."""
+    opts, ans = r["meta"]["options"], "ABCD".index(r["meta"]["answer"])
+    pair = (opts[ans]["subject"], opts[ans]["object"])
+    touch = (r["meta"]["red"], r["meta"]["blue"]) in touching
+    ok = n = 0
+    for i, o in enumerate(opts):
+        if i == ans:
+            continue
+        n += 1
+        if (o["subject"], o["object"]) != pair:
+            ok += 1
+        elif o["kind"] == "no_contact":
+            ok += touch
+        else:
+            ok += not touch
+    return ok, n
+
+
 def audit(ds: Path, rows: list[dict], n_mcq: int, n_sgg: int) -> None:
     """Labels re-derived from the files agree with the benchmark's (printed)."""
     rng = np.random.default_rng(0)
@@ -195,6 +222,13 @@ def audit(ds: Path, rows: list[dict], n_mcq: int, n_sgg: int) -> None:
         centre, touching, cams = cache[r["scene"]]
         return centre, touching, cams[int(r["view"])]
 
+    ok = n = 0
+    for r in pick_m:
+        if r["task"] == "contact_mcq":
+            a, b = _contact_distractors_false(r, geo(r)[1])
+            ok, n = ok + a, n + b
+    print(f"  audit part-contact distractors: {ok}/{n} false ({100 * ok / max(n, 1):.2f}%, "
+          "goal 100%)")
     for name, checks in (
             ("MCQ", [(r["id"], r["meta"]["red"],
                       r["meta"].get("phrase", r["meta"]["relation"]), r["meta"]["blue"], r)

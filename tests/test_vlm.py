@@ -27,6 +27,7 @@ from typer.testing import CliRunner
 
 from parse3d.cli import app, main
 from parse3d.datagen.build import BuildConfig, build_dataset, resolve_pag_paths
+from parse3d.errors import InputError
 from parse3d.vlm.build import read_jsonl, record_schema
 from parse3d.vlm.evaluate import evaluate, parse_choice, parse_scene_graph, score_sgg
 from parse3d.vlm.facts import (
@@ -57,15 +58,19 @@ def _on(child, parent):
 
 PAGS = [
     _pag("tiny-study", "study",
-         [("desk", "desk"), ("mug", "mug"), ("book", "book"), ("chair", "office_chair")],
+         [("desk", "desk"), ("mug", "mug"), ("book", "book"), ("chair", "office_chair"),
+          ("book2", "book")],
          [_on("desk", "floor"), {"relation": "AGAINST", "child": "desk:tabletop@back",
                                  "parent": "wall_0"},
           _on("mug", "desk:tabletop"), _on("book", "desk:tabletop"), _on("chair", "floor"),
+          _on("book2", "chair:seat"),
           {"relation": "NEAR", "child": "chair", "parent": "desk", "distance": 1.0}],
          (3.0, 3.0)),
-    _pag("tiny-bedroom", "bedroom", [("ns", "nightstand"), ("lamp", "table_lamp"), ("bed", "bed")],
-         [_on("bed", "floor"), _on("ns", "floor"),
+    _pag("tiny-bedroom", "bedroom", [("ns", "nightstand"), ("lamp", "table_lamp"), ("bed", "bed"),
+                                     ("ns2", "nightstand")],
+         [_on("bed", "floor"), _on("ns", "floor"), _on("ns2", "floor"),
           {"relation": "AGAINST", "child": "ns@back", "parent": "wall_0"},
+          {"relation": "AGAINST", "child": "ns2@back", "parent": "wall_0"},
           _on("lamp", "ns:top_panel"), {"relation": "AGAINST", "child": "bed@back",
                                         "parent": "wall_0"}],
          (3.5, 3.5)),
@@ -720,3 +725,149 @@ def test_length_grouped_batches_keep_every_item():
     raw = [np.ptp([len(r["messages"][0]["content"]) for r in items[i:i + 4]])
            for i in range(0, 200, 4)]
     assert np.mean(spread) < 0.2 * np.mean(raw)
+
+
+def test_contact_questions_are_balanced_so_text_cannot_answer(bench):
+    """Every part-contact question offers a contact and "not in contact" for the marked
+    objects' categories and for another category pair; per split and category pair, as many
+    answers are a contact as are "not in contact"."""
+    for split in ("train", "val", "test"):
+        answers: dict[tuple, Counter] = {}
+        for r in read_jsonl(bench / f"{split}.jsonl"):
+            if r["task"] != "contact_mcq":
+                continue
+            opts = r["meta"]["options"]
+            pairs = Counter((o["subject"], o["object"]) for o in opts)
+            assert sorted(pairs.values()) == [2, 2]
+            for pair in pairs:
+                kinds = sorted(o["kind"] for o in opts if (o["subject"], o["object"]) == pair)
+                assert kinds == ["contact", "no_contact"]
+            right = opts["ABCD".index(r["meta"]["answer"])]
+            key = tuple(sorted((right["subject"], right["object"])))
+            answers.setdefault(key, Counter())[right["kind"]] += 1
+        for key, c in answers.items():
+            assert c["contact"] == c["no_contact"], (split, key, c)
+    n = sum(1 for r in _all(bench) if r["task"] == "contact_mcq")
+    assert n >= 2
+
+
+def test_probe_trains_from_scratch_and_answers_the_test_split(bench, tmp_path):
+    """The learnability probe's CPU path: a small CNN and its text-only twin train on the
+    training MCQ and answer every test MCQ; with the images it can memorise a dozen
+    questions (the text alone cannot: questions with the same options have other answers)."""
+    from parse3d.vlm.probe import ProbeOptions, train_probe
+
+    test_ids = {r["id"] for r in read_jsonl(bench / "test.jsonl") if r["task"] != "sgg"}
+    for image in (True, False):
+        opts = ProbeOptions(size=(32, 24), epochs=40, batch=8, width=8, max_items=12,
+                            lr=3e-3, image=image, threads=1)
+        res = train_probe(bench, opts)
+        assert set(res.responses) == test_ids
+        assert set(res.responses.values()) <= set("ABCD")
+        assert res.items["train"] == 12 and len(res.losses) == 40
+        assert all(math.isfinite(x) for x in res.losses)
+        if image:  # the images tell a dozen questions apart: memorised
+            assert res.losses[-1] < 0.5 * res.losses[0]
+            assert min(res.train_accuracy.values()) >= 75.0, res.train_accuracy
+        report = evaluate(read_jsonl(bench / "test.jsonl"), res.responses)
+        assert report.relation["n"] + report.contact["n"] == len(test_ids)
+        assert json.loads(json.dumps(res.to_json()))["options"]["image"] is image
+    with pytest.raises(InputError, match="benchmark folder"):
+        train_probe(tmp_path)
+
+
+@pytest.fixture
+def tiny_server(bench, tmp_path):
+    """The tiny random Qwen3-VL served by parse3d.vlm.serve (uvicorn, a free local port)."""
+    import uvicorn
+
+    from parse3d.vlm.serve import make_app
+    from parse3d.vlm.tiny import make_tiny_qwen3vl
+
+    texts = [m["content"] for r in read_jsonl(bench / "train.jsonl") for m in r["messages"]]
+    model = make_tiny_qwen3vl(tmp_path / "tiny", texts, vocab_size=400)
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    srv = uvicorn.Server(uvicorn.Config(make_app(model, name="tiny-qwen3vl", max_tokens=16),
+                                        host="127.0.0.1", port=port, log_level="warning"))
+    t = threading.Thread(target=srv.run, daemon=True)
+    t.start()
+    for _ in range(400):
+        if srv.started:
+            break
+        threading.Event().wait(0.05)
+    assert srv.started
+    yield f"http://127.0.0.1:{port}/v1", model
+    srv.should_exit = True
+    t.join(timeout=10)
+
+
+def _gpu_run():
+    import importlib.util
+
+    path = Path(__file__).resolve().parents[1] / "benchmarks" / "vlm_gpu_run.py"
+    spec = importlib.util.spec_from_file_location("vlm_gpu_run", path)
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def test_one_gpu_run_on_cpu_with_a_served_tiny_model(bench, tiny_server, tmp_path):
+    """The one-GPU script's CPU path: zero-shot through the OpenAI-compatible client against
+    a served tiny Qwen3-VL, then LoRA (gradient checkpointing, length-grouped batches) and
+    the adapter's answers, each scored into report.json."""
+    import httpx
+
+    url, model = tiny_server
+    # the server speaks the API: a wrong model name is a 404, a file URL a 400
+    r = httpx.post(url + "/chat/completions", json={"model": "other", "messages": []})
+    assert r.status_code == 404
+    r = httpx.post(url + "/chat/completions", json={
+        "model": "tiny-qwen3vl", "messages": [{"role": "user", "content": [
+            {"type": "image_url", "image_url": {"url": "file:///etc/hostname"}},
+            {"type": "text", "text": "hi"}]}]})
+    assert r.status_code == 400 and "data URL" in r.text
+    assert httpx.get(url + "/models").json()["data"][0]["id"] == "tiny-qwen3vl"
+    run, out = _gpu_run(), tmp_path / "gpu"
+    run.main(["zero-shot", "--bench", str(bench), "--endpoint", url, "--model", "tiny-qwen3vl",
+              "--out", str(out), "--limit", "2", "--max-tokens", "8", "-j", "2"])
+    rows = run._test_rows(bench, 2)
+    n = Counter(r["task"] for r in rows)
+    assert n["relation_mcq"] == 2 and n["sgg"] == 2  # the first two of every task
+    pred = read_jsonl(out / "zero-shot.jsonl")
+    assert {p["id"] for p in pred} == {r["id"] for r in rows}
+    assert all(p["usage"]["prompt_tokens"] > 100 for p in pred)  # the image's tokens too
+    run.main(["lora", "--bench", str(bench), "--model", str(model), "--out", str(out),
+              "--max-items", "8", "--epochs", "2", "--global-batch", "4", "--micro-batch", "2",
+              "--lr", "3e-3", "--val-items", "2", "--limit", "2", "--max-tokens", "8"])
+    rec = json.loads((out / "lora" / "finetune.json").read_text())
+    assert rec["recipe"]["gradient_checkpointing"] and rec["recipe"]["group_by_length"]
+    assert rec["updates"] == 4 and rec["val_loss"] is not None
+    assert len(read_jsonl(out / "lora.jsonl")) == len(rows)
+    report = json.loads((out / "report.json").read_text())
+    for name in ("zero-shot", "lora"):
+        s = report[name]["scores"]
+        assert s["relation_mcq"]["n"] == 2 and s["contact_mcq"]["n"] == n["contact_mcq"]
+        assert report[name]["ask"]["answered"] == len(rows)
+    run.main(["fsdp-config", "--processes", "2", "--offload", "--out", str(out / "fsdp.yaml")])
+    assert "distributed_type: FSDP" in (out / "fsdp.yaml").read_text()
+
+
+def test_relation_options_pair_the_marked_objects_with_another_category_pair(bench):
+    """A relation MCQ offers two statements about the marked objects' categories (the answer
+    and a relation false of them) and two about another category pair (with too few training
+    answers for one, statements with an object replaced)."""
+    rows = [r for r in _all(bench) if r["task"] == "relation_mcq"]
+    assert rows
+    for r in rows:
+        opts = r["meta"]["options"]
+        right = opts["ABCD".index(r["meta"]["answer"])]
+        pairs = Counter((o["subject"], o["object"]) for o in opts)
+        assert pairs[(right["subject"], right["object"])] == 2, opts
+        if sorted(pairs.values()) != [2, 2]:  # too few training answers: the fallback,
+            for o in opts:  # an object replaced by a category absent from the scene
+                assert right["subject"] in (o["subject"], o["object"]) or \
+                    right["object"] in (o["subject"], o["object"]), opts
+        assert len({o["relation"] for o in opts if (o["subject"], o["object"])
+                    == (right["subject"], right["object"])}) == 2

@@ -7,9 +7,10 @@ prediction JSONL a model produces, so ``parse3d vlm eval`` scores them like any 
   triplets among them.
 * ``prior`` — the most frequent answer letter of each task in ``train.jsonl``; for SGG the
   eight most frequent ground-truth triplets (by label) of the training split, without boxes.
-* ``blind`` — text only: every option is scored by how often its relation (relation MCQ) or
-  its part pair / "not in contact" (contact MCQ) was the correct answer in the training
-  split versus a distractor (smoothed log odds); SGG as ``prior``.
+* ``blind`` — text only: every option is scored by how often its text (objects, relation,
+  parts) was the correct answer in the training split versus a distractor (smoothed log
+  odds), backing off to its relation (relation MCQ) or its part pair / "not in contact"
+  (contact MCQ) when the training split never shows that text; SGG as ``prior``.
 * ``oracle`` — answers from the 3-D ground truth of the dataset (``scene.json``,
   ``contacts.json``, ``scene.glb``, ``views.json``): the option that holds, the scene graph
   with boxes projected from the 3-D boxes. Scores 100% on every task when every question
@@ -33,7 +34,7 @@ from ..errors import InputError, Problem
 from .build import read_jsonl
 from .evaluate import parse_scene_graph
 from .facts import SceneFacts, VisibilityRule, load_scene_facts, view_facts
-from .items import LETTERS, format_box, option_holds, sgg_item
+from .items import LETTERS, format_box, option_holds, option_text, sgg_item
 
 __all__ = ["BASELINES", "run_baseline"]
 
@@ -106,15 +107,24 @@ def _blind(rows, train) -> dict[str, str]:
             continue
         ans = LETTERS.index(r["meta"]["answer"])
         for i, o in enumerate(r["meta"]["options"]):
-            (good if i == ans else bad)[_option_key(o)] += 1
+            for key in (_option_key(o), option_text(o)):
+                (good if i == ans else bad)[key] += 1
+
+    def score(o: dict[str, Any]) -> float:
+        # the option's whole text when the training split shows it, else its relation or
+        # part pair
+        key = option_text(o)
+        if good[key] + bad[key] == 0:
+            key = _option_key(o)
+        return math.log((good[key] + 1) / (bad[key] + 1))
+
     sg = _sgg_prior(train)
     out = {}
     for r in rows:
         if r["task"] == "sgg":
             out[r["id"]] = sg
             continue
-        scores = [math.log((good[_option_key(o)] + 1) / (bad[_option_key(o)] + 1))
-                  for o in r["meta"]["options"]]
+        scores = [score(o) for o in r["meta"]["options"]]
         out[r["id"]] = LETTERS[int(np.argmax(scores))]
     return out
 

@@ -37,6 +37,15 @@ from PIL import Image, ImageDraw
 
 from .._files import read_json
 from ..errors import InputError, Problem
+from .balance import (
+    ContactCandidate,
+    ContactPrior,
+    contact_candidates,
+    contact_counts,
+    contact_prior,
+    plan_contact_questions,
+    relation_prior,
+)
 from .facts import SceneFacts, VisibilityRule, load_scene_facts, view_facts
 from .items import (
     LETTERS,
@@ -44,6 +53,7 @@ from .items import (
     TaskLimits,
     contact_items,
     relation_items,
+    relation_questions,
     sgg_item,
 )
 from .vocab import NO_CONTACT, RELATION_PHRASES, object_label, part_label
@@ -217,11 +227,8 @@ def _record(item: Item, rid: str, scene: SceneFacts, view: int, image: str) -> d
             "images": [image], "meta": meta}
 
 
-def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
-    """All records of one scene (run in the driver or a worker process)."""
-    folder, out, options, candidates, parts = job
-    rule, limits = options.visibility, options.limits
-    vf, rendered = folder, 0
+def _scene_views(folder: Path, out: Path, options: BuildOptions) -> tuple[Path, int]:
+    """Where a scene's views are (rendering them into ``out`` when too few): folder, rendered."""
     n_views = 0
     if (folder / "views.json").exists():
         views = read_json(folder / "views.json", what="views file")
@@ -236,8 +243,32 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
         seed = doc.get("seed", 0) if isinstance(doc, dict) else 0
         if isinstance(seed, bool) or not isinstance(seed, int) or not 0 <= seed < 2**32:
             seed = 0
-        vf = _render_missing(folder, out / "renders" / folder.name, options.views, seed)
-        rendered = 1
+        return _render_missing(folder, out / "renders" / folder.name, options.views, seed), 1
+    return folder, 0
+
+
+def _scene_survey(job):
+    """First pass over one scene: its views (rendered when missing), its touching part pairs
+    by label, the object pairs a part-contact question may ask about, and its relation
+    questions (before their options) with their answers by label."""
+    folder, out, options = job
+    vf, rendered = _scene_views(folder, out, options)
+    scene = load_scene_facts(folder, views_folder=vf)
+    cands, questions, answers = [], {}, Counter()
+    for v in scene.views:
+        view = view_facts(scene, v, options.visibility)
+        cands += contact_candidates(scene, view)
+        rng = np.random.default_rng([int(options.seed), scene.index, view.index, 0x52454C])
+        qs = relation_questions(scene, view, options.limits, options.visibility, rng)
+        questions[view.index] = qs
+        answers.update((scene.objects[a].label, r, scene.objects[b].label) for a, r, b in qs)
+    return folder.name, vf, rendered, contact_counts(scene), cands, questions, answers
+
+
+def _scene_rows(job) -> tuple[str, list[dict[str, Any]]]:
+    """All records of one scene (run in the driver or a worker process)."""
+    folder, vf, out, options, candidates, parts, plan, prior, questions, rprior = job
+    rule = options.visibility
     scene = load_scene_facts(folder, views_folder=vf)
     present = {o.label for o in scene.objects.values()}
     labels = [c for c in candidates if c not in present]
@@ -249,8 +280,10 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
     for v in scene.views:
         view = view_facts(scene, v, rule)
         rng = np.random.default_rng([int(options.seed), scene.index, view.index])
-        items = relation_items(scene, view, labels, limits, rule, counts["relation_mcq"], rng)
-        items += contact_items(scene, view, parts, limits, rule, counts["contact_mcq"], rng)
+        items = relation_items(scene, view, questions.get(view.index, []), rprior, labels, rule,
+                               counts["relation_mcq"], rng)
+        items += contact_items(scene, view, [c for c in plan if c.view == view.index], prior,
+                               parts, rule, counts["contact_mcq"], rng)
         sg = sgg_item(scene, view, candidates, rule, boxes=options.boxes)
         if sg is not None:
             items.append(sg)
@@ -263,7 +296,30 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]], int]:
                     else f"v{view.index}-{_SHORT[item.task]}{k}.jpg")
             _draw(view.rgb, item.marks, img_dir / name, options.jpeg_quality, cache)
             rows.append(_record(item, rid, scene, view.index, f"images/{scene.name}/{name}"))
-    return scene.name, rows, rendered
+    return scene.name, rows
+
+
+def _contact_plan(survey, splits: dict[str, str], options: BuildOptions
+                  ) -> tuple[dict[str, list[ContactCandidate]], dict[str, ContactPrior]]:
+    """The part-contact questions of every scene, balanced per split and category pair
+    (:mod:`parse3d.vlm.balance`), and the prior each scene's options draw from."""
+    plan: dict[str, list[ContactCandidate]] = {name: [] for name, *_ in survey}
+    asked: Counter = Counter()
+    for split in ("train", "val", "test"):
+        cands = [c for name, _, _, _, cs, *_ in survey if splits[name] == split for c in cs]
+        rng = np.random.default_rng([int(options.seed), 0x434F4E54, ("train", "val",
+                                                                      "test").index(split)])
+        for c in plan_contact_questions(cands, per_view=options.limits.contact, rng=rng):
+            plan[c.scene].append(c)
+            if split == "train":
+                asked[c.key] += 1
+    if not asked:  # too few training scenes: every split's questions
+        asked.update(c.key for cs in plan.values() for c in cs)
+    counts = {name: cnt for name, _, _, cnt, *_ in survey}
+    priors = {name: contact_prior(name, counts, splits, asked) for name in plan}
+    for cs in plan.values():
+        cs.sort(key=lambda c: (c.view, c.a, c.b))
+    return plan, priors
 
 
 def _check_views(folders: list[Path], views: int, dataset: Path) -> None:
@@ -305,7 +361,8 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
     workers : int
         Worker processes (one scene each at a time); the output does not depend on it.
     progress : callable, optional
-        Called with ``(done, total)`` after each scene.
+        Called with ``(done, total)`` after each scene of each of the two passes (the
+        survey that chooses the questions, then the items): ``total`` is twice the scenes.
     """
     t0 = time.perf_counter()
     ds, out = Path(dataset), Path(out)
@@ -322,27 +379,35 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
     candidates = candidate_objects()
     parts = part_map()
     rows: dict[str, list[dict[str, Any]]] = {"train": [], "val": [], "test": []}
-    rendered = 0
-    jobs = [(folder, out, options, candidates, parts) for folder in folders]
+    pool = None
     if workers > 1 and len(folders) > 1:
         import multiprocessing as mp
         from concurrent.futures import ProcessPoolExecutor
 
-        with ProcessPoolExecutor(min(workers, len(folders)),
-                                 mp_context=mp.get_context("forkserver")) as pool:
-            results = pool.map(_scene_rows, jobs)
-            for done, (name, srows, r) in enumerate(results, 1):
-                rows[splits[name]].extend(srows)
-                rendered += r
-                if progress is not None:
-                    progress(done, len(folders))
-    else:
-        for done, job in enumerate(jobs, 1):
-            name, srows, r = _scene_rows(job)
-            rows[splits[name]].extend(srows)
-            rendered += r
+        pool = ProcessPoolExecutor(min(workers, len(folders)),
+                                   mp_context=mp.get_context("forkserver"))
+    try:
+        run = pool.map if pool is not None else map
+        survey = []
+        for done, res in enumerate(run(_scene_survey, [(f, out, options) for f in folders]),
+                                   1):
+            survey.append(res)
             if progress is not None:
-                progress(done, len(folders))
+                progress(done, 2 * len(folders))
+        rendered = sum(s[2] for s in survey)
+        plan, priors = _contact_plan(survey, splits, options)
+        answers = {s[0]: s[6] for s in survey}
+        jobs = [(folder, vf, out, options, candidates, parts, plan[name], priors[name],
+                 questions, relation_prior(name, answers, splits))
+                for folder, (name, vf, _, _, _, questions, _) in zip(folders, survey,
+                                                                     strict=True)]
+        for done, (name, srows) in enumerate(run(_scene_rows, jobs), 1):
+            rows[splits[name]].extend(srows)
+            if progress is not None:
+                progress(len(folders) + done, 2 * len(folders))
+    finally:
+        if pool is not None:
+            pool.shutdown()
     for split, rs in rows.items():
         tmp = out / f".{split}.jsonl.tmp"
         tmp.write_text("".join(json.dumps(r) + "\n" for r in rs))

@@ -17,6 +17,7 @@ from typing import Any
 
 import numpy as np
 
+from .balance import ContactCandidate, ContactPrior, RelationPrior, visible_parts
 from .facts import (
     SceneFacts,
     ViewFacts,
@@ -41,6 +42,7 @@ __all__ = [
     "SGG_PROMPT",
     "Item",
     "TaskLimits",
+    "relation_questions",
     "relation_items",
     "contact_items",
     "sgg_item",
@@ -88,15 +90,13 @@ class TaskLimits:
     relation : int
         Relation MCQs per view (pairs with a PAG relation first).
     contact : int
-        Part-contact MCQs per view about touching object pairs.
-    no_contact_ratio : float
-        Extra part-contact MCQs about pairs that do not touch ("no contact" is the answer),
-        as a fraction of the touching ones (at least one when a view has any such pair).
+        Part-contact MCQs per view about touching object pairs, and as many at most about
+        pairs that do not touch (the split's questions are chosen by
+        :func:`parse3d.vlm.balance.plan_contact_questions`).
     """
 
     relation: int = 8
     contact: int = 6
-    no_contact_ratio: float = 0.34
 
 
 @dataclass
@@ -171,56 +171,14 @@ def _finish_mcq(template: str, correct: dict[str, Any],
     return template.format(options=text), LETTERS[k], meta
 
 
-def _relation_distractors(scene: SceneFacts, a: str, b: str, answer: str, true: set[str],
-                          undecided: set[str], labels: list[str],
-                          rng: np.random.Generator) -> list[dict[str, Any]]:
-    la, lb = scene.objects[a].label, scene.objects[b].label
-    wrong_rel = [r for r in RELATION_PHRASES if r not in true and r not in undecided]
-    rng.shuffle(wrong_rel)
-    others = [x for x in labels if x not in (la, lb)]
-    rng.shuffle(others)
-    pool: list[dict[str, Any]] = []
-    # one of each kind first (relation replaced, object replaced, order swapped), then more
-    # replaced relations: the options stay hard, and none of them holds
-    if wrong_rel:
-        pool.append({"kind": "relation", "subject": la, "relation": wrong_rel[0], "object": lb})
-    if others:
-        if rng.random() < 0.5:
-            pool.append({"kind": "relation", "subject": others[0], "relation": answer,
-                         "object": lb})
-        else:
-            pool.append({"kind": "relation", "subject": la, "relation": answer,
-                         "object": others[0]})
-    if la != lb and answer not in SYMMETRIC_RELATIONS:
-        pool.append({"kind": "relation", "subject": lb, "relation": answer, "object": la})
-    for r in wrong_rel[1:]:
-        pool.append({"kind": "relation", "subject": la, "relation": r, "object": lb})
-    for o in others[1:]:
-        pool.append({"kind": "relation", "subject": la, "relation": answer, "object": o})
-    seen: set[str] = {option_text({"kind": "relation", "subject": la, "relation": answer,
-                                   "object": lb})}
-    out = []
-    for p in pool:
-        t = option_text(p)
-        if t not in seen:
-            seen.add(t)
-            out.append(p)
-        if len(out) == 3:
-            break
-    return out
+def relation_questions(scene: SceneFacts, view: ViewFacts, limits: TaskLimits,
+                       rule: VisibilityRule, rng: np.random.Generator
+                       ) -> list[tuple[str, str, str]]:
+    """The relation MCQs of one view before their options: ``(red id, RELATION, blue id)``.
 
-
-def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits: TaskLimits,
-                   rule: VisibilityRule, counts: dict[str, int], rng: np.random.Generator
-                   ) -> list[Item]:
-    """Relation MCQs of one view: a pair of visible objects and one relation that holds.
-
-    ``labels`` are the object labels distractors may substitute: the builder passes the
-    vocabulary's labels of categories absent from the scene, so a distractor with a replaced
-    object is false of the whole scene, not only of the marked boxes.
-
-    Pairs with a PAG relation come first and ask about it; the other pairs ask about a
-    relation drawn among those that hold (camera-frame, near / far, no contact).
+    Pairs with a PAG relation that holds come first (asked about it); the other pairs of
+    visible objects ask about a relation drawn among those that hold (camera-frame, near /
+    far, no contact, ...). At most ``limits.relation``.
     """
     vis = list(view.objects)
     stated = [(c, r, p) for (c, r, p) in sorted(scene.pag) if c in view.objects
@@ -247,16 +205,72 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
         if not cands:
             continue
         chosen.append((a, cands[int(rng.integers(len(cands)))], b))
+    return chosen[: limits.relation]
+
+
+def _statement(subject: str, relation: str, obj: str) -> dict[str, Any]:
+    return {"kind": "relation", "subject": subject, "relation": relation, "object": obj}
+
+
+def _relation_options(la: str, lb: str, answer: str, false: list[str], prior: RelationPrior,
+                      labels: list[str], rng: np.random.Generator) -> list[dict[str, Any]]:
+    """Three false options for "A answer B" (:mod:`parse3d.vlm.balance`): A and B with a
+    relation that is false of them, drawn by how often the training split answers it about
+    such objects; and two statements about another category pair, drawn the same way."""
+    out: list[dict[str, Any]] = []
+    weights = {r: prior.statements.get((la, r, lb), 0) for r in false}
+    r2 = _weighted(weights, rng) or _weighted({r: prior.relations.get(r, 0) + 1
+                                              for r in false}, rng)
+    if r2 is None:
+        return []
+    out.append(_statement(la, r2, lb))
+    key = _weighted(prior.pairs, rng, exclude={(la, lb), (lb, la)})
+    if key is not None:
+        lc, ld = key
+        rels = {r: n for (x, r, y), n in prior.statements.items() if (x, y) == key}
+        r3 = _weighted(rels, rng)
+        r4 = _weighted(rels, rng, exclude={r3}) or _weighted(
+            {r: n + 1 for r, n in prior.relations.items()}, rng, exclude={r3})
+        if r3 is not None and r4 is not None:
+            return out + [_statement(lc, r3, ld), _statement(lc, r4, ld)]
+    # too few training questions for a second category pair: an absent category replaces
+    # one of the two objects (false of the whole scene)
+    if not labels:
+        return []
+    others = [labels[int(i)] for i in rng.choice(len(labels), min(2, len(labels)),
+                                                 replace=False)]
+    for o in others:
+        out.append(_statement(o, answer, lb) if rng.random() < 0.5 else
+                   _statement(la, answer, o))
+    if len(out) < 3:
+        out.append(_statement(la, _weighted({r: 1 for r in false}, rng, exclude={r2})
+                              or r2, others[0]))
+    return out
+
+
+def relation_items(scene: SceneFacts, view: ViewFacts, questions: list[tuple[str, str, str]],
+                   prior: RelationPrior, labels: list[str], rule: VisibilityRule,
+                   counts: dict[str, int], rng: np.random.Generator) -> list[Item]:
+    """Relation MCQs of one view, about the ``questions`` of :func:`relation_questions`.
+
+    Four options: the answer "A REL B" and "A REL2 B" with a relation false of the two
+    (contact relations between objects that do not touch, camera-frame sides beyond the
+    opposite margin, near / far outside their bands; never an undecided one), and two
+    statements about another pair of categories drawn from ``prior`` (how often the
+    training split answers them). ``labels`` are object labels absent from the scene, used
+    only when the training split has no second category pair.
+    """
     items = []
-    for a, rel, b in chosen[: limits.relation]:
+    for a, rel, b in questions:
         sources, undecided = relation_sources(scene, view.camera, a, b, rule)
         true = set(sources)
         if rel not in true:
             continue
         la, lb = scene.objects[a].label, scene.objects[b].label
-        correct = {"kind": "relation", "subject": la, "relation": rel, "object": lb}
-        dis = _relation_distractors(scene, a, b, rel, true, undecided, labels, rng)
-        if len(dis) < 3:
+        false = [r for r in RELATION_PHRASES if r not in true and r not in undecided]
+        dis = _relation_options(la, lb, rel, false, prior, labels, rng)
+        correct = _statement(la, rel, lb)
+        if len(dis) != 3 or len({option_text(o) for o in [correct, *dis]}) != 4:
             continue
         prompt, letter, meta = _finish_mcq(
             RELATION_PROMPT, correct, dis, counts, rng,
@@ -270,90 +284,87 @@ def relation_items(scene: SceneFacts, view: ViewFacts, labels: list[str], limits
     return items
 
 
-def _visible_parts(scene: SceneFacts, view: ViewFacts, oid: str) -> set[str]:
-    return {n for n in scene.objects[oid].parts if f"{oid}:{n}" in view.parts}
+def _weighted(table: dict, rng: np.random.Generator, exclude=()):
+    """A key of ``table`` drawn with probability proportional to its count (None if none)."""
+    keys = sorted(k for k in table if k not in exclude and table[k] > 0)
+    if not keys:
+        return None
+    w = np.array([table[k] for k in keys], dtype=float)
+    return keys[int(rng.choice(len(keys), p=w / w.sum()))]
 
 
-def contact_items(scene: SceneFacts, view: ViewFacts, part_map: dict[str, list[str]],
-                  limits: TaskLimits, rule: VisibilityRule, counts: dict[str, int],
-                  rng: np.random.Generator) -> list[Item]:
-    """Part-contact MCQs of one view.
+def _contact(subject: str, sp: str, obj: str, op: str) -> dict[str, Any]:
+    return {"kind": "contact", "subject": subject, "subject_part": sp, "object": obj,
+            "object_part": op}
 
-    A question about touching objects asks which parts touch; its answer is a contact of
-    two visible parts from ``contacts.json``. A question about visible objects that do not
-    touch has "not in contact" as its answer. Every question offers the "not in contact"
-    option; the other distractors change the parts (through the object's own parts) or the
-    object (through ``part_map``, category label -> part labels).
+
+def _other_pair(la: str, lb: str, prior: ContactPrior, part_map: dict[str, list[str]],
+                present: set[str], rng: np.random.Generator) -> list[dict[str, Any]]:
+    """The second pair of options: another category pair (drawn by how often it is asked in
+    the training split), touching through a part pair seen touching, and not in contact."""
+    key = _weighted(prior.asked, rng, exclude={(min(la, lb), max(la, lb))})
+    if key is not None:
+        lc, ld = key if rng.random() < 0.5 else key[::-1]
+        parts = _weighted(prior.part_pairs.get((lc, ld), {}), rng)
+        if parts is not None:
+            return [_contact(lc, parts[0], ld, parts[1]),
+                    {"kind": "no_contact", "subject": lc, "object": ld}]
+    # a dataset with a single category pair that touches: an absent category replaces one
+    # of the two objects (false of the whole scene)
+    absent = sorted(lab for lab, ps in part_map.items() if lab not in present and ps)
+    if not absent:
+        return []
+    lab = absent[int(rng.integers(len(absent)))]
+    part = part_map[lab][int(rng.integers(len(part_map[lab])))]
+    pairs = prior.part_pairs.get((la, lb), {})
+    sp, op = next(iter(sorted(pairs))) if pairs else (part, part)
+    if rng.random() < 0.5:
+        return [_contact(lab, part, lb, op), {"kind": "no_contact", "subject": lab,
+                                                "object": lb}]
+    return [_contact(la, sp, lab, part), {"kind": "no_contact", "subject": la, "object": lab}]
+
+
+def contact_items(scene: SceneFacts, view: ViewFacts, plan: list[ContactCandidate],
+                  prior: ContactPrior, part_map: dict[str, list[str]], rule: VisibilityRule,
+                  counts: dict[str, int], rng: np.random.Generator) -> list[Item]:
+    """Part-contact MCQs of one view, about the pairs ``plan`` chose
+    (:func:`parse3d.vlm.balance.plan_contact_questions`).
+
+    Four options (:mod:`parse3d.vlm.balance`): for the marked objects' categories (A, B), a
+    part contact and "not in contact" — one of them true: the touching part pair when they
+    touch (a pair of visible parts from ``contacts.json``), else "not in contact" beside a
+    part pair that touches between such objects elsewhere (``prior.part_pairs``) — and the
+    same two for another category pair (C, D) drawn from ``prior.asked``, false of the
+    marked objects.
     """
-    vis = list(view.objects)
-    touching, apart = [], []
-    for i, a in enumerate(vis):
-        for b in vis[i + 1:]:
-            if (a, b) in scene.contacts:
-                va, vb = _visible_parts(scene, view, a), _visible_parts(scene, view, b)
-                pairs = sorted((pa, pb) for pa, pb in scene.contacts[(a, b)]
-                               if pa in va and pb in vb)
-                if pairs:
-                    touching.append((a, b, pairs))
-            else:
-                apart.append((a, b))
-    rng.shuffle(touching)
-    touching = touching[: limits.contact]
-    n_apart = min(len(apart), max(1, int(round(limits.no_contact_ratio * len(touching)))))
-    picked_apart = [apart[int(i)] for i in rng.permutation(len(apart))[:n_apart]]
+    present = {o.label for o in scene.objects.values()}
     items = []
-    for a, b, pairs in touching + [(a, b, None) for a, b in picked_apart]:
+    for cand in plan:
+        a, b = cand.a, cand.b
         if rng.random() < 0.5:
             a, b = b, a
-            pairs = None if pairs is None else [(q, p) for p, q in pairs]
         oa, ob = scene.objects[a], scene.objects[b]
-        truth = _label_contacts(scene, a, b)
-        no_contact = {"kind": "no_contact", "subject": oa.label, "object": ob.label}
-        la_parts = sorted(set(oa.parts.values()))
-        lb_parts = sorted(set(ob.parts.values()))
-        # two objects of one category: a part pair that touches the other way round would
-        # read as true, so it is no distractor
-        wrong = [(p, q) for p in la_parts for q in lb_parts if (p, q) not in truth
-                 and (oa.label != ob.label or (q, p) not in truth)]
-        rng.shuffle(wrong)
-        swaps = []
-        present = {o.label for o in scene.objects.values()}
-        for lab, parts in part_map.items():
-            if lab not in present and parts:
-                swaps.append((lab, parts))
-        if pairs is None:
-            correct = no_contact
-            dis = [{"kind": "contact", "subject": oa.label, "subject_part": p,
-                    "object": ob.label, "object_part": q} for p, q in wrong[:3]]
-        else:
+        la, lb = oa.label, ob.label
+        no_contact = {"kind": "no_contact", "subject": la, "object": lb}
+        if cand.touching:
+            va, vb = visible_parts(scene, view, a), visible_parts(scene, view, b)
+            pairs = sorted((pa, pb) for pa, pb in scene.contacts[(a, b)] if pa in va and pb in vb)
             pa, pb = pairs[int(rng.integers(len(pairs)))]
-            correct = {"kind": "contact", "subject": oa.label, "subject_part": oa.parts[pa],
-                       "object": ob.label, "object_part": ob.parts[pb]}
+            correct = _contact(la, oa.parts[pa], lb, ob.parts[pb])
             dis = [no_contact]
-            dis += [{"kind": "contact", "subject": oa.label, "subject_part": p,
-                     "object": ob.label, "object_part": q} for p, q in wrong[:1]]
-        while len(dis) < 3 and swaps:
-            lab, parts = swaps.pop(int(rng.integers(len(swaps))))
-            part = parts[int(rng.integers(len(parts)))]
-            if rng.random() < 0.5 and correct["kind"] == "contact":
-                dis.append({**correct, "object": lab, "object_part": part})
-            else:
-                base = correct if correct["kind"] == "contact" else {
-                    "kind": "contact", "subject": oa.label, "subject_part": la_parts[0],
-                    "object": ob.label, "object_part": lb_parts[0]}
-                dis.append({**base, "subject": lab, "subject_part": part})
-        texts = {option_text(correct)}
-        uniq = []
-        for d in dis:
-            t = option_text(d)
-            if t not in texts:
-                texts.add(t)
-                uniq.append(d)
-        if len(uniq) < 3:
+        else:
+            seen = _weighted(prior.part_pairs.get((la, lb), {}), rng)
+            if seen is None:
+                continue
+            correct = no_contact
+            dis = [_contact(la, seen[0], lb, seen[1])]
+        dis += _other_pair(la, lb, prior, part_map, present, rng)
+        texts = {option_text(o) for o in [correct, *dis]}
+        if len(dis) != 3 or len(texts) != 4:
             continue
         prompt, letter, meta = _finish_mcq(
-            CONTACT_PROMPT, correct, uniq[:3], counts, rng,
-            {"red": a, "blue": b, "relation": "no contact" if pairs is None else "contact",
+            CONTACT_PROMPT, correct, dis, counts, rng,
+            {"red": a, "blue": b, "relation": "contact" if cand.touching else "no contact",
              "source": "contacts"})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
