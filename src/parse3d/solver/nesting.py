@@ -62,7 +62,11 @@ def concentric_first(st: SolveState, oid: str, sup: Support, asset: Asset, scale
         b = asset_geometry(parent.asset).bounds
         ext = (b[1] - b[0])[:2] * parent.scale
         lim = max(NEST_JITTER, STACK_OFF_AXIS * float(min(ext)))
-        samples = samples[np.linalg.norm(samples - at, axis=1) <= lim]
+        # as many candidates as before, all near the axis: a sunflower spiral about it
+        i = np.arange(len(samples), dtype=float)
+        a = 2.399963 * i  # the golden angle
+        samples = at + lim * np.sqrt(i / len(samples))[:, None] * np.c_[np.cos(a), np.sin(a)]
+        return samples
     return np.vstack([at, samples])[:max(len(samples), 1)] if len(samples) else at
 
 
