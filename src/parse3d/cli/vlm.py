@@ -74,7 +74,7 @@ def register(app: typer.Typer) -> None:
         opts = BuildOptions(seed=seed, views=views, boxes=boxes,
                             visibility=VisibilityRule(min_pixels=min_pixels,
                                                       min_in_image=min_in_image))
-        prog, update = _progress("scenes", not as_json and sys.stderr.isatty())
+        prog, update = _progress("scene passes", not as_json and sys.stderr.isatty())
         try:
             res = build_benchmark(dataset, out, opts, workers=workers, progress=update)
         finally:
