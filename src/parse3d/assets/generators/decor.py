@@ -50,6 +50,27 @@ def _mitred_frame(w: float, h: float, bar: float, depth: float, chamfer: float,
     return bars
 
 
+#: The mitred frame's pieces, in :func:`_mitred_frame`'s order: (name, label).
+_FRAME_PIECES = (("rail_bottom", "rail"), ("stile_right", "stile"), ("rail_top", "rail"),
+                 ("stile_left", "stile"), ("backing", "backing"))
+
+
+def _frame_parts(bars: list[S.Shape], mat: Material, rng) -> list[Part]:
+    """The frame's four mitred bars and its backing board as parts (the ``frame`` group)."""
+    board = M.solid(M.jitter(rng, (0.55, 0.45, 0.32), 0.03), "wood", 0.9)
+    return [make_part(n, lab, b, board if lab == "backing" else mat)
+            for (n, lab), b in zip(_FRAME_PIECES, bars, strict=True)]
+
+
+def _hangers(w: float, h: float, bk: float, n: int) -> list[Part]:
+    """``n`` D-ring hangers screwed to the backing board near its top, flush with the back."""
+    metal = M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9)
+    xs = [0.0] if n == 1 else [-w * 0.3, w * 0.3]
+    return [make_part(f"hanger_{k}", "hanger",
+                      S.box((0.025, min(bk, 0.002), 0.018), center=(x, min(bk, 0.002) / 2, h * 0.82)),
+                      metal) for k, x in enumerate(xs)]
+
+
 def _ring(r_out: float, width: float, depth: float, *, cz: float = 0.0, stretch: float = 1.0,
           sections: int = 28) -> S.Shape:
     """A flat ring facing +Y, back on y = 0, centred at (0, cz) in XZ; ``stretch`` scales it
@@ -77,8 +98,9 @@ def _frame_material(rng) -> Material:
     return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
 
 
-@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat",), size_range=(0.2, 1.2),
-          density=500, variants=("landscape", "portrait", "square"), placement="wall")
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger"),
+          size_range=(0.2, 1.2), density=500, variants=("landscape", "portrait", "square"),
+          placement="wall", groups={"frame": ("rail", "stile", "backing")})
 def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
     long = rng.uniform(0.25, 1.1)
     ratio = 1.0 if variant == "square" else rng.uniform(1.25, 1.6)
@@ -86,9 +108,12 @@ def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
     bar = min(w, h) * rng.uniform(0.06, 0.12)
     depth = rng.uniform(0.018, 0.035)
     bk = rng.uniform(0.003, 0.005)
-    parts = [make_part("frame", "frame", _mitred_frame(w, h, bar, depth, bar * 0.25, bk),
-                       _frame_material(rng))]
+    parts = _frame_parts(_mitred_frame(w, h, bar, depth, bar * 0.25, bk), _frame_material(rng), rng)
     iw, ih = w - 2 * bar, h - 2 * bar
+    # the glass in front of the picture, held in the frame's rebate
+    parts.append(make_part("glazing", "glazing", S.box((iw, 0.002, ih), center=(0, depth - 0.0035, h / 2)),
+                           M.glass(rng)))
+    parts += _hangers(w, h, bk, 1 if w < 0.5 else 2)
     # the canvas (and the mat in front of it) fill most of the frame depth in front of the
     # backing board, so no ledge is left inside the frame
     t = (depth - bk) * rng.uniform(0.65, 0.8)
@@ -111,8 +136,9 @@ def _mirror_glass() -> Material:
     return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
 
 
-@register("mirror", parts=("frame", "glass"), size_range=(0.3, 1.8), density=1200,
-          variants=("rectangular", "round", "oval"), placement="wall")
+@register("mirror", parts=("frame", "glass"), extra_parts=("hanger",), size_range=(0.3, 1.8),
+          density=1200, variants=("rectangular", "round", "oval"), placement="wall",
+          groups={"frame": ("rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
     depth = rng.uniform(0.02, 0.04)
     # the glass part is the mirror glass on its backing board, nearly flush with the frame
@@ -125,15 +151,18 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
         bk = 0.004
         frame = _mitred_frame(w, h, bar, depth, bar * 0.3, bk)
         glass = S.box((w - 2 * bar, t_glass - bk, h - 2 * bar), center=(0, (t_glass + bk) / 2, h / 2))
-        return [make_part("frame", "frame", frame, mat), make_part("glass", "glass", glass,
-                                                                   _mirror_glass())]
+        return [*_frame_parts(frame, mat, rng), make_part("glass", "glass", glass, _mirror_glass()),
+                *_hangers(w, h, bk, 2)]
     r = rng.uniform(0.2, 0.45)
     width = r * rng.uniform(0.08, 0.18)
     k = rng.uniform(1.3, 1.7) if variant == "oval" else 1.0
     frame = _ring(r, width, depth, stretch=k)
     glass = _disc(r - width, 0.0, t_glass, stretch=k)
-    return [make_part("frame", "frame", frame, mat), make_part("glass", "glass", glass,
-                                                               _mirror_glass())]
+    # a keyhole hanger plate on the back of the frame's top
+    hanger = S.box((0.03, 0.002, 0.02), center=(0, 0.001, r * k - width / 2))
+    return [make_part("frame", "frame", frame, mat),
+            make_part("glass", "glass", glass, _mirror_glass()),
+            make_part("hanger", "hanger", hanger, M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9))]
 
 
 def _hands(rng, r_face: float, y: float, cz: float) -> Part:
