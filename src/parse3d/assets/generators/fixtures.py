@@ -118,7 +118,8 @@ def radiator(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("light_switch", parts=("plate", "rocker"), extra_parts=("screw",), size_range=(0.07, 0.16), density=900,
+@register("light_switch", parts=("plate", "rocker"), extra_parts=("screw", "bezel", "pilot_light"),
+          size_range=(0.07, 0.16), density=900,
           variants=("single", "double", "triple"), placement="wall")
 def light_switch(rng: np.random.Generator, variant: str) -> list[Part]:
     n = {"single": 1, "double": 2, "triple": 3}[variant]
@@ -128,17 +129,25 @@ def light_switch(rng: np.random.Generator, variant: str) -> list[Part]:
     h = 0.115 if n < 3 else 0.118
     parts = [make_part("plate", "plate", S.box((w, 0.008, h), center=(0, 0.004, h / 2), bevel=0.0015), plastic)]
     rw = (w - 0.02) / n
+    # the bezel framing the rockers, and each rocker's little locator light
+    parts.append(make_part("bezel", "bezel", [S.box((w - 0.016, 0.002, 0.004), center=(0, 0.009, h / 2 + sz * 0.0255))
+                                              for sz in (-1, 1)]
+                           + [S.box((0.004, 0.002, 0.047), center=(sx * (w / 2 - 0.01), 0.009, h / 2)) for sx in (-1, 1)],
+                           plastic))
     for k in range(n):
         x = -w / 2 + 0.01 + rw * (k + 0.5)
         parts.append(make_part(f"rocker_{k}", "rocker", S.box((rw * 0.8, 0.008, 0.045), center=(x, 0.011, h / 2), bevel=0.001,
                                                               R=rot((1, 0, 0), 0.06)), plastic))
+        parts.append(make_part(f"pilot_light_{k}", "pilot_light", S.box((0.004, 0.0012, 0.002), center=(x, 0.0155, h / 2 - 0.016)),
+                               M.solid((0.9, 0.5, 0.1), "glass", 0.1)))
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h / 2 + s * (h / 2 - 0.012)),
                                                                  axis=(0, 1, 0), sections=8), M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
     return parts
 
 
-@register("power_outlet", parts=("plate", "socket"), extra_parts=("screw", "usb_port"), size_range=(0.07, 0.16), density=900,
+@register("power_outlet", parts=("plate", "socket"), extra_parts=("screw", "usb_port", "slot", "ground_hole"),
+          size_range=(0.07, 0.16), density=900,
           variants=("single", "double", "usb"), placement="wall")
 def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 1 if variant == "single" else 2
@@ -149,6 +158,12 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
         x = 0.0 if n == 1 else (k - 0.5) * 0.068
         parts.append(make_part(f"socket_{k}", "socket", S.cylinder(0.022, 0.004, center=(x, 0.009, h / 2), axis=(0, 1, 0), sections=20),
                                plastic))
+        # the two blade slots and the round earth hole in the socket's face (dark, just proud of it)
+        for j, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"slot_{2 * k + j}", "slot", S.box((0.0025, 0.0008, 0.009),
+                                                                     center=(x + sx * 0.0065, 0.0114, h / 2 + 0.003)), black()))
+        parts.append(make_part(f"ground_hole_{k}", "ground_hole", S.cylinder(0.0025, 0.0008, center=(x, 0.0114, h / 2 - 0.009),
+                                                                            axis=(0, 1, 0), sections=8), black()))
     if variant == "usb":
         parts.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.006), center=(0, 0.0085, h * 0.15)), black()))
     parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h * 0.85), axis=(0, 1, 0), sections=8),
