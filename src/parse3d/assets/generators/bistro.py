@@ -123,7 +123,8 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("sign_stand", parts=("base", "frame"), extra_parts=("post", "sign_face", "board", "hinge", "foot"),
+@register("sign_stand", parts=("base", "frame"),
+          extra_parts=("post", "sign_face", "board", "hinge", "foot", "handle", "bracket", "cap"),
           size_range=(0.7, 1.9), density=600, variants=("poster", "twin_post", "a_frame"), placement="floor")
 def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     """A free-standing sign holder facing +Y: a weighted ``base``, a ``post`` (two for
@@ -153,6 +154,8 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         yb = np.tan(spread) * H * 0.85  # the boards' inner faces at that height
         parts.append(make_part("base", "base", S.tube([(0, yb - 0.001, H * 0.15), (0, -yb + 0.001, H * 0.15)], 0.004,
                                                       sections=6), M.metal(rng)))
+        # the carrying handle through the boards' top, under the hinge
+        parts.append(make_part("handle", "handle", S.box((0.12, 0.05, 0.025), center=(0, 0, H - 0.05)), M.metal(rng)))
         return parts
     fw, fh = rng.uniform(0.5, 0.65), rng.uniform(0.7, 0.95)
     top = rng.uniform(1.5, 1.75)
@@ -166,6 +169,10 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("base", "base", S.frustum(0.2, 0.17, 0.02, center=(0, 0, 0), sections=32), metal))
         parts.append(make_part("post", "post", S.cylinder(0.015, z0 + 0.05 - 0.019, center=(0, -t / 2 - 0.015, (z0 + 0.05 + 0.019) / 2),
                                                          sections=12), metal))
+        # the clamp holding the frame on the post, and the post's cap
+        parts.append(make_part("bracket", "bracket", S.box((0.06, 0.03, 0.05), center=(0, -t / 2 - 0.015, z0 + 0.02)), metal))
+        parts.append(make_part("cap", "cap", S.cylinder(0.017, 0.008, center=(0, -t / 2 - 0.015, z0 + 0.05 + 0.004), sections=12),
+                               M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
     else:
         parts.append(make_part("base", "base", S.box((fw + 0.1, 0.06, 0.02), center=(0, 0, 0.03), bevel=0.004), metal))
         for k, sx in enumerate((-1, 1)):
@@ -173,4 +180,6 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"post_{k}", "post", S.box((0.025, 0.025, top - 0.04), center=(x, 0, 0.04 + (top - 0.04) / 2 - 0.001),
                                                               bevel=0.002), metal))
             parts.append(make_part(f"foot_{k}", "foot", S.box((0.05, 0.4, 0.02), center=(x, 0, 0.01), bevel=0.004), metal))
+            parts.append(make_part(f"cap_{k}", "cap", S.box((0.027, 0.027, 0.008), center=(x, 0, top + 0.003)),
+                                   M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
     return parts

@@ -201,15 +201,15 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 def _driver(k: int, r: float, x: float, z: float, y: float, tweeter: bool) -> Part:
-    """A driver of radius ``r`` on the front face (y) of a cabinet: surround ring and dust cap."""
+    """A driver of radius ``r`` on the front face (y) of a cabinet: its cone and surround (the
+    dust cap is a part of its own)."""
     dark = M.solid((0.06, 0.06, 0.07), "plastic", 0.7)
     rim = S.cylinder(r, 0.006, center=(x, y + 0.003, z), axis=(0, 1, 0), sections=20)
-    cap_r = r * (0.6 if tweeter else 0.32)
-    cap = S.ellipsoid((cap_r, cap_r * 0.5, cap_r), center=(x, y + 0.006, z), subdivisions=1)
-    return make_part(f"driver_{k}", "driver", [rim, cap], dark)
+    return make_part(f"driver_{k}", "driver", rim, dark)
 
 
-@register("speaker", parts=("body",), extra_parts=("driver", "plinth"), size_range=(0.2, 1.2),
+@register("speaker", parts=("body",), extra_parts=("driver", "plinth", "dust_cap", "port", "terminal", "badge", "foot"),
+          size_range=(0.2, 1.2),
           density=500, variants=("bookshelf", "floor_standing"))
 def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng) if rng.random() < 0.5 else _housing(rng)
@@ -236,6 +236,27 @@ def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(n_wf):
         parts.append(_driver(k + 1, r_wf, 0.0, z, y, tweeter=False))
         z -= 2 * r_wf + 0.02
+    # each driver's dust cap, the maker's badge; the bass reflex port and binding posts at the back
+    dark = M.solid((0.06, 0.06, 0.07), "plastic", 0.7)
+    for p in [q for q in parts if q.label == "driver"]:
+        c = p.mesh.bounds.mean(axis=0)
+        rr = (p.mesh.bounds[1, 0] - p.mesh.bounds[0, 0]) / 2
+        cap_r = rr * (0.6 if p.name == "driver_0" else 0.32)
+        parts.append(make_part(p.name.replace("driver", "dust_cap"), "dust_cap",
+                               S.ellipsoid((cap_r, cap_r * 0.5, cap_r), center=(c[0], y + 0.006, c[2]), subdivisions=1),
+                               M.solid((0.15, 0.15, 0.16), "plastic", 0.5)))
+    parts.append(make_part("port", "port", S.cylinder(0.025, 0.004, center=(0, -d / 2 - 0.002, z0 + (h - z0) * 0.6),
+                                                      axis=(0, 1, 0), sections=16), dark))
+    parts.append(make_part("badge", "badge", S.box((0.03, 0.002, 0.008), center=(0, y + 0.001, z0 + 0.02)),
+                           M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)))
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"terminal_{k}", "terminal", S.cylinder(0.006, 0.015, center=(sx * 0.015, -d / 2 - 0.0075, z0 + 0.08),
+                                                                       axis=(0, 1, 0), sections=10),
+                               M.solid((0.7, 0.1, 0.1) if k else (0.1, 0.1, 0.1), "metal", 0.3, 0.6)))
+    if variant == "bookshelf":
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"foot_{k}", "foot", S.cylinder(0.008, 0.003, center=(sx * (w / 2 - 0.015), sy * (d / 2 - 0.015), 0.0015),
+                                                                   sections=8), M.solid((0.1, 0.1, 0.1), "rubber", 0.9)))
     return parts
 
 

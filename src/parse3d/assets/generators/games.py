@@ -67,7 +67,9 @@ def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dart_board", parts=("board",), extra_parts=("rim", "dart", "cabinet", "door", "hinge", "number_ring"),
+@register("dart_board", parts=("board",),
+          extra_parts=("rim", "dart", "cabinet", "door", "hinge", "number_ring", "bullseye", "outer_bull",
+                       "treble_ring", "double_ring", "spider"),
           size_range=(0.4, 0.8), density=500, variants=("plain", "cabinet"), placement="wall")
 def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.218, 0.228)
@@ -102,6 +104,29 @@ def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.8)))
     parts.append(make_part("rim", "rim", S.cylinder(r + 0.004, 0.03, center=(0, y0 + 0.015, zc), axis=(0, 1, 0),
                                                     sections=40), black()))
+    # the scoring face: the red and green double and treble rings, the two bulls, and the wire
+    # spider dividing the twenty segments (regulation radii, scaled to the board)
+    k = r / 0.2255
+    face_y = y0 + 0.042
+    red, green = M.solid((0.75, 0.1, 0.1), "paper", 0.8), M.solid((0.1, 0.5, 0.2), "paper", 0.8)
+
+    def flat_ring(r0: float, r1: float, y: float) -> S.Shape:
+        a = np.linspace(0, 2 * np.pi, 20, endpoint=False)
+        rm = (r0 + r1) / 2
+        return S.tube(np.c_[rm * np.cos(a), np.full(20, y), zc + rm * np.sin(a)], (r1 - r0) / 2, sections=6, closed=True)
+
+    parts.append(make_part("double_ring", "double_ring", flat_ring(0.162 * k, 0.170 * k, face_y + 0.004 * k), red))
+    parts.append(make_part("treble_ring", "treble_ring", flat_ring(0.099 * k, 0.107 * k, face_y + 0.004 * k), green))
+    parts.append(make_part("outer_bull", "outer_bull", flat_ring(0.00635 * k, 0.016 * k, face_y + 0.0048 * k), green))
+    parts.append(make_part("bullseye", "bullseye", S.cylinder(0.00635 * k, 0.001, center=(0, face_y + 0.0005, zc), axis=(0, 1, 0),
+                                                              sections=12), red))
+    wires = []
+    for j in range(20):
+        a = np.pi / 2 + np.pi / 20 + 2 * np.pi * j / 20
+        c = (0.016 * k + 0.170 * k) / 2
+        wires.append(S.box(((0.170 - 0.016) * k, 0.0012, 0.001), center=(c * np.cos(a), face_y + 0.0014, zc + c * np.sin(a)),
+                           R=rot((0, 1, 0), -a)))
+    parts.append(make_part("spider", "spider", wires, M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
     for k in range(int(rng.integers(0, 4))):
         a = rng.uniform(0, 2 * np.pi)
         rr = rng.uniform(0.0, r * 0.7)
