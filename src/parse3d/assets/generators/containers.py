@@ -34,7 +34,8 @@ def _hoops(r_at, zs, *, bulge: float, width: float, sections: int = 20) -> list[
     return out
 
 
-@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim"), size_range=(0.18, 0.46),
+@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim", "stake", "post", "foot_ring"),
+          size_range=(0.18, 0.46),
           density=500, variants=("round", "rectangular", "handled"), placement="surface")
 def basket(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = _wicker(rng)
@@ -53,6 +54,15 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
                 slat = S.box((w + 2 * g - 0.01, 0.006, 0.018),
                              center=(0, sy * (d / 2 + g + 0.001), z), bevel=0.002)
                 parts.append(make_part(f"slat_{2 * k + i}", "slat", slat, mat))
+        # the corner posts the weave is worked round, and the wrapped border along the top
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"post_{k}", "post", S.hull(np.array(
+                [[sx * (w / 2 + dx), sy * (d / 2 + dy), 0.0] for dx in (0.0, 0.006) for dy in (0.0, 0.006)]
+                + [[sx * (w / 2 + flare + dx), sy * (d / 2 + flare + dy), h] for dx in (0.0, 0.006) for dy in (0.0, 0.006)])), mat))
+        bt = 0.012
+        border = [S.box((w + 2 * flare + 0.012, bt, bt), center=(0, sy * (d / 2 + flare), h - bt / 2)) for sy in (-1, 1)]
+        border += [S.box((bt, d + 2 * flare - bt, bt), center=(sx * (w / 2 + flare), 0, h - bt / 2)) for sx in (-1, 1)]
+        parts.append(make_part("rim", "rim", border, mat))
         top = h
         span = d / 2 + flare - 0.01
     else:
@@ -71,6 +81,13 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("body", "body", body, mat))
         parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
         parts.append(make_part("rim", "rim", rim, mat))
+        # the stakes the weave runs round, standing proud of the wall, and the foot ring
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8):
+            d0, d1 = np.array([np.cos(a), np.sin(a)]) * (r * 0.78 + 0.002), np.array([np.cos(a), np.sin(a)]) * (r + 0.002)
+            parts.append(make_part(f"stake_{k}", "stake", S.tube([(*d0, 0.012), (*d1, h - 0.006)], 0.003, sections=6), mat))
+        parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.78 - 0.008, 0.0), (r * 0.78 + 0.004, 0.0),
+                                                               (r * 0.78 + 0.004, 0.012), (r * 0.78 - 0.008, 0.012)],
+                                                              sections=16), mat))
         top = h + 0.006
         span = r - 0.01
     if variant == "handled" or (variant == "rectangular" and rng.random() < 0.5):
@@ -152,7 +169,8 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear"), size_range=(0.22, 0.42),
+@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear", "spout", "foot_ring"),
+          size_range=(0.22, 0.42),
           density=900, variants=("metal", "plastic"), placement="surface")
 def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.12, 0.15)
@@ -186,6 +204,14 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     mid = path[len(path) // 2]
     grip = S.cylinder(0.008, 0.1, center=mid, axis=(1, 0, 0), sections=10)
     parts.append(make_part("grip", "grip", grip, M.plastic(rng)))
+    # the rolled foot ring it stands on, and (plastic) the pouring lip on the front
+    parts.append(make_part("foot_ring", "foot_ring", ring([(rb - 0.006, 0.0), (rb + 0.003, 0.0), (rb + 0.003, 0.01),
+                                                           (rb - 0.006, 0.01)], sections=20), mat))
+    if variant == "plastic":
+        parts.append(make_part("spout", "spout", S.hull(np.array(
+            [[sx * 0.03, r_at(h - 0.04) - 0.002, h - 0.04] for sx in (-1, 1)]
+            + [[sx * 0.035, r + 0.004, h + 0.002] for sx in (-1, 1)] + [[0, r + 0.02, h + 0.002]]
+            + [[sx * 0.035, r - 0.004, h + 0.002] for sx in (-1, 1)])), mat))
     return parts
 
 
