@@ -212,8 +212,10 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
                  make_part("louver", "louver", S.box((w * 0.8, 0.05, 0.006), center=(0, d - 0.02, 0.03), R=rot((1, 0, 0), 0.5)), shell),
                  make_part("display", "display", S.box((0.06, 0.004, 0.02), center=(w / 2 - 0.1, d + 0.01, h * 0.35)),
                            M.solid((0.1, 0.3, 0.5), "glass", 0.1)),
-                 make_part("vent", "vent", [S.box((w - 0.06, 0.04, 0.004), center=(0, d / 2 + 0.02 * i, h + 0.001)) for i in range(-2, 3)],
-                           M.solid((0.8, 0.8, 0.8), "plastic"))]
+                 # the intake grille's slats across the top
+                 *[make_part("vent" if i == -2 else f"vent_{i + 2}", "vent",
+                             S.box((w - 0.06, 0.012, 0.004), center=(0, d / 2 + 0.02 * i, h + 0.001)),
+                             M.solid((0.8, 0.8, 0.8), "plastic")) for i in range(-2, 3)]]
         parts.append(make_part("pipe", "pipe", S.tube([(-w / 2 + 0.05, 0.02, 0.02), (-w / 2 + 0.05, 0.02, -0.15)], 0.012), shell))
         return parts
     if variant == "window":

@@ -211,7 +211,10 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         h = rng.uniform(0.08, 0.14)
         parts += legs4("leg", "leg", w=w, d=d, h=h - 0.012, size=0.02, mat=alu)
         parts.append(make_part("platform", "platform", S.box((w, d, 0.012), center=(0, 0, h - 0.006), bevel=0.002), M.wood(rng)))
-        parts.append(make_part("base", "base", [S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)) for sy in (-1, 1)], alu))
+        # the two runners the legs stand on, front and back
+        for k, sy in enumerate((-1, 1)):
+            parts.append(make_part("base" if k == 0 else "base_1", "base",
+                                   S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)), alu))
         return parts
     tilt = np.deg2rad(rng.uniform(15, 25))
     hf = 0.03  # the platform's front edge height
@@ -221,13 +224,16 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("lip", "lip", S.box((w * 0.8, 0.008, 0.018), center=(0, d / 2 * np.cos(tilt) - 0.004, hf + 0.009)), alu))
     parts.append(make_part("base", "base", S.box((w * 0.9, d * 0.9, 0.008), center=(0, 0, 0.004)), alu))
     if variant == "angled":
-        parts.append(make_part("arm", "arm", [S.box((0.012, d * 0.85, 0.012), center=(sx * w * 0.4, 0, (hf + hb_) / 2 - 0.01), R=R)
-                                               for sx in (-1, 1)] + [S.box((0.012, 0.012, hb_ - 0.01), center=(sx * w * 0.4, -d * 0.4 * np.cos(tilt),
-                                                                                                        (hb_ - 0.01) / 2 + 0.004))
-                                                                     for sx in (-1, 1)], alu))
+        # a side arm each side: a rail under the platform on an upright at the back
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm",
+                                   [S.box((0.012, d * 0.85, 0.012), center=(sx * w * 0.4, 0, (hf + hb_) / 2 - 0.01), R=R),
+                                    S.box((0.012, 0.012, hb_ - 0.01), center=(sx * w * 0.4, -d * 0.4 * np.cos(tilt),
+                                                                              (hb_ - 0.01) / 2 + 0.004))], alu))
     else:  # an arm on hinges: one strut from the base's front to the platform's back
-        parts.append(make_part("arm", "arm", [S.tube([(sx * w * 0.35, d * 0.35, 0.008), (sx * w * 0.35, -d * 0.35, hb_ - 0.012)], 0.008,
-                                                     sections=8) for sx in (-1, 1)], alu))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm", S.tube([(sx * w * 0.35, d * 0.35, 0.008), (sx * w * 0.35, -d * 0.35, hb_ - 0.012)],
+                                                             0.008, sections=8), alu))
         parts += hinge_parts("hinge", x=0.012, y=d * 0.35, z0=-w * 0.4, z1=w * 0.4, mat=alu, axis="x", radius=0.008, length=0.03)
     for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
         parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
@@ -235,7 +241,7 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher"),
+@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot"),
           size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
 def console_table(rng: np.random.Generator, variant: str) -> list:
     w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
@@ -249,11 +255,15 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"leg_{k}", "leg", S.box((0.04, d - 0.04, h - t), center=(sx * (w / 2 - 0.06), 0, (h - t) / 2)), wood))
         parts.append(make_part("stretcher", "stretcher", S.box((w - 0.16, 0.04, 0.06), center=(0, 0, 0.2)), wood))
-        parts.append(make_part("apron", "apron", apron[:2], wood))
+        parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate(apron[:2])]
+        # the feet under each trestle end
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"foot_{k}", "foot", S.box((0.08, d - 0.02, 0.03), center=(sx * (w / 2 - 0.06), 0, 0.015),
+                                                             bevel=0.004), wood))
         return parts
     parts += legs4("leg", "leg", w=w, d=d, h=h - t, size=0.04, mat=wood, inset=0.01)
     if variant == "drawers":
-        parts.append(make_part("apron", "apron", [apron[0]] + apron[2:], wood))
+        parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate([apron[0]] + apron[2:])]
         n = 2
         dw = (w - 0.1) / n
         for k in range(n):
@@ -268,7 +278,7 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
             parts += [prismatic(f"drawer_{k}_slide", "tabletop", f"drawer_{k}_box", travel=bd * 0.7),
                       mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"knob_{k}")]
     else:
-        parts.append(make_part("apron", "apron", apron, wood))
+        parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate(apron)]
         parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, rng.uniform(0.15, 0.25))), wood))
     return parts
 
