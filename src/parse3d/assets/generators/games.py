@@ -272,7 +272,7 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye"),
+@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye", "nose", "paw_pad", "bow"),
           size_range=(0.15, 0.6), density=150, variants=("sitting", "small", "large"), placement="surface")
 def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     s = {"small": rng.uniform(0.16, 0.22), "sitting": rng.uniform(0.25, 0.35), "large": rng.uniform(0.45, 0.55)}[variant]
@@ -292,4 +292,14 @@ def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
                                                               center=(sx * 0.13 * s, 0.17 * s, 0.08 * s)), fur))
         parts.append(make_part(f"eye_{i}", "eye", S.ellipsoid((0.02 * s, 0.015 * s, 0.02 * s),
                                                               center=(sx * 0.07 * s, 0.165 * s, 0.76 * s)), black()))
+        # the felt pad on the sole of each foot
+        parts.append(make_part(f"paw_pad_{i}", "paw_pad", S.ellipsoid((0.05 * s, 0.012 * s, 0.05 * s),
+                                                                      center=(sx * 0.13 * s, 0.315 * s, 0.08 * s), subdivisions=1),
+                               M.solid((0.9, 0.85, 0.75), "fabric", 0.95)))
+    # the stitched nose on the snout and the ribbon bow at the neck
+    parts.append(make_part("nose", "nose", S.ellipsoid((0.025 * s, 0.015 * s, 0.018 * s), center=(0, 0.235 * s, 0.69 * s),
+                                                       subdivisions=1), black()))
+    bow = M.solid(M.jitter(rng, (0.75, 0.1, 0.15), 0.1), "fabric", 0.8)
+    parts.append(make_part("bow", "bow", [S.ellipsoid((0.05 * s, 0.02 * s, 0.03 * s), center=(sx * 0.045 * s, 0.17 * s, 0.55 * s),
+                                                      subdivisions=1) for sx in (-1, 1)], bow))
     return parts
