@@ -70,7 +70,7 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray"),
+@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray", "button", "cord"),
           size_range=(0.2, 0.42), density=300, variants=("two_slot", "four_slot", "long_slot"),
           placement="surface")
 def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -102,6 +102,12 @@ def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("knob", "knob", knob((w / 2, 0, h * 0.35), 0.012, 0.01, axis=(1, 0, 0)), black()))
     out.append(make_part("crumb_tray", "crumb_tray", S.box((w * 0.8, d * 0.8, 0.006),
                                                            center=(0, 0, fh + 0.004)), mat))
+    # the cancel, bagel and defrost buttons on the side panel, and the mains cord out of the back
+    for k in range(3):
+        out.append(make_part(f"button_{k}", "button", S.box((0.004, 0.012, 0.008), center=(w / 2 + 0.002, d * 0.25, h * (0.6 - 0.12 * k))),
+                             black()))
+    out.append(make_part("cord", "cord", S.tube([(0, -d / 2 + 0.002, fh + 0.02), (0, -d / 2 - 0.025, fh + 0.012),
+                                                 (0.04, -d / 2 - 0.03, 0.004)], 0.003, sections=6), black("rubber")))
     out += feet4("foot", w=w, d=d, r=0.01, h=fh, mat=black("rubber"), inset=0.02)
     return out
 
@@ -431,7 +437,8 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("computer_tower", parts=("case",),
-          extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel"),
+          extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel", "usb_port",
+                       "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet"),
           size_range=(0.3, 0.58), density=400, variants=("mid_tower", "full_tower", "mini"),
           placement="floor")
 def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -456,5 +463,19 @@ def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("vent", "vent", S.box((w * 0.6, 0.004, 0.12), center=(0, d / 2 + 0.001, fh + 0.12)),
                          black()))
     out += feet4("foot", w=w, d=d - 0.02, r=0.012, h=fh, mat=black("rubber"), inset=0.01)
+    # the front USB ports and audio jack under the power button, the back's I/O shield, the
+    # power supply's fan grille and inlet, and the rear exhaust fan
+    io = M.solid((0.2, 0.2, 0.22), "metal", 0.4, 0.6)
+    for k in range(2):
+        out.append(make_part(f"usb_port_{k}", "usb_port", S.box((0.014, 0.002, 0.006),
+                                                                center=((k - 0.5) * 0.025, d / 2 + 0.001, h - 0.065)), io))
+    out.append(make_part("audio_jack", "audio_jack", S.cylinder(0.004, 0.002, center=(0.035, d / 2 + 0.001, h - 0.065),
+                                                                axis=(0, 1, 0), sections=8), io))
+    yb = -d / 2 - 0.01
+    out.append(make_part("io_shield", "io_shield", S.box((0.045, 0.002, 0.16), center=(-w * 0.2, yb - 0.001, h - 0.12)), io))
+    out.append(make_part("fan", "fan", S.cylinder(0.055, 0.003, center=(w * 0.15, yb - 0.0015, h - 0.12), axis=(0, 1, 0),
+                                                  sections=16), black()))
+    out.append(make_part("psu_grille", "psu_grille", S.box((0.1, 0.002, 0.07), center=(-w / 2 + 0.06, yb - 0.001, fh + 0.05)), io))
+    out.append(make_part("power_inlet", "power_inlet", S.box((0.03, 0.003, 0.02), center=(w / 2 - 0.02, yb - 0.0015, fh + 0.05)), black()))
     return out
 
