@@ -19,7 +19,7 @@ from ._household import ring
 from ._kit import rot
 
 
-@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot"),
+@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar"),
           size_range=(0.95, 1.5), density=600, variants=("pedestal", "four_leg", "square_pedestal"),
           placement="floor")
 def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -44,6 +44,17 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
                                        ((0.025, span, 0.025), (-(w / 2 - 0.05), 0, zf)),
                                        ((0.025, span, 0.025), (w / 2 - 0.05, 0, zf))]):
             parts.append(make_part(f"footrest_{k}", "footrest", S.box(size, center=c), metal))
+        # the aprons under the top, between the legs, and a cap round each leg's foot
+        ha = 0.07
+        for k, (size, c) in enumerate([((span, 0.02, ha), (0, -(w / 2 - 0.05), h - t - ha / 2)),
+                                       ((span, 0.02, ha), (0, w / 2 - 0.05, h - t - ha / 2)),
+                                       ((0.02, span, ha), (-(w / 2 - 0.05), 0, h - t - ha / 2)),
+                                       ((0.02, span, ha), (w / 2 - 0.05, 0, h - t - ha / 2))]):
+            parts.append(make_part(f"apron_{k}", "apron", S.box(size, center=c), top_mat))
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"foot_{i}", "foot", S.box((leg + 0.006, leg + 0.006, 0.012),
+                                                             center=(sx * (w / 2 - 0.05), sy * (w / 2 - 0.05), 0.006)),
+                                   black("rubber")))
         return parts
     if variant == "square_pedestal":
         w = rng.uniform(0.6, 0.75)
@@ -72,6 +83,12 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, a in enumerate(np.pi / 4 + np.arange(4) * np.pi / 2):
             glide = S.cylinder(0.015, 0.0065, center=(0.2 * np.cos(a), 0.2 * np.sin(a), 0.00325), sections=10)
             parts.append(make_part(f"foot_{k}", "foot", glide, black("rubber")))
+    # the cross plate screwed under the top that the column fixes into, and the collar where the
+    # column meets the base
+    parts.append(make_part("top_plate", "top_plate", [S.box((0.4, 0.05, 0.012), center=(0, 0, h - t - 0.006)),
+                                                      S.box((0.05, 0.4, 0.012), center=(0, 0, h - t - 0.006))], metal))
+    z_base = 0.036 if variant == "pedestal" else 0.02
+    parts.append(make_part("collar", "collar", S.cylinder(0.05, 0.03, center=(0, 0, z_base + 0.015), sections=16), metal))
     return parts
 
 
