@@ -227,7 +227,7 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("dishwasher", parts=("body", "door"),
-          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button"),
+          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket"),
           size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
 def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
@@ -242,6 +242,12 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     for k, z in enumerate((tk + 0.1, tk + 0.4)):
         out.append(make_part(f"rack_{k}", "rack", S.box((w - 0.08, d - 0.12, 0.1),
                                                         center=(0, -0.03, z + 0.05)), M.metal(rng)))
+        # the spray arm turning under each rack
+        out.append(make_part(f"spray_arm_{k}", "spray_arm", S.box((w - 0.14, 0.04, 0.012), center=(0, -0.03, z - 0.015)),
+                             M.solid((0.6, 0.6, 0.62), "plastic", 0.5)))
+    # the cutlery basket standing in the lower rack
+    out.append(make_part("cutlery_basket", "cutlery_basket", S.box((0.2, 0.12, 0.12), center=(w / 2 - 0.16, d / 2 - 0.17, tk + 0.1 + 0.07)),
+                         M.solid((0.6, 0.6, 0.62), "plastic", 0.5)))
     out.append(make_part("control_panel", "control_panel",
                          S.box((w, 0.03, 0.08), center=(0, d / 2 - 0.015, h - 0.04)), mat))
     out += _buttons("button", w * 0.3, d / 2, [h - 0.04], black(), r=0.006)
