@@ -206,7 +206,7 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card"), size_range=(0.18, 0.55),
+@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules"), size_range=(0.18, 0.55),
           density=400, variants=("boxed", "set_up", "card_deck"), placement="surface")
 def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     art = M.paper(rng)
@@ -241,6 +241,13 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"piece_{k}", "piece",
                                S.frustum(0.011, 0.005, 0.025, center=(x, y, 0.004), sections=10),
                                M.solid(cols[k % 4], "plastic", 0.3)))
+    # two dice and the draw pile of cards on the board, the rules booklet beside the box
+    for k in range(2):
+        parts.append(make_part(f"die_{k}", "die", S.box((0.016, 0.016, 0.016), center=(b * 0.3 + k * 0.025, b * 0.3, 0.004 + 0.008),
+                                                      bevel=0.002, R=rot((0, 0, 1), 0.3 * k)), M.solid((0.95, 0.95, 0.93), "plastic", 0.4)))
+    parts.append(make_part("card", "card", S.box((0.06, 0.09, 0.012), center=(-b * 0.25, b * 0.25, 0.004 + 0.006)), art))
+    parts.append(make_part("rules", "rules", S.box((0.15, 0.21, 0.003), center=(b / 2 - w * 0.4 - 0.01, b * 0.12, 0.0055)),
+                           M.solid((0.95, 0.95, 0.93), "paper", 0.8)))
     return parts
 
 
