@@ -112,7 +112,8 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("cash_register", parts=("body", "cash_drawer"),
-          extra_parts=("keypad", "key", "display", "screen", "printer", "drawer_box", "stand", "handle"),
+          extra_parts=("keypad", "key", "display", "screen", "printer", "drawer_box", "stand", "handle", "receipt",
+                       "card_reader"),
           size_range=(0.3, 0.6), density=700, variants=("classic", "pos_terminal"),
           placement="surface")
 def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -162,12 +163,12 @@ def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         R[:3, :3] = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
         R[:3, 3] = kp_c + np.array([0, 0, 0.002])
         parts.append(make_part("keypad", "keypad", pad.apply(R), black()))
-        keys = []
+        # the twenty keys, each a part of its own
+        key_mat = Material((0.85, 0.85, 0.82, 1.0), 0.5, 0.0, "plastic")
         for i in range(5):
             for j in range(4):
                 kb = S.box((0.018, 0.018, 0.006), center=((i - 2) * 0.03, (j - 1.5) * 0.028, 0.004))
-                keys.append(kb.apply(R))
-        parts.append(make_part("key", "key", keys, Material((0.85, 0.85, 0.82, 1.0), 0.5, 0.0, "plastic")))
+                parts.append(make_part("key" if (i, j) == (0, 0) else f"key_{4 * i + j}", "key", kb.apply(R), key_mat))
         printer = S.box((w * 0.22, 0.06, 0.012), center=(w * 0.3, -d / 2 + 0.05, hd + hh + 0.005), bevel=0.003)
         parts.append(make_part("printer", "printer", printer, shell_mat))
         disp = S.box((w * 0.3, 0.02, 0.06), center=(-w * 0.2, -d / 2 + 0.025, hd + hh + 0.03 - 0.001), bevel=0.004)
@@ -194,4 +195,9 @@ def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                Material((0.15, 0.25, 0.4, 1.0), 0.1, 0.0, "glass")))
         printer = S.box((0.1, 0.14, 0.1), center=(w / 2 - 0.06, -0.1, hd + 0.05 - 0.001), bevel=0.01)
         parts.append(make_part("printer", "printer", printer, _white_plastic(rng)))
+        # the receipt curling out of the printer's slot, and the card reader beside the screen
+        parts.append(make_part("receipt", "receipt", S.box((0.058, 0.002, 0.05), center=(w / 2 - 0.06, -0.1 + 0.02, hd + 0.1 + 0.024)),
+                               M.solid((0.97, 0.97, 0.95), "paper", 0.8)))
+        parts.append(make_part("card_reader", "card_reader", S.box((0.07, 0.12, 0.035), center=(-w / 2 + 0.06, -0.08, hd + 0.0175),
+                                                                   bevel=0.006), black()))
     return parts
