@@ -197,7 +197,8 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("mini_fridge", parts=("body", "door"),
-          extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass"),
+          extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass", "thermostat", "crisper",
+                       "vent"),
           size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
           placement="floor")
 def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -220,6 +221,14 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                              S.box((w - 2 * t - 0.02, (d - 0.05) * 0.6, 0.1),
                                    center=(0, -0.025, h - t - 0.06)), white(rng)))
     out += feet4("foot", w=w, d=d - 0.05, r=0.015, h=fh, mat=black("rubber"), inset=0.02)
+    # the thermostat dial on the inner side wall, the crisper drawer on the floor, the condenser
+    # grille on the back
+    out.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(w / 2 - t - 0.006, d / 2 - 0.12, h - t - 0.16),
+                                                                axis=(1, 0, 0), sections=12), white(rng, "plastic")))
+    out.append(make_part("crisper", "crisper", S.box((w - 2 * t - 0.01, (d - 0.05) * 0.6, 0.08),
+                                                     center=(0, -0.025 + 0.01, fh + t + 0.04 + 0.001)), M.glass(rng)))
+    out.append(make_part("vent", "vent", S.box((w * 0.7, 0.004, (h - fh) * 0.5), center=(0, -d / 2 - 0.002, fh + (h - fh) * 0.4)),
+                         black()))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
                       else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
