@@ -58,21 +58,21 @@ def test_fingerprint_covers_the_private_helper_modules(monkeypatch):
     from parse3d.assets import pool
 
     kit = "parse3d.assets.generators._kit"
-    # appliances imports _kit directly and through _casework; decor imports no helper
+    # appliances imports _kit directly and through _casework; clothing imports no helper
     assert {kit, "parse3d.assets.generators._casework"} <= set(
         pool._private_helpers("parse3d.assets.generators.appliances"))
     assert kit in pool._private_helpers("parse3d.assets.generators.casegoods")  # via _casework
-    assert pool._private_helpers("parse3d.assets.generators.decor") == ()
-    before = {c: pool.category_fingerprint(c) for c in ("microwave", "mirror")}
+    assert pool._private_helpers("parse3d.assets.generators.clothing") == ()
+    before = {c: pool.category_fingerprint(c) for c in ("microwave", "clothes")}
 
     real = pool._module_source.__wrapped__
     monkeypatch.setattr(pool, "_module_source",
                         lambda m: real(m) + ("\n# edited\n" if m == kit else ""))
     pool._module_digest.cache_clear()
     try:
-        after = {c: pool.category_fingerprint(c) for c in ("microwave", "mirror")}
+        after = {c: pool.category_fingerprint(c) for c in ("microwave", "clothes")}
     finally:
         monkeypatch.undo()
         pool._module_digest.cache_clear()
     assert after["microwave"] != before["microwave"]
-    assert after["mirror"] == before["mirror"]
+    assert after["clothes"] == before["clothes"]

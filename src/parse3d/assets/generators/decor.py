@@ -19,6 +19,7 @@ from ...geometry.frames import make_transform, rot_x, rot_y, rot_z
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 from .lamps import shell
 
 #: Turns a shape built along +Z (from z = 0) so that it points along +Y (from y = 0).
@@ -244,6 +245,10 @@ def _pot(rng, r_top: float, h: float) -> tuple[list[Part], float, float]:
         pot = [wall, lip, floor]
         r_in = r_bot + (r_rim - r_bot) * min(z_soil / (h - h_rim), 1.0) - t - 0.002
         soil = S.lathe([(r_bot - t - 0.002, t), (r_in, z_soil)], sections=16)
+        # the drip tray the pot stands in: its floor is under the pot's (on the same ground), its
+        # sloping edge shows round the foot
+        saucer = ring([(r_bot - 0.002, 0.0), (r_bot + 0.025, 0.0), (r_bot + 0.02, 0.012), (r_bot - 0.002, 0.012)],
+                      sections=16)
     else:  # square planter
         a = r_top * 2
         pot = [S.box((a, t, h), center=(0, a / 2 - t / 2, h / 2), bevel=0.002),
@@ -253,8 +258,11 @@ def _pot(rng, r_top: float, h: float) -> tuple[list[Part], float, float]:
                S.box((a - 2 * t, a - 2 * t, t), center=(0, 0, t / 2))]
         r_in = a / 2 - t
         soil = S.box((a - 2 * t, a - 2 * t, z_soil - t), center=(0, 0, (z_soil + t) / 2))
-    return ([make_part("pot", "pot", pot, mat), make_part("soil", "soil", soil, _soil())],
-            z_soil, r_in)
+        saucer = None  # a square planter stands on its own floor
+    parts = [make_part("pot", "pot", pot, mat), make_part("soil", "soil", soil, _soil())]
+    if saucer is not None:
+        parts.append(make_part("saucer", "saucer", saucer, mat))
+    return parts, z_soil, r_in
 
 
 def _blobs(rng, n: int, center, spread, size) -> list[S.Shape]:
@@ -267,7 +275,7 @@ def _blobs(rng, n: int, center, spread, size) -> list[S.Shape]:
     return out
 
 
-@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk"), size_range=(0.3, 1.8),
+@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk", "saucer", "stake", "tie"), size_range=(0.3, 1.8),
           density=400, variants=("bush", "tree", "leafy"))
 def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
     green = M.plant(rng)
@@ -304,6 +312,12 @@ def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
             base = np.array([np.cos(yaw), np.sin(yaw)]) * r_in * 0.4
             T = make_transform(rot_z(yaw) @ rot_y(tilt), (base[0], base[1], z0 - 0.03))
             leaves.append(leaf.apply(T))
+        # the bamboo stake the leaves are tied to, and its tie
+        hs = rng.uniform(0.3, 0.45)
+        parts.append(make_part("stake", "stake", S.cylinder(0.004, hs, center=(r_in * 0.3, 0, z0 - 0.05 + hs / 2), sections=6),
+                               M.solid(M.jitter(rng, (0.75, 0.65, 0.4), 0.03), "wood", 0.8)))
+        parts.append(make_part("tie", "tie", S.cylinder(0.008, 0.006, center=(r_in * 0.3, 0, z0 - 0.05 + hs * 0.7), sections=8),
+                               M.solid((0.3, 0.5, 0.2), "fabric", 0.9)))
     # every leaf or foliage clump is a part of its own, all labelled ``plant``
     parts += [make_part(f"plant_{k}", "plant", leaf, green) for k, leaf in enumerate(leaves)]
     return parts
