@@ -198,7 +198,7 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("paper", parts=("sheet",), extra_parts=("clip", "wrapper"),
+@register("paper", parts=("sheet",), extra_parts=("clip", "wrapper", "label"),
           size_range=(0.2, 0.44), density=800, variants=("stack", "ream", "loose"),
           placement="surface")
 def paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -209,7 +209,10 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
         return [make_part("sheet", "sheet", S.box((w, d, h - 0.002), center=(0, 0, h / 2)),
                           white(rng, "paper")),
                 make_part("wrapper", "wrapper", S.box((w + 0.002, d * 0.6, h), center=(0, 0, h / 2)),
-                          M.paper(rng))]
+                          M.paper(rng)),
+                # the brand and grade label printed on the wrapper's top
+                make_part("label", "label", S.box((w * 0.6, d * 0.3, 0.0006), center=(0, 0, h + 0.0003)),
+                          white(rng, "paper"))]
     n = int(rng.integers(3, 9))
     out = []
     z = 0.0

@@ -83,7 +83,7 @@ def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
                 sections=16)
 
 
-@register("cup", parts=("body",), extra_parts=("base", "rim", "handle"), size_range=(0.08, 0.14),
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "decal"), size_range=(0.08, 0.14),
           density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
@@ -103,6 +103,10 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "handled":
         handle = _handle(rng, r, h, rng.uniform(0.004, 0.006)).moved((0, 0, zb))
         parts.append(make_part("handle", "handle", handle, mat))
+    # the printed pattern on the front
+    zd = zb + h * 0.5
+    rd = r0 + (r - r0) * 0.5
+    parts.append(make_part("decal", "decal", S.box((r * 0.7, 0.0008, h * 0.3), center=(0, rd + 0.0002, zd)), M.paper(rng)))
     return parts
 
 
