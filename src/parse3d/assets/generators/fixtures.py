@@ -49,17 +49,26 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand"), size_range=(0.5, 2.0),
+@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull"),
+          size_range=(0.5, 2.0),
           density=400, variants=("venetian", "roller", "vertical"), placement="wall")
 def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
     W, H = rng.uniform(0.6, 1.6), rng.uniform(0.8, 1.6)
     mat = M.solid(M.jitter(rng, [(0.95, 0.95, 0.93), (0.75, 0.6, 0.42), (0.3, 0.3, 0.32)][int(rng.integers(3))], 0.02), "plastic", 0.5)
     parts = [make_part("headrail", "headrail", S.box((W, 0.05, 0.05), center=(0, 0.025, H - 0.025), bevel=0.004), mat)]
+    # the two mounting brackets at the headrail's ends, against the wall
+    metal = M.solid((0.8, 0.8, 0.8), "metal", 0.4, 0.8)
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"bracket_{k}", "bracket", S.box((0.02, 0.052, 0.056), center=(sx * (W / 2 - 0.03), 0.026, H - 0.028)),
+                               metal))
     if variant == "roller":
         parts.append(make_part("slat", "slat", S.box((W - 0.04, 0.003, H - 0.1), center=(0, 0.03, (H - 0.1) / 2 + 0.03)),
                                M.fabric(rng)))
         parts.append(make_part("bottom_rail", "bottom_rail", S.box((W - 0.03, 0.015, 0.03), center=(0, 0.03, 0.015)), mat))
         parts.append(make_part("cord", "cord", S.cylinder(0.002, H * 0.6, center=(W / 2 - 0.04, 0.06, H - 0.05 - H * 0.3), sections=6), mat))
+        # the weighted toggle at the end of the pull cord
+        parts.append(make_part("pull", "pull", S.cylinder(0.007, 0.03, center=(W / 2 - 0.04, 0.06, H - 0.05 - H * 0.6 - 0.015),
+                                                          sections=8), mat))
         return parts
     if variant == "vertical":
         n = int((W - 0.04) / 0.09)
@@ -75,6 +84,10 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         z = 0.04 + k * 0.025
         parts.append(make_part(f"slat_{k}", "slat", S.box((W - 0.02, 0.025, 0.0015), center=(0, 0.025, z + 0.01), R=tilt), mat))
     parts.append(make_part("bottom_rail", "bottom_rail", S.box((W - 0.01, 0.03, 0.02), center=(0, 0.025, 0.01)), mat))
+    # the ladder cords running down through the slats from the headrail to the bottom rail
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"cord_{k}", "cord", S.cylinder(0.0015, H - 0.07, center=(sx * W * 0.3, 0.025, 0.02 + (H - 0.07) / 2),
+                                                               sections=6), M.solid((0.9, 0.9, 0.88), "fabric", 0.8)))
     parts.append(make_part("wand", "wand", S.cylinder(0.005, H * 0.5, center=(-W / 2 + 0.03, 0.06, H - 0.05 - H * 0.25), sections=8), mat))
     return parts
 
