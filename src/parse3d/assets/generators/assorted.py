@@ -465,7 +465,7 @@ def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle", "straw", "vent", "grip"), size_range=(0.1, 0.2), density=1000,
+@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle", "straw", "vent", "grip", "scale"), size_range=(0.1, 0.2), density=1000,
           variants=("handles", "plain", "straw"), placement="surface")
 def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = rng.uniform(0.035, 0.04), rng.uniform(0.1, 0.13)
@@ -477,6 +477,9 @@ def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(_c("vent", "vent", 0.003, 0.002, (0, -r * 0.5, h + 0.016), black(), sections=8))
     out.append(make_part("grip", "grip", ring([(r - 0.0005, h * 0.35), (r + 0.002, h * 0.35), (r + 0.002, h * 0.6),
                                                (r - 0.0005, h * 0.6)], sections=20), M.solid((0.9, 0.9, 0.9), "rubber", 0.6)))
+    # the ounce marks moulded up the front
+    out.append(make_part("scale", "scale", [S.box((0.008 if k % 2 else 0.014, 0.0008, 0.0012), center=(0, r + 0.0003, h * (0.15 + 0.04 * k)))
+                                            for k in range(5)], white(rng, "plastic")))
     if variant == "handles":
         for k, sx in enumerate((-1, 1)):
             out.append(_b(f"handle_{k}", "handle", (0.02, 0.012, 0.05), (sx * (r + 0.01), 0, h * 0.55), col))

@@ -98,7 +98,7 @@ def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam"),
+@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam", "logo"),
           size_range=(0.15, 0.3),
           density=800, variants=("cobbler", "boston"), placement="surface")
 def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -121,6 +121,10 @@ def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
                                                           sections=24), steel))
     parts.append(make_part("seam", "seam", ring([(r - 0.002, h - 0.008), (r + 0.0015, h - 0.007), (r + 0.0015, h - 0.001),
                                                  (r - 0.002, h - 0.001)], sections=24), steel))
+    # the maker's stamp etched on the front
+    rl = r * 0.75 + r * 0.25 * 0.5
+    parts.append(make_part("logo", "logo", S.box((0.02, 0.0006, 0.012), center=(0, rl + 0.0002, h * 0.5)),
+                           Material((0.55, 0.55, 0.57, 1.0), 0.5, 0.8, "metal")))
     return parts
 
 

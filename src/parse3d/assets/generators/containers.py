@@ -216,7 +216,7 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("trash_can", parts=("body",),
-          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle"),
+          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle", "handle"),
           size_range=(0.28, 0.8),
           density=900, variants=("round", "square", "pedal"), placement="floor")
 def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -251,6 +251,12 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("label", "label", S.box((0.06, 0.001, 0.06),
                                                        center=(0, d / 2 + taper * zl / h + 0.0005, zl)),
                                M.paper(rng)))
+        # a moulded hand grip on each side, under the rim
+        zg = h - 0.06
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"handle_{k}", "handle", S.box((0.012, d * 0.35, 0.02),
+                                                                 center=(sx * (w / 2 + taper * zg / h + 0.006), 0, zg), bevel=0.003),
+                                   mat))
         return parts
     r = rng.uniform(0.13, 0.18)
     h = rng.uniform(0.35, 0.6) if variant == "round" else rng.uniform(0.4, 0.65)
@@ -281,10 +287,15 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
         bucket = shell([(r - 0.012, 0.012), (r - 0.006, h - 0.004)], 0.002, bottom=0.002, sections=20)
         parts.append(make_part("liner", "liner", bucket, M.plastic(rng)))
     else:
-        # the bin bag folded over the rim
+        # the bin bag folded over the rim, and a moulded hand grip each side under it
         parts.append(make_part("liner", "liner", ring([(r + 0.004, h - 0.05), (r + 0.0055, h - 0.05),
                                                        (r + 0.0055, h), (r + 0.004, h)], sections=20),
                                _bag_material(rng)))
+        zg = h - 0.07
+        rg = rb + (r - rb) * zg / h
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"handle_{k}", "handle", S.box((0.014, 0.08, 0.02), center=(sx * (rg + 0.005), 0, zg), bevel=0.003),
+                                   mat))
     return parts
 
 

@@ -18,7 +18,7 @@ from ._household import ring, shell
 from ._kit import revolute, rot
 
 
-@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp"),
+@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal"),
           size_range=(0.11, 0.18), density=2000, variants=("tea", "coffee", "espresso"),
           placement="surface", groups={"body": ("well", "rim", "foot_ring")})
 def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -41,7 +41,10 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
     stamp = S.cylinder(well * 0.35, 0.0005, center=(0, 0, fh + 0.0004), sections=12)
     return [make_part("well", "well", base, mat), make_part("rim", "rim", rim, mat),
             make_part("foot_ring", "foot_ring", foot, mat), make_part("trim", "trim", trim, gold),
-            make_part("backstamp", "backstamp", stamp, M.solid((0.3, 0.35, 0.6), "paper", 0.8))]
+            make_part("backstamp", "backstamp", stamp, M.solid((0.3, 0.35, 0.6), "paper", 0.8)),
+            # the painted spray on the rim's front
+            make_part("decal", "decal", ring([(r * 0.78, bh + 0.0035), (r * 0.9, bh + 0.006), (r * 0.9, bh + 0.0068),
+                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng))]
 
 
 @register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot"),
@@ -300,7 +303,7 @@ def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("water_pitcher", parts=("body", "handle"),
-          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator"),
+          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale"),
           size_range=(0.18, 0.32), density=1500, variants=("glass", "filter_jug", "ceramic"),
           placement="surface")
 def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -320,6 +323,15 @@ def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("foot_ring", "foot_ring", ring([(r * 0.8, 0.0), (r * 0.9 + 0.001, 0.0),
                                                          (r * 0.9 + 0.001, 0.004), (r * 0.8, 0.004)], sections=24),
                          mat))
+    # the capacity marks printed up the side
+    a = 0.6  # towards the right of the front, clear of the spout
+    marks = []
+    for k in range(7):
+        z = 0.03 + k * h * 0.1
+        rz = float(np.interp(z, [0.0, h * 0.4, h], [r * 0.9, r, r * 0.95]))
+        marks.append(S.box((0.02 if k % 2 == 0 else 0.012, 0.0008, 0.0015),
+                           center=(np.sin(a) * (rz + 0.0002), np.cos(a) * (rz + 0.0002), z), R=rot((0, 0, 1), -a)))
+    out.append(make_part("scale", "scale", marks, white(rng, "paper")))
     if variant == "filter_jug":
         lid_mat = white(rng, "plastic")
         out.append(make_part("lid", "lid", S.cylinder(r * 0.95, 0.012, center=(0, 0, h + 0.006)), lid_mat))
@@ -393,7 +405,7 @@ def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label"),
+@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode"),
           size_range=(0.08, 0.24), density=1000, variants=("toothpaste", "cream", "paint"),
           placement="surface")
 def tube(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -414,7 +426,10 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("shoulder", "shoulder", S.frustum(r * 0.62, r * 0.8, 0.01, center=(x0 + cap_l, 0, r * 0.8),
                                                         axis=(1, 0, 0), sections=12), mat),
             make_part("label", "label", S.box((L * 0.45, r * 1.6, 0.0008),
-                                              center=(x0 + cap_l + 0.01 + L * 0.3, 0, r * 1.6 + 0.0004)), M.paper(rng))]
+                                              center=(x0 + cap_l + 0.01 + L * 0.3, 0, r * 1.6 + 0.0004)), M.paper(rng)),
+            # the barcode printed near the crimped end
+            make_part("barcode", "barcode", S.box((0.02, r * 1.2, 0.0008), center=(L / 2 - 0.025, 0, r * 1.6 + 0.0004)),
+                      white(rng, "paper"))]
 
 
 @register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo"),
@@ -479,7 +494,7 @@ def _place(v: np.ndarray, r: float) -> np.ndarray:
     return T
 
 
-@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband"),
+@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband", "feather", "chin_strap"),
           size_range=(0.2, 0.42), density=150, variants=("cap", "fedora", "sun_hat"),
           placement="surface")
 def hat(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -512,6 +527,12 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid(M.jitter(rng, (0.15, 0.1, 0.08), 0.03), "fabric", 0.8)))
     out.append(make_part("sweatband", "sweatband", ring([(rc - 0.006, 0.004), (rc - 0.002, 0.004), (rc - 0.002, 0.03),
                                                          (rc - 0.006, 0.03)], sections=24), M.leather(rng)))
+    if variant == "fedora":  # a small feather tucked in the band beside the bow
+        out.append(make_part("feather", "feather", S.ellipsoid((0.004, 0.012, 0.035), center=(-rc - 0.004, 0.02, 0.035), subdivisions=1),
+                             M.solid(M.jitter(rng, (0.5, 0.4, 0.3), 0.1), "fabric", 0.9)))
+    else:  # the chin cord, lying over the brim at the front
+        out.append(make_part("chin_strap", "chin_strap", S.tube([(-rc * 0.9, 0.0, 0.005), (0, rb * 0.7, 0.005), (rc * 0.9, 0.0, 0.005)],
+                                                              0.002, sections=6), M.solid((0.3, 0.25, 0.2), "fabric", 0.8)))
     return out
 
 
