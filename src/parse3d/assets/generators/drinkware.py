@@ -36,7 +36,7 @@ def _square_mug(rng, w: float, h: float, t: float) -> S.Shape:
     return S.union(walls)
 
 
-@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base", "decal"),
+@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base", "decal", "backstamp"),
           size_range=(0.10, 0.14), density=900,
           variants=("round", "belly", "square"), placement="surface")
 def mug(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -66,6 +66,9 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         parts.append(make_part("foot_ring", "foot_ring", foot, unglazed))
         parts.append(make_part("rim", "rim", _rim(prof[-1][0], fh + h, t, 0.0012), mat))
+        # the maker's mark printed under the floor, inside the foot ring
+        parts.append(make_part("backstamp", "backstamp", S.cylinder(rf * 0.45, 0.0005, center=(0, 0, fh - 0.00025), sections=12),
+                               M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     # the printed decal on the front (+Y), the side a right hand shows
     zd = fh + h * 0.5
     rd = float(np.interp(zd, [q[1] for q in prof], [q[0] for q in prof]))
@@ -110,7 +113,7 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim", "decal"),
+@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim", "decal", "backstamp"),
           size_range=(0.06, 0.11), density=900, variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
@@ -137,4 +140,7 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     rd = r * 0.9 + (r - r * 0.9) * (zd - fh - h * 0.5) / (h * 0.5)
     parts.append(make_part("decal", "decal", S.box((r * 0.6, 0.0008, h * 0.25),
                                                    center=(0, rd + 0.0002, zd)), M.paper(rng)))
+    # the maker's mark under the floor, inside the foot ring
+    parts.append(make_part("backstamp", "backstamp", S.cylinder(rf * 0.5, 0.0005, center=(0, 0, fh - 0.00025), sections=12),
+                           M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     return parts
