@@ -57,7 +57,8 @@ _FRAME_PIECES = (("rail_bottom", "rail"), ("stile_right", "stile"), ("rail_top",
 
 
 def _frame_parts(bars: list[S.Shape], mat: Material, rng) -> list[Part]:
-    """The frame's four mitred bars and its backing board as parts (the ``frame`` group)."""
+    """The frame's four mitred bars and its backing board as parts (the ``frame`` group; a round
+    or oval mirror's frame is one turned ring, a part labelled ``frame`` itself)."""
     board = M.solid(M.jitter(rng, (0.55, 0.45, 0.32), 0.03), "wood", 0.9)
     return [make_part(n, lab, b, board if lab == "backing" else mat)
             for (n, lab), b in zip(_FRAME_PIECES, bars, strict=True)]
@@ -139,7 +140,7 @@ def _mirror_glass() -> Material:
 
 @register("mirror", parts=("frame", "glass"), extra_parts=("hanger",), size_range=(0.3, 1.8),
           density=1200, variants=("rectangular", "round", "oval"), placement="wall",
-          groups={"frame": ("rail", "stile", "backing")})
+          groups={"frame": ("frame", "rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
     depth = rng.uniform(0.02, 0.04)
     # the glass part is the mirror glass on its backing board, nearly flush with the frame
