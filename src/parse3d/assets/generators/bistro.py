@@ -92,7 +92,8 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light"),
+@register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light", "record", "tonearm",
+                                                   "coin_slot", "title_strip", "grille_bar"),
           size_range=(1.0, 1.7), density=400, variants=("bubbler", "wallbox_cabinet", "retro"),
           placement="floor")
 def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -137,6 +138,22 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
         x = (k - 2.5) * w * 0.08
         parts.append(make_part(f"button_{k}", "button", S.box((0.03, 0.02, 0.02), center=(x, d / 2 + 0.009, zbtn),
                                                               bevel=0.003), chrome))
+    # under the glass, the record on its turntable and the tone arm; the title strips of the
+    # selection above the buttons; the coin slot beside them; chrome bars across the speaker
+    zr = (zg0 + zg1) / 2
+    rr = min(0.15, (zg1 - zg0) * 0.4)
+    parts.append(make_part("record", "record", S.cylinder(rr, 0.002, center=(0, d / 2 + 0.001, zr), axis=(0, 1, 0), sections=24),
+                           black("plastic")))
+    parts.append(make_part("tonearm", "tonearm", S.box((0.012, 0.002, rr * 1.1), center=(rr * 0.9, d / 2 + 0.003, zr + rr * 0.3),
+                                                       R=rot((0, 1, 0), -0.4)), chrome))
+    zt = zbtn + 0.03
+    parts.append(make_part("title_strip", "title_strip", S.box((w * 0.5, 0.003, 0.025), center=(0, d / 2 + 0.0015, zt)),
+                           M.paper(rng)))
+    parts.append(make_part("coin_slot", "coin_slot", S.box((0.03, 0.012, 0.05), center=(w * 0.3, d / 2 + 0.006, zbtn), bevel=0.003),
+                           chrome))
+    for k in range(3):
+        z = zs0 + (zs1 - zs0) * (k + 1) / 4
+        parts.append(make_part(f"grille_bar_{k}", "grille_bar", S.box((w * 0.57, 0.008, 0.01), center=(0, d / 2 + 0.013, z)), chrome))
     return parts
 
 
