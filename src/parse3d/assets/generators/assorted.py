@@ -254,7 +254,10 @@ def garment_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "folded":  # folded in half, lying flat on a bed or a rack
         return [_b("body", "body", (w, 0.55, 0.08), (0, 0, 0.04), fab, bevel=0.02),
                 make_part("hook", "hook", S.tube([(0, 0.28, 0.06), (0, 0.33, 0.06), (0, 0.34, 0.03)], 0.003), M.metal(rng)),
-                _b("handle", "handle", (0.15, 0.03, 0.02), (0, -0.2, 0.09), black("fabric"))]
+                _b("handle", "handle", (0.15, 0.03, 0.02), (0, -0.2, 0.09), black("fabric")),
+                # the zip round the folded edge, with its pull
+                _b("zipper", "zipper", (w * 0.85, 0.01, 0.004), (0, 0.1, 0.081), M.metal(rng)),
+                _b("zipper_pull", "zipper_pull", (0.012, 0.03, 0.004), (w * 0.3, 0.08, 0.083), M.metal(rng))]
     L = rng.uniform(0.9, 1.05) if variant == "hanging" else rng.uniform(1.3, 1.4)
     return [_b("body", "body", (w, 0.08, L), (0, 0.06, L / 2), fab, bevel=0.02),
             make_part("hook", "hook", S.tube([(0, 0.06, L), (0, 0.06, L + 0.06), (0, 0.02, L + 0.08)], 0.003), M.metal(rng)),
