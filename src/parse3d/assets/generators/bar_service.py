@@ -57,7 +57,7 @@ def bar_mat(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("beer_tap", parts=("tower", "faucet", "tap_handle"),
-          extra_parts=("base", "drip_tray", "grate", "collar"),
+          extra_parts=("base", "drip_tray", "grate", "collar", "badge", "ferrule", "cap", "screw"),
           size_range=(0.35, 0.85), density=2500, variants=("t_bar", "column", "double_column"),
           placement="surface")
 def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -97,6 +97,12 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         # the handle tips forward (+Y at its top) about the faucet's lever pin
         parts.append(revolute(f"tap_handle_{k}_pull", f"faucet_{k}", f"tap_handle_{k}", axis=(1, 0, 0),
                               origin=(x, y + 0.042, z + 0.01), opens=-0.6))
+        # the brand badge on the handle's front and the chrome ferrule at its foot (both move with it)
+        parts.append(make_part(f"badge_{k}", "badge", S.box((0.022, 0.003, 0.035), center=(x, y + 0.042 + 0.013, z + 0.01 + hl * 0.65)),
+                               M.paper(rng)))
+        parts.append(make_part(f"ferrule_{k}", "ferrule", S.cylinder(0.0105, 0.015, center=(x, y + 0.042, z + 0.01 + 0.0075),
+                                                                   sections=12), chrome))
+        parts += [mount(f"tap_handle_{k}", f"badge_{k}"), mount(f"tap_handle_{k}", f"ferrule_{k}")]
     # the drip tray in front of the tower, under the faucets
     y_tray = max(s[1] for s in spots) + 0.04
     tw = max(0.2, 0.12 * len(spots) + 0.08)
@@ -108,6 +114,13 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts.append(make_part("drip_tray", "drip_tray", tray, steel))
     parts.append(make_part("grate", "grate", S.box((tw - 0.014, 0.106, 0.003), center=(0, y_tray, 0.0165)),
                            steel))
+    # the tower's top cap, and the screws fixing the base flange to the counter
+    top = max(p.mesh.bounds[1, 2] for p in parts if getattr(p, "label", None) == "tower")
+    if variant != "t_bar":
+        parts.append(make_part("cap", "cap", S.cylinder(0.042, 0.01, center=(0, 0, top + 0.004), sections=20), chrome))
+    for k, a in enumerate(np.radians([-160, -90, -20])):  # the back half: the drip tray covers the front
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(0.048 * np.cos(a), 0.048 * np.sin(a), 0.0155),
+                                                                 sections=8), chrome))
     return parts
 
 
