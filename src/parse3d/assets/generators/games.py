@@ -173,7 +173,7 @@ def foosball_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder"), size_range=(0.7, 1.3),
+@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot"), size_range=(0.7, 1.3),
           density=500, variants=("square", "octagon", "round"))
 def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.8, 1.2)
@@ -192,6 +192,10 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("tabletop", "tabletop", top, wood), make_part("felt", "felt", inlay, felt(rng))]
     lw = s * 0.62 if variant != "square" else s - 0.08
     parts += legs4("leg", "leg", w=lw, d=lw, h=h - t, size=0.05, mat=wood)
+    # a glide cap round each leg's foot (the legs still reach the floor)
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"foot_{i}", "foot", S.box((0.056, 0.056, 0.012), center=(sx * (lw / 2 - 0.025), sy * (lw / 2 - 0.025), 0.006),
+                                                         bevel=0.002), black("rubber")))
     ah = 0.08
     for i, (cx, cy, ax) in enumerate([(0, -lw / 2 + 0.01, 0), (0, lw / 2 - 0.01, 0), (-lw / 2 + 0.01, 0, 1),
                                       (lw / 2 - 0.01, 0, 1)]):
