@@ -56,7 +56,7 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "print", "barcode"),
+@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "print", "barcode", "flap"),
           size_range=(0.1, 0.27), density=120,
           variants=("rectangular", "cube"), placement="surface")
 def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -77,4 +77,6 @@ def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
                       Material((0.9, 0.92, 0.95, 0.5), 0.1, 0.0, "plastic")),
             make_part("print", "print", S.box((w * 0.85, 0.0008, h * 0.7), center=(0, d / 2 + 0.0004, h / 2)), M.paper(rng)),
             make_part("barcode", "barcode", S.box((0.0008, 0.03, 0.015), center=(w / 2 + 0.0004, 0, 0.012)),
-                      Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper"))]
+                      Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper")),
+            # the glued end flap on the left end
+            make_part("flap", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(-w / 2 - 0.0004, 0, h * 0.3)), card)]

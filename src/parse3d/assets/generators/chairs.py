@@ -200,7 +200,7 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide"),
+@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle"),
           size_range=(0.35, 1.0), density=300, variants=("cube", "round", "tufted"))
 def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.38, 0.46)
@@ -217,6 +217,9 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
         # the piping round the bottom seam, and the button in the cushion's centre
         out.append(make_part("piping_1", "piping", S.cylinder(r + 0.006, 0.012, center=(0, 0, 0.006), sections=28), fab))
         out.append(make_part("button", "button", S.cylinder(0.014, 0.008, center=(0, 0, h - 0.003), sections=10), fab))
+        # the carrying loop sewn to the side
+        out.append(make_part("handle", "handle", S.tube([(r, -0.04, h * 0.55), (r + 0.02, -0.03, h * 0.55), (r + 0.02, 0.03, h * 0.55),
+                                                         (r, 0.04, h * 0.55)], 0.006, sections=6), fab))
         return out
     w = rng.uniform(0.42, 0.95)
     d = min(w, rng.uniform(0.42, 0.6))

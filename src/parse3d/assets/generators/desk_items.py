@@ -344,7 +344,7 @@ def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("soap_dish", parts=("dish",), extra_parts=("rib", "foot"),
+@register("soap_dish", parts=("dish",), extra_parts=("rib", "foot", "lip"),
           size_range=(0.09, 0.16), density=1800, variants=("ceramic", "slotted", "footed"),
           placement="surface")
 def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -359,6 +359,8 @@ def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
              S.box((t, d - 2 * t, h), center=(-w / 2 + t / 2, 0, fh + h / 2)),
              S.box((t, d - 2 * t, h), center=(w / 2 - t / 2, 0, fh + h / 2))]
     out = [make_part("dish", "dish", walls, mat)]
+    # the drain lip at the right end, a notch in the wall the water runs out over
+    out.append(make_part("lip", "lip", S.box((0.012, 0.025, 0.004), center=(w / 2 + 0.004, 0, fh + t + 0.002)), mat))
     n = 4
     for k in range(n):  # the ribs the soap rests on, so it drains
         out.append(make_part(f"rib_{k}", "rib", S.box((0.004, d - 2 * t, 0.004),
