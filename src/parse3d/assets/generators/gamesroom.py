@@ -288,7 +288,7 @@ _SHAPES = {
 }
 
 
-@register("neon_sign", parts=("tube", "backplate"), extra_parts=("standoff", "cable", "transformer", "frame"),
+@register("neon_sign", parts=("tube", "backplate"), extra_parts=("standoff", "cable", "transformer", "frame", "clip"),
           size_range=(0.3, 1.2), density=900, variants=("word", "shape", "framed"), placement="wall")
 def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
     glow = M.solid(M.jitter(rng, [(1.0, 0.2, 0.6), (0.2, 0.9, 1.0), (1.0, 0.6, 0.1), (0.6, 0.3, 1.0)][int(rng.integers(4))], 0.03)[:3],
@@ -304,18 +304,24 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
         w, h = s * 1.05, s * 1.05
         path = _sign_stroke(_SHAPES[name], h / 2, s, yt)
         parts.append(make_part("tube_0", "tube", segments(path, rt), glow))
+        holds = [path[i] for i in np.linspace(0, len(path) - 1, 4).astype(int)[:3]]
     else:  # a word: letters as zigzag strokes side by side
         n = int(rng.integers(3, 7))
         lw, lh = rng.uniform(0.08, 0.12), rng.uniform(0.14, 0.2)
         w, h = n * lw * 1.25 + 0.08, lh + 0.1
         x0 = -w / 2 + 0.04
+        holds = []
         for k in range(n):
             xa = x0 + k * lw * 1.25
             zz = rng.uniform(0.2, 0.8)
             stroke = [(xa, yt, 0.05), (xa, yt, 0.05 + lh), (xa + lw * 0.5, yt, 0.05 + lh * zz), (xa + lw, yt, 0.05 + lh),
                       (xa + lw, yt, 0.05)]
             parts.append(make_part(f"tube_{k}", "tube", segments(stroke, rt), glow))
+            holds.append((xa, yt, 0.05 + lh * 0.5))
     parts.append(make_part("backplate", "backplate", S.box((w, t, h), center=(0, t / 2, h / 2)), acrylic))
+    # the clear clips holding the tubes off the plate
+    for k, (x, _, z) in enumerate(holds):
+        parts.append(make_part(f"clip_{k}", "clip", S.box((0.008, yt - t, 0.01), center=(x, (t + yt) / 2, z)), acrylic))
     if variant == "framed":
         metal = M.solid((0.1, 0.1, 0.1), "metal", 0.4, 0.6)
         fr = [S.box((w + 0.04, 0.03, 0.02), center=(0, 0.015, -0.0 + 0.01 - 0.02)), S.box((w + 0.04, 0.03, 0.02), center=(0, 0.015, h + 0.01)),
