@@ -303,7 +303,7 @@ def _bag_material(rng) -> Material:
     return Material(M.jitter(rng, (0.12, 0.12, 0.13), 0.03), 0.4, 0.0, "plastic")
 
 
-@register("laundry_basket", parts=("body",), extra_parts=("handle", "rib", "band"), size_range=(0.35, 0.72),
+@register("laundry_basket", parts=("body",), extra_parts=("handle", "rib", "band", "rim", "foot_ring"), size_range=(0.35, 0.72),
           density=900, variants=("rectangular", "round"), placement="floor")
 def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.plastic(rng) if rng.random() < 0.6 else _wicker(rng)
@@ -350,4 +350,9 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
         grip = S.tube(arc((sx * (r - 0.002), 0, h - 0.05), 0.06, 0.0, np.pi, n=7,
                           u=(0, 1, 0), v=(sx, 0, 0), squash=0.45), 0.008, sections=8)
         parts.append(make_part(f"handle_{i}", "handle", grip, mat))
+    # the rolled rim round the top and the foot ring it stands on
+    parts.append(make_part("rim", "rim", ring([(r - 0.006, h - 0.012), (r + 0.005, h - 0.01), (r + 0.005, h), (r - 0.006, h)],
+                                              sections=20), mat))
+    parts.append(make_part("foot_ring", "foot_ring", ring([(rb - 0.008, 0.0), (rb + 0.003, 0.0), (rb + 0.003, 0.012),
+                                                           (rb - 0.008, 0.012)], sections=20), mat))
     return parts

@@ -374,7 +374,7 @@ def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("soap_dispenser", parts=("body", "pump"),
-          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock"),
+          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad"),
           size_range=(0.12, 0.26), density=1000, variants=("pump_bottle", "wall_mounted", "ceramic"),
           placement="surface")
 def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -396,6 +396,9 @@ def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if variant == "ceramic" else M.glass(rng)
     metal = M.metal(rng)
     out = [make_part("body", "body", S.lathe([(r, 0.0), (r, h * 0.85), (r * 0.4, h)]), mat),
+           # the cork pad under the base
+           make_part("pad", "pad", S.cylinder(r * 0.85, 0.0015, center=(0, 0, 0.00075), sections=16),
+                     M.solid((0.65, 0.5, 0.35), "wood", 0.95)),
            make_part("collar", "collar", S.cylinder(r * 0.45, 0.015, center=(0, 0, h + 0.0075)), metal),
            make_part("pump", "pump", S.cylinder(r * 0.2, 0.035, center=(0, 0, h + 0.015 + 0.0175)), metal),
            make_part("nozzle", "nozzle", S.box((0.008, 0.04, 0.01), center=(0, 0.015, h + 0.05 + 0.005)), metal)]
