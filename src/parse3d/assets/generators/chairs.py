@@ -42,6 +42,7 @@ def chair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                    bevel=0.004), mat))
         out += legs4("leg", "leg", w=w, d=d, h=hs - st, size=leg, mat=mat, inset=0.01)
         out += _stretchers(w, d, rng.uniform(0.12, 0.18), leg, 0.01, mat)
+        out += _leg_caps(w, d, leg, 0.01)
         px = w / 2 - 0.01 - leg / 2
         py = -d / 2 + 0.01 + leg / 2
         for k, sx in enumerate((-1, 1)):
