@@ -50,3 +50,29 @@ def test_damaged_entry_is_regenerated(tmp_path):
     good = asset_digest(pool.load("cup", 0))
     pool.path("cup", 0).write_bytes(b"broken")
     assert asset_digest(AssetPool(tmp_path, per_category=1).load("cup", 0)) == good
+
+
+def test_fingerprint_covers_the_private_helper_modules(monkeypatch):
+    """Editing a shared helper (``generators/_kit.py``) retires the cached assets of every
+    category built with it, through the modules that import it, and of no other."""
+    from parse3d.assets import pool
+
+    kit = "parse3d.assets.generators._kit"
+    # appliances imports _kit directly and through _casework; clothing imports no helper
+    assert {kit, "parse3d.assets.generators._casework"} <= set(
+        pool._private_helpers("parse3d.assets.generators.appliances"))
+    assert kit in pool._private_helpers("parse3d.assets.generators.casegoods")  # via _casework
+    assert pool._private_helpers("parse3d.assets.generators.clothing") == ()
+    before = {c: pool.category_fingerprint(c) for c in ("microwave", "clothes")}
+
+    real = pool._module_source.__wrapped__
+    monkeypatch.setattr(pool, "_module_source",
+                        lambda m: real(m) + ("\n# edited\n" if m == kit else ""))
+    pool._module_digest.cache_clear()
+    try:
+        after = {c: pool.category_fingerprint(c) for c in ("microwave", "clothes")}
+    finally:
+        monkeypatch.undo()
+        pool._module_digest.cache_clear()
+    assert after["microwave"] != before["microwave"]
+    assert after["clothes"] == before["clothes"]

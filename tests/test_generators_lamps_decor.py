@@ -46,9 +46,12 @@ def _centre(asset, label: str) -> np.ndarray:
 
 
 def _flat_back(asset, label: str) -> None:
-    """A wall item's ``label`` part has a large flat patch on the asset's back plane (y min)."""
-    b, part = asset.bounds, _one(asset, label)
-    back = part.surfaces["back"]
+    """A wall item's ``label`` part (for a group label, one of its parts: a frame's backing
+    board) has a large flat patch on the asset's back plane (y min)."""
+    b = asset.bounds
+    _one(asset, label)
+    back = max((p.surfaces["back"] for p in asset.parts_by_label(label)),
+               key=lambda s: (abs(s.origin[1] - b[0, 1]) < 1e-3, s.area))
     assert back.source == "mesh"
     assert abs(back.origin[1] - b[0, 1]) < 1e-3
     ext = asset.extents

@@ -47,6 +47,30 @@ def test_every_synonym_and_hypernym_names_existing_categories(resolver):
             assert word in members
 
 
+def test_the_file_follows_its_schema():
+    """vocabulary.json is what vocabulary.schema.json beside it describes, and the schema
+    rejects what the resolver would misread."""
+    import jsonschema
+
+    data_dir = Path(__file__).resolve().parents[1] / "src" / "parse3d" / "data"
+    schema = json.loads((data_dir / "vocabulary.schema.json").read_text("utf-8"))
+    data = json.loads((data_dir / "vocabulary.json").read_text("utf-8"))
+    cls = jsonschema.validators.validator_for(schema)
+    cls.check_schema(schema)
+    assert list(cls(schema).iter_errors(data)) == []
+    bad = copy.deepcopy(data)
+    bad["hypernyms"]["sink"] = []  # a hypernym without members
+    bad["parts"]["book"]["cover"] = {"front": "front_cover", "inside": "pages"}  # no such surface
+    bad["synonyms"]["Wash Basin"] = "sink"  # not normalised: never matched
+    errors = list(cls(schema).iter_errors(bad))
+    assert len(errors) == 3, [e.message for e in errors]
+
+
+def test_sink_names_every_sink():
+    cats = Resolver(registry.vocabulary()).categories_for("sinks")
+    assert cats and set(cats) == {"sink", "pedestal_sink", "utility_sink", "vessel_sink"}
+
+
 def _variants(category: str):
     cat = registry.get(category)
     for i, v in enumerate(cat.variants):

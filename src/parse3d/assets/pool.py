@@ -8,8 +8,9 @@ its file, so the result depends only on the rng state, ``K`` and the asset libra
 whether :meth:`AssetPool.build` ran first.
 
 Files live under ``<root>/<category>/<seed>-<fingerprint>.npz``; the fingerprint hashes the
-source of the category's generator module and of the shared geometry code, so editing a
-generator quietly retires its old pool entries instead of serving stale assets.
+source of the category's generator module, of the private helper modules it imports
+(``generators/_kit.py``…) and of the shared geometry code, so editing a generator or a helper
+quietly retires its old pool entries instead of serving stale assets.
 
 Examples
 --------
@@ -48,7 +49,8 @@ _SHARED_SOURCES = ("geometry.shapes", "geometry.surfaces", "assets.model", "asse
 
 
 @cache
-def _module_digest(module_name: str) -> bytes:
+def _module_source(module_name: str) -> str:
+    """The module's source text (the module's name when it cannot be read)."""
     mod = sys.modules.get(module_name)
     if mod is None:
         # read the source without importing the module (generators import trimesh): the same
@@ -56,24 +58,56 @@ def _module_digest(module_name: str) -> bytes:
         import importlib.util
         import tokenize
 
-        spec = importlib.util.find_spec(module_name)
         try:
+            spec = importlib.util.find_spec(module_name)
             with tokenize.open(spec.origin) as fh:
                 src = fh.read()
             if src and not src.endswith("\n"):
                 src += "\n"
-        except (OSError, TypeError, AttributeError, SyntaxError):
+        except (OSError, TypeError, AttributeError, SyntaxError, ImportError, ValueError):
             src = module_name
-        return hashlib.sha256(src.encode("utf-8")).digest()
+        return src
     try:
-        src = inspect.getsource(mod)
+        return inspect.getsource(mod)
     except (OSError, TypeError):
-        src = module_name
-    return hashlib.sha256(src.encode("utf-8")).digest()
+        return module_name
+
+
+@cache
+def _module_digest(module_name: str) -> bytes:
+    return hashlib.sha256(_module_source(module_name).encode("utf-8")).digest()
+
+
+@cache
+def _private_helpers(module_name: str) -> tuple[str, ...]:
+    """The private sibling modules (``_kit``, ``_casework``…) that ``module_name`` imports,
+    directly or through one another, sorted: their code shapes the assets as much as the
+    generator's own."""
+    import ast
+
+    package = module_name.rpartition(".")[0]
+    seen: set[str] = set()
+    todo = [module_name]
+    while todo:
+        try:
+            tree = ast.parse(_module_source(todo.pop()))
+        except SyntaxError:
+            continue
+        for node in ast.walk(tree):
+            if not isinstance(node, ast.ImportFrom) or node.level != 1:
+                continue
+            names = [node.module] if node.module else [a.name for a in node.names]
+            for n in names:
+                if n.startswith("_") and (dep := f"{package}.{n}") not in seen:
+                    seen.add(dep)
+                    todo.append(dep)
+    return tuple(sorted(seen))
 
 
 def category_fingerprint(category: str) -> str:
-    """8 hex digits identifying the code that generates ``category``'s assets.
+    """8 hex digits identifying the code that generates ``category``'s assets: the generator's
+    module, the private helper modules it imports (``generators/_kit.py``…) and the shared
+    geometry code.
 
     For a category with loaded assets the file list counts as well (adding assets changes
     which asset a seed draws).
@@ -84,6 +118,8 @@ def category_fingerprint(category: str) -> str:
         h.update(_module_digest(f"parse3d.{name}"))
     if cat.generator is not None:
         h.update(_module_digest(cat.generator.__module__))
+        for helper in _private_helpers(cat.generator.__module__):
+            h.update(_module_digest(helper))
     for p in cat.loaded_assets:
         h.update(str(p).encode())
     return h.hexdigest()[:8]

@@ -15,7 +15,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, knob, white
-from ._kit import feet4, hinge_parts, prismatic, revolute
+from ._kit import feet4, hinge_parts, mount, prismatic, revolute
 
 
 def _shell(w: float, d: float, h: float, *, z0: float = 0.0, x0: float | None = None,
@@ -30,6 +30,14 @@ def _shell(w: float, d: float, h: float, *, z0: float = 0.0, x0: float | None = 
             S.box((t, d, h - 2 * t), center=(x0 + t / 2, 0, z0 + h / 2)),
             S.box((t, d, h - 2 * t), center=(x1 - t / 2, 0, z0 + h / 2)),
             S.box((cw - 2 * t, t, h - 2 * t), center=(cx, -d / 2 + t / 2, z0 + h / 2))]
+
+
+def _pads(w: float, d: float, inset: float = 0.025, r: float = 0.01, h: float = 0.004) -> list[Part]:
+    """Four rubber pads let into the underside of a ``w`` x ``d`` appliance (flush with it)."""
+    rubber = M.solid((0.08, 0.08, 0.08), "rubber", 0.9)
+    return [make_part(f"foot_{k}", "foot", S.cylinder(r, h, center=(sx * (w / 2 - inset), sy * (d / 2 - inset), h / 2),
+                                                      sections=10), rubber)
+            for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
 
 
 def _buttons(prefix: str, x: float, y: float, zs, mat, r: float = 0.008) -> list[Part]:
@@ -62,7 +70,7 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray"),
+@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray", "button", "cord"),
           size_range=(0.2, 0.42), density=300, variants=("two_slot", "four_slot", "long_slot"),
           placement="surface")
 def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -94,6 +102,12 @@ def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("knob", "knob", knob((w / 2, 0, h * 0.35), 0.012, 0.01, axis=(1, 0, 0)), black()))
     out.append(make_part("crumb_tray", "crumb_tray", S.box((w * 0.8, d * 0.8, 0.006),
                                                            center=(0, 0, fh + 0.004)), mat))
+    # the cancel, bagel and defrost buttons on the side panel, and the mains cord out of the back
+    for k in range(3):
+        out.append(make_part(f"button_{k}", "button", S.box((0.004, 0.012, 0.008), center=(w / 2 + 0.002, d * 0.25, h * (0.6 - 0.12 * k))),
+                             black()))
+    out.append(make_part("cord", "cord", S.tube([(0, -d / 2 + 0.002, fh + 0.02), (0, -d / 2 - 0.025, fh + 0.012),
+                                                 (0.04, -d / 2 - 0.03, 0.004)], 0.003, sections=6), black("rubber")))
     out += feet4("foot", w=w, d=d, r=0.01, h=fh, mat=black("rubber"), inset=0.02)
     return out
 
@@ -125,7 +139,8 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("coffee_maker", parts=("base", "reservoir", "head"),
-          extra_parts=("carafe", "handle", "button", "drip_tray", "lid"),
+          extra_parts=("carafe", "handle", "button", "drip_tray", "lid", "foot", "warming_plate", "carafe_lid",
+                       "water_window", "portafilter", "steam_wand", "pod_holder"),
           size_range=(0.25, 0.45), density=400, variants=("drip", "pod", "espresso"),
           placement="surface")
 def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -151,16 +166,39 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
                                                          (0, yc + r + 0.03, bh + ch * 0.3),
                                                          (0, yc + r - 0.002, bh + ch * 0.3)], 0.006),
                              black()))
+        # the warming plate under the carafe and the carafe's lid
+        out.append(make_part("warming_plate", "warming_plate", S.cylinder(r * 1.05, 0.004, center=(0, yc, bh + 0.001),
+                                                                          sections=20), black("metal")))
+        out.append(make_part("carafe_lid", "carafe_lid", S.cylinder(r * 0.82, 0.012, center=(0, yc, bh + ch - 0.001),
+                                                                    sections=16), black()))
     else:
         out.append(make_part("drip_tray", "drip_tray", S.box((w * 0.7, d * 0.35, 0.015),
                                                              center=(0, d * 0.25, bh + 0.0075)),
                              M.metal(rng)))
+        zh = h - h * 0.22
+        if variant == "espresso":
+            # the portafilter locked under the group head, and the steam wand at the side
+            out.append(make_part("portafilter", "portafilter",
+                                 [S.cylinder(0.03, 0.025, center=(0, d * 0.2, zh - 0.0125), sections=16),
+                                  S.box((0.025, 0.11, 0.02), center=(0, d * 0.2 + 0.08, zh - 0.015))], black("metal")))
+            out.append(make_part("steam_wand", "steam_wand", S.tube([(w / 2 - 0.025, d * 0.3, zh), (w / 2 - 0.025, d * 0.38, zh - 0.04),
+                                                                     (w / 2 - 0.02, d * 0.4, bh + 0.06)], 0.004, sections=8),
+                                 M.metal(rng)))
+        else:
+            out.append(make_part("pod_holder", "pod_holder", S.cylinder(0.025, 0.02, center=(0, d * 0.2, zh - 0.01), sections=16),
+                                 black()))
+    # the water level window on the reservoir's side and the rubber feet
+    out.append(make_part("water_window", "water_window", S.box((0.001, d * 0.2, (h - bh) * 0.5),
+                                                                center=(w / 2 + 0.0005, -d / 2 + d * 0.175, bh + (h - bh) * 0.45)),
+                         M.solid((0.6, 0.75, 0.9), "glass", 0.1)))
+    out += _pads(w, d)
     out += _buttons("button", w * 0.3, d / 2, [h - h * 0.11], black(), r=0.007)
     return out
 
 
 @register("mini_fridge", parts=("body", "door"),
-          extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass"),
+          extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass", "thermostat", "crisper",
+                       "vent"),
           size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
           placement="floor")
 def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -183,6 +221,14 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                              S.box((w - 2 * t - 0.02, (d - 0.05) * 0.6, 0.1),
                                    center=(0, -0.025, h - t - 0.06)), white(rng)))
     out += feet4("foot", w=w, d=d - 0.05, r=0.015, h=fh, mat=black("rubber"), inset=0.02)
+    # the thermostat dial on the inner side wall, the crisper drawer on the floor, the condenser
+    # grille on the back
+    out.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(w / 2 - t - 0.006, d / 2 - 0.12, h - t - 0.16),
+                                                                axis=(1, 0, 0), sections=12), white(rng, "plastic")))
+    out.append(make_part("crisper", "crisper", S.box((w - 2 * t - 0.01, (d - 0.05) * 0.6, 0.08),
+                                                     center=(0, -0.025 + 0.01, fh + t + 0.04 + 0.001)), M.glass(rng)))
+    out.append(make_part("vent", "vent", S.box((w * 0.7, 0.004, (h - fh) * 0.5), center=(0, -d / 2 - 0.002, fh + (h - fh) * 0.4)),
+                         black()))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
                       else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
@@ -190,7 +236,7 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("dishwasher", parts=("body", "door"),
-          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button"),
+          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket"),
           size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
 def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
@@ -205,6 +251,12 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     for k, z in enumerate((tk + 0.1, tk + 0.4)):
         out.append(make_part(f"rack_{k}", "rack", S.box((w - 0.08, d - 0.12, 0.1),
                                                         center=(0, -0.03, z + 0.05)), M.metal(rng)))
+        # the spray arm turning under each rack
+        out.append(make_part(f"spray_arm_{k}", "spray_arm", S.box((w - 0.14, 0.04, 0.012), center=(0, -0.03, z - 0.015)),
+                             M.solid((0.6, 0.6, 0.62), "plastic", 0.5)))
+    # the cutlery basket standing in the lower rack
+    out.append(make_part("cutlery_basket", "cutlery_basket", S.box((0.2, 0.12, 0.12), center=(w / 2 - 0.16, d / 2 - 0.17, tk + 0.1 + 0.07)),
+                         M.solid((0.6, 0.6, 0.62), "plastic", 0.5)))
     out.append(make_part("control_panel", "control_panel",
                          S.box((w, 0.03, 0.08), center=(0, d / 2 - 0.015, h - 0.04)), mat))
     out += _buttons("button", w * 0.3, d / 2, [h - 0.04], black(), r=0.006)
@@ -249,7 +301,7 @@ def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("water_cooler", parts=("body", "bottle"),
-          extra_parts=("tap", "drip_tray", "cabinet_door", "collar"),
+          extra_parts=("tap", "drip_tray", "cabinet_door", "collar", "foot", "indicator", "vent"),
           size_range=(0.55, 1.55), density=300, variants=("top_load", "bottom_load", "countertop"))
 def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.34)
@@ -275,6 +327,12 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
                              M.solid(col)))
     out.append(make_part("drip_tray", "drip_tray", S.box((w * 0.6, 0.06, 0.015),
                                                          center=(0, w / 2 + 0.03, h * 0.65)), black()))
+    # the power and heating lights, the condenser vent at the back, the levelling feet
+    for k, col in enumerate(((0.2, 0.9, 0.2), (0.95, 0.3, 0.1))):
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.004, 0.002, center=((k - 0.5) * 0.03, w / 2 + 0.001, h * 0.93),
+                                                                        axis=(0, 1, 0), sections=8), M.solid(col, "glass", 0.1)))
+    out.append(make_part("vent", "vent", S.box((w * 0.6, 0.003, h * 0.25), center=(0, -w / 2 - 0.0015, h * 0.35)), black()))
+    out += _pads(w, w, inset=0.03, r=0.015, h=0.006)
     return out
 
 
@@ -295,18 +353,23 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
     out = [make_part("canopy", "canopy", canopy, steel),
            make_part("chimney", "chimney", S.box((top_w * 0.9, 0.22, chimney_h),
                                                  center=(0, -d / 2 + 0.125, ch + 0.08 + chimney_h / 2)),
-                     steel),
-           make_part("filter", "filter", S.box((w * 0.8, d * 0.7, 0.006), center=(0, 0.02, 0.004)),
-                     M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8))]
+                     steel)]
+    # two baffle filters side by side under the canopy
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part("filter" if k == 0 else "filter_1", "filter",
+                             S.box((w * 0.39, d * 0.7, 0.006), center=(sx * w * 0.2, 0.02, 0.004)),
+                             M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8)))
     for k, sx in enumerate((-1, 1)):
         out.append(make_part(f"light_{k}", "light", S.cylinder(0.025, 0.004, center=(sx * w * 0.35, d * 0.3, 0.003)),
                              M.solid((1.0, 0.97, 0.85), "glass", 0.1)))
-    out += _buttons("button", 0, d / 2, [ch * 0.2], black(), r=0.006)
+    for k in range(4):  # the fan speeds and the light switch along the front edge
+        out.append(make_part(f"button_{k}", "button", S.cylinder(0.006, 0.006, center=((k - 1.5) * 0.03, d / 2 + 0.002, ch * 0.2),
+                                                                axis=(0, 1, 0), sections=12), black()))
     return out
 
 
 @register("printer", parts=("body", "paper_tray"),
-          extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge"),
+          extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port"),
           size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
           placement="surface")
 def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -320,6 +383,13 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("paper_tray", "paper_tray", S.box((w * 0.7, d * 0.6, 0.04),
                                                            center=(0, d / 2 + 0.005 - d * 0.3, 0.03)), mat))
     out.append(prismatic("paper_tray_slide", "body", "paper_tray", travel=d * 0.45))
+    # the paper stacked in the tray (it slides out with it), the USB port at the back, the feet
+    out.append(make_part("paper", "paper", S.box((0.21, d * 0.5, 0.012), center=(0, d / 2 - d * 0.3, 0.05 + 0.006)),
+                         M.solid((0.97, 0.97, 0.97), "paper", 0.9)))
+    out.append(mount("paper_tray", "paper"))
+    out.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.007), center=(w * 0.3, -d / 2 - 0.001, bh * 0.3)),
+                         M.solid((0.2, 0.2, 0.2), "metal", 0.4, 0.6)))
+    out += _pads(w, d, inset=0.04)
     out.append(make_part("output_tray", "output_tray", S.box((w * 0.6, 0.12, 0.006),
                                                              center=(0, d / 2 + 0.06, bh * 0.55)), mat))
     out.append(make_part("control_panel", "control_panel", S.box((w * 0.3, 0.04, 0.03),
@@ -382,7 +452,8 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("computer_tower", parts=("case",),
-          extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel"),
+          extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel", "usb_port",
+                       "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet"),
           size_range=(0.3, 0.58), density=400, variants=("mid_tower", "full_tower", "mini"),
           placement="floor")
 def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -407,5 +478,19 @@ def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("vent", "vent", S.box((w * 0.6, 0.004, 0.12), center=(0, d / 2 + 0.001, fh + 0.12)),
                          black()))
     out += feet4("foot", w=w, d=d - 0.02, r=0.012, h=fh, mat=black("rubber"), inset=0.01)
+    # the front USB ports and audio jack under the power button, the back's I/O shield, the
+    # power supply's fan grille and inlet, and the rear exhaust fan
+    io = M.solid((0.2, 0.2, 0.22), "metal", 0.4, 0.6)
+    for k in range(2):
+        out.append(make_part(f"usb_port_{k}", "usb_port", S.box((0.014, 0.002, 0.006),
+                                                                center=((k - 0.5) * 0.025, d / 2 + 0.001, h - 0.065)), io))
+    out.append(make_part("audio_jack", "audio_jack", S.cylinder(0.004, 0.002, center=(0.035, d / 2 + 0.001, h - 0.065),
+                                                                axis=(0, 1, 0), sections=8), io))
+    yb = -d / 2 - 0.01
+    out.append(make_part("io_shield", "io_shield", S.box((0.045, 0.002, 0.16), center=(-w * 0.2, yb - 0.001, h - 0.12)), io))
+    out.append(make_part("fan", "fan", S.cylinder(0.055, 0.003, center=(w * 0.15, yb - 0.0015, h - 0.12), axis=(0, 1, 0),
+                                                  sections=16), black()))
+    out.append(make_part("psu_grille", "psu_grille", S.box((0.1, 0.002, 0.07), center=(-w / 2 + 0.06, yb - 0.001, fh + 0.05)), io))
+    out.append(make_part("power_inlet", "power_inlet", S.box((0.03, 0.003, 0.02), center=(w / 2 - 0.02, yb - 0.0015, fh + 0.05)), black()))
     return out
 

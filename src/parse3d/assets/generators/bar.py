@@ -14,11 +14,13 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._household import ring
+from ._casework import black
+from ._household import ring, shell
 from ._kit import feet4
 
 
-@register("liquor_bottle", parts=("body", "cap"), extra_parts=("label", "neck", "shoulder_label"),
+@register("liquor_bottle", parts=("body", "cap"),
+          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout"),
           size_range=(0.15, 0.36), density=1000, variants=("square", "round", "flask"), placement="surface")
 def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     tint = [(0.75, 0.45, 0.15), (0.85, 0.88, 0.9), (0.2, 0.35, 0.2), (0.35, 0.2, 0.1)][int(rng.integers(4))]
@@ -55,6 +57,17 @@ def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
                            ring([(nr * 1.2, nz0 + nh * 0.45), (nr * 1.35, nz0 + nh * 0.45), (nr * 1.3, nz0 + nh * 0.6),
                                  (nr * 1.15, nz0 + nh * 0.6)], sections=16), M.paper(rng)))
     parts.append(make_part("cap", "cap", S.cylinder(nr + 0.002, 0.028, center=(0, 0, h - 0.014), sections=16), cap_mat))
+    # the tax seal strip over the cap, the back label, and the ring of the pourer under the cap
+    parts.append(make_part("seal", "seal", S.box((0.008, 2 * nr + 0.0052, 0.02), center=(0, 0, h - 0.015)), M.paper(rng)))
+    if variant == "round":
+        parts.append(make_part("back_label", "back_label", S.box((r * 0.9, 0.001, hb * 0.2),
+                                                                center=(0, -r - 0.0003, hb * 0.85 - hb * 0.1)), M.paper(rng)))
+    else:
+        parts.append(make_part("back_label", "back_label", S.box((0.04, 0.001, hb * 0.25),
+                                                                center=(0, -(w if variant == "square" else d) / 2 - 0.0005, hb * 0.4)),
+                               M.paper(rng)))
+    parts.append(make_part("pour_spout", "pour_spout", S.cylinder(nr + 0.0015, 0.004, center=(0, 0, h - 0.03),
+                                                                  sections=16), black()))
     return parts
 
 
@@ -85,7 +98,8 @@ def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer",), size_range=(0.15, 0.3),
+@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam", "logo"),
+          size_range=(0.15, 0.3),
           density=800, variants=("cobbler", "boston"), placement="surface")
 def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
     steel = M.solid((0.82, 0.82, 0.84), "metal", 0.2, 0.95)
@@ -101,10 +115,20 @@ def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
                                steel))
         parts.append(make_part("cap", "cap", S.frustum(r * 0.92, r * 0.8, h * 0.6, center=(0, 0, h + 0.004), sections=24),
                                Material((0.85, 0.9, 0.95, 0.4), 0.05, 0.0, "glass")))
+    # the rolled foot ring it stands on and the rolled lip where the top fits
+    parts.append(make_part("base_ring", "base_ring", ring([(r * 0.75 - 0.002, 0.0), (r * 0.75 + 0.002, 0.0),
+                                                           (r * 0.76 + 0.002, 0.006), (r * 0.76 - 0.002, 0.006)],
+                                                          sections=24), steel))
+    parts.append(make_part("seam", "seam", ring([(r - 0.002, h - 0.008), (r + 0.0015, h - 0.007), (r + 0.0015, h - 0.001),
+                                                 (r - 0.002, h - 0.001)], sections=24), steel))
+    # the maker's stamp etched on the front
+    rl = r * 0.75 + r * 0.25 * 0.5
+    parts.append(make_part("logo", "logo", S.box((0.02, 0.0006, 0.012), center=(0, rl + 0.0002, h * 0.5)),
+                           Material((0.55, 0.55, 0.57, 1.0), 0.5, 0.8, "metal")))
     return parts
 
 
-@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid"), size_range=(0.14, 0.32), density=600,
+@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid", "knob", "rim", "foot_ring", "liner"), size_range=(0.14, 0.32), density=600,
           variants=("open", "lidded"), placement="surface")
 def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = rng.uniform(0.08, 0.11), rng.uniform(0.16, 0.22)
@@ -115,9 +139,16 @@ def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
                                S.tube([(s * (r * 0.95), 0.015, h * 0.75), (s * (r + 0.022), 0.015, h * 0.75),
                                        (s * (r + 0.022), -0.015, h * 0.75), (s * (r * 0.95), -0.015, h * 0.75)], 0.004),
                                steel))
+    # the rolled rim, the foot ring and the insulated inner liner
+    parts.append(make_part("rim", "rim", ring([(r - 0.008, h - 0.006), (r + 0.003, h - 0.005), (r + 0.003, h),
+                                               (r - 0.008, h)], sections=24), steel))
+    parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.82 - 0.006, 0.0), (r * 0.82 + 0.002, 0.0),
+                                                           (r * 0.82 + 0.002, 0.008), (r * 0.82 - 0.006, 0.008)],
+                                                          sections=24), steel))
+    parts.append(make_part("liner", "liner", shell([(r * 0.82 - 0.01, 0.012), (r - 0.0095, h - 0.01)], 0.002, sections=20), M.plastic(rng)))
     if variant == "lidded":
-        parts.append(make_part("lid", "lid", [S.cylinder(r + 0.004, 0.01, center=(0, 0, h + 0.005), sections=24),
-                                              S.ellipsoid((0.015, 0.015, 0.012), center=(0, 0, h + 0.014))], steel))
+        parts.append(make_part("lid", "lid", S.cylinder(r + 0.004, 0.01, center=(0, 0, h + 0.005), sections=24), steel))
+        parts.append(make_part("knob", "knob", S.ellipsoid((0.015, 0.015, 0.012), center=(0, 0, h + 0.014)), steel))
     else:
         parts.append(make_part("tongs", "tongs", S.box((0.012, 0.02, h * 0.9), center=(r * 0.5, 0, h * 0.55),
                                                        R=np.array([[1, 0, 0], [0, 1, 0], [0, 0, 1.0]])), steel))

@@ -57,7 +57,7 @@ def bar_mat(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("beer_tap", parts=("tower", "faucet", "tap_handle"),
-          extra_parts=("base", "drip_tray", "grate", "collar"),
+          extra_parts=("base", "drip_tray", "grate", "collar", "badge", "ferrule", "cap", "screw"),
           size_range=(0.35, 0.85), density=2500, variants=("t_bar", "column", "double_column"),
           placement="surface")
 def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -97,6 +97,12 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         # the handle tips forward (+Y at its top) about the faucet's lever pin
         parts.append(revolute(f"tap_handle_{k}_pull", f"faucet_{k}", f"tap_handle_{k}", axis=(1, 0, 0),
                               origin=(x, y + 0.042, z + 0.01), opens=-0.6))
+        # the brand badge on the handle's front and the chrome ferrule at its foot (both move with it)
+        parts.append(make_part(f"badge_{k}", "badge", S.box((0.022, 0.003, 0.035), center=(x, y + 0.042 + 0.013, z + 0.01 + hl * 0.65)),
+                               M.paper(rng)))
+        parts.append(make_part(f"ferrule_{k}", "ferrule", S.cylinder(0.0105, 0.015, center=(x, y + 0.042, z + 0.01 + 0.0075),
+                                                                   sections=12), chrome))
+        parts += [mount(f"tap_handle_{k}", f"badge_{k}"), mount(f"tap_handle_{k}", f"ferrule_{k}")]
     # the drip tray in front of the tower, under the faucets
     y_tray = max(s[1] for s in spots) + 0.04
     tw = max(0.2, 0.12 * len(spots) + 0.08)
@@ -108,11 +114,19 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts.append(make_part("drip_tray", "drip_tray", tray, steel))
     parts.append(make_part("grate", "grate", S.box((tw - 0.014, 0.106, 0.003), center=(0, y_tray, 0.0165)),
                            steel))
+    # the tower's top cap, and the screws fixing the base flange to the counter
+    top = max(p.mesh.bounds[1, 2] for p in parts if getattr(p, "label", None) == "tower")
+    if variant != "t_bar":
+        parts.append(make_part("cap", "cap", S.cylinder(0.042, 0.01, center=(0, 0, top + 0.004), sections=20), chrome))
+    for k, a in enumerate(np.radians([-160, -90, -20])):  # the back half: the drip tray covers the front
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(0.048 * np.cos(a), 0.048 * np.sin(a), 0.0155),
+                                                                 sections=8), chrome))
     return parts
 
 
 @register("cash_register", parts=("body", "cash_drawer"),
-          extra_parts=("keypad", "key", "display", "screen", "printer", "drawer_box", "stand", "handle"),
+          extra_parts=("keypad", "key", "display", "screen", "printer", "drawer_box", "stand", "handle", "receipt",
+                       "card_reader"),
           size_range=(0.3, 0.6), density=700, variants=("classic", "pos_terminal"),
           placement="surface")
 def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -162,12 +176,12 @@ def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         R[:3, :3] = np.array([[1, 0, 0], [0, c, -s], [0, s, c]])
         R[:3, 3] = kp_c + np.array([0, 0, 0.002])
         parts.append(make_part("keypad", "keypad", pad.apply(R), black()))
-        keys = []
+        # the twenty keys, each a part of its own
+        key_mat = Material((0.85, 0.85, 0.82, 1.0), 0.5, 0.0, "plastic")
         for i in range(5):
             for j in range(4):
                 kb = S.box((0.018, 0.018, 0.006), center=((i - 2) * 0.03, (j - 1.5) * 0.028, 0.004))
-                keys.append(kb.apply(R))
-        parts.append(make_part("key", "key", keys, Material((0.85, 0.85, 0.82, 1.0), 0.5, 0.0, "plastic")))
+                parts.append(make_part("key" if (i, j) == (0, 0) else f"key_{4 * i + j}", "key", kb.apply(R), key_mat))
         printer = S.box((w * 0.22, 0.06, 0.012), center=(w * 0.3, -d / 2 + 0.05, hd + hh + 0.005), bevel=0.003)
         parts.append(make_part("printer", "printer", printer, shell_mat))
         disp = S.box((w * 0.3, 0.02, 0.06), center=(-w * 0.2, -d / 2 + 0.025, hd + hh + 0.03 - 0.001), bevel=0.004)
@@ -194,4 +208,9 @@ def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                Material((0.15, 0.25, 0.4, 1.0), 0.1, 0.0, "glass")))
         printer = S.box((0.1, 0.14, 0.1), center=(w / 2 - 0.06, -0.1, hd + 0.05 - 0.001), bevel=0.01)
         parts.append(make_part("printer", "printer", printer, _white_plastic(rng)))
+        # the receipt curling out of the printer's slot, and the card reader beside the screen
+        parts.append(make_part("receipt", "receipt", S.box((0.058, 0.002, 0.05), center=(w / 2 - 0.06, -0.1 + 0.02, hd + 0.1 + 0.024)),
+                               M.solid((0.97, 0.97, 0.95), "paper", 0.8)))
+        parts.append(make_part("card_reader", "card_reader", S.box((0.07, 0.12, 0.035), center=(-w / 2 + 0.06, -0.08, hd + 0.0175),
+                                                                   bevel=0.006), black()))
     return parts

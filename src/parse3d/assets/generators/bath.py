@@ -44,7 +44,7 @@ def _faucet(x: float, y: float, z: float, reach: float, height: float, *, toward
     return S.union([base, S.tube(np.array(path), radius, sections=8)])
 
 
-@register("bathtub", parts=("tub",), extra_parts=("foot", "faucet", "base", "handle"),
+@register("bathtub", parts=("tub",), extra_parts=("foot", "faucet", "base", "handle", "drain", "overflow"),
           size_range=(1.4, 1.9), density=400,
           variants=("clawfoot", "pedestal", "built_in"))
 def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -101,10 +101,28 @@ def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
         cross = [S.box((0.06, 0.012, 0.012), center=(x, y, top + 0.041)),
                  S.box((0.012, 0.06, 0.012), center=(x, y, top + 0.041))]
         parts.append(make_part(f"handle_{i}", "handle", [stem, *cross], chrome))
+    # the drain in the floor at the tap end, and the overflow plate on the end wall above it
+    if variant == "built_in":
+        z_floor = bottom
+        zo = (z_floor + top) / 2 + 0.05
+        xd, xo = -length / 2 + t + 0.1, -length / 2 + t + 0.004
+    else:  # the oval's end wall leans out: its inner face at a height, along -X
+        tx = 0.035 * length / width
+
+        def inner_x(z: float) -> float:
+            f = float(np.interp(z - z_feet, [q[1] for q in prof], [q[0] / r for q in prof]))
+            return -length / 2 * f + tx
+
+        z_floor = z_feet + 0.035
+        zo = (z_floor + top) / 2 + 0.05
+        xd, xo = inner_x(z_floor) + 0.1, inner_x(zo) + 0.004
+    parts.append(make_part("drain", "drain", S.cylinder(0.035, 0.004, center=(xd, 0, z_floor + 0.002), sections=14), chrome))
+    parts.append(make_part("overflow", "overflow", S.cylinder(0.035, 0.008, center=(xo, 0, zo), axis=(1, 0, 0), sections=14),
+                           chrome))
     return parts
 
 
-@register("toilet", parts=("bowl", "tank", "seat"), extra_parts=("lid", "handle", "base"),
+@register("toilet", parts=("bowl", "tank", "seat"), extra_parts=("lid", "handle", "base", "hinge", "bolt_cap"),
           size_range=(0.6, 0.9), density=900, variants=("two_piece", "one_piece", "skirted"))
 def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = _enamel(rng)
@@ -129,8 +147,8 @@ def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
     bowl = _oval_vessel(prof, 0.025, 1.0, sy, z_rim - 0.2).moved((0, y_bowl, 0))
     parts.append(make_part("bowl", "bowl", bowl, mat))
     # the seat: a flattened ring resting on the rim
-    a = np.linspace(0, 2 * np.pi, 16, endpoint=False)
-    ring = np.c_[r * 0.86 * np.cos(a), r * 0.86 * sy * np.sin(a) + y_bowl, np.full(16, 0.0)]
+    a = np.linspace(0, 2 * np.pi, 12, endpoint=False)  # 12 convex pieces (the collision budget)
+    ring = np.c_[r * 0.86 * np.cos(a), r * 0.86 * sy * np.sin(a) + y_bowl, np.full(12, 0.0)]
     seat = scaled(S.tube(ring, 0.03, sections=8, closed=True), 1.0, 1.0, 0.45,
                   offset=(0, 0, z_rim + 0.0135))
     parts.append(make_part("seat", "seat", seat, seat_mat))
@@ -166,6 +184,15 @@ def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
                          r * 0.98 * sy, offset=(0, y_tank + tank_d / 2 + 0.03 + lid_t / 2,
                                                 z_rim + 0.03 + r * sy))
         parts.append(make_part("lid", "lid", lid, seat_mat))
+    # the seat's two hinges behind the bowl, and the caps over the floor bolts either side of the foot
+    y_h = y_bowl - r * 0.86 * sy - 0.015
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"hinge_{i}", "hinge", S.box((0.03, 0.04, 0.02), center=(sx * 0.07, y_h, z_rim + 0.01), bevel=0.004),
+                               seat_mat))
+    y_b = y_bowl - 0.03 if variant != "skirted" else y_bowl - 0.05
+    x_b = 0.15 * 1.0 if variant != "skirted" else r * 0.85 + 0.015
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"bolt_cap_{i}", "bolt_cap", S.frustum(0.014, 0.006, 0.028, center=(sx * x_b, y_b, 0), sections=10), mat))
     return parts
 
 
@@ -272,7 +299,7 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("towel_bar", parts=("bar",), extra_parts=("bracket",), size_range=(0.4, 0.9),
+@register("towel_bar", parts=("bar",), extra_parts=("bracket", "set_screw"), size_range=(0.4, 0.9),
           density=2000, variants=("single", "double", "square"), placement="wall")
 def towel_bar(rng: np.random.Generator, variant: str) -> list[Part]:
     length = rng.uniform(0.42, 0.82)
@@ -291,6 +318,9 @@ def towel_bar(rng: np.random.Generator, variant: str) -> list[Part]:
         cup = S.cylinder(r_bar + 0.006, 0.03, center=(x - sx * 0.005, ys[-1], z), axis=(1, 0, 0),
                          sections=12)
         parts.append(make_part(f"bracket_{i}", "bracket", [rosette, arm, cup], mat))
+        # the set screw under the post that locks it on its wall plate
+        parts.append(make_part(f"set_screw_{i}", "set_screw", S.cylinder(0.003, 0.004, center=(x, 0.02, z - 0.011 - 0.0015),
+                                                                        sections=8), mat))
     for k, y in enumerate(ys):
         if variant == "square":
             bar = bevel_box((length, r_bar * 1.8, r_bar * 1.8), center=(0, y, z), bevel=0.002)

@@ -20,7 +20,7 @@ from ._kit import hinge_parts, mount, prismatic, revolute
 
 
 @register("shower", parts=("base", "wall_panel", "glass"),
-          extra_parts=("door", "handle", "shower_head", "arm", "mixer", "drain", "niche", "hinge", "track"),
+          extra_parts=("door", "handle", "shower_head", "arm", "mixer", "drain", "niche", "hinge", "track", "clamp", "sweep"),
           size_range=(1.9, 2.3), density=300, variants=("corner_slider", "hinged", "walk_in"),
           placement="floor")
 def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -65,6 +65,9 @@ def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts.append(make_part("glass_0", "glass", S.box((tg, d - tp - 0.01, H - tb - 0.01),
                                                       center=(xl, tp / 2, (H + tb) / 2)), glass))
     yf = d / 2 - tg / 2 - 0.005
+    # the two clamps holding the side screen to the back wall panel
+    for k, z in enumerate((tb + 0.3, H - 0.3)):
+        parts.append(make_part(f"clamp_{k}", "clamp", S.box((0.03, 0.04, 0.05), center=(xl, -d / 2 + tp + 0.02, z), bevel=0.004), chrome))
     if variant == "walk_in":
         parts.append(make_part("glass_1", "glass", S.box((w * 0.45, tg, H - tb - 0.01),
                                                           center=(-w / 2 + w * 0.225 + 0.01, yf, (H + tb) / 2)), glass))
@@ -99,7 +102,10 @@ def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts.append(make_part("handle", "handle", handle, chrome))
     parts += hinge_parts("door_hinge", x=xd0 - 0.002, y=yf, z0=tb + 0.1, z1=H - 0.1, mat=chrome, radius=0.012,
                          length=0.06)
+    # the sweep seal along the door's bottom edge (it swings with the door)
+    parts.append(make_part("sweep", "sweep", S.box((dw - 0.02, 0.016, 0.012), center=(xd0 + dw / 2, yf, tb + 0.01)),
+                           Material((0.85, 0.88, 0.9, 0.6), 0.3, 0.0, "plastic")))
     parts += [revolute("door_hinge", "glass_0", "door", axis=(0, 0, 1), origin=(xd0 - 0.002, yf, tb),
                        opens=1.4),
-              mount("door", "handle")]
+              mount("door", "handle"), mount("door", "sweep")]
     return parts

@@ -24,7 +24,8 @@ def _mirror(rng: np.random.Generator) -> Material:
     return Material(M.jitter(rng, (0.85, 0.88, 0.9), 0.01), 0.02, 1.0, "glass")
 
 
-@register("toothbrush", parts=("handle", "head", "bristles"), extra_parts=("neck", "grip", "button"),
+@register("toothbrush", parts=("handle", "head", "bristles"),
+          extra_parts=("neck", "grip", "button", "thumb_rest", "tongue_cleaner", "indicator", "end_cap"),
           size_range=(0.14, 0.26), density=900, variants=("manual", "electric"), placement="surface")
 def toothbrush(rng: np.random.Generator, variant: str) -> list[Part]:
     """Lying flat along X, bristles towards +X pointing sideways (+Y) as it rests on its side."""
@@ -42,6 +43,8 @@ def toothbrush(rng: np.random.Generator, variant: str) -> list[Part]:
         neck = S.hull(np.array([(x, y, z) for x, w in ((-0.0205, 0.012), (0.025, 0.006))
                                 for y in (-w / 2, w / 2) for z in (0.0015, 0.0075)]))
         parts.append(make_part("neck", "neck", neck, body))
+        # the ribbed thumb rest on the handle's top face, near the neck
+        parts.append(make_part("thumb_rest", "thumb_rest", S.box((0.016, 0.008, 0.0015), center=(-0.03, 0, 0.0115)), rubber))
         z0, zh = 0.0015, 0.006
     else:
         lh = rng.uniform(0.15, 0.17)
@@ -53,6 +56,12 @@ def toothbrush(rng: np.random.Generator, variant: str) -> list[Part]:
                                                      bevel=0.001), rubber))
         neck = S.frustum(0.008, 0.0045, 0.06, center=(-0.002, 0, 0.0135), axis=(1, 0, 0), sections=12)
         parts.append(make_part("neck", "neck", neck, white(rng, "plastic")))
+        # the battery light under the button, the mode button, and the charging end cap
+        parts.append(make_part("indicator", "indicator", S.box((0.008, 0.003, 0.0015), center=(-lh * 0.72, 0, 0.02705)),
+                               M.solid((0.2, 0.8, 0.3), "glass", 0.1)))
+        parts.append(make_part("button_1", "button", S.cylinder(0.004, 0.003, center=(-lh * 0.45, 0, 0.0275), sections=12), rubber))
+        parts.append(make_part("end_cap", "end_cap", S.cylinder(0.0138, 0.01, center=(-lh + 0.005, 0, 0.0138),
+                                                                axis=(1, 0, 0), sections=16), white(rng, "plastic")))
         z0, zh = 0.0095, 0.008
     hl = 0.028
     xh = 0.024 if variant == "manual" else 0.056
@@ -61,10 +70,13 @@ def toothbrush(rng: np.random.Generator, variant: str) -> list[Part]:
     tuft = S.box((hl - 0.004, 0.011, 0.006), center=(xh + hl / 2, 0, z0 + zh + 0.003 - 0.0005),
                  bevel=0.001)
     parts.append(make_part("bristles", "bristles", tuft, bristle))
+    # the ridged tongue cleaner on the back of the head
+    parts.append(make_part("tongue_cleaner", "tongue_cleaner", S.box((hl * 0.7, 0.009, 0.0012),
+                                                                     center=(xh + hl / 2, 0, z0 + 0.0004)), rubber))
     return parts
 
 
-@register("toilet_brush", parts=("holder", "handle"), extra_parts=("brush_head", "collar", "knob", "foot", "bracket"),
+@register("toilet_brush", parts=("holder", "handle"), extra_parts=("brush_head", "collar", "knob", "foot", "bracket", "insert"),
           size_range=(0.3, 0.5), density=600, variants=("round", "square", "wall_hung"),
           placement="floor")
 def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -89,6 +101,10 @@ def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
         foot = S.cylinder(r * 0.9, 0.004, center=(0, 0, 0.002), sections=20) if variant == "round" else \
             S.box((2 * r - 0.006, 2 * r - 0.006, 0.004), center=(0, 0, 0.002))
         parts.append(make_part("foot", "foot", foot.moved((0, 0, -0.004)), M.solid((0.1, 0.1, 0.1), "rubber")))
+    # the removable drip insert in the holder's bottom
+    parts.append(make_part("insert", "insert", S.cylinder(r * 0.7, 0.012, center=(0, 0, 0.006 + 0.006), sections=16)
+                           if variant != "square" else S.box((2 * r - 0.014, 2 * r - 0.014, 0.012), center=(0, 0, 0.012)),
+                           M.solid((0.85, 0.85, 0.85), "plastic", 0.6)))
     collar_z = hh - 0.004
     collar = S.cylinder(r * 0.55, 0.012, center=(0, 0, collar_z + 0.006), sections=20)
     parts.append(make_part("collar", "collar", collar, mat))

@@ -72,12 +72,17 @@ def _legs(rng: np.random.Generator, w: float, d: float, h_leg: float, mat: Mater
           *, splay: bool) -> list[Part]:
     parts = []
     r = rng.uniform(0.015, 0.022)
+    brass = Material(M.jitter(rng, (0.78, 0.62, 0.3), 0.03), 0.3, 0.9, "metal")
     for i, (sx, sy) in enumerate(((-1, -1), (1, -1), (-1, 1), (1, 1))):
         top = np.array([sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), h_leg + 0.01])
         foot = top + [sx * 0.03, sy * 0.03, 0] if splay else top.copy()
         foot[2] = 0.0
         shape = S.frustum(r * 0.6, r, h_leg + 0.01, center=foot, axis=top - foot, sections=10)
         parts.append(make_part(f"leg_{i}", "leg", shape, mat))
+        # the brass ferrule capping the leg's foot (the leg still reaches the floor)
+        axis = (top - foot) / np.linalg.norm(top - foot)
+        parts.append(make_part(f"ferrule_{i}", "ferrule", S.frustum(r * 0.62, r * 0.7, 0.03, center=foot, axis=axis, sections=10),
+                               brass))
     return parts
 
 
@@ -88,7 +93,7 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 
 
 @register("nightstand", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box"), size_range=(0.4, 0.75),
+          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box", "ferrule"), size_range=(0.4, 0.75),
           density=450, variants=("two_drawer", "drawer_shelf", "legged"))
 def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
@@ -128,7 +133,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("dresser", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "leg", "plinth", "drawer_box"), size_range=(0.75, 1.8), density=450,
+          extra_parts=("handle", "leg", "plinth", "drawer_box", "ferrule"), size_range=(0.75, 1.8), density=450,
           variants=("wide", "tall", "mixed"))
 def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":

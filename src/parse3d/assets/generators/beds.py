@@ -46,7 +46,7 @@ def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Pa
 
 
 @register("bed", parts=("frame", "mattress", "headboard"),
-          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button"),
+          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button", "mattress_handle"),
           size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
@@ -128,6 +128,12 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("headboard", "headboard", head, head_mat))
     parts.append(_mattress("mattress", w - 0.01, d - 0.02, t_mat,
                            (0, 0, z_top - 0.04 + t_mat / 2), ticking))
+    # the strap handles sewn to the mattress's long sides, for turning it
+    zm = z_top - 0.04 + t_mat / 2
+    for k, (sx, y) in enumerate([(-1, -d * 0.2), (-1, d * 0.2), (1, -d * 0.2), (1, d * 0.2)]):
+        x = sx * ((w - 0.01) / 2 + 0.004)
+        parts.append(make_part(f"mattress_handle_{k}", "mattress_handle",
+                               S.box((0.008, 0.12, 0.025), center=(x, y, zm), bevel=0.002), ticking))
     if upholstered:
         parts += _tufting(w, -d / 2, z_top - 0.04 + t_mat + 0.12, head_h - 0.1, cloth)
     return parts

@@ -10,7 +10,7 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Part, make_part
+from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
 
@@ -56,7 +56,8 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tissue_box", parts=("box",), extra_parts=("tissue",), size_range=(0.1, 0.27), density=120,
+@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "print", "barcode", "flap"),
+          size_range=(0.1, 0.27), density=120,
           variants=("rectangular", "cube"), placement="surface")
 def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "cube":
@@ -64,7 +65,18 @@ def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
         h = rng.uniform(0.12, 0.13)
     else:
         w, d, h = rng.uniform(0.22, 0.25), rng.uniform(0.11, 0.12), rng.uniform(0.06, 0.09)
-    return [make_part("box", "box", S.box((w, d, h), center=(0, 0, h / 2)), M.paper(rng)),
+    card = M.paper(rng)
+    # the clear film round the dispensing slot, the printed pattern on the front, the barcode
+    # on the bottom edge of one end
+    op_w = min(0.14, w * 0.6)
+    return [make_part("box", "box", S.box((w, d, h), center=(0, 0, h / 2)), card),
             make_part("tissue", "tissue", S.hull([[-0.03, -0.004, h], [0.03, -0.004, h], [-0.03, 0.004, h], [0.03, 0.004, h],
                                                   [-0.015, -0.002, h + 0.05], [0.015, 0.002, h + 0.05]]),
-                      M.solid((0.97, 0.97, 0.97), "paper", 0.9), watertight=True)]
+                      M.solid((0.97, 0.97, 0.97), "paper", 0.9), watertight=True),
+            make_part("opening", "opening", S.box((op_w, 0.035, 0.0008), center=(0, 0, h + 0.0004)),
+                      Material((0.9, 0.92, 0.95, 0.5), 0.1, 0.0, "plastic")),
+            make_part("print", "print", S.box((w * 0.85, 0.0008, h * 0.7), center=(0, d / 2 + 0.0004, h / 2)), M.paper(rng)),
+            make_part("barcode", "barcode", S.box((0.0008, 0.03, 0.015), center=(w / 2 + 0.0004, 0, 0.012)),
+                      Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper")),
+            # the glued end flap on the left end
+            make_part("flap", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(-w / 2 - 0.0004, 0, h * 0.3)), card)]

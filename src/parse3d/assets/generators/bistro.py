@@ -19,7 +19,7 @@ from ._household import ring
 from ._kit import rot
 
 
-@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot"),
+@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar"),
           size_range=(0.95, 1.5), density=600, variants=("pedestal", "four_leg", "square_pedestal"),
           placement="floor")
 def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -44,6 +44,17 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
                                        ((0.025, span, 0.025), (-(w / 2 - 0.05), 0, zf)),
                                        ((0.025, span, 0.025), (w / 2 - 0.05, 0, zf))]):
             parts.append(make_part(f"footrest_{k}", "footrest", S.box(size, center=c), metal))
+        # the aprons under the top, between the legs, and a cap round each leg's foot
+        ha = 0.07
+        for k, (size, c) in enumerate([((span, 0.02, ha), (0, -(w / 2 - 0.05), h - t - ha / 2)),
+                                       ((span, 0.02, ha), (0, w / 2 - 0.05, h - t - ha / 2)),
+                                       ((0.02, span, ha), (-(w / 2 - 0.05), 0, h - t - ha / 2)),
+                                       ((0.02, span, ha), (w / 2 - 0.05, 0, h - t - ha / 2))]):
+            parts.append(make_part(f"apron_{k}", "apron", S.box(size, center=c), top_mat))
+        for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"foot_{i}", "foot", S.box((leg + 0.006, leg + 0.006, 0.012),
+                                                             center=(sx * (w / 2 - 0.05), sy * (w / 2 - 0.05), 0.006)),
+                                   black("rubber")))
         return parts
     if variant == "square_pedestal":
         w = rng.uniform(0.6, 0.75)
@@ -72,10 +83,17 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, a in enumerate(np.pi / 4 + np.arange(4) * np.pi / 2):
             glide = S.cylinder(0.015, 0.0065, center=(0.2 * np.cos(a), 0.2 * np.sin(a), 0.00325), sections=10)
             parts.append(make_part(f"foot_{k}", "foot", glide, black("rubber")))
+    # the cross plate screwed under the top that the column fixes into, and the collar where the
+    # column meets the base
+    parts.append(make_part("top_plate", "top_plate", [S.box((0.4, 0.05, 0.012), center=(0, 0, h - t - 0.006)),
+                                                      S.box((0.05, 0.4, 0.012), center=(0, 0, h - t - 0.006))], metal))
+    z_base = 0.036 if variant == "pedestal" else 0.02
+    parts.append(make_part("collar", "collar", S.cylinder(0.05, 0.03, center=(0, 0, z_base + 0.015), sections=16), metal))
     return parts
 
 
-@register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light"),
+@register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light", "record", "tonearm",
+                                                   "coin_slot", "title_strip", "grille_bar"),
           size_range=(1.0, 1.7), density=400, variants=("bubbler", "wallbox_cabinet", "retro"),
           placement="floor")
 def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -120,10 +138,27 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
         x = (k - 2.5) * w * 0.08
         parts.append(make_part(f"button_{k}", "button", S.box((0.03, 0.02, 0.02), center=(x, d / 2 + 0.009, zbtn),
                                                               bevel=0.003), chrome))
+    # under the glass, the record on its turntable and the tone arm; the title strips of the
+    # selection above the buttons; the coin slot beside them; chrome bars across the speaker
+    zr = (zg0 + zg1) / 2
+    rr = min(0.15, (zg1 - zg0) * 0.4)
+    parts.append(make_part("record", "record", S.cylinder(rr, 0.002, center=(0, d / 2 + 0.001, zr), axis=(0, 1, 0), sections=24),
+                           black("plastic")))
+    parts.append(make_part("tonearm", "tonearm", S.box((0.012, 0.002, rr * 1.1), center=(rr * 0.9, d / 2 + 0.003, zr + rr * 0.3),
+                                                       R=rot((0, 1, 0), -0.4)), chrome))
+    zt = zbtn + 0.03
+    parts.append(make_part("title_strip", "title_strip", S.box((w * 0.5, 0.003, 0.025), center=(0, d / 2 + 0.0015, zt)),
+                           M.paper(rng)))
+    parts.append(make_part("coin_slot", "coin_slot", S.box((0.03, 0.012, 0.05), center=(w * 0.3, d / 2 + 0.006, zbtn), bevel=0.003),
+                           chrome))
+    for k in range(3):
+        z = zs0 + (zs1 - zs0) * (k + 1) / 4
+        parts.append(make_part(f"grille_bar_{k}", "grille_bar", S.box((w * 0.57, 0.008, 0.01), center=(0, d / 2 + 0.013, z)), chrome))
     return parts
 
 
-@register("sign_stand", parts=("base", "frame"), extra_parts=("post", "sign_face", "board", "hinge", "foot"),
+@register("sign_stand", parts=("base", "frame"),
+          extra_parts=("post", "sign_face", "board", "hinge", "foot", "handle", "bracket", "cap"),
           size_range=(0.7, 1.9), density=600, variants=("poster", "twin_post", "a_frame"), placement="floor")
 def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     """A free-standing sign holder facing +Y: a weighted ``base``, a ``post`` (two for
@@ -153,6 +188,8 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         yb = np.tan(spread) * H * 0.85  # the boards' inner faces at that height
         parts.append(make_part("base", "base", S.tube([(0, yb - 0.001, H * 0.15), (0, -yb + 0.001, H * 0.15)], 0.004,
                                                       sections=6), M.metal(rng)))
+        # the carrying handle through the boards' top, under the hinge
+        parts.append(make_part("handle", "handle", S.box((0.12, 0.05, 0.025), center=(0, 0, H - 0.05)), M.metal(rng)))
         return parts
     fw, fh = rng.uniform(0.5, 0.65), rng.uniform(0.7, 0.95)
     top = rng.uniform(1.5, 1.75)
@@ -166,6 +203,10 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("base", "base", S.frustum(0.2, 0.17, 0.02, center=(0, 0, 0), sections=32), metal))
         parts.append(make_part("post", "post", S.cylinder(0.015, z0 + 0.05 - 0.019, center=(0, -t / 2 - 0.015, (z0 + 0.05 + 0.019) / 2),
                                                          sections=12), metal))
+        # the clamp holding the frame on the post, and the post's cap
+        parts.append(make_part("bracket", "bracket", S.box((0.06, 0.03, 0.05), center=(0, -t / 2 - 0.015, z0 + 0.02)), metal))
+        parts.append(make_part("cap", "cap", S.cylinder(0.017, 0.008, center=(0, -t / 2 - 0.015, z0 + 0.05 + 0.004), sections=12),
+                               M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
     else:
         parts.append(make_part("base", "base", S.box((fw + 0.1, 0.06, 0.02), center=(0, 0, 0.03), bevel=0.004), metal))
         for k, sx in enumerate((-1, 1)):
@@ -173,4 +214,6 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"post_{k}", "post", S.box((0.025, 0.025, top - 0.04), center=(x, 0, 0.04 + (top - 0.04) / 2 - 0.001),
                                                               bevel=0.002), metal))
             parts.append(make_part(f"foot_{k}", "foot", S.box((0.05, 0.4, 0.02), center=(x, 0, 0.01), bevel=0.004), metal))
+            parts.append(make_part(f"cap_{k}", "cap", S.box((0.027, 0.027, 0.008), center=(x, 0, top + 0.003)),
+                                   M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
     return parts

@@ -15,7 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._kit import hinge_parts
+from ._kit import hinge_parts, rot
 
 
 @register("chess_board", parts=("board", "square"), extra_parts=("frame", "hinge", "foot"),
@@ -56,7 +56,7 @@ def chess_board(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("chess_piece", parts=("base", "body", "head"), extra_parts=("collar", "felt"),
+@register("chess_piece", parts=("base", "body", "head"), extra_parts=("collar", "felt", "cross", "finial", "merlon", "ear"),
           size_range=(0.03, 0.12), density=900,
           variants=("royal", "minor", "rook", "pawn"), placement="surface")
 def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -84,6 +84,10 @@ def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
                                + [[sx * rb * 0.25, rb * 0.85, zb + H * 0.6] for sx in (-1, 1)]
                                + [[sx * rb * 0.2, rb * 0.2, z0 + H] for sx in (-1, 1)]))
         parts.append(make_part("head", "head", head, mat))
+        # the two pricked ears behind the forelock
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"ear_{k}", "ear", S.frustum(rb * 0.1, rb * 0.02, H * 0.1,
+                                                                center=(sx * rb * 0.15, -rb * 0.2, zb + H * 0.8), sections=6), mat))
         return parts
     stem_top = {"king": 0.62, "queen": 0.6, "bishop": 0.55, "rook": 0.55, "pawn": 0.42}[variant] * H
     rs0, rs1 = rb * 0.6, rb * (0.32 if variant != "rook" else 0.55)
@@ -105,8 +109,17 @@ def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
                        sections=16)
     else:  # king: a crown with a cross above
         zcr = top - H * 0.12
-        head = [S.lathe([(0.0005, zh), (rs1 * 1.0, zh), (rs1 * 1.5, zcr), (0.0005, zcr)], sections=16),
-                S.box((H * 0.03, H * 0.03, H * 0.12), center=(0, 0, zcr + H * 0.06)),
-                S.box((H * 0.09, H * 0.03, H * 0.03), center=(0, 0, zcr + H * 0.075))]
+        head = S.lathe([(0.0005, zh), (rs1 * 1.0, zh), (rs1 * 1.5, zcr), (0.0005, zcr)], sections=16)
+        parts.append(make_part("cross", "cross", [S.box((H * 0.03, H * 0.03, H * 0.12), center=(0, 0, zcr + H * 0.06)),
+                                                  S.box((H * 0.09, H * 0.03, H * 0.03), center=(0, 0, zcr + H * 0.075))], mat))
     parts.append(make_part("head", "head", head, mat))
+    if variant == "rook":  # the four merlons of the battlement
+        rr = rb * 0.62
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 4, endpoint=False) + np.pi / 4):
+            parts.append(make_part(f"merlon_{k}", "merlon", S.box((rr * 0.55, rr * 0.35, H * 0.08),
+                                                                  center=(np.cos(a) * rr * 0.78, np.sin(a) * rr * 0.78, top + H * 0.04),
+                                                                  R=rot((0, 0, 1), a)), mat))
+    elif variant in ("queen", "bishop"):  # the ball finial on top
+        rf = H * 0.045
+        parts.append(make_part("finial", "finial", S.ellipsoid((rf, rf, rf), center=(0, 0, top + rf * 0.6), subdivisions=1), mat))
     return parts

@@ -12,7 +12,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
-from ._casework import white
+from ._casework import black, white
 
 
 def _frame_loop(w: float, h: float, y: float, zc: float, r: float) -> S.Shape:
@@ -22,7 +22,7 @@ def _frame_loop(w: float, h: float, y: float, zc: float, r: float) -> S.Shape:
     return S.tube(path, r, sections=8, closed=True)
 
 
-@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff"),
+@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff", "corner", "end_cap", "eraser"),
           size_range=(0.6, 2.45), density=700, variants=("framed", "frameless", "wood_frame"), placement="wall")
 def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 2.4)
@@ -44,6 +44,11 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("board", "board", S.box((w, t, h), center=(0, y_board, zc)), face))
         if variant == "framed":
             parts.append(make_part("frame", "frame", _frame_loop(w, h, y_board, zc, 0.012), alu))
+            # the moulded corner pieces joining the frame's rails
+            for i, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+                parts.append(make_part(f"corner_{i}", "corner", S.box((0.04, t + 0.012, 0.04),
+                                                                      center=(sx * (w / 2 - 0.008), y_board + 0.003, zc + sz * (h / 2 - 0.008)),
+                                                                      bevel=0.004), black()))
         else:
             fw = 0.04
             wood = M.wood(rng)
@@ -60,6 +65,12 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
             S.box((tw, 0.006, 0.022), center=(0, y0 + 0.067, z_tray + 0.011)),
             S.box((tw, 0.006, 0.04), center=(0, y0 + 0.003, z_tray))]
     parts.append(make_part("tray", "tray", tray, alu))
+    # the tray's end caps and the eraser lying in it
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.008, 0.07, 0.03), center=(sx * (tw / 2 + 0.004), y0 + 0.035, z_tray + 0.007)),
+                               black()))
+    parts.append(make_part("eraser", "eraser", S.box((0.12, 0.05, 0.03), center=(tw / 2 - 0.1, y0 + 0.035, z_tray + 0.004 + 0.015),
+                                                     bevel=0.004), M.solid((0.15, 0.15, 0.16), "fabric", 0.9)))
     for i in range(int(rng.integers(0, 3))):
         mx = -tw / 2 + 0.1 + i * 0.05
         cap = M.solid([(0.1, 0.1, 0.1), (0.8, 0.15, 0.15), (0.15, 0.3, 0.8)][i], "plastic")

@@ -26,7 +26,8 @@ def _outline(variant: str, L: float, W: float) -> np.ndarray:
     return np.c_[x, y]
 
 
-@register("violin_case", parts=("shell", "lid"), extra_parts=("handle", "latch", "hinge", "foot", "strap_ring"),
+@register("violin_case", parts=("shell", "lid"),
+          extra_parts=("handle", "latch", "hinge", "foot", "strap_ring", "lock", "name_tag", "trim"),
           size_range=(0.6, 0.9), density=350, variants=("oblong", "shaped", "viola"), placement="floor")
 def violin_case(rng: np.random.Generator, variant: str) -> list:
     L = rng.uniform(0.76, 0.8) if variant != "viola" else rng.uniform(0.8, 0.86)
@@ -52,8 +53,15 @@ def violin_case(rng: np.random.Generator, variant: str) -> list:
     for k, x in enumerate((-0.16, 0.16)):
         parts.append(make_part(f"latch_{k}", "latch", S.box((0.03, 0.008, 0.03), center=(x, yf + 0.004, zs)), metal))
     parts.append(make_part("strap_ring", "strap_ring", S.box((0.02, 0.01, 0.012), center=(-L * 0.42, 0, zf + h + 0.006)), metal))
+    parts.append(make_part("strap_ring_1", "strap_ring", S.box((0.02, 0.01, 0.012), center=(L * 0.42, 0, zf + h + 0.006)), metal))
+    # the key lock in each latch, the name tag plate on the lid, the trim band along the seam
+    for k, x in enumerate((-0.16, 0.16)):
+        parts.append(make_part(f"lock_{k}", "lock", S.cylinder(0.004, 0.002, center=(x, yf + 0.009, zs + 0.006), axis=(0, 1, 0),
+                                                               sections=8), black))
+    parts.append(make_part("name_tag", "name_tag", S.box((0.06, 0.035, 0.002), center=(L * 0.15, 0, zf + h + 0.001)), metal))
+    parts.append(make_part("trim", "trim", S.prism(poly * 1.004, zs - 0.003, zs + 0.003), black))
     yb = ymin * 0.92
     parts += hinge_parts("hinge", x=zs, y=yb - 0.005, z0=-0.2, z1=0.2, mat=metal, axis="x", radius=0.005, length=0.05)
     parts += [revolute("lid_hinge", "shell", "lid", axis=(1, 0, 0), origin=(0, yb, zs), opens=OPEN_DOOR * 0.6),
-              mount("lid", "strap_ring")]
+              mount("lid", "strap_ring"), mount("lid", "strap_ring_1"), mount("lid", "name_tag")]
     return parts

@@ -42,6 +42,7 @@ def chair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                    bevel=0.004), mat))
         out += legs4("leg", "leg", w=w, d=d, h=hs - st, size=leg, mat=mat, inset=0.01)
         out += _stretchers(w, d, rng.uniform(0.12, 0.18), leg, 0.01, mat)
+        out += _leg_caps(w, d, leg, 0.01)
         px = w / 2 - 0.01 - leg / 2
         py = -d / 2 + 0.01 + leg / 2
         for k, sx in enumerate((-1, 1)):
@@ -88,7 +89,7 @@ def chair(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step"),
+@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step", "apron", "tread"),
           size_range=(0.28, 0.68), density=600, variants=("round", "square", "step"))
 def stool(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng)
@@ -104,6 +105,16 @@ def stool(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(make_part(f"leg_{k}", "leg", S.box((t, d, h - t), center=(sx * (w / 2 - t / 2),
                                                                                 0, (h - t) / 2)),
                                  mat))
+        # rubber treads on the step and the top, and rubber shoes on the side boards' ends
+        rubber = M.solid((0.1, 0.1, 0.1), "rubber", 0.9)
+        out.append(make_part("tread_0", "tread", S.box((w - 2 * t - 0.02, d * 0.3, 0.002),
+                                                       center=(0, d * 0.275, h * 0.5 + 0.001)), rubber))
+        out.append(make_part("tread_1", "tread", S.box((w - 2 * t - 0.02, d * 0.35, 0.002),
+                                                       center=(0, -d * 0.225, h + 0.001)), rubber))
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            out.append(make_part(f"foot_{k}", "foot", S.box((t + 0.004, 0.04, 0.012),
+                                                             center=(sx * (w / 2 - t / 2), sy * (d / 2 - 0.02), 0.006)),
+                                 rubber))
         return out
     h = rng.uniform(0.42, 0.6)
     st = 0.03
@@ -118,10 +129,21 @@ def stool(rng: np.random.Generator, variant: str) -> list[Part]:
     leg = 0.03
     out += legs4("leg", "leg", w=w, d=d, h=h - st, size=leg, mat=mat, round_=variant == "round")
     out += _stretchers(w, d, h * 0.3, leg, 0.0, mat)
+    out += _leg_caps(w, d, leg, 0.0)
+    if variant == "square":  # the aprons under the seat, between the legs' tops
+        out += _stretchers(w, d, h - st - 0.03, leg, 0.0, mat, label="apron")
     return out
 
 
-@register("bench", parts=("seat", "leg"), extra_parts=("rail", "back", "armrest", "frame"),
+def _leg_caps(w: float, d: float, size: float, inset: float) -> list[Part]:
+    """Plastic caps round the foot of four corner legs (the legs still reach the floor)."""
+    cap = M.solid((0.1, 0.1, 0.1), "plastic", 0.7)
+    xs, ys = w / 2 - inset - size / 2, d / 2 - inset - size / 2
+    return [make_part(f"foot_{k}", "foot", S.cylinder(size * 0.62, 0.01, center=(sx * xs, sy * ys, 0.005), sections=10), cap)
+            for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
+
+
+@register("bench", parts=("seat", "leg"), extra_parts=("rail", "back", "armrest", "frame", "stretcher", "foot", "button"),
           size_range=(0.9, 1.9), density=550, variants=("slatted", "park", "upholstered"))
 def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     """The seat is what one sits on: the slats of a slatted or park bench (on two rails), the
@@ -138,6 +160,12 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
                                                    center=(0, 0, hs - 0.03), bevel=0.015),
                              M.fabric(rng)))
         out += legs4("leg", "leg", w=w, d=d, h=hs - 0.12, size=0.045, mat=wood, inset=0.03)
+        out += _leg_caps(w, d, 0.045, 0.03)
+        # the tufting buttons along the padded top
+        n_b = max(2, int(w / 0.3))
+        for k in range(n_b):
+            out.append(make_part(f"button_{k}", "button", S.cylinder(0.012, 0.006, center=(-w / 2 + w * (k + 0.5) / n_b, 0, hs - 0.002),
+                                                                     sections=10), M.fabric(rng)))
         return out
     n = int(rng.integers(3, 6))
     gap = 0.012
@@ -147,11 +175,17 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"seat_{k}", "seat", S.box((w, sw, t), center=(0, y, hs - t / 2),
                                                         bevel=0.003), wood))
     # two rails along the length carry the slats
-    rail = [S.box((w - 0.1, 0.03, 0.05), center=(0, sy * (d / 2 - 0.05), hs - t - 0.025))
-            for sy in (-1, 1)]
-    out.append(make_part("rail", "rail", rail, wood if variant == "slatted" else metal))
+    for k, sy in enumerate((-1, 1)):
+        out.append(make_part("rail" if k == 0 else "rail_1", "rail",
+                             S.box((w - 0.1, 0.03, 0.05), center=(0, sy * (d / 2 - 0.05), hs - t - 0.025)),
+                             wood if variant == "slatted" else metal))
     legmat = wood if variant == "slatted" else metal
     out += legs4("leg", "leg", w=w - 0.1, d=d, h=hs - t - 0.05, size=0.045, mat=legmat, inset=0.0)
+    out += _leg_caps(w - 0.1, d, 0.045, 0.0)
+    # the stretchers joining each end's pair of legs, low down
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"stretcher_{k}", "stretcher", S.box((0.03, d - 0.09, 0.03),
+                                                                 center=(sx * ((w - 0.1) / 2 - 0.0225), 0, 0.12)), legmat))
     if variant == "park":
         hb = rng.uniform(0.35, 0.45)
         back = [S.box((w, 0.025, 0.08), center=(0, -d / 2 - 0.03, hs + z), bevel=0.003)
@@ -167,7 +201,7 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping"),
+@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle"),
           size_range=(0.35, 1.0), density=300, variants=("cube", "round", "tufted"))
 def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.38, 0.46)
@@ -181,6 +215,12 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
         out = [make_part("body", "body", body, fab), make_part("cushion", "cushion", cush, fab)]
         out.append(make_part("piping", "piping", S.cylinder(r + 0.006, 0.012,
                                                            center=(0, 0, h - top), sections=28), fab))
+        # the piping round the bottom seam, and the button in the cushion's centre
+        out.append(make_part("piping_1", "piping", S.cylinder(r + 0.006, 0.012, center=(0, 0, 0.006), sections=28), fab))
+        out.append(make_part("button", "button", S.cylinder(0.014, 0.008, center=(0, 0, h - 0.003), sections=10), fab))
+        # the carrying loop sewn to the side
+        out.append(make_part("handle", "handle", S.tube([(r, -0.04, h * 0.55), (r + 0.02, -0.03, h * 0.55), (r + 0.02, 0.03, h * 0.55),
+                                                         (r, 0.04, h * 0.55)], 0.006, sections=6), fab))
         return out
     w = rng.uniform(0.42, 0.95)
     d = min(w, rng.uniform(0.42, 0.6))
@@ -194,6 +234,11 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"foot_{k}", "foot",
                              S.cylinder(0.02, foot_h, center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05),
                                                              foot_h / 2), sections=12), wood))
+    # the piping along the cushion's bottom seam
+    zp = h - top
+    pipe = [S.box((w + 0.008, 0.008, 0.012), center=(0, sy * (d / 2 + 0.002), zp)) for sy in (-1, 1)]
+    pipe += [S.box((0.008, d, 0.012), center=(sx * (w / 2 + 0.002), 0, zp)) for sx in (-1, 1)]
+    out.append(make_part("piping", "piping", pipe, fab))
     if variant == "tufted":
         for i in range(3):
             for j in range(2):
@@ -204,7 +249,7 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot"),
+@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot"),
           size_range=(0.72, 0.95), density=700, variants=("open", "folded"))
 def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.42, 0.46)
@@ -228,6 +273,7 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("crossbar", "crossbar", S.tube([(-w / 2 + r, 0, 0.15),
                                                              (w / 2 - r, 0, 0.15)], r * 0.8),
                              metal))
+        out += _tube_feet([(sx * (w / 2 - r), 0.0) for sx in (-1, 1)] + [(sx * 0.9 * (w / 2 - r), depth - r) for sx in (-1, 1)], r)
         return out
     d = rng.uniform(0.4, 0.45)
     out.append(make_part("seat", "seat", S.box((w - 4 * r, d, 0.015), center=(0, 0, hs - 0.0075),
@@ -245,4 +291,16 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("crossbar", "crossbar", S.tube([(-w / 2 + r, -d / 2 + 0.01, 0.2),
                                                          (w / 2 - r, -d / 2 + 0.01, 0.2)], r * 0.8),
                          metal))
+    out += _tube_feet([(sx * (w / 2 - r), -d / 2) for sx in (-1, 1)] + [(sx * 0.93 * (w / 2 - r), d / 2 - 0.02) for sx in (-1, 1)], r)
+    # the rivets the seat pivots on, where it meets the back legs
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"pivot_{k}", "pivot", S.cylinder(0.006, 0.006, center=(sx * (w / 2 - r - r - 0.003), -d / 2 + 0.015, hs - 0.02),
+                                                               axis=(1, 0, 0), sections=8), metal))
     return out
+
+
+def _tube_feet(xy, r: float) -> list[Part]:
+    """Plastic caps on the ends of tube legs standing at ``xy`` (the legs still reach the floor)."""
+    cap = M.solid((0.1, 0.1, 0.1), "plastic", 0.7)
+    return [make_part(f"foot_{k}", "foot", S.cylinder(r * 1.3, 0.012, center=(x, y, 0.006), sections=10), cap)
+            for k, (x, y) in enumerate(xy)]

@@ -14,7 +14,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import arc, open_box, ring, shell
-from ._kit import OPEN_DOOR, revolute
+from ._kit import OPEN_DOOR, hinge_parts, revolute
 
 
 def _wicker(rng: np.random.Generator) -> Material:
@@ -34,7 +34,8 @@ def _hoops(r_at, zs, *, bulge: float, width: float, sections: int = 20) -> list[
     return out
 
 
-@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim"), size_range=(0.18, 0.46),
+@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim", "stake", "post", "foot_ring"),
+          size_range=(0.18, 0.46),
           density=500, variants=("round", "rectangular", "handled"), placement="surface")
 def basket(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = _wicker(rng)
@@ -53,6 +54,15 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
                 slat = S.box((w + 2 * g - 0.01, 0.006, 0.018),
                              center=(0, sy * (d / 2 + g + 0.001), z), bevel=0.002)
                 parts.append(make_part(f"slat_{2 * k + i}", "slat", slat, mat))
+        # the corner posts the weave is worked round, and the wrapped border along the top
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"post_{k}", "post", S.hull(np.array(
+                [[sx * (w / 2 + dx), sy * (d / 2 + dy), 0.0] for dx in (0.0, 0.006) for dy in (0.0, 0.006)]
+                + [[sx * (w / 2 + flare + dx), sy * (d / 2 + flare + dy), h] for dx in (0.0, 0.006) for dy in (0.0, 0.006)])), mat))
+        bt = 0.012
+        border = [S.box((w + 2 * flare + 0.012, bt, bt), center=(0, sy * (d / 2 + flare), h - bt / 2)) for sy in (-1, 1)]
+        border += [S.box((bt, d + 2 * flare - bt, bt), center=(sx * (w / 2 + flare), 0, h - bt / 2)) for sx in (-1, 1)]
+        parts.append(make_part("rim", "rim", border, mat))
         top = h
         span = d / 2 + flare - 0.01
     else:
@@ -71,6 +81,13 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("body", "body", body, mat))
         parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
         parts.append(make_part("rim", "rim", rim, mat))
+        # the stakes the weave runs round, standing proud of the wall, and the foot ring
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8):
+            d0, d1 = np.array([np.cos(a), np.sin(a)]) * (r * 0.78 + 0.002), np.array([np.cos(a), np.sin(a)]) * (r + 0.002)
+            parts.append(make_part(f"stake_{k}", "stake", S.tube([(*d0, 0.012), (*d1, h - 0.006)], 0.003, sections=6), mat))
+        parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.78 - 0.008, 0.0), (r * 0.78 + 0.004, 0.0),
+                                                               (r * 0.78 + 0.004, 0.012), (r * 0.78 - 0.008, 0.012)],
+                                                              sections=16), mat))
         top = h + 0.006
         span = r - 0.01
     if variant == "handled" or (variant == "rectangular" and rng.random() < 0.5):
@@ -82,12 +99,14 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("storage_box", parts=("body", "lid"), extra_parts=("handle",), size_range=(0.2, 0.7),
+@register("storage_box", parts=("body", "lid"),
+          extra_parts=("handle", "label", "latch", "hinge", "hasp", "tape"), size_range=(0.2, 0.7),
           density=700, variants=("plastic_bin", "wooden", "cardboard"), placement="surface")
 def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.6)
     d = w * rng.uniform(0.6, 0.8)
     h = rng.uniform(0.16, 0.32)
+    taper = 0.0
     if variant == "plastic_bin":
         mat, lid_mat = M.plastic(rng), M.plastic(rng)
         t, taper = 0.004, rng.uniform(0.01, 0.02)
@@ -121,10 +140,37 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
             zg = h - skirt - 0.03
             grip = S.box((0.02, min(0.12, d * 0.4), 0.014), center=(x + sx * 0.008, 0, zg), bevel=0.003)
             parts.append(make_part(f"handle_{i}", "handle", grip, lid_mat if variant == "plastic_bin" else M.metal(rng)))
+    # the label card on the front wall (which leans out by half the taper at mid height)
+    zl = h * 0.45
+    yl = d / 2 + taper * zl / h
+    parts.append(make_part("label", "label", S.box((min(0.09, w * 0.3), 0.0015, 0.05),
+                                                   center=(0, yl + 0.00075, zl)), M.paper(rng)))
+    if variant == "plastic_bin":
+        # two clip latches on the front, under the lid's skirt, that snap the lid shut
+        z0 = h - skirt - 0.03
+        y0, y1 = d / 2 + taper * z0 / h, td / 2 + ov + 0.004
+        for i, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"latch_{i}", "latch",
+                                   S.box((0.04, y1 - y0, 0.031), center=(sx * tw * 0.3, (y0 + y1) / 2,
+                                                                         z0 + 0.0155), bevel=0.002),
+                                   lid_mat))
+    elif variant == "wooden":
+        # the lid's two butt hinges on the back edge and the hasp on the front
+        metal = M.metal(rng)
+        parts += hinge_parts("hinge", x=h, y=-(td / 2 + ov), z0=-w / 2, z1=w / 2, mat=metal,
+                             radius=0.005, length=0.05, axis="x")
+        parts.append(make_part("hasp", "hasp", S.box((0.03, 0.004, 0.05),
+                                                     center=(0, d / 2 + 0.002, h - 0.02)), metal))
+    else:
+        # the packing tape along the lid's front edge, down onto the front wall
+        tape = Material(M.jitter(rng, (0.75, 0.6, 0.4), 0.03)[:3] + (0.8,), 0.3, 0.0, "plastic")
+        parts.append(make_part("tape", "tape", S.box((0.05, 0.001, 0.04),
+                                                     center=(0, d / 2 + 0.0005, h - skirt - 0.02)), tape))
     return parts
 
 
-@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear"), size_range=(0.22, 0.42),
+@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear", "spout", "foot_ring"),
+          size_range=(0.22, 0.42),
           density=900, variants=("metal", "plastic"), placement="surface")
 def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.12, 0.15)
@@ -158,10 +204,20 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     mid = path[len(path) // 2]
     grip = S.cylinder(0.008, 0.1, center=mid, axis=(1, 0, 0), sections=10)
     parts.append(make_part("grip", "grip", grip, M.plastic(rng)))
+    # the rolled foot ring it stands on, and (plastic) the pouring lip on the front
+    parts.append(make_part("foot_ring", "foot_ring", ring([(rb - 0.006, 0.0), (rb + 0.003, 0.0), (rb + 0.003, 0.01),
+                                                           (rb - 0.006, 0.01)], sections=20), mat))
+    if variant == "plastic":
+        parts.append(make_part("spout", "spout", S.hull(np.array(
+            [[sx * 0.03, r_at(h - 0.04) - 0.002, h - 0.04] for sx in (-1, 1)]
+            + [[sx * 0.035, r + 0.004, h + 0.002] for sx in (-1, 1)] + [[0, r + 0.02, h + 0.002]]
+            + [[sx * 0.035, r - 0.004, h + 0.002] for sx in (-1, 1)])), mat))
     return parts
 
 
-@register("trash_can", parts=("body",), extra_parts=("lid", "pedal", "rim"), size_range=(0.28, 0.8),
+@register("trash_can", parts=("body",),
+          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle", "handle"),
+          size_range=(0.28, 0.8),
           density=900, variants=("round", "square", "pedal"), placement="floor")
 def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.metal(rng) if variant == "pedal" or rng.random() < 0.4 else M.plastic(rng)
@@ -173,6 +229,34 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
         taper = rng.uniform(0.01, 0.025)
         body = open_box(w, d, h, 0.004, bottom=0.008, taper=taper)
         parts.append(make_part("body", "body", body, mat))
+        tw, td = w + 2 * taper, d + 2 * taper
+        # the rolled rim round the top, the bin bag folded over it, the bumper round the foot
+        rt = 0.008
+        rim = [S.box((tw + 2 * rt, rt, 0.012), center=(0, sy * (td / 2 + rt / 2 - 0.004), h - 0.006))
+               for sy in (1, -1)]
+        rim += [S.box((rt, td - 0.008, 0.012), center=(sx * (tw / 2 + rt / 2 - 0.004), 0, h - 0.006))
+                for sx in (1, -1)]
+        parts.append(make_part("rim", "rim", rim, mat))
+        lt, ld = 0.0015, 0.05
+        bag = [S.box((tw + 2 * rt + 2 * lt, lt, ld), center=(0, sy * (td / 2 + rt - 0.004 + lt / 2), h - ld / 2))
+               for sy in (1, -1)]
+        bag += [S.box((lt, td + 2 * rt - 0.008, ld), center=(sx * (tw / 2 + rt - 0.004 + lt / 2), 0, h - ld / 2))
+                for sx in (1, -1)]
+        parts.append(make_part("liner", "liner", bag, _bag_material(rng)))
+        bh = 0.02
+        base = [S.box((w + 0.006, 0.003, bh), center=(0, sy * (d / 2 + 0.0015), bh / 2)) for sy in (1, -1)]
+        base += [S.box((0.003, d, bh), center=(sx * (w / 2 + 0.0015), 0, bh / 2)) for sx in (1, -1)]
+        parts.append(make_part("base", "base", base, M.plastic(rng)))
+        zl = h * 0.55
+        parts.append(make_part("label", "label", S.box((0.06, 0.001, 0.06),
+                                                       center=(0, d / 2 + taper * zl / h + 0.0005, zl)),
+                               M.paper(rng)))
+        # a moulded hand grip on each side, under the rim
+        zg = h - 0.06
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"handle_{k}", "handle", S.box((0.012, d * 0.35, 0.02),
+                                                                 center=(sx * (w / 2 + taper * zg / h + 0.006), 0, zg), bevel=0.003),
+                                   mat))
         return parts
     r = rng.uniform(0.13, 0.18)
     h = rng.uniform(0.35, 0.6) if variant == "round" else rng.uniform(0.4, 0.65)
@@ -182,16 +266,44 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
                 (r - 0.004, h)], sections=20)
     parts.append(make_part("body", "body", body, mat))
     parts.append(make_part("rim", "rim", rim, mat))
+    # the bumper ring round the foot and the label on the front
+    parts.append(make_part("base", "base", ring([(rb - 0.002, 0.0), (rb + 0.004, 0.0), (rb + 0.004, 0.02),
+                                                 (rb - 0.002, 0.02)], sections=20), M.plastic(rng)))
+    zl = h * 0.55
+    rl = rb + (r - rb) * zl / h
+    parts.append(make_part("label", "label", S.box((0.06, 0.001, 0.06), center=(0, rl + 0.0003, zl)),
+                           M.paper(rng)))
     if variant == "pedal":
         lid = S.lathe([(r + 0.006, h), (r + 0.006, h + 0.008), (r * 0.9, h + r * 0.2),
                        (r * 0.3, h + r * 0.27)], sections=28)
         parts.append(make_part("lid", "lid", lid, mat))
         pedal = S.box((0.1, 0.06, 0.02), center=(0, r + 0.025, 0.03), bevel=0.004)
         parts.append(make_part("pedal", "pedal", pedal, M.plastic(rng)))
+        # the lid's hinge at the back, its lifting tab at the front, the removable inner bucket
+        parts.append(make_part("hinge", "hinge", S.box((0.05, 0.012, 0.016), center=(0, -r - 0.004, h - 0.002)),
+                               M.plastic(rng)))
+        parts.append(make_part("lid_handle", "lid_handle",
+                               S.box((0.04, 0.012, 0.006), center=(0, r + 0.009, h + 0.004)), mat))
+        bucket = shell([(r - 0.012, 0.012), (r - 0.006, h - 0.004)], 0.002, bottom=0.002, sections=20)
+        parts.append(make_part("liner", "liner", bucket, M.plastic(rng)))
+    else:
+        # the bin bag folded over the rim, and a moulded hand grip each side under it
+        parts.append(make_part("liner", "liner", ring([(r + 0.004, h - 0.05), (r + 0.0055, h - 0.05),
+                                                       (r + 0.0055, h), (r + 0.004, h)], sections=20),
+                               _bag_material(rng)))
+        zg = h - 0.07
+        rg = rb + (r - rb) * zg / h
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"handle_{k}", "handle", S.box((0.014, 0.08, 0.02), center=(sx * (rg + 0.005), 0, zg), bevel=0.003),
+                                   mat))
     return parts
 
 
-@register("laundry_basket", parts=("body",), extra_parts=("handle", "rib", "band"), size_range=(0.35, 0.72),
+def _bag_material(rng) -> Material:
+    return Material(M.jitter(rng, (0.12, 0.12, 0.13), 0.03), 0.4, 0.0, "plastic")
+
+
+@register("laundry_basket", parts=("body",), extra_parts=("handle", "rib", "band", "rim", "foot_ring"), size_range=(0.35, 0.72),
           density=900, variants=("rectangular", "round"), placement="floor")
 def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.plastic(rng) if rng.random() < 0.6 else _wicker(rng)
@@ -238,4 +350,9 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
         grip = S.tube(arc((sx * (r - 0.002), 0, h - 0.05), 0.06, 0.0, np.pi, n=7,
                           u=(0, 1, 0), v=(sx, 0, 0), squash=0.45), 0.008, sections=8)
         parts.append(make_part(f"handle_{i}", "handle", grip, mat))
+    # the rolled rim round the top and the foot ring it stands on
+    parts.append(make_part("rim", "rim", ring([(r - 0.006, h - 0.012), (r + 0.005, h - 0.01), (r + 0.005, h), (r - 0.006, h)],
+                                              sections=20), mat))
+    parts.append(make_part("foot_ring", "foot_ring", ring([(rb - 0.008, 0.0), (rb + 0.003, 0.0), (rb + 0.003, 0.012),
+                                                           (rb - 0.008, 0.012)], sections=20), mat))
     return parts

@@ -34,7 +34,7 @@ def _tapered(x0: float, x1: float, w0: float, w1: float, z0a: float, z0b: float,
     return S.hull(pts)
 
 
-@register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet"),
+@register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet", "edge", "logo", "butt"),
           size_range=(0.16, 0.38), density=4000, variants=("chef", "table", "paring", "bread"),
           placement="surface")
 def knife(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -61,6 +61,14 @@ def knife(rng: np.random.Generator, variant: str) -> list[Part]:
         outline = [(0, -wb / 2), (lb * 0.97, -wb / 2), (lb, 0.0), (lb * 0.97, spine), (0, spine)]
     blade = _slab([(x + lbol, y) for x, y in outline], 0.0, tb)
     parts = [make_part("blade", "blade", blade, steel)]
+    # the ground edge along the blade's lower side, and the maker's mark etched near the heel
+    x_edge = lb * (0.7 if variant in ("chef", "paring") else 0.85 if variant == "table" else 0.97)
+    parts.append(make_part("edge", "edge", _slab([(lbol + 0.004, -wb / 2), (lbol + x_edge, -wb / 2),
+                                                  (lbol + x_edge, -wb / 2 + 0.002), (lbol + 0.004, -wb / 2 + 0.002)],
+                                                 tb, tb + 0.0002), Material((0.9, 0.9, 0.92, 1.0), 0.15, 1.0, "metal")))
+    parts.append(make_part("logo", "logo", _slab([(lbol + 0.008, -0.003), (lbol + 0.022, -0.003), (lbol + 0.022, 0.003),
+                                                  (lbol + 0.008, 0.003)], tb, tb + 0.0002),
+                           Material((0.4, 0.4, 0.42, 1.0), 0.5, 0.6, "metal")))
     bol = S.box((lbol, min(hw, wb) * 0.95, hh * 0.8), center=(lbol / 2, 0, hh * 0.4), bevel=0.001)
     parts.append(make_part("bolster", "bolster", bol, steel))
     if variant == "table":
@@ -74,10 +82,13 @@ def knife(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, f in enumerate((0.2, 0.5, 0.8)):
         rivet = S.cylinder(0.0032, 0.002, center=(-lh * f, 0, hh - 0.0005), sections=10)
         parts.append(make_part(f"rivet_{k}", "rivet", rivet, steel))
+    # the steel cap on the handle's butt end
+    parts.append(make_part("butt", "butt", S.box((0.006, hw * 0.9, hh * 0.9), center=(-lh - 0.003, 0, hh * 0.45), bevel=0.001),
+                           steel))
     return parts
 
 
-@register("fork", parts=("handle", "tine"), extra_parts=("neck", "head"),
+@register("fork", parts=("handle", "tine"), extra_parts=("neck", "head", "hallmark"),
           size_range=(0.13, 0.3), density=7800, variants=("dinner", "salad", "serving"),
           placement="surface")
 def fork(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -105,10 +116,18 @@ def fork(rng: np.random.Generator, variant: str) -> list[Part]:
                         (x0 + lt, y - tw * 0.35, 0.0), (x0 + lt, y + tw * 0.35, 0.0)])
         tine = S.hull(np.vstack([pts, pts + (0, 0, t)]))
         parts.append(make_part(f"tine_{k}", "tine", tine, steel))
+    parts.append(_hallmark(-lh * 0.45, lift * 0.55 + t + 0.0008, rng))
     return parts
 
 
-@register("spoon", parts=("bowl", "handle"), extra_parts=("neck", "tip"),
+def _hallmark(x: float, z: float, rng) -> Part:
+    """The silversmith's stamp on the handle's top face, about ``x`` (its surface at ``z``)."""
+    return make_part("hallmark", "hallmark", _slab([(x - 0.006, -0.002), (x + 0.006, -0.002), (x + 0.006, 0.002),
+                                                     (x - 0.006, 0.002)], z - 0.0003, z + 0.0002),
+                     Material((0.45, 0.45, 0.47, 1.0), 0.5, 0.6, "metal"))
+
+
+@register("spoon", parts=("bowl", "handle"), extra_parts=("neck", "tip", "hallmark"),
           size_range=(0.1, 0.32), density=7800, variants=("table", "tea", "soup", "serving"),
           placement="surface")
 def spoon(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -137,4 +156,7 @@ def spoon(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("handle", "handle", handle, steel))
     tip = _tapered(-lh * 0.85, -lh, w_end, w_end * 0.7, 0.004, 0.0, t)
     parts.append(make_part("tip", "tip", tip, steel))
+    xm = -lh * 0.5
+    zm = (z - t * 0.8) + (0.004 - (z - t * 0.8)) * (xm + ln) / (-lh * 0.85 + ln) + t
+    parts.append(_hallmark(xm, zm, rng))
     return parts

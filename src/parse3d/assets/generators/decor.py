@@ -19,6 +19,7 @@ from ...geometry.frames import make_transform, rot_x, rot_y, rot_z
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 from .lamps import shell
 
 #: Turns a shape built along +Z (from z = 0) so that it points along +Y (from y = 0).
@@ -50,6 +51,28 @@ def _mitred_frame(w: float, h: float, bar: float, depth: float, chamfer: float,
     return bars
 
 
+#: The mitred frame's pieces, in :func:`_mitred_frame`'s order: (name, label).
+_FRAME_PIECES = (("rail_bottom", "rail"), ("stile_right", "stile"), ("rail_top", "rail"),
+                 ("stile_left", "stile"), ("backing", "backing"))
+
+
+def _frame_parts(bars: list[S.Shape], mat: Material, rng) -> list[Part]:
+    """The frame's four mitred bars and its backing board as parts (the ``frame`` group; a round
+    or oval mirror's frame is one turned ring, a part labelled ``frame`` itself)."""
+    board = M.solid(M.jitter(rng, (0.55, 0.45, 0.32), 0.03), "wood", 0.9)
+    return [make_part(n, lab, b, board if lab == "backing" else mat)
+            for (n, lab), b in zip(_FRAME_PIECES, bars, strict=True)]
+
+
+def _hangers(w: float, h: float, bk: float, n: int) -> list[Part]:
+    """``n`` D-ring hangers screwed to the backing board near its top, flush with the back."""
+    metal = M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9)
+    xs = [0.0] if n == 1 else [-w * 0.3, w * 0.3]
+    return [make_part(f"hanger_{k}", "hanger",
+                      S.box((0.025, min(bk, 0.002), 0.018), center=(x, min(bk, 0.002) / 2, h * 0.82)),
+                      metal) for k, x in enumerate(xs)]
+
+
 def _ring(r_out: float, width: float, depth: float, *, cz: float = 0.0, stretch: float = 1.0,
           sections: int = 28) -> S.Shape:
     """A flat ring facing +Y, back on y = 0, centred at (0, cz) in XZ; ``stretch`` scales it
@@ -77,8 +100,9 @@ def _frame_material(rng) -> Material:
     return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
 
 
-@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat",), size_range=(0.2, 1.2),
-          density=500, variants=("landscape", "portrait", "square"), placement="wall")
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger"),
+          size_range=(0.2, 1.2), density=500, variants=("landscape", "portrait", "square"),
+          placement="wall", groups={"frame": ("rail", "stile", "backing")})
 def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
     long = rng.uniform(0.25, 1.1)
     ratio = 1.0 if variant == "square" else rng.uniform(1.25, 1.6)
@@ -86,9 +110,12 @@ def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
     bar = min(w, h) * rng.uniform(0.06, 0.12)
     depth = rng.uniform(0.018, 0.035)
     bk = rng.uniform(0.003, 0.005)
-    parts = [make_part("frame", "frame", _mitred_frame(w, h, bar, depth, bar * 0.25, bk),
-                       _frame_material(rng))]
+    parts = _frame_parts(_mitred_frame(w, h, bar, depth, bar * 0.25, bk), _frame_material(rng), rng)
     iw, ih = w - 2 * bar, h - 2 * bar
+    # the glass in front of the picture, held in the frame's rebate
+    parts.append(make_part("glazing", "glazing", S.box((iw, 0.002, ih), center=(0, depth - 0.0035, h / 2)),
+                           M.glass(rng)))
+    parts += _hangers(w, h, bk, 1 if w < 0.5 else 2)
     # the canvas (and the mat in front of it) fill most of the frame depth in front of the
     # backing board, so no ledge is left inside the frame
     t = (depth - bk) * rng.uniform(0.65, 0.8)
@@ -111,8 +138,9 @@ def _mirror_glass() -> Material:
     return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
 
 
-@register("mirror", parts=("frame", "glass"), size_range=(0.3, 1.8), density=1200,
-          variants=("rectangular", "round", "oval"), placement="wall")
+@register("mirror", parts=("frame", "glass"), extra_parts=("hanger",), size_range=(0.3, 1.8),
+          density=1200, variants=("rectangular", "round", "oval"), placement="wall",
+          groups={"frame": ("frame", "rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
     depth = rng.uniform(0.02, 0.04)
     # the glass part is the mirror glass on its backing board, nearly flush with the frame
@@ -125,15 +153,18 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
         bk = 0.004
         frame = _mitred_frame(w, h, bar, depth, bar * 0.3, bk)
         glass = S.box((w - 2 * bar, t_glass - bk, h - 2 * bar), center=(0, (t_glass + bk) / 2, h / 2))
-        return [make_part("frame", "frame", frame, mat), make_part("glass", "glass", glass,
-                                                                   _mirror_glass())]
+        return [*_frame_parts(frame, mat, rng), make_part("glass", "glass", glass, _mirror_glass()),
+                *_hangers(w, h, bk, 2)]
     r = rng.uniform(0.2, 0.45)
     width = r * rng.uniform(0.08, 0.18)
     k = rng.uniform(1.3, 1.7) if variant == "oval" else 1.0
     frame = _ring(r, width, depth, stretch=k)
     glass = _disc(r - width, 0.0, t_glass, stretch=k)
-    return [make_part("frame", "frame", frame, mat), make_part("glass", "glass", glass,
-                                                               _mirror_glass())]
+    # a keyhole hanger plate on the back of the frame's top
+    hanger = S.box((0.03, 0.002, 0.02), center=(0, 0.001, r * k - width / 2))
+    return [make_part("frame", "frame", frame, mat),
+            make_part("glass", "glass", glass, _mirror_glass()),
+            make_part("hanger", "hanger", hanger, M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9))]
 
 
 def _hands(rng, r_face: float, y: float, cz: float) -> Part:
@@ -215,6 +246,10 @@ def _pot(rng, r_top: float, h: float) -> tuple[list[Part], float, float]:
         pot = [wall, lip, floor]
         r_in = r_bot + (r_rim - r_bot) * min(z_soil / (h - h_rim), 1.0) - t - 0.002
         soil = S.lathe([(r_bot - t - 0.002, t), (r_in, z_soil)], sections=16)
+        # the drip tray the pot stands in: its floor is under the pot's (on the same ground), its
+        # sloping edge shows round the foot
+        saucer = ring([(r_bot - 0.002, 0.0), (r_bot + 0.025, 0.0), (r_bot + 0.02, 0.012), (r_bot - 0.002, 0.012)],
+                      sections=16)
     else:  # square planter
         a = r_top * 2
         pot = [S.box((a, t, h), center=(0, a / 2 - t / 2, h / 2), bevel=0.002),
@@ -224,8 +259,11 @@ def _pot(rng, r_top: float, h: float) -> tuple[list[Part], float, float]:
                S.box((a - 2 * t, a - 2 * t, t), center=(0, 0, t / 2))]
         r_in = a / 2 - t
         soil = S.box((a - 2 * t, a - 2 * t, z_soil - t), center=(0, 0, (z_soil + t) / 2))
-    return ([make_part("pot", "pot", pot, mat), make_part("soil", "soil", soil, _soil())],
-            z_soil, r_in)
+        saucer = None  # a square planter stands on its own floor
+    parts = [make_part("pot", "pot", pot, mat), make_part("soil", "soil", soil, _soil())]
+    if saucer is not None:
+        parts.append(make_part("saucer", "saucer", saucer, mat))
+    return parts, z_soil, r_in
 
 
 def _blobs(rng, n: int, center, spread, size) -> list[S.Shape]:
@@ -238,7 +276,7 @@ def _blobs(rng, n: int, center, spread, size) -> list[S.Shape]:
     return out
 
 
-@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk"), size_range=(0.3, 1.8),
+@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk", "saucer", "stake", "tie"), size_range=(0.3, 1.8),
           density=400, variants=("bush", "tree", "leafy"))
 def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
     green = M.plant(rng)
@@ -275,6 +313,12 @@ def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
             base = np.array([np.cos(yaw), np.sin(yaw)]) * r_in * 0.4
             T = make_transform(rot_z(yaw) @ rot_y(tilt), (base[0], base[1], z0 - 0.03))
             leaves.append(leaf.apply(T))
+        # the bamboo stake the leaves are tied to, and its tie
+        hs = rng.uniform(0.3, 0.45)
+        parts.append(make_part("stake", "stake", S.cylinder(0.004, hs, center=(r_in * 0.3, 0, z0 - 0.05 + hs / 2), sections=6),
+                               M.solid(M.jitter(rng, (0.75, 0.65, 0.4), 0.03), "wood", 0.8)))
+        parts.append(make_part("tie", "tie", S.cylinder(0.008, 0.006, center=(r_in * 0.3, 0, z0 - 0.05 + hs * 0.7), sections=8),
+                               M.solid((0.3, 0.5, 0.2), "fabric", 0.9)))
     # every leaf or foliage clump is a part of its own, all labelled ``plant``
     parts += [make_part(f"plant_{k}", "plant", leaf, green) for k, leaf in enumerate(leaves)]
     return parts

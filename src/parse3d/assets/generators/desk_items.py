@@ -18,7 +18,7 @@ from ._household import ring, shell
 from ._kit import revolute, rot
 
 
-@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring"),
+@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal"),
           size_range=(0.11, 0.18), density=2000, variants=("tea", "coffee", "espresso"),
           placement="surface", groups={"body": ("well", "rim", "foot_ring")})
 def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -33,11 +33,21 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
                sections=32)
     foot = ring([(well * 0.7, 0.0), (well * 0.82, 0.0), (well * 0.82, fh), (well * 0.7, fh)],
                 sections=24)
+    rh = rim.mesh.bounds[1, 2]
+    gold = M.solid(M.jitter(rng, (0.83, 0.68, 0.3), 0.03), "metal", 0.3, 0.9)
+    # the gilded line round the rim's edge and the maker's mark under the well
+    trim = ring([(r - 0.0045, rh - 0.0025), (r - 0.0005, rh - 0.0006), (r - 0.0005, rh),
+                 (r - 0.0045, rh - 0.0018)], sections=32)
+    stamp = S.cylinder(well * 0.35, 0.0005, center=(0, 0, fh + 0.0004), sections=12)
     return [make_part("well", "well", base, mat), make_part("rim", "rim", rim, mat),
-            make_part("foot_ring", "foot_ring", foot, mat)]
+            make_part("foot_ring", "foot_ring", foot, mat), make_part("trim", "trim", trim, gold),
+            make_part("backstamp", "backstamp", stamp, M.solid((0.3, 0.35, 0.6), "paper", 0.8)),
+            # the painted spray on the rim's front
+            make_part("decal", "decal", ring([(r * 0.78, bh + 0.0035), (r * 0.9, bh + 0.006), (r * 0.9, bh + 0.0068),
+                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng))]
 
 
-@register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad"),
+@register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot"),
           size_range=(0.1, 0.26), density=3000, variants=("metal_l", "wooden", "figure"),
           placement="surface")
 def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -49,7 +59,7 @@ def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
                make_part("upright", "upright", S.box((w, t, h), center=(0, -d / 2 + t / 2, h / 2)), mat),
                make_part("pad", "pad", S.box((w * 0.8, d * 0.5, 0.002), center=(0, 0.0, t + 0.001)),
                          M.solid((0.1, 0.1, 0.1), "rubber"))]
-        return out
+        return out + _felt_feet(w, d, 0.0, t)
     mat = M.wood(rng) if variant == "wooden" else M.stone(rng)
     t = rng.uniform(0.015, 0.025)
     out = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2), bevel=0.002), mat),
@@ -64,10 +74,22 @@ def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("ornament", "ornament", S.ellipsoid((w * 0.35, d * 0.25, h * 0.3),
                                                                   center=(0, -d / 2 + t * 1.5 + d * 0.25, t + h * 0.3)),
                              mat))
-    return out
+    return out + _felt_feet(w, d, 0.012, t)
 
 
-@register("mouse", parts=("body", "button"), extra_parts=("scroll_wheel", "cable", "foot"),
+def _felt_feet(w: float, d: float, inset: float, t: float) -> list[Part]:
+    """Four felt pads let into the underside of a base ``w`` x ``d`` (flush with it)."""
+    felt = M.solid((0.2, 0.2, 0.2), "fabric", 0.95)
+    r = min(0.008, w / 10)
+    return [make_part(f"foot_{k}", "foot",
+                      S.cylinder(r, min(0.0015, t * 0.6), center=(sx * (w / 2 - inset - r - 0.002),
+                                                                  sy * (d / 2 - inset - r - 0.002),
+                                                                  min(0.0015, t * 0.6) / 2), sections=10), felt)
+            for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
+
+
+@register("mouse", parts=("body", "button"),
+          extra_parts=("scroll_wheel", "cable", "foot", "side_button", "sensor", "switch"),
           size_range=(0.08, 0.14), density=500, variants=("wired", "wireless", "ergonomic"),
           placement="surface")
 def mouse(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -84,12 +106,33 @@ def mouse(rng: np.random.Generator, variant: str) -> list[Part]:
                                                              center=(sx * w * 0.2, L * 0.28, h * 0.72)), mat))
     out.append(make_part("scroll_wheel", "scroll_wheel", S.cylinder(0.009, 0.006, center=(0, L * 0.3, h * 0.78),
                                                                     axis=(1, 0, 0), sections=14), black()))
-    out.append(make_part("foot", "foot", S.box((w * 0.5, L * 0.6, 0.003), center=(0, 0, 0.0015)),
-                         M.solid((0.9, 0.9, 0.9), "plastic", 0.2)))
+    # four glide pads underneath, round the optical sensor's window
+    glide = M.solid((0.9, 0.9, 0.9), "plastic", 0.2)
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"foot_{k}", "foot", S.box((w * 0.22, L * 0.12, 0.003),
+                                                         center=(sx * w * 0.2, sy * L * 0.3, 0.0015)), glide))
+    out.append(make_part("sensor", "sensor", S.cylinder(0.005, 0.002, center=(0, 0, 0.001), sections=10),
+                         M.solid((0.5, 0.05, 0.05), "glass", 0.1)))
+    if variant != "wired":
+        # thumb buttons on the left flank
+        for k in range(2):
+            y = L * (0.08 - 0.16 * k)
+            out.append(make_part(f"side_button_{k}", "side_button",
+                                 S.box((0.004, L * 0.13, 0.007), center=(-w * 0.47, y, h * 0.42), bevel=0.001),
+                                 black()))
+        # the power switch underneath, behind the sensor
+        out.append(make_part("switch", "switch", S.box((0.006, 0.01, 0.002), center=(0, -L * 0.15, 0.001)),
+                             black()))
+    else:
+        out.append(make_part("cable", "cable", S.tube([(0, L / 2 - 0.004, h * 0.3), (0, L / 2 + 0.006, h * 0.15),
+                                                       (0.002, L / 2 + 0.009, 0.003)], 0.0018, sections=6),
+                             black("rubber")))
     return out
 
 
-@register("telephone", parts=("base", "handset"), extra_parts=("keypad", "key", "cord", "display"),
+@register("telephone", parts=("base", "handset"),
+          extra_parts=("keypad", "key", "cord", "display", "earpiece", "mouthpiece", "hook_switch",
+                       "speaker_grille", "foot", "antenna"),
           size_range=(0.15, 0.26), density=600, variants=("desk", "cordless", "office"),
           placement="surface")
 def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -108,14 +151,49 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
                                                          bevel=0.01), mat))
         out.append(make_part("cord", "cord", S.tube([(-w / 2 + 0.005, d * 0.3, h * 0.6), (-w / 2 - 0.005, d * 0.3, 0.02),
                                                      (-w / 2 + 0.01, d * 0.42, 0.01)], 0.003, sections=6), black()))
-    keys = []
+    # the keypad: a bezel let into the sloping top, twelve keys standing out of it
     x0 = w * 0.05
+    slope = np.arctan2(h * 0.55, d)
+
+    def top_z(y):
+        return h * 0.45 + (h * 0.55) * (d / 2 - y) / d
+
+    keycol = M.solid((0.7, 0.7, 0.72), "plastic", 0.5)
+    yc = d * 0.3 - 1.5 * d * 0.14
+    out.append(make_part("keypad", "keypad", S.box((0.07, d * 0.56 + 0.016, 0.004),
+                                                   center=(x0 + 0.02, yc, top_z(yc) - 0.0015),
+                                                   R=rot((1, 0, 0), -slope)), black()))
     for i in range(3):
         for j in range(4):
             y = d * 0.3 - j * d * 0.14
-            z = h * 0.45 + (h * 0.55) * (d / 2 - y) / d + 0.003
-            keys.append(S.box((0.014, 0.012, 0.006), center=(x0 + i * 0.02, y, z - 0.005)))
-    out.append(make_part("keypad", "keypad", keys, M.solid((0.7, 0.7, 0.72), "plastic", 0.5)))
+            out.append(make_part(f"key_{3 * j + i}", "key", S.box((0.014, 0.012, 0.006),
+                                                                  center=(x0 + i * 0.02, y, top_z(y) - 0.002),
+                                                                  R=rot((1, 0, 0), -slope)), keycol))
+    # the handset's earpiece and mouthpiece grilles, the speaker grille and the rubber feet
+    if variant == "cordless":
+        hx, hy, hz = -w / 2 + 0.04, -d / 2 + 0.02, h + 0.06
+        out.append(make_part("earpiece", "earpiece", S.cylinder(0.012, 0.003, center=(hx, hy + 0.0165, hz + 0.05),
+                                                                axis=(0, 1, 0), sections=10), black()))
+        out.append(make_part("mouthpiece", "mouthpiece", S.box((0.02, 0.003, 0.008),
+                                                               center=(hx, hy + 0.0165, hz - 0.06)), black()))
+        out.append(make_part("antenna", "antenna", S.cylinder(0.005, 0.03, center=(hx + 0.015, hy, hz + 0.095),
+                                                              sections=8), black()))
+    else:
+        hx, hz = -w / 2 + 0.03, h * 0.75 + 0.035
+        for name, y in (("earpiece", -d * 0.38), ("mouthpiece", d * 0.38)):
+            out.append(make_part(name, name, S.cylinder(0.02, 0.004, center=(hx, y, hz + 0.002), sections=12),
+                                 black()))
+        # the hook switch the handset presses down in its cradle
+        out.append(make_part("hook_switch", "hook_switch", S.box((0.012, 0.01, 0.012),
+                                                                  center=(-w / 2 + 0.06, 0, h * 0.75 - 0.002)),
+                             keycol))
+    out.append(make_part("speaker_grille", "speaker_grille",
+                         S.box((0.04, 0.03, 0.003), center=(w * 0.35, d * 0.25, top_z(d * 0.25) - 0.0005),
+                               R=rot((1, 0, 0), -slope)), black()))
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"foot_{k}", "foot", S.cylinder(0.006, 0.002, center=(sx * (w / 2 - 0.015),
+                                                                                  sy * (d / 2 - 0.015), 0.001),
+                                                             sections=8), black("rubber")))
     if variant == "office":
         out.append(make_part("display", "display", S.box((w * 0.5, 0.004, 0.03),
                                                          center=(w * 0.1, -d / 2 + 0.04, h * 0.9)),
@@ -123,7 +201,7 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("paper", parts=("sheet",), extra_parts=("clip", "wrapper"),
+@register("paper", parts=("sheet",), extra_parts=("clip", "wrapper", "label"),
           size_range=(0.2, 0.44), density=800, variants=("stack", "ream", "loose"),
           placement="surface")
 def paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -134,7 +212,10 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
         return [make_part("sheet", "sheet", S.box((w, d, h - 0.002), center=(0, 0, h / 2)),
                           white(rng, "paper")),
                 make_part("wrapper", "wrapper", S.box((w + 0.002, d * 0.6, h), center=(0, 0, h / 2)),
-                          M.paper(rng))]
+                          M.paper(rng)),
+                # the brand and grade label printed on the wrapper's top
+                make_part("label", "label", S.box((w * 0.6, d * 0.3, 0.0006), center=(0, 0, h + 0.0003)),
+                          white(rng, "paper"))]
     n = int(rng.integers(3, 9))
     out = []
     z = 0.0
@@ -150,7 +231,7 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("cd_case", parts=("tray", "lid"), extra_parts=("disc", "hinge", "insert"),
+@register("cd_case", parts=("tray", "lid"), extra_parts=("disc", "hinge", "insert", "hub", "spine_card"),
           size_range=(0.12, 0.15), density=1100, variants=("jewel", "slim", "double"),
           placement="surface")
 def cd_case(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -166,12 +247,22 @@ def cd_case(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                make_part("insert", "insert", S.box((w - 0.01, d - 0.004, 0.0004),
                                                                    center=(0, 0, t * 0.6 + t * 0.35 + 0.0004)),
                                          M.paper(rng))]
+    # the rosette hub holding the disc, the hinge knuckles on the spine side, the spine card
+    out.append(make_part("hub", "hub", S.cylinder(0.0075, 0.0025, center=(0, 0, t * 0.6 + 0.00125), sections=12),
+                         M.solid((0.1, 0.1, 0.1), "plastic", 0.3)))
+    for k, sy in enumerate((-1, 1)):
+        out.append(make_part(f"hinge_{k}", "hinge", S.cylinder(0.0025, 0.012, center=(-w / 2 + 0.0025, sy * (d / 2 - 0.008),
+                                                                                    t * 0.6), axis=(0, 1, 0), sections=8),
+                             clear))
+    out.append(make_part("spine_card", "spine_card", S.box((0.0006, d - 0.006, t * 0.5),
+                                                            center=(-w / 2 - 0.0003, 0, t * 0.3)), M.paper(rng)))
     out.append(revolute("lid_hinge", "tray", "lid", axis=(0, 1, 0), origin=(-w / 2, 0, t * 0.6), opens=-1.6))
     out.append(Joint("insert_mount", "prismatic", "lid", "insert", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
     return out
 
 
-@register("headphones", parts=("headband", "ear_cup"), extra_parts=("cushion", "cable", "slider"),
+@register("headphones", parts=("headband", "ear_cup"),
+          extra_parts=("cushion", "cable", "slider", "yoke", "band_pad", "jack"),
           size_range=(0.15, 0.24), density=500, variants=("over_ear", "on_ear", "studio"),
           placement="surface")
 def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -191,10 +282,28 @@ def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                   sections=24), mat))
         out.append(make_part(f"cushion_{k}", "cushion", S.cylinder(r * 0.95, cup_h * 0.4, center=(x, y, cup_h * 0.8),
                                                                   sections=24), M.leather(rng)))
+        # the sliding extension out of the band's end, and the yoke forking round the cup
+        end = arc[0] if sx > 0 else arc[-1]
+        out.append(make_part(f"slider_{k}", "slider", S.tube([end, (x, y + r * 1.05, 0.012)], 0.004, sections=8),
+                             M.metal(rng)))
+        fork = [(x + 1.05 * r * np.cos(t), y + 1.05 * r * np.sin(t), 0.012) for t in np.radians([35, 70, 110, 145])]
+        out.append(make_part(f"yoke_{k}", "yoke", S.tube(fork, 0.003, sections=6), mat))
+    # the padded cushion under the top of the band
+    top = arc[3:6]
+    out.append(make_part("band_pad", "band_pad", S.tube(top - [0, 0.008, 0], 0.007, sections=8), M.leather(rng)))
+    if variant == "studio":
+        # the coiled cable leaves the left cup, ending in its jack plug
+        xl = -R * np.cos(0.15 * np.pi)
+        yl = -R * 0.35 + R * np.sin(0.15 * np.pi) * 0.9 - r * 0.7
+        path = [(xl - r * 0.5, yl - r * 0.7, 0.006), (xl - r * 0.2, yl - r * 1.5, 0.006), (xl + r * 0.6, yl - r * 1.8, 0.006)]
+        out.append(make_part("cable", "cable", S.tube(path, 0.0025, sections=6), black("rubber")))
+        out.append(make_part("jack", "jack", S.cylinder(0.0035, 0.025, center=(xl + r * 0.6 + 0.0125, yl - r * 1.8, 0.006),
+                                                        axis=(1, 0, 0), sections=8), M.metal(rng)))
     return out
 
 
-@register("water_pitcher", parts=("body", "handle"), extra_parts=("spout", "lid", "filter"),
+@register("water_pitcher", parts=("body", "handle"),
+          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale"),
           size_range=(0.18, 0.32), density=1500, variants=("glass", "filter_jug", "ceramic"),
           placement="surface")
 def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -208,14 +317,34 @@ def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
            make_part("spout", "spout", S.hull(np.array([[-0.015, r * 0.8, h - 0.03], [0.015, r * 0.8, h - 0.03],
                                                         [-0.02, r * 0.8, h], [0.02, r * 0.8, h],
                                                         [0, r + 0.025, h + 0.005]])), mat)]
+    # the lip round the top and the ring the jug stands on
+    out.append(make_part("rim", "rim", ring([(r * 0.95 - 0.004, h - 0.006), (r * 0.95 + 0.002, h - 0.004),
+                                             (r * 0.95 + 0.002, h), (r * 0.95 - 0.004, h)], sections=24), mat))
+    out.append(make_part("foot_ring", "foot_ring", ring([(r * 0.8, 0.0), (r * 0.9 + 0.001, 0.0),
+                                                         (r * 0.9 + 0.001, 0.004), (r * 0.8, 0.004)], sections=24),
+                         mat))
+    # the capacity marks printed up the side
+    a = 0.6  # towards the right of the front, clear of the spout
+    marks = []
+    for k in range(7):
+        z = 0.03 + k * h * 0.1
+        rz = float(np.interp(z, [0.0, h * 0.4, h], [r * 0.9, r, r * 0.95]))
+        marks.append(S.box((0.02 if k % 2 == 0 else 0.012, 0.0008, 0.0015),
+                           center=(np.sin(a) * (rz + 0.0002), np.cos(a) * (rz + 0.0002), z), R=rot((0, 0, 1), -a)))
+    out.append(make_part("scale", "scale", marks, white(rng, "paper")))
     if variant == "filter_jug":
-        out.append(make_part("lid", "lid", S.cylinder(r * 0.95, 0.012, center=(0, 0, h + 0.006)), white(rng, "plastic")))
+        lid_mat = white(rng, "plastic")
+        out.append(make_part("lid", "lid", S.cylinder(r * 0.95, 0.012, center=(0, 0, h + 0.006)), lid_mat))
         out.append(make_part("filter", "filter", S.cylinder(r * 0.35, h * 0.35, center=(0, 0, h - h * 0.175)),
                              white(rng, "plastic")))
+        # the flip tab over the spout and the filter-change indicator on the lid
+        out.append(make_part("lid_tab", "lid_tab", S.box((0.03, 0.02, 0.004), center=(0, r * 0.8, h + 0.01)), lid_mat))
+        out.append(make_part("indicator", "indicator", S.box((0.02, 0.012, 0.002), center=(0, -r * 0.5, h + 0.0125)),
+                             M.solid((0.2, 0.25, 0.3), "glass", 0.1)))
     return out
 
 
-@register("soap_dish", parts=("dish",), extra_parts=("rib", "foot"),
+@register("soap_dish", parts=("dish",), extra_parts=("rib", "foot", "lip"),
           size_range=(0.09, 0.16), density=1800, variants=("ceramic", "slotted", "footed"),
           placement="surface")
 def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -230,38 +359,58 @@ def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
              S.box((t, d - 2 * t, h), center=(-w / 2 + t / 2, 0, fh + h / 2)),
              S.box((t, d - 2 * t, h), center=(w / 2 - t / 2, 0, fh + h / 2))]
     out = [make_part("dish", "dish", walls, mat)]
+    # the drain lip at the right end, a notch in the wall the water runs out over
+    out.append(make_part("lip", "lip", S.box((0.012, 0.025, 0.004), center=(w / 2 + 0.004, 0, fh + t + 0.002)), mat))
     n = 4
-    out.append(make_part("rib", "rib", [S.box((0.004, d - 2 * t, 0.004), center=(-w / 3 + k * w / 4.5, 0, fh + t + 0.002))
-                                        for k in range(n)], mat))
+    for k in range(n):  # the ribs the soap rests on, so it drains
+        out.append(make_part(f"rib_{k}", "rib", S.box((0.004, d - 2 * t, 0.004),
+                                                       center=(-w / 3 + k * w / 4.5, 0, fh + t + 0.002)), mat))
     if fh:
-        out.append(make_part("foot", "foot", [S.cylinder(0.006, fh, center=(sx * (w / 2 - 0.012), sy * (d / 2 - 0.012), fh / 2),
-                                                         sections=10) for sx in (-1, 1) for sy in (-1, 1)], mat))
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            out.append(make_part(f"foot_{k}", "foot", S.cylinder(0.006, fh, center=(sx * (w / 2 - 0.012),
+                                                                                  sy * (d / 2 - 0.012), fh / 2),
+                                                                 sections=10), mat))
     return out
 
 
-@register("soap_dispenser", parts=("body", "pump"), extra_parts=("nozzle", "collar", "label"),
+@register("soap_dispenser", parts=("body", "pump"),
+          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad"),
           size_range=(0.12, 0.26), density=1000, variants=("pump_bottle", "wall_mounted", "ceramic"),
           placement="surface")
 def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "wall_mounted":
         w, d, h = rng.uniform(0.1, 0.13), rng.uniform(0.08, 0.1), rng.uniform(0.16, 0.22)
         mat = white(rng, "plastic")
+        # the plate screwed to the wall, the level window, the key lock on top
         return [make_part("body", "body", S.box((w, d, h), center=(0, 0, h / 2 + 0.02), bevel=0.01), mat),
                 make_part("pump", "pump", S.box((w * 0.5, 0.02, 0.02), center=(0, d / 2 - 0.01, 0.01)), black()),
-                make_part("nozzle", "nozzle", S.cylinder(0.005, 0.02, center=(0, d / 2 - 0.02, 0.01)), black())]
+                make_part("nozzle", "nozzle", S.cylinder(0.005, 0.02, center=(0, d / 2 - 0.02, 0.01)), black()),
+                make_part("back_plate", "back_plate", S.box((w * 0.8, 0.006, h * 0.9),
+                                                            center=(0, -d / 2 + 0.003, 0.02 + h * 0.5)), mat),
+                make_part("window", "window", S.box((w * 0.2, 0.002, h * 0.35),
+                                                    center=(0, d / 2 + 0.0005, 0.02 + h * 0.45)),
+                          M.solid((0.6, 0.7, 0.8), "glass", 0.1)),
+                make_part("lock", "lock", S.cylinder(0.006, 0.003, center=(0, 0, 0.02 + h + 0.001), sections=10),
+                          M.metal(rng))]
     r, h = rng.uniform(0.03, 0.04), rng.uniform(0.12, 0.17)
     mat = M.ceramic(rng) if variant == "ceramic" else M.glass(rng)
     metal = M.metal(rng)
     out = [make_part("body", "body", S.lathe([(r, 0.0), (r, h * 0.85), (r * 0.4, h)]), mat),
+           # the cork pad under the base
+           make_part("pad", "pad", S.cylinder(r * 0.85, 0.0015, center=(0, 0, 0.00075), sections=16),
+                     M.solid((0.65, 0.5, 0.35), "wood", 0.95)),
            make_part("collar", "collar", S.cylinder(r * 0.45, 0.015, center=(0, 0, h + 0.0075)), metal),
            make_part("pump", "pump", S.cylinder(r * 0.2, 0.035, center=(0, 0, h + 0.015 + 0.0175)), metal),
            make_part("nozzle", "nozzle", S.box((0.008, 0.04, 0.01), center=(0, 0.015, h + 0.05 + 0.005)), metal)]
     if variant != "ceramic":
         out.append(make_part("label", "label", S.cylinder(r + 0.0005, h * 0.3, center=(0, 0, h * 0.4)), M.paper(rng)))
+        # the dip tube, seen through the glass
+        out.append(make_part("dip_tube", "dip_tube", S.cylinder(0.0025, h - 0.01, center=(0, 0, 0.005 + (h - 0.01) / 2),
+                                                                sections=8), M.solid((0.9, 0.9, 0.9), "plastic", 0.3)))
     return out
 
 
-@register("tube", parts=("body", "cap"), extra_parts=("crimp",),
+@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode"),
           size_range=(0.08, 0.24), density=1000, variants=("toothpaste", "cream", "paint"),
           placement="surface")
 def tube(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -277,10 +426,18 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
     return [make_part("body", "body", body, mat),
             make_part("cap", "cap", S.cylinder(r * 0.6, cap_l, center=(x0 + cap_l / 2, 0, r * 0.8), axis=(1, 0, 0),
                                                sections=16), white(rng, "plastic")),
-            make_part("crimp", "crimp", S.box((0.01, r * 2.8, r * 0.25), center=(L / 2 - 0.005, 0, r * 0.8)), mat)]
+            make_part("crimp", "crimp", S.box((0.01, r * 2.8, r * 0.25), center=(L / 2 - 0.005, 0, r * 0.8)), mat),
+            # the shoulder narrowing to the neck the cap screws on, and the printed label
+            make_part("shoulder", "shoulder", S.frustum(r * 0.62, r * 0.8, 0.01, center=(x0 + cap_l, 0, r * 0.8),
+                                                        axis=(1, 0, 0), sections=12), mat),
+            make_part("label", "label", S.box((L * 0.45, r * 1.6, 0.0008),
+                                              center=(x0 + cap_l + 0.01 + L * 0.3, 0, r * 1.6 + 0.0004)), M.paper(rng)),
+            # the barcode printed near the crimped end
+            make_part("barcode", "barcode", S.box((0.02, r * 1.2, 0.0008), center=(L / 2 - 0.025, 0, r * 1.6 + 0.0004)),
+                      white(rng, "paper"))]
 
 
-@register("ball", parts=("body",), extra_parts=("seam", "valve"),
+@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo"),
           size_range=(0.06, 0.26), density=100, variants=("soccer", "basketball", "tennis"),
           placement="floor")
 def ball(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -294,10 +451,55 @@ def ball(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("seam", "seam", band, black("rubber")))
     if variant != "tennis":
         out.append(make_part("valve", "valve", S.cylinder(0.004, 0.004, center=(0, 0, 2 * r - 0.0015)), black()))
+    if variant == "soccer":
+        # the twelve black pentagons, at an icosahedron's vertices (the top one carries the valve)
+        phi = (1 + 5 ** 0.5) / 2
+        verts = np.array([(0, s1, s2 * phi) for s1 in (-1, 1) for s2 in (-1, 1)]
+                         + [(s1, s2 * phi, 0) for s1 in (-1, 1) for s2 in (-1, 1)]
+                         + [(s2 * phi, 0, s1) for s1 in (-1, 1) for s2 in (-1, 1)], float)
+        verts /= np.linalg.norm(verts, axis=1)[:, None]
+        # turn one vertex to the top (the valve's pentagon) and keep the rest in a stable order
+        top = verts[0]
+        ax = np.cross(top, (0, 0, 1.0))
+        ang = np.arccos(np.clip(top[2], -1, 1))
+        R = rot(ax / np.linalg.norm(ax), ang)
+        ink = black("rubber")
+        for k, v in enumerate(verts @ R.T):
+            if v[2] < -0.95:  # the pentagon the ball rests on would be inside the floor
+                continue
+            out.append(make_part(f"panel_{k}", "panel",
+                                 S.cylinder(r * 0.2, 0.002, center=(0, 0, r * 0.995 - 0.001), sections=5)
+                                 .apply(_place(v, r)), ink))
+    elif variant == "basketball":
+        # the black channels: a second seam round the poles, and the maker's logo
+        band2 = ring([(r * 0.995, r - r * 0.02), (r * 1.01, r - r * 0.02), (r * 1.01, r + r * 0.02),
+                      (r * 0.995, r + r * 0.02)], sections=32)
+        T = np.eye(4)
+        T[:3, :3] = rot((1, 0, 0), np.pi / 2)
+        T[:3, 3] = (0, r, r) - T[:3, :3] @ (0, 0, r)
+        out.append(make_part("seam_1", "seam", band2.apply(T), black("rubber")))
+        out.append(make_part("logo", "logo", S.box((r * 0.4, 0.001, r * 0.2), center=(r * 0.45, r * 0.89, r * 1.25)),
+                             black("paper")))
+    else:
+        out.append(make_part("logo", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, r, r * 1.35)),
+                             black("paper")))
     return out
 
 
-@register("hat", parts=("crown", "brim"), extra_parts=("band", "button"),
+def _place(v: np.ndarray, r: float) -> np.ndarray:
+    """(4, 4) transform taking a patch built on a sphere's top (centre (0, 0, 0), radius ``r``)
+    to the direction ``v`` on the ball resting on z = 0 (centre (0, 0, r))."""
+    ax = np.cross((0, 0, 1.0), v)
+    T = np.eye(4)
+    if np.linalg.norm(ax) > 1e-9:
+        T[:3, :3] = rot(ax / np.linalg.norm(ax), float(np.arccos(np.clip(v[2], -1, 1))))
+    elif v[2] < 0:
+        T[:3, :3] = rot((1, 0, 0), np.pi)
+    T[:3, 3] = (0, 0, r)
+    return T
+
+
+@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband", "feather", "chin_strap"),
           size_range=(0.2, 0.42), density=150, variants=("cap", "fedora", "sun_hat"),
           placement="surface")
 def hat(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -306,19 +508,40 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
         r = rng.uniform(0.09, 0.1)
         crown = S.hull(np.vstack([S.ellipsoid((r, r * 1.1, r * 0.9)).mesh.vertices * [1, 1, 1]]).clip(min=[-1, -1, 0])
                        + [0, 0, 0.001])
-        return [make_part("crown", "crown", crown, mat),
-                make_part("brim", "brim", S.box((r * 1.6, r * 0.9, 0.004), center=(0, r * 1.1 + r * 0.4, 0.004)), mat),
-                make_part("button", "button", S.cylinder(0.008, 0.006, center=(0, 0, r * 0.9 + 0.003)), mat)]
+        out = [make_part("crown", "crown", crown, mat),
+               make_part("brim", "brim", S.box((r * 1.6, r * 0.9, 0.004), center=(0, r * 1.1 + r * 0.4, 0.004)), mat),
+               make_part("button", "button", S.cylinder(0.008, 0.006, center=(0, 0, r * 0.9 + 0.003)), mat)]
+        # the stitched eyelets on the crown's panels and the adjuster strap at the back
+        for k, a in enumerate(np.radians([45, 135, 225, 315])):
+            el = np.array([np.cos(a) * r * 0.55, np.sin(a) * r * 1.1 * 0.55, r * 0.9 * np.sqrt(1 - 0.55 ** 2)])
+            n = el / np.array([r, r * 1.1, r * 0.9]) ** 2
+            n /= np.linalg.norm(n)
+            out.append(make_part(f"eyelet_{k}", "eyelet", S.cylinder(0.003, 0.002, center=el + 0.001 * n + [0, 0, 0.001],
+                                                                     axis=n, sections=8), black("metal")))
+        out.append(make_part("strap", "strap", S.box((r * 0.6, 0.004, 0.015), center=(0, -r * 1.1 + 0.003, 0.012)),
+                             M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+        return out
     rb = rng.uniform(0.15, 0.19) if variant == "fedora" else rng.uniform(0.18, 0.21)
     rc, hc = rng.uniform(0.08, 0.09), rng.uniform(0.1, 0.13)
     out = [make_part("brim", "brim", S.cylinder(rb, 0.004, center=(0, 0, 0.002), sections=32), mat),
            make_part("crown", "crown", S.lathe([(rc, 0.004), (rc * 0.95, hc * 0.8), (rc * 0.7, hc)]), mat),
            make_part("band", "band", S.cylinder(rc + 0.002, 0.02, center=(0, 0, 0.015), sections=28),
                      M.solid(M.jitter(rng, (0.15, 0.1, 0.08), 0.03), "fabric", 0.8))]
+    # the bow on the band's left side, and the leather sweatband inside the crown's opening
+    out.append(make_part("bow", "bow", S.box((0.012, 0.03, 0.024), center=(-rc - 0.006, 0, 0.015), bevel=0.003),
+                         M.solid(M.jitter(rng, (0.15, 0.1, 0.08), 0.03), "fabric", 0.8)))
+    out.append(make_part("sweatband", "sweatband", ring([(rc - 0.006, 0.004), (rc - 0.002, 0.004), (rc - 0.002, 0.03),
+                                                         (rc - 0.006, 0.03)], sections=24), M.leather(rng)))
+    if variant == "fedora":  # a small feather tucked in the band beside the bow
+        out.append(make_part("feather", "feather", S.ellipsoid((0.004, 0.012, 0.035), center=(-rc - 0.004, 0.02, 0.035), subdivisions=1),
+                             M.solid(M.jitter(rng, (0.5, 0.4, 0.3), 0.1), "fabric", 0.9)))
+    else:  # the chin cord, lying over the brim at the front
+        out.append(make_part("chin_strap", "chin_strap", S.tube([(-rc * 0.9, 0.0, 0.005), (0, rb * 0.7, 0.005), (rc * 0.9, 0.0, 0.005)],
+                                                              0.002, sections=6), M.solid((0.3, 0.25, 0.2), "fabric", 0.8)))
     return out
 
 
-@register("scale", parts=("platform",), extra_parts=("display", "foot", "button"),
+@register("scale", parts=("platform",), extra_parts=("display", "foot", "button", "electrode", "dial", "needle"),
           size_range=(0.25, 0.38), density=800, variants=("glass", "analog", "kitchen"),
           placement="floor")
 def scale(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -332,13 +555,30 @@ def scale(rng: np.random.Generator, variant: str) -> list[Part]:
     out = [make_part("platform", "platform", S.box((w, d, h - fh), center=(0, 0, fh + (h - fh) / 2), bevel=0.004), mat),
            make_part("display", "display", S.box((0.06, 0.03, 0.002), center=(0, d / 2 - 0.03, h + 0.001)),
                      M.solid((0.2, 0.25, 0.3), "glass", 0.1))]
-    out.append(make_part("foot", "foot", [S.cylinder(0.012, fh, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.03), fh / 2),
-                                                     sections=10) for sx in (-1, 1) for sy in (-1, 1)],
-                         black("rubber")))
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"foot_{k}", "foot", S.cylinder(0.012, fh, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.03),
+                                                                              fh / 2), sections=10), black("rubber")))
+    if variant == "glass":
+        # the four steel pads the bare feet stand on (body-fat electrodes)
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            out.append(make_part(f"electrode_{k}", "electrode",
+                                 S.box((0.05, 0.07, 0.001), center=(sx * w * 0.2, sy * d * 0.2 - 0.02, h + 0.0005)),
+                                 M.metal(rng)))
+    elif variant == "analog":
+        # the dial under the window, and its needle
+        out.append(make_part("dial", "dial", S.box((0.09, 0.05, 0.001), center=(0, d / 2 - 0.045, h + 0.0005)),
+                             white(rng, "paper")))
+        out.append(make_part("needle", "needle", S.box((0.002, 0.03, 0.001), center=(0, d / 2 - 0.045, h + 0.0015)),
+                             M.solid((0.8, 0.1, 0.1), "plastic", 0.4)))
+    else:
+        # the on/off and tare buttons beside the display
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"button_{k}", "button", S.box((0.012, 0.008, 0.002),
+                                                                 center=(sx * 0.05, d / 2 - 0.03, h + 0.001)), black()))
     return out
 
 
-@register("dumbbell", parts=("handle", "plate"), extra_parts=("collar",),
+@register("dumbbell", parts=("handle", "plate"), extra_parts=("collar", "end_cap", "grip"),
           size_range=(0.2, 0.45), density=7000, variants=("hex", "round", "adjustable"),
           placement="floor")
 def dumbbell(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -355,10 +595,19 @@ def dumbbell(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "adjustable":
             out.append(make_part(f"collar_{k}", "collar", S.cylinder(0.025, 0.02, center=(sx * (L / 2 - pw - 0.01), 0, r),
                                                                     axis=(1, 0, 0), sections=16), steel))
+        else:
+            # the steel cap on each head's outer face, stamped with the weight
+            out.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(r * 0.45, 0.003, center=(sx * (L / 2 - 0.0015), 0, r),
+                                                                      axis=(1, 0, 0), sections=sec * 2 if sec == 6 else 16),
+                                 steel))
+    # the knurled grip sleeve in the middle of the handle
+    out.append(make_part("grip", "grip", S.cylinder(0.0165, min(0.12, L - 2 * pw - 0.06), center=(0, 0, r),
+                                                    axis=(1, 0, 0), sections=12), M.metal(rng)))
     return out
 
 
-@register("paper_cutter", parts=("base", "blade_arm"), extra_parts=("handle", "guide", "hinge"),
+@register("paper_cutter", parts=("base", "blade_arm"),
+          extra_parts=("handle", "guide", "hinge", "ruler", "cutting_edge", "foot", "guard"),
           size_range=(0.3, 0.52), density=900, variants=("guillotine", "rotary", "compact"),
           placement="surface")
 def paper_cutter(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -367,6 +616,15 @@ def paper_cutter(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out: list[Part | Joint] = [make_part("base", "base", S.box((w, d, base_t), center=(0, 0, base_t / 2)), M.wood(rng) if variant != "compact" else white(rng, "plastic")),
                                make_part("guide", "guide", S.box((0.012, d, 0.012), center=(-w / 2 + 0.006, 0, base_t + 0.006)),
                                          M.metal(rng))]
+    # the printed ruler along the back edge, the steel cutting edge the blade shears past, and
+    # rubber feet let into the underside
+    out.append(make_part("ruler", "ruler", S.box((w - 0.06, 0.02, 0.0006), center=(-0.012, -d / 2 + 0.012, base_t + 0.0003)),
+                         white(rng, "paper")))
+    out.append(make_part("cutting_edge", "cutting_edge", S.box((0.006, d, 0.0015),
+                                                               center=(w / 2 - 0.028, 0, base_t + 0.00075)), M.metal(rng)))
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"foot_{k}", "foot", S.cylinder(0.008, 0.002, center=(sx * (w / 2 - 0.02), sy * (d / 2 - 0.02), 0.001),
+                                                             sections=8), black("rubber")))
     if variant == "rotary":
         out.append(make_part("blade_arm", "blade_arm", S.box((0.03, d, 0.015), center=(w / 2 - 0.03, 0, base_t + 0.0075)),
                              M.metal(rng)))
@@ -378,6 +636,9 @@ def paper_cutter(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("handle", "handle", S.cylinder(0.012, 0.08, center=(w / 2 - 0.0125, d * 0.47 - 0.04, base_t + 0.024),
                                                         axis=(0, 1, 0), sections=12), black()))
     out.append(Joint("handle_mount", "prismatic", "blade_arm", "handle", (0.0, 0.0, 1.0), (0.0, 0.0, 0.0), (0.0, 0.0)))
+    # the clear finger guard along the cutting line, on the base
+    out.append(make_part("guard", "guard", S.box((0.004, d * 0.8, 0.02), center=(w / 2 - 0.036, d * 0.05, base_t + 0.01)),
+                         M.glass(rng)))
     out.append(revolute("blade_hinge", "base", "blade_arm", axis=(1, 0, 0), origin=(w / 2 - 0.0125, -d * 0.475, base_t),
                         opens=1.2))
     return out

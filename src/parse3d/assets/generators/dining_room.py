@@ -77,7 +77,7 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("display_table", parts=("tabletop", "leg"),
-          extra_parts=("shelf", "riser", "apron", "foot"), size_range=(0.8, 2.0), density=500,
+          extra_parts=("shelf", "riser", "apron", "foot", "collar"), size_range=(0.8, 2.0), density=500,
           variants=("two_tier", "riser", "round"), placement="floor")
 def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
     """A shop's merchandising table: a top at 0.7-0.8 m, a lower shelf (``two_tier``) or a
@@ -96,6 +96,9 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
                                                        sections=16), leg_mat))
         parts.append(make_part("foot", "foot", S.cylinder(r * 0.6, 0.03, center=(0, 0, 0.015), sections=32),
                                leg_mat))
+        # the collars where the column meets the foot and the top
+        for k, z in enumerate((0.03 + 0.02, h - t - 0.02)):
+            parts.append(make_part(f"collar_{k}", "collar", S.cylinder(0.075, 0.04, center=(0, 0, z), sections=16), leg_mat))
         # a smaller top tier on a short column
         r2, h2 = r * 0.5, rng.uniform(0.25, 0.35)
         parts.append(make_part("riser_post", "leg", S.cylinder(0.03, h2, center=(0, 0, h + h2 / 2 - 0.001),
@@ -111,6 +114,9 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
         x, y = sx * (w / 2 - leg / 2 - 0.02), sy * (d / 2 - leg / 2 - 0.02)
         parts.append(make_part(f"leg_{i}", "leg", S.box((leg, leg, h - t), center=(x, y, (h - t) / 2),
                                                         bevel=0.003), leg_mat))
+        # a glide cap round each leg's foot (the legs still reach the floor)
+        parts.append(make_part(f"foot_{i}", "foot", S.box((leg + 0.006, leg + 0.006, 0.012), center=(x, y, 0.006), bevel=0.002),
+                               Material((0.08, 0.08, 0.08, 1.0), 0.9, 0.0, "rubber")))
     ah = 0.08
     za = h - t - ah / 2
     for k, (size, c) in enumerate([((w - 2 * leg - 0.04, 0.02, ah), (0, d / 2 - 0.03, za)),

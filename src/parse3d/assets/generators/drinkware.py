@@ -10,7 +10,7 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Part, make_part
+from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import ring
 
@@ -36,21 +36,45 @@ def _square_mug(rng, w: float, h: float, t: float) -> S.Shape:
     return S.union(walls)
 
 
-@register("mug", parts=("body", "handle"), size_range=(0.10, 0.14), density=900,
+@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base", "decal", "backstamp"),
+          size_range=(0.10, 0.14), density=900,
           variants=("round", "belly", "square"), placement="surface")
 def mug(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.036, 0.045)
     h = rng.uniform(0.085, 0.11)
     t = rng.uniform(0.0035, 0.005)
     mat = M.ceramic(rng)
+    fh = 0.003  # the unglazed foot it stands on
     if variant == "square":
-        body = _square_mug(rng, 2 * r, h, t)
-    elif variant == "belly":
-        body = S.vessel([(r * 0.85, 0.0), (r * 1.05, h * 0.35), (r * 1.0, h * 0.75), (r * 0.92, h)], t)
+        body = _square_mug(rng, 2 * r, h, t).moved((0, 0, fh))
+        foot = S.box((2 * r - 0.006, 2 * r - 0.006, fh), center=(0, 0, fh / 2))
+        prof = [(r, fh), (r, fh + h)]
     else:
-        body = S.vessel([(r * 0.96, 0.0), (r, h)], t, piece_sections=16)
-    handle = _handle(rng, r, h, rng.uniform(0.005, 0.007))
-    return [make_part("body", "body", body, mat), make_part("handle", "handle", handle, mat)]
+        if variant == "belly":
+            prof = [(r * 0.85, fh), (r * 1.05, fh + h * 0.35), (r * 1.0, fh + h * 0.75), (r * 0.92, fh + h)]
+            body = S.vessel(prof, t)
+        else:
+            prof = [(r * 0.96, fh), (r, fh + h)]
+            body = S.vessel(prof, t, piece_sections=16)
+        rf = prof[0][0] * 0.9
+        foot = ring([(rf - 0.005, 0.0), (rf, 0.0), (rf + 0.002, fh), (rf - 0.006, fh)], sections=16)
+    handle = _handle(rng, r, h, rng.uniform(0.005, 0.007)).moved((0, 0, fh))
+    parts = [make_part("body", "body", body, mat), make_part("handle", "handle", handle, mat)]
+    unglazed = Material(M.jitter(rng, (0.8, 0.74, 0.64), 0.03), 0.9, 0.0, "ceramic")
+    if variant == "square":
+        parts.append(make_part("base", "base", foot, unglazed))
+    else:
+        parts.append(make_part("foot_ring", "foot_ring", foot, unglazed))
+        parts.append(make_part("rim", "rim", _rim(prof[-1][0], fh + h, t, 0.0012), mat))
+        # the maker's mark printed under the floor, inside the foot ring
+        parts.append(make_part("backstamp", "backstamp", S.cylinder(rf * 0.45, 0.0005, center=(0, 0, fh - 0.00025), sections=12),
+                               M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
+    # the printed decal on the front (+Y), the side a right hand shows
+    zd = fh + h * 0.5
+    rd = float(np.interp(zd, [q[1] for q in prof], [q[0] for q in prof]))
+    parts.append(make_part("decal", "decal", S.box((r * 0.8, 0.0008, h * 0.35),
+                                                   center=(0, rd + 0.0002, zd)), M.paper(rng)))
+    return parts
 
 
 def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
@@ -62,7 +86,7 @@ def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
                 sections=16)
 
 
-@register("cup", parts=("body",), extra_parts=("base", "rim", "handle"), size_range=(0.08, 0.14),
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "decal"), size_range=(0.08, 0.14),
           density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
@@ -82,10 +106,14 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "handled":
         handle = _handle(rng, r, h, rng.uniform(0.004, 0.006)).moved((0, 0, zb))
         parts.append(make_part("handle", "handle", handle, mat))
+    # the printed pattern on the front
+    zd = zb + h * 0.5
+    rd = r0 + (r - r0) * 0.5
+    parts.append(make_part("decal", "decal", S.box((r * 0.7, 0.0008, h * 0.3), center=(0, rd + 0.0002, zd)), M.paper(rng)))
     return parts
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim"),
+@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim", "decal", "backstamp"),
           size_range=(0.06, 0.11), density=900, variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
@@ -101,4 +129,18 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "handled":
         parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh)),
                                mat))
+    # the gilded band under the rim and a painted spray of flowers on the front
+    zt = fh + h * 0.88
+    rt = r * 0.9 + (r - r * 0.9) * (zt - fh - h * 0.5) / (h * 0.5)
+    gold = Material(M.jitter(rng, (0.83, 0.68, 0.3), 0.03), 0.3, 0.9, "metal")
+    parts.append(make_part("trim", "trim", ring([(rt - 0.0004, zt - 0.002), (rt + 0.0005, zt - 0.002),
+                                                 (rt + 0.0005, zt + 0.002), (rt - 0.0004, zt + 0.002)],
+                                                sections=16), gold))
+    zd = fh + h * 0.55
+    rd = r * 0.9 + (r - r * 0.9) * (zd - fh - h * 0.5) / (h * 0.5)
+    parts.append(make_part("decal", "decal", S.box((r * 0.6, 0.0008, h * 0.25),
+                                                   center=(0, rd + 0.0002, zd)), M.paper(rng)))
+    # the maker's mark under the floor, inside the foot ring
+    parts.append(make_part("backstamp", "backstamp", S.cylinder(rf * 0.5, 0.0005, center=(0, 0, fh - 0.00025), sections=12),
+                           M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     return parts

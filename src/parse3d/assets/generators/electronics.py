@@ -46,10 +46,27 @@ def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> 
     parts.append(make_part("indicator", "indicator", S.cylinder(0.002, 0.002, center=(w / 2 - bezel / 2 - 0.01, depth / 2 + 0.001,
                                                                                      z0 + bezel / 2), axis=(0, 1, 0), sections=8),
                            M.solid((0.2, 0.8, 0.3), "plastic", 0.3)))
+    # the maker's logo on the bottom bezel; on the rear bump the input ports, the power inlet
+    # and the four threaded VESA mounting points
+    parts.append(make_part("logo", "logo", S.box((0.04, 0.001, min(0.008, bezel * 0.6)),
+                                                 center=(0, depth / 2 + 0.0005, z0 + bezel / 2)),
+                           M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.8)))
+    bb = body[1].mesh.bounds
+    yb = bb[0, 1]
+    for k in range(3):
+        parts.append(make_part(f"port_{k}", "port", S.box((0.016, 0.002, 0.007),
+                                                          center=(bb[1, 0] - 0.03 - 0.025 * k, yb - 0.001, bb[0, 2] + 0.03)), dark))
+    parts.append(make_part("power_inlet", "power_inlet", S.box((0.02, 0.002, 0.012), center=(bb[0, 0] + 0.03, yb - 0.001, bb[0, 2] + 0.03)),
+                           dark))
+    cx, cz, v = 0.0, (bb[0, 2] + bb[1, 2]) / 2 + 0.01, min(0.05, (bb[1, 0] - bb[0, 0]) * 0.2, (bb[1, 2] - bb[0, 2]) * 0.2)
+    for k, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"vesa_mount_{k}", "vesa_mount", S.cylinder(0.005, 0.002, center=(cx + sx * v, yb - 0.001, cz + sz * v),
+                                                                          axis=(0, 1, 0), sections=8), dark))
     return parts
 
 
-@register("tv", parts=("screen", "stand"), extra_parts=("body", "back_cover", "button", "indicator"), size_range=(0.7, 1.75),
+@register("tv", parts=("screen", "stand"),
+          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount"), size_range=(0.7, 1.75),
           density=350, variants=("feet", "pedestal"))
 def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.72, 1.65)
@@ -80,7 +97,8 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("monitor", parts=("screen", "stand", "base"), extra_parts=("body", "back_cover", "button", "indicator"), size_range=(0.45, 0.85),
+@register("monitor", parts=("screen", "stand", "base"),
+          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "hinge"), size_range=(0.45, 0.85),
           density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
 def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.48, 0.8)
@@ -110,7 +128,9 @@ def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
             R = rot_z(s * a)
             c = np.array([0.0, yb - 0.03, t / 2]) + R @ np.array([0.0, L / 2, 0.0])
             base.append(S.box((0.03, L, t), center=c, R=R, bevel=0.003))
-    parts += [make_part("stand", "stand", [arm, hinge], mat), make_part("base", "base", base, mat)]
+    # the stand's arm, the tilt hinge it carries the display on, and the base
+    parts += [make_part("stand", "stand", arm, mat), make_part("hinge", "hinge", hinge, mat),
+              make_part("base", "base", base, mat)]
     return parts
 
 
@@ -201,15 +221,15 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 def _driver(k: int, r: float, x: float, z: float, y: float, tweeter: bool) -> Part:
-    """A driver of radius ``r`` on the front face (y) of a cabinet: surround ring and dust cap."""
+    """A driver of radius ``r`` on the front face (y) of a cabinet: its cone and surround (the
+    dust cap is a part of its own)."""
     dark = M.solid((0.06, 0.06, 0.07), "plastic", 0.7)
     rim = S.cylinder(r, 0.006, center=(x, y + 0.003, z), axis=(0, 1, 0), sections=20)
-    cap_r = r * (0.6 if tweeter else 0.32)
-    cap = S.ellipsoid((cap_r, cap_r * 0.5, cap_r), center=(x, y + 0.006, z), subdivisions=1)
-    return make_part(f"driver_{k}", "driver", [rim, cap], dark)
+    return make_part(f"driver_{k}", "driver", rim, dark)
 
 
-@register("speaker", parts=("body",), extra_parts=("driver", "plinth"), size_range=(0.2, 1.2),
+@register("speaker", parts=("body",), extra_parts=("driver", "plinth", "dust_cap", "port", "terminal", "badge", "foot"),
+          size_range=(0.2, 1.2),
           density=500, variants=("bookshelf", "floor_standing"))
 def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng) if rng.random() < 0.5 else _housing(rng)
@@ -236,6 +256,27 @@ def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(n_wf):
         parts.append(_driver(k + 1, r_wf, 0.0, z, y, tweeter=False))
         z -= 2 * r_wf + 0.02
+    # each driver's dust cap, the maker's badge; the bass reflex port and binding posts at the back
+    dark = M.solid((0.06, 0.06, 0.07), "plastic", 0.7)
+    for p in [q for q in parts if q.label == "driver"]:
+        c = p.mesh.bounds.mean(axis=0)
+        rr = (p.mesh.bounds[1, 0] - p.mesh.bounds[0, 0]) / 2
+        cap_r = rr * (0.6 if p.name == "driver_0" else 0.32)
+        parts.append(make_part(p.name.replace("driver", "dust_cap"), "dust_cap",
+                               S.ellipsoid((cap_r, cap_r * 0.5, cap_r), center=(c[0], y + 0.006, c[2]), subdivisions=1),
+                               M.solid((0.15, 0.15, 0.16), "plastic", 0.5)))
+    parts.append(make_part("port", "port", S.cylinder(0.025, 0.004, center=(0, -d / 2 - 0.002, z0 + (h - z0) * 0.6),
+                                                      axis=(0, 1, 0), sections=16), dark))
+    parts.append(make_part("badge", "badge", S.box((0.03, 0.002, 0.008), center=(0, y + 0.001, z0 + 0.02)),
+                           M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)))
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"terminal_{k}", "terminal", S.cylinder(0.006, 0.015, center=(sx * 0.015, -d / 2 - 0.0075, z0 + 0.08),
+                                                                       axis=(0, 1, 0), sections=10),
+                               M.solid((0.7, 0.1, 0.1) if k else (0.1, 0.1, 0.1), "metal", 0.3, 0.6)))
+    if variant == "bookshelf":
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"foot_{k}", "foot", S.cylinder(0.008, 0.003, center=(sx * (w / 2 - 0.015), sy * (d / 2 - 0.015), 0.0015),
+                                                                   sections=8), M.solid((0.1, 0.1, 0.1), "rubber", 0.9)))
     return parts
 
 

@@ -49,17 +49,26 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand"), size_range=(0.5, 2.0),
+@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull"),
+          size_range=(0.5, 2.0),
           density=400, variants=("venetian", "roller", "vertical"), placement="wall")
 def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
     W, H = rng.uniform(0.6, 1.6), rng.uniform(0.8, 1.6)
     mat = M.solid(M.jitter(rng, [(0.95, 0.95, 0.93), (0.75, 0.6, 0.42), (0.3, 0.3, 0.32)][int(rng.integers(3))], 0.02), "plastic", 0.5)
     parts = [make_part("headrail", "headrail", S.box((W, 0.05, 0.05), center=(0, 0.025, H - 0.025), bevel=0.004), mat)]
+    # the two mounting brackets at the headrail's ends, against the wall
+    metal = M.solid((0.8, 0.8, 0.8), "metal", 0.4, 0.8)
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"bracket_{k}", "bracket", S.box((0.02, 0.052, 0.056), center=(sx * (W / 2 - 0.03), 0.026, H - 0.028)),
+                               metal))
     if variant == "roller":
         parts.append(make_part("slat", "slat", S.box((W - 0.04, 0.003, H - 0.1), center=(0, 0.03, (H - 0.1) / 2 + 0.03)),
                                M.fabric(rng)))
         parts.append(make_part("bottom_rail", "bottom_rail", S.box((W - 0.03, 0.015, 0.03), center=(0, 0.03, 0.015)), mat))
         parts.append(make_part("cord", "cord", S.cylinder(0.002, H * 0.6, center=(W / 2 - 0.04, 0.06, H - 0.05 - H * 0.3), sections=6), mat))
+        # the weighted toggle at the end of the pull cord
+        parts.append(make_part("pull", "pull", S.cylinder(0.007, 0.03, center=(W / 2 - 0.04, 0.06, H - 0.05 - H * 0.6 - 0.015),
+                                                          sections=8), mat))
         return parts
     if variant == "vertical":
         n = int((W - 0.04) / 0.09)
@@ -75,6 +84,10 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         z = 0.04 + k * 0.025
         parts.append(make_part(f"slat_{k}", "slat", S.box((W - 0.02, 0.025, 0.0015), center=(0, 0.025, z + 0.01), R=tilt), mat))
     parts.append(make_part("bottom_rail", "bottom_rail", S.box((W - 0.01, 0.03, 0.02), center=(0, 0.025, 0.01)), mat))
+    # the ladder cords running down through the slats from the headrail to the bottom rail
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"cord_{k}", "cord", S.cylinder(0.0015, H - 0.07, center=(sx * W * 0.3, 0.025, 0.02 + (H - 0.07) / 2),
+                                                               sections=6), M.solid((0.9, 0.9, 0.88), "fabric", 0.8)))
     parts.append(make_part("wand", "wand", S.cylinder(0.005, H * 0.5, center=(-W / 2 + 0.03, 0.06, H - 0.05 - H * 0.25), sections=8), mat))
     return parts
 
@@ -118,7 +131,8 @@ def radiator(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("light_switch", parts=("plate", "rocker"), extra_parts=("screw",), size_range=(0.07, 0.16), density=900,
+@register("light_switch", parts=("plate", "rocker"), extra_parts=("screw", "bezel", "pilot_light"),
+          size_range=(0.07, 0.16), density=900,
           variants=("single", "double", "triple"), placement="wall")
 def light_switch(rng: np.random.Generator, variant: str) -> list[Part]:
     n = {"single": 1, "double": 2, "triple": 3}[variant]
@@ -128,17 +142,25 @@ def light_switch(rng: np.random.Generator, variant: str) -> list[Part]:
     h = 0.115 if n < 3 else 0.118
     parts = [make_part("plate", "plate", S.box((w, 0.008, h), center=(0, 0.004, h / 2), bevel=0.0015), plastic)]
     rw = (w - 0.02) / n
+    # the bezel framing the rockers, and each rocker's little locator light
+    parts.append(make_part("bezel", "bezel", [S.box((w - 0.016, 0.002, 0.004), center=(0, 0.009, h / 2 + sz * 0.0255))
+                                              for sz in (-1, 1)]
+                           + [S.box((0.004, 0.002, 0.047), center=(sx * (w / 2 - 0.01), 0.009, h / 2)) for sx in (-1, 1)],
+                           plastic))
     for k in range(n):
         x = -w / 2 + 0.01 + rw * (k + 0.5)
         parts.append(make_part(f"rocker_{k}", "rocker", S.box((rw * 0.8, 0.008, 0.045), center=(x, 0.011, h / 2), bevel=0.001,
                                                               R=rot((1, 0, 0), 0.06)), plastic))
+        parts.append(make_part(f"pilot_light_{k}", "pilot_light", S.box((0.004, 0.0012, 0.002), center=(x, 0.0155, h / 2 - 0.016)),
+                               M.solid((0.9, 0.5, 0.1), "glass", 0.1)))
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h / 2 + s * (h / 2 - 0.012)),
                                                                  axis=(0, 1, 0), sections=8), M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
     return parts
 
 
-@register("power_outlet", parts=("plate", "socket"), extra_parts=("screw", "usb_port"), size_range=(0.07, 0.16), density=900,
+@register("power_outlet", parts=("plate", "socket"), extra_parts=("screw", "usb_port", "slot", "ground_hole"),
+          size_range=(0.07, 0.16), density=900,
           variants=("single", "double", "usb"), placement="wall")
 def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 1 if variant == "single" else 2
@@ -149,6 +171,12 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
         x = 0.0 if n == 1 else (k - 0.5) * 0.068
         parts.append(make_part(f"socket_{k}", "socket", S.cylinder(0.022, 0.004, center=(x, 0.009, h / 2), axis=(0, 1, 0), sections=20),
                                plastic))
+        # the two blade slots and the round earth hole in the socket's face (dark, just proud of it)
+        for j, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"slot_{2 * k + j}", "slot", S.box((0.0025, 0.0008, 0.009),
+                                                                     center=(x + sx * 0.0065, 0.0114, h / 2 + 0.003)), black()))
+        parts.append(make_part(f"ground_hole_{k}", "ground_hole", S.cylinder(0.0025, 0.0008, center=(x, 0.0114, h / 2 - 0.009),
+                                                                            axis=(0, 1, 0), sections=8), black()))
     if variant == "usb":
         parts.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.006), center=(0, 0.0085, h * 0.15)), black()))
     parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h * 0.85), axis=(0, 1, 0), sections=8),
@@ -197,8 +225,10 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
                  make_part("louver", "louver", S.box((w * 0.8, 0.05, 0.006), center=(0, d - 0.02, 0.03), R=rot((1, 0, 0), 0.5)), shell),
                  make_part("display", "display", S.box((0.06, 0.004, 0.02), center=(w / 2 - 0.1, d + 0.01, h * 0.35)),
                            M.solid((0.1, 0.3, 0.5), "glass", 0.1)),
-                 make_part("vent", "vent", [S.box((w - 0.06, 0.04, 0.004), center=(0, d / 2 + 0.02 * i, h + 0.001)) for i in range(-2, 3)],
-                           M.solid((0.8, 0.8, 0.8), "plastic"))]
+                 # the intake grille's slats across the top
+                 *[make_part("vent" if i == -2 else f"vent_{i + 2}", "vent",
+                             S.box((w - 0.06, 0.012, 0.004), center=(0, d / 2 + 0.02 * i, h + 0.001)),
+                             M.solid((0.8, 0.8, 0.8), "plastic")) for i in range(-2, 3)]]
         parts.append(make_part("pipe", "pipe", S.tube([(-w / 2 + 0.05, 0.02, 0.02), (-w / 2 + 0.05, 0.02, -0.15)], 0.012), shell))
         return parts
     if variant == "window":

@@ -16,11 +16,12 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._casework import black
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
 
-@register("coaster", parts=("body",), extra_parts=("pad", "rim"),
+@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design"),
           size_range=(0.08, 0.12), density=800, variants=("round", "square", "rimmed"), placement="surface")
 def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.09, 0.105)
@@ -30,13 +31,18 @@ def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     t = rng.uniform(0.004, 0.008)
     if variant == "square":
         parts = [make_part("pad", "pad", S.box((s - 0.004, s - 0.004, tp), center=(0, 0, tp / 2)), cork),
-                 make_part("body", "body", S.box((s, s, t), center=(0, 0, tp + t / 2), bevel=0.001), mat)]
+                 make_part("body", "body", S.box((s, s, t), center=(0, 0, tp + t / 2), bevel=0.001), mat),
+                 # the printed design on the top face
+                 make_part("design", "design", S.box((s * 0.75, s * 0.75, 0.0004), center=(0, 0, tp + t + 0.0002)),
+                           M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.6))]
         return parts
     parts = [make_part("pad", "pad", S.cylinder(s / 2 - 0.002, tp, center=(0, 0, tp / 2), sections=24), cork),
              make_part("body", "body", S.cylinder(s / 2, t, center=(0, 0, tp + t / 2), sections=24), mat)]
     if variant == "rimmed":
         parts.append(make_part("rim", "rim", ring([(s / 2 - 0.004, tp + t), (s / 2, tp + t), (s / 2, tp + t + 0.004),
                                                    (s / 2 - 0.004, tp + t + 0.004)], sections=24), mat))
+    parts.append(make_part("design", "design", S.cylinder(s * 0.38, 0.0004, center=(0, 0, tp + t + 0.0002), sections=20),
+                           M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.6)))
     return parts
 
 
@@ -149,7 +155,7 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow"),
+@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow", "piping", "zipper", "tag", "foot"),
           size_range=(0.5, 1.2), density=150, variants=("round", "rectangular", "elevated"))
 def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     fab = M.fabric(rng)
@@ -160,12 +166,20 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         return [make_part("base", "base", S.cylinder(r, 0.03, center=(0, 0, 0.015), sections=24), fab),
                 make_part("bolster", "bolster", ring([(r * 0.65, 0.03), (r, 0.03), (r, hb), (r * 0.7, hb), (r * 0.62, hb * 0.6)],
                                                      sections=24), fab),
-                make_part("cushion", "cushion", S.cylinder(r * 0.64, 0.06, center=(0, 0, 0.06), sections=24), inner)]
+                make_part("cushion", "cushion", S.cylinder(r * 0.64, 0.06, center=(0, 0, 0.06), sections=24), inner),
+                # the piping round the base seam, the cover's zip at the back, the care tag
+                make_part("piping", "piping", ring([(r - 0.004, 0.024), (r + 0.006, 0.024), (r + 0.006, 0.036),
+                                                    (r - 0.004, 0.036)], sections=24), inner),
+                make_part("zipper", "zipper", S.box((0.3, 0.006, 0.012), center=(0, -r - 0.001, hb * 0.45)), black()),
+                make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(r * 0.7, r * 0.715, 0.06)),
+                          M.solid((0.95, 0.95, 0.92), "fabric", 0.8))]
     w, d = rng.uniform(0.6, 1.1), rng.uniform(0.5, 0.8)
     if variant == "elevated":  # a fabric sling on a frame with four short legs
         hl = rng.uniform(0.12, 0.2)
         metal = M.solid((0.2, 0.2, 0.22), "metal", 0.4, 0.7)
-        parts = legs4("leg", "leg", w=w, d=d, h=hl, size=0.03, mat=metal, round_=True)
+        fh = 0.012  # the rubber caps the legs stand on
+        parts = legs4("leg", "leg", w=w, d=d, h=hl - fh, size=0.03, mat=metal, round_=True, z0=fh)
+        parts += feet4("foot", w=w, d=d, r=0.017, h=fh, mat=black("rubber"), inset=-0.002)
         parts.append(make_part("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
                                + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal))
         parts.append(make_part("cushion", "cushion", S.box((w - 0.06, d - 0.06, 0.012), center=(0, 0, hl + 0.024)), fab))
@@ -180,6 +194,9 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"bolster_{k + 1}", "bolster", S.box((b, d - b, hb * 0.8 - 0.04), center=(sx * (w / 2 - b / 2), b / 2,
                                                                                                          0.04 + (hb * 0.8 - 0.04) / 2),
                                                                     bevel=0.04), fab))
+    parts.append(make_part("zipper", "zipper", S.box((w * 0.5, 0.006, 0.012), center=(0, -d / 2 - 0.001, 0.02)), black()))
+    parts.append(make_part("tag", "tag", S.box((0.003, 0.05, 0.03), center=(w / 2 + 0.0015, d * 0.3, 0.02)),
+                           M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
     return parts
 
 
@@ -194,7 +211,10 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         h = rng.uniform(0.08, 0.14)
         parts += legs4("leg", "leg", w=w, d=d, h=h - 0.012, size=0.02, mat=alu)
         parts.append(make_part("platform", "platform", S.box((w, d, 0.012), center=(0, 0, h - 0.006), bevel=0.002), M.wood(rng)))
-        parts.append(make_part("base", "base", [S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)) for sy in (-1, 1)], alu))
+        # the two runners the legs stand on, front and back
+        for k, sy in enumerate((-1, 1)):
+            parts.append(make_part("base" if k == 0 else "base_1", "base",
+                                   S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)), alu))
         return parts
     tilt = np.deg2rad(rng.uniform(15, 25))
     hf = 0.03  # the platform's front edge height
@@ -204,13 +224,16 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("lip", "lip", S.box((w * 0.8, 0.008, 0.018), center=(0, d / 2 * np.cos(tilt) - 0.004, hf + 0.009)), alu))
     parts.append(make_part("base", "base", S.box((w * 0.9, d * 0.9, 0.008), center=(0, 0, 0.004)), alu))
     if variant == "angled":
-        parts.append(make_part("arm", "arm", [S.box((0.012, d * 0.85, 0.012), center=(sx * w * 0.4, 0, (hf + hb_) / 2 - 0.01), R=R)
-                                               for sx in (-1, 1)] + [S.box((0.012, 0.012, hb_ - 0.01), center=(sx * w * 0.4, -d * 0.4 * np.cos(tilt),
-                                                                                                        (hb_ - 0.01) / 2 + 0.004))
-                                                                     for sx in (-1, 1)], alu))
+        # a side arm each side: a rail under the platform on an upright at the back
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm",
+                                   [S.box((0.012, d * 0.85, 0.012), center=(sx * w * 0.4, 0, (hf + hb_) / 2 - 0.01), R=R),
+                                    S.box((0.012, 0.012, hb_ - 0.01), center=(sx * w * 0.4, -d * 0.4 * np.cos(tilt),
+                                                                              (hb_ - 0.01) / 2 + 0.004))], alu))
     else:  # an arm on hinges: one strut from the base's front to the platform's back
-        parts.append(make_part("arm", "arm", [S.tube([(sx * w * 0.35, d * 0.35, 0.008), (sx * w * 0.35, -d * 0.35, hb_ - 0.012)], 0.008,
-                                                     sections=8) for sx in (-1, 1)], alu))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"arm_{k}", "arm", S.tube([(sx * w * 0.35, d * 0.35, 0.008), (sx * w * 0.35, -d * 0.35, hb_ - 0.012)],
+                                                             0.008, sections=8), alu))
         parts += hinge_parts("hinge", x=0.012, y=d * 0.35, z0=-w * 0.4, z1=w * 0.4, mat=alu, axis="x", radius=0.008, length=0.03)
     for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
         parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
@@ -218,7 +241,7 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher"),
+@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot"),
           size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
 def console_table(rng: np.random.Generator, variant: str) -> list:
     w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
@@ -232,11 +255,15 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"leg_{k}", "leg", S.box((0.04, d - 0.04, h - t), center=(sx * (w / 2 - 0.06), 0, (h - t) / 2)), wood))
         parts.append(make_part("stretcher", "stretcher", S.box((w - 0.16, 0.04, 0.06), center=(0, 0, 0.2)), wood))
-        parts.append(make_part("apron", "apron", apron[:2], wood))
+        parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate(apron[:2])]
+        # the feet under each trestle end
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"foot_{k}", "foot", S.box((0.08, d - 0.02, 0.03), center=(sx * (w / 2 - 0.06), 0, 0.015),
+                                                             bevel=0.004), wood))
         return parts
     parts += legs4("leg", "leg", w=w, d=d, h=h - t, size=0.04, mat=wood, inset=0.01)
     if variant == "drawers":
-        parts.append(make_part("apron", "apron", [apron[0]] + apron[2:], wood))
+        parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate([apron[0]] + apron[2:])]
         n = 2
         dw = (w - 0.1) / n
         for k in range(n):
@@ -251,7 +278,7 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
             parts += [prismatic(f"drawer_{k}_slide", "tabletop", f"drawer_{k}_box", travel=bd * 0.7),
                       mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"knob_{k}")]
     else:
-        parts.append(make_part("apron", "apron", apron, wood))
+        parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate(apron)]
         parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, rng.uniform(0.15, 0.25))), wood))
     return parts
 
@@ -276,7 +303,7 @@ def dais(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("paper_towel_holder", parts=("roll", "rod"), extra_parts=("bracket", "base", "arm", "cap"),
+@register("paper_towel_holder", parts=("roll", "rod"), extra_parts=("bracket", "base", "arm", "cap", "core", "tail", "screw", "foot"),
           size_range=(0.25, 0.4), density=300, variants=("under_cabinet", "wall", "countertop"), placement="wall")
 def paper_towel_holder(rng: np.random.Generator, variant: str) -> list[Part]:
     L, rr = rng.uniform(0.27, 0.28), rng.uniform(0.055, 0.065)
@@ -288,6 +315,14 @@ def paper_towel_holder(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("rod", "rod", S.cylinder(0.01, L + 0.03, center=(0, 0, 0.015 + (L + 0.03) / 2), sections=12), metal))
         parts.append(make_part("roll", "roll", S.cylinder(rr, L, center=(0, 0, 0.016 + L / 2), sections=20), towel))
         parts.append(make_part("cap", "cap", S.ellipsoid((0.016, 0.016, 0.016), center=(0, 0, 0.015 + L + 0.03), subdivisions=1), metal))
+        # the cardboard core showing at the roll's top, the loose sheet hanging down its side,
+        # and the rubber feet let into the base
+        parts.append(make_part("core", "core", ring([(0.02, 0.016 + L - 0.002), (0.022, 0.016 + L - 0.002), (0.022, 0.016 + L + 0.001),
+                                                      (0.02, 0.016 + L + 0.001)], sections=16), M.paper(rng)))
+        parts.append(make_part("tail", "tail", S.box((0.1, 0.0015, L * 0.4), center=(0, rr + 0.00075, 0.016 + L * 0.55)), towel))
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 3, endpoint=False)):
+            parts.append(make_part(f"foot_{k}", "foot", S.cylinder(0.008, 0.002, center=(0.06 * np.cos(a), 0.06 * np.sin(a), 0.001),
+                                                                   sections=8), black("rubber")))
         return parts
     # a rod across two arms; under a cabinet the bracket is on top, on a wall it is at the back
     arm = rr + 0.02
@@ -306,4 +341,16 @@ def paper_towel_holder(rng: np.random.Generator, variant: str) -> list[Part]:
         yc = 0.006 + arm
     parts.append(make_part("rod", "rod", S.cylinder(0.01, L + 0.03, center=(0, yc, zc), axis=(1, 0, 0), sections=12), metal))
     parts.append(make_part("roll", "roll", S.cylinder(rr, L, center=(0, yc, zc), axis=(1, 0, 0), sections=20), towel))
+    # the cardboard core at the roll's end, the loose sheet hanging from its front, and the
+    # screws holding the bracket
+    parts.append(make_part("core", "core", ring([(0.02, L / 2 - 0.002), (0.022, L / 2 - 0.002), (0.022, L / 2 + 0.001),
+                                                  (0.02, L / 2 + 0.001)], sections=16)
+                           .apply(np.array([[0, 0, 1, 0], [0, 1, 0, yc], [-1, 0, 0, zc], [0, 0, 0, 1.0]])), M.paper(rng)))
+    parts.append(make_part("tail", "tail", S.box((L * 0.9, 0.0015, zc * 0.6), center=(0, yc + rr + 0.00075, zc - zc * 0.3 + 0.001)), towel))
+    for k, sx in enumerate((-1, 1)):
+        if variant == "under_cabinet":
+            c, ax = (sx * L * 0.35, 0, 2 * arm - 0.0065), (0, 0, 1)
+        else:
+            c, ax = (sx * L * 0.35, 0.0065, zc), (0, 1, 0)
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.001, center=c, axis=ax, sections=8), metal))
     return parts

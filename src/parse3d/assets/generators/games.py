@@ -67,7 +67,9 @@ def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dart_board", parts=("board",), extra_parts=("rim", "dart", "cabinet", "door", "hinge", "number_ring"),
+@register("dart_board", parts=("board",),
+          extra_parts=("rim", "dart", "cabinet", "door", "hinge", "number_ring", "bullseye", "outer_bull",
+                       "treble_ring", "double_ring", "spider"),
           size_range=(0.4, 0.8), density=500, variants=("plain", "cabinet"), placement="wall")
 def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.218, 0.228)
@@ -102,6 +104,29 @@ def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.8)))
     parts.append(make_part("rim", "rim", S.cylinder(r + 0.004, 0.03, center=(0, y0 + 0.015, zc), axis=(0, 1, 0),
                                                     sections=40), black()))
+    # the scoring face: the red and green double and treble rings, the two bulls, and the wire
+    # spider dividing the twenty segments (regulation radii, scaled to the board)
+    k = r / 0.2255
+    face_y = y0 + 0.042
+    red, green = M.solid((0.75, 0.1, 0.1), "paper", 0.8), M.solid((0.1, 0.5, 0.2), "paper", 0.8)
+
+    def flat_ring(r0: float, r1: float, y: float) -> S.Shape:
+        a = np.linspace(0, 2 * np.pi, 20, endpoint=False)
+        rm = (r0 + r1) / 2
+        return S.tube(np.c_[rm * np.cos(a), np.full(20, y), zc + rm * np.sin(a)], (r1 - r0) / 2, sections=6, closed=True)
+
+    parts.append(make_part("double_ring", "double_ring", flat_ring(0.162 * k, 0.170 * k, face_y + 0.004 * k), red))
+    parts.append(make_part("treble_ring", "treble_ring", flat_ring(0.099 * k, 0.107 * k, face_y + 0.004 * k), green))
+    parts.append(make_part("outer_bull", "outer_bull", flat_ring(0.00635 * k, 0.016 * k, face_y + 0.0048 * k), green))
+    parts.append(make_part("bullseye", "bullseye", S.cylinder(0.00635 * k, 0.001, center=(0, face_y + 0.0005, zc), axis=(0, 1, 0),
+                                                              sections=12), red))
+    wires = []
+    for j in range(20):
+        a = np.pi / 2 + np.pi / 20 + 2 * np.pi * j / 20
+        c = (0.016 * k + 0.170 * k) / 2
+        wires.append(S.box(((0.170 - 0.016) * k, 0.0012, 0.001), center=(c * np.cos(a), face_y + 0.0014, zc + c * np.sin(a)),
+                           R=rot((0, 1, 0), -a)))
+    parts.append(make_part("spider", "spider", wires, M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
     for k in range(int(rng.integers(0, 4))):
         a = rng.uniform(0, 2 * np.pi)
         rr = rng.uniform(0.0, r * 0.7)
@@ -148,7 +173,7 @@ def foosball_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder"), size_range=(0.7, 1.3),
+@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot"), size_range=(0.7, 1.3),
           density=500, variants=("square", "octagon", "round"))
 def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.8, 1.2)
@@ -167,6 +192,10 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("tabletop", "tabletop", top, wood), make_part("felt", "felt", inlay, felt(rng))]
     lw = s * 0.62 if variant != "square" else s - 0.08
     parts += legs4("leg", "leg", w=lw, d=lw, h=h - t, size=0.05, mat=wood)
+    # a glide cap round each leg's foot (the legs still reach the floor)
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"foot_{i}", "foot", S.box((0.056, 0.056, 0.012), center=(sx * (lw / 2 - 0.025), sy * (lw / 2 - 0.025), 0.006),
+                                                         bevel=0.002), black("rubber")))
     ah = 0.08
     for i, (cx, cy, ax) in enumerate([(0, -lw / 2 + 0.01, 0), (0, lw / 2 - 0.01, 0), (-lw / 2 + 0.01, 0, 1),
                                       (lw / 2 - 0.01, 0, 1)]):
@@ -181,7 +210,7 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card"), size_range=(0.18, 0.55),
+@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules"), size_range=(0.18, 0.55),
           density=400, variants=("boxed", "set_up", "card_deck"), placement="surface")
 def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     art = M.paper(rng)
@@ -216,6 +245,13 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"piece_{k}", "piece",
                                S.frustum(0.011, 0.005, 0.025, center=(x, y, 0.004), sections=10),
                                M.solid(cols[k % 4], "plastic", 0.3)))
+    # two dice and the draw pile of cards on the board, the rules booklet beside the box
+    for k in range(2):
+        parts.append(make_part(f"die_{k}", "die", S.box((0.016, 0.016, 0.016), center=(b * 0.3 + k * 0.025, b * 0.3, 0.004 + 0.008),
+                                                      bevel=0.002, R=rot((0, 0, 1), 0.3 * k)), M.solid((0.95, 0.95, 0.93), "plastic", 0.4)))
+    parts.append(make_part("card", "card", S.box((0.06, 0.09, 0.012), center=(-b * 0.25, b * 0.25, 0.004 + 0.006)), art))
+    parts.append(make_part("rules", "rules", S.box((0.15, 0.21, 0.003), center=(b / 2 - w * 0.4 - 0.01, b * 0.12, 0.0055)),
+                           M.solid((0.95, 0.95, 0.93), "paper", 0.8)))
     return parts
 
 
@@ -247,7 +283,7 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye"),
+@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye", "nose", "paw_pad", "bow"),
           size_range=(0.15, 0.6), density=150, variants=("sitting", "small", "large"), placement="surface")
 def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     s = {"small": rng.uniform(0.16, 0.22), "sitting": rng.uniform(0.25, 0.35), "large": rng.uniform(0.45, 0.55)}[variant]
@@ -267,4 +303,14 @@ def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
                                                               center=(sx * 0.13 * s, 0.17 * s, 0.08 * s)), fur))
         parts.append(make_part(f"eye_{i}", "eye", S.ellipsoid((0.02 * s, 0.015 * s, 0.02 * s),
                                                               center=(sx * 0.07 * s, 0.165 * s, 0.76 * s)), black()))
+        # the felt pad on the sole of each foot
+        parts.append(make_part(f"paw_pad_{i}", "paw_pad", S.ellipsoid((0.05 * s, 0.012 * s, 0.05 * s),
+                                                                      center=(sx * 0.13 * s, 0.315 * s, 0.08 * s), subdivisions=1),
+                               M.solid((0.9, 0.85, 0.75), "fabric", 0.95)))
+    # the stitched nose on the snout and the ribbon bow at the neck
+    parts.append(make_part("nose", "nose", S.ellipsoid((0.025 * s, 0.015 * s, 0.018 * s), center=(0, 0.235 * s, 0.69 * s),
+                                                       subdivisions=1), black()))
+    bow = M.solid(M.jitter(rng, (0.75, 0.1, 0.15), 0.1), "fabric", 0.8)
+    parts.append(make_part("bow", "bow", [S.ellipsoid((0.05 * s, 0.02 * s, 0.03 * s), center=(sx * 0.045 * s, 0.17 * s, 0.55 * s),
+                                                      subdivisions=1) for sx in (-1, 1)], bow))
     return parts

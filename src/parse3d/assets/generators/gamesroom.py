@@ -22,7 +22,7 @@ _BALL_COLOURS = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.85, 0.1, 0.1), (0.4, 0.1,
                  (0.05, 0.45, 0.2), (0.5, 0.1, 0.1), (0.05, 0.05, 0.05)]
 
 
-@register("pool_ball", parts=("ball",), extra_parts=("stripe", "spot"),
+@register("pool_ball", parts=("ball",), extra_parts=("stripe", "spot", "number", "logo"),
           size_range=(0.05, 0.062), density=1700, variants=("solid", "striped", "cue"), placement="surface")
 def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
     r = 0.0286 if rng.random() < 0.8 else 0.0262  # 57.2 mm pool, 52.4 mm snooker
@@ -33,9 +33,18 @@ def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "striped":
         parts.append(make_part("stripe", "stripe", S.cylinder(r * 1.005, r * 0.9, center=(0, 0, r), axis=(0, 1, 0),
                                                               sections=24), colour))
-    if variant != "cue":  # the white disc with the number, facing the viewer
+    ink = M.solid((0.05, 0.05, 0.05), "plastic", 0.3)
+    if variant != "cue":  # the white discs with the number, on opposite sides, one facing the viewer
         parts.append(make_part("spot", "spot", S.cylinder(r * 0.35, 0.002, center=(0, r * 0.97, r), axis=(0, 1, 0),
                                                           sections=16), white))
+        parts.append(make_part("spot_1", "spot", S.cylinder(r * 0.35, 0.002, center=(0, -r * 0.97, r), axis=(0, 1, 0),
+                                                            sections=16), white))
+        for k, sy in enumerate((1, -1)):
+            parts.append(make_part(f"number_{k}", "number", S.box((r * 0.2, 0.0006, r * 0.35),
+                                                                  center=(0, sy * (r * 0.97 + 0.0013), r)), ink))
+    else:  # the maker's red dot
+        parts.append(make_part("logo", "logo", S.cylinder(r * 0.12, 0.001, center=(0, r * 0.998, r), axis=(0, 1, 0),
+                                                          sections=10), M.solid((0.8, 0.1, 0.1), "plastic", 0.3)))
     return parts
 
 
@@ -225,7 +234,7 @@ def game_controller(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("beanbag", parts=("body", "seat"), extra_parts=("back", "handle", "piping", "base"),
+@register("beanbag", parts=("body", "seat"), extra_parts=("back", "handle", "piping", "base", "zipper", "tag"),
           size_range=(0.6, 1.4), density=60, variants=("classic", "chair", "lounger"))
 def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     cover = M.fabric(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -239,6 +248,7 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
                                cover))
         parts.append(make_part("handle", "handle", S.tube([(-0.05, -L / 2 + 0.02, 0.2), (-0.05, -L / 2, 0.17), (0.05, -L / 2, 0.17),
                                                            (0.05, -L / 2 + 0.02, 0.2)], 0.008, sections=6), cover))
+        rx, ry, zc = r, L / 2, 0.12
     else:
         hb = rng.uniform(0.3, 0.4)
         parts.append(make_part("base", "base", S.ellipsoid((r, r, hb * 0.5), center=(0, 0, hb * 0.5), subdivisions=2), cover))
@@ -253,6 +263,15 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("handle", "handle", S.tube([(-0.05, -r * 0.55 - 0.15, hback * 0.75), (-0.05, -r * 0.55 - 0.175, hback * 0.7),
                                                            (0.05, -r * 0.55 - 0.175, hback * 0.7), (0.05, -r * 0.55 - 0.15, hback * 0.75)],
                                                           0.008, sections=6), cover))
+        rx, ry, zc = r, r, hb * 0.5
+    # the piping round the cover's widest seam, the safety zip at the back, the sewn-in tag
+    t = np.linspace(0, 2 * np.pi, 25)
+    seam = np.c_[rx * 1.005 * np.cos(t), ry * 1.005 * np.sin(t), np.full(len(t), zc)]
+    parts.append(make_part("piping", "piping", S.tube(seam[:-1], 0.007, sections=6, closed=True), cover))
+    parts.append(make_part("zipper", "zipper", S.box((0.25, 0.006, 0.012), center=(0, -ry * 0.97, zc * 0.55)),
+                           M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+    parts.append(make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(rx * 0.7, ry * 0.7 + 0.001, zc * 0.7)),
+                           M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
     return parts
 
 
@@ -269,7 +288,7 @@ _SHAPES = {
 }
 
 
-@register("neon_sign", parts=("tube", "backplate"), extra_parts=("standoff", "cable", "transformer", "frame"),
+@register("neon_sign", parts=("tube", "backplate"), extra_parts=("standoff", "cable", "transformer", "frame", "clip"),
           size_range=(0.3, 1.2), density=900, variants=("word", "shape", "framed"), placement="wall")
 def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
     glow = M.solid(M.jitter(rng, [(1.0, 0.2, 0.6), (0.2, 0.9, 1.0), (1.0, 0.6, 0.1), (0.6, 0.3, 1.0)][int(rng.integers(4))], 0.03)[:3],
@@ -285,18 +304,24 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
         w, h = s * 1.05, s * 1.05
         path = _sign_stroke(_SHAPES[name], h / 2, s, yt)
         parts.append(make_part("tube_0", "tube", segments(path, rt), glow))
+        holds = [path[i] for i in np.linspace(0, len(path) - 1, 4).astype(int)[:3]]
     else:  # a word: letters as zigzag strokes side by side
         n = int(rng.integers(3, 7))
         lw, lh = rng.uniform(0.08, 0.12), rng.uniform(0.14, 0.2)
         w, h = n * lw * 1.25 + 0.08, lh + 0.1
         x0 = -w / 2 + 0.04
+        holds = []
         for k in range(n):
             xa = x0 + k * lw * 1.25
             zz = rng.uniform(0.2, 0.8)
             stroke = [(xa, yt, 0.05), (xa, yt, 0.05 + lh), (xa + lw * 0.5, yt, 0.05 + lh * zz), (xa + lw, yt, 0.05 + lh),
                       (xa + lw, yt, 0.05)]
             parts.append(make_part(f"tube_{k}", "tube", segments(stroke, rt), glow))
+            holds.append((xa, yt, 0.05 + lh * 0.5))
     parts.append(make_part("backplate", "backplate", S.box((w, t, h), center=(0, t / 2, h / 2)), acrylic))
+    # the clear clips holding the tubes off the plate
+    for k, (x, _, z) in enumerate(holds):
+        parts.append(make_part(f"clip_{k}", "clip", S.box((0.008, yt - t, 0.01), center=(x, (t + yt) / 2, z)), acrylic))
     if variant == "framed":
         metal = M.solid((0.1, 0.1, 0.1), "metal", 0.4, 0.6)
         fr = [S.box((w + 0.04, 0.03, 0.02), center=(0, 0.015, -0.0 + 0.01 - 0.02)), S.box((w + 0.04, 0.03, 0.02), center=(0, 0.015, h + 0.01)),

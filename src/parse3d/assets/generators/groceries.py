@@ -16,7 +16,9 @@ from ..registry import register
 from ._household import ring
 
 
-@register("bottle", parts=("body", "cap"), extra_parts=("label",), size_range=(0.18, 0.36),
+@register("bottle", parts=("body", "cap"),
+          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "barcode"),
+          size_range=(0.18, 0.36),
           density=1000, variants=("wine", "water", "soda"), placement="surface")
 def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "wine":
@@ -52,10 +54,40 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     label = ring([(rl - 0.0005, z_label[0]), (rl + 0.0006, z_label[0]), (rl + 0.0006, z_label[1]),
                   (rl - 0.0005, z_label[1])], sections=24)
     parts.append(make_part("label", "label", label, M.paper(rng)))
+    # the barcode printed on the label, at the back (-Y)
+    zb = z_label[0] + (z_label[1] - z_label[0]) * 0.2
+    bh = min(0.02, (z_label[1] - z_label[0]) * 0.4)
+    parts.append(make_part("barcode", "barcode", S.box((0.018, 0.0008, bh),
+                                                      center=(0, -(rl + 0.001), zb + bh / 2)),
+                           Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper")))
+    # the finish below the cap: the glass lip (wine) or the support ledge and the tamper ring
+    # the cap leaves behind when opened (water, soda)
+    zc = float(cap.mesh.bounds[0, 2])
+    rn = float(np.interp(zc, [p[1] for p in prof], [p[0] for p in prof]))
+    if variant == "wine":
+        # the neck label (the collar below the capsule)
+        zn0 = h * 0.8
+        rn0 = float(np.interp(zn0 + 0.01, [p[1] for p in prof], [p[0] for p in prof]))
+        parts.append(make_part("neck_label", "neck_label", ring(
+            [(rn0 - 0.0006, zn0), (rn0 + 0.0006, zn0), (rn0 + 0.0006, zn0 + 0.02),
+             (rn0 - 0.0006, zn0 + 0.02)], sections=16), M.paper(rng)))
+        zr = zc - 0.006
+        parts.append(make_part("neck_ring", "neck_ring", ring(
+            [(rn - 0.001, zr), (rn + 0.0025, zr + 0.001), (rn + 0.0025, zr + 0.004),
+             (rn - 0.001, zr + 0.005)], sections=16), mat))
+    else:
+        parts.append(make_part("tamper_ring", "tamper_ring", ring(
+            [(rn - 0.0008, zc - 0.004), (rn + 0.0028, zc - 0.004), (rn + 0.0028, zc - 0.0005),
+             (rn - 0.0008, zc - 0.0005)], sections=16), cap_mat))
+        zr = zc - 0.009
+        parts.append(make_part("neck_ring", "neck_ring", ring(
+            [(rn - 0.001, zr), (rn + 0.006, zr + 0.0008), (rn + 0.006, zr + 0.0022),
+             (rn - 0.001, zr + 0.003)], sections=16), mat))
     return parts
 
 
-@register("canned_food", parts=("body",), extra_parts=("label",), size_range=(0.06, 0.18),
+@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam"),
+          size_range=(0.06, 0.18),
           density=1100, variants=("standard", "tall", "flat"), placement="surface")
 def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = {"standard": (rng.uniform(0.036, 0.042), rng.uniform(0.1, 0.12)),
@@ -69,10 +101,26 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     label = ring([(r - bead - 0.0002, 0.0085), (r - 0.0002, 0.0085), (r - 0.0002, h - 0.0085),
                   (r - bead - 0.0002, h - 0.0085)], sections=28)
     parts.append(make_part("label", "label", label, M.paper(rng)))
+    # the label's glued overlap, at the back
+    parts.append(make_part("seam", "seam", S.box((0.006, 0.0006, h - 0.02),
+                                                center=(0, -(r - 0.0002) + 0.0003, h / 2)),
+                           M.paper(rng)))
+    # the lid panel on top, with the ring-pull's rivet and tab on it
+    tin = M.metal(rng)
+    parts.append(make_part("lid", "lid", S.cylinder(r - 0.004, 0.0006, center=(0, 0, h + 0.0003),
+                                                    sections=24), tin))
+    parts.append(make_part("rivet", "rivet", S.cylinder(0.0025, 0.0008, center=(0, 0, h + 0.001),
+                                                        sections=10), tin))
+    tab_l = min(0.022, r * 0.6)
+    parts.append(make_part("pull_tab", "pull_tab", S.box((0.011, tab_l, 0.0006),
+                                                         center=(0, tab_l / 2 - 0.004, h + 0.0009)),
+                           tin))
     return parts
 
 
-@register("cereal_box", parts=("body",), extra_parts=("label", "flap"), size_range=(0.2, 0.4),
+@register("cereal_box", parts=("body",),
+          extra_parts=("label", "flap", "logo", "nutrition_panel", "barcode", "tuck_tab"),
+          size_range=(0.2, 0.4),
           density=250, variants=("standard", "family", "slim"), placement="surface")
 def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
     """Width along x, the large printed face at +Y, thin along y."""
@@ -87,10 +135,22 @@ def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
     # a printed panel on the front face (+Y)
     panel = S.box((w * 0.8, 0.001, h * 0.55), center=(0, d / 2 + 0.0005, h * 0.45))
     parts.append(make_part("label", "label", panel, M.paper(rng)))
+    # the brand's logo band above the picture, the nutrition facts on the right side, the
+    # barcode low on the left side and the tuck tab that locks the top flap at the front
+    parts.append(make_part("logo", "logo", S.box((w * 0.7, 0.0008, h * 0.12),
+                                                 center=(0, d / 2 + 0.0004, h * 0.83)), M.paper(rng)))
+    white = Material((0.95, 0.95, 0.93, 1.0), 0.7, 0.0, "paper")
+    parts.append(make_part("nutrition_panel", "nutrition_panel",
+                           S.box((0.001, d * 0.8, h * 0.4), center=(w / 2 + 0.0005, 0, h * 0.45)), white))
+    parts.append(make_part("barcode", "barcode",
+                           S.box((0.001, d * 0.6, 0.025), center=(-w / 2 - 0.0005, 0, h * 0.12)), white))
+    parts.append(make_part("tuck_tab", "tuck_tab",
+                           S.box((w * 0.3, 0.002, 0.012), center=(0, d / 2 - 0.002, h - 0.007)), card))
     return parts
 
 
-@register("detergent_bottle", parts=("body", "cap"), extra_parts=("handle",),
+@register("detergent_bottle", parts=("body", "cap"),
+          extra_parts=("handle", "label", "back_label", "neck_ring", "flip_lid"),
           size_range=(0.18, 0.36), density=1000, variants=("jug", "oval"), placement="surface")
 def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.plastic(rng)
@@ -113,6 +173,8 @@ def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
                          [0, -d / 2 + 0.01, hb - 0.07]])
         parts.append(make_part("handle", "handle", S.tube(path, 0.012, sections=10), mat))
         cap = S.cylinder(0.022, 0.035, center=(0, neck_y, hb + sh + 0.028 + 0.0175), sections=16)
+        zn, rn, cn = hb + sh + 0.024, 0.018, (0, neck_y)
+        lw, lh, ly = w * 0.75, hb * 0.6, d / 2
     else:
         w, d, h = rng.uniform(0.09, 0.12), rng.uniform(0.05, 0.065), rng.uniform(0.2, 0.26)
         s = np.array([w / 2, d / 2, 1.0])
@@ -122,11 +184,30 @@ def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts = [make_part("body", "body", body, mat)]
         cap = S.lathe([(0.017, h * 0.92), (0.017, h * 0.92 + 0.03), (0.012, h * 0.92 + 0.036)],
                       sections=16)
-    parts.append(make_part("cap", "cap", cap, M.plastic(rng)))
+        zn, rn, cn = h * 0.92 - 0.004, 0.3 * w / 2, (0, 0)
+        lw, lh, ly = w * 0.7, h * 0.45, d / 2
+        # the flip-top lid hinged at the back of the cap
+        parts.append(make_part("flip_lid", "flip_lid", S.box((0.014, 0.016, 0.005),
+                                                             center=(0, -0.002, h * 0.92 + 0.031)),
+                               M.plastic(rng)))
+    cap_mat = M.plastic(rng)
+    parts.append(make_part("cap", "cap", cap, cap_mat))
+    # the collar under the cap, and the printed labels front and back
+    parts.append(make_part("neck_ring", "neck_ring",
+                           S.cylinder(rn + 0.003, 0.004, center=(*cn, zn), sections=16), mat))
+    if variant == "jug":
+        front = S.box((lw, 0.001, lh), center=(0, ly + 0.0005, hb * 0.45))
+        back = S.box((lw * 0.8, 0.001, lh * 0.7), center=(0, -ly - 0.0005, hb * 0.4))
+    else:
+        # the oval body's flattest faces are at +-Y: its half-depth at mid height
+        front = S.box((lw, 0.001, lh), center=(0, ly + 0.0005, h * 0.38))
+        back = S.box((lw * 0.8, 0.001, lh * 0.7), center=(0, -ly - 0.0005, h * 0.36))
+    parts.append(make_part("label", "label", front, M.paper(rng)))
+    parts.append(make_part("back_label", "back_label", back, M.paper(rng)))
     return parts
 
 
-@register("apple", parts=("body",), extra_parts=("stem", "leaf"), size_range=(0.06, 0.095),
+@register("apple", parts=("body",), extra_parts=("stem", "leaf", "calyx", "sticker"), size_range=(0.06, 0.095),
           density=850, variants=("round", "conical", "leafy"), placement="surface")
 def apple(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.032, 0.042)
@@ -150,4 +231,12 @@ def apple(rng: np.random.Generator, variant: str) -> list[Part]:
         leaf = leaf.apply(np.array([[np.cos(0.4), 0, -np.sin(0.4), 0], [0, 1, 0, 0],
                                     [np.sin(0.4), 0, np.cos(0.4), -0.004], [0, 0, 0, 1]]))
         parts.append(make_part("leaf", "leaf", leaf, M.plant(rng)))
+    # the dried calyx in the dimple at the bottom, and the grocer's price sticker on the side
+    parts.append(make_part("calyx", "calyx", S.cylinder(r * 0.14, 0.002, center=(0, 0, 0.001), sections=8),
+                           M.food(rng, (0.3, 0.22, 0.12))))
+    zs = h * 0.5
+    rs = float(np.interp(zs, [p[1] for p in prof], [p[0] for p in prof]))
+    parts.append(make_part("sticker", "sticker", S.cylinder(0.009, 0.0008, center=(0, rs - 0.0006, zs),
+                                                            axis=(0, 1, 0), sections=10),
+                           Material((0.95, 0.85, 0.2, 1.0), 0.7, 0.0, "paper")))
     return parts
