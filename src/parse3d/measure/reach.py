@@ -148,18 +148,37 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
 def _slab_corners(slabs, M: np.ndarray, t0: np.ndarray) -> list:
     """With two slab directions, the four lines where their planes meet, in the asset frame:
     ``[(point, direction)]``."""
-    corners = []
-    if len(slabs) == 2:
-        (a1, l1, h1), (a2, l2, h2) = slabs
+    if len(slabs) != 2:
+        return []
+    w, points = _slab_lines(slabs)
+    if w is None:
+        return []
+    Mi = np.linalg.inv(M)
+    wl = Mi @ w
+    return [(Mi @ (P - t0), wl) for P in points]
+
+
+_LINES: dict[tuple, tuple] = {}
+
+
+def _slab_lines(slabs) -> tuple:
+    """``(w, points)`` of two slabs: the direction ``w`` of the lines where their planes meet
+    and a world point on each of the four (None, [] when the slabs are parallel); kept per
+    slabs (a face is checked again and again at other poses of the child)."""
+    (a1, l1, h1), (a2, l2, h2) = slabs
+    key = (np.asarray(a1, float).tobytes(), np.asarray(a2, float).tobytes(), l1, h1, l2, h2)
+    got = _LINES.get(key)
+    if got is None:
         w = np.cross(a1, a2)
         if np.linalg.norm(w) > 1e-9:
-            Mi = np.linalg.inv(M)
             S = np.array([a1, a2, w])
-            wl = Mi @ w
-            for c1 in (l1, h1):
-                for c2 in (l2, h2):
-                    corners.append((Mi @ (np.linalg.solve(S, [c1, c2, 0.0]) - t0), wl))
-    return corners
+            got = (w, [np.linalg.solve(S, [c1, c2, 0.0]) for c1 in (l1, h1) for c2 in (l2, h2)])
+        else:
+            got = (None, [])
+        if len(_LINES) > 4096:
+            _LINES.clear()
+        _LINES[key] = got
+    return got
 
 
 def _clipped_candidates(V: np.ndarray, piece, slabs, corners, M: np.ndarray, t0: np.ndarray):
@@ -323,6 +342,14 @@ def mounted_parts(parent, face_parts, surface, T: np.ndarray) -> tuple[list, flo
     of its plane and over its extent: an amplifier's grille and knobs on its cabinet's front),
     and how far the frontmost of those covering at least :data:`COVERING` of the face reaches
     in front of its plane (the grille, not a knob; 0 with none). ``T``: the parent's pose."""
+    T = np.asarray(T, float)
+    key = (id(parent.asset), tuple(p.name for p in face_parts), T.tobytes(),
+           np.asarray(surface.origin, float).tobytes(), np.asarray(surface.normal, float).tobytes(),
+           np.asarray(surface.u, float).tobytes(), np.asarray(surface.v, float).tobytes(),
+           surface.polygon.bounds, float(surface.area))
+    got = _MOUNTED.get(key)
+    if got is not None and got[0] is parent.asset:
+        return list(got[1]), got[2]
     own = {p.name for p in face_parts}
     slabs = face_slabs(surface)
     out, front = [], 0.0
@@ -341,4 +368,12 @@ def mounted_parts(parent, face_parts, surface, T: np.ndarray) -> tuple[list, flo
                               slabs[:2])
         if (u1 - u0) * (v1 - v0) >= COVERING * surface.area:
             front = max(front, float(h.max()))
+    if len(_MOUNTED) > 1024:
+        _MOUNTED.clear()
+    _MOUNTED[key] = (parent.asset, tuple(out), front)  # the asset held keeps its id valid
     return out, front
+
+
+#: :func:`mounted_parts` per parent asset, face parts, pose and face (a face is checked again
+#: for every pose of what leans on it).
+_MOUNTED: dict[tuple, tuple] = {}
