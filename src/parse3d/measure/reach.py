@@ -83,18 +83,20 @@ def _planes(V: np.ndarray, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 _PACKED: dict[int, tuple] = {}
 
 
-def _packed(pieces) -> tuple[np.ndarray, np.ndarray]:
-    """All vertices of ``pieces`` stacked, ``(N, 3)``, and where each piece's start, ``(P,)``:
-    made once per pieces list (the lists of :func:`piece_data` are cached and reused)."""
+def _packed(pieces) -> tuple[np.ndarray, np.ndarray, list[int]]:
+    """All vertices of ``pieces`` stacked, ``(N, 3)``, where each piece starts, ``(P,)``, and
+    the P + 1 bounds as ints: made once per pieces list (the lists of :func:`piece_data` are
+    cached and reused)."""
     got = _PACKED.get(id(pieces))
     if got is not None and got[0] is pieces:
-        return got[1], got[2]
+        return got[1]
     if len(_PACKED) > 4096:
         _PACKED.clear()
     V = np.vstack([pc[0] for pc in pieces]) if pieces else np.zeros((0, 3))
-    starts = np.cumsum([0] + [len(pc[0]) for pc in pieces[:-1]]).astype(np.intp)
-    _PACKED[id(pieces)] = (pieces, V, starts)  # holding the list keeps its id valid
-    return V, starts
+    cuts = np.cumsum([0] + [len(pc[0]) for pc in pieces]).astype(np.intp)
+    out = (V, cuts[:-1], cuts.tolist())
+    _PACKED[id(pieces)] = (pieces, out)  # holding the list keeps its id valid
+    return out
 
 
 def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarray,
@@ -108,7 +110,7 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
     M, t0 = T[:3, :3], T[:3, 3]
     if not pieces:
         return None
-    Vall, starts = _packed(pieces)
+    Vall, starts, cuts = _packed(pieces)
     W = Vall @ M.T + t0
     lower = np.minimum.reduceat((W - origin) @ normal, starts)
     lo_box, hi_box = np.minimum.reduceat(W, starts), np.maximum.reduceat(W, starts)
@@ -118,18 +120,19 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
     for a, lo, hi in slabs:
         r, c = half @ np.abs(a), mid @ a
         live &= (c + r >= lo - 1e-7) & (c - r <= hi + 1e-7)
-    order = [int(i) for i in np.argsort(lower, kind="stable") if live[i]]
+    order = np.argsort(lower, kind="stable")
+    order = order[live[order]].tolist()
     if not order:
         return None
-    ends = np.append(starts[1:], len(W))
+    low = lower.tolist()
     corners = _slab_corners(slabs, M, t0)
     keep_x, keep_d = [], []
     best = np.inf
     margin = 0.0 if band is None else band
     for i in order:
-        if lower[i] > best + margin:
+        if low[i] > best + margin:
             break  # no point of this piece (or the rest) comes nearer
-        X = _clipped_candidates(W[starts[i]:ends[i]], pieces[i], slabs, corners, M, t0)
+        X = _clipped_candidates(W[cuts[i]:cuts[i + 1]], pieces[i], slabs, corners, M, t0)
         if X is None:
             continue
         dist = (X - origin) @ normal
