@@ -257,9 +257,9 @@ def standing_label(label: str) -> str:
 _FCL: dict[tuple, list] = {}
 
 
-def _fcl_pieces(pieces, scale: float) -> list:
-    """FCL convex shapes of ``pieces`` scaled by ``scale`` (FCL moves rigidly only), each with
-    the 8 corners of its box, made once per pieces list and scale."""
+def _fcl_pieces(pieces, scale: float) -> tuple[list, np.ndarray]:
+    """FCL convex shapes of ``pieces`` scaled by ``scale`` (FCL moves rigidly only) and the 8
+    corners of each one's box, ``(P, 8, 3)``, made once per pieces list and scale."""
     import fcl
 
     key = (id(pieces), round(float(scale), 9))
@@ -278,6 +278,7 @@ def _fcl_pieces(pieces, scale: float) -> list:
                             for z in (lo[2], hi[2])])
         geom = fcl.Convex(V, len(F), np.c_[np.full(len(F), 3), F].ravel().astype(np.int32))
         out.append((geom, corners))
+    out = ([g for g, _ in out], np.stack([c for _, c in out]) if out else np.zeros((0, 8, 3)))
     _FCL[key] = (pieces, out)  # holding the list keeps its id valid
     return out
 
@@ -295,12 +296,12 @@ def _posed(pieces, T: np.ndarray) -> tuple:
         return got[1]
     s = float(np.cbrt(abs(np.linalg.det(T[:3, :3]))))
     R, t = T[:3, :3] / s, np.array(T[:3, 3], float)
-    shapes = _fcl_pieces(pieces, s)
+    shapes, corners = _fcl_pieces(pieces, s)
     if not shapes:
         out = [], np.zeros((0, 3)), np.zeros((0, 3)), R, t
     else:
-        C = np.stack([c for _, c in shapes]) @ R.T + t
-        out = [g for g, _ in shapes], C.min(axis=1), C.max(axis=1), R, t
+        C = corners @ R.T + t
+        out = shapes, C.min(axis=1), C.max(axis=1), R, t
     if len(_POSED) > 256:
         _POSED.clear()
     _POSED[key] = (pieces, out)  # holding the list keeps its id valid
@@ -324,9 +325,12 @@ def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
     best = np.inf
     req = fcl.DistanceRequest()
     Ta, Tb = fcl.Transform(Ra, ta), fcl.Transform(Rb, tb)
+    oa: dict[int, object] = {}
+    ob: dict[int, object] = {}
     for i, j in zip(*np.nonzero(near), strict=True):
-        d = fcl.distance(fcl.CollisionObject(ga[i], Ta), fcl.CollisionObject(gb[j], Tb), req,
-                         fcl.DistanceResult())
+        a = oa.get(i) or oa.setdefault(i, fcl.CollisionObject(ga[i], Ta))
+        b = ob.get(j) or ob.setdefault(j, fcl.CollisionObject(gb[j], Tb))
+        d = fcl.distance(a, b, req, fcl.DistanceResult())
         best = min(best, max(float(d), 0.0))
         if best == 0.0:
             return 0.0
