@@ -28,8 +28,9 @@ Prints one table with a row per corpus, each scene run through the project's per
     object none of whose categories is known is left out with what rests on it and the
     relations naming it, and a part label its categories do not know is dropped from the
     reference (``ON table:surface`` becomes ``ON table``); how many were taken out is printed.
-    The row adds tracebacks (scenes whose solve raised), relaxed relations per scene, and the
-    median and largest wall time of the pipeline (solve, settle, contacts).
+    The row adds tracebacks (scenes whose solve raised), relaxed relations per scene, the
+    median and largest wall time of the pipeline (solve, settle, contacts) and its median and
+    largest CPU time (``cpu med``, ``cpu max``: less noisy than wall time on a shared machine).
 ``cost of failure``
     a scene (examples/study.json) and the same scene plus one wardrobe ON a mug: the ratio of
     their solve times (goal: at most 3).
@@ -353,6 +354,8 @@ def summarize(cases: list[dict]) -> dict[str, dict]:
                     "relaxed": g("relaxed") / len(rs),
                     "wall_median": float(np.median([c.get("wall_s", 0.0) for c in rs])),
                     "wall_max": max(c.get("wall_s", 0.0) for c in rs),
+                    "cpu_median": float(np.median([c.get("cpu_s", 0.0) for c in rs])),
+                    "cpu_max": max(c.get("cpu_s", 0.0) for c in rs),
                     "obj_s": g("placed") / solve_s if solve_s else float("nan")}
     return out
 
@@ -360,7 +363,7 @@ def summarize(cases: list[dict]) -> dict[str, dict]:
 def print_table(now: dict, before: dict | None, rev: str | None) -> None:
     head = (f"{'corpus':18s} {'run':>8s} {'scenes':>6s} {'objects':>7s} {'placed%':>8s} "
             f"{'complete%':>9s} {'support%':>8s} {'all%':>6s} {'fallen':>6s} {'obj/s':>7s} "
-            f"{'tracebk':>7s} {'relaxed':>7s} {'wall med':>8s} {'wall max':>8s}")
+            f"{'tracebk':>7s} {'relaxed':>7s} {'wall med':>8s} {'wall max':>8s} {'cpu med':>7s} {'cpu max':>7s}")
     print(head)
     print("-" * len(head))
     for row in ROWS:
@@ -372,7 +375,8 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
             print(f"{row if label == 'now' else '':18s} {label[:8]:>8s} {s['scenes']:6d} "
                   f"{s['objects']:7d} {s['placed']:8.2f} {s['complete']:9.1f} {s['support']:8.2f} "
                   f"{s['all']:6.2f} {s['fallen']:6d} {s['obj_s']:7.1f} {s['errors']:7d} "
-                  f"{s['relaxed']:7.2f} {s['wall_median']:8.2f} {s['wall_max']:8.2f}{err}")
+                  f"{s['relaxed']:7.2f} {s['wall_median']:8.2f} {s['wall_max']:8.2f} "
+                  f"{s['cpu_median']:7.2f} {s['cpu_max']:7.2f}{err}")
     for label, res in (("now", now), (rev or "", before)):
         if res is None:
             continue

@@ -271,6 +271,10 @@ def joint_order(joints: list[Joint]) -> list[Joint]:
     return out
 
 
+#: :meth:`Asset.parts_by_label` results: ``{(id(asset), label): (asset, parts, n, found)}``.
+_BY_LABEL: dict[tuple, tuple] = {}
+
+
 @dataclass
 class Asset:
     """A part-labelled 3D asset in its canonical frame.
@@ -358,15 +362,24 @@ class Asset:
         a rank however they are modelled. A 2 x 2 cooktop: back-left, front-left, back-right,
         front-right.
         """
+        # kept per asset, parts list and label (the checks and the solver ask again and again)
+        key = (id(self), label)
+        got = _BY_LABEL.get(key)
+        if got is not None and got[0] is self and got[1] is self.parts \
+                and got[2] == len(self.parts):
+            return list(got[3])
         members = self.label_groups.get(label, ())
         ps = [p for p in self.parts if p.label == label or p.label in members]
-        if len(ps) < 2:
-            return ps
-        b = np.array([p.bounds for p in ps])
-        keys = np.c_[b[:, 0, 2], b.mean(axis=1)[:, :2]]
-        ranks = np.stack([_tolerant_ranks(keys[:, j], 0.01) for j in range(3)], axis=1)
-        order = sorted(range(len(ps)), key=lambda i: (*ranks[i], i))
-        return [ps[i] for i in order]
+        if len(ps) >= 2:
+            b = np.array([p.bounds for p in ps])
+            keys = np.c_[b[:, 0, 2], b.mean(axis=1)[:, :2]]
+            ranks = np.stack([_tolerant_ranks(keys[:, j], 0.01) for j in range(3)], axis=1)
+            order = sorted(range(len(ps)), key=lambda i: (*ranks[i], i))
+            ps = [ps[i] for i in order]
+        if len(_BY_LABEL) > 8192:
+            _BY_LABEL.clear()
+        _BY_LABEL[key] = (self, self.parts, len(self.parts), tuple(ps))
+        return ps
 
     def mesh(self) -> trimesh.Trimesh:
         """All parts as one mesh (a fresh copy)."""

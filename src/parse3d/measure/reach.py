@@ -80,6 +80,25 @@ def _planes(V: np.ndarray, F: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return n, (n * a).sum(axis=1)
 
 
+_PACKED: dict[int, tuple] = {}
+
+
+def _packed(pieces) -> tuple[np.ndarray, np.ndarray, list[int]]:
+    """All vertices of ``pieces`` stacked, ``(N, 3)``, where each piece starts, ``(P,)``, and
+    the P + 1 bounds as ints: made once per pieces list (the lists of :func:`piece_data` are
+    cached and reused)."""
+    got = _PACKED.get(id(pieces))
+    if got is not None and got[0] is pieces:
+        return got[1]
+    if len(_PACKED) > 4096:
+        _PACKED.clear()
+    V = np.vstack([pc[0] for pc in pieces]) if pieces else np.zeros((0, 3))
+    cuts = np.cumsum([0] + [len(pc[0]) for pc in pieces]).astype(np.intp)
+    out = (V, cuts[:-1], cuts.tolist())
+    _PACKED[id(pieces)] = (pieces, out)  # holding the list keeps its id valid
+    return out
+
+
 def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarray,
                      slabs: list[tuple[np.ndarray, float, float]], band: float | None = None):
     """Smallest signed distance ``(x - origin) . normal`` over the pieces (asset frame, moved
@@ -89,69 +108,33 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
     points)``: also the (K, 3) candidate points within ``band`` of the smallest distance (the
     band of the child that touches)."""
     M, t0 = T[:3, :3], T[:3, 3]
-    Mi = np.linalg.inv(M)
-    corners = []
-    if len(slabs) == 2:  # lines where two slab planes meet, in the asset frame
-        (a1, l1, h1), (a2, l2, h2) = slabs
-        w = np.cross(a1, a2)
-        if np.linalg.norm(w) > 1e-9:
-            S = np.array([a1, a2, w])
-            wl = Mi @ w
-            for c1 in (l1, h1):
-                for c2 in (l2, h2):
-                    corners.append((Mi @ (np.linalg.solve(S, [c1, c2, 0.0]) - t0), wl))
-    todo = []
-    for piece in pieces:
-        V = piece[0] @ M.T + t0
-        dv = (V - origin) @ normal
-        todo.append((float(dv.min()), V, piece))
-    todo.sort(key=lambda x: x[0])
+    if not pieces:
+        return None
+    Vall, starts, cuts = _packed(pieces)
+    W = Vall @ M.T + t0
+    lower = np.minimum.reduceat((W - origin) @ normal, starts)
+    lo_box, hi_box = np.minimum.reduceat(W, starts), np.maximum.reduceat(W, starts)
+    # pieces whose box misses a slab reach nothing in the prism
+    live = np.ones(len(starts), bool)
+    half, mid = (hi_box - lo_box) / 2, (hi_box + lo_box) / 2
+    for a, lo, hi in slabs:
+        r, c = half @ np.abs(a), mid @ a
+        live &= (c + r >= lo - 1e-7) & (c - r <= hi + 1e-7)
+    order = np.argsort(lower, kind="stable")
+    order = order[live[order]].tolist()
+    if not order:
+        return None
+    low = lower.tolist()
+    corners = _slab_corners(slabs, M, t0)
     keep_x, keep_d = [], []
     best = np.inf
     margin = 0.0 if band is None else band
-    for lower, V, (_, _, E, A, d) in todo:
-        if lower > best + margin:
+    for i in order:
+        if low[i] > best + margin:
             break  # no point of this piece (or the rest) comes nearer
-        lo_box, hi_box = V.min(axis=0), V.max(axis=0)
-        skip = False
-        for a, lo, hi in slabs:  # the piece's box misses the slab
-            r = np.abs(a) @ ((hi_box - lo_box) / 2)
-            c = ((hi_box + lo_box) / 2) @ a
-            if c + r < lo - 1e-7 or c - r > hi + 1e-7:
-                skip = True
-                break
-        if skip:
+        X = _clipped_candidates(W[cuts[i]:cuts[i + 1]], pieces[i], slabs, corners, M, t0)
+        if X is None:
             continue
-        cands = [V]
-        for a, lo, hi in slabs:  # edges crossing a slab plane
-            if not len(E):
-                continue
-            p, q = V[E[:, 0]], V[E[:, 1]]
-            sp, sq = p @ a, q @ a
-            for c in (lo, hi):
-                m = (sp - c) * (sq - c) < 0
-                if m.any():
-                    tt = (c - sp[m]) / (sq[m] - sp[m])
-                    cands.append(p[m] + tt[:, None] * (q[m] - p[m]))
-        if corners and len(A):
-            for p0, wl in corners:
-                aw, r = A @ wl, d - A @ p0
-                if np.any((np.abs(aw) < 1e-12) & (r < -1e-9)):
-                    continue
-                pos, neg = aw > 1e-12, aw < -1e-12
-                t1 = np.min(r[pos] / aw[pos]) if pos.any() else np.inf
-                tb = np.max(r[neg] / aw[neg]) if neg.any() else -np.inf
-                if tb <= t1 and np.isfinite(tb) and np.isfinite(t1):
-                    ends = np.array([p0 + tb * wl, p0 + t1 * wl])
-                    cands.append(ends @ M.T + t0)
-        X = np.vstack(cands)
-        inside = np.ones(len(X), bool)
-        for a, lo, hi in slabs:
-            sa = X @ a
-            inside &= (sa >= lo - 1e-7) & (sa <= hi + 1e-7)
-        if not inside.any():
-            continue
-        X = X[inside]
         dist = (X - origin) @ normal
         keep_x.append(X)
         keep_d.append(dist)
@@ -163,6 +146,76 @@ def nearest_in_prism(pieces, T: np.ndarray, normal: np.ndarray, origin: np.ndarr
     if band is None:
         return float(dist[k]), X[k]
     return float(dist[k]), X[k], X[dist <= dist[k] + band]
+
+
+def _slab_corners(slabs, M: np.ndarray, t0: np.ndarray) -> list:
+    """With two slab directions, the four lines where their planes meet, in the asset frame:
+    ``[(point, direction)]``."""
+    if len(slabs) != 2:
+        return []
+    w, points = _slab_lines(slabs)
+    if w is None:
+        return []
+    Mi = np.linalg.inv(M)
+    wl = Mi @ w
+    return [(Mi @ (P - t0), wl) for P in points]
+
+
+_LINES: dict[tuple, tuple] = {}
+
+
+def _slab_lines(slabs) -> tuple:
+    """``(w, points)`` of two slabs: the direction ``w`` of the lines where their planes meet
+    and a world point on each of the four (None, [] when the slabs are parallel); kept per
+    slabs (a face is checked again and again at other poses of the child)."""
+    (a1, l1, h1), (a2, l2, h2) = slabs
+    key = (np.asarray(a1, float).tobytes(), np.asarray(a2, float).tobytes(), l1, h1, l2, h2)
+    got = _LINES.get(key)
+    if got is None:
+        w = np.cross(a1, a2)
+        if np.linalg.norm(w) > 1e-9:
+            S = np.array([a1, a2, w])
+            got = (w, [np.linalg.solve(S, [c1, c2, 0.0]) for c1 in (l1, h1) for c2 in (l2, h2)])
+        else:
+            got = (None, [])
+        if len(_LINES) > 4096:
+            _LINES.clear()
+        _LINES[key] = got
+    return got
+
+
+def _clipped_candidates(V: np.ndarray, piece, slabs, corners, M: np.ndarray, t0: np.ndarray):
+    """The candidate vertices (world, ``(K, 3)``) of one posed piece ``V`` clipped to the
+    slabs (:func:`nearest_in_prism`), or None when none lies inside."""
+    _, _, E, A, d = piece
+    cands = [V]
+    for a, lo, hi in slabs:  # edges crossing a slab plane
+        if not len(E):
+            continue
+        p, q = V[E[:, 0]], V[E[:, 1]]
+        sp, sq = p @ a, q @ a
+        for c in (lo, hi):
+            m = (sp - c) * (sq - c) < 0
+            if m.any():
+                tt = (c - sp[m]) / (sq[m] - sp[m])
+                cands.append(p[m] + tt[:, None] * (q[m] - p[m]))
+    if corners and len(A):
+        for p0, wl in corners:
+            aw, r = A @ wl, d - A @ p0
+            if np.any((np.abs(aw) < 1e-12) & (r < -1e-9)):
+                continue
+            pos, neg = aw > 1e-12, aw < -1e-12
+            t1 = np.min(r[pos] / aw[pos]) if pos.any() else np.inf
+            tb = np.max(r[neg] / aw[neg]) if neg.any() else -np.inf
+            if tb <= t1 and np.isfinite(tb) and np.isfinite(t1):
+                ends = np.array([p0 + tb * wl, p0 + t1 * wl])
+                cands.append(ends @ M.T + t0)
+    X = np.vstack(cands)
+    inside = np.ones(len(X), bool)
+    for a, lo, hi in slabs:
+        sa = X @ a
+        inside &= (sa >= lo - 1e-7) & (sa <= hi + 1e-7)
+    return X[inside] if inside.any() else None
 
 
 def face_slabs(surface, grow: float = 1e-3) -> list[tuple[np.ndarray, float, float]]:
@@ -204,9 +257,9 @@ def standing_label(label: str) -> str:
 _FCL: dict[tuple, list] = {}
 
 
-def _fcl_pieces(pieces, scale: float) -> list:
-    """FCL convex shapes of ``pieces`` scaled by ``scale`` (FCL moves rigidly only), each with
-    the 8 corners of its box, made once per pieces list and scale."""
+def _fcl_pieces(pieces, scale: float) -> tuple[list, np.ndarray]:
+    """FCL convex shapes of ``pieces`` scaled by ``scale`` (FCL moves rigidly only) and the 8
+    corners of each one's box, ``(P, 8, 3)``, made once per pieces list and scale."""
     import fcl
 
     key = (id(pieces), round(float(scale), 9))
@@ -225,7 +278,33 @@ def _fcl_pieces(pieces, scale: float) -> list:
                             for z in (lo[2], hi[2])])
         geom = fcl.Convex(V, len(F), np.c_[np.full(len(F), 3), F].ravel().astype(np.int32))
         out.append((geom, corners))
+    out = ([g for g, _ in out], np.stack([c for _, c in out]) if out else np.zeros((0, 8, 3)))
     _FCL[key] = (pieces, out)  # holding the list keeps its id valid
+    return out
+
+
+_POSED: dict[tuple, tuple] = {}
+
+
+def _posed(pieces, T: np.ndarray) -> tuple:
+    """``(shapes, box lows, box highs, R, t)`` of ``pieces`` moved by the similarity ``T``:
+    FCL shapes at ``T``'s scale, their boxes in the world and ``T``'s rotation and translation
+    (kept for the latest poses: a bisection moves one set against the same other set)."""
+    key = (id(pieces), np.asarray(T, float).tobytes())
+    got = _POSED.get(key)
+    if got is not None and got[0] is pieces:
+        return got[1]
+    s = float(np.cbrt(abs(np.linalg.det(T[:3, :3]))))
+    R, t = T[:3, :3] / s, np.array(T[:3, 3], float)
+    shapes, corners = _fcl_pieces(pieces, s)
+    if not shapes:
+        out = [], np.zeros((0, 3)), np.zeros((0, 3)), R, t
+    else:
+        C = corners @ R.T + t
+        out = shapes, C.min(axis=1), C.max(axis=1), R, t
+    if len(_POSED) > 256:
+        _POSED.clear()
+    _POSED[key] = (pieces, out)  # holding the list keeps its id valid
     return out
 
 
@@ -235,17 +314,8 @@ def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
     4x4 similarity transforms), 0 where they overlap; ``inf`` beyond ``limit`` (boxes apart)."""
     import fcl
 
-    def posed(pieces, T):
-        s = float(np.cbrt(abs(np.linalg.det(T[:3, :3]))))
-        R, t = T[:3, :3] / s, T[:3, 3]
-        shapes = _fcl_pieces(pieces, s)
-        if not shapes:
-            return [], np.zeros((0, 3)), np.zeros((0, 3)), R, t
-        C = np.stack([c for _, c in shapes]) @ R.T + t
-        return [g for g, _ in shapes], C.min(axis=1), C.max(axis=1), R, t
-
-    ga, la, ha, Ra, ta = posed(pieces_a, T_a)
-    gb, lb, hb, Rb, tb = posed(pieces_b, T_b)
+    ga, la, ha, Ra, ta = _posed(pieces_a, T_a)
+    gb, lb, hb, Rb, tb = _posed(pieces_b, T_b)
     if not ga or not gb:
         return np.inf
     near = np.all((la[:, None, :] <= hb[None, :, :] + limit)
@@ -255,9 +325,12 @@ def pieces_distance(pieces_a, T_a: np.ndarray, pieces_b, T_b: np.ndarray,
     best = np.inf
     req = fcl.DistanceRequest()
     Ta, Tb = fcl.Transform(Ra, ta), fcl.Transform(Rb, tb)
+    oa: dict[int, object] = {}
+    ob: dict[int, object] = {}
     for i, j in zip(*np.nonzero(near), strict=True):
-        d = fcl.distance(fcl.CollisionObject(ga[i], Ta), fcl.CollisionObject(gb[j], Tb), req,
-                         fcl.DistanceResult())
+        a = oa.get(i) or oa.setdefault(i, fcl.CollisionObject(ga[i], Ta))
+        b = ob.get(j) or ob.setdefault(j, fcl.CollisionObject(gb[j], Tb))
+        d = fcl.distance(a, b, req, fcl.DistanceResult())
         best = min(best, max(float(d), 0.0))
         if best == 0.0:
             return 0.0
@@ -276,6 +349,14 @@ def mounted_parts(parent, face_parts, surface, T: np.ndarray) -> tuple[list, flo
     of its plane and over its extent: an amplifier's grille and knobs on its cabinet's front),
     and how far the frontmost of those covering at least :data:`COVERING` of the face reaches
     in front of its plane (the grille, not a knob; 0 with none). ``T``: the parent's pose."""
+    T = np.asarray(T, float)
+    key = (id(parent.asset), tuple(p.name for p in face_parts), T.tobytes(),
+           np.asarray(surface.origin, float).tobytes(), np.asarray(surface.normal, float).tobytes(),
+           np.asarray(surface.u, float).tobytes(), np.asarray(surface.v, float).tobytes(),
+           surface.polygon.bounds, float(surface.area))
+    got = _MOUNTED.get(key)
+    if got is not None and got[0] is parent.asset:
+        return list(got[1]), got[2]
     own = {p.name for p in face_parts}
     slabs = face_slabs(surface)
     out, front = [], 0.0
@@ -294,4 +375,12 @@ def mounted_parts(parent, face_parts, surface, T: np.ndarray) -> tuple[list, flo
                               slabs[:2])
         if (u1 - u0) * (v1 - v0) >= COVERING * surface.area:
             front = max(front, float(h.max()))
+    if len(_MOUNTED) > 1024:
+        _MOUNTED.clear()
+    _MOUNTED[key] = (parent.asset, tuple(out), front)  # the asset held keeps its id valid
     return out, front
+
+
+#: :func:`mounted_parts` per parent asset, face parts, pose and face (a face is checked again
+#: for every pose of what leans on it).
+_MOUNTED: dict[tuple, tuple] = {}
