@@ -128,11 +128,13 @@ def towel(rng: np.random.Generator, variant: str) -> list[Part]:
     n = int(rng.integers(3, 5))
     t = rng.uniform(0.012, 0.018) * n
     def details(top: float, k: int) -> list[Part]:
-        """The border band across the top layer, the hanging loop and the tag at its edge."""
+        """The border band across the top layer, the hanging loop folded onto the top and the tag
+        at its edge (both inside the towel's footprint, so a towel hung edge-up takes no more
+        rail than its cloth)."""
         sfx = "" if k == 0 else f"_{k}"
         return [make_part(f"border{sfx}", "border", S.box((w * 0.9, 0.03, 0.0015), center=(0, d * 0.3, top + 0.0002)), band),
-                make_part(f"loop{sfx}", "loop", S.box((0.01, 0.04, 0.003), center=(w / 2 - 0.03, -d / 2 - 0.015, top - 0.002)), band),
-                make_part(f"tag{sfx}", "tag", S.box((0.025, 0.035, 0.0015), center=(-w / 2 + 0.03, -d / 2 - 0.012, top - 0.001)), tag)]
+                make_part(f"loop{sfx}", "loop", S.box((0.01, 0.04, 0.003), center=(w / 2 - 0.03, -d / 2 + 0.022, top + 0.0015)), band),
+                make_part(f"tag{sfx}", "tag", S.box((0.025, 0.035, 0.0015), center=(-w / 2 + 0.03, -d / 2 + 0.0185, top + 0.00075)), tag)]
 
     if variant == "folded":
         return [make_part("body", "body", _folded(rng, w, d, t, 0.0, n), mat), *details(t, 0)]
