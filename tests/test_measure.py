@@ -317,7 +317,7 @@ def lean(asset, theta_deg: float, away: float = 0.0, part: str | None = None):
     """A pose tilting ``asset`` back toward wall_0 (y = 0) by ``theta_deg``, standing on the
     floor, with ``part`` (or the whole object) touching the wall, ``away`` metres off it."""
     R = axis_angle(np.array([1.0, 0, 0]), np.deg2rad(theta_deg))
-    parts = [asset.part(part)] if part else asset.parts
+    parts = asset.parts_by_label(part) if part else asset.parts
     pts = np.vstack([pc.vertices for p in parts for pc in p.pieces] or
                     [p.mesh.vertices for p in parts]) @ R.T
     allp = np.vstack([pc.vertices for p in asset.parts for pc in p.pieces]) @ R.T
