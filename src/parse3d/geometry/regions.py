@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 import shapely
+from shapely.errors import GEOSException
 from shapely.geometry import LineString, MultiPoint, Point, Polygon
 from shapely.geometry import box as shapely_box
 from shapely.geometry.base import BaseGeometry
@@ -349,7 +350,14 @@ def erode(region: BaseGeometry, obstacles: list[np.ndarray], footprint: np.ndarr
     base = inner if inner is not None else region
     if not cut or base.is_empty:
         return base
-    return shapely.difference(base, shapely.union_all(cut), grid_size=GRID)
+    try:
+        blocked = shapely.union_all(cut)
+    except GEOSException:
+        # a sum ring that crosses itself (an obstacle outline folded back on itself): its
+        # valid form, snapped to the grid, covers the same ground
+        blocked = shapely.union_all(shapely.make_valid(np.asarray(cut, dtype=object)),
+                                    grid_size=GRID)
+    return shapely.difference(base, blocked, grid_size=GRID)
 
 
 #: Batches of draws :func:`free_samples` tries before leaving the region to be built.
