@@ -158,24 +158,31 @@ def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Sup
             trials += 1
             g = mid + (0.0 if k == 0 else rng.uniform(-0.4, 0.4) * room)
             t = base + (g - cur) * along
-            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
-            cand.rests_on = rests
             Yt = Y + t
             h = (Yt - s.origin) @ s.normal
             foot = plane_coords(s, Yt[h <= h.min() + 3e-3]).mean(axis=0)
             if not sup.region.buffer(1e-4).contains(shapely.Point(foot)):
                 last = f"its lower edge would miss {sup.name} in front of {sup.owner}:{part}"
                 continue
-            ok, why, checks = validate(cand, sup)
-            if not ok:
-                last = why
-                continue
-            body.move(R, t)
-            hit = st.world.collides(body)
-            if hit is not None:
-                last = f"collides with {hit}"
-                continue
-            return (R, t, sup, body, rests), trials, checks, None
+            checks, last = accept(st, oid, asset, scale, R, t, rests, sup, body, validate)
+            if checks is not None:
+                return (R, t, sup, body, rests), trials, checks, None
     raise Fail(f"no valid pose standing on {sup.name} against {sup.owner}:{part} "
                f"({trials} trials, last: {last})")
 
+
+def accept(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray, t: np.ndarray,
+           rests: str, sup: Support, body: Body, validate) -> tuple[list | None, str]:
+    """Check a standing pose (the object resting on ``rests``): ``(checks, "")`` when its
+    relations hold (``validate(cand, sup)``) and it collides with nothing (``body`` is moved
+    there), else ``(None, why)``."""
+    cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+    cand.rests_on = rests
+    ok, why, checks = validate(cand, sup)
+    if not ok:
+        return None, why
+    body.move(R, t)
+    hit = st.world.collides(body)
+    if hit is not None:
+        return None, f"collides with {hit}"
+    return checks, ""

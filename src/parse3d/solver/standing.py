@@ -26,6 +26,7 @@ from ..scene.model import PlacedObject
 from .collision import Body
 from .config import Fail
 from .geometry import asset_geometry
+from .ledge import accept
 from .nesting import pieces_drop
 from .state import SolveState
 from .support import Support
@@ -254,16 +255,7 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
                 last = f"its lower end would stay {h_low * 1000:.0f} mm above the floor of " \
                        f"{sup.owner}"
                 continue
-            cand = PlacedObject(oid, asset.category, asset, scale, R, t)
-            cand.rests_on = rests
-            ok, why, checks = validate(cand, sup)
-            if not ok:
-                last = why
-                continue
-            body.move(R, t)
-            hit = st.world.collides(body)
-            if hit is not None:
-                last = f"collides with {hit}"
-                continue
-            return (R, t, sup, body, rests), trials, checks, None
+            checks, last = accept(st, oid, asset, scale, R, t, rests, sup, body, validate)
+            if checks is not None:
+                return (R, t, sup, body, rests), trials, checks, None
     raise Fail(f"no room to stand {oid} in {sup.name} ({trials} trials, last: {last})")
