@@ -16,6 +16,7 @@ from shapely.geometry import Point, Polygon
 
 from parse3d.assets import registry
 from parse3d.assets.model import Material
+from parse3d.errors import InputError
 from parse3d.geometry.frames import rot_z
 from parse3d.pag.model import PAG, Room
 from parse3d.render import (
@@ -26,6 +27,7 @@ from parse3d.render import (
     mask_regions,
     overview_camera,
     plan_camera,
+    preview_cameras,
     render_asset,
     sample_views,
     save_preview,
@@ -457,9 +459,18 @@ def test_write_views_files_and_schema(scene, renderer, sampled, tmp_path):
 
 
 def test_save_preview(scene, tmp_path):
+    # two panels of 160x120 side by side; each the colour render of its camera
     path = save_preview(scene, tmp_path / "preview.png", width=160, height=120)
     img = np.asarray(Image.open(path))
-    assert img.shape == (120, 160, 3) and img.std() > 10
+    assert img.shape == (120, 320, 3) and img[:, :160].std() > 10 and img[:, 160:].std() > 10
+    r = Renderer()
+    cams = preview_cameras(scene, width=160, height=120, renderer=r)
+    np.testing.assert_array_equal(img[:, 160:], r.render_rgb(scene, cams[1]))
+    one = np.asarray(Image.open(save_preview(scene, tmp_path / "one.png", width=160, height=120,
+                                             panels=1)))
+    np.testing.assert_array_equal(one, img[:, :160])
+    with pytest.raises(InputError, match="panels"):
+        save_preview(scene, tmp_path / "none.png", panels=0)
 
 
 def test_missing_egl_raises_dependency_error():

@@ -89,7 +89,8 @@ def test_save_with_preview_writes_the_png_and_records_its_time(scene, tmp_path):
     from PIL import Image
 
     out = scene.save(tmp_path / "p", formats=(), preview=True)
-    assert Image.open(out / "preview.png").size == (640, 480)
+    # two panels of 1280x960 side by side (docs/render.md, "Preview")
+    assert Image.open(out / "preview.png").size == (2560, 960)
     assert not (out / "scene.glb").exists()
     assert "preview" in json.loads((out / "scene.json").read_text())["timings"]
 
@@ -153,8 +154,9 @@ def test_render_returns_the_preview_image_and_takes_a_camera(scene, tmp_path):
     rgb = scene.render(160, 120)
     assert rgb.shape == (120, 160, 3) and rgb.dtype == np.uint8
     assert rgb.std() > 5  # a room, not a blank frame
-    # the same pixels as the preview parse3d solve writes
-    ref = np.asarray(Image.open(save_preview(scene, tmp_path / "p.png", width=160, height=120)))
+    # the same pixels as the main (left) panel of the preview parse3d solve writes
+    ref = np.asarray(Image.open(save_preview(scene, tmp_path / "p.png", width=160, height=120,
+                                             panels=1)))
     np.testing.assert_array_equal(rgb, ref)
     cam = overview_camera(scene, width=96, height=64)
     assert scene.render(camera=cam).shape == (64, 96, 3)

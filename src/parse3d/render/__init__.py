@@ -22,7 +22,15 @@ from .camera import (
     plan_camera,
     sample_views,
 )
-from .io import VIEWS_FORMAT, preview_camera, save_preview, write_views
+from .io import (
+    PREVIEW_PANELS,
+    PREVIEW_SIZE,
+    VIEWS_FORMAT,
+    preview_camera,
+    preview_cameras,
+    save_preview,
+    write_views,
+)
 from .renderer import (
     SYSTEM_PACKAGES,
     Lighting,
@@ -47,7 +55,10 @@ __all__ = [
     "sample_views",
     "VIEWS_FORMAT",
     "save_preview",
+    "PREVIEW_SIZE",
+    "PREVIEW_PANELS",
     "preview_camera",
+    "preview_cameras",
     "write_views",
     "SYSTEM_PACKAGES",
     "Lighting",

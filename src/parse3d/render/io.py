@@ -27,7 +27,8 @@ from .camera import Camera
 from .renderer import Renderer, default_renderer, scene_id_tables
 from .result import RenderResult, view_record
 
-__all__ = ["VIEWS_FORMAT", "write_views", "save_preview", "preview_camera", "save_png16", "load_views_schema"]
+__all__ = ["VIEWS_FORMAT", "PREVIEW_SIZE", "PREVIEW_PANELS", "write_views", "save_preview",
+           "preview_camera", "preview_cameras", "save_png16", "load_views_schema"]
 
 VIEWS_FORMAT = "parse3d-views/1"
 
@@ -104,14 +105,36 @@ def write_views(scene: Scene, cameras: list[Camera], out_dir: str | Path, *,
     return doc
 
 
+#: Default size of each panel of ``preview.png``, pixels (width, height). At 1280x960 a cup
+#: or a book on a desk across a 5 m room covers a few hundred pixels; at 640x480 a quarter of
+#: that, too few to tell what it is (docs/render.md, "Preview").
+PREVIEW_SIZE = (1280, 960)
+#: Panels of ``preview.png``, side by side: the view that sees the room best and the one
+#: that adds the most to it (nearly always from the opposite side).
+PREVIEW_PANELS = 2
+
+
 def preview_camera(scene: Scene, *, width: int = 640, height: int = 480,
                    settled: bool | None = None, renderer: Renderer | None = None) -> Camera:
-    """The preview's viewpoint, chosen by what it sees (occluders considered): see
-    :func:`parse3d.render.viewpoint.visibility_camera`."""
+    """The preview's main viewpoint, chosen by what it sees (occluders considered): the
+    first of :func:`preview_cameras`."""
     from .viewpoint import visibility_camera
 
     r = renderer if renderer is not None else default_renderer()
     return visibility_camera(scene, width=width, height=height, settled=settled, renderer=r)
+
+
+def preview_cameras(scene: Scene, *, width: int = PREVIEW_SIZE[0],
+                    height: int = PREVIEW_SIZE[1], panels: int = PREVIEW_PANELS,
+                    settled: bool | None = None,
+                    renderer: Renderer | None = None) -> list[Camera]:
+    """The cameras of the preview's panels, left to right: see
+    :func:`parse3d.render.viewpoint.preview_views`."""
+    from .viewpoint import preview_views
+
+    r = renderer if renderer is not None else default_renderer()
+    return preview_views(scene, panels, width=width, height=height, settled=settled,
+                         renderer=r)
 
 
 #: zlib level of the preview PNG: level 1 encodes a 640x480 preview in about two thirds of
@@ -119,14 +142,20 @@ def preview_camera(scene: Scene, *, width: int = 640, height: int = 480,
 PREVIEW_PNG_LEVEL = 1
 
 
-def save_preview(scene: Scene, path: str | Path, *, width: int = 640, height: int = 480,
+def save_preview(scene: Scene, path: str | Path, *, width: int = PREVIEW_SIZE[0],
+                 height: int = PREVIEW_SIZE[1], panels: int = PREVIEW_PANELS,
                  settled: bool | None = None, renderer: Renderer | None = None) -> Path:
-    """Render the overview view (:func:`preview_camera`) of ``scene`` to a PNG at ``path``."""
+    """Render the preview of ``scene`` to a PNG at ``path``: ``panels`` views
+    (:func:`preview_cameras`) of ``width`` x ``height`` pixels each, side by side, so the
+    image is ``panels * width`` x ``height``."""
     if width < 1 or height < 1:
         raise InputError(f"preview size must be positive, got {width}x{height}")
+    if panels < 1:
+        raise InputError(f"preview panels must be at least 1, got {panels}")
     r = renderer if renderer is not None else default_renderer()
-    cam = preview_camera(scene, width=width, height=height, settled=settled, renderer=r)
-    rgb = r.render_rgb(scene, cam, settled=settled)
+    cams = preview_cameras(scene, width=width, height=height, panels=panels, settled=settled,
+                           renderer=r)
+    rgb = np.hstack([r.render_rgb(scene, cam, settled=settled) for cam in cams])
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     Image.fromarray(rgb).save(path, compress_level=PREVIEW_PNG_LEVEL)

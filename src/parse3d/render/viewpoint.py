@@ -10,9 +10,11 @@ kitchen's floor cabinets, a wardrobe in front of a picture). The preview is the 
 1. cuts nothing at the near plane (no object within :data:`MIN_CLEARANCE` of the eye),
 2. lets no object cover more than :data:`~parse3d.render.camera.MAX_OBJECT_SHARE` of the frame,
 3. sees the most wall-mounted objects (``SECURED_TO`` a wall), then
-4. the most objects with at least :data:`MIN_PIXELS` visible pixels at 640x480,
+4. the most objects with at least :data:`MIN_PIXELS` visible pixels at the panel's size,
 5. then the smallest largest share (ties: the candidates' order, eye-height views first).
 
+Further panels (:func:`preview_views`) are the cut-away views that add the most to what the
+panels before them see, by the same rules counted over all of them together.
 ``benchmarks/bench_preview_camera.py`` measures the result over the examples and templates.
 """
 
@@ -34,9 +36,9 @@ from .camera import (
 )
 from .renderer import Renderer, scene_id_tables
 
-__all__ = ["MIN_CLEARANCE", "MIN_PIXELS", "cutaway_candidates", "visibility_camera"]
+__all__ = ["MIN_CLEARANCE", "MIN_PIXELS", "cutaway_candidates", "preview_views", "visibility_camera"]
 
-#: Visible pixels (at 640x480) for an object to count as seen.
+#: Visible pixels (at the panel's size) for an object to count as seen.
 MIN_PIXELS = 200
 #: Least distance (m) from the eye to any object's box: nothing is cut by the near plane.
 MIN_CLEARANCE = 0.3
@@ -109,15 +111,22 @@ def _wall_mounted(scene: Scene) -> set[str]:
             if r.relation == "SECURED_TO" and r.parent.object.startswith("wall")}
 
 
-def visibility_camera(scene: Scene, *, width: int = 640, height: int = 480,
-                      settled: bool | None = None, renderer: Renderer) -> Camera:
-    """The preview camera: the candidate that sees the room best (module docstring).
+def preview_views(scene: Scene, n: int = 2, *, width: int = 640, height: int = 480,
+                  settled: bool | None = None, renderer: Renderer) -> list[Camera]:
+    """The preview's panels: the candidate that sees the room best (module docstring), then
+    the ones that add the most to what the panels before them see.
+
+    A second panel is nearly always the view from the other side of the room: furniture
+    stands against the walls facing inwards, so the shelves, cabinets and wall-mounted
+    objects a cut-away view sees from behind face the opposite view.
 
     Parameters
     ----------
     scene : Scene
+    n : int
+        Panels (cameras) to choose, at least 1 (fewer when there are fewer candidates).
     width, height : int
-        Size of the preview, pixels.
+        Size of each panel, pixels.
     settled : bool, optional
         Use the settled poses (default: when the scene was settled).
     renderer : Renderer
@@ -125,9 +134,10 @@ def visibility_camera(scene: Scene, *, width: int = 640, height: int = 480,
 
     Returns
     -------
-    Camera
+    list of Camera
         ``meta`` holds ``preset`` (``overview`` or ``cutaway``), ``seen`` (objects with at
-        least :data:`MIN_PIXELS` visible pixels, estimated from the probe) and ``walls_seen``.
+        least :data:`MIN_PIXELS` visible pixels in this panel, estimated from the probe),
+        ``walls_seen``, and ``seen_so_far`` (in this panel or one before it).
     """
     interior = overview_candidates(scene, width=width, height=height,
                                    settled=settled)[:INTERIOR_PROBES]
@@ -139,19 +149,45 @@ def visibility_camera(scene: Scene, *, width: int = 640, height: int = 480,
     instances, _ = scene_id_tables(scene)
     probes = [cam.resized(*PROBE) for cam in cands]
     masks = renderer.instance_masks(scene, probes, settled=settled)
-    # the pixel threshold scaled from 640x480 to the probe
-    need = MIN_PIXELS * (PROBE[0] * PROBE[1]) / (640 * 480)
-    best, best_key, best_meta = cands[0], None, {}
-    for k, (cam, mask) in enumerate(zip(cands, masks, strict=True)):
+    # the pixel threshold, MIN_PIXELS of a panel, scaled to the probe
+    need = MIN_PIXELS * (PROBE[0] * PROBE[1]) / (width * height)
+    judged = []  # per candidate: (usable, smaller largest share, objects seen)
+    for cam, mask in zip(cands, masks, strict=True):
         vals, counts = np.unique(mask, return_counts=True)
-        px = {instances.get(int(v)): int(n) for v, n in zip(vals, counts, strict=True) if v > 0}
-        seen = {i for i in ids if px.get(i, 0) >= need}
+        px = {instances.get(int(v)): int(c) for v, c in zip(vals, counts, strict=True) if v > 0}
         top = max((px.get(i, 0) for i in ids), default=0) / mask.size
         clear = float(_box_distance(cam.position, boxes).min()) if len(boxes) else np.inf
-        key = (clear >= MIN_CLEARANCE, top <= MAX_OBJECT_SHARE, len(seen & walls), len(seen),
-               -round(top, 3), -k)
-        if best_key is None or key > best_key:
-            best, best_key = cam, key
-            best_meta = {"seen": len(seen), "walls_seen": len(seen & walls)}
-    return Camera(best.K, best.R, best.t, best.width, best.height, best.near, best.far,
-                  best.projection, {**best.meta, **best_meta})
+        usable = (clear >= MIN_CLEARANCE, top <= MAX_OBJECT_SHARE)
+        judged.append((usable, -round(top, 3), {i for i in ids if px.get(i, 0) >= need}))
+    out: list[Camera] = []
+    chosen: list[int] = []
+    so_far: set[str] = set()
+    for _ in range(min(max(1, n), len(cands))):
+        def key(k: int, so_far=so_far) -> tuple:
+            usable, top, seen = judged[k]
+            both = seen | so_far
+            return (*usable, len(both & walls), len(both), top, -k)
+
+        # after the first panel, cut-away views only: panels seen side by side read as one
+        # room from several sides, not a doll's house next to a photograph from inside
+        rest = [k for k in range(len(cands)) if k not in chosen
+                and (not chosen or cands[k].meta.get("preset") == "cutaway")]
+        if not rest:
+            break
+        k = max(rest, key=key)
+        chosen.append(k)
+        seen = judged[k][2]
+        so_far = so_far | seen
+        best = cands[k]
+        out.append(Camera(best.K, best.R, best.t, best.width, best.height, best.near, best.far,
+                          best.projection, {**best.meta, "seen": len(seen),
+                                            "walls_seen": len(seen & walls),
+                                            "seen_so_far": len(so_far)}))
+    return out
+
+
+def visibility_camera(scene: Scene, *, width: int = 640, height: int = 480,
+                      settled: bool | None = None, renderer: Renderer) -> Camera:
+    """The preview's main camera: the first of :func:`preview_views`."""
+    return preview_views(scene, 1, width=width, height=height, settled=settled,
+                         renderer=renderer)[0]
