@@ -57,9 +57,13 @@ def test_kitchen_preview_sees_the_room(kitchen):
     assert max(px.get(i, 0) for i in ids) / (640 * 480) <= MAX_OBJECT_SHARE
 
 
-def test_kitchen_preview_cuts_nothing_at_the_near_plane(kitchen):
+@pytest.mark.parametrize("panel", [0, 1])
+def test_kitchen_preview_cuts_nothing_at_the_near_plane(kitchen, panel):
     scene, r = kitchen, Renderer()
-    cam = preview_camera(scene, renderer=r)
+    cam = preview_cameras(scene, renderer=r)[panel]
+    if panel == 0:  # the main panel is preview_camera's view
+        main = preview_camera(scene, width=cam.width, height=cam.height, renderer=r)
+        np.testing.assert_allclose(main.position, cam.position, rtol=0, atol=1e-9)
     for o in scene.placed:
         lo, hi = o.world_bounds(None)
         # the eye is clear of every object's box, so no box reaches the near plane
