@@ -24,11 +24,12 @@ from ..pag.model import PAG
 from ..relations import OBJECT, SUPPORT
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
+from .choice import room_failure
 from .collision import CollisionWorld, cached_body, static_body
 from .config import Fail, SolverConfig, stage_rng
 from .geometry import asset_geometry
 from .intent import whole_object
-from .placement import Placement, _space, place_object, resolution, scaled_mesh
+from .placement import Placement, place_object, resolution, scaled_mesh
 from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
 
@@ -362,7 +363,7 @@ class _Search:
                     # a moved wall object that finds no room again may clear a stretch of
                     # its own (one level deep: the bench a wardrobe displaced)
                     if m == oid or not self.nest or self.depth or f.intrinsic \
-                            or not _space(str(f)):
+                            or not room_failure(str(f)):
                         raise
                     self.depth += 1
                     try:
@@ -481,7 +482,7 @@ class _Search:
         if got is not None:
             return got
         got = self.regroup(oid)
-        if got is None and _space(reason):
+        if got is None and room_failure(reason):
             got = self.resupport(oid)
         if got is None:
             # last, clearing again where the objects it displaces may clear for themselves
@@ -641,7 +642,7 @@ class _Search:
         """The failure reason, with what takes the wall the object names (``wall_k``) and the
         longest free stretch left when it found no room there."""
         need = self.wall_need(oid)
-        if need is None or len(need[0]) != 1 or not _space(reason):
+        if need is None or len(need[0]) != 1 or not room_failure(reason):
             return reason
         (w,), width, depth, z0, z1 = need
         s = self.st.scene.room.elements[w].surface
