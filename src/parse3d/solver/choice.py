@@ -18,7 +18,9 @@ from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .hanging import edge_up
+from .hanging import edge_up, rail_scale, thinness
+from .intent import names_part, overhang, soft
+from .nesting import floor_fit
 from .state import SolveState, plane_coords
 from .support import _flat_cached, _flat_enough, cover_part, filled, support_candidates
 
@@ -434,3 +436,156 @@ def part_overhang(asset: Asset, e: Edge) -> float:
     n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
     return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
 
+
+
+def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Generator,
+                  reasons: list[str], *, attempt: int, keep, loosen: dict[int, Edge],
+                  support_edge: Edge, smallest: bool):
+    """The instance of one placement attempt: drawn from the library, or picked by a rule
+    (the last one kept for a repair, the least overhung for a relaxed contact, the thinnest
+    for a flat thing hung edge-up, the smallest after a failure for room, the lowest after
+    a height band), replaced by one that meets ``reqs`` when it lacks something; added to
+    ``tried``. Returns ``(category, asset, reqs)`` (``reqs`` loosened when no instance meets
+    them as written), or None when every suitable instance was tried; ``Fail`` when none in
+    the pool is suitable."""
+    category = node.candidates[int(rng.integers(len(node.candidates)))]
+    asset = library.get(category, rng)
+    picked = True  # by a rule below, else drawn
+    if keep is not None and attempt == 0:
+        category, asset = keep.category, keep.asset
+    elif attempt == 0 and (flush := flush_edges(loosen)):
+        # a contact relaxed to the whole object: the instance whose named part is least
+        # overhung (a shelf's back panel 2 cm in front of its posts, not 45 cm)
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                   key=lambda a: max(part_overhang(a, e) for e in flush))
+        if alt is not None:
+            category, asset = alt
+    elif attempt == 0 and keep is None and edge_up(support_edge) and thinness(asset) < 1:
+        # a flat thing hung edge-up (a folded towel, not a coat): its thickness stands out
+        # from the rail toward the wall behind it, so the thinnest instance looked at first
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng, key=thinness)
+        if alt is not None:
+            category, asset = alt
+    elif smallest and attempt == 0:
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng, smallest=True)
+        if alt is not None:
+            category, asset = alt
+    elif reasons and room_failure(reasons[-1]):
+        # the last instance did not fit where it must go: the smallest suitable one next
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   rng, smallest=True)
+        if alt is not None:
+            category, asset = alt
+    elif reasons and too_tall_failure(reasons[-1]):
+        # too tall for its height band on a wall (curtains hung at 0.8-1 m): the lowest
+        # untried instance next (its up axis)
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   rng, key=lambda a: extent_along(a, 2))
+        if alt is not None:
+            category, asset = alt
+    else:
+        picked = False
+    if not (keep is not None and attempt == 0) and (
+            not picked and asset.asset_id in tried or lacks(asset, reqs)):
+        # constraint-aware selection (also when a rule above found nothing and kept the
+        # draw): another instance that has what the relations need, among a sample of
+        # slots, then among every slot (a board game with a lid: most are card decks)
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng) \
+            or alternative_instance(library, node.candidates, reqs, tried, rng, every=True)
+        if alt is None and (loose_reqs := soft(reqs)) != reqs:
+            # no instance is the flat base a stack of its kind needs (apples): any one,
+            # and what would stack on it rests beside it
+            alt = alternative_instance(library, node.candidates, loose_reqs, tried, rng)
+            if alt is not None:
+                reqs = loose_reqs
+        if alt is None and (boards := boards_hold(reqs)) != reqs:
+            # no instance holds anything inside the named shelf: one whose shelf is a
+            # board, and what is IN it stands on its top (a wall shelf)
+            alt = alternative_instance(library, node.candidates, boards, tried, rng,
+                                       every=True)
+            if alt is not None:
+                reqs = boards
+        if alt is None:
+            if asset.asset_id in tried:
+                return None  # every suitable instance was tried
+            why = lacks(asset, reqs)
+            n = int(getattr(library, "per_category", 20))
+            raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
+                       f"{n} per category) fits the relations: {why}",
+                       intrinsic=True)
+        category, asset = alt
+    if keep is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+        # the named part is not where the support needs it (a frame raised on legs): the
+        # instance whose named part reaches furthest toward the support, of every slot
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   rng, key=lambda a: overhang(a, support_edge)[0],
+                                   every=True)
+        if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
+                asset, support_edge)[0]:
+            category, asset = alt
+    tried.add(asset.asset_id)
+    return category, asset, reqs
+
+
+def instance_scale(st: SolveState, oid: str, library, node, category: str, asset: Asset,
+                   reqs: list, tried: set[str], rng: np.random.Generator, *, attempt: int,
+                   keep, support_edge: Edge, axis: int, headroom: float):
+    """The scale of one attempt's instance: its real-world size (times the node's scale
+    range) clamped to its category's range, big enough for what is IN it or hangs below it,
+    8% smaller from the fourth attempt, the earlier one's for a repair; another instance when
+    it is too tall for every shelf it may go in or too short to span the parts it must rest
+    across. Returns ``(category, asset, scale, reason)``: ``reason`` (about room) when even
+    the widest instance cannot span those parts, else None."""
+    pag = st.pag
+    # generators already make real-world sizes: keep them (times the node's scale range),
+    # clamped so the size stays in the category's range (this normalises loaded assets)
+    lo, hi = asset.size_range
+    s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
+    size = asset_geometry(asset).size
+    scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+    # a container with several things IN it (apples in a bowl) is drawn big enough to hold
+    # them, within its category's size range
+    scale = max(scale, min(contents_scale(pag, oid, asset), hi / max(size, 1e-6)))
+    # and a rail with several things hung below it long enough for them (towels on a bar)
+    scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
+    scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
+    if keep is not None and attempt == 0:
+        scale = keep.scale
+    elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:
+        # taller than every shelf it may go IN (a cereal box on a grocery shelf): the lowest
+        # untried instance, then shrunk to the free height within its category's range
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                   key=lambda a: extent_along(a, axis))
+        if alt is not None and extent_along(alt[1], axis) < extent_along(asset, axis):
+            category, asset = alt
+            tried.add(asset.asset_id)
+            lo, hi = asset.size_range
+            size = asset_geometry(asset).size
+            scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        fit = HEADROOM_FIT * headroom / max(extent_along(asset, axis), 1e-6)
+        if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
+            scale = min(scale, fit)
+    if keep is None or attempt > 0:
+        # longer than a container's floor: shrunk to lie in it, within its size range
+        scale = floor_fit(st, support_edge, asset, scale, axis)
+    reach = span_need(st, support_edge)
+    if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
+        # too short to rest across the parts it must span (a keyboard on a stand's two
+        # arms): the widest untried instance, then as large as the node's scale allows
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                   key=lambda a: -extent_across(a, axis))
+        if alt is not None and extent_across(alt[1], axis) > extent_across(asset, axis):
+            category, asset = alt
+            tried.add(asset.asset_id)
+        lo, hi = asset.size_range
+        size = asset_geometry(asset).size
+        top = (node.scale[1] if node.scale is not None else 1.0) * float(
+            np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        scale = max(scale, min(top, reach / max(extent_across(asset, axis), 1e-6)))
+        if scale * extent_across(asset, axis) < reach - 1e-6:
+            # a reason about room: the search may re-place the support as another instance
+            ref = support_edge.parent
+            return category, asset, scale, (
+                f"a {scale * extent_across(asset, axis):.2f} m {category} does not fit "
+                f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
+    return category, asset, scale, None

@@ -3,11 +3,12 @@ positions in the feasible region and validate each (relation checks, FCL collisi
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 import shapely
 from shapely.geometry import Polygon
+from shapely.geometry.base import BaseGeometry
 
 from ..assets.model import Asset
 from ..geometry import regions as RG
@@ -16,32 +17,23 @@ from ..measure.checks import EPS, STEP, world_points
 from ..pag.model import Edge
 from ..scene.model import PlacedObject, SupportChoice
 from .choice import (
-    HEADROOM_FIT,
     SURFACE_AXES,
-    alternative_instance,
-    boards_hold,
-    contents_scale,
+    draw_instance,
     edge_text,
-    extent_across,
-    extent_along,
-    flush_edges,
     free_headroom,
     hung_edge_up,
+    instance_scale,
     lacks,
-    part_overhang,
     requirements,
-    room_failure,
-    span_need,
-    too_tall_failure,
 )
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices
-from .hanging import edge_up, rail_fit, rail_scale, thinness
-from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
+from .hanging import rail_fit
+from .intent import beside, loose_reason, names_part, overhang, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
-from .nesting import concentric_first, floor_fit, nest_rise, nest_samples, pieces_drop
+from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, height_band, obstacles
 from .rotation import solve_rotation
 from .sampling import (
@@ -133,132 +125,18 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     headroom = free_headroom(st, support_edge)
     axis = SURFACE_AXES[support_edge.child.surface or support_edge.spec.child_surface]
     for attempt in range(cfg.asset_attempts):
-        category = node.candidates[int(rng.integers(len(node.candidates)))]
-        asset = library.get(category, rng)
-        picked = True  # by a rule below, else drawn
-        if keep is not None and attempt == 0:
-            category, asset = keep.category, keep.asset
-        elif attempt == 0 and (flush := flush_edges(loosen)):
-            # a contact relaxed to the whole object: the instance whose named part is least
-            # overhung (a shelf's back panel 2 cm in front of its posts, not 45 cm)
-            alt = alternative_instance(library, node.candidates, reqs, tried, rng,
-                                       key=lambda a: max(part_overhang(a, e) for e in flush))
-            if alt is not None:
-                category, asset = alt
-        elif attempt == 0 and keep is None and edge_up(support_edge) and thinness(asset) < 1:
-            # a flat thing hung edge-up (a folded towel, not a coat): its thickness stands out
-            # from the rail toward the wall behind it, so the thinnest instance looked at first
-            alt = alternative_instance(library, node.candidates, reqs, tried, rng, key=thinness)
-            if alt is not None:
-                category, asset = alt
-        elif smallest and attempt == 0:
-            alt = alternative_instance(library, node.candidates, reqs, tried, rng, smallest=True)
-            if alt is not None:
-                category, asset = alt
-        elif reasons and room_failure(reasons[-1]):
-            # the last instance did not fit where it must go: the smallest suitable one next
-            alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
-                                       smallest=True)
-            if alt is not None:
-                category, asset = alt
-        elif reasons and too_tall_failure(reasons[-1]):
-            # too tall for its height band on a wall (curtains hung at 0.8-1 m): the lowest
-            # untried instance next (its up axis)
-            alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
-                                       key=lambda a: extent_along(a, 2))
-            if alt is not None:
-                category, asset = alt
-        else:
-            picked = False
-        if not (keep is not None and attempt == 0) and (
-                not picked and asset.asset_id in tried or lacks(asset, reqs)):
-            # constraint-aware selection (also when a rule above found nothing and kept the
-            # draw): another instance that has what the relations need, among a sample of
-            # slots, then among every slot (a board game with a lid: most are card decks)
-            alt = alternative_instance(library, node.candidates, reqs, tried, rng) or alternative_instance(
-                library, node.candidates, reqs, tried, rng, every=True)
-            if alt is None and (loose_reqs := soft(reqs)) != reqs:
-                # no instance is the flat base a stack of its kind needs (apples): any one,
-                # and what would stack on it rests beside it
-                alt = alternative_instance(library, node.candidates, loose_reqs, tried, rng)
-                if alt is not None:
-                    reqs = loose_reqs
-            if alt is None and (boards := boards_hold(reqs)) != reqs:
-                # no instance holds anything inside the named shelf: one whose shelf is a
-                # board, and what is IN it stands on its top (a wall shelf)
-                alt = alternative_instance(library, node.candidates, boards, tried, rng, every=True)
-                if alt is not None:
-                    reqs = boards
-            if alt is None:
-                if asset.asset_id in tried:
-                    break  # every suitable instance was tried
-                why = lacks(asset, reqs)
-                n = int(getattr(library, "per_category", 20))
-                raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
-                           f"{n} per category) fits the relations: {why}",
-                           intrinsic=True)
-            category, asset = alt
-        if keep is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
-            # the named part is not where the support needs it (a frame raised on legs): the
-            # instance whose named part reaches furthest toward the support, of every slot
-            alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id}, rng,
-                                       key=lambda a: overhang(a, support_edge)[0], every=True)
-            if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
-                    asset, support_edge)[0]:
-                category, asset = alt
-        tried.add(asset.asset_id)
-        # generators already make real-world sizes: keep them (times the node's scale range),
-        # clamped so the size stays in the category's range (this normalises loaded assets)
-        lo, hi = asset.size_range
-        s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
-        size = asset_geometry(asset).size
-        scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
-        # a container with several things IN it (apples in a bowl) is drawn big enough to hold
-        # them, within its category's size range
-        scale = max(scale, min(contents_scale(pag, oid, asset), hi / max(size, 1e-6)))
-        # and a rail with several things hung below it long enough for them (towels on a bar)
-        scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
-        scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
-        if keep is not None and attempt == 0:
-            scale = keep.scale
-        elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:
-            # taller than every shelf it may go IN (a cereal box on a grocery shelf): the lowest
-            # untried instance, then shrunk to the free height within its category's range
-            alt = alternative_instance(library, node.candidates, reqs, tried, rng,
-                                       key=lambda a: extent_along(a, axis))
-            if alt is not None and extent_along(alt[1], axis) < extent_along(asset, axis):
-                category, asset = alt
-                tried.add(asset.asset_id)
-                lo, hi = asset.size_range
-                size = asset_geometry(asset).size
-                scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
-            fit = HEADROOM_FIT * headroom / max(extent_along(asset, axis), 1e-6)
-            if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
-                scale = min(scale, fit)
-        if keep is None or attempt > 0:
-            # longer than a container's floor: shrunk to lie in it, within its size range
-            scale = floor_fit(st, support_edge, asset, scale, axis)
-        reach = span_need(st, support_edge)
-        if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
-            # too short to rest across the parts it must span (a keyboard on a stand's two
-            # arms): the widest untried instance, then as large as the node's scale allows
-            alt = alternative_instance(library, node.candidates, reqs, tried, rng,
-                                       key=lambda a: -extent_across(a, axis))
-            if alt is not None and extent_across(alt[1], axis) > extent_across(asset, axis):
-                category, asset = alt
-                tried.add(asset.asset_id)
-            lo, hi = asset.size_range
-            size = asset_geometry(asset).size
-            top = (node.scale[1] if node.scale is not None else 1.0) * float(
-                np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
-            scale = max(scale, min(top, reach / max(extent_across(asset, axis), 1e-6)))
-            if scale * extent_across(asset, axis) < reach - 1e-6:
-                # a reason about room: the search may re-place the support as another instance
-                ref = support_edge.parent
-                reasons.append(f"a {scale * extent_across(asset, axis):.2f} m {category} does not fit "
-                               f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
-                intrinsic.append(False)
-                continue
+        got = draw_instance(library, node, reqs, tried, rng, reasons, attempt=attempt, keep=keep,
+                            loosen=loosen, support_edge=support_edge, smallest=smallest)
+        if got is None:
+            break  # every suitable instance was tried
+        category, asset, reqs = got
+        category, asset, scale, short = instance_scale(
+            st, oid, library, node, category, asset, reqs, tried, rng, attempt=attempt,
+            keep=keep, support_edge=support_edge, axis=axis, headroom=headroom)
+        if short is not None:
+            reasons.append(short)
+            intrinsic.append(False)
+            continue
         hang = hung_edge_up(support_edge, asset)
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale, 1 if hang is not None else 2)
@@ -407,14 +285,62 @@ def scaled_mesh(asset: Asset, scale: float) -> MeshArrays:
     return MeshArrays(scaled_vertices(m.vertices, scale), m.faces)
 
 
+@dataclass
+class _OnSupport:
+    """The child turned for one support, before its position is drawn: what the steps of
+    :func:`_place_on` share. Plane coordinates are the support surface's ``(u, v)``."""
+
+    st: SolveState
+    oid: str
+    asset: Asset
+    scale: float
+    hull: np.ndarray
+    sup: Support
+    edge: Edge
+    others: list[Edge]
+    cfg: SolverConfig
+    #: the rotation, the object it turns to face per position (TOWARD), its lean
+    R: np.ndarray
+    toward: str | None
+    lean: list
+    #: metres: a hung child's cord, the origin's height above the plane, the child's height
+    drop: float
+    h: float
+    height: float
+    #: the support's region less its margin, the objects holding it up, the footprint
+    region0: BaseGeometry
+    exclude: set[str]
+    F: np.ndarray
+    holes: list = field(default_factory=list)
+    obst: list = field(default_factory=list)
+    #: ON one of its own kind; raised onto the owner's low parts (burners) by ``lift`` m
+    stack: bool = False
+    lift: float = 0.0
+    #: a support smaller than the child: its base must be held by ``base_solid``
+    overhang: bool = False
+    base_solid: BaseGeometry | None = None
+    #: ``(region, samples)`` of a child leaning on an object or nested in one, else None
+    leaned: tuple | None = None
+
+
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
               sup: Support, support_edge: Edge, others: list[Edge], body: Body,
               rng: np.random.Generator, cfg: SolverConfig, proposal=None):
+    """Place the child on one support: turn it (stage 3), draw positions of its origin from
+    the feasible region (4 and 5), order them and try each (6); ``Fail`` with the reason."""
+    d = _turned(st, oid, asset, scale, hull, sup, support_edge, others, rng, cfg)
+    samples = _ordered(d, _positions(d, rng), rng)
+    return _try_poses(d, samples, body, rng, proposal)
+
+
+def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
+            sup: Support, support_edge: Edge, others: list[Edge], rng: np.random.Generator,
+            cfg: SolverConfig) -> _OnSupport:
+    """The child's rotation on ``sup``, its height above the plane and its footprint."""
     s = sup.surface
     rel = support_edge.relation
-    strategy = cfg.strategy
-    R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng, strategy,
-                                     scale)
+    R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng,
+                                     cfg.strategy, scale)
     Y = hull @ R.T
     hN = Y @ s.normal
     height = float(hN.max() - hN.min())
@@ -428,161 +354,209 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
-    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, plane_key(s), cfg.margin),
-                      lambda: inset(sup, cfg.margin))
+    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, plane_key(s),
+                                  cfg.margin), lambda: inset(sup, cfg.margin))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
                           outline_indices(asset, R.T @ s.normal))
-    overhang = False
-    base_solid = None
-    lift = 0.0
-    leaned = lean_samples(st, oid, asset, scale, R, h, sup, others, region0, rng,
-                          cfg.max_trials) \
-        if strategy == "constrained" and involves_object(sup, lean) else None
-    if leaned is None and strategy == "constrained" and rel == "IN":
-        leaned = nest_samples(st, oid, sup, asset, scale, R, rng, cfg.max_trials)
-    if leaned is not None:  # leaning on or from an object, or nested (leaning.py, nesting.py)
-        region, samples = leaned
-    elif strategy == "constrained":
-        # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
-        holes = [RG.convex_footprint(hole) for hole in sup.holes]
-        # a stack: ON an object of the same kind (their PAG nodes share a category)
-        stack = rel == "ON" and sup.owner != "room" and bool(
-            set(st.pag.objects[oid].candidates) & set(st.pag.objects[sup.owner].candidates))
-        ruled = None if stack else rules_region(st, oid, asset, scale, R, h, sup, support_edge,
-                                                others, region0, F, holes)
-        # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
-        step = STEP if rel == "ON" and sup.owner != "room" else 0.0
-        if step:
-            lift = st.memo(sup.owner, ("step", plane_key(s), step),
-                           lambda: step_height(st, sup, step))
-        samples = None
-        if ruled is not None and lift == 0 and (
-                sup.owner == "room" or rel == "IN" or inside_margin(F, height) == 0):
-            # drawn from the relations' region less the obstacles near it, without building
-            # it (the obstacles whose grown footprint can reach the region are those listed)
-            obst = obstacles(st, sup, exclude, height + EPS, reach_box(ruled, F, 0.0), step=step)
-            samples = RG.draw_outside(ruled, obst + holes, F, rng, cfg.max_trials)
-        if samples is None:
-            obst = obstacles(st, sup, exclude, height + EPS,
-                             reach_box(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0),
-                             step=step)
-            if not stack:
-                samples = free_positions(rel, sup, others, region0, obst + holes, F, height,
-                                         lift, rng, cfg.max_trials)
-        if samples is not None:
-            pass  # drawn from the free space without building the region
-        elif rel == "HANGING_BELOW":
-            # what hangs needs its attachment (the points touching the parent) on the parent's
-            # surface, not its whole footprint: a towel is wider than the bar it hangs from; a
-            # hook as thick as a thin rail needs only its centre over it
-            top = Y[hN <= hN.min() + 2e-3]
-            c = np.array([float(np.mean(top @ s.u)), float(np.mean(top @ s.v))])
-            Fc = RG.convex_footprint(np.vstack([c + d for d in ((0, 0), (1e-4, 0), (0, 1e-4),
-                                                                  (1e-4, 1e-4))]))
-            # the owner's other parts (a towel bar's brackets) block only what hangs at their
-            # depth: the hook, not the shoulders below
-            obst = obstacles(st, sup, exclude, height + EPS, reach_box(region0, F, 5.0),
-                             parts=False)
-            region = RG.clip(RG.erode(region0, [], Fc),
-                             RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
-            depth = hN + h
-            for lo_h, hi_h, fp in owner_pieces(st, sup, exclude, height + EPS):
-                at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
-                if len(at):
-                    Fs = RG.convex_footprint(np.vstack([np.c_[at @ s.u, at @ s.v],
-                                                        np.c_[at @ s.u, at @ s.v] + 1e-4]))
-                    region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0),
-                                                      [fp], Fs))
-            if region.is_empty or region.area < 1e-10:
-                if RG.erode(region0, [], Fc).is_empty:
-                    raise Fail(f"no room to hang below {sup.name}: its attachment does not "
-                               f"fit the surface", intrinsic=True)
-                near = Polygon(st.xy[sup.owner]) if sup.owner in st.xy else None
-                below = [o for o in st.scene.objects.values() if o.placed and o.id not in exclude
-                         and o.id in st.zr and st.zr[o.id][1] > float(s.origin[2]) - height
-                         and st.zr[o.id][0] < float(s.origin[2])
-                         and near is not None and Polygon(st.xy[o.id]).distance(near) < 0.5]
-                names = ", ".join(o.id for o in below[:4]) or "the room's walls or other objects"
-                raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
-                           f"{height:.2f} m tall {asset.category} below {sup.name}: "
-                           f"{names} in the way")
-        else:
-            region = RG.erode(region0, obst + holes, F)
-            if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
-                    and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
-                    and Polygon(F).area <= (STACK_OVER if stack else 1.5) * Polygon(st.xy[sup.owner]).area:
-                # a support smaller than the child (a pot on a burner, an apple in a bowl, a
-                # bottle on a bathtub's rim): the paper's stability rule, centre of mass over
-                # the solid support polygon, decides; only for children no bigger than the
-                # parent object (no wardrobe on a mug), up to STACK_OVER times its area in a
-                # stack of one category (a picture book on a paperback)
-                com = (asset_geometry(asset).com * scale) @ R.T
-                solid = region0.difference(shapely.union_all([Polygon(h) for h in holes])) \
-                    if holes else region0
-                # across several parts (a suitcase on a luggage rack's straps): the centre of
-                # mass anywhere over their hull, the base on the parts (checked per sample)
-                over = region0 if sup.spans else solid
-                region = shapely.affinity.translate(over, -float(com @ s.u), -float(com @ s.v))
-                # only obstacles that can reach the positions kept matter
-                obst = obstacles(st, sup, exclude, height + EPS, reach_box(region, F, 0.0),
-                                 step=step)
-                region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
-                room = st.scene.room.elements["floor"].surface
-                fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
-                region = RG.clip(region, RG.erode(fp, [], F))
-                overhang, base_solid = True, solid
-        if samples is None and (region.is_empty or region.area < 1e-10):
-            raise Fail(no_space(st, sup, F, region0, obst + holes),
-                       intrinsic=RG.erode(region0, holes, F).is_empty and not overhang)
-        if samples is None:
-            ctx = region_context(st, oid, asset, scale, R, h, sup)
-            region = apply_region_rules(ctx, others, region, "object")
-            if rel == "SECURED_TO":
-                region = height_band(ctx, support_edge, region)
-            region = apply_region_rules(ctx, others, region, "part")
-            if rel == "ON" and sup.owner != "room":
-                if not overhang:
-                    region = well_inside(region, F, height)
-                elif is_roller(F, height) and not stack:  # a loaf on a loaf: centred below
-                    # a roller overhanging the support (a baguette longer than the side table)
-                    # keeps its centre of mass ROLL_EDGE widths from the edge
-                    w = footprint_widths(F)[0]
-                    region = region.buffer(-ROLL_EDGE * w) if region.area > 1e-10 else region
-                    if region.is_empty or region.area < 1e-10:
-                        raise Fail(no_space(st, sup, F, region0, obst + holes)
-                                   + f" (a {asset.category} lying on its round side keeps its "
-                                   f"centre of mass {ROLL_EDGE * w:.2f} m inside the edge, "
-                                   f"or it rolls off)")
-            if stack:
-                region = stack_centre(region, region0, asset, scale, R, s)
-                if region.is_empty or region.area < 1e-10:
-                    raise Fail(f"no room on {sup.name}: a {asset.category} stacked on another "
-                               f"keeps its centre of mass over the middle "
-                               f"{STACK_CENTRE * 100:.0f}% of it, and its footprint on it")
+    return _OnSupport(st, oid, asset, scale, hull, sup, support_edge, others, cfg, R, toward,
+                      lean, drop, h, height, region0, exclude, F)
+
+
+def _positions(d: _OnSupport, rng: np.random.Generator) -> np.ndarray:
+    """``(n, 2)`` positions of the child's origin: leaning on an object or nested (their own
+    modules), drawn from the free space and the relations' region (``constrained``), or
+    uniform over the support (``rejection``)."""
+    st, sup, cfg = d.st, d.sup, d.cfg
+    constrained = cfg.strategy == "constrained"
+    d.leaned = lean_samples(st, d.oid, d.asset, d.scale, d.R, d.h, sup, d.others, d.region0,
+                            rng, cfg.max_trials) \
+        if constrained and involves_object(sup, d.lean) else None
+    if d.leaned is None and constrained and d.edge.relation == "IN":
+        d.leaned = nest_samples(st, d.oid, sup, d.asset, d.scale, d.R, rng, cfg.max_trials)
+    if d.leaned is not None:  # leaning on or from an object, or nested (leaning.py, nesting.py)
+        region, samples = d.leaned
+    elif constrained:
+        region, samples = _feasible(d, rng)
     else:
-        region = region0
-        samples = None
-    trials = 0
-    last = "no sample"
+        region, samples = d.region0, None
     if samples is None:
         samples = RG.sample_uniform(region, rng, cfg.max_trials)  # one triangulation, all draws
-    if strategy == "constrained" and len(samples):
-        samples = leave_room(st, oid, sup, R, F, region0, samples)
-        if rel == "HANGING_BELOW" and hung_siblings(st, oid, support_edge):
-            samples = from_one_end(samples, region0)
-    if strategy == "constrained" and rel == "IN" and sup.owner != "room" and len(samples) \
-            and round_asset(asset):
+    return samples
+
+
+def _feasible(d: _OnSupport, rng: np.random.Generator):
+    """``(region, None)``: the feasible region of the child's origin, built; or ``(None,
+    samples)`` drawn from it without building it. ``Fail`` when it is empty."""
+    st, sup, cfg, F = d.st, d.sup, d.cfg, d.F
+    rel, s, region0 = d.edge.relation, sup.surface, d.region0
+    # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
+    d.holes = holes = [RG.convex_footprint(hole) for hole in sup.holes]
+    # a stack: ON an object of the same kind (their PAG nodes share a category)
+    d.stack = rel == "ON" and sup.owner != "room" and bool(
+        set(st.pag.objects[d.oid].candidates) & set(st.pag.objects[sup.owner].candidates))
+    ruled = None if d.stack else rules_region(st, d.oid, d.asset, d.scale, d.R, d.h, sup,
+                                              d.edge, d.others, region0, F, holes)
+    # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
+    step = STEP if rel == "ON" and sup.owner != "room" else 0.0
+    if step:
+        d.lift = st.memo(sup.owner, ("step", plane_key(s), step),
+                         lambda: step_height(st, sup, step))
+    samples = None
+    if ruled is not None and d.lift == 0 and (
+            sup.owner == "room" or rel == "IN" or inside_margin(F, d.height) == 0):
+        # drawn from the relations' region less the obstacles near it, without building
+        # it (the obstacles whose grown footprint can reach the region are those listed)
+        d.obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(ruled, F, 0.0),
+                           step=step)
+        samples = RG.draw_outside(ruled, d.obst + holes, F, rng, cfg.max_trials)
+    if samples is None:
+        d.obst = obstacles(st, sup, d.exclude, d.height + EPS,
+                           reach_box(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0),
+                           step=step)
+        if not d.stack:
+            samples = free_positions(rel, sup, d.others, region0, d.obst + holes, F, d.height,
+                                     d.lift, rng, cfg.max_trials)
+    if samples is not None:
+        return None, samples  # drawn from the free space without building the region
+    if rel == "HANGING_BELOW":
+        region = _hanging_region(d)
+    else:
+        region = RG.erode(region0, d.obst + holes, F)
+        if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
+                and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
+                and Polygon(F).area <= (STACK_OVER if d.stack else 1.5) \
+                * Polygon(st.xy[sup.owner]).area:
+            region = _overhanging_region(d, step)
+    if region.is_empty or region.area < 1e-10:
+        raise Fail(no_space(st, sup, F, region0, d.obst + holes),
+                   intrinsic=RG.erode(region0, holes, F).is_empty and not d.overhang)
+    return _clip_by_relations(d, region), None
+
+
+def _hanging_region(d: _OnSupport):
+    """Where a child hanging below an object's part may be: what hangs needs its attachment
+    (the points touching the parent) on the parent's surface, not its whole footprint (a
+    towel is wider than the bar it hangs from; a hook as thick as a thin rail needs only its
+    centre over it); the owner's other parts (a towel bar's brackets) block only what hangs
+    at their depth: the hook, not the shoulders below."""
+    st, sup, F, region0 = d.st, d.sup, d.F, d.region0
+    s = sup.surface
+    Y = d.hull @ d.R.T
+    hN = Y @ s.normal
+    top = Y[hN <= hN.min() + 2e-3]
+    c = np.array([float(np.mean(top @ s.u)), float(np.mean(top @ s.v))])
+    Fc = RG.convex_footprint(np.vstack([c + o for o in ((0, 0), (1e-4, 0), (0, 1e-4),
+                                                        (1e-4, 1e-4))]))
+    d.obst = obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(region0, F, 5.0),
+                              parts=False)
+    region = RG.clip(RG.erode(region0, [], Fc),
+                     RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+    depth = hN + d.h
+    for lo_h, hi_h, fp in owner_pieces(st, sup, d.exclude, d.height + EPS):
+        at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
+        if len(at):
+            Fs = RG.convex_footprint(np.vstack([np.c_[at @ s.u, at @ s.v],
+                                                np.c_[at @ s.u, at @ s.v] + 1e-4]))
+            region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0),
+                                              [fp], Fs))
+    if region.is_empty or region.area < 1e-10:
+        if RG.erode(region0, [], Fc).is_empty:
+            raise Fail(f"no room to hang below {sup.name}: its attachment does not "
+                       f"fit the surface", intrinsic=True)
+        near = Polygon(st.xy[sup.owner]) if sup.owner in st.xy else None
+        below = [o for o in st.scene.objects.values() if o.placed and o.id not in d.exclude
+                 and o.id in st.zr and st.zr[o.id][1] > float(s.origin[2]) - d.height
+                 and st.zr[o.id][0] < float(s.origin[2])
+                 and near is not None and Polygon(st.xy[o.id]).distance(near) < 0.5]
+        names = ", ".join(o.id for o in below[:4]) or "the room's walls or other objects"
+        raise Fail(f"no room to hang a {np.ptp(F[:, 0]):.2f} x {np.ptp(F[:, 1]):.2f} m, "
+                   f"{d.height:.2f} m tall {d.asset.category} below {sup.name}: "
+                   f"{names} in the way")
+    return region
+
+
+def _overhanging_region(d: _OnSupport, step: float):
+    """A support smaller than the child (a pot on a burner, an apple in a bowl, a bottle on
+    a bathtub's rim): the paper's stability rule, centre of mass over the solid support
+    polygon, decides; only for children no bigger than the parent object (no wardrobe on a
+    mug), up to ``STACK_OVER`` times its area in a stack of one category (a picture book on
+    a paperback). The positions whose centre of mass is over the support, clear of
+    obstacles, on the floor's footprint; marks ``d`` as overhanging."""
+    st, sup, F, region0 = d.st, d.sup, d.F, d.region0
+    s = sup.surface
+    com = (asset_geometry(d.asset).com * d.scale) @ d.R.T
+    solid = region0.difference(shapely.union_all([Polygon(h) for h in d.holes])) \
+        if d.holes else region0
+    # across several parts (a suitcase on a luggage rack's straps): the centre of
+    # mass anywhere over their hull, the base on the parts (checked per sample)
+    over = region0 if sup.spans else solid
+    region = shapely.affinity.translate(over, -float(com @ s.u), -float(com @ s.v))
+    # only obstacles that can reach the positions kept matter
+    d.obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(region, F, 0.0),
+                       step=step)
+    region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0), d.obst, F))
+    room = st.scene.room.elements["floor"].surface
+    fp = Polygon(plane_coords(s, room.to_3d(np.asarray(room.polygon.exterior.coords))))
+    region = RG.clip(region, RG.erode(fp, [], F))
+    d.overhang, d.base_solid = True, solid
+    return region
+
+
+def _clip_by_relations(d: _OnSupport, region):
+    """``region`` clipped by the relations' region rules (object-level, SECURED_TO's height
+    band, then part-level contacts), kept well inside an object's top for a tippy child or a
+    roller, and over the middle of the one below for a stack."""
+    st, sup, F, rel = d.st, d.sup, d.F, d.edge.relation
+    ctx = region_context(st, d.oid, d.asset, d.scale, d.R, d.h, sup)
+    region = apply_region_rules(ctx, d.others, region, "object")
+    if rel == "SECURED_TO":
+        region = height_band(ctx, d.edge, region)
+    region = apply_region_rules(ctx, d.others, region, "part")
+    if rel == "ON" and sup.owner != "room":
+        if not d.overhang:
+            region = well_inside(region, F, d.height)
+        elif is_roller(F, d.height) and not d.stack:  # a loaf on a loaf: centred below
+            # a roller overhanging the support (a baguette longer than the side table)
+            # keeps its centre of mass ROLL_EDGE widths from the edge
+            w = footprint_widths(F)[0]
+            region = region.buffer(-ROLL_EDGE * w) if region.area > 1e-10 else region
+            if region.is_empty or region.area < 1e-10:
+                raise Fail(no_space(st, sup, F, d.region0, d.obst + d.holes)
+                           + f" (a {d.asset.category} lying on its round side keeps its "
+                           f"centre of mass {ROLL_EDGE * w:.2f} m inside the edge, "
+                           f"or it rolls off)")
+    if d.stack:
+        region = stack_centre(region, d.region0, d.asset, d.scale, d.R, sup.surface)
+        if region.is_empty or region.area < 1e-10:
+            raise Fail(f"no room on {sup.name}: a {d.asset.category} stacked on another "
+                       f"keeps its centre of mass over the middle "
+                       f"{STACK_CENTRE * 100:.0f}% of it, and its footprint on it")
+    return region
+
+
+def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    """The samples in the order they are tried: leaving room for what comes beside, from one
+    end of a rail with more to hang, round things in the middle of a container, pans on a
+    burner, a plate on a plate's axis (each first)."""
+    if d.cfg.strategy != "constrained" or not len(samples):
+        return samples
+    st, oid, sup, asset, scale, R, F = d.st, d.oid, d.sup, d.asset, d.scale, d.R, d.F
+    s, rel, region0 = sup.surface, d.edge.relation, d.region0
+    samples = leave_room(st, oid, sup, R, F, region0, samples)
+    if rel == "HANGING_BELOW" and hung_siblings(st, oid, d.edge):
+        samples = from_one_end(samples, region0)
+    if rel == "IN" and sup.owner != "room" and round_asset(asset):
         samples = middle_first(samples, region0, F, asset, scale, R, s)
-    if lift > 0 and strategy == "constrained" and len(samples):
+    if d.lift > 0:
         # centred on a low part first (a pan on a burner), so it does not straddle its edge
         com = (asset_geometry(asset).com * scale) @ R.T
         centres = step_centres(st, sup, STEP)
         seats = [c - np.array([com @ s.u, com @ s.v]) for c in centres]
         # a handle may reach past the cooktop's edge: the seat needs its footprint clear of
         # obstacles and its centre of mass on the support (the checks below measure both)
-        free = RG.erode(RG.bounding_square(region0, pad=1.0), obst, F)
+        free = RG.erode(RG.bounding_square(region0, pad=1.0), d.obst, F)
         seats = [seats[int(k)] for k in rng.permutation(len(seats))
                  if free.contains(shapely.Point(seats[int(k)]))]
         # seats that cover the fewest other burners first, so a second pan or pot still finds
@@ -590,15 +564,26 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         seats.sort(key=lambda a: covered_centres(F, a, centres))
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
-    if strategy == "constrained" and len(samples):
-        # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
-        samples = concentric_first(st, oid, sup, asset, scale, R, samples)
+    # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
+    return concentric_first(st, oid, sup, asset, scale, R, samples)
+
+
+def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Generator,
+               proposal):
+    """Try the poses in turn (``proposal`` first): dropped onto the parent's geometry, then
+    checked (relations, collisions); the first valid one, or ``Fail`` with the last reason
+    (early when the same relation keeps failing: structural)."""
+    st, oid, asset, scale, sup, cfg = d.st, d.oid, d.asset, d.scale, d.sup, d.cfg
+    s, rel, strategy = sup.surface, d.edge.relation, cfg.strategy
+    R, toward, lean, h = d.R, d.toward, d.lean, d.h
+    trials = 0
+    last = "no sample"
     same = hung = 0
     # a bowl in a bowl, a cup in a cup: from the parent's rim down onto its inside
     rise = nest_rise(st, oid, sup) if strategy == "constrained" and rel == "IN" else 0.0
-    if overhang and rel == "ON" and not sup.spans and proposal is None and toward is None \
+    if d.overhang and rel == "ON" and not sup.spans and proposal is None and toward is None \
             and strategy == "constrained" and len(samples) \
-            and never_upright(asset, scale, R, s, base_solid):
+            and never_upright(asset, scale, R, s, d.base_solid):
         # the loop below would find the base hanging off at every sample and give up after
         # STRUCTURAL_FAILURES of them: say so at once, the draws made all the same
         raise Fail(f"no valid pose on {sup.name} in "
@@ -610,66 +595,47 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
             Rt, t = np.asarray(proposal[0], float), np.asarray(proposal[1], float)
         else:
             if strategy == "rejection":
-                R, toward, lean = solve_rotation(st, oid, asset, sup, support_edge, others, rng,
+                R, toward, lean = solve_rotation(st, oid, asset, sup, d.edge, d.others, rng,
                                                  strategy, scale)
-                hN = (hull @ R.T) @ s.normal
-                h = -float(hN.min()) + EPS + drop
+                hN = (d.hull @ R.T) @ s.normal
+                h = -float(hN.min()) + EPS + d.drop
             ab = samples[k - (proposal is not None)]
             Rt = R
             if toward is not None and strategy == "constrained":
-                Rt, h = face_target(st, toward, R, hull, s, ab, h, drop, others)
+                Rt, h = face_target(st, toward, R, d.hull, s, ab, h, d.drop, d.others)
             # above the owner's low parts; the drop below brings it onto them or the surface
-            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + lift + rise) * s.normal
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + d.lift + rise) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-        if overhang and not base_supported(asset, scale, Rt, t, s, base_solid,
-                                           upright=rel == "ON"):
+        if d.overhang and not base_supported(asset, scale, Rt, t, s, d.base_solid,
+                                             upright=rel == "ON"):
             # tested before the drop, which moves the child along the normal only (the test
             # reads positions in the plane and heights relative to the lowest point)
             hung = hung + 1 if last == HANGS_OFF else 1
             last = HANGS_OFF
-            if rel == "ON" and not sup.spans and not stack and hung >= STRUCTURAL_FAILURES:
+            if rel == "ON" and not sup.spans and not d.stack and hung >= STRUCTURAL_FAILURES:
                 # the base misses the support wherever it is drawn: structural (across the
                 # parts of a spanning support, feet on two straps, fewer draws hold)
                 break
             continue
         dropped = False
         if (rel == "ON" or rise) and sup.owner != "room":
-            # settle onto the parent's actual geometry: a plate on a plate sits in its well
-            parent = st.scene.objects[sup.owner]
-            d = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
-                              st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
-            if rise and np.isfinite(d):  # nested: rays miss curved walls touching between vertices
-                d = pieces_drop(asset, cand.transform(), parent, -s.normal, d + 5e-3)
-            dropped = bool(np.isfinite(d) and d > 2 * EPS)
-            if dropped:
-                t = t - (d - EPS) * s.normal
-                cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-            if lift > 0:  # rest on the low parts under its base (rays may miss a burner)
-                pts = world_points(cand, hull_only=True)
-                up = step_under(st, sup, pts, STEP)
-                if up > 0:
-                    t = t + up * s.normal
-                    cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-                if float(np.min((pts - s.origin) @ s.normal)) + up > THIN_LOW + EPS and \
-                        not base_supported(asset, scale, Rt, t, s, low_parts(st, sup, STEP),
-                                           upright=True):
-                    # raised onto low parts, its centre of mass must be over what holds it:
-                    # a pot half on a burner's edge tips into the gap in settling
-                    last = "its base would rest on the edge of a low part (centre of mass " \
-                           "outside what holds it)"
-                    continue
-        if leaned is not None and lean and not lean[0][0].parent.is_room_element:
+            cand, dropped, why = _onto_parent(d, cand, rise)
+            t = cand.position
+            if why:
+                last = why
+                continue
+        if d.leaned is not None and lean and not lean[0][0].parent.is_room_element:
             # onto the parent's pieces, not its face's plane (a reclined back cushion)
             t = lean_slide(st, oid, asset, scale, Rt, t, lean[0])
             cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
         # footprint inside the support polygon: the region guarantees it, except after a TOWARD
         # turn, for rejection samples and proposals
-        if not overhang and (Rt is not R or strategy == "rejection"):
+        if not d.overhang and (Rt is not R or strategy == "rejection"):
             Fw = plane_coords(s, world_points(cand, hull_only=True))
-            if not region0.contains(Polygon(RG.convex_footprint(Fw))):
+            if not d.region0.contains(Polygon(RG.convex_footprint(Fw))):
                 last = f"footprint leaves {sup.name}"
                 continue
-        ok, why, checks = validate_pose(st, cand, support_edge, others, sup)
+        ok, why, checks = validate_pose(st, cand, d.edge, d.others, sup)
         if not ok:
             # the region makes relations hold by construction; the same relation failing
             # again and again is structural (a pan that would tip, a part that is not the
@@ -685,7 +651,7 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         if hit is not None:
             last = f"collides with {hit}"
             continue
-        if rel == "ON" and sup.owner != "room" and dropped and lift == 0:
+        if rel == "ON" and sup.owner != "room" and dropped and d.lift == 0:
             # sunk below the named surface onto another part (a teapot inside a tray's rim
             # rests on its base): record the part it touches, as settling will see it
             part = resting_part(st, sup, cand)
@@ -695,3 +661,34 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
         return (Rt, t, sup, body), trials, checks, None
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
 
+
+def _onto_parent(d: _OnSupport, cand: PlacedObject, rise: float
+                 ) -> tuple[PlacedObject, bool, str]:
+    """``cand`` settled onto the parent's actual geometry (a plate on a plate sits in its
+    well; nested, onto its inside) and onto the owner's low parts under its base: ``(cand,
+    dropped, why)`` with ``why`` saying why the pose fails ("" when it does not)."""
+    st, sup, asset, scale = d.st, d.sup, d.asset, d.scale
+    s, Rt, t = sup.surface, cand.rotation, cand.position
+    parent = st.scene.objects[sup.owner]
+    dist = drop_distance(world_points(cand, hull_only=True), asset, cand.transform(),
+                         st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
+    if rise and np.isfinite(dist):  # nested: rays miss curved walls touching between vertices
+        dist = pieces_drop(asset, cand.transform(), parent, -s.normal, dist + 5e-3)
+    dropped = bool(np.isfinite(dist) and dist > 2 * EPS)
+    if dropped:
+        t = t - (dist - EPS) * s.normal
+        cand = PlacedObject(d.oid, asset.category, asset, scale, Rt, t)
+    if d.lift > 0:  # rest on the low parts under its base (rays may miss a burner)
+        pts = world_points(cand, hull_only=True)
+        up = step_under(st, sup, pts, STEP)
+        if up > 0:
+            t = t + up * s.normal
+            cand = PlacedObject(d.oid, asset.category, asset, scale, Rt, t)
+        if float(np.min((pts - s.origin) @ s.normal)) + up > THIN_LOW + EPS and \
+                not base_supported(asset, scale, Rt, t, s, low_parts(st, sup, STEP),
+                                   upright=True):
+            # raised onto low parts, its centre of mass must be over what holds it:
+            # a pot half on a burner's edge tips into the gap in settling
+            return cand, dropped, ("its base would rest on the edge of a low part (centre of "
+                                   "mass outside what holds it)")
+    return cand, dropped, ""
