@@ -34,8 +34,9 @@ from .intent import beside, loose_reason, names_part, overhang, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
-from .regions import apply_region_rules, height_band, obstacles
+from .regions import apply_region_rules, obstacles
 from .rotation import solve_rotation
+from .rules import RULES
 from .sampling import (
     HANGS_OFF,
     ROLL_EDGE,
@@ -70,7 +71,7 @@ from .sampling import (
 from .stacking import STACK_CENTRE, STACK_OVER, may_stack, place_stacked, stack_centre
 from .standing import may_stand_in, place_standing
 from .state import SolveState, plane_coords, plane_key, support_chain
-from .support import Support, support_candidates
+from .support import Support
 from .validation import resolution, validate_pose
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
@@ -163,7 +164,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
         obj.rests_on = pose[4] if len(pose) > 4 else ("back" if hang is not None else None)
-        obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
+        obj.fixed = RULES[support_edge.relation].fixed
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
         for i in loosen:
@@ -200,7 +201,7 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                  others: list[Edge], rng: np.random.Generator, cfg: SolverConfig, proposal):
     geom = asset_geometry(asset)
     hull = geom.hull * scale
-    sups = support_candidates(st, support_edge)
+    sups = RULES[support_edge.relation].surfaces(st, support_edge)
     order = rng.permutation(len(sups)) if len(sups) > 1 and support_edge.parent.surface is None \
         and support_edge.relation != "ON" else np.arange(len(sups))
     if support_edge.relation == "ON" and len(sups) > 1:
@@ -347,10 +348,7 @@ def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarr
     if rel == "IN" and height > sup.clearance:
         raise Fail(f"IN: {oid} is {height:.2f} m tall but {sup.name} has "
                    f"{sup.clearance:.2f} m of free height")
-    drop = 0.0
-    if rel == "HANGING_BELOW":
-        lo, hi = support_edge.param("drop")
-        drop = rng.uniform(lo, hi)
+    drop = RULES[rel].offset(support_edge, rng)
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
@@ -413,14 +411,14 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
         samples = RG.draw_outside(ruled, d.obst + holes, F, rng, cfg.max_trials)
     if samples is None:
         d.obst = obstacles(st, sup, d.exclude, d.height + EPS,
-                           reach_box(region0, F, 5.0 if rel == "HANGING_BELOW" else 0.0),
+                           reach_box(region0, F, 5.0 if RULES[rel].hangs else 0.0),
                            step=step)
         if not d.stack:
             samples = free_positions(rel, sup, d.others, region0, d.obst + holes, F, d.height,
                                      d.lift, rng, cfg.max_trials)
     if samples is not None:
         return None, samples  # drawn from the free space without building the region
-    if rel == "HANGING_BELOW":
+    if RULES[rel].hangs:
         region = _hanging_region(d)
     else:
         region = RG.erode(region0, d.obst + holes, F)
@@ -511,8 +509,7 @@ def _clip_by_relations(d: _OnSupport, region):
     st, sup, F, rel = d.st, d.sup, d.F, d.edge.relation
     ctx = region_context(st, d.oid, d.asset, d.scale, d.R, d.h, sup)
     region = apply_region_rules(ctx, d.others, region, "object")
-    if rel == "SECURED_TO":
-        region = height_band(ctx, d.edge, region)
+    region = RULES[rel].band(ctx, d.edge, region)
     region = apply_region_rules(ctx, d.others, region, "part")
     if rel == "ON" and sup.owner != "room":
         if not d.overhang:
@@ -545,7 +542,7 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
     st, oid, sup, asset, scale, R, F = d.st, d.oid, d.sup, d.asset, d.scale, d.R, d.F
     s, rel, region0 = sup.surface, d.edge.relation, d.region0
     samples = leave_room(st, oid, sup, R, F, region0, samples)
-    if rel == "HANGING_BELOW" and hung_siblings(st, oid, d.edge):
+    if RULES[rel].hangs and hung_siblings(st, oid, d.edge):
         samples = from_one_end(samples, region0)
     if rel == "IN" and sup.owner != "room" and round_asset(asset):
         samples = middle_first(samples, region0, F, asset, scale, R, s)

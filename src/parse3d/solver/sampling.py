@@ -19,15 +19,8 @@ from ..scene.model import PlacedObject
 from .choice import touching
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .regions import (
-    REGION_RULES,
-    RegionContext,
-    apply_region_rules,
-    height_band,
-    parent_frame,
-    side_vector,
-    steps_on,
-)
+from .regions import apply_region_rules, steps_on
+from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
 
@@ -74,8 +67,9 @@ def rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nda
     (when the obstacles leave its cones nothing, nothing is drawn and the region is built),
     but a rule emptying it is no proof."""
     rel = support_edge.relation
-    if rel == "HANGING_BELOW" or (
-            rel != "SECURED_TO" and all(REGION_RULES[e.relation][0] == "none" for e in others)):
+    rule = RULES[rel]
+    if rule.hangs or (
+            not rule.banded and all(RULES[e.relation].region_phase == "none" for e in others)):
         return None
     free = RG.erode(region0, holes, F)
     if free.is_empty or free.area < 1e-10:
@@ -83,8 +77,7 @@ def rules_region(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nda
     ctx = region_context(st, oid, asset, scale, R, h, sup)
     try:
         free = apply_region_rules(ctx, others, free, "object")
-        if rel == "SECURED_TO":
-            free = height_band(ctx, support_edge, free)
+        free = rule.band(ctx, support_edge, free)
         return apply_region_rules(ctx, others, free, "part")
     except Fail:
         if any(e.relation == "TOWARD" for e in others):
@@ -412,7 +405,7 @@ def free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: li
     None when that region must be built (elsewhere, or when it is empty or small: then its
     construction says why, or finds the few positions left)."""
     if rel not in ("ON", "IN") or lift > 0 \
-            or any(REGION_RULES[e.relation][0] != "none" for e in others):
+            or any(RULES[e.relation].region_phase != "none" for e in others):
         return None
     margin = inside_margin(F, height) if rel == "ON" and sup.owner != "room" else 0.0
     return RG.free_samples(region0, obst, F, rng, n, margin=margin)

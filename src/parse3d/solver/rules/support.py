@@ -1,0 +1,93 @@
+"""The support relations (``ON``, ``IN``, ``HANGING_BELOW``, ``SECURED_TO``): each object has
+exactly one. They turn the child's contact surface against the support (``R0``, set by
+:func:`parse3d.solver.rotation.solve_rotation`) and clip nothing themselves: the support
+surface is the region. ``HANGING_BELOW`` hangs its child ``drop`` below the parent;
+``SECURED_TO`` keeps its centre in a height band."""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+from shapely.geometry.base import BaseGeometry
+
+from ...geometry import regions as RG
+from ...pag.model import Edge
+from ...relations import SUPPORT
+from ..config import Fail
+from ..geometry import asset_geometry
+from ..state import SolveState
+from ..support import Support, support_candidates
+from .base import RegionContext, RelationRule, register
+
+__all__ = ["SupportRule", "On", "In", "HangingBelow", "SecuredTo", "height_band"]
+
+
+class SupportRule(RelationRule):
+    """A support relation: its surfaces are the parent's (:func:`support_candidates`)."""
+
+    family = "support"
+    kind = SUPPORT
+    contact = True
+
+    def surfaces(self, st: SolveState, edge: Edge) -> list[Support]:
+        return support_candidates(st, edge)
+
+
+@register
+class On(SupportRule):
+    """Rests on the parent part's upward surface (or the floor)."""
+
+    names = ("ON",)
+
+
+@register
+class In(SupportRule):
+    """Rests on one of the parent's internal support surfaces, within its free height."""
+
+    names = ("IN",)
+
+
+@register
+class HangingBelow(SupportRule):
+    """Hangs below the parent's downward surface (or the ceiling), ``drop`` below it."""
+
+    names = ("HANGING_BELOW",)
+    fixed = True
+    hangs = True
+
+    def offset(self, edge: Edge, rng: np.random.Generator) -> float:
+        lo, hi = edge.param("drop")
+        return rng.uniform(lo, hi)
+
+
+@register
+class SecuredTo(SupportRule):
+    """Fixed to a wall or an object's surface, its centre within ``height`` of the floor."""
+
+    names = ("SECURED_TO",)
+    fixed = True
+    banded = True
+
+    def band(self, ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeometry:
+        return height_band(ctx, edge, region)
+
+
+def height_band(ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeometry:
+    """SECURED_TO: clip origin positions on a vertical support to the centre-height range."""
+    lo, hi = edge.param("height")
+    s = ctx.sup.surface
+    vz = float(s.v[2])
+    if abs(vz) < 0.5:
+        return region
+    c_off = float(((asset_geometry(ctx.asset).center * ctx.scale) @ ctx.R.T)[2])
+    v_lo = (lo - c_off - s.origin[2]) / vz
+    v_hi = (hi - c_off - s.origin[2]) / vz
+    out = RG.clip(region, shapely.box(-1e3, min(v_lo, v_hi), 1e3, max(v_lo, v_hi)))
+    if out.is_empty:
+        half = float(np.ptp((asset_geometry(ctx.asset).hull * ctx.scale) @ ctx.R.T[:, 2])) / 2
+        if hi < half - 1e-3:  # the geometry, not the room, rules it out
+            raise Fail(f"SECURED_TO height {lo}-{hi} m: {ctx.oid} is {2 * half:.2f} m tall, so "
+                       f"its centre is at least {half:.2f} m above the floor (height is the "
+                       f"centre's, not the bottom's)", intrinsic=True)
+        raise Fail(f"SECURED_TO height {lo}-{hi} m: no free space at that height on {ctx.sup.name}")
+    return out
