@@ -21,7 +21,7 @@ import shapely
 from ..measure.checks import check_edge, check_relations, object_centroid
 from ..pag.algorithms import assembly_order
 from ..pag.model import PAG
-from ..relations import OBJECT, SUPPORT
+from ..relations import OBJECT
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
 from .choice import room_failure
@@ -30,6 +30,7 @@ from .config import Fail, SolverConfig, stage_rng
 from .geometry import asset_geometry
 from .intent import whole_object
 from .placement import Placement, place_object, resolution, scaled_mesh
+from .rules import RULES
 from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
 
@@ -677,14 +678,13 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
     object, and last every one left out (at most ``MAX_RELAX_STEPS`` steps). Support
     relations are never relaxed; ``done`` (edges already left out) is left out."""
     edges = pag.edges_of(oid)
-    free = [i for i, e in enumerate(edges) if i > 0 and i not in done
-            and e.spec.kind != SUPPORT]
-    obj = [i for i in free if edges[i].spec.kind == OBJECT]
-    part = [i for i in free if edges[i].spec.kind != OBJECT]
+    order = [RULES[e.relation].relax_order for e in edges]  # None: never relaxed (support)
+    free = [i for i in range(1, len(edges)) if i not in done and order[i] is not None]
+    obj = [i for i in free if order[i] == 0]
+    part = [i for i in free if order[i] > 0]
 
     def soft(i: int) -> str:
-        e = edges[i]
-        return "loose" if e.child.part is not None and e.spec.kind != OBJECT else "skip"
+        return "loose" if edges[i].child.part is not None and order[i] > 0 else "skip"
 
     steps: list[dict[int, str]] = []
     named = [i for i in _named_edges(pag, oid, reason) if i in free]
