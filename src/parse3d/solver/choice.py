@@ -21,6 +21,7 @@ from .geometry import asset_geometry, hull_extents, part_points, rect_sides
 from .hanging import edge_up, rail_scale, thinness
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
+from .rules import RULES
 from .state import SolveState, plane_coords
 from .support import _flat_cached, _flat_enough, cover_part, filled, support_candidates
 
@@ -190,22 +191,13 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
     out = []
     for e in touching(pag, oid):
         text = edge_text(e)
-        if e.parent.object == oid and e.relation == "ON" and e.child.object != oid and set(
-                pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
-            out.append((e.parent.part, e.parent.index, text, "stack_base"))
-        if e.parent.object == oid and e.relation == "IN" and e.parent.part is None:
-            out.append((None, None, text, "internal"))  # IN the whole object: any inside
+        rule = RULES[e.relation]  # what each relation asks: rules/support.py, contact.py
+        out += rule.needs(pag, oid, e, text)
         for ref, role in ((e.child, "child"), (e.parent, "parent")):
             if ref.object != oid or ref.part is None:
                 continue
             out.append((ref.part, ref.index, text, "part"))
-            if role == "parent" and e.relation == "IN":
-                out.append((ref.part, ref.index, text, "internal"))
-            if role == "parent" and e.relation == "ON" and ref.surface in (None, "top"):
-                out.append((ref.part, ref.index, text, "free_top"))
-            if role == "child" and e.relation == "AGAINST":
-                out.append((ref.part, ref.index, text,
-                            f"extreme:{ref.surface or e.spec.child_surface}"))
+            out += rule.part_needs(e, ref, role, text)
     return out
 
 

@@ -6,6 +6,7 @@ from __future__ import annotations
 from ..measure.checks import check_edge
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
+from .rules import RULES
 from .state import SolveState
 from .support import Support
 
@@ -32,7 +33,7 @@ def resolution(edge: Edge, choice, *, final: bool = False) -> dict | None:
     return {"parent_part": None if room else choice.part,
             "parent_element": choice.part if room else None,
             "parent_surface": None if room and final else choice.surface,
-            "internal": edge.relation == "IN" and not (room and final)}
+            "internal": RULES[edge.relation].internal and not (room and final)}
 
 
 def relations_and_collisions(st, cand, others, body, R, t) -> tuple[list | None, str]:

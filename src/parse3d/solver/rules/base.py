@@ -20,7 +20,7 @@ from ...assets.model import Asset
 from ...geometry import regions as RG
 from ...geometry.surfaces import Surface, surface_from_bbox
 from ...measure.checks import object_centroid
-from ...pag.model import Edge
+from ...pag.model import PAG, Edge
 from ...pag.refs import Ref
 from ...relations import SURFACES
 from ..config import Fail
@@ -119,6 +119,8 @@ class RelationRule:
     hangs: bool = False
     #: Support rules: :meth:`band` clips the region (a height range on a wall).
     banded: bool = False
+    #: Support rules: the child rests on the parent's internal support surfaces.
+    internal: bool = False
 
     def rotate(self, st: SolveState, asset: Asset, o: Orientation, e: Edge) -> None:
         """Constrain the rotation ``o`` being built for edge ``e``'s child (in place)."""
@@ -127,6 +129,16 @@ class RelationRule:
         """``region`` (positions of the child's origin, plane coordinates) clipped to where
         ``e`` can hold; ``Fail`` naming what blocked it when nothing is left."""
         return region
+
+    def needs(self, pag: PAG, oid: str, e: Edge, text: str) -> list[tuple]:
+        """What ``e`` asks of the asset of ``oid`` beyond the parts it names: ``(part label,
+        index or None, text, kind)`` entries of :func:`parse3d.solver.choice.requirements`."""
+        return []
+
+    def part_needs(self, e: Edge, ref: Ref, role: str, text: str) -> list[tuple]:
+        """What ``e`` asks of the part ``ref`` names (``role``: ``child`` or ``parent``),
+        beyond existing; entries as :meth:`needs`."""
+        return []
 
     def surfaces(self, st: SolveState, edge: Edge) -> list[Support]:
         """Support rules: the parent's surfaces that may hold the child, in the order tried."""

@@ -12,6 +12,7 @@ from ...assets.model import Asset, Part
 from ...measure.checks import EPS
 from ...measure.reach import STAND, stands_to_lean
 from ...pag.model import Edge
+from ...pag.refs import Ref
 from ...relations import PART, SURFACES
 from ..config import Fail
 from ..geometry import asset_geometry, part_points
@@ -45,6 +46,12 @@ class Against(ContactRule):
     from it; the named part must be the child's extreme along that normal."""
 
     names = ("AGAINST",)
+
+    def part_needs(self, e: Edge, ref: Ref, role: str, text: str) -> list[tuple]:
+        # a child part reaches furthest along its surface normal (else another part touches)
+        if role == "child":
+            return [(ref.part, ref.index, text, f"extreme:{ref.surface or e.spec.child_surface}")]
+        return []
 
     def rotate(self, st: SolveState, asset: Asset, o: Orientation, e: Edge) -> None:
         turn_to_face(st, o, e, contact_normal(e.child, e.spec.child_surface), -1.0)

@@ -11,7 +11,8 @@ import shapely
 from shapely.geometry.base import BaseGeometry
 
 from ...geometry import regions as RG
-from ...pag.model import Edge
+from ...pag.model import PAG, Edge
+from ...pag.refs import Ref
 from ...relations import SUPPORT
 from ..config import Fail
 from ..geometry import asset_geometry
@@ -39,12 +40,35 @@ class On(SupportRule):
 
     names = ("ON",)
 
+    def needs(self, pag: PAG, oid: str, e: Edge, text: str) -> list[tuple]:
+        # the parent of a child of its own category is the base of a stack: it must not roll
+        if e.parent.object == oid and e.child.object != oid and set(
+                pag.objects[e.child.object].candidates) & set(pag.objects[oid].candidates):
+            return [(e.parent.part, e.parent.index, text, "stack_base")]
+        return []
+
+    def part_needs(self, e: Edge, ref: Ref, role: str, text: str) -> list[tuple]:
+        # a parent part's top is flat, with room on it
+        if role == "parent" and ref.surface in (None, "top"):
+            return [(ref.part, ref.index, text, "free_top")]
+        return []
+
 
 @register
 class In(SupportRule):
     """Rests on one of the parent's internal support surfaces, within its free height."""
 
     names = ("IN",)
+    internal = True
+
+    def needs(self, pag: PAG, oid: str, e: Edge, text: str) -> list[tuple]:
+        if e.parent.object == oid and e.parent.part is None:
+            return [(None, None, text, "internal")]  # IN the whole object: any inside
+        return []
+
+    def part_needs(self, e: Edge, ref: Ref, role: str, text: str) -> list[tuple]:
+        # a parent part holds an internal support surface
+        return [(ref.part, ref.index, text, "internal")] if role == "parent" else []
 
 
 @register
