@@ -28,7 +28,7 @@ from .choice import (
 )
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
-from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices
+from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import rail_fit
 from .intent import beside, loose_reason, names_part, overhang, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
@@ -53,7 +53,6 @@ from .sampling import (
     is_roller,
     leave_room,
     low_parts,
-    may_fit,
     middle_first,
     never_upright,
     no_space,
@@ -201,20 +200,9 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                  others: list[Edge], rng: np.random.Generator, cfg: SolverConfig, proposal):
     geom = asset_geometry(asset)
     hull = geom.hull * scale
-    sups = RULES[support_edge.relation].surfaces(st, support_edge)
-    order = rng.permutation(len(sups)) if len(sups) > 1 and support_edge.parent.surface is None \
-        and support_edge.relation != "ON" else np.arange(len(sups))
-    if support_edge.relation == "ON" and len(sups) > 1:
-        # in their order (the highest first), but those the child's footprint cannot fit in
-        # any turn after the others: a bag on a bench's seat before its buttons, a cushion on
-        # a rug's field before its border strips (they stay, for a child that must overhang)
-        axis = SURFACE_AXES[support_edge.child.surface or support_edge.spec.child_surface]
-        ext = sorted(scale * float(x) for k, x in enumerate(hull_extents(asset)[0]) if k != axis)
-        order = np.array(sorted(range(len(sups)), key=lambda i: not may_fit(sups[i], ext)))
-    if support_edge.parent.object == "wall" or (support_edge.relation == "IN" and len(sups) > 1):
-        order = rng.permutation(len(sups))
-        if support_edge.relation == "IN":  # across a cradle's bars before on one of them
-            order = np.array(sorted(order, key=lambda i: not sups[int(i)].spans))
+    rule = RULES[support_edge.relation]
+    sups = rule.surfaces(st, support_edge)
+    order = rule.order(sups, support_edge, asset, scale, rng)
     body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []

@@ -12,7 +12,6 @@ from shapely.geometry import Polygon
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
-from ..geometry.memo import per_object
 from ..measure.checks import EPS, world_points
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
@@ -24,7 +23,7 @@ from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
 
-__all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces", "round_asset", "middle_first", "inset", "reach_box", "step_height", "step_under", "hung_siblings", "from_one_end", "leave_room", "base_supported", "may_fit", "never_upright", "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY", "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller", "footprint_widths", "well_inside", "face_target", "no_space"]
+__all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces", "round_asset", "middle_first", "inset", "reach_box", "step_height", "step_under", "hung_siblings", "from_one_end", "leave_room", "base_supported", "never_upright", "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY", "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller", "footprint_widths", "well_inside", "face_target", "no_space"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
@@ -313,19 +312,6 @@ def base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,
             return False
         inner = hull.buffer(1e-6)  # a support narrower than the margin: the centre of mass over it
     return inner.contains(shapely.Point(com))
-
-
-def may_fit(sup: Support, ext: list[float]) -> bool:
-    """Whether a footprint of sides ``ext`` (short, long) may fit the support's region in
-    some turn: not longer or wider than the sides of the region's oriented envelope."""
-    short, long = _region_sides(sup.region)
-    return ext[0] <= short + 1e-9 and ext[1] <= long + 1e-9
-
-
-@per_object()
-def _region_sides(region) -> tuple[float, float]:
-    """:func:`rect_sides` of a support region, kept per region object."""
-    return rect_sides(region)
 
 
 def never_upright(asset: Asset, scale: float, R: np.ndarray, s, solid) -> bool:

@@ -10,21 +10,25 @@ import numpy as np
 import shapely
 from shapely.geometry.base import BaseGeometry
 
+from ...assets.model import Asset
 from ...geometry import regions as RG
+from ...geometry.memo import per_object
 from ...pag.model import PAG, Edge
 from ...pag.refs import Ref
-from ...relations import SUPPORT
+from ...relations import SUPPORT, SURFACES
 from ..config import Fail
-from ..geometry import asset_geometry
+from ..geometry import asset_geometry, hull_extents, rect_sides
 from ..state import SolveState
 from ..support import Support, support_candidates
 from .base import RegionContext, RelationRule, register
 
-__all__ = ["SupportRule", "On", "In", "HangingBelow", "SecuredTo", "height_band"]
+__all__ = ["SupportRule", "On", "In", "HangingBelow", "SecuredTo", "height_band", "may_fit"]
 
 
 class SupportRule(RelationRule):
-    """A support relation: its surfaces are the parent's (:func:`support_candidates`)."""
+    """A support relation: its surfaces are the parent's (:func:`support_candidates`), tried
+    in random order when the edge names no surface, else in theirs; a ``wall`` (any wall)
+    in random order."""
 
     family = "support"
     kind = SUPPORT
@@ -32,6 +36,16 @@ class SupportRule(RelationRule):
 
     def surfaces(self, st: SolveState, edge: Edge) -> list[Support]:
         return support_candidates(st, edge)
+
+    def order(self, sups: list[Support], edge: Edge, asset: Asset, scale: float,
+              rng: np.random.Generator) -> np.ndarray:
+        """Indices into ``sups`` in the order they are tried for the child ``asset`` at
+        ``scale``."""
+        order = rng.permutation(len(sups)) if len(sups) > 1 and edge.parent.surface is None \
+            else np.arange(len(sups))
+        if edge.parent.object == "wall":
+            order = rng.permutation(len(sups))
+        return order
 
 
 @register
@@ -53,6 +67,22 @@ class On(SupportRule):
             return [(ref.part, ref.index, text, "free_top")]
         return []
 
+    def order(self, sups: list[Support], edge: Edge, asset: Asset, scale: float,
+              rng: np.random.Generator) -> np.ndarray:
+        """In their order (the highest first), but those the child's footprint cannot fit in
+        any turn after the others: a bag on a bench's seat before its buttons, a cushion on
+        a rug's field before its border strips (they stay, for a child that must overhang)."""
+        order = np.arange(len(sups))
+        if len(sups) > 1:
+            label = edge.child.surface or edge.spec.child_surface
+            axis = int(np.argmax(np.abs(SURFACES[label])))  # the asset axis it stands along
+            ext = sorted(scale * float(x) for k, x in enumerate(hull_extents(asset)[0])
+                         if k != axis)
+            order = np.array(sorted(range(len(sups)), key=lambda i: not may_fit(sups[i], ext)))
+        if edge.parent.object == "wall":
+            order = rng.permutation(len(sups))
+        return order
+
 
 @register
 class In(SupportRule):
@@ -69,6 +99,16 @@ class In(SupportRule):
     def part_needs(self, e: Edge, ref: Ref, role: str, text: str) -> list[tuple]:
         # a parent part holds an internal support surface
         return [(ref.part, ref.index, text, "internal")] if role == "parent" else []
+
+    def order(self, sups: list[Support], edge: Edge, asset: Asset, scale: float,
+              rng: np.random.Generator) -> np.ndarray:
+        """In random order, across a cradle's bars (a spanning support) before on one."""
+        order = super().order(sups, edge, asset, scale, rng)
+        if edge.parent.object != "wall" and len(sups) > 1:
+            order = rng.permutation(len(sups))
+        if edge.parent.object == "wall" or len(sups) > 1:
+            order = np.array(sorted(order, key=lambda i: not sups[int(i)].spans))
+        return order
 
 
 @register
@@ -94,6 +134,19 @@ class SecuredTo(SupportRule):
 
     def band(self, ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeometry:
         return height_band(ctx, edge, region)
+
+
+def may_fit(sup: Support, ext: list[float]) -> bool:
+    """Whether a footprint of sides ``ext`` (short, long) may fit the support's region in
+    some turn: not longer or wider than the sides of the region's oriented envelope."""
+    short, long = _region_sides(sup.region)
+    return ext[0] <= short + 1e-9 and ext[1] <= long + 1e-9
+
+
+@per_object()
+def _region_sides(region) -> tuple[float, float]:
+    """:func:`rect_sides` of a support region, kept per region object."""
+    return rect_sides(region)
 
 
 def height_band(ctx: RegionContext, edge: Edge, region: BaseGeometry) -> BaseGeometry:
