@@ -25,7 +25,13 @@ from .rules import RULES
 from .state import SolveState, plane_coords
 from .support import _flat_cached, _flat_enough, cover_part, filled, support_candidates
 
-__all__ = ["THIN_HANG", "hung_edge_up", "HEADROOM_FIT", "SURFACE_AXES", "extent_along", "extent_across", "SPAN_PART", "SPAN_BEARING", "span_need", "free_headroom", "CONTENTS_AREA", "contents_scale", "edge_text", "touching", "requirements", "lacks", "FREE_TOP", "FLAT_TOL", "lies_flat", "RIM_WIDTH", "RIM_OPENING", "rounded_rim", "free_top", "LAYER", "RANKED_SLOTS", "boards_hold", "too_tall_failure", "room_failure", "alternative_instance", "flush_edges", "part_overhang"]
+__all__ = ["THIN_HANG", "hung_edge_up", "HEADROOM_FIT", "SURFACE_AXES", "extent_along",
+           "extent_across", "SPAN_PART", "SPAN_BEARING", "span_need", "free_headroom",
+           "CONTENTS_AREA", "contents_scale", "edge_text", "touching", "requirements", "lacks",
+           "FREE_TOP", "FLAT_TOL", "lies_flat", "RIM_WIDTH", "RIM_OPENING", "rounded_rim",
+           "free_top", "LAYER", "RANKED_SLOTS", "boards_hold", "too_tall_failure", "room_failure",
+           "alternative_instance", "flush_edges", "part_overhang", "draw_instance",
+           "instance_scale"]
 
 
 #: A child whose height is at most this share of its next smaller extent is thin (a folded

@@ -23,7 +23,12 @@ from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
 
-__all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces", "round_asset", "middle_first", "inset", "reach_box", "step_height", "step_under", "hung_siblings", "from_one_end", "leave_room", "base_supported", "never_upright", "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY", "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller", "footprint_widths", "well_inside", "face_target", "no_space"]
+__all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces",
+           "round_asset", "middle_first", "inset", "reach_box", "step_height", "step_under",
+           "hung_siblings", "from_one_end", "leave_room", "base_supported", "never_upright",
+           "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
+           "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller",
+           "footprint_widths", "well_inside", "face_target", "no_space"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold

@@ -21,7 +21,8 @@ from .state import SolveState, plane_coords
 from .support import Support
 from .validation import relations_and_collisions, resolution
 
-__all__ = ["drop_into", "drop_onto", "PILE_BASES", "PILE_AREA", "STACK_ON", "may_stack", "place_stacked", "STACK_CENTRE", "STACK_OVER", "stack_centre"]
+__all__ = ["drop_into", "drop_onto", "PILE_BASES", "PILE_AREA", "STACK_ON", "may_stack",
+           "place_stacked", "STACK_CENTRE", "STACK_OVER", "stack_centre"]
 
 
 def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
