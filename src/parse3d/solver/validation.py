@@ -15,6 +15,9 @@ __all__ = ["validate_pose", "resolution", "relations_and_collisions"]
 
 def validate_pose(st: SolveState, cand: PlacedObject, support_edge: Edge, others: list[Edge],
                   sup: Support) -> tuple[bool, str, list]:
+    """Check a candidate pose against the support edge (resolved on ``sup``) and the object's
+    other relations, in that order: ``(True, "", checks)`` with one ``(holds, residuals,
+    detail)`` per edge, or ``(False, why the first one failed, [])``."""
     results = []
     for e in [support_edge, *others]:
         holds, res, detail = check_edge(st.scene, e, cand, resolved=resolution(e, sup.choice))
