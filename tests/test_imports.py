@@ -120,3 +120,85 @@ def test_imports_follow_the_layers():
                                        ("geometry", "pag"), ("assets", "scene")])
 def test_the_contract_rejects_an_upward_import(low, high):
     assert high not in allowed(low)
+
+
+#: Inside the solver, each module's level: a module imports only modules of lower levels (the
+#: stages of Algorithm 1 build on the relation rules, the rules on the solver's state).
+SOLVER_LEVELS: dict[str, int] = {
+    "config": 0, "geometry": 0, "collision": 0, "library": 0, "walls": 0,
+    "state": 1, "intent": 1,
+    "support": 2,
+    "rules.base": 3,
+    "rules.support": 4, "rules.contact": 4, "rules.alignment": 4, "rules.layout": 4,
+    "rules": 5,
+    "regions": 6, "rotation": 6,
+    "hanging": 7, "nesting": 7, "ledge": 7,
+    "standing": 8, "leaning": 8,
+    "choice": 9, "validation": 9,
+    "sampling": 10,
+    "stacking": 11,
+    "placement": 12,
+    "search": 13,
+    "__init__": 14,
+}
+
+#: Imports up the levels, made inside a function: leaning on an object's face (a finite
+#: patch, not a plane) is worked out in ``leaning`` for the rotation and the contact rule.
+SOLVER_UPWARD = {("rotation", "leaning"), ("rules.contact", "leaning")}
+
+
+def _solver_module(name: str) -> str:
+    return name[len("parse3d.solver"):].lstrip(".") or "__init__"
+
+
+def test_every_solver_module_has_a_level():
+    solver = SRC / "solver"
+    mods = {_solver_module("parse3d." + ".".join(f.relative_to(SRC).with_suffix("").parts)
+                           .replace(".__init__", "")) for f in solver.rglob("*.py")}
+    assert mods - set(SOLVER_LEVELS) == set(), "add new solver modules to SOLVER_LEVELS"
+
+
+def test_solver_modules_import_only_lower_levels():
+    bad = []
+    for mod, target, file, line in imports():
+        if not (mod.startswith("parse3d.solver") and target.startswith("parse3d.solver")):
+            continue
+        a, b = _solver_module(mod), _solver_module(target)
+        if a == b or (a, b) in SOLVER_UPWARD:
+            continue
+        if SOLVER_LEVELS.get(b, 99) >= SOLVER_LEVELS.get(a, -1):
+            bad.append(f"{file}:{line}: solver.{a} imports solver.{b}")
+    assert bad == [], "solver layering (SOLVER_LEVELS):\n" + "\n".join(bad)
+
+
+def test_every_relation_has_exactly_one_rule_that_agrees_with_its_flags():
+    from parse3d.relations import OBJECT, RELATIONS, SUPPORT
+    from parse3d.solver.rules import RULES
+
+    assert set(RULES) == set(RELATIONS)
+    rules = {id(r): r for r in RULES.values()}.values()
+    for name, rel in RELATIONS.items():
+        assert sum(name in r.names for r in rules) == 1, name
+        rule = RULES[name]
+        assert type(rule).__module__ == f"parse3d.solver.rules.{rule.family}", name
+        assert rule.kind == rel.kind, name
+        assert rule.contact == rel.is_contact, name
+        assert rule.region_phase in ("object", "part", "none"), name
+        # support is hard; object-level relations relax before part-level contacts
+        assert (rule.relax_order is None) == rel.is_support, name
+        if rel.kind == OBJECT:
+            assert rule.relax_order < min(r.relax_order for r in rules
+                                          if r.kind not in (OBJECT, SUPPORT)), name
+            assert rule.region_phase != "part", name
+        if rel.kind != SUPPORT:
+            assert not (rule.fixed or rule.hangs or rule.banded), name
+
+
+def test_a_relation_cannot_get_a_second_rule():
+    from parse3d.solver.rules.base import RelationRule, register
+
+    class Another(RelationRule):
+        names = ("NEAR",)
+
+    with pytest.raises(ValueError, match="NEAR already has a rule"):
+        register(Another)

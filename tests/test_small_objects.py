@@ -15,8 +15,9 @@ from parse3d.measure.geometry import asset_geometry
 from parse3d.pag import PAG, Room
 from parse3d.pipeline import settle_and_repair, unstable_objects
 from parse3d.solver import solve
-from parse3d.solver.placement import STACK_CENTRE, lacks, requirements
+from parse3d.solver.placement import lacks, requirements
 from parse3d.solver.search import resolution
+from parse3d.solver.stacking import STACK_CENTRE
 
 ROOM = ((0, 0), (4, 0), (4, 3.5), (0, 3.5))
 
@@ -219,11 +220,11 @@ def test_a_baguette_longer_than_the_table_stays_on_it(seed):
 
 def test_a_roller_is_told_by_its_narrowest_width():
     """A thin footprint turned askew is still thin; lying on a round-ish section it rolls."""
-    from parse3d.solver.placement import _roller, _widths
+    from parse3d.solver.sampling import footprint_widths, is_roller
 
     F = np.array([[0, 0], [0.5, 0], [0.5, 0.06], [0, 0.06]]) @ axis_angle([0, 0, 1], np.deg2rad(24))[:2, :2].T
-    assert _widths(F)[0] == pytest.approx(0.06, abs=2e-3)
-    assert _roller(F, 0.05) and not _roller(F, 0.2)
+    assert footprint_widths(F)[0] == pytest.approx(0.06, abs=2e-3)
+    assert is_roller(F, 0.05) and not is_roller(F, 0.2)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2, 3])

@@ -1,11 +1,11 @@
 """Focused tests of three placement rules of the solver, each on real generated assets:
 
-* ``_base_supported``: a child hanging over a small support stands only when the parts of its
+* ``base_supported``: a child hanging over a small support stands only when the parts of its
   base resting on the support hold its centre of mass (a desk half off a platform does not; a
   bottle lying across a wine rack's bar does when the bar is under its centre of mass);
 * ``_pressing``: a leaning object is tilted far enough that gravity presses it toward what it
   leans on (its centre of mass beyond the base edge it pivots on);
-* ``_leave_room``: samples that leave room beside an object for what is still to be placed
+* ``leave_room``: samples that leave room beside an object for what is still to be placed
   beside it on the same support come first (a stove with a counter to its right is not pushed
   into the corner).
 """
@@ -25,8 +25,8 @@ from parse3d.pag import PAG, Room
 from parse3d.scene.model import Scene
 from parse3d.scene.shell import build_shell
 from parse3d.solver.collision import CollisionWorld
-from parse3d.solver.placement import _base_supported, _leave_room
 from parse3d.solver.rotation import LEAN_MARGIN, _pressing
+from parse3d.solver.sampling import base_supported, leave_room
 from parse3d.solver.state import SolveState
 from parse3d.solver.support import support_candidates
 
@@ -38,17 +38,17 @@ def floor_plane(z: float = 0.0) -> Surface:
     return Surface("top", np.array([0.0, 0.0, z]), EZ, EX, EY, box(-5, -5, 5, 5))
 
 
-# ------------------------------------------------------------------------ _base_supported
+# ------------------------------------------------------------------------ base_supported
 def test_base_supported_needs_the_resting_base_to_hold_the_centre_of_mass():
     desk = registry.generate("desk", seed=0)
     s = floor_plane()
     R, t = np.eye(3), np.zeros(3)  # the asset's origin is the centre of its base: on the plane
     half = float(asset_geometry(desk).bounds[1, 0])
-    assert _base_supported(desk, 1.0, R, t, s, box(-2, -2, 2, 2))
+    assert base_supported(desk, 1.0, R, t, s, box(-2, -2, 2, 2))
     # only the right-hand legs on the platform: the centre of mass (near x = 0) hangs off
-    assert not _base_supported(desk, 1.0, R, t, s, box(0.6 * half, -2, 2, 2))
+    assert not base_supported(desk, 1.0, R, t, s, box(0.6 * half, -2, 2, 2))
     # nothing of the base on it at all
-    assert not _base_supported(desk, 1.0, R, t, s, box(3, 3, 4, 4))
+    assert not base_supported(desk, 1.0, R, t, s, box(3, 3, 4, 4))
 
 
 @pytest.fixture(scope="module")
@@ -71,9 +71,9 @@ def test_base_supported_on_a_bar_under_the_centre_of_mass(lying_bottle, width):
     bottle, R, t, (cx, cy) = lying_bottle
     s = floor_plane()
     along = box(cx - width / 2, cy - 0.2, cx + width / 2, cy + 0.2)
-    assert _base_supported(bottle, 1.0, R, t, s, along)
+    assert base_supported(bottle, 1.0, R, t, s, along)
     off = shapely.affinity.translate(along, 0.06, 0.0)
-    assert not _base_supported(bottle, 1.0, R, t, s, off)
+    assert not base_supported(bottle, 1.0, R, t, s, off)
 
 
 @pytest.mark.parametrize("width", [0.015, 0.003])
@@ -83,12 +83,12 @@ def test_base_supported_across_bars_needs_two(lying_bottle, width):
     bottle, R, t, (cx, cy) = lying_bottle
     s = floor_plane()
     across = box(cx - 0.2, cy - width / 2, cx + 0.2, cy + width / 2)
-    assert not _base_supported(bottle, 1.0, R, t, s, across)
+    assert not base_supported(bottle, 1.0, R, t, s, across)
     # the bottle runs from its base (y = 0) to its cap (y = -height); 60% of the way is body
     near, far = -0.02, -(float(asset_geometry(bottle).bounds[1, 2]) * 0.6)
     assert far < cy < near
     two = shapely.union_all([box(cx - 0.2, y - width / 2, cx + 0.2, y + width / 2) for y in (near, far)])
-    assert _base_supported(bottle, 1.0, R, t, s, two)
+    assert base_supported(bottle, 1.0, R, t, s, two)
 
 
 # ------------------------------------------------------------------------------ _pressing
@@ -118,7 +118,7 @@ def test_pressing_tilts_far_enough_for_gravity_to_hold_the_lean():
         small[int(np.argmax(margins[:3]))]
 
 
-# ---------------------------------------------------------------------------- _leave_room
+# ---------------------------------------------------------------------------- leave_room
 def kitchen_wall(counter_beside: bool) -> tuple[SolveState, object]:
     pag = PAG("stove-and-counter", Room("kitchen", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
     pag.add("stove", "stove")
@@ -139,16 +139,16 @@ def test_leave_room_puts_samples_with_room_for_the_counter_first():
     # stove centres at world x = 3.6 (0.1 m left on its right: no counter fits), then 1.0
     cramped, roomy = s.to_2d(np.array([[3.6, 1.5, 0.0], [1.0, 1.5, 0.0]]))
     samples = np.array([cramped, roomy, cramped + [0, 0.1]])
-    out = _leave_room(st, "stove", sup, np.eye(3), F, sup.region, samples)
+    out = leave_room(st, "stove", sup, np.eye(3), F, sup.region, samples)
     assert np.allclose(out, [roomy, cramped, cramped + [0, 0.1]])  # otherwise in order
     # turned half round, the stove's right is world -x: at x = 1.0 only 0.7 m are left there,
     # less than the smallest counter (0.85 m)
-    turned = _leave_room(st, "stove", sup, axis_angle(EZ, np.pi), F, sup.region,
+    turned = leave_room(st, "stove", sup, axis_angle(EZ, np.pi), F, sup.region,
                          np.array([roomy, cramped]))
     assert np.allclose(turned, [cramped, roomy])
     # nothing to leave room for: the order is kept
     st2, sup2 = kitchen_wall(counter_beside=False)
-    assert np.allclose(_leave_room(st2, "stove", sup2, np.eye(3), F, sup2.region, samples),
+    assert np.allclose(leave_room(st2, "stove", sup2, np.eye(3), F, sup2.region, samples),
                        samples)
 
 
@@ -158,7 +158,7 @@ def test_in_a_rack_lower_than_the_drawn_instance_takes_a_lower_or_smaller_one():
     (0.22-0.29 m): the lowest instance is drawn, then shrunk within the category's range to
     the free height, instead of failing with "no free space" after four tall draws."""
     from parse3d.solver import solve
-    from parse3d.solver.placement import _extent
+    from parse3d.solver.choice import extent_along
 
     pag = PAG("cereal-aisle", Room("store", ((0, 0), (4, 0), (4, 3), (0, 3)), 2.7))
     pag.add("rack", "grocery_shelf")
@@ -173,7 +173,7 @@ def test_in_a_rack_lower_than_the_drawn_instance_takes_a_lower_or_smaller_one():
     for i in range(3):
         o = scene.objects[f"cereal_{i}"]
         gap = max(s.clearance for s in rack.asset.internal if s.part == o.support_choice.part)
-        assert o.scale * _extent(o.asset, 2) <= gap * rack.scale
+        assert o.scale * extent_along(o.asset, 2) <= gap * rack.scale
         lo, hi = o.asset.size_range
         assert lo - 1e-9 <= o.scale * asset_geometry(o.asset).size <= hi + 1e-9
 

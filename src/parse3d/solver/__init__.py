@@ -1,9 +1,11 @@
 """The Part-Aware Spatial Configuration Solver (Algorithm 1 of the paper) and its search.
 
 Modules follow the algorithm's stages: ``support`` (stage 2), ``rotation`` (3), ``regions``
-(4-5), ``placement`` (1 and 6 for one object), ``search`` (the loop over objects, failure
-propagation, backjumping, re-placement for repair); relation meaning is registered per relation
-family in ``rotation.ROTATION_RULES`` and ``regions.REGION_RULES``.
+(4-5), ``placement`` (1 and 6 for one object: instance choice in ``choice``, positions in
+``sampling``, piles in ``stacking``, pose checks in ``validation``), ``search`` (the loop over
+objects, failure propagation, backjumping, re-placement for repair). What a relation means to
+the solver is one rule per relation family in ``rules`` (``support``, ``contact``,
+``alignment``, ``layout``), registered by name in ``rules.RULES``.
 
 >>> import parse3d
 >>> scene = parse3d.solve(parse3d.load_pag("examples/study.json"), seed=0)  # doctest: +SKIP

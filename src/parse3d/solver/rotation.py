@@ -1,15 +1,12 @@
 """Stage 3 of Algorithm 1: the child's rotation from the part-level normal constraints.
 
 The child's contact surface is turned anti-parallel to the support normal; the angle about the
-support normal is then set by one rule per relation family, registered by name in
-:data:`ROTATION_RULES`. A free angle is squared to the room's walls (floor furniture) unless the
-object asks for ``"yaw": "free"``.
+support normal is then set by each relation's rule (``rotate`` of its
+:class:`~parse3d.solver.rules.RelationRule`). A free angle is squared to the room's walls (floor
+furniture) unless the object asks for ``"yaw": "free"``.
 """
 
 from __future__ import annotations
-
-from collections.abc import Callable
-from dataclasses import dataclass
 
 import numpy as np
 import shapely
@@ -17,124 +14,16 @@ import shapely
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle, rotation_between
-from ..geometry.surfaces import Surface, surface_from_bbox
 from ..measure.reach import STAND, stands_to_lean
 from ..pag.model import Edge
-from ..pag.refs import Ref
 from ..relations import SURFACES
 from .config import Fail
 from .geometry import asset_geometry, outline_indices, part_points
+from .rules import RULES, Orientation, parent_surface_world
 from .state import SolveState, angle_to, parts_for, wrap
 from .support import Support
 
-__all__ = ["ROTATION_RULES", "Orientation", "solve_rotation", "parent_surface_world"]
-
-
-@dataclass
-class Orientation:
-    """The rotation being built for one child on one support.
-
-    Attributes
-    ----------
-    R0 : (3, 3) float
-        Turns the child's support contact normal onto minus the support normal.
-    n_s : (3,) float
-        The support normal (world).
-    phi : float or None
-        Angle about ``n_s`` once a rule has fixed it (radians).
-    source : str or None
-        What fixed ``phi`` (for messages).
-    toward : str or None
-        The object the child turns to face, per sampled position.
-    lean : tuple or None
-        ``(edge, parent surface normal)`` of a LEANING_AGAINST.
-    """
-
-    R0: np.ndarray
-    n_s: np.ndarray
-    phi: float | None = None
-    source: str | None = None
-    toward: str | None = None
-    lean: tuple | None = None
-
-
-RotationRule = Callable[[SolveState, Asset, Orientation, Edge], None]
-#: One rule per relation name: how the relation constrains the child's rotation.
-ROTATION_RULES: dict[str, RotationRule] = {}
-
-
-def rotation_rule(*names: str):
-    def deco(fn: RotationRule) -> RotationRule:
-        for n in names:
-            ROTATION_RULES[n] = fn
-        return fn
-    return deco
-
-
-def contact_normal(ref: Ref, default_label: str) -> np.ndarray:
-    """The asset-frame normal of the surface a reference names (or the default)."""
-    return np.array(SURFACES[ref.surface or default_label], float)
-
-
-def parent_surface_world(st: SolveState, ref: Ref, default_label: str) -> tuple[Surface, str, str]:
-    """World surface of a parent reference (object part or room element)."""
-    scene = st.scene
-    label = ref.surface or default_label
-    if ref.is_room_element:
-        if ref.object == "wall":
-            raise Fail("'wall' (any wall) can only be a support parent")
-        el = scene.room.elements[ref.object].surface
-        return el, ref.object, el.label
-    parent = scene.objects[ref.object]
-    if not parent.placed:
-        raise Fail(f"parent {ref.object!r} was not placed")
-    parts = parts_for(parent.asset, ref)
-    if not parts:
-        raise Fail(f"{ref.object!r} has no part {ref.part!r}")
-    if ref.part is None:  # the whole object's face: the bbox face of the asset
-        s = surface_from_bbox(label, asset_geometry(parent.asset).bounds)
-        return s.transformed(parent.transform()), "", label
-    p = parts[0]
-    return p.surfaces[label].transformed(parent.transform()), p.name, label
-
-
-@rotation_rule("ON", "IN", "HANGING_BELOW", "SECURED_TO")
-def _support_rotation(st, asset, o, e):
-    """Support relations set ``R0`` (contact anti-parallel to the support); nothing more."""
-
-
-@rotation_rule("SIDE_OF", "ALONG", "NEAR", "FAR_FROM")
-def _position_only(st, asset, o, e):
-    """Object-level position relations leave the rotation free."""
-
-
-@rotation_rule("AGAINST", "OPPOSITE_TO", "ALIGNED_WITH", "PARALLEL_TO", "LEANING_AGAINST")
-def _facing(st, asset, o, e):
-    """The named child surface anti-parallel (parallel for ALIGNED_WITH / PARALLEL_TO) to the
-    parent surface: fixes the angle about the support normal."""
-    rel = e.relation
-    sB, _, _ = parent_surface_world(st, e.parent, e.spec.parent_surface)
-    nA = contact_normal(e.child, e.spec.child_surface)
-    if rel == "LEANING_AGAINST" and stands_to_lean(asset, st.pag, e.child.object):
-        nA = STAND.T @ nA  # a flat child on its edge: its bottom faces the parent
-    sign = 1.0 if rel in ("ALIGNED_WITH", "PARALLEL_TO") else -1.0
-    ang = angle_to(o.R0 @ nA, sign * sB.normal, o.n_s)
-    if ang is None:
-        if abs(np.dot(o.R0 @ nA, sign * sB.normal) - 1) < 1e-3:
-            return  # already satisfied whatever the angle
-        raise Fail(f"{rel} {e.child} -> {e.parent}: the surfaces cannot be turned to face each "
-                   f"other on this support", intrinsic=True)
-    if o.phi is not None and abs(wrap(ang - o.phi)) > np.deg2rad(1.0):
-        raise Fail(f"{rel} {e.child} -> {e.parent} needs a different orientation than {o.source}")
-    o.phi, o.source = ang, f"{rel} {e.child} -> {e.parent}"
-    if rel == "LEANING_AGAINST":
-        o.lean = (e, -sB.normal)
-
-
-@rotation_rule("TOWARD")
-def _toward(st, asset, o, e):
-    """Turned per sampled position to face the parent (unless a part-level rule fixed it)."""
-    o.toward = e.parent.object
+__all__ = ["Orientation", "solve_rotation", "parent_surface_world"]
 
 
 def wall_angles(st: SolveState, R0: np.ndarray, n_s: np.ndarray) -> list[float]:
@@ -167,7 +56,7 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
         o.phi, o.source = _upright_angle(R0, n_s), "upright"
     if strategy == "constrained":
         for e in edges:
-            ROTATION_RULES[e.relation](st, asset, o, e)
+            RULES[e.relation].rotate(st, asset, o, e)
         if o.phi is not None:
             o.toward = None  # fixed by part-level constraints; TOWARD is only checked
     phi = o.phi

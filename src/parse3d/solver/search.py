@@ -21,14 +21,16 @@ import shapely
 from ..measure.checks import check_edge, check_relations, object_centroid
 from ..pag.algorithms import assembly_order
 from ..pag.model import PAG
-from ..relations import OBJECT, SUPPORT
+from ..relations import OBJECT
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
+from .choice import room_failure
 from .collision import CollisionWorld, cached_body, static_body
 from .config import Fail, SolverConfig, stage_rng
 from .geometry import asset_geometry
 from .intent import whole_object
-from .placement import Placement, _space, place_object, resolution, scaled_mesh
+from .placement import Placement, place_object, resolution, scaled_mesh
+from .rules import RULES
 from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
 
@@ -362,7 +364,7 @@ class _Search:
                     # a moved wall object that finds no room again may clear a stretch of
                     # its own (one level deep: the bench a wardrobe displaced)
                     if m == oid or not self.nest or self.depth or f.intrinsic \
-                            or not _space(str(f)):
+                            or not room_failure(str(f)):
                         raise
                     self.depth += 1
                     try:
@@ -481,7 +483,7 @@ class _Search:
         if got is not None:
             return got
         got = self.regroup(oid)
-        if got is None and _space(reason):
+        if got is None and room_failure(reason):
             got = self.resupport(oid)
         if got is None:
             # last, clearing again where the objects it displaces may clear for themselves
@@ -641,7 +643,7 @@ class _Search:
         """The failure reason, with what takes the wall the object names (``wall_k``) and the
         longest free stretch left when it found no room there."""
         need = self.wall_need(oid)
-        if need is None or len(need[0]) != 1 or not _space(reason):
+        if need is None or len(need[0]) != 1 or not room_failure(reason):
             return reason
         (w,), width, depth, z0, z1 = need
         s = self.st.scene.room.elements[w].surface
@@ -676,14 +678,13 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
     object, and last every one left out (at most ``MAX_RELAX_STEPS`` steps). Support
     relations are never relaxed; ``done`` (edges already left out) is left out."""
     edges = pag.edges_of(oid)
-    free = [i for i, e in enumerate(edges) if i > 0 and i not in done
-            and e.spec.kind != SUPPORT]
-    obj = [i for i in free if edges[i].spec.kind == OBJECT]
-    part = [i for i in free if edges[i].spec.kind != OBJECT]
+    order = [RULES[e.relation].relax_order for e in edges]  # None: never relaxed (support)
+    free = [i for i in range(1, len(edges)) if i not in done and order[i] is not None]
+    obj = [i for i in free if order[i] == 0]
+    part = [i for i in free if order[i] > 0]
 
     def soft(i: int) -> str:
-        e = edges[i]
-        return "loose" if e.child.part is not None and e.spec.kind != OBJECT else "skip"
+        return "loose" if edges[i].child.part is not None and order[i] > 0 else "skip"
 
     steps: list[dict[int, str]] = []
     named = [i for i in _named_edges(pag, oid, reason) if i in free]

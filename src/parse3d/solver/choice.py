@@ -1,0 +1,589 @@
+"""Stage 1 of Algorithm 1, instance choice: what an object's asset must have for its relations
+(:func:`requirements`, :func:`lacks`), the instance drawn instead when one lacks it
+(:func:`alternative_instance`) and the sizes it must fit (free height, spans, contents)."""
+
+from __future__ import annotations
+
+import operator
+from dataclasses import replace
+
+import numpy as np
+import shapely
+from shapely.geometry import Polygon
+
+from ..assets.model import Asset
+from ..geometry import regions as RG
+from ..measure.checks import BOARD_LABELS
+from ..pag.model import Edge
+from ..relations import SURFACES
+from .config import Fail
+from .geometry import asset_geometry, hull_extents, part_points, rect_sides
+from .hanging import edge_up, rail_scale, thinness
+from .intent import names_part, overhang, soft
+from .nesting import floor_fit
+from .rules import RULES
+from .state import SolveState, plane_coords
+from .support import _flat_cached, _flat_enough, cover_part, filled, support_candidates
+
+__all__ = ["THIN_HANG", "hung_edge_up", "HEADROOM_FIT", "SURFACE_AXES", "extent_along",
+           "extent_across", "SPAN_PART", "SPAN_BEARING", "span_need", "free_headroom",
+           "CONTENTS_AREA", "contents_scale", "edge_text", "touching", "requirements", "lacks",
+           "FREE_TOP", "FLAT_TOL", "lies_flat", "RIM_WIDTH", "RIM_OPENING", "rounded_rim",
+           "free_top", "LAYER", "RANKED_SLOTS", "boards_hold", "too_tall_failure", "room_failure",
+           "alternative_instance", "flush_edges", "part_overhang", "draw_instance",
+           "instance_scale"]
+
+
+#: A child whose height is at most this share of its next smaller extent is thin (a folded
+#: towel, a flat bag): hung from an object's part it hangs edge-up, not flat.
+THIN_HANG = 0.35
+
+
+def hung_edge_up(edge: Edge, asset: Asset) -> Edge | None:
+    """The support edge by which a thin child named by no surface, or by its top, hangs below
+    an object's part (a towel on a bar, a flat bag on a hook): by its back, so it hangs
+    edge-up, thin across the rail, and several hang along one rail (a towel hung flat by its
+    top would stick out from the wall like a shelf); None for anything else (the edge as
+    written)."""
+    if not edge_up(edge):
+        return None
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    if ext[2] > THIN_HANG * float(np.sort(ext)[1]):
+        return None
+    from ..pag.refs import format_ref
+
+    c = edge.child
+    return replace(edge, child=replace(c, surface="back",
+                                       text=format_ref(c.object, c.part, c.index, "back")))
+
+
+#: Fraction of a shelf's free height an instance chosen or shrunk to fit under it may fill.
+HEADROOM_FIT = 0.97
+
+
+#: Asset-frame axis of each surface label's normal.
+SURFACE_AXES = {"top": 2, "bottom": 2, "front": 1, "back": 1, "right": 0, "left": 0}
+
+
+def extent_along(asset: Asset, axis: int) -> float:
+    """The asset's extent (m, unit scale) along one of its own axes."""
+    return float(hull_extents(asset)[0][axis])
+
+
+def extent_across(asset: Asset, axis: int) -> float:
+    """The asset's longest extent (m, unit scale) across ``axis`` (its support normal)."""
+    ext = hull_extents(asset)[0]
+    return float(max(ext[k] for k in range(3) if k != axis))
+
+
+#: A part narrower than this (m) is too narrow to stand things on alone (a stand's arm).
+SPAN_PART = 0.06
+
+
+#: How far (m) beyond the middles of the two outer parts a spanning child must reach.
+SPAN_BEARING = 0.03
+
+
+def span_need(st: SolveState, edge: Edge) -> float:
+    """The least length (m) an ``ON`` child needs to rest across the parts a spanning support
+    joins (the two arms of a keyboard stand: their distance plus a bearing), when each of those
+    parts alone is too narrow to stand on; 0 otherwise."""
+    if edge.relation != "ON" or edge.parent.is_room_element or edge.parent.part is None \
+            or edge.parent.index is not None:
+        return 0.0
+    parent = st.scene.objects.get(edge.parent.object)
+    if parent is None or not parent.placed:
+        return 0.0
+    return st.memo(edge.parent.object, ("span-need", str(edge.parent)),
+                   lambda: _span_length(st, edge))
+
+
+def _span_length(st: SolveState, edge: Edge) -> float:
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return 0.0
+    if not any(s.spans for s in sups):
+        return 0.0
+    single = [s for s in sups if not s.spans]
+    if any(rect_sides(s.region)[0] >= SPAN_PART for s in single):
+        return 0.0
+    mid = [np.asarray(s.surface.to_3d(np.asarray(s.region.centroid.coords)))[0] for s in single]
+    gaps = [float(np.linalg.norm(a - b)) for i, a in enumerate(mid) for b in mid[i + 1:]]
+    return min(gaps) + 2 * SPAN_BEARING if gaps else 0.0
+
+
+def free_headroom(st: SolveState, edge: Edge) -> float:
+    """The most free height (m) over the internal surfaces an ``IN`` child may rest on (the
+    tallest shelf gap of a rack), or between an ``ON`` child's support surfaces on an object
+    and the ceiling; inf for other supports, open containers or an unplaced parent."""
+    if edge.relation not in ("IN", "ON") or edge.parent.is_room_element:
+        return float("inf")
+    parent = st.scene.objects.get(edge.parent.object)
+    if parent is None or not parent.placed:
+        return float("inf")
+    return st.memo(edge.parent.object, ("headroom", edge.relation, str(edge.parent)),
+                   lambda: _free_height(st, edge))
+
+
+def _free_height(st: SolveState, edge: Edge) -> float:
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return float("inf")
+    if edge.relation == "ON":  # up to the ceiling (a wine rack on a tall cabinet)
+        return max(st.scene.room.height - float(s.surface.origin[2]) for s in sups)
+    return max(s.clearance for s in sups)
+
+
+#: Footprint area a container needs per child IN it, in units of the child's typical size
+#: squared (room to lie side by side, with the gaps round things leave).
+CONTENTS_AREA = 2.5
+
+
+def contents_scale(pag, oid: str, asset: Asset) -> float:
+    """Scale at which ``asset``'s footprint has room for the children IN the object as a whole
+    (not on a named part: shelves of a rack hold their own), at ``CONTENTS_AREA`` times their
+    typical size squared each; 0 with fewer than two such children."""
+    from ..assets import registry
+
+    kids = [e.child.object for e in touching(pag, oid)
+            if e.relation == "IN" and e.parent.object == oid and e.parent.part is None]
+    if len(kids) < 2:
+        return 0.0
+    need = 0.0
+    for k in kids:
+        sizes = []
+        for c in pag.objects[k].candidates:
+            try:
+                lo, hi = registry.get(c).size_range
+            except KeyError:
+                continue
+            sizes.append(0.5 * (lo + hi))
+        need += CONTENTS_AREA * min(sizes, default=0.0) ** 2
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    area = float(ext[0] * ext[1])
+    return float(np.sqrt(need / area)) if area > 0 else 0.0
+
+
+def edge_text(e: Edge) -> str:
+    """An edge as failure reasons and requirements write it: ``AGAINST a:b@back -> wall_1``."""
+    return f"{e.relation} {e.child} -> {e.parent}"
+
+
+def touching(pag, oid: str) -> list[Edge]:
+    """The edges of ``pag`` naming ``oid`` as child or parent, in file order (an index kept on
+    the graph, rebuilt whenever its relations change)."""
+    rel = pag.relations
+    got = pag.__dict__.get("_touch_index")
+    if got is None or len(got[0]) != len(rel) or not all(map(operator.is_, got[0], rel)):
+        idx: dict[str, list[Edge]] = {}
+        for e in pag.relations:
+            idx.setdefault(e.child.object, []).append(e)
+            if e.parent.object != e.child.object:
+                idx.setdefault(e.parent.object, []).append(e)
+        got = (list(rel), idx)  # the same edges, compared by identity
+        pag.__dict__["_touch_index"] = got
+    return got[1].get(oid, [])
+
+
+def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
+    """What the object's asset must have, from every relation naming one of its parts:
+    ``(part label, index or None, relation text, kind)`` with kind ``part`` (the part and
+    ``#k`` exist), ``internal`` (an IN parent part holds an internal support surface),
+    ``free_top`` (an ON parent part is flat with room on top), ``stack_base`` (an ON parent of
+    the child's own category does not roll: the base of a stack) or ``extreme:<label>`` (an
+    AGAINST child part reaches furthest along its surface normal)."""
+    out = []
+    for e in touching(pag, oid):
+        text = edge_text(e)
+        rule = RULES[e.relation]  # what each relation asks: rules/support.py, contact.py
+        out += rule.needs(pag, oid, e, text)
+        for ref, role in ((e.child, "child"), (e.parent, "parent")):
+            if ref.object != oid or ref.part is None:
+                continue
+            out.append((ref.part, ref.index, text, "part"))
+            out += rule.part_needs(e, ref, role, text)
+    return out
+
+
+def lacks(asset: Asset, reqs) -> str | None:
+    """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
+    for label, idx, text, kind in reqs:
+        if kind == "internal" and label is None:
+            if not asset.internal:
+                return f"{asset.asset_id} holds nothing inside ({text})"
+            continue
+        if kind == "stack_base" and label is None:
+            if not any(lies_flat(asset, p) for p in asset.parts):
+                return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "
+                        f"to stack on ({text})")
+            continue
+        ps = asset.parts_by_label(label)
+        if not ps:
+            return f"{asset.asset_id} has no part {label!r} ({text})"
+        if idx is not None and idx >= len(ps):
+            return f"{asset.asset_id} has {len(ps)} {label} part(s), no #{idx} ({text})"
+        ps = ps[idx:idx + 1] if idx is not None else ps
+        if kind in ("internal", "internal_or_board"):
+            names = {p.name for p in ps}
+            if kind == "internal_or_board" and label in BOARD_LABELS \
+                    and not any(i.part in names for i in asset.internal) \
+                    and any(free_top(asset, p) for p in ps):
+                continue  # a board holds what is IN it on its top
+            if not any(i.part in names for i in asset.internal):
+                return f"{asset.asset_id}'s {label} holds nothing inside ({text})"
+        elif kind == "free_top":
+            if all(rounded_rim(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} top is a rounded rim, no flat band "
+                        f"{RIM_WIDTH * 100:.0f} cm wide: what stands on it tips over ({text})")
+            if not any(free_top(asset, p) or (q := cover_part(asset, p)) is not None
+                       and free_top(asset, q) for p in ps):
+                if not any(_flat_cached(asset.asset_id, p, "top") for p in ps):
+                    return (f"{asset.asset_id}'s {label} is slanted: its top is no surface to "
+                            f"stand on ({text})")
+                return (f"{asset.asset_id}'s {label} top is mostly covered by its other parts, "
+                        f"no room for a {FREE_TOP * 100:.0f} cm wide item ({text})")
+        elif kind == "stack_base":
+            if not any(lies_flat(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} would roll: neither its top nor its bottom "
+                        f"is flat to stack on ({text})")
+        elif kind.startswith("extreme:"):
+            n = np.asarray(SURFACES[kind.split(":")[1]], float)
+            side = kind.split(":")[1]
+            mine = float(np.max(part_points(ps) @ n))
+            who = max(asset.parts, key=lambda p: float(np.max(part_points([p]) @ n)))
+            d = float(np.max(part_points([who]) @ n)) - mine
+            if d > 2e-3:
+                oid = text.split(" ")[1].split(":")[0]
+                return (f"{text}: {oid}:{who.label} reaches {d:.2f} m further {side} than "
+                        f"{oid}:{label} (asset {asset.asset_id}): name {oid}:{who.label}@{side} "
+                        f"or {oid}@{side}")
+    return None
+
+
+#: Width (m) of the smallest item a part's top must have room for (stage 1's reachability).
+FREE_TOP = 0.08
+
+
+FREE_TOP = 0.08
+_FREE_TOP: dict[tuple[str, str], bool] = {}
+
+
+#: Metres within which a stack base's top or bottom face must lie over half its area.
+FLAT_TOL = 3e-3
+
+
+_LIES_FLAT: dict[tuple[str, str], bool] = {}
+
+
+def lies_flat(asset: Asset, part) -> bool:
+    """Whether the part's top or bottom is flat (within ``FLAT_TOL`` over half its bounding
+    box face): a folded towel or a box can be the base of a stack of its kind; a rolled towel,
+    round above and below, would roll away under the next one."""
+    key = (asset.asset_id, part.name)
+    got = _LIES_FLAT.get(key)
+    if got is None:
+        if len(_LIES_FLAT) > 8192:
+            _LIES_FLAT.clear()
+        got = _LIES_FLAT[key] = any(_flat_enough(part, lb, tol=FLAT_TOL, frac=0.5)
+                                    for lb in ("top", "bottom"))
+    return got
+
+
+#: Width (m) of the flat band a rim (a top around an opening) needs for things to stand on it.
+RIM_WIDTH = 0.03
+
+
+RIM_WIDTH = 0.03
+#: Width (m) of an opening no small child spans (a tub, not a burner ring a pot sits across).
+RIM_OPENING = 0.3
+
+
+_ROUNDED: dict[tuple[str, str], bool] = {}
+
+
+def rounded_rim(asset: Asset, part) -> bool:
+    """Whether the part's top is a rim around an opening at least ``RIM_OPENING`` wide (its
+    top surface has such a hole: no small child spans it) that is rounded: no convex piece of
+    it is flat (within ``FLAT_TOL`` of its highest point) over a band ``RIM_WIDTH`` wide. A clawfoot tub's rolled rim is a tube: a bottle stood on its crest
+    tips into the tub; a built-in tub's flat deck holds it."""
+    key = (asset.asset_id, part.name)
+    got = _ROUNDED.get(key)
+    if got is None:
+        poly = part.surfaces["top"].polygon if "top" in part.surfaces else None
+        rims = [g for g in getattr(poly, "geoms", [poly]) if isinstance(g, Polygon)
+                and any(rect_sides(Polygon(r))[0] >= RIM_OPENING for r in g.interiors)]
+        got = False
+        if rims:
+            top = max(float(pc.vertices[:, 2].max()) for pc in part.piece_arrays)
+            widths = [0.0]
+            for pc in part.piece_arrays:
+                v = pc.vertices[pc.vertices[:, 2] >= top - FLAT_TOL]
+                if len(v) >= 3:
+                    widths.append(rect_sides(shapely.MultiPoint(v[:, :2]).convex_hull)[0])
+            got = max(widths) < RIM_WIDTH
+        if len(_ROUNDED) > 8192:
+            _ROUNDED.clear()
+        _ROUNDED[key] = got
+    return got
+
+
+def free_top(asset: Asset, part) -> bool:
+    """Whether the part's top face is flat (not a slanted part touching its bounding box's top
+    along an edge only) and has a ``FREE_TOP``-wide patch, or half its area, that the asset's
+    other parts do not cover within 20 cm above it (a top-loading washer's lid covers most of
+    its top)."""
+    key = (asset.asset_id, part.name)
+    got = _FREE_TOP.get(key)
+    if got is None and not _flat_cached(asset.asset_id, part, "top"):
+        got = _FREE_TOP[key] = False  # slanted (an open grand piano's lid): nothing stands on it
+    if got is None:
+        s = part.surfaces["top"]
+        free = filled(s.polygon)
+        for p in asset.parts:
+            if p is part:
+                continue
+            for pc in p.piece_arrays:  # per convex piece: a part's pieces may frame the top
+                h = (pc.vertices - s.origin) @ s.normal
+                if h.max() <= 1e-3 or h.min() >= 0.2 or (h.min() >= -1e-3 and h.max() <= LAYER):
+                    continue  # below, high above, or a layer lying on it that holds as well
+                free = free.difference(Polygon(RG.convex_footprint(plane_coords(s, pc.vertices))))
+        # room for an item, or at least mostly uncovered (a bathtub's thin rim holds bottles
+        # by their centre of mass)
+        got = not free.buffer(-FREE_TOP / 2).is_empty or free.area >= 0.5 * filled(s.polygon).area
+        if len(_FREE_TOP) > 8192:
+            _FREE_TOP.clear()
+        _FREE_TOP[key] = got
+    return got
+
+
+#: Metres of a layer lying on a part's top (a card table's felt, a glass top) that does not
+#: cover it: what stands on the part stands on the layer (the ``ON`` check's step).
+LAYER = 0.01
+
+
+LAYER = 0.01
+#: Pool slots examined per candidate category when looking for a suitable instance.
+RANKED_SLOTS = 6
+
+
+def boards_hold(reqs):
+    """``reqs`` with each internal surface required of a board part (:data:`BOARD_LABELS`)
+    met by its free top as well."""
+    return [(label, idx, text, "internal_or_board")
+            if kind == "internal" and label in BOARD_LABELS else (label, idx, text, kind)
+            for label, idx, text, kind in reqs]
+
+
+def too_tall_failure(reason: str) -> bool:
+    """Whether a failure was a height band the instance is too tall for (SECURED_TO)."""
+    return "height is the centre's" in reason
+
+
+def room_failure(reason: str) -> bool:
+    """Whether a failure was about room (a region emptied, no free space, collisions)."""
+    return any(k in reason for k in ("emptied", "no free space", "collides", "does not fit"))
+
+
+def alternative_instance(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,
+                         smallest: bool = False, key=None, every: bool = False):
+    """An untried instance, over the candidate categories and a random sample of their pool
+    slots (``every``: all of them), that meets ``reqs``: the first found, or with
+    ``smallest`` the one with the smallest footprint, or with ``key`` (a function of the
+    asset) the one of least key; None when there is none."""
+    load = getattr(library, "load", None)
+    if load is None:
+        return None
+    k = int(getattr(library, "per_category", 20))
+    # a part that must reach furthest (AGAINST by a part) is rare among instances: every slot
+    slots = k if every or any(r[3].startswith("extreme:") for r in reqs) else RANKED_SLOTS
+    best = None
+    for ci in rng.permutation(len(categories)):
+        cat = categories[int(ci)]
+        for slot in rng.permutation(k)[:slots]:
+            asset = load(cat, int(slot))
+            if asset.asset_id in tried or lacks(asset, reqs) is not None:
+                continue
+            if key is not None:
+                area = float(key(asset))
+            elif not smallest:
+                return cat, asset
+            else:
+                ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+                area = float(ext[0] * ext[1])
+            if best is None or area < best[0]:
+                best = (area, cat, asset)
+    return None if best is None else (best[1], best[2])
+
+
+def flush_edges(loosen: dict[int, Edge]) -> list[Edge]:
+    """The edges, as written, of relaxed AGAINST contacts named by a child part."""
+    return [e for e in loosen.values() if e.relation == "AGAINST"
+            and getattr(e, "_named_part", None) is not None]
+
+
+def part_overhang(asset: Asset, e: Edge) -> float:
+    """Metres by which another part of ``asset`` reaches further along the named child
+    surface's normal than the part ``e`` names (infinite when the asset lacks it)."""
+    label, idx = e._named_part
+    ps = asset.parts_by_label(label)
+    if not ps or (idx is not None and idx >= len(ps)):
+        return float("inf")
+    ps = ps[idx:idx + 1] if idx is not None else ps
+    n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
+    return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
+
+
+
+def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Generator,
+                  reasons: list[str], *, attempt: int, keep, loosen: dict[int, Edge],
+                  support_edge: Edge, smallest: bool):
+    """The instance of one placement attempt: drawn from the library, or picked by a rule
+    (the last one kept for a repair, the least overhung for a relaxed contact, the thinnest
+    for a flat thing hung edge-up, the smallest after a failure for room, the lowest after
+    a height band), replaced by one that meets ``reqs`` when it lacks something; added to
+    ``tried``. Returns ``(category, asset, reqs)`` (``reqs`` loosened when no instance meets
+    them as written), or None when every suitable instance was tried; ``Fail`` when none in
+    the pool is suitable."""
+    category = node.candidates[int(rng.integers(len(node.candidates)))]
+    asset = library.get(category, rng)
+    picked = True  # by a rule below, else drawn
+    if keep is not None and attempt == 0:
+        category, asset = keep.category, keep.asset
+    elif attempt == 0 and (flush := flush_edges(loosen)):
+        # a contact relaxed to the whole object: the instance whose named part is least
+        # overhung (a shelf's back panel 2 cm in front of its posts, not 45 cm)
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                   key=lambda a: max(part_overhang(a, e) for e in flush))
+        if alt is not None:
+            category, asset = alt
+    elif attempt == 0 and keep is None and edge_up(support_edge) and thinness(asset) < 1:
+        # a flat thing hung edge-up (a folded towel, not a coat): its thickness stands out
+        # from the rail toward the wall behind it, so the thinnest instance looked at first
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng, key=thinness)
+        if alt is not None:
+            category, asset = alt
+    elif smallest and attempt == 0:
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng, smallest=True)
+        if alt is not None:
+            category, asset = alt
+    elif reasons and room_failure(reasons[-1]):
+        # the last instance did not fit where it must go: the smallest suitable one next
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   rng, smallest=True)
+        if alt is not None:
+            category, asset = alt
+    elif reasons and too_tall_failure(reasons[-1]):
+        # too tall for its height band on a wall (curtains hung at 0.8-1 m): the lowest
+        # untried instance next (its up axis)
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   rng, key=lambda a: extent_along(a, 2))
+        if alt is not None:
+            category, asset = alt
+    else:
+        picked = False
+    if not (keep is not None and attempt == 0) and (
+            not picked and asset.asset_id in tried or lacks(asset, reqs)):
+        # constraint-aware selection (also when a rule above found nothing and kept the
+        # draw): another instance that has what the relations need, among a sample of
+        # slots, then among every slot (a board game with a lid: most are card decks)
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng) \
+            or alternative_instance(library, node.candidates, reqs, tried, rng, every=True)
+        if alt is None and (loose_reqs := soft(reqs)) != reqs:
+            # no instance is the flat base a stack of its kind needs (apples): any one,
+            # and what would stack on it rests beside it
+            alt = alternative_instance(library, node.candidates, loose_reqs, tried, rng)
+            if alt is not None:
+                reqs = loose_reqs
+        if alt is None and (boards := boards_hold(reqs)) != reqs:
+            # no instance holds anything inside the named shelf: one whose shelf is a
+            # board, and what is IN it stands on its top (a wall shelf)
+            alt = alternative_instance(library, node.candidates, boards, tried, rng,
+                                       every=True)
+            if alt is not None:
+                reqs = boards
+        if alt is None:
+            if asset.asset_id in tried:
+                return None  # every suitable instance was tried
+            why = lacks(asset, reqs)
+            n = int(getattr(library, "per_category", 20))
+            raise Fail(f"no {'/'.join(node.candidates)} asset looked at in the pool (up to "
+                       f"{n} per category) fits the relations: {why}",
+                       intrinsic=True)
+        category, asset = alt
+    if keep is None and names_part(support_edge) and overhang(asset, support_edge)[0] > 0:
+        # the named part is not where the support needs it (a frame raised on legs): the
+        # instance whose named part reaches furthest toward the support, of every slot
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   rng, key=lambda a: overhang(a, support_edge)[0],
+                                   every=True)
+        if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
+                asset, support_edge)[0]:
+            category, asset = alt
+    tried.add(asset.asset_id)
+    return category, asset, reqs
+
+
+def instance_scale(st: SolveState, oid: str, library, node, category: str, asset: Asset,
+                   reqs: list, tried: set[str], rng: np.random.Generator, *, attempt: int,
+                   keep, support_edge: Edge, axis: int, headroom: float):
+    """The scale of one attempt's instance: its real-world size (times the node's scale
+    range) clamped to its category's range, big enough for what is IN it or hangs below it,
+    8% smaller from the fourth attempt, the earlier one's for a repair; another instance when
+    it is too tall for every shelf it may go in or too short to span the parts it must rest
+    across. Returns ``(category, asset, scale, reason)``: ``reason`` (about room) when even
+    the widest instance cannot span those parts, else None."""
+    pag = st.pag
+    # generators already make real-world sizes: keep them (times the node's scale range),
+    # clamped so the size stays in the category's range (this normalises loaded assets)
+    lo, hi = asset.size_range
+    s_node = rng.uniform(*node.scale) if node.scale is not None else 1.0
+    size = asset_geometry(asset).size
+    scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+    # a container with several things IN it (apples in a bowl) is drawn big enough to hold
+    # them, within its category's size range
+    scale = max(scale, min(contents_scale(pag, oid, asset), hi / max(size, 1e-6)))
+    # and a rail with several things hung below it long enough for them (towels on a bar)
+    scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
+    scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
+    if keep is not None and attempt == 0:
+        scale = keep.scale
+    elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:
+        # taller than every shelf it may go IN (a cereal box on a grocery shelf): the lowest
+        # untried instance, then shrunk to the free height within its category's range
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                   key=lambda a: extent_along(a, axis))
+        if alt is not None and extent_along(alt[1], axis) < extent_along(asset, axis):
+            category, asset = alt
+            tried.add(asset.asset_id)
+            lo, hi = asset.size_range
+            size = asset_geometry(asset).size
+            scale = s_node * float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        fit = HEADROOM_FIT * headroom / max(extent_along(asset, axis), 1e-6)
+        if fit >= asset.size_range[0] / max(asset_geometry(asset).size, 1e-6):
+            scale = min(scale, fit)
+    if keep is None or attempt > 0:
+        # longer than a container's floor: shrunk to lie in it, within its size range
+        scale = floor_fit(st, support_edge, asset, scale, axis)
+    reach = span_need(st, support_edge)
+    if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
+        # too short to rest across the parts it must span (a keyboard on a stand's two
+        # arms): the widest untried instance, then as large as the node's scale allows
+        alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                   key=lambda a: -extent_across(a, axis))
+        if alt is not None and extent_across(alt[1], axis) > extent_across(asset, axis):
+            category, asset = alt
+            tried.add(asset.asset_id)
+        lo, hi = asset.size_range
+        size = asset_geometry(asset).size
+        top = (node.scale[1] if node.scale is not None else 1.0) * float(
+            np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+        scale = max(scale, min(top, reach / max(extent_across(asset, axis), 1e-6)))
+        if scale * extent_across(asset, axis) < reach - 1e-6:
+            # a reason about room: the search may re-place the support as another instance
+            ref = support_edge.parent
+            return category, asset, scale, (
+                f"a {scale * extent_across(asset, axis):.2f} m {category} does not fit "
+                f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
+    return category, asset, scale, None

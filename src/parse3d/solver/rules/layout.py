@@ -1,0 +1,193 @@
+"""The layout relations between objects (``SIDE_OF``, ``ALONG``, ``NEAR``, ``FAR_FROM``,
+``TOWARD``): coarse constraints on the objects' centroids. They clip the region of the child's
+origin first (phase ``object``: half-planes, strips, discs, cones) and are the first relaxed
+when they cannot be met; only ``TOWARD`` turns the child (per sampled position, to face its
+target)."""
+
+from __future__ import annotations
+
+import numpy as np
+import shapely
+from shapely.geometry.base import BaseGeometry
+
+from ...assets.model import Asset
+from ...geometry import regions as RG
+from ...pag.model import Edge
+from ...relations import OBJECT
+from ..config import Fail
+from ..state import SolveState, plane_coords
+from .base import (
+    RULES,
+    Orientation,
+    RegionContext,
+    RelationRule,
+    emptied,
+    free_room_text,
+    parent_frame,
+    register,
+)
+
+__all__ = ["Distance", "Side", "Toward", "side_vector", "SQUARE_SHARE", "SQUARE_MIN_TOLERANCE"]
+
+_SIDE_DIRS = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
+              "right": (1.0, 0.0, 0.0), "left": (-1.0, 0.0, 0.0)}
+
+#: Share of TOWARD's tolerance within which a child is squared to its target's side.
+SQUARE_SHARE = 0.8
+#: TOWARD tolerance (degrees) from which positions are restricted to where squaring is possible.
+SQUARE_MIN_TOLERANCE = 25.0
+
+
+class LayoutRule(RelationRule):
+    family = "layout"
+    kind = OBJECT
+    region_phase = "object"
+    relax_order = 0
+
+
+@register
+class Distance(LayoutRule):
+    names = ("NEAR", "FAR_FROM")
+
+    def region(self, ctx: RegionContext, e: Edge, region: BaseGeometry) -> BaseGeometry:
+        """A disc (NEAR) or its complement (FAR_FROM) of radius ``distance`` about the parent's
+        centroid, horizontally; to a wall, a strip by the distance to its plane."""
+        st, s, rel = ctx.st, ctx.sup.surface, e.relation
+        xB, frame, hull = parent_frame(st, e.parent.object)
+        cB = plane_coords(s, xB[None])[0] - ctx.off
+        dist = e.param("distance")
+        vertical = abs(float(s.normal[2])) < 0.5 and abs(float(s.v[2])) > 0.99
+        if vertical:
+            # on a wall the plane's v axis is vertical: the horizontal distance (or the distance
+            # to a wall's plane) depends on the position a along the wall only
+            c = s.origin + ctx.off3 - xB
+            uh = s.u
+            if hull is None:  # parent is a wall: distance to its plane, linear in a
+                nB = frame[:, 1]
+                k, c0 = float(uh @ nB), float(c @ nB)
+                lo, hi = (-dist, dist) if rel == "NEAR" else (dist, 1e3)
+                if abs(k) < 1e-9:
+                    ok = (abs(c0) <= dist) if rel == "NEAR" else (abs(c0) >= dist)
+                    clip = RG.bounding_square(region) if ok else shapely.Polygon()
+                else:
+                    a1, a2 = sorted(((lo - c0) / k, (hi - c0) / k))
+                    clip = shapely.box(a1, -1e3, a2, 1e3)
+                    if rel == "FAR_FROM":
+                        b1, b2 = sorted(((-hi - c0) / k, (-lo - c0) / k))
+                        clip = clip.union(shapely.box(b1, -1e3, b2, 1e3))
+            else:  # |c_xy + a u_xy| <= d: an interval of a
+                cxy, uxy = c[:2], uh[:2]
+                A = float(uxy @ uxy)
+                B = 2 * float(cxy @ uxy)
+                C = float(cxy @ cxy) - dist ** 2
+                disc = B * B - 4 * A * C
+                if A < 1e-9 or disc < 0:
+                    clip = shapely.Polygon() if rel == "NEAR" else RG.bounding_square(region)
+                else:
+                    a1 = (-B - np.sqrt(disc)) / (2 * A)
+                    a2 = (-B + np.sqrt(disc)) / (2 * A)
+                    near = shapely.box(a1, -1e3, a2, 1e3)
+                    clip = near if rel == "NEAR" else RG.bounding_square(region).difference(near)
+        elif hull is None:  # a wall: distance to its plane
+            nw = frame[:, 1]
+            g = np.array([nw @ s.u, nw @ s.v])
+            g /= max(np.linalg.norm(g), 1e-9)
+            clip = RG.strip(cB, g, -1e-3, dist) if rel == "NEAR" else RG.strip(cB, g, dist, 1e3)
+        else:
+            d = RG.disk(cB, dist, 48)
+            clip = d if rel == "NEAR" else RG.bounding_square(region).difference(d)
+        new = RG.clip(region, clip)
+        if new.is_empty or new.area < 1e-10:
+            raise emptied(e, ctx.sup, f"nothing within {dist:g} m of {e.parent.object} is free "
+                           f"({free_room_text(region)})" if rel == "NEAR" else
+                           f"nothing {dist:g} m or more from {e.parent.object} is free")
+        return new
+
+
+@register
+class Side(LayoutRule):
+    names = ("SIDE_OF", "ALONG")
+
+    def region(self, ctx: RegionContext, e: Edge, region: BaseGeometry) -> BaseGeometry:
+        """SIDE_OF: the half-plane beyond the parent's centroid on ``side`` (parent frame, or the
+        camera's with ``frame: camera``).
+        ALONG: the strip beside the parent's ``side`` face, from the face outwards up to ``width``,
+        within the parent's extent along that face (as :mod:`parse3d.measure` checks it)."""
+        st, s, rel = ctx.st, ctx.sup.surface, e.relation
+        xB, frame, hull = parent_frame(st, e.parent.object)
+        cB = plane_coords(s, xB[None])[0] - ctx.off
+        side = e.param("side")
+        nw = side_vector(st, e, frame)
+        g = np.array([nw @ s.u, nw @ s.v])
+        if np.linalg.norm(g) < 1e-6:
+            # the side is across the support (a mirror on the wall behind a vanity, SIDE_OF its
+            # back): measured in 3-D, as the check does, every position on the support is on the
+            # same side of the parent's centroid
+            d = float((np.asarray(s.origin, float) - xB) @ nw)
+            if rel == "SIDE_OF" and d > 0:
+                return region
+            raise Fail(f"{rel} side {side!r} of {e.parent.object!r} is across {ctx.sup.name}"
+                       + (f", which lies {-d:.2f} m on the other side of its centroid"
+                          if rel == "SIDE_OF" else ": no strip beside that face lies on it"))
+        g /= np.linalg.norm(g)
+        if rel == "SIDE_OF":
+            clip = RG.half_plane(cB, g)
+        else:
+            hB = 0.0 if hull is None else float(np.max(plane_coords(s, hull) @ g - (cB + ctx.off) @ g))
+            clip = RG.strip(cB, g, max(hB, 0.0), max(hB, 0.0) + e.param("width"))
+            if hull is not None:  # within the parent's extent along the face
+                gp = np.array([g[1], -g[0]])
+                along = plane_coords(s, hull) @ gp - (cB + ctx.off) @ gp
+                clip = RG.clip(clip, RG.strip(cB, gp, float(along.min()), float(along.max())))
+        new = RG.clip(region, clip)
+        if new.is_empty or new.area < 1e-10:
+            raise emptied(e, ctx.sup, f"the {side} of {e.parent.object} is taken or outside "
+                          f"{ctx.sup.name}", f" side {side}")
+        return new
+
+
+@register
+class Toward(LayoutRule):
+    names = ("TOWARD",)
+
+    def rotate(self, st: SolveState, asset: Asset, o: Orientation, e: Edge) -> None:
+        """Turned per sampled position to face the parent (unless a part-level rule fixed
+        it)."""
+        o.toward = e.parent.object
+
+    def region(self, ctx: RegionContext, e: Edge, region: BaseGeometry) -> BaseGeometry:
+        """With a ``tolerance_deg`` of at least ``SQUARE_MIN_TOLERANCE``, prefer positions from which
+        the child, squared to the nearest side of its target, still faces the target's centroid
+        within ``SQUARE_SHARE`` of the tolerance: four cones about the target's side normals. Where none is free, the whole region stays (the child then faces
+        the centroid exactly). A child whose angle is fixed otherwise, or that asks for a free
+        yaw, is not constrained."""
+        st, s = ctx.st, ctx.sup.surface
+        if st.pag.objects[ctx.oid].extra.get("yaw") == "free" or abs(float(s.normal[2])) < 0.9 \
+                or any(RULES[x.relation].fixes_yaw for x in st.pag.edges_of(ctx.oid)):
+            return region
+        if e.param("tolerance_deg") < SQUARE_MIN_TOLERANCE:
+            return region  # cones this narrow would crowd the chairs at the sides' centres
+        xB, frame, hull = parent_frame(st, e.parent.object)
+        if hull is None:
+            return region
+        cB = plane_coords(s, xB[None])[0] - ctx.off
+        half = SQUARE_SHARE * np.deg2rad(e.param("tolerance_deg"))
+        cones = []
+        for ax in (frame[:, 0], -frame[:, 0], frame[:, 1], -frame[:, 1]):
+            g = np.array([ax @ s.u, ax @ s.v])
+            if np.linalg.norm(g) < 1e-6:
+                continue
+            a = float(np.arctan2(g[1], g[0]))
+            far = 50.0
+            cones.append(shapely.Polygon([tuple(cB), tuple(cB + far * np.array([np.cos(a - half), np.sin(a - half)])),
+                                          tuple(cB + far * np.array([np.cos(a + half), np.sin(a + half)]))]))
+        new = RG.clip(region, shapely.union_all(cones)) if cones else region
+        return region if new.is_empty or new.area < 1e-10 else new
+
+
+def side_vector(st: SolveState, e, R: np.ndarray) -> np.ndarray:
+    """World direction of a ``SIDE_OF`` / ``ALONG`` edge's ``side``: in the parent's frame
+    (rotation ``R``), or with ``frame: camera`` as the PAG's viewpoint sees it."""
+    if e.param("frame") == "camera":  # the side as the photograph shows it
+        return np.array(st.pag.viewpoint.side_direction(st.pag.room, e.param("side")))
+    return R @ np.array(_SIDE_DIRS[e.param("side")])
