@@ -22,6 +22,8 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from .measure.checks import check_relations
 from .measure.stability import verify_settled
 from .pag.model import PAG
@@ -121,6 +123,20 @@ def _support_key(scene: Scene, oid: str) -> str:
     return str(next(i for i, r in enumerate(scene.pag.relations) if r is e))
 
 
+def _pose_of(obj) -> tuple:
+    """``(asset id, position, rotation)`` of a placed object (None for a failed one)."""
+    if not obj.placed or obj.asset is None:
+        return (None, None, None)
+    return (obj.asset.asset_id, np.array(obj.position, float), np.array(obj.rotation, float))
+
+
+def _same_pose(a: tuple, b: tuple) -> bool:
+    """Whether two :func:`_pose_of` are one pose: the same asset within 0.1 mm and 0.01."""
+    if a[0] is None or a[0] != b[0]:
+        return False
+    return bool(np.abs(a[1] - b[1]).max() <= 1e-4 and np.abs(a[2] - b[2]).max() <= 1e-2)
+
+
 def _settle(scene: Scene) -> None:
     from .physics import settle
 
@@ -174,8 +190,12 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                     key = _support_key(scene, d)
                     before[d] = (copy.deepcopy(scene.objects[d]),
                                  copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
+        was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
         done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
                                config=cfg, new_asset=set(bad) if action == "asset" else None)
+        # placed again exactly where it was (the only pose its relations leave): not a change
+        done = {k: v for k, v in done.items()
+                if k not in was or not _same_pose(was[k], _pose_of(scene.objects[k]))}
         for oid, cause in bad.items():
             o = scene.objects[oid]
             o.repairs.append(Repair(rnd, cause, done.get(oid, action)))
