@@ -43,7 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..scene.model import Scene
-from .checks import check_edge, world_points
+from .checks import check_edge, select_parts, world_points
 from .geometry import asset_geometry, hull_extents, is_round
 from .reach import piece_data, pieces_distance, stands_to_lean
 
@@ -222,10 +222,11 @@ def settled_rest(scene: Scene, obj) -> str | None:
         above its top than its own length (on the heap): fruit, bread and bananas tumble in a bowl, they do not tip (a book
         standing in a bookcase has an upright and still tips);
     ``"still leaning"``
-        a child ``LEANING_AGAINST`` an object that still touches that object (any part, within
-        :data:`LEAN_TOUCH`, exact convex distances) at a tilt the relation dictionary allows
-        (at most ``angle_deg``'s upper bound, 60 degrees): a pillow slumped further against a
-        headboard, a cushion against an armchair's back.
+        a child ``LEANING_AGAINST`` an object that still touches the part it leans on (the
+        parts its reference names, else any; within :data:`LEAN_TOUCH`, exact convex
+        distances) at a tilt the relation dictionary allows (at most ``angle_deg``'s upper
+        bound, 60 degrees): a pillow slumped further against a headboard, a cushion against an
+        armchair's back.
 
     The caller checks the rest: the object still touches its supporter and its centre of mass
     is over it.
@@ -249,8 +250,9 @@ def settled_rest(scene: Scene, obj) -> str | None:
         other = scene.objects.get(e.parent.object)
         if other is None or not other.placed:
             continue
+        parts = select_parts(other, e.parent) or list(other.asset.parts)
         if _lean_tilt(scene, obj) <= e.spec.param("angle_deg").high + 1.0 \
-                and _distance(obj, other) <= LEAN_TOUCH:
+                and _distance(obj, other, parts) <= LEAN_TOUCH:
             return "still leaning"
     return None
 
@@ -280,11 +282,11 @@ def _lean_tilt(scene: Scene, obj) -> float:
     return float(np.degrees(np.arccos(np.clip(u[2] / np.linalg.norm(u), -1, 1))))
 
 
-def _distance(a, b) -> float:
-    """Exact distance (m) between two settled objects' collision pieces."""
+def _distance(a, b, parts: list) -> float:
+    """Exact distance (m) between a settled object's collision pieces and those of ``parts``
+    of another."""
     return pieces_distance(piece_data(a.asset, a.asset.parts), a.transform(True),
-                           piece_data(b.asset, b.asset.parts), b.transform(True),
-                           limit=LEAN_TOUCH)
+                           piece_data(b.asset, parts), b.transform(True), limit=LEAN_TOUCH)
 
 
 
