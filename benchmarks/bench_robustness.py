@@ -31,6 +31,9 @@ Prints one table with a row per corpus, each scene run through the project's per
     The row adds tracebacks (scenes whose solve raised), relaxed relations per scene, the
     median and largest wall time of the pipeline (solve, settle, contacts) and its median and
     largest CPU time (``cpu med``, ``cpu max``: less noisy than wall time on a shared machine).
+    Every row ends with the median and largest CPU seconds spent settling and repairing
+    (``settle med``, ``settle max``: the first settling, every repair round and its settling;
+    ``scene.timings["settle_cpu"]``, wall seconds in revisions without it).
 ``cost of failure``
     a scene (examples/study.json) and the same scene plus one wardrobe ON a mug: the ratio of
     their solve times (goal: at most 3).
@@ -267,6 +270,7 @@ def measure(case: dict) -> dict:
             "held": sum(held.get(i) is True for i in sup + other),
             "fallen": _fallen(scene, placed),
             "solve_s": float(scene.timings.get("solve", 0.0)), "cpu_s": cpu, "wall_s": wall,
+            "settle_s": float(scene.timings.get("settle_cpu", scene.timings.get("settle", 0.0))),
             "relaxed": sum(bool(getattr(c, "relaxed", None)) for c in scene.relations),
             "failed": [f"{o.id}: {o.reason}" for o in scene.objects.values() if not o.placed]}
 
@@ -323,7 +327,8 @@ def run_all(cases: list[dict], cof_seeds: range, progress: bool = True,
         if progress:  # one line per case, so that a long run can be followed
             print(f"{k + 1}/{len(cases)} {c['row']:16s} {c['name'][:36]:36s} seed {c['seed']}: "
                   f"{m['placed']}/{m['objects']} placed, {m.get('fallen', 0)} fallen, "
-                  f"{m.get('cpu_s', 0):.1f} s", file=sys.stderr, flush=True)
+                  f"{m.get('cpu_s', 0):.1f} s (settle and repair {m.get('settle_s', 0):.1f} s)",
+                  file=sys.stderr, flush=True)
     if pool is not None:
         pool.close()
         pool.join()
@@ -356,6 +361,8 @@ def summarize(cases: list[dict]) -> dict[str, dict]:
                     "wall_max": max(c.get("wall_s", 0.0) for c in rs),
                     "cpu_median": float(np.median([c.get("cpu_s", 0.0) for c in rs])),
                     "cpu_max": max(c.get("cpu_s", 0.0) for c in rs),
+                    "settle_median": float(np.median([c.get("settle_s", 0.0) for c in rs])),
+                    "settle_max": max(c.get("settle_s", 0.0) for c in rs),
                     "obj_s": g("placed") / solve_s if solve_s else float("nan")}
     return out
 
@@ -363,7 +370,8 @@ def summarize(cases: list[dict]) -> dict[str, dict]:
 def print_table(now: dict, before: dict | None, rev: str | None) -> None:
     head = (f"{'corpus':18s} {'run':>8s} {'scenes':>6s} {'objects':>7s} {'placed%':>8s} "
             f"{'complete%':>9s} {'support%':>8s} {'all%':>6s} {'fallen':>6s} {'obj/s':>7s} "
-            f"{'tracebk':>7s} {'relaxed':>7s} {'wall med':>8s} {'wall max':>8s} {'cpu med':>7s} {'cpu max':>7s}")
+            f"{'tracebk':>7s} {'relaxed':>7s} {'wall med':>8s} {'wall max':>8s} {'cpu med':>7s} {'cpu max':>7s} "
+            f"{'settle med':>10s} {'settle max':>10s}")
     print(head)
     print("-" * len(head))
     for row in ROWS:
@@ -376,7 +384,8 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
                   f"{s['objects']:7d} {s['placed']:8.2f} {s['complete']:9.1f} {s['support']:8.2f} "
                   f"{s['all']:6.2f} {s['fallen']:6d} {s['obj_s']:7.1f} {s['errors']:7d} "
                   f"{s['relaxed']:7.2f} {s['wall_median']:8.2f} {s['wall_max']:8.2f} "
-                  f"{s['cpu_median']:7.2f} {s['cpu_max']:7.2f}{err}")
+                  f"{s['cpu_median']:7.2f} {s['cpu_max']:7.2f} {s['settle_median']:10.2f} "
+                  f"{s['settle_max']:10.2f}{err}")
     for label, res in (("now", now), (rev or "", before)):
         if res is None:
             continue

@@ -8,15 +8,21 @@ After settling, objects that fell, tipped or left their support, or whose suppor
 longer holds, are re-placed with the rest of the scene fixed (round 1: another pose; later
 rounds: another asset) and the scene is settled again, up to ``repair_rounds`` rounds. An
 object still fallen, tipped or off its support after the last round becomes ``failed``
-("unstable after N repairs"), with everything resting on it.
+("unstable after N repairs"), with everything resting on it. Objects that rest as meant but
+turned (:func:`parse3d.measure.stability.settled_rest`) with their support relation failing are
+re-placed too, and go back to where they rested if that leaves them unstable: a repair never
+makes a stable object fail.
 """
 
 from __future__ import annotations
 
+import copy
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
+
+import numpy as np
 
 from .measure.checks import check_relations
 from .measure.stability import verify_settled
@@ -85,7 +91,50 @@ def unstable_objects(scene: Scene, *, relations: bool = True) -> dict[str, str]:
         if i.object_id in out or (i.cause == "broke_support" and not relations):
             continue
         out[i.object_id] = "support relation" if i.cause == "broke_support" else i.cause
+    if relations:
+        out.update(dict.fromkeys(_turned_at_rest(scene, out), "support relation"))
     return out
+
+
+def _turned_at_rest(scene: Scene, skip) -> list[str]:
+    """Placed dynamic objects not in ``skip`` that rest as meant after turning in settling
+    (:func:`parse3d.measure.stability.settled_rest`: a content on a pile in its container, a
+    slumped leaner) while their support relation, met when solved, fails on the settled poses:
+    worth another pose, not a failure."""
+    from .measure.stability import settled_rest
+
+    checks = {c.index: c for c in scene.relations}
+    index = {id(e): i for i, e in enumerate(scene.pag.relations)}
+    out = []
+    for oid, o in scene.objects.items():
+        e = scene.pag.supporter(oid)
+        if oid in skip or e is None or not o.placed or o.fixed or o.settled_position is None:
+            continue
+        c = checks.get(index[id(e)])
+        if c is not None and c.holds is True and c.holds_settled is False \
+                and settled_rest(scene, o) is not None:
+            out.append(oid)
+    return out
+
+
+def _support_key(scene: Scene, oid: str) -> str:
+    """The key of ``oid``'s support relation in ``scene.meta["resolved"]`` (its PAG index)."""
+    e = scene.pag.supporter(oid)
+    return str(next(i for i, r in enumerate(scene.pag.relations) if r is e))
+
+
+def _pose_of(obj) -> tuple:
+    """``(asset id, position, rotation)`` of a placed object (None for a failed one)."""
+    if not obj.placed or obj.asset is None:
+        return (None, None, None)
+    return (obj.asset.asset_id, np.array(obj.position, float), np.array(obj.rotation, float))
+
+
+def _same_pose(a: tuple, b: tuple) -> bool:
+    """Whether two :func:`_pose_of` are one pose: the same asset within 0.1 mm and 0.01."""
+    if a[0] is None or a[0] != b[0]:
+        return False
+    return bool(np.abs(a[1] - b[1]).max() <= 1e-4 and np.abs(a[2] - b[2]).max() <= 1e-2)
 
 
 def _settle(scene: Scene) -> None:
@@ -105,29 +154,48 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     (None: no bound).
 
     Returns ``{"repaired": n, "unrepaired": m}``: objects repaired into a stable pose, and
-    objects that became ``failed`` because they were still unstable (``scene.meta["repair"]``
-    also says ``"budget": true`` when the budget stopped the rounds).
+    objects that became ``failed`` because they were still unstable, plus ``"kept": k`` when k
+    objects re-placed only for their support relation went back to their earlier pose
+    (``scene.meta["repair"]`` also says ``"budget": true`` when the budget stopped the rounds).
     """
     cfg = config or SolverConfig()
     t0 = time.process_time()
     over = False
     _settle(scene)
     touched: set[str] = set()
+    # objects re-posed while stable (and what rests on them): PlacedObject and resolved support
+    # before that round
+    before: dict[str, tuple] = {}
+    before_of: dict[str, None] = {}  # those objects themselves (not what rests on them)
     still: dict[str, str] | None = None  # unstable_objects(relations=False) as settled now
     for rnd in range(1, rounds + 1):
-        # a broken support relation on a stable object gets one new pose (round 1), no more
+        # a broken support relation on a stable object gets one new pose (round 1), no more;
+        # one resting as meant, turned (a content, a slumped leaner), is tried every round
         bad = unstable_objects(scene, relations=rnd == 1)
-        if rnd > 1 or not bad:
-            still = bad  # round 1 found none even with the relations: none without them
+        real = {k: v for k, v in bad.items() if v != "support relation"}
+        if rnd > 1:
+            bad.update(dict.fromkeys(_turned_at_rest(scene, bad), "support relation"))
+        still = real
         if not bad:
             break
         if budget is not None and time.process_time() - t0 > budget:
             over = True
-            still = unstable_objects(scene, relations=False)
             break
         action = "pose" if rnd == 1 else "asset"
+        # stable, re-posed only for their relation: their pose before, to go back to
+        for oid in set(bad) - set(real):
+            before_of.setdefault(oid, None)
+            for d in [oid, *support_descendants(scene.pag, oid)]:
+                if d not in before:
+                    key = _support_key(scene, d)
+                    before[d] = (copy.deepcopy(scene.objects[d]),
+                                 copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
+        was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
         done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
                                config=cfg, new_asset=set(bad) if action == "asset" else None)
+        # placed again exactly where it was (the only pose its relations leave): not a change
+        done = {k: v for k, v in done.items()
+                if k not in was or not _same_pose(was[k], _pose_of(scene.objects[k]))}
         for oid, cause in bad.items():
             o = scene.objects[oid]
             o.repairs.append(Repair(rnd, cause, done.get(oid, action)))
@@ -143,6 +211,27 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         still = None
     if still is None:
         still = unstable_objects(scene, relations=False)
+    # a repair never makes a stable object fail: one re-posed for its relation alone that is
+    # unstable now goes back to where it was (with what rests on it) and the scene settles again
+    back = [oid for oid in before_of if oid in still and scene.objects[oid].placed]
+    if back:
+        for oid in back:
+            for d in [oid, *support_descendants(scene.pag, oid)]:
+                if d in before and scene.objects[d].placed:
+                    (old, res), now = before[d], scene.objects[d]
+                    old.repairs, old.flags = list(now.repairs), list(now.flags)
+                    scene.objects[d] = old
+                    key = _support_key(scene, d)
+                    if res is not None:  # the support it was solved on, as it was
+                        scene.meta.setdefault("resolved", {})[key] = res
+                    else:
+                        scene.meta.get("resolved", {}).pop(key, None)
+        scene.relations = []
+        scene.relations = check_relations(scene)
+        mark_unmet(scene)
+        _settle(scene)
+        still = unstable_objects(scene, relations=False)
+        touched.update(back)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
         if not o.placed:
@@ -159,6 +248,8 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         check_relations(scene, settled=True)
     mark_unmet(scene)  # settling re-checked them as failing
     stats = {"repaired": len(touched - set(still)), "unrepaired": len(still)}
+    if back:
+        stats["kept"] = len(back)
     scene.meta["repair"] = dict(stats, budget=True) if over else stats
     return stats
 
@@ -177,10 +268,13 @@ def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,
     if options.settle and scene.placed:
         from .physics import extract_contacts
 
-        t = time.perf_counter()
+        t, c = time.perf_counter(), time.process_time()
         settle_and_repair(scene, rounds=options.repair_rounds, library=library,
                           config=options.solver, budget=options.repair_budget)
         scene.timings["settle"] = time.perf_counter() - t
+        # CPU seconds too: settling is single-threaded, and on a busy machine wall time is not
+        # what the repairs cost
+        scene.timings["settle_cpu"] = time.process_time() - c
         t = time.perf_counter()
         scene.contacts = extract_contacts(scene)
         scene.timings["contacts"] = time.perf_counter() - t

@@ -8,12 +8,14 @@ held kinematic and never reported):
 
 ``fell``
     its origin dropped more than ``fall_distance`` (default 5 cm), and it is really off: its
-    centre of mass is no longer over the (settled) footprint of the object that supported it,
-    or, standing on the room, its centre of mass dropped more than ``fall_distance``;
+    centre of mass is no longer over the (settled) footprint of the object that held it up (the
+    container the solver chose where it rests beside a round parent), or, standing on the room, its centre of mass dropped more than ``fall_distance``;
 ``tipped``
     its up axis turned more than ``tip_angle_deg`` (default 15 degrees) away from its solved up
     axis, its centre of mass dropped more than ``TIP_DROP`` (2 cm: it fell over, it was not
-    just turned) and it is not round (an apple rolls rather than tips);
+    just turned), it is not round (an apple rolls rather than tips) and it is not still resting
+    as meant (:func:`settled_rest`: a content tumbled within its container, a leaner slumped
+    against what it leans on);
 ``left_support``
     settling found no contact within ``contact_threshold`` (default 1 mm) between it and the
     part that supported it (the ``left_support`` flag :func:`parse3d.physics.settle` sets from
@@ -23,7 +25,9 @@ held kinematic and never reported):
     it still touches its supporter, but its support relation no longer holds on the settled
     poses (centre of mass off the support polygon, tilted off the surface, out of the
     enclosure, ...), measured by the relation's check rule. Objects resting on a pile
-    (``stacked_on``) are judged by where they ended (the three causes above), not by this.
+    (``stacked_on``) are judged by where they ended (the three causes above), not by this. An
+    object still resting as meant (:func:`settled_rest`) whose support check fails on its turn
+    is reported ``broke_support`` (the first repair round re-places it), never ``tipped``.
 
 The thresholds default to the ones the scene was settled with (``scene.meta["settle"]``).
 
@@ -39,11 +43,12 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..scene.model import Scene
-from .checks import check_edge, world_points
-from .geometry import asset_geometry, is_round
+from .checks import check_edge, select_parts, world_points
+from .geometry import asset_geometry, hull_extents, is_round
+from .reach import piece_data, pieces_distance, stands_to_lean
 
 __all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by", "is_round",
-           "SettledSummary", "summarize_settled", "broken_after_settling"]
+           "SettledSummary", "summarize_settled", "broken_after_settling", "settled_rest"]
 
 #: The causes :func:`verify_settled` reports, in the order it reports them per object.
 INSTABILITY_CAUSES = ("fell", "tipped", "left_support", "broke_support")
@@ -149,7 +154,7 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
             continue
         found: list[Instability] = []
         edge = scene.pag.supporter(oid)
-        owner = scene.objects.get(edge.parent.object) if edge is not None else None
+        owner = scene.objects.get(_holder(edge, o)) if edge is not None else None
         owner = owner if owner is not None and owner.placed else None
         com0, com1 = _com(o, settled=False), _com(o, settled=True)
         sunk = float(com0[2] - com1[2])
@@ -163,7 +168,9 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
         up1 = np.asarray(o.settled_rotation)[:, 2]
         tilt = float(np.degrees(np.arccos(np.clip(up0 @ up1 / (np.linalg.norm(up0) *
                                                               np.linalg.norm(up1)), -1, 1))))
-        if tilt > tip and sunk > TIP_DROP and not is_round(o):
+        # turned and lower, unless round or still held as the writer meant: fallen over
+        if tilt > tip and sunk > TIP_DROP and not is_round(o) and (
+                off or "left_support" in o.flags or settled_rest(scene, o) is None):
             found.append(Instability(oid, "tipped", f"up axis turned {tilt:.1f} deg "
                                      f"(more than {tip} deg), centre of mass {sunk:.3f} m lower",
                                      tilt))
@@ -194,6 +201,93 @@ def verify_settled(scene: Scene, *, fall_distance: float | None = None,
 
 #: Metres the centre of mass must drop for a turned object to count as ``tipped``.
 TIP_DROP = 0.02
+#: Metres within which a settled object still touches what it leans on (the contacts' 1 mm,
+#: plus the gap PhysX keeps between resting bodies).
+LEAN_TOUCH = 0.003
+#: Height, as a share of its longest horizontal extent, up to which a content lies (has no
+#: upright to fall from).
+LYING = 1.0
+
+
+def settled_rest(scene: Scene, obj) -> str | None:
+    """Why a settled object that turned is still resting as its PAG meant, or None.
+
+    Two kinds of object have no upright pose to fall from (docs/solver.md, "Verification after
+    settling"):
+
+    ``"in its container"``
+        a content lying in its container (``IN`` a bowl, a basket, a crate, or resting there
+        beside a round parent it was written ``ON``; placed no taller than (:data:`LYING` times)
+        its length) whose centre of mass ends over the container's settled footprint, no higher
+        above its top than its own length (on the heap): fruit, bread and bananas tumble in a bowl, they do not tip (a book
+        standing in a bookcase has an upright and still tips);
+    ``"still leaning"``
+        a child ``LEANING_AGAINST`` an object that still touches the part it leans on (the
+        parts its reference names, else any; within :data:`LEAN_TOUCH`, exact convex
+        distances) at a tilt the relation dictionary allows (at most ``angle_deg``'s upper
+        bound, 60 degrees): a pillow slumped further against a headboard, a cushion against an
+        armchair's back.
+
+    The caller checks the rest: the object still touches its supporter and its centre of mass
+    is over it.
+    """
+    edge = scene.pag.supporter(obj.id)
+    if edge is None:
+        return None
+    holder = _holder(edge, obj)
+    box = scene.objects.get(holder)
+    if box is not None and box.placed and (edge.relation == "IN" or holder != edge.parent.object) \
+            and _lying(obj):
+        com = _com(obj, settled=True)
+        # on the heap in it, not above it
+        top = float(world_points(box, hull_only=True, settled=True)[:, 2].max()) \
+            + float(hull_extents(obj.asset)[0].max()) * obj.scale
+        if com[2] <= top and _over(box, com):
+            return "in its container"
+    for e in scene.pag.edges_of(obj.id):
+        if e.relation != "LEANING_AGAINST" or e.parent.is_room_element:
+            continue
+        other = scene.objects.get(e.parent.object)
+        if other is None or not other.placed:
+            continue
+        parts = select_parts(other, e.parent) or list(other.asset.parts)
+        if _lean_tilt(scene, obj) <= e.spec.param("angle_deg").high + 1.0 \
+                and _distance(obj, other, parts) <= LEAN_TOUCH:
+            return "still leaning"
+    return None
+
+
+def _holder(edge, obj) -> str:
+    """The id of what holds ``obj`` up: the support the solver chose where it is another object
+    than written (an apple resting in the bowl beside its round parent), else the parent."""
+    choice = obj.support_choice
+    if choice is not None and choice.owner not in ("room", edge.parent.object):
+        return choice.owner
+    return edge.parent.object
+
+
+def _lying(obj) -> bool:
+    """Whether ``obj`` was placed lying: its height at most :data:`LYING` of its longest
+    horizontal extent (solved pose)."""
+    ext = np.ptp(world_points(obj, hull_only=True, settled=False), axis=0)
+    return bool(ext[2] <= LYING * max(ext[0], ext[1]))
+
+
+def _lean_tilt(scene: Scene, obj) -> float:
+    """Degrees between vertical and the settled up axis a leaning child leans by (its back for a
+    flat child standing on its edge, as the ``LEANING_AGAINST`` check reads it)."""
+    up = np.array([0, -1.0, 0]) if stands_to_lean(obj.asset, scene.pag, obj.id) \
+        else np.array([0, 0, 1.0])
+    u = np.asarray(obj.settled_rotation) @ up
+    return float(np.degrees(np.arccos(np.clip(u[2] / np.linalg.norm(u), -1, 1))))
+
+
+def _distance(a, b, parts: list) -> float:
+    """Exact distance (m) between a settled object's collision pieces and those of ``parts``
+    of another."""
+    return pieces_distance(piece_data(a.asset, a.asset.parts), a.transform(True),
+                           piece_data(b.asset, parts), b.transform(True), limit=LEAN_TOUCH)
+
 
 
 def _com(obj, *, settled: bool) -> np.ndarray:
