@@ -53,3 +53,33 @@ def test_three_towels_share_one_bar_along_its_length(seed):
         for j in range(i + 1, 3):
             overlap = fps[i].intersection(fps[j]).area
             assert overlap <= 0.05 * min(fps[i].area, fps[j].area), (i, j, overlap)
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_several_coats_on_one_rack_and_bags_on_one_hook_all_hang(seed):
+    """Three coats on a coat tree standing in a corner and three paper bags on one wall hook:
+    every one hangs (on its named hook, on the next free one of the same rack recorded
+    relaxed, or over another coat or bag as real ones do), from a hook of its rack, fixed; no
+    object falls and every relation holds after settling or is recorded relaxed."""
+    from parse3d.measure import summarize_settled
+
+    scene = solved("coats_on_one_rack", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    s = summarize_settled(scene)
+    assert s.complete and s.keeps_relations()
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True and c.relaxed is None]
+    assert not broken, broken
+    for k in (1, 2, 3):
+        jacket, bag = scene.objects[f"jacket{k}"], scene.objects[f"paper_bag{k}"]
+        assert jacket.support_choice.owner == "coat_rack"
+        assert jacket.support_choice.part.startswith("hook")
+        assert bag.support_choice.owner == "bag_hook"
+        assert jacket.fixed and bag.fixed
+    # a coat hung on another hook than the one named says so, naming the hook it is on
+    relaxed = scene.meta.get("relaxed") or {}
+    for c in scene.relations:
+        why = relaxed.get(str(c.index), "")
+        if c.child.startswith("jacket") and "it hangs on" in why:
+            part = scene.objects[c.child.split(":")[0]].support_choice.part
+            assert f"it hangs on coat_rack:{part} instead" in why, why

@@ -22,7 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
-from .hanging import edge_up, rail_fit, rail_scale, thinness
+from .hanging import edge_up, hang_over, other_hook, rail_fit, rail_scale, thinness
 from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
 from .leaning import involves_object, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
@@ -251,6 +251,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             continue
         total_trials += trials
         R, t, sup, body = pose[:4]
+        loose = other_hook(st, support_edge, sup, loose)  # the next free hook
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
         obj.rests_on = pose[4] if len(pose) > 4 else ("back" if hang is not None else None)
@@ -714,6 +715,12 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
+    # no room beside what hangs there: a coat over the other coats (solver/hanging.py)
+    got = hang_over(st, oid, support_edge, asset, [sups[int(si)] for si in order],
+                    lambda sp: _place_on(st, oid, asset, scale, hull, sp, support_edge,
+                                         variant, body, rng, cfg, proposal))
+    if got is not None:
+        return got
     if cfg.strategy == "constrained" and any(
             may_lean(st, asset, scale, sups[int(si)], support_edge) for si in order):
         # too big to lie flat on a ledge: stand it on its edge, leaning back (sheet music)
