@@ -24,7 +24,7 @@ from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
 from .hanging import edge_up, hang_over, other_hook, rail_fit, rail_scale, thinness
 from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
-from .leaning import involves_object, lean_samples, lean_slide
+from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, floor_fit, nest_rise, nest_samples, pieces_drop
 from .regions import (
@@ -231,6 +231,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         hang = _hung_edge_up(support_edge, asset)
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale, 1 if hang is not None else 2)
+        scale = lean_fit(st, oid, others, asset, scale)  # side by side along a face
         loose = None
         placed_edge = support_edge
         if heap is not None:
