@@ -83,3 +83,33 @@ def test_several_coats_on_one_rack_and_bags_on_one_hook_all_hang(seed):
         if c.child.startswith("jacket") and "it hangs on" in why:
             part = scene.objects[c.child.split(":")[0]].support_choice.part
             assert f"it hangs on coat_rack:{part} instead" in why, why
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_long_tools_hang_lengthwise_from_pegboard_hooks(seed):
+    """A hammer hung by its head, a screwdriver by its handle and a wrench by its head from a
+    pegboard's hooks: each hangs lengthwise (its long axis vertical after settling), the
+    named end up, recorded as resting by that end; every relation holds after settling."""
+    import numpy as np
+
+    from parse3d.solver.geometry import asset_geometry
+
+    scene = solved("tools_on_a_pegboard", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    for e in scene.pag.relations:
+        if e.relation != "HANGING_BELOW":
+            continue
+        oid, part = e.child.object, e.child.part  # as the vocabulary reads it
+        o = scene.objects[oid]
+        hull = asset_geometry(o.asset).hull
+        a = int(np.argmax(np.ptp(hull, axis=0)))
+        T = o.transform(True)
+        assert abs(T[2, a] / np.linalg.norm(T[:3, a])) > 0.95, (oid, T[:3, a])
+        pts = np.vstack([p.vertices for p in o.asset.parts_by_label(part)])
+        named = (pts.mean(axis=0) @ T[:3, :3].T + T[:3, 3])[2]
+        centre = (hull.mean(axis=0) @ T[:3, :3].T + T[:3, 3])[2]
+        assert named > centre, (oid, named, centre)
+        assert o.rests_on in ("left", "right", "back", "front"), o.rests_on

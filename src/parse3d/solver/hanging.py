@@ -17,6 +17,7 @@ as real coats do, instead of failing with "jacket1 in the way".
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -28,7 +29,7 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["drapes", "edge_up", "hang_over", "hung_over", "other_hook", "rail_fit", "rail_scale", "thinness", "RAIL_GAP",
+__all__ = ["drapes", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook", "rail_fit", "rail_scale", "thinness", "RAIL_GAP",
            "DRAPING"]
 
 #: Share of a rail's length the objects hung on it may fill together (the rest: its brackets
@@ -128,6 +129,53 @@ def thinness(asset: Asset) -> float:
     return float(ext[2] / max(ext[0], ext[1], 1e-9))
 
 
+#: A child is long when its longest extent is at least this multiple of its middle one.
+LONG_HUNG = 1.5
+
+#: Share of a long child's length from either end within which the centre of the part it is
+#: hung by must lie for it to hang lengthwise from that end (a hammer's head, a screwdriver's
+#: handle).
+END_SHARE = 0.3
+
+_END_LABELS = {0: ("left", "right"), 1: ("back", "front")}
+
+
+def hung_lengthwise(edge: Edge, asset: Asset) -> Edge | None:
+    """The support edge by which a long child lying along its x or y axis (a hammer, a
+    screwdriver) hangs lengthwise, the end holding the named part up: HANGING_BELOW an
+    object's part by a named part near one end of its length, named by no surface or by its
+    top (a hammer hung by its head from a pegboard hook hangs head up, handle down, not flat
+    across the hook into the wall); None for anything else (the edge as written)."""
+    c = edge.child
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element or c.part is None \
+            or c.surface not in (None, "top"):
+        return None
+    hull = np.asarray(asset.hull_vertices(), float)
+    ext = np.ptp(hull, axis=0)
+    a = int(np.argmax(ext))
+    if a == 2 or ext[a] < LONG_HUNG * float(np.sort(ext)[1]):
+        return None
+    parts = asset.parts_by_label(c.part)
+    if c.index is not None:
+        parts = parts[c.index:c.index + 1]
+    if not parts:
+        return None
+    # the named parts together, else the first of them at an end (a combination wrench's
+    # heads at both ends: it hangs by one)
+    groups = [np.vstack([np.asarray(p.bounds, float) for p in parts])] + \
+        [np.asarray(p.bounds, float) for p in parts]
+    ats = [(float(np.mean(b[:, a])) - float(hull[:, a].min())) / max(float(ext[a]), 1e-9)
+           for b in groups]
+    at = next((x for x in ats if not END_SHARE < x < 1 - END_SHARE), None)
+    if at is None:
+        return None
+    from ..pag.refs import format_ref
+
+    label = _END_LABELS[a][0 if at <= END_SHARE else 1]
+    return replace(edge, child=replace(c, surface=label,
+                                       text=format_ref(c.object, c.part, c.index, label)))
+
+
 #: Material families of things that drape: hung side by side they may lie over one another.
 DRAPING = frozenset({"fabric", "leather", "paper"})
 
@@ -213,8 +261,6 @@ def _same_label(st: SolveState, edge: Edge) -> list:
     if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
             or edge.parent.part is None:
         return []
-    from dataclasses import replace
-
     try:
         return support_candidates(st, replace(edge, parent=replace(edge.parent, index=None)))
     except Fail:

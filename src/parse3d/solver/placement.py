@@ -22,7 +22,7 @@ from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
-from .hanging import edge_up, hang_over, other_hook, rail_fit, rail_scale, thinness
+from .hanging import edge_up, hang_over, hung_lengthwise, other_hook, rail_fit, rail_scale, thinness
 from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
@@ -228,9 +228,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                f"across {ref.object}'s {ref.part} parts ({reach:.2f} m needed)")
                 intrinsic.append(False)
                 continue
-        hang = _hung_edge_up(support_edge, asset)
+        hang = hung_lengthwise(support_edge, asset) or _hung_edge_up(support_edge, asset)
         # several hung below one rail share its length (towels along a bar)
-        scale = rail_fit(st, oid, support_edge, asset, scale, 1 if hang is not None else 2)
+        scale = rail_fit(st, oid, support_edge, asset, scale,
+                         _AXES[hang.child.surface] if hang is not None else 2)
         scale = lean_fit(st, oid, others, asset, scale)  # side by side along a face
         loose = None
         placed_edge = support_edge
@@ -255,7 +256,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         loose = other_hook(st, support_edge, sup, loose)  # the next free hook
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
-        obj.rests_on = pose[4] if len(pose) > 4 else ("back" if hang is not None else None)
+        obj.rests_on = pose[4] if len(pose) > 4 else (hang.child.surface if hang is not None
+                                                       else None)
         obj.fixed = support_edge.relation in ("SECURED_TO", "HANGING_BELOW")
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
