@@ -166,3 +166,29 @@ def test_every_relation_broken_by_settling_is_named():
     check_relations(scene, settled=True)
     lines = broken_after_settling(scene)
     assert any(x.startswith("IN apple0 -> bowl") for x in lines), lines
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_three_cushions_lean_side_by_side_along_a_bench_back(seed):
+    """Three cushions ON a bench's seat, each LEANING_AGAINST its back, the second right of the
+    first and the third right of the second: all placed (drawn narrow enough to share the
+    back, packed from the left end), every relation held after settling (each cushion still
+    touching the back), nothing fallen, and their footprints in a row without overlapping."""
+    import shapely
+
+    from parse3d.measure import summarize_settled
+
+    scene = solved("cushions_along_a_bench", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    s = summarize_settled(scene)
+    assert s.complete and s.keeps_relations()
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    assert not [o.id for o in scene.objects.values() if o.flags], \
+        {o.id: o.flags for o in scene.objects.values() if o.flags}
+    fps = [shapely.MultiPoint(world_points(scene.objects[f"cushion{k}"], hull_only=True,
+                                           settled=True)[:, :2]).convex_hull for k in (1, 2, 3)]
+    for i in range(3):
+        for j in range(i + 1, 3):
+            assert fps[i].intersection(fps[j]).area <= 0.05 * min(fps[i].area, fps[j].area)

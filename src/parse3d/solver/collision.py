@@ -10,7 +10,8 @@ that do not overlap hold meshes that cannot touch, so the answer is FCL's on eve
 from __future__ import annotations
 
 import hashlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from typing import TYPE_CHECKING
 
 import fcl
@@ -163,6 +164,19 @@ class CollisionWorld:
         if name in self._names:
             k = self._names.index(name)
             del self._names[k], self._bodies[k], self._rows[k]
+            self._table = None
+
+    @contextmanager
+    def hidden(self, names: Iterable[str]) -> Iterator[None]:
+        """The objects registered as ``names`` left out of every test inside the block, then
+        registered again where they were."""
+        saved = (list(self._names), list(self._bodies), list(self._rows))
+        for n in set(names):
+            self.remove(n)
+        try:
+            yield
+        finally:
+            self._names, self._bodies, self._rows = saved
             self._table = None
 
     def collides(self, body: Body, ignore: frozenset[str] = frozenset()) -> str | None:

@@ -8,9 +8,17 @@ edge-up (a folded towel) is drawn thinnest-first among the instances looked at
 (:func:`thinness`): its thickness stands out from the rail toward the wall behind it. A rail
 with several things to hang below it is drawn long enough for them, within its category's
 size range (:func:`rail_scale`).
+
+Cloth hung on one rack drapes over what already hangs there (:func:`hung_over`): a second coat
+on a coat tree whose hooks sit a hand apart goes on its hook over the first coat's shoulder,
+as real coats do, instead of failing with "jacket1 in the way".
 """
 
 from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import replace
+from typing import Any
 
 import numpy as np
 
@@ -21,7 +29,8 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["edge_up", "rail_fit", "rail_scale", "thinness", "RAIL_GAP"]
+__all__ = ["drapes", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook", "rail_fit", "rail_scale", "thinness", "RAIL_GAP",
+           "DRAPING"]
 
 #: Share of a rail's length the objects hung on it may fill together (the rest: its brackets
 #: and the gaps between them).
@@ -118,3 +127,162 @@ def thinness(asset: Asset) -> float:
     the thinnest hangs edge-up with the least standing out from the rail."""
     ext = hull_extents(asset)[0]
     return float(ext[2] / max(ext[0], ext[1], 1e-9))
+
+
+#: A child is long when its longest extent is at least this multiple of its middle one.
+LONG_HUNG = 1.5
+
+#: Share of a long child's length from either end within which the centre of the part it is
+#: hung by must lie for it to hang lengthwise from that end (a hammer's head, a screwdriver's
+#: handle).
+END_SHARE = 0.3
+
+_END_LABELS = {0: ("left", "right"), 1: ("back", "front")}
+
+
+def hung_lengthwise(edge: Edge, asset: Asset) -> Edge | None:
+    """The support edge by which a long child lying along its x or y axis (a hammer, a
+    screwdriver) hangs lengthwise, the end holding the named part up: HANGING_BELOW an
+    object's part by a named part near one end of its length, named by no surface or by its
+    top (a hammer hung by its head from a pegboard hook hangs head up, handle down, not flat
+    across the hook into the wall); None for anything else (the edge as written)."""
+    c = edge.child
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element or c.part is None \
+            or c.surface not in (None, "top"):
+        return None
+    hull = np.asarray(asset.hull_vertices(), float)
+    ext = np.ptp(hull, axis=0)
+    a = int(np.argmax(ext))
+    if a == 2 or ext[a] < LONG_HUNG * float(np.sort(ext)[1]):
+        return None
+    parts = asset.parts_by_label(c.part)
+    if c.index is not None:
+        parts = parts[c.index:c.index + 1]
+    if not parts:
+        return None
+    # the named parts together, else the first of them at an end (a combination wrench's
+    # heads at both ends: it hangs by one)
+    groups = [np.vstack([np.asarray(p.bounds, float) for p in parts])] + \
+        [np.asarray(p.bounds, float) for p in parts]
+    ats = [(float(np.mean(b[:, a])) - float(hull[:, a].min())) / max(float(ext[a]), 1e-9)
+           for b in groups]
+    at = next((x for x in ats if not END_SHARE < x < 1 - END_SHARE), None)
+    if at is None:
+        return None
+    from ..pag.refs import format_ref
+
+    label = _END_LABELS[a][0 if at <= END_SHARE else 1]
+    return replace(edge, child=replace(c, surface=label,
+                                       text=format_ref(c.object, c.part, c.index, label)))
+
+
+#: Material families of things that drape: hung side by side they may lie over one another.
+DRAPING = frozenset({"fabric", "leather", "paper"})
+
+
+def drapes(asset: Asset) -> bool:
+    """Whether ``asset`` is cloth-like: its largest part (by bounding box) is made of a
+    :data:`DRAPING` material (a coat, a towel, a paper bag; not its hanger)."""
+    best, vol = None, -1.0
+    for p in asset.parts:
+        v = float(np.prod(np.ptp(np.asarray(p.bounds, float), axis=0)))
+        if v > vol:
+            best, vol = p, v
+    return best is not None and best.material is not None and best.material.name in DRAPING
+
+
+def hung_over(st: SolveState, oid: str, edge: Edge, asset: Asset) -> frozenset[str]:
+    """The placed objects that ``oid`` (``asset``, hung by ``edge``) may overlap: for a
+    draping child HANGING_BELOW a part of an object, the draping objects already hanging below
+    any part of that same object that no other relation ties to it (a towel the writer put
+    SIDE_OF another hangs beside it); empty for anything else."""
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
+            or not drapes(asset):
+        return frozenset()
+    tied = {e.parent.object if e.child.object == oid else e.child.object
+            for e in st.pag.relations if e is not edge and oid in (e.child.object, e.parent.object)}
+    out = set()
+    for e in st.pag.relations:
+        if e.relation != "HANGING_BELOW" or e.parent.object != edge.parent.object:
+            continue
+        o = st.scene.objects.get(e.child.object)
+        if o is None or not o.placed or o.id == oid or o.id in tied or o.asset is None:
+            continue
+        if drapes(o.asset):
+            out.add(o.id)
+    return frozenset(out)
+
+
+#: Turns about its hook a draping thing is tried at over the others (each place call draws
+#: one): a coat on the corner side of a coat tree swings clear of the walls.
+SWINGS = 4
+
+
+def hang_over(st: SolveState, oid: str, edge: Edge, asset: Asset, sups: list,
+              place: Callable[[Any], Any]) -> Any | None:
+    """``place(sup)`` for the first of ``sups`` where it succeeds with the draping things
+    :func:`hung_over` allows ``oid`` to overlap left out of the way, at up to :data:`SWINGS`
+    turns; then, where other things hang on the parent already, on its other parts with the
+    named part's label, nearest the named one first (the next free hook of a coat tree: see
+    :func:`other_hook`; alone on it, other instances are tried on the named hook). None when
+    none holds it. Tried after the supports fail with the others in the way: a coat hangs
+    beside the others where there is room, over them where there is not."""
+    over = hung_over(st, oid, edge, asset)
+    named = {sp.choice.part for sp in sups}
+    crowded = any(e.relation == "HANGING_BELOW" and e.parent.object == edge.parent.object
+                  and e.child.object != oid and e.child.object in st.hulls
+                  for e in st.pag.relations)
+    rest = [sp for sp in _same_label(st, edge) if sp.choice.part not in named] \
+        if crowded else []
+    if sups and rest:
+        c = _centre(sups[0])
+        rest.sort(key=lambda sp: float(np.linalg.norm(_centre(sp) - c)))
+    with st.hidden(over):
+        for group, turns in ((sups, SWINGS if over else 0), (rest, SWINGS)):
+            for _ in range(turns):
+                for sup in group:
+                    try:
+                        return place(sup)
+                    except Fail:
+                        continue
+    return None
+
+
+def _centre(sup) -> np.ndarray:
+    """World centre of a support's region."""
+    s = sup.surface
+    c = sup.region.centroid
+    return s.origin + c.x * s.u + c.y * s.v
+
+
+def _same_label(st: SolveState, edge: Edge) -> list:
+    """Supports of every part of the parent with the named part's label (every hook of a coat
+    tree, not only ``hook#1``): none for anything but HANGING_BELOW a part of an object."""
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
+            or edge.parent.part is None:
+        return []
+    try:
+        return support_candidates(st, replace(edge, parent=replace(edge.parent, index=None)))
+    except Fail:
+        return []
+
+
+def other_hook(st: SolveState, edge: Edge, sup, loose: str | None = None) -> str | None:
+    """``loose`` (why the support edge is already relaxed, or None), and why ``edge``
+    (HANGING_BELOW a part) is recorded relaxed when its child hangs on ``sup``, another part of
+    the same label (the named hook taken, or facing a wall)."""
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
+            or edge.parent.part is None or sup.choice is None:
+        return loose
+    try:
+        named = {sp.choice.part for sp in support_candidates(st, edge)}
+    except Fail:
+        named = set()
+    if sup.choice.part in named:
+        return loose
+    from ..pag.refs import format_ref
+
+    ref = edge.parent
+    return (f"{loose}; " if loose else "") + (f"no room to hang {edge.child.object} below "
+            f"{format_ref(ref.object, ref.part, ref.index, ref.surface)} (others hang there, "
+            f"or it faces a wall): it hangs on {ref.object}:{sup.choice.part} instead")

@@ -30,12 +30,16 @@ from ..measure.reach import (
 )
 from ..pag.model import Edge
 from .config import Fail
-from .geometry import asset_geometry, part_points
+from .geometry import asset_geometry, hull_extents, part_points
 from .rotation import _pressing, parent_surface_world
-from .state import SolveState, parts_for
+from .state import SolveState, parts_for, plane_coords
 from .support import Support
 
-__all__ = ["lean_tilt", "lean_line", "lean_samples", "involves_object"]
+__all__ = ["lean_tilt", "lean_line", "lean_fit", "lean_samples", "involves_object", "LEAN_GAP"]
+
+#: Share of a face's width the objects leaning on it side by side may fill together (the rest:
+#: the gaps between them and at its ends).
+LEAN_GAP = 0.8
 
 #: Metres within which another part counts as level with the named part toward the face.
 LEVEL = 2e-3
@@ -335,7 +339,54 @@ def lean_samples(st: SolveState, oid: str, asset: Asset, scale: float, R: np.nda
                         c3 + h * s.normal)
     region = apply_region_rules(ctx, others, region, "object")
     region = apply_region_rules(ctx, others, region, "part")
-    return region, RG.sample_uniform(region, rng, n)
+    return region, _packed(st, oid, R, s, others, RG.sample_uniform(region, rng, n))
+
+
+def _leaning_beside(st: SolveState, oid: str, edges: list[Edge]) -> list[str]:
+    """The other objects leaning on the same face of the same object as ``oid`` (an edge of
+    ``edges``) and resting on the same object: cushions along one bench's back."""
+    sup = st.pag.supporter(oid)
+    out = []
+    for e in edges:
+        if e.relation != "LEANING_AGAINST" or e.parent.is_room_element or sup is None:
+            continue
+        key = (e.parent.object, e.parent.part, e.parent.index, e.parent.surface)
+        for x in st.pag.relations:
+            if x.relation != "LEANING_AGAINST" or x.child.object == oid or (
+                    x.parent.object, x.parent.part, x.parent.index, x.parent.surface) != key:
+                continue
+            under = st.pag.supporter(x.child.object)
+            if under is not None and under.parent.object == sup.parent.object \
+                    and x.child.object not in out:
+                out.append(x.child.object)
+    return out
+
+
+def _packed(st: SolveState, oid: str, R: np.ndarray, s, edges: list[Edge],
+            samples: np.ndarray) -> np.ndarray:
+    """Samples of a child leaning on a face that others lean on side by side, reordered so
+    that they pack along it: nearest the placed ones first; the first of them from the end
+    away from those the writer put beside it (cushion1 first at the left end when cushion2 is
+    SIDE_OF its right), else from one end. Unchanged for a child leaning alone."""
+    from .regions import side_vector
+
+    beside = _leaning_beside(st, oid, edges)
+    if not beside or len(samples) < 2:
+        return samples
+    placed = [b for b in beside if b in st.hulls]
+    if placed:
+        cs = np.array([plane_coords(s, st.hulls[b]).mean(axis=0) for b in placed])
+        d = np.min(np.linalg.norm(samples[:, None, :] - cs[None], axis=2), axis=1)
+        return samples[np.argsort(d, kind="stable")]
+    g = np.zeros(3)
+    for x in st.pag.relations:
+        if x.relation == "SIDE_OF" and x.child.object in beside and x.parent.object == oid:
+            g -= side_vector(st, x, R)  # it goes to that side: this one the other way
+    g2 = np.array([g @ s.u, g @ s.v])
+    if np.linalg.norm(g2) < 1e-6:
+        d = samples - samples.mean(axis=0)
+        g2 = np.linalg.svd(d, full_matrices=False)[2][0]
+    return samples[np.argsort(-(samples @ g2), kind="stable")]
 
 
 #: Metres a leaning child is backed off its contact line before it slides onto its parent.
@@ -372,3 +423,35 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     if got >= SLIDE_BACK + 0.05:
         return t
     return start + max(got - EPS, 0.0) * d
+
+
+def lean_fit(st: SolveState, oid: str, edges: list[Edge], asset: Asset, scale: float) -> float:
+    """``scale``, or less when the child is wider than its share of an object's upright face
+    it leans on together with others resting on the same object (three cushions along a bench's
+    back): :data:`LEAN_GAP` of the face's width split equally among them, each measured across
+    its leaning side (its x extent leaning by its back or front, as a flat leaner standing on
+    its edge also does; its y extent by a side). Never below the category's size range, and
+    unchanged where even that share is below it (books against a narrow bookend lean on one
+    another, not side by side)."""
+    for e in edges:
+        if e.relation != "LEANING_AGAINST" or e.parent.is_room_element \
+                or e.parent.object not in st.scene.objects:
+            continue
+        beside = _leaning_beside(st, oid, [e])
+        if not beside:
+            continue
+        try:
+            faces = _faces(st, e)
+        except Fail:
+            continue
+        if not faces:
+            continue
+        along = np.concatenate([f[3] for f in faces])
+        share = LEAN_GAP * float(np.ptp(along)) / (1 + len(beside))
+        axis = 1 if e.child.surface in ("left", "right") else 0
+        width = scale * float(hull_extents(asset)[0][axis])
+        lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+        if width <= share or share < width * lo / max(scale, 1e-9):
+            continue
+        return max(scale * share / width, min(lo, scale))
+    return scale

@@ -29,9 +29,9 @@ from .choice import (
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .geometry import asset_geometry, drop_distance, outline_indices
-from .hanging import rail_fit
+from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
 from .intent import beside, loose_reason, names_part, overhang, whole_object
-from .leaning import involves_object, lean_samples, lean_slide
+from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, obstacles
@@ -137,9 +137,11 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(short)
             intrinsic.append(False)
             continue
-        hang = hung_edge_up(support_edge, asset)
+        hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset)
         # several hung below one rail share its length (towels along a bar)
-        scale = rail_fit(st, oid, support_edge, asset, scale, 1 if hang is not None else 2)
+        scale = rail_fit(st, oid, support_edge, asset, scale,
+                         SURFACE_AXES[hang.child.surface] if hang is not None else 2)
+        scale = lean_fit(st, oid, others, asset, scale)  # side by side along a face
         loose = None
         placed_edge = support_edge
         if heap is not None:
@@ -160,9 +162,11 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             continue
         total_trials += trials
         R, t, sup, body = pose[:4]
+        loose = other_hook(st, support_edge, sup, loose)  # the next free hook
         obj = PlacedObject(oid, category, asset, float(scale), R, t, "placed", None, total_trials,
                            support_choice=sup.choice)
-        obj.rests_on = pose[4] if len(pose) > 4 else ("back" if hang is not None else None)
+        obj.rests_on = pose[4] if len(pose) > 4 else (hang.child.surface if hang is not None
+                                                       else None)
         obj.fixed = RULES[support_edge.relation].fixed
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
@@ -215,6 +219,12 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
+    # no room beside what hangs there: a coat over the other coats (solver/hanging.py)
+    got = hang_over(st, oid, support_edge, asset, [sups[int(si)] for si in order],
+                    lambda sp: _place_on(st, oid, asset, scale, hull, sp, support_edge,
+                                         variant, body, rng, cfg, proposal))
+    if got is not None:
+        return got
     if cfg.strategy == "constrained" and any(
             may_lean(st, asset, scale, sups[int(si)], support_edge) for si in order):
         # too big to lie flat on a ledge: stand it on its edge, leaning back (sheet music)

@@ -4,6 +4,8 @@ the world-frame geometry of every placed object (indexed once, when the object i
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -86,6 +88,32 @@ class SolveState:
             del self._ids[k], self._rows[k]
             self._table = None
         self.world.remove(oid)
+
+    @contextmanager
+    def hidden(self, ids: Iterable[str]) -> Iterator[None]:
+        """Placed objects ``ids`` left out of the collision world and the geometry index
+        inside the block (they stay in the scene), then back as they were: what a child may
+        overlap (a coat hung over another on one coat tree, see :func:`.hanging.hung_over`)."""
+        ids = [i for i in ids if i in self.hulls]
+        if not ids:
+            yield
+            return
+        saved = [dict(d) for d in (self.hulls, self.xy, self.zr, self.pieces)]
+        rows = (list(self._ids), list(self._rows))
+        for d in (self.hulls, self.xy, self.zr, self.pieces):
+            for i in ids:
+                d.pop(i, None)
+        keep = [k for k, i in enumerate(self._ids) if i not in ids]
+        self._ids = [self._ids[k] for k in keep]
+        self._rows = [self._rows[k] for k in keep]
+        self._table = None
+        try:
+            with self.world.hidden(ids):
+                yield
+        finally:
+            self.hulls, self.xy, self.zr, self.pieces = saved
+            self._ids, self._rows = rows
+            self._table = None
 
     def near(self, center: np.ndarray, radius: float, z0: float, z1: float) -> list[str]:
         """Placed objects, in the order of ``hulls``, whose world footprint may come within
