@@ -368,7 +368,7 @@ def _packed(st: SolveState, oid: str, R: np.ndarray, s, edges: list[Edge],
     that they pack along it: nearest the placed ones first; the first of them from the end
     away from those the writer put beside it (cushion1 first at the left end when cushion2 is
     SIDE_OF its right), else from one end. Unchanged for a child leaning alone."""
-    from .regions import side_vector
+    from .rules import side_vector
 
     beside = _leaning_beside(st, oid, edges)
     if not beside or len(samples) < 2:
