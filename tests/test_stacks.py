@@ -27,3 +27,20 @@ def test_cans_stack_on_cans(seed):
         assert np.all(c[:2] >= low[:, :2].min(axis=0)), (upper, c)
         assert np.all(c[:2] <= low[:, :2].max(axis=0)), (upper, c)
         np.testing.assert_allclose(up[:, 2].min(), low[:, 2].max(), atol=3e-3)
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_plates_written_on_the_well_below_stack(seed):
+    """``ON plate_2:foot_ring -> plate_1:well@top`` with a plate wider than the well: the writer
+    means a stack, so the plate rests on the plate below as a whole; every plate placed, every
+    relation held after settling, each upper plate over the one below it."""
+    scene = solved("plates_on_wells", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    for upper, lower in (("plate_2", "plate_1"), ("plate_3", "plate_2")):
+        off = object_centroid(scene.objects[upper], True) - object_centroid(
+            scene.objects[lower], True)
+        assert np.hypot(off[0], off[1]) < 0.03, (upper, off)
+        assert scene.objects[upper].support_choice.owner == lower

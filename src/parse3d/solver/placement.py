@@ -21,6 +21,7 @@ from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
+from .fit import roomy_instance, roomy_scale, top_fit
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
 from .hanging import edge_up, rail_fit, rail_scale, thinness
 from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
@@ -175,6 +176,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
                     asset, support_edge)[0]:
                 category, asset = alt
+        if keep is None and attempt == 0:  # room on its top for what goes ON it (fit.py)
+            category, asset = roomy_instance(st, library, oid, category, asset,
+                                             lambda a, r=reqs: lacks(a, r) is None, tried, rng)
         tried.add(asset.asset_id)
         # generators already make real-world sizes: keep them (times the node's scale range),
         # clamped so the size stays in the category's range (this normalises loaded assets)
@@ -188,6 +192,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         # and a rail with several things hung below it long enough for them (towels on a bar)
         scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
         scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
+        scale = roomy_scale(st, library, oid, asset, scale)  # room on its top (fit.py)
         if keep is not None and attempt == 0:
             scale = keep.scale
         elif scale * _extent(asset, axis) > HEADROOM_FIT * headroom:
@@ -207,6 +212,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         if keep is None or attempt > 0:
             # longer than a container's floor: shrunk to lie in it, within its size range
             scale = floor_fit(st, support_edge, asset, scale, axis)
+            scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
         reach = _span_need(st, support_edge)
         if reach > 0 and keep is None and scale * _across(asset, axis) < reach:
             # too short to rest across the parts it must span (a keyboard on a stand's two

@@ -357,7 +357,24 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         span = _span(out)
         if span is not None:  # tried after each part alone
             out.append(span)
+    if rel == "ON" and ref.part is not None and label == "top" and _like(st, edge):
+        # a stack of like things named by a part of the lower one (a plate ON plate:well, a
+        # jar ON jar:lid): the writer means the stack, so when the child does not fit that
+        # part it rests on the lower one as a whole (the drop brings it into the well, or
+        # onto the rim when it is too wide); tried after the part as written
+        whole = replace(edge, parent=replace(ref, part=None, index=None, surface=None))
+        named = {(o.choice.part, o.surface.label) for o in out}
+        out += [o for o in _support_candidates(st, whole)
+                if (o.choice.part, o.surface.label) not in named]
     return out
+
+
+def _like(st: SolveState, edge: Edge) -> bool:
+    """Whether the child and the parent of ``edge`` are of one kind (their PAG nodes share a
+    category): a stack."""
+    kids, parents = st.pag.objects.get(edge.child.object), st.pag.objects.get(edge.parent.object)
+    return kids is not None and parents is not None \
+        and bool(set(kids.candidates) & set(parents.candidates))
 
 
 #: Metres within which parts' upward surfaces count as one level (a rack's straps or bars).
