@@ -44,3 +44,23 @@ def test_plates_written_on_the_well_below_stack(seed):
             scene.objects[lower], True)
         assert np.hypot(off[0], off[1]) < 0.03, (upper, off)
         assert scene.objects[upper].support_choice.owner == lower
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_baskets_nest_in_baskets(seed):
+    """Three shopping baskets, each IN the one below (the second named IN the first's woven
+    ``basket`` shell, which holds no floor of its own: it rests on the ``base`` the shell
+    encloses): every basket placed and held after settling, each no wider than the one it
+    nests in and over it."""
+    scene = solved("baskets_nested", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    for upper, lower in (("basket2", "basket1"), ("basket3", "basket2")):
+        up = world_points(scene.objects[upper], hull_only=True, settled=True)
+        low = world_points(scene.objects[lower], hull_only=True, settled=True)
+        assert np.ptp(up[:, :2], axis=0).max() <= 1.05 * np.ptp(low[:, :2], axis=0).max()
+        c = object_centroid(scene.objects[upper], True)
+        assert np.all(c[:2] >= low[:, :2].min(axis=0)), (upper, c)
+        assert np.all(c[:2] <= low[:, :2].max(axis=0)), (upper, c)

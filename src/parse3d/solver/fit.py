@@ -25,7 +25,7 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import filled
 
-__all__ = ["need", "roomy_instance", "roomy_scale", "top_fit", "top_sides"]
+__all__ = ["instance_for", "need", "roomy_instance", "roomy_scale", "top_fit", "top_sides"]
 
 #: Pool slots per candidate category looked at for a child's smallest footprint and for a
 #: parent with room on its top.
@@ -38,7 +38,8 @@ _AXES = {"top": 2, "bottom": 2, "front": 1, "back": 1, "right": 0, "left": 0}
 
 
 def _on_top_edges(st: SolveState, oid: str) -> list[Edge]:
-    """ON edges (support edges) whose parent is ``oid`` on a top surface, child not placed."""
+    """ON edges (support edges) whose parent is ``oid`` on a top surface, child not placed and
+    not of its kind."""
     out = []
     for e in st.pag.relations:
         if e.relation != "ON" or e.parent.object != oid or e.parent.is_room_element:
@@ -48,6 +49,8 @@ def _on_top_edges(st: SolveState, oid: str) -> list[Edge]:
         child = st.scene.objects.get(e.child.object)
         if child is not None and child.placed:
             continue
+        if set(st.pag.objects[e.child.object].candidates) & set(st.pag.objects[oid].candidates):
+            continue  # a stack of its kind: the upper one may overhang (a loaf on a loaf)
         out.append(e)
     return out
 
@@ -242,3 +245,14 @@ def top_fit(st: SolveState, edge: Edge, asset: Asset, scale: float, axis: int) -
         return max(target, min(scale, node.scale[0] * _unit_scale(asset)))
     lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
     return target if target >= lo else scale
+
+
+def instance_for(st: SolveState, library, oid: str, edge: Edge, category: str, asset: Asset,
+                 usable, tried: set[str], rng: np.random.Generator) -> tuple[str, Asset]:
+    """``(category, asset)`` for the first attempt at ``oid`` (its support edge ``edge``): one
+    that nests in the object of its kind it goes IN (:func:`.nesting.nest_instance`), then one
+    with room on its top for what goes ON it (:func:`roomy_instance`)."""
+    from .nesting import nest_instance
+
+    category, asset = nest_instance(st, library, edge, category, asset, usable, tried, rng)
+    return roomy_instance(st, library, oid, category, asset, usable, tried, rng)

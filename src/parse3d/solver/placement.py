@@ -21,7 +21,7 @@ from ..relations import SURFACES
 from ..scene.model import PlacedObject, SupportChoice
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
-from .fit import roomy_instance, roomy_scale, top_fit
+from .fit import instance_for, roomy_scale, top_fit
 from .geometry import asset_geometry, drop_distance, hull_extents, outline_indices, part_points
 from .hanging import edge_up, rail_fit, rail_scale, thinness
 from .intent import beside, loose_reason, names_part, overhang, soft, whole_object
@@ -176,9 +176,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
                     asset, support_edge)[0]:
                 category, asset = alt
-        if keep is None and attempt == 0:  # room on its top for what goes ON it (fit.py)
-            category, asset = roomy_instance(st, library, oid, category, asset,
-                                             lambda a, r=reqs: lacks(a, r) is None, tried, rng)
+        if keep is None and attempt == 0:  # nests, has room on its top (fit.py)
+            category, asset = instance_for(st, library, oid, support_edge, category, asset,
+                                           lambda a, r=reqs: lacks(a, r) is None, tried, rng)
         tried.add(asset.asset_id)
         # generators already make real-world sizes: keep them (times the node's scale range),
         # clamped so the size stays in the category's range (this normalises loaded assets)

@@ -314,6 +314,8 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 s = ins.surface.transformed(T)
                 out.append(Support(s, SupportChoice(parent.id, carrier, "top"), s.polygon,
                                    ins.clearance * parent.scale))
+        if not out and not on_board(parent, ref):
+            out = _inside_of(parent, parts, T)
         if out:
             return _span_bars(out)
         if not on_board(parent, ref):
@@ -366,6 +368,26 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         named = {(o.choice.part, o.surface.label) for o in out}
         out += [o for o in _support_candidates(st, whole)
                 if (o.choice.part, o.surface.label) not in named]
+    return out
+
+
+def _inside_of(parent, parts, T) -> list[Support]:
+    """The parent's internal surfaces of other parts that lie within the bounding box of
+    ``parts`` (asset frame, 1 cm of slack): IN a shopping basket's woven ``basket`` shell, the
+    child rests on its ``base``, the floor the shell encloses."""
+    pts = np.vstack([pc.vertices for p in parts for pc in p.piece_arrays]) \
+        if any(p.piece_arrays for p in parts) else np.vstack([p.vertices for p in parts])
+    lo, hi = pts.min(axis=0) - 0.01, pts.max(axis=0) + 0.01
+    out, seen = [], set()
+    for ins in parent.asset.internal:
+        o = np.asarray(ins.surface.origin, float)
+        key = (ins.part, *np.round(o, 6).tolist())
+        if key in seen or not np.all((o >= lo) & (o <= hi)):
+            continue
+        seen.add(key)
+        s = ins.surface.transformed(T)
+        out.append(Support(s, SupportChoice(parent.id, _carrier(parent.asset, ins), "top"),
+                           s.polygon, ins.clearance * parent.scale))
     return out
 
 
