@@ -28,6 +28,8 @@ SEEDS = (0, 1, 2)
 KNOWN: dict[str, str] = {
     "mixed_fruit_pile": "seed 1: a plum tomato piled on an apple settles 25 degrees off",
     "towels_in_basket": "seeds 0 and 2: towels standing in a rimmed basket tip when settled",
+    "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
+                       "(relaxed, or failed)",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

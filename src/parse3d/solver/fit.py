@@ -130,6 +130,27 @@ def _room(asset: Asset, scale: float, e: Edge, want: tuple[float, float]) -> flo
     return max(want[0] / (FIT_SHARE * a * scale), want[1] / (FIT_SHARE * b * scale))
 
 
+#: Share of a top's area the smallest footprints of all the children written ON it may take
+#: together (a dining table and its chairs on a rug, two suitcases on a luggage cart).
+AREA_SHARE = 0.7
+
+
+def _gap(asset: Asset, scale: float, needs) -> float:
+    """How far ``asset`` at ``scale`` is from having room for ``needs`` (``(edge, (short,
+    long))`` per child): the largest of each child's side ratios (:func:`_room`) and, per top,
+    the square root of the children's summed footprints over :data:`AREA_SHARE` of its area
+    (<= 1: they fit)."""
+    g = max(_room(asset, scale, e, want) for e, want in needs)
+    tops: dict[tuple, float] = {}
+    for e, want in needs:
+        key = (e.parent.part, e.parent.index)
+        tops[key] = tops.get(key, 0.0) + want[0] * want[1]
+        a, b = top_sides(asset, e)
+        if a > 0:
+            g = max(g, float(np.sqrt(tops[key] / (AREA_SHARE * a * b))) / scale)
+    return g
+
+
 #: Share of an object's footprint its named top must cover to be drawn with room for what goes
 #: ON it (a fridge's body, not a stove's burner).
 MAIN_TOP = 0.5
@@ -175,8 +196,7 @@ def roomy_instance(st: SolveState, library, oid: str, category: str, asset: Asse
         return category, asset
 
     def gap(a: Asset) -> float:
-        s = _max_scale(st, oid, a)
-        return max(_room(a, s, e, want) for e, want in needs)
+        return _gap(a, _max_scale(st, oid, a), needs)
 
     here = gap(asset)
     if here <= 1.0:
@@ -200,11 +220,12 @@ def roomy_instance(st: SolveState, library, oid: str, category: str, asset: Asse
 
 def roomy_scale(st: SolveState, library, oid: str, asset: Asset, scale: float) -> float:
     """``scale``, or larger so that the top of ``asset`` takes the smallest footprint of every
-    child written ON it, when what the node and the category's size range allow does."""
+    child written ON it (and all of them together, :func:`_gap`), when what the node and the
+    category's size range allow does."""
     needs = _needs(st, library, oid, asset)
     if not needs:
         return scale
-    g = max(_room(asset, scale, e, want) for e, want in needs)
+    g = _gap(asset, scale, needs)
     if g <= 1.0 or not np.isfinite(g) or scale * g > _max_scale(st, oid, asset):
         return scale  # fits, or no scale allowed makes room (the child may overhang)
     return scale * g

@@ -441,21 +441,32 @@ def _span_bars(sups: list[Support]) -> list[Support]:
     return spans + out
 
 
+def _exteriors(poly) -> list:
+    """The exterior rings of a polygon or of each polygon of a collection."""
+    return [g.exterior for g in getattr(poly, "geoms", [poly]) if isinstance(g, Polygon)]
+
+
 def _span(sups: list[Support]) -> Support | None:
     """One support over the parts at the level of the first of ``sups`` (a luggage rack's
     three straps, a cradle's bars): their convex hull, with the gaps between them as holes;
     None when fewer than two parts share that level."""
     s0 = sups[0].surface
     level = [x for x in sups if abs(float((x.surface.origin - s0.origin) @ s0.normal)) <= LEVEL_TOL
-             and np.allclose(x.surface.normal, s0.normal, atol=1e-6)
-             and np.allclose(x.surface.u, s0.u, atol=1e-6)]
+             and np.allclose(x.surface.normal, s0.normal, atol=1e-6)]
     if len(level) < 2:
         return None
     pieces = []
     for x in level:
-        d = x.surface.origin - s0.origin
-        pieces.append(shapely.affinity.translate(filled(x.region), float(d @ s0.u),
-                                                 float(d @ s0.v)))
+        # into the first one's plane frame (parts' frames may be turned: a round rug's border
+        # and its field)
+        xs = x.surface
+        poly = filled(x.region)
+        if poly.is_empty:
+            continue
+        rings = [np.asarray(r.coords) for r in _exteriors(poly)]
+        for xy in rings:
+            w = xs.origin + xy[:, :1] * xs.u + xy[:, 1:2] * xs.v - s0.origin
+            pieces.append(Polygon(np.c_[w @ s0.u, w @ s0.v]).buffer(0))
     union = shapely.union_all(pieces)
     hull = union.convex_hull
     gaps = hull.difference(union)
