@@ -133,7 +133,7 @@ SOLVER_LEVELS: dict[str, int] = {
     "rules": 5,
     "regions": 6, "rotation": 6,
     "hanging": 7, "nesting": 7, "ledge": 7,
-    "standing": 8, "leaning": 8,
+    "standing": 8, "leaning": 8, "fit": 8,
     "choice": 9, "validation": 9,
     "sampling": 10,
     "stacking": 11,

@@ -30,6 +30,8 @@ KNOWN: dict[str, str] = {
     "towels_in_basket": "seeds 0 and 2: towels standing in a rimmed basket tip when settled",
     "contents_and_slumps": "bananas and lemons that tumbled in their bowl rest there turned (not "
                            "tipped), but the IN check still measures their angle",
+    "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
+                       "(relaxed, or failed)",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

@@ -357,3 +357,25 @@ def test_secured_to_a_height_the_object_cannot_have_says_why():
     low = scene.objects["low"]
     assert not low.placed and "tall" in low.reason and "centre's, not the bottom's" in low.reason
     assert scene.objects["ok"].placed, scene.objects["ok"].reason
+
+
+def test_plural_words_resolve_without_validation():
+    """``solve(validate=False)`` resolves words written as plurals as validation would: a
+    ``couches`` node draws a sofa, ``pillows`` a pillow, and ``shelves`` names a bookcase's
+    shelf parts; nothing fails with an internal error."""
+    doc = {"format": "pag/1", "name": "plurals",
+           "room": {"type": "living", "footprint": [[0, 0], [4, 0], [4, 4], [0, 4]],
+                    "height": 2.7},
+           "objects": [{"id": "sofa", "category": "couches"},
+                       {"id": "pillow", "category": "pillows"},
+                       {"id": "bookcase", "category": "bookcase"},
+                       {"id": "book", "category": "book"}],
+           "relations": [{"relation": "ON", "child": "sofa", "parent": "floor"},
+                         {"relation": "ON", "child": "pillow", "parent": "sofa"},
+                         {"relation": "ON", "child": "bookcase", "parent": "floor"},
+                         {"relation": "IN", "child": "book", "parent": "bookcase:shelves"}]}
+    for validate in (False, True):
+        scene = solve(PAG.from_dict(doc), seed=0, validate=validate)
+        assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+        assert scene.objects["sofa"].category == "sofa"
+        assert scene.objects["pillow"].category == "pillow"

@@ -47,21 +47,38 @@ def canonical_pag(pag: PAG, vocabulary) -> PAG:
 
 def _plain_words(pag: PAG) -> bool:
     """Every category word is written as a category is named and is no hypernym or synonym,
-    and no part word is one the vocabulary file lists (what a validated PAG then means)."""
-    from ..words import lexicon, normalize
+    and no part word is one the vocabulary file lists (what a validated PAG then means). A
+    word that may be a plural (``couches``, ``legs``) is plain only when it is itself a
+    category or a label of its object's categories (``hanging_clothes``): only the library's
+    vocabulary tells them apart, so it is read for such words alone."""
+    from functools import cache
+
+    from ..words import lexicon, normalize, singulars
+
+    @cache
+    def vocab():
+        from ..assets.registry import vocabulary
+
+        return vocabulary()
 
     lex = lexicon()
     for node in pag.objects.values():
         for c in node.candidates:
             if c != normalize(c) or c in lex.hypernyms or c in lex.synonyms:
                 return False
+            if singulars(c) and not vocab().has_category(c):
+                return False
     for e in pag.relations:
         for ref in (e.child, e.parent):
-            if ref.part is None:
+            if ref.part is None or ref.object not in pag.objects:
                 continue
             if ref.part != normalize(ref.part):
                 return False
-            for c in pag.objects[ref.object].candidates if ref.object in pag.objects else ():
+            cands = pag.objects[ref.object].candidates
+            if singulars(ref.part) and not all(
+                    vocab().has_category(c) and ref.part in vocab().parts(c) for c in cands):
+                return False
+            for c in cands:
                 if ref.part in lex.parts.get(c, ()) or any(
                         ref.part in lex.parts.get(h, ()) for h, ms in lex.hypernyms.items() if c in ms):
                     return False

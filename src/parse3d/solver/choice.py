@@ -17,6 +17,7 @@ from ..measure.checks import BOARD_LABELS
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
+from .fit import roomy_scale, top_fit
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
 from .hanging import edge_up, rail_scale, thinness
 from .intent import names_part, overhang, soft
@@ -547,6 +548,7 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
     # and a rail with several things hung below it long enough for them (towels on a bar)
     scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
     scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
+    scale = roomy_scale(st, library, oid, asset, scale)  # room on its top (fit.py)
     if keep is not None and attempt == 0:
         scale = keep.scale
     elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:
@@ -566,6 +568,7 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
     if keep is None or attempt > 0:
         # longer than a container's floor: shrunk to lie in it, within its size range
         scale = floor_fit(st, support_edge, asset, scale, axis)
+        scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
     reach = span_need(st, support_edge)
     if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
         # too short to rest across the parts it must span (a keyboard on a stand's two

@@ -101,8 +101,12 @@ SOFT_REQUIREMENTS = ("stack_base",)
 
 
 def soft(reqs: list) -> list:
-    """``reqs`` without :data:`SOFT_REQUIREMENTS`."""
-    return [r for r in reqs if r[3] not in SOFT_REQUIREMENTS]
+    """``reqs`` without :data:`SOFT_REQUIREMENTS`, and with an inside asked of a named part
+    (``IN basket1:basket``, a shopping basket's woven shell) asked of the whole object: what
+    goes IN the part rests on the object's inside within that part (its floor, the ``base``;
+    ``support.py``)."""
+    return [(None, None, r[2], r[3]) if r[3] == "internal" and r[0] is not None else r
+            for r in reqs if r[3] not in SOFT_REQUIREMENTS]
 
 
 def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:

@@ -17,8 +17,8 @@ from .geometry import asset_geometry
 from .state import SolveState
 from .support import Support
 
-__all__ = ["concentric_first", "floor_fit", "nest_rise", "nest_samples", "pieces_drop",
-           "same_kind"]
+__all__ = ["concentric_first", "floor_fit", "nest_instance", "nest_rise", "nest_samples",
+           "pieces_drop", "same_kind"]
 
 def same_kind(st: SolveState, oid: str, sup: Support) -> bool:
     """Whether the child rests on or in a placed object of its own kind (their PAG nodes share
@@ -155,13 +155,32 @@ def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> fl
     axis of its support normal) is longer or wider than every internal floor of the object it
     goes IN but fits one shrunk within its category's size range (a rolled towel in a small
     wicker basket, a plant in a plant basket a little narrower than its pot); unchanged for
-    anything else (a toothbrush far longer than a tumbler's floor stands in it instead)."""
-    from .geometry import hull_extents
-    from .support import support_candidates
-
+    anything else (a toothbrush far longer than a tumbler's floor stands in it instead). IN an
+    object of its own kind that it cannot be shrunk to lie in (a basket in a basket) it rests on
+    the parent's wall, so it is only shrunk (within its range) to be no wider than the
+    parent."""
     if edge.relation != "IN" or edge.parent.is_room_element \
             or edge.parent.object not in st.scene.objects:
         return scale
+    fit = _floor_fit(st, edge, asset, scale, axis)
+    parent = st.scene.objects[edge.parent.object]
+    if fit == scale and parent.placed and set(st.pag.objects[edge.child.object].candidates) \
+            & set(st.pag.objects[edge.parent.object].candidates):
+        # nested in one of its kind and too big for its floor (a basket in a basket): it rests
+        # on the parent's wall, so it need only be no wider than the parent (within its range)
+        theirs = float(np.ptp(world_points(parent, hull_only=True, settled=False)[:, :2],
+                              axis=0).max())
+        mine = scale * float(np.ptp(asset_geometry(asset).hull[:, :2], axis=0).max())
+        lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+        return scale * theirs / mine if mine > theirs and scale * theirs / mine >= lo else scale
+    return fit
+
+
+def _floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> float:
+    """:func:`floor_fit` for a child fitted to the parent's floor."""
+    from .geometry import hull_extents
+    from .support import support_candidates
+
     try:
         sups = support_candidates(st, edge)
     except Fail:
@@ -178,3 +197,51 @@ def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> fl
     fit = FLOOR_FIT * best
     lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
     return scale * fit if scale * fit >= lo else scale
+
+
+#: Pool slots per candidate category looked at for a child that nests in one of its kind.
+NEST_SLOTS = 8
+
+
+def nest_instance(st: SolveState, library, edge, category: str, asset: Asset, usable,
+                  tried: set[str], rng: np.random.Generator) -> tuple[str, Asset]:
+    """``(category, asset)`` for a child IN a placed object of its own kind (a basket in a
+    basket, a bowl in a bowl): the drawn instance when, at its category's own size, it is no
+    wider than the parent; else, over :data:`NEST_SLOTS` random pool slots per candidate
+    category (untried, ``usable(asset)`` true), the widest that is (it nests deepest), or the
+    narrowest looked at when none is. Unchanged for anything else."""
+    if edge.relation != "IN" or edge.parent.is_room_element \
+            or getattr(library, "load", None) is None:
+        return category, asset
+    oid, pid = edge.child.object, edge.parent.object
+    parent = st.scene.objects.get(pid)
+    if parent is None or not parent.placed or not (
+            set(st.pag.objects[oid].candidates) & set(st.pag.objects[pid].candidates)):
+        return category, asset
+    theirs = float(np.ptp(world_points(parent, hull_only=True, settled=False)[:, :2],
+                          axis=0).max())
+
+    def width(a: Asset) -> float:
+        lo, hi = a.size_range
+        g = asset_geometry(a)
+        unit = float(np.clip(1.0, lo / max(g.size, 1e-6), hi / max(g.size, 1e-6)))
+        return unit * float(np.ptp(g.hull[:, :2], axis=0).max())
+
+    if width(asset) <= theirs:
+        return category, asset
+    best, narrow = None, (width(asset), category, asset)
+    k = int(getattr(library, "per_category", 20))
+    cands = st.pag.objects[oid].candidates
+    for ci in rng.permutation(len(cands)):
+        cat = cands[int(ci)]
+        for slot in rng.permutation(k)[:NEST_SLOTS]:
+            a = library.load(cat, int(slot))
+            if a.asset_id in tried or not usable(a):
+                continue
+            w = width(a)
+            if w <= theirs and (best is None or w > best[0]):
+                best = (w, cat, a)
+            if w < narrow[0]:
+                narrow = (w, cat, a)
+    got = best or narrow
+    return got[1], got[2]

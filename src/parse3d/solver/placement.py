@@ -28,6 +28,7 @@ from .choice import (
 )
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
+from .fit import instance_for
 from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
 from .intent import beside, loose_reason, names_part, overhang, whole_object
@@ -130,6 +131,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         if got is None:
             break  # every suitable instance was tried
         category, asset, reqs = got
+        if keep is None and attempt == 0:  # nests, has room on its top (fit.py)
+            category, asset = instance_for(st, library, oid, support_edge, category, asset,
+                                           lambda a, r=reqs: lacks(a, r) is None, tried, rng)
+            tried.add(asset.asset_id)
         category, asset, scale, short = instance_scale(
             st, oid, library, node, category, asset, reqs, tried, rng, attempt=attempt,
             keep=keep, support_edge=support_edge, axis=axis, headroom=headroom)

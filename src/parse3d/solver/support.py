@@ -314,6 +314,8 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 s = ins.surface.transformed(T)
                 out.append(Support(s, SupportChoice(parent.id, carrier, "top"), s.polygon,
                                    ins.clearance * parent.scale))
+        if not out and not on_board(parent, ref):
+            out = _inside_of(parent, parts, T)
         if out:
             return _span_bars(out)
         if not on_board(parent, ref):
@@ -357,7 +359,44 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         span = _span(out)
         if span is not None:  # tried after each part alone
             out.append(span)
+    if rel == "ON" and ref.part is not None and label == "top" and _like(st, edge):
+        # a stack of like things named by a part of the lower one (a plate ON plate:well, a
+        # jar ON jar:lid): the writer means the stack, so when the child does not fit that
+        # part it rests on the lower one as a whole (the drop brings it into the well, or
+        # onto the rim when it is too wide); tried after the part as written
+        whole = replace(edge, parent=replace(ref, part=None, index=None, surface=None))
+        named = {(o.choice.part, o.surface.label) for o in out}
+        out += [o for o in _support_candidates(st, whole)
+                if (o.choice.part, o.surface.label) not in named]
     return out
+
+
+def _inside_of(parent, parts, T) -> list[Support]:
+    """The parent's internal surfaces of other parts that lie within the bounding box of
+    ``parts`` (asset frame, 1 cm of slack): IN a shopping basket's woven ``basket`` shell, the
+    child rests on its ``base``, the floor the shell encloses."""
+    pts = np.vstack([pc.vertices for p in parts for pc in p.piece_arrays]) \
+        if any(p.piece_arrays for p in parts) else np.vstack([p.vertices for p in parts])
+    lo, hi = pts.min(axis=0) - 0.01, pts.max(axis=0) + 0.01
+    out, seen = [], set()
+    for ins in parent.asset.internal:
+        o = np.asarray(ins.surface.origin, float)
+        key = (ins.part, *np.round(o, 6).tolist())
+        if key in seen or not np.all((o >= lo) & (o <= hi)):
+            continue
+        seen.add(key)
+        s = ins.surface.transformed(T)
+        out.append(Support(s, SupportChoice(parent.id, _carrier(parent.asset, ins), "top"),
+                           s.polygon, ins.clearance * parent.scale))
+    return out
+
+
+def _like(st: SolveState, edge: Edge) -> bool:
+    """Whether the child and the parent of ``edge`` are of one kind (their PAG nodes share a
+    category): a stack."""
+    kids, parents = st.pag.objects.get(edge.child.object), st.pag.objects.get(edge.parent.object)
+    return kids is not None and parents is not None \
+        and bool(set(kids.candidates) & set(parents.candidates))
 
 
 #: Metres within which parts' upward surfaces count as one level (a rack's straps or bars).
@@ -402,21 +441,32 @@ def _span_bars(sups: list[Support]) -> list[Support]:
     return spans + out
 
 
+def _exteriors(poly) -> list:
+    """The exterior rings of a polygon or of each polygon of a collection."""
+    return [g.exterior for g in getattr(poly, "geoms", [poly]) if isinstance(g, Polygon)]
+
+
 def _span(sups: list[Support]) -> Support | None:
     """One support over the parts at the level of the first of ``sups`` (a luggage rack's
     three straps, a cradle's bars): their convex hull, with the gaps between them as holes;
     None when fewer than two parts share that level."""
     s0 = sups[0].surface
     level = [x for x in sups if abs(float((x.surface.origin - s0.origin) @ s0.normal)) <= LEVEL_TOL
-             and np.allclose(x.surface.normal, s0.normal, atol=1e-6)
-             and np.allclose(x.surface.u, s0.u, atol=1e-6)]
+             and np.allclose(x.surface.normal, s0.normal, atol=1e-6)]
     if len(level) < 2:
         return None
     pieces = []
     for x in level:
-        d = x.surface.origin - s0.origin
-        pieces.append(shapely.affinity.translate(filled(x.region), float(d @ s0.u),
-                                                 float(d @ s0.v)))
+        # into the first one's plane frame (parts' frames may be turned: a round rug's border
+        # and its field)
+        xs = x.surface
+        poly = filled(x.region)
+        if poly.is_empty:
+            continue
+        rings = [np.asarray(r.coords) for r in _exteriors(poly)]
+        for xy in rings:
+            w = xs.origin + xy[:, :1] * xs.u + xy[:, 1:2] * xs.v - s0.origin
+            pieces.append(Polygon(np.c_[w @ s0.u, w @ s0.v]).buffer(0))
     union = shapely.union_all(pieces)
     hull = union.convex_hull
     gaps = hull.difference(union)

@@ -105,15 +105,17 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("seam", "seam", S.box((0.006, 0.0006, h - 0.02),
                                                 center=(0, -(r - 0.0002) + 0.0003, h / 2)),
                            M.paper(rng)))
-    # the lid panel on top, with the ring-pull's rivet and tab on it
+    # the lid panel on top, with the ring-pull's rivet and tab on it, in low relief (a twentieth
+    # of a millimetre): a can stacked on another rests level on them, as real cans rest on
+    # the rim that stands above their ring-pull
     tin = M.metal(rng)
-    parts.append(make_part("lid", "lid", S.cylinder(r - 0.004, 0.0006, center=(0, 0, h + 0.0003),
+    parts.append(make_part("lid", "lid", S.cylinder(r - 0.004, 0.0002, center=(0, 0, h - 0.00008),
                                                     sections=24), tin))
-    parts.append(make_part("rivet", "rivet", S.cylinder(0.0025, 0.0008, center=(0, 0, h + 0.001),
+    parts.append(make_part("rivet", "rivet", S.cylinder(0.0025, 0.0003, center=(0, 0, h - 0.0001),
                                                         sections=10), tin))
     tab_l = min(0.022, r * 0.6)
-    parts.append(make_part("pull_tab", "pull_tab", S.box((0.011, tab_l, 0.0006),
-                                                         center=(0, tab_l / 2 - 0.004, h + 0.0009)),
+    parts.append(make_part("pull_tab", "pull_tab", S.box((0.011, tab_l, 0.0002),
+                                                         center=(0, tab_l / 2 - 0.004, h - 0.00006)),
                            tin))
     return parts
 
