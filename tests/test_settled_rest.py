@@ -107,10 +107,14 @@ def test_an_object_with_an_upright_lying_on_its_side_tipped(settled):
     assert "tipped" in _causes(scene, "fruit_bowl")
 
 
-def test_a_cushion_fallen_flat_tipped(settled):
-    scene = copy.deepcopy(settled)
+def test_a_cushion_fallen_flat_tipped():
+    # a seed whose cushion slumped against the back and still leans there (at some seeds the
+    # drawn cushion settles without slumping)
+    slumped = [s for s in (0, 1, 2)
+               if settled_rest(_solved(s), _solved(s).objects["cushion"]) == "still leaning"]
+    assert slumped
+    scene = copy.deepcopy(_solved(slumped[0]))
     cushion = scene.objects["cushion"]
-    assert settled_rest(scene, cushion) == "still leaning"
     arm = scene.objects["armchair"]
     # flat on the floor in front of the armchair: no longer leaning, and lower
     toward = np.asarray(arm.rotation)[:, 1]
