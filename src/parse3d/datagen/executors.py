@@ -147,16 +147,21 @@ def start_context():
     return ctx
 
 
-def _watch_parent(parent: int) -> None:
-    """Exit this worker when the process that started it is gone (a driver killed with
-    SIGKILL takes its fork server with it): a pool worker blocked on its task queue would
-    never notice, since it holds that queue's both ends."""
-    while os.getppid() == parent:
+def _watch_driver(driver: int) -> None:
+    """Exit this worker once the driver process is gone (killed with SIGKILL, say): a pool
+    worker blocked on its task queue would never notice, since it holds both ends of that
+    queue, and the fork server it was forked from outlives the driver too."""
+    while True:
         time.sleep(1.0)
-    os._exit(1)
+        try:
+            os.kill(driver, 0)
+        except ProcessLookupError:
+            os._exit(1)
+        except PermissionError:  # a process of another user took the id: gone as well
+            os._exit(1)
 
 
-def _init_worker(config: BuildConfig, source) -> None:
+def _init_worker(config: BuildConfig, source, driver: int) -> None:
     """A pool process's start: its scene source and GL context, made once for the scenes it
     builds (``max_tasks`` of them before the pool replaces it)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver handles Ctrl-C and stops us
@@ -169,7 +174,7 @@ def _init_worker(config: BuildConfig, source) -> None:
 
     _process_state(config)  # the scene source and the GL context
     freeze_startup()  # full collections then skip all of that
-    threading.Thread(target=_watch_parent, args=(os.getppid(),), daemon=True).start()
+    threading.Thread(target=_watch_driver, args=(driver,), daemon=True).start()
 
 
 def _run_index(index: int) -> SceneOutcome:
@@ -240,7 +245,7 @@ class LocalExecutor:
         def new_slot() -> _Slot:
             return _Slot(ProcessPoolExecutor(
                 max_workers=1, mp_context=ctx, initializer=_init_worker,
-                initargs=(config, source), max_tasks_per_child=self.max_tasks))
+                initargs=(config, source, os.getpid()), max_tasks_per_child=self.max_tasks))
 
         def hand_out(s: _Slot) -> None:
             """Give worker ``s`` the next scene, or let it go when none is left. Called before
