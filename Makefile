@@ -11,9 +11,15 @@ TEST_SYSTEM_PACKAGES := $(SYSTEM_PACKAGES) chromium
 
 .PHONY: demo test lint system system-test _apt venv install-demo install-all blender bench gallery clean
 
-demo: install-demo
-	$(BIN)/parse3d demo --out out/demo
-	@echo "venv: $$(du -sh $(VENV) | cut -f1) in $(VENV) (the demo's packages only; make test adds the rest)"
+# Prints how long the set-up and the demo took, and the venv's size.
+demo:
+	@start=$$(date +%s); \
+	$(MAKE) --no-print-directory install-demo || exit $$?; \
+	mid=$$(date +%s); \
+	$(BIN)/parse3d demo --out out/demo || exit $$?; \
+	end=$$(date +%s); \
+	echo "make demo: $$((end - start)) s (install $$((mid - start)) s, demo $$((end - mid)) s);" \
+	  "venv: $$(du -sh $(VENV) | cut -f1) in $(VENV) (the demo's packages only; make test adds the rest)"
 
 test: install-all blender
 	@# the Khronos glTF validator (npm) for the GLB export test; skipped where npm is missing
@@ -58,7 +64,7 @@ venv: $(BIN)/python
 # extras (exports to USD, datasets, Ray, the VLM and layout experiments, the designer) come
 # with `make test`, or one at a time: pip install -e '.[export]' (README, "Install").
 install-demo: system venv
-	$(BIN)/pip install -q -c constraints.txt -e ".[demo]"
+	$(BIN)/pip install -q --prefer-binary -c constraints.txt -e ".[demo]"
 
 # Everything (every extra and the test tools); torch is the CPU build pinned in constraints.txt.
 install-all: system-test venv

@@ -331,3 +331,60 @@ def test_workers_replaced_after_every_scene_give_the_same_scenes(reference, pags
     rows = read_manifest(tmp_path / "ds" / "manifest.parquet")
     ref = read_manifest(reference / "manifest.parquet")[:4]
     assert [_strip(r) for r in rows] == [_strip(r) for r in ref]
+
+
+def _kill_workers(count: int, stop) -> list[int]:
+    """Kill the first ``count`` scene workers (the children of this process's fork server)
+    one by one as soon as they are seen, from outside (as the OOM killer would): each dies
+    while starting or building its first scene."""
+    from multiprocessing import forkserver
+
+    import psutil
+
+    killed: list[int] = []
+    while len(killed) < count and not stop.is_set():
+        server = getattr(forkserver._forkserver, "_forkserver_pid", None)
+        try:
+            workers = psutil.Process(server).children() if server else []
+        except psutil.NoSuchProcess:
+            workers = []
+        for p in workers:
+            try:
+                if (p.pid not in killed and p.status() != psutil.STATUS_ZOMBIE
+                        and time.time() - p.create_time() > 0.02):
+                    p.kill()
+                    killed.append(p.pid)
+                    break
+            except psutil.NoSuchProcess:
+                continue
+        time.sleep(0.05)
+    return killed
+
+
+@pytest.mark.parametrize("deaths", [1, 2])
+def test_a_killed_worker_is_replaced_and_its_scene_retried_once(reference, pags, tmp_path,
+                                                                  deaths):
+    """The first worker killed: a fresh one builds its scene again, the same scene
+    as the reference. Killed twice on the same scene: the scene is recorded as failed and
+    the build goes on to the next."""
+    import threading
+
+    cfg = BuildConfig(scenes=2, seed=7, source=resolve_pag_paths([pags]))
+    stop, killed = threading.Event(), []
+    killer = threading.Thread(target=lambda: killed.extend(_kill_workers(deaths, stop)))
+    killer.start()
+    try:
+        report = build_dataset(cfg, tmp_path / "ds", workers=1)
+    finally:
+        stop.set()
+        killer.join()
+    assert len(killed) == deaths
+    rows = {r["index"]: r for r in read_manifest(tmp_path / "ds" / "manifest.parquet")}
+    assert sorted(rows) == [0, 1] and rows[1]["status"] == "ok"
+    if deaths == 1:
+        assert (report.ok, report.failed) == (2, 0)
+        assert_same_scenes(reference, tmp_path / "ds", range(2))
+    else:
+        assert (report.ok, report.failed) == (1, 1)
+        assert rows[0]["status"] == "failed" and "died twice" in rows[0]["reason"]
+        assert_same_scenes(reference, tmp_path / "ds", [1])

@@ -18,19 +18,21 @@ import pytest
 SRC = Path(__file__).resolve().parent.parent / "src" / "parse3d"
 
 #: DESIGN §2: package -> the packages it may import directly. ``_files`` and ``_deps`` are
-#: helpers under every layer (they import only ``errors``); ``scenes`` (the bundled example
-#: PAGs and ``generate``'s template choice) sits at the ``datagen`` layer; ``render`` draws
-#: assets (thumbnails, galleries) and so may import ``assets``.
+#: helpers under every layer (they import only ``errors``; ``_lru``, the process caches' LRU
+#: mapping, imports nothing); ``scenes`` (the bundled example PAGs and ``generate``'s
+#: template choice) sits at the ``datagen`` layer; ``render`` draws assets (thumbnails,
+#: galleries) and so may import ``assets``.
 LAYERS: dict[str, set[str]] = {
     "errors": set(),
     "_files": {"errors"},
     "_deps": {"errors"},
     "_hooks": set(),
+    "_lru": set(),
     "relations": {"errors"},
     "words": {"errors"},
     "geometry": {"errors", "relations"},
     "pag": {"relations", "geometry", "words", "_files"},
-    "assets": {"relations", "geometry", "words", "_files"},
+    "assets": {"relations", "geometry", "words", "_files", "_lru"},
     "scene": {"pag", "assets", "_files", "_hooks"},
     "measure": {"scene", "pag", "assets", "geometry"},
     "solver": {"measure", "scene", "pag", "assets", "geometry"},

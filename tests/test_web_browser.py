@@ -411,6 +411,8 @@ def test_viewer_is_in_view_on_a_laptop_screen(page, server):
 
 
 def test_graph_of_sixty_objects_is_readable(page):
+    """A 64-object living room: its graph fits the panel (no scrolling), nodes and labels
+    keep their size and do not overlap, supporters come before what they hold."""
     fresh(page)
     page.click("#load-templates")
     page.select_option("#templates", "living-room-bright-11")
@@ -418,7 +420,12 @@ def test_graph_of_sixty_objects_is_readable(page):
     page.click("#expand")
     page.wait_for_function("window.designer.state.doc.objects.length >= 60")
     n = page.evaluate("window.designer.state.doc.objects.length")
+    assert n == 64
     assert page.locator("#graph .node.object").count() == n
+    sizes = page.evaluate("""() => { const b = document.querySelector('.graph-box');
+        return [b.scrollHeight, b.clientHeight, b.scrollWidth, b.clientWidth]; }""")
+    assert sizes[0] <= sizes[1] + 1 and sizes[2] <= sizes[3] + 1, f"the graph scrolls: {sizes}"
+    panel = page.locator(".graph-box").bounding_box()
     boxes = page.evaluate("""() => [...document.querySelectorAll('#graph .node.object')].map(g => {
         const c = g.querySelector('circle').getBoundingClientRect();
         const t = g.querySelector('text').getBoundingClientRect();
@@ -428,20 +435,26 @@ def test_graph_of_sixty_objects_is_readable(page):
     })""")
     overlap = lambda a, b: min(a[2], b[2]) - max(a[0], b[0]) > 0.5 and min(a[3], b[3]) - max(a[1], b[1]) > 0.5  # noqa: E731
     for i, a in enumerate(boxes):
+        for box in (a["c"], a["t"]):  # inside the panel
+            assert panel["x"] - 1 <= box[0] and box[2] <= panel["x"] + panel["width"] + 1, box
+            assert panel["y"] - 1 <= box[1] and box[3] <= panel["y"] + panel["height"] + 1, box
         assert a["font"] >= 9.5, "labels shrink with the graph"
         assert a["c"][2] - a["c"][0] >= 24, "nodes shrink with the graph"
         for b in boxes[i + 1:]:
             assert not overlap(a["c"], b["c"]), "object nodes overlap"
             assert not overlap(a["t"], b["t"]), "object labels overlap"
-    # every object under its supporter's band or cluster: supporters above what they hold
+    # every object in its supporter's outline: a supporter above what it holds, in the same
+    # column or an earlier one (the outline flows into columns left to right)
     centre = page.evaluate("""() => Object.fromEntries([...document.querySelectorAll('#graph .node.object')]
-        .map(g => [g.dataset.id, g.querySelector('circle').getBoundingClientRect().top]))""")
+        .map(g => { const c = g.querySelector('circle').getBoundingClientRect();
+                    return [g.dataset.id, [c.left, c.top]]; }))""")
     doc = page.evaluate("window.designer.state.doc")
     supports = {"ON", "IN", "HANGING_BELOW", "SECURED_TO"}
     for r in doc["relations"]:
         parent = r["parent"].split(":")[0].split("@")[0]
         if r["relation"] in supports and parent in centre:
-            assert centre[parent] < centre[r["child"].split(":")[0].split("@")[0]]
+            p, c = centre[parent], centre[r["child"].split(":")[0].split("@")[0]]
+            assert p[1] < c[1] or p[0] < c[0] - 60, (r["parent"], r["child"])
     # and the drawing is drawn: the graph panel's pixels are not blank
     shot = np.asarray(Image.open(io.BytesIO(page.locator(".graph-box").screenshot())).convert("RGB"))
     assert len(np.unique(shot.reshape(-1, 3), axis=0)) > 20

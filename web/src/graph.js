@@ -1,11 +1,11 @@
-// A live drawing of the PAG, after the paper's Fig. 2, laid out by support tree so that it
-// stays readable at 60 objects and more: each room element that supports something heads a
-// band; in it, every object it supports heads a cluster with the objects on (in, under) it
-// in rows below, and so on down the support tree. Clusters wrap onto new rows at the panel's
-// width and the drawing grows downwards (the panel scrolls) instead of shrinking, so labels
-// keep their size. Parts that relations name are small dark circles beside their object;
-// support edges are short links inside a cluster, other relations are curves coloured by
-// kind (support solid blue, part-level dashed orange, object-level dotted green).
+// A live drawing of the PAG, after the paper's Fig. 2, laid out by support tree so that a
+// room of 60 objects and more fits the panel without scrolling and without shrinking: the
+// support trees are listed as indented outlines, one object a line (its circle, its label on
+// the right), each room element that supports something heading its trees, and the lines
+// flow into as many columns side by side as the panel's height asks for. A supporter stands
+// above what it holds, linked by an elbow; parts that relations name are small dark circles
+// on their object's left; other relations are curves coloured by kind (support solid blue,
+// part-level dashed orange, object-level dotted green).
 const NS = "http://www.w3.org/2000/svg";
 export const KIND_COLOURS = { support: "#2b6cb0", part: "#dd6b20", object: "#38a169" };
 const DASH = { support: "", part: "6 4", object: "2 4" };
@@ -29,38 +29,13 @@ const roomOrder = (a, b) => {
 const isRoom = (id) => id === "floor" || id === "ceiling" || id === "wall" || /^wall_\d+$/.test(id);
 
 // Layout sizes, in px (the drawing is never scaled down)
-const SLOT = 74;     // horizontal room of one object
-const LEVEL = 62;    // vertical step from an object to those it supports
-const R = 15;        // object radius
-const BAND = 30;     // height of a room element's band header
-const GAP = 14;      // between clusters
-const LABEL = 11;    // characters of an object label
-
-// A cluster: an object and, below it, what it supports; returns its size and places it.
-function measure(id, kids, maxW) {
-  const sub = (kids[id] || []).map((k) => measure(k, kids, maxW));
-  // children in rows no wider than the panel
-  const rows = [];
-  let row = [], w = 0;
-  for (const c of sub) {
-    if (row.length && w + c.w > maxW) { rows.push({ items: row, w: w - GAP }); row = []; w = 0; }
-    row.push(c); w += c.w + GAP;
-  }
-  if (row.length) rows.push({ items: row, w: w - GAP });
-  const width = Math.max(SLOT, ...rows.map((r) => r.w));
-  const height = LEVEL * (rows.length ? 1 : 0) + rows.reduce((s, r) => s + Math.max(...r.items.map((c) => c.h)), 0) + (rows.length ? (rows.length - 1) * 10 : 0);
-  return { id, w: width, h: Math.max(LEVEL, height), rows };
-}
-
-function place(c, x, y, pos) {
-  pos[c.id] = [x + c.w / 2, y + R + 2];
-  let yy = y + LEVEL;
-  for (const r of c.rows) {
-    let xx = x + (c.w - r.w) / 2;
-    for (const item of r.items) { place(item, xx, yy, pos); xx += item.w + GAP; }
-    yy += Math.max(...r.items.map((i) => i.h)) + 10;
-  }
-}
+const LINE = 26;     // vertical step between two outline lines (an object or a band header)
+const R = 12;        // object radius
+const INDENT = 10;   // horizontal step per support level
+const MAX_DEPTH = 3; // deeper levels keep this indent (the elbows still show the tree)
+const LEGEND = 24;   // height of the legend line
+const CHAR = 6.2;    // px per label character at 10 px (labels are cut to their column)
+const COLUMN_MIN = 112;
 
 export function drawGraph(svg, doc, relations) {
   svg.replaceChildren();
@@ -70,7 +45,7 @@ export function drawGraph(svg, doc, relations) {
   const rels = (doc.relations || []).map((r, i) => ({ ...r, i, c: parseRef(r.child), p: parseRef(r.parent) }))
     .filter((r) => r.c && r.p);
   // the support tree: each object under its (first) supporter; cycles and unknown supporters
-  // leave an object at the top of its own cluster
+  // leave an object at the top of its own tree
   const supporter = {};
   for (const r of rels) {
     if (kindOf[r.relation] === "support" && known.has(r.c.object) && !(r.c.object in supporter) &&
@@ -92,35 +67,47 @@ export function drawGraph(svg, doc, relations) {
   for (const id of tops) (bands[supporter[id] && isRoom(supporter[id]) ? supporter[id] : ""] ||= []).push(id);
   const order = Object.keys(bands).sort((a, b) => (a === "" ? 1 : b === "" ? -1 : roomOrder(a, b)));
 
-  const W = Math.max(360, svg.clientWidth || svg.parentElement?.clientWidth || 420);
-  const pos = {}, roomBox = {};
-  let y = 26; // below the legend
+  // the outline: band headers and objects, depth first
+  const lines = [];
+  const walk = (id, depth) => {
+    lines.push({ id, depth });
+    for (const k of kids[id] || []) walk(k, depth + 1);
+  };
   for (const band of order) {
-    if (band) roomBox[band] = [8, y, W - 16, BAND - 6];
-    y += band ? BAND : 6;
-    let x = 8, rowH = 0;
-    for (const id of bands[band]) {
-      const c = measure(id, kids, W - 16);
-      if (x > 8 && x + c.w > W - 8) { x = 8; y += rowH + GAP; rowH = 0; }
-      place(c, x, y, pos);
-      x += c.w + GAP;
-      rowH = Math.max(rowH, c.h);
-    }
-    y += rowH + GAP;
+    if (band) lines.push({ band });
+    for (const id of bands[band]) walk(id, 0);
   }
-  const H = y + 4;
+  // columns: as few as fit the panel's height, as many as its width allows
+  const W = Math.max(360, svg.clientWidth || svg.parentElement?.clientWidth || 420);
+  const box = svg.parentElement;
+  const maxH = box ? parseFloat(getComputedStyle(box).maxHeight) || 0 : 0;
+  const room = Math.max(LINE * 6, (maxH || 600) - LEGEND - 8);
+  const widest = Math.max(1, Math.floor((W - 8) / COLUMN_MIN));
+  const cols = Math.min(widest, Math.max(1, Math.ceil((lines.length * LINE) / room)));
+  const perCol = Math.ceil(lines.length / cols);
+  const colW = (W - 8) / cols;
+  const pos = {}, roomBox = {}, fit = {};
+  lines.forEach((ln, k) => {
+    const col = Math.floor(k / perCol), row = k % perCol;
+    const x0 = 4 + col * colW, y = LEGEND + row * LINE + LINE / 2;
+    if (ln.band) (roomBox[ln.band] ||= []).push([x0 + 2, y - 9, colW - 8, 18]);
+    else {
+      pos[ln.id] = [x0 + 14 + Math.min(ln.depth, MAX_DEPTH) * INDENT + R, y];
+      fit[ln.id] = Math.max(4, Math.floor((x0 + colW - pos[ln.id][0] - R - 10) / CHAR));
+    }
+  });
+  const H = LEGEND + perCol * LINE + 6;
   svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
   svg.style.height = `${H}px`;
 
-  // part nodes: beside their object, fanned out below it
+  // part nodes: on their object's left, fanned from above to below it
   const partPos = {};
   const parts = {};
   for (const r of rels) for (const ref of [r.c, r.p]) if (ref.part && pos[ref.object]) (parts[ref.object] ||= new Set()).add(ref.part);
   for (const [id, set] of Object.entries(parts)) {
     [...set].forEach((part, k) => {
-      // on the object's right, from above to below it
-      const a = (-0.45 + (0.9 * (k + 0.5)) / set.size) * Math.PI;
-      partPos[`${id}:${part}`] = [pos[id][0] + (R + 10) * Math.cos(a), pos[id][1] + (R + 10) * Math.sin(a)];
+      const a = Math.PI + (-0.4 + (0.8 * (k + 0.5)) / set.size) * Math.PI;
+      partPos[`${id}:${part}`] = [pos[id][0] + (R + 6) * Math.cos(a), pos[id][1] + (R + 6) * Math.sin(a)];
     });
   }
   const at = (ref) => (ref.part && partPos[`${ref.object}:${ref.part}`]) || pos[ref.object];
@@ -141,18 +128,27 @@ export function drawGraph(svg, doc, relations) {
     const kind = kindOf[r.relation] || "object";
     const g = el("g", { class: `edge edge-${kind}`, "data-index": r.i });
     g.append(el("title", {}, `${r.child} ${r.relation} ${r.parent}`));
-    if (kind === "support" && isRoom(r.p.object) && roomBox[r.p.object] && pos[r.c.object]) {
-      // to the band above: a short tick, not a line across the drawing
-      const [x, yy] = at(r.c);
-      const top = roomBox[r.p.object][1] + roomBox[r.p.object][3];
-      const from = pos[r.c.object][1] - R;
-      if (supporter[r.c.object] !== r.p.object || from - top > LEVEL) continue; // drawn by its band
-      g.append(el("line", { x1: x, y1: Math.min(yy, from), x2: x, y2: top, stroke: KIND_COLOURS.support, "stroke-width": 2, "marker-end": "url(#arrow-support)" }));
+    if (kind === "support" && supporter[r.c.object] === r.p.object && pos[r.c.object]) {
+      // the outline's own link: an elbow from the supporter (or the room element's header)
+      // down its indent
+      const c = pos[r.c.object];
+      let p = pos[r.p.object];
+      if (!p && roomBox[r.p.object]) { // from the room element's header, in the same column
+        const [bx, by, bw, bh] = roomBox[r.p.object][0];
+        if (c[0] < bx || c[0] > bx + bw) continue;
+        p = [c[0] - R - INDENT, by + bh - R];
+      }
+      if (!p || c[0] <= p[0] || Math.abs(c[0] - p[0]) > INDENT * 2 + R || c[1] <= p[1]) continue;
+      g.append(el("path", { d: `M ${p[0]} ${p[1] + R} V ${c[1]} H ${c[0] - R}`, fill: "none", stroke: KIND_COLOURS.support,
+        "stroke-width": 2, "marker-end": "url(#arrow-support)" }));
       edges.append(g);
       continue;
     }
     let a = at(r.c), b = at(r.p);
-    if (!b && isRoom(r.p.object) && roomBox[r.p.object] && a) b = [a[0], roomBox[r.p.object][1] + roomBox[r.p.object][3]];
+    if (!b && isRoom(r.p.object) && roomBox[r.p.object] && a) {
+      const [bx, by, , bh] = roomBox[r.p.object][0];
+      b = [bx + 40, by + bh];
+    }
     if (!a || !b) continue;
     const bend = kind === "support" ? 0 : Math.min(60, Math.hypot(b[0] - a[0], b[1] - a[1]) * 0.25);
     const mx = (a[0] + b[0]) / 2 + bend, my = (a[1] + b[1]) / 2 - bend * 0.5;
@@ -161,19 +157,21 @@ export function drawGraph(svg, doc, relations) {
     if (kind !== "support") g.append(el("text", { x: mx, y: my, fill: KIND_COLOURS[kind], "font-size": 9, "text-anchor": "middle", class: "edge-label" }, r.relation));
     edges.append(g);
   }
-  for (const [id, [x, yy, w, hh]] of Object.entries(roomBox)) {
-    const g = el("g", { class: "node room", "data-id": id });
-    g.append(el("rect", { x, y: yy, width: w, height: hh, rx: 3, fill: "#e2e8f0", stroke: "#4a5568" }));
-    g.append(el("text", { x: x + 8, y: yy + hh / 2 + 4, "font-size": 11, "font-weight": 600 }, id));
-    nodes.append(g);
+  for (const [id, heads] of Object.entries(roomBox)) {
+    for (const [x, yy, w, hh] of heads) {
+      const g = el("g", { class: "node room", "data-id": id });
+      g.append(el("rect", { x, y: yy, width: w, height: hh, rx: 3, fill: "#e2e8f0", stroke: "#4a5568" }));
+      g.append(el("text", { x: x + 8, y: yy + hh / 2 + 4, "font-size": 11, "font-weight": 600 }, id));
+      nodes.append(g);
+    }
   }
   for (const id of objects) {
     if (!pos[id]) continue;
     const [x, yy] = pos[id];
     const g = el("g", { class: "node object", "data-id": id });
     g.append(el("circle", { cx: x, cy: yy, r: R, fill: id in supporter ? "#fefcbf" : "#fed7d7", stroke: "#744210" }));
-    g.append(el("text", { x, y: yy + R + 11, "text-anchor": "middle", "font-size": 10, class: "label" },
-      id.length > LABEL ? id.slice(0, LABEL - 1) + "…" : id));
+    g.append(el("text", { x: x + R + 4, y: yy + 4, "font-size": 10, class: "label" },
+      id.length > fit[id] ? id.slice(0, fit[id] - 1) + "…" : id));
     g.append(el("title", {}, id));
     nodes.append(g);
   }

@@ -27,13 +27,13 @@ import inspect
 import os
 import sys
 import time
-from collections import OrderedDict
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
 import numpy as np
 
+from .._lru import LRU
 from ..errors import AssetError
 from . import registry
 from .cache import FORMAT, load_asset, save_asset
@@ -188,7 +188,7 @@ class AssetPool:
         self.root = Path(root)
         self.per_category = int(per_category)
         self.memory = int(memory)
-        self._lru: OrderedDict[tuple[str, int], Asset] = OrderedDict()
+        self._lru: LRU[tuple[str, int], Asset] = LRU(self.memory)
         self._fp: dict[str, str] = {}
 
     def _fingerprint(self, category: str) -> str:
@@ -206,7 +206,6 @@ class AssetPool:
         key = (category, int(seed))
         hit = self._lru.get(key)
         if hit is not None:
-            self._lru.move_to_end(key)
             return hit
         path = self.path(category, seed)
         asset = None
@@ -220,8 +219,6 @@ class AssetPool:
             # read the file back so an on-demand asset equals a pre-built one bit for bit
             asset = load_asset(path)
         self._lru[key] = asset
-        if len(self._lru) > self.memory:
-            self._lru.popitem(last=False)
         return asset
 
     def get(self, category: str, rng: np.random.Generator) -> Asset:

@@ -6,11 +6,13 @@ dataset folder. A scene therefore comes out the same whatever the executor or th
 workers.
 
 :class:`LocalExecutor`
-    ``workers`` processes started through a fork server (so no thread lock of the driver is
-    inherited) that has imported the stages' modules once (:data:`WORKER_MODULES`), so a
+    ``workers`` processes, each the one process of a ``concurrent.futures``
+    ``ProcessPoolExecutor``, started through a fork server (so no thread lock of the driver
+    is inherited) that has imported the stages' modules once (:data:`WORKER_MODULES`), so a
     worker starts without importing them again (``spawn`` where the platform has no fork
-    server). Each creates its own OpenGL (EGL) context, builds at most ``max_tasks`` scenes and is then replaced, so memory stays
-    bounded over long runs (caches of assets and collision shapes grow with every new asset).
+    server). Each creates its own OpenGL (EGL) context, builds at most ``max_tasks`` scenes
+    and is then replaced by its pool, so memory stays bounded over long runs (caches of
+    assets and collision shapes grow with every new asset).
     A worker that dies is replaced and its scene tried once more in the new worker (the death
     may have come from outside: the OOM killer, a signal); a scene whose worker dies twice (a
     crash in native code) is recorded as ``failed``, one that runs past the hard time limit is
@@ -24,10 +26,14 @@ workers.
 from __future__ import annotations
 
 import contextlib
+import os
 import signal
+import threading
 import time
 from collections import deque
 from collections.abc import Iterable, Iterator
+from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+from concurrent.futures.process import BrokenProcessPool
 from dataclasses import dataclass
 from typing import Any
 
@@ -141,9 +147,26 @@ def start_context():
     return ctx
 
 
-def _worker_main(conn, config: BuildConfig, max_tasks: int, source) -> None:
+def _watch_driver(driver: int) -> None:
+    """Exit this worker once the driver process is gone (killed with SIGKILL, say): a pool
+    worker blocked on its task queue would never notice, since it holds both ends of that
+    queue, and the fork server it was forked from outlives the driver too."""
+    while True:
+        time.sleep(1.0)
+        try:
+            os.kill(driver, 0)
+        except ProcessLookupError:
+            os._exit(1)
+        except PermissionError:  # a process of another user took the id: gone as well
+            os._exit(1)
+
+
+def _init_worker(config: BuildConfig, source, driver: int) -> None:
+    """A pool process's start: its scene source and GL context, made once for the scenes it
+    builds (``max_tasks`` of them before the pool replaces it)."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the driver handles Ctrl-C and stops us
     _PROCESS.clear()  # nothing of the driver's (a GL context above all) is reused
+    _PROCESS["config"] = config
     if source is not None:  # handed over by the driver: templates are not loaded again
         _PROCESS.update(key=repr(config.source), source=source)
     from .. import export, physics, pipeline  # noqa: F401 - the stages' modules, once
@@ -151,31 +174,40 @@ def _worker_main(conn, config: BuildConfig, max_tasks: int, source) -> None:
 
     _process_state(config)  # the scene source and the GL context
     freeze_startup()  # full collections then skip all of that
-    for _ in range(max_tasks):
-        try:
-            index = conn.recv()
-        except (EOFError, OSError):
-            return
-        if index is None:
-            return
-        outcome = run_task(config, index)
-        try:
-            conn.send(outcome)
-        except (BrokenPipeError, OSError):
-            return
+    threading.Thread(target=_watch_driver, args=(driver,), daemon=True).start()
+
+
+def _run_index(index: int) -> SceneOutcome:
+    """The pool's task: scene ``index`` of the configuration the process started with."""
+    return run_task(_PROCESS["config"], index)
+
+
+def _kill(pool: ProcessPoolExecutor) -> None:
+    """Kill ``pool``'s process now (a scene past its hard limit, or the build stopped) and
+    wait for it. ``kill_workers`` is public from Python 3.14; before, the pool's own table
+    of processes is the only handle on them."""
+    if hasattr(pool, "kill_workers"):
+        pool.kill_workers()
+    else:
+        for proc in list((getattr(pool, "_processes", None) or {}).values()):
+            with contextlib.suppress(OSError, ValueError):
+                proc.kill()
+    pool.shutdown(wait=True, cancel_futures=True)
 
 
 @dataclass
 class _Slot:
-    proc: Any
-    conn: Any
-    tasks: int = 0
+    """One worker: a ``ProcessPoolExecutor`` of one process, and the scene it builds."""
+
+    pool: ProcessPoolExecutor
+    future: Future | None = None
     index: int | None = None
     started: float = 0.0
 
 
 class LocalExecutor:
-    """A pool of forked worker processes on this machine.
+    """Worker processes on this machine, one ``concurrent.futures.ProcessPoolExecutor`` of a
+    single process per worker, so that a death or a hang is charged to its own scene.
 
     Parameters
     ----------
@@ -189,27 +221,6 @@ class LocalExecutor:
         self.workers = max(1, int(workers))
         self.max_tasks = max(1, int(max_tasks))
 
-    def _spawn(self, ctx, config: BuildConfig, source) -> _Slot:
-        parent, child = ctx.Pipe(duplex=True)
-        proc = ctx.Process(target=_worker_main, args=(child, config, self.max_tasks, source),
-                           daemon=True)
-        proc.start()
-        child.close()
-        return _Slot(proc, parent)
-
-    @staticmethod
-    def _stop(slot: _Slot, *, kill: bool) -> None:
-        if kill and slot.proc.is_alive():
-            slot.proc.kill()
-        else:
-            with contextlib.suppress(BrokenPipeError, OSError):
-                slot.conn.send(None)
-        slot.proc.join(timeout=10)
-        if slot.proc.is_alive():
-            slot.proc.kill()
-            slot.proc.join()
-        slot.conn.close()
-
     def run(self, config: BuildConfig, indices: Iterable[int], *,
             source: SceneSource | None = None) -> Iterator[SceneOutcome]:
         """Build ``indices``; yields each outcome as it finishes (not in index order).
@@ -218,7 +229,6 @@ class LocalExecutor:
         (None: each worker makes its own).
         """
         import pickle
-        from multiprocessing.connection import wait
 
         # forkserver: workers fork from a fresh single-threaded server, never from a driver that
         # may hold thread locks (a test runner's I/O thread, native thread pools) at fork time
@@ -230,77 +240,73 @@ class LocalExecutor:
                 source = None
         pending = deque(int(i) for i in indices)
         limit = hard_limit(config)
-        slots: list[_Slot] = []
         died: dict[int, int] = {}
-        done: list[_Slot] = []  # told to stop, not yet joined
 
-        def fill() -> None:
-            """Start missing workers and hand every idle one its next scene; with nothing
-            left to hand out, tell idle workers to stop (they exit while the others finish).
-            Called before each outcome goes back to the driver, so workers build on while it
-            commits."""
-            while pending and len(slots) < self.workers:
-                slots.append(self._spawn(ctx, config, source))
-            for s in list(slots):
-                if s.index is None and pending:
-                    s.index, s.started = pending.popleft(), time.perf_counter()
-                    s.conn.send(s.index)
-                elif s.index is None:
-                    with contextlib.suppress(BrokenPipeError, OSError):
-                        s.conn.send(None)
-                    slots.remove(s)
-                    done.append(s)
+        def new_slot() -> _Slot:
+            return _Slot(ProcessPoolExecutor(
+                max_workers=1, mp_context=ctx, initializer=_init_worker,
+                initargs=(config, source, os.getpid()), max_tasks_per_child=self.max_tasks))
 
+        def hand_out(s: _Slot) -> None:
+            """Give worker ``s`` the next scene, or let it go when none is left. Called before
+            an outcome goes back to the driver, so the worker builds on while it commits."""
+            if pending:
+                s.index, s.started = pending.popleft(), time.perf_counter()
+                s.future = s.pool.submit(_run_index, s.index)
+            else:
+                s.index, s.future = None, None
+                s.pool.shutdown(wait=False)
+                slots.remove(s)
+
+        slots: list[_Slot] = []
         try:
-            while pending or any(s.index is not None for s in slots):
-                fill()
-                busy = [s for s in slots if s.index is not None]
-                ready = wait([s.conn for s in busy], timeout=0.5)
-                for s in busy:
-                    outcome, replace = None, False
-                    if s.conn in ready:
+            while pending and len(slots) < self.workers:
+                slots.append(new_slot())
+                hand_out(slots[-1])
+            while slots:
+                futures = {s.future: s for s in slots}
+                finished, _ = wait(futures, timeout=0.5, return_when=FIRST_COMPLETED)
+                for s in list(slots):
+                    if s.future in finished:
+                        index = s.index
                         try:
-                            outcome = s.conn.recv()
-                            s.tasks += 1
-                            replace = s.tasks >= self.max_tasks
-                        except (EOFError, OSError):
-                            s.proc.join(timeout=5)
-                            replace = True
-                            if died.get(s.index, 0) < 1:
+                            outcome = s.future.result()
+                        except BrokenProcessPool:
+                            s.pool.shutdown(wait=True, cancel_futures=True)
+                            slots.remove(s)
+                            died[index] = died.get(index, 0) + 1
+                            if died[index] < 2:
                                 # once more in a fresh worker: the process may have been
                                 # killed from outside (OOM killer, a signal to the group)
-                                died[s.index] = died.get(s.index, 0) + 1
-                                pending.appendleft(s.index)
-                                s.index = None
-                                self._stop(s, kill=True)
-                                slots.remove(s)
+                                pending.appendleft(index)
+                                slots.append(new_slot())
+                                hand_out(slots[-1])
                                 continue
-                            msg = (f"worker process died twice (exit code {s.proc.exitcode})"
-                                   " while building this scene")
-                            outcome = _lost(config, s.index, "failed", msg, source)
+                            outcome = _lost(config, index, "failed",
+                                            "worker process died twice while building this "
+                                            "scene", source)
+                            if pending:
+                                slots.append(new_slot())
+                                hand_out(slots[-1])
+                        else:
+                            hand_out(s)
+                        yield outcome
                     elif limit is not None and time.perf_counter() - s.started > limit:
                         msg = (f"killed after {limit:g} s: the worker did not return "
                                f"(time limit {config.time_limit:g} s)")
                         outcome = _lost(config, s.index, "timeout", msg, source)
-                        self._stop(s, kill=True)
+                        _kill(s.pool)
                         slots.remove(s)
-                        s.index = None
-                        fill()
+                        if pending:
+                            slots.append(new_slot())
+                            hand_out(slots[-1])
                         yield outcome
-                        continue
-                    if outcome is None:
-                        continue
-                    s.index = None
-                    if replace:
-                        self._stop(s, kill=not s.proc.is_alive())
-                        slots.remove(s)
-                    fill()
-                    yield outcome
         finally:
             for s in slots:
-                self._stop(s, kill=s.index is not None)
-            for s in done:
-                self._stop(s, kill=False)
+                if s.future is not None and not s.future.done():
+                    _kill(s.pool)
+                else:
+                    s.pool.shutdown(wait=True, cancel_futures=True)
 
 
 # --------------------------------------------------------------------------------------------

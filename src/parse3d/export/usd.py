@@ -35,7 +35,7 @@ from pathlib import Path
 import numpy as np
 
 from ..errors import DependencyError
-from ..geometry.frames import matrix_to_quat
+from ..geometry.frames import matrix_to_quat, rotation_between
 from . import MARKERS
 from .walk import ObjectRecord, SceneRecord
 
@@ -73,13 +73,9 @@ def _ident(name: str, taken: set[str]) -> str:
 def _quat_to_x(axis: np.ndarray) -> np.ndarray:
     """``[w, x, y, z]`` rotating +X onto ``axis`` (UsdPhysics joints move along their X)."""
     a = np.asarray(axis, float) / np.linalg.norm(axis)
-    x = np.array([1.0, 0.0, 0.0])
-    c = float(np.dot(x, a))
-    if c < -1 + 1e-9:
+    if a[0] < -1 + 1e-9:
         return np.array([0.0, 0.0, 0.0, 1.0])  # half turn about Z
-    v = np.cross(x, a)
-    q = np.array([1.0 + c, *v])
-    return q / np.linalg.norm(q)
+    return matrix_to_quat(rotation_between((1.0, 0.0, 0.0), a))
 
 
 class _Writer:

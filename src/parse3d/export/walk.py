@@ -18,13 +18,13 @@ from __future__ import annotations
 
 import hashlib
 import re
-from collections import OrderedDict
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._lru import LRU
 from ..assets.model import BASE_LINK, Asset, Joint, Material, Part, link_groups
 from ..geometry.frames import make_transform
 from ..geometry.meshes import MeshArrays
@@ -114,8 +114,8 @@ class ExportOptions:
     friction: Mapping[str, float] | None = None
 
 
-_HULLS: OrderedDict[str, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = OrderedDict()
 _HULLS_SIZE = 8192
+_HULLS: LRU[str, tuple[list[tuple[np.ndarray, np.ndarray]], float]] = LRU(_HULLS_SIZE)
 
 
 def _piece_key(part: Part) -> str:
@@ -163,8 +163,6 @@ class _HullCache:
             if hit is None:
                 todo.append((part, key))
                 hit = _HULLS[key] = ([], 0.0)  # placeholder, filled below
-            else:
-                _HULLS.move_to_end(key)
             self._by_part[id(part)] = hit
             self._keep.append(part)
         meshes = [pc for part, _ in todo for pc in part.piece_arrays
@@ -173,8 +171,6 @@ class _HullCache:
         for part, key in todo:
             hit = _HULLS[key] = convex_pieces(part.piece_arrays, closed=closed)
             self._by_part[id(part)] = hit
-        while len(_HULLS) > _HULLS_SIZE:
-            _HULLS.popitem(last=False)
 
 
 @dataclass

@@ -23,12 +23,12 @@ import json
 import os
 import weakref
 import zipfile
-from collections import OrderedDict
 from dataclasses import dataclass
 
 import numpy as np
 from shapely.geometry import Polygon
 
+from .._lru import LRU
 from ..assets.model import Asset
 from ..scene.model import RoomShell, Scene
 
@@ -286,8 +286,8 @@ def _asset_key(asset: Asset) -> str:
     return key
 
 
-_CACHE: OrderedDict[str, AssetCollision] = OrderedDict()
 _CACHE_SIZE = 4096
+_CACHE: LRU[str, AssetCollision] = LRU(_CACHE_SIZE)
 
 
 def clear_cache() -> None:
@@ -363,7 +363,6 @@ def asset_collision(asset: Asset) -> AssetCollision:
     key = _asset_key(asset)
     hit = _CACHE.get(key)
     if hit is not None:
-        _CACHE.move_to_end(key)
         return hit
     data = _disk_read(key, asset.asset_id)
     if data is None:
@@ -381,8 +380,6 @@ def asset_collision(asset: Asset) -> AssetCollision:
                               tuple(mats))
         _disk_write(key, data)
     _CACHE[key] = data
-    if len(_CACHE) > _CACHE_SIZE:
-        _CACHE.popitem(last=False)
     return data
 
 
@@ -402,8 +399,8 @@ def fcl_convex(points: np.ndarray):
 
 
 #: ``fcl.Convex`` per (asset content key, uniform scale, piece index), asset frame, scaled.
-_FCL_PIECES: OrderedDict[tuple[str, float, int], object] = OrderedDict()
 _FCL_CACHE_SIZE = 8192
+_FCL_PIECES: LRU[tuple[str, float, int], object] = LRU(_FCL_CACHE_SIZE)
 
 
 def fcl_piece(key: str, scale: float, index: int, pieces: ConvexSet):
@@ -414,10 +411,6 @@ def fcl_piece(key: str, scale: float, index: int, pieces: ConvexSet):
     g = _FCL_PIECES.get(k)
     if g is None:
         g = _FCL_PIECES[k] = fcl_convex(np.asarray(pieces.piece_vertices(index), float) * scale)
-        if len(_FCL_PIECES) > _FCL_CACHE_SIZE:
-            _FCL_PIECES.popitem(last=False)
-    else:
-        _FCL_PIECES.move_to_end(k)
     return g
 
 
@@ -437,7 +430,7 @@ def _convex_prisms(poly: np.ndarray, z0: float, z1: float) -> list[np.ndarray]:
     return out
 
 
-_SHELL_CACHE: OrderedDict[bytes, ConvexSet] = OrderedDict()
+_SHELL_CACHE: LRU[bytes, ConvexSet] = LRU(64)
 
 
 def shell_collision(room: RoomShell) -> ConvexSet:
@@ -453,8 +446,6 @@ def shell_collision(room: RoomShell) -> ConvexSet:
     hit = _SHELL_CACHE.get(key)
     if hit is None:
         hit = _SHELL_CACHE[key] = _shell_pieces(room)
-        if len(_SHELL_CACHE) > 64:
-            _SHELL_CACHE.popitem(last=False)
     return hit
 
 

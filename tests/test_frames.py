@@ -1,0 +1,110 @@
+"""Rotations through scipy's ``Rotation`` against the closed-form formulas they replaced.
+
+The written-out references below are the textbook formulas (Rodrigues; Shepperd's branch on
+the largest diagonal term; the quaternion product expanded) the project used before; the
+scipy-backed functions must give the same matrices and the same ``[w, x, y, z]`` quaternions
+(w >= 0, the sign scene.json and every export always carried) to float tolerance.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.spatial.transform import Rotation
+
+from parse3d.export.usd import _quat_to_x
+from parse3d.geometry.frames import (
+    axis_angle,
+    matrix_to_quat,
+    quat_to_matrix,
+    rot_x,
+    rot_y,
+    rot_z,
+    rotation_about,
+    rotation_between,
+)
+
+
+def _rodrigues(axis, theta):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    k = np.array([[0, -a[2], a[1]], [a[2], 0, -a[0]], [-a[1], a[0], 0]])
+    return np.eye(3) + np.sin(theta) * k + (1 - np.cos(theta)) * (k @ k)
+
+
+def _shepperd(R):
+    t = np.trace(R)
+    if t > 0:
+        s = np.sqrt(t + 1.0) * 2
+        q = [0.25 * s, (R[2, 1] - R[1, 2]) / s, (R[0, 2] - R[2, 0]) / s, (R[1, 0] - R[0, 1]) / s]
+    elif R[0, 0] > R[1, 1] and R[0, 0] > R[2, 2]:
+        s = np.sqrt(1.0 + R[0, 0] - R[1, 1] - R[2, 2]) * 2
+        q = [(R[2, 1] - R[1, 2]) / s, 0.25 * s, (R[0, 1] + R[1, 0]) / s, (R[0, 2] + R[2, 0]) / s]
+    elif R[1, 1] > R[2, 2]:
+        s = np.sqrt(1.0 + R[1, 1] - R[0, 0] - R[2, 2]) * 2
+        q = [(R[0, 2] - R[2, 0]) / s, (R[0, 1] + R[1, 0]) / s, 0.25 * s, (R[1, 2] + R[2, 1]) / s]
+    else:
+        s = np.sqrt(1.0 + R[2, 2] - R[0, 0] - R[1, 1]) * 2
+        q = [(R[1, 0] - R[0, 1]) / s, (R[0, 2] + R[2, 0]) / s, (R[1, 2] + R[2, 1]) / s, 0.25 * s]
+    q = np.asarray(q) / np.linalg.norm(q)
+    return q if q[0] >= 0 else -q
+
+
+def _quat_matrix(q):
+    w, x, y, z = np.asarray(q, float) / np.linalg.norm(q)
+    return np.array([
+        [1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
+        [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
+        [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)],
+    ])
+
+
+def _half_turns():
+    """Rotations by pi (w = 0: the quaternion's sign is decided by its largest component)
+    and the axis-aligned ones a scene is full of."""
+    axes = [*np.eye(3), (1, -1, 0), (1, 1, 1), (0, 1, -1), (-1, 0, 1)]
+    out = [_rodrigues(a, np.pi) for a in axes]
+    out += [np.diag([-1.0, -1, 1]), np.diag([1.0, -1, -1]), np.diag([-1.0, 1, -1]), np.eye(3)]
+    out += [rot_z(k * np.pi / 2) for k in range(4)] + [rot_x(np.pi / 2) @ rot_y(np.pi)]
+    return out
+
+
+def test_quaternions_match_the_closed_form_on_random_and_half_turn_rotations():
+    rng = np.random.default_rng(7)
+    for R in [*Rotation.random(500, rng=rng).as_matrix(), *_half_turns()]:
+        q = matrix_to_quat(R)
+        np.testing.assert_allclose(q, _shepperd(R), rtol=0, atol=1e-12)
+        assert q[0] >= 0
+        np.testing.assert_allclose(quat_to_matrix(q), _quat_matrix(q), rtol=0, atol=1e-12)
+        np.testing.assert_allclose(quat_to_matrix(q), R, rtol=0, atol=1e-12)
+    # not unit length: both normalise
+    q = np.array([2.0, -0.4, 1.0, 0.3])
+    np.testing.assert_allclose(quat_to_matrix(q), _quat_matrix(q), rtol=0, atol=1e-12)
+
+
+def test_axis_angle_and_rotation_between_match_rodrigues():
+    rng = np.random.default_rng(8)
+    for _ in range(500):
+        axis, theta = rng.normal(size=3) * rng.uniform(0.1, 10), rng.uniform(-7, 7)
+        np.testing.assert_allclose(axis_angle(axis, theta), _rodrigues(axis, theta),
+                                   rtol=0, atol=1e-12)
+        np.testing.assert_allclose(rotation_about(axis, theta), _rodrigues(axis, theta),
+                                   rtol=0, atol=1e-12)
+        a, b = rng.normal(size=3), rng.normal(size=3)
+        R = rotation_between(a, b)
+        np.testing.assert_allclose(R @ (a / np.linalg.norm(a)), b / np.linalg.norm(b),
+                                   rtol=0, atol=1e-12)
+        v = np.cross(a, b)
+        ref = _rodrigues(v, np.arctan2(np.linalg.norm(v), np.dot(a, b)))
+        np.testing.assert_allclose(R, ref, rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("axis", [*np.eye(3), *-np.eye(3), (0.3, -2.0, 0.5), (-1, 1e-12, 0)])
+def test_usd_joint_frame_quaternion_turns_x_onto_the_axis(axis):
+    a = np.asarray(axis, float) / np.linalg.norm(axis)
+    q = _quat_to_x(a)
+    np.testing.assert_allclose(_quat_matrix(q) @ [1.0, 0, 0], a, rtol=0, atol=1e-9)
+    if a[0] > -1 + 1e-9:  # the half-angle form it was written as
+        ref = np.array([1.0 + a[0], *np.cross([1.0, 0, 0], a)])
+        np.testing.assert_allclose(q, ref / np.linalg.norm(ref), rtol=0, atol=1e-12)
+    else:
+        np.testing.assert_allclose(q, [0, 0, 0, 1.0])
