@@ -28,8 +28,8 @@ SEEDS = (0, 1, 2)
 KNOWN: dict[str, str] = {
     "mixed_fruit_pile": "seed 1: a plum tomato piled on an apple settles 25 degrees off",
     "towels_in_basket": "seeds 0 and 2: towels standing in a rimmed basket tip when settled",
-    "contents_and_slumps": "bananas and lemons that tumbled in their bowl rest there turned (not "
-                           "tipped), but the IN check still measures their angle",
+    "contents_and_slumps": "seed 0: the cushion, repaired into a bolster, settles lying on the "
+                           "seat and no longer leans on the back",
     "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
                        "(relaxed, or failed)",
 }

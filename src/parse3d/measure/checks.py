@@ -476,6 +476,13 @@ LEDGE_LEAN_DEG = 35.0
 STAND_LEAN_DEG = 45.0
 
 
+def _placed_lying(child: PlacedObject) -> bool:
+    """Whether ``child`` was placed lying: its height no more than its longest horizontal
+    extent in the solved pose (as :func:`.stability.settled_rest` reads "lying")."""
+    ext = np.ptp(world_points(child, hull_only=True, settled=False), axis=0)
+    return bool(ext[2] <= max(ext[0], ext[1]))
+
+
 def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     """Contact of the child's named parts with ``sB``: the family ON, IN, HANGING_BELOW,
     SECURED_TO and AGAINST (distance band and anti-parallel normals). Also returns whether
@@ -544,6 +551,10 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     long_axis = _lying_axis(child, sB.normal, settled) if rel in ("ON", "IN") else None
     if rel in ("ON", "IN") and is_round(child):
         ang_tol = 180.0  # an apple rests in any orientation
+    elif rel == "IN" and settled and pobj is not None and _placed_lying(child):
+        # a content placed lying in its container (a banana bunch, a croissant) tumbles there
+        # when settled: IN asks containment (the enclosure or footprint below), not a pose
+        ang_tol = 180.0
     elif long_axis is not None:
         # lying along its long axis (a baguette, a bottle on its side): it may roll about
         # that axis; the axis itself lies level
