@@ -312,6 +312,13 @@ def test_build_bad_input(dataset, tmp_path, capsys):
     assert code == 2 and "outside the dataset" in out
     code, out = _main(capsys, "vlm", "build", src, "--out", tmp_path / "o2")
     assert code == 2 and "not a dataset folder" in out
+    # nothing visible: refused, and a benchmark already in the folder is kept
+    kept = tmp_path / "kept"
+    assert _main(capsys, "vlm", "build", dataset, "--out", kept)[0] == 0
+    before = (kept / "train.jsonl").read_bytes()
+    code, out = _main(capsys, "vlm", "build", dataset, "--out", kept, "--min-pixels", 10**8)
+    assert code == 2 and "no object is visible" in out and "--min-pixels" in out
+    assert (kept / "train.jsonl").read_bytes() == before
     # a corrupt views.json, and a mask box from an instance mask of another size
     for name, change in (("corrupt", lambda d: d[:len(d) // 2]),
                          ("listed", lambda d: "[]"),

@@ -426,6 +426,12 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
     finally:
         if pool is not None:
             pool.shutdown()
+    if not any(rows.values()):  # nothing visible: say so rather than write empty splits
+        raise InputError(Problem(
+            "", f"no object is visible in any view of the {len(folders)} scenes (at least "
+                f"{options.visibility.min_pixels} mask pixels and "
+                f"{options.visibility.min_in_image:.0%} of the projection in the image): lower "
+                "--min-pixels / --min-in-image, or render the views again", str(ds), "io"))
     for split, rs in rows.items():
         tmp = out / f".{split}.jsonl.tmp"
         tmp.write_text("".join(json.dumps(r) + "\n" for r in rs))
