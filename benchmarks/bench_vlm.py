@@ -21,9 +21,11 @@ answer) and ``--audit-sgg`` random SGG images (every triplet of ``meta.holds``),
 ``near`` / ``far from`` match the horizontal distance of the oriented-box centres (< 0.9 m /
 > 2.2 m), the camera-frame sides their margins (0.15 m / 0.30 m), ``on`` / ``in`` /
 ``against``-type relations and part contacts a contact in ``contacts.json`` and ``no
-contact`` its absence, and that every distractor of the part-contact MCQ among them is false
-(the opposite of the answer about the marked objects, by ``contacts.json``, or another
-category pair). Relations without a geometric test (``facing``, ``aligned with``) are
+contact`` its absence, and that every distractor among them is false: of the part-contact
+MCQ, the opposite of the answer about the marked objects (by ``contacts.json``) or another
+category pair; of the relation MCQ, a relation false of the marked objects beyond doubt (the
+other side beyond its margin, a distance outside the relation's band, contact or its
+absence) or another category pair. Relations without a geometric test (``facing``, ``aligned with``) are
 counted apart as not audited.
 """
 
@@ -207,6 +209,43 @@ def _contact_distractors_false(r: dict, touching: set) -> tuple[int, int]:
     return ok, n
 
 
+def _false(rel: str, a: str, b: str, geo) -> bool:
+    """Whether "a REL b" is false beyond doubt: the opposite side beyond its margin, a
+    distance outside the relation's band (near > 1.1 m, far from < 1.8 m), a contact relation
+    without contact, "no contact" with one."""
+    centre, touching, (R, t) = geo
+    ca, cb = centre[a], centre[b]
+    d = float(np.hypot(*(ca[:2] - cb[:2])))
+    pa, pb = R @ ca + t, R @ cb + t
+    tests = {"near": d > 1.1, "far from": d < 1.8, "left of": pa[0] - pb[0] > 0.15,
+             "right of": pb[0] - pa[0] > 0.15, "in front of": pa[2] - pb[2] > 0.30,
+             "behind": pb[2] - pa[2] > 0.30, "no contact": (a, b) in touching}
+    if rel in tests:
+        return tests[rel]
+    return rel in _CONTACT_PHRASES and (a, b) not in touching
+
+
+def _relation_distractors_false(r: dict, geo) -> tuple[int, int]:
+    """A relation MCQ's distractors: (false, checked). One naming the marked objects'
+    categories must be false of the two by the geometry; one naming other categories must
+    name a category pair other than the marked objects'."""
+    from parse3d.vlm.vocab import RELATION_PHRASES
+
+    opts, ans = r["meta"]["options"], "ABCD".index(r["meta"]["answer"])
+    pair = (opts[ans]["subject"], opts[ans]["object"])
+    ok = n = 0
+    for i, o in enumerate(opts):
+        if i == ans:
+            continue
+        n += 1
+        if (o["subject"], o["object"]) != pair:
+            ok += 1
+        else:
+            ok += _false(RELATION_PHRASES[o["relation"]], r["meta"]["red"], r["meta"]["blue"],
+                         geo)
+    return ok, n
+
+
 def audit(ds: Path, rows: list[dict], n_mcq: int, n_sgg: int) -> None:
     """Labels re-derived from the files agree with the benchmark's (printed)."""
     rng = np.random.default_rng(0)
@@ -228,6 +267,13 @@ def audit(ds: Path, rows: list[dict], n_mcq: int, n_sgg: int) -> None:
             a, b = _contact_distractors_false(r, geo(r)[1])
             ok, n = ok + a, n + b
     print(f"  audit part-contact distractors: {ok}/{n} false ({100 * ok / max(n, 1):.2f}%, "
+          "goal 100%)")
+    ok = n = 0
+    for r in pick_m:
+        if r["task"] == "relation_mcq":
+            a, b = _relation_distractors_false(r, geo(r))
+            ok, n = ok + a, n + b
+    print(f"  audit relation distractors: {ok}/{n} false ({100 * ok / max(n, 1):.2f}%, "
           "goal 100%)")
     for name, checks in (
             ("MCQ", [(r["id"], r["meta"]["red"],

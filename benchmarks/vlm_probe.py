@@ -4,6 +4,7 @@ Usage::
 
     python benchmarks/vlm_probe.py VLM_DIR                     # a benchmark (parse3d vlm build)
     python benchmarks/vlm_probe.py VLM_DIR --epochs 8 --out out/probe
+    python benchmarks/vlm_probe.py VLM_DIR --text-only        # only the text-only twin
 
 Trains :func:`parse3d.vlm.probe.train_probe` twice on the MCQ of ``train.jsonl`` — on the
 images with the options' words, and the same network with blank images (text only) — and
@@ -37,6 +38,8 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--out", type=Path, help="keep predictions and probe.json here")
+    ap.add_argument("--text-only", action="store_true",
+                    help="train only the text-only twin (a minute, not ten)")
     args = ap.parse_args()
     w, h = (int(v) for v in args.size.lower().split("x"))
     opts = ProbeOptions(size=(w, h), epochs=args.epochs, max_items=args.max_items,
@@ -52,7 +55,8 @@ def main() -> None:
         rows.append((name, {"relation_mcq": rep.relation.get("accuracy"),
                             "contact_mcq": rep.contact.get("accuracy")}))
     runs = {}
-    for name, o in (("probe-text", replace(opts, image=False)), ("probe", opts)):
+    twins = [("probe-text", replace(opts, image=False)), ("probe", opts)]
+    for name, o in twins[:1] if args.text_only else twins:
         res = train_probe(args.bench, o, progress=lambda e, n, loss, name=name: print(
             f"  {name} epoch {e}/{n}: loss {loss:.3f}", flush=True))
         (out / f"{name}.jsonl").write_text("".join(

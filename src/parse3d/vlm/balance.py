@@ -17,11 +17,19 @@ geometry). So that "touching" and "not in contact" are equally likely for every 
 pair, questions are chosen per split and category pair: as many about touching pairs as about
 pairs that do not touch, drawn from all of the split's visible pairs.
 
-The relation MCQ borrows half of this: its options are the answer and a relation false of
-the marked pair, and two statements about another category pair, all drawn by how often the
-training split answers them (:class:`RelationPrior`). Its questions are not yet chosen per
-category pair and relation, so the answer and the false relation can still differ in how
-plausible they are.
+The relation MCQ is chosen the same way, per category pair and *couple* of relations that
+exclude each other by the geometry (:data:`RELATION_COUPLES`: a contact relation and "no
+contact", ``left of`` and ``right of``, ``in front of`` and ``behind``, ``near`` and ``far
+from``). A question about the couple (R, R') of marked objects with categories (A, B) offers
+
+    A R B      A R' B      C S D      C S' D
+
+where one of "A R B", "A R' B" holds and the other is false by the geometry, and (C, D, S, S')
+is another category pair and couple drawn by how often the training split asks it. Per split,
+category pair (ordered: red, blue) and couple, as many questions answer R as answer R', so
+each option's text is the answer about a quarter of the times it is shown. Relations without
+a test that can make them false (``facing``, ``aligned with``, ...) can never be a distractor
+and are not asked (they stay in the scene graphs).
 
 Everything here is data in, data out; the builder reads the scenes and writes the items.
 """
@@ -33,10 +41,13 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .facts import SceneFacts, ViewFacts
+from .facts import SceneFacts, ViewFacts, VisibilityRule, pair_truth
+from .vocab import CONTACT_RELATIONS, NO_CONTACT
 
-__all__ = ["ContactCandidate", "ContactPrior", "RelationPrior", "relation_prior", "contact_candidates", "contact_counts",
-           "plan_contact_questions", "contact_prior", "visible_parts"]
+__all__ = ["ContactCandidate", "ContactPrior", "RELATION_COUPLES", "RelationCandidate", "RelationKey",
+           "RelationQuestion", "contact_candidates", "contact_counts", "plan_contact_questions",
+           "contact_prior", "relation_candidates", "plan_relation_questions", "relation_asked",
+           "visible_parts"]
 
 LabelPair = tuple[str, str]
 
@@ -181,42 +192,129 @@ def contact_prior(scene: str, counts: dict[str, Counter], splits: dict[str, str]
     return ContactPrior(part_pairs, dict(asked))
 
 
-@dataclass
-class RelationPrior:
-    """What the training split answers in its relation MCQ, for one scene's options.
+#: Couples of relations the relation MCQ asks about: where one holds, the other is false by
+#: the same geometric test (a contact relation needs a contact, "no contact" its absence; the
+#: camera-frame sides their margins; ``near`` < 0.9 m, ``far from`` > 2.2 m).
+RELATION_COUPLES: tuple[tuple[str, str], ...] = (
+    *((r, NO_CONTACT) for r in CONTACT_RELATIONS),
+    ("LEFT_OF", "RIGHT_OF"), ("IN_FRONT_OF", "BEHIND"), ("NEAR", "FAR_FROM"))
+
+_FAMILY = {**dict.fromkeys(CONTACT_RELATIONS, 0), "NEAR": 1, "LEFT_OF": 2, "IN_FRONT_OF": 2}
+
+#: ``(red label, blue label, R, R')``: a category pair (ordered) and a couple.
+RelationKey = tuple[str, str, str, str]
+
+
+@dataclass(frozen=True)
+class RelationCandidate:
+    """An ordered pair of visible objects of one view and the couples it can be asked about.
 
     Attributes
     ----------
-    statements : dict
-        ``(subject label, RELATION, object label) -> answers`` in other scenes of the
-        training split (other splits only when it has none).
-    pairs : dict
-        ``(subject label, object label) -> answers``.
-    relations : dict
-        ``RELATION -> answers``.
+    scene : str
+    view : int
+    a, b : str
+        Object ids: ``a`` is marked red (the subject), ``b`` blue.
+    labels : (str, str)
+        Their category labels.
+    answers : tuple of (int, str)
+        ``(couple index, relation)`` for every couple of :data:`RELATION_COUPLES` one of
+        whose relations holds of "a REL b" while the other is false.
     """
 
-    statements: dict[tuple[str, str, str], int] = field(default_factory=dict)
-    pairs: dict[LabelPair, int] = field(default_factory=dict)
-    relations: dict[str, int] = field(default_factory=dict)
+    scene: str
+    view: int
+    a: str
+    b: str
+    labels: LabelPair
+    answers: tuple[tuple[int, str], ...]
 
 
-def relation_prior(scene: str, answers: dict[str, Counter], splits: dict[str, str]
-                   ) -> RelationPrior:
-    """The prior one scene's relation options draw from: the answers (``(la, REL, lb) ->
-    count`` per scene name) of the other training scenes, or of every other scene when the
-    training split has none besides this one."""
-    total: Counter = Counter()
-    for name, c in answers.items():
-        if name != scene and splits[name] == "train":
-            total.update(c)
-    if not total:
-        for name, c in answers.items():
-            if name != scene:
-                total.update(c)
-    pairs: Counter = Counter()
-    relations: Counter = Counter()
-    for (la, r, lb), n in total.items():
-        pairs[(la, lb)] += n
-        relations[r] += n
-    return RelationPrior(dict(total), dict(pairs), dict(relations))
+@dataclass(frozen=True)
+class RelationQuestion:
+    """A relation MCQ before its options: "``a`` ``relation`` ``b``" holds, "``a`` ``other``
+    ``b``" is false (the two form a couple of :data:`RELATION_COUPLES`)."""
+
+    scene: str
+    view: int
+    a: str
+    b: str
+    relation: str
+    other: str
+    key: RelationKey
+
+
+def relation_candidates(scene: SceneFacts, view: ViewFacts, rule: VisibilityRule
+                        ) -> list[RelationCandidate]:
+    """Every ordered pair of visible objects of a view with a couple it can be asked about."""
+    vis = sorted(view.objects)
+    out = []
+    for a in vis:
+        for b in vis:
+            if a == b:
+                continue
+            true, undecided = pair_truth(scene, view.camera, a, b, rule)
+            answers = []
+            for i, (r, r2) in enumerate(RELATION_COUPLES):
+                for yes, no in ((r, r2), (r2, r)):
+                    if yes in true and no not in true and no not in undecided:
+                        answers.append((i, yes))
+            if answers:
+                out.append(RelationCandidate(scene.name, view.index, a, b,
+                                             (scene.objects[a].label, scene.objects[b].label),
+                                             tuple(answers)))
+    return out
+
+
+def plan_relation_questions(candidates: list[RelationCandidate], *, per_view: int,
+                            rng: np.random.Generator) -> list[RelationQuestion]:
+    """The relation questions of one split: for every category pair (red, blue) and couple
+    (R, R'), as many questions answering R as answering R' (the smaller of the two counts),
+    at most ``per_view`` questions per view and one per pair of objects. The couples choose
+    in the order of :data:`RELATION_COUPLES` by family (contact relations, then near / far,
+    then the camera-frame sides, which nearly every pair can answer and would otherwise take
+    every view's slots), scarce keys first within a family. Deterministic for the
+    candidates' order and the generator."""
+    by_key: dict[RelationKey, tuple[list, list]] = defaultdict(lambda: ([], []))
+    for c in candidates:
+        for i, rel in c.answers:
+            r, r2 = RELATION_COUPLES[i]
+            by_key[(*c.labels, r, r2)][0 if rel == r else 1].append(c)
+    keys = sorted((_FAMILY[key[2]], min(len(s0), len(s1)), key)
+                  for key, (s0, s1) in by_key.items())
+    used: Counter = Counter()
+    pairs: set[tuple[str, int, frozenset[str]]] = set()
+    out = []
+    for _, n_min, key in keys:
+        if n_min == 0:
+            continue
+        sides = by_key[key]
+        order = [iter(rng.permutation(len(pool))) for pool in sides]
+
+        def take(side: int, sides=sides, order=order) -> RelationCandidate | None:
+            for i in order[side]:
+                c = sides[side][int(i)]
+                pair = (c.scene, c.view, frozenset((c.a, c.b)))
+                if used[(c.scene, c.view)] < per_view and pair not in pairs:
+                    used[(c.scene, c.view)] += 1
+                    pairs.add(pair)
+                    return c
+            return None
+
+        # one of each side at a time (the two orders of a pair of objects of one category,
+        # "chair 1 left of chair 2" and "chair 2 right of chair 1", compete for the pair)
+        while (c0 := take(0)) is not None:
+            c1 = take(1)
+            if c1 is None:  # give the view's slot and the pair back
+                used[(c0.scene, c0.view)] -= 1
+                pairs.discard((c0.scene, c0.view, frozenset((c0.a, c0.b))))
+                break
+            out += [RelationQuestion(c0.scene, c0.view, c0.a, c0.b, key[2], key[3], key),
+                    RelationQuestion(c1.scene, c1.view, c1.a, c1.b, key[3], key[2], key)]
+    return out
+
+
+def relation_asked(questions: list[RelationQuestion]) -> dict[RelationKey, int]:
+    """How often each category pair and couple is asked (the draw of the other pair of
+    options)."""
+    return dict(Counter(q.key for q in questions))

@@ -40,11 +40,14 @@ from ..errors import InputError, Problem
 from .balance import (
     ContactCandidate,
     ContactPrior,
+    RelationQuestion,
     contact_candidates,
     contact_counts,
     contact_prior,
     plan_contact_questions,
-    relation_prior,
+    plan_relation_questions,
+    relation_asked,
+    relation_candidates,
 )
 from .facts import SceneFacts, VisibilityRule, load_scene_facts, view_facts
 from .items import (
@@ -53,7 +56,6 @@ from .items import (
     TaskLimits,
     contact_items,
     relation_items,
-    relation_questions,
     sgg_item,
 )
 from .vocab import NO_CONTACT, RELATION_PHRASES, object_label, part_label
@@ -249,25 +251,21 @@ def _scene_views(folder: Path, out: Path, options: BuildOptions) -> tuple[Path, 
 
 def _scene_survey(job):
     """First pass over one scene: its views (rendered when missing), its touching part pairs
-    by label, the object pairs a part-contact question may ask about, and its relation
-    questions (before their options) with their answers by label."""
+    by label, and the object pairs a part-contact or relation question may ask about."""
     folder, out, options = job
     vf, rendered = _scene_views(folder, out, options)
     scene = load_scene_facts(folder, views_folder=vf)
-    cands, questions, answers = [], {}, Counter()
+    cands, rel_cands = [], []
     for v in scene.views:
         view = view_facts(scene, v, options.visibility)
         cands += contact_candidates(scene, view)
-        rng = np.random.default_rng([int(options.seed), scene.index, view.index, 0x52454C])
-        qs = relation_questions(scene, view, options.limits, options.visibility, rng)
-        questions[view.index] = qs
-        answers.update((scene.objects[a].label, r, scene.objects[b].label) for a, r, b in qs)
-    return folder.name, vf, rendered, contact_counts(scene), cands, questions, answers
+        rel_cands += relation_candidates(scene, view, options.visibility)
+    return folder.name, vf, rendered, contact_counts(scene), cands, rel_cands
 
 
 def _scene_rows(job) -> tuple[str, list[dict[str, Any]]]:
     """All records of one scene (run in the driver or a worker process)."""
-    folder, vf, out, options, candidates, parts, plan, prior, questions, rprior = job
+    folder, vf, out, options, candidates, parts, plan, prior, questions, asked = job
     rule = options.visibility
     scene = load_scene_facts(folder, views_folder=vf)
     present = {o.label for o in scene.objects.values()}
@@ -280,8 +278,8 @@ def _scene_rows(job) -> tuple[str, list[dict[str, Any]]]:
     for v in scene.views:
         view = view_facts(scene, v, rule)
         rng = np.random.default_rng([int(options.seed), scene.index, view.index])
-        items = relation_items(scene, view, questions.get(view.index, []), rprior, labels, rule,
-                               counts["relation_mcq"], rng)
+        items = relation_items(scene, view, [q for q in questions if q.view == view.index],
+                               asked, labels, rule, counts["relation_mcq"], rng)
         items += contact_items(scene, view, [c for c in plan if c.view == view.index], prior,
                                parts, rule, counts["contact_mcq"], rng)
         sg = sgg_item(scene, view, candidates, rule, boxes=options.boxes)
@@ -320,6 +318,27 @@ def _contact_plan(survey, splits: dict[str, str], options: BuildOptions
     for cs in plan.values():
         cs.sort(key=lambda c: (c.view, c.a, c.b))
     return plan, priors
+
+
+def _relation_plan(survey, splits: dict[str, str], options: BuildOptions
+                   ) -> tuple[dict[str, list[RelationQuestion]], dict[str, list[dict]]]:
+    """The relation questions of every scene, balanced per split, category pair and couple
+    (:mod:`parse3d.vlm.balance`), and per split the tables the other pair of options draws
+    from: how often that split asks each category pair and couple, then every split."""
+    plan: dict[str, list[RelationQuestion]] = {s[0]: [] for s in survey}
+    per_split: dict[str, list[RelationQuestion]] = {}
+    for split in ("train", "val", "test"):
+        cands = [c for s in survey if splits[s[0]] == split for c in s[5]]
+        rng = np.random.default_rng([int(options.seed), 0x52454C, ("train", "val",
+                                                                    "test").index(split)])
+        per_split[split] = plan_relation_questions(cands, per_view=options.limits.relation,
+                                                   rng=rng)
+        for q in per_split[split]:
+            plan[q.scene].append(q)
+    for qs in plan.values():
+        qs.sort(key=lambda q: (q.view, q.a, q.b))
+    everything = relation_asked([q for qs in per_split.values() for q in qs])
+    return plan, {split: [relation_asked(qs), everything] for split, qs in per_split.items()}
 
 
 def _check_views(folders: list[Path], views: int, dataset: Path) -> None:
@@ -396,11 +415,10 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
                 progress(done, 2 * len(folders))
         rendered = sum(s[2] for s in survey)
         plan, priors = _contact_plan(survey, splits, options)
-        answers = {s[0]: s[6] for s in survey}
+        rplan, asked = _relation_plan(survey, splits, options)
         jobs = [(folder, vf, out, options, candidates, parts, plan[name], priors[name],
-                 questions, relation_prior(name, answers, splits))
-                for folder, (name, vf, _, _, _, questions, _) in zip(folders, survey,
-                                                                     strict=True)]
+                 rplan[name], asked[splits[name]])
+                for folder, (name, vf, *_) in zip(folders, survey, strict=True)]
         for done, (name, srows) in enumerate(run(_scene_rows, jobs), 1):
             rows[splits[name]].extend(srows)
             if progress is not None:
@@ -408,6 +426,12 @@ def build_benchmark(dataset: str | Path, out: str | Path, options: BuildOptions 
     finally:
         if pool is not None:
             pool.shutdown()
+    if not any(rows.values()):  # nothing visible: say so rather than write empty splits
+        raise InputError(Problem(
+            "", f"no object is visible in any view of the {len(folders)} scenes (at least "
+                f"{options.visibility.min_pixels} mask pixels and "
+                f"{options.visibility.min_in_image:.0%} of the projection in the image): lower "
+                "--min-pixels / --min-in-image, or render the views again", str(ds), "io"))
     for split, rs in rows.items():
         tmp = out / f".{split}.jsonl.tmp"
         tmp.write_text("".join(json.dumps(r) + "\n" for r in rs))

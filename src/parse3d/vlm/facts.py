@@ -263,9 +263,10 @@ def _scene_facts(d: Path, sj: dict, contacts: list, verts: dict, views: list, vf
             continue
         oid = od["id"]
         parts = {p["name"]: part_label(p.get("label", p["name"])) for p in od.get("parts", [])}
-        # scene.glb names a part's node "<object>__<part>" (node_name: viewers drop colons)
-        pv = {n: verts[node_name(f"{oid}:{n}")] for n in parts
-              if node_name(f"{oid}:{n}") in verts}
+        # scene.glb names a part's node "<object>__<part>" (node_name: viewers drop colons);
+        # datasets written before that named it "<object>:<part>"
+        pv = {n: verts[k] for n in parts
+              for k in dict.fromkeys((node_name(f"{oid}:{n}"), f"{oid}:{n}")) if k in verts}
         if not pv:
             continue
         allv = np.vstack(list(pv.values()))

@@ -17,7 +17,13 @@ from typing import Any
 
 import numpy as np
 
-from .balance import ContactCandidate, ContactPrior, RelationPrior, visible_parts
+from .balance import (
+    ContactCandidate,
+    ContactPrior,
+    RelationKey,
+    RelationQuestion,
+    visible_parts,
+)
 from .facts import (
     SceneFacts,
     ViewFacts,
@@ -42,7 +48,6 @@ __all__ = [
     "SGG_PROMPT",
     "Item",
     "TaskLimits",
-    "relation_questions",
     "relation_items",
     "contact_items",
     "sgg_item",
@@ -88,7 +93,8 @@ class TaskLimits:
     Attributes
     ----------
     relation : int
-        Relation MCQs per view (pairs with a PAG relation first).
+        Relation MCQs per view (the split's questions are chosen by
+        :func:`parse3d.vlm.balance.plan_relation_questions`).
     contact : int
         Part-contact MCQs per view about touching object pairs, and as many at most about
         pairs that do not touch (the split's questions are chosen by
@@ -171,111 +177,63 @@ def _finish_mcq(template: str, correct: dict[str, Any],
     return template.format(options=text), LETTERS[k], meta
 
 
-def relation_questions(scene: SceneFacts, view: ViewFacts, limits: TaskLimits,
-                       rule: VisibilityRule, rng: np.random.Generator
-                       ) -> list[tuple[str, str, str]]:
-    """The relation MCQs of one view before their options: ``(red id, RELATION, blue id)``.
-
-    Pairs with a PAG relation that holds come first (asked about it); the other pairs of
-    visible objects ask about a relation drawn among those that hold (camera-frame, near /
-    far, no contact, ...). At most ``limits.relation``.
-    """
-    vis = list(view.objects)
-    stated = [(c, r, p) for (c, r, p) in sorted(scene.pag) if c in view.objects
-              and p in view.objects and r in pair_truth(scene, view.camera, c, p, rule)[0]]
-    rng.shuffle(stated)
-    chosen: list[tuple[str, str, str]] = []
-    used: set[frozenset[str]] = set()
-    for c, r, p in stated:
-        key = frozenset((c, p))
-        if key not in used:
-            used.add(key)
-            chosen.append((c, r, p))
-    rest = [(a, b) for i, a in enumerate(vis) for b in vis[i + 1:]
-            if frozenset((a, b)) not in used]
-    order = rng.permutation(len(rest)) if rest else []
-    for i in order:
-        if len(chosen) >= limits.relation:
-            break
-        a, b = rest[int(i)]
-        if rng.random() < 0.5:
-            a, b = b, a
-        true, _ = pair_truth(scene, view.camera, a, b, rule)
-        cands = sorted(true)
-        if not cands:
-            continue
-        chosen.append((a, cands[int(rng.integers(len(cands)))], b))
-    return chosen[: limits.relation]
-
-
 def _statement(subject: str, relation: str, obj: str) -> dict[str, Any]:
     return {"kind": "relation", "subject": subject, "relation": relation, "object": obj}
 
 
-def _relation_options(la: str, lb: str, answer: str, false: list[str], prior: RelationPrior,
-                      labels: list[str], rng: np.random.Generator) -> list[dict[str, Any]]:
-    """Three false options for "A answer B" (:mod:`parse3d.vlm.balance`): A and B with a
-    relation that is false of them, drawn by how often the training split answers it about
-    such objects; and two statements about another category pair, drawn the same way."""
-    out: list[dict[str, Any]] = []
-    weights = {r: prior.statements.get((la, r, lb), 0) for r in false}
-    r2 = _weighted(weights, rng) or _weighted({r: prior.relations.get(r, 0) + 1
-                                              for r in false}, rng)
-    if r2 is None:
-        return []
-    out.append(_statement(la, r2, lb))
-    key = _weighted(prior.pairs, rng, exclude={(la, lb), (lb, la)})
-    if key is not None:
-        lc, ld = key
-        rels = {r: n for (x, r, y), n in prior.statements.items() if (x, y) == key}
-        r3 = _weighted(rels, rng)
-        r4 = _weighted(rels, rng, exclude={r3}) or _weighted(
-            {r: n + 1 for r, n in prior.relations.items()}, rng, exclude={r3})
-        if r3 is not None and r4 is not None:
+def _relation_options(la: str, lb: str, q: RelationQuestion,
+                      asked: list[dict[RelationKey, int]], labels: list[str],
+                      rng: np.random.Generator) -> list[dict[str, Any]]:
+    """The three false options of a relation question (:mod:`parse3d.vlm.balance`): "A R' B"
+    (the couple's other relation, false of the marked objects) and both relations of a couple
+    asked about another category pair, drawn by how often the first table of ``asked`` with
+    another category pair asks it (the question's split, then every split)."""
+    out = [_statement(la, q.other, lb)]
+    for table in asked:
+        key = _weighted(table, rng, exclude={k for k in table if k[:2] in ((la, lb), (lb, la))})
+        if key is not None:
+            lc, ld, r3, r4 = key
             return out + [_statement(lc, r3, ld), _statement(lc, r4, ld)]
-    # too few training questions for a second category pair: an absent category replaces
-    # one of the two objects (false of the whole scene)
+    # no other category pair asked: a category absent from the scene replaces one of the
+    # two objects (false of the whole scene)
     if not labels:
         return []
-    others = [labels[int(i)] for i in rng.choice(len(labels), min(2, len(labels)),
-                                                 replace=False)]
-    for o in others:
-        out.append(_statement(o, answer, lb) if rng.random() < 0.5 else
-                   _statement(la, answer, o))
-    if len(out) < 3:
-        out.append(_statement(la, _weighted({r: 1 for r in false}, rng, exclude={r2})
-                              or r2, others[0]))
-    return out
+    o = labels[int(rng.integers(len(labels)))]
+    if rng.random() < 0.5:
+        return out + [_statement(o, q.relation, lb), _statement(o, q.other, lb)]
+    return out + [_statement(la, q.relation, o), _statement(la, q.other, o)]
 
 
-def relation_items(scene: SceneFacts, view: ViewFacts, questions: list[tuple[str, str, str]],
-                   prior: RelationPrior, labels: list[str], rule: VisibilityRule,
+def relation_items(scene: SceneFacts, view: ViewFacts, questions: list[RelationQuestion],
+                   asked: list[dict[RelationKey, int]], labels: list[str], rule: VisibilityRule,
                    counts: dict[str, int], rng: np.random.Generator) -> list[Item]:
-    """Relation MCQs of one view, about the ``questions`` of :func:`relation_questions`.
+    """Relation MCQs of one view, about the ``questions`` the split's plan chose
+    (:func:`parse3d.vlm.balance.plan_relation_questions`).
 
-    Four options: the answer "A REL B" and "A REL2 B" with a relation false of the two
-    (contact relations between objects that do not touch, camera-frame sides beyond the
-    opposite margin, near / far outside their bands; never an undecided one), and two
-    statements about another pair of categories drawn from ``prior`` (how often the
-    training split answers them). ``labels`` are object labels absent from the scene, used
-    only when the training split has no second category pair.
+    Four options: the answer "A R B", "A R' B" with the other relation of its couple (false
+    of the two: contact relations between objects that do not touch and "no contact" between
+    objects that do, camera-frame sides beyond the opposite margin, near / far beyond their
+    bands), and the two relations of a couple asked about another category pair, drawn from
+    ``asked`` (how often the question's split asks each category pair and couple; then every
+    split). Drawn from the same split, the other pair is as familiar to a model trained on
+    the training split as the marked one. ``labels`` are object labels absent from the scene,
+    used only when no other category pair is asked.
     """
     items = []
-    for a, rel, b in questions:
-        sources, undecided = relation_sources(scene, view.camera, a, b, rule)
-        true = set(sources)
-        if rel not in true:
+    for q in questions:
+        a, b = q.a, q.b
+        sources, _ = relation_sources(scene, view.camera, a, b, rule)
+        if q.relation not in sources:
             continue
         la, lb = scene.objects[a].label, scene.objects[b].label
-        false = [r for r in RELATION_PHRASES if r not in true and r not in undecided]
-        dis = _relation_options(la, lb, rel, false, prior, labels, rng)
-        correct = _statement(la, rel, lb)
+        dis = _relation_options(la, lb, q, asked, labels, rng)
+        correct = _statement(la, q.relation, lb)
         if len(dis) != 3 or len({option_text(o) for o in [correct, *dis]}) != 4:
             continue
         prompt, letter, meta = _finish_mcq(
             RELATION_PROMPT, correct, dis, counts, rng,
-            {"red": a, "blue": b, "relation": rel, "phrase": RELATION_PHRASES[rel],
-             "source": sources[rel]})
+            {"red": a, "blue": b, "relation": q.relation,
+             "phrase": RELATION_PHRASES[q.relation], "source": sources[q.relation]})
         if sum(option_holds(scene, view, a, b, o, rule) for o in meta["options"]) != 1:
             counts[letter] -= 1
             continue
