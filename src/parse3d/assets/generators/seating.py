@@ -20,6 +20,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._bedbath_common import bevel_box, cushion
 from ._household import ring as ring_
+from ._rods import leg_caps
 
 _UP = np.array([0.0, 0.0, 1.0])
 
@@ -228,7 +229,7 @@ def _short_legs(rng, xs, ys, h: float, mat: Material, start: int = 0) -> list[Pa
     return parts
 
 
-@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing", "button", "piping", "panel"),
+@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing", "button", "piping", "panel", "ferrule"),
           size_range=(0.7, 1.25), density=250, variants=("club", "wingback", "mid_century"))
 def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.75, 0.95)
@@ -293,6 +294,8 @@ def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                              center=(sx * (w / 2 - arm_w / 2), d / 2 + 0.002,
                                                                      (arm_h + deck_z) / 2 - 0.01), bevel=0.004), wood)
                   for i, sx in enumerate((-1, 1))]
+    else:  # brass ferrules on the tapered legs' feet
+        parts += leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), height=0.035)
     return parts
 
 
