@@ -378,7 +378,8 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot", "plate", "bracket", "lever"),
+@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot", "plate", "bracket", "lever", "collar",
+                                                         "screw"),
           size_range=(0.6, 1.0), density=600, variants=("four_leg", "three_leg", "pedestal"))
 def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
     z_seat = rng.uniform(0.63, 0.78)
@@ -409,7 +410,9 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=8), frame_mat))
         parts.append(make_part("foot", "foot", ring_([(rb - 0.012, 0.0), (rb + 0.002, 0.0), (rb + 0.002, 0.006), (rb - 0.012, 0.006)]),
                                M.solid((0.08, 0.08, 0.08), "plastic", 0.7)))
-        return parts
+        # the clamp collar holding the footrest's spokes on the column
+        parts.append(make_part("collar", "collar", S.cylinder(0.036, 0.044, center=(0, 0, z_ring), sections=12), frame_mat))
+        return parts + _seat_screws(0.05, z_seat - st - 0.02)
     n = 4 if variant == "four_leg" else 3
     r_top, r_foot = r * 0.62, r * rng.uniform(1.05, 1.25)
     phase = np.pi / 4 if n == 4 else np.pi / 2
@@ -437,4 +440,13 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"bracket_{k}", "bracket", S.box((0.03, 0.03, 0.024), center=c, R=rot_z(a)), frame_mat))
     parts.append(make_part("plate", "plate", S.cylinder(r_top + lr, 0.008, center=(0, 0, z_seat - st - 0.004), sections=16),
                            frame_mat))
-    return parts
+    return parts + _seat_screws(r_top * 0.5, z_seat - st - 0.008)
+
+
+def _seat_screws(radius: float, z: float) -> list[Part]:
+    """The four screws up through a stool's mounting plate (underside at ``z``) into its seat,
+    their heads on a circle of ``radius``."""
+    steel = M.solid((0.6, 0.6, 0.62), "metal", 0.35, 0.9)
+    return [make_part(f"screw_{k}", "screw", S.cylinder(0.006, 0.003, center=(radius * np.cos(a), radius * np.sin(a), z - 0.0015),
+                                                        sections=8), steel)
+            for k, a in enumerate(np.pi / 4 + np.pi / 2 * np.arange(4))]
