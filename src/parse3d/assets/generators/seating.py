@@ -84,6 +84,9 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("lever", "lever", S.tube([[0.09, 0.05, z_under + 0.025], [sw / 2 - 0.03, 0.09, z_under + 0.02]], 0.006,
                                                     sections=8), shell))
     parts.append(make_part("knob", "knob", S.cylinder(0.03, 0.025, center=(0, 0.09, z_under - 0.0125), sections=12), shell))
+    # the tilt lock's lever out of the mechanism's other side
+    parts.append(make_part("lever_1", "lever", S.tube([[-0.09, 0.05, z_under + 0.025], [-(sw / 2 - 0.03), 0.09, z_under + 0.02]], 0.006,
+                                                      sections=8), shell))
     # back: a padded panel on an L-shaped spine from under the seat
     bh = rng.uniform(0.45, 0.58) if variant != "executive" else rng.uniform(0.52, 0.6)
     bw = sw * rng.uniform(0.88, 0.98)

@@ -95,14 +95,13 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
 
 def _vessel_drain(variant: str, h: float, zb: float, half_in: float | None, prof) -> list[Part]:
     """A vessel sink's chrome pop-up drain in the basin floor (the flange and the cap closed in
-    it) and the overflow ring on the back wall."""
+    it) and the overflow cover on the back wall."""
     chrome = M.solid((0.78, 0.79, 0.8), "metal", 0.15, 0.95)
     z_floor = zb + 0.012
     # both sit in the floor's recess, standing under a millimetre proud of it, so the floor stays
     # the support inside the basin (a cup stands over the drain as on a real one)
     out = [make_part("drain_flange", "drain_flange",
-                     ring([(0.016, z_floor - 0.002), (0.033, z_floor - 0.002), (0.031, z_floor + 0.0008),
-                           (0.016, z_floor + 0.0008)], sections=16), chrome),
+                     ring([(0.016, z_floor - 0.002), (0.033, z_floor - 0.002), (0.016, z_floor + 0.0008)], sections=12), chrome),
            make_part("drain_cap", "drain_cap", S.lathe([(0.0158, z_floor - 0.004), (0.0158, z_floor + 0.0004),
                                                         (0.013, z_floor + 0.0008)], sections=16), chrome)]
     zo = zb + h * 0.72
@@ -111,14 +110,10 @@ def _vessel_drain(variant: str, h: float, zb: float, half_in: float | None, prof
         y_wall = -(r_out - 0.01) * (0.75 if variant == "oval" else 1.0)
     else:
         y_wall = -half_in
-    out.append(make_part("overflow", "overflow", ring([(0.006, -0.0015), (0.013, -0.0015), (0.012, 0.0015), (0.006, 0.0015)],
-                                                      sections=12).apply(_y_axis(y_wall + 0.0015, zo)), chrome))
+    # the overflow's slotted cover plate on the back wall
+    out.append(make_part("overflow", "overflow", S.cylinder(0.013, 0.003, center=(0, y_wall + 0.0015, zo), axis=(0, 1, 0), sections=10),
+                         chrome))
     return out
-
-
-def _y_axis(y: float, z: float) -> np.ndarray:
-    """The transform turning a ring about +Z into one about +Y centred at (0, y, z)."""
-    return np.array([[1.0, 0, 0, 0], [0, 0, 1, y], [0, -1, 0, z], [0, 0, 0, 1]])
 
 
 @register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow",

@@ -49,11 +49,12 @@ def toiletry_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-def _cap(outer, t: float, z_top: float, *, bottom: float | None = None) -> S.Shape:
+def _cap(outer, t: float, z_top: float, *, bottom: float | None = None, scale=(1.0, 1.0)) -> S.Shape:
     """A hollow cap of revolution, open downwards: ``outer`` is its (r, depth below the top)
-    profile, ``t`` its wall, ``z_top`` the height of its top."""
-    turn = np.array([[1.0, 0, 0, 0], [0, -1, 0, 0], [0, 0, -1, z_top], [0, 0, 0, 1]])
-    return shell(outer, t, bottom=bottom, sections=20).apply(turn)
+    profile, ``t`` its wall, ``z_top`` the height of its top; ``scale`` stretches it in x and y
+    (an oval stick's cap)."""
+    turn = np.array([[scale[0], 0, 0, 0], [0, -scale[1], 0, 0], [0, 0, -1, z_top], [0, 0, 0, 1]])
+    return shell(outer, t, bottom=bottom, sections=14).apply(turn)
 
 
 @register("deodorant", parts=("base", "cap"), extra_parts=("label", "dial", "stick", "valve_cup", "actuator", "ball", "collar"), size_range=(0.1, 0.2),
@@ -65,7 +66,7 @@ def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
         w, d, h = rng.uniform(0.055, 0.065), rng.uniform(0.03, 0.038), rng.uniform(0.085, 0.1)
         s = np.diag([w / 2, d / 2, 1.0, 1.0])
         base = S.lathe([(0.9, 0.0), (1.0, 0.004), (1.0, h)], sections=20).apply(s)
-        cap = _cap([(0.9, 0.0), (1.02, 0.008), (1.02, 0.048)], 0.06, h + 0.028, bottom=0.003).apply(s)
+        cap = _cap([(0.9, 0.0), (1.02, 0.008), (1.02, 0.048)], 0.06, h + 0.028, bottom=0.003, scale=(w / 2, d / 2))
         # the twist dial under the stick that raises it
         parts.append(make_part("dial", "dial", S.cylinder(0.012, 0.006, center=(0, 0, 0.003), sections=14), body))
         base = base.moved((0, 0, 0.005))
@@ -96,8 +97,7 @@ def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("actuator", "actuator", S.cylinder(r * 0.3, 0.012, center=(0, 0, h + 0.012), sections=12),
                                M.plastic(rng)))
     else:
-        parts.append(make_part("collar", "collar", ring([(r * 0.62, h - 0.002), (r * 0.78, h - 0.002), (r * 0.78, h + 0.008),
-                                                         (r * 0.62, h + 0.008)], sections=16), M.plastic(rng)))
+        parts.append(make_part("collar", "collar", ring([(r * 0.62, h - 0.002), (r * 0.78, h - 0.002), (r * 0.62, h + 0.008)], sections=16), M.plastic(rng)))
         parts.append(make_part("ball", "ball", S.ellipsoid((r * 0.64, r * 0.64, r * 0.64), center=(0, 0, h + 0.006),
                                                            subdivisions=1), Material((0.9, 0.92, 0.95, 0.6), 0.1, 0.0, "glass")))
     return parts
