@@ -15,6 +15,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import open_box, ring
 from ._kit import legs4
+from ._rods import leg_caps
 
 
 def _faucet(prefix: str, x: float, y: float, z: float, *, reach: float, h: float, mat: Material, style: str) -> list[Part]:
@@ -154,7 +155,8 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("utility_sink", parts=("basin", "rim"), extra_parts=("leg", "faucet", "spout", "handle", "base", "body", "drain",
-                                                               "backsplash", "stretcher", "collar", "aerator", "indicator"),
+                                                               "backsplash", "stretcher", "collar", "aerator", "indicator",
+                                                               "leg_cap"),
           size_range=(0.85, 1.2), density=600, variants=("legs", "cabinet", "double"))
 def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     tub = M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "plastic", 0.5) if rng.random() < 0.6 else \
@@ -190,4 +192,5 @@ def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         if p.label == "body":
             p.label = "faucet"
     parts += fp
-    return parts
+    # the plastic levelling feet capping the legs
+    return parts + leg_caps(parts, label="leg_cap", mat=M.solid((0.15, 0.15, 0.16), "plastic", 0.6), height=0.04)

@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_heights
+from ._rods import leg_caps
 
 
 def _carcass(w: float, d: float, h: float, t: float, *, z0: float = 0.0, back: float = 0.008,
@@ -151,7 +152,7 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
 
 
 @register("tv_stand", parts=("top_panel", "body"),
-          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin"),
+          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin", "ferrule"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
 def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
@@ -202,6 +203,8 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         # a cable grommet through the back panel of every bay, near its top
         parts.append(make_part(f"grommet_{b}", "grommet", S.cylinder(0.03, 0.012, center=((sx0 + sx1) / 2, -d / 2 + 0.006, h_body - 0.07),
                                                                      axis=(0, 1, 0), sections=12), black()))
+    if variant == "legged":  # brass ferrules on the tapered legs' feet
+        parts += leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9))
     return parts
 
 
