@@ -18,7 +18,7 @@ from ._rods import leg_caps
 
 
 @register("suitcase", parts=("shell",), extra_parts=("handle", "wheel", "zipper", "corner", "trolley_handle", "pull", "lock", "tag",
-                                                     "foot", "side_handle"),
+                                                     "foot", "side_handle", "latch"),
           size_range=(0.45, 0.95), density=180, variants=("spinner", "two_wheel", "hard_trunk"), placement="floor")
 def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.36, 0.5), rng.uniform(0.2, 0.3), rng.uniform(0.52, 0.78)
@@ -43,6 +43,9 @@ def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"corner_{i}", "corner", S.box((0.05, 0.05, h), center=(sx * (w / 2 - 0.02), sy * (d / 2 - 0.02), h / 2)),
                                    M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)))
+        # two draw latches across the lid's seam on the front, no prouder than the corners
+        parts += [make_part(f"latch_{k}", "latch", S.box((0.05, 0.008, 0.07), center=(sx * w * 0.3, d / 2 + 0.001, h * 0.62)),
+                            M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)) for k, sx in enumerate((-1, 1))]
     top = wz + h
     # the zip's two pulls meeting at the combination lock, the name tag on the top handle's
     # side and the carry handle on the side
