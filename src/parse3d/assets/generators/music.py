@@ -142,8 +142,10 @@ def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"page_clip_{k}", "page_clip", S.box((0.012, 0.004, 0.05), center=c, R=R), metal))
     # the tilt bracket joining the post's head to the back of the desk, and the clutch knob that
     # locks the desk's angle
-    y_desk = (zc - post_top) * np.tan(tilt)
-    yb0, yb1 = -0.05 - 0.02, y_desk
+    # it reaches the desk's back face at its own top edge, never through to the front where
+    # sheets lean
+    half = (0.006 if variant != "wooden" else 0.012) / 2
+    yb0, yb1 = -0.05 - 0.02, (zc - post_top - 0.03) * np.tan(tilt) - half / np.cos(tilt)
     parts.append(make_part("bracket", "bracket", S.box((0.05, yb1 - yb0, 0.06), center=(0, (yb0 + yb1) / 2, post_top)), metal))
     parts.append(make_part("knob_1", "knob", S.cylinder(0.014, 0.02, center=(0.025 + 0.01, -0.03, post_top), axis=(1, 0, 0),
                                                         sections=10), metal))
