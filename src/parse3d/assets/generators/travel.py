@@ -214,6 +214,13 @@ def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
         hands = [(sx * w * 0.25, sy * d / 2 * 0.5) for sy in ((-1, 1) if variant == "tote" else (0,)) for sx in (-1, 1)]
         parts += [make_part(f"ring_{k}", "ring", S.cylinder(0.011, 0.006, center=(x, y, h + 0.006), axis=(1, 0, 0), sections=10), metal)
                   for k, (x, y) in enumerate(hands)]
+    else:  # the D-ring on the side the wrist strap is clipped to
+        parts.append(make_part("ring", "ring", S.cylinder(0.008, 0.005, center=(w / 2 * 0.9, 0, h * 0.6), axis=(1, 0, 0), sections=10),
+                               metal))
+    if variant == "satchel":  # it stands on four metal feet, like a tote
+        parts += [make_part(f"foot_{i}", "foot", S.cylinder(0.006, 0.004, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.02), -0.002),
+                                                            sections=8), metal)
+                  for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
     return parts
 
 
