@@ -13,7 +13,7 @@ from parse3d.pag.validate import validate_data
 
 SPLIT = {  # category: the labels its ``body`` covers now
     "plate": {"well", "rim", "foot_ring"},
-    "pillow": {"cover", "piping", "tag", "zipper"},
+    "pillow": {"cover", "piping", "tag", "zipper", "zip_pull"},
     "rug": {"field", "border", "medallion", "motif"},
 }
 

@@ -182,6 +182,10 @@ def toolbox(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"divider_{k}", "divider", S.box((t, d / 2 - 1.5 * t, h * 0.7),
                                                                     center=(sx * w / 6, d / 4, t + h * 0.35)), shell))
+        # and the back half's pair, splitting it into a long bay and two short ones
+        for k, sx in enumerate((-1, 1), start=2):
+            parts.append(make_part(f"divider_{k}", "divider", S.box((t, d / 2 - 1.5 * t, h * 0.7),
+                                                                    center=(sx * w / 4, -d / 4, t + h * 0.35)), shell))
         return parts
     h = rng.uniform(0.18, 0.24)
     hl = 0.045  # the lid's depth

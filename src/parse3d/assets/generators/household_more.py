@@ -277,7 +277,7 @@ def dish_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("storage_bin", parts=("body",), extra_parts=("lid", "handle", "label", "wheel", "latch", "rim"),
+@register("storage_bin", parts=("body",), extra_parts=("lid", "handle", "label", "wheel", "latch", "rim", "foot"),
           size_range=(0.3, 0.8), density=400, variants=("lidded", "open", "wheeled"),
           placement="floor")
 def storage_bin(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -303,6 +303,8 @@ def storage_bin(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "wheeled":
         out += each("wheel", "wheel", [S.cylinder(wh / 2, 0.02, center=(sx * (w / 2 - 0.05), -d / 2 + 0.05, wh / 2), axis=(1, 0, 0))
                                        for sx in (-1, 1)], black("rubber"))
+        # the front stands on two moulded feet, as tall as the wheels
+        out += each("foot", "foot", [S.box((0.04, 0.03, wh), center=(sx * (w / 2 - 0.05), d / 2 - 0.05, wh / 2)) for sx in (-1, 1)], mat)
 
     out.append(make_part("label", "label", S.box((0.1, 0.001, 0.05), center=(0, d / 2 + 0.0005, wh + h * 0.6)), white(rng, "paper")))
     return out

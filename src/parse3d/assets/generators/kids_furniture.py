@@ -16,7 +16,7 @@ from ..registry import register
 
 
 @register("high_chair", parts=("seat", "leg", "tray"),
-          extra_parts=("back", "armrest", "footrest", "stretcher", "strap", "tray_rim"),
+          extra_parts=("back", "armrest", "footrest", "stretcher", "strap", "tray_rim", "leg_cap"),
           size_range=(0.85, 1.15), density=500, variants=("wooden", "plastic", "folding"),
           placement="floor")
 def high_chair(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -68,4 +68,13 @@ def high_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("tray_rim", "tray_rim", rim, shell))
     strap = S.box((0.04, 0.012, za - zs - 0.02), center=(0, sd * 0.1, (zs + za) / 2 - 0.01))
     parts.append(make_part("strap", "strap", strap, Material(M.jitter(rng, (0.2, 0.3, 0.5), 0.1), 0.9, 0.0, "fabric")))
+    # non-slip rubber caps sleeving the splayed legs just above their ends (the legs still
+    # stand on the floor)
+    rubber = M.solid((0.1, 0.1, 0.1), "rubber", 0.85)
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        foot = np.array([*(top[i] + (sx * splay, sy * splay * 1.1)), 0.015])
+        u = np.array([*top[i], zs - 0.02]) - foot
+        u /= np.linalg.norm(u)
+        parts.append(make_part(f"leg_cap_{i}", "leg_cap", S.cylinder(0.017, 0.035, center=tuple(foot + u * (0.01 + 0.0175)),
+                                                                     axis=tuple(u), sections=10), rubber))
     return parts

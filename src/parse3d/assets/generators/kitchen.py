@@ -174,7 +174,7 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
-                                                                     "thermostat"),
+                                                                     "thermostat", "gasket"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -232,7 +232,25 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
     parts.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(x_mid + iw * 0.25, y0 + 0.1, z_hi - 0.006),
                                                                   sections=12), liner))
-    return parts
+    return parts + _door_gaskets(parts)
+
+
+def _door_gaskets(parts: list) -> list:
+    """The magnetic rubber gasket round the back of each refrigerator door, pressed against the
+    cabinet's front edge when the door is shut (mounted on the door, so it swings with it)."""
+    rubber = M.solid((0.85, 0.86, 0.86), "rubber", 0.8)
+    out: list = []
+    for door in [p for p in parts if isinstance(p, Part) and p.label in ("door", "freezer_door")]:
+        (x0, y0, z0), (x1, _, z1) = door.bounds
+        b, t, m = 0.02, 0.006, 0.012  # band width, thickness, inset from the door's edge
+        y = y0 - t / 2
+        frame = [S.box((x1 - x0 - 2 * m, t, b), center=((x0 + x1) / 2, y, z0 + m + b / 2)),
+                 S.box((x1 - x0 - 2 * m, t, b), center=((x0 + x1) / 2, y, z1 - m - b / 2)),
+                 S.box((b, t, z1 - z0 - 2 * m - 2 * b), center=(x0 + m + b / 2, y, (z0 + z1) / 2)),
+                 S.box((b, t, z1 - z0 - 2 * m - 2 * b), center=(x1 - m - b / 2, y, (z0 + z1) / 2))]
+        name = f"{door.name}_gasket"
+        out += [make_part(name, "gasket", frame, rubber), mount(door.name, name)]
+    return out
 
 
 def _ring_path(center, radius: float, n: int, *, plane: str = "xy") -> np.ndarray:

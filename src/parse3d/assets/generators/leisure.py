@@ -222,7 +222,9 @@ def coat_rack(rng: np.random.Generator, variant: str) -> list[Part]:
             rr = r_pole * 0.5 + 0.2 * t
             zz = z0 - 0.02 + 0.18 * t ** 2
             path = np.c_[dx * rr, dy * rr, zz]
-            shapes = [S.tube(path, 0.011, sections=8), S.ellipsoid((0.018, 0.018, 0.018), center=path[-1], subdivisions=1)]
+            shapes = [S.tube(path, 0.011, sections=8)]
+            # the turned ball glued on the branch's end, a tip as on the other racks' hooks
+            parts.append(make_part(f"tip_{k}", "tip", S.ellipsoid((0.018, 0.018, 0.018), center=path[-1], subdivisions=1), hmat))
         else:  # a J-hook: out and down, then curling back up
             t = np.linspace(0, np.pi, 4)
             path = np.vstack([[dx * r_pole * 0.5, dy * r_pole * 0.5, z0], [dx * (r_pole + 0.06), dy * (r_pole + 0.06), z0],

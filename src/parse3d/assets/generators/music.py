@@ -14,6 +14,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 from ._kit import feet4, rot
 
 
@@ -102,7 +103,7 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("music_stand", parts=("desk", "post"), extra_parts=("leg", "ledge", "knob", "base", "page_clip", "collar", "foot", "hub"),
+@register("music_stand", parts=("desk", "post"), extra_parts=("leg", "ledge", "knob", "base", "page_clip", "collar", "foot", "hub", "bracket"),
           size_range=(0.9, 1.5), density=700, variants=("folding", "orchestral", "wooden"))
 def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.05, 1.35)
@@ -139,6 +140,18 @@ def music_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, sx in enumerate((-1, 1)):
         c = np.array([sx * (w / 2 - 0.04), 0.0, zc]) + R @ np.array([0.0, 0.006, dh / 2 - 0.03])
         parts.append(make_part(f"page_clip_{k}", "page_clip", S.box((0.012, 0.004, 0.05), center=c, R=R), metal))
+    # the tilt bracket joining the post's head to the back of the desk, and the clutch knob that
+    # locks the desk's angle
+    # it reaches the desk's back face at its own top edge, never through to the front where
+    # sheets lean
+    half = (0.006 if variant != "wooden" else 0.012) / 2
+    yb0, yb1 = -0.05 - 0.02, (zc - post_top - 0.03) * np.tan(tilt) - half / np.cos(tilt)
+    parts.append(make_part("bracket", "bracket", S.box((0.05, yb1 - yb0, 0.06), center=(0, (yb0 + yb1) / 2, post_top)), metal))
+    parts.append(make_part("knob_1", "knob", S.cylinder(0.014, 0.02, center=(0.025 + 0.01, -0.03, post_top), axis=(1, 0, 0),
+                                                        sections=10), metal))
+    if variant == "wooden":  # the turned collar where the post is set into the base
+        parts.append(make_part("collar_1", "collar", ring([(0.017, 0.03), (0.03, 0.03), (0.022, 0.05), (0.017, 0.05)],
+                                                                 sections=16).moved((0, -0.05, 0)), desk_mat))
     return parts
 
 

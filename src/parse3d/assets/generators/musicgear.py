@@ -16,6 +16,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, revolute, rot
+from ._rods import leg_caps
 
 
 def _lid_box(w: float, d: float, h: float, t: float, z0: float) -> list[S.Shape]:
@@ -163,7 +164,7 @@ def metronome(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("piano_bench", parts=("seat", "leg"), extra_parts=("apron", "lid", "hinge", "stretcher", "knob", "cushion",
-                                                            "compartment", "foot"),
+                                                            "compartment", "foot", "ferrule"),
           size_range=(0.5, 0.95), density=550, variants=("storage", "adjustable", "duet"))
 def piano_bench(rng: np.random.Generator, variant: str) -> list:
     wood = Material(M.jitter(rng, (0.06, 0.05, 0.05), 0.02), 0.25, 0.0, "wood")  # piano black
@@ -185,7 +186,7 @@ def piano_bench(rng: np.random.Generator, variant: str) -> list:
                                    S.box((0.025, d - 0.1, 0.03), center=(sx * (w / 2 - 0.045), 0, 0.12)), wood))
             parts.append(make_part(f"knob_{k}", "knob", S.cylinder(0.025, 0.025, center=(sx * (w / 2 - 0.008), 0, h - ts - 0.03),
                                                                    axis=(1, 0, 0), sections=16), wood))
-        return parts
+        return parts + _bench_ferrules(parts)
     # storage bench: a box (apron all round) on four legs, the seat a lid hinged at the back
     ta, hl = 0.025, rng.uniform(0.09, 0.12)
     za = h - ta - hl
@@ -206,7 +207,12 @@ def piano_bench(rng: np.random.Generator, variant: str) -> list:
     for k, sx in enumerate((-1, 1)):
         parts.append(make_part(f"stretcher_{k}", "stretcher", S.box((0.025, d - 0.1, 0.025),
                                                                    center=(sx * (w / 2 - 0.025), 0, 0.1)), wood))
-    return parts
+    return parts + _bench_ferrules(parts)
+
+
+def _bench_ferrules(parts: list) -> list[Part]:
+    """Brass ferrules capping a piano bench's square feet."""
+    return leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), height=0.035)
 
 
 @register("midi_keyboard", parts=("body", "key"),

@@ -124,7 +124,7 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel",
-                                                          "windscreen", "reading_light", "plaque"),
+                                                          "windscreen", "reading_light", "plaque", "flange"),
           size_range=(1.0, 1.45), density=500, variants=("box", "pedestal", "acrylic"), placement="floor")
 def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.5, 0.7), rng.uniform(0.4, 0.55), rng.uniform(1.05, 1.25)
@@ -163,6 +163,10 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                      (-w / 2 + 0.1, -d / 2 + 0.15, h + 0.14)], 0.004),
                                                              S.frustum(0.012, 0.02, 0.03, center=(-w / 2 + 0.1, -d / 2 + 0.15, h + 0.14),
                                                                        axis=(0.3, 0.3, -1.0), sections=10)], M.metal(rng)))
+    # the threaded flanges the microphone's and the light's goosenecks screw into
+    parts += [make_part(f"flange_{k}", "flange", S.cylinder(0.016, 0.012, center=(x, -d / 2 + 0.05, h + 0.005), sections=12),
+                        M.solid((0.1, 0.1, 0.1), "metal", 0.4, 0.6))
+              for k, x in enumerate((-w / 2 + 0.06, w / 2 - 0.06))]
     y_front = d * 0.4 if variant != "pedestal" else 0.09
     parts.append(make_part("plaque", "plaque", S.box((min(0.3, w * 0.5), 0.004, 0.08), center=(0, y_front + 0.002, z_desk * 0.7)),
                            M.solid((0.8, 0.65, 0.3), "metal", 0.3, 0.9)))

@@ -20,6 +20,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._bedbath_common import bevel_box, cushion
 from ._household import ring as ring_
+from ._rods import leg_caps
 
 _UP = np.array([0.0, 0.0, 1.0])
 
@@ -83,6 +84,9 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("lever", "lever", S.tube([[0.09, 0.05, z_under + 0.025], [sw / 2 - 0.03, 0.09, z_under + 0.02]], 0.006,
                                                     sections=8), shell))
     parts.append(make_part("knob", "knob", S.cylinder(0.03, 0.025, center=(0, 0.09, z_under - 0.0125), sections=12), shell))
+    # the tilt lock's lever out of the mechanism's other side
+    parts.append(make_part("lever_1", "lever", S.tube([[-0.09, 0.05, z_under + 0.025], [-(sw / 2 - 0.03), 0.09, z_under + 0.02]], 0.006,
+                                                      sections=8), shell))
     # back: a padded panel on an L-shaped spine from under the seat
     bh = rng.uniform(0.45, 0.58) if variant != "executive" else rng.uniform(0.52, 0.6)
     bw = sw * rng.uniform(0.88, 0.98)
@@ -228,7 +232,7 @@ def _short_legs(rng, xs, ys, h: float, mat: Material, start: int = 0) -> list[Pa
     return parts
 
 
-@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing", "button", "piping", "panel"),
+@register("armchair", parts=("seat", "back", "armrest"), extra_parts=("frame", "leg", "wing", "button", "piping", "panel", "ferrule"),
           size_range=(0.7, 1.25), density=250, variants=("club", "wingback", "mid_century"))
 def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.75, 0.95)
@@ -293,6 +297,8 @@ def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                              center=(sx * (w / 2 - arm_w / 2), d / 2 + 0.002,
                                                                      (arm_h + deck_z) / 2 - 0.01), bevel=0.004), wood)
                   for i, sx in enumerate((-1, 1))]
+    else:  # brass ferrules on the tapered legs' feet
+        parts += leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), height=0.035)
     return parts
 
 
@@ -375,7 +381,8 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot", "plate", "bracket", "lever"),
+@register("bar_stool", parts=("seat", "leg"), extra_parts=("footrest", "base", "foot", "plate", "bracket", "lever", "collar",
+                                                         "screw"),
           size_range=(0.6, 1.0), density=600, variants=("four_leg", "three_leg", "pedestal"))
 def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
     z_seat = rng.uniform(0.63, 0.78)
@@ -406,7 +413,9 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=8), frame_mat))
         parts.append(make_part("foot", "foot", ring_([(rb - 0.012, 0.0), (rb + 0.002, 0.0), (rb + 0.002, 0.006), (rb - 0.012, 0.006)]),
                                M.solid((0.08, 0.08, 0.08), "plastic", 0.7)))
-        return parts
+        # the clamp collar holding the footrest's spokes on the column
+        parts.append(make_part("collar", "collar", S.cylinder(0.036, 0.044, center=(0, 0, z_ring), sections=12), frame_mat))
+        return parts + _seat_screws(0.05, z_seat - st - 0.02)
     n = 4 if variant == "four_leg" else 3
     r_top, r_foot = r * 0.62, r * rng.uniform(1.05, 1.25)
     phase = np.pi / 4 if n == 4 else np.pi / 2
@@ -434,4 +443,13 @@ def bar_stool(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"bracket_{k}", "bracket", S.box((0.03, 0.03, 0.024), center=c, R=rot_z(a)), frame_mat))
     parts.append(make_part("plate", "plate", S.cylinder(r_top + lr, 0.008, center=(0, 0, z_seat - st - 0.004), sections=16),
                            frame_mat))
-    return parts
+    return parts + _seat_screws(r_top * 0.5, z_seat - st - 0.008)
+
+
+def _seat_screws(radius: float, z: float) -> list[Part]:
+    """The four screws up through a stool's mounting plate (underside at ``z``) into its seat,
+    their heads on a circle of ``radius``."""
+    steel = M.solid((0.6, 0.6, 0.62), "metal", 0.35, 0.9)
+    return [make_part(f"screw_{k}", "screw", S.cylinder(0.006, 0.003, center=(radius * np.cos(a), radius * np.sin(a), z - 0.0015),
+                                                        sections=8), steel)
+            for k, a in enumerate(np.pi / 4 + np.pi / 2 * np.arange(4))]

@@ -15,6 +15,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import open_box, ring
 from ._kit import legs4
+from ._rods import leg_caps
 
 
 def _faucet(prefix: str, x: float, y: float, z: float, *, reach: float, h: float, mat: Material, style: str) -> list[Part]:
@@ -63,7 +64,7 @@ def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
     return _faucet("", 0.0, 0.0, 0.0, reach=rng.uniform(0.12, 0.2), h=h, mat=chrome, style=variant)
 
 
-@register("vessel_sink", parts=("basin",), extra_parts=("rim", "base"),
+@register("vessel_sink", parts=("basin",), extra_parts=("rim", "base", "drain_flange", "drain_cap", "overflow"),
           size_range=(0.3, 0.62), density=1500, variants=("round", "oval", "square"), placement="surface")
 def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.ceramic(rng) if rng.random() < 0.7 else M.stone(rng)
@@ -89,7 +90,31 @@ def vessel_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "oval":
             rim = S.transformed(rim, np.diag([1.0, 0.75, 1.0, 1.0]))
         parts.append(make_part("rim", "rim", rim, mat))
-    return parts
+    return parts + _vessel_drain(variant, h, zb, w / 2 - 0.012 if variant == "square" else None,
+                                 None if variant == "square" else prof)
+
+
+def _vessel_drain(variant: str, h: float, zb: float, half_in: float | None, prof) -> list[Part]:
+    """A vessel sink's chrome pop-up drain in the basin floor (the flange and the cap closed in
+    it) and the overflow cover on the back wall."""
+    chrome = M.solid((0.78, 0.79, 0.8), "metal", 0.15, 0.95)
+    z_floor = zb + 0.012
+    # both sit in the floor's recess, standing under a millimetre proud of it, so the floor stays
+    # the support inside the basin (a cup stands over the drain as on a real one)
+    out = [make_part("drain_flange", "drain_flange",
+                     ring([(0.016, z_floor - 0.002), (0.033, z_floor - 0.002), (0.016, z_floor + 0.0008)], sections=12), chrome),
+           make_part("drain_cap", "drain_cap", S.lathe([(0.0158, z_floor - 0.004), (0.0158, z_floor + 0.0004),
+                                                        (0.013, z_floor + 0.0008)], sections=16), chrome)]
+    zo = zb + h * 0.72
+    if half_in is None:  # the inner wall's radius at that height
+        r_out = float(np.interp(zo - zb, [q[1] for q in prof], [q[0] for q in prof]))
+        y_wall = -(r_out - 0.01) * (0.75 if variant == "oval" else 1.0)
+    else:
+        y_wall = -half_in
+    # the overflow's slotted cover plate on the back wall
+    out.append(make_part("overflow", "overflow", S.cylinder(0.013, 0.003, center=(0, y_wall + 0.0015, zo), axis=(0, 1, 0), sections=10),
+                         chrome))
+    return out
 
 
 @register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow",
@@ -130,7 +155,8 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("utility_sink", parts=("basin", "rim"), extra_parts=("leg", "faucet", "spout", "handle", "base", "body", "drain",
-                                                               "backsplash", "stretcher", "collar", "aerator", "indicator"),
+                                                               "backsplash", "stretcher", "collar", "aerator", "indicator",
+                                                               "leg_cap"),
           size_range=(0.85, 1.2), density=600, variants=("legs", "cabinet", "double"))
 def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     tub = M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "plastic", 0.5) if rng.random() < 0.6 else \
@@ -166,4 +192,5 @@ def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         if p.label == "body":
             p.label = "faucet"
     parts += fp
-    return parts
+    # the plastic levelling feet capping the legs
+    return parts + leg_caps(parts, label="leg_cap", mat=M.solid((0.15, 0.15, 0.16), "plastic", 0.6), height=0.04)

@@ -57,9 +57,9 @@ def _piping_loop(rx: float, ry: float, power: float, z: float, n: int = 20) -> n
                  np.full(n, z)]
 
 
-@register("pillow", parts=("body",), extra_parts=("cover", "piping", "tag", "zipper"), size_range=(0.3, 0.95),
+@register("pillow", parts=("body",), extra_parts=("cover", "piping", "tag", "zipper", "zip_pull"), size_range=(0.3, 0.95),
           density=60, variants=("bed", "square", "bolster"), placement="surface",
-          groups={"body": ("cover", "piping", "tag", "zipper")})
+          groups={"body": ("cover", "piping", "tag", "zipper", "zip_pull")})
 def pillow(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.fabric(rng) if rng.random() < 0.6 else M.solid((0.95, 0.94, 0.92), "fabric", 0.95)
     trim = mat if rng.random() < 0.5 else M.fabric(rng)
@@ -92,9 +92,17 @@ def pillow(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("tag", "tag", S.box((0.004, 0.03, 0.05), center=(length / 2 - end + 0.004, radius * 0.2, radius * 0.9)), tag))
         out.append(make_part("zipper", "zipper", S.box((length * 0.6, 0.004, 0.006), center=(0, -radius + 0.004, radius * 0.75)),
                              M.solid((0.3, 0.3, 0.32), "metal", 0.4, 0.6)))
+        # the slider's pull tab hanging at the zip's closed end
+        out.append(make_part("zip_pull", "zip_pull", S.box((0.008, 0.003, 0.022), center=(length * 0.3 - 0.006, -radius + 0.0035,
+                                                                                          radius * 0.75 - 0.013)),
+                             M.solid((0.3, 0.3, 0.32), "metal", 0.4, 0.6)))
     else:
         out.append(make_part("tag", "tag", S.box((0.03, 0.05, 0.002), center=(w / 2 - 0.04, -d / 2 - 0.02, 0.001 + pr)), tag))
         out.append(make_part("zipper", "zipper", S.box((w * 0.6, 0.006, 0.004), center=(0, -d / 2 + 0.004, pr + 0.004)),
+                             M.solid((0.3, 0.3, 0.32), "metal", 0.4, 0.6)))
+        # the slider's pull tab lying flat at the zip's closed end
+        out.append(make_part("zip_pull", "zip_pull", S.box((0.022, 0.008, 0.003), center=(w * 0.3 - 0.011, -d / 2 + 0.004,
+                                                                                          pr + 0.0075)),
                              M.solid((0.3, 0.3, 0.32), "metal", 0.4, 0.6)))
     return out
 

@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_heights
+from ._rods import leg_caps
 
 
 def _carcass(w: float, d: float, h: float, t: float, *, z0: float = 0.0, back: float = 0.008,
@@ -43,9 +44,10 @@ def _shelves(levels, *, iw: float, y0: float, y1: float, t: float, mat, start: i
             for i, z in enumerate(levels)]
 
 
-def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0) -> list[Part]:
+def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0, cx: float = 0.0) -> list[Part]:
     """Four shelf pins under each shelf (tops at ``levels``): short metal pegs standing out of
-    the side panels' inner faces (at x = +-``iw`` / 2) 3 cm in from the shelf's back and front."""
+    the side panels' inner faces (at x = ``cx`` +- ``iw`` / 2) 3 cm in from the shelf's back and
+    front."""
     pin = M.solid((0.72, 0.7, 0.66), "metal", 0.3, 0.9)
     out = []
     k = start
@@ -53,7 +55,7 @@ def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0) 
         for y in (y0 + 0.03, y1 - 0.03):
             for sx in (-1, 1):
                 out.append(make_part(f"shelf_pin_{k}", "shelf_pin",
-                                     S.cylinder(0.0025, 0.01, center=(sx * (iw / 2 - 0.005), y, z - t - 0.0025), axis=(1, 0, 0),
+                                     S.cylinder(0.0025, 0.01, center=(cx + sx * (iw / 2 - 0.005), y, z - t - 0.0025), axis=(1, 0, 0),
                                                 sections=8), pin))
                 k += 1
     return out
@@ -150,7 +152,7 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
 
 
 @register("tv_stand", parts=("top_panel", "body"),
-          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet"),
+          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin", "ferrule"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
 def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
@@ -195,9 +197,14 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             parts.append(make_part(f"shelf_{b}", "shelf",
                                    S.box((sx1 - sx0, d - 0.03, t), center=((sx0 + sx1) / 2, -0.011, mid)),
                                    mat))
+            # the shelf rests on four pins out of the bay's side panels
+            parts += _pins([mid + t / 2], iw=sx1 - sx0, y0=-0.011 - (d - 0.03) / 2, y1=-0.011 + (d - 0.03) / 2, t=t,
+                           start=4 * b, cx=(sx0 + sx1) / 2)
         # a cable grommet through the back panel of every bay, near its top
         parts.append(make_part(f"grommet_{b}", "grommet", S.cylinder(0.03, 0.012, center=((sx0 + sx1) / 2, -d / 2 + 0.006, h_body - 0.07),
                                                                      axis=(0, 1, 0), sections=12), black()))
+    if variant == "legged":  # brass ferrules on the tapered legs' feet
+        parts += leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9))
     return parts
 
 

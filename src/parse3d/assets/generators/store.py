@@ -173,6 +173,11 @@ def produce_crate(rng: np.random.Generator, variant: str) -> list[Part]:
         h = rng.uniform(0.12, 0.18)
         parts = [make_part("bottom", "bottom", S.box((w - 0.024, d - 0.024, 0.012), center=(0, 0, 0.006)), mat)]
         parts += [make_part(f"slat_{i}", "slat", sh, mat) for i, sh in enumerate(_walls(w, d, h, 0.012))]
+        # square battens in the inside corners, the boards nailed to them
+        b = 0.02
+        parts += [make_part(f"post_{k}", "post", S.box((b, b, h - 0.012), center=(sx * (w / 2 - 0.012 - b / 2), sy * (d / 2 - 0.012 - b / 2),
+                                                                                 0.012 + (h - 0.012) / 2)), mat)
+                  for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
         return parts
     mat = M.solid(M.jitter(rng, [(0.2, 0.5, 0.25), (0.15, 0.2, 0.25), (0.85, 0.45, 0.1)][int(rng.integers(3))], 0.03), "plastic", 0.5)
     t = 0.008

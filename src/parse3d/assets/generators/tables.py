@@ -3,7 +3,7 @@
 Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
 ``handle`` and a ``modesty_panel``. Under the top: a four-leg table's glued ``corner_block`` s
 between its aprons and low ``stretcher`` s joining its legs; a pedestal table's two crossed
-``cleat`` s the column is screwed to; a trestle table's ``corbel`` s bracing each upright under the
+``cleat`` s the column's ``mounting_plate`` is fixed to by four ``screw`` s; a trestle table's ``corbel`` s bracing each upright under the
 top and the ``wedge`` s locking the stretcher's ``tenon`` s.
 """
 
@@ -110,7 +110,17 @@ def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
     cl = r_base * 2.4
     cleats = [make_part(f"cleat_{k}", "cleat", S.box((cl, 0.05, 0.025) if k == 0 else (0.05, cl, 0.025),
                                                      center=(0, 0, h_leg - 0.0125)), leg_mat) for k in range(2)]
-    return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12)), *cleats]
+    # the steel plate on the column's head, under the cleats, and the four lag screws through
+    # its corners into the cleats (one each side of the crossing)
+    steel = M.solid((0.25, 0.25, 0.27), "metal", 0.45, 0.8)
+    pw, pt = r_base * 0.9, 0.006
+    z_plate = h_leg - 0.025 - pt / 2
+    plate = make_part("mounting_plate", "mounting_plate", S.box((pw, pw, pt), center=(0, 0, z_plate)), steel)
+    head = 0.009
+    screws = [make_part(f"screw_{k}", "screw", S.cylinder(head, 0.003, center=(x, y, z_plate - pt / 2 - 0.0015), sections=8),
+                        steel)
+              for k, (x, y) in enumerate([(pw * 0.4, 0), (-pw * 0.4, 0), (0, pw * 0.4), (0, -pw * 0.4)])]
+    return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12)), *cleats, plate, *screws]
 
 
 def _trestle(rng, w, d, h_leg, leg_mat, leg: float) -> list[Part]:
@@ -196,19 +206,19 @@ def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
 
 
-@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
+@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(1.2, 2.2), density=600, variants=("four_leg", "pedestal", "trestle"))
 def dining_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.3, 2.0), d_rng=(0.8, 1.0), h_rng=(0.73, 0.77), round_ok=True)
 
 
-@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
+@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(0.8, 1.4), density=600, variants=("four_leg", "pedestal"))
 def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
 
 
-@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "corbel", "wedge", "tenon"),
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
 def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True,
@@ -225,13 +235,13 @@ def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
+@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(0.6, 1.2), density=650, variants=("four_leg", "pedestal"))
 def tea_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.7, 1.1), d_rng=(0.5, 0.7), h_rng=(0.32, 0.5), round_ok=True)
 
 
-@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "corbel", "wedge", "tenon"),
+@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(2.0, 4.0), density=600, variants=("four_leg", "trestle"))
 def conference_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(2.2, 3.6), d_rng=(1.0, 1.4), h_rng=(0.73, 0.76))

@@ -83,7 +83,7 @@ def plate(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("foot_ring", "foot_ring", foot, mat)]
 
 
-@register("wine_glass", parts=("bowl", "stem", "foot"), size_range=(0.13, 0.26), density=2500,
+@register("wine_glass", parts=("bowl", "stem", "foot"), extra_parts=("rim",), size_range=(0.13, 0.26), density=2500,
           variants=("red", "white", "flute"), placement="surface")
 def wine_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.glass(rng)
@@ -108,8 +108,12 @@ def wine_glass(rng: np.random.Generator, variant: str) -> list[Part]:
                     (prof[0][0] * 0.9, z_bowl)], sections=16)
     foot = S.lathe([(foot_r, 0.0), (foot_r * 0.97, foot_h * 0.6), (foot_r * 0.5, foot_h)],
                    sections=32)
+    # the fire-polished rim: a bead round the mouth, no wider than the bowl below it
+    r_top = prof[-1][0]
+    rim = ring([(r_top - t, z_bowl + h - 0.002), (r_top + 0.0004, z_bowl + h - 0.001), (r_top - t * 0.5, z_bowl + h - 0.0001)],
+               sections=20)
     return [make_part("bowl", "bowl", cup, mat), make_part("stem", "stem", stem, mat),
-            make_part("foot", "foot", foot, mat)]
+            make_part("foot", "foot", foot, mat), make_part("rim", "rim", rim, mat)]
 
 
 @register("vase", parts=("body",), extra_parts=("neck", "lip", "foot_ring"),

@@ -12,7 +12,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._household import ring
+from ._household import ring, shell
 
 
 @register("toiletry_bag", parts=("body",), extra_parts=("zipper", "handle", "pull", "hook", "tab", "logo"),
@@ -49,7 +49,15 @@ def toiletry_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("deodorant", parts=("base", "cap"), extra_parts=("label", "dial"), size_range=(0.1, 0.2),
+def _cap(outer, t: float, z_top: float, *, bottom: float | None = None, scale=(1.0, 1.0)) -> S.Shape:
+    """A hollow cap of revolution, open downwards: ``outer`` is its (r, depth below the top)
+    profile, ``t`` its wall, ``z_top`` the height of its top; ``scale`` stretches it in x and y
+    (an oval stick's cap)."""
+    turn = np.array([[scale[0], 0, 0, 0], [0, -scale[1], 0, 0], [0, 0, -1, z_top], [0, 0, 0, 1]])
+    return shell(outer, t, bottom=bottom, sections=14).apply(turn)
+
+
+@register("deodorant", parts=("base", "cap"), extra_parts=("label", "dial", "stick", "valve_cup", "actuator", "ball", "collar"), size_range=(0.1, 0.2),
           density=900, variants=("stick", "spray", "roll_on"), placement="surface")
 def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
     body = M.plastic(rng) if variant != "spray" else M.metal(rng)
@@ -58,7 +66,7 @@ def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
         w, d, h = rng.uniform(0.055, 0.065), rng.uniform(0.03, 0.038), rng.uniform(0.085, 0.1)
         s = np.diag([w / 2, d / 2, 1.0, 1.0])
         base = S.lathe([(0.9, 0.0), (1.0, 0.004), (1.0, h)], sections=20).apply(s)
-        cap = S.lathe([(1.02, h - 0.02), (1.02, h + 0.02), (0.9, h + 0.028)], sections=20).apply(s)
+        cap = _cap([(0.9, 0.0), (1.02, 0.008), (1.02, 0.048)], 0.06, h + 0.028, bottom=0.003, scale=(w / 2, d / 2))
         # the twist dial under the stick that raises it
         parts.append(make_part("dial", "dial", S.cylinder(0.012, 0.006, center=(0, 0, 0.003), sections=14), body))
         base = base.moved((0, 0, 0.005))
@@ -68,7 +76,7 @@ def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
         r = rng.uniform(0.022, 0.027)
         h = rng.uniform(0.11, 0.15) if variant == "spray" else rng.uniform(0.07, 0.09)
         base = S.lathe([(r * 0.9, 0.0), (r, 0.004), (r, h * 0.85), (r * 0.75, h)], sections=20)
-        cap = S.lathe([(r * 0.8, h - 0.005), (r * 0.85, h + 0.03), (r * 0.6, h + 0.04)], sections=20)
+        cap = _cap([(r * 0.6, 0.0), (r * 0.85, 0.01), (r * 0.8, 0.045)], 0.0015, h + 0.04)
         r_label, zl = r, (h * 0.2, h * 0.7)
     parts.append(make_part("base", "base", base, body))
     parts.append(make_part("cap", "cap", cap, M.plastic(rng)))
@@ -76,4 +84,20 @@ def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("label", "label", ring([(r_label - 0.0005, zl[0]), (r_label + 0.0006, zl[0]),
                                                        (r_label + 0.0006, zl[1]), (r_label - 0.0005, zl[1])], sections=20),
                                M.paper(rng)))
+    # under the cap: the domed stick wound up out of its case; a spray can's crimped valve cup
+    # and the actuator pressed to spray; a roll-on's ball held in its snap-on collar
+    if variant == "stick":
+        top = h + 0.005
+        stick = S.lathe([(0.86, top - 0.004), (0.86, top + 0.006), (0.5, top + 0.014)], sections=16).apply(s)
+        parts.append(make_part("stick", "stick", stick, M.solid((0.96, 0.96, 0.94), "plastic", 0.6)))
+    elif variant == "spray":
+        tin = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
+        parts.append(make_part("valve_cup", "valve_cup", S.lathe([(r * 0.5, h - 0.002), (r * 0.5, h + 0.004), (r * 0.4, h + 0.006)],
+                                                                 sections=16), tin))
+        parts.append(make_part("actuator", "actuator", S.cylinder(r * 0.3, 0.012, center=(0, 0, h + 0.012), sections=12),
+                               M.plastic(rng)))
+    else:
+        parts.append(make_part("collar", "collar", ring([(r * 0.62, h - 0.002), (r * 0.78, h - 0.002), (r * 0.62, h + 0.008)], sections=16), M.plastic(rng)))
+        parts.append(make_part("ball", "ball", S.ellipsoid((r * 0.64, r * 0.64, r * 0.64), center=(0, 0, h + 0.006),
+                                                           subdivisions=1), Material((0.9, 0.92, 0.95, 0.6), 0.1, 0.0, "glass")))
     return parts

@@ -14,10 +14,11 @@ from ..model import Part, make_part
 from ..registry import register
 from ._casework import black
 from ._kit import legs4
+from ._rods import leg_caps
 
 
 @register("suitcase", parts=("shell",), extra_parts=("handle", "wheel", "zipper", "corner", "trolley_handle", "pull", "lock", "tag",
-                                                     "foot", "side_handle"),
+                                                     "foot", "side_handle", "latch"),
           size_range=(0.45, 0.95), density=180, variants=("spinner", "two_wheel", "hard_trunk"), placement="floor")
 def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.36, 0.5), rng.uniform(0.2, 0.3), rng.uniform(0.52, 0.78)
@@ -42,6 +43,9 @@ def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"corner_{i}", "corner", S.box((0.05, 0.05, h), center=(sx * (w / 2 - 0.02), sy * (d / 2 - 0.02), h / 2)),
                                    M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)))
+        # two draw latches across the lid's seam on the front, no prouder than the corners
+        parts += [make_part(f"latch_{k}", "latch", S.box((0.05, 0.008, 0.07), center=(sx * w * 0.3, d / 2 + 0.001, h * 0.62)),
+                            M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)) for k, sx in enumerate((-1, 1))]
     top = wz + h
     # the zip's two pulls meeting at the combination lock, the name tag on the top handle's
     # side and the carry handle on the side
@@ -65,7 +69,7 @@ def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher"), size_range=(0.5, 0.8), density=600,
+@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher", "pivot", "leg_cap"), size_range=(0.5, 0.8), density=600,
           variants=("folding", "bench"))
 def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.6, 0.75), rng.uniform(0.38, 0.45), rng.uniform(0.5, 0.58)
@@ -92,10 +96,18 @@ def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(3):
         x = (k - 1) * w * 0.3
         parts.append(make_part(f"strap_{k}", "strap", S.box((0.05, d - 0.01, 0.004), center=(x, 0, h + 0.002)), strap))
+    if variant == "folding":  # the bolt each side where the crossed legs pivot
+        steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+        for i, sx in enumerate((-1, 1)):
+            x = sx * (w / 2 - 0.05) + sx * 0.015
+            parts.append(make_part(f"pivot_{i}", "pivot", S.cylinder(0.007, 0.03 + 2 * r + 0.006, center=(x, 0, h / 2), axis=(1, 0, 0),
+                                                                     sections=8), steel))
+    else:  # rubber caps on the square feet
+        parts += leg_caps(parts, label="leg_cap", mat=M.solid((0.08, 0.08, 0.08), "rubber", 0.8))
     return parts
 
 
-@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button"),
+@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button", "ferrule"),
           size_range=(0.8, 1.7), density=400, variants=("upholstered", "slatted_shelf", "tufted"))
 def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.9, 1.6), rng.uniform(0.35, 0.48), rng.uniform(0.42, 0.5)
@@ -122,7 +134,8 @@ def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(int(rng.integers(4, 8))):
             x = -w / 2 + w * (k + 0.5) / 7 if k < 7 else 0.0
             parts.append(make_part(f"button_{k}", "button", S.cylinder(0.01, 0.008, center=(x, 0, h + ch - 0.002), sections=8), cloth))
-    return parts
+    # brass ferrules capping the legs' feet
+    return parts + leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), height=0.04)
 
 
 @register("backpack", parts=("body",), extra_parts=("front_pocket", "strap", "top_handle", "flap", "zipper", "pull", "side_pocket",
@@ -201,6 +214,13 @@ def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
         hands = [(sx * w * 0.25, sy * d / 2 * 0.5) for sy in ((-1, 1) if variant == "tote" else (0,)) for sx in (-1, 1)]
         parts += [make_part(f"ring_{k}", "ring", S.cylinder(0.011, 0.006, center=(x, y, h + 0.006), axis=(1, 0, 0), sections=10), metal)
                   for k, (x, y) in enumerate(hands)]
+    else:  # the D-ring on the side the wrist strap is clipped to
+        parts.append(make_part("ring", "ring", S.cylinder(0.008, 0.005, center=(w / 2 * 0.9, 0, h * 0.6), axis=(1, 0, 0), sections=10),
+                               metal))
+    if variant == "satchel":  # it stands on four metal feet, like a tote
+        parts += [make_part(f"foot_{i}", "foot", S.cylinder(0.006, 0.004, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.02), -0.002),
+                                                            sections=8), metal)
+                  for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
     return parts
 
 

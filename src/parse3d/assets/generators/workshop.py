@@ -15,6 +15,7 @@ from ..registry import register
 from ._casework import drawer_parts
 from ._detail_b import each, studs
 from ._kit import legs4, rot
+from ._rods import leg_caps
 
 
 @register("ladder", parts=("rail", "step"), extra_parts=("top_cap", "rear_leg", "spreader", "foot"),
@@ -59,6 +60,17 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
         y = spread / 2 * (1 - z / h)
         out.append(make_part(f"step_{i}", "step", S.box((w - 0.06, 0.09, 0.025), center=(0, y - 0.01, z)),
                              metal))
+    # non-slip rubber shoes sleeving the bottom of each rail and rear leg (set a hair up the
+    # leg, so the ladder still stands on its legs' ends)
+    rubber = M.solid((0.1, 0.1, 0.1), "rubber")
+    k = 0
+    for sx in (-1, 1):
+        for R, yc, size in ((tilt_f, spread / 4, (0.036, 0.076)), (tilt_b, -spread / 4, (0.036, 0.036))):
+            u = R @ np.array([0.0, 0.0, 1.0])
+            c = np.array([sx * (w / 2 - 0.015), yc, h / 2]) - u * (length / 2 - 0.032)
+            c[0] = sx * (w / 2 - size[0] / 2)  # flush with the ladder's side
+            out.append(make_part(f"foot_{k}", "foot", S.box((*size, 0.06), R=R, center=tuple(c)), rubber))
+            k += 1
     out.append(make_part("top_cap", "top_cap", S.box((w, 0.16, 0.05), center=(0, 0, h - 0.025),
                                                      bevel=0.005), M.plastic(rng)))
     out.append(make_part("spreader", "spreader", S.box((0.02, spread * 0.55, 0.01),
@@ -68,7 +80,7 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("workbench", parts=("worktop", "leg"),
           extra_parts=("shelf", "drawer", "drawer_box", "handle", "vise", "back_panel", "stretcher", "vise_jaw",
-                       "vise_screw", "vise_handle", "screw"),
+                       "vise_screw", "vise_handle", "screw", "leg_cap"),
           size_range=(1.1, 2.1), density=650, variants=("plain", "drawers", "pegboard_back"))
 def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.2, 2.0), rng.uniform(0.6, 0.8), rng.uniform(0.86, 0.95)
@@ -86,6 +98,9 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     # the side stretchers joining front and back legs under the top
     out += [make_part(f"stretcher_{k}", "stretcher", S.box((0.04, d - 0.2, 0.06), center=(sx * (w / 2 - 0.065), 0, h - t - 0.1)),
                       wood) for k, sx in enumerate((-1, 1), start=1)]
+    # the low rails along the front and back that carry the shelf's long edges
+    out += [make_part(f"stretcher_{k}", "stretcher", S.box((w - 0.14, 0.04, 0.05), center=(0, sy * (d / 2 - 0.07), zs - 0.035)),
+                      wood) for k, sy in enumerate((-1, 1), start=3)]
     if variant == "drawers":
         dw = min(0.5, w * 0.3)
         x1 = w / 2 - 0.1
@@ -111,7 +126,8 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         out.append(make_part("back_panel", "back_panel",
                              S.box((w, 0.012, ph), center=(0, -d / 2 + 0.006, h + ph / 2)),
                              M.solid(M.jitter(rng, (0.72, 0.58, 0.4), 0.03), "wood", 0.8)))
-    return out
+    # rubber caps on the legs' feet
+    return out + leg_caps(out, label="leg_cap", mat=M.solid((0.08, 0.08, 0.08), "rubber", 0.8))
 
 
 @register("pegboard", parts=("board", "hook"), extra_parts=("frame", "shelf", "bin", "screw"),
