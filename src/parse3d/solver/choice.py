@@ -568,7 +568,8 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
     if keep is None or attempt > 0:
         # longer than a container's floor: shrunk to lie in it, within its size range
         scale = floor_fit(st, support_edge, asset, scale, axis)
-        scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
+        if span_need(st, support_edge) <= 0:  # not resting across several parts
+            scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
     reach = span_need(st, support_edge)
     if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
         # too short to rest across the parts it must span (a keyboard on a stand's two
