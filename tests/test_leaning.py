@@ -192,3 +192,21 @@ def test_three_cushions_lean_side_by_side_along_a_bench_back(seed):
     for i in range(3):
         for j in range(i + 1, 3):
             assert fps[i].intersection(fps[j]).area <= 0.05 * min(fps[i].area, fps[j].area)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_a_score_stands_on_a_music_stand_ledge_leaning_flat_on_its_desk(seed):
+    """Sheet music ON a music stand's ledge (named by its cover, or as a whole), LEANING_AGAINST
+    the stand's desk: too big to lie on the 5 cm ledge, it stands on its front edge there and
+    leans flat on the desk at the desk's own angle; both relations hold after settling, none is
+    relaxed, nothing fell."""
+    scene = solved("scores_on_music_stands", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    for k in ("a", "b"):
+        o = scene.objects[f"score_{k}"]
+        assert o.rests_on == "front" and not o.flags, (o.id, o.rests_on, o.flags)
+        mine = [c for c in scene.relations if c.child.startswith(f"score_{k}")]
+        assert len(mine) == 2 and all(c.holds_settled is True for c in mine), \
+            [(c.relation, c.child, c.residual_settled) for c in mine]
+        lean = next(c for c in mine if c.relation == "LEANING_AGAINST")
+        assert 10.0 <= lean.residual_settled["angle_deg"] <= 31.0, lean.residual_settled

@@ -19,12 +19,13 @@ import shapely
 
 from ..assets.model import Asset
 from ..measure.checks import EPS
+from ..measure.reach import stands_to_lean
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
 from .collision import Body
 from .config import Fail
-from .geometry import asset_geometry
-from .state import SolveState, plane_coords
+from .geometry import asset_geometry, part_points
+from .state import SolveState, parts_for, plane_coords
 from .support import Support
 
 __all__ = ["place_leaning", "may_lean", "THIN", "LEAN_RANGE_DEG"]
@@ -48,13 +49,27 @@ _LABELS = {0: ("left", "right"), 1: ("back", "front"), 2: ("bottom", "top")}
 def may_lean(st: SolveState, asset: Asset, scale: float, sup: Support, edge: Edge) -> bool:
     """Whether ``place_leaning`` applies: ON a part of an object, a thin child, and a support
     narrower than the child lying flat."""
-    if edge.relation != "ON" or sup.owner == "room" or edge.child.part is not None:
+    if edge.relation != "ON" or sup.owner == "room":
         return False
     ext = np.sort(np.ptp(asset_geometry(asset).hull, axis=0) * scale)
     if ext[0] > THIN * ext[1]:
         return False
+    if edge.child.part is not None and not _spans(asset, edge):
+        return False
     x0, y0, x1, y1 = sup.region.bounds
     return min(x1 - x0, y1 - y0) < ext[1]
+
+
+def _spans(asset: Asset, edge: Edge) -> bool:
+    """Whether the child's part named by ``edge`` spans the child's two larger extents (a
+    booklet's cover, not its staple): standing on its edge, the whole child stands on it."""
+    parts = parts_for(asset, edge.child)
+    if not parts:
+        return False
+    ext = np.ptp(asset_geometry(asset).hull, axis=0)
+    own = np.ptp(part_points(parts), axis=0)
+    big = np.argsort(ext)[1:]
+    return bool(np.all(own[big] >= 0.8 * ext[big]))
 
 
 def _backing(st: SolveState, sup: Support, height: float):
@@ -94,23 +109,29 @@ def _backing(st: SolveState, sup: Support, height: float):
     return None if best is None else best[1:]
 
 
-def _lean_rotation(asset: Asset, n: np.ndarray, up: np.ndarray, portrait: bool):
+def _lean_rotation(asset: Asset, n: np.ndarray, up: np.ndarray, portrait: bool | None):
     """Rotation taking the asset's thinnest axis (its positive side) to ``n`` and its longer
     (``portrait``) or shorter in-plane axis to the board's up direction; also returns the
-    label of the child's surface that then faces down."""
+    label of the child's surface that then faces down. ``portrait`` None: a flat child
+    standing on its front edge, its back up and its bottom on the board, as a flat leaner
+    stands (:func:`parse3d.measure.reach.stands_to_lean`)."""
     ext = np.ptp(asset_geometry(asset).hull, axis=0)
     order = np.argsort(ext)
     thin, mid, long_ = (int(k) for k in order)
-    a_up, a_along = (long_, mid) if portrait else (mid, long_)
+    if portrait is None:
+        thin, a_up, a_along, sign = 2, 1, 0, -1.0
+    else:
+        a_up, a_along = (long_, mid) if portrait else (mid, long_)
+        sign = 1.0
     d_up = up - (up @ n) * n
     d_up /= np.linalg.norm(d_up)
     R = np.zeros((3, 3))
     R[:, thin] = n
-    R[:, a_up] = d_up
+    R[:, a_up] = sign * d_up
     R[:, a_along] = np.cross(d_up, n)
     if np.linalg.det(R) < 0:
         R[:, a_along] *= -1
-    return R, _LABELS[a_up][0]
+    return R, _LABELS[a_up][0 if sign > 0 else 1]
 
 
 def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
@@ -130,7 +151,9 @@ def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Sup
     part, n, off = back
     last = "no position along the ledge"
     trials = 0
-    for portrait in (True, False):
+    # a flat child the writer leans by its face stands on its front edge, as the checks read it
+    stood = stands_to_lean(asset, st.pag, oid)
+    for portrait in ((None,) if stood else (True, False)):
         R, rests = _lean_rotation(asset, n, s.normal, portrait)
         Y = hull @ R.T
         c = float(n @ s.normal)
