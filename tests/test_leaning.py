@@ -210,3 +210,20 @@ def test_a_score_stands_on_a_music_stand_ledge_leaning_flat_on_its_desk(seed):
             [(c.relation, c.child, c.residual_settled) for c in mine]
         lean = next(c for c in mine if c.relation == "LEANING_AGAINST")
         assert 10.0 <= lean.residual_settled["angle_deg"] <= 31.0, lean.residual_settled
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_a_lean_that_would_tip_a_carried_object_off_level_is_relaxed(seed):
+    """An ironing board LEANING_AGAINST the wall by 8-16 degrees with an iron ON its iron rest:
+    leaning would turn the rest off level, and the iron's support is hard, so the board stands
+    upright, its lean recorded relaxed with the reason; the iron is placed and stays ON the rest
+    after settling; nothing fell."""
+    scene = solved("iron_on_a_leaning_board", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not [o.id for o in scene.objects.values() if o.flags], \
+        {o.id: o.flags for o in scene.objects.values() if o.flags}
+    on = next(c for c in scene.relations if c.child.startswith("iron:"))
+    assert on.holds_settled is True, on.residual_settled
+    [lean] = [c for c in scene.relations if c.relation == "LEANING_AGAINST"]
+    assert lean.holds_settled is False and lean.relaxed, lean
+    assert "off level" in lean.relaxed["blocked"] and "iron stands ON it" in lean.relaxed["blocked"]
