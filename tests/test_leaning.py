@@ -227,3 +227,23 @@ def test_a_lean_that_would_tip_a_carried_object_off_level_is_relaxed(seed):
     [lean] = [c for c in scene.relations if c.relation == "LEANING_AGAINST"]
     assert lean.holds_settled is False and lean.relaxed, lean
     assert "off level" in lean.relaxed["blocked"] and "iron stands ON it" in lean.relaxed["blocked"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_sheet_music_on_a_piano_music_rest_leans_on_it(seed):
+    """Sheet music ON a piano's music rest (its top a 1 cm edge), once with a LEANING_AGAINST
+    its front at 10-20 degrees: each stands on the piano below the rest, leaning on the rest;
+    ON (and the lean) hold after settling, nothing fell."""
+    scene = solved("scores_on_piano_rests", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not [o.id for o in scene.objects.values() if o.flags], \
+        {o.id: o.flags for o in scene.objects.values() if o.flags}
+    for k in ("a", "b"):
+        o = scene.objects[f"score_{k}"]
+        assert o.rests_on, o.id
+        mine = [c for c in scene.relations if c.child.startswith(f"score_{k}")]
+        assert len(mine) == (1 if k == "a" else 2)
+        assert all(c.holds_settled is True for c in mine), \
+            [(c.relation, c.child, c.residual_settled) for c in mine]
+    lean = next(c for c in scene.relations if c.relation == "LEANING_AGAINST")
+    assert 9.0 <= lean.residual_settled["angle_deg"] <= 21.0, lean.residual_settled
