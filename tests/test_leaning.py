@@ -192,3 +192,58 @@ def test_three_cushions_lean_side_by_side_along_a_bench_back(seed):
     for i in range(3):
         for j in range(i + 1, 3):
             assert fps[i].intersection(fps[j]).area <= 0.05 * min(fps[i].area, fps[j].area)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_a_score_stands_on_a_music_stand_ledge_leaning_flat_on_its_desk(seed):
+    """Sheet music ON a music stand's ledge (named by its cover, or as a whole), LEANING_AGAINST
+    the stand's desk: too big to lie on the 5 cm ledge, it stands on its front edge there and
+    leans flat on the desk at the desk's own angle; both relations hold after settling, none is
+    relaxed, nothing fell."""
+    scene = solved("scores_on_music_stands", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    for k in ("a", "b"):
+        o = scene.objects[f"score_{k}"]
+        assert o.rests_on == "front" and not o.flags, (o.id, o.rests_on, o.flags)
+        mine = [c for c in scene.relations if c.child.startswith(f"score_{k}")]
+        assert len(mine) == 2 and all(c.holds_settled is True for c in mine), \
+            [(c.relation, c.child, c.residual_settled) for c in mine]
+        lean = next(c for c in mine if c.relation == "LEANING_AGAINST")
+        assert 10.0 <= lean.residual_settled["angle_deg"] <= 31.0, lean.residual_settled
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_a_lean_that_would_tip_a_carried_object_off_level_is_relaxed(seed):
+    """An ironing board LEANING_AGAINST the wall by 8-16 degrees with an iron ON its iron rest:
+    leaning would turn the rest off level, and the iron's support is hard, so the board stands
+    upright, its lean recorded relaxed with the reason; the iron is placed and stays ON the rest
+    after settling; nothing fell."""
+    scene = solved("iron_on_a_leaning_board", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not [o.id for o in scene.objects.values() if o.flags], \
+        {o.id: o.flags for o in scene.objects.values() if o.flags}
+    on = next(c for c in scene.relations if c.child.startswith("iron:"))
+    assert on.holds_settled is True, on.residual_settled
+    [lean] = [c for c in scene.relations if c.relation == "LEANING_AGAINST"]
+    assert lean.holds_settled is False and lean.relaxed, lean
+    assert "off level" in lean.relaxed["blocked"] and "iron stands ON it" in lean.relaxed["blocked"]
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_sheet_music_on_a_piano_music_rest_leans_on_it(seed):
+    """Sheet music ON a piano's music rest (its top a 1 cm edge), once with a LEANING_AGAINST
+    its front at 10-20 degrees: each stands on the piano below the rest, leaning on the rest;
+    ON (and the lean) hold after settling, nothing fell."""
+    scene = solved("scores_on_piano_rests", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not [o.id for o in scene.objects.values() if o.flags], \
+        {o.id: o.flags for o in scene.objects.values() if o.flags}
+    for k in ("a", "b"):
+        o = scene.objects[f"score_{k}"]
+        assert o.rests_on, o.id
+        mine = [c for c in scene.relations if c.child.startswith(f"score_{k}")]
+        assert len(mine) == (1 if k == "a" else 2)
+        assert all(c.holds_settled is True for c in mine), \
+            [(c.relation, c.child, c.residual_settled) for c in mine]
+    lean = next(c for c in scene.relations if c.relation == "LEANING_AGAINST")
+    assert 9.0 <= lean.residual_settled["angle_deg"] <= 21.0, lean.residual_settled

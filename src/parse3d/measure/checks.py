@@ -732,6 +732,21 @@ def _refined_drop(d: float, child: PlacedObject, other: PlacedObject, settled,
                       other.transform(settled), down, d)
 
 
+def _leans_on_board(ctx: CheckContext, sB: Surface, base: np.ndarray) -> bool:
+    """A thin child standing on a ledge (``rests_on``) that is ON an upright board (a piano's
+    music rest, whose top is a 1 cm edge): it leans on the board, its base below the board's
+    top standing on the board's owner there. Holds when its base is below the top and it
+    touches the board (within contact distance)."""
+    if not ctx.child.rests_on or ctx.parent is None or ctx.edge.parent.part is None \
+            or float(_plane_dist(base[None], sB)[0]) > -DIST_TOL:
+        return False
+    pp = select_parts(ctx.parent, ctx.edge.parent)
+    d = pieces_distance(piece_data(ctx.child.asset, ctx.child.asset.parts),
+                        ctx.child.transform(ctx.settled), piece_data(ctx.parent.asset, pp),
+                        ctx.parent.transform(ctx.settled))
+    return d <= DIST_TOL
+
+
 def _resolve_or_fail(ctx: CheckContext) -> Surface | Check:
     sB = _target_surface(ctx)
     return Check(False, {}, sB) if isinstance(sB, str) else sB
@@ -756,7 +771,7 @@ def _check_on(ctx: CheckContext) -> Check:
         h = _plane_dist(pts, sB)
         com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
     inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3]) \
-        or _in_hollow(ctx, sB, com[:3])
+        or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")

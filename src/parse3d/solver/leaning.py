@@ -84,6 +84,7 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     if _lying_roller(asset, R):
         raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: {asset.asset_id} lies on its round "
                    f"side and would roll off what it leans on", intrinsic=True)
+    _keeps_level(st, asset, R, k, e)
     if e.parent.is_room_element or abs(float(sup.surface.normal[2])) < 0.9:
         return fallback()
     faces = _faces(st, e)
@@ -148,6 +149,33 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     # not intrinsic, so the search may re-place the parent
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {ranges[-1][0]:g}-"
                f"{ranges[-1][1]:g} deg {why}")
+
+
+#: Degrees from up within which a surface still holds what is ON it (the support test's).
+LEVEL_DEG = 5.0
+
+
+def _keeps_level(st: SolveState, asset: Asset, R: np.ndarray, k: np.ndarray, e: Edge) -> None:
+    """Fail when leaning by the least tilt ``e`` allows would turn a surface of the child that
+    something else is ON away from up (an ironing board leaning folded against the wall with an
+    iron ON its iron rest): the support of what it carries is hard, its own lean is not, so the
+    lean is relaxed and the child stands upright."""
+    lo = float(e.param("angle_deg")[0])
+    if lo <= LEVEL_DEG:
+        return
+    Rt = axis_angle(k, np.deg2rad(lo)) @ R
+    for x in st.pag.relations:
+        if x.relation != "ON" or x.parent.object != e.child.object:
+            continue
+        label = x.parent.surface or "top"
+        parts = parts_for(asset, x.parent) if x.parent.part is not None else list(asset.parts)
+        tops = [Rt @ np.asarray(p.surfaces[label].normal, float) for p in parts
+                if label in p.surfaces]
+        if tops and max(float(n[2]) for n in tops) < np.cos(np.deg2rad(LEVEL_DEG)):
+            raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: leaning by {lo:g} deg or more "
+                       f"would tip {x.parent} off level, and {x.child.object} stands ON it "
+                       f"(let {e.child.object} stand upright, or lean {x.child.object} too)",
+                       intrinsic=True)
 
 
 def _parts_above(st: SolveState, e: Edge, face) -> list[tuple[str, float, float, float]]:

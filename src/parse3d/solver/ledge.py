@@ -19,12 +19,13 @@ import shapely
 
 from ..assets.model import Asset
 from ..measure.checks import EPS
+from ..measure.reach import stands_to_lean
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
 from .collision import Body
 from .config import Fail
-from .geometry import asset_geometry
-from .state import SolveState, plane_coords
+from .geometry import asset_geometry, part_points
+from .state import SolveState, parts_for, plane_coords
 from .support import Support
 
 __all__ = ["place_leaning", "may_lean", "THIN", "LEAN_RANGE_DEG"]
@@ -41,6 +42,8 @@ BACKING_REACH = 0.03
 #: Positions along the ledge tried per asset.
 LEAN_TRIALS = 8
 
+_UP = np.array([0.0, 0.0, 1.0])
+
 #: Asset axis -> surface label of its negative and positive side.
 _LABELS = {0: ("left", "right"), 1: ("back", "front"), 2: ("bottom", "top")}
 
@@ -48,13 +51,27 @@ _LABELS = {0: ("left", "right"), 1: ("back", "front"), 2: ("bottom", "top")}
 def may_lean(st: SolveState, asset: Asset, scale: float, sup: Support, edge: Edge) -> bool:
     """Whether ``place_leaning`` applies: ON a part of an object, a thin child, and a support
     narrower than the child lying flat."""
-    if edge.relation != "ON" or sup.owner == "room" or edge.child.part is not None:
+    if edge.relation != "ON" or sup.owner == "room":
         return False
     ext = np.sort(np.ptp(asset_geometry(asset).hull, axis=0) * scale)
     if ext[0] > THIN * ext[1]:
         return False
+    if edge.child.part is not None and not _spans(asset, edge):
+        return False
     x0, y0, x1, y1 = sup.region.bounds
     return min(x1 - x0, y1 - y0) < ext[1]
+
+
+def _spans(asset: Asset, edge: Edge) -> bool:
+    """Whether the child's part named by ``edge`` spans the child's two larger extents (a
+    booklet's cover, not its staple): standing on its edge, the whole child stands on it."""
+    parts = parts_for(asset, edge.child)
+    if not parts:
+        return False
+    ext = np.ptp(asset_geometry(asset).hull, axis=0)
+    own = np.ptp(part_points(parts), axis=0)
+    big = np.argsort(ext)[1:]
+    return bool(np.all(own[big] >= 0.8 * ext[big]))
 
 
 def _backing(st: SolveState, sup: Support, height: float):
@@ -94,23 +111,29 @@ def _backing(st: SolveState, sup: Support, height: float):
     return None if best is None else best[1:]
 
 
-def _lean_rotation(asset: Asset, n: np.ndarray, up: np.ndarray, portrait: bool):
+def _lean_rotation(asset: Asset, n: np.ndarray, up: np.ndarray, portrait: bool | None):
     """Rotation taking the asset's thinnest axis (its positive side) to ``n`` and its longer
     (``portrait``) or shorter in-plane axis to the board's up direction; also returns the
-    label of the child's surface that then faces down."""
+    label of the child's surface that then faces down. ``portrait`` None: a flat child
+    standing on its front edge, its back up and its bottom on the board, as a flat leaner
+    stands (:func:`parse3d.measure.reach.stands_to_lean`)."""
     ext = np.ptp(asset_geometry(asset).hull, axis=0)
     order = np.argsort(ext)
     thin, mid, long_ = (int(k) for k in order)
-    a_up, a_along = (long_, mid) if portrait else (mid, long_)
+    if portrait is None:
+        thin, a_up, a_along, sign = 2, 1, 0, -1.0
+    else:
+        a_up, a_along = (long_, mid) if portrait else (mid, long_)
+        sign = 1.0
     d_up = up - (up @ n) * n
     d_up /= np.linalg.norm(d_up)
     R = np.zeros((3, 3))
     R[:, thin] = n
-    R[:, a_up] = d_up
+    R[:, a_up] = sign * d_up
     R[:, a_along] = np.cross(d_up, n)
     if np.linalg.det(R) < 0:
         R[:, a_along] *= -1
-    return R, _LABELS[a_up][0]
+    return R, _LABELS[a_up][0 if sign > 0 else 1]
 
 
 def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
@@ -124,13 +147,17 @@ def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Sup
     hull = asset_geometry(asset).hull * scale
     ext = np.sort(np.ptp(hull, axis=0))
     back = _backing(st, sup, 0.5 * ext[2])
+    if back is None and (board := _board_itself(st, sup)) is not None:
+        return _lean_on_board(st, oid, asset, scale, sup, others, body, rng, validate, board)
     if back is None:
         raise Fail(f"no free space on {sup.name}: {oid} does not fit lying flat, and "
                    f"{sup.owner} has no board behind the ledge to lean it on", intrinsic=True)
     part, n, off = back
     last = "no position along the ledge"
     trials = 0
-    for portrait in (True, False):
+    # a flat child the writer leans by its face stands on its front edge, as the checks read it
+    stood = stands_to_lean(asset, st.pag, oid)
+    for portrait in ((None,) if stood else (True, False)):
         R, rests = _lean_rotation(asset, n, s.normal, portrait)
         Y = hull @ R.T
         c = float(n @ s.normal)
@@ -186,3 +213,120 @@ def accept(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray, 
     if hit is not None:
         return None, f"collides with {hit}"
     return checks, ""
+
+
+#: Tilt (degrees from vertical) of a thin child leaning on an upright board it is ON, when
+#: no ``LEANING_AGAINST`` says it.
+BOARD_LEAN_DEG = (8.0, 20.0)
+
+
+def _board_itself(st: SolveState, sup: Support):
+    """``(front normal (3,), top front edge point (3,), width axis (3,), width)`` when the
+    support part is itself an upright flat board whose top is narrower than a thin child (a
+    piano's music rest): the child leans on its front face, standing on what lies below; None
+    otherwise. The front is the face away from the rest of the owner."""
+    mine = [pts for name, pts in st.world_pieces(sup.owner) if name == sup.part]
+    rest = [pts for name, pts in st.world_pieces(sup.owner) if name != sup.part]
+    if not mine or not rest:
+        return None
+    P = np.vstack(mine)
+    c = P.mean(axis=0)
+    _, sv, vt = np.linalg.svd(P - c, full_matrices=False)
+    if sv[2] > 0.2 * sv[1]:
+        return None
+    n = vt[2] / np.linalg.norm(vt[2])
+    if abs(float(n[2])) > np.sin(np.deg2rad(LEAN_RANGE_DEG[1])):
+        return None  # lying, not upright
+    Q = np.vstack(rest)
+    if (c - 0.5 * (Q.min(axis=0) + Q.max(axis=0))) @ n < 0:
+        n = -n  # away from the middle of the rest of the owner
+    t = np.cross(_UP, n)
+    t /= np.linalg.norm(t)
+    h = P[:, 2]
+    edge = P[h >= h.max() - 2e-3]
+    e = edge[int(np.argmax(edge @ n))]
+    a = P @ t
+    e = e + (0.5 * float(a.min() + a.max()) - float(e @ t)) * t  # at the middle of its width
+    return n, e, t, float(np.ptp(a))
+
+
+def _lean_on_board(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
+                   others: list[Edge], body: Body, rng: np.random.Generator, validate,
+                   board) -> tuple:
+    """Lean the thin child on the support board (on its top front edge or, lower, its face),
+    tilted back by the ``LEANING_AGAINST`` range written on that board (else
+    :data:`BOARD_LEAN_DEG`), standing on what of the owner lies below in front of it (a
+    piano's key bed under its music rest). Returns as :func:`place_leaning`."""
+    from .nesting import pieces_drop
+
+    n, edge, t, width = board
+    lo, hi = BOARD_LEAN_DEG
+    for e in others:
+        if e.relation == "LEANING_AGAINST" and e.parent.object == sup.owner:
+            lo, hi = (float(x) for x in e.param("angle_deg"))
+    parent = st.scene.objects[sup.owner]
+    floor = min(float(pts[:, 2].min()) for _, pts in st.world_pieces(sup.owner))
+    hull = asset_geometry(asset).hull * scale
+    stood = stands_to_lean(asset, st.pag, oid)
+    trials, last = 0, "no tilt tried"
+    for th in rng.permutation(np.deg2rad(np.linspace(lo, hi, 5))):
+        nt = np.cos(th) * n + np.sin(th) * _UP
+        for portrait in ((None,) if stood else (True, False)):
+            R, rests = _lean_rotation(asset, nt, _UP, portrait)
+            Y = hull @ R.T
+            span = float(np.ptp(Y @ t))
+            room = width - span
+            g = 0.0 if room <= 0 else rng.uniform(-0.4, 0.4) * room
+            # its lowest point at the edge's height, far enough in front of the board that
+            # nothing of it reaches the owner; then dropped onto what is below and slid back
+            # onto the board, in turns (its foot settles where it can lean)
+            t0 = edge - Y.mean(axis=0) + g * t
+            t0 = t0 + (float(edge @ n) + 0.01 - float(np.min((Y + t0) @ n))) * n
+            t0[2] += float(edge[2]) + 0.01 - float(np.min((Y + t0)[:, 2]))
+            T = np.eye(4)
+            T[:3, :3] = R * scale
+            reach = float(edge[2]) + 0.01 - floor
+            trials += 1
+            tt, fell = t0, False
+            for _ in range(4):
+                T[:3, 3] = tt
+                got = _stepped_drop(pieces_drop, asset, T, parent, reach)
+                if got >= reach:
+                    fell = True
+                    break
+                tt = tt - max(got - EPS, 0.0) * _UP
+                T[:3, 3] = tt
+                got = _stepped_drop(pieces_drop, asset, T, parent, 0.3, -n)
+                tt = tt - max(got - EPS, 0.0) * n
+            if fell:
+                last = f"nothing of {sup.owner} below {sup.name} to stand on"
+                continue
+            T[:3, 3] = tt
+            if pieces_drop(asset, T, parent, -_UP, 2e-3, tol=5e-4) >= 2e-3:
+                last = f"{oid} does not come to rest leaning on {sup.owner}:{sup.part}"
+                continue
+            if float(np.max((Y + tt)[:, 2])) < float(edge[2]):
+                # its top edge on the board's face would slip in settling: over its top edge
+                last = f"{oid} standing there is lower than the top of {sup.owner}:{sup.part}"
+                continue
+            checks, last = accept(st, oid, asset, scale, R, tt, rests, sup, body, validate)
+            if checks is not None:
+                return (R, tt, sup, body, rests), trials, checks, None
+    raise Fail(f"no valid pose leaning on {sup.owner}:{sup.part} ({trials} trials, last: "
+               f"{last})")
+
+
+def _stepped_drop(pieces_drop, asset: Asset, T: np.ndarray, parent, reach: float,
+                  d: np.ndarray = -_UP, step: float = 0.02) -> float:
+    """How far the child can move along ``d`` before touching ``parent``, in steps of
+    ``step`` metres so that it does not pass through a thin part; ``reach`` when nothing is
+    met."""
+    done = 0.0
+    while done < reach:
+        Ts = np.array(T, float)
+        Ts[:3, 3] += done * d
+        got = pieces_drop(asset, Ts, parent, d, min(step, reach - done), tol=5e-4)
+        if got < min(step, reach - done):
+            return done + got
+        done += step
+    return reach
