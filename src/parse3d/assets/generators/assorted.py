@@ -193,8 +193,15 @@ def socks(rng: np.random.Generator, variant: str) -> list[Part]:
     fab = M.solid(M.jitter(rng, (0.5, 0.5, 0.5), 0.35)[:3], "fabric", 0.9)
     if variant == "rolled":
         r = rng.uniform(0.035, 0.045)
+        # the outer sock's cuff turned back over the ball; its heel and toe show on the ball,
+        # the inner sock's toe in the cuff's mouth
+        patch = M.solid(M.jitter(rng, (0.3, 0.3, 0.3), 0.1)[:3], "fabric", 0.9)
         return [make_part("sock", "sock", S.ellipsoid((r * 1.3, r, r * 0.9), center=(0, 0, r * 0.9)), fab),
-                make_part("cuff", "cuff", S.ellipsoid((r * 0.6, r * 1.02, r * 0.6), center=(r * 0.5, 0, r * 0.9)), fab)]
+                make_part("cuff", "cuff", S.ellipsoid((r * 0.6, r * 1.02, r * 0.6), center=(r * 0.5, 0, r * 0.9)), fab),
+                make_part("heel", "heel", S.ellipsoid((r * 0.35, r * 0.5, r * 0.2), center=(-r * 0.3, 0, r * 1.55)), patch),
+                make_part("toe", "toe", S.ellipsoid((r * 0.2, r * 0.55, r * 0.45), center=(-r * 1.08, 0, r * 0.9)), patch),
+                make_part("sock_1", "sock", S.ellipsoid((r * 0.15, r * 0.45, r * 0.35), center=(r * 1.05, 0, r * 0.9)), fab),
+                make_part("toe_1", "toe", S.ellipsoid((r * 0.08, r * 0.3, r * 0.22), center=(r * 1.17, 0, r * 0.9)), patch)]
     n = 2 if variant == "pair" else 1
     L = rng.uniform(0.2, 0.27)
     out = []
@@ -257,7 +264,10 @@ def garment_bag(rng: np.random.Generator, variant: str) -> list[Part]:
                 _b("handle", "handle", (0.15, 0.03, 0.02), (0, -0.2, 0.09), black("fabric")),
                 # the zip round the folded edge, with its pull
                 _b("zipper", "zipper", (w * 0.85, 0.01, 0.004), (0, 0.1, 0.081), M.metal(rng)),
-                _b("zipper_pull", "zipper_pull", (0.012, 0.03, 0.004), (w * 0.3, 0.08, 0.083), M.metal(rng))]
+                _b("zipper_pull", "zipper_pull", (0.012, 0.03, 0.004), (w * 0.3, 0.08, 0.083), M.metal(rng)),
+                # the name window and the accessory pocket on the upper face
+                _b("window", "window", (w * 0.4, 0.12, 0.002), (0, -0.05, 0.081), M.solid((0.85, 0.88, 0.9), "plastic", 0.1)),
+                _b("pocket", "pocket", (w * 0.6, 0.12, 0.008), (0, 0.2, 0.076), fab, bevel=0.003)]
     L = rng.uniform(0.9, 1.05) if variant == "hanging" else rng.uniform(1.3, 1.4)
     return [_b("body", "body", (w, 0.08, L), (0, 0.06, L / 2), fab, bevel=0.02),
             make_part("hook", "hook", S.tube([(0, 0.06, L), (0, 0.06, L + 0.06), (0, 0.02, L + 0.08)], 0.003), M.metal(rng)),
@@ -424,7 +434,7 @@ def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
 # ---------------------------------------------------------- pub, café, bathroom, tea room
 
 
-@register("pint_glass", parts=("body",), extra_parts=("beer", "foam", "logo", "pour_line"), size_range=(0.14, 0.18), density=2500,
+@register("pint_glass", parts=("body",), extra_parts=("beer", "foam", "logo", "pour_line", "capacity_mark", "stamp"), size_range=(0.14, 0.18), density=2500,
           variants=("empty", "full", "nonic"), placement="surface")
 def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     h, r0, r1 = rng.uniform(0.145, 0.16), 0.03, rng.uniform(0.042, 0.045)
@@ -437,6 +447,15 @@ def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     zp = h * 0.78
     rp = r0 + (r1 - r0) * zp / (h * 0.82 if variant == "nonic" else h)
     out.append(_b("pour_line", "pour_line", (0.012, 0.0006, 0.0015), (0, rp + 0.0001, zp), white(rng, "paper")))
+    # the logo again on the back, the capacity figure beside the line and the verification
+    # stamp (a crown or CE mark) etched near the rim
+    etch = M.solid((0.9, 0.92, 0.92), "glass", 0.4)
+    out.append(_b("logo_1", "logo", (0.035, 0.0008, 0.04), (0, -rl - 0.0002, zl), etch))
+    out.append(_b("capacity_mark", "capacity_mark", (0.016, 0.0006, 0.005), (0, rp + 0.0001, zp - 0.005), etch))
+    zs = h * 0.7
+    rs = r0 + (r1 - r0) * zs / (h * 0.82 if variant == "nonic" else h)
+    out.append(_b("stamp", "stamp", (0.006, 0.0006, 0.006), (rs * 0.7071 + 0.0001, rs * 0.7071 + 0.0001, zs), etch,
+                  R=rot((0, 0, 1), -np.pi / 4)))
     if variant == "full":
         out.append(make_part("beer", "beer", S.frustum(r0 - 0.003, r1 * 0.94, h * 0.8, center=(0, 0, 0.01), sections=20),
                              M.food(rng, (0.8, 0.5, 0.1))))

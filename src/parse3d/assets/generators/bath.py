@@ -299,7 +299,7 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("towel_bar", parts=("bar",), extra_parts=("bracket", "set_screw"), size_range=(0.4, 0.9),
+@register("towel_bar", parts=("bar",), extra_parts=("bracket", "set_screw", "end_cap"), size_range=(0.4, 0.9),
           density=2000, variants=("single", "double", "square"), placement="wall")
 def towel_bar(rng: np.random.Generator, variant: str) -> list[Part]:
     length = rng.uniform(0.42, 0.82)
@@ -327,4 +327,10 @@ def towel_bar(rng: np.random.Generator, variant: str) -> list[Part]:
         else:
             bar = S.cylinder(r_bar, length, center=(0, y, z), axis=(1, 0, 0), sections=14)
         parts.append(make_part("bar" if len(ys) == 1 else f"bar_{k}", "bar", bar, mat))
+        # the caps closing the bar's hollow ends
+        for j, sx in enumerate((-1, 1)):
+            xc = sx * (length / 2 - 0.003)
+            cap = (bevel_box((0.006, r_bar * 1.8, r_bar * 1.8), center=(xc, y, z), bevel=0.001) if variant == "square"
+                   else S.cylinder(r_bar, 0.006, center=(xc, y, z), axis=(1, 0, 0), sections=14))
+            parts.append(make_part(f"end_cap_{2 * k + j}", "end_cap", cap, mat))
     return parts

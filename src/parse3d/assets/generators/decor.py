@@ -138,7 +138,7 @@ def _mirror_glass() -> Material:
     return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
 
 
-@register("mirror", parts=("frame", "glass"), extra_parts=("hanger",), size_range=(0.3, 1.8),
+@register("mirror", parts=("frame", "glass"), extra_parts=("hanger", "bevel", "screw"), size_range=(0.3, 1.8),
           density=1200, variants=("rectangular", "round", "oval"), placement="wall",
           groups={"frame": ("frame", "rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -161,10 +161,17 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
     frame = _ring(r, width, depth, stretch=k)
     glass = _disc(r - width, 0.0, t_glass, stretch=k)
     # a keyhole hanger plate on the back of the frame's top
-    hanger = S.box((0.03, 0.002, 0.02), center=(0, 0.001, r * k - width / 2))
+    zh = r * k - width / 2
+    hanger = S.box((0.03, 0.002, 0.02), center=(0, 0.001, zh))
+    metal = M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9)
+    # the glass's ground bevel round its edge, and the two screws holding the hanger plate
+    bevel = _ring(r - width, min(0.02, r * 0.08), 0.0015, stretch=k).moved((0, t_glass - 0.001, 0))
     return [make_part("frame", "frame", frame, mat),
             make_part("glass", "glass", glass, _mirror_glass()),
-            make_part("hanger", "hanger", hanger, M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9))]
+            make_part("bevel", "bevel", bevel, _mirror_glass()),
+            make_part("hanger", "hanger", hanger, metal),
+            *[make_part(f"screw_{j}", "screw", S.cylinder(0.0025, 0.0015, center=(sx * 0.01, 0.00275, zh), axis=(0, 1, 0),
+                                                          sections=8), metal) for j, sx in enumerate((-1, 1))]]
 
 
 def _hands(rng, r_face: float, y: float, cz: float) -> Part:

@@ -11,7 +11,7 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Joint, Part, make_part
+from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import black, white
 from ._household import ring, shell
@@ -201,7 +201,7 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("paper", parts=("sheet",), extra_parts=("clip", "wrapper", "label"),
+@register("paper", parts=("sheet",), extra_parts=("clip", "lever", "wrapper", "label", "barcode", "tear_strip", "seal"),
           size_range=(0.2, 0.44), density=800, variants=("stack", "ream", "loose"),
           placement="surface")
 def paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -215,7 +215,15 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
                           M.paper(rng)),
                 # the brand and grade label printed on the wrapper's top
                 make_part("label", "label", S.box((w * 0.6, d * 0.3, 0.0006), center=(0, 0, h + 0.0003)),
-                          white(rng, "paper"))]
+                          white(rng, "paper")),
+                # the barcode on the wrapper's front, the tear strip along its top and the glued
+                # seam where the wrapper closes underneath
+                make_part("barcode", "barcode", S.box((w * 0.3, 0.0006, h * 0.35), center=(w * 0.2, d * 0.3 + 0.0003, h * 0.5)),
+                          black("paper")),
+                make_part("tear_strip", "tear_strip", S.box((w * 0.9, 0.006, 0.0005), center=(0, d * 0.22, h + 0.00025)),
+                          Material((0.85, 0.2, 0.15, 1.0), 0.6, 0.0, "paper")),
+                make_part("seal", "seal", S.box((w * 0.5, d * 0.6 - 0.002, 0.0005), center=(0, 0, 0.00025)),
+                          M.paper(rng))]
     n = int(rng.integers(3, 9))
     out = []
     z = 0.0
@@ -228,6 +236,12 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "stack":
         out.append(make_part("clip", "clip", S.box((0.03, 0.02, z + 0.004), center=(0, d / 2 - 0.008, (z + 0.004) / 2)),
                              black("metal")))
+        # the binder clip's two wire levers, folded down over the stack
+        wire = M.solid((0.75, 0.75, 0.78), "metal", 0.3, 0.9)
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"lever_{k}", "lever", S.tube([(sx * 0.011, d / 2 - 0.006, z + 0.0048),
+                                                                (sx * 0.011, d / 2 - 0.034, z + 0.0048)], 0.0008, sections=6),
+                                 wire))
     return out
 
 
@@ -374,7 +388,8 @@ def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("soap_dispenser", parts=("body", "pump"),
-          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad"),
+          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad", "decal",
+                       "backstamp", "actuator"),
           size_range=(0.12, 0.26), density=1000, variants=("pump_bottle", "wall_mounted", "ceramic"),
           placement="surface")
 def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -407,6 +422,13 @@ def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
         # the dip tube, seen through the glass
         out.append(make_part("dip_tube", "dip_tube", S.cylinder(0.0025, h - 0.01, center=(0, 0, 0.005 + (h - 0.01) / 2),
                                                                 sections=8), M.solid((0.9, 0.9, 0.9), "plastic", 0.3)))
+    else:  # a glazed jar: the painted decal on its front, the potter's mark under the base
+        out.append(make_part("decal", "decal", S.box((r * 0.9, 0.0008, h * 0.3), center=(0, r + 0.0003, h * 0.45)),
+                             M.solid((0.25, 0.3, 0.45), "paper", 0.6)))
+        out.append(make_part("backstamp", "backstamp", S.cylinder(r * 0.3, 0.0005, center=(0, 0, 0.0018), sections=10),
+                             M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
+    # the press head's finger rest on top of the pump
+    out.append(make_part("actuator", "actuator", S.box((0.016, 0.018, 0.004), center=(0, -0.002, h + 0.062)), metal))
     return out
 
 
@@ -437,7 +459,7 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
                       white(rng, "paper"))]
 
 
-@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo"),
+@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo", "cover", "number"),
           size_range=(0.06, 0.26), density=100, variants=("soccer", "basketball", "tennis"),
           placement="floor")
 def ball(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -478,10 +500,33 @@ def ball(rng: np.random.Generator, variant: str) -> list[Part]:
         T[:3, :3] = rot((1, 0, 0), np.pi / 2)
         T[:3, 3] = (0, r, r) - T[:3, :3] @ (0, 0, r)
         out.append(make_part("seam_1", "seam", band2.apply(T), black("rubber")))
+        # the third channel, the meridian crossing the second at the poles
+        T2 = np.eye(4)
+        T2[:3, :3] = rot((0, 1, 0), np.pi / 2)
+        T2[:3, 3] = (0, 0, r) - T2[:3, :3] @ (0, 0, r)
+        out.append(make_part("seam_2", "seam", band2.apply(T2), black("rubber")))
         out.append(make_part("logo", "logo", S.box((r * 0.4, 0.001, r * 0.2), center=(r * 0.45, r * 0.89, r * 1.25)),
                              black("paper")))
     else:
+        # the two felt covers the seam joins (each a half shell round the rubber core), the
+        # maker's logo printed on each, and the ball's number under the front one
+        felt = M.solid(M.jitter(rng, col, 0.02), "fabric", 0.95)
+        th = np.array([0.35, 0.8, 1.2, 1.52])
+        ri = r * 0.94
+        half = [S.cylinder(ri * np.sin(th[0]), r * 0.05, center=(0, 0, r - ri * np.cos(th[0]) + r * 0.025), sections=12)]
+        half += [ring([(ri * np.sin(a), r - ri * np.cos(a)), (r * np.sin(a), r - r * np.cos(a)),
+                       (r * np.sin(b), r - r * np.cos(b)), (ri * np.sin(b), r - ri * np.cos(b))], sections=20)
+                 for a, b in zip(th[:-1], th[1:], strict=True)]
+        flip = np.eye(4)
+        flip[:3, :3] = rot((1, 0, 0), np.pi)
+        flip[2, 3] = 2 * r
+        out.append(make_part("cover", "cover", half, felt))
+        out.append(make_part("cover_1", "cover", [h.apply(flip) for h in half], felt))
         out.append(make_part("logo", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, r, r * 1.35)),
+                             black("paper")))
+        out.append(make_part("logo_1", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, -r, r * 0.65)),
+                             black("paper")))
+        out.append(make_part("number", "number", S.box((r * 0.12, 0.0008, r * 0.18), center=(0, r * 0.985, r * 1.12)),
                              black("paper")))
     return out
 

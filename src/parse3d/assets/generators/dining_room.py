@@ -135,7 +135,7 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel"),
+@register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel", "label"),
           size_range=(0.9, 2.8), density=300, variants=("plain", "bordered", "tasselled"),
           placement="surface", groups={"body": ("runner", "hem", "border")})
 def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -152,10 +152,16 @@ def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         runner = S.box((L, W, t), center=(0, 0, t / 2))
     parts = [make_part("runner", "runner", runner, cloth)]
-    if not pointed:  # a stitched hem across each end
+    if not pointed:  # a stitched hem across each end, and along each long side between them
         for k, sx in enumerate((-1, 1)):
             hem = S.box((0.03, W - 0.004, 0.0015), center=(sx * (L / 2 - 0.017), 0, t + 0.0006))
             parts.append(make_part(f"hem_{k}", "hem", hem, cloth))
+        for k, sy in enumerate((-1, 1)):
+            hem = S.box((L - 0.07, 0.012, 0.0015), center=(0, sy * (W / 2 - 0.008), t + 0.0006))
+            parts.append(make_part(f"hem_{2 + k}", "hem", hem, cloth))
+    # the maker's care label sewn on underneath, near one end
+    parts.append(make_part("label", "label", S.box((0.03, 0.05, 0.0008), center=(-L / 2 + 0.2, 0, 0.0004)),
+                           Material((0.92, 0.92, 0.9, 1.0), 0.8, 0.0, "fabric")))
     if variant == "bordered":
         edge = Material(M.jitter(rng, (0.85, 0.75, 0.45), 0.05), 0.6, 0.2, "fabric")
         b = 0.025

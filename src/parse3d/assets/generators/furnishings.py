@@ -21,7 +21,7 @@ from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
 
-@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design"),
+@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design", "border", "edge_band", "stamp"),
           size_range=(0.08, 0.12), density=800, variants=("round", "square", "rimmed"), placement="surface")
 def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.09, 0.105)
@@ -29,24 +29,45 @@ def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     cork = Material(M.jitter(rng, (0.65, 0.5, 0.35), 0.03), 0.95, 0.0, "wood")
     tp = 0.0015
     t = rng.uniform(0.004, 0.008)
+    zt = tp + t  # the top face the glass stands on
+    gold = Material((0.8, 0.65, 0.3, 1.0), 0.35, 0.8, "metal")
+    ink = M.solid((0.15, 0.15, 0.2), "paper", 0.6)
     if variant == "square":
         parts = [make_part("pad", "pad", S.box((s - 0.004, s - 0.004, tp), center=(0, 0, tp / 2)), cork),
                  make_part("body", "body", S.box((s, s, t), center=(0, 0, tp + t / 2), bevel=0.001), mat),
                  # the printed design on the top face
-                 make_part("design", "design", S.box((s * 0.75, s * 0.75, 0.0004), center=(0, 0, tp + t + 0.0002)),
+                 make_part("design", "design", S.box((s * 0.75, s * 0.75, 0.0004), center=(0, 0, zt + 0.0002)),
                            M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.6))]
+        # the printed line framing the design, the gilded band round the edge, and the maker's
+        # stamp on the cork underneath
+        a, b = s * 0.82, s * 0.012
+        frame = [S.box((a, b, 0.0004), center=(0, sy * (a - b) / 2, zt + 0.0002)) for sy in (-1, 1)]
+        frame += [S.box((b, a - 2 * b, 0.0004), center=(sx * (a - b) / 2, 0, zt + 0.0002)) for sx in (-1, 1)]
+        parts.append(make_part("border", "border", frame, ink))
+        e = 0.0006
+        band = [S.box((s + 2 * e, e, t * 0.4), center=(0, sy * (s + e) / 2, tp + t * 0.5)) for sy in (-1, 1)]
+        band += [S.box((e, s, t * 0.4), center=(sx * (s + e) / 2, 0, tp + t * 0.5)) for sx in (-1, 1)]
+        parts.append(make_part("edge_band", "edge_band", band, gold))
+        parts.append(make_part("stamp", "stamp", S.box((s * 0.3, s * 0.18, 0.0003), center=(0, 0, 0.00015)), ink))
         return parts
     parts = [make_part("pad", "pad", S.cylinder(s / 2 - 0.002, tp, center=(0, 0, tp / 2), sections=24), cork),
              make_part("body", "body", S.cylinder(s / 2, t, center=(0, 0, tp + t / 2), sections=24), mat)]
     if variant == "rimmed":
-        parts.append(make_part("rim", "rim", ring([(s / 2 - 0.004, tp + t), (s / 2, tp + t), (s / 2, tp + t + 0.004),
-                                                   (s / 2 - 0.004, tp + t + 0.004)], sections=24), mat))
-    parts.append(make_part("design", "design", S.cylinder(s * 0.38, 0.0004, center=(0, 0, tp + t + 0.0002), sections=20),
+        parts.append(make_part("rim", "rim", ring([(s / 2 - 0.004, zt), (s / 2, zt), (s / 2, zt + 0.004),
+                                                   (s / 2 - 0.004, zt + 0.004)], sections=24), mat))
+    parts.append(make_part("design", "design", S.cylinder(s * 0.38, 0.0004, center=(0, 0, zt + 0.0002), sections=20),
                            M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.6)))
+    rb = s * 0.41
+    parts.append(make_part("border", "border", ring([(rb, zt), (rb + s * 0.012, zt), (rb + s * 0.012, zt + 0.0004),
+                                                     (rb, zt + 0.0004)], sections=24), ink))
+    parts.append(make_part("edge_band", "edge_band", ring([(s / 2 - 0.0003, tp + t * 0.3), (s / 2 + 0.0006, tp + t * 0.3),
+                                                           (s / 2 + 0.0006, tp + t * 0.7), (s / 2 - 0.0003, tp + t * 0.7)],
+                                                          sections=24), gold))
+    parts.append(make_part("stamp", "stamp", S.cylinder(s * 0.12, 0.0003, center=(0, 0, 0.00015), sections=12), ink))
     return parts
 
 
-@register("croissant", parts=("body",), extra_parts=("horn",),
+@register("croissant", parts=("body",), extra_parts=("horn", "tip"),
           size_range=(0.09, 0.18), density=250, variants=("curved", "straight", "mini"), placement="surface")
 def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.12, 0.16) if variant != "mini" else rng.uniform(0.09, 0.1)
@@ -66,6 +87,9 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
         name = "body" if k == n // 2 else (f"horn_{0 if k < n // 2 else 1}" if k in (0, n - 1) else f"body_{k}")
         label = "horn" if k in (0, n - 1) else "body"
         parts.append(make_part(name, label, seg, crust))
+    # the point of the rolled dough triangle, laid over the middle roll's front
+    parts.append(make_part("tip", "tip", S.ellipsoid((L * 0.05, rmax * 0.45, rmax * 0.1), center=(0, rmax * 0.4, rmax * 1.16),
+                                                     subdivisions=1), crust))
     return parts
 
 

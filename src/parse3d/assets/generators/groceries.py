@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import ring
+from ._kit import rot
 
 
 @register("bottle", parts=("body", "cap"),
@@ -207,7 +208,7 @@ def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("apple", parts=("body",), extra_parts=("stem", "leaf", "calyx", "sticker"), size_range=(0.06, 0.095),
+@register("apple", parts=("body",), extra_parts=("stem", "leaf", "calyx", "sepal", "sticker"), size_range=(0.06, 0.095),
           density=850, variants=("round", "conical", "leafy"), placement="surface")
 def apple(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.032, 0.042)
@@ -234,6 +235,13 @@ def apple(rng: np.random.Generator, variant: str) -> list[Part]:
     # the dried calyx in the dimple at the bottom, and the grocer's price sticker on the side
     parts.append(make_part("calyx", "calyx", S.cylinder(r * 0.14, 0.002, center=(0, 0, 0.001), sections=8),
                            M.food(rng, (0.3, 0.22, 0.12))))
+    # the calyx keeps the flower's five dried sepals, folded in round its eye
+    dry = M.food(rng, (0.28, 0.2, 0.1))
+    for k in range(5):
+        a = 2 * np.pi * k / 5
+        parts.append(make_part(f"sepal_{k}", "sepal",
+                               S.box((r * 0.12, 0.0016, 0.0012), center=(r * 0.16 * np.cos(a), r * 0.16 * np.sin(a), 0.0026),
+                                     R=rot((0, 0, 1), a)), dry))
     zs = h * 0.5
     rs = float(np.interp(zs, [p[1] for p in prof], [p[0] for p in prof]))
     parts.append(make_part("sticker", "sticker", S.cylinder(0.009, 0.0008, center=(0, rs - 0.0006, zs),
