@@ -265,7 +265,8 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot"),
+@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot",
+                                                             "tenon", "corbel", "corner_block", "kicker"),
           size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
 def console_table(rng: np.random.Generator, variant: str) -> list:
     w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
@@ -284,8 +285,23 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"foot_{k}", "foot", S.box((0.08, d - 0.02, 0.03), center=(sx * (w / 2 - 0.06), 0, 0.015),
                                                              bevel=0.004), wood))
+        # the stretcher's through-tenons standing out past each end, and the corbels under the
+        # top's overhang on each end
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"tenon_{k}", "tenon", S.box((0.04, 0.03, 0.045), center=(sx * (w / 2 - 0.06 + 0.04), 0, 0.2)), wood))
+            parts.append(make_part(f"corbel_{k}", "corbel", S.box((0.05, d - 0.08, 0.06),
+                                                                 center=(sx * (w / 2 - 0.06 + 0.045), 0, h - t - 0.03)), wood))
         return parts
     parts += legs4("leg", "leg", w=w, d=d, h=h - t, size=0.04, mat=wood, inset=0.01)
+    # glide caps round the legs' ends, and the glued blocks in the apron's corners
+    cap = M.solid((0.1, 0.1, 0.1), "plastic", 0.7)
+    lx, ly = w / 2 - 0.03, d / 2 - 0.03
+    corners = [(-1, -1), (1, -1), (-1, 1), (1, 1)]
+    parts += [make_part(f"foot_{k}", "foot", S.cylinder(0.024, 0.008, center=(sx * lx, sy * ly, 0.004), sections=10), cap)
+              for k, (sx, sy) in enumerate(corners)]
+    parts += [make_part(f"corner_block_{k}", "corner_block",
+                        S.box((0.04, 0.04, 0.05), center=(sx * (lx - 0.05), sy * (ly - 0.05), h - t - 0.025)), wood)
+              for k, (sx, sy) in enumerate(corners)]
     if variant == "drawers":
         parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate([apron[0]] + apron[2:])]
         n = 2
@@ -301,13 +317,24 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
                                                                     subdivisions=1), M.metal(rng)))
             parts += [prismatic(f"drawer_{k}_slide", "tabletop", f"drawer_{k}_box", travel=bd * 0.7),
                       mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"knob_{k}")]
+        # the kicker strips above each drawer's sides that keep it from tipping as it opens
+        for k in range(n):
+            x = -w / 2 + 0.05 + dw * (k + 0.5)
+            for j, sx in enumerate((-1, 1)):
+                parts.append(make_part(f"kicker_{2 * k + j}", "kicker",
+                                       S.box((0.015, d - 0.1, 0.003), center=(x + sx * (dw / 2 - 0.02), -0.01, h - t - 0.0015)), wood))
     else:
         parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate(apron)]
-        parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, rng.uniform(0.15, 0.25))), wood))
+        zs = rng.uniform(0.15, 0.25)
+        parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, zs)), wood))
+        # the stretchers the shelf rests on, joining each end's pair of legs
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"stretcher_{k}", "stretcher", S.box((0.03, d - 0.1, 0.04), center=(sx * (w / 2 - 0.03), 0, zs - 0.03)),
+                                   wood))
     return parts
 
 
-@register("dais", parts=("top", "base"), extra_parts=("fascia", "foot"),
+@register("dais", parts=("top", "base"), extra_parts=("fascia", "foot", "nosing", "handle"),
           size_range=(0.6, 2.6), density=500, variants=("tokonoma", "stage", "plinth"))
 def dais(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -324,6 +351,17 @@ def dais(rng: np.random.Generator, variant: str) -> list[Part]:
              make_part("fascia", "fascia", S.box((w, 0.02, h - t), center=(0, d / 2 - 0.01, (h - t) / 2)),
                        Material(M.jitter(rng, (0.1, 0.06, 0.05), 0.02), 0.3, 0.0, "wood"))]
     parts += feet4("foot", w=w - 0.06, d=d - 0.06, r=0.02, h=zf, mat=wood)
+    # the fascia boards on the two ends, the rounded nosing along the top's front edge, and a
+    # hand grip let into each end for carrying it
+    dark = parts[2].material
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"fascia_{k + 1}", "fascia", S.box((0.012, d - 0.02, h - t), center=(sx * (w / 2 - 0.006), -0.01, (h - t) / 2)),
+                               dark))
+    parts.append(make_part("nosing", "nosing", S.box((w, 0.012, 0.012), center=(0, d / 2 - 0.006, h - t - 0.006), bevel=0.003), wood))
+    metal = M.solid((0.2, 0.2, 0.22), "metal", 0.5, 0.6)
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"handle_{k}", "handle", S.box((0.004, min(0.12, d * 0.3), min(0.03, (h - t) * 0.3)),
+                                                             center=(sx * (w / 2 - 0.001), -0.01, (h - t) * 0.6)), metal))
     return parts
 
 

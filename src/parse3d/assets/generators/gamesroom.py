@@ -42,9 +42,16 @@ def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sy in enumerate((1, -1)):
             parts.append(make_part(f"number_{k}", "number", S.box((r * 0.2, 0.0006, r * 0.35),
                                                                   center=(0, sy * (r * 0.97 + 0.0013), r)), ink))
-    else:  # the maker's red dot
+        # the maker's name printed small on the ball, between the two spots
+        parts.append(make_part("logo", "logo", S.box((r * 0.35, r * 0.1, 0.0008), center=(0, 0, 2 * r - 0.0003)), ink))
+    else:  # the maker's red dot, and the training ball's red spots round it (none where it rests)
+        red = M.solid((0.8, 0.1, 0.1), "plastic", 0.3)
         parts.append(make_part("logo", "logo", S.cylinder(r * 0.12, 0.001, center=(0, r * 0.998, r), axis=(0, 1, 0),
-                                                          sections=10), M.solid((0.8, 0.1, 0.1), "plastic", 0.3)))
+                                                          sections=10), red))
+        for k, (v, ax) in enumerate([((0, -1, 0), (0, 1, 0)), ((1, 0, 0), (1, 0, 0)), ((-1, 0, 0), (1, 0, 0)),
+                                     ((0, 0, 1), (0, 0, 1))]):
+            c = np.array((0.0, 0.0, r)) + np.array(v, float) * (r * 0.998 - 0.0005 if v[2] <= 0 else r - 0.0006)
+            parts.append(make_part(f"spot_{k}", "spot", S.cylinder(r * 0.1, 0.001, center=tuple(c), axis=ax, sections=10), red))
     return parts
 
 
