@@ -80,7 +80,7 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw", "hook"), size_range=(0.4, 1.6), density=600,
+@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw", "hook", "edge_band"), size_range=(0.4, 1.6), density=600,
           variants=("bracketed", "floating", "two_tier"), placement="wall")
 def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.45, 1.2)
@@ -94,6 +94,12 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("shelf", "shelf", S.box((w, d, t), center=(0, d / 2, zt + t / 2), bevel=0.002), wood))
         parts.append(make_part("bracket", "bracket",
                                S.box((w * 0.8, 0.006, zt + t * 0.6), center=(0, -0.003, (zt + t * 0.6) / 2)), steel))
+        # the screws through the cleat plate below the board, and the veneer edge band on its front
+        for k, x in enumerate(np.linspace(-w * 0.3, w * 0.3, 3)):
+            parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.0045, 0.003, center=(x, 0.0015, zt * 0.45), axis=(0, 1, 0),
+                                                                    sections=10), steel))
+        parts.append(make_part("edge_band", "edge_band", S.box((w - 0.004, 0.0015, t - 0.004), center=(0, d + 0.00075, zt + t / 2)),
+                               wood))
         return parts
     levels = [0.2] if variant == "bracketed" else [0.2, 0.2 + rng.uniform(0.25, 0.35)]
     if variant == "two_tier":
@@ -126,6 +132,17 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"screw_{2 * i + k}", "screw",
                                    S.cylinder(0.0045, 0.003, center=(x, y_face + 0.0015, z), axis=(0, 1, 0),
                                               sections=10), steel))
+    # a screw up through each bracket's arm into each board, and the veneer edge band on each
+    # board's front
+    n_sc = 2 * len(xs)
+    for i, x in enumerate(xs):
+        for zt in levels:
+            parts.append(make_part(f"screw_{n_sc}", "screw", S.cylinder(0.004, 0.003, center=(x, arm * 0.6, zt - t - 0.006 - 0.0015),
+                                                                         sections=8), steel))
+            n_sc += 1
+    for k, zt in enumerate(levels):
+        parts.append(make_part("edge_band" if k == 0 else f"edge_band_{k}", "edge_band",
+                               S.box((w - 0.004, 0.0015, t - 0.004), center=(0, d + 0.00075, zt - t / 2)), wood))
     if variant == "bracketed":
         # cup hooks under the board between the brackets (mugs, towels hang from them)
         for k, x in enumerate(np.linspace(-w / 2 + 0.15, w / 2 - 0.15, 3 if w < 0.9 else 5)):
