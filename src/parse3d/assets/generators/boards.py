@@ -135,7 +135,7 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     # a screw up through each bracket's arm into each board, and the veneer edge band on each
     # board's front
     n_sc = 2 * len(xs)
-    for i, x in enumerate(xs):
+    for x in xs:
         for zt in levels:
             parts.append(make_part(f"screw_{n_sc}", "screw", S.cylinder(0.004, 0.003, center=(x, arm * 0.6, zt - t - 0.006 - 0.0015),
                                                                          sections=8), steel))
