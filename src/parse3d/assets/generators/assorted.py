@@ -318,7 +318,8 @@ def bird_cage(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("window", parts=("frame", "glass"),
-          extra_parts=("sill", "mullion", "sash", "handle", "casing", "hinge", "lock", "lift"), size_range=(0.6, 2.2),
+          extra_parts=("sill", "mullion", "sash", "handle", "casing", "hinge", "lock", "lift", "apron", "glazing_bead"),
+          size_range=(0.6, 2.2),
           density=800, variants=("casement", "double_hung", "picture"), placement="wall")
 def window(rng: np.random.Generator, variant: str) -> list[Part]:
     """A window unit as seen from the room: frame, panes and sill on the wall's face."""
@@ -340,6 +341,14 @@ def window(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(_b("head_casing", "casing", (w + 2 * cw, ct, cw), (0, ct / 2, 0.025 + h + cw / 2), frame_mat))
     for k, sx in enumerate((-1, 1)):
         out.append(_b(f"side_casing_{k}", "casing", (cw, ct, h), (sx * (w / 2 + cw / 2), ct / 2, 0.025 + h / 2), frame_mat))
+    # the apron trim under the sill, and the glazing beads holding the glass in the frame
+    out.append(_b("apron", "apron", (w, ct, 0.05), (0, ct / 2, -0.025), frame_mat))
+    gb = 0.012
+    beads = [S.box((w - 2 * f, gb, gb), center=(0, t / 2 + 0.009, 0.025 + f + gb / 2)),
+             S.box((w - 2 * f, gb, gb), center=(0, t / 2 + 0.009, 0.025 + h - f - gb / 2)),
+             S.box((gb, gb, h - 2 * f - 2 * gb), center=(-w / 2 + f + gb / 2, t / 2 + 0.009, 0.025 + h / 2)),
+             S.box((gb, gb, h - 2 * f - 2 * gb), center=(w / 2 - f - gb / 2, t / 2 + 0.009, 0.025 + h / 2))]
+    out.append(make_part("glazing_bead", "glazing_bead", beads, frame_mat))
     hw = M.metal(rng)
     if variant == "double_hung":
         out.append(_b("sash", "sash", (w - 2 * f, t * 0.6, 0.04), (0, t * 0.6, 0.025 + h / 2), frame_mat))
@@ -358,7 +367,8 @@ def window(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("fireplace", parts=("firebox", "mantel", "hearth"),
-          extra_parts=("surround", "grate", "log", "screen", "corbel", "control_panel"),
+          extra_parts=("surround", "grate", "log", "screen", "corbel", "control_panel", "frieze", "plinth", "vent",
+                       "andiron"),
           size_range=(1.0, 1.9), density=1500, variants=("brick", "stone", "electric"))
 def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
     """A fireplace against a wall: the hearth on the floor, the surround and firebox, the mantel
@@ -377,8 +387,16 @@ def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, sx in enumerate((-1, 1)):
         out.append(_b(f"corbel_{k}", "corbel", (0.06, 0.06, 0.1), (sx * (w / 2 - 0.05), d / 2 + 0.03, h - 0.06 - 0.05),
                       M.wood(rng), bevel=0.004))
+    # the frieze board under the mantel shelf, and the plinth blocks the surround's legs stand on
+    trim = out[3].material
+    out.append(_b("frieze", "frieze", (w - 0.2, 0.02, 0.08), (0, d / 2 + 0.01, h - 0.06 - 0.04), trim))
+    for k, sx in enumerate((-1, 1)):
+        out.append(_b(f"plinth_{k}", "plinth", ((w - ow) / 2 + 0.02, d + 0.02, 0.1),
+                      (sx * (w / 2 - (w - ow) / 4), 0.0, hearth_h + 0.05), mat))
     if variant == "electric":
         out.append(_b("screen", "screen", (ow, 0.01, oh), (0, d / 2 - 0.005, hearth_h + oh / 2), M.glass(rng)))
+        # the heater's outlet grille below the screen
+        out.append(_b("vent", "vent", (ow * 0.8, 0.01, 0.03), (0, d / 2 - 0.004, hearth_h + 0.025), black("metal")))
         out.append(_b("control_panel", "control_panel", (0.12, 0.01, 0.03), (ow / 2 - 0.08, d / 2 - 0.005,
                                                                              hearth_h + oh + 0.03), black()))
     else:
@@ -391,6 +409,13 @@ def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
         grate = [S.box((0.015, d * 0.5, 0.015), center=(sx * ow * 0.3, -d * 0.15, hearth_h + 0.0075)) for sx in (-1, 1)]
         grate.append(S.box((ow * 0.7, 0.015, 0.05), center=(0, d * 0.08, hearth_h + 0.025)))
         out.append(make_part("grate", "grate", grate, iron))
+        # the two andirons standing either side of the grate, their finials facing the room
+        for k, sx in enumerate((-1, 1)):
+            x = sx * ow * 0.42
+            out.append(make_part(f"andiron_{k}", "andiron", [S.box((0.02, d * 0.45, 0.02), center=(x, -d * 0.1, hearth_h + 0.01)),
+                                                             S.cylinder(0.012, 0.2, center=(x, d * 0.1, hearth_h + 0.1), sections=8),
+                                                             S.ellipsoid((0.025, 0.025, 0.025), center=(x, d * 0.1, hearth_h + 0.21),
+                                                                         subdivisions=1)], iron))
     return out
 
 
@@ -404,7 +429,7 @@ def prismatic_joint(name: str, parent: str, child: str, travel: float) -> Joint:
 # ----------------------------------------------------------------------------- home and pets
 
 
-@register("rolling_tv_stand", parts=("base", "pole", "mount"), extra_parts=("caster", "shelf", "bracket", "cap"),
+@register("rolling_tv_stand", parts=("base", "pole", "mount"), extra_parts=("caster", "shelf", "bracket", "cap", "clip", "brake"),
           size_range=(1.2, 1.9),
           density=1500, variants=("single_pole", "dual_pole", "with_shelf"))
 def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -428,6 +453,14 @@ def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(_b(f"bracket_{k}", "bracket", (0.04, 0.02, 0.34), (sz * 0.12, 0.065, h * 0.8), steel))
     if variant == "with_shelf":
         out.append(_b("shelf", "shelf", (0.5, 0.35, 0.012), (0, 0.12, h * 0.45), M.glass(rng)))
+    # the cable clips on the back of each pole, and the brake levers on the two front casters
+    n_clip = 0
+    for x in xs:
+        for z in (h * 0.35, h * 0.6):
+            out.append(_b(f"clip_{n_clip}", "clip", (0.03, 0.012, 0.03), (x, -0.031, z), black("plastic")))
+            n_clip += 1
+    for k, sx in enumerate((-1, 1)):
+        out.append(_b(f"brake_{k}", "brake", (0.02, 0.03, 0.008), (sx * (w / 2 - 0.03), d / 2 - 0.04 + 0.03, ch * 0.8), black("plastic")))
     return out
 
 
