@@ -18,7 +18,7 @@ from ._household import ring, shell
 from ._kit import revolute, rot
 
 
-@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal"),
+@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal", "well_line", "dry_foot"),
           size_range=(0.11, 0.18), density=2000, variants=("tea", "coffee", "espresso"),
           placement="surface", groups={"body": ("well", "rim", "foot_ring")})
 def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -44,7 +44,14 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("backstamp", "backstamp", stamp, M.solid((0.3, 0.35, 0.6), "paper", 0.8)),
             # the painted spray on the rim's front
             make_part("decal", "decal", ring([(r * 0.78, bh + 0.0035), (r * 0.9, bh + 0.006), (r * 0.9, bh + 0.0068),
-                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng))]
+                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng)),
+            # the gilded line painted round the well, flush with its floor, where the cup stands
+            make_part("well_line", "well_line", ring([(well * 0.9, bh - 0.0005), (well * 0.95, bh - 0.0005), (well * 0.95, bh),
+                                                      (well * 0.9, bh)], sections=24), gold),
+            # the unglazed ring under the foot it was fired standing on
+            make_part("dry_foot", "dry_foot", ring([(well * 0.71, 0.0), (well * 0.81, 0.0), (well * 0.81, 0.0006),
+                                                    (well * 0.71, 0.0006)], sections=24),
+                      Material((0.85, 0.8, 0.72, 1.0), 0.9, 0.0, "ceramic"))]
 
 
 @register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot"),
@@ -317,7 +324,7 @@ def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("water_pitcher", parts=("body", "handle"),
-          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale"),
+          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale", "thumb_rest", "backstamp"),
           size_range=(0.18, 0.32), density=1500, variants=("glass", "filter_jug", "ceramic"),
           placement="surface")
 def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -346,6 +353,11 @@ def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
         marks.append(S.box((0.02 if k % 2 == 0 else 0.012, 0.0008, 0.0015),
                            center=(np.sin(a) * (rz + 0.0002), np.cos(a) * (rz + 0.0002), z), R=rot((0, 0, 1), -a)))
     out.append(make_part("scale", "scale", marks, white(rng, "paper")))
+    # the thumb rest on the handle's top, and the maker's mark under the floor
+    out.append(make_part("thumb_rest", "thumb_rest", S.box((0.016, 0.02, 0.008), center=(0, -r - 0.03, h * 0.82 + 0.006), bevel=0.002),
+                         mat))
+    out.append(make_part("backstamp", "backstamp", S.cylinder(r * 0.3, 0.0005, center=(0, 0, 0.0035), sections=12),
+                         M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     if variant == "filter_jug":
         lid_mat = white(rng, "plastic")
         out.append(make_part("lid", "lid", S.cylinder(r * 0.95, 0.012, center=(0, 0, h + 0.006)), lid_mat))
@@ -432,7 +444,7 @@ def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode"),
+@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode", "cap_ridge", "lot_code"),
           size_range=(0.08, 0.24), density=1000, variants=("toothpaste", "cream", "paint"),
           placement="surface")
 def tube(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -456,7 +468,22 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
                                               center=(x0 + cap_l + 0.01 + L * 0.3, 0, r * 1.6 + 0.0004)), M.paper(rng)),
             # the barcode printed near the crimped end
             make_part("barcode", "barcode", S.box((0.02, r * 1.2, 0.0008), center=(L / 2 - 0.025, 0, r * 1.6 + 0.0004)),
-                      white(rng, "paper"))]
+                      white(rng, "paper")),
+            # the ridges round the cap's edge for grip, and the batch code pressed into the crimp
+            make_part("cap_ridge", "cap_ridge", ring([(r * 0.6 - 0.0005, 0.0), (r * 0.6 + 0.0008, 0.0), (r * 0.6 + 0.0008, cap_l * 0.6),
+                                                      (r * 0.6 - 0.0005, cap_l * 0.6)], sections=16)
+                      .apply(_x_axis(x0 + cap_l * 0.2, r * 0.8)), white(rng, "plastic")),
+            make_part("lot_code", "lot_code", S.box((0.006, r * 1.6, 0.0006), center=(L / 2 - 0.005, 0, r * 0.8 + r * 0.125 + 0.0003)),
+                      black("paper"))]
+
+
+def _x_axis(x: float, z: float) -> np.ndarray:
+    """(4, 4) transform turning a ring about +Z into one about +X, starting at ``x``, axis at
+    height ``z``."""
+    T = np.eye(4)
+    T[:3, :3] = rot((0, 1, 0), np.pi / 2)
+    T[:3, 3] = (x, 0, z)
+    return T
 
 
 @register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo", "cover", "number"),
@@ -544,7 +571,8 @@ def _place(v: np.ndarray, r: float) -> np.ndarray:
     return T
 
 
-@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband", "feather", "chin_strap"),
+@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband", "feather", "chin_strap",
+                                                    "binding"),
           size_range=(0.2, 0.42), density=150, variants=("cap", "fedora", "sun_hat"),
           placement="surface")
 def hat(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -577,6 +605,13 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid(M.jitter(rng, (0.15, 0.1, 0.08), 0.03), "fabric", 0.8)))
     out.append(make_part("sweatband", "sweatband", ring([(rc - 0.006, 0.004), (rc - 0.002, 0.004), (rc - 0.002, 0.03),
                                                          (rc - 0.006, 0.03)], sections=24), M.leather(rng)))
+    # the stitched edge binding round the brim, and an air eyelet each side of the crown
+    out.append(make_part("binding", "binding", ring([(rb - 0.004, 0.0), (rb + 0.001, 0.0), (rb + 0.001, 0.005), (rb - 0.004, 0.005)],
+                                                    sections=32), out[2].material))
+    re = rc * (1 - 0.05 * (hc * 0.5 - 0.004) / (hc * 0.8 - 0.004))
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"eyelet_{k}", "eyelet", S.cylinder(0.003, 0.002, center=(sx * (re + 0.0003), 0, hc * 0.5), axis=(1, 0, 0),
+                                                                 sections=8), black("metal")))
     if variant == "fedora":  # a small feather tucked in the band beside the bow
         out.append(make_part("feather", "feather", S.ellipsoid((0.004, 0.012, 0.035), center=(-rc - 0.004, 0.02, 0.035), subdivisions=1),
                              M.solid(M.jitter(rng, (0.5, 0.4, 0.3), 0.1), "fabric", 0.9)))
@@ -648,6 +683,10 @@ def dumbbell(rng: np.random.Generator, variant: str) -> list[Part]:
     # the knurled grip sleeve in the middle of the handle
     out.append(make_part("grip", "grip", S.cylinder(0.0165, min(0.12, L - 2 * pw - 0.06), center=(0, 0, r),
                                                     axis=(1, 0, 0), sections=12), M.metal(rng)))
+    if variant != "adjustable":  # the steel collar where the handle enters each head
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"collar_{k}", "collar", S.cylinder(0.022, 0.008, center=(sx * (L / 2 - pw - 0.004), 0, r),
+                                                                    axis=(1, 0, 0), sections=12), steel))
     return out
 
 
