@@ -179,7 +179,8 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow", "piping", "zipper", "tag", "foot"),
+@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow", "piping", "zipper", "tag", "foot",
+                                                     "grip", "corner"),
           size_range=(0.5, 1.2), density=150, variants=("round", "rectangular", "elevated"))
 def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     fab = M.fabric(rng)
@@ -196,7 +197,11 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
                                                     (r - 0.004, 0.036)], sections=24), inner),
                 make_part("zipper", "zipper", S.box((0.3, 0.006, 0.012), center=(0, -r - 0.001, hb * 0.45)), black()),
                 make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(r * 0.7, r * 0.715, 0.06)),
-                          M.solid((0.95, 0.95, 0.92), "fabric", 0.8))]
+                          M.solid((0.95, 0.95, 0.92), "fabric", 0.8)),
+                # the piping round the bolster's crown
+                make_part("piping_1", "piping", ring([(r * 0.8, hb - 0.006), (r * 0.9, hb - 0.006), (r * 0.9, hb + 0.002),
+                                                      (r * 0.8, hb + 0.002)], sections=24), inner),
+                *_grip_dots([(r * 0.5 * np.cos(a), r * 0.5 * np.sin(a)) for a in np.pi / 4 + np.arange(4) * np.pi / 2])]
     w, d = rng.uniform(0.6, 1.1), rng.uniform(0.5, 0.8)
     if variant == "elevated":  # a fabric sling on a frame with four short legs
         hl = rng.uniform(0.12, 0.2)
@@ -207,6 +212,10 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
                                + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal))
         parts.append(make_part("cushion", "cushion", S.box((w - 0.06, d - 0.06, 0.012), center=(0, 0, hl + 0.024)), fab))
+        # the moulded corner pieces joining the frame's tubes over each leg
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"corner_{k}", "corner", S.box((0.045, 0.045, 0.036), center=(sx * (w / 2 - 0.0225), sy * (d / 2 - 0.0225),
+                                                                                            hl + 0.015), bevel=0.005), black()))
         return parts
     hb = rng.uniform(0.18, 0.25)
     b = 0.1
@@ -221,10 +230,19 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("zipper", "zipper", S.box((w * 0.5, 0.006, 0.012), center=(0, -d / 2 - 0.001, 0.02)), black()))
     parts.append(make_part("tag", "tag", S.box((0.003, 0.05, 0.03), center=(w / 2 + 0.0015, d * 0.3, 0.02)),
                            M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
+    # the piping along the back bolster's top seam, and the grip dots under the base
+    parts.append(make_part("piping", "piping", S.box((w - 0.08, 0.012, 0.012), center=(0, -d / 2 + b / 2, hb - 0.006)), inner))
+    parts += _grip_dots([(sx * w * 0.35, sy * d * 0.35) for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]])
     return parts
 
 
-@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge"),
+def _grip_dots(xy) -> list[Part]:
+    """The rubber non-slip dots printed on a pet bed's underside at ``xy``."""
+    return [make_part(f"grip_{k}", "grip", S.cylinder(0.02, 0.002, center=(x, y, 0.001), sections=10), black("rubber"))
+            for k, (x, y) in enumerate(xy)]
+
+
+@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge", "foot"),
           size_range=(0.2, 0.4), density=1500, variants=("angled", "adjustable", "riser"), placement="surface")
 def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     alu = M.solid(M.jitter(rng, (0.78, 0.78, 0.8), 0.03)[:3], "metal", 0.3, 0.9)
@@ -239,6 +257,7 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sy in enumerate((-1, 1)):
             parts.append(make_part("base" if k == 0 else "base_1", "base",
                                    S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)), alu))
+        parts += _stand_feet([(sx * w * 0.4, sy * (d / 2 - 0.01)) for sy in (-1, 1) for sx in (-1, 1)], rubber)
         return parts
     tilt = np.deg2rad(rng.uniform(15, 25))
     hf = 0.03  # the platform's front edge height
@@ -262,7 +281,14 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
         parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
                                                              sections=10), rubber))
+    parts += _stand_feet([(sx * w * 0.38, sy * d * 0.38) for sy in (-1, 1) for sx in (-1, 1)], rubber)
     return parts
+
+
+def _stand_feet(xy, rubber) -> list[Part]:
+    """Rubber feet let into the underside of a stand's base at ``xy`` (it stands as before)."""
+    return [make_part(f"foot_{k}", "foot", S.cylinder(0.008, 0.002, center=(x, y, 0.001), sections=8), rubber)
+            for k, (x, y) in enumerate(xy)]
 
 
 @register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot",
