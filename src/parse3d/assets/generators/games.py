@@ -69,7 +69,7 @@ def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("dart_board", parts=("board",),
           extra_parts=("rim", "dart", "cabinet", "door", "hinge", "number_ring", "bullseye", "outer_bull",
-                       "treble_ring", "double_ring", "spider"),
+                       "treble_ring", "double_ring", "spider", "number"),
           size_range=(0.4, 0.8), density=500, variants=("plain", "cabinet"), placement="wall")
 def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.218, 0.228)
@@ -127,6 +127,13 @@ def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
         wires.append(S.box(((0.170 - 0.016) * k, 0.0012, 0.001), center=(c * np.cos(a), face_y + 0.0014, zc + c * np.sin(a)),
                            R=rot((0, 1, 0), -a)))
     parts.append(make_part("spider", "spider", wires, M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
+    # the twenty wire numerals round the number ring, 20 at the top, one over each segment
+    rn = (0.170 * k + r * 0.8) / 2
+    wire = M.solid((0.85, 0.85, 0.85), "metal", 0.3, 0.9)
+    for j in range(20):
+        a = np.pi / 2 - 2 * np.pi * j / 20
+        parts.append(make_part(f"number_{j}", "number", S.box((0.006, 0.001, 0.008), center=(rn * np.cos(a), face_y + 0.0005, zc + rn * np.sin(a)),
+                                                              R=rot((0, 1, 0), -(a - np.pi / 2))), wire))
     for k in range(int(rng.integers(0, 4))):
         a = rng.uniform(0, 2 * np.pi)
         rr = rng.uniform(0.0, r * 0.7)
@@ -255,7 +262,7 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper"), size_range=(0.08, 0.45),
+@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper", "hubcap", "headlight", "tail_light"), size_range=(0.08, 0.45),
           density=600, variants=("sedan", "truck", "ride_on"), placement="surface")
 def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.1, 0.16) if variant != "ride_on" else rng.uniform(0.35, 0.42)
@@ -280,6 +287,17 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"bumper_{i}", "bumper", S.box((s * 0.03, W * 0.9, s * 0.05), center=(sx * L / 2, 0, r + s * 0.02)),
                                M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.8)))
+    # a hubcap on each wheel's outer face, the headlights at the front (+X) and the tail lights
+    chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"hubcap_{i}", "hubcap", S.cylinder(r * 0.5, W * 0.02, center=(sx * L * 0.32, sy * W * 0.6 + sy * W * 0.01, r),
+                                                                   axis=(0, 1, 0), sections=12), chrome))
+    zl = r + s * 0.1
+    for i, sy in enumerate((-1, 1)):
+        parts.append(make_part(f"headlight_{i}", "headlight", S.box((s * 0.01, W * 0.18, s * 0.04), center=(L / 2 + s * 0.005 - s * 0.01, sy * W * 0.3, zl)),
+                               M.solid((1.0, 0.95, 0.7), "glass", 0.1)))
+        parts.append(make_part(f"tail_light_{i}", "tail_light", S.box((s * 0.01, W * 0.18, s * 0.04), center=(-L / 2 - s * 0.005 + s * 0.01, sy * W * 0.3, zl)),
+                               M.solid((0.9, 0.1, 0.1), "glass", 0.1)))
     return parts
 
 
