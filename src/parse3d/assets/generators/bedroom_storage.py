@@ -198,7 +198,8 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track"),
+@register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track", "shelf_pin",
+                                                                     "rod_socket"),
           size_range=(1.7, 2.3), density=300, variants=("two_door", "three_door", "sliding"))
 def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n_doors = {"two_door": 2, "three_door": 3, "sliding": 2}[variant]
@@ -224,10 +225,17 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     sx0, sx1 = -w / 2 + t, x_div - t / 2
     depth = d - t * 0.6 - 0.02
     k = 0
+    n_pin = 0
     for z in zs:
         shelf = S.box((sx1 - sx0, depth, t), center=((sx0 + sx1) / 2, -d / 2 + t * 0.6 + depth / 2, z))
         parts.append(make_part(f"shelf_{k}", "shelf", shelf, mat))
         k += 1
+        # the four pins in the drilled rows of the side and the partition that carry the shelf
+        for x, fy in [(sx0 + 0.006, -0.35), (sx0 + 0.006, 0.35), (sx1 - 0.006, -0.35), (sx1 - 0.006, 0.35)]:
+            parts.append(make_part(f"shelf_pin_{n_pin}", "shelf_pin",
+                                   S.cylinder(0.003, 0.012, center=(x, -d / 2 + t * 0.6 + depth * (0.5 + fy), z - t / 2 - 0.003),
+                                              axis=(1, 0, 0), sections=8), pull_mat))
+            n_pin += 1
     # hat shelf and rod in the right section
     hx0, hx1 = x_div + t / 2, w / 2 - t
     z_hat = z_in1 - rng.uniform(0.3, 0.4)
@@ -236,6 +244,10 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     rod = S.cylinder(0.013, hx1 - hx0, center=((hx0 + hx1) / 2, 0.0, z_hat - 0.07), axis=(1, 0, 0),
                      sections=12)
     parts.append(make_part("rod", "rod", rod, pull_mat))
+    # the sockets holding the rod's ends on the side and the partition
+    for j, x in enumerate((hx0 + 0.003, hx1 - 0.003)):
+        parts.append(make_part(f"rod_socket_{j}", "rod_socket", S.cylinder(0.022, 0.006, center=(x, 0.0, z_hat - 0.07), axis=(1, 0, 0),
+                                                                          sections=12), pull_mat))
     # doors
     door_t = 0.02
     y_front = d / 2
