@@ -99,7 +99,8 @@ def cello(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("drum", parts=("shell", "head"), extra_parts=("rim", "lug", "stand", "leg", "ring", "rope", "strainer"), size_range=(0.3, 0.75), density=300,
+@register("drum", parts=("shell", "head"), extra_parts=("rim", "lug", "stand", "leg", "ring", "rope", "strainer", "tension_rod",
+                                                     "badge", "vent"), size_range=(0.3, 0.75), density=300,
           variants=("snare", "floor_tom", "djembe"), placement="floor")
 def drum(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "djembe":
@@ -144,6 +145,16 @@ def drum(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, a in enumerate(np.linspace(0, 2 * np.pi, n_lugs, endpoint=False) + np.pi / n_lugs):
         out.append(_b(f"lug_{k}", "lug", (0.016, 0.014, lh), (np.cos(a) * (r + 0.006), np.sin(a) * (r + 0.006), z0 + dh / 2),
                       steel, R=rot((0, 0, 1), a)))
+        # the tension rod from the top hoop down into the lug
+        rr = r + 0.011
+        out.append(make_part(f"tension_rod_{k}", "tension_rod", S.cylinder(0.003, dh / 2 - lh / 2 + 0.004,
+                                                                           center=(np.cos(a) * rr, np.sin(a) * rr,
+                                                                                   z0 + dh - (dh / 2 - lh / 2 + 0.004) / 2 + 0.002),
+                                                                           sections=6), steel))
+    # the maker's badge with the air vent through the shell, on the back
+    out.append(_b("badge", "badge", (0.04, 0.002, 0.025), (0, -r - 0.001, z0 + dh * 0.5), M.solid((0.8, 0.7, 0.3), "metal", 0.3, 0.9)))
+    out.append(make_part("vent", "vent", S.cylinder(0.005, 0.003, center=(0, -r - 0.0025, z0 + dh * 0.5 + 0.02), axis=(0, 1, 0),
+                                                    sections=8), steel))
     if variant == "snare":
         # the snare strainer's throw-off lever on the front
         out.append(_b("strainer", "strainer", (0.03, 0.02, 0.05), (0, r + 0.01, z0 + dh / 2), steel))
