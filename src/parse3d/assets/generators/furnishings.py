@@ -146,7 +146,7 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge"),
+@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "glide"),
           size_range=(1.2, 2.4), density=400, variants=("three_panel", "four_panel", "shoji"))
 def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 4 if variant == "four_panel" else 3
@@ -172,6 +172,12 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "shoji":
             frame += [S.box((pw - 0.06, t * 0.6, 0.012), center=(cx, cy, zf + (h - zf) * f), R=R) for f in (0.25, 0.5, 0.75)]
         parts.append(make_part(f"frame_{k}", "frame", frame, wood))
+        # a nylon glide let into the foot of each stile
+        ca, sa = np.cos(np.arctan2(dy, dx)), np.sin(np.arctan2(dy, dx))
+        for j, sgn in enumerate((-1, 1)):
+            parts.append(make_part(f"glide_{2 * k + j}", "glide",
+                                   S.cylinder(0.01, 0.004, center=(cx + sgn * (pw / 2 - 0.015) * ca, cy + sgn * (pw / 2 - 0.015) * sa, 0.002),
+                                              sections=8), M.solid((0.85, 0.85, 0.82), "plastic", 0.4)))
         if k > 0:
             parts += hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), n=3,
                                  radius=0.008, length=0.06)
