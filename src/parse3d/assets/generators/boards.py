@@ -22,7 +22,8 @@ def _frame_loop(w: float, h: float, y: float, zc: float, r: float) -> S.Shape:
     return S.tube(path, r, sections=8, closed=True)
 
 
-@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff", "corner", "end_cap", "eraser"),
+@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff", "corner", "end_cap", "eraser",
+                                                             "tray_bracket", "screw"),
           size_range=(0.6, 2.45), density=700, variants=("framed", "frameless", "wood_frame"), placement="wall")
 def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 2.4)
@@ -65,6 +66,14 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
             S.box((tw, 0.006, 0.022), center=(0, y0 + 0.067, z_tray + 0.011)),
             S.box((tw, 0.006, 0.04), center=(0, y0 + 0.003, z_tray))]
     parts.append(make_part("tray", "tray", tray, alu))
+    # the two brackets screwing the tray's back plate to the wall
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"tray_bracket_{i}", "tray_bracket", S.box((0.03, 0.004, 0.05), center=(sx * tw * 0.35, y0 + 0.008, z_tray - 0.005)),
+                               alu))
+    if variant == "wood_frame":  # the screws through the frame's corners into the wall
+        for i, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.004, 0.002, center=(sx * (w / 2 + 0.02), 0.026, zc + sz * (h / 2 + 0.02)),
+                                                                     axis=(0, 1, 0), sections=8), alu))
     # the tray's end caps and the eraser lying in it
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.008, 0.07, 0.03), center=(sx * (tw / 2 + 0.004), y0 + 0.035, z_tray + 0.007)),

@@ -100,7 +100,7 @@ def _frame_material(rng) -> Material:
     return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
 
 
-@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger"),
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger", "turn_button"),
           size_range=(0.2, 1.2), density=500, variants=("landscape", "portrait", "square"),
           placement="wall", groups={"frame": ("rail", "stile", "backing")})
 def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -131,6 +131,12 @@ def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
         iw, ih = iw - 2 * m, ih - 2 * m
     canvas = S.box((iw, t * 0.9, ih), center=(0, bk + t * 0.45, h / 2))
     parts.append(make_part("canvas", "canvas", canvas, M.paper(rng)))
+    # the turn buttons on the back holding the backing board in, one mid-way along each side,
+    # flush with the back like the hangers
+    steel = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    ib = min(bk, 0.0015)
+    for k, (x, z) in enumerate([(0, bar * 0.6), (0, h - bar * 0.6), (-w / 2 + bar * 0.6, h / 2), (w / 2 - bar * 0.6, h / 2)]):
+        parts.append(make_part(f"turn_button_{k}", "turn_button", S.box((0.012, ib, 0.012), center=(x, ib / 2, z)), steel))
     return parts
 
 
