@@ -230,7 +230,8 @@ def socks(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("duffel_bag", parts=("body", "handle"), extra_parts=("strap", "zipper", "pocket", "end_cap", "zipper_pull"), size_range=(0.45, 0.8),
+@register("duffel_bag", parts=("body", "handle"), extra_parts=("strap", "zipper", "pocket", "end_cap", "zipper_pull", "clip", "grip",
+                                                               "foot"), size_range=(0.45, 0.8),
           density=150, variants=("gym", "travel", "barrel"), placement="floor")
 def duffel_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.5, 0.75)
@@ -253,6 +254,16 @@ def duffel_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("strap", "strap", S.tube([(-L / 2 + 0.03, ys + 0.004, top * 0.75), (-L * 0.2, ys, top * 0.3),
                                                    (L * 0.2, ys, top * 0.3), (L / 2 - 0.03, ys + 0.004, top * 0.75)],
                                                   0.006, sections=6), web))
+    # the snap hooks clipping the strap to the bag's ends, the grip wrapped round both handles,
+    # and four studs under the bottom
+    for k, sx in enumerate((-1, 1)):
+        out.append(_b(f"clip_{k}", "clip", (0.03, 0.008, 0.02), (sx * (L / 2 - 0.03), ys + 0.004, top * 0.75), M.metal(rng)))
+    out.append(_b("grip", "grip", (0.1, 0.09, 0.025), (0, 0, top + 0.055), web, bevel=0.006))
+    ry = r * 0.5
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(_c(f"foot_{k}", "foot", 0.008, 0.004, (sx * L * 0.35, sy * ry, 0.002 + (r - np.sqrt(max(r * r - ry * ry, 0.0))
+                                                                                          if variant != "travel" else 0.0)),
+                      M.metal(rng), sections=8))
     if variant == "gym":
         for k, sx in enumerate((-1, 1)):
             out.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(r * 1.01, 0.01, center=(sx * (L / 2 - 0.005), 0, r),

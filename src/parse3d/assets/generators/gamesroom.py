@@ -15,7 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._kit import feet4
+from ._kit import feet4, rot
 from ._rods import rod, segments
 
 _BALL_COLOURS = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.85, 0.1, 0.1), (0.4, 0.1, 0.5), (0.95, 0.45, 0.05),
@@ -55,7 +55,7 @@ def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pool_cue", parts=("shaft", "butt"), extra_parts=("tip", "ferrule", "joint", "wrap", "bumper"),
+@register("pool_cue", parts=("shaft", "butt"), extra_parts=("tip", "ferrule", "joint", "wrap", "bumper", "ring", "inlay"),
           size_range=(1.2, 1.5), density=700, variants=("one_piece", "two_piece", "short"))
 def pool_cue(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.45, 1.48) if variant != "short" else rng.uniform(1.22, 1.32)
@@ -81,6 +81,24 @@ def pool_cue(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.95, 0.95, 0.92), "plastic", 0.3)))
     parts.append(make_part("tip", "tip", S.cylinder(0.0062, 0.008, center=(0, 0, zs + ls + 0.024), sections=12),
                            M.solid((0.15, 0.3, 0.6), "leather", 0.9)))
+    # the trim rings either end of the wrap, and four pearl diamonds inlaid round the forearm
+    # above it
+    zw0, zw1 = zb + lb * 0.22, zb + lb * 0.22 + 0.25
+
+    def r_butt(z: float) -> float:
+        return float(np.interp(z, [zb, zb + lb], [0.015, 0.0105]))
+
+    pearl = M.solid((0.93, 0.92, 0.88), "plastic", 0.2)
+    for k, z in enumerate((zw0, zw1)):
+        rr = r_butt(z)
+        parts.append(make_part(f"ring_{k}", "ring", S.cylinder(rr + 0.0004, 0.004, center=(0, 0, z + (0.002 if k == 0 else -0.002)),
+                                                               sections=16), pearl))
+    zi = zw1 + 0.06
+    ri = r_butt(zi)
+    for k in range(4):
+        a = np.pi / 4 + k * np.pi / 2
+        parts.append(make_part(f"inlay_{k}", "inlay", S.box((0.006, 0.0008, 0.03), center=(np.cos(a) * ri, np.sin(a) * ri, zi),
+                                                            R=rot((0, 0, 1), a + np.pi / 2)), pearl))
     return parts
 
 
