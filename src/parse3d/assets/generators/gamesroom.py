@@ -158,7 +158,7 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("game_console", parts=("body",), extra_parts=("button", "vent", "foot", "stand", "disc_slot", "port", "light",
-                                                        "dock", "screen", "controller"),
+                                                        "dock", "screen", "controller", "thumbstick"),
           size_range=(0.15, 0.42), density=700, variants=("slim", "tower", "dock"), placement="surface")
 def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = M.solid(M.jitter(rng, [(0.08, 0.08, 0.09), (0.9, 0.9, 0.9)][int(rng.integers(2))], 0.02)[:3], "plastic", 0.4)
@@ -180,6 +180,15 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("light", "light", S.box((0.01, 0.002, 0.003), center=(w / 2 - 0.02, d / 2 + 0.001, 0.02)), light))
         parts.append(make_part("port", "port", S.box((0.012, 0.002, 0.005), center=(-w / 2 + 0.025, d / 2 + 0.001, 0.03)),
                                black))
+        # each controller's thumbstick and face button on its front
+        zc = h * 0.8 + 0.012 + 0.051
+        yc = d * 0.1 + 0.007
+        for k, sx in enumerate((-1, 1)):
+            xc = sx * (tw / 2 - (tw - 0.173) / 4)
+            parts.append(make_part(f"thumbstick_{k}", "thumbstick", S.cylinder(0.007, 0.006, center=(xc, yc + 0.003, zc + sx * 0.02), axis=(0, 1, 0),
+                                                                              sections=10), black))
+            parts.append(make_part(f"button_{k}", "button", S.cylinder(0.004, 0.003, center=(xc, yc + 0.0015, zc - sx * 0.02), axis=(0, 1, 0),
+                                                                      sections=8), black))
         return parts
     w, d, h = rng.uniform(0.26, 0.31), rng.uniform(0.24, 0.3), rng.uniform(0.05, 0.07)
     if variant == "slim":
@@ -259,7 +268,7 @@ def game_controller(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("beanbag", parts=("body", "seat"), extra_parts=("back", "handle", "piping", "base", "zipper", "tag"),
+@register("beanbag", parts=("body", "seat"), extra_parts=("back", "handle", "piping", "base", "zipper", "tag", "zipper_pull"),
           size_range=(0.6, 1.4), density=60, variants=("classic", "chair", "lounger"))
 def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     cover = M.fabric(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -295,6 +304,13 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("piping", "piping", S.tube(seam[:-1], 0.007, sections=6, closed=True), cover))
     parts.append(make_part("zipper", "zipper", S.box((0.25, 0.006, 0.012), center=(0, -ry * 0.97, zc * 0.55)),
                            M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+    # the zip's pull tab, and the piping round the bottom panel's seam
+    parts.append(make_part("zipper_pull", "zipper_pull", S.box((0.012, 0.004, 0.03), center=(0.1, -ry * 0.97 - 0.004, zc * 0.55 - 0.012)),
+                           M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+    zs = zc * 0.25
+    fs = np.sqrt(max(1 - ((zs - zc) / zc) ** 2, 0.05))
+    seam2 = np.c_[rx * fs * 1.005 * np.cos(t), ry * fs * 1.005 * np.sin(t), np.full(len(t), zs)]
+    parts.append(make_part("piping_1", "piping", S.tube(seam2[:-1], 0.006, sections=6, closed=True), cover))
     parts.append(make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(rx * 0.7, ry * 0.7 + 0.001, zc * 0.7)),
                            M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
     return parts
