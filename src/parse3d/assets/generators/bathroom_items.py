@@ -76,7 +76,8 @@ def toothbrush(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("toilet_brush", parts=("holder", "handle"), extra_parts=("brush_head", "collar", "knob", "foot", "bracket", "insert"),
+@register("toilet_brush", parts=("holder", "handle"), extra_parts=("brush_head", "collar", "knob", "foot", "bracket", "insert",
+                                                                   "rim_brush", "tip", "screw"),
           size_range=(0.3, 0.5), density=600, variants=("round", "square", "wall_hung"),
           placement="floor")
 def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -118,6 +119,13 @@ def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("handle", "handle", handle, mat))
     parts.append(make_part("knob", "knob", S.ellipsoid((0.012, 0.012, 0.01), center=(0, 0, lh + hh),
                                                        subdivisions=1), mat))
+    # the under-rim tuft over the head, the cap on the head's end, and the plate's two screws
+    parts.append(make_part("rim_brush", "rim_brush", S.frustum(r * 0.45, r * 0.2, 0.02, center=(0, 0, 0.02 + head_h), sections=12), bristle))
+    parts.append(make_part("tip", "tip", S.cylinder(r * 0.25, 0.006, center=(0, 0, 0.02 - 0.003), sections=10), mat))
+    if variant == "wall_hung":
+        for k, sz in enumerate((-1, 1)):
+            parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.002, center=(0, -r - 0.004 - 0.01 + 0.005, hh * 0.8 + sz * hh * 0.6),
+                                                                     axis=(0, 1, 0), sections=8), M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
     return parts
 
 
