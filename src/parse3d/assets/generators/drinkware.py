@@ -117,11 +117,12 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     zd = zb + h * 0.5
     rd = r0 + (r - r0) * 0.5
     parts.append(make_part("decal", "decal", S.box((r * 0.7, 0.0008, h * 0.3), center=(0, rd + 0.0002, zd)), M.paper(rng)))
-    # the painted band just under the rim, and the maker's mark moulded under the base
+    # the painted band just under the rim (flush with the wall, so a cup still nests in another),
+    # and the maker's mark moulded under the base
     zt = zb + h * 0.9
-    rt = r0 + (r - r0) * 0.9
-    parts.append(make_part("band", "band", ring([(rt - 0.0004, zt - 0.003), (rt + 0.0005, zt - 0.003),
-                                                 (rt + 0.0005, zt + 0.003), (rt - 0.0004, zt + 0.003)], sections=16),
+    rt = r0 + (r - r0) * 0.9 - (r - r0) * 0.003 / h  # the wall's outer radius at the band's foot
+    parts.append(make_part("band", "band", ring([(rt - 0.0006, zt - 0.003), (rt - 0.00005, zt - 0.003),
+                                                 (rt - 0.00005, zt + 0.003), (rt - 0.0006, zt + 0.003)], sections=16),
                            Material((0.8, 0.65, 0.3, 1.0), 0.35, 0.8, "metal")))
     parts.append(make_part("mark", "mark", S.cylinder(r_base * 0.4, 0.0005, center=(0, 0, 0.00025), sections=12),
                            M.solid((0.6, 0.6, 0.62), "glass", 0.4)))
