@@ -20,7 +20,7 @@ from ._kit import feet4
 
 
 @register("liquor_bottle", parts=("body", "cap"),
-          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout"),
+          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout", "emblem", "lot_code"),
           size_range=(0.15, 0.36), density=1000, variants=("square", "round", "flask"), placement="surface")
 def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     tint = [(0.75, 0.45, 0.15), (0.85, 0.88, 0.9), (0.2, 0.35, 0.2), (0.35, 0.2, 0.1)][int(rng.integers(4))]
@@ -68,6 +68,14 @@ def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.paper(rng)))
     parts.append(make_part("pour_spout", "pour_spout", S.cylinder(nr + 0.0015, 0.004, center=(0, 0, h - 0.03),
                                                                   sections=16), black()))
+    # the distillery's crest embossed on the shoulder's front, and the lot code printed low on
+    # the back
+    yf = r if variant == "round" else (w / 2 if variant == "square" else d / 2)
+    parts.append(make_part("emblem", "emblem", S.box((0.02, 0.001, 0.02), center=(0, yf + 0.0003, hb * 0.85 if variant != "round" else hb - 0.03)),
+                           glass))
+    yb = r if variant == "round" else (w / 2 if variant == "square" else d / 2)
+    parts.append(make_part("lot_code", "lot_code", S.box((0.015, 0.0006, 0.004), center=(0, -yb - 0.0002, hb * 0.1)),
+                           Material((0.95, 0.95, 0.9, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
