@@ -34,7 +34,7 @@ def _colour(rng, name="plastic"):
 # ------------------------------------------------------------------ stationery and desk things
 
 
-@register("brochure_holder", parts=("base", "pocket"), extra_parts=("brochure", "back_panel", "foot"), size_range=(0.15, 0.35), density=1200,
+@register("brochure_holder", parts=("base", "pocket"), extra_parts=("brochure", "back_panel", "foot", "side"), size_range=(0.15, 0.35), density=1200,
           variants=("single", "tiered", "wide"), placement="surface")
 def brochure_holder(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 3 if variant == "tiered" else 1
@@ -46,6 +46,9 @@ def brochure_holder(rng: np.random.Generator, variant: str) -> list[Part]:
         z = 0.06 + 0.05 * (n - 1 - k)
         out.append(_b(f"pocket_{k}", "pocket", (w, 0.004, z), (0, y + 0.03, 0.008 + z / 2), clear))
         out.append(_b(f"brochure_{k}", "brochure", (w * 0.7, 0.006, z + 0.08), (0, y + 0.02, 0.008 + (z + 0.08) / 2), M.paper(rng)))
+        # the pocket's two side walls that keep the brochures from sliding out sideways
+        for j, sx in enumerate((-1, 1)):
+            out.append(_b(f"side_{2 * k + j}", "side", (0.004, 0.034, z * 0.8), (sx * (w / 2 - 0.002), y + 0.011, 0.008 + z * 0.4), clear))
     # the back panel the brochures lean on, and clear bumpers let into the base's underside
     yb = -0.04 * (n - 1) + 0.004
     zb = 0.06 + 0.05 * (n - 1) + 0.06

@@ -54,7 +54,7 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
                       Material((0.85, 0.8, 0.72, 1.0), 0.9, 0.0, "ceramic"))]
 
 
-@register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot"),
+@register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot", "screw", "hem"),
           size_range=(0.1, 0.26), density=3000, variants=("metal_l", "wooden", "figure"),
           placement="surface")
 def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -65,7 +65,9 @@ def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
         out = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2)), mat),
                make_part("upright", "upright", S.box((w, t, h), center=(0, -d / 2 + t / 2, h / 2)), mat),
                make_part("pad", "pad", S.box((w * 0.8, d * 0.5, 0.002), center=(0, 0.0, t + 0.001)),
-                         M.solid((0.1, 0.1, 0.1), "rubber"))]
+                         M.solid((0.1, 0.1, 0.1), "rubber")),
+               # the hemmed top edge of the upright, folded over for stiffness
+               make_part("hem", "hem", S.box((w, t * 2, 0.008), center=(0, -d / 2 + t, h - 0.004)), mat)]
         return out + _felt_feet(w, d, 0.0, t)
     mat = M.wood(rng) if variant == "wooden" else M.stone(rng)
     t = rng.uniform(0.015, 0.025)
@@ -81,6 +83,10 @@ def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("ornament", "ornament", S.ellipsoid((w * 0.35, d * 0.25, h * 0.3),
                                                                   center=(0, -d / 2 + t * 1.5 + d * 0.25, t + h * 0.3)),
                              mat))
+    # the two screws up through the base into the upright, their heads flush underneath
+    steel = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    out += [make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.0015, center=(sx * w * 0.25, -d / 2 + t * 0.75, 0.00075), sections=8),
+                      steel) for k, sx in enumerate((-1, 1))]
     return out + _felt_feet(w, d, 0.012, t)
 
 
