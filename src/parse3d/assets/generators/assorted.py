@@ -526,7 +526,8 @@ def hinge_barrels(prefix: str, *, x: float, y: float, z0: float, z1: float, mat)
             for k, z in enumerate((z0 + 0.15, z1 - 0.15))]
 
 
-@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump", "back_label", "flip_lid", "collar"), size_range=(0.14, 0.3), density=1000,
+@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump", "back_label", "flip_lid", "collar", "lot_code",
+                                                                   "recycling_mark"), size_range=(0.14, 0.3), density=1000,
           variants=("flip_cap", "pump", "tall"), placement="surface")
 def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.06, 0.08), rng.uniform(0.035, 0.05)
@@ -542,10 +543,15 @@ def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         # the flip-top lid on the cap, hinged at its back
         out.append(_b("flip_lid", "flip_lid", (0.026, 0.026, 0.006), (0, 0.0, h + 0.022), white(rng, "plastic")))
+    # the lot code printed low on the back, and the recycling mark moulded under the base
+    ink = M.solid((0.1, 0.1, 0.12), "paper", 0.7)
+    out.append(_b("lot_code", "lot_code", (0.015, 0.0006, 0.004), (0, -d / 2 - 0.0003, h * 0.1), ink))
+    out.append(_b("recycling_mark", "recycling_mark", (0.012, 0.012, 0.0004), (0, 0, 0.0002), ink))
     return out
 
 
-@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle", "straw", "vent", "grip", "scale"), size_range=(0.1, 0.2), density=1000,
+@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle", "straw", "vent", "grip", "scale", "valve", "collar",
+                                                             "foot_ring"), size_range=(0.1, 0.2), density=1000,
           variants=("handles", "plain", "straw"), placement="surface")
 def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = rng.uniform(0.035, 0.04), rng.uniform(0.1, 0.13)
@@ -565,4 +571,12 @@ def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(_b(f"handle_{k}", "handle", (0.02, 0.012, 0.05), (sx * (r + 0.01), 0, h * 0.55), col))
     elif variant == "straw":
         out.append(_c("straw", "straw", 0.003, h + 0.01, (0, r * 0.5, (h + 0.01) / 2 + 0.012), white(rng, "plastic"), sections=8))
+    # the silicone valve in the spout's mouth, the lid's screw collar, and the non-slip ring under
+    # the base
+    out.append(_c("valve", "valve", 0.004, 0.002, (0, r * 0.5, h + 0.039), M.solid((0.85, 0.85, 0.8), "rubber", 0.6),
+                  sections=8))
+    out.append(make_part("collar", "collar", ring([(r - 0.0005, h - 0.008), (r + 0.0012, h - 0.008), (r + 0.0012, h),
+                                                   (r - 0.0005, h)], sections=20), white(rng, "plastic")))
+    out.append(make_part("foot_ring", "foot_ring", ring([(r * 0.7, 0.0), (r * 0.85, 0.0), (r * 0.85, 0.002), (r * 0.7, 0.002)],
+                                                        sections=20), M.solid((0.9, 0.9, 0.9), "rubber", 0.6)))
     return out
