@@ -336,7 +336,8 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("range_hood", parts=("canopy", "chimney"), extra_parts=("filter", "light", "button"),
+@register("range_hood", parts=("canopy", "chimney"), extra_parts=("filter", "light", "button", "filter_handle", "grease_channel",
+                                                                 "screw"),
           size_range=(0.6, 1.25), density=200, variants=("chimney", "slim", "island"),
           placement="wall")
 def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -365,6 +366,15 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(4):  # the fan speeds and the light switch along the front edge
         out.append(make_part(f"button_{k}", "button", S.cylinder(0.006, 0.006, center=((k - 1.5) * 0.03, d / 2 + 0.002, ch * 0.2),
                                                                 axis=(0, 1, 0), sections=12), black()))
+    # each filter's pull handle, the grease channel along the canopy's back edge, and the two
+    # screws fixing the chimney cover to the canopy
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"filter_handle_{k}", "filter_handle", S.box((0.05, 0.012, 0.004), center=(sx * w * 0.2, d * 0.3, 0.0)),
+                             M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8)))
+    out.append(make_part("grease_channel", "grease_channel", S.box((w * 0.8, 0.015, 0.008), center=(0, -d * 0.35, 0.005)), steel))
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"screw_{k}", "screw", S.cylinder(0.003, 0.002, center=(sx * top_w * 0.3, -d / 2 + 0.125 + 0.111, ch + 0.1),
+                                                              axis=(0, 1, 0), sections=8), steel))
     return out
 
 

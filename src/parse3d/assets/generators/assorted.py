@@ -34,7 +34,7 @@ def _colour(rng, name="plastic"):
 # ------------------------------------------------------------------ stationery and desk things
 
 
-@register("brochure_holder", parts=("base", "pocket"), extra_parts=("brochure", "back_panel", "foot"), size_range=(0.15, 0.35), density=1200,
+@register("brochure_holder", parts=("base", "pocket"), extra_parts=("brochure", "back_panel", "foot", "side"), size_range=(0.15, 0.35), density=1200,
           variants=("single", "tiered", "wide"), placement="surface")
 def brochure_holder(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 3 if variant == "tiered" else 1
@@ -46,6 +46,9 @@ def brochure_holder(rng: np.random.Generator, variant: str) -> list[Part]:
         z = 0.06 + 0.05 * (n - 1 - k)
         out.append(_b(f"pocket_{k}", "pocket", (w, 0.004, z), (0, y + 0.03, 0.008 + z / 2), clear))
         out.append(_b(f"brochure_{k}", "brochure", (w * 0.7, 0.006, z + 0.08), (0, y + 0.02, 0.008 + (z + 0.08) / 2), M.paper(rng)))
+        # the pocket's two side walls that keep the brochures from sliding out sideways
+        for j, sx in enumerate((-1, 1)):
+            out.append(_b(f"side_{2 * k + j}", "side", (0.004, 0.034, z * 0.8), (sx * (w / 2 - 0.002), y + 0.011, 0.008 + z * 0.4), clear))
     # the back panel the brochures lean on, and clear bumpers let into the base's underside
     yb = -0.04 * (n - 1) + 0.004
     zb = 0.06 + 0.05 * (n - 1) + 0.06
@@ -99,7 +102,8 @@ def cello(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("drum", parts=("shell", "head"), extra_parts=("rim", "lug", "stand", "leg", "ring", "rope", "strainer"), size_range=(0.3, 0.75), density=300,
+@register("drum", parts=("shell", "head"), extra_parts=("rim", "lug", "stand", "leg", "ring", "rope", "strainer", "tension_rod",
+                                                     "badge", "vent"), size_range=(0.3, 0.75), density=300,
           variants=("snare", "floor_tom", "djembe"), placement="floor")
 def drum(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "djembe":
@@ -144,6 +148,16 @@ def drum(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, a in enumerate(np.linspace(0, 2 * np.pi, n_lugs, endpoint=False) + np.pi / n_lugs):
         out.append(_b(f"lug_{k}", "lug", (0.016, 0.014, lh), (np.cos(a) * (r + 0.006), np.sin(a) * (r + 0.006), z0 + dh / 2),
                       steel, R=rot((0, 0, 1), a)))
+        # the tension rod from the top hoop down into the lug
+        rr = r + 0.011
+        out.append(make_part(f"tension_rod_{k}", "tension_rod", S.cylinder(0.003, dh / 2 - lh / 2 + 0.004,
+                                                                           center=(np.cos(a) * rr, np.sin(a) * rr,
+                                                                                   z0 + dh - (dh / 2 - lh / 2 + 0.004) / 2 + 0.002),
+                                                                           sections=6), steel))
+    # the maker's badge with the air vent through the shell, on the back
+    out.append(_b("badge", "badge", (0.04, 0.002, 0.025), (0, -r - 0.001, z0 + dh * 0.5), M.solid((0.8, 0.7, 0.3), "metal", 0.3, 0.9)))
+    out.append(make_part("vent", "vent", S.cylinder(0.005, 0.003, center=(0, -r - 0.0025, z0 + dh * 0.5 + 0.02), axis=(0, 1, 0),
+                                                    sections=8), steel))
     if variant == "snare":
         # the snare strainer's throw-off lever on the front
         out.append(_b("strainer", "strainer", (0.03, 0.02, 0.05), (0, r + 0.01, z0 + dh / 2), steel))
@@ -193,8 +207,15 @@ def socks(rng: np.random.Generator, variant: str) -> list[Part]:
     fab = M.solid(M.jitter(rng, (0.5, 0.5, 0.5), 0.35)[:3], "fabric", 0.9)
     if variant == "rolled":
         r = rng.uniform(0.035, 0.045)
+        # the outer sock's cuff turned back over the ball; its heel and toe show on the ball,
+        # the inner sock's toe in the cuff's mouth
+        patch = M.solid(M.jitter(rng, (0.3, 0.3, 0.3), 0.1)[:3], "fabric", 0.9)
         return [make_part("sock", "sock", S.ellipsoid((r * 1.3, r, r * 0.9), center=(0, 0, r * 0.9)), fab),
-                make_part("cuff", "cuff", S.ellipsoid((r * 0.6, r * 1.02, r * 0.6), center=(r * 0.5, 0, r * 0.9)), fab)]
+                make_part("cuff", "cuff", S.ellipsoid((r * 0.6, r * 1.02, r * 0.6), center=(r * 0.5, 0, r * 0.9)), fab),
+                make_part("heel", "heel", S.ellipsoid((r * 0.35, r * 0.5, r * 0.2), center=(-r * 0.3, 0, r * 1.55)), patch),
+                make_part("toe", "toe", S.ellipsoid((r * 0.2, r * 0.55, r * 0.45), center=(-r * 1.08, 0, r * 0.9)), patch),
+                make_part("sock_1", "sock", S.ellipsoid((r * 0.15, r * 0.45, r * 0.35), center=(r * 1.05, 0, r * 0.9)), fab),
+                make_part("toe_1", "toe", S.ellipsoid((r * 0.08, r * 0.3, r * 0.22), center=(r * 1.17, 0, r * 0.9)), patch)]
     n = 2 if variant == "pair" else 1
     L = rng.uniform(0.2, 0.27)
     out = []
@@ -212,7 +233,8 @@ def socks(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("duffel_bag", parts=("body", "handle"), extra_parts=("strap", "zipper", "pocket", "end_cap", "zipper_pull"), size_range=(0.45, 0.8),
+@register("duffel_bag", parts=("body", "handle"), extra_parts=("strap", "zipper", "pocket", "end_cap", "zipper_pull", "clip", "grip",
+                                                               "foot"), size_range=(0.45, 0.8),
           density=150, variants=("gym", "travel", "barrel"), placement="floor")
 def duffel_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.5, 0.75)
@@ -235,6 +257,16 @@ def duffel_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("strap", "strap", S.tube([(-L / 2 + 0.03, ys + 0.004, top * 0.75), (-L * 0.2, ys, top * 0.3),
                                                    (L * 0.2, ys, top * 0.3), (L / 2 - 0.03, ys + 0.004, top * 0.75)],
                                                   0.006, sections=6), web))
+    # the snap hooks clipping the strap to the bag's ends, the grip wrapped round both handles,
+    # and four studs under the bottom
+    for k, sx in enumerate((-1, 1)):
+        out.append(_b(f"clip_{k}", "clip", (0.03, 0.008, 0.02), (sx * (L / 2 - 0.03), ys + 0.004, top * 0.75), M.metal(rng)))
+    out.append(_b("grip", "grip", (0.1, 0.09, 0.025), (0, 0, top + 0.055), web, bevel=0.006))
+    ry = r * 0.5
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(_c(f"foot_{k}", "foot", 0.008, 0.004, (sx * L * 0.35, sy * ry, 0.002 + (r - np.sqrt(max(r * r - ry * ry, 0.0))
+                                                                                          if variant != "travel" else 0.0)),
+                      M.metal(rng), sections=8))
     if variant == "gym":
         for k, sx in enumerate((-1, 1)):
             out.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(r * 1.01, 0.01, center=(sx * (L / 2 - 0.005), 0, r),
@@ -257,7 +289,10 @@ def garment_bag(rng: np.random.Generator, variant: str) -> list[Part]:
                 _b("handle", "handle", (0.15, 0.03, 0.02), (0, -0.2, 0.09), black("fabric")),
                 # the zip round the folded edge, with its pull
                 _b("zipper", "zipper", (w * 0.85, 0.01, 0.004), (0, 0.1, 0.081), M.metal(rng)),
-                _b("zipper_pull", "zipper_pull", (0.012, 0.03, 0.004), (w * 0.3, 0.08, 0.083), M.metal(rng))]
+                _b("zipper_pull", "zipper_pull", (0.012, 0.03, 0.004), (w * 0.3, 0.08, 0.083), M.metal(rng)),
+                # the name window and the accessory pocket on the upper face
+                _b("window", "window", (w * 0.4, 0.12, 0.002), (0, -0.05, 0.081), M.solid((0.85, 0.88, 0.9), "plastic", 0.1)),
+                _b("pocket", "pocket", (w * 0.6, 0.12, 0.008), (0, 0.2, 0.076), fab, bevel=0.003)]
     L = rng.uniform(0.9, 1.05) if variant == "hanging" else rng.uniform(1.3, 1.4)
     return [_b("body", "body", (w, 0.08, L), (0, 0.06, L / 2), fab, bevel=0.02),
             make_part("hook", "hook", S.tube([(0, 0.06, L), (0, 0.06, L + 0.06), (0, 0.02, L + 0.08)], 0.003), M.metal(rng)),
@@ -308,7 +343,8 @@ def bird_cage(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("window", parts=("frame", "glass"),
-          extra_parts=("sill", "mullion", "sash", "handle", "casing", "hinge", "lock", "lift"), size_range=(0.6, 2.2),
+          extra_parts=("sill", "mullion", "sash", "handle", "casing", "hinge", "lock", "lift", "apron", "glazing_bead"),
+          size_range=(0.6, 2.2),
           density=800, variants=("casement", "double_hung", "picture"), placement="wall")
 def window(rng: np.random.Generator, variant: str) -> list[Part]:
     """A window unit as seen from the room: frame, panes and sill on the wall's face."""
@@ -330,6 +366,14 @@ def window(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(_b("head_casing", "casing", (w + 2 * cw, ct, cw), (0, ct / 2, 0.025 + h + cw / 2), frame_mat))
     for k, sx in enumerate((-1, 1)):
         out.append(_b(f"side_casing_{k}", "casing", (cw, ct, h), (sx * (w / 2 + cw / 2), ct / 2, 0.025 + h / 2), frame_mat))
+    # the apron trim under the sill, and the glazing beads holding the glass in the frame
+    out.append(_b("apron", "apron", (w, ct, 0.05), (0, ct / 2, -0.025), frame_mat))
+    gb = 0.012
+    beads = [S.box((w - 2 * f, gb, gb), center=(0, t / 2 + 0.009, 0.025 + f + gb / 2)),
+             S.box((w - 2 * f, gb, gb), center=(0, t / 2 + 0.009, 0.025 + h - f - gb / 2)),
+             S.box((gb, gb, h - 2 * f - 2 * gb), center=(-w / 2 + f + gb / 2, t / 2 + 0.009, 0.025 + h / 2)),
+             S.box((gb, gb, h - 2 * f - 2 * gb), center=(w / 2 - f - gb / 2, t / 2 + 0.009, 0.025 + h / 2))]
+    out.append(make_part("glazing_bead", "glazing_bead", beads, frame_mat))
     hw = M.metal(rng)
     if variant == "double_hung":
         out.append(_b("sash", "sash", (w - 2 * f, t * 0.6, 0.04), (0, t * 0.6, 0.025 + h / 2), frame_mat))
@@ -348,7 +392,8 @@ def window(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("fireplace", parts=("firebox", "mantel", "hearth"),
-          extra_parts=("surround", "grate", "log", "screen", "corbel", "control_panel"),
+          extra_parts=("surround", "grate", "log", "screen", "corbel", "control_panel", "frieze", "plinth", "vent",
+                       "andiron"),
           size_range=(1.0, 1.9), density=1500, variants=("brick", "stone", "electric"))
 def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
     """A fireplace against a wall: the hearth on the floor, the surround and firebox, the mantel
@@ -367,8 +412,16 @@ def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, sx in enumerate((-1, 1)):
         out.append(_b(f"corbel_{k}", "corbel", (0.06, 0.06, 0.1), (sx * (w / 2 - 0.05), d / 2 + 0.03, h - 0.06 - 0.05),
                       M.wood(rng), bevel=0.004))
+    # the frieze board under the mantel shelf, and the plinth blocks the surround's legs stand on
+    trim = out[3].material
+    out.append(_b("frieze", "frieze", (w - 0.2, 0.02, 0.08), (0, d / 2 + 0.01, h - 0.06 - 0.04), trim))
+    for k, sx in enumerate((-1, 1)):
+        out.append(_b(f"plinth_{k}", "plinth", ((w - ow) / 2 + 0.02, d + 0.02, 0.1),
+                      (sx * (w / 2 - (w - ow) / 4), 0.0, hearth_h + 0.05), mat))
     if variant == "electric":
         out.append(_b("screen", "screen", (ow, 0.01, oh), (0, d / 2 - 0.005, hearth_h + oh / 2), M.glass(rng)))
+        # the heater's outlet grille below the screen
+        out.append(_b("vent", "vent", (ow * 0.8, 0.01, 0.03), (0, d / 2 - 0.004, hearth_h + 0.025), black("metal")))
         out.append(_b("control_panel", "control_panel", (0.12, 0.01, 0.03), (ow / 2 - 0.08, d / 2 - 0.005,
                                                                              hearth_h + oh + 0.03), black()))
     else:
@@ -381,6 +434,13 @@ def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
         grate = [S.box((0.015, d * 0.5, 0.015), center=(sx * ow * 0.3, -d * 0.15, hearth_h + 0.0075)) for sx in (-1, 1)]
         grate.append(S.box((ow * 0.7, 0.015, 0.05), center=(0, d * 0.08, hearth_h + 0.025)))
         out.append(make_part("grate", "grate", grate, iron))
+        # the two andirons standing either side of the grate, their finials facing the room
+        for k, sx in enumerate((-1, 1)):
+            x = sx * ow * 0.42
+            out.append(make_part(f"andiron_{k}", "andiron", [S.box((0.02, d * 0.45, 0.02), center=(x, -d * 0.1, hearth_h + 0.01)),
+                                                             S.cylinder(0.012, 0.2, center=(x, d * 0.1, hearth_h + 0.1), sections=8),
+                                                             S.ellipsoid((0.025, 0.025, 0.025), center=(x, d * 0.1, hearth_h + 0.21),
+                                                                         subdivisions=1)], iron))
     return out
 
 
@@ -394,7 +454,7 @@ def prismatic_joint(name: str, parent: str, child: str, travel: float) -> Joint:
 # ----------------------------------------------------------------------------- home and pets
 
 
-@register("rolling_tv_stand", parts=("base", "pole", "mount"), extra_parts=("caster", "shelf", "bracket", "cap"),
+@register("rolling_tv_stand", parts=("base", "pole", "mount"), extra_parts=("caster", "shelf", "bracket", "cap", "clip", "brake"),
           size_range=(1.2, 1.9),
           density=1500, variants=("single_pole", "dual_pole", "with_shelf"))
 def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -418,13 +478,21 @@ def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(_b(f"bracket_{k}", "bracket", (0.04, 0.02, 0.34), (sz * 0.12, 0.065, h * 0.8), steel))
     if variant == "with_shelf":
         out.append(_b("shelf", "shelf", (0.5, 0.35, 0.012), (0, 0.12, h * 0.45), M.glass(rng)))
+    # the cable clips on the back of each pole, and the brake levers on the two front casters
+    n_clip = 0
+    for x in xs:
+        for z in (h * 0.35, h * 0.6):
+            out.append(_b(f"clip_{n_clip}", "clip", (0.03, 0.012, 0.03), (x, -0.031, z), black("plastic")))
+            n_clip += 1
+    for k, sx in enumerate((-1, 1)):
+        out.append(_b(f"brake_{k}", "brake", (0.02, 0.03, 0.008), (sx * (w / 2 - 0.03), d / 2 - 0.04 + 0.03, ch * 0.8), black("plastic")))
     return out
 
 
 # ---------------------------------------------------------- pub, café, bathroom, tea room
 
 
-@register("pint_glass", parts=("body",), extra_parts=("beer", "foam", "logo", "pour_line"), size_range=(0.14, 0.18), density=2500,
+@register("pint_glass", parts=("body",), extra_parts=("beer", "foam", "logo", "pour_line", "capacity_mark", "stamp"), size_range=(0.14, 0.18), density=2500,
           variants=("empty", "full", "nonic"), placement="surface")
 def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     h, r0, r1 = rng.uniform(0.145, 0.16), 0.03, rng.uniform(0.042, 0.045)
@@ -437,6 +505,15 @@ def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     zp = h * 0.78
     rp = r0 + (r1 - r0) * zp / (h * 0.82 if variant == "nonic" else h)
     out.append(_b("pour_line", "pour_line", (0.012, 0.0006, 0.0015), (0, rp + 0.0001, zp), white(rng, "paper")))
+    # the logo again on the back, the capacity figure beside the line and the verification
+    # stamp (a crown or CE mark) etched near the rim
+    etch = M.solid((0.9, 0.92, 0.92), "glass", 0.4)
+    out.append(_b("logo_1", "logo", (0.035, 0.0008, 0.04), (0, -rl - 0.0002, zl), etch))
+    out.append(_b("capacity_mark", "capacity_mark", (0.016, 0.0006, 0.005), (0, rp + 0.0001, zp - 0.005), etch))
+    zs = h * 0.7
+    rs = r0 + (r1 - r0) * zs / (h * 0.82 if variant == "nonic" else h)
+    out.append(_b("stamp", "stamp", (0.006, 0.0006, 0.006), (rs * 0.7071 + 0.0001, rs * 0.7071 + 0.0001, zs), etch,
+                  R=rot((0, 0, 1), -np.pi / 4)))
     if variant == "full":
         out.append(make_part("beer", "beer", S.frustum(r0 - 0.003, r1 * 0.94, h * 0.8, center=(0, 0, 0.01), sections=20),
                              M.food(rng, (0.8, 0.5, 0.1))))
@@ -449,7 +526,8 @@ def hinge_barrels(prefix: str, *, x: float, y: float, z0: float, z1: float, mat)
             for k, z in enumerate((z0 + 0.15, z1 - 0.15))]
 
 
-@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump", "back_label", "flip_lid", "collar"), size_range=(0.14, 0.3), density=1000,
+@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump", "back_label", "flip_lid", "collar", "lot_code",
+                                                                   "recycling_mark"), size_range=(0.14, 0.3), density=1000,
           variants=("flip_cap", "pump", "tall"), placement="surface")
 def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.06, 0.08), rng.uniform(0.035, 0.05)
@@ -465,10 +543,15 @@ def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         # the flip-top lid on the cap, hinged at its back
         out.append(_b("flip_lid", "flip_lid", (0.026, 0.026, 0.006), (0, 0.0, h + 0.022), white(rng, "plastic")))
+    # the lot code printed low on the back, and the recycling mark moulded under the base
+    ink = M.solid((0.1, 0.1, 0.12), "paper", 0.7)
+    out.append(_b("lot_code", "lot_code", (0.015, 0.0006, 0.004), (0, -d / 2 - 0.0003, h * 0.1), ink))
+    out.append(_b("recycling_mark", "recycling_mark", (0.012, 0.012, 0.0004), (0, 0, 0.0002), ink))
     return out
 
 
-@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle", "straw", "vent", "grip", "scale"), size_range=(0.1, 0.2), density=1000,
+@register("sippy_cup", parts=("body", "lid"), extra_parts=("spout", "handle", "straw", "vent", "grip", "scale", "valve", "collar",
+                                                             "foot_ring"), size_range=(0.1, 0.2), density=1000,
           variants=("handles", "plain", "straw"), placement="surface")
 def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = rng.uniform(0.035, 0.04), rng.uniform(0.1, 0.13)
@@ -488,4 +571,12 @@ def sippy_cup(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(_b(f"handle_{k}", "handle", (0.02, 0.012, 0.05), (sx * (r + 0.01), 0, h * 0.55), col))
     elif variant == "straw":
         out.append(_c("straw", "straw", 0.003, h + 0.01, (0, r * 0.5, (h + 0.01) / 2 + 0.012), white(rng, "plastic"), sections=8))
+    # the silicone valve in the spout's mouth, the lid's screw collar, and the non-slip ring under
+    # the base
+    out.append(_c("valve", "valve", 0.004, 0.002, (0, r * 0.5, h + 0.039), M.solid((0.85, 0.85, 0.8), "rubber", 0.6),
+                  sections=8))
+    out.append(make_part("collar", "collar", ring([(r - 0.0005, h - 0.008), (r + 0.0012, h - 0.008), (r + 0.0012, h),
+                                                   (r - 0.0005, h)], sections=20), white(rng, "plastic")))
+    out.append(make_part("foot_ring", "foot_ring", ring([(r * 0.7, 0.0), (r * 0.85, 0.0), (r * 0.85, 0.002), (r * 0.7, 0.002)],
+                                                        sections=20), M.solid((0.9, 0.9, 0.9), "rubber", 0.6)))
     return out

@@ -20,7 +20,7 @@ from ._kit import feet4
 
 
 @register("liquor_bottle", parts=("body", "cap"),
-          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout"),
+          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout", "emblem", "lot_code"),
           size_range=(0.15, 0.36), density=1000, variants=("square", "round", "flask"), placement="surface")
 def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     tint = [(0.75, 0.45, 0.15), (0.85, 0.88, 0.9), (0.2, 0.35, 0.2), (0.35, 0.2, 0.1)][int(rng.integers(4))]
@@ -68,6 +68,14 @@ def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.paper(rng)))
     parts.append(make_part("pour_spout", "pour_spout", S.cylinder(nr + 0.0015, 0.004, center=(0, 0, h - 0.03),
                                                                   sections=16), black()))
+    # the distillery's crest embossed on the shoulder's front, and the lot code printed low on
+    # the back
+    yf = r if variant == "round" else (w / 2 if variant == "square" else d / 2)
+    parts.append(make_part("emblem", "emblem", S.box((0.02, 0.001, 0.02), center=(0, yf + 0.0003, hb * 0.85 if variant != "round" else hb - 0.03)),
+                           glass))
+    yb = r if variant == "round" else (w / 2 if variant == "square" else d / 2)
+    parts.append(make_part("lot_code", "lot_code", S.box((0.015, 0.0006, 0.004), center=(0, -yb - 0.0002, hb * 0.1)),
+                           Material((0.95, 0.95, 0.9, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
@@ -98,7 +106,7 @@ def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam", "logo"),
+@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam", "logo", "band", "lip"),
           size_range=(0.15, 0.3),
           density=800, variants=("cobbler", "boston"), placement="surface")
 def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -125,10 +133,23 @@ def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
     rl = r * 0.75 + r * 0.25 * 0.5
     parts.append(make_part("logo", "logo", S.box((0.02, 0.0006, 0.012), center=(0, rl + 0.0002, h * 0.5)),
                            Material((0.55, 0.55, 0.57, 1.0), 0.5, 0.8, "metal")))
+    # the pressed grip band round the body's waist, and the rolled lip the top seals on
+    zg = h * 0.3
+    rg = r * 0.75 + r * 0.25 * 0.3
+    parts.append(make_part("band", "band", ring([(rg - 0.002, zg - 0.006), (rg + 0.0012, zg - 0.005), (rg + 0.0012, zg + 0.005),
+                                                 (rg - 0.002, zg + 0.006)], sections=24), steel))
+    if variant == "cobbler":  # the strainer's spout lip under the cap
+        parts.append(make_part("lip", "lip", ring([(r * 0.45 - 0.002, h + h * 0.35 - 0.006), (r * 0.45 + 0.0015, h + h * 0.35 - 0.005),
+                                                   (r * 0.45 + 0.0015, h + h * 0.35 - 0.001), (r * 0.45 - 0.002, h + h * 0.35 - 0.001)],
+                                                  sections=16), steel))
+    else:  # the mixing glass's thickened rim, at the top
+        zt = h + 0.004 + h * 0.6
+        parts.append(make_part("lip", "lip", ring([(r * 0.8 - 0.003, zt - 0.006), (r * 0.8 + 0.001, zt - 0.005), (r * 0.8 + 0.001, zt),
+                                                   (r * 0.8 - 0.003, zt)], sections=24), parts[2].material))
     return parts
 
 
-@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid", "knob", "rim", "foot_ring", "liner"), size_range=(0.14, 0.32), density=600,
+@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid", "knob", "rim", "foot_ring", "liner", "handle_plate"), size_range=(0.14, 0.32), density=600,
           variants=("open", "lidded"), placement="surface")
 def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = rng.uniform(0.08, 0.11), rng.uniform(0.16, 0.22)
@@ -138,6 +159,10 @@ def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"handle_{i}", "handle",
                                S.tube([(s * (r * 0.95), 0.015, h * 0.75), (s * (r + 0.022), 0.015, h * 0.75),
                                        (s * (r + 0.022), -0.015, h * 0.75), (s * (r * 0.95), -0.015, h * 0.75)], 0.004),
+                               steel))
+    # the plates riveting each handle to the wall
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"handle_plate_{i}", "handle_plate", S.box((0.003, 0.05, 0.02), center=(sx * (r * 0.95 + 0.0035), 0, h * 0.75)),
                                steel))
     # the rolled rim, the foot ring and the insulated inner liner
     parts.append(make_part("rim", "rim", ring([(r - 0.008, h - 0.006), (r + 0.003, h - 0.005), (r + 0.003, h),

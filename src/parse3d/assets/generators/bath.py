@@ -44,7 +44,8 @@ def _faucet(x: float, y: float, z: float, reach: float, height: float, *, toward
     return S.union([base, S.tube(np.array(path), radius, sections=8)])
 
 
-@register("bathtub", parts=("tub",), extra_parts=("foot", "faucet", "base", "handle", "drain", "overflow"),
+@register("bathtub", parts=("tub",), extra_parts=("foot", "faucet", "base", "handle", "drain", "overflow", "screw", "plug",
+                                                 "escutcheon"),
           size_range=(1.4, 1.9), density=400,
           variants=("clawfoot", "pedestal", "built_in"))
 def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -119,10 +120,21 @@ def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("drain", "drain", S.cylinder(0.035, 0.004, center=(xd, 0, z_floor + 0.002), sections=14), chrome))
     parts.append(make_part("overflow", "overflow", S.cylinder(0.035, 0.008, center=(xo, 0, zo), axis=(1, 0, 0), sections=14),
                            chrome))
+    # the overflow plate's two screws, the rubber plug lying by the drain, and the flanges
+    # under the two handles
+    for i, sz in enumerate((-1, 1)):
+        parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.005, 0.003, center=(xo + 0.0055, 0, zo + sz * 0.02), axis=(1, 0, 0),
+                                                                sections=8), chrome))
+    parts.append(make_part("plug", "plug", S.frustum(0.026, 0.03, 0.012, center=(xd + 0.08, 0.05, z_floor), sections=12),
+                           M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
+    for i, sy in enumerate((-1, 1)):
+        y = sy * 0.09
+        x = x_end if variant == "built_in" else -length / 2 * 0.985 * np.sqrt(1 - (y / (width / 2 * 0.985)) ** 2)
+        parts.append(make_part(f"escutcheon_{i}", "escutcheon", S.cylinder(0.024, 0.006, center=(x, y, top + 0.003), sections=12), chrome))
     return parts
 
 
-@register("toilet", parts=("bowl", "tank", "seat"), extra_parts=("lid", "handle", "base", "hinge", "bolt_cap"),
+@register("toilet", parts=("bowl", "tank", "seat"), extra_parts=("lid", "handle", "base", "hinge", "bolt_cap", "valve"),
           size_range=(0.6, 0.9), density=900, variants=("two_piece", "one_piece", "skirted"))
 def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = _enamel(rng)
@@ -193,6 +205,10 @@ def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
     x_b = 0.15 * 1.0 if variant != "skirted" else r * 0.85 + 0.015
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"bolt_cap_{i}", "bolt_cap", S.frustum(0.014, 0.006, 0.028, center=(sx * x_b, y_b, 0), sections=10), mat))
+    # the shut-off valve on the supply behind the bowl (the collision budget, 60 pieces, allows
+    # one more piece)
+    parts.append(make_part("valve", "valve", S.cylinder(0.012, 0.04, center=(-tank_w / 2 + 0.05, y_tank - tank_d / 2 + 0.03, 0.14),
+                                                        sections=10), M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)))
     return parts
 
 
@@ -212,7 +228,8 @@ def _holed_top(w: float, d: float, t: float, z: float, hole_w: float, hole_d: fl
 
 
 @register("bathroom_vanity", parts=("countertop", "basin", "faucet"),
-          extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_box", "hinge"),
+          extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_box", "hinge", "runner",
+                       "trap", "valve"),
           size_range=(0.7, 1.4), density=500, variants=("vessel", "undermount", "drawers"))
 def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 1.2)
@@ -296,10 +313,24 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     reach = basin_y - y_tap - 0.03
     parts.append(make_part("faucet", "faucet",
                            _faucet(0.0, y_tap, spout_z, reach, tall, towards=(0, 1, 0)), chrome))
+    if variant == "drawers":  # each drawer runs on a centre runner under its box
+        for k in range(rows):
+            zr = plinth + t + hs * k
+            parts.append(make_part(f"runner_{k}", "runner", S.box((0.025, d - 0.1, 0.006), center=(0, -0.02, zr + 0.003)), wood))
+    else:  # the waste trap under the basin and the two shut-off valves on the back panel
+        yb = -d / 2 + 0.03
+        zt = plinth + t + body_h * 0.45
+        z_under = (h - top_t - depth if variant == "undermount" else h - top_t) - 0.005
+        zt = min(zt, z_under - 0.1)
+        parts.append(make_part("trap", "trap", S.tube([(0, basin_y, z_under), (0, basin_y, zt), (0, yb, zt)], 0.02,
+                                                      sections=10), M.solid((0.8, 0.8, 0.82), "plastic", 0.4)))
+        for i, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"valve_{i}", "valve", S.cylinder(0.012, 0.04, center=(sx * min(0.15, w / 2 - 0.06), yb, zt + 0.1),
+                                                                     axis=(0, 1, 0), sections=10), chrome))
     return parts
 
 
-@register("towel_bar", parts=("bar",), extra_parts=("bracket", "set_screw"), size_range=(0.4, 0.9),
+@register("towel_bar", parts=("bar",), extra_parts=("bracket", "set_screw", "end_cap"), size_range=(0.4, 0.9),
           density=2000, variants=("single", "double", "square"), placement="wall")
 def towel_bar(rng: np.random.Generator, variant: str) -> list[Part]:
     length = rng.uniform(0.42, 0.82)
@@ -327,4 +358,10 @@ def towel_bar(rng: np.random.Generator, variant: str) -> list[Part]:
         else:
             bar = S.cylinder(r_bar, length, center=(0, y, z), axis=(1, 0, 0), sections=14)
         parts.append(make_part("bar" if len(ys) == 1 else f"bar_{k}", "bar", bar, mat))
+        # the caps closing the bar's hollow ends
+        for j, sx in enumerate((-1, 1)):
+            xc = sx * (length / 2 - 0.003)
+            cap = (bevel_box((0.006, r_bar * 1.8, r_bar * 1.8), center=(xc, y, z), bevel=0.001) if variant == "square"
+                   else S.cylinder(r_bar, 0.006, center=(xc, y, z), axis=(1, 0, 0), sections=14))
+            parts.append(make_part(f"end_cap_{2 * k + j}", "end_cap", cap, mat))
     return parts

@@ -76,7 +76,8 @@ def toothbrush(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("toilet_brush", parts=("holder", "handle"), extra_parts=("brush_head", "collar", "knob", "foot", "bracket", "insert"),
+@register("toilet_brush", parts=("holder", "handle"), extra_parts=("brush_head", "collar", "knob", "foot", "bracket", "insert",
+                                                                   "rim_brush", "tip", "screw"),
           size_range=(0.3, 0.5), density=600, variants=("round", "square", "wall_hung"),
           placement="floor")
 def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -118,11 +119,18 @@ def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("handle", "handle", handle, mat))
     parts.append(make_part("knob", "knob", S.ellipsoid((0.012, 0.012, 0.01), center=(0, 0, lh + hh),
                                                        subdivisions=1), mat))
+    # the under-rim tuft over the head, the cap on the head's end, and the plate's two screws
+    parts.append(make_part("rim_brush", "rim_brush", S.frustum(r * 0.45, r * 0.2, 0.02, center=(0, 0, 0.02 + head_h), sections=12), bristle))
+    parts.append(make_part("tip", "tip", S.cylinder(r * 0.25, 0.006, center=(0, 0, 0.02 - 0.003), sections=10), mat))
+    if variant == "wall_hung":
+        for k, sz in enumerate((-1, 1)):
+            parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.002, center=(0, -r - 0.004 - 0.01 + 0.005, hh * 0.8 + sz * hh * 0.6),
+                                                                     axis=(0, 1, 0), sections=8), M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
     return parts
 
 
 @register("mirror_cabinet", parts=("body", "door", "mirror", "shelf"),
-          extra_parts=("hinge", "light", "handle", "glass"),
+          extra_parts=("hinge", "light", "handle", "glass", "shelf_pin", "bumper"),
           size_range=(0.35, 1.25), density=600, variants=("single", "double", "lit"), placement="wall")
 def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     """A shallow wall cabinet whose doors are mirrors; glass shelves inside; ``lit`` adds a
@@ -145,6 +153,11 @@ def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]
         zs = t + (hb - 2 * t) * (k + 1) / (ns + 1)
         parts.append(make_part(f"shelf_{k}", "shelf",
                                S.box((w - 2 * t, db - 0.03, 0.006), center=(0, -0.02, zs)), M.glass(rng)))
+        # the four pins in the sides' drilled rows that the glass shelf rests on
+        for j, (sx, fy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"shelf_pin_{4 * k + j}", "shelf_pin",
+                                   S.cylinder(0.0025, 0.012, center=(sx * (w / 2 - t - 0.005), -0.02 + fy * (db - 0.03) * 0.35, zs - 0.0055),
+                                              axis=(1, 0, 0), sections=8), M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)))
     yf = d / 2 - 0.02
     hmat = M.metal(rng)
     dw = w / n
@@ -157,6 +170,12 @@ def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]
         pane = S.box((x1 - x0 - 0.01, 0.003, hb - 0.014), center=((x0 + x1) / 2, yf + 0.016 + 0.0015, hb / 2))
         parts.append(make_part(f"{name}_mirror", "mirror", pane, _mirror(rng)))
         parts.append(mount(name, f"{name}_mirror"))
+        # the clear bumpers on the carcass front that the door closes on, near its free edge
+        xb = x1 - 0.03 if i == 0 else x0 + 0.03
+        for j, zb in enumerate((0.004, hb - 0.004)):
+            parts.append(make_part(f"{name}_bumper_{j}", "bumper",
+                                   S.cylinder(0.005, 0.002, center=(xb, yf - 0.001, zb + (0.006 if j == 0 else -0.006)),
+                                              axis=(0, 1, 0), sections=8), M.solid((0.9, 0.92, 0.92), "plastic", 0.2)))
     if variant == "lit":
         parts.append(make_part("light_housing", "body", S.box((w, d - 0.02, h - hb), center=(0, -0.01, (h + hb) / 2)), mat))
         parts.append(make_part("light", "light", S.box((w * 0.8, 0.01, 0.025), center=(0, d / 2 - 0.02 + 0.005, (h + hb) / 2)),

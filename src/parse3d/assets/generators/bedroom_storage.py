@@ -27,21 +27,37 @@ def _pull(rng: np.random.Generator, center, width: float, style: str) -> S.Shape
 def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z1: float,
                  rows: list[int], y_face: float, depth: float, mat: Material,
                  pull_mat: Material, style: str, start: int = 0, gap: float = 0.006,
-                 weights: list[float] | None = None) -> list[Part | Joint]:
+                 weights: list[float] | None = None, panel_below: bool = False) -> list[Part | Joint]:
     """Drawers filling the front rectangle [x0, x1] x [z0, z1], row by row from the bottom.
 
     ``rows[i]`` is the number of drawers side by side in row ``i``; ``weights`` the relative
     row heights. Each drawer is its front (``drawer_k``, label ``drawer``) on an open box
     (``drawer_k_box``, label ``drawer_box``, open at the top) sliding out of the ``body`` on a prismatic joint,
-    the front mounted on the box and the handle on the front.
+    the front mounted on the box, the handle and its backplate (``backplate_k``) on the front.
+    The case's web frame is modelled too: each drawer rides on a centre guide (``runner_k``,
+    label ``runner``) under its box, a dust panel (``dust_panel_k``) separates each row from the
+    one above (and the lowest row from the open space below it with ``panel_below``), and a
+    divider (``divider_k``) stands between drawers side by side.
     """
     weights = weights or [1.0] * len(rows)
     hs = np.asarray(weights) / np.sum(weights) * (z1 - z0)
     parts: list[Part | Joint] = []
     k = start
     z = z0
-    for n, h in zip(rows, hs, strict=True):
+    bd = max(depth - 0.018, 0.05)
+    y_web = y_face - 0.018 - bd / 2
+    n_div = n_dust = 0
+    for i, (n, h) in enumerate(zip(rows, hs, strict=True)):
         w = (x1 - x0) / n
+        if i > 0 or panel_below:  # the dust panel under this row, in the 13 mm clearance under the boxes
+            parts.append(make_part(f"dust_panel_{n_dust}", "dust_panel",
+                                   S.box((x1 - x0, bd, 0.006), center=((x0 + x1) / 2, y_web, z - 0.003)), mat))
+            n_dust += 1
+        top_gap = 0.006 if i < len(rows) - 1 else 0.0
+        for j in range(1, n):
+            parts.append(make_part(f"divider_{n_div}", "divider",
+                                   S.box((0.008, bd, h - top_gap), center=(x0 + w * j, y_web, z + (h - top_gap) / 2)), mat))
+            n_div += 1
         for j in range(n):
             x = x0 + w * (j + 0.5)
             zc = z + h / 2
@@ -61,8 +77,17 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
             pull_z = zc + (h * 0.2 if h > 0.22 else 0.0)
             parts.append(make_part(f"handle_{k}", "handle",
                                    _pull(rng, (x, y_face, pull_z), w, style), pull_mat))
+            if style == "knob":
+                plate = S.cylinder(0.02, 0.003, center=(x, y_face + 0.0015, pull_z), axis=(0, 1, 0), sections=12)
+            else:
+                plate = bevel_box((min(0.16, w * 0.45) + 0.03, 0.003, 0.03), center=(x, y_face + 0.0015, pull_z),
+                                  bevel=0.001)
+            parts.append(make_part(f"backplate_{k}", "backplate", plate, pull_mat))
+            parts.append(make_part(f"runner_{k}", "runner",
+                                   S.box((0.025, bd, 0.008), center=(x, yc, z + 0.004)), mat))
             parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}_box", travel=DRAWER_TRAVEL * bd),
-                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}")]
+                      mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}"),
+                      mount(f"drawer_{k}", f"backplate_{k}")]
             k += 1
         z += h
     return parts
@@ -93,7 +118,8 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 
 
 @register("nightstand", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box", "ferrule"), size_range=(0.4, 0.75),
+          extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner",
+                       "dust_panel", "divider"), size_range=(0.4, 0.75),
           density=450, variants=("two_drawer", "drawer_shelf", "legged"))
 def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
@@ -121,7 +147,8 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "drawer_shelf":
         dh = body_h * rng.uniform(0.32, 0.4)
         parts += _drawer_grid(rng, x0=x0, x1=x1, z0=inner_top - dh, z1=inner_top, rows=[1],
-                              y_face=y_face, depth=depth, mat=mat, pull_mat=pull_mat, style=style)
+                              y_face=y_face, depth=depth, mat=mat, pull_mat=pull_mat, style=style,
+                              panel_below=True)
         z_shelf = z0 + t + (inner_top - dh - z0 - t) * 0.5
         shelf = S.box((w - 2 * t, d - 0.02, t), center=(0, -0.005, z_shelf))
         parts.append(make_part("shelf", "shelf", shelf, mat))
@@ -133,7 +160,8 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("dresser", parts=("body", "top_panel", "drawer"),
-          extra_parts=("handle", "leg", "plinth", "drawer_box", "ferrule"), size_range=(0.75, 1.8), density=450,
+          extra_parts=("handle", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner", "dust_panel",
+                       "divider"), size_range=(0.75, 1.8), density=450,
           variants=("wide", "tall", "mixed"))
 def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":
@@ -170,7 +198,8 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track"),
+@register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track", "shelf_pin",
+                                                                     "rod_socket"),
           size_range=(1.7, 2.3), density=300, variants=("two_door", "three_door", "sliding"))
 def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n_doors = {"two_door": 2, "three_door": 3, "sliding": 2}[variant]
@@ -196,10 +225,17 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     sx0, sx1 = -w / 2 + t, x_div - t / 2
     depth = d - t * 0.6 - 0.02
     k = 0
+    n_pin = 0
     for z in zs:
         shelf = S.box((sx1 - sx0, depth, t), center=((sx0 + sx1) / 2, -d / 2 + t * 0.6 + depth / 2, z))
         parts.append(make_part(f"shelf_{k}", "shelf", shelf, mat))
         k += 1
+        # the four pins in the drilled rows of the side and the partition that carry the shelf
+        for x, fy in [(sx0 + 0.006, -0.35), (sx0 + 0.006, 0.35), (sx1 - 0.006, -0.35), (sx1 - 0.006, 0.35)]:
+            parts.append(make_part(f"shelf_pin_{n_pin}", "shelf_pin",
+                                   S.cylinder(0.003, 0.012, center=(x, -d / 2 + t * 0.6 + depth * (0.5 + fy), z - t / 2 - 0.003),
+                                              axis=(1, 0, 0), sections=8), pull_mat))
+            n_pin += 1
     # hat shelf and rod in the right section
     hx0, hx1 = x_div + t / 2, w / 2 - t
     z_hat = z_in1 - rng.uniform(0.3, 0.4)
@@ -208,6 +244,10 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     rod = S.cylinder(0.013, hx1 - hx0, center=((hx0 + hx1) / 2, 0.0, z_hat - 0.07), axis=(1, 0, 0),
                      sections=12)
     parts.append(make_part("rod", "rod", rod, pull_mat))
+    # the sockets holding the rod's ends on the side and the partition
+    for j, x in enumerate((hx0 + 0.003, hx1 - 0.003)):
+        parts.append(make_part(f"rod_socket_{j}", "rod_socket", S.cylinder(0.022, 0.006, center=(x, 0.0, z_hat - 0.07), axis=(1, 0, 0),
+                                                                          sections=12), pull_mat))
     # doors
     door_t = 0.02
     y_front = d / 2

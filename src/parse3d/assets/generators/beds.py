@@ -27,6 +27,27 @@ def _mattress(name: str, w: float, d: float, t: float, center, mat) -> Part:
     return make_part(name, "mattress", shape, mat)
 
 
+def _mattress_details(k: int, w: float, d: float, t: float, center, mat) -> list[Part]:
+    """The pieces sewn onto mattress ``k`` (``w`` x ``d`` x ``t`` centred at ``center``): the tape
+    edges binding its top and bottom borders (``tape_edge``), four air ``vent`` grommets in its
+    long sides and the law ``tag`` on one side near the head. None rises above its top."""
+    cx, cy, cz = center
+    tape = M.solid(np.asarray(mat.color[:3]) * 0.85, "fabric", 0.9)
+    out = []
+    for j, z in enumerate((cz - t / 2 + 0.015, cz + t / 2 - 0.015)):
+        e, hgt = 0.004, 0.016
+        ring_ = [S.box((w - 0.08, e, hgt), center=(cx, cy + sy * (d / 2 + e / 2 - 0.001), z)) for sy in (-1, 1)]
+        ring_ += [S.box((e, d - 0.08, hgt), center=(cx + sx * (w / 2 + e / 2 - 0.001), cy, z)) for sx in (-1, 1)]
+        out.append(make_part(f"tape_edge_{2 * k + j}", "tape_edge", ring_, tape))
+    metal = M.solid((0.75, 0.75, 0.72), "metal", 0.4, 0.8)
+    for j, (sx, fy) in enumerate([(-1, -0.35), (-1, 0.35), (1, -0.35), (1, 0.35)]):
+        out.append(make_part(f"vent_{4 * k + j}", "vent", S.cylinder(0.012, 0.004, center=(cx + sx * (w / 2 + 0.001), cy + fy * d, cz),
+                                                                    axis=(1, 0, 0), sections=10), metal))
+    out.append(make_part(f"tag_{k}" if k else "tag", "tag", S.box((0.002, 0.05, 0.07), center=(cx + w / 2 + 0.002, cy - d / 2 + 0.15, cz)),
+                         M.solid((0.95, 0.95, 0.93), "paper", 0.8)))
+    return out
+
+
 def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: float) -> S.Shape:
     """Four rails around a w x d opening whose tops are at ``z_top``, plus support slats."""
     zc = z_top - rail_h / 2
@@ -46,7 +67,8 @@ def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Pa
 
 
 @register("bed", parts=("frame", "mattress", "headboard"),
-          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button", "mattress_handle"),
+          extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button", "mattress_handle",
+                       "tape_edge", "vent", "tag", "glide", "finial", "caster"),
           size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
@@ -68,6 +90,11 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         deck = cushion(w + 2 * rail_t, d + rail_t, z_top - plinth_h,
                        (0, rail_t / 2, (z_top + plinth_h) / 2), round_xy=0.03, round_z=0.015)
         parts.append(make_part("frame", "frame", [base, deck], cloth))
+        # the glides under the plinth's corners, set into it
+        bx, by = (w + 2 * rail_t - 0.16) / 2 - 0.03, (d - 0.16) / 2 - 0.03
+        nylon = M.solid((0.85, 0.85, 0.82), "plastic", 0.4)
+        parts += [make_part(f"glide_{k}", "glide", S.cylinder(0.015, 0.005, center=(sx * bx, sy * by, 0.0025), sections=10), nylon)
+                  for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
         head_h = rng.uniform(0.9, 1.25)
         parts.append(make_part("headboard", "headboard", cushion(
             w + 2 * rail_t + 0.04, head_t, head_h, (0, y_head, head_h / 2),
@@ -89,6 +116,9 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
             for x in xs:
                 shp = post(x, y, 0.0, top, ps, turned=turned)
                 parts.append(make_part(f"post_{i}", "post", shp, wood))
+                # the turned finial crowning the post above the canopy
+                parts.append(make_part(f"finial_{i}", "finial", S.lathe([(ps * 0.3, top), (ps * 0.42, top + 0.03), (ps * 0.25, top + 0.06),
+                                                                         (ps * 0.05, top + 0.075)], sections=12), wood))
                 i += 1
         cr = 0.035
         canopy = [S.box((xs[1] - xs[0] + ps, cr * 1.6, cr), center=(0, y, top - cr / 2))
@@ -122,12 +152,18 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"handle_{k}", "handle",
                                    bar_handle((x, y_face + 0.02, zc + dh * 0.25), 0.16),
                                    M.metal(rng)))
+            # the two casters the drawer rolls out on, under its box
+            for j, sx in enumerate((-1, 1)):
+                parts.append(make_part(f"caster_{2 * k + j}", "caster",
+                                       S.cylinder(0.02, 0.015, center=(x + sx * (dw / 2 - 0.06), y_face - 0.25, 0.02),
+                                                  axis=(1, 0, 0), sections=10), M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
         head_h = rng.uniform(1.0, 1.3)
         head = cushion(w + 2 * rail_t + 0.04, head_t, head_h, (0, y_head, head_h / 2),
                        round_xy=0.02, round_z=0.03 if upholstered else 0.008)
         parts.append(make_part("headboard", "headboard", head, head_mat))
     parts.append(_mattress("mattress", w - 0.01, d - 0.02, t_mat,
                            (0, 0, z_top - 0.04 + t_mat / 2), ticking))
+    parts += _mattress_details(0, w - 0.01, d - 0.02, t_mat, (0, 0, z_top - 0.04 + t_mat / 2), ticking)
     # the strap handles sewn to the mattress's long sides, for turning it
     zm = z_top - 0.04 + t_mat / 2
     for k, (sx, y) in enumerate([(-1, -d * 0.2), (-1, d * 0.2), (1, -d * 0.2), (1, d * 0.2)]):
@@ -160,7 +196,7 @@ def _tufting(w: float, y_face: float, z0: float, z1: float, cloth) -> list[Part]
 
 
 @register("bunk_bed", parts=("frame", "mattress", "ladder"),
-          extra_parts=("guard_rail", "end_panel", "drawer", "handle", "slat"),
+          extra_parts=("guard_rail", "end_panel", "drawer", "handle", "slat", "tape_edge", "vent", "tag"),
           size_range=(1.9, 2.4), density=300,
           variants=("front_ladder", "end_ladder", "trundle"))
 def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -195,6 +231,8 @@ def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
                            (0, 0, z_low - 0.04 + t_mat / 2), mat))
     parts.append(_mattress("mattress_1", length - 0.01, width - 0.01, t_mat,
                            (0, 0, z_up - 0.04 + t_mat / 2), mat))
+    for b, z in enumerate((z_low, z_up)):
+        parts += _mattress_details(b, length - 0.01, width - 0.01, t_mat, (0, 0, z - 0.04 + t_mat / 2), mat)
     # guard rails of the upper bunk: full length at the back, leaving a gap for the ladder
     g_z = z_up + rng.uniform(0.28, 0.34)
     gap = 0.5

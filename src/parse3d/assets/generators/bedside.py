@@ -15,7 +15,8 @@ from ..registry import register
 from ._casework import black
 
 
-@register("alarm_clock", parts=("body", "face"), extra_parts=("bell", "hand", "foot", "button", "display"),
+@register("alarm_clock", parts=("body", "face"), extra_parts=("bell", "hand", "foot", "button", "display", "grille", "hub", "bezel",
+                                                               "key"),
           size_range=(0.07, 0.22), density=700, variants=("twin_bell", "digital", "cube"), placement="surface")
 def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = M.plastic(rng) if variant != "twin_bell" else M.metal(rng)
@@ -27,6 +28,10 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.9, 0.2, 0.1), "glass", 0.1))]
         parts += [make_part(f"button_{k}", "button", S.box((0.02, 0.012, 0.006), center=((k - 1) * 0.03, 0, h + 0.002)), black())
                   for k in range(3)]
+        # the speaker grille on the back, and two rubber pads let into the underside
+        parts.append(make_part("grille", "grille", S.box((w * 0.4, 0.002, h * 0.5), center=(0, -d / 2 - 0.0005, h / 2)), black("metal")))
+        parts += [make_part(f"foot_{k}", "foot", S.cylinder(0.006, 0.002, center=(sx * w * 0.35, 0, 0.001), sections=8), black("rubber"))
+                  for k, sx in enumerate((-1, 1))]
         return parts
     if variant == "cube":
         s = rng.uniform(0.07, 0.09)
@@ -53,10 +58,22 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
         c = (np.cos(a) * L / 2, yf + 0.004 + 0.001 * k, zc + np.sin(a) * L / 2)
         R = np.array([[np.cos(a), 0, -np.sin(a)], [0, 1, 0], [np.sin(a), 0, np.cos(a)]])
         parts.append(make_part(f"hand_{k}", "hand", S.box((L, 0.0015, 0.003), center=c, R=R), black()))
+    # the red alarm hand, the cap over the hands' hub, the bezel round the face and the winding
+    # and alarm-setting keys on the back
+    a = rng.uniform(0, 2 * np.pi)
+    R = np.array([[np.cos(a), 0, -np.sin(a)], [0, 1, 0], [np.sin(a), 0, np.cos(a)]])
+    parts.append(make_part("hand_2", "hand", S.box((r * 0.4, 0.0012, 0.002), center=(np.cos(a) * r * 0.2, yf + 0.0065, zc + np.sin(a) * r * 0.2),
+                                                   R=R), M.solid((0.8, 0.1, 0.1), "metal", 0.4)))
+    parts.append(make_part("hub", "hub", S.cylinder(0.003, 0.004, center=(0, yf + 0.007, zc), axis=(0, 1, 0), sections=8), black()))
+    parts.append(make_part("bezel", "bezel", S.cylinder(r * 0.97, 0.004, center=(0, yf + 0.0005, zc), axis=(0, 1, 0), sections=28), shell))
+    yb = -0.02 if variant == "twin_bell" else -yf
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"key_{k}", "key", [S.cylinder(0.003, 0.008, center=(sx * r * 0.35, yb - 0.004, zc), axis=(0, 1, 0), sections=8),
+                                                  S.box((0.016, 0.003, 0.01), center=(sx * r * 0.35, yb - 0.009, zc))], shell))
     return parts
 
 
-@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "print", "barcode", "flap"),
+@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "print", "barcode", "flap", "perforation"),
           size_range=(0.1, 0.27), density=120,
           variants=("rectangular", "cube"), placement="surface")
 def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -79,4 +96,9 @@ def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("barcode", "barcode", S.box((0.0008, 0.03, 0.015), center=(w / 2 + 0.0004, 0, 0.012)),
                       Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper")),
             # the glued end flap on the left end
-            make_part("flap", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(-w / 2 - 0.0004, 0, h * 0.3)), card)]
+            make_part("flap", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(-w / 2 - 0.0004, 0, h * 0.3)), card),
+            # the pattern printed on the back too, and the perforated panel torn out round the slot
+            make_part("print_1", "print", S.box((w * 0.85, 0.0008, h * 0.7), center=(0, -d / 2 - 0.0004, h / 2)), card),
+            make_part("perforation", "perforation",
+                      [S.box((op_w + 0.02, 0.002, 0.0005), center=(0, sy * 0.0275, h + 0.00025)) for sy in (-1, 1)]
+                      + [S.box((0.002, 0.053, 0.0005), center=(sx * (op_w / 2 + 0.01), 0, h + 0.00025)) for sx in (-1, 1)], card)]

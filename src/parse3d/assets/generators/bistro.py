@@ -158,7 +158,7 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("sign_stand", parts=("base", "frame"),
-          extra_parts=("post", "sign_face", "board", "hinge", "foot", "handle", "bracket", "cap"),
+          extra_parts=("post", "sign_face", "board", "hinge", "foot", "handle", "bracket", "cap", "screw", "collar"),
           size_range=(0.7, 1.9), density=600, variants=("poster", "twin_post", "a_frame"), placement="floor")
 def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     """A free-standing sign holder facing +Y: a weighted ``base``, a ``post`` (two for
@@ -190,6 +190,12 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
                                                       sections=6), M.metal(rng)))
         # the carrying handle through the boards' top, under the hinge
         parts.append(make_part("handle", "handle", S.box((0.12, 0.05, 0.025), center=(0, 0, H - 0.05)), M.metal(rng)))
+        # the rubber shoes on each board's two bottom corners
+        rubber = Material((0.08, 0.08, 0.08, 1.0), 0.9, 0.0, "rubber")
+        yf = np.tan(spread) * H + t / np.cos(spread) / 2
+        for k, (sx, sy) in enumerate([(-1, 1), (1, 1), (-1, -1), (1, -1)]):
+            parts.append(make_part(f"foot_{k}", "foot", S.box((0.05, 0.03, 0.015), center=(sx * (w / 2 - 0.025), sy * (yf - 0.012), 0.0075)),
+                                   rubber))
         return parts
     fw, fh = rng.uniform(0.5, 0.65), rng.uniform(0.7, 0.95)
     top = rng.uniform(1.5, 1.75)
@@ -207,6 +213,13 @@ def sign_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("bracket", "bracket", S.box((0.06, 0.03, 0.05), center=(0, -t / 2 - 0.015, z0 + 0.02)), metal))
         parts.append(make_part("cap", "cap", S.cylinder(0.017, 0.008, center=(0, -t / 2 - 0.015, z0 + 0.05 + 0.004), sections=12),
                                M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+        # the clamp's thumb screw at the back, the collar where the post meets the base, and the
+        # rubber ring under the base's rim
+        parts.append(make_part("screw", "screw", S.cylinder(0.008, 0.02, center=(0, -t / 2 - 0.04, z0 + 0.02), axis=(0, 1, 0), sections=10),
+                               metal))
+        parts.append(make_part("collar", "collar", S.cylinder(0.03, 0.02, center=(0, -t / 2 - 0.015, 0.03), sections=12), metal))
+        parts.append(make_part("foot", "foot", ring([(0.17, 0.0), (0.19, 0.0), (0.19, 0.003), (0.17, 0.003)], sections=32),
+                               Material((0.08, 0.08, 0.08, 1.0), 0.9, 0.0, "rubber")))
     else:
         parts.append(make_part("base", "base", S.box((fw + 0.1, 0.06, 0.02), center=(0, 0, 0.03), bevel=0.004), metal))
         for k, sx in enumerate((-1, 1)):

@@ -15,6 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._household import ring
 from ._kit import hinge_parts, rot
 
 
@@ -56,7 +57,8 @@ def chess_board(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("chess_piece", parts=("base", "body", "head"), extra_parts=("collar", "felt", "cross", "finial", "merlon", "ear"),
+@register("chess_piece", parts=("base", "body", "head"), extra_parts=("collar", "felt", "cross", "finial", "merlon", "ear", "bead",
+                                                                      "mane"),
           size_range=(0.03, 0.12), density=900,
           variants=("royal", "minor", "rook", "pawn"), placement="surface")
 def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -75,6 +77,9 @@ def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("base", "base", S.lathe([(0.0005, z0), (rb, z0), (rb, z0 + hb * 0.5), (rb * 0.8, z0 + hb),
                                                     (0.0005, z0 + hb)], sections=16), mat))
     zb = z0 + hb
+    # the turned bead round the top of the base
+    parts.append(make_part("bead", "bead", ring([(rb * 0.78, zb - hb * 0.3), (rb * 0.86, zb - hb * 0.2), (rb * 0.86, zb - hb * 0.05),
+                                                 (rb * 0.78, zb)], sections=16), mat))
     if variant == "knight":  # a short stem and a horse's head leaning forward (+Y)
         hs = H * 0.2
         parts.append(make_part("body", "body", S.frustum(rb * 0.75, rb * 0.55, hs, center=(0, 0, zb), sections=16), mat))
@@ -88,12 +93,20 @@ def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"ear_{k}", "ear", S.frustum(rb * 0.1, rb * 0.02, H * 0.1,
                                                                 center=(sx * rb * 0.15, -rb * 0.2, zb + H * 0.8), sections=6), mat))
+        # the carved mane down the back of the neck
+        parts.append(make_part("mane", "mane", S.hull(np.array([[sx * rb * 0.12, -rb * 0.42, z] for sx in (-1, 1)
+                                                                for z in (zh + H * 0.05, zb + H * 0.75)]
+                                                               + [[sx * rb * 0.12, -rb * 0.55, zh + H * 0.1] for sx in (-1, 1)])), mat))
         return parts
     stem_top = {"king": 0.62, "queen": 0.6, "bishop": 0.55, "rook": 0.55, "pawn": 0.42}[variant] * H
     rs0, rs1 = rb * 0.6, rb * (0.32 if variant != "rook" else 0.55)
     parts.append(make_part("body", "body", S.frustum(rs0, rs1, stem_top - hb, center=(0, 0, zb), sections=16), mat))
     zc = z0 + stem_top
     rc = rs1 * 1.45 if variant != "rook" else rs1 * 1.15
+    # the thinner fillet turned just under the collar
+    zf = zc - H * 0.04
+    rf_ = float(np.interp(zf, [zb, zc], [rs0, rs1])) + H * 0.008
+    parts.append(make_part("collar_1", "collar", S.cylinder(rf_, H * 0.02, center=(0, 0, zf), sections=16), mat))
     parts.append(make_part("collar", "collar", S.cylinder(rc, H * 0.04, center=(0, 0, zc + H * 0.02), sections=16), mat))
     zh = zc + H * 0.04
     top = z0 + H

@@ -22,7 +22,8 @@ def _frame_loop(w: float, h: float, y: float, zc: float, r: float) -> S.Shape:
     return S.tube(path, r, sections=8, closed=True)
 
 
-@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff", "corner", "end_cap", "eraser"),
+@register("whiteboard", parts=("board", "tray"), extra_parts=("frame", "marker", "standoff", "corner", "end_cap", "eraser",
+                                                             "tray_bracket", "screw"),
           size_range=(0.6, 2.45), density=700, variants=("framed", "frameless", "wood_frame"), placement="wall")
 def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 2.4)
@@ -65,6 +66,14 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
             S.box((tw, 0.006, 0.022), center=(0, y0 + 0.067, z_tray + 0.011)),
             S.box((tw, 0.006, 0.04), center=(0, y0 + 0.003, z_tray))]
     parts.append(make_part("tray", "tray", tray, alu))
+    # the two brackets screwing the tray's back plate to the wall
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"tray_bracket_{i}", "tray_bracket", S.box((0.03, 0.004, 0.05), center=(sx * tw * 0.35, y0 + 0.008, z_tray - 0.005)),
+                               alu))
+    if variant == "wood_frame":  # the screws through the frame's corners into the wall
+        for i, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.004, 0.002, center=(sx * (w / 2 + 0.02), 0.026, zc + sz * (h / 2 + 0.02)),
+                                                                     axis=(0, 1, 0), sections=8), alu))
     # the tray's end caps and the eraser lying in it
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.008, 0.07, 0.03), center=(sx * (tw / 2 + 0.004), y0 + 0.035, z_tray + 0.007)),
@@ -80,7 +89,7 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw", "hook"), size_range=(0.4, 1.6), density=600,
+@register("wall_shelf", parts=("shelf", "bracket"), extra_parts=("screw", "hook", "edge_band"), size_range=(0.4, 1.6), density=600,
           variants=("bracketed", "floating", "two_tier"), placement="wall")
 def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.45, 1.2)
@@ -94,6 +103,12 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("shelf", "shelf", S.box((w, d, t), center=(0, d / 2, zt + t / 2), bevel=0.002), wood))
         parts.append(make_part("bracket", "bracket",
                                S.box((w * 0.8, 0.006, zt + t * 0.6), center=(0, -0.003, (zt + t * 0.6) / 2)), steel))
+        # the screws through the cleat plate below the board, and the veneer edge band on its front
+        for k, x in enumerate(np.linspace(-w * 0.3, w * 0.3, 3)):
+            parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.0045, 0.003, center=(x, 0.0015, zt * 0.45), axis=(0, 1, 0),
+                                                                    sections=10), steel))
+        parts.append(make_part("edge_band", "edge_band", S.box((w - 0.004, 0.0015, t - 0.004), center=(0, d + 0.00075, zt + t / 2)),
+                               wood))
         return parts
     levels = [0.2] if variant == "bracketed" else [0.2, 0.2 + rng.uniform(0.25, 0.35)]
     if variant == "two_tier":
@@ -126,6 +141,17 @@ def wall_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"screw_{2 * i + k}", "screw",
                                    S.cylinder(0.0045, 0.003, center=(x, y_face + 0.0015, z), axis=(0, 1, 0),
                                               sections=10), steel))
+    # a screw up through each bracket's arm into each board, and the veneer edge band on each
+    # board's front
+    n_sc = 2 * len(xs)
+    for x in xs:
+        for zt in levels:
+            parts.append(make_part(f"screw_{n_sc}", "screw", S.cylinder(0.004, 0.003, center=(x, arm * 0.6, zt - t - 0.006 - 0.0015),
+                                                                         sections=8), steel))
+            n_sc += 1
+    for k, zt in enumerate(levels):
+        parts.append(make_part("edge_band" if k == 0 else f"edge_band_{k}", "edge_band",
+                               S.box((w - 0.004, 0.0015, t - 0.004), center=(0, d + 0.00075, zt - t / 2)), wood))
     if variant == "bracketed":
         # cup hooks under the board between the brackets (mugs, towels hang from them)
         for k, x in enumerate(np.linspace(-w / 2 + 0.15, w / 2 - 0.15, 3 if w < 0.9 else 5)):

@@ -22,7 +22,7 @@ from ._kit import mount
 
 @register("hutch", parts=("countertop", "body", "shelf", "back_panel"),
           extra_parts=("side_panel", "top_panel", "door", "drawer", "drawer_box", "handle", "hinge",
-                       "plate_rail", "glass"),
+                       "plate_rail", "glass", "shelf_pin"),
           size_range=(1.5, 2.3), density=550, variants=("open", "glass_doors", "drawers"),
           placement="floor")
 def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -79,6 +79,11 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                mat))
         parts.append(make_part(f"plate_rail_{k}", "plate_rail",
                                S.box((w - 2 * t, 0.012, 0.006), center=(0, yb + 0.012 + 0.07, zk + 0.003)), mat))
+        # the four pins in the side panels' drilled rows that carry the shelf
+        for j, (sx, fy) in enumerate([(-1, 0.25), (-1, 0.75), (1, 0.25), (1, 0.75)]):
+            parts.append(make_part(f"shelf_pin_{4 * k + j}", "shelf_pin",
+                                   S.cylinder(0.003, 0.012, center=(sx * (w / 2 - t - 0.006), yb + 0.012 + (du - 0.012) * fy, zk - t - 0.003),
+                                              axis=(1, 0, 0), sections=8), hmat))
     if variant == "glass_doors":
         zt = H - 0.04
         for i in range(2):

@@ -27,8 +27,28 @@ def _stretchers(w: float, d: float, z: float, size: float, inset: float, mat,
     return [make_part(f"{label}_{k}", label, b, mat) for k, b in enumerate(bars)]
 
 
+def _aprons(w: float, d: float, z_top: float, leg: float, inset: float, mat, *, height: float = 0.07,
+            thick: float = 0.02, blocks: bool = True) -> list[Part]:
+    """The seat frame under a seat whose underside is at ``z_top``: four apron boards between the
+    tops of four corner legs (``leg`` wide, ``inset`` from the edges), flush with the legs'
+    outer faces, and a glued corner block inside each corner."""
+    xs, ys = w / 2 - inset - leg / 2, d / 2 - inset - leg / 2
+    zc = z_top - height / 2
+    boards = [S.box((thick, 2 * ys - leg, height), center=(sx * (xs + leg / 2 - thick / 2), 0, zc)) for sx in (-1, 1)]
+    boards += [S.box((2 * xs - leg, thick, height), center=(0, sy * (ys + leg / 2 - thick / 2), zc)) for sy in (-1, 1)]
+    out = [make_part(f"apron_{k}", "apron", b, mat) for k, b in enumerate(boards)]
+    if blocks:
+        c = 0.045
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            out.append(make_part(f"corner_block_{k}", "corner_block",
+                                 S.box((c, c, height * 0.6), center=(sx * (xs - leg / 2 - c / 2), sy * (ys - leg / 2 - c / 2),
+                                                                     z_top - height * 0.3)), mat))
+    return out
+
+
 @register("chair", parts=("seat", "back", "leg"),
-          extra_parts=("stretcher", "back_post", "slat", "foot"), size_range=(0.72, 1.0),
+          extra_parts=("stretcher", "back_post", "slat", "foot", "apron", "corner_block", "bracket", "rail"),
+          size_range=(0.72, 1.0),
           density=600, variants=("wooden", "shell", "stacking"))
 def chair(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.40, 0.48), rng.uniform(0.40, 0.47)
@@ -58,6 +78,9 @@ def chair(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(make_part(f"slat_{k}", "slat",
                                  S.box((0.018, leg * 0.5, hb - rail - 0.05),
                                        center=(x, py, zl + (hb - rail - 0.05) / 2)), mat))
+        # the seat frame the seat is screwed to, and the lower back rail the slats rise from
+        out += _aprons(w, d, hs - st, leg, 0.01, mat)
+        out.append(make_part("rail", "rail", S.box((2 * px - leg, leg * 0.8, 0.03), center=(0, py, zl - 0.015)), mat))
         return out
     shell = variant == "shell"
     body = M.plastic(rng)
@@ -86,10 +109,31 @@ def chair(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(make_part(f"back_post_{k}", "back_post",
                                  S.tube([(x, -d / 2 + 0.05, hs - st), (x, -d / 2 + 0.03, hs + hb * 0.7)],
                                         r, sections=10), metal))
+            # the bracket screwing the back to its post
+            zb = hs + hb * 0.55
+            out.append(make_part(f"bracket_{k}", "bracket",
+                                 S.box((0.03, 0.012, 0.05), center=(x - sx * 0.012, -d / 2 + 0.036, zb)), metal))
+    # the seat frame: a rail along each side joining the legs' tops, the leg frame's front
+    # stretcher low down, and the plates the seat is screwed to over each leg
+    zr = hs - st - r
+    for k, sx in enumerate((-1, 1)):
+        x = sx * (w / 2 - 0.05)
+        out.append(make_part(f"rail_{k}", "rail", S.tube([(x, -d / 2 + 0.05, zr), (x, d / 2 - 0.05, zr)], r * 0.8,
+                                                        sections=8), metal))
+    ys = d / 2 - 0.05 + splay
+    zs = 0.16
+    xs = w / 2 - 0.05 + splay * (1 - (zs - r) / (hs - st - r))
+    out.append(make_part("stretcher", "stretcher", S.tube([(-xs, ys - splay * (zs - r) / (hs - st - r), zs),
+                                                           (xs, ys - splay * (zs - r) / (hs - st - r), zs)], r * 0.7,
+                                                          sections=8), metal))
+    for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        out.append(make_part(f"bracket_{k + (0 if shell else 2)}", "bracket",
+                             S.box((0.05, 0.05, 0.004), center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), hs - st - 0.002)),
+                             metal))
     return out
 
 
-@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step", "apron", "tread"),
+@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step", "apron", "tread", "corner_block"),
           size_range=(0.28, 0.68), density=600, variants=("round", "square", "step"))
 def stool(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng)
@@ -115,6 +159,10 @@ def stool(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(make_part(f"foot_{k}", "foot", S.box((t + 0.004, 0.04, 0.012),
                                                              center=(sx * (w / 2 - t / 2), sy * (d / 2 - 0.02), 0.006)),
                                  rubber))
+        # the back rail under the top and the kick rail under the step, housed in the side boards
+        out.append(make_part("stretcher_0", "stretcher", S.box((w - 2 * t, t, 0.06), center=(0, -d / 2 + t / 2, h - t - 0.03)), mat))
+        out.append(make_part("stretcher_1", "stretcher", S.box((w - 2 * t, t, 0.05),
+                                                               center=(0, d / 2 - t / 2, h * 0.5 - t - 0.025)), mat))
         return out
     h = rng.uniform(0.42, 0.6)
     st = 0.03
@@ -132,6 +180,8 @@ def stool(rng: np.random.Generator, variant: str) -> list[Part]:
     out += _leg_caps(w, d, leg, 0.0)
     if variant == "square":  # the aprons under the seat, between the legs' tops
         out += _stretchers(w, d, h - st - 0.03, leg, 0.0, mat, label="apron")
+    else:  # a round seat sits on a square frame of aprons, glued blocks in its corners
+        out += _aprons(w, d, h - st, leg, 0.0, mat, height=0.05)
     return out
 
 
@@ -143,7 +193,8 @@ def _leg_caps(w: float, d: float, size: float, inset: float) -> list[Part]:
             for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
 
 
-@register("bench", parts=("seat", "leg"), extra_parts=("rail", "back", "armrest", "frame", "stretcher", "foot", "button"),
+@register("bench", parts=("seat", "leg"), extra_parts=("rail", "back", "armrest", "frame", "stretcher", "foot", "button",
+                                                    "screw", "piping", "corner_block", "dust_cover"),
           size_range=(0.9, 1.9), density=550, variants=("slatted", "park", "upholstered"))
 def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     """The seat is what one sits on: the slats of a slatted or park bench (on two rails), the
@@ -166,6 +217,19 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(n_b):
             out.append(make_part(f"button_{k}", "button", S.cylinder(0.012, 0.006, center=(-w / 2 + w * (k + 0.5) / n_b, 0, hs - 0.002),
                                                                      sections=10), M.fabric(rng)))
+        # the piping round the pad's lower seam, the frame's corner blocks under it, and the
+        # dust cover stapled under the frame
+        zp = hs - 0.055
+        pipe = [S.box((w - 0.012, 0.008, 0.01), center=(0, sy * (d / 2 - 0.012), zp)) for sy in (-1, 1)]
+        pipe += [S.box((0.008, d - 0.032, 0.01), center=(sx * (w / 2 - 0.012), 0, zp)) for sx in (-1, 1)]
+        out.append(make_part("piping", "piping", pipe, out[1].material))
+        c = 0.06
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            out.append(make_part(f"corner_block_{k}", "corner_block",
+                                 S.box((c, c, 0.03), center=(sx * (w / 2 - 0.075 - c / 2), sy * (d / 2 - 0.075 - c / 2), hs - 0.135)),
+                                 wood))
+        out.append(make_part("dust_cover", "dust_cover", S.box((w - 0.02, d - 0.02, 0.002), center=(0, 0, hs - 0.119)),
+                             M.solid((0.06, 0.06, 0.07), "fabric", 0.9)))
         return out
     n = int(rng.integers(3, 6))
     gap = 0.012
@@ -174,11 +238,17 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
         y = -d / 2 + sw / 2 + k * (sw + gap)
         out.append(make_part(f"seat_{k}", "seat", S.box((w, sw, t), center=(0, y, hs - t / 2),
                                                         bevel=0.003), wood))
-    # two rails along the length carry the slats
+    # two rails along the length carry the slats, each slat screwed down to both
     for k, sy in enumerate((-1, 1)):
         out.append(make_part("rail" if k == 0 else "rail_1", "rail",
                              S.box((w - 0.1, 0.03, 0.05), center=(0, sy * (d / 2 - 0.05), hs - t - 0.025)),
                              wood if variant == "slatted" else metal))
+    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.4, 0.9)
+    for k in range(n):
+        y = -d / 2 + sw / 2 + k * (sw + gap)
+        for j, sx in enumerate((-1, 1)):
+            out.append(make_part(f"screw_{2 * k + j}", "screw",
+                                 S.cylinder(0.005, 0.003, center=(sx * (w / 2 - 0.08), y, hs - 0.0016), sections=8), steel))
     legmat = wood if variant == "slatted" else metal
     out += legs4("leg", "leg", w=w - 0.1, d=d, h=hs - t - 0.05, size=0.045, mat=legmat, inset=0.0)
     out += _leg_caps(w - 0.1, d, 0.045, 0.0)
@@ -201,7 +271,7 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle"),
+@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle", "dust_cover"),
           size_range=(0.35, 1.0), density=300, variants=("cube", "round", "tufted"))
 def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.38, 0.46)
@@ -221,6 +291,8 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
         # the carrying loop sewn to the side
         out.append(make_part("handle", "handle", S.tube([(r, -0.04, h * 0.55), (r + 0.02, -0.03, h * 0.55), (r + 0.02, 0.03, h * 0.55),
                                                          (r, 0.04, h * 0.55)], 0.006, sections=6), fab))
+        out += _underside(0.0, [(r * 0.6 * np.cos(a), r * 0.6 * np.sin(a)) for a in np.arange(4) * np.pi / 2 + np.pi / 4],
+                          S.cylinder(r - 0.02, 0.002, center=(0, 0, 0.001), sections=20))
         return out
     w = rng.uniform(0.42, 0.95)
     d = min(w, rng.uniform(0.42, 0.6))
@@ -239,6 +311,12 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     pipe = [S.box((w + 0.008, 0.008, 0.012), center=(0, sy * (d / 2 + 0.002), zp)) for sy in (-1, 1)]
     pipe += [S.box((0.008, d, 0.012), center=(sx * (w / 2 + 0.002), 0, zp)) for sx in (-1, 1)]
     out.append(make_part("piping", "piping", pipe, fab))
+    # the piping round the body's bottom seam, above the feet
+    pipe = [S.box((w + 0.008, 0.008, 0.012), center=(0, sy * (d / 2 + 0.002), foot_h + 0.006)) for sy in (-1, 1)]
+    pipe += [S.box((0.008, d, 0.012), center=(sx * (w / 2 + 0.002), 0, foot_h + 0.006)) for sx in (-1, 1)]
+    out.append(make_part("piping_1", "piping", pipe, fab))
+    out += _underside(foot_h, [(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05)) for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]],
+                      S.box((w - 0.04, d - 0.04, 0.002), center=(0, 0, foot_h + 0.001)))
     if variant == "tufted":
         for i in range(3):
             for j in range(2):
@@ -249,7 +327,19 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot"),
+def _underside(z: float, xy, cloth: S.Shape) -> list[Part]:
+    """What is under an upholstered seat standing at height ``z``: the black dust cover stapled
+    over the frame's bottom, and a nail-in glide under each foot at ``xy`` (or under the frame
+    where there are no feet), set into the wood so the seat stands as before."""
+    black = M.solid((0.06, 0.06, 0.07), "fabric", 0.9)
+    nylon = M.solid((0.85, 0.85, 0.82), "plastic", 0.4)
+    out = [make_part("dust_cover", "dust_cover", cloth, black)]
+    out += [make_part(f"glide_{k}", "glide", S.cylinder(0.012, 0.005, center=(x, y, 0.0025), sections=10), nylon)
+            for k, (x, y) in enumerate(xy)]
+    return out
+
+
+@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot", "rail", "link"),
           size_range=(0.72, 0.95), density=700, variants=("open", "folded"))
 def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.42, 0.46)
@@ -274,6 +364,12 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                              (w / 2 - r, 0, 0.15)], r * 0.8),
                              metal))
         out += _tube_feet([(sx * (w / 2 - r), 0.0) for sx in (-1, 1)] + [(sx * 0.9 * (w / 2 - r), depth - r) for sx in (-1, 1)], r)
+        # the front legs' own crossbar, and the rivets the front legs pivot on
+        out.append(make_part("crossbar_1", "crossbar", S.tube([(-w * 0.45 + r, depth - r, 0.12),
+                                                               (w * 0.45 - r, depth - r, 0.12)], r * 0.8), metal))
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"pivot_{k}", "pivot", S.cylinder(0.006, 0.006, center=(sx * (w / 2 - r), r + 0.003, hs),
+                                                                   axis=(0, 1, 0), sections=8), metal))
         return out
     d = rng.uniform(0.4, 0.45)
     out.append(make_part("seat", "seat", S.box((w - 4 * r, d, 0.015), center=(0, 0, hs - 0.0075),
@@ -296,6 +392,18 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, sx in enumerate((-1, 1)):
         out.append(make_part(f"pivot_{k}", "pivot", S.cylinder(0.006, 0.006, center=(sx * (w / 2 - r - r - 0.003), -d / 2 + 0.015, hs - 0.02),
                                                                axis=(1, 0, 0), sections=8), metal))
+    # the seat's side rails it pivots with, the links tying them to the front legs, and the
+    # front legs' own crossbar low down
+    zr = hs - 0.015 - r * 0.8
+    for k, sx in enumerate((-1, 1)):
+        x = sx * (w / 2 - 2 * r - 0.004)
+        out.append(make_part(f"rail_{k}", "rail", S.tube([(x, -d / 2 + 0.02, zr), (x, d / 2 - 0.03, zr)], r * 0.8,
+                                                        sections=8), metal))
+        out.append(make_part(f"link_{k}", "link", S.box((0.004, 0.09, 0.018), center=(x * 0.96, -d / 2 + 0.1, hs - 0.06),
+                                                        R=rot((1, 0, 0), 0.6)), metal))
+    xc = 0.93 * (w / 2 - r)
+    out.append(make_part("crossbar_1", "crossbar", S.tube([(-xc, d / 2 - 0.045, 0.14), (xc, d / 2 - 0.045, 0.14)], r * 0.8),
+                         metal))
     return out
 
 

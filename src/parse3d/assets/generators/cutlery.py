@@ -34,7 +34,7 @@ def _tapered(x0: float, x1: float, w0: float, w1: float, z0a: float, z0b: float,
     return S.hull(pts)
 
 
-@register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet", "edge", "logo", "butt"),
+@register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet", "edge", "logo", "butt", "hallmark", "motif"),
           size_range=(0.16, 0.38), density=4000, variants=("chef", "table", "paring", "bread"),
           placement="surface")
 def knife(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -74,6 +74,9 @@ def knife(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "table":
         handle = _tapered(0.0, -lh, hw * 0.6, hw, 0.0, 0.0, hh)
         parts.append(make_part("handle", "handle", handle, steel))
+        # the silversmith's stamp mid-handle and the pattern's motif on the handle's end
+        parts.append(_hallmark(-lh * 0.45, hh, rng))
+        parts.append(_motif(-lh * 0.88, hh, hw * 0.7))
         return parts
     wood = rng.random() < 0.5
     hmat = M.wood(rng) if wood else Material((0.08, 0.08, 0.09, 1.0), 0.5, 0.0, "plastic")
@@ -120,6 +123,14 @@ def fork(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
+def _motif(x: float, z: float, w: float) -> Part:
+    """The pattern's raised motif (a shell, a bead, a scroll) on the top face of a handle's
+    end about ``x`` (its surface at ``z``), ``w`` across."""
+    return make_part("motif", "motif", _slab([(x - w * 0.5, 0.0), (x - w * 0.2, -w * 0.4), (x + w * 0.4, -w * 0.3),
+                                              (x + w * 0.4, w * 0.3), (x - w * 0.2, w * 0.4)], z - 0.0003, z + 0.0004),
+                     Material((0.7, 0.71, 0.72, 1.0), 0.3, 0.95, "metal"))
+
+
 def _hallmark(x: float, z: float, rng) -> Part:
     """The silversmith's stamp on the handle's top face, about ``x`` (its surface at ``z``)."""
     return make_part("hallmark", "hallmark", _slab([(x - 0.006, -0.002), (x + 0.006, -0.002), (x + 0.006, 0.002),
@@ -127,7 +138,7 @@ def _hallmark(x: float, z: float, rng) -> Part:
                      Material((0.45, 0.45, 0.47, 1.0), 0.5, 0.6, "metal"))
 
 
-@register("spoon", parts=("bowl", "handle"), extra_parts=("neck", "tip", "hallmark"),
+@register("spoon", parts=("bowl", "handle"), extra_parts=("neck", "tip", "hallmark", "drop", "motif"),
           size_range=(0.1, 0.32), density=7800, variants=("table", "tea", "soup", "serving"),
           placement="surface")
 def spoon(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -159,4 +170,14 @@ def spoon(rng: np.random.Generator, variant: str) -> list[Part]:
     xm = -lh * 0.5
     zm = (z - t * 0.8) + (0.004 - (z - t * 0.8)) * (xm + ln) / (-lh * 0.85 + ln) + t
     parts.append(_hallmark(xm, zm, rng))
+    # the drop: the tapering ridge under the bowl's back that stiffens it where the neck joins,
+    # and the pattern's motif on the handle's end
+    drop = S.hull(np.array([(0.004, -rb * 0.12, depth * 0.62), (0.004, rb * 0.12, depth * 0.62),
+                            (rb * 0.7, -0.0015, depth * 0.18), (rb * 0.7, 0.0015, depth * 0.18),
+                            (0.004, -rb * 0.12, depth * 0.9), (0.004, rb * 0.12, depth * 0.9),
+                            (rb * 0.7, -0.0015, depth * 0.3), (rb * 0.7, 0.0015, depth * 0.3)]))
+    parts.append(make_part("drop", "drop", drop, steel))
+    xt = -lh * 0.78
+    zt = (z - t * 0.8) + (0.004 - (z - t * 0.8)) * (xt + ln) / (-lh * 0.85 + ln) + t
+    parts.append(_motif(xt, zt, w_end * 0.6))
     return parts

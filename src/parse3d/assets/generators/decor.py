@@ -100,7 +100,7 @@ def _frame_material(rng) -> Material:
     return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
 
 
-@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger"),
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger", "turn_button"),
           size_range=(0.2, 1.2), density=500, variants=("landscape", "portrait", "square"),
           placement="wall", groups={"frame": ("rail", "stile", "backing")})
 def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -131,6 +131,12 @@ def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
         iw, ih = iw - 2 * m, ih - 2 * m
     canvas = S.box((iw, t * 0.9, ih), center=(0, bk + t * 0.45, h / 2))
     parts.append(make_part("canvas", "canvas", canvas, M.paper(rng)))
+    # the turn buttons on the back holding the backing board in, one mid-way along each side,
+    # flush with the back like the hangers
+    steel = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    ib = min(bk, 0.0015)
+    for k, (x, z) in enumerate([(0, bar * 0.6), (0, h - bar * 0.6), (-w / 2 + bar * 0.6, h / 2), (w / 2 - bar * 0.6, h / 2)]):
+        parts.append(make_part(f"turn_button_{k}", "turn_button", S.box((0.012, ib, 0.012), center=(x, ib / 2, z)), steel))
     return parts
 
 
@@ -138,7 +144,7 @@ def _mirror_glass() -> Material:
     return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
 
 
-@register("mirror", parts=("frame", "glass"), extra_parts=("hanger",), size_range=(0.3, 1.8),
+@register("mirror", parts=("frame", "glass"), extra_parts=("hanger", "bevel", "screw"), size_range=(0.3, 1.8),
           density=1200, variants=("rectangular", "round", "oval"), placement="wall",
           groups={"frame": ("frame", "rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -161,10 +167,17 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
     frame = _ring(r, width, depth, stretch=k)
     glass = _disc(r - width, 0.0, t_glass, stretch=k)
     # a keyhole hanger plate on the back of the frame's top
-    hanger = S.box((0.03, 0.002, 0.02), center=(0, 0.001, r * k - width / 2))
+    zh = r * k - width / 2
+    hanger = S.box((0.03, 0.002, 0.02), center=(0, 0.001, zh))
+    metal = M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9)
+    # the glass's ground bevel round its edge, and the two screws holding the hanger plate
+    bevel = _ring(r - width, min(0.02, r * 0.08), 0.0015, stretch=k).moved((0, t_glass - 0.001, 0))
     return [make_part("frame", "frame", frame, mat),
             make_part("glass", "glass", glass, _mirror_glass()),
-            make_part("hanger", "hanger", hanger, M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9))]
+            make_part("bevel", "bevel", bevel, _mirror_glass()),
+            make_part("hanger", "hanger", hanger, metal),
+            *[make_part(f"screw_{j}", "screw", S.cylinder(0.0025, 0.0015, center=(sx * 0.01, 0.00275, zh), axis=(0, 1, 0),
+                                                          sections=8), metal) for j, sx in enumerate((-1, 1))]]
 
 
 def _hands(rng, r_face: float, y: float, cz: float) -> Part:

@@ -11,14 +11,14 @@ import numpy as np
 
 from ...geometry import shapes as S
 from .. import materials as M
-from ..model import Joint, Part, make_part
+from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import black, white
 from ._household import ring, shell
 from ._kit import revolute, rot
 
 
-@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal"),
+@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal", "well_line", "dry_foot"),
           size_range=(0.11, 0.18), density=2000, variants=("tea", "coffee", "espresso"),
           placement="surface", groups={"body": ("well", "rim", "foot_ring")})
 def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -44,10 +44,17 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("backstamp", "backstamp", stamp, M.solid((0.3, 0.35, 0.6), "paper", 0.8)),
             # the painted spray on the rim's front
             make_part("decal", "decal", ring([(r * 0.78, bh + 0.0035), (r * 0.9, bh + 0.006), (r * 0.9, bh + 0.0068),
-                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng))]
+                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng)),
+            # the gilded line painted round the well, flush with its floor, where the cup stands
+            make_part("well_line", "well_line", ring([(well * 0.9, bh - 0.0005), (well * 0.95, bh - 0.0005), (well * 0.95, bh),
+                                                      (well * 0.9, bh)], sections=24), gold),
+            # the unglazed ring under the foot it was fired standing on
+            make_part("dry_foot", "dry_foot", ring([(well * 0.71, 0.0), (well * 0.81, 0.0), (well * 0.81, 0.0006),
+                                                    (well * 0.71, 0.0006)], sections=24),
+                      Material((0.85, 0.8, 0.72, 1.0), 0.9, 0.0, "ceramic"))]
 
 
-@register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot"),
+@register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot", "screw", "hem"),
           size_range=(0.1, 0.26), density=3000, variants=("metal_l", "wooden", "figure"),
           placement="surface")
 def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -58,7 +65,9 @@ def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
         out = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2)), mat),
                make_part("upright", "upright", S.box((w, t, h), center=(0, -d / 2 + t / 2, h / 2)), mat),
                make_part("pad", "pad", S.box((w * 0.8, d * 0.5, 0.002), center=(0, 0.0, t + 0.001)),
-                         M.solid((0.1, 0.1, 0.1), "rubber"))]
+                         M.solid((0.1, 0.1, 0.1), "rubber")),
+               # the hemmed top edge of the upright, folded over for stiffness
+               make_part("hem", "hem", S.box((w, t * 2, 0.008), center=(0, -d / 2 + t, h - 0.004)), mat)]
         return out + _felt_feet(w, d, 0.0, t)
     mat = M.wood(rng) if variant == "wooden" else M.stone(rng)
     t = rng.uniform(0.015, 0.025)
@@ -74,6 +83,10 @@ def bookend(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("ornament", "ornament", S.ellipsoid((w * 0.35, d * 0.25, h * 0.3),
                                                                   center=(0, -d / 2 + t * 1.5 + d * 0.25, t + h * 0.3)),
                              mat))
+    # the two screws up through the base into the upright, their heads flush underneath
+    steel = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    out += [make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.0015, center=(sx * w * 0.25, -d / 2 + t * 0.75, 0.00075), sections=8),
+                      steel) for k, sx in enumerate((-1, 1))]
     return out + _felt_feet(w, d, 0.012, t)
 
 
@@ -201,7 +214,7 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("paper", parts=("sheet",), extra_parts=("clip", "wrapper", "label"),
+@register("paper", parts=("sheet",), extra_parts=("clip", "lever", "wrapper", "label", "barcode", "tear_strip", "seal"),
           size_range=(0.2, 0.44), density=800, variants=("stack", "ream", "loose"),
           placement="surface")
 def paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -215,7 +228,15 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
                           M.paper(rng)),
                 # the brand and grade label printed on the wrapper's top
                 make_part("label", "label", S.box((w * 0.6, d * 0.3, 0.0006), center=(0, 0, h + 0.0003)),
-                          white(rng, "paper"))]
+                          white(rng, "paper")),
+                # the barcode on the wrapper's front, the tear strip along its top and the glued
+                # seam where the wrapper closes underneath
+                make_part("barcode", "barcode", S.box((w * 0.3, 0.0006, h * 0.35), center=(w * 0.2, d * 0.3 + 0.0003, h * 0.5)),
+                          black("paper")),
+                make_part("tear_strip", "tear_strip", S.box((w * 0.9, 0.006, 0.0005), center=(0, d * 0.22, h + 0.00025)),
+                          Material((0.85, 0.2, 0.15, 1.0), 0.6, 0.0, "paper")),
+                make_part("seal", "seal", S.box((w * 0.5, d * 0.6 - 0.002, 0.0005), center=(0, 0, 0.00025)),
+                          M.paper(rng))]
     n = int(rng.integers(3, 9))
     out = []
     z = 0.0
@@ -228,6 +249,12 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "stack":
         out.append(make_part("clip", "clip", S.box((0.03, 0.02, z + 0.004), center=(0, d / 2 - 0.008, (z + 0.004) / 2)),
                              black("metal")))
+        # the binder clip's two wire levers, folded down over the stack
+        wire = M.solid((0.75, 0.75, 0.78), "metal", 0.3, 0.9)
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"lever_{k}", "lever", S.tube([(sx * 0.011, d / 2 - 0.006, z + 0.0048),
+                                                                (sx * 0.011, d / 2 - 0.034, z + 0.0048)], 0.0008, sections=6),
+                                 wire))
     return out
 
 
@@ -303,7 +330,7 @@ def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("water_pitcher", parts=("body", "handle"),
-          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale"),
+          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale", "thumb_rest", "backstamp"),
           size_range=(0.18, 0.32), density=1500, variants=("glass", "filter_jug", "ceramic"),
           placement="surface")
 def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -332,6 +359,11 @@ def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
         marks.append(S.box((0.02 if k % 2 == 0 else 0.012, 0.0008, 0.0015),
                            center=(np.sin(a) * (rz + 0.0002), np.cos(a) * (rz + 0.0002), z), R=rot((0, 0, 1), -a)))
     out.append(make_part("scale", "scale", marks, white(rng, "paper")))
+    # the thumb rest on the handle's top, and the maker's mark under the floor
+    out.append(make_part("thumb_rest", "thumb_rest", S.box((0.016, 0.02, 0.008), center=(0, -r - 0.03, h * 0.82 + 0.006), bevel=0.002),
+                         mat))
+    out.append(make_part("backstamp", "backstamp", S.cylinder(r * 0.3, 0.0005, center=(0, 0, 0.0035), sections=12),
+                         M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     if variant == "filter_jug":
         lid_mat = white(rng, "plastic")
         out.append(make_part("lid", "lid", S.cylinder(r * 0.95, 0.012, center=(0, 0, h + 0.006)), lid_mat))
@@ -374,7 +406,8 @@ def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("soap_dispenser", parts=("body", "pump"),
-          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad"),
+          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad", "decal",
+                       "backstamp", "actuator"),
           size_range=(0.12, 0.26), density=1000, variants=("pump_bottle", "wall_mounted", "ceramic"),
           placement="surface")
 def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -407,10 +440,17 @@ def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
         # the dip tube, seen through the glass
         out.append(make_part("dip_tube", "dip_tube", S.cylinder(0.0025, h - 0.01, center=(0, 0, 0.005 + (h - 0.01) / 2),
                                                                 sections=8), M.solid((0.9, 0.9, 0.9), "plastic", 0.3)))
+    else:  # a glazed jar: the painted decal on its front, the potter's mark under the base
+        out.append(make_part("decal", "decal", S.box((r * 0.9, 0.0008, h * 0.3), center=(0, r + 0.0003, h * 0.45)),
+                             M.solid((0.25, 0.3, 0.45), "paper", 0.6)))
+        out.append(make_part("backstamp", "backstamp", S.cylinder(r * 0.3, 0.0005, center=(0, 0, 0.0018), sections=10),
+                             M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
+    # the press head's finger rest on top of the pump
+    out.append(make_part("actuator", "actuator", S.box((0.016, 0.018, 0.004), center=(0, -0.002, h + 0.062)), metal))
     return out
 
 
-@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode"),
+@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode", "cap_ridge", "lot_code"),
           size_range=(0.08, 0.24), density=1000, variants=("toothpaste", "cream", "paint"),
           placement="surface")
 def tube(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -434,10 +474,25 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
                                               center=(x0 + cap_l + 0.01 + L * 0.3, 0, r * 1.6 + 0.0004)), M.paper(rng)),
             # the barcode printed near the crimped end
             make_part("barcode", "barcode", S.box((0.02, r * 1.2, 0.0008), center=(L / 2 - 0.025, 0, r * 1.6 + 0.0004)),
-                      white(rng, "paper"))]
+                      white(rng, "paper")),
+            # the ridges round the cap's edge for grip, and the batch code pressed into the crimp
+            make_part("cap_ridge", "cap_ridge", ring([(r * 0.6 - 0.0005, 0.0), (r * 0.6 + 0.0008, 0.0), (r * 0.6 + 0.0008, cap_l * 0.6),
+                                                      (r * 0.6 - 0.0005, cap_l * 0.6)], sections=16)
+                      .apply(_x_axis(x0 + cap_l * 0.2, r * 0.8)), white(rng, "plastic")),
+            make_part("lot_code", "lot_code", S.box((0.006, r * 1.6, 0.0006), center=(L / 2 - 0.005, 0, r * 0.8 + r * 0.125 + 0.0003)),
+                      black("paper"))]
 
 
-@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo"),
+def _x_axis(x: float, z: float) -> np.ndarray:
+    """(4, 4) transform turning a ring about +Z into one about +X, starting at ``x``, axis at
+    height ``z``."""
+    T = np.eye(4)
+    T[:3, :3] = rot((0, 1, 0), np.pi / 2)
+    T[:3, 3] = (x, 0, z)
+    return T
+
+
+@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo", "cover", "number"),
           size_range=(0.06, 0.26), density=100, variants=("soccer", "basketball", "tennis"),
           placement="floor")
 def ball(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -478,10 +533,33 @@ def ball(rng: np.random.Generator, variant: str) -> list[Part]:
         T[:3, :3] = rot((1, 0, 0), np.pi / 2)
         T[:3, 3] = (0, r, r) - T[:3, :3] @ (0, 0, r)
         out.append(make_part("seam_1", "seam", band2.apply(T), black("rubber")))
+        # the third channel, the meridian crossing the second at the poles
+        T2 = np.eye(4)
+        T2[:3, :3] = rot((0, 1, 0), np.pi / 2)
+        T2[:3, 3] = (0, 0, r) - T2[:3, :3] @ (0, 0, r)
+        out.append(make_part("seam_2", "seam", band2.apply(T2), black("rubber")))
         out.append(make_part("logo", "logo", S.box((r * 0.4, 0.001, r * 0.2), center=(r * 0.45, r * 0.89, r * 1.25)),
                              black("paper")))
     else:
+        # the two felt covers the seam joins (each a half shell round the rubber core), the
+        # maker's logo printed on each, and the ball's number under the front one
+        felt = M.solid(M.jitter(rng, col, 0.02), "fabric", 0.95)
+        th = np.array([0.35, 0.8, 1.2, 1.52])
+        ri = r * 0.94
+        half = [S.cylinder(ri * np.sin(th[0]), r * 0.05, center=(0, 0, r - ri * np.cos(th[0]) + r * 0.025), sections=12)]
+        half += [ring([(ri * np.sin(a), r - ri * np.cos(a)), (r * np.sin(a), r - r * np.cos(a)),
+                       (r * np.sin(b), r - r * np.cos(b)), (ri * np.sin(b), r - ri * np.cos(b))], sections=20)
+                 for a, b in zip(th[:-1], th[1:], strict=True)]
+        flip = np.eye(4)
+        flip[:3, :3] = rot((1, 0, 0), np.pi)
+        flip[2, 3] = 2 * r
+        out.append(make_part("cover", "cover", half, felt))
+        out.append(make_part("cover_1", "cover", [h.apply(flip) for h in half], felt))
         out.append(make_part("logo", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, r, r * 1.35)),
+                             black("paper")))
+        out.append(make_part("logo_1", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, -r, r * 0.65)),
+                             black("paper")))
+        out.append(make_part("number", "number", S.box((r * 0.12, 0.0008, r * 0.18), center=(0, r * 0.985, r * 1.12)),
                              black("paper")))
     return out
 
@@ -499,7 +577,8 @@ def _place(v: np.ndarray, r: float) -> np.ndarray:
     return T
 
 
-@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband", "feather", "chin_strap"),
+@register("hat", parts=("crown", "brim"), extra_parts=("band", "button", "eyelet", "strap", "bow", "sweatband", "feather", "chin_strap",
+                                                    "binding"),
           size_range=(0.2, 0.42), density=150, variants=("cap", "fedora", "sun_hat"),
           placement="surface")
 def hat(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -532,6 +611,13 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid(M.jitter(rng, (0.15, 0.1, 0.08), 0.03), "fabric", 0.8)))
     out.append(make_part("sweatband", "sweatband", ring([(rc - 0.006, 0.004), (rc - 0.002, 0.004), (rc - 0.002, 0.03),
                                                          (rc - 0.006, 0.03)], sections=24), M.leather(rng)))
+    # the stitched edge binding round the brim, and an air eyelet each side of the crown
+    out.append(make_part("binding", "binding", ring([(rb - 0.004, 0.0), (rb + 0.001, 0.0), (rb + 0.001, 0.005), (rb - 0.004, 0.005)],
+                                                    sections=32), out[2].material))
+    re = rc * (1 - 0.05 * (hc * 0.5 - 0.004) / (hc * 0.8 - 0.004))
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"eyelet_{k}", "eyelet", S.cylinder(0.003, 0.002, center=(sx * (re + 0.0003), 0, hc * 0.5), axis=(1, 0, 0),
+                                                                 sections=8), black("metal")))
     if variant == "fedora":  # a small feather tucked in the band beside the bow
         out.append(make_part("feather", "feather", S.ellipsoid((0.004, 0.012, 0.035), center=(-rc - 0.004, 0.02, 0.035), subdivisions=1),
                              M.solid(M.jitter(rng, (0.5, 0.4, 0.3), 0.1), "fabric", 0.9)))
@@ -603,6 +689,10 @@ def dumbbell(rng: np.random.Generator, variant: str) -> list[Part]:
     # the knurled grip sleeve in the middle of the handle
     out.append(make_part("grip", "grip", S.cylinder(0.0165, min(0.12, L - 2 * pw - 0.06), center=(0, 0, r),
                                                     axis=(1, 0, 0), sections=12), M.metal(rng)))
+    if variant != "adjustable":  # the steel collar where the handle enters each head
+        for k, sx in enumerate((-1, 1)):
+            out.append(make_part(f"collar_{k}", "collar", S.cylinder(0.022, 0.008, center=(sx * (L / 2 - pw - 0.004), 0, r),
+                                                                    axis=(1, 0, 0), sections=12), steel))
     return out
 
 

@@ -21,7 +21,7 @@ from ._kit import rot
 
 
 @register("sideboard", parts=("top_panel", "body", "shelf"),
-          extra_parts=("door", "drawer", "drawer_box", "handle", "hinge", "leg"),
+          extra_parts=("door", "drawer", "drawer_box", "handle", "hinge", "leg", "shelf_pin"),
           size_range=(0.9, 2.2), density=550, variants=("drawers_over_doors", "three_door", "legged"),
           placement="floor")
 def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -73,11 +73,18 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         parts.append(make_part(f"shelf_{b}", "shelf",
                                S.box((sx1 - sx0, d - 0.04, t), center=((sx0 + sx1) / 2, -0.012, zs)),
                                mat))
+        # the four pins in the bay's drilled sides that carry the shelf
+        for j, (ex, fy) in enumerate([(0, -1), (1, -1), (0, 1), (1, 1)]):
+            x = sx0 + 0.006 if ex == 0 else sx1 - 0.006
+            parts.append(make_part(f"shelf_pin_{4 * b + j}", "shelf_pin",
+                                   S.cylinder(0.003, 0.012, center=(x, -0.012 + fy * (d - 0.04) * 0.35, zs - t / 2 - 0.003),
+                                              axis=(1, 0, 0), sections=8), hmat))
     return parts
 
 
 @register("display_table", parts=("tabletop", "leg"),
-          extra_parts=("shelf", "riser", "apron", "foot", "collar"), size_range=(0.8, 2.0), density=500,
+          extra_parts=("shelf", "riser", "apron", "foot", "collar", "top_plate", "glide", "corner_block"), size_range=(0.8, 2.0),
+          density=500,
           variants=("two_tier", "riser", "round"), placement="floor")
 def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
     """A shop's merchandising table: a top at 0.7-0.8 m, a lower shelf (``two_tier``) or a
@@ -105,6 +112,15 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                sections=12), leg_mat))
         parts.append(make_part("riser", "riser", S.cylinder(r2, 0.025, center=(0, 0, h + h2 + 0.0125 - 0.002),
                                                              sections=32), mat))
+        # the cross plate under the top that fixes it to the column, and four glides let into
+        # the foot's underside
+        parts.append(make_part("top_plate", "top_plate", [S.box((r * 1.1, 0.06, 0.012), center=(0, 0, h - t - 0.006)),
+                                                          S.box((0.06, r * 1.1, 0.012), center=(0, 0, h - t - 0.006))], leg_mat))
+        rubber = Material((0.08, 0.08, 0.08, 1.0), 0.9, 0.0, "rubber")
+        for k in range(4):
+            a = np.pi / 4 + k * np.pi / 2
+            parts.append(make_part(f"glide_{k}", "glide", S.cylinder(0.015, 0.004, center=(r * 0.5 * np.cos(a), r * 0.5 * np.sin(a), 0.002),
+                                                                    sections=10), rubber))
         return parts
     w, d = rng.uniform(1.2, 1.8), rng.uniform(0.7, 0.95)
     parts.append(make_part("tabletop", "tabletop", S.box((w, d, t), center=(0, 0, h - t / 2), bevel=0.004),
@@ -124,6 +140,10 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
                                    ((0.02, d - 2 * leg - 0.04, ah), (w / 2 - 0.03, 0, za)),
                                    ((0.02, d - 2 * leg - 0.04, ah), (-w / 2 + 0.03, 0, za))]):
         parts.append(make_part(f"apron_{k}", "apron", S.box(size, center=c), mat))
+    # the glued blocks in the apron's corners, inside each leg
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        x, y = sx * (w / 2 - leg - 0.02 - 0.025), sy * (d / 2 - leg - 0.02 - 0.025)
+        parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.05, 0.05, ah * 0.6), center=(x, y, h - t - ah * 0.3)), mat))
     if variant == "two_tier":
         zs = rng.uniform(0.15, 0.25)
         parts.append(make_part("shelf", "shelf", S.box((w - 2 * leg - 0.04, d - 2 * leg - 0.04, 0.02),
@@ -135,7 +155,7 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel"),
+@register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel", "label"),
           size_range=(0.9, 2.8), density=300, variants=("plain", "bordered", "tasselled"),
           placement="surface", groups={"body": ("runner", "hem", "border")})
 def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -152,10 +172,16 @@ def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         runner = S.box((L, W, t), center=(0, 0, t / 2))
     parts = [make_part("runner", "runner", runner, cloth)]
-    if not pointed:  # a stitched hem across each end
+    if not pointed:  # a stitched hem across each end, and along each long side between them
         for k, sx in enumerate((-1, 1)):
             hem = S.box((0.03, W - 0.004, 0.0015), center=(sx * (L / 2 - 0.017), 0, t + 0.0006))
             parts.append(make_part(f"hem_{k}", "hem", hem, cloth))
+        for k, sy in enumerate((-1, 1)):
+            hem = S.box((L - 0.07, 0.012, 0.0015), center=(0, sy * (W / 2 - 0.008), t + 0.0006))
+            parts.append(make_part(f"hem_{2 + k}", "hem", hem, cloth))
+    # the maker's care label sewn on underneath, near one end
+    parts.append(make_part("label", "label", S.box((0.03, 0.05, 0.0008), center=(-L / 2 + 0.2, 0, 0.0004)),
+                           Material((0.92, 0.92, 0.9, 1.0), 0.8, 0.0, "fabric")))
     if variant == "bordered":
         edge = Material(M.jitter(rng, (0.85, 0.75, 0.45), 0.05), 0.6, 0.2, "fabric")
         b = 0.025

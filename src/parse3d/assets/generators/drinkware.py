@@ -63,6 +63,13 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
     unglazed = Material(M.jitter(rng, (0.8, 0.74, 0.64), 0.03), 0.9, 0.0, "ceramic")
     if variant == "square":
         parts.append(make_part("base", "base", foot, unglazed))
+        # the glazed lip round the four walls' top, and the maker's mark under the base
+        w, zl = 2 * r, fh + h
+        lip = [S.box((w + 0.001, t + 0.001, 0.002), center=(0, sy * (w - t) / 2, zl - 0.0005)) for sy in (-1, 1)]
+        lip += [S.box((t + 0.001, w - 2 * t, 0.002), center=(sx * (w - t) / 2, 0, zl - 0.0005)) for sx in (-1, 1)]
+        parts.append(make_part("rim", "rim", lip, mat))
+        parts.append(make_part("backstamp", "backstamp", S.box((r * 0.7, r * 0.7, 0.0005), center=(0, 0, 0.00025)),
+                               M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     else:
         parts.append(make_part("foot_ring", "foot_ring", foot, unglazed))
         parts.append(make_part("rim", "rim", _rim(prof[-1][0], fh + h, t, 0.0012), mat))
@@ -86,7 +93,7 @@ def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
                 sections=16)
 
 
-@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "decal"), size_range=(0.08, 0.14),
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "decal", "band", "mark"), size_range=(0.08, 0.14),
           density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
@@ -110,6 +117,15 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     zd = zb + h * 0.5
     rd = r0 + (r - r0) * 0.5
     parts.append(make_part("decal", "decal", S.box((r * 0.7, 0.0008, h * 0.3), center=(0, rd + 0.0002, zd)), M.paper(rng)))
+    # the painted band just under the rim (flush with the wall, so a cup still nests in another),
+    # and the maker's mark moulded under the base
+    zt = zb + h * 0.9
+    rt = r0 + (r - r0) * 0.9 - (r - r0) * 0.003 / h  # the wall's outer radius at the band's foot
+    parts.append(make_part("band", "band", ring([(rt - 0.0006, zt - 0.003), (rt - 0.00005, zt - 0.003),
+                                                 (rt - 0.00005, zt + 0.003), (rt - 0.0006, zt + 0.003)], sections=16),
+                           Material((0.8, 0.65, 0.3, 1.0), 0.35, 0.8, "metal")))
+    parts.append(make_part("mark", "mark", S.cylinder(r_base * 0.4, 0.0005, center=(0, 0, 0.00025), sections=12),
+                           M.solid((0.6, 0.6, 0.62), "glass", 0.4)))
     return parts
 
 

@@ -184,7 +184,8 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("ceiling_fan", parts=("blade", "motor"), extra_parts=("canopy", "downrod", "blade_arm", "light", "pull_chain"),
+@register("ceiling_fan", parts=("blade", "motor"), extra_parts=("canopy", "downrod", "blade_arm", "light", "pull_chain", "blade_screw",
+                                                                 "coupling_cover", "switch_housing"),
           size_range=(0.8, 1.45), density=600, variants=("four_blade", "five_blade", "with_light"), placement="ceiling")
 def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
     D = rng.uniform(0.9, 1.4)
@@ -205,6 +206,15 @@ def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
                                                             R=R @ rot((1, 0, 0), 0.2)), blade_mat))
         ca = R @ np.array([0.12, 0, 0])
         parts.append(make_part(f"blade_arm_{k}", "blade_arm", S.box((0.1, 0.03, 0.01), center=(ca[0], ca[1], zm - 0.075), R=R), metal))
+        # the two screws fixing the blade to its arm, heads under the arm
+        for j, rx in enumerate((0.15, 0.16)):
+            cs = R @ np.array([rx, (-1) ** j * 0.008, 0])
+            parts.append(make_part(f"blade_screw_{2 * k + j}", "blade_screw",
+                                   S.cylinder(0.004, 0.003, center=(cs[0], cs[1], zm - 0.0815), sections=8), metal))
+    # the cover over the downrod's coupling on the motor, and the switch housing under the motor
+    parts.append(make_part("coupling_cover", "coupling_cover", S.frustum(0.045, 0.02, 0.04, center=(0, 0, zm), sections=16), metal))
+    parts.append(make_part("switch_housing", "switch_housing", S.cylinder(0.06, 0.03, center=(0, 0, zm - 0.09 - 0.015 + 0.03), sections=20),
+                           metal))
     zb = zm - 0.09
     if variant == "with_light":
         parts.append(make_part("light", "light", S.ellipsoid((0.09, 0.09, 0.06), center=(0, 0, zb - 0.03)),

@@ -21,7 +21,7 @@ from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
 
-@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design"),
+@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design", "border", "edge_band", "stamp"),
           size_range=(0.08, 0.12), density=800, variants=("round", "square", "rimmed"), placement="surface")
 def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.09, 0.105)
@@ -29,24 +29,45 @@ def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     cork = Material(M.jitter(rng, (0.65, 0.5, 0.35), 0.03), 0.95, 0.0, "wood")
     tp = 0.0015
     t = rng.uniform(0.004, 0.008)
+    zt = tp + t  # the top face the glass stands on
+    gold = Material((0.8, 0.65, 0.3, 1.0), 0.35, 0.8, "metal")
+    ink = M.solid((0.15, 0.15, 0.2), "paper", 0.6)
     if variant == "square":
         parts = [make_part("pad", "pad", S.box((s - 0.004, s - 0.004, tp), center=(0, 0, tp / 2)), cork),
                  make_part("body", "body", S.box((s, s, t), center=(0, 0, tp + t / 2), bevel=0.001), mat),
                  # the printed design on the top face
-                 make_part("design", "design", S.box((s * 0.75, s * 0.75, 0.0004), center=(0, 0, tp + t + 0.0002)),
+                 make_part("design", "design", S.box((s * 0.75, s * 0.75, 0.0004), center=(0, 0, zt + 0.0002)),
                            M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.6))]
+        # the printed line framing the design, the gilded band round the edge, and the maker's
+        # stamp on the cork underneath
+        a, b = s * 0.82, s * 0.012
+        frame = [S.box((a, b, 0.0004), center=(0, sy * (a - b) / 2, zt + 0.0002)) for sy in (-1, 1)]
+        frame += [S.box((b, a - 2 * b, 0.0004), center=(sx * (a - b) / 2, 0, zt + 0.0002)) for sx in (-1, 1)]
+        parts.append(make_part("border", "border", frame, ink))
+        e = 0.0006
+        band = [S.box((s + 2 * e, e, t * 0.4), center=(0, sy * (s + e) / 2, tp + t * 0.5)) for sy in (-1, 1)]
+        band += [S.box((e, s, t * 0.4), center=(sx * (s + e) / 2, 0, tp + t * 0.5)) for sx in (-1, 1)]
+        parts.append(make_part("edge_band", "edge_band", band, gold))
+        parts.append(make_part("stamp", "stamp", S.box((s * 0.3, s * 0.18, 0.0003), center=(0, 0, 0.00015)), ink))
         return parts
     parts = [make_part("pad", "pad", S.cylinder(s / 2 - 0.002, tp, center=(0, 0, tp / 2), sections=24), cork),
              make_part("body", "body", S.cylinder(s / 2, t, center=(0, 0, tp + t / 2), sections=24), mat)]
     if variant == "rimmed":
-        parts.append(make_part("rim", "rim", ring([(s / 2 - 0.004, tp + t), (s / 2, tp + t), (s / 2, tp + t + 0.004),
-                                                   (s / 2 - 0.004, tp + t + 0.004)], sections=24), mat))
-    parts.append(make_part("design", "design", S.cylinder(s * 0.38, 0.0004, center=(0, 0, tp + t + 0.0002), sections=20),
+        parts.append(make_part("rim", "rim", ring([(s / 2 - 0.004, zt), (s / 2, zt), (s / 2, zt + 0.004),
+                                                   (s / 2 - 0.004, zt + 0.004)], sections=24), mat))
+    parts.append(make_part("design", "design", S.cylinder(s * 0.38, 0.0004, center=(0, 0, zt + 0.0002), sections=20),
                            M.solid(M.jitter(rng, (0.4, 0.4, 0.5), 0.3)[:3], "paper", 0.6)))
+    rb = s * 0.41
+    parts.append(make_part("border", "border", ring([(rb, zt), (rb + s * 0.012, zt), (rb + s * 0.012, zt + 0.0004),
+                                                     (rb, zt + 0.0004)], sections=24), ink))
+    parts.append(make_part("edge_band", "edge_band", ring([(s / 2 - 0.0003, tp + t * 0.3), (s / 2 + 0.0006, tp + t * 0.3),
+                                                           (s / 2 + 0.0006, tp + t * 0.7), (s / 2 - 0.0003, tp + t * 0.7)],
+                                                          sections=24), gold))
+    parts.append(make_part("stamp", "stamp", S.cylinder(s * 0.12, 0.0003, center=(0, 0, 0.00015), sections=12), ink))
     return parts
 
 
-@register("croissant", parts=("body",), extra_parts=("horn",),
+@register("croissant", parts=("body",), extra_parts=("horn", "tip"),
           size_range=(0.09, 0.18), density=250, variants=("curved", "straight", "mini"), placement="surface")
 def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.12, 0.16) if variant != "mini" else rng.uniform(0.09, 0.1)
@@ -66,6 +87,9 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
         name = "body" if k == n // 2 else (f"horn_{0 if k < n // 2 else 1}" if k in (0, n - 1) else f"body_{k}")
         label = "horn" if k in (0, n - 1) else "body"
         parts.append(make_part(name, label, seg, crust))
+    # the point of the rolled dough triangle, laid over the middle roll's front
+    parts.append(make_part("tip", "tip", S.ellipsoid((L * 0.05, rmax * 0.45, rmax * 0.1), center=(0, rmax * 0.4, rmax * 1.16),
+                                                     subdivisions=1), crust))
     return parts
 
 
@@ -122,7 +146,7 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge"),
+@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "glide"),
           size_range=(1.2, 2.4), density=400, variants=("three_panel", "four_panel", "shoji"))
 def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 4 if variant == "four_panel" else 3
@@ -148,6 +172,12 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         if variant == "shoji":
             frame += [S.box((pw - 0.06, t * 0.6, 0.012), center=(cx, cy, zf + (h - zf) * f), R=R) for f in (0.25, 0.5, 0.75)]
         parts.append(make_part(f"frame_{k}", "frame", frame, wood))
+        # a nylon glide let into the foot of each stile
+        ca, sa = np.cos(np.arctan2(dy, dx)), np.sin(np.arctan2(dy, dx))
+        for j, sgn in enumerate((-1, 1)):
+            parts.append(make_part(f"glide_{2 * k + j}", "glide",
+                                   S.cylinder(0.01, 0.004, center=(cx + sgn * (pw / 2 - 0.015) * ca, cy + sgn * (pw / 2 - 0.015) * sa, 0.002),
+                                              sections=8), M.solid((0.85, 0.85, 0.82), "plastic", 0.4)))
         if k > 0:
             parts += hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), n=3,
                                  radius=0.008, length=0.06)
@@ -155,7 +185,8 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow", "piping", "zipper", "tag", "foot"),
+@register("dog_bed", parts=("cushion",), extra_parts=("bolster", "base", "frame", "leg", "pillow", "piping", "zipper", "tag", "foot",
+                                                     "grip", "corner"),
           size_range=(0.5, 1.2), density=150, variants=("round", "rectangular", "elevated"))
 def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     fab = M.fabric(rng)
@@ -172,7 +203,11 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
                                                     (r - 0.004, 0.036)], sections=24), inner),
                 make_part("zipper", "zipper", S.box((0.3, 0.006, 0.012), center=(0, -r - 0.001, hb * 0.45)), black()),
                 make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(r * 0.7, r * 0.715, 0.06)),
-                          M.solid((0.95, 0.95, 0.92), "fabric", 0.8))]
+                          M.solid((0.95, 0.95, 0.92), "fabric", 0.8)),
+                # the piping round the bolster's crown
+                make_part("piping_1", "piping", ring([(r * 0.8, hb - 0.006), (r * 0.9, hb - 0.006), (r * 0.9, hb + 0.002),
+                                                      (r * 0.8, hb + 0.002)], sections=24), inner),
+                *_grip_dots([(r * 0.5 * np.cos(a), r * 0.5 * np.sin(a)) for a in np.pi / 4 + np.arange(4) * np.pi / 2])]
     w, d = rng.uniform(0.6, 1.1), rng.uniform(0.5, 0.8)
     if variant == "elevated":  # a fabric sling on a frame with four short legs
         hl = rng.uniform(0.12, 0.2)
@@ -183,6 +218,10 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
                                + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal))
         parts.append(make_part("cushion", "cushion", S.box((w - 0.06, d - 0.06, 0.012), center=(0, 0, hl + 0.024)), fab))
+        # the moulded corner pieces joining the frame's tubes over each leg
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            parts.append(make_part(f"corner_{k}", "corner", S.box((0.045, 0.045, 0.036), center=(sx * (w / 2 - 0.0225), sy * (d / 2 - 0.0225),
+                                                                                            hl + 0.015), bevel=0.005), black()))
         return parts
     hb = rng.uniform(0.18, 0.25)
     b = 0.1
@@ -197,10 +236,19 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("zipper", "zipper", S.box((w * 0.5, 0.006, 0.012), center=(0, -d / 2 - 0.001, 0.02)), black()))
     parts.append(make_part("tag", "tag", S.box((0.003, 0.05, 0.03), center=(w / 2 + 0.0015, d * 0.3, 0.02)),
                            M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
+    # the piping along the back bolster's top seam, and the grip dots under the base
+    parts.append(make_part("piping", "piping", S.box((w - 0.08, 0.012, 0.012), center=(0, -d / 2 + b / 2, hb - 0.006)), inner))
+    parts += _grip_dots([(sx * w * 0.35, sy * d * 0.35) for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]])
     return parts
 
 
-@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge"),
+def _grip_dots(xy) -> list[Part]:
+    """The rubber non-slip dots printed on a pet bed's underside at ``xy``."""
+    return [make_part(f"grip_{k}", "grip", S.cylinder(0.02, 0.002, center=(x, y, 0.001), sections=10), black("rubber"))
+            for k, (x, y) in enumerate(xy)]
+
+
+@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge", "foot"),
           size_range=(0.2, 0.4), density=1500, variants=("angled", "adjustable", "riser"), placement="surface")
 def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     alu = M.solid(M.jitter(rng, (0.78, 0.78, 0.8), 0.03)[:3], "metal", 0.3, 0.9)
@@ -215,6 +263,7 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sy in enumerate((-1, 1)):
             parts.append(make_part("base" if k == 0 else "base_1", "base",
                                    S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)), alu))
+        parts += _stand_feet([(sx * w * 0.4, sy * (d / 2 - 0.01)) for sy in (-1, 1) for sx in (-1, 1)], rubber)
         return parts
     tilt = np.deg2rad(rng.uniform(15, 25))
     hf = 0.03  # the platform's front edge height
@@ -238,10 +287,18 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
         parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
                                                              sections=10), rubber))
+    parts += _stand_feet([(sx * w * 0.38, sy * d * 0.38) for sy in (-1, 1) for sx in (-1, 1)], rubber)
     return parts
 
 
-@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot"),
+def _stand_feet(xy, rubber) -> list[Part]:
+    """Rubber feet let into the underside of a stand's base at ``xy`` (it stands as before)."""
+    return [make_part(f"foot_{k}", "foot", S.cylinder(0.008, 0.002, center=(x, y, 0.001), sections=8), rubber)
+            for k, (x, y) in enumerate(xy)]
+
+
+@register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot",
+                                                             "tenon", "corbel", "corner_block", "kicker"),
           size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
 def console_table(rng: np.random.Generator, variant: str) -> list:
     w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
@@ -260,8 +317,23 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"foot_{k}", "foot", S.box((0.08, d - 0.02, 0.03), center=(sx * (w / 2 - 0.06), 0, 0.015),
                                                              bevel=0.004), wood))
+        # the stretcher's through-tenons standing out past each end, and the corbels under the
+        # top's overhang on each end
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"tenon_{k}", "tenon", S.box((0.04, 0.03, 0.045), center=(sx * (w / 2 - 0.06 + 0.04), 0, 0.2)), wood))
+            parts.append(make_part(f"corbel_{k}", "corbel", S.box((0.05, d - 0.08, 0.06),
+                                                                 center=(sx * (w / 2 - 0.06 + 0.045), 0, h - t - 0.03)), wood))
         return parts
     parts += legs4("leg", "leg", w=w, d=d, h=h - t, size=0.04, mat=wood, inset=0.01)
+    # glide caps round the legs' ends, and the glued blocks in the apron's corners
+    cap = M.solid((0.1, 0.1, 0.1), "plastic", 0.7)
+    lx, ly = w / 2 - 0.03, d / 2 - 0.03
+    corners = [(-1, -1), (1, -1), (-1, 1), (1, 1)]
+    parts += [make_part(f"foot_{k}", "foot", S.cylinder(0.024, 0.008, center=(sx * lx, sy * ly, 0.004), sections=10), cap)
+              for k, (sx, sy) in enumerate(corners)]
+    parts += [make_part(f"corner_block_{k}", "corner_block",
+                        S.box((0.04, 0.04, 0.05), center=(sx * (lx - 0.05), sy * (ly - 0.05), h - t - 0.025)), wood)
+              for k, (sx, sy) in enumerate(corners)]
     if variant == "drawers":
         parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate([apron[0]] + apron[2:])]
         n = 2
@@ -277,13 +349,24 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
                                                                     subdivisions=1), M.metal(rng)))
             parts += [prismatic(f"drawer_{k}_slide", "tabletop", f"drawer_{k}_box", travel=bd * 0.7),
                       mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"knob_{k}")]
+        # the kicker strips above each drawer's sides that keep it from tipping as it opens
+        for k in range(n):
+            x = -w / 2 + 0.05 + dw * (k + 0.5)
+            for j, sx in enumerate((-1, 1)):
+                parts.append(make_part(f"kicker_{2 * k + j}", "kicker",
+                                       S.box((0.015, d - 0.1, 0.003), center=(x + sx * (dw / 2 - 0.02), -0.01, h - t - 0.0015)), wood))
     else:
         parts += [make_part(f"apron_{k}", "apron", a, wood) for k, a in enumerate(apron)]
-        parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, rng.uniform(0.15, 0.25))), wood))
+        zs = rng.uniform(0.15, 0.25)
+        parts.append(make_part("shelf", "shelf", S.box((w - 0.02, d - 0.02, 0.02), center=(0, 0, zs)), wood))
+        # the stretchers the shelf rests on, joining each end's pair of legs
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"stretcher_{k}", "stretcher", S.box((0.03, d - 0.1, 0.04), center=(sx * (w / 2 - 0.03), 0, zs - 0.03)),
+                                   wood))
     return parts
 
 
-@register("dais", parts=("top", "base"), extra_parts=("fascia", "foot"),
+@register("dais", parts=("top", "base"), extra_parts=("fascia", "foot", "nosing", "handle"),
           size_range=(0.6, 2.6), density=500, variants=("tokonoma", "stage", "plinth"))
 def dais(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -300,6 +383,17 @@ def dais(rng: np.random.Generator, variant: str) -> list[Part]:
              make_part("fascia", "fascia", S.box((w, 0.02, h - t), center=(0, d / 2 - 0.01, (h - t) / 2)),
                        Material(M.jitter(rng, (0.1, 0.06, 0.05), 0.02), 0.3, 0.0, "wood"))]
     parts += feet4("foot", w=w - 0.06, d=d - 0.06, r=0.02, h=zf, mat=wood)
+    # the fascia boards on the two ends, the rounded nosing along the top's front edge, and a
+    # hand grip let into each end for carrying it
+    dark = parts[2].material
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"fascia_{k + 1}", "fascia", S.box((0.012, d - 0.02, h - t), center=(sx * (w / 2 - 0.006), -0.01, (h - t) / 2)),
+                               dark))
+    parts.append(make_part("nosing", "nosing", S.box((w, 0.012, 0.012), center=(0, d / 2 - 0.006, h - t - 0.006), bevel=0.003), wood))
+    metal = M.solid((0.2, 0.2, 0.22), "metal", 0.5, 0.6)
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"handle_{k}", "handle", S.box((0.004, min(0.12, d * 0.3), min(0.03, (h - t) * 0.3)),
+                                                             center=(sx * (w / 2 - 0.001), -0.01, (h - t) * 0.6)), metal))
     return parts
 
 

@@ -69,7 +69,7 @@ def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("dart_board", parts=("board",),
           extra_parts=("rim", "dart", "cabinet", "door", "hinge", "number_ring", "bullseye", "outer_bull",
-                       "treble_ring", "double_ring", "spider"),
+                       "treble_ring", "double_ring", "spider", "number"),
           size_range=(0.4, 0.8), density=500, variants=("plain", "cabinet"), placement="wall")
 def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.218, 0.228)
@@ -127,6 +127,13 @@ def dart_board(rng: np.random.Generator, variant: str) -> list[Part]:
         wires.append(S.box(((0.170 - 0.016) * k, 0.0012, 0.001), center=(c * np.cos(a), face_y + 0.0014, zc + c * np.sin(a)),
                            R=rot((0, 1, 0), -a)))
     parts.append(make_part("spider", "spider", wires, M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
+    # the twenty wire numerals round the number ring, 20 at the top, one over each segment
+    rn = (0.170 * k + r * 0.8) / 2
+    wire = M.solid((0.85, 0.85, 0.85), "metal", 0.3, 0.9)
+    for j in range(20):
+        a = np.pi / 2 - 2 * np.pi * j / 20
+        parts.append(make_part(f"number_{j}", "number", S.box((0.006, 0.001, 0.008), center=(rn * np.cos(a), face_y + 0.0005, zc + rn * np.sin(a)),
+                                                              R=rot((0, 1, 0), -(a - np.pi / 2))), wire))
     for k in range(int(rng.integers(0, 4))):
         a = rng.uniform(0, 2 * np.pi)
         rr = rng.uniform(0.0, r * 0.7)
@@ -173,7 +180,7 @@ def foosball_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot"), size_range=(0.7, 1.3),
+@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot", "corner_block"), size_range=(0.7, 1.3),
           density=500, variants=("square", "octagon", "round"))
 def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.8, 1.2)
@@ -201,6 +208,11 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
                                       (lw / 2 - 0.01, 0, 1)]):
         size = (lw - 0.1, 0.02, ah) if ax == 0 else (0.02, lw - 0.1, ah)
         parts.append(make_part(f"apron_{i}", "apron", S.box(size, center=(cx, cy, h - t - ah / 2)), wood))
+    # the glued blocks in the apron's inside corners
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        c = lw / 2 - 0.05 - 0.025
+        parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.05, 0.05, ah * 0.6), center=(sx * c, sy * c, h - t - ah * 0.3)),
+                               wood))
     if variant == "octagon":
         for i in range(4):
             a = np.pi / 4 + i * np.pi / 2
@@ -210,7 +222,8 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules"), size_range=(0.18, 0.55),
+@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "cover_art", "title", "logo",
+                                                     "badge", "seal"), size_range=(0.18, 0.55),
           density=400, variants=("boxed", "set_up", "card_deck"), placement="surface")
 def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     art = M.paper(rng)
@@ -223,6 +236,10 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
             c = (0.12 + k * 0.02, rng.uniform(-0.03, 0.03), 0.0004 + 0.0005 * k)
             parts.append(make_part(f"card_{k}", "card", S.box((w - 0.005, d - 0.005, 0.0004), center=c, R=rot((0, 0, 1), a)),
                                    M.solid((0.95, 0.95, 0.95), "paper")))
+        # the deck box's tuck flap closing its top end, and the tax seal over it
+        parts.append(make_part("lid", "lid", S.box((w - 0.002, 0.0006, h * 0.6), center=(0, d / 2 + 0.0003, h * 0.6)), art))
+        parts.append(make_part("seal", "seal", S.box((0.012, 0.03, 0.0005), center=(0, d / 2 - 0.015, h + 0.00025)),
+                               M.solid((0.9, 0.85, 0.6), "paper", 0.6)))
         return parts
     w, d = rng.uniform(0.25, 0.4), rng.uniform(0.25, 0.3)
     h = rng.uniform(0.05, 0.08)
@@ -234,6 +251,13 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
                                           S.box((w, 0.003, 0.04), center=(0, d / 2 - 0.0015, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(-w / 2 + 0.0015, 0, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(w / 2 - 0.0015, 0, h - 0.02))], art)]
+        # the cover art on the lid's top, the title along its front side, the publisher's logo on
+        # its right side and the players-and-age badge in the cover's corner
+        ink = M.solid((0.95, 0.95, 0.92), "paper", 0.7)
+        parts += [make_part("cover_art", "cover_art", S.box((w * 0.85, d * 0.7, 0.0005), center=(0, -d * 0.05, h + 0.00025)), M.paper(rng)),
+                  make_part("title", "title", S.box((w * 0.6, 0.0005, 0.02), center=(0, d / 2 + 0.00025, h - 0.02)), ink),
+                  make_part("logo", "logo", S.box((0.0005, d * 0.2, 0.015), center=(w / 2 + 0.00025, 0, h - 0.02)), ink),
+                  make_part("badge", "badge", S.box((w * 0.15, d * 0.1, 0.0005), center=(w * 0.38, d * 0.4, h + 0.00025)), ink)]
         return parts
     b = rng.uniform(0.4, 0.5)
     parts = [make_part("board", "board", S.box((b, b, 0.004), center=(0, 0, 0.002)), art),
@@ -255,7 +279,7 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper"), size_range=(0.08, 0.45),
+@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper", "hubcap", "headlight", "tail_light"), size_range=(0.08, 0.45),
           density=600, variants=("sedan", "truck", "ride_on"), placement="surface")
 def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.1, 0.16) if variant != "ride_on" else rng.uniform(0.35, 0.42)
@@ -280,6 +304,17 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"bumper_{i}", "bumper", S.box((s * 0.03, W * 0.9, s * 0.05), center=(sx * L / 2, 0, r + s * 0.02)),
                                M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.8)))
+    # a hubcap on each wheel's outer face, the headlights at the front (+X) and the tail lights
+    chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"hubcap_{i}", "hubcap", S.cylinder(r * 0.5, W * 0.02, center=(sx * L * 0.32, sy * W * 0.6 + sy * W * 0.01, r),
+                                                                   axis=(0, 1, 0), sections=12), chrome))
+    zl = r + s * 0.1
+    for i, sy in enumerate((-1, 1)):
+        parts.append(make_part(f"headlight_{i}", "headlight", S.box((s * 0.01, W * 0.18, s * 0.04), center=(L / 2 + s * 0.005 - s * 0.01, sy * W * 0.3, zl)),
+                               M.solid((1.0, 0.95, 0.7), "glass", 0.1)))
+        parts.append(make_part(f"tail_light_{i}", "tail_light", S.box((s * 0.01, W * 0.18, s * 0.04), center=(-L / 2 - s * 0.005 + s * 0.01, sy * W * 0.3, zl)),
+                               M.solid((0.9, 0.1, 0.1), "glass", 0.1)))
     return parts
 
 

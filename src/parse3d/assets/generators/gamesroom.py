@@ -15,7 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._kit import feet4
+from ._kit import feet4, rot
 from ._rods import rod, segments
 
 _BALL_COLOURS = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.85, 0.1, 0.1), (0.4, 0.1, 0.5), (0.95, 0.45, 0.05),
@@ -42,13 +42,20 @@ def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sy in enumerate((1, -1)):
             parts.append(make_part(f"number_{k}", "number", S.box((r * 0.2, 0.0006, r * 0.35),
                                                                   center=(0, sy * (r * 0.97 + 0.0013), r)), ink))
-    else:  # the maker's red dot
+        # the maker's name printed small on the ball, between the two spots
+        parts.append(make_part("logo", "logo", S.box((r * 0.35, r * 0.1, 0.0008), center=(0, 0, 2 * r - 0.0003)), ink))
+    else:  # the maker's red dot, and the training ball's red spots round it (none where it rests)
+        red = M.solid((0.8, 0.1, 0.1), "plastic", 0.3)
         parts.append(make_part("logo", "logo", S.cylinder(r * 0.12, 0.001, center=(0, r * 0.998, r), axis=(0, 1, 0),
-                                                          sections=10), M.solid((0.8, 0.1, 0.1), "plastic", 0.3)))
+                                                          sections=10), red))
+        for k, (v, ax) in enumerate([((0, -1, 0), (0, 1, 0)), ((1, 0, 0), (1, 0, 0)), ((-1, 0, 0), (1, 0, 0)),
+                                     ((0, 0, 1), (0, 0, 1))]):
+            c = np.array((0.0, 0.0, r)) + np.array(v, float) * (r * 0.998 - 0.0005 if v[2] <= 0 else r - 0.0006)
+            parts.append(make_part(f"spot_{k}", "spot", S.cylinder(r * 0.1, 0.001, center=tuple(c), axis=ax, sections=10), red))
     return parts
 
 
-@register("pool_cue", parts=("shaft", "butt"), extra_parts=("tip", "ferrule", "joint", "wrap", "bumper"),
+@register("pool_cue", parts=("shaft", "butt"), extra_parts=("tip", "ferrule", "joint", "wrap", "bumper", "ring", "inlay"),
           size_range=(1.2, 1.5), density=700, variants=("one_piece", "two_piece", "short"))
 def pool_cue(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.45, 1.48) if variant != "short" else rng.uniform(1.22, 1.32)
@@ -74,6 +81,24 @@ def pool_cue(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.95, 0.95, 0.92), "plastic", 0.3)))
     parts.append(make_part("tip", "tip", S.cylinder(0.0062, 0.008, center=(0, 0, zs + ls + 0.024), sections=12),
                            M.solid((0.15, 0.3, 0.6), "leather", 0.9)))
+    # the trim rings either end of the wrap, and four pearl diamonds inlaid round the forearm
+    # above it
+    zw0, zw1 = zb + lb * 0.22, zb + lb * 0.22 + 0.25
+
+    def r_butt(z: float) -> float:
+        return float(np.interp(z, [zb, zb + lb], [0.015, 0.0105]))
+
+    pearl = M.solid((0.93, 0.92, 0.88), "plastic", 0.2)
+    for k, z in enumerate((zw0, zw1)):
+        rr = r_butt(z)
+        parts.append(make_part(f"ring_{k}", "ring", S.cylinder(rr + 0.0004, 0.004, center=(0, 0, z + (0.002 if k == 0 else -0.002)),
+                                                               sections=16), pearl))
+    zi = zw1 + 0.06
+    ri = r_butt(zi)
+    for k in range(4):
+        a = np.pi / 4 + k * np.pi / 2
+        parts.append(make_part(f"inlay_{k}", "inlay", S.box((0.006, 0.0008, 0.03), center=(np.cos(a) * ri, np.sin(a) * ri, zi),
+                                                            R=rot((0, 0, 1), a + np.pi / 2)), pearl))
     return parts
 
 
@@ -133,7 +158,7 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("game_console", parts=("body",), extra_parts=("button", "vent", "foot", "stand", "disc_slot", "port", "light",
-                                                        "dock", "screen", "controller"),
+                                                        "dock", "screen", "controller", "thumbstick"),
           size_range=(0.15, 0.42), density=700, variants=("slim", "tower", "dock"), placement="surface")
 def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = M.solid(M.jitter(rng, [(0.08, 0.08, 0.09), (0.9, 0.9, 0.9)][int(rng.integers(2))], 0.02)[:3], "plastic", 0.4)
@@ -155,6 +180,15 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("light", "light", S.box((0.01, 0.002, 0.003), center=(w / 2 - 0.02, d / 2 + 0.001, 0.02)), light))
         parts.append(make_part("port", "port", S.box((0.012, 0.002, 0.005), center=(-w / 2 + 0.025, d / 2 + 0.001, 0.03)),
                                black))
+        # each controller's thumbstick and face button on its front
+        zc = h * 0.8 + 0.012 + 0.051
+        yc = d * 0.1 + 0.007
+        for k, sx in enumerate((-1, 1)):
+            xc = sx * (tw / 2 - (tw - 0.173) / 4)
+            parts.append(make_part(f"thumbstick_{k}", "thumbstick", S.cylinder(0.007, 0.006, center=(xc, yc + 0.003, zc + sx * 0.02), axis=(0, 1, 0),
+                                                                              sections=10), black))
+            parts.append(make_part(f"button_{k}", "button", S.cylinder(0.004, 0.003, center=(xc, yc + 0.0015, zc - sx * 0.02), axis=(0, 1, 0),
+                                                                      sections=8), black))
         return parts
     w, d, h = rng.uniform(0.26, 0.31), rng.uniform(0.24, 0.3), rng.uniform(0.05, 0.07)
     if variant == "slim":
@@ -234,7 +268,7 @@ def game_controller(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("beanbag", parts=("body", "seat"), extra_parts=("back", "handle", "piping", "base", "zipper", "tag"),
+@register("beanbag", parts=("body", "seat"), extra_parts=("back", "handle", "piping", "base", "zipper", "tag", "zipper_pull"),
           size_range=(0.6, 1.4), density=60, variants=("classic", "chair", "lounger"))
 def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     cover = M.fabric(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -270,6 +304,13 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("piping", "piping", S.tube(seam[:-1], 0.007, sections=6, closed=True), cover))
     parts.append(make_part("zipper", "zipper", S.box((0.25, 0.006, 0.012), center=(0, -ry * 0.97, zc * 0.55)),
                            M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+    # the zip's pull tab, and the piping round the bottom panel's seam
+    parts.append(make_part("zipper_pull", "zipper_pull", S.box((0.012, 0.004, 0.03), center=(0.1, -ry * 0.97 - 0.004, zc * 0.55 - 0.012)),
+                           M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
+    zs = zc * 0.25
+    fs = np.sqrt(max(1 - ((zs - zc) / zc) ** 2, 0.05))
+    seam2 = np.c_[rx * fs * 1.005 * np.cos(t), ry * fs * 1.005 * np.sin(t), np.full(len(t), zs)]
+    parts.append(make_part("piping_1", "piping", S.tube(seam2[:-1], 0.006, sections=6, closed=True), cover))
     parts.append(make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(rx * 0.7, ry * 0.7 + 0.001, zc * 0.7)),
                            M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
     return parts

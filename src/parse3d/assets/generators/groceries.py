@@ -14,10 +14,11 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import ring
+from ._kit import rot
 
 
 @register("bottle", parts=("body", "cap"),
-          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "barcode"),
+          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "barcode", "back_label", "logo", "lot_code"),
           size_range=(0.18, 0.36),
           density=1000, variants=("wine", "water", "soda"), placement="surface")
 def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -83,10 +84,22 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("neck_ring", "neck_ring", ring(
             [(rn - 0.001, zr), (rn + 0.006, zr + 0.0008), (rn + 0.006, zr + 0.0022),
              (rn - 0.001, zr + 0.003)], sections=16), mat))
+    ink = Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")
+    if variant == "wine":  # the back label, opposite the front one
+        parts.append(make_part("back_label", "back_label", S.box((0.045, 0.0008, (z_label[1] - z_label[0]) * 0.6),
+                                                                center=(0, -(rl + 0.0012), np.mean(z_label) + 0.01)),
+                               Material((0.93, 0.9, 0.82, 1.0), 0.7, 0.0, "paper")))
+    else:  # the maker's logo printed on the cap's top
+        parts.append(make_part("logo", "logo", S.cylinder(neck * 0.7, 0.0004, center=(0, 0, float(cap.mesh.bounds[1, 2]) - 0.0002),
+                                                          sections=12), ink))
+    # the lot and best-before code printed on the shoulder
+    zs = float(np.interp(0.5, [0, 1], [z_label[1], zc])) if variant != "wine" else h * 0.66
+    rs = float(np.interp(zs, [p[1] for p in prof], [p[0] for p in prof]))
+    parts.append(make_part("lot_code", "lot_code", S.box((0.012, 0.0006, 0.004), center=(0, rs * 0.98 + 0.0003, zs)), ink))
     return parts
 
 
-@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam"),
+@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam", "score", "lot_code"),
           size_range=(0.06, 0.18),
           density=1100, variants=("standard", "tall", "flat"), placement="surface")
 def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -117,11 +130,18 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("pull_tab", "pull_tab", S.box((0.011, tab_l, 0.0002),
                                                          center=(0, tab_l / 2 - 0.004, h - 0.00006)),
                            tin))
+    # the scored ring the lid tears along, lower than the tab, and the lot code inked under the
+    # can's floor
+    rsc = r - 0.0075
+    parts.append(make_part("score", "score", ring([(rsc - 0.0006, h + 0.0004), (rsc + 0.0006, h + 0.0004),
+                                                   (rsc + 0.0006, h + 0.0008), (rsc - 0.0006, h + 0.0008)], sections=24), tin))
+    parts.append(make_part("lot_code", "lot_code", S.box((0.016, 0.005, 0.0003), center=(0, 0, 0.00015)),
+                           Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
 @register("cereal_box", parts=("body",),
-          extra_parts=("label", "flap", "logo", "nutrition_panel", "barcode", "tuck_tab"),
+          extra_parts=("label", "flap", "logo", "nutrition_panel", "barcode", "tuck_tab", "ingredients_panel", "lot_code"),
           size_range=(0.2, 0.4),
           density=250, variants=("standard", "family", "slim"), placement="surface")
 def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -148,11 +168,16 @@ def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
                            S.box((0.001, d * 0.6, 0.025), center=(-w / 2 - 0.0005, 0, h * 0.12)), white))
     parts.append(make_part("tuck_tab", "tuck_tab",
                            S.box((w * 0.3, 0.002, 0.012), center=(0, d / 2 - 0.002, h - 0.007)), card))
+    # the ingredients above the barcode on the left side, and the lot code stamped on the top
+    parts.append(make_part("ingredients_panel", "ingredients_panel",
+                           S.box((0.001, d * 0.8, h * 0.3), center=(-w / 2 - 0.0005, 0, h * 0.55)), white))
+    parts.append(make_part("lot_code", "lot_code", S.box((w * 0.2, d * 0.15, 0.0004), center=(w * 0.3, -d * 0.3, h + 0.0002)),
+                           Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
 @register("detergent_bottle", parts=("body", "cap"),
-          extra_parts=("handle", "label", "back_label", "neck_ring", "flip_lid"),
+          extra_parts=("handle", "label", "back_label", "neck_ring", "flip_lid", "window", "lot_code"),
           size_range=(0.18, 0.36), density=1000, variants=("jug", "oval"), placement="surface")
 def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.plastic(rng)
@@ -206,10 +231,17 @@ def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
         back = S.box((lw * 0.8, 0.001, lh * 0.7), center=(0, -ly - 0.0005, h * 0.36))
     parts.append(make_part("label", "label", front, M.paper(rng)))
     parts.append(make_part("back_label", "back_label", back, M.paper(rng)))
+    # the clear stripe on the side that shows how much is left, and the lot code under it
+    hs = hb if variant == "jug" else h * 0.7
+    xs = w / 2 if variant == "jug" else w / 2 * 0.999
+    parts.append(make_part("window", "window", S.box((0.001, 0.012, hs * 0.7), center=(xs + 0.0005, 0, hs * 0.45)),
+                           Material((0.85, 0.9, 0.95, 0.5), 0.1, 0.0, "plastic")))
+    parts.append(make_part("lot_code", "lot_code", S.box((0.001, 0.012, 0.004), center=(xs + 0.0005, 0, hs * 0.06)),
+                           Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
-@register("apple", parts=("body",), extra_parts=("stem", "leaf", "calyx", "sticker"), size_range=(0.06, 0.095),
+@register("apple", parts=("body",), extra_parts=("stem", "leaf", "calyx", "sepal", "sticker"), size_range=(0.06, 0.095),
           density=850, variants=("round", "conical", "leafy"), placement="surface")
 def apple(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.032, 0.042)
@@ -236,6 +268,13 @@ def apple(rng: np.random.Generator, variant: str) -> list[Part]:
     # the dried calyx in the dimple at the bottom, and the grocer's price sticker on the side
     parts.append(make_part("calyx", "calyx", S.cylinder(r * 0.14, 0.002, center=(0, 0, 0.001), sections=8),
                            M.food(rng, (0.3, 0.22, 0.12))))
+    # the calyx keeps the flower's five dried sepals, folded in round its eye
+    dry = M.food(rng, (0.28, 0.2, 0.1))
+    for k in range(5):
+        a = 2 * np.pi * k / 5
+        parts.append(make_part(f"sepal_{k}", "sepal",
+                               S.box((r * 0.12, 0.0016, 0.0012), center=(r * 0.16 * np.cos(a), r * 0.16 * np.sin(a), 0.0026),
+                                     R=rot((0, 0, 1), a)), dry))
     zs = h * 0.5
     rs = float(np.interp(zs, [p[1] for p in prof], [p[0] for p in prof]))
     parts.append(make_part("sticker", "sticker", S.cylinder(0.009, 0.0008, center=(0, rs - 0.0006, zs),
