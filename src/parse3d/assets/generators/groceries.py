@@ -99,7 +99,7 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam", "score", "lot_code"),
+@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam"),
           size_range=(0.06, 0.18),
           density=1100, variants=("standard", "tall", "flat"), placement="surface")
 def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -130,13 +130,6 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("pull_tab", "pull_tab", S.box((0.011, tab_l, 0.0002),
                                                          center=(0, tab_l / 2 - 0.004, h - 0.00006)),
                            tin))
-    # the scored ring the lid tears along, lower than the tab, and the lot code inked under the
-    # can's floor
-    rsc = r - 0.0075
-    parts.append(make_part("score", "score", ring([(rsc - 0.0006, h + 0.0004), (rsc + 0.0006, h + 0.0004),
-                                                   (rsc + 0.0006, h + 0.0008), (rsc - 0.0006, h + 0.0008)], sections=24), tin))
-    parts.append(make_part("lot_code", "lot_code", S.box((0.016, 0.005, 0.0003), center=(0, 0, 0.00015)),
-                           Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
