@@ -492,28 +492,12 @@ def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
 # ---------------------------------------------------------- pub, café, bathroom, tea room
 
 
-@register("pint_glass", parts=("body",), extra_parts=("beer", "foam", "logo", "pour_line", "capacity_mark", "stamp"), size_range=(0.14, 0.18), density=2500,
+@register("pint_glass", parts=("body",), extra_parts=("beer", "foam"), size_range=(0.14, 0.18), density=2500,
           variants=("empty", "full", "nonic"), placement="surface")
 def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     h, r0, r1 = rng.uniform(0.145, 0.16), 0.03, rng.uniform(0.042, 0.045)
     prof = [(r0, 0.0), (r1, h)] if variant != "nonic" else [(r0, 0.0), (r1, h * 0.82), (r1 * 1.06, h * 0.88), (r1, h)]
     out = [make_part("body", "body", shell(prof, 0.003, bottom=0.01, sections=24), M.glass(rng))]
-    # the brewery's printed logo on the front, and the etched line a full pint is poured to
-    zl = h * 0.45
-    rl = r0 + (r1 - r0) * zl / (h * 0.82 if variant == "nonic" else h)
-    out.append(_b("logo", "logo", (0.035, 0.0008, 0.04), (0, rl + 0.0002, zl), white(rng, "paper")))
-    zp = h * 0.78
-    rp = r0 + (r1 - r0) * zp / (h * 0.82 if variant == "nonic" else h)
-    out.append(_b("pour_line", "pour_line", (0.012, 0.0006, 0.0015), (0, rp + 0.0001, zp), white(rng, "paper")))
-    # the logo again on the back, the capacity figure beside the line and the verification
-    # stamp (a crown or CE mark) etched near the rim
-    etch = M.solid((0.9, 0.92, 0.92), "glass", 0.4)
-    out.append(_b("logo_1", "logo", (0.035, 0.0008, 0.04), (0, -rl - 0.0002, zl), etch))
-    out.append(_b("capacity_mark", "capacity_mark", (0.016, 0.0006, 0.005), (0, rp + 0.0001, zp - 0.005), etch))
-    zs = h * 0.7
-    rs = r0 + (r1 - r0) * zs / (h * 0.82 if variant == "nonic" else h)
-    out.append(_b("stamp", "stamp", (0.006, 0.0006, 0.006), (rs * 0.7071 + 0.0001, rs * 0.7071 + 0.0001, zs), etch,
-                  R=rot((0, 0, 1), -np.pi / 4)))
     if variant == "full":
         out.append(make_part("beer", "beer", S.frustum(r0 - 0.003, r1 * 0.94, h * 0.8, center=(0, 0, 0.01), sections=20),
                              M.food(rng, (0.8, 0.5, 0.1))))
@@ -526,8 +510,7 @@ def hinge_barrels(prefix: str, *, x: float, y: float, z0: float, z1: float, mat)
             for k, z in enumerate((z0 + 0.15, z1 - 0.15))]
 
 
-@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump", "back_label", "flip_lid", "collar", "lot_code",
-                                                                   "recycling_mark"), size_range=(0.14, 0.3), density=1000,
+@register("shampoo_bottle", parts=("body", "cap"), extra_parts=("label", "pump", "back_label", "flip_lid", "collar"), size_range=(0.14, 0.3), density=1000,
           variants=("flip_cap", "pump", "tall"), placement="surface")
 def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.06, 0.08), rng.uniform(0.035, 0.05)
@@ -543,10 +526,6 @@ def shampoo_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         # the flip-top lid on the cap, hinged at its back
         out.append(_b("flip_lid", "flip_lid", (0.026, 0.026, 0.006), (0, 0.0, h + 0.022), white(rng, "plastic")))
-    # the lot code printed low on the back, and the recycling mark moulded under the base
-    ink = M.solid((0.1, 0.1, 0.12), "paper", 0.7)
-    out.append(_b("lot_code", "lot_code", (0.015, 0.0006, 0.004), (0, -d / 2 - 0.0003, h * 0.1), ink))
-    out.append(_b("recycling_mark", "recycling_mark", (0.012, 0.012, 0.0004), (0, 0, 0.0002), ink))
     return out
 
 

@@ -20,7 +20,7 @@ from ._kit import feet4
 
 
 @register("liquor_bottle", parts=("body", "cap"),
-          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout", "emblem", "lot_code"),
+          extra_parts=("label", "neck", "shoulder_label", "back_label", "seal", "pour_spout", "emblem"),
           size_range=(0.15, 0.36), density=1000, variants=("square", "round", "flask"), placement="surface")
 def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     tint = [(0.75, 0.45, 0.15), (0.85, 0.88, 0.9), (0.2, 0.35, 0.2), (0.35, 0.2, 0.1)][int(rng.integers(4))]
@@ -68,14 +68,10 @@ def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.paper(rng)))
     parts.append(make_part("pour_spout", "pour_spout", S.cylinder(nr + 0.0015, 0.004, center=(0, 0, h - 0.03),
                                                                   sections=16), black()))
-    # the distillery's crest embossed on the shoulder's front, and the lot code printed low on
-    # the back
+    # the distillery's crest embossed on the shoulder's front
     yf = r if variant == "round" else (w / 2 if variant == "square" else d / 2)
     parts.append(make_part("emblem", "emblem", S.box((0.02, 0.001, 0.02), center=(0, yf + 0.0003, hb * 0.85 if variant != "round" else hb - 0.03)),
                            glass))
-    yb = r if variant == "round" else (w / 2 if variant == "square" else d / 2)
-    parts.append(make_part("lot_code", "lot_code", S.box((0.015, 0.0006, 0.004), center=(0, -yb - 0.0002, hb * 0.1)),
-                           Material((0.95, 0.95, 0.9, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
@@ -106,7 +102,7 @@ def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam", "logo", "band", "lip"),
+@register("cocktail_shaker", parts=("body", "cap"), extra_parts=("strainer", "base_ring", "seam", "band", "lip"),
           size_range=(0.15, 0.3),
           density=800, variants=("cobbler", "boston"), placement="surface")
 def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -129,10 +125,6 @@ def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
                                                           sections=24), steel))
     parts.append(make_part("seam", "seam", ring([(r - 0.002, h - 0.008), (r + 0.0015, h - 0.007), (r + 0.0015, h - 0.001),
                                                  (r - 0.002, h - 0.001)], sections=24), steel))
-    # the maker's stamp etched on the front
-    rl = r * 0.75 + r * 0.25 * 0.5
-    parts.append(make_part("logo", "logo", S.box((0.02, 0.0006, 0.012), center=(0, rl + 0.0002, h * 0.5)),
-                           Material((0.55, 0.55, 0.57, 1.0), 0.5, 0.8, "metal")))
     # the pressed grip band round the body's waist, and the rolled lip the top seals on
     zg = h * 0.3
     rg = r * 0.75 + r * 0.25 * 0.3

@@ -73,7 +73,7 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "print", "barcode", "flap", "perforation"),
+@register("tissue_box", parts=("box",), extra_parts=("tissue", "opening", "flap", "perforation"),
           size_range=(0.1, 0.27), density=120,
           variants=("rectangular", "cube"), placement="surface")
 def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -92,13 +92,9 @@ def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
                       M.solid((0.97, 0.97, 0.97), "paper", 0.9), watertight=True),
             make_part("opening", "opening", S.box((op_w, 0.035, 0.0008), center=(0, 0, h + 0.0004)),
                       Material((0.9, 0.92, 0.95, 0.5), 0.1, 0.0, "plastic")),
-            make_part("print", "print", S.box((w * 0.85, 0.0008, h * 0.7), center=(0, d / 2 + 0.0004, h / 2)), M.paper(rng)),
-            make_part("barcode", "barcode", S.box((0.0008, 0.03, 0.015), center=(w / 2 + 0.0004, 0, 0.012)),
-                      Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper")),
             # the glued end flap on the left end
             make_part("flap", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(-w / 2 - 0.0004, 0, h * 0.3)), card),
             # the pattern printed on the back too, and the perforated panel torn out round the slot
-            make_part("print_1", "print", S.box((w * 0.85, 0.0008, h * 0.7), center=(0, -d / 2 - 0.0004, h / 2)), card),
             make_part("perforation", "perforation",
                       [S.box((op_w + 0.02, 0.002, 0.0005), center=(0, sy * 0.0275, h + 0.00025)) for sy in (-1, 1)]
                       + [S.box((0.002, 0.053, 0.0005), center=(sx * (op_w / 2 + 0.01), 0, h + 0.00025)) for sx in (-1, 1)], card)]

@@ -100,7 +100,7 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("storage_box", parts=("body", "lid"),
-          extra_parts=("handle", "label", "latch", "hinge", "hasp", "tape", "print", "barcode", "foot"), size_range=(0.2, 0.7),
+          extra_parts=("handle", "label", "latch", "hinge", "hasp", "tape", "foot"), size_range=(0.2, 0.7),
           density=700, variants=("plastic_bin", "wooden", "cardboard"), placement="surface")
 def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.6)
@@ -166,11 +166,7 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
         tape = Material(M.jitter(rng, (0.75, 0.6, 0.4), 0.03)[:3] + (0.8,), 0.3, 0.0, "plastic")
         parts.append(make_part("tape", "tape", S.box((0.05, 0.001, 0.04),
                                                      center=(0, d / 2 + 0.0005, h - skirt - 0.02)), tape))
-    if variant == "cardboard":  # the maker's print and the barcode on the box's right side
-        ink = Material((0.15, 0.15, 0.15, 1.0), 0.8, 0.0, "paper")
-        parts.append(make_part("print", "print", S.box((0.0008, d * 0.5, h * 0.3), center=(w / 2 + 0.0004, 0, h * 0.5)), ink))
-        parts.append(make_part("barcode", "barcode", S.box((0.0008, 0.04, 0.02), center=(w / 2 + 0.0004, -d * 0.3, h * 0.15)), ink))
-    else:  # four feet set into the floor's underside
+    if variant != "cardboard":  # four feet set into the floor's underside
         pad = Material((0.1, 0.1, 0.1, 1.0), 0.8, 0.0, "rubber")
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.01, 0.003, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.03), 0.0015),

@@ -34,7 +34,7 @@ def _tapered(x0: float, x1: float, w0: float, w1: float, z0a: float, z0b: float,
     return S.hull(pts)
 
 
-@register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet", "edge", "logo", "butt", "hallmark", "motif"),
+@register("knife", parts=("blade", "handle"), extra_parts=("bolster", "rivet", "edge", "butt", "motif"),
           size_range=(0.16, 0.38), density=4000, variants=("chef", "table", "paring", "bread"),
           placement="surface")
 def knife(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -66,16 +66,12 @@ def knife(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("edge", "edge", _slab([(lbol + 0.004, -wb / 2), (lbol + x_edge, -wb / 2),
                                                   (lbol + x_edge, -wb / 2 + 0.002), (lbol + 0.004, -wb / 2 + 0.002)],
                                                  tb, tb + 0.0002), Material((0.9, 0.9, 0.92, 1.0), 0.15, 1.0, "metal")))
-    parts.append(make_part("logo", "logo", _slab([(lbol + 0.008, -0.003), (lbol + 0.022, -0.003), (lbol + 0.022, 0.003),
-                                                  (lbol + 0.008, 0.003)], tb, tb + 0.0002),
-                           Material((0.4, 0.4, 0.42, 1.0), 0.5, 0.6, "metal")))
     bol = S.box((lbol, min(hw, wb) * 0.95, hh * 0.8), center=(lbol / 2, 0, hh * 0.4), bevel=0.001)
     parts.append(make_part("bolster", "bolster", bol, steel))
     if variant == "table":
         handle = _tapered(0.0, -lh, hw * 0.6, hw, 0.0, 0.0, hh)
         parts.append(make_part("handle", "handle", handle, steel))
-        # the silversmith's stamp mid-handle and the pattern's motif on the handle's end
-        parts.append(_hallmark(-lh * 0.45, hh, rng))
+        # the pattern's motif on the handle's end
         parts.append(_motif(-lh * 0.88, hh, hw * 0.7))
         return parts
     wood = rng.random() < 0.5
@@ -91,7 +87,7 @@ def knife(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("fork", parts=("handle", "tine"), extra_parts=("neck", "head", "hallmark"),
+@register("fork", parts=("handle", "tine"), extra_parts=("neck", "head"),
           size_range=(0.13, 0.3), density=7800, variants=("dinner", "salad", "serving"),
           placement="surface")
 def fork(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -119,7 +115,6 @@ def fork(rng: np.random.Generator, variant: str) -> list[Part]:
                         (x0 + lt, y - tw * 0.35, 0.0), (x0 + lt, y + tw * 0.35, 0.0)])
         tine = S.hull(np.vstack([pts, pts + (0, 0, t)]))
         parts.append(make_part(f"tine_{k}", "tine", tine, steel))
-    parts.append(_hallmark(-lh * 0.45, lift * 0.55 + t + 0.0008, rng))
     return parts
 
 
@@ -131,14 +126,7 @@ def _motif(x: float, z: float, w: float) -> Part:
                      Material((0.7, 0.71, 0.72, 1.0), 0.3, 0.95, "metal"))
 
 
-def _hallmark(x: float, z: float, rng) -> Part:
-    """The silversmith's stamp on the handle's top face, about ``x`` (its surface at ``z``)."""
-    return make_part("hallmark", "hallmark", _slab([(x - 0.006, -0.002), (x + 0.006, -0.002), (x + 0.006, 0.002),
-                                                     (x - 0.006, 0.002)], z - 0.0003, z + 0.0002),
-                     Material((0.45, 0.45, 0.47, 1.0), 0.5, 0.6, "metal"))
-
-
-@register("spoon", parts=("bowl", "handle"), extra_parts=("neck", "tip", "hallmark", "drop", "motif"),
+@register("spoon", parts=("bowl", "handle"), extra_parts=("neck", "tip", "drop", "motif"),
           size_range=(0.1, 0.32), density=7800, variants=("table", "tea", "soup", "serving"),
           placement="surface")
 def spoon(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -167,9 +155,6 @@ def spoon(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("handle", "handle", handle, steel))
     tip = _tapered(-lh * 0.85, -lh, w_end, w_end * 0.7, 0.004, 0.0, t)
     parts.append(make_part("tip", "tip", tip, steel))
-    xm = -lh * 0.5
-    zm = (z - t * 0.8) + (0.004 - (z - t * 0.8)) * (xm + ln) / (-lh * 0.85 + ln) + t
-    parts.append(_hallmark(xm, zm, rng))
     # the drop: the tapering ridge under the bowl's back that stiffens it where the neck joins,
     # and the pattern's motif on the handle's end
     drop = S.hull(np.array([(0.004, -rb * 0.12, depth * 0.62), (0.004, rb * 0.12, depth * 0.62),

@@ -18,7 +18,7 @@ from ._household import ring, shell
 from ._kit import revolute, rot
 
 
-@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "backstamp", "decal", "well_line", "dry_foot"),
+@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "dry_foot"),
           size_range=(0.11, 0.18), density=2000, variants=("tea", "coffee", "espresso"),
           placement="surface", groups={"body": ("well", "rim", "foot_ring")})
 def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -35,19 +35,13 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
                 sections=24)
     rh = rim.mesh.bounds[1, 2]
     gold = M.solid(M.jitter(rng, (0.83, 0.68, 0.3), 0.03), "metal", 0.3, 0.9)
-    # the gilded line round the rim's edge and the maker's mark under the well
+    # the gilded line round the rim's edge
     trim = ring([(r - 0.0045, rh - 0.0025), (r - 0.0005, rh - 0.0006), (r - 0.0005, rh),
                  (r - 0.0045, rh - 0.0018)], sections=32)
-    stamp = S.cylinder(well * 0.35, 0.0005, center=(0, 0, fh + 0.0004), sections=12)
     return [make_part("well", "well", base, mat), make_part("rim", "rim", rim, mat),
             make_part("foot_ring", "foot_ring", foot, mat), make_part("trim", "trim", trim, gold),
-            make_part("backstamp", "backstamp", stamp, M.solid((0.3, 0.35, 0.6), "paper", 0.8)),
             # the painted spray on the rim's front
-            make_part("decal", "decal", ring([(r * 0.78, bh + 0.0035), (r * 0.9, bh + 0.006), (r * 0.9, bh + 0.0068),
-                                               (r * 0.78, bh + 0.0043)], sections=16, piece_sections=16), M.paper(rng)),
             # the gilded line painted round the well, flush with its floor, where the cup stands
-            make_part("well_line", "well_line", ring([(well * 0.9, bh - 0.0005), (well * 0.95, bh - 0.0005), (well * 0.95, bh),
-                                                      (well * 0.9, bh)], sections=24), gold),
             # the unglazed ring under the foot it was fired standing on
             make_part("dry_foot", "dry_foot", ring([(well * 0.71, 0.0), (well * 0.81, 0.0), (well * 0.81, 0.0006),
                                                     (well * 0.71, 0.0006)], sections=24),
@@ -214,7 +208,7 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("paper", parts=("sheet",), extra_parts=("clip", "lever", "wrapper", "label", "barcode", "tear_strip", "seal"),
+@register("paper", parts=("sheet",), extra_parts=("clip", "lever", "wrapper", "label", "tear_strip", "seal"),
           size_range=(0.2, 0.44), density=800, variants=("stack", "ream", "loose"),
           placement="surface")
 def paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -231,8 +225,6 @@ def paper(rng: np.random.Generator, variant: str) -> list[Part]:
                           white(rng, "paper")),
                 # the barcode on the wrapper's front, the tear strip along its top and the glued
                 # seam where the wrapper closes underneath
-                make_part("barcode", "barcode", S.box((w * 0.3, 0.0006, h * 0.35), center=(w * 0.2, d * 0.3 + 0.0003, h * 0.5)),
-                          black("paper")),
                 make_part("tear_strip", "tear_strip", S.box((w * 0.9, 0.006, 0.0005), center=(0, d * 0.22, h + 0.00025)),
                           Material((0.85, 0.2, 0.15, 1.0), 0.6, 0.0, "paper")),
                 make_part("seal", "seal", S.box((w * 0.5, d * 0.6 - 0.002, 0.0005), center=(0, 0, 0.00025)),
@@ -330,7 +322,7 @@ def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("water_pitcher", parts=("body", "handle"),
-          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale", "thumb_rest", "backstamp"),
+          extra_parts=("spout", "lid", "filter", "rim", "foot_ring", "lid_tab", "indicator", "scale", "thumb_rest"),
           size_range=(0.18, 0.32), density=1500, variants=("glass", "filter_jug", "ceramic"),
           placement="surface")
 def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -362,8 +354,6 @@ def water_pitcher(rng: np.random.Generator, variant: str) -> list[Part]:
     # the thumb rest on the handle's top, and the maker's mark under the floor
     out.append(make_part("thumb_rest", "thumb_rest", S.box((0.016, 0.02, 0.008), center=(0, -r - 0.03, h * 0.82 + 0.006), bevel=0.002),
                          mat))
-    out.append(make_part("backstamp", "backstamp", S.cylinder(r * 0.3, 0.0005, center=(0, 0, 0.0035), sections=12),
-                         M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     if variant == "filter_jug":
         lid_mat = white(rng, "plastic")
         out.append(make_part("lid", "lid", S.cylinder(r * 0.95, 0.012, center=(0, 0, h + 0.006)), lid_mat))
@@ -406,8 +396,7 @@ def soap_dish(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("soap_dispenser", parts=("body", "pump"),
-          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad", "decal",
-                       "backstamp", "actuator"),
+          extra_parts=("nozzle", "collar", "label", "dip_tube", "back_plate", "window", "lock", "pad", "actuator"),
           size_range=(0.12, 0.26), density=1000, variants=("pump_bottle", "wall_mounted", "ceramic"),
           placement="surface")
 def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -440,17 +429,12 @@ def soap_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
         # the dip tube, seen through the glass
         out.append(make_part("dip_tube", "dip_tube", S.cylinder(0.0025, h - 0.01, center=(0, 0, 0.005 + (h - 0.01) / 2),
                                                                 sections=8), M.solid((0.9, 0.9, 0.9), "plastic", 0.3)))
-    else:  # a glazed jar: the painted decal on its front, the potter's mark under the base
-        out.append(make_part("decal", "decal", S.box((r * 0.9, 0.0008, h * 0.3), center=(0, r + 0.0003, h * 0.45)),
-                             M.solid((0.25, 0.3, 0.45), "paper", 0.6)))
-        out.append(make_part("backstamp", "backstamp", S.cylinder(r * 0.3, 0.0005, center=(0, 0, 0.0018), sections=10),
-                             M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     # the press head's finger rest on top of the pump
     out.append(make_part("actuator", "actuator", S.box((0.016, 0.018, 0.004), center=(0, -0.002, h + 0.062)), metal))
     return out
 
 
-@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "barcode", "cap_ridge", "lot_code"),
+@register("tube", parts=("body", "cap"), extra_parts=("crimp", "shoulder", "label", "cap_ridge"),
           size_range=(0.08, 0.24), density=1000, variants=("toothpaste", "cream", "paint"),
           placement="surface")
 def tube(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -473,14 +457,10 @@ def tube(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("label", "label", S.box((L * 0.45, r * 1.6, 0.0008),
                                               center=(x0 + cap_l + 0.01 + L * 0.3, 0, r * 1.6 + 0.0004)), M.paper(rng)),
             # the barcode printed near the crimped end
-            make_part("barcode", "barcode", S.box((0.02, r * 1.2, 0.0008), center=(L / 2 - 0.025, 0, r * 1.6 + 0.0004)),
-                      white(rng, "paper")),
             # the ridges round the cap's edge for grip, and the batch code pressed into the crimp
             make_part("cap_ridge", "cap_ridge", ring([(r * 0.6 - 0.0005, 0.0), (r * 0.6 + 0.0008, 0.0), (r * 0.6 + 0.0008, cap_l * 0.6),
                                                       (r * 0.6 - 0.0005, cap_l * 0.6)], sections=16)
-                      .apply(_x_axis(x0 + cap_l * 0.2, r * 0.8)), white(rng, "plastic")),
-            make_part("lot_code", "lot_code", S.box((0.006, r * 1.6, 0.0006), center=(L / 2 - 0.005, 0, r * 0.8 + r * 0.125 + 0.0003)),
-                      black("paper"))]
+                      .apply(_x_axis(x0 + cap_l * 0.2, r * 0.8)), white(rng, "plastic"))]
 
 
 def _x_axis(x: float, z: float) -> np.ndarray:
@@ -492,7 +472,7 @@ def _x_axis(x: float, z: float) -> np.ndarray:
     return T
 
 
-@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "logo", "cover", "number"),
+@register("ball", parts=("body",), extra_parts=("seam", "valve", "panel", "cover", "number"),
           size_range=(0.06, 0.26), density=100, variants=("soccer", "basketball", "tennis"),
           placement="floor")
 def ball(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -538,8 +518,6 @@ def ball(rng: np.random.Generator, variant: str) -> list[Part]:
         T2[:3, :3] = rot((0, 1, 0), np.pi / 2)
         T2[:3, 3] = (0, 0, r) - T2[:3, :3] @ (0, 0, r)
         out.append(make_part("seam_2", "seam", band2.apply(T2), black("rubber")))
-        out.append(make_part("logo", "logo", S.box((r * 0.4, 0.001, r * 0.2), center=(r * 0.45, r * 0.89, r * 1.25)),
-                             black("paper")))
     else:
         # the two felt covers the seam joins (each a half shell round the rubber core), the
         # maker's logo printed on each, and the ball's number under the front one
@@ -555,10 +533,6 @@ def ball(rng: np.random.Generator, variant: str) -> list[Part]:
         flip[2, 3] = 2 * r
         out.append(make_part("cover", "cover", half, felt))
         out.append(make_part("cover_1", "cover", [h.apply(flip) for h in half], felt))
-        out.append(make_part("logo", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, r, r * 1.35)),
-                             black("paper")))
-        out.append(make_part("logo_1", "logo", S.box((r * 0.5, 0.0008, r * 0.25), center=(0, -r, r * 0.65)),
-                             black("paper")))
         out.append(make_part("number", "number", S.box((r * 0.12, 0.0008, r * 0.18), center=(0, r * 0.985, r * 1.12)),
                              black("paper")))
     return out

@@ -36,7 +36,7 @@ def _square_mug(rng, w: float, h: float, t: float) -> S.Shape:
     return S.union(walls)
 
 
-@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base", "decal", "backstamp"),
+@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base"),
           size_range=(0.10, 0.14), density=900,
           variants=("round", "belly", "square"), placement="surface")
 def mug(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -63,24 +63,14 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
     unglazed = Material(M.jitter(rng, (0.8, 0.74, 0.64), 0.03), 0.9, 0.0, "ceramic")
     if variant == "square":
         parts.append(make_part("base", "base", foot, unglazed))
-        # the glazed lip round the four walls' top, and the maker's mark under the base
+        # the glazed lip round the four walls' top
         w, zl = 2 * r, fh + h
         lip = [S.box((w + 0.001, t + 0.001, 0.002), center=(0, sy * (w - t) / 2, zl - 0.0005)) for sy in (-1, 1)]
         lip += [S.box((t + 0.001, w - 2 * t, 0.002), center=(sx * (w - t) / 2, 0, zl - 0.0005)) for sx in (-1, 1)]
         parts.append(make_part("rim", "rim", lip, mat))
-        parts.append(make_part("backstamp", "backstamp", S.box((r * 0.7, r * 0.7, 0.0005), center=(0, 0, 0.00025)),
-                               M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     else:
         parts.append(make_part("foot_ring", "foot_ring", foot, unglazed))
         parts.append(make_part("rim", "rim", _rim(prof[-1][0], fh + h, t, 0.0012), mat))
-        # the maker's mark printed under the floor, inside the foot ring
-        parts.append(make_part("backstamp", "backstamp", S.cylinder(rf * 0.45, 0.0005, center=(0, 0, fh - 0.00025), sections=12),
-                               M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
-    # the printed decal on the front (+Y), the side a right hand shows
-    zd = fh + h * 0.5
-    rd = float(np.interp(zd, [q[1] for q in prof], [q[0] for q in prof]))
-    parts.append(make_part("decal", "decal", S.box((r * 0.8, 0.0008, h * 0.35),
-                                                   center=(0, rd + 0.0002, zd)), M.paper(rng)))
     return parts
 
 
@@ -93,7 +83,7 @@ def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
                 sections=16)
 
 
-@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "decal", "band", "mark"), size_range=(0.08, 0.14),
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle"), size_range=(0.08, 0.14),
           density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
@@ -113,23 +103,10 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "handled":
         handle = _handle(rng, r, h, rng.uniform(0.004, 0.006)).moved((0, 0, zb))
         parts.append(make_part("handle", "handle", handle, mat))
-    # the printed pattern on the front
-    zd = zb + h * 0.5
-    rd = r0 + (r - r0) * 0.5
-    parts.append(make_part("decal", "decal", S.box((r * 0.7, 0.0008, h * 0.3), center=(0, rd + 0.0002, zd)), M.paper(rng)))
-    # the painted band just under the rim (flush with the wall, so a cup still nests in another),
-    # and the maker's mark moulded under the base
-    zt = zb + h * 0.9
-    rt = r0 + (r - r0) * 0.9 - (r - r0) * 0.003 / h  # the wall's outer radius at the band's foot
-    parts.append(make_part("band", "band", ring([(rt - 0.0006, zt - 0.003), (rt - 0.00005, zt - 0.003),
-                                                 (rt - 0.00005, zt + 0.003), (rt - 0.0006, zt + 0.003)], sections=16),
-                           Material((0.8, 0.65, 0.3, 1.0), 0.35, 0.8, "metal")))
-    parts.append(make_part("mark", "mark", S.cylinder(r_base * 0.4, 0.0005, center=(0, 0, 0.00025), sections=12),
-                           M.solid((0.6, 0.6, 0.62), "glass", 0.4)))
     return parts
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim", "decal", "backstamp"),
+@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim"),
           size_range=(0.06, 0.11), density=900, variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
@@ -152,11 +129,4 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("trim", "trim", ring([(rt - 0.0004, zt - 0.002), (rt + 0.0005, zt - 0.002),
                                                  (rt + 0.0005, zt + 0.002), (rt - 0.0004, zt + 0.002)],
                                                 sections=16), gold))
-    zd = fh + h * 0.55
-    rd = r * 0.9 + (r - r * 0.9) * (zd - fh - h * 0.5) / (h * 0.5)
-    parts.append(make_part("decal", "decal", S.box((r * 0.6, 0.0008, h * 0.25),
-                                                   center=(0, rd + 0.0002, zd)), M.paper(rng)))
-    # the maker's mark under the floor, inside the foot ring
-    parts.append(make_part("backstamp", "backstamp", S.cylinder(rf * 0.5, 0.0005, center=(0, 0, fh - 0.00025), sections=12),
-                           M.solid((0.3, 0.35, 0.6), "paper", 0.8)))
     return parts

@@ -21,7 +21,7 @@ from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
 
-@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design", "border", "edge_band", "stamp"),
+@register("coaster", parts=("body",), extra_parts=("pad", "rim", "design", "border", "edge_band"),
           size_range=(0.08, 0.12), density=800, variants=("round", "square", "rimmed"), placement="surface")
 def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.09, 0.105)
@@ -48,7 +48,6 @@ def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
         band = [S.box((s + 2 * e, e, t * 0.4), center=(0, sy * (s + e) / 2, tp + t * 0.5)) for sy in (-1, 1)]
         band += [S.box((e, s, t * 0.4), center=(sx * (s + e) / 2, 0, tp + t * 0.5)) for sx in (-1, 1)]
         parts.append(make_part("edge_band", "edge_band", band, gold))
-        parts.append(make_part("stamp", "stamp", S.box((s * 0.3, s * 0.18, 0.0003), center=(0, 0, 0.00015)), ink))
         return parts
     parts = [make_part("pad", "pad", S.cylinder(s / 2 - 0.002, tp, center=(0, 0, tp / 2), sections=24), cork),
              make_part("body", "body", S.cylinder(s / 2, t, center=(0, 0, tp + t / 2), sections=24), mat)]
@@ -63,7 +62,6 @@ def coaster(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("edge_band", "edge_band", ring([(s / 2 - 0.0003, tp + t * 0.3), (s / 2 + 0.0006, tp + t * 0.3),
                                                            (s / 2 + 0.0006, tp + t * 0.7), (s / 2 - 0.0003, tp + t * 0.7)],
                                                           sections=24), gold))
-    parts.append(make_part("stamp", "stamp", S.cylinder(s * 0.12, 0.0003, center=(0, 0, 0.00015), sections=12), ink))
     return parts
 
 

@@ -222,8 +222,7 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "cover_art", "title", "logo",
-                                                     "badge", "seal"), size_range=(0.18, 0.55),
+@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "seal"), size_range=(0.18, 0.55),
           density=400, variants=("boxed", "set_up", "card_deck"), placement="surface")
 def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     art = M.paper(rng)
@@ -251,13 +250,6 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
                                           S.box((w, 0.003, 0.04), center=(0, d / 2 - 0.0015, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(-w / 2 + 0.0015, 0, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(w / 2 - 0.0015, 0, h - 0.02))], art)]
-        # the cover art on the lid's top, the title along its front side, the publisher's logo on
-        # its right side and the players-and-age badge in the cover's corner
-        ink = M.solid((0.95, 0.95, 0.92), "paper", 0.7)
-        parts += [make_part("cover_art", "cover_art", S.box((w * 0.85, d * 0.7, 0.0005), center=(0, -d * 0.05, h + 0.00025)), M.paper(rng)),
-                  make_part("title", "title", S.box((w * 0.6, 0.0005, 0.02), center=(0, d / 2 + 0.00025, h - 0.02)), ink),
-                  make_part("logo", "logo", S.box((0.0005, d * 0.2, 0.015), center=(w / 2 + 0.00025, 0, h - 0.02)), ink),
-                  make_part("badge", "badge", S.box((w * 0.15, d * 0.1, 0.0005), center=(w * 0.38, d * 0.4, h + 0.00025)), ink)]
         return parts
     b = rng.uniform(0.4, 0.5)
     parts = [make_part("board", "board", S.box((b, b, 0.004), center=(0, 0, 0.002)), art),

@@ -22,7 +22,7 @@ _BALL_COLOURS = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.85, 0.1, 0.1), (0.4, 0.1,
                  (0.05, 0.45, 0.2), (0.5, 0.1, 0.1), (0.05, 0.05, 0.05)]
 
 
-@register("pool_ball", parts=("ball",), extra_parts=("stripe", "spot", "number", "logo"),
+@register("pool_ball", parts=("ball",), extra_parts=("stripe", "number"),
           size_range=(0.05, 0.062), density=1700, variants=("solid", "striped", "cue"), placement="surface")
 def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
     r = 0.0286 if rng.random() < 0.8 else 0.0262  # 57.2 mm pool, 52.4 mm snooker
@@ -34,24 +34,10 @@ def pool_ball(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("stripe", "stripe", S.cylinder(r * 1.005, r * 0.9, center=(0, 0, r), axis=(0, 1, 0),
                                                               sections=24), colour))
     ink = M.solid((0.05, 0.05, 0.05), "plastic", 0.3)
-    if variant != "cue":  # the white discs with the number, on opposite sides, one facing the viewer
-        parts.append(make_part("spot", "spot", S.cylinder(r * 0.35, 0.002, center=(0, r * 0.97, r), axis=(0, 1, 0),
-                                                          sections=16), white))
-        parts.append(make_part("spot_1", "spot", S.cylinder(r * 0.35, 0.002, center=(0, -r * 0.97, r), axis=(0, 1, 0),
-                                                            sections=16), white))
+    if variant != "cue":  # the number, on opposite sides, one facing the viewer
         for k, sy in enumerate((1, -1)):
             parts.append(make_part(f"number_{k}", "number", S.box((r * 0.2, 0.0006, r * 0.35),
                                                                   center=(0, sy * (r * 0.97 + 0.0013), r)), ink))
-        # the maker's name printed small on the ball, between the two spots
-        parts.append(make_part("logo", "logo", S.box((r * 0.35, r * 0.1, 0.0008), center=(0, 0, 2 * r - 0.0003)), ink))
-    else:  # the maker's red dot, and the training ball's red spots round it (none where it rests)
-        red = M.solid((0.8, 0.1, 0.1), "plastic", 0.3)
-        parts.append(make_part("logo", "logo", S.cylinder(r * 0.12, 0.001, center=(0, r * 0.998, r), axis=(0, 1, 0),
-                                                          sections=10), red))
-        for k, (v, ax) in enumerate([((0, -1, 0), (0, 1, 0)), ((1, 0, 0), (1, 0, 0)), ((-1, 0, 0), (1, 0, 0)),
-                                     ((0, 0, 1), (0, 0, 1))]):
-            c = np.array((0.0, 0.0, r)) + np.array(v, float) * (r * 0.998 - 0.0005 if v[2] <= 0 else r - 0.0006)
-            parts.append(make_part(f"spot_{k}", "spot", S.cylinder(r * 0.1, 0.001, center=tuple(c), axis=ax, sections=10), red))
     return parts
 
 

@@ -18,7 +18,7 @@ from ._kit import rot
 
 
 @register("bottle", parts=("body", "cap"),
-          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "barcode", "back_label", "logo", "lot_code"),
+          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "back_label"),
           size_range=(0.18, 0.36),
           density=1000, variants=("wine", "water", "soda"), placement="surface")
 def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -55,12 +55,6 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     label = ring([(rl - 0.0005, z_label[0]), (rl + 0.0006, z_label[0]), (rl + 0.0006, z_label[1]),
                   (rl - 0.0005, z_label[1])], sections=24)
     parts.append(make_part("label", "label", label, M.paper(rng)))
-    # the barcode printed on the label, at the back (-Y)
-    zb = z_label[0] + (z_label[1] - z_label[0]) * 0.2
-    bh = min(0.02, (z_label[1] - z_label[0]) * 0.4)
-    parts.append(make_part("barcode", "barcode", S.box((0.018, 0.0008, bh),
-                                                      center=(0, -(rl + 0.001), zb + bh / 2)),
-                           Material((0.95, 0.95, 0.95, 1.0), 0.6, 0.0, "paper")))
     # the finish below the cap: the glass lip (wine) or the support ledge and the tamper ring
     # the cap leaves behind when opened (water, soda)
     zc = float(cap.mesh.bounds[0, 2])
@@ -84,18 +78,10 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("neck_ring", "neck_ring", ring(
             [(rn - 0.001, zr), (rn + 0.006, zr + 0.0008), (rn + 0.006, zr + 0.0022),
              (rn - 0.001, zr + 0.003)], sections=16), mat))
-    ink = Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")
     if variant == "wine":  # the back label, opposite the front one
         parts.append(make_part("back_label", "back_label", S.box((0.045, 0.0008, (z_label[1] - z_label[0]) * 0.6),
                                                                 center=(0, -(rl + 0.0012), np.mean(z_label) + 0.01)),
                                Material((0.93, 0.9, 0.82, 1.0), 0.7, 0.0, "paper")))
-    else:  # the maker's logo printed on the cap's top
-        parts.append(make_part("logo", "logo", S.cylinder(neck * 0.7, 0.0004, center=(0, 0, float(cap.mesh.bounds[1, 2]) - 0.0002),
-                                                          sections=12), ink))
-    # the lot and best-before code printed on the shoulder
-    zs = float(np.interp(0.5, [0, 1], [z_label[1], zc])) if variant != "wine" else h * 0.66
-    rs = float(np.interp(zs, [p[1] for p in prof], [p[0] for p in prof]))
-    parts.append(make_part("lot_code", "lot_code", S.box((0.012, 0.0006, 0.004), center=(0, rs * 0.98 + 0.0003, zs)), ink))
     return parts
 
 
@@ -134,7 +120,7 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("cereal_box", parts=("body",),
-          extra_parts=("label", "flap", "logo", "nutrition_panel", "barcode", "tuck_tab", "ingredients_panel", "lot_code"),
+          extra_parts=("label", "flap", "nutrition_panel", "tuck_tab", "ingredients_panel"),
           size_range=(0.2, 0.4),
           density=250, variants=("standard", "family", "slim"), placement="surface")
 def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -152,25 +138,19 @@ def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("label", "label", panel, M.paper(rng)))
     # the brand's logo band above the picture, the nutrition facts on the right side, the
     # barcode low on the left side and the tuck tab that locks the top flap at the front
-    parts.append(make_part("logo", "logo", S.box((w * 0.7, 0.0008, h * 0.12),
-                                                 center=(0, d / 2 + 0.0004, h * 0.83)), M.paper(rng)))
     white = Material((0.95, 0.95, 0.93, 1.0), 0.7, 0.0, "paper")
     parts.append(make_part("nutrition_panel", "nutrition_panel",
                            S.box((0.001, d * 0.8, h * 0.4), center=(w / 2 + 0.0005, 0, h * 0.45)), white))
-    parts.append(make_part("barcode", "barcode",
-                           S.box((0.001, d * 0.6, 0.025), center=(-w / 2 - 0.0005, 0, h * 0.12)), white))
     parts.append(make_part("tuck_tab", "tuck_tab",
                            S.box((w * 0.3, 0.002, 0.012), center=(0, d / 2 - 0.002, h - 0.007)), card))
     # the ingredients above the barcode on the left side, and the lot code stamped on the top
     parts.append(make_part("ingredients_panel", "ingredients_panel",
                            S.box((0.001, d * 0.8, h * 0.3), center=(-w / 2 - 0.0005, 0, h * 0.55)), white))
-    parts.append(make_part("lot_code", "lot_code", S.box((w * 0.2, d * 0.15, 0.0004), center=(w * 0.3, -d * 0.3, h + 0.0002)),
-                           Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 
 @register("detergent_bottle", parts=("body", "cap"),
-          extra_parts=("handle", "label", "back_label", "neck_ring", "flip_lid", "window", "lot_code"),
+          extra_parts=("handle", "label", "back_label", "neck_ring", "flip_lid", "window"),
           size_range=(0.18, 0.36), density=1000, variants=("jug", "oval"), placement="surface")
 def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.plastic(rng)
@@ -229,8 +209,6 @@ def detergent_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     xs = w / 2 if variant == "jug" else w / 2 * 0.999
     parts.append(make_part("window", "window", S.box((0.001, 0.012, hs * 0.7), center=(xs + 0.0005, 0, hs * 0.45)),
                            Material((0.85, 0.9, 0.95, 0.5), 0.1, 0.0, "plastic")))
-    parts.append(make_part("lot_code", "lot_code", S.box((0.001, 0.012, 0.004), center=(xs + 0.0005, 0, hs * 0.06)),
-                           Material((0.1, 0.1, 0.12, 1.0), 0.7, 0.0, "paper")))
     return parts
 
 

@@ -16,7 +16,7 @@ from ..registry import register
 from ._kit import rot
 
 
-@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=("title", "barcode"),
+@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=(),
           size_range=(0.15, 0.36), density=650,
           variants=("square", "landscape", "board_book"), placement="surface")
 def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -31,12 +31,7 @@ def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("back_cover", "back_cover", S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2)), art),
             make_part("spine", "spine", S.box((c, t, h), center=(-w / 2 + c / 2, 0, h / 2)), art),
             make_part("pages", "pages", S.box((w - c - 0.003, t - 2 * c, h - 0.006), center=(-w / 2 + c + (w - c - 0.003) / 2, 0, h / 2)),
-                      pages),
-            # the title printed down the spine and the barcode on the back cover
-            make_part("title", "title", S.box((0.0004, t * 0.6, h * 0.5), center=(-w / 2 - 0.0002, 0, h * 0.5)),
-                      M.solid((0.95, 0.95, 0.9), "paper", 0.6)),
-            make_part("barcode", "barcode", S.box((w * 0.25, 0.0004, h * 0.1), center=(w * 0.25, -t / 2 - 0.0002, h * 0.1)),
-                      M.solid((0.98, 0.98, 0.98), "paper", 0.6))]
+                      pages)]
 
 
 @register("toy_blocks", parts=("block",), extra_parts=("letter",), size_range=(0.08, 0.4), density=600,

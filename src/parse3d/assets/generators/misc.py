@@ -23,7 +23,7 @@ def _page_colour(rng) -> Material:
     return M.solid(M.jitter(rng, (0.94, 0.92, 0.85), 0.02), "paper", 0.9)
 
 
-@register("book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=("title", "barcode", "headband", "ribbon"),
+@register("book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=("headband", "ribbon"),
           size_range=(0.15, 0.42),
           density=650, variants=("paperback", "hardcover", "large"), placement="surface")
 def book(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -46,10 +46,6 @@ def book(rng: np.random.Generator, variant: str) -> list[Part]:
            make_part("back_cover", "back_cover", back, cover),
            make_part("spine", "spine", spine, cover),
            make_part("pages", "pages", pages, _page_colour(rng))]
-    ink = M.solid((0.92, 0.88, 0.7), "paper", 0.6)
-    out.append(make_part("title", "title", S.box((0.0004, t * 0.6, h * 0.45), center=(-w / 2 - 0.0002, 0, h * 0.55)), ink))
-    out.append(make_part("barcode", "barcode", S.box((w * 0.3, 0.0004, h * 0.1), center=(w * 0.2, -t / 2 - 0.0002, h * 0.12)),
-                         M.solid((0.98, 0.98, 0.98), "paper", 0.6)))
     if variant != "paperback":  # a sewn block: headbands at both ends and a ribbon marker
         band = M.solid((0.7, 0.15, 0.15), "fabric", 0.8)
         out += [make_part(f"headband_{k}", "headband", S.box((0.003, t - 2 * c, inset * 0.8), center=(-w / 2 + c + 0.0015, 0, z)),

@@ -309,7 +309,7 @@ def _x_out(x: float, y: float, z: float) -> np.ndarray:
     return T
 
 
-@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "barcode", "mailing_label"),
+@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "mailing_label"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.2, 0.42), density=800, variants=("glossy", "stapled", "tabloid"), placement="surface")
 def magazine(rng: np.random.Generator, variant: str) -> list:
@@ -329,8 +329,6 @@ def magazine(rng: np.random.Generator, variant: str) -> list:
             parts.append(make_part(f"staple_{k}", "staple", S.box((0.0012, 0.012, T + 0.0004), center=(-w / 2 + 0.0006, y, T / 2)),
                                    M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     # the barcode box printed in the front cover's corner, and a subscriber's address label
-    parts.append(make_part("barcode", "barcode", S.box((0.035, 0.025, 0.0002), center=(-w / 2 + 0.03, d / 2 - 0.025, T + 0.0001)),
-                           M.solid((0.98, 0.98, 0.98), "paper", 0.5)))
     parts.append(make_part("mailing_label", "mailing_label", S.box((0.08, 0.03, 0.0002), center=(w * 0.15, -d / 2 + 0.03, T + 0.0001)),
                            M.solid((0.98, 0.98, 0.96), "paper", 0.7)))
     return _stand_up(parts)
