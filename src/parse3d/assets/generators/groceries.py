@@ -78,9 +78,10 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("neck_ring", "neck_ring", ring(
             [(rn - 0.001, zr), (rn + 0.006, zr + 0.0008), (rn + 0.006, zr + 0.0022),
              (rn - 0.001, zr + 0.003)], sections=16), mat))
-    if variant == "wine":  # the back label, opposite the front one
+    if variant == "wine":  # the back label, opposite the front one, its face flush with the front label's
+        # (a bottle lying in a rack's cradle rests on its back: a proud label would lift it off)
         parts.append(make_part("back_label", "back_label", S.box((0.045, 0.0008, (z_label[1] - z_label[0]) * 0.6),
-                                                                center=(0, -(rl + 0.0012), np.mean(z_label) + 0.01)),
+                                                                center=(0, -(rl + 0.0002), np.mean(z_label) + 0.01)),
                                Material((0.93, 0.9, 0.82, 1.0), 0.7, 0.0, "paper")))
     return parts
 
