@@ -12,13 +12,11 @@ from test_rooms import solved
 
 #: Seeds that fail today since the deeper assets changed what is drawn, with why (not strict:
 #: a fix turns them green).
-TOMATO_TILTS = "a plum tomato piled on an apple settles 25 degrees off (its pile tilt allows 15)"
 TOWELS_STAND = ("towels standing in the basket with a rim (deeper asset) tip when settled, or "
                 "find no pose leaning on its rim")
 
 
-@pytest.mark.parametrize("seed", (0, pytest.param(1, marks=pytest.mark.xfail(
-    reason=TOMATO_TILTS, strict=False)), 2))
+@pytest.mark.parametrize("seed", (0, 1, 2))
 def test_fruit_of_several_kinds_piles_in_one_bowl(seed):
     """A tomato and three apples IN one bowl, a box ON a box: every object placed and every
     relation held after settling; each fruit ends over the bowl's footprint, the upper box
@@ -43,8 +41,7 @@ def test_fruit_of_several_kinds_piles_in_one_bowl(seed):
 
 
 @pytest.mark.parametrize("seed", (pytest.param(0, marks=pytest.mark.xfail(
-    reason=TOWELS_STAND, strict=False)), 1, pytest.param(2, marks=pytest.mark.xfail(
-        reason=TOWELS_STAND, strict=False))))
+    reason=TOWELS_STAND, strict=False)), 1, 2))
 def test_towels_longer_than_a_small_basket_lie_in_it(seed):
     """Two towels IN a basket whose floor (about 0.15 m) is shorter than a towel at its drawn
     size: each is drawn smaller within the towel's size range, lies inside the basket's
