@@ -19,7 +19,7 @@ from ..relations import SURFACES
 from .config import Fail
 from .fit import roomy_scale, top_fit
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .hanging import edge_up, rail_scale, thinness
+from .hanging import edge_up, rail_scale, thinness, typical_size
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
 from .rules import RULES
@@ -146,22 +146,13 @@ def contents_scale(pag, oid: str, asset: Asset) -> float:
     """Scale at which ``asset``'s footprint has room for the children IN the object as a whole
     (not on a named part: shelves of a rack hold their own), at ``CONTENTS_AREA`` times their
     typical size squared each; 0 with fewer than two such children."""
-    from ..assets import registry
-
     kids = [e.child.object for e in touching(pag, oid)
             if e.relation == "IN" and e.parent.object == oid and e.parent.part is None]
     if len(kids) < 2:
         return 0.0
     need = 0.0
     for k in kids:
-        sizes = []
-        for c in pag.objects[k].candidates:
-            try:
-                lo, hi = registry.get(c).size_range
-            except KeyError:
-                continue
-            sizes.append(0.5 * (lo + hi))
-        need += CONTENTS_AREA * min(sizes, default=0.0) ** 2
+        need += CONTENTS_AREA * typical_size(pag, k) ** 2
     ext = np.ptp(asset_geometry(asset).bounds, axis=0)
     area = float(ext[0] * ext[1])
     return float(np.sqrt(need / area)) if area > 0 else 0.0

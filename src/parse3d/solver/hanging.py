@@ -29,8 +29,8 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["drapes", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook", "rail_fit", "rail_scale", "thinness", "RAIL_GAP",
-           "DRAPING"]
+__all__ = ["drapes", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook",
+           "rail_fit", "rail_scale", "thinness", "typical_size", "RAIL_GAP", "DRAPING"]
 
 #: Share of a rail's length the objects hung on it may fill together (the rest: its brackets
 #: and the gaps between them).
@@ -59,12 +59,25 @@ def _rail_length(st: SolveState, edge: Edge) -> float:
     return out
 
 
+def typical_size(pag, oid: str) -> float:
+    """The least middle of the size ranges of ``oid``'s candidate categories (metres; 0 when
+    none is known): how big the writer's object is before an instance is drawn."""
+    from ..assets import registry
+
+    sizes = []
+    for c in pag.objects[oid].candidates:
+        try:
+            lo, hi = registry.get(c).size_range
+        except KeyError:
+            continue
+        sizes.append(0.5 * (lo + hi))
+    return min(sizes, default=0.0)
+
+
 def rail_scale(pag, oid: str, asset: Asset) -> float:
     """Scale at which ``asset`` (a towel bar, a coat rail) is long enough for the objects
     hung below one of its parts side by side, each at its category's typical size, in
     :data:`RAIL_GAP` of its length; 0 with fewer than two such objects."""
-    from ..assets import registry
-
     groups: dict[tuple, list[str]] = {}
     for e in pag.relations:
         if e.relation == "HANGING_BELOW" and e.parent.object == oid \
@@ -74,16 +87,7 @@ def rail_scale(pag, oid: str, asset: Asset) -> float:
     for kids in groups.values():
         if len(kids) < 2:
             continue
-        total = 0.0
-        for k in kids:
-            sizes = []
-            for c in pag.objects[k].candidates:
-                try:
-                    lo, hi = registry.get(c).size_range
-                except KeyError:
-                    continue
-                sizes.append(0.5 * (lo + hi))
-            total += min(sizes, default=0.0)
+        total = sum(typical_size(pag, k) for k in kids)
         need = max(need, total / RAIL_GAP)
     length = float(np.max(hull_extents(asset)[0][:2]))
     return need / max(length, 1e-6)
