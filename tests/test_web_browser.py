@@ -7,6 +7,7 @@ checks that the scene canvas shows a rendered room, and saves a PAG that the CLI
 
 from __future__ import annotations
 
+import contextlib
 import io
 import json
 import os
@@ -237,13 +238,12 @@ def test_footprint_drawn_clockwise_is_turned_counter_clockwise(page):
     problem.wait_for(state="detached")
     assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [3, 0], [3, 3], [0, 3]]
     # unsaved edits are not dropped without asking: dismissing keeps them, accepting drops them
-    messages = []
-    page.once("dialog", lambda d: (messages.append(d.message), d.dismiss()))
-    page.click("#new")
-    assert "unsaved changes" in messages[0]
+    with answering(page, accept=False) as messages:
+        page.click("#new")
+    assert len(messages) == 1 and "unsaved changes" in messages[0]
     assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [3, 0], [3, 3], [0, 3]]
-    page.once("dialog", lambda d: d.accept())
-    page.click("#new")
+    with answering(page, accept=True):
+        page.click("#new")
     assert page.evaluate("window.designer.state.doc.room.footprint") == [[0, 0], [4, 0], [4, 3.5], [0, 3.5]]
 
 
@@ -280,11 +280,31 @@ def test_threejs_keeps_the_exported_names_and_owners(page, tmp_path):
     assert got == want
 
 
+@contextlib.contextmanager
+def answering(page, accept: bool):
+    """Answer every dialog raised inside the block, and only those: yields their messages.
+
+    A listener left behind (``page.once`` for a dialog that never came) would answer the next
+    test's dialog first, so the listener is removed on leaving the block.
+    """
+    messages: list[str] = []
+
+    def answer(dialog) -> None:
+        messages.append(dialog.message)
+        dialog.accept() if accept else dialog.dismiss()
+
+    page.on("dialog", answer)
+    try:
+        yield messages
+    finally:
+        page.remove_listener("dialog", answer)
+
+
 def fresh(page) -> None:
     """A new, empty PAG (accepting the discard question if there are unsaved edits)."""
-    page.once("dialog", lambda d: d.accept())
-    page.click("#new")
-    page.wait_for_function("window.designer.state.doc.objects.length === 0")
+    with answering(page, accept=True):
+        page.click("#new")
+        page.wait_for_function("window.designer.state.doc.objects.length === 0")
     page.evaluate("window.scrollTo(0, 0)")
 
 
@@ -345,16 +365,16 @@ def test_save_over_an_existing_file_asks_first(page, server):
     page.fill("#add-category", "mug")
     page.click("#add-object")
     # dismissed: the file stays as it was
-    asked = []
-    page.once("dialog", lambda d: (asked.append(d.message), d.dismiss()))
-    page.click("#save")
-    page.wait_for_function("document.querySelector('#message').textContent.startsWith('save:')")
-    assert "overwrite-me.json exists. Replace it?" in asked[0]
+    with answering(page, accept=False) as asked:
+        page.click("#save")
+        page.wait_for_function("document.querySelector('#message').textContent.startsWith('save:')")
+    assert len(asked) == 1 and "overwrite-me.json exists. Replace it?" in asked[0]
     assert [o["id"] for o in json.loads(saved.read_text())["objects"]] == ["desk"]
     # accepted: replaced
-    page.once("dialog", lambda d: d.accept())
-    page.click("#save")
-    page.wait_for_function("document.querySelector('#message').textContent.startsWith('saved')")
+    with answering(page, accept=True) as asked:
+        page.click("#save")
+        page.wait_for_function("document.querySelector('#message').textContent.startsWith('saved')")
+    assert len(asked) == 1
     assert [o["id"] for o in json.loads(saved.read_text())["objects"]] == ["desk", "mug"]
 
 
