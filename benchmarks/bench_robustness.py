@@ -23,7 +23,9 @@ Prints one table with a row per corpus, each scene run through the project's per
     the hand-written rooms of ``tests/data/rooms/`` at seeds 0-9.
 ``foreign``
     the rooms of ``tests/data/foreign/`` (written from photo descriptions by people who read
-    only docs/pag.md and the category list) at seeds 0-4 (``--foreign`` runs this row alone).
+    only docs/pag.md and the category list) at seeds 0-4 (``--foreign`` runs this row alone;
+    ``--foreign DIR`` runs the rooms of another folder instead, such as
+    ``tests/data/foreign-later/``, rooms written later and never used to tune the solver).
     Words the vocabulary does not know yet are taken out in memory, never in the files: an
     object none of whose categories is known is left out with what rests on it and the
     relations naming it, and a part label its categories do not know is dropped from the
@@ -202,14 +204,15 @@ def known_words(doc: dict) -> tuple[dict, int, int]:
     return doc, len(gone), parts
 
 
-def foreign_cases(seeds: range) -> tuple[list[dict], str]:
-    """The foreign rooms at ``seeds``, with unknown words taken out (:func:`known_words`), and
-    a line saying what was taken out and which rooms were skipped (still invalid)."""
+def foreign_cases(seeds: range, folder: Path = FOREIGN) -> tuple[list[dict], str]:
+    """The foreign rooms of ``folder`` at ``seeds``, with unknown words taken out
+    (:func:`known_words`), and a line saying what was taken out and which rooms were skipped
+    (still invalid)."""
     from parse3d.assets.registry import vocabulary
     from parse3d.pag import PAG
 
     out, dropped, parts, skipped, rooms = [], 0, 0, [], 0
-    for p in sorted(FOREIGN.glob("*.json")):
+    for p in sorted(Path(folder).glob("*.json")):
         written = json.loads(p.read_text())
         try:  # a room the vocabulary understands as written is measured as written
             PAG.from_dict(written).validate()
@@ -423,8 +426,9 @@ def main() -> None:
                     help="corpus seeds per template (and seeds of examples and rooms)")
     ap.add_argument("--workers", type=int, default=1, metavar="N",
                     help="measure in N processes (default 1)")
-    ap.add_argument("--foreign", action="store_true",
-                    help="the foreign rooms alone, at seeds 0-4 (--seeds K: 0..K-1)")
+    ap.add_argument("--foreign", nargs="?", const=str(FOREIGN), metavar="DIR",
+                    help="the foreign rooms alone, at seeds 0-4 (--seeds K: 0..K-1); DIR: "
+                         "the rooms of another folder (default tests/data/foreign)")
     ap.add_argument("--_run-corpus", dest="run_corpus", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.run_corpus:  # the baseline's side: measure the given corpus with this package
@@ -438,7 +442,10 @@ def main() -> None:
         ap.error("--workers, --every and --seeds take a positive number")
     note = None
     if args.foreign:
-        cases, note = foreign_cases(range(args.seeds or 5))
+        folder = Path(args.foreign)
+        if not folder.is_dir() or not any(folder.glob("*.json")):
+            ap.error(f"--foreign {args.foreign}: not a folder of PAG files (*.json)")
+        cases, note = foreign_cases(range(args.seeds or 5), folder)
         cof = 0
     else:
         cases = corpus(args.quick, args.every, args.seeds)
