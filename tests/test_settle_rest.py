@@ -1,0 +1,44 @@
+"""A flat thing stood on its edge with nothing that holds it up (a plate on its rim whose lean
+on the hutch's back panel cannot be met) falls flat in settling: the repair keeps the rest it
+fell into on its support rather than failing it, and records the relations it broke as relaxed,
+saying why (tests/data/rooms/flat_things_fall_flat)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from parse3d.measure import verify_settled
+from parse3d.measure.geometry import hull_extents
+from parse3d.pag import load_pag
+from parse3d.pipeline import settle_and_repair, unstable_objects
+from parse3d.solver import solve
+
+ROOM = Path(__file__).parent / "data" / "rooms" / "flat_things_fall_flat.json"
+
+
+@pytest.mark.parametrize("seed", [0, 2])
+def test_plate_that_falls_flat_keeps_its_rest(seed):
+    scene = solve(load_pag(ROOM), seed=seed)
+    stats = settle_and_repair(scene)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    assert not verify_settled(scene) and not unstable_objects(scene, relations=False)
+    rested = [o for o in scene.objects.values() if o.repairs and o.repairs[-1].action == "rest"]
+    assert rested and stats["rested"] == len(rested)
+    for o in rested:
+        # the pose it keeps is the one it settled in: flat on the hutch, not moved again
+        np.testing.assert_allclose(o.settled_position, o.position, atol=0.01)
+        ext, order = hull_extents(o.asset)
+        thin = np.asarray(o.settled_rotation)[:, order[0]]
+        assert abs(thin[2]) > np.cos(np.radians(45.0))
+        assert o.settled_position[2] > 0.3  # on its shelf, not on the floor
+        on = next(c for c in scene.relations
+                  if c.relation == "ON" and c.child.startswith(f"{o.id}:"))
+        assert on.holds is False and on.holds_settled is False
+        assert on.relaxed and "tipped" in on.relaxed["blocked"] and on.relaxed["instead"]
+    # the support relation of every plate that did not fall holds
+    for c in scene.relations:
+        if c.relation == "ON" and not c.relaxed:
+            assert c.holds_settled is True, c
