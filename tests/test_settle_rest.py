@@ -42,3 +42,28 @@ def test_plate_that_falls_flat_keeps_its_rest(seed):
     for c in scene.relations:
         if c.relation == "ON" and not c.relaxed:
             assert c.holds_settled is True, c
+
+
+JARS = Path(__file__).parent / "data" / "rooms" / "jars_on_lids.json"
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_jar_on_a_lid_is_seated_on_it_not_on_a_knob(seed):
+    from parse3d.solver.choice import clear_middle
+
+    scene = solve(load_pag(JARS), seed=seed)
+    settle_and_repair(scene)
+    assert scene.ok, [(o.id, o.reason) for o in scene.failed]
+    assert not unstable_objects(scene, relations=False)
+    for upper, lower in (("jar_2", "jar_1"), ("jar_4", "jar_3")):
+        base = scene.objects[lower]
+        # drawn with a lid whose middle no knob stands on (the pool has knobbed lids too)
+        assert all(clear_middle(base.asset, p) for p in base.asset.parts_by_label("lid"))
+        on = next(c for c in scene.relations if c.relation == "ON" and c.child.startswith(upper))
+        assert on.holds_settled is True, on
+        # it rests on the lid: its bottom at the lid's top after settling
+        T = base.transform(True)
+        lid = np.vstack([p.vertices for p in base.asset.parts_by_label("lid")])
+        lid_top = float((lid @ T[:3, :3].T + T[:3, 3])[:, 2].max())
+        low = float(scene.objects[upper].world_bounds(settled=True)[0, 2])
+        np.testing.assert_allclose(low, lid_top, atol=3e-3)
