@@ -74,13 +74,18 @@ def overhang(asset: Asset, e: Edge) -> tuple[float, str]:
 
 def whole_object(e: Edge) -> Edge:
     """The edge ``e`` by the whole child object (no part named): the part that reaches
-    furthest then touches (a shelf flush by its posts when its back panel is set in). The
+    furthest then touches (a shelf flush by its posts when its back panel is set in); a lean
+    without the ``angle_deg`` written (any tilt the dictionary allows). The
     part as written is kept as ``_named_part`` (the choice of the least overhung instance)."""
     from ..pag.refs import format_ref
 
     c = e.child
     out = replace(e, child=replace(c, part=None, index=None,
                                    text=format_ref(c.object, None, None, c.surface)))
+    if e.relation == "LEANING_AGAINST" and "angle_deg" in e.params:
+        # and at any tilt a lean on its parent holds at (a backpack that stands up by itself at
+        # the tilts written leans further): relaxed, the tilt is the residual
+        out = replace(out, params={k: v for k, v in e.params.items() if k != "angle_deg"})
     object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
     return out
 

@@ -108,7 +108,7 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
         ranges = [wide]
     worst = (0.0, None)
     above = _parts_above(st, e, faces[0])
-    blocked = None
+    blocked = upright = None
     for a, b in ranges:
         ok = []
         for th in np.deg2rad(np.linspace(a, b, 25)):
@@ -135,7 +135,12 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
         if ok and stood:
             return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
-            return pressed(asset, scale, R, k, d, ok, rng, e)
+            try:
+                return pressed(asset, scale, R, k, d, ok, rng, e)
+            except Fail as f:  # it stands up by itself there: maybe leaning further holds
+                upright = f
+    if upright is not None:
+        raise upright
     if blocked is not None and worst[1] is None:
         why = (f"leaning there it would run into {e.parent.object}:{blocked} above the face "
                f"(another instance of {e.parent.object} may have none)")
