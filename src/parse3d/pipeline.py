@@ -206,7 +206,10 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                                  copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
         was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
         done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
-                               config=cfg, new_asset=set(bad) if action == "asset" else None)
+                               config=cfg, new_asset=set(bad) if action == "asset" else None,
+                               stop=None if budget is None else
+                               lambda: time.process_time() - t0 > budget)
+        over = over or (budget is not None and time.process_time() - t0 > budget)
         # placed again exactly where it was (the only pose its relations leave): not a change
         done = {k: v for k, v in done.items()
                 if k not in was or not _same_pose(was[k], _pose_of(scene.objects[k]))}
