@@ -103,6 +103,9 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     lo, hi = e.param("angle_deg")
     wide = lean_range(e, True)
     ranges = [(lo, hi)] + ([wide] if wide != (lo, hi) else [])
+    written = getattr(e, "_written_tilt", None)  # relaxed to lean further: as written first
+    if written is not None:
+        ranges = [written, (lo, hi)]
     stood = stands_to_lean(asset, st.pag, e.child.object)
     if stood:  # a pillow on its edge: the whole range, pressed firmly (it would roll upright)
         ranges = [wide]
