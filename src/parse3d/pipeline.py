@@ -11,7 +11,9 @@ object still fallen, tipped or off its support after the last round becomes ``fa
 ("unstable after N repairs"), with everything resting on it. Objects that rest as meant but
 turned (:func:`parse3d.measure.stability.settled_rest`) with their support relation failing are
 re-placed too, and go back to where they rested if that leaves them unstable: a repair never
-makes a stable object fail.
+makes a stable object fail. A flat object that fell over onto what held it up and that another
+pose does not make stand keeps the rest it fell into (:func:`keep_rest`), the relations it
+broke recorded relaxed.
 """
 
 from __future__ import annotations
@@ -25,14 +27,14 @@ from pathlib import Path
 import numpy as np
 
 from .measure.checks import check_relations
-from .measure.stability import verify_settled
+from .measure.stability import lies_flat, verify_settled
 from .pag.model import PAG
 from .scene.model import Repair, Scene
 from .solver import SolverConfig, solve
 from .solver.search import mark_unmet, replace_objects, support_descendants
 
 __all__ = ["PipelineOptions", "run_pipeline", "settle_and_repair", "write_outputs", "unstable_objects",
-           "UNSTABLE_FLAGS", "REPAIR_BUDGET"]
+           "UNSTABLE_FLAGS", "REPAIR_BUDGET", "keep_rest"]
 
 #: Physics flags that may make an object unstable (set by settling; whether it is, is decided by
 #: :func:`parse3d.measure.verify_settled`).
@@ -168,6 +170,9 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     before: dict[str, tuple] = {}
     before_of: dict[str, None] = {}  # those objects themselves (not what rests on them)
     still: dict[str, str] | None = None  # unstable_objects(relations=False) as settled now
+    # objects that fell over flat onto what held them up: cause and, per object (with what
+    # rests on it), PlacedObject and resolved support as they lay then
+    rests: dict[str, tuple[str, dict[str, tuple]]] = {}
     for rnd in range(1, rounds + 1):
         # a broken support relation on a stable object gets one new pose (round 1), no more;
         # one resting as meant, turned (a content, a slumped leaner), is tried every round
@@ -176,6 +181,15 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         if rnd > 1:
             bad.update(dict.fromkeys(_turned_at_rest(scene, bad), "support relation"))
         still = real
+        for oid in real:  # the first flat rest seen, to keep should the repairs not do better
+            if oid not in rests and lies_flat(scene, scene.objects[oid]):
+                rests[oid] = (real[oid], {d: (copy.deepcopy(scene.objects[d]),
+                                              copy.deepcopy(scene.meta.get("resolved", {}).get(
+                                                  _support_key(scene, d))))
+                                          for d in [oid, *support_descendants(scene.pag, oid)]
+                                          if scene.objects[d].placed})
+        if rnd > 1:  # another pose did not stand either: the flat rest is kept, not another asset
+            bad = {k: v for k, v in bad.items() if k not in rests}
         if not bad:
             break
         if budget is not None and time.process_time() - t0 > budget:
@@ -192,7 +206,10 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                                  copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
         was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
         done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
-                               config=cfg, new_asset=set(bad) if action == "asset" else None)
+                               config=cfg, new_asset=set(bad) if action == "asset" else None,
+                               stop=None if budget is None else
+                               lambda: time.process_time() - t0 > budget)
+        over = over or (budget is not None and time.process_time() - t0 > budget)
         # placed again exactly where it was (the only pose its relations leave): not a change
         done = {k: v for k, v in done.items()
                 if k not in was or not _same_pose(was[k], _pose_of(scene.objects[k]))}
@@ -232,6 +249,25 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         _settle(scene)
         still = unstable_objects(scene, relations=False)
         touched.update(back)
+    # a flat object that fell over onto what held it up (a plate stood on its rim, a frame with
+    # no stand) keeps the rest it came to rather than failing: the relations it broke are
+    # recorded relaxed, saying so
+    flat = [oid for oid in scene.objects if oid in still and oid in rests]
+    if flat:
+        for oid in flat:
+            for d, (old, res) in rests[oid][1].items():
+                now = scene.objects[d]
+                old.repairs, old.flags = list(now.repairs), list(now.flags)
+                scene.objects[d] = old
+                key = _support_key(scene, d)
+                if res is not None:
+                    scene.meta.setdefault("resolved", {})[key] = res
+                else:
+                    scene.meta.get("resolved", {}).pop(key, None)
+        keep_rest(scene, {oid: rests[oid][0] for oid in flat})
+        _settle(scene)
+        still = unstable_objects(scene, relations=False)
+        touched.update(flat)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
         if not o.placed:
@@ -250,8 +286,43 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     stats = {"repaired": len(touched - set(still)), "unrepaired": len(still)}
     if back:
         stats["kept"] = len(back)
+    if flat:
+        stats["rested"] = len([oid for oid in flat if oid not in still])
     scene.meta["repair"] = dict(stats, budget=True) if over else stats
     return stats
+
+
+def keep_rest(scene: Scene, causes: dict[str, str]) -> None:
+    """Make where the settled objects ``causes`` (``{id: cause}``) came to rest their pose, with
+    what rests on them: each gets a repair ``rest``, and every relation of theirs (as child or
+    parent) that held when solved and fails on the new pose is recorded relaxed (what blocked
+    it: the fall). The caller settles the scene again."""
+    held = {c.index for c in scene.relations if c.holds is True}
+    moved: dict[str, str] = {}
+    for oid, cause in causes.items():
+        for d in [oid, *support_descendants(scene.pag, oid)]:
+            o = scene.objects[d]
+            if d in moved or not o.placed or o.settled_position is None:
+                continue
+            o.position = np.array(o.settled_position, float)
+            o.rotation = np.array(o.settled_rotation, float)
+            moved[d] = oid
+        o = scene.objects[oid]
+        o.repairs.append(Repair(len(o.repairs) + 1, cause, "rest"))
+    scene.relations = []
+    scene.relations = check_relations(scene)
+    relaxed = scene.meta.setdefault("relaxed", {})
+    for c in scene.relations:
+        e = scene.pag.relations[c.index]
+        who = moved.get(e.child.object) or moved.get(e.parent.object)
+        if who is None or c.holds is not False or c.index not in held or str(c.index) in relaxed:
+            continue
+        o = scene.objects[who]
+        relaxed[str(c.index)] = (
+            f"{who} {causes[who]} in settling as placed, again after {len(o.repairs) - 1} "
+            f"repair(s), and {lies_flat(scene, o) or 'rests where it fell'} (write a LEANING_AGAINST "
+            f"that holds {who} up, or let it lie flat)")
+    mark_unmet(scene)
 
 
 def run_pipeline(pag: PAG, *, seed: int, out: str | Path | None,

@@ -39,6 +39,7 @@ from .geometry import (
     ray_caster,
 )
 from .reach import (
+    WIDE_LEAN_DEG,
     face_slabs,
     lean_range,
     mounted_parts,
@@ -566,7 +567,11 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     elif rel in ("ON", "IN"):  # a leaning object stands on its support tilted by its lean angle
         for le in ctx.scene.pag.edges_of(e.child.object):
             if le.relation == "LEANING_AGAINST":
-                ang_tol = max(ang_tol, lean_range(le, not le.parent.is_room_element)[1] + 1.0)
+                on_obj = not le.parent.is_room_element
+                # on an object, up to the widest lean: one leaning further than written (its
+                # lean relaxed) still stands on its support
+                hi = max(lean_range(le, on_obj)[1], WIDE_LEAN_DEG[1] if on_obj else 0.0)
+                ang_tol = max(ang_tol, hi + 1.0)
     if pile is not None or on_wall:  # on a pile (a rolled towel on towels) or on the
         ang_tol = max(ang_tol, PILE_TILT_DEG)  # container's wall (a bowl in a bowl), as it lands
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}

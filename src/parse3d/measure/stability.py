@@ -48,7 +48,8 @@ from .geometry import asset_geometry, hull_extents, is_round
 from .reach import piece_data, pieces_distance, stands_to_lean
 
 __all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by", "is_round",
-           "SettledSummary", "summarize_settled", "broken_after_settling", "settled_rest"]
+           "SettledSummary", "summarize_settled", "broken_after_settling", "settled_rest",
+           "lies_flat"]
 
 #: The causes :func:`verify_settled` reports, in the order it reports them per object.
 INSTABILITY_CAUSES = ("fell", "tipped", "left_support", "broke_support")
@@ -255,6 +256,45 @@ def settled_rest(scene: Scene, obj) -> str | None:
                 and _distance(obj, other, parts) <= LEAN_TOUCH:
             return "still leaning"
     return None
+
+
+#: Share of its middle extent up to which an object's smallest extent makes it flat (a plate, a
+#: photo frame, a pillow, a slab of yokan): lying on its broad face is a rest it can keep.
+FLAT_SHARE = 0.5
+#: Degrees from vertical within which a flat object's thin axis lies for it to lie flat (or
+#: leaned back on its broad face: a photo frame fallen back against the wall behind the mantel).
+LIE_DEG = 45.0
+
+
+def lies_flat(scene: Scene, obj) -> str | None:
+    """Where a settled flat object that fell over lies, or None.
+
+    A flat object (its smallest extent at most :data:`FLAT_SHARE` of the next) that settling
+    laid on its broad face (its thin axis within :data:`LIE_DEG` of vertical: lying, or fallen
+    back against something behind it) on what held it up
+    (it touches it within :data:`LEAN_TOUCH`, exact convex distances, with its centre of mass
+    over it) keeps that rest: a plate stood on its rim that fell flat on the shelf, a photo
+    frame with no stand lying on the mantel. The repair after settling takes that pose as the
+    object's own rather than failing it (``parse3d.pipeline.settle_and_repair``). A lamp or a
+    cup on its side is not flat, and one that left its support (on the floor below) is not
+    where the writer put it.
+    """
+    edge = scene.pag.supporter(obj.id)
+    if edge is None or not obj.placed or obj.fixed or obj.settled_rotation is None:
+        return None
+    holder = scene.objects.get(_holder(edge, obj))
+    if holder is None or not holder.placed or holder.settled_rotation is None:
+        return None
+    ext, order = hull_extents(obj.asset)
+    if float(ext[order[0]]) > FLAT_SHARE * float(ext[order[1]]):
+        return None
+    thin = np.asarray(obj.settled_rotation, float)[:, order[0]]
+    if abs(float(thin[2])) < np.cos(np.radians(LIE_DEG)):
+        return None
+    if not _over(holder, _com(obj, settled=True)) \
+            or _distance(obj, holder, list(holder.asset.parts)) > LEAN_TOUCH:
+        return None
+    return f"lies on its broad face on {holder.id}"
 
 
 def _holder(edge, obj) -> str:

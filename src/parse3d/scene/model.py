@@ -70,8 +70,8 @@ class SupportChoice:
 @dataclass(frozen=True)
 class Repair:
     """One repair of an object after settling: its round (1-based), what was wrong (``fell``,
-    ``tipped``, ``left_support``, ``support relation``) and what was changed (``pose`` or
-    ``asset``)."""
+    ``tipped``, ``left_support``, ``support relation``) and what was changed (``pose``,
+    ``asset``, or ``rest``: the pose it came to rest in became its own)."""
 
     round: int
     cause: str

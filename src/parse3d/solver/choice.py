@@ -9,6 +9,7 @@ from dataclasses import replace
 
 import numpy as np
 import shapely
+import shapely.affinity
 from shapely.geometry import Polygon
 
 from ..assets.model import Asset
@@ -240,6 +241,9 @@ def lacks(asset: Asset, reqs) -> str | None:
             if not any(lies_flat(asset, p) for p in ps):
                 return (f"{asset.asset_id}'s {label} would roll: neither its top nor its bottom "
                         f"is flat to stack on ({text})")
+            if not any(clear_middle(asset, p) for p in ps):
+                return (f"{asset.asset_id}'s {label} has a part standing on the middle of its "
+                        f"top (a knob): the next one of its kind would balance on it ({text})")
         elif kind.startswith("extreme:"):
             n = np.asarray(SURFACES[kind.split(":")[1]], float)
             side = kind.split(":")[1]
@@ -350,6 +354,38 @@ def free_top(asset: Asset, part) -> bool:
     return got
 
 
+_CLEAR: dict[tuple[str, str], bool] = {}
+
+
+def clear_middle(asset: Asset, part) -> bool:
+    """Whether no other part of the asset rises more than 3 mm above the middle of the part's
+    top (its outline scaled by half about its centroid; within 20 cm above it), short of a layer
+    covering 90% of it (a hinge at its edge leaves it clear): a lid's knob would carry
+    a jar of the same kind stacked on it, balanced on 2 cm, and it falls in settling."""
+    key = (asset.asset_id, part.name)
+    got = _CLEAR.get(key)
+    if got is None:
+        got = True
+        s = part.surfaces.get("top")
+        if s is not None:
+            top = filled(s.polygon)
+            mid = shapely.affinity.scale(top, 0.5, 0.5, origin=top.centroid)
+            for p in asset.parts:
+                if p is part:
+                    continue
+                for pc in p.piece_arrays:
+                    h = (pc.vertices - s.origin) @ s.normal
+                    if h.max() <= 3e-3 or h.min() >= 0.2:
+                        continue
+                    fp = Polygon(RG.convex_footprint(plane_coords(s, pc.vertices)))
+                    if fp.intersects(mid) and fp.area < 0.9 * top.area:
+                        got = False
+        if len(_CLEAR) > 8192:
+            _CLEAR.clear()
+        _CLEAR[key] = got
+    return got
+
+
 #: Metres of a layer lying on a part's top (a card table's felt, a glass top) that does not
 #: cover it: what stands on the part stands on the layer (the ``ON`` check's step).
 LAYER = 0.01
@@ -374,8 +410,10 @@ def too_tall_failure(reason: str) -> bool:
 
 
 def room_failure(reason: str) -> bool:
-    """Whether a failure was about room (a region emptied, no free space, collisions)."""
-    return any(k in reason for k in ("emptied", "no free space", "collides", "does not fit"))
+    """Whether a failure was about room (a region emptied, no free space, collisions, a base
+    with only the edge of a low part under it: a knob on a lid)."""
+    return any(k in reason for k in ("emptied", "no free space", "collides", "does not fit",
+                                     "edge of a low part"))
 
 
 def alternative_instance(library, categories, reqs, tried: set[str], rng: np.random.Generator, *,

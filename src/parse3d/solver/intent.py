@@ -22,6 +22,7 @@ import numpy as np
 from ..assets.model import Asset
 from ..measure.checks import DIST_TOL, end_pads
 from ..measure.geometry import is_round
+from ..measure.reach import WIDE_LEAN_DEG
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .geometry import part_points
@@ -74,13 +75,21 @@ def overhang(asset: Asset, e: Edge) -> tuple[float, str]:
 
 def whole_object(e: Edge) -> Edge:
     """The edge ``e`` by the whole child object (no part named): the part that reaches
-    furthest then touches (a shelf flush by its posts when its back panel is set in). The
+    furthest then touches (a shelf flush by its posts when its back panel is set in); a lean
+    on an object up to the widest tilt (the tilts written tried first: ``_written_tilt``). The
     part as written is kept as ``_named_part`` (the choice of the least overhung instance)."""
     from ..pag.refs import format_ref
 
     c = e.child
     out = replace(e, child=replace(c, part=None, index=None,
                                    text=format_ref(c.object, None, None, c.surface)))
+    if e.relation == "LEANING_AGAINST" and "angle_deg" in e.params \
+            and not e.parent.is_room_element:
+        # leaning on an object, further than written when the tilts written do not hold (a
+        # backpack that stands up by itself there): relaxed, the tilt is the residual
+        lo, hi = (float(x) for x in e.param("angle_deg"))
+        out = replace(out, params={**e.params, "angle_deg": [lo, max(hi, WIDE_LEAN_DEG[1])]})
+        object.__setattr__(out, "_written_tilt", (lo, hi))
     object.__setattr__(out, "_named_part", (c.part, c.index) if c.part else None)
     return out
 

@@ -103,12 +103,15 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     lo, hi = e.param("angle_deg")
     wide = lean_range(e, True)
     ranges = [(lo, hi)] + ([wide] if wide != (lo, hi) else [])
+    written = getattr(e, "_written_tilt", None)  # relaxed to lean further: as written first
+    if written is not None:
+        ranges = [written, (lo, hi)]
     stood = stands_to_lean(asset, st.pag, e.child.object)
     if stood:  # a pillow on its edge: the whole range, pressed firmly (it would roll upright)
         ranges = [wide]
     worst = (0.0, None)
     above = _parts_above(st, e, faces[0])
-    blocked = None
+    blocked = upright = None
     for a, b in ranges:
         ok = []
         for th in np.deg2rad(np.linspace(a, b, 25)):
@@ -135,7 +138,12 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
         if ok and stood:
             return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
-            return pressed(asset, scale, R, k, d, ok, rng, e)
+            try:
+                return pressed(asset, scale, R, k, d, ok, rng, e)
+            except Fail as f:  # it stands up by itself there: maybe leaning further holds
+                upright = f
+    if upright is not None:
+        raise upright
     if blocked is not None and worst[1] is None:
         why = (f"leaning there it would run into {e.parent.object}:{blocked} above the face "
                f"(another instance of {e.parent.object} may have none)")

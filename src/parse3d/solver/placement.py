@@ -684,8 +684,9 @@ def _onto_parent(d: _OnSupport, cand: PlacedObject, rise: float
         if up > 0:
             t = t + up * s.normal
             cand = PlacedObject(d.oid, asset.category, asset, scale, Rt, t)
-        if float(np.min((pts - s.origin) @ s.normal)) + up > THIN_LOW + EPS and \
-                not base_supported(asset, scale, Rt, t, s, low_parts(st, sup, STEP),
+        at = float(np.min((pts - s.origin) @ s.normal)) + up
+        if at > THIN_LOW + EPS and \
+                not base_supported(asset, scale, Rt, t, s, low_parts(st, sup, STEP, at),
                                    upright=True):
             # raised onto low parts, its centre of mass must be over what holds it:
             # a pot half on a burner's edge tips into the gap in settling

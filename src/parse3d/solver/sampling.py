@@ -354,10 +354,12 @@ def resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None
     return best
 
 
-def low_parts(st: SolveState, sup: Support, step: float):
-    """The footprints of :func:`_low_pieces` as one geometry (the burners a pot may rest on)."""
-    pieces = _low_pieces(st, sup, step)
-    return shapely.union_all([p for _, p in pieces]) if pieces else Polygon()
+def low_parts(st: SolveState, sup: Support, step: float, at: float | None = None):
+    """The footprints of :func:`_low_pieces` as one geometry (the burners a pot may rest on);
+    with ``at`` (metres above ``sup``: the child's base), only those whose top lies within 3 mm
+    of it, what the base rests on (a knob on a lid, not the lid around it)."""
+    pieces = [p for top, p in _low_pieces(st, sup, step) if at is None or abs(top - at) <= 3e-3]
+    return shapely.union_all(pieces) if pieces else Polygon()
 
 
 def covered_centres(F: np.ndarray, at: np.ndarray, centres: list[np.ndarray]) -> int:

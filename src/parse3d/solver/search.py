@@ -931,12 +931,14 @@ def _state_of(scene: Scene, leave_out: set[str]) -> SolveState:
 
 def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, library=None,
                     config: SolverConfig | None = None, new_asset: set[str] | None = None,
-                    ) -> dict[str, str]:
+                    stop: Callable[[], bool] | None = None) -> dict[str, str]:
     """Re-place ``ids`` (and what rests on them) in ``scene``, keeping every other object fixed.
 
     Each object draws from ``stage_rng(seed, "object:<id>:repair<round>")``; objects in
     ``new_asset`` skip the asset they had (another pool draw). Objects that cannot be placed
-    again keep their old pose. Returns ``{id: "pose" | "asset"}`` for those re-placed.
+    again keep their old pose; so does every object whose attempts begin once ``stop()`` is
+    true (the repair's time budget is spent). Returns ``{id: "pose" | "asset"}`` for those
+    re-placed.
     """
     from .library import default_library
 
@@ -957,6 +959,8 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
     for oid in todo:
         old = scene.objects[oid]
         for attempt in range(4):
+            if stop is not None and stop():
+                continue  # out of time: it keeps its pose (below)
             keep = old if oid not in new_asset and attempt < 2 else None
             try:
                 p = srch.try_place(oid, f"object:{oid}:repair{round}:{attempt}", keep=keep)
