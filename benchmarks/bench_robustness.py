@@ -36,6 +36,10 @@ Prints one table with a row per corpus, each scene run through the project's per
     Every row ends with the median and largest CPU seconds spent settling and repairing
     (``settle med``, ``settle max``: the first settling, every repair round and its settling;
     ``scene.timings["settle_cpu"]``, wall seconds in revisions without it).
+``parse3d solve`` (with ``--cli``)
+    every foreign case solved again by the command, in a fresh process (start-up, imports,
+    asset cache reads, settle, contacts and preview in the figure), after the in-process pass
+    has cached its assets: median and largest wall seconds, and CPU seconds.
 ``cost of failure``
     a scene (examples/study.json) and the same scene plus one wardrobe ON a mug: the ratio of
     their solve times (goal: at most 3).
@@ -315,8 +319,33 @@ def cost_of_failure(seeds: range) -> dict:
     return {"base_s": b, "impossible_s": i, "ratio": i / b if b else float("nan")}
 
 
+def cli_times(cases: list[dict]) -> list[dict]:
+    """Wall and CPU seconds of ``parse3d solve`` (settle, contacts, preview; a fresh process
+    per case, run with this interpreter and its ``PYTHONPATH``) on each foreign case, its
+    PAG written to a temporary file. Run after the in-process pass, so the assets are cached."""
+    import tempfile
+
+    out = []
+    with tempfile.TemporaryDirectory(prefix="parse3d-cli-") as tmp:
+        for c in (c for c in cases if c["row"] == "foreign"):
+            src = Path(tmp) / f"{c['name']}.json"
+            src.write_text(json.dumps(c["pag"]))
+            before = os.times()
+            t = time.perf_counter()
+            r = subprocess.run([sys.executable, "-m", "parse3d", "solve", str(src), "-o",
+                                str(Path(tmp) / "out"), "--seed", str(c["seed"])],
+                               capture_output=True, check=False)
+            wall = time.perf_counter() - t
+            after = os.times()
+            cpu = (after.children_user - before.children_user
+                   + after.children_system - before.children_system)
+            out.append({"name": c["name"], "seed": c["seed"], "wall_s": wall, "cpu_s": cpu,
+                        "rc": r.returncode})
+    return out
+
+
 def run_all(cases: list[dict], cof_seeds: range, progress: bool = True,
-            workers: int = 1) -> dict:
+            workers: int = 1, cli: bool = False) -> dict:
     out = []
     if workers > 1:
         import multiprocessing as mp
@@ -336,7 +365,8 @@ def run_all(cases: list[dict], cof_seeds: range, progress: bool = True,
         pool.close()
         pool.join()
     return {"cases": out,
-            "cost_of_failure": cost_of_failure(cof_seeds) if len(cof_seeds) else None}
+            "cost_of_failure": cost_of_failure(cof_seeds) if len(cof_seeds) else None,
+            "cli": cli_times(cases) if cli else None}
 
 
 # ----------------------------------------------------------------------------- reporting
@@ -398,14 +428,27 @@ def print_table(now: dict, before: dict | None, rev: str | None) -> None:
         print(f"{'cost of failure' if label == 'now' else '':18s} {label[:8]:>8s}  "
               f"study {c['base_s']:.2f} s, + wardrobe ON mug {c['impossible_s']:.2f} s: "
               f"x{c['ratio']:.2f} (goal <= 3)")
+    for label, res in (("now", now), (rev or "", before)):
+        runs = (res or {}).get("cli")
+        if not runs:
+            continue
+        wall = [r["wall_s"] for r in runs]
+        cpu = [r["cpu_s"] for r in runs]
+        slow = max(runs, key=lambda r: r["wall_s"])
+        print(f"{'parse3d solve' if label == 'now' else '':18s} {label[:8]:>8s}  "
+              f"{len(runs)} foreign cases: wall median {np.median(wall):.2f} s, max "
+              f"{max(wall):.2f} s ({slow['name']} seed {slow['seed']}), over 5 s: "
+              f"{sum(w > 5 for w in wall)}; cpu median {np.median(cpu):.2f} s, max "
+              f"{max(cpu):.2f} s (goal: wall median <= 2 s, none above 5 s)")
 
 
 def baseline(rev: str, cases: list[dict], quick: bool, workers: int = 1,
-             cof: int | None = None) -> dict:
+             cof: int | None = None, cli: bool = False) -> dict:
     """Run the corpus with the package of ``rev`` (a temporary git worktree)."""
     with revision_tree(rev) as wt:
         spec = wt.parent / "corpus.json"
         spec.write_text(json.dumps({"cases": cases, "quick": quick, "workers": workers,
+                                    "cli": cli,
                                     **({"cof": cof} if cof is not None else {})}))
         res = wt.parent / "result.json"
         env = {**os.environ, "PYTHONPATH": str(wt / "src")}
@@ -429,12 +472,14 @@ def main() -> None:
     ap.add_argument("--foreign", nargs="?", const=str(FOREIGN), metavar="DIR",
                     help="the foreign rooms alone, at seeds 0-4 (--seeds K: 0..K-1); DIR: "
                          "the rooms of another folder (default tests/data/foreign)")
+    ap.add_argument("--cli", action="store_true",
+                    help="also time `parse3d solve` in a fresh process on each foreign case")
     ap.add_argument("--_run-corpus", dest="run_corpus", help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.run_corpus:  # the baseline's side: measure the given corpus with this package
         spec = json.loads(Path(args.run_corpus).read_text())
         res = run_all(spec["cases"], range(spec.get("cof", 2 if spec["quick"] else 5)),
-                      workers=spec.get("workers", 1))
+                      workers=spec.get("workers", 1), cli=spec.get("cli", False))
         Path(args.json).write_text(json.dumps(res))
         return
     if args.workers < 1 or (args.every is not None and args.every < 1) or (
@@ -453,8 +498,8 @@ def main() -> None:
             more, note = foreign_cases(range(2 if args.quick else 5))
             cases += more
         cof = 2 if args.quick else 5
-    now = run_all(cases, range(cof), workers=args.workers)
-    before = (baseline(args.baseline_rev, cases, args.quick, args.workers, cof)
+    now = run_all(cases, range(cof), workers=args.workers, cli=args.cli)
+    before = (baseline(args.baseline_rev, cases, args.quick, args.workers, cof, args.cli)
               if args.baseline_rev else None)
     if note:
         print(note)

@@ -1,7 +1,7 @@
 """Check that the solver gives the same scenes as before a change (a speed-up's proof).
 
 Solves a fixed set of rooms (the bundled example rooms, the 50-object office of
-``bench_solver.py`` and some room templates) at a few seeds, without settling, and stores each
+``bench_solver.py``, some room templates and, with ``--foreign N``, foreign rooms) at a few seeds, without settling, and stores each
 scene's ``scene.json`` text with its timings left out. ``--save FILE`` writes them;
 ``--compare FILE`` solves again and reports every scene whose text differs, with the first
 differing object (exit status 1 if any).
@@ -16,6 +16,7 @@ import argparse
 import json
 import sys
 import time
+from pathlib import Path
 
 from bench_solver import office_50
 
@@ -24,10 +25,15 @@ from parse3d.scene.io import scene_to_dict
 from parse3d.scenes import bundled_paths
 from parse3d.solver import solve
 
+FOREIGN = Path(__file__).resolve().parent.parent / "tests" / "data" / "foreign"
 
-def cases(n_templates: int, seeds: int) -> list[tuple[str, object, int]]:
+
+def cases(n_templates: int, seeds: int, n_foreign: int = 0) -> list[tuple[str, object, int]]:
     """``(key, pag, seed)`` of every scene checked."""
     out = []
+    for p in sorted(FOREIGN.glob("*.json"))[:n_foreign]:
+        pag = load_pag(p)
+        out += [(f"foreign/{p.stem}/{s}", pag, s) for s in range(2)]
     for p in bundled_paths():
         pag = load_pag(p)
         out += [(f"{pag.name}/{s}", pag, s) for s in range(2)]
@@ -61,10 +67,12 @@ def main() -> None:
     what.add_argument("--compare", metavar="FILE")
     ap.add_argument("--templates", type=int, default=12)
     ap.add_argument("--seeds", type=int, default=3)
+    ap.add_argument("--foreign", type=int, default=0, metavar="N",
+                    help="also the first N rooms of tests/data/foreign at seeds 0-1")
     args = ap.parse_args()
     t0 = time.process_time()
     docs = {}
-    for key, pag, seed in cases(args.templates, args.seeds):
+    for key, pag, seed in cases(args.templates, args.seeds, args.foreign):
         docs[key] = json.loads(json.dumps(scene_doc(pag, seed)))
         print(f"{key}: {sum(o.get('status') == 'placed' for o in docs[key]['objects'])} of "
               f"{len(docs[key]['objects'])} placed", flush=True)

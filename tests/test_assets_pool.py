@@ -76,3 +76,37 @@ def test_fingerprint_covers_the_private_helper_modules(monkeypatch):
         pool._module_digest.cache_clear()
     assert after["microwave"] != before["microwave"]
     assert after["clothes"] == before["clothes"]
+
+
+def _imports_by_full_parse(source: str) -> list[tuple[str | None, tuple[str, ...]]]:
+    import ast
+
+    return [(n.module, tuple(a.name for a in n.names)) for n in ast.walk(ast.parse(source))
+            if isinstance(n, ast.ImportFrom) and n.level == 1]
+
+
+def test_relative_import_scan_matches_a_whole_module_parse():
+    """The fingerprint's cheap scan of relative imports finds exactly what parsing the whole
+    module finds: on every generator module, and on the forms a module may use (parenthesised
+    over several lines, backslash-continued, inside a function, an import-like line in a
+    docstring)."""
+    import pkgutil
+
+    from parse3d.assets import generators, pool
+
+    def scan(src):
+        return [(n.module, tuple(a.name for a in n.names)) for n in pool._relative_imports(src)]
+
+    names = [f"parse3d.assets.generators.{m.name}"
+             for m in pkgutil.iter_modules(generators.__path__)]
+    assert len(names) > 30
+    for name in names:
+        src = pool._module_source(name)
+        assert sorted(scan(src), key=repr) == sorted(_imports_by_full_parse(src), key=repr), name
+    src = ('"""Docs.\n\nfrom ._fake import (\n"""\n'
+           "from ._kit import (rot,\n    legs4)\n"
+           "from . import _rods, \\\n    _casework\n"
+           "def f():\n    from ._household import ring  # late\n    return ring\n"
+           "from .. import materials as M\n")
+    assert sorted(scan(src), key=repr) == sorted(_imports_by_full_parse(src), key=repr)
+    assert {m for m, _ in scan(src)} == {"_kit", None, "_household"}

@@ -541,3 +541,42 @@ def test_colour_without_msaa_is_depth_tested(scene, renderer, sampled):
         plain.release()
     b = renderer.render_rgb(scene, sampled[1]).astype(int)
     assert np.abs(a - b).max(axis=-1).mean() < 3.0
+
+
+def test_vertex_normals_arithmetic_is_trimeshs_bit_for_bit():
+    """The renderer's face normals, corner angles and unit vertex normals are trimesh's
+    (``util.unitize``, ``triangles.angles``) to the last bit, on real asset meshes and on
+    degenerate triangles, so a preview looks the same without importing trimesh."""
+    from parse3d.geometry.surfaces import unit_normals
+    from parse3d.render.renderer import _corner_angles, _unitize
+
+    tris = []
+    for cat, seed in (("mug", 0), ("armchair", 1), ("wall_shelf", 2)):
+        for p in registry.generate(cat, seed).parts:
+            m = p.mesh_arrays if hasattr(p, "mesh_arrays") else p.mesh
+            tris.append(np.asarray(m.vertices, float)[np.asarray(m.faces)])
+    flat = np.array([[[0, 0, 0], [1, 0, 0], [2, 0, 0]],   # collinear
+                     [[0, 0, 0], [0, 0, 0], [0, 1, 0]],   # two corners at one point
+                     [[0, 0, 0], [1e-15, 0, 0], [0, 1e-15, 0]]], float)
+    tri = np.concatenate([*tris, flat])
+    e = tri[:, 1:, :] - tri[:, :2, :]
+    cross = np.cross(e[:, 0], e[:, 1])
+    assert np.array_equal(_unitize(cross, zero=True), unit_normals(cross))
+    assert np.array_equal(_corner_angles(tri), trimesh.triangles.angles(tri))
+    rows = np.random.default_rng(0).normal(size=(500, 3))
+    rows[::50] = 0.0
+    assert np.array_equal(_unitize(rows), trimesh.util.unitize(rows))
+
+
+def test_solve_with_preview_imports_no_mesh_library(tmp_path):
+    """``parse3d solve`` (settle, contacts, preview) never needs trimesh for a rectangular
+    room: its import is a fifth of the command's time."""
+    code = ("import sys\nfrom parse3d.cli import main\n"
+            f"sys.argv = ['parse3d', 'solve', 'examples/study.json', '-o', {str(tmp_path)!r}]\n"
+            "try:\n    main()\nexcept SystemExit as e:\n    assert not e.code, e.code\n"
+            "print('trimesh' in sys.modules)\n")
+    r = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                       timeout=600, cwd=os.path.dirname(os.path.dirname(__file__)))
+    assert r.returncode == 0, r.stderr[-2000:]
+    assert r.stdout.strip().splitlines()[-1] == "False"
+    assert (tmp_path / "preview.png").is_file()

@@ -22,10 +22,13 @@ Examples
 
 from __future__ import annotations
 
+import ast
 import hashlib
 import inspect
 import os
+import re
 import sys
+import textwrap
 import time
 from dataclasses import dataclass
 from functools import cache
@@ -78,24 +81,46 @@ def _module_digest(module_name: str) -> bytes:
     return hashlib.sha256(_module_source(module_name).encode("utf-8")).digest()
 
 
+#: The start of a relative import statement (``from . import x``, ``from ._kit import y``):
+#: only these lines are parsed when looking for a module's private helpers.
+_RELATIVE_IMPORT = re.compile(r"^[ \t]*from[ \t]+\.[\w.]*[ \t]+import\b", re.MULTILINE)
+
+
+def _relative_imports(source: str) -> list[ast.ImportFrom]:
+    """The relative ``from ... import`` statements of ``source``, as parsed nodes: each
+    statement the pattern finds is parsed on its own (parenthesised and backslash-continued
+    names included), which is ~50x cheaper than parsing the whole module; a match that does
+    not parse alone (text in a string) is skipped."""
+    out = []
+    for m in _RELATIVE_IMPORT.finditer(source):
+        end = m.end()
+        while True:
+            nl = source.find("\n", end)
+            line = source[m.start():len(source) if nl < 0 else nl]
+            if line.count("(") > line.count(")") or line.rstrip().endswith("\\"):
+                if nl < 0:
+                    break
+                end = nl + 1
+                continue
+            break
+        try:
+            tree = ast.parse(textwrap.dedent(line))
+        except SyntaxError:
+            continue
+        out += [n for n in tree.body if isinstance(n, ast.ImportFrom) and n.level == 1]
+    return out
+
+
 @cache
 def _private_helpers(module_name: str) -> tuple[str, ...]:
     """The private sibling modules (``_kit``, ``_casework``…) that ``module_name`` imports,
     directly or through one another, sorted: their code shapes the assets as much as the
     generator's own."""
-    import ast
-
     package = module_name.rpartition(".")[0]
     seen: set[str] = set()
     todo = [module_name]
     while todo:
-        try:
-            tree = ast.parse(_module_source(todo.pop()))
-        except SyntaxError:
-            continue
-        for node in ast.walk(tree):
-            if not isinstance(node, ast.ImportFrom) or node.level != 1:
-                continue
+        for node in _relative_imports(_module_source(todo.pop())):
             names = [node.module] if node.module else [a.name for a in node.names]
             for n in names:
                 if n.startswith("_") and (dep := f"{package}.{n}") not in seen:

@@ -441,7 +441,7 @@ def shell_collision(room: RoomShell) -> ConvexSet:
     """
     key = b"".join([np.ascontiguousarray(room.footprint, np.float64).tobytes(),
                     np.float64([room.height, room.wall_thickness]).tobytes()]
-                   + [n.encode() + np.ascontiguousarray(e.mesh.bounds, np.float64).tobytes()
+                   + [n.encode() + np.ascontiguousarray(e.mesh_arrays.bounds, np.float64).tobytes()
                       for n, e in room.elements.items()])
     hit = _SHELL_CACHE.get(key)
     if hit is None:
@@ -452,7 +452,7 @@ def shell_collision(room: RoomShell) -> ConvexSet:
 def _shell_pieces(room: RoomShell) -> ConvexSet:
     parts, hulls = [], []
     for name, el in room.elements.items():
-        m = el.mesh
+        m = el.mesh_arrays
         if name in ("floor", "ceiling"):
             z0, z1 = float(m.bounds[0, 2]), float(m.bounds[1, 2])
             # the slab's outline: the footprint grown by the wall thickness

@@ -26,15 +26,14 @@ from __future__ import annotations
 import hashlib
 from collections import OrderedDict
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
 
 from ..assets.model import Asset, Material
 from ..errors import DependencyError
 from ..geometry.frames import cross_rows
 from ..geometry.meshes import MeshArrays
-from ..geometry.surfaces import unit_normals
 from ..scene.model import RoomShell, Scene
 from . import shaders
 from .camera import Camera, asset_camera, look_at
@@ -56,7 +55,10 @@ __all__ = [
 SYSTEM_PACKAGES = ("libegl1", "libegl-mesa0", "libgl1-mesa-dri")
 
 #: A mesh as the renderer reads it: ``vertices`` (V, 3) and ``faces`` (F, 3).
-_Mesh = trimesh.Trimesh | MeshArrays
+if TYPE_CHECKING:  # a preview imports no mesh library: the arithmetic below is trimesh's
+    import trimesh
+
+    _Mesh = trimesh.Trimesh | MeshArrays
 
 _SMOOTH_COS = float(np.cos(np.deg2rad(35.0)))
 _FLOATS_PER_VERTEX = 12
@@ -135,6 +137,39 @@ class RoomStyle:
         if element == "ceiling":
             return self.ceiling
         return self.wall
+
+
+#: Norms at or below this are zero (trimesh's ``util.TOL_ZERO``), and angles below this are
+#: a degenerate triangle's (``tol.merge``).
+_TOL_ZERO = np.finfo(np.float64).resolution * 100
+_TOL_MERGE = 1e-8
+
+
+def _unitize(rows: np.ndarray, *, zero: bool = False) -> np.ndarray:
+    """(n, d) rows scaled to unit length: ``trimesh.util.unitize``, the same operations in the
+    same order (so the same bits); rows of norm <= ``_TOL_ZERO`` are left as they are, or with
+    ``zero`` set to zero (as :func:`parse3d.geometry.surfaces.unit_normals` does)."""
+    norm = np.sqrt(np.dot(rows * rows, [1.0] * rows.shape[1]))
+    valid = norm > _TOL_ZERO
+    norm[valid] **= -1
+    out = rows * norm.reshape((-1, 1))
+    if zero and not valid.all():
+        out[~valid] = 0.0
+    return out
+
+
+def _corner_angles(tri: np.ndarray) -> np.ndarray:
+    """(n, 3) angles (radians) at the corners of (n, 3, 3) triangles, all zero for a
+    degenerate triangle: ``trimesh.triangles.angles``, operation for operation."""
+    u = _unitize(tri[:, 1] - tri[:, 0])
+    v = _unitize(tri[:, 2] - tri[:, 0])
+    w = _unitize(tri[:, 2] - tri[:, 1])
+    out = np.zeros((len(tri), 3), dtype=np.float64)
+    out[:, 0] = np.arccos(np.clip(np.dot(u * v, [1.0] * 3), -1, 1))
+    out[:, 1] = np.arccos(np.clip(np.dot(-u * w, [1.0] * 3), -1, 1))
+    out[:, 2] = np.pi - out[:, 0] - out[:, 1]
+    out[(out < _TOL_MERGE).any(axis=1), :] = 0.0
+    return out
 
 
 def _closed(mesh: trimesh.Trimesh) -> bool:
@@ -232,7 +267,7 @@ def _vertex_data(items: list[tuple[_Mesh, Material]]) -> tuple[np.ndarray, int]:
     face_part = np.repeat(np.arange(len(keep)), sizes)
     tri = V[F]
     e = tri[:, 1:, :] - tri[:, :2, :]  # the edges trimesh crosses, so the normals match it
-    fn = unit_normals(cross_rows(e[:, 0], e[:, 1]))
+    fn = _unitize(cross_rows(e[:, 0], e[:, 1]), zero=True)
     if any(g is not None for g in given):
         starts = np.r_[0, np.cumsum(sizes)]
         for j, g in enumerate(given):
@@ -241,12 +276,12 @@ def _vertex_data(items: list[tuple[_Mesh, Material]]) -> tuple[np.ndarray, int]:
     # angle-weighted vertex normals over the faces with a valid normal (trimesh's
     # weighted_vertex_normals: the same products, summed per vertex in face order)
     ok = (fn**2).sum(axis=1) > 0.5
-    ang = trimesh.triangles.angles(tri)[ok]
+    ang = _corner_angles(tri)[ok]
     idx = F[ok].ravel()
     contrib = ang.reshape(-1, 1) * np.repeat(fn[ok], 3, axis=0)
     vn = np.stack([np.bincount(idx, weights=contrib[:, c], minlength=len(V))
                    for c in range(3)], axis=1)
-    vn = trimesh.util.unitize(vn)
+    vn = _unitize(vn)
     corner_fn = np.repeat(fn, 3, axis=0)
     corner_vn = vn[F].reshape(-1, 3)
     smooth = np.einsum("ij,ij->i", corner_fn, corner_vn) > _SMOOTH_COS
@@ -532,7 +567,7 @@ class Renderer:
     def _shell_mesh(self, room: RoomShell, name: str) -> _GpuMesh:
         el = room.elements[name]
         return self._mesh(("shell", id(room), name), room,
-                          [(el.mesh, self.room_style.material(name))])
+                          [(el.mesh_arrays, self.room_style.material(name))])
 
     def _target(self, width: int, height: int) -> _Targets:
         t = self._targets.get((width, height))
