@@ -931,9 +931,7 @@ def _exported_mug_positions(d: Path) -> dict[str, np.ndarray]:
     out = {}
     doc = _glb_json(d / "scene.glb")
     node = next(n for n in doc["nodes"] if n["name"] == "mug")
-    # a node's pose is a column-major `matrix` or TRS, as glTF allows
-    moved = np.array(node["matrix"][12:15]) if "matrix" in node else np.array(node["translation"])
-    out["glb"] = np.linalg.inv(Z_UP_TO_Y_UP[:3, :3]) @ moved
+    out["glb"] = np.linalg.inv(Z_UP_TO_Y_UP[:3, :3]) @ np.array(node["translation"])
     stage = Usd.Stage.Open(str(d / "scene.usd"))
     out["usd"] = np.array(stage.GetPrimAtPath("/World/Objects/mug")
                           .GetAttribute("xformOp:translate").Get())
