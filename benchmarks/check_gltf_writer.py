@@ -13,7 +13,7 @@ node per part, meshes in the asset's frame shared between objects of one asset, 
 - the part transforms: every part's world matrix, read back, against the project's file;
 - what trimesh adds that the layout leaves out (normals, ``matrix`` instead of TRS).
 
-It prints the figures side by side and the verdict docs/export.md quotes. Run:
+It prints the figures side by side (docs/export.md quotes them). Run:
 
     python benchmarks/check_gltf_writer.py                 # the 50-object export benchmark scene
     python benchmarks/check_gltf_writer.py --repeats 5
