@@ -180,9 +180,10 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
                                                           sections=8), metal) for j, sx in enumerate((-1, 1))]]
 
 
-def _hands(rng, r_face: float, y: float, cz: float) -> Part:
-    """Hour, minute and (sometimes) second hands on a face of radius ``r_face`` whose front is
-    at ``y``, centred at (0, cz); angles run clockwise as seen from the front."""
+def _hands(rng, r_face: float, y: float, cz: float) -> list[Part]:
+    """Hour (``hands``, as the three once were one part), minute and (sometimes) second hands,
+    all labelled ``hand``, on a face of radius ``r_face`` whose front is at ``y``, centred at
+    (0, cz), and the ``hub`` nut holding them; angles run clockwise as seen from the front."""
     dark = M.solid((0.08, 0.08, 0.08), "metal", 0.4, 0.6)
     specs = [(0.5, 0.06, 0.002), (0.78, 0.04, 0.002)]
     if rng.random() < 0.6:
@@ -197,8 +198,10 @@ def _hands(rng, r_face: float, y: float, cz: float) -> Part:
         yk = y + thick / 2 + k * 0.0025
         hands.append(S.box((max(width * r_face, 0.002), thick, L), center=(c[0], yk, cz + c[1]),
                            R=rot_y(-theta)))
-    hands.append(_disc(0.008, y, y + 0.003 * len(specs) + 0.002, cz=cz, sections=12))
-    return make_part("hands", "hand", hands, dark)
+    names = ("hands", "minute_hand", "second_hand")
+    out = [make_part(names[k], "hand", h, dark) for k, h in enumerate(hands)]
+    out.append(make_part("hub", "hub", _disc(0.008, y, y + 0.003 * len(specs) + 0.002, cz=cz, sections=12), dark))
+    return out
 
 
 def _ticks(r: float, y: float, cz: float) -> list[Part]:
@@ -212,7 +215,7 @@ def _ticks(r: float, y: float, cz: float) -> list[Part]:
     return [make_part(f"marker_{k}", "marker", m, M.solid((0.1, 0.1, 0.1), "plastic")) for k, m in enumerate(marks)]
 
 
-@register("wall_clock", parts=("body", "face"), extra_parts=("hand", "marker"),
+@register("wall_clock", parts=("body", "face"), extra_parts=("hand", "marker", "hub", "crystal"),
           size_range=(0.2, 0.6), density=600, variants=("round", "square"), placement="wall")
 def wall_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     depth = rng.uniform(0.035, 0.06)
@@ -235,7 +238,17 @@ def wall_clock(rng: np.random.Generator, variant: str) -> list[Part]:
         face = S.box((a - 2 * rim, face_y - back, a - 2 * rim), center=(0, (face_y + back) / 2, a / 2))
         r_face, cz = a / 2 - rim, a / 2
     parts = [make_part("body", "body", body, body_mat), make_part("face", "face", face, face_mat),
-             *_ticks(r_face, face_y, cz), _hands(rng, r_face, face_y, cz)]
+             *_ticks(r_face, face_y, cz), *_hands(rng, r_face, face_y, cz)]
+    # the glass crystal over the dial, set just inside the rim's front edge
+    glass = M.glass(rng)
+    # (clear of the hub's nut: on a shallow case the crystal domes a little proud of the rim)
+    yc0 = max(depth - 0.004, float(parts[-1].mesh.bounds[1, 1]) + 0.0005)
+    yc1 = yc0 + 0.002
+    if variant == "round":
+        crystal = _disc(r - rim, yc0, yc1, cz=r)
+    else:
+        crystal = S.box((a - 2 * rim, yc1 - yc0, a - 2 * rim), center=(0, (yc0 + yc1) / 2, a / 2))
+    parts.append(make_part("crystal", "crystal", crystal, glass))
     return parts
 
 

@@ -224,7 +224,8 @@ def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("air_conditioner", parts=("body",), extra_parts=("front_panel", "louver", "vent", "display", "pipe"),
+@register("air_conditioner", parts=("body",), extra_parts=("front_panel", "louver", "vent", "display", "pipe", "vane", "filter",
+                                                            "knob", "button", "exhaust_port", "handle"),
           size_range=(0.45, 1.2), density=500, variants=("split", "window", "portable"), placement="wall")
 def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = white(rng, "plastic")
@@ -240,6 +241,14 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
                              S.box((w - 0.06, 0.012, 0.004), center=(0, d / 2 + 0.02 * i, h + 0.001)),
                              M.solid((0.8, 0.8, 0.8), "plastic")) for i in range(-2, 3)]]
         parts.append(make_part("pipe", "pipe", S.tube([(-w / 2 + 0.05, 0.02, 0.02), (-w / 2 + 0.05, 0.02, -0.15)], 0.012), shell))
+        # the vertical vanes steering the air behind the louver, and the two mesh filters
+        # under the front panel (it lifts to take them out)
+        grey = M.solid((0.8, 0.8, 0.8), "plastic")
+        for k, x in enumerate(np.linspace(-w * 0.3, w * 0.3, 4)):
+            parts.append(make_part(f"vane_{k}", "vane", S.box((0.004, 0.04, 0.035), center=(x, d - 0.04, 0.04)), grey))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"filter_{k}", "filter", S.box((w * 0.42, 0.004, h * 0.45), center=(sx * w * 0.23, d - 0.003, h * 0.6)),
+                                   M.solid((0.6, 0.65, 0.7), "fabric", 0.8)))
         return parts
     if variant == "window":
         w, d, h = rng.uniform(0.48, 0.66), rng.uniform(0.45, 0.6), rng.uniform(0.32, 0.42)
@@ -254,4 +263,22 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("display", "display", S.box((0.08, 0.004, 0.03), center=(w / 2 - 0.08, d + 0.008, h * 0.85)),
                            M.solid((0.1, 0.3, 0.5), "glass", 0.1)))
     parts.append(make_part("vent", "vent", S.box((w * 0.8, 0.004, h * 0.3), center=(0, -0.001, h * 0.6)), black()))
+    # the washable filter behind the front grille, and the controls: a window unit's two dials
+    # beside the louvers, a portable one's buttons on the top, its exhaust hose port at the
+    # back and the recessed grips on its sides
+    parts.append(make_part("filter", "filter", S.box((w * 0.6, 0.004, h * 0.3), center=(-w * 0.05, d - 0.003, h * 0.45)),
+                           M.solid((0.6, 0.65, 0.7), "fabric", 0.8)))
+    if variant == "window":
+        for k, z in enumerate((h * 0.55, h * 0.3)):
+            parts.append(make_part(f"knob_{k}", "knob", S.cylinder(0.02, 0.015, center=(w / 2 - 0.08, d + 0.0125, z), axis=(0, 1, 0),
+                                                                  sections=12), M.solid((0.8, 0.8, 0.8), "plastic")))
+    else:
+        for k in range(3):
+            parts.append(make_part(f"button_{k}", "button", S.cylinder(0.008, 0.004, center=((k - 1) * 0.03, d * 0.75, h + 0.001),
+                                                                      sections=10), black()))
+        parts.append(make_part("exhaust_port", "exhaust_port", S.cylinder(0.07, 0.02, center=(0, -0.01 + 0.012, h * 0.3),
+                                                                        axis=(0, 1, 0), sections=12), black()))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"handle_{k}", "handle", S.box((0.004, 0.08, 0.025), center=(sx * (w / 2 - 0.001), d / 2, h * 0.85)),
+                                   black()))
     return parts
