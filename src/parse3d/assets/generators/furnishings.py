@@ -124,11 +124,10 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     ht = 0.046  # deep enough to hold rings and watches under the closed lid
     parts.append(make_part("tray", "tray", [s.moved((0, 0, z + h - ht - 0.002)) for s in open_box(w - 2 * t - 0.004, d - 2 * t - 0.004, ht, 0.004)],
                            velvet))
-    # the tray's two dividers making three compartments, and the velvet ring roll in the left one
+    # the tray's divider walling off a ring compartment on the left, and the velvet ring roll in it
     tw, td, zt = w - 2 * t - 0.004, d - 2 * t - 0.004, z + h - ht - 0.002
-    for k, sx in enumerate((-1, 1)):
-        parts.append(make_part(f"divider_{k}", "divider", S.box((0.004, td - 0.008, ht - 0.006),
-                                                               center=(sx * tw / 6, 0, zt + 0.004 + (ht - 0.006) / 2)), velvet))
+    parts.append(make_part("divider", "divider", S.box((0.004, td - 0.008, ht - 0.006),
+                                                       center=(-tw / 6, 0, zt + 0.004 + (ht - 0.006) / 2)), velvet))
     parts.append(make_part("ring_roll", "ring_roll", S.cylinder(0.009, tw / 3 - 0.012, center=(-tw / 3, 0, zt + 0.004 + 0.009),
                                                                axis=(1, 0, 0), sections=10), velvet))
     zl = z + h
