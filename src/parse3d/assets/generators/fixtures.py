@@ -49,7 +49,8 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull"),
+@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull", "end_cap",
+                                                                  "carrier", "chain", "lift_cord", "tassel"),
           size_range=(0.5, 2.0),
           density=400, variants=("venetian", "roller", "vertical"), placement="wall")
 def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -69,6 +70,9 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         # the weighted toggle at the end of the pull cord
         parts.append(make_part("pull", "pull", S.cylinder(0.007, 0.03, center=(W / 2 - 0.04, 0.06, H - 0.05 - H * 0.6 - 0.015),
                                                           sections=8), mat))
+        # the caps closing the bottom rail's ends
+        parts += [make_part(f"end_cap_{k}", "end_cap", S.box((0.006, 0.017, 0.032), center=(sx * ((W - 0.03) / 2 + 0.003), 0.03, 0.016)), mat)
+                  for k, sx in enumerate((-1, 1))]
         return parts
     if variant == "vertical":
         n = int((W - 0.04) / 0.09)
@@ -77,6 +81,13 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"slat_{k}", "slat", S.box((0.08, 0.003, H - 0.08), center=(x, 0.025, (H - 0.08) / 2 + 0.02),
                                                               R=rot((0, 0, 1), 0.5)), mat))
         parts.append(make_part("wand", "wand", S.cylinder(0.005, H * 0.6, center=(W / 2 - 0.03, 0.06, H - 0.05 - H * 0.3), sections=8), mat))
+        # the carrier clip each vane hangs from under the headrail, and the chain linking the
+        # vanes' bottoms so they turn together
+        for k in range(n):
+            x = -W / 2 + 0.02 + 0.09 * (k + 0.5)
+            parts.append(make_part(f"carrier_{k}", "carrier", S.box((0.012, 0.012, 0.012), center=(x, 0.025, H - 0.05 - 0.006)), metal))
+        parts.append(make_part("chain", "chain", S.cylinder(0.0015, 0.09 * (n - 1), center=(-W / 2 + 0.02 + 0.09 * n / 2, 0.025, 0.035),
+                                                            axis=(1, 0, 0), sections=6), metal))
         return parts
     n = int((H - 0.08) / 0.025)
     tilt = rot((1, 0, 0), rng.uniform(0.1, 0.6))
@@ -89,6 +100,12 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"cord_{k}", "cord", S.cylinder(0.0015, H - 0.07, center=(sx * W * 0.3, 0.025, 0.02 + (H - 0.07) / 2),
                                                                sections=6), M.solid((0.9, 0.9, 0.88), "fabric", 0.8)))
     parts.append(make_part("wand", "wand", S.cylinder(0.005, H * 0.5, center=(-W / 2 + 0.03, 0.06, H - 0.05 - H * 0.25), sections=8), mat))
+    # the lift cord hanging from the headrail's right end, and its tassel
+    cord = M.solid((0.9, 0.9, 0.88), "fabric", 0.8)
+    parts.append(make_part("lift_cord", "lift_cord", S.cylinder(0.0015, H * 0.5, center=(W / 2 - 0.04, 0.055, H - 0.05 - H * 0.25),
+                                                                sections=6), cord))
+    parts.append(make_part("tassel", "tassel", S.frustum(0.006, 0.003, 0.03, center=(W / 2 - 0.04, 0.055, H - 0.05 - H * 0.5 - 0.03),
+                                                         sections=8), mat))
     return parts
 
 
