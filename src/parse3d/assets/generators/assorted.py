@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, white
+from ._detail_b import each
 from ._household import ring, shell
 from ._kit import rot
 
@@ -373,7 +374,7 @@ def window(rng: np.random.Generator, variant: str) -> list[Part]:
              S.box((w - 2 * f, gb, gb), center=(0, t / 2 + 0.009, 0.025 + h - f - gb / 2)),
              S.box((gb, gb, h - 2 * f - 2 * gb), center=(-w / 2 + f + gb / 2, t / 2 + 0.009, 0.025 + h / 2)),
              S.box((gb, gb, h - 2 * f - 2 * gb), center=(w / 2 - f - gb / 2, t / 2 + 0.009, 0.025 + h / 2))]
-    out.append(make_part("glazing_bead", "glazing_bead", beads, frame_mat))
+    out += each("glazing_bead", "glazing_bead", beads, frame_mat)  # four strips, bottom, top, left, right
     hw = M.metal(rng)
     if variant == "double_hung":
         out.append(_b("sash", "sash", (w - 2 * f, t * 0.6, 0.04), (0, t * 0.6, 0.025 + h / 2), frame_mat))
