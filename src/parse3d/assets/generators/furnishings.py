@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
+from ._detail_b import each
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
@@ -219,8 +220,9 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         fh = 0.012  # the rubber caps the legs stand on
         parts = legs4("leg", "leg", w=w, d=d, h=hl - fh, size=0.03, mat=metal, round_=True, z0=fh)
         parts += feet4("foot", w=w, d=d, r=0.017, h=fh, mat=black("rubber"), inset=-0.002)
-        parts.append(make_part("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
-                               + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal))
+        # the frame's four tubes (``frame``, ``frame_1``, ...), joined by the corner pieces
+        parts += each("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
+                      + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal)
         parts.append(make_part("cushion", "cushion", S.box((w - 0.06, d - 0.06, 0.012), center=(0, 0, hl + 0.024)), fab))
         # the moulded corner pieces joining the frame's tubes over each leg
         for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
