@@ -121,7 +121,7 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim", "handle_join"),
+@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim"),
           size_range=(0.06, 0.11), density=900, variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
@@ -135,14 +135,7 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
              make_part("rim", "rim", _rim(r, fh + h, t, 0.001), mat)]
     if variant == "handled":
-        handle = _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh))
-        parts.append(make_part("handle", "handle", handle, mat))
-        zj = [float(handle.mesh.bounds[1, 2]) - 0.004, float(handle.mesh.bounds[0, 2]) + 0.004]
-        # the wall's radius where each end of the handle meets it
-        rj = [r * 0.9 + (r - r * 0.9) * max(z - fh - h * 0.5, 0.0) / (h * 0.5) for z in zj]
-        parts += [make_part(f"handle_join_{k}", "handle_join",
-                            S.cylinder(0.006, 0.004, center=(rr - 0.001, 0.0, z), axis=(1, 0, 0), sections=10), mat)
-                  for k, (z, rr) in enumerate(zip(zj, rj, strict=True))]
+        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh)), mat))
     # the gilded band under the rim and a painted spray of flowers on the front
     zt = fh + h * 0.88
     rt = r * 0.9 + (r - r * 0.9) * (zt - fh - h * 0.5) / (h * 0.5)
