@@ -60,3 +60,33 @@ def test_a_pag_may_name_old_and_new_labels() -> None:
     bad = dict(data, relations=data["relations"] + [
         {"relation": "PARALLEL_TO", "child": "cup:saucer", "parent": "plate:well"}])
     assert any("saucer" in str(p) for p in validate_data(bad, vocabulary=registry.vocabulary()))
+
+
+CARCASSES = ("nightstand", "dresser", "wardrobe", "bathroom_vanity", "hutch", "locker", "sideboard")
+
+
+@pytest.mark.parametrize("category", CARCASSES)
+def test_a_carcass_body_is_its_panels(category: str) -> None:
+    """A case good's one-piece ``body`` became its panels: ``body`` names them all (two sides or
+    partitions at least, a bottom or plinth), the part named body that doors and drawers hang on
+    is one of them, and the group spans the carcass: the asset's width, from its back."""
+    for variant in registry.get(category).variants:
+        a = registry.generate(category, 0, variant)
+        covered = a.parts_by_label("body")
+        labels = {p.label for p in covered}
+        assert len(covered) >= 4 and len(labels) >= 3, (a.asset_id, labels)
+        assert a.part("body") in covered
+        lo = np.min([p.bounds[0] for p in covered], axis=0)
+        hi = np.max([p.bounds[1] for p in covered], axis=0)
+        # the panels span the carcass: across the asset's width, from its back
+        assert hi[0] - lo[0] >= 0.9 * (a.bounds[1, 0] - a.bounds[0, 0]), a.asset_id
+        assert lo[1] == pytest.approx(a.bounds[0, 1], abs=0.02), a.asset_id
+
+
+def test_a_bed_frame_is_its_rails() -> None:
+    a = registry.generate("bed", 0, "four_poster")
+    assert {p.label for p in a.parts_by_label("frame")} >= {"side_rail", "foot_rail"}
+    b = registry.generate("bed", 0, "platform")
+    assert {p.label for p in b.parts_by_label("frame")} == {"plinth", "deck"}
+    # the platform's frame is still what stands on the floor, under the mattress
+    assert min(p.bounds[0, 2] for p in b.parts_by_label("frame")) == pytest.approx(b.bounds[0, 2], abs=0.006)

@@ -12,7 +12,7 @@ import trimesh
 
 from ...geometry import shapes as S
 
-__all__ = ["carcass", "drawer_shape", "bar_handle", "knob", "cushion", "soft_hull", "scaled",
+__all__ = ["carcass", "carcass_panels", "CARCASS_GROUP", "drawer_shape", "bar_handle", "knob", "cushion", "soft_hull", "scaled",
            "post", "rounded_rect", "loft", "bevel_box"]
 
 
@@ -56,6 +56,39 @@ def carcass(w: float, d: float, h: float, t: float, *, z0: float = 0.0, top: boo
         parts.append(S.box((t, d - t * 0.6, inner_h),
                            center=(x, t * 0.3, z0 + t + inner_h / 2)))
     return S.union(parts)
+
+
+#: The group label ``body`` of a carcass built from :func:`carcass_panels`: the panels together
+#: are the old one-piece ``body``, so ``body``, ``body@top`` and the like name the same geometry.
+CARCASS_GROUP = {"body": ("side_panel", "bottom_panel", "back_panel", "top_board", "partition")}
+
+
+def carcass_panels(w: float, d: float, h: float, t: float, mat, *, z0: float = 0.0, top: bool = True,
+                   back: bool = True, dividers: tuple[float, ...] = ()) -> list:
+    """The panels of :func:`carcass` (same arguments, same geometry), each a part of its own:
+    ``side_panel_0`` (left) and ``side_panel_1`` (right), the bottom (named ``body``, as the
+    part doors and drawers hang on, label ``bottom_panel``), the ``top_board`` with ``top``,
+    the ``back_panel`` with ``back`` and a ``partition`` at each of ``dividers``. Register the
+    category with ``groups=CARCASS_GROUP`` so ``body`` covers them all.
+    """
+    from ..model import make_part
+
+    zc = z0 + h / 2
+    out = [make_part("side_panel_0", "side_panel", S.box((t, d, h), center=(-w / 2 + t / 2, 0, zc)), mat),
+           make_part("side_panel_1", "side_panel", S.box((t, d, h), center=(w / 2 - t / 2, 0, zc)), mat),
+           make_part("body", "bottom_panel", S.box((w - 2 * t, d, t), center=(0, 0, z0 + t / 2)), mat)]
+    if top:
+        out.append(make_part("top_board", "top_board",
+                             S.box((w - 2 * t, d, t), center=(0, 0, z0 + h - t / 2)), mat))
+    inner_h = h - 2 * t if top else h - t
+    if back:
+        out.append(make_part("back_panel", "back_panel",
+                             S.box((w - 2 * t, t * 0.6, inner_h), center=(0, -d / 2 + t * 0.3, z0 + t + inner_h / 2)),
+                             mat))
+    for k, x in enumerate(dividers):
+        out.append(make_part(f"partition_{k}", "partition",
+                             S.box((t, d - t * 0.6, inner_h), center=(x, t * 0.3, z0 + t + inner_h / 2)), mat))
+    return out
 
 
 def drawer_shape(x: float, z: float, w: float, h: float, y_front: float, depth: float, *,

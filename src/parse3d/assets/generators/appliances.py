@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, knob, white
+from ._household import ring
 from ._kit import feet4, hinge_parts, mount, prismatic, revolute
 
 
@@ -47,7 +48,8 @@ def _buttons(prefix: str, x: float, y: float, zs, mat, r: float = 0.008) -> list
 
 
 @register("microwave", parts=("body", "door"),
-          extra_parts=("control_panel", "button", "handle", "glass", "hinge", "foot", "turntable"),
+          extra_parts=("control_panel", "button", "handle", "glass", "hinge", "foot", "turntable", "display", "vent",
+                       "waveguide_cover", "latch", "roller_ring"),
           size_range=(0.42, 0.62), density=250, variants=("countertop", "white", "steel"),
           placement="surface")
 def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -64,6 +66,21 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("turntable", "turntable", S.cylinder(min(xc + w / 2, d) * 0.4, 0.006,
                                                               center=((xc - w / 2) / 2, 0, fh + 0.018)),
                          M.glass(rng)))
+    # the display above the keys, the vent grille on the left side, the mica cover over the
+    # waveguide on the cavity's right wall, the ring of rollers under the turntable, and the
+    # door's two latch hooks entering the front frame beside the control panel
+    out.append(make_part("display", "display", S.box((panel * 0.6, 0.003, 0.03), center=(xc + panel / 2, d / 2 + 0.0015, h - 0.035)),
+                         M.solid((0.1, 0.2, 0.15), "glass", 0.1)))
+    out.append(make_part("vent", "vent", S.box((0.003, d * 0.4, (h - fh) * 0.35), center=(-w / 2 - 0.0015, -d * 0.1, fh + (h - fh) * 0.6)),
+                         black()))
+    out.append(make_part("waveguide_cover", "waveguide_cover", S.box((0.002, d * 0.25, (h - fh) * 0.25),
+                                                                     center=(xc - 0.001, 0.0, fh + (h - fh) * 0.6)),
+                         M.solid((0.75, 0.7, 0.55), "paper", 0.8)))
+    rt = min(xc + w / 2, d) * 0.4
+    out.append(make_part("roller_ring", "roller_ring", S.cylinder(rt * 0.6, 0.004, center=((xc - w / 2) / 2, 0, fh + 0.013), sections=16),
+                         black()))
+    out += [make_part(f"latch_{k}", "latch", S.box((0.008, 0.02, 0.025), center=(xc - 0.01, d / 2 - 0.006, z)), black())
+            for k, z in enumerate((fh + (h - fh) * 0.3, fh + (h - fh) * 0.7))]
     out += door_parts("door", x0=-w / 2, x1=xc, z0=fh, z1=h, y_back=d / 2, thick=0.02, mat=mat,
                       handle_mat=mat, hinge_left=True, style="glass", glass=M.glass(rng),
                       handle_len=(h - fh) * 0.6)
@@ -113,7 +130,8 @@ def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("toaster_oven", parts=("body", "door"),
-          extra_parts=("control_panel", "knob", "handle", "glass", "hinge", "rack", "foot"),
+          extra_parts=("control_panel", "knob", "handle", "glass", "hinge", "rack", "foot", "heating_element",
+                       "crumb_tray", "vent"),
           size_range=(0.38, 0.56), density=300, variants=("steel", "black", "white"),
           placement="surface")
 def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -132,6 +150,16 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                           for y in np.linspace(-d / 2 + 0.04, d / 2 - 0.05, 6)],
                          M.metal(rng)))
     out += feet4("foot", w=w, d=d, r=0.012, h=fh, mat=black("rubber"), inset=0.02)
+    # the quartz heating elements under the cavity's roof and over its floor, the crumb tray
+    # on the floor, the vent slots along the top's back edge
+    cw = xc + w / 2 - 0.03
+    for k, z in enumerate((h - 0.015 - 0.012, fh + 0.015 + 0.01)):
+        out.append(make_part(f"heating_element_{k}", "heating_element",
+                             S.cylinder(0.005, cw, center=((xc - w / 2) / 2, 0.0, z), axis=(1, 0, 0), sections=8),
+                             M.solid((0.55, 0.5, 0.45), "metal", 0.5, 0.6)))
+    out.append(make_part("crumb_tray", "crumb_tray", S.box((cw, d - 0.05, 0.004), center=((xc - w / 2) / 2, 0.0, fh + 0.015 + 0.002)),
+                         M.metal(rng)))
+    out.append(make_part("vent", "vent", S.box((w * 0.6, 0.04, 0.002), center=(0, -d / 2 + 0.04, h - 0.0009)), black()))
     out += door_parts("door", x0=-w / 2, x1=xc, z0=fh, z1=h, y_back=d / 2, thick=0.015, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=True, style="glass", glass=M.glass(rng),
                       handle_len=(xc + w / 2) * 0.7, handle_at="top")
@@ -140,7 +168,8 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("coffee_maker", parts=("base", "reservoir", "head"),
           extra_parts=("carafe", "handle", "button", "drip_tray", "lid", "foot", "warming_plate", "carafe_lid",
-                       "water_window", "portafilter", "steam_wand", "pod_holder"),
+                       "water_window", "portafilter", "steam_wand", "pod_holder", "power_switch", "spout",
+                       "brew_basket"),
           size_range=(0.25, 0.45), density=400, variants=("drip", "pod", "espresso"),
           placement="surface")
 def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -193,12 +222,21 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid((0.6, 0.75, 0.9), "glass", 0.1)))
     out += _pads(w, d)
     out += _buttons("button", w * 0.3, d / 2, [h - h * 0.11], black(), r=0.007)
+    # the rocker switch on the base's right side and the outlet under the head the coffee
+    # runs from; a drip machine's swing-out brew basket in the head over the carafe
+    out.append(make_part("power_switch", "power_switch", S.box((0.004, 0.02, 0.012), center=(w / 2 + 0.001, d * 0.2, bh / 2)),
+                         black()))
+    zh = h - h * 0.22
+    out.append(make_part("spout", "spout", S.cylinder(0.008, 0.01, center=(0, d * 0.2, zh - 0.004), sections=10), black()))
+    if variant == "drip":
+        out.append(make_part("brew_basket", "brew_basket", S.frustum(0.03, 0.045, 0.006, center=(0, d * 0.2, zh - 0.003), sections=12),
+                             black()))
     return out
 
 
 @register("mini_fridge", parts=("body", "door"),
           extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass", "thermostat", "crisper",
-                       "vent"),
+                       "vent", "gasket", "door_shelf"),
           size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
           placement="floor")
 def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -232,11 +270,25 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
                       else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
+    # the magnetic gasket round the door's inner face, and a solid door's two shelves (bins)
+    # on its inner face; all ride on the door
+    yg = d / 2 - 0.05 - 0.004
+    seal = black("rubber")
+    gasket = [S.box((w - 0.02, 0.008, 0.015), center=(0, yg, z)) for z in (fh + 0.0175, h - 0.0175)]
+    gasket += [S.box((0.015, 0.008, h - fh - 0.05), center=(x, yg, fh + (h - fh) / 2)) for x in (-w / 2 + 0.0175, w / 2 - 0.0175)]
+    out.append(make_part("gasket", "gasket", gasket, seal))
+    out.append(mount("door", "gasket"))
+    if variant != "glass_door":
+        for k, z in enumerate((fh + (h - fh) * 0.3, fh + (h - fh) * 0.65)):
+            out.append(make_part(f"door_shelf_{k}", "door_shelf", S.box((w - 2 * t - 0.02, 0.035, 0.05), center=(0, yg - 0.022, z)),
+                                 white(rng, "plastic")))
+            out.append(mount("door", f"door_shelf_{k}"))
     return out
 
 
 @register("dishwasher", parts=("body", "door"),
-          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket"),
+          extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket",
+                       "filter", "detergent_dispenser", "foot"),
           size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
 def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
@@ -263,11 +315,22 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=tk, z1=h - 0.08, y_back=d / 2 - 0.03,
                       thick=0.03, mat=mat, handle_mat=M.metal(rng), hinge_left=True, style="flat",
                       handle_len=w * 0.6, handle_at="top")
+    # the filter in the tub's floor, the detergent dispenser on the door's inner face (it rides
+    # on the door), and the two front levelling feet behind the toe kick
+    grey = M.solid((0.6, 0.6, 0.62), "plastic", 0.5)
+    out.append(make_part("filter", "filter", S.cylinder(0.035, 0.01, center=(0, -0.03, tk + 0.02 + 0.005), sections=12), grey))
+    out.append(make_part("detergent_dispenser", "detergent_dispenser",
+                         S.box((0.12, 0.02, 0.07), center=(0, d / 2 - 0.03 - 0.01, tk + (h - 0.08 - tk) * 0.55)), grey))
+    out.append(mount("door", "detergent_dispenser"))
+    out += [make_part(f"foot_{k}", "foot", S.cylinder(0.012, tk * 0.5, center=(sx * (w / 2 - 0.04), d / 2 - 0.13, tk * 0.25),
+                                                      sections=10), black("rubber"))
+            for k, sx in enumerate((-1, 1))]
     return out
 
 
 @register("clothes_dryer", parts=("body", "door"),
-          extra_parts=("control_panel", "knob", "display", "drum", "foot", "hinge", "lint_filter"),
+          extra_parts=("control_panel", "knob", "display", "drum", "foot", "hinge", "lint_filter", "button", "handle",
+                       "gasket", "exhaust_vent"),
           size_range=(0.8, 1.0), density=300, variants=("front_load", "stacked_steel", "compact"))
 def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "compact":
@@ -297,11 +360,29 @@ def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out += hinge_parts("door_hinge", x=-r, y=d / 2 + 0.004, z0=zc - r * 0.5, z1=zc + r * 0.5,
                        mat=M.metal(rng), radius=0.006, length=0.03)
     out.append(revolute("door_hinge", "body", "door", axis=(0, 0, 1), origin=(-r, d / 2 + 0.004, zc)))
+    # the door's pull on its free edge (it swings with the door), the rubber gasket round the
+    # door opening, the start and option buttons, the exhaust duct's collar at the back
+    out.append(make_part("handle", "handle", S.box((0.025, 0.02, r * 0.6), center=(r - 0.005, d / 2 + 0.044 + 0.01, zc)), black()))
+    out.append(mount("door", "handle"))
+    out.append(make_part("gasket", "gasket", ring([(r * 0.92, 0.0), (r * 1.04, 0.0), (r * 1.04, 0.003), (r * 0.92, 0.003)],
+                                                  sections=20).apply(_facing_front(d / 2, zc)), black("rubber")))
+    out += _buttons("button", w * 0.3, d / 2, [h - 0.085, h - 0.035], black(), r=0.007)
+    out.append(make_part("exhaust_vent", "exhaust_vent", S.cylinder(0.05, 0.02, center=(0, -d / 2 - 0.01 + 0.015, fh + 0.12),
+                                                                    axis=(0, 1, 0), sections=12), M.metal(rng)))
     return out
 
 
+def _facing_front(y: float, z: float) -> np.ndarray:
+    """(4, 4) transform turning a ring about +Z into one facing +Y, centred at (0, y, z)."""
+    T = np.eye(4)
+    T[:3, :3] = np.array([[1.0, 0, 0], [0, 0, 1.0], [0, -1.0, 0]])
+    T[:3, 3] = (0.0, y, z)
+    return T
+
+
 @register("water_cooler", parts=("body", "bottle"),
-          extra_parts=("tap", "drip_tray", "cabinet_door", "collar", "foot", "indicator", "vent"),
+          extra_parts=("tap", "drip_tray", "cabinet_door", "collar", "foot", "indicator", "vent", "cup_dispenser",
+                       "power_switch"),
           size_range=(0.55, 1.55), density=300, variants=("top_load", "bottom_load", "countertop"))
 def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.34)
@@ -333,6 +414,10 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                         axis=(0, 1, 0), sections=8), M.solid(col, "glass", 0.1)))
     out.append(make_part("vent", "vent", S.box((w * 0.6, 0.003, h * 0.25), center=(0, -w / 2 - 0.0015, h * 0.35)), black()))
     out += _pads(w, w, inset=0.03, r=0.015, h=0.006)
+    # the paper-cup tube on the right side and the heater's switch on the back
+    out.append(make_part("cup_dispenser", "cup_dispenser", S.cylinder(0.04, h * 0.3, center=(w / 2 + 0.04, 0.0, h * 0.55), sections=12),
+                         M.plastic(rng)))
+    out.append(make_part("power_switch", "power_switch", S.box((0.02, 0.004, 0.012), center=(w * 0.25, -w / 2 - 0.002, h * 0.6)), black()))
     return out
 
 
@@ -379,7 +464,8 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("printer", parts=("body", "paper_tray"),
-          extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port"),
+          extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port",
+                       "paper_guide", "power_inlet"),
           size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
           placement="surface")
 def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -397,6 +483,12 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("paper", "paper", S.box((0.21, d * 0.5, 0.012), center=(0, d / 2 - d * 0.3, 0.05 + 0.006)),
                          M.solid((0.97, 0.97, 0.97), "paper", 0.9)))
     out.append(mount("paper_tray", "paper"))
+    # the tray's two sliding width guides either side of the paper, riding with the tray
+    for k, sx in enumerate((-1, 1)):
+        out.append(make_part(f"paper_guide_{k}", "paper_guide", S.box((0.006, d * 0.3, 0.03), center=(sx * 0.109, d / 2 - d * 0.3, 0.055)),
+                             mat))
+        out.append(mount("paper_tray", f"paper_guide_{k}"))
+    out.append(make_part("power_inlet", "power_inlet", S.box((0.03, 0.003, 0.02), center=(-w * 0.3, -d / 2 - 0.0015, bh * 0.3)), black()))
     out.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.007), center=(w * 0.3, -d / 2 - 0.001, bh * 0.3)),
                          M.solid((0.2, 0.2, 0.2), "metal", 0.4, 0.6)))
     out += _pads(w, d, inset=0.04)

@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, white
+from ._detail_b import each
 from ._household import ring, shell
 from ._kit import rot
 
@@ -373,7 +374,7 @@ def window(rng: np.random.Generator, variant: str) -> list[Part]:
              S.box((w - 2 * f, gb, gb), center=(0, t / 2 + 0.009, 0.025 + h - f - gb / 2)),
              S.box((gb, gb, h - 2 * f - 2 * gb), center=(-w / 2 + f + gb / 2, t / 2 + 0.009, 0.025 + h / 2)),
              S.box((gb, gb, h - 2 * f - 2 * gb), center=(w / 2 - f - gb / 2, t / 2 + 0.009, 0.025 + h / 2))]
-    out.append(make_part("glazing_bead", "glazing_bead", beads, frame_mat))
+    out += each("glazing_bead", "glazing_bead", beads, frame_mat)  # four strips, bottom, top, left, right
     hw = M.metal(rng)
     if variant == "double_hung":
         out.append(_b("sash", "sash", (w - 2 * f, t * 0.6, 0.04), (0, t * 0.6, 0.025 + h / 2), frame_mat))
@@ -456,15 +457,17 @@ def prismatic_joint(name: str, parent: str, child: str, travel: float) -> Joint:
 
 @register("rolling_tv_stand", parts=("base", "pole", "mount"), extra_parts=("caster", "shelf", "bracket", "cap", "clip", "brake"),
           size_range=(1.2, 1.9),
-          density=1500, variants=("single_pole", "dual_pole", "with_shelf"))
+          density=1500, variants=("single_pole", "dual_pole", "with_shelf"), groups={"base": ("base", "base_rail")})
 def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.7, 0.9), rng.uniform(0.5, 0.6)
     h = rng.uniform(1.3, 1.8)
     steel = black("metal")
     ch = 0.08
     xs = (0.0,) if variant == "single_pole" else (-0.2, 0.2)
-    out = [make_part("base", "base", [S.box((0.06, d, 0.04), center=(sx * w / 2 - sx * 0.03, 0, ch + 0.02)) for sx in (-1, 1)]
-                     + [S.box((w, 0.06, 0.04), center=(0, 0, ch + 0.02))], steel),
+    # the base: a cross member (``base``) between two rails carrying the casters (``base`` covers all three)
+    out = [*[make_part(f"base_rail_{k}", "base_rail", S.box((0.06, d, 0.04), center=(sx * w / 2 - sx * 0.03, 0, ch + 0.02)), steel)
+             for k, sx in enumerate((-1, 1))],
+           make_part("base", "base", S.box((w - 0.12, 0.06, 0.04), center=(0, 0, ch + 0.02)), steel),
            _b("mount", "mount", (0.4, 0.03, 0.3), (0, 0.04, h * 0.8), steel)]
     hp = h - ch - 0.04 - 0.01
     for k, x in enumerate(xs):

@@ -16,7 +16,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
-from ._bedbath_common import bar_handle, bevel_box, carcass, knob, scaled
+from ._bedbath_common import CARCASS_GROUP, bar_handle, bevel_box, carcass_panels, knob, scaled
 from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 _WHITE = (0.96, 0.96, 0.95)
@@ -135,7 +135,8 @@ def bathtub(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("toilet", parts=("bowl", "tank", "seat"), extra_parts=("lid", "handle", "base", "hinge", "bolt_cap", "valve"),
-          size_range=(0.6, 0.9), density=900, variants=("two_piece", "one_piece", "skirted"))
+          size_range=(0.6, 0.9), density=900, variants=("two_piece", "one_piece", "skirted"),
+          groups={"tank": ("tank", "tank_lid")})
 def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = _enamel(rng)
     seat_mat = mat if rng.random() < 0.7 else M.plastic(rng)
@@ -175,9 +176,11 @@ def toilet(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant != "one_piece":  # the cistern stands on a neck behind the bowl
         neck = S.box((tank_w * 0.5, tank_d * 0.8, z_tank - z_rim + 0.2),
                      center=(0, y_tank + 0.02, z_rim - 0.2 + (z_tank - z_rim + 0.2) / 2))
-        parts.append(make_part("tank", "tank", [tank, tank_lid, neck], mat))
+        parts.append(make_part("tank", "tank", [tank, neck], mat))
     else:
-        parts.append(make_part("tank", "tank", [tank, tank_lid], mat))
+        parts.append(make_part("tank", "tank", tank, mat))
+    # the cistern's loose lid, lifted off to reach the flush valve (``tank`` still covers it)
+    parts.append(make_part("tank_lid", "tank_lid", tank_lid, mat))
     z_tank_top = z_tank + tank_h + 0.025
     if rng.random() < 0.5:
         button = S.cylinder(0.018, 0.01, center=(0, y_tank, z_tank_top + 0.004), sections=14)
@@ -230,7 +233,7 @@ def _holed_top(w: float, d: float, t: float, z: float, hole_w: float, hole_d: fl
 @register("bathroom_vanity", parts=("countertop", "basin", "faucet"),
           extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_box", "hinge", "runner",
                        "trap", "valve"),
-          size_range=(0.7, 1.4), density=500, variants=("vessel", "undermount", "drawers"))
+          size_range=(0.7, 1.4), density=500, variants=("vessel", "undermount", "drawers"), groups=CARCASS_GROUP)
 def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 1.2)
     d = rng.uniform(0.45, 0.55)
@@ -244,7 +247,7 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     basin_mat = _enamel(rng)
     body_h = h - top_t - plinth
     parts: list[Part] = [
-        make_part("body", "body", carcass(w, d, body_h, t, z0=plinth, top=False), wood),
+        *carcass_panels(w, d, body_h, t, wood, z0=plinth, top=False),
         make_part("plinth", "plinth", S.box((w - 0.04, d - 0.05, plinth),
                                             center=(0, -0.02, plinth / 2)), wood)]
     y_face = d / 2 + 0.018

@@ -14,7 +14,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
-from ._bedbath_common import bar_handle, bevel_box, carcass, knob
+from ._bedbath_common import CARCASS_GROUP, bar_handle, bevel_box, carcass_panels, knob
 from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 
@@ -120,7 +120,7 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 @register("nightstand", parts=("body", "top_panel", "drawer"),
           extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner",
                        "dust_panel", "divider"), size_range=(0.4, 0.75),
-          density=450, variants=("two_drawer", "drawer_shelf", "legged"))
+          density=450, variants=("two_drawer", "drawer_shelf", "legged"), groups=CARCASS_GROUP)
 def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
     d = rng.uniform(0.35, 0.45)
@@ -133,7 +133,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     z0 = rng.uniform(0.18, 0.25) if variant == "legged" else 0.05
     body_h = h - top_t - z0
     parts: list[Part] = []
-    parts.append(make_part("body", "body", carcass(w, d, body_h, t, z0=z0, top=False), mat))
+    parts += carcass_panels(w, d, body_h, t, mat, z0=z0, top=False)
     parts.append(_case_top(w + 0.02, d + 0.015, h - top_t, top_t, mat))
     if variant == "legged":
         parts += _legs(rng, w, d, z0, mat, splay=True)
@@ -162,7 +162,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 @register("dresser", parts=("body", "top_panel", "drawer"),
           extra_parts=("handle", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner", "dust_panel",
                        "divider"), size_range=(0.75, 1.8), density=450,
-          variants=("wide", "tall", "mixed"))
+          variants=("wide", "tall", "mixed"), groups=CARCASS_GROUP)
 def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":
         w, h = rng.uniform(0.7, 0.95), rng.uniform(1.1, 1.35)
@@ -182,7 +182,7 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     legged = rng.random() < 0.4
     z0 = rng.uniform(0.12, 0.18) if legged else rng.uniform(0.06, 0.09)
     body_h = h - top_t - z0
-    parts = [make_part("body", "body", carcass(w, d, body_h, t, z0=z0, top=False), mat),
+    parts = [*carcass_panels(w, d, body_h, t, mat, z0=z0, top=False),
              _case_top(w + 0.02, d + 0.015, h - top_t, top_t, mat)]
     if legged:
         parts += _legs(rng, w, d, z0, mat, splay=False)
@@ -200,7 +200,7 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track", "shelf_pin",
                                                                      "rod_socket"),
-          size_range=(1.7, 2.3), density=300, variants=("two_door", "three_door", "sliding"))
+          size_range=(1.7, 2.3), density=300, variants=("two_door", "three_door", "sliding"), groups=CARCASS_GROUP)
 def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n_doors = {"two_door": 2, "three_door": 3, "sliding": 2}[variant]
     w = {"two_door": rng.uniform(0.9, 1.2), "three_door": rng.uniform(1.35, 1.75),
@@ -214,8 +214,7 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     pull_mat = M.metal(rng)
     # a partition splits shelves (left) from the hanging space (right)
     x_div = -w / 2 + (w / 3 if n_doors == 3 else w / 2)
-    body = carcass(w, d, h - plinth, t, z0=plinth, dividers=(x_div,))
-    parts = [make_part("body", "body", body, mat),
+    parts = [*carcass_panels(w, d, h - plinth, t, mat, z0=plinth, dividers=(x_div,)),
              make_part("plinth", "plinth",
                        S.box((w - 0.02, d - 0.03, plinth), center=(0, -0.015, plinth / 2)), mat)]
     z_in0, z_in1 = plinth + t, h - t

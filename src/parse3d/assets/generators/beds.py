@@ -48,15 +48,23 @@ def _mattress_details(k: int, w: float, d: float, t: float, center, mat) -> list
     return out
 
 
-def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: float) -> S.Shape:
-    """Four rails around a w x d opening whose tops are at ``z_top``, plus support slats."""
+def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: float, mat) -> list[Part]:
+    """The rails round a ``w`` x ``d`` mattress opening whose tops are at ``z_top`` (the
+    ``frame`` group): the two ``side_rail``s and the ``foot_rail``; the head end is the
+    headboard. A bed 1.4 m wide or more also has a ``center_rail`` under the slats, carried
+    by two ``support_leg``s."""
     zc = z_top - rail_h / 2
-    rails = [
-        bevel_box((rail_t, d, rail_h), center=(-w / 2 - rail_t / 2, 0, zc), bevel=0.004),
-        bevel_box((rail_t, d, rail_h), center=(w / 2 + rail_t / 2, 0, zc), bevel=0.004),
-        bevel_box((w + 2 * rail_t, rail_t, rail_h), center=(0, d / 2 + rail_t / 2, zc), bevel=0.004),
-    ]
-    return S.union(rails)
+    out = [make_part(f"side_rail_{k}", "side_rail", bevel_box((rail_t, d, rail_h), center=(sx * (w / 2 + rail_t / 2), 0, zc), bevel=0.004),
+                     mat) for k, sx in enumerate((-1, 1))]
+    out.append(make_part("frame", "foot_rail", bevel_box((w + 2 * rail_t, rail_t, rail_h), center=(0, d / 2 + rail_t / 2, zc),
+                                                         bevel=0.004), mat))
+    if w >= 1.4 - 0.03:
+        zr = z_top - 0.03 - 0.02  # under the slats
+        out.append(make_part("center_rail", "center_rail", S.box((0.05, d, 0.06), center=(0, 0, zr - 0.03)), mat))
+        out += [make_part(f"support_leg_{k}", "support_leg", S.cylinder(0.025, zr - 0.06, center=(0, fy * d, (zr - 0.06) / 2),
+                                                                        sections=10), mat)
+                for k, fy in enumerate((-0.25, 0.25))]
+    return out
 
 
 def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Part]:
@@ -69,7 +77,8 @@ def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Pa
 @register("bed", parts=("frame", "mattress", "headboard"),
           extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button", "mattress_handle",
                        "tape_edge", "vent", "tag", "glide", "finial", "caster"),
-          size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"))
+          size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"),
+          groups={"frame": ("frame", "side_rail", "foot_rail", "center_rail", "support_leg", "plinth", "deck")})
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     w = float(rng.choice(_MATTRESS_WIDTHS)) + rng.uniform(-0.02, 0.02)
     d = rng.uniform(1.95, 2.08)
@@ -89,7 +98,9 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         base = S.box((w + 2 * rail_t - 0.16, d - 0.16, plinth_h), center=(0, 0, plinth_h / 2))
         deck = cushion(w + 2 * rail_t, d + rail_t, z_top - plinth_h,
                        (0, rail_t / 2, (z_top + plinth_h) / 2), round_xy=0.03, round_z=0.015)
-        parts.append(make_part("frame", "frame", [base, deck], cloth))
+        # the recessed plinth and the upholstered deck on it (``frame`` covers both)
+        parts.append(make_part("plinth", "plinth", base, cloth))
+        parts.append(make_part("frame", "deck", deck, cloth))
         # the glides under the plinth's corners, set into it
         bx, by = (w + 2 * rail_t - 0.16) / 2 - 0.03, (d - 0.16) / 2 - 0.03
         nylon = M.solid((0.85, 0.85, 0.82), "plastic", 0.4)
@@ -102,8 +113,7 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     elif variant == "four_poster":
         z_top = rng.uniform(0.35, 0.45)
         rail_h = rng.uniform(0.14, 0.2)
-        parts.append(make_part("frame", "frame", _bed_frame_rails(w, d, z_top, rail_h, rail_t),
-                               wood))
+        parts += _bed_frame_rails(w, d, z_top, rail_h, rail_t, wood)
         # the slats the mattress rests on, a little below the rail tops
         parts += _slats(w, d, z_top - 0.03, wood)
         top = rng.uniform(1.9, 2.2)

@@ -16,7 +16,7 @@ from ._casework import black
 
 
 @register("alarm_clock", parts=("body", "face"), extra_parts=("bell", "hand", "foot", "button", "display", "grille", "hub", "bezel",
-                                                               "key"),
+                                                               "key", "battery_cover", "power_inlet", "hammer", "alarm_switch"),
           size_range=(0.07, 0.22), density=700, variants=("twin_bell", "digital", "cube"), placement="surface")
 def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = M.plastic(rng) if variant != "twin_bell" else M.metal(rng)
@@ -32,6 +32,10 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("grille", "grille", S.box((w * 0.4, 0.002, h * 0.5), center=(0, -d / 2 - 0.0005, h / 2)), black("metal")))
         parts += [make_part(f"foot_{k}", "foot", S.cylinder(0.006, 0.002, center=(sx * w * 0.35, 0, 0.001), sections=8), black("rubber"))
                   for k, sx in enumerate((-1, 1))]
+        # the back-up battery's cover let into the underside, and the mains adapter's socket at the back
+        parts.append(make_part("battery_cover", "battery_cover", S.box((w * 0.3, d * 0.5, 0.001), center=(0, 0, 0.0005)), shell))
+        parts.append(make_part("power_inlet", "power_inlet", S.cylinder(0.004, 0.002, center=(w * 0.3, -d / 2 - 0.0005, h * 0.3),
+                                                                        axis=(0, 1, 0), sections=8), black()))
         return parts
     if variant == "cube":
         s = rng.uniform(0.07, 0.09)
@@ -70,6 +74,16 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, sx in enumerate((-1, 1)):
         parts.append(make_part(f"key_{k}", "key", [S.cylinder(0.003, 0.008, center=(sx * r * 0.35, yb - 0.004, zc), axis=(0, 1, 0), sections=8),
                                                   S.box((0.016, 0.003, 0.01), center=(sx * r * 0.35, yb - 0.009, zc))], shell))
+    # the alarm's on-off slide on the back, above the keys; a twin-bell clock's hammer striking
+    # between its bells, or a cube's battery cover at the back
+    parts.append(make_part("alarm_switch", "alarm_switch", S.box((0.01, 0.004, 0.006), center=(0, yb - 0.002, zc + r * 0.6)), black()))
+    if variant == "twin_bell":
+        parts.append(make_part("hammer", "hammer", [S.cylinder(0.0015, r * 0.45, center=(0, 0, zc + r * 0.8 + r * 0.225), sections=6),
+                                                    S.ellipsoid((0.004, 0.004, 0.004), center=(0, 0, zc + r * 1.25), subdivisions=1)],
+                               M.metal(rng)))
+    else:
+        parts.append(make_part("battery_cover", "battery_cover", S.box((r * 0.7, 0.001, r * 0.45), center=(0, -yf - 0.0005, zc - r * 0.55)),
+                               shell))
     return parts
 
 

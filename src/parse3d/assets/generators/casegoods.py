@@ -24,7 +24,8 @@ from ._kit import mount
           extra_parts=("side_panel", "top_panel", "door", "drawer", "drawer_box", "handle", "hinge",
                        "plate_rail", "glass", "shelf_pin"),
           size_range=(1.5, 2.3), density=550, variants=("open", "glass_doors", "drawers"),
-          placement="floor")
+          placement="floor",
+          groups={"body": ("cabinet_side", "bottom_panel", "cabinet_top", "cabinet_back", "drawer_rail", "plinth")})
 def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d = rng.uniform(1.0, 1.6), rng.uniform(0.42, 0.52)
     hl = rng.uniform(0.82, 0.9)  # countertop height
@@ -37,15 +38,18 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     z0 = 0.08
     hb = hl - t
     zd = hb - t - 0.15 if variant == "drawers" else hb - t
-    body = [S.box((t, d, hb - z0), center=(-w / 2 + t / 2, 0, (z0 + hb) / 2)),
-            S.box((t, d, hb - z0), center=(w / 2 - t / 2, 0, (z0 + hb) / 2)),
-            S.box((w - 2 * t, d, t), center=(0, 0, z0 + t / 2)),
-            S.box((w - 2 * t, d, t), center=(0, 0, hb - t / 2)),
-            S.box((w - 2 * t, 0.008, hb - z0 - 2 * t), center=(0, -d / 2 + 0.004, (z0 + hb) / 2))]
-    if zd < hb - t - 1e-6:
-        body.append(S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)))
-    body.append(S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)))  # the plinth
-    parts: list[Part | Joint] = [make_part("body", "body", body, mat)]
+    # the lower cabinet's carcass, panel by panel (``body`` covers them all; the plinth, named
+    # body, stands on the floor and carries the doors and drawers)
+    parts: list[Part | Joint] = [
+        make_part(f"cabinet_side_{k}", "cabinet_side", S.box((t, d, hb - z0), center=(sx * (w / 2 - t / 2), 0, (z0 + hb) / 2)), mat)
+        for k, sx in enumerate((-1, 1))]
+    parts += [make_part("bottom_panel", "bottom_panel", S.box((w - 2 * t, d, t), center=(0, 0, z0 + t / 2)), mat),
+              make_part("cabinet_top", "cabinet_top", S.box((w - 2 * t, d, t), center=(0, 0, hb - t / 2)), mat),
+              make_part("cabinet_back", "cabinet_back", S.box((w - 2 * t, 0.008, hb - z0 - 2 * t),
+                                                              center=(0, -d / 2 + 0.004, (z0 + hb) / 2)), mat)]
+    if zd < hb - t - 1e-6:  # the rail between the drawers and the doors
+        parts.append(make_part("drawer_rail", "drawer_rail", S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)), mat))
+    parts.append(make_part("body", "plinth", S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)), mat))
     parts.append(make_part("countertop", "countertop",
                            S.box((w + 0.03, d + 0.02, t), center=(0, 0.01, hl - t / 2), bevel=0.004), mat))
     dw = (w - 2 * t) / 2
@@ -97,7 +101,9 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("locker", parts=("body", "door"), extra_parts=("handle", "hinge", "shelf", "hook", "vent",
                                                           "nameplate"),
-          size_range=(1.2, 2.0), density=400, variants=("single", "two_tier", "bank"), placement="floor")
+          size_range=(1.2, 2.0), density=400, variants=("single", "two_tier", "bank"), placement="floor",
+          groups={"body": ("top_panel", "bottom_panel", "back_panel", "side_panel", "partition", "tier_panel",
+                           "plinth")})
 def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     """A steel locker (a ``bank`` is three side by side): a door per compartment with vent
     louvres and a handle, a shelf near the top and a coat hook under it."""
@@ -110,18 +116,22 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     t = 0.01
     dc = d - 0.02
     yc = -0.01
-    body = [S.box((w, dc, t), center=(0, yc, H - t / 2)), S.box((w, dc, t), center=(0, yc, zb + t / 2)),
-            S.box((w - 0.004, 0.006, H - zb), center=(0, -d / 2 + 0.003, (H + zb) / 2))]
+    # the carcass panel by panel, all covered by ``body``; the recessed base, named body, stands
+    # on the floor (locker:body@bottom) and carries the doors
+    parts: list[Part | Joint] = [
+        make_part("top_panel", "top_panel", S.box((w, dc, t), center=(0, yc, H - t / 2)), steel),
+        make_part("bottom_panel", "bottom_panel", S.box((w, dc, t), center=(0, yc, zb + t / 2)), steel),
+        make_part("back_panel", "back_panel", S.box((w - 0.004, 0.006, H - zb), center=(0, -d / 2 + 0.003, (H + zb) / 2)), steel)]
     for i in range(cols + 1):
         x = -w / 2 + t / 2 + i * (w - t) / cols
-        body.append(S.box((t, dc, H - zb), center=(x, yc, (H + zb) / 2)))
+        outer = i in (0, cols)
+        parts.append(make_part(f"side_panel_{i // cols}" if outer else f"partition_{i - 1}", "side_panel" if outer else "partition",
+                               S.box((t, dc, H - zb), center=(x, yc, (H + zb) / 2)), steel))
     tiers = 2 if variant == "two_tier" else 1
     zt = [zb + (H - zb) * k / tiers for k in range(tiers + 1)]
     for k in range(1, tiers):
-        body.append(S.box((w - 2 * t, dc, t), center=(0, yc, zt[k])))
-    # the recessed base is part of the body, so the body stands on the floor (locker:body@bottom)
-    body.append(S.box((w - 0.02, dc - 0.03, zb), center=(0, yc - 0.015, zb / 2)))
-    parts: list[Part | Joint] = [make_part("body", "body", body, steel)]
+        parts.append(make_part(f"tier_panel_{k - 1}", "tier_panel", S.box((w - 2 * t, dc, t), center=(0, yc, zt[k])), steel))
+    parts.append(make_part("body", "plinth", S.box((w - 0.02, dc - 0.03, zb), center=(0, yc - 0.015, zb / 2)), steel))
     yf = yc + dc / 2
     hmat = Material((0.7, 0.7, 0.72, 1.0), 0.3, 0.9, "metal")
     k_shelf = 0

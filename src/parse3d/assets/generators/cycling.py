@@ -13,6 +13,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._detail_b import each
 from ._household import ring
 from ._kit import rot
 from ._rods import rod, segments
@@ -55,7 +56,7 @@ def bicycle(rng: np.random.Generator, variant: str) -> list[Part]:
             side = 0.03 if s % 2 else -0.03
             spokes.append(rod((x + 0.02 * np.cos(a), side, zA + 0.02 * np.sin(a)), (x + rs * np.cos(a), 0.0, zA + rs * np.sin(a)),
                               0.0015, sections=5))
-        parts.append(make_part(f"spoke_{k}", "spoke", spokes, alu))
+        parts += each(f"spoke_{k}", "spoke", spokes, alu)  # each spoke a piece of its own
     # frame geometry: bottom bracket, seat cluster, head tube
     bb = np.array([xr + 0.42, 0.0, 0.28])
     st_top = np.array([bb[0] - 0.12, 0.0, bb[2] + 0.5])

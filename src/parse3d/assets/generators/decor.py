@@ -73,6 +73,20 @@ def _hangers(w: float, h: float, bk: float, n: int) -> list[Part]:
                       metal) for k, x in enumerate(xs)]
 
 
+def _back_fittings(w: float, h: float, bk: float, *, wire: bool, z_bottom: float) -> list[Part]:
+    """The felt ``bumper`` pads at the back's two lower corners (a frame ``w`` wide; ``z_bottom``
+    their height) and, with ``wire``, the picture ``wire`` strung between two hangers at
+    ``h * 0.82`` (see :func:`_hangers`); all flush with the back, as the hangers are."""
+    felt = M.solid((0.2, 0.2, 0.2), "fabric", 0.95)
+    tb = min(bk, 0.0015)
+    out = [make_part(f"bumper_{k}", "bumper", S.cylinder(0.006, tb, center=(sx, tb / 2, z_bottom), axis=(0, 1, 0), sections=10),
+                     felt) for k, sx in enumerate((-w * 0.38, w * 0.38))]
+    if wire:
+        out.append(make_part("wire", "wire", S.cylinder(0.0008, w * 0.6, center=(0, tb / 2, h * 0.82 - 0.006), axis=(1, 0, 0),
+                                                      sections=6), M.solid((0.7, 0.7, 0.68), "metal", 0.4, 0.9)))
+    return out
+
+
 def _ring(r_out: float, width: float, depth: float, *, cz: float = 0.0, stretch: float = 1.0,
           sections: int = 28) -> S.Shape:
     """A flat ring facing +Y, back on y = 0, centred at (0, cz) in XZ; ``stretch`` scales it
@@ -100,7 +114,7 @@ def _frame_material(rng) -> Material:
     return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
 
 
-@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger", "turn_button"),
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger", "turn_button", "bumper", "wire"),
           size_range=(0.2, 1.2), density=500, variants=("landscape", "portrait", "square"),
           placement="wall", groups={"frame": ("rail", "stile", "backing")})
 def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -116,6 +130,7 @@ def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("glazing", "glazing", S.box((iw, 0.002, ih), center=(0, depth - 0.0035, h / 2)),
                            M.glass(rng)))
     parts += _hangers(w, h, bk, 1 if w < 0.5 else 2)
+    parts += _back_fittings(w, h, bk, wire=w >= 0.5, z_bottom=bar * 0.5)
     # the canvas (and the mat in front of it) fill most of the frame depth in front of the
     # backing board, so no ledge is left inside the frame
     t = (depth - bk) * rng.uniform(0.65, 0.8)
@@ -144,7 +159,7 @@ def _mirror_glass() -> Material:
     return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
 
 
-@register("mirror", parts=("frame", "glass"), extra_parts=("hanger", "bevel", "screw"), size_range=(0.3, 1.8),
+@register("mirror", parts=("frame", "glass"), extra_parts=("hanger", "bevel", "screw", "bumper", "wire"), size_range=(0.3, 1.8),
           density=1200, variants=("rectangular", "round", "oval"), placement="wall",
           groups={"frame": ("frame", "rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -159,8 +174,15 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
         bk = 0.004
         frame = _mitred_frame(w, h, bar, depth, bar * 0.3, bk)
         glass = S.box((w - 2 * bar, t_glass - bk, h - 2 * bar), center=(0, (t_glass + bk) / 2, h / 2))
+        # the ground bevel round the glass's edge, flush with its face inside the frame
+        iw, ih, bw = w - 2 * bar, h - 2 * bar, min(0.02, (w - 2 * bar) * 0.05)
+        yb = t_glass - 0.0005
+        bevel = [S.box((iw, 0.001, bw), center=(0, yb, bar + bw / 2)), S.box((iw, 0.001, bw), center=(0, yb, h - bar - bw / 2)),
+                 S.box((bw, 0.001, ih - 2 * bw), center=(-iw / 2 + bw / 2, yb, h / 2)),
+                 S.box((bw, 0.001, ih - 2 * bw), center=(iw / 2 - bw / 2, yb, h / 2))]
         return [*_frame_parts(frame, mat, rng), make_part("glass", "glass", glass, _mirror_glass()),
-                *_hangers(w, h, bk, 2)]
+                make_part("bevel", "bevel", bevel, _mirror_glass()),
+                *_hangers(w, h, bk, 2), *_back_fittings(w, h, bk, wire=True, z_bottom=bar * 0.5)]
     r = rng.uniform(0.2, 0.45)
     width = r * rng.uniform(0.08, 0.18)
     k = rng.uniform(1.3, 1.7) if variant == "oval" else 1.0
@@ -177,12 +199,14 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("bevel", "bevel", bevel, _mirror_glass()),
             make_part("hanger", "hanger", hanger, metal),
             *[make_part(f"screw_{j}", "screw", S.cylinder(0.0025, 0.0015, center=(sx * 0.01, 0.00275, zh), axis=(0, 1, 0),
-                                                          sections=8), metal) for j, sx in enumerate((-1, 1))]]
+                                                          sections=8), metal) for j, sx in enumerate((-1, 1))],
+            *_back_fittings(r * 1.2, 2 * r * k, 0.0015, wire=False, z_bottom=-r * k * 0.7)]
 
 
-def _hands(rng, r_face: float, y: float, cz: float) -> Part:
-    """Hour, minute and (sometimes) second hands on a face of radius ``r_face`` whose front is
-    at ``y``, centred at (0, cz); angles run clockwise as seen from the front."""
+def _hands(rng, r_face: float, y: float, cz: float) -> list[Part]:
+    """Hour (``hands``, as the three once were one part), minute and (sometimes) second hands,
+    all labelled ``hand``, on a face of radius ``r_face`` whose front is at ``y``, centred at
+    (0, cz), and the ``hub`` nut holding them; angles run clockwise as seen from the front."""
     dark = M.solid((0.08, 0.08, 0.08), "metal", 0.4, 0.6)
     specs = [(0.5, 0.06, 0.002), (0.78, 0.04, 0.002)]
     if rng.random() < 0.6:
@@ -197,8 +221,10 @@ def _hands(rng, r_face: float, y: float, cz: float) -> Part:
         yk = y + thick / 2 + k * 0.0025
         hands.append(S.box((max(width * r_face, 0.002), thick, L), center=(c[0], yk, cz + c[1]),
                            R=rot_y(-theta)))
-    hands.append(_disc(0.008, y, y + 0.003 * len(specs) + 0.002, cz=cz, sections=12))
-    return make_part("hands", "hand", hands, dark)
+    names = ("hands", "minute_hand", "second_hand")
+    out = [make_part(names[k], "hand", h, dark) for k, h in enumerate(hands)]
+    out.append(make_part("hub", "hub", _disc(0.008, y, y + 0.003 * len(specs) + 0.002, cz=cz, sections=12), dark))
+    return out
 
 
 def _ticks(r: float, y: float, cz: float) -> list[Part]:
@@ -212,7 +238,7 @@ def _ticks(r: float, y: float, cz: float) -> list[Part]:
     return [make_part(f"marker_{k}", "marker", m, M.solid((0.1, 0.1, 0.1), "plastic")) for k, m in enumerate(marks)]
 
 
-@register("wall_clock", parts=("body", "face"), extra_parts=("hand", "marker"),
+@register("wall_clock", parts=("body", "face"), extra_parts=("hand", "marker", "hub", "crystal"),
           size_range=(0.2, 0.6), density=600, variants=("round", "square"), placement="wall")
 def wall_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     depth = rng.uniform(0.035, 0.06)
@@ -235,7 +261,17 @@ def wall_clock(rng: np.random.Generator, variant: str) -> list[Part]:
         face = S.box((a - 2 * rim, face_y - back, a - 2 * rim), center=(0, (face_y + back) / 2, a / 2))
         r_face, cz = a / 2 - rim, a / 2
     parts = [make_part("body", "body", body, body_mat), make_part("face", "face", face, face_mat),
-             *_ticks(r_face, face_y, cz), _hands(rng, r_face, face_y, cz)]
+             *_ticks(r_face, face_y, cz), *_hands(rng, r_face, face_y, cz)]
+    # the glass crystal over the dial, set just inside the rim's front edge
+    glass = M.glass(rng)
+    # (clear of the hub's nut: on a shallow case the crystal domes a little proud of the rim)
+    yc0 = max(depth - 0.004, float(parts[-1].mesh.bounds[1, 1]) + 0.0005)
+    yc1 = yc0 + 0.002
+    if variant == "round":
+        crystal = _disc(r - rim, yc0, yc1, cz=r)
+    else:
+        crystal = S.box((a - 2 * rim, yc1 - yc0, a - 2 * rim), center=(0, (yc0 + yc1) / 2, a / 2))
+    parts.append(make_part("crystal", "crystal", crystal, glass))
     return parts
 
 

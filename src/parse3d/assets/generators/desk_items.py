@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import black, white
+from ._detail_b import each
 from ._household import ring, shell
 from ._kit import revolute, rot
 
@@ -722,13 +723,12 @@ def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
         for j in range(ny):
             x = (i - (nx - 1) / 2) * 2 * r
             y = (j - (ny - 1) / 2) * 2 * r
-            out.append(make_part(f"bottle_{i}_{j}", "bottle", S.lathe([(r * 0.97, 0.0), (r * 0.97, h * 0.75), (r * 0.4, h * 0.92),
-                                                                       (r * 0.4, h - 0.012)], sections=14), clear))
-            out[-1] = make_part(f"bottle_{i}_{j}", "bottle", S.transformed(
+            out.append(make_part(f"bottle_{i}_{j}", "bottle", S.transformed(
                 S.lathe([(r * 0.97, 0.0), (r * 0.97, h * 0.75), (r * 0.4, h * 0.92), (r * 0.4, h - 0.012)], sections=14),
-                np.array([[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, 0.004], [0, 0, 0, 1.0]])), clear)
+                np.array([[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, 0.004], [0, 0, 0, 1.0]])), clear))
             caps.append(S.cylinder(r * 0.42, 0.012, center=(x, y, h - 0.006 + 0.004), sections=12))
-    out.append(make_part("cap", "cap", caps, M.solid(M.jitter(rng, (0.1, 0.3, 0.8), 0.05))))
+    # each bottle's own cap (``cap``, ``cap_1``, ...)
+    out += each("cap", "cap", caps, M.solid(M.jitter(rng, (0.1, 0.3, 0.8), 0.05)))
     W, D = nx * 2 * r, ny * 2 * r
     out.append(make_part("tray", "tray", S.box((W + 0.004, D + 0.004, 0.004), center=(0, 0, 0.002)), M.paper(rng)))
     out.append(make_part("wrap", "wrap", [S.box((W + 0.004, 0.001, h * 0.5), center=(0, sy * (D / 2 + 0.0025), h * 0.4))

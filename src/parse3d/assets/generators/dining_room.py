@@ -23,7 +23,8 @@ from ._kit import rot
 @register("sideboard", parts=("top_panel", "body", "shelf"),
           extra_parts=("door", "drawer", "drawer_box", "handle", "hinge", "leg", "shelf_pin"),
           size_range=(0.9, 2.2), density=550, variants=("drawers_over_doors", "three_door", "legged"),
-          placement="floor")
+          placement="floor",
+          groups={"body": ("side_panel", "bottom_panel", "carcass_top", "back_panel", "partition", "drawer_rail", "plinth")})
 def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     """A low cabinet: bays with doors (a shelf behind each), a row of drawers under the top in
     ``drawers_over_doors`` and ``legged``; on a plinth or on four tapered legs."""
@@ -37,19 +38,23 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n = 3 if (variant == "three_door" or w > 1.5) else 2
     bay = (w - 2 * t) / n
     zd = hb - t - rng.uniform(0.13, 0.16) if variant != "three_door" else hb - t
-    body = [S.box((t, d, hb - z0), center=(-w / 2 + t / 2, 0, (z0 + hb) / 2), bevel=0.002),
-            S.box((t, d, hb - z0), center=(w / 2 - t / 2, 0, (z0 + hb) / 2), bevel=0.002),
-            S.box((w - 2 * t, d, t), center=(0, 0, z0 + t / 2)),
-            S.box((w - 2 * t, d, t), center=(0, 0, hb - t / 2)),
-            S.box((w - 2 * t, 0.008, hb - z0 - 2 * t), center=(0, -d / 2 + 0.004, (z0 + hb) / 2))]
+    # the carcass panel by panel, all covered by ``body``: the plinth is named body (so body
+    # stands on the floor), or on legs the bottom panel is
+    parts: list[Part | Joint] = [
+        make_part(f"side_panel_{k}", "side_panel", S.box((t, d, hb - z0), center=(sx * (w / 2 - t / 2), 0, (z0 + hb) / 2), bevel=0.002),
+                  mat) for k, sx in enumerate((-1, 1))]
+    parts += [make_part("body" if legged else "bottom_panel", "bottom_panel", S.box((w - 2 * t, d, t), center=(0, 0, z0 + t / 2)), mat),
+              make_part("carcass_top", "carcass_top", S.box((w - 2 * t, d, t), center=(0, 0, hb - t / 2)), mat),
+              make_part("back_panel", "back_panel", S.box((w - 2 * t, 0.008, hb - z0 - 2 * t), center=(0, -d / 2 + 0.004, (z0 + hb) / 2)),
+                        mat)]
     for i in range(1, n):
         x = -w / 2 + t + i * bay
-        body.append(S.box((t, d - 0.008, hb - z0 - 2 * t), center=(x, 0.004, (z0 + hb) / 2)))
+        parts.append(make_part(f"partition_{i - 1}", "partition",
+                               S.box((t, d - 0.008, hb - z0 - 2 * t), center=(x, 0.004, (z0 + hb) / 2)), mat))
     if zd < hb - t - 1e-6:  # the rail the drawers run above
-        body.append(S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)))
-    if not legged:  # the plinth is part of the body, which then stands on the floor
-        body.append(S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)))
-    parts: list[Part | Joint] = [make_part("body", "body", body, mat)]
+        parts.append(make_part("drawer_rail", "drawer_rail", S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)), mat))
+    if not legged:
+        parts.append(make_part("body", "plinth", S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)), mat))
     parts.append(make_part("top_panel", "top_panel",
                            S.box((w + 0.02, d + 0.02, t), center=(0, 0.01, h - t / 2), bevel=0.004), mat))
     if legged:

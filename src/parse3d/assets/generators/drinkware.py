@@ -25,6 +25,17 @@ def _handle(rng, r_out: float, h: float, thick: float) -> S.Shape:
     return S.tube(path, thick, sections=10)
 
 
+def _handle_joins(handle: S.Shape, r_out: float, thick: float, mat: Material) -> list[Part]:
+    """The two pads where a pulled handle is luted onto the wall (upper and lower attachment),
+    flattened discs on the wall at the handle's ends, facing +X."""
+    b = handle.mesh.bounds
+    z_lo, z_hi = float(b[0, 2]) + thick, float(b[1, 2]) - thick
+    pad = thick * 1.5
+    return [make_part(f"handle_join_{k}", "handle_join",
+                      S.cylinder(pad, 0.004, center=(r_out - 0.001, 0.0, z), axis=(1, 0, 0), sections=10), mat)
+            for k, z in enumerate((z_hi, z_lo))]
+
+
 def _square_mug(rng, w: float, h: float, t: float) -> S.Shape:
     walls = [
         S.box((w, t, h), center=(0, w / 2 - t / 2, h / 2)),
@@ -36,7 +47,7 @@ def _square_mug(rng, w: float, h: float, t: float) -> S.Shape:
     return S.union(walls)
 
 
-@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base"),
+@register("mug", parts=("body", "handle"), extra_parts=("rim", "foot_ring", "base", "handle_join"),
           size_range=(0.10, 0.14), density=900,
           variants=("round", "belly", "square"), placement="surface")
 def mug(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -58,8 +69,10 @@ def mug(rng: np.random.Generator, variant: str) -> list[Part]:
             body = S.vessel(prof, t, piece_sections=16)
         rf = prof[0][0] * 0.9
         foot = ring([(rf - 0.005, 0.0), (rf, 0.0), (rf + 0.002, fh), (rf - 0.006, fh)], sections=16)
-    handle = _handle(rng, r, h, rng.uniform(0.005, 0.007)).moved((0, 0, fh))
+    th = rng.uniform(0.005, 0.007)
+    handle = _handle(rng, r, h, th).moved((0, 0, fh))
     parts = [make_part("body", "body", body, mat), make_part("handle", "handle", handle, mat)]
+    parts += _handle_joins(handle, r, th, mat)
     unglazed = Material(M.jitter(rng, (0.8, 0.74, 0.64), 0.03), 0.9, 0.0, "ceramic")
     if variant == "square":
         parts.append(make_part("base", "base", foot, unglazed))
@@ -83,7 +96,7 @@ def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
                 sections=16)
 
 
-@register("cup", parts=("body",), extra_parts=("base", "rim", "handle"), size_range=(0.08, 0.14),
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "handle_join"), size_range=(0.08, 0.14),
           density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
@@ -101,8 +114,10 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
              make_part("base", "base", base, mat),
              make_part("rim", "rim", _rim(r, zb + h, t, rng.uniform(0.0008, 0.0015)), mat)]
     if variant == "handled":
-        handle = _handle(rng, r, h, rng.uniform(0.004, 0.006)).moved((0, 0, zb))
+        th = rng.uniform(0.004, 0.006)
+        handle = _handle(rng, r, h, th).moved((0, 0, zb))
         parts.append(make_part("handle", "handle", handle, mat))
+        parts += _handle_joins(handle, r, th, mat)
     return parts
 
 
@@ -120,8 +135,7 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
              make_part("rim", "rim", _rim(r, fh + h, t, 0.001), mat)]
     if variant == "handled":
-        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh)),
-                               mat))
+        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh)), mat))
     # the gilded band under the rim and a painted spray of flowers on the front
     zt = fh + h * 0.88
     rt = r * 0.9 + (r - r * 0.9) * (zt - fh - h * 0.5) / (h * 0.5)

@@ -228,7 +228,8 @@ def _driver(k: int, r: float, x: float, z: float, y: float, tweeter: bool) -> Pa
     return make_part(f"driver_{k}", "driver", rim, dark)
 
 
-@register("speaker", parts=("body",), extra_parts=("driver", "plinth", "dust_cap", "port", "terminal", "badge", "foot"),
+@register("speaker", parts=("body",), extra_parts=("driver", "plinth", "dust_cap", "port", "terminal", "badge", "foot", "screw",
+                                                    "terminal_plate"),
           size_range=(0.2, 1.2),
           density=500, variants=("bookshelf", "floor_standing"))
 def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -265,6 +266,19 @@ def speaker(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(p.name.replace("driver", "dust_cap"), "dust_cap",
                                S.ellipsoid((cap_r, cap_r * 0.5, cap_r), center=(c[0], y + 0.006, c[2]), subdivisions=1),
                                M.solid((0.15, 0.15, 0.16), "plastic", 0.5)))
+    # the four screws through each woofer's frame into the baffle
+    steel = M.solid((0.25, 0.25, 0.27), "metal", 0.4, 0.7)
+    n_screw = 0
+    for p in [q for q in parts if q.label == "driver" and q.name != "driver_0"]:
+        c = p.mesh.bounds.mean(axis=0)
+        rr = (p.mesh.bounds[1, 0] - p.mesh.bounds[0, 0]) / 2 * 0.88
+        for a in np.pi / 4 + np.pi / 2 * np.arange(4):
+            parts.append(make_part(f"screw_{n_screw}", "screw", S.cylinder(0.003, 0.002, center=(c[0] + rr * np.cos(a), y + 0.007,
+                                                                                                c[2] + rr * np.sin(a)),
+                                                                          axis=(0, 1, 0), sections=8), steel))
+            n_screw += 1
+    # the plate at the back carrying the binding posts
+    parts.append(make_part("terminal_plate", "terminal_plate", S.box((0.06, 0.003, 0.04), center=(0, -d / 2 - 0.0015, z0 + 0.08)), dark))
     parts.append(make_part("port", "port", S.cylinder(0.025, 0.004, center=(0, -d / 2 - 0.002, z0 + (h - z0) * 0.6),
                                                       axis=(0, 1, 0), sections=16), dark))
     parts.append(make_part("badge", "badge", S.box((0.03, 0.002, 0.008), center=(0, y + 0.001, z0 + 0.02)),

@@ -49,7 +49,8 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull"),
+@register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull", "end_cap",
+                                                                  "carrier", "chain", "lift_cord", "tassel"),
           size_range=(0.5, 2.0),
           density=400, variants=("venetian", "roller", "vertical"), placement="wall")
 def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -69,6 +70,9 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         # the weighted toggle at the end of the pull cord
         parts.append(make_part("pull", "pull", S.cylinder(0.007, 0.03, center=(W / 2 - 0.04, 0.06, H - 0.05 - H * 0.6 - 0.015),
                                                           sections=8), mat))
+        # the caps closing the bottom rail's ends
+        parts += [make_part(f"end_cap_{k}", "end_cap", S.box((0.006, 0.017, 0.032), center=(sx * ((W - 0.03) / 2 + 0.003), 0.03, 0.016)), mat)
+                  for k, sx in enumerate((-1, 1))]
         return parts
     if variant == "vertical":
         n = int((W - 0.04) / 0.09)
@@ -77,6 +81,13 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"slat_{k}", "slat", S.box((0.08, 0.003, H - 0.08), center=(x, 0.025, (H - 0.08) / 2 + 0.02),
                                                               R=rot((0, 0, 1), 0.5)), mat))
         parts.append(make_part("wand", "wand", S.cylinder(0.005, H * 0.6, center=(W / 2 - 0.03, 0.06, H - 0.05 - H * 0.3), sections=8), mat))
+        # the carrier clip each vane hangs from under the headrail, and the chain linking the
+        # vanes' bottoms so they turn together
+        for k in range(n):
+            x = -W / 2 + 0.02 + 0.09 * (k + 0.5)
+            parts.append(make_part(f"carrier_{k}", "carrier", S.box((0.012, 0.012, 0.012), center=(x, 0.025, H - 0.05 - 0.006)), metal))
+        parts.append(make_part("chain", "chain", S.cylinder(0.0015, 0.09 * (n - 1), center=(-W / 2 + 0.02 + 0.09 * n / 2, 0.025, 0.035),
+                                                            axis=(1, 0, 0), sections=6), metal))
         return parts
     n = int((H - 0.08) / 0.025)
     tilt = rot((1, 0, 0), rng.uniform(0.1, 0.6))
@@ -89,6 +100,12 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"cord_{k}", "cord", S.cylinder(0.0015, H - 0.07, center=(sx * W * 0.3, 0.025, 0.02 + (H - 0.07) / 2),
                                                                sections=6), M.solid((0.9, 0.9, 0.88), "fabric", 0.8)))
     parts.append(make_part("wand", "wand", S.cylinder(0.005, H * 0.5, center=(-W / 2 + 0.03, 0.06, H - 0.05 - H * 0.25), sections=8), mat))
+    # the lift cord hanging from the headrail's right end, and its tassel
+    cord = M.solid((0.9, 0.9, 0.88), "fabric", 0.8)
+    parts.append(make_part("lift_cord", "lift_cord", S.cylinder(0.0015, H * 0.5, center=(W / 2 - 0.04, 0.055, H - 0.05 - H * 0.25),
+                                                                sections=6), cord))
+    parts.append(make_part("tassel", "tassel", S.frustum(0.006, 0.003, 0.03, center=(W / 2 - 0.04, 0.055, H - 0.05 - H * 0.5 - 0.03),
+                                                         sections=8), mat))
     return parts
 
 
@@ -224,7 +241,8 @@ def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("air_conditioner", parts=("body",), extra_parts=("front_panel", "louver", "vent", "display", "pipe"),
+@register("air_conditioner", parts=("body",), extra_parts=("front_panel", "louver", "vent", "display", "pipe", "vane", "filter",
+                                                            "knob", "button", "exhaust_port", "handle"),
           size_range=(0.45, 1.2), density=500, variants=("split", "window", "portable"), placement="wall")
 def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = white(rng, "plastic")
@@ -240,6 +258,14 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
                              S.box((w - 0.06, 0.012, 0.004), center=(0, d / 2 + 0.02 * i, h + 0.001)),
                              M.solid((0.8, 0.8, 0.8), "plastic")) for i in range(-2, 3)]]
         parts.append(make_part("pipe", "pipe", S.tube([(-w / 2 + 0.05, 0.02, 0.02), (-w / 2 + 0.05, 0.02, -0.15)], 0.012), shell))
+        # the vertical vanes steering the air behind the louver, and the two mesh filters
+        # under the front panel (it lifts to take them out)
+        grey = M.solid((0.8, 0.8, 0.8), "plastic")
+        for k, x in enumerate(np.linspace(-w * 0.3, w * 0.3, 4)):
+            parts.append(make_part(f"vane_{k}", "vane", S.box((0.004, 0.04, 0.035), center=(x, d - 0.04, 0.04)), grey))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"filter_{k}", "filter", S.box((w * 0.42, 0.004, h * 0.45), center=(sx * w * 0.23, d - 0.003, h * 0.6)),
+                                   M.solid((0.6, 0.65, 0.7), "fabric", 0.8)))
         return parts
     if variant == "window":
         w, d, h = rng.uniform(0.48, 0.66), rng.uniform(0.45, 0.6), rng.uniform(0.32, 0.42)
@@ -254,4 +280,22 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("display", "display", S.box((0.08, 0.004, 0.03), center=(w / 2 - 0.08, d + 0.008, h * 0.85)),
                            M.solid((0.1, 0.3, 0.5), "glass", 0.1)))
     parts.append(make_part("vent", "vent", S.box((w * 0.8, 0.004, h * 0.3), center=(0, -0.001, h * 0.6)), black()))
+    # the washable filter behind the front grille, and the controls: a window unit's two dials
+    # beside the louvers, a portable one's buttons on the top, its exhaust hose port at the
+    # back and the recessed grips on its sides
+    parts.append(make_part("filter", "filter", S.box((w * 0.6, 0.004, h * 0.3), center=(-w * 0.05, d - 0.003, h * 0.45)),
+                           M.solid((0.6, 0.65, 0.7), "fabric", 0.8)))
+    if variant == "window":
+        for k, z in enumerate((h * 0.55, h * 0.3)):
+            parts.append(make_part(f"knob_{k}", "knob", S.cylinder(0.02, 0.015, center=(w / 2 - 0.08, d + 0.0125, z), axis=(0, 1, 0),
+                                                                  sections=12), M.solid((0.8, 0.8, 0.8), "plastic")))
+    else:
+        for k in range(3):
+            parts.append(make_part(f"button_{k}", "button", S.cylinder(0.008, 0.004, center=((k - 1) * 0.03, d * 0.75, h + 0.001),
+                                                                      sections=10), black()))
+        parts.append(make_part("exhaust_port", "exhaust_port", S.cylinder(0.07, 0.02, center=(0, -0.01 + 0.012, h * 0.3),
+                                                                        axis=(0, 1, 0), sections=12), black()))
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"handle_{k}", "handle", S.box((0.004, 0.08, 0.025), center=(sx * (w / 2 - 0.001), d / 2, h * 0.85)),
+                                   black()))
     return parts

@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
+from ._detail_b import each
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
@@ -92,7 +93,7 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("jewelry_box", parts=("body", "lid"), extra_parts=("tray", "mirror", "clasp", "hinge", "foot", "drawer", "drawer_box",
-                                                             "knob", "lining"),
+                                                             "knob", "lining", "divider", "ring_roll"),
           size_range=(0.12, 0.4), density=600, variants=("hinged", "drawers", "chest"), placement="surface")
 def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     wood = M.wood(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -124,6 +125,12 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     ht = 0.046  # deep enough to hold rings and watches under the closed lid
     parts.append(make_part("tray", "tray", [s.moved((0, 0, z + h - ht - 0.002)) for s in open_box(w - 2 * t - 0.004, d - 2 * t - 0.004, ht, 0.004)],
                            velvet))
+    # the tray's divider walling off a ring compartment on the left, and the velvet ring roll in it
+    tw, td, zt = w - 2 * t - 0.004, d - 2 * t - 0.004, z + h - ht - 0.002
+    parts.append(make_part("divider", "divider", S.box((0.004, td - 0.008, ht - 0.006),
+                                                       center=(-tw / 6, 0, zt + 0.004 + (ht - 0.006) / 2)), velvet))
+    parts.append(make_part("ring_roll", "ring_roll", S.cylinder(0.009, tw / 3 - 0.012, center=(-tw / 3, 0, zt + 0.004 + 0.009),
+                                                               axis=(1, 0, 0), sections=10), velvet))
     zl = z + h
     hl = rng.uniform(0.02, 0.03) if variant != "chest" else rng.uniform(0.05, 0.06)
     if variant == "chest":  # a rounded chest lid
@@ -213,8 +220,9 @@ def dog_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         fh = 0.012  # the rubber caps the legs stand on
         parts = legs4("leg", "leg", w=w, d=d, h=hl - fh, size=0.03, mat=metal, round_=True, z0=fh)
         parts += feet4("foot", w=w, d=d, r=0.017, h=fh, mat=black("rubber"), inset=-0.002)
-        parts.append(make_part("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
-                               + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal))
+        # the frame's four tubes (``frame``, ``frame_1``, ...), joined by the corner pieces
+        parts += each("frame", "frame", [S.box((w, 0.03, 0.03), center=(0, sy * (d / 2 - 0.015), hl + 0.015)) for sy in (-1, 1)]
+                      + [S.box((0.03, d - 0.06, 0.03), center=(sx * (w / 2 - 0.015), 0, hl + 0.015)) for sx in (-1, 1)], metal)
         parts.append(make_part("cushion", "cushion", S.box((w - 0.06, d - 0.06, 0.012), center=(0, 0, hl + 0.024)), fab))
         # the moulded corner pieces joining the frame's tubes over each leg
         for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):

@@ -144,7 +144,8 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("game_console", parts=("body",), extra_parts=("button", "vent", "foot", "stand", "disc_slot", "port", "light",
-                                                        "dock", "screen", "controller", "thumbstick"),
+                                                        "dock", "screen", "controller", "thumbstick", "shoulder_button",
+                                                        "power_inlet"),
           size_range=(0.15, 0.42), density=700, variants=("slim", "tower", "dock"), placement="surface")
 def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = M.solid(M.jitter(rng, [(0.08, 0.08, 0.09), (0.9, 0.9, 0.9)][int(rng.integers(2))], 0.02)[:3], "plastic", 0.4)
@@ -175,6 +176,12 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                               sections=10), black))
             parts.append(make_part(f"button_{k}", "button", S.cylinder(0.004, 0.003, center=(xc, yc + 0.0015, zc - sx * 0.02), axis=(0, 1, 0),
                                                                       sections=8), black))
+            # the shoulder button on the controller's top edge, and its minus or plus button
+            cw = (tw - 0.173) / 2
+            parts.append(make_part(f"shoulder_button_{k}", "shoulder_button",
+                                   S.box((cw * 0.7, 0.01, 0.003), center=(xc, d * 0.1, zc + 0.051 + 0.0015)), black))
+            parts.append(make_part(f"button_{k + 2}", "button", S.cylinder(0.0025, 0.002, center=(xc - sx * cw * 0.25, yc + 0.001, zc + 0.04),
+                                                                          axis=(0, 1, 0), sections=8), black))
         return parts
     w, d, h = rng.uniform(0.26, 0.31), rng.uniform(0.24, 0.3), rng.uniform(0.05, 0.07)
     if variant == "slim":
@@ -189,6 +196,7 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
                                    black))
         parts.append(make_part("light", "light", S.box((w * 0.8, 0.002, 0.002), center=(0, d / 2 + 0.001, zf + h * 0.25)), light))
         parts.append(make_part("vent", "vent", S.box((w * 0.6, 0.002, h * 0.5), center=(0, -d / 2 - 0.001, zf + h / 2)), black))
+        _back_sockets(parts, x0=w / 2 - 0.03, y=-d / 2 - 0.001, z=zf + 0.0075, mat=black, start=2)
         for k in range(2):
             parts.append(make_part(f"port_{k}", "port", S.box((0.014, 0.002, 0.006),
                                                               center=(-w / 2 + 0.03 + 0.02 * k, d / 2 + 0.001, zf + h * 0.3)),
@@ -210,7 +218,25 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                                        zs + 0.04 + 0.015 * k)), black))
     parts.append(make_part("light", "light", S.box((0.003, 0.002, hh * 0.6), center=(ww / 2 - 0.006, d / 2 + 0.001, zs + hh / 2)),
                            light))
+    _back_sockets(parts, x0=0.0, y=-d / 2 - 0.001, z=zs + 0.03, mat=black, start=2, upright=True)
     return parts
+
+
+def _back_sockets(parts: list[Part], *, x0: float, y: float, z: float, mat, start: int = 0,
+                  upright: bool = False) -> None:
+    """Append a console's back sockets on its back face (``y``): the HDMI and LAN ports
+    (``port_<start>``, ``port_<start + 1>``) and the power inlet, in a row leftward from
+    ``(x0, z)``, or upward from it on a console standing on its side (``upright``)."""
+    def at(u: float) -> tuple[float, float]:
+        return (x0, z + u) if upright else (x0 - u, z)
+
+    for k, (wd, ht) in enumerate(((0.015, 0.005), (0.016, 0.013))):
+        x, zz = at(0.012 + 0.025 * k)
+        size = (ht, 0.002, wd) if upright else (wd, 0.002, ht)
+        parts.append(make_part(f"port_{start + k}", "port", S.box(size, center=(x, y, zz)), mat))
+    x, zz = at(0.075)
+    size = (0.012, 0.003, 0.02) if upright else (0.02, 0.003, 0.012)
+    parts.append(make_part("power_inlet", "power_inlet", S.box(size, center=(x, y - 0.0005, zz)), mat))
 
 
 @register("game_controller", parts=("body", "button"), extra_parts=("grip", "thumbstick", "dpad", "trigger", "bumper",

@@ -18,7 +18,7 @@ from ._kit import rot
 
 
 @register("bottle", parts=("body", "cap"),
-          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "back_label"),
+          extra_parts=("label", "neck_ring", "neck_label", "tamper_ring", "back_label", "foot"),
           size_range=(0.18, 0.36),
           density=1000, variants=("wine", "water", "soda"), placement="surface")
 def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -40,7 +40,7 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
             prof = [(r * 0.9, 0.0), (r, 0.01), (r, h * 0.3), (r * 0.93, h * 0.36), (r, h * 0.42),
                     (r, h * 0.62), (neck * 1.2, h * 0.9), (neck, h * 0.95)]
         else:
-            # petaloid feet are approximated by a narrower base
+            # the body narrows to the petaloid base; its five feet are parts of their own
             prof = [(r * 0.75, 0.0), (r, h * 0.06), (r, h * 0.55), (r * 0.85, h * 0.7),
                     (neck * 1.1, h * 0.9), (neck, h * 0.95)]
         mat = Material((0.82, 0.9, 0.95, 0.4), 0.1, 0.0, "plastic") if variant == "water" else \
@@ -78,6 +78,11 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("neck_ring", "neck_ring", ring(
             [(rn - 0.001, zr), (rn + 0.006, zr + 0.0008), (rn + 0.006, zr + 0.0022),
              (rn - 0.001, zr + 0.003)], sections=16), mat))
+    if variant == "soda":  # the five lobes of the petaloid base the bottle stands on
+        for k in range(5):
+            a = 2 * np.pi * k / 5 + np.pi / 2
+            c = (r * 0.55 * np.cos(a), r * 0.55 * np.sin(a), h * 0.035)
+            parts.append(make_part(f"foot_{k}", "foot", S.ellipsoid((r * 0.3, r * 0.3, h * 0.035), center=c, subdivisions=1), mat))
     if variant == "wine":  # the back label, opposite the front one, its face flush with the front label's
         # (a bottle lying in a rack's cradle rests on its back: a proud label would lift it off)
         parts.append(make_part("back_label", "back_label", S.box((0.045, 0.0008, (z_label[1] - z_label[0]) * 0.6),
