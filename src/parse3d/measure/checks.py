@@ -508,8 +508,9 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
                           child.transform(settled),
                           world_points(pobj, hull_only=True, settled=settled), pobj.asset,
                           pobj.transform(settled), -sB.normal)
-        if gap < 0:  # curved bodies touching between vertices (a croissant on croissants)
-            d = _refined_drop(d, child, pobj, settled, -sB.normal)
+        # curved bodies touching between vertices (a croissant on croissants, a pillow on a
+        # pillow) read millimetres apart on the rays
+        d = _refined_drop(d, child, pobj, settled, -sB.normal)
         if gap > 0 and not (np.isfinite(d) and d <= DIST_TOL):
             d = _gap_to_low_parts(pts, pobj, sB, settled)  # the rays may miss a low burner
         if np.isfinite(d) and (gap < 0 or d <= DIST_TOL):

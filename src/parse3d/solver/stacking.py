@@ -13,6 +13,7 @@ from ..measure.checks import EPS, check_edge, world_points
 from ..measure.geometry import exact_drop
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
+from .choice import lies_flat
 from .collision import Body
 from .config import Fail
 from .geometry import asset_geometry, drop_distance
@@ -294,6 +295,12 @@ def rest_across(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndar
         if Polygon(RG.convex_footprint(plane_coords(s, H[o.id]))).distance(
                 Polygon(RG.convex_footprint(plane_coords(s, P)))) <= 0.5 * reach:
             like.append(o)
+    # a top (or bottom) flat enough to balance on alone: not a bolster's or a roll's, unless
+    # the pile is in a container, whose wall and contents catch it (croissants in a basket)
+    under = st.pag.supporter(parent.id)
+    flat = (under is not None and under.relation == "IN") or any(
+        lies_flat(parent.asset, p) for p in parent.asset.parts
+        if sup.choice is None or p.name == sup.choice.part)
     # what holds them (a basket) is left to the collision test: its handle arches over them
     onto = [parent, *like]
     # lying as the one below lies (rolls side by side), and turned a quarter
@@ -345,7 +352,10 @@ def rest_across(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndar
                                                  for o in held])).convex_hull
             c_w = Rk @ com0 + t
             com = plane_coords(s, c_w[None])[0]
-            if len(held) == 1:  # balanced on the one below: over its middle
+            if len(held) == 1:  # balanced on the one below: over its middle, and flat
+                if not flat:
+                    last = f"it would balance on the round top of {held[0].id}"
+                    continue
                 base = shapely.affinity.scale(base, STACK_CENTRE, STACK_CENTRE,
                                               origin="centroid")
             if not base.buffer(-2e-3).contains(shapely.Point(com)):
