@@ -199,8 +199,16 @@ def like_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> flo
             set(st.pag.objects[edge.child.object].candidates)
             & set(st.pag.objects[edge.parent.object].candidates)):
         return scale
+    from dataclasses import replace
+
     from .geometry import hull_extents
 
+    under = st.pag.supporter(parent.id)
+    if under is not None and under.relation == "IN" and not under.parent.is_room_element \
+            and under.parent.object in st.scene.objects:
+        # one more on a pile in a container (towels in a basket): it lies in its floor too,
+        # as the ones below were drawn to
+        scale = _floor_fit(st, replace(under, child=edge.child), asset, scale, axis)
     ext = hull_extents(asset)[0]
     m1, m2 = sorted((scale * float(ext[k]) for k in range(3) if k != axis), reverse=True)
     below = world_points(parent, hull_only=True, settled=False)
