@@ -509,6 +509,9 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
                           child.transform(settled),
                           world_points(pobj, hull_only=True, settled=settled), pobj.asset,
                           pobj.transform(settled), -sB.normal)
+        # curved bodies touching between vertices (a croissant on croissants, a pillow on a
+        # pillow) read millimetres apart on the rays
+        d = _refined_drop(d, child, pobj, settled, -sB.normal)
         if gap > 0 and not (np.isfinite(d) and d <= DIST_TOL):
             d = _gap_to_low_parts(pts, pobj, sB, settled)  # the rays may miss a low burner
         if np.isfinite(d) and (gap < 0 or d <= DIST_TOL):
@@ -555,6 +558,11 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     elif rel == "IN" and settled and pobj is not None and _placed_lying(child):
         # a content placed lying in its container (a banana bunch, a croissant) tumbles there
         # when settled: IN asks containment (the enclosure or footprint below), not a pose
+        ang_tol = 180.0
+    elif rel == "ON" and settled and pobj is not None and _placed_lying(child) \
+            and _content_of_kind(ctx):
+        # one on a pile of its kind in a container (a croissant on croissants in a bread
+        # basket, a towel on towels): a content too, it tumbles as the others do
         ang_tol = 180.0
     elif long_axis is not None:
         # lying along its long axis (a baguette, a bottle on its side): it may roll about
@@ -709,8 +717,9 @@ def _resting_on_sibling(ctx: CheckContext, down: np.ndarray) -> tuple[str, float
         if oid == child.id or not o.placed or o.asset is None:
             continue
         sup = scene.pag.supporter(oid)
-        if sup is None or sup.parent.object != ctx.edge.parent.object:
-            continue
+        if sup is None or (sup.parent.object != ctx.edge.parent.object
+                           and o.stacked_on != ctx.edge.parent.object):
+            continue  # on the parent, or piled on it (a towel on the towel on a towel)
         q = world_points(o, hull_only=True, settled=settled)
         if np.any(q[:, :2].min(axis=0) > hi) or np.any(q[:, :2].max(axis=0) < lo):
             continue
@@ -776,7 +785,8 @@ def _check_on(ctx: CheckContext) -> Check:
         h = _plane_dist(pts, sB)
         com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
     inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3]) \
-        or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3])
+        or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3]) \
+        or _across_like(ctx, sB, com[:3])
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
@@ -785,6 +795,69 @@ def _check_on(ctx: CheckContext) -> Check:
         res["com_inside"] = 0.0
         return Check(False, res, "centre of mass outside the object's own base: it would tip over")
     return Check(True, res, c.detail)
+
+
+def _content_of_kind(ctx: CheckContext) -> bool:
+    """Whether the parent shares a category with the child (PAG nodes) and is itself ``IN``
+    a container: the child is one more content of a pile there."""
+    pag, pid = ctx.scene.pag, ctx.edge.parent.object
+    if ctx.edge.parent.is_room_element or pid not in pag.objects:
+        return False
+    under = pag.supporter(pid)
+    return under is not None and under.relation == "IN" and bool(
+        set(pag.objects[ctx.child.id].candidates) & set(pag.objects[pid].candidates))
+
+
+def _across_like(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
+    """Whether the child rests across the parent and objects of its kind beside it (a rolled
+    towel in the groove between two, a croissant across two): ``p3`` over the convex hull of
+    the footprints of the parent and of each object sharing a category with the child (PAG
+    nodes) and the parent's supporter that the child touches (free drop within contact)."""
+    pobj, child, scene, settled = ctx.parent, ctx.child, ctx.scene, ctx.settled
+    pag = scene.pag
+    if pobj is None or ctx.edge.parent.is_room_element:
+        return False
+    kind = set(pag.objects[child.id].candidates)
+    if not kind & set(pag.objects[pobj.id].candidates):
+        return False
+    under = pag.supporter(pobj.id)
+    box = scene.objects.get(under.parent.object) if under is not None else None
+    if settled and box is not None and box.placed and _content_of_kind(ctx):
+        # settled on a pile of its kind in a container, touching the one below: held by the
+        # pile and the container's wall, its centre of mass over the container
+        from shapely.geometry import MultiPoint, Point
+
+        d = world_points(box, hull_only=True, settled=True) - sB.origin
+        q = p3 - sB.origin
+        if MultiPoint(np.c_[d @ sB.u, d @ sB.v]).convex_hull.contains(
+                Point(float(q @ sB.u), float(q @ sB.v))):
+            return True
+    pts = world_points(child, hull_only=True, settled=settled)
+    lo, hi = pts[:, :2].min(axis=0), pts[:, :2].max(axis=0)
+    held = []
+    for oid, o in scene.objects.items():
+        if oid in (child.id, pobj.id) or not o.placed or o.asset is None \
+                or not kind & set(pag.objects[oid].candidates):
+            continue
+        sup = pag.supporter(oid)
+        if sup is None or under is None or sup.parent.object != under.parent.object:
+            continue
+        q = world_points(o, hull_only=True, settled=settled)
+        if np.any(q[:, :2].min(axis=0) > hi) or np.any(q[:, :2].max(axis=0) < lo):
+            continue
+        d = _refined_drop(drop_distance(pts, child.asset, child.transform(settled), q, o.asset,
+                                        o.transform(settled), -sB.normal),
+                          child, o, settled, -sB.normal)
+        if d <= DIST_TOL:
+            held.append(q)
+    if not held:
+        return False
+    from shapely.geometry import MultiPoint, Point
+
+    d = np.vstack([world_points(pobj, hull_only=True, settled=settled), *held]) - sB.origin
+    hull = MultiPoint(np.c_[d @ sB.u, d @ sB.v]).convex_hull
+    q = p3 - sB.origin
+    return bool(hull.contains(Point(float(q @ sB.u), float(q @ sB.v))))
 
 
 #: Metres within which the tops of parts count as one level (a luggage rack's straps).

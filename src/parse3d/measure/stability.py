@@ -236,6 +236,11 @@ def settled_rest(scene: Scene, obj) -> str | None:
     if edge is None:
         return None
     holder = _holder(edge, obj)
+    under = scene.pag.supporter(holder) if holder in scene.pag.objects else None
+    if edge.relation == "ON" and holder == edge.parent.object and under is not None \
+            and under.relation == "IN" and set(scene.pag.objects[obj.id].candidates) \
+            & set(scene.pag.objects[holder].candidates):
+        holder = under.parent.object  # ON one of its kind in a container: a pile there
     box = scene.objects.get(holder)
     if box is not None and box.placed and (edge.relation == "IN" or holder != edge.parent.object) \
             and _lying(obj):

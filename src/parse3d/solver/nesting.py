@@ -17,7 +17,7 @@ from .geometry import asset_geometry
 from .state import SolveState
 from .support import Support
 
-__all__ = ["concentric_first", "floor_fit", "nest_instance", "nest_rise", "nest_samples",
+__all__ = ["concentric_first", "floor_fit", "like_fit", "nest_instance", "nest_rise", "nest_samples",
            "pieces_drop", "same_kind"]
 
 def same_kind(st: SolveState, oid: str, sup: Support) -> bool:
@@ -159,6 +159,8 @@ def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> fl
     object of its own kind that it cannot be shrunk to lie in (a basket in a basket) it rests on
     the parent's wall, so it is only shrunk (within its range) to be no wider than the
     parent."""
+    if edge.relation == "ON":
+        return like_fit(st, edge, asset, scale, axis)
     if edge.relation != "IN" or edge.parent.is_room_element \
             or edge.parent.object not in st.scene.objects:
         return scale
@@ -176,6 +178,48 @@ def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> fl
     return fit
 
 
+#: Ratio of a stacked child's sides to those of the one of its kind below beyond which it is
+#: drawn smaller, like the one below (:func:`like_fit`).
+LIKE_WIDER = 1.25
+#: Footprint area, in units of the lower one's, up to which a stacked child keeps its size.
+LIKE_AREA = 3.0
+
+
+def like_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> float:
+    """``scale``, or less for a child ``ON`` a placed object of its own kind (their PAG nodes
+    share a category) whose footprint, lying in its support orientation (``axis``), covers more
+    than :data:`LIKE_AREA` times the lower one's and whose sides are more than
+    :data:`LIKE_WIDER` times the lower one's: it is drawn the lower one's size,
+    within its category's size range. A towel shrunk to lie in a small basket carries the
+    towel written on it at its own size, not one twice as long that finds no rest there."""
+    if edge.parent.is_room_element or edge.parent.object not in st.scene.objects:
+        return scale
+    parent = st.scene.objects[edge.parent.object]
+    if not parent.placed or parent.asset is None or not (
+            set(st.pag.objects[edge.child.object].candidates)
+            & set(st.pag.objects[edge.parent.object].candidates)):
+        return scale
+    from dataclasses import replace
+
+    from .geometry import hull_extents
+
+    under = st.pag.supporter(parent.id)
+    if under is not None and under.relation == "IN" and not under.parent.is_room_element \
+            and under.parent.object in st.scene.objects:
+        # one more on a pile in a container (towels in a basket): it lies in its floor too,
+        # as the ones below were drawn to
+        scale = _floor_fit(st, replace(under, child=edge.child), asset, scale, axis)
+    ext = hull_extents(asset)[0]
+    m1, m2 = sorted((scale * float(ext[k]) for k in range(3) if k != axis), reverse=True)
+    below = world_points(parent, hull_only=True, settled=False)
+    t1, t2 = sorted(np.ptp(below[:, :2], axis=0).tolist(), reverse=True)
+    ratio = max(m1 / max(t1, 1e-9), m2 / max(t2, 1e-9))
+    if ratio <= LIKE_WIDER or m1 * m2 <= LIKE_AREA * t1 * t2:
+        return scale  # it may overhang the one below (a loaf on a smaller loaf)
+    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+    return max(scale / ratio, lo) if scale > lo else scale
+
+
 def _floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> float:
     """:func:`floor_fit` for a child fitted to the parent's floor."""
     from .geometry import hull_extents
@@ -191,12 +235,55 @@ def _floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> f
     for sup in sups:
         x0, y0, x1, y1 = sup.region.bounds
         w1, w2 = sorted((x1 - x0, y1 - y0), reverse=True)
-        best = max(best, min(w1 / max(e1, 1e-9), w2 / max(e2, 1e-9)))
+        # lying along the floor's sides (a long thing across a square floor's diagonal is
+        # no better: it stands), inside a round floor's own shape (a round basket's)
+        fit = min(w1 / max(e1, 1e-9), w2 / max(e2, 1e-9))
+        if fit < 1.0 and sup.region.area < ROUND_FLOOR \
+                * sup.region.minimum_rotated_rectangle.area:  # shrunk: to lie inside it
+            fit = min(fit, _rect_in(sup.region, e1, e2))
+        best = max(best, fit)
     if best >= 1.0 or best <= 0.0:
         return scale
     fit = FLOOR_FIT * best
     lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
     return scale * fit if scale * fit >= lo else scale
+
+
+#: Share of its envelope's area below which a floor is round (a circle fills 79%): what lies
+#: on it must fit inside its shape, not its envelope.
+ROUND_FLOOR = 0.9
+
+
+def _rect_in(region, e1: float, e2: float) -> float:
+    """The largest factor ``f`` (to 1%) such that an ``f e1`` by ``f e2`` rectangle centred on
+    the region's centroid lies inside it, over a few turns (along its envelope's sides and at
+    45 degrees): a round basket's floor holds a towel along its diameter's inscribed square,
+    not its bounding box."""
+    import shapely
+
+    if region.is_empty or e1 <= 0 or e2 <= 0:
+        return 0.0
+    c = region.centroid
+    r = region.minimum_rotated_rectangle
+    xy = np.asarray(r.exterior.coords) if r.geom_type == "Polygon" else np.zeros((3, 2))
+    a0 = float(np.arctan2(*(xy[1] - xy[0])[::-1]))
+    x0, y0, x1, y1 = region.bounds
+    hi = 2.0 * max(x1 - x0, y1 - y0) / min(e1, e2)
+    best = 0.0
+    for a in (a0, a0 + np.pi / 2, a0 + np.pi / 4, a0 - np.pi / 4):
+        box = shapely.affinity.rotate(shapely.box(-e1 / 2, -e2 / 2, e1 / 2, e2 / 2), a,
+                                      origin=(0, 0), use_radians=True)
+        box = shapely.affinity.translate(box, c.x, c.y)
+        lo, top = best, hi
+        if not region.buffer(1e-9).contains(shapely.affinity.scale(box, lo, lo, origin=c)) \
+                and lo > 0:
+            continue
+        while top - lo > 0.01:
+            mid = 0.5 * (lo + top)
+            inside = region.buffer(1e-9).contains(shapely.affinity.scale(box, mid, mid, origin=c))
+            lo, top = (mid, top) if inside else (lo, mid)
+        best = max(best, lo)
+    return best
 
 
 #: Pool slots per candidate category looked at for a child that nests in one of its kind.

@@ -10,8 +10,10 @@ from shapely.geometry import Polygon
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..measure.checks import EPS, check_edge, world_points
+from ..measure.geometry import exact_drop
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
+from .choice import lies_flat
 from .collision import Body
 from .config import Fail
 from .geometry import asset_geometry, drop_distance
@@ -22,7 +24,7 @@ from .support import Support
 from .validation import relations_and_collisions, resolution
 
 __all__ = ["drop_into", "drop_onto", "PILE_BASES", "PILE_AREA", "STACK_ON", "may_stack",
-           "place_stacked", "STACK_CENTRE", "STACK_OVER", "stack_centre"]
+           "place_stacked", "rest_across", "ACROSS_DRAWS", "STACK_CENTRE", "STACK_OVER", "stack_centre"]
 
 
 def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
@@ -103,13 +105,20 @@ STACK_ON = ("plate",)
 
 
 def may_stack(st: SolveState, edge: Edge) -> bool:
-    """Piles and stacks are allowed IN a container or shelf, and ON a plate."""
+    """Piles and stacks are allowed IN a container or shelf, ON a plate, and ON an object of
+    the child's own kind (resting across it and its like neighbours: :func:`rest_across`)."""
     if edge.parent.is_room_element:
         return False
     if edge.relation == "IN":
         return True
     parent = st.scene.objects.get(edge.parent.object)
-    return edge.relation == "ON" and parent is not None and parent.category in STACK_ON
+    return edge.relation == "ON" and parent is not None and (
+        parent.category in STACK_ON or _like(st, edge.child.object, parent.id))
+
+
+def _like(st: SolveState, a: str, b: str) -> bool:
+    """Whether the PAG nodes ``a`` and ``b`` share a category (things of one kind)."""
+    return bool(set(st.pag.objects[a].candidates) & set(st.pag.objects[b].candidates))
 
 
 def place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
@@ -124,6 +133,10 @@ def place_stacked(st: SolveState, oid: str, asset: Asset, scale: float, hull: np
     s = sup.surface
     n = s.normal
     R, _, _ = solve_rotation(st, oid, asset, sup, support_edge, others, rng, "constrained", scale)
+    if support_edge.relation == "ON" and sup.owner in st.scene.objects \
+            and _like(st, oid, sup.owner):
+        # ON one of its kind that has no room on its top: across it and its like neighbours
+        return rest_across(st, oid, asset, scale, R, sup, support_edge, others, body, rng)
     Y = hull @ R.T
     hN = Y @ n
     c3 = (asset_geometry(asset).com * scale) @ R.T
@@ -223,3 +236,144 @@ def stack_centre(region, region0, asset: Asset, scale: float, R: np.ndarray, s):
     mid = shapely.affinity.scale(region0, STACK_CENTRE, STACK_CENTRE, origin="centroid")
     return RG.clip(region, shapely.affinity.translate(mid, -float(com @ s.u), -float(com @ s.v)))
 
+
+
+#: Positions (each at every turn tried) at which a child is dropped onto one of its kind and
+#: its like neighbours (:func:`rest_across`).
+ACROSS_DRAWS = 12
+
+
+def _yaw(R: np.ndarray, n: np.ndarray, angle: float) -> np.ndarray:
+    """``R`` turned by ``angle`` radians about the unit normal ``n``."""
+    c, sn = np.cos(angle), np.sin(angle)
+    K = np.array([[0.0, -n[2], n[1]], [n[2], 0.0, -n[0]], [-n[1], n[0], 0.0]])
+    return (np.eye(3) + sn * K + (1.0 - c) * K @ K) @ R
+
+
+def _long_axis(pts: np.ndarray, s) -> float:
+    """Angle (radians, in the plane ``(u, v)`` of ``s``) of the longer side of the points'
+    minimum rotated rectangle seen along the normal."""
+    uv = plane_coords(s, pts)
+    r = shapely.MultiPoint(uv).minimum_rotated_rectangle
+    if not isinstance(r, Polygon):
+        return 0.0
+    xy = np.asarray(r.exterior.coords)[:3]
+    a, b = xy[1] - xy[0], xy[2] - xy[1]
+    d = a if np.hypot(*a) >= np.hypot(*b) else b
+    return float(np.arctan2(d[1], d[0]))
+
+
+def rest_across(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+                sup: Support, support_edge: Edge, others: list[Edge], body: Body,
+                rng: np.random.Generator):
+    """A child ``ON`` an object of its own kind that has no room on its top (a rolled towel
+    on a rolled towel, a croissant on a croissant in a bread basket): dropped from above onto
+    that object, the objects of its kind beside it on the same support and what holds them
+    (the basket), lying as the one below lies, and kept where it touches the one below with
+    its centre of mass over what it rests on: in the groove between two rolls, across two
+    croissants, or on one's top when it balances there. The lowest such rest is kept.
+
+    Returns like ``_place_on`` plus None (its support is the object below)."""
+    s, n = sup.surface, sup.surface.normal
+    parent = st.scene.objects[sup.owner]
+    holder = parent.support_choice.owner if parent.support_choice is not None else "room"
+    hull = asset_geometry(asset).hull * scale
+    com0 = asset_geometry(asset).com * scale
+    # the poses the collision world holds (solved, not settled: a repair after settling)
+    H = {o.id: world_points(o, hull_only=True, settled=False) for o in st.scene.objects.values()
+         if o.placed and o.id in st.hulls and o.id != oid}
+    P = H[parent.id]
+    pc = plane_coords(s, P).mean(axis=0)
+    reach = float(np.ptp(hull, axis=0).max())
+    like = []
+    for o in st.scene.objects.values():
+        if o.id in (oid, parent.id) or not o.placed or o.id not in st.hulls \
+                or o.support_choice is None or not _like(st, oid, o.id):
+            continue
+        if o.support_choice.owner not in (holder, parent.id):
+            continue
+        if Polygon(RG.convex_footprint(plane_coords(s, H[o.id]))).distance(
+                Polygon(RG.convex_footprint(plane_coords(s, P)))) <= 0.5 * reach:
+            like.append(o)
+    # a top (or bottom) flat enough to balance on alone: not a bolster's or a roll's, unless
+    # the pile is in a container, whose wall and contents catch it (croissants in a basket)
+    under = st.pag.supporter(parent.id)
+    flat = (under is not None and under.relation == "IN") or any(
+        lies_flat(parent.asset, p) for p in parent.asset.parts
+        if sup.choice is None or p.name == sup.choice.part)
+    # what holds them (a basket) is left to the collision test: its handle arches over them
+    onto = [parent, *like]
+    # lying as the one below lies (rolls side by side), and turned a quarter
+    want = _long_axis(P, s)
+    have = _long_axis(hull @ R.T, s)
+    turns = [_yaw(R, n, want - have), _yaw(R, n, want - have + np.pi / 2), R]
+    centres = [pc] + [0.5 * (pc + plane_coords(s, H[o.id]).mean(axis=0)) for o in like]
+    radius = max(float(np.sqrt(Polygon(RG.convex_footprint(plane_coords(s, P))).area / np.pi)),
+                 1e-3)
+    while len(centres) < ACROSS_DRAWS:
+        centres.append(pc + rng.normal(0.0, 0.3 * radius, 2))
+    top = max(float(np.max((H[o.id] - s.origin) @ n)) for o in onto)
+    found = []
+    last = f"nothing of {parent.id} under it"
+    for Rk in turns:
+        Y = hull @ Rk.T
+        c3 = com0 @ Rk.T
+        hN = Y @ n
+        for cu in centres:
+            ab = cu - np.array([c3 @ s.u, c3 @ s.v])
+            t = s.origin + ab[0] * s.u + ab[1] * s.v + (top - float(hN.min()) + 2 * EPS) * n
+            cand = PlacedObject(oid, asset.category, asset, scale, Rk, t)
+            pts = world_points(cand, hull_only=True)
+            # rays from the vertices miss curved bodies touching between them (a croissant
+            # on a croissant): each drop is bisected on the meshes
+            T = cand.transform()
+            drops = {o.id: exact_drop(asset, T, o.asset, o.transform(False), -n,
+                                      drop_distance(pts, asset, T, H[o.id], o.asset,
+                                                    o.transform(False), -n)) for o in onto}
+            d = min(drops.values())
+            if not np.isfinite(d):
+                continue
+            t = t - (d - EPS) * n
+            cand = PlacedObject(oid, asset.category, asset, scale, Rk, t)
+            pts = world_points(cand, hull_only=True)
+            gaps = {k: v - d + EPS for k, v in drops.items()}
+            if gaps[parent.id] > 2e-3 and not any(
+                    gaps[o.id] <= 2e-3 and o.stacked_on == parent.id for o in like):
+                # on the one below, or on one of its kind piled on it (a basket too small
+                # for two towels side by side holds the second on the first)
+                last = f"it would rest on {min(gaps, key=gaps.get)}, not on {parent.id}"
+                continue
+            if float(np.max((pts - s.origin) @ n)) > sup.clearance + float(np.max((P - s.origin)
+                                                                                   @ n)):
+                last = "no free height above it"
+                continue
+            held = [o for o in onto if gaps[o.id] <= 2e-3]
+            base = shapely.MultiPoint(np.vstack([plane_coords(s, H[o.id])
+                                                 for o in held])).convex_hull
+            c_w = Rk @ com0 + t
+            com = plane_coords(s, c_w[None])[0]
+            if len(held) == 1:  # balanced on the one below: over its middle, and flat
+                if not flat:
+                    last = f"it would balance on the round top of {held[0].id}"
+                    continue
+                base = shapely.affinity.scale(base, STACK_CENTRE, STACK_CENTRE,
+                                              origin="centroid")
+            if not base.buffer(-2e-3).contains(shapely.Point(com)):
+                last = f"its centre of mass would not be over {', '.join(o.id for o in held)}"
+                continue
+            found.append((float(c_w @ n), Rk, t, cand, held))
+    for _, Rk, t, cand, held in sorted(found, key=lambda f: f[0]):
+        checks, why = relations_and_collisions(st, cand, others, body, Rk, t)
+        if checks is None:
+            last = why
+            continue
+        holds, res, detail = check_edge(st.scene, support_edge, cand,
+                                        resolved=resolution(support_edge, sup.choice))
+        if not holds:
+            last = f"{support_edge.relation} {support_edge.child} -> {support_edge.parent}: " \
+                   f"{detail}"
+            continue
+        if len(held) > 1:
+            detail += f", across {', '.join(o.id for o in held)}"
+        return (Rk, t, sup, body), 1, [(holds, res, detail), *checks], None
+    raise Fail(f"no room on {sup.name} and none across it and its like neighbours: {last}")
