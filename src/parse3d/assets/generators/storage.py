@@ -100,7 +100,8 @@ def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: 
 
 
 @register("bookcase", parts=("shelf", "side_panel", "back_panel"),
-          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin"), size_range=(0.9, 2.3),
+          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin", "bumper"),
+          size_range=(0.9, 2.3),
           density=550, variants=("open", "doored", "glass_doored"))
 def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
@@ -130,12 +131,16 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "doored":
         k = max(1, n // 2)
         z_top = plinth + k * inner / n + t
-        parts += _door_row("door", w=w, z0=plinth, z1=z_top, y_back=d / 2, n=2, mat=mat, hmat=hmat,
-                           style="shaker" if rng.random() < 0.6 else "flat",
-                           parents=("side_panel_0", "side_panel_1"))
+        doors = _door_row("door", w=w, z0=plinth, z1=z_top, y_back=d / 2, n=2, mat=mat, hmat=hmat,
+                          style="shaker" if rng.random() < 0.6 else "flat",
+                          parents=("side_panel_0", "side_panel_1"))
+        # the doors close on bumpers on the bottom shelf's front edge and the one at their top
+        z_hi = levels[int(np.argmin(np.abs(levels - z_top)))] - t / 2
+        parts += doors + _bumpers(doors, y_front=d / 2, z_low=levels[0] - t / 2, z_high=z_hi)
     elif variant == "glass_doored":
-        parts += _door_row("door", w=w, z0=plinth, z1=h_side, y_back=d / 2, n=2, mat=mat, hmat=hmat,
-                           style="glass", glass=glass_pane(rng), parents=("side_panel_0", "side_panel_1"))
+        doors = _door_row("door", w=w, z0=plinth, z1=h_side, y_back=d / 2, n=2, mat=mat, hmat=hmat,
+                          style="glass", glass=glass_pane(rng), parents=("side_panel_0", "side_panel_1"))
+        parts += doors + _bumpers(doors, y_front=d / 2, z_low=levels[0] - t / 2, z_high=levels[-1] - t / 2)
     return parts
 
 
