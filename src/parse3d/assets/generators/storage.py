@@ -145,7 +145,7 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("storage_cabinet", parts=("body", "door", "shelf"),
-          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin", "bumper"),
+          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
 def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
@@ -167,15 +167,14 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
                                     handle_mat=hmat)
     parts = [make_part("body", "body", body, mat), *drawers]
     n_door = 1 if variant == "single_door" else 2
-    doors = _door_row("door", w=w, z0=plinth, z1=z_door_top, y_back=d / 2, n=n_door, mat=mat, hmat=hmat,
-                      style="shaker" if rng.random() < 0.5 else "flat")
-    parts += doors
+    parts += _door_row("door", w=w, z0=plinth, z1=z_door_top, y_back=d / 2, n=n_door, mat=mat, hmat=hmat,
+                       style="shaker" if rng.random() < 0.5 else "flat")
     inner = z_door_top - t - (plinth + t)
     n = int(np.clip(np.floor(inner / 0.32), 1, 5))
     levels = plinth + t + shelf_heights(0.0, inner, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t, mat=mat)
     parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t)
-    return parts + _bumpers(doors, y_front=d / 2, z_low=plinth + t / 2, z_high=z_door_top - t / 2)
+    return parts
 
 
 @register("tv_stand", parts=("top_panel", "body"),
