@@ -90,3 +90,24 @@ def test_a_bed_frame_is_its_rails() -> None:
     assert {p.label for p in b.parts_by_label("frame")} == {"plinth", "deck"}
     # the platform's frame is still what stands on the floor, under the mattress
     assert min(p.bounds[0, 2] for p in b.parts_by_label("frame")) == pytest.approx(b.bounds[0, 2], abs=0.006)
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_on_a_carcass_body_top_is_on_its_outside(seed: int) -> None:
+    """``ON dresser:body@top`` with ``body`` a group of panels: the child stands on the
+    carcass's top, not on the bottom panel inside it (which is also a member's top)."""
+    from pathlib import Path
+
+    import parse3d
+
+    pag = parse3d.load_pag(Path(__file__).parent / "data" / "rooms" / "carcass_tops.json")
+    scene = parse3d.solve(pag, seed=seed)
+    for child, parent in (("lamp", "ns"), ("book", "dr"), ("vase", "sb"), ("mug", "hu")):
+        c, p = scene.objects[child], scene.objects[parent]
+        assert c.placed, child
+        T = p.transform()
+        tops = [float((np.asarray(q.bounds) @ T[:3, :3].T + T[:3, 3])[:, 2].max())
+                for q in p.asset.parts_by_label("body")]
+        bottom = float(c.world_bounds()[0, 2])
+        # resting on (or above) the group's highest top, not 1 cm lower inside the carcass
+        assert bottom >= max(tops) - 0.01, (child, bottom, max(tops))

@@ -146,6 +146,30 @@ COVERS = 0.9
 _COVER: dict[tuple[str, str], str | None] = {}
 
 
+def outer_tops(asset, parts: list) -> list:
+    """The members of a group label whose tops are the group's outside: ``ON dresser:body@top``
+    means the carcass's top panel, not the bottom panel inside it under a shelf or the top.
+
+    A member is dropped when another member of the same group lies above its top (bottom at or
+    above that top, less 1 cm) over half or more of its footprint (bounding boxes, in the
+    asset's frame). A group whose members all lie side by side keeps every member.
+    """
+    if len(parts) < 2:
+        return parts
+    b = np.array([p.bounds for p in parts])  # (n, 2, 3)
+    area = np.prod(np.maximum(b[:, 1, :2] - b[:, 0, :2], 0.0), axis=1)
+    keep = []
+    for i, p in enumerate(parts):
+        top = b[i, 1, 2]
+        over = np.maximum(np.minimum(b[:, 1, :2], b[i, 1, :2])
+                          - np.maximum(b[:, 0, :2], b[i, 0, :2]), 0.0).prod(axis=1)
+        above = (b[:, 0, 2] >= top - 0.01) & (over >= 0.5 * area[i]) & (area[i] > 0)
+        above[i] = False
+        if not above.any():
+            keep.append(p)
+    return keep or parts
+
+
 def cover_part(asset, part):
     """The part lying on ``part``'s top (its bottom within 1 cm above it) whose footprint
     covers ``COVERS`` of that top and whose own top is flat: ``ON dryer:body@top`` stands on
@@ -298,6 +322,9 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     if not parts:
         raise Fail(f"{ref.object!r} ({parent.asset.asset_id}) has no part {ref.part!r}"
                    + (f" #{ref.index}" if ref.index is not None else ""))
+    if rel == "ON" and label == "top" and ref.index is None \
+            and ref.part in parent.asset.label_groups:
+        parts = outer_tops(parent.asset, parts)  # a carcass's top panel, not its floor
     out = []
     if rel == "IN":
         names = {p.name for p in parts}
