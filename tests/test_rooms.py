@@ -38,7 +38,7 @@ KNOWN: dict[str, str] = {
 #: with what blocks it and what to write instead.
 IMPOSSIBLE = {"living_sofa_wall", "shelf_panel_set_in", "named_support_parts",
               "heap_of_round_things", "hung_by_a_named_part", "hung_by_collar",
-              "iron_on_a_leaning_board"}
+              "iron_on_a_leaning_board", "layout_emptied"}
 
 
 def room_files() -> list[Path]:
