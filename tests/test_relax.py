@@ -10,17 +10,20 @@ import json
 import re
 from pathlib import Path
 
+import numpy as np
 import pytest
 from shapely.geometry import GeometryCollection, LineString, Point, box
 from typer.testing import CliRunner
 
 from parse3d.cli import app
 from parse3d.geometry.regions import clip
+from parse3d.measure.checks import object_centroid
 from parse3d.pag import load_pag
 from parse3d.pipeline import PipelineOptions, run_pipeline
 from parse3d.solver import SolverConfig, solve
 from parse3d.solver import placement as placement_module
 from parse3d.solver.search import relax_plan, support_descendants
+from test_rooms import solved
 
 ROOMS = Path(__file__).parent / "data" / "rooms"
 SOFA = ROOMS / "living_sofa_wall.json"
@@ -197,3 +200,29 @@ def test_a_shelf_against_the_wall_by_a_set_in_back_panel_goes_flush_by_its_posts
     assert 0.005 < c.residual["distance"] < 0.05
     assert c.relaxed["instead"].startswith("name shelf:")
     assert all(r.holds for r in scene.relations if r.index != c.index)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_layout_relation_that_empties_the_region_relaxes_to_the_nearest_positions(seed):
+    """FAR_FROM a counter by more than the counter is long, NEAR a wall the counter does not
+    reach: both empty the free positions on the countertop. The objects are placed all the
+    same, as near as the countertop allows (the bottle towards a corner, the soap at the edge
+    facing that wall), each relation recorded relaxed with what blocked it; nothing falls."""
+    scene = solved("layout_emptied", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert sorted((c.relation, c.child) for c in scene.relaxed) == [
+        ("FAR_FROM", "bottle"), ("NEAR", "soap")]
+    for c in scene.relaxed:
+        assert "emptied the feasible region" in c.relaxed["blocked"], c.relaxed
+    assert all(c.holds_settled for c in scene.relations if c.relaxed is None)
+    lo, hi = scene.objects["counter"].world_bounds(settled=True)
+    centre = object_centroid(scene.objects["counter"], settled=True)
+    half = (hi - lo)[:2] / 2
+    bottle = object_centroid(scene.objects["bottle"], settled=True)
+    # as far from the counter's centre as the countertop goes, within a hand's width
+    assert np.linalg.norm((bottle - centre)[:2]) > np.linalg.norm(half) - 0.25
+    wall = scene.room.elements["wall_2"].surface
+    soap = object_centroid(scene.objects["soap"], settled=True)
+    corners = [np.array([x, y, soap[2]]) for x in (lo[0], hi[0]) for y in (lo[1], hi[1])]
+    reach = min(abs(float((p - wall.origin) @ wall.normal)) for p in corners)
+    assert abs(float((soap - wall.origin) @ wall.normal)) < reach + 0.2

@@ -37,7 +37,8 @@ KNOWN: dict[str, str] = {
 #: with what blocks it and what to write instead.
 IMPOSSIBLE = {"living_sofa_wall", "shelf_panel_set_in", "named_support_parts",
               "heap_of_round_things", "hung_by_a_named_part", "hung_by_collar",
-              "iron_on_a_leaning_board", "flat_things_fall_flat", "backpack_leans_further"}
+              "iron_on_a_leaning_board", "flat_things_fall_flat", "backpack_leans_further",
+              "layout_emptied"}
 
 
 def room_files() -> list[Path]:

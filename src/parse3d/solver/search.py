@@ -31,6 +31,7 @@ from .geometry import asset_geometry
 from .intent import whole_object
 from .placement import Placement, place_object, resolution, scaled_mesh
 from .rules import RULES
+from .rules.layout import nearest
 from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
 
@@ -209,7 +210,7 @@ class _Search:
             keys = {i: str(self.edge_index[id(edges[i])]) for i in step}
             for key in keys.values():
                 self.relaxed[key] = reason
-            loose = {i: whole_object(edges[i]) for i, how in step.items() if how == "loose"}
+            loose = {i: loosened(edges[i]) for i, how in step.items() if how == "loose"}
             self.whole.extend(keys[i] for i in loose)
             try:
                 p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"), cheap,
@@ -228,7 +229,7 @@ class _Search:
     def try_place(self, oid: str, stage: str, proposal=None, keep=None,
                   smallest: bool = False) -> Placement:
         rng = stage_rng(self.seed, stage)
-        loose = {i: whole_object(e) for i, e in enumerate(self.pag.edges_of(oid))
+        loose = {i: loosened(e) for i, e in enumerate(self.pag.edges_of(oid))
                  if i > 0 and str(self.edge_index[id(e)]) in self.whole}
         return self.place(oid, rng, self.cfg, proposal=proposal, keep=keep, smallest=smallest,
                           loosen=loose)
@@ -673,7 +674,8 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
                ) -> list[dict[int, str]]:
     """The steps by which ``oid``'s non-support relations are relaxed, each ``{edge index:
     "skip" | "loose"}`` (``loose``: a part-level contact named by a part, placed by the whole
-    object instead): each edge the failure ``reason`` names alone first (the last named
+    object instead; a layout relation, placed at the free positions nearest its region): each
+    edge the failure ``reason`` names alone first (the last named
     first), then every object-level relation, then part-level contacts as well by the whole
     object, and last every one left out (at most ``MAX_RELAX_STEPS`` steps). Support
     relations are never relaxed; ``done`` (edges already left out) is left out."""
@@ -684,7 +686,8 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
     part = [i for i in free if order[i] > 0]
 
     def soft(i: int) -> str:
-        return "loose" if edges[i].child.part is not None and order[i] > 0 else "skip"
+        return "loose" if (edges[i].child.part is not None and order[i] > 0) \
+            or RULES[edges[i].relation].family == "layout" else "skip"
 
     steps: list[dict[int, str]] = []
     named = [i for i in _named_edges(pag, oid, reason) if i in free]
@@ -695,9 +698,9 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
         if soft(i) == "loose":
             steps.append({i: "skip"})
     if obj:
-        steps.append(dict.fromkeys(obj, "skip"))
+        steps.append({i: soft(i) for i in obj})
     if any(soft(i) == "loose" for i in part):
-        steps.append({**dict.fromkeys(obj, "skip"), **{i: soft(i) for i in part}})
+        steps.append({**{i: soft(i) for i in obj}, **{i: soft(i) for i in part}})
     out: list[dict[int, str]] = []
     for st in steps:
         if st and st not in out:
@@ -705,6 +708,13 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
     last = dict.fromkeys(obj + part, "skip")  # every one left out: always tried, last
     out = [st for st in out if st != last][:MAX_RELAX_STEPS - 1]
     return out + ([last] if last else [])
+
+
+def loosened(e):
+    """What a relaxed edge is placed by instead: a layout relation by the free positions
+    nearest its region (:func:`~.rules.layout.nearest`), a part-level contact by the whole
+    object (:func:`~.intent.whole_object`)."""
+    return nearest(e) if RULES[e.relation].family == "layout" else whole_object(e)
 
 
 #: Placements tried when relaxing one object's relations (each with half the draws and two

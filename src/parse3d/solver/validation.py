@@ -7,6 +7,7 @@ from ..measure.checks import check_edge
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
 from .rules import RULES
+from .rules.layout import relaxed_to_nearest
 from .state import SolveState
 from .support import Support
 
@@ -16,12 +17,13 @@ __all__ = ["validate_pose", "resolution", "relations_and_collisions"]
 def validate_pose(st: SolveState, cand: PlacedObject, support_edge: Edge, others: list[Edge],
                   sup: Support) -> tuple[bool, str, list]:
     """Check a candidate pose against the support edge (resolved on ``sup``) and the object's
-    other relations, in that order: ``(True, "", checks)`` with one ``(holds, residuals,
+    other relations, in that order (a layout relation relaxed to its nearest positions does not
+    reject it): ``(True, "", checks)`` with one ``(holds, residuals,
     detail)`` per edge, or ``(False, why the first one failed, [])``."""
     results = []
     for e in [support_edge, *others]:
         holds, res, detail = check_edge(st.scene, e, cand, resolved=resolution(e, sup.choice))
-        if not holds:
+        if not holds and not relaxed_to_nearest(e):
             return False, f"{e.relation} {e.child} -> {e.parent}: {detail}", []
         results.append((holds, res, detail))
     return True, "", results
@@ -45,7 +47,7 @@ def relations_and_collisions(st, cand, others, body, R, t) -> tuple[list | None,
     checks = []
     for e in others:
         holds, res, detail = check_edge(st.scene, e, cand)
-        if not holds:
+        if not holds and not relaxed_to_nearest(e):
             return None, f"{e.relation} {e.child} -> {e.parent}: {detail}"
         checks.append((holds, res, detail))
     body.move(R, t)

@@ -6,6 +6,8 @@ target)."""
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import shapely
 from shapely.geometry.base import BaseGeometry
@@ -27,7 +29,9 @@ from .base import (
     register,
 )
 
-__all__ = ["Distance", "Side", "Toward", "side_vector", "SQUARE_SHARE", "SQUARE_MIN_TOLERANCE"]
+__all__ = ["Distance", "Side", "Toward", "side_vector", "nearest", "relaxed_to_nearest",
+           "SQUARE_SHARE",
+           "SQUARE_MIN_TOLERANCE", "NEAREST_BAND"]
 
 _SIDE_DIRS = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
               "right": (1.0, 0.0, 0.0), "left": (-1.0, 0.0, 0.0)}
@@ -98,6 +102,8 @@ class Distance(LayoutRule):
             clip = d if rel == "NEAR" else RG.bounding_square(region).difference(d)
         new = RG.clip(region, clip)
         if new.is_empty or new.area < 1e-10:
+            if relaxed_to_nearest(e):
+                return closest(region, clip)
             raise emptied(e, ctx.sup, f"nothing within {dist:g} m of {e.parent.object} is free "
                            f"({free_room_text(region)})" if rel == "NEAR" else
                            f"nothing {dist:g} m or more from {e.parent.object} is free")
@@ -124,7 +130,7 @@ class Side(LayoutRule):
             # back): measured in 3-D, as the check does, every position on the support is on the
             # same side of the parent's centroid
             d = float((np.asarray(s.origin, float) - xB) @ nw)
-            if rel == "SIDE_OF" and d > 0:
+            if (rel == "SIDE_OF" and d > 0) or relaxed_to_nearest(e):
                 return region
             raise Fail(f"{rel} side {side!r} of {e.parent.object!r} is across {ctx.sup.name}"
                        + (f", which lies {-d:.2f} m on the other side of its centroid"
@@ -141,6 +147,8 @@ class Side(LayoutRule):
                 clip = RG.clip(clip, RG.strip(cB, gp, float(along.min()), float(along.max())))
         new = RG.clip(region, clip)
         if new.is_empty or new.area < 1e-10:
+            if relaxed_to_nearest(e):
+                return closest(region, clip)
             raise emptied(e, ctx.sup, f"the {side} of {e.parent.object} is taken or outside "
                           f"{ctx.sup.name}", f" side {side}")
         return new
@@ -183,6 +191,38 @@ class Toward(LayoutRule):
                                           tuple(cB + far * np.array([np.cos(a + half), np.sin(a + half)]))]))
         new = RG.clip(region, shapely.union_all(cones)) if cones else region
         return region if new.is_empty or new.area < 1e-10 else new
+
+
+#: Width (m) of the band of free positions nearest an emptied layout region that a relaxed
+#: layout relation keeps (beyond the distance from the free positions to that region).
+NEAREST_BAND = 0.1
+
+
+def nearest(e: Edge) -> Edge:
+    """The layout edge ``e`` relaxed to its nearest feasible pose: where its region would empty
+    the free positions, the child goes to the free positions nearest that region instead of
+    failing (a soap dispenser right of a sink at the counter's end stands as close to that
+    side as the counter allows). The relation is still checked, and recorded relaxed when it
+    does not hold."""
+    out = replace(e)
+    object.__setattr__(out, "_nearest", True)
+    return out
+
+
+def relaxed_to_nearest(e: Edge) -> bool:
+    """Whether ``e`` is a layout edge relaxed by :func:`nearest` (its check then does not reject
+    a pose: the region already holds the nearest positions)."""
+    return bool(getattr(e, "_nearest", False))
+
+
+def closest(region: BaseGeometry, clip: BaseGeometry) -> BaseGeometry:
+    """The part of ``region`` within ``NEAREST_BAND`` of its positions nearest ``clip`` (the
+    whole region when ``clip`` is empty or the band leaves no area)."""
+    if clip.is_empty or region.is_empty:
+        return region
+    d = float(region.distance(clip))
+    near = RG.clip(region, clip.buffer(d + NEAREST_BAND, 16))
+    return region if near.is_empty or near.area < 1e-10 else near
 
 
 def side_vector(st: SolveState, e, R: np.ndarray) -> np.ndarray:
