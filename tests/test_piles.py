@@ -10,11 +10,6 @@ import pytest
 from parse3d.measure.checks import object_centroid, world_points
 from test_rooms import solved
 
-#: Seeds that fail today since the deeper assets changed what is drawn, with why (not strict:
-#: a fix turns them green).
-TOWELS_STAND = ("towels standing in the basket with a rim (deeper asset) tip when settled, or "
-                "find no pose leaning on its rim")
-
 
 @pytest.mark.parametrize("seed", (0, 1, 2))
 def test_fruit_of_several_kinds_piles_in_one_bowl(seed):
@@ -40,8 +35,7 @@ def test_fruit_of_several_kinds_piles_in_one_bowl(seed):
     assert lower[:, 2].min() < upper[:, 2].min() <= lower[:, 2].max() + 0.01
 
 
-@pytest.mark.parametrize("seed", (pytest.param(0, marks=pytest.mark.xfail(
-    reason=TOWELS_STAND, strict=False)), 1, 2))
+@pytest.mark.parametrize("seed", (0, 1, 2))
 def test_towels_longer_than_a_small_basket_lie_in_it(seed):
     """Two towels IN a basket whose floor (about 0.15 m) is shorter than a towel at its drawn
     size: each is drawn smaller within the towel's size range, lies inside the basket's
