@@ -113,3 +113,50 @@ def test_long_things_stand_in_narrow_containers(seed):
         assert np.all(low[:2] >= box[:, :2].min(axis=0) - 1e-3), (child, low)
         assert np.all(low[:2] <= box[:, :2].max(axis=0) + 1e-3), (child, low)
         assert box[:, 2].min() <= low[2] < box[:, 2].max(), (child, low)
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3, 4))
+def test_long_things_stand_through_a_containers_mouth(seed):
+    """Cues in a wall rack and a bouquet in a vase: the container is drawn with a mouth that
+    takes them (no shelf over a rack's slots, no bud vase for a bouquet), each stands within
+    10 degrees of vertical with its lower end inside the container and its top above the
+    container's, and its IN relation holds after settling."""
+    from parse3d.measure.checks import world_points
+    from parse3d.measure.geometry import hull_extents
+
+    scene = solved("standing_through_mouths", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    held = {(c.relation, c.child): c.holds_settled for c in scene.relations}
+    for child, box_id in (("cue1", "cue_rack"), ("cue2", "cue_rack"), ("flowers", "vase")):
+        assert held[("IN", child)] is True, (child, seed)
+        o, c = scene.objects[child], scene.objects[box_id]
+        _, order = hull_extents(o.asset)
+        axis = o.transform(True)[:3, :3][:, order[2]] / o.scale
+        assert abs(axis[2]) >= np.cos(np.radians(10.0 if box_id == "cue_rack" else 45.0)), \
+            (child, axis)
+        pts, box = world_points(o, hull_only=True, settled=True), \
+            world_points(c, hull_only=True, settled=True)
+        low = pts[np.argmin(pts[:, 2])]
+        assert np.all(low[:2] >= box[:, :2].min(axis=0) - 1e-3), (child, low)
+        assert np.all(low[:2] <= box[:, :2].max(axis=0) + 1e-3), (child, low)
+        assert box[:, 2].min() <= low[2] < box[:, 2].max(), (child, low)
+        assert pts[:, 2].max() > box[:, 2].max(), (child, seed)
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3, 4))
+def test_a_plant_in_a_basket_has_the_free_height_it_needs(seed):
+    """A potted plant IN a basket: the basket is drawn with a floor whose free height takes a
+    plant (a handle arching low over it would leave none), the plant is placed, nothing of the
+    basket lies above its pot, and its IN relation holds after settling."""
+    from parse3d.measure.checks import world_points
+
+    scene = solved("plants_in_baskets", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    held = {(c.relation, c.child.split(":")[0]): c.holds_settled for c in scene.relations}
+    for child, basket in (("big_plant", "plant_basket"),):
+        assert held[("IN", child)] is True, (child, seed)
+        o, b = scene.objects[child], scene.objects[basket]
+        pts = world_points(o, hull_only=True, settled=True)
+        box = world_points(b, hull_only=True, settled=True)
+        assert box[:, 2].min() <= pts[:, 2].min() < box[:, 2].max(), (child, seed)
+        assert pts[:, 2].max() > box[:, 2].max(), (child, seed)

@@ -69,7 +69,7 @@ from .sampling import (
     well_inside,
 )
 from .stacking import STACK_CENTRE, STACK_OVER, may_stack, place_stacked, stack_centre
-from .standing import may_stand_in, place_standing
+from .standing import may_stand_in, place_standing, standing_instance
 from .state import SolveState, plane_coords, plane_key, support_chain
 from .support import Support
 from .validation import resolution, validate_pose
@@ -134,6 +134,10 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         if keep is None and attempt == 0:  # nests, has room on its top (fit.py)
             category, asset = instance_for(st, library, oid, support_edge, category, asset,
                                            lambda a, r=reqs: lacks(a, r) is None, tried, rng)
+            # a mouth that takes what stands in it (standing.py)
+            category, asset = standing_instance(st, library, oid, support_edge, category,
+                                                asset, lambda a, r=reqs: lacks(a, r) is None,
+                                                tried, rng)
             tried.add(asset.asset_id)
         category, asset, scale, short = instance_scale(
             st, oid, library, node, category, asset, reqs, tried, rng, attempt=attempt,

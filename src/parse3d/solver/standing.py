@@ -31,7 +31,8 @@ from .nesting import pieces_drop
 from .state import SolveState
 from .support import Support
 
-__all__ = ["may_stand_in", "place_standing", "STAND_TILT_DEG", "LONG"]
+__all__ = ["may_stand_in", "place_standing", "stands_upright", "standing_instance",
+           "STAND_TILT_DEG", "LONG"]
 
 #: A child is long when its longest extent is at least this multiple of its middle one.
 LONG = 1.5
@@ -52,8 +53,9 @@ STAND_BUDGET = 160
 STAND_SIDES = 6
 
 #: Where the lower end is put: shares of the way from the floor's centre to its edge, away
-#: from the lean and across it (beside what already stands there).
-_FEET = ((0.6, 0.0), (0.5, 0.5), (0.5, -0.5), (0.2, 0.0), (-0.3, 0.0))
+#: from the lean and across it (beside what already stands there); last the middle, where a
+#: child as wide as the floor stands upright (a cue's butt in a rack's cup, its shaft in a clip).
+_FEET = ((0.6, 0.0), (0.5, 0.5), (0.5, -0.5), (0.2, 0.0), (-0.3, 0.0), (0.0, 0.0))
 #: Positions drawn anywhere on the floor, leaning any way, when others stand there already.
 _ANYWHERE = 10
 #: The same, for a child leaning the way one already standing there leans (beside it).
@@ -64,6 +66,10 @@ HOVER = 0.01
 
 #: Metres the lower end may stay above the floor (its curve, collision pieces a little proud).
 FLOOR_TOL = 0.012
+
+#: Pool slots per candidate category looked at for a container whose mouth takes what stands
+#: in it, and for a child that stands in the container drawn.
+MOUTH_SLOTS = 8
 
 #: Asset axis -> surface label of its negative and positive side.
 _LABELS = {0: ("left", "right"), 1: ("back", "front"), 2: ("bottom", "top")}
@@ -151,6 +157,151 @@ def _edge_distance(region, c: np.ndarray, d: np.ndarray) -> float:
     return float(cut.length) if not cut.is_empty else 0.0
 
 
+def _lowest(Y: np.ndarray, up: np.ndarray) -> np.ndarray:
+    """The middle of the points of ``Y`` (N, 3) within 1 mm of the lowest along ``up``: the
+    centre of a flat end standing upright (a cue's butt in the middle of its cup), not one
+    vertex of its rim."""
+    h = Y @ up
+    return Y[h <= h.min() + 1e-3].mean(axis=0)
+
+
+def _unit_scale(asset: Asset) -> float:
+    """The scale that brings ``asset`` into its category's size range (1 when it is in it)."""
+    lo, hi = asset.size_range
+    size = asset_geometry(asset).size
+    return float(np.clip(1.0, lo / max(size, 1e-6), hi / max(size, 1e-6)))
+
+
+def _long(asset: Asset) -> bool:
+    ext = np.sort(np.ptp(asset_geometry(asset).hull, axis=0))
+    return bool(ext[2] >= LONG * ext[1])
+
+
+def stands_upright(container: Asset, c_scale: float, child: Asset, scale: float,
+                   edge: Edge) -> bool | None:
+    """Whether ``child`` (scaled by ``scale``) stands upright, its lower end over the middle
+    of one of the internal floors of ``container`` (scaled by ``c_scale``), touching nothing of
+    it: the mouth takes it (a bouquet's fanning stems in a bud vase's neck do not). None when
+    the child would not stand in it (not long, or the container's floor is as wide as it is
+    long: it lies there)."""
+    if not _long(child):
+        return None
+    hull = asset_geometry(child).hull * scale
+    length = float(np.ptp(hull, axis=0).max())
+    floors = [ins.surface for ins in container.internal if abs(float(ins.surface.normal[2])) >= 0.99]
+    floors = [f for f in floors
+              if max(np.ptp(np.asarray(f.polygon.envelope.exterior.coords), axis=0)) * c_scale < length]
+    if not floors:
+        return None
+    axis, sign = _down_end(child, edge)
+    R = _rotation(axis, sign, 0.0, 0.0, 0.0)
+    Y = hull @ R.T
+    low = _lowest(Y, np.array([0.0, 0.0, 1.0]))
+    mine = piece_data(child, child.parts)
+    theirs = piece_data(container, container.parts)
+    Tc = np.eye(4)
+    Tc[:3, :3] *= c_scale
+    for f in floors:
+        p = f.polygon.representative_point() if not f.polygon.contains(f.polygon.centroid) \
+            else f.polygon.centroid
+        foot3 = np.asarray(f.to_3d(np.array([[p.x, p.y]])), float).reshape(3) * c_scale
+        T = np.eye(4)
+        T[:3, :3] = R * scale
+        T[:3, 3] = foot3 - low + np.array([0.0, 0.0, HOVER])
+        if pieces_distance(mine, T, theirs, Tc, limit=1e-3) > 0:
+            return True
+    return False
+
+
+def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: str,
+                      asset: Asset, usable, tried: set[str],
+                      rng: np.random.Generator) -> tuple[str, Asset]:
+    """``(category, asset)`` for the first attempt at ``oid`` (support edge ``edge``), so that
+    what stands in a narrow container fits through its mouth (:func:`stands_upright`):
+
+    - a long child ``IN`` a placed object: the drawn instance when it stands upright there,
+      else the first of :data:`MOUTH_SLOTS` random pool slots per candidate category that does
+      (flowers slim enough for the vase drawn);
+    - a container with long children written ``IN`` it, not placed yet: the drawn instance
+      when its mouth takes the most of the first :data:`MOUTH_SLOTS` pool slots of each
+      child's categories, else the instance looked at that takes the most (a vase whose neck
+      takes a bouquet, not a bud vase).
+
+    A container with children written ``IN`` it that would not stand there (a potted plant in
+    a basket) is drawn likewise with a floor whose free height takes the lowest of each
+    child's first :data:`MOUTH_SLOTS` pool slots, at the least scale its node allows (a
+    basket whose handle leaves the leaves no room is passed over). Unchanged for anything
+    else, and when no instance looked at does better."""
+    if getattr(library, "load", None) is None:
+        return category, asset
+    k = int(getattr(library, "per_category", 20))
+    cands = st.pag.objects[oid].candidates
+    parent = st.scene.objects.get(edge.parent.object)
+    if edge.relation == "IN" and not edge.parent.is_room_element and parent is not None \
+            and parent.placed and parent.asset is not None:
+        def fits(a: Asset) -> bool | None:
+            return stands_upright(parent.asset, parent.scale, a, _unit_scale(a), edge)
+
+        if fits(asset) is not False:
+            return category, asset
+        for ci in rng.permutation(len(cands)):
+            cat = cands[int(ci)]
+            for slot in rng.permutation(k)[:MOUTH_SLOTS]:
+                a = library.load(cat, int(slot))
+                if a.asset_id not in tried and usable(a) and fits(a):
+                    return cat, a
+        return category, asset
+    inside = [e for e in st.pag.relations
+              if e.relation == "IN" and e.parent.object == oid
+              and st.pag.supporter(e.child.object) is e
+              and not (set(st.pag.objects[e.child.object].candidates) & set(cands))]
+    if not inside:
+        return category, asset
+    kids = [(e, library.load(c, slot)) for e in inside
+            for c in st.pag.objects[e.child.object].candidates for slot in range(MOUTH_SLOTS)]
+
+    def least(oid_: str, a: Asset) -> float:
+        """The least scale the node of ``oid_`` allows ``a`` (its category's size, times the
+        low end of the node's ``scale`` range)."""
+        node = st.pag.objects[oid_]
+        return _unit_scale(a) * (float(node.scale[0]) if node.scale is not None else 1.0)
+
+    # what does not stand in it lies or sits on its floor: the lowest of each child's
+    # instances looked at needs that much free height (a plant's leaves under a handle)
+    low = {}
+    for e, ka in kids:
+        if not _long(ka):
+            h = float(np.ptp(asset_geometry(ka).hull[:, 2])) * least(e.child.object, ka)
+            low[e.child.object] = min(low.get(e.child.object, np.inf), h)
+
+    def takes(a: Asset) -> tuple[int, int]:
+        """Verdicts ``(yes, no)``: of each child slot that would stand in ``a`` whether it
+        goes through its mouth, and of each child that would not whether the lowest of its
+        slots has the free height on one of its floors."""
+        s_ = least(oid, a)
+        got = [stands_upright(a, s_, ka, _unit_scale(ka), e) for e, ka in kids]
+        room = max((ins.clearance for ins in a.internal), default=0.0) * s_
+        got += [room >= h for h in low.values()]
+        return sum(g is True for g in got), sum(g is False for g in got)
+
+    yes, no = takes(asset)
+    if no == 0:
+        return category, asset
+    best = (yes, category, asset)
+    for ci in rng.permutation(len(cands)):
+        cat = cands[int(ci)]
+        for slot in rng.permutation(k)[:MOUTH_SLOTS]:
+            a = library.load(cat, int(slot))
+            if a.asset_id in tried or not usable(a):
+                continue
+            y, n = takes(a)
+            if y > best[0]:
+                best = (y, cat, a)
+            if y > 0 and n == 0:
+                return cat, a
+    return best[1], best[2]
+
+
 def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
                    edge: Edge, others: list[Edge], body: Body, rng: np.random.Generator,
                    validate) -> tuple:
@@ -180,7 +331,7 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
     def pose(R: np.ndarray, foot3: np.ndarray, hover: float):
         """``(T, t)``: the child turned by ``R``, its lowest point ``hover`` over ``foot3``."""
         Y = hull @ R.T
-        low = Y[int(np.argmin(Y @ s.normal))]
+        low = _lowest(Y, s.normal)
         t = foot3 - low + (floor + hover - float(foot3 @ s.normal)) * s.normal
         T = np.eye(4)
         T[:3, :3] = R * scale
