@@ -39,6 +39,7 @@ from .geometry import (
     ray_caster,
 )
 from .reach import (
+    MOUNTED_DEPTH,
     WIDE_LEAN_DEG,
     face_slabs,
     lean_range,
@@ -990,11 +991,38 @@ def _check_secured(ctx: CheckContext) -> Check:
         return sB
     c, _ = _contact(ctx, sB)
     if not c.holds:
+        c = _on_mounted(ctx, sB, c)
+    if not c.holds:
         return c
     zc = float(object_centroid(ctx.child, ctx.settled)[2])
     lo, hi = ctx.param("height")
     return Check(lo - 0.01 <= zc <= hi + 0.01, dict(c.residual, height=round(zc, 4)),
                  f"centre at {zc:.2f} m")
+
+
+def _on_mounted(ctx: CheckContext, sB: Surface, c: Check) -> Check:
+    """``c``, or a holding check when the child (normals within tolerance) touches what is
+    mounted on the parent part's face instead of the face itself: a screen on the VESA arms
+    fixed to a cart's mount plate, a sign on the face fixed in a stand's frame."""
+    pobj, ref = ctx.parent, ctx.edge.parent
+    if pobj is None or ref.part is None or c.residual.get("angle_deg", 90.0) > ANGLE_TOL_DEG \
+            or not 0 < c.residual.get("distance", -1.0) <= MOUNTED_DEPTH + DIST_TOL:
+        return c
+    pp = select_parts(pobj, ref)
+    Tp = pobj.transform(ctx.settled)
+    on, _ = mounted_parts(pobj, pp, sB, Tp)
+    if not on:
+        return c
+    parts = select_parts(ctx.child, ctx.edge.child)
+    pads, _ = _ends(ctx.child, parts, sB, ctx.settled, np.inf)  # through standoffs
+    parts = parts + [p for p in ctx.child.asset.parts if p.name in pads]
+    d = pieces_distance(piece_data(ctx.child.asset, parts), ctx.child.transform(ctx.settled),
+                        piece_data(pobj.asset, pp + on), Tp)
+    if not -PENETRATION_TOL <= d <= DIST_TOL:
+        return c
+    return Check(True, dict(c.residual, distance=round(d, 6), mounted=1.0),
+                 f"{c.detail}, touching what is mounted on {ref.object}:{ref.part} "
+                 f"({d * 1000:.2f} mm)")
 
 
 @check_rule("LEANING_AGAINST")

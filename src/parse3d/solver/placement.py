@@ -34,6 +34,7 @@ from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
 from .intent import beside, loose_reason, names_part, overhang, whole_object
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
+from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, obstacles
 from .rotation import solve_rotation
@@ -396,6 +397,8 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
     samples)`` drawn from it without building it. ``Fail`` when it is empty."""
     st, sup, cfg, F = d.st, d.sup, d.cfg, d.F
     rel, s, region0 = d.edge.relation, sup.surface, d.region0
+    if mounts(d):  # fixed by its back to a part smaller than it (mounting.py)
+        return mount_region(d), None
     # a deep hole (a sink cut-out) is an obstacle; a shallow well is filled (spanned)
     d.holes = holes = [RG.convex_footprint(hole) for hole in sup.holes]
     # a stack: ON an object of the same kind (their PAG nodes share a category)
