@@ -61,27 +61,6 @@ def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0, 
     return out
 
 
-def _bumpers(doors: list[Part | Joint], *, y_front: float, z_low: float, z_high: float) -> list[Part]:
-    """The clear stick-on bumpers a row of hinged doors closes on: a small disc let into the
-    carcass's front edge (at ``y_front``) near each door's free edge, one on the bottom panel's
-    edge (centre height ``z_low``) and one on the top's (``z_high``)."""
-    clear = M.solid((0.9, 0.92, 0.92), "plastic", 0.2)
-    out = []
-    for d in doors:
-        if not isinstance(d, Joint) or d.type != "revolute" or abs(d.axis[2]) < 0.5 \
-                or d.limits[0] == d.limits[1]:
-            continue  # a side-hinged door's hinge, not a mount or a flap
-        door = next(p for p in doors if isinstance(p, Part) and p.name == d.child_part)
-        (x0, _, _), (x1, _, _) = door.bounds
-        hinge_left = abs(float(d.origin[0]) - x0) < abs(float(d.origin[0]) - x1)
-        xb = x1 - 0.03 if hinge_left else x0 + 0.03
-        for j, zb in enumerate((z_low, z_high)):
-            out.append(make_part(f"{d.child_part}_bumper_{j}", "bumper",
-                                 S.cylinder(0.005, 0.002, center=(xb, y_front - 0.001, zb), axis=(0, 1, 0),
-                                            sections=8), clear))
-    return out
-
-
 def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: int, mat, hmat,
               style: str, glass=None, start: int = 0, gap: float = 0.003,
               parents: tuple[str, str] = ("body", "body")) -> list[Part | Joint]:
@@ -100,8 +79,7 @@ def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: 
 
 
 @register("bookcase", parts=("shelf", "side_panel", "back_panel"),
-          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin", "bumper"),
-          size_range=(0.9, 2.3),
+          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin"), size_range=(0.9, 2.3),
           density=550, variants=("open", "doored", "glass_doored"))
 def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
@@ -131,16 +109,12 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "doored":
         k = max(1, n // 2)
         z_top = plinth + k * inner / n + t
-        doors = _door_row("door", w=w, z0=plinth, z1=z_top, y_back=d / 2, n=2, mat=mat, hmat=hmat,
-                          style="shaker" if rng.random() < 0.6 else "flat",
-                          parents=("side_panel_0", "side_panel_1"))
-        # the doors close on bumpers on the bottom shelf's front edge and the one at their top
-        z_hi = levels[int(np.argmin(np.abs(levels - z_top)))] - t / 2
-        parts += doors + _bumpers(doors, y_front=d / 2, z_low=levels[0] - t / 2, z_high=z_hi)
+        parts += _door_row("door", w=w, z0=plinth, z1=z_top, y_back=d / 2, n=2, mat=mat, hmat=hmat,
+                           style="shaker" if rng.random() < 0.6 else "flat",
+                           parents=("side_panel_0", "side_panel_1"))
     elif variant == "glass_doored":
-        doors = _door_row("door", w=w, z0=plinth, z1=h_side, y_back=d / 2, n=2, mat=mat, hmat=hmat,
-                          style="glass", glass=glass_pane(rng), parents=("side_panel_0", "side_panel_1"))
-        parts += doors + _bumpers(doors, y_front=d / 2, z_low=levels[0] - t / 2, z_high=levels[-1] - t / 2)
+        parts += _door_row("door", w=w, z0=plinth, z1=h_side, y_back=d / 2, n=2, mat=mat, hmat=hmat,
+                           style="glass", glass=glass_pane(rng), parents=("side_panel_0", "side_panel_1"))
     return parts
 
 
@@ -234,7 +208,7 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin", "bumper"),
+@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin"),
           size_range=(0.45, 1.1), density=550, variants=("solid", "glass", "lift_up"), placement="wall")
 def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.4, 1.0), rng.uniform(0.28, 0.36), rng.uniform(0.5, 0.9)
@@ -257,9 +231,9 @@ def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                   handle_len=0.3, handle_at="bottom")
     n_door = 1 if w < 0.55 else 2
     style = "glass" if variant == "glass" else ("shaker" if rng.random() < 0.5 else "flat")
-    doors = _door_row("door", w=w, z0=0.0, z1=h, y_back=yf, n=n_door, mat=mat, hmat=hmat, style=style,
-                      glass=glass_pane(rng))
-    return parts + doors + _bumpers(doors, y_front=yf, z_low=t / 2, z_high=h - t / 2)
+    parts += _door_row("door", w=w, z0=0.0, z1=h, y_back=yf, n=n_door, mat=mat, hmat=hmat, style=style,
+                       glass=glass_pane(rng))
+    return parts
 
 
 def _lip(w: float, d: float, z: float, hgt: float, t: float) -> list[S.Shape]:

@@ -3,8 +3,7 @@
 Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
 ``handle`` and a ``modesty_panel``. Under the top: a four-leg table's glued ``corner_block`` s
 between its aprons and low ``stretcher`` s joining its legs; a pedestal table's two crossed
-``cleat`` s the column's ``mounting_plate`` is fixed to by four ``screw`` s (each cleat
-screwed up into the top by two more); a trestle table's ``corbel`` s bracing each upright under the
+``cleat`` s the column's ``mounting_plate`` is fixed to by four ``screw`` s; a trestle table's ``corbel`` s bracing each upright under the
 top and the ``wedge`` s locking the stretcher's ``tenon`` s.
 """
 
@@ -121,11 +120,6 @@ def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
     screws = [make_part(f"screw_{k}", "screw", S.cylinder(head, 0.003, center=(x, y, z_plate - pt / 2 - 0.0015), sections=8),
                         steel)
               for k, (x, y) in enumerate([(pw * 0.4, 0), (-pw * 0.4, 0), (0, pw * 0.4), (0, -pw * 0.4)])]
-    # and each cleat is screwed up into the top near both ends
-    ends = [(cl / 2 - 0.03, 0), (-cl / 2 + 0.03, 0), (0, cl / 2 - 0.03), (0, -cl / 2 + 0.03)]
-    screws += [make_part(f"screw_{4 + k}", "screw", S.cylinder(0.005, 0.002, center=(x, y, h_leg - 0.025 - 0.001), sections=8),
-                         steel)
-               for k, (x, y) in enumerate(ends)]
     return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12)), *cleats, plate, *screws]
 
 
