@@ -67,3 +67,26 @@ def test_a_croissant_on_a_croissant_rests_on_the_pile_in_its_basket(seed):
     assert np.all(c[:2] >= basket[:, :2].min(axis=0)), c
     assert np.all(c[:2] <= basket[:, :2].max(axis=0)), c
     assert c[2] > object_centroid(scene.objects["croissant1"], True)[2]
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_clothes_on_clothes_make_a_folded_pile(seed):
+    """Clothes ON clothes on a chair's seat (``clothes`` names folded, loose and hanging
+    clothes): the one below is drawn as an instance whose uppermost part is flat, not a dress
+    on a hanger whose hook stands up, so the upper one is placed on it; both end over the
+    seat and nothing falls; the upper one rests above the lower one."""
+    from parse3d.solver.choice import top_lies_flat
+
+    scene = solved("clothes_on_clothes", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    lower, upper = scene.objects["clothes1"], scene.objects["clothes2"]
+    assert top_lies_flat(lower.asset), lower.asset.asset_id
+    support = [c for c in scene.relations if c.relation == "ON" and c.child.startswith("clothes")]
+    assert all(c.holds for c in support), [(c.child, c.residual) for c in support]
+    seat = world_points(scene.objects["chair"], hull_only=True, settled=True)
+    below = world_points(lower, hull_only=True, settled=True)
+    c = object_centroid(upper, True)
+    assert np.all(c[:2] >= below[:, :2].min(axis=0)), c
+    assert np.all(c[:2] <= below[:, :2].max(axis=0)), c
+    assert c[2] > object_centroid(lower, True)[2]
+    assert below[:, 2].min() > seat[:, 2].min() + 0.2  # still on the seat, not on the floor

@@ -28,6 +28,8 @@ SEEDS = (0, 1, 2)
 KNOWN: dict[str, str] = {
     "contents_and_slumps": "seed 0: the cushion, repaired into a bolster, settles lying on the "
                            "seat and no longer leans on the back",
+    "clothes_on_clothes": "seed 0: the upper pile rests on the lower sweater's cuffs, which "
+                          "stand 6 mm above its top fold, and tilts 2 deg in settling",
     "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
                        "(relaxed, or failed)",
 }

@@ -30,7 +30,7 @@ from .support import _flat_cached, _flat_enough, cover_part, filled, support_can
 __all__ = ["THIN_HANG", "hung_edge_up", "HEADROOM_FIT", "SURFACE_AXES", "extent_along",
            "extent_across", "SPAN_PART", "SPAN_BEARING", "span_need", "free_headroom",
            "CONTENTS_AREA", "contents_scale", "edge_text", "touching", "requirements", "lacks",
-           "FREE_TOP", "FLAT_TOL", "lies_flat", "RIM_WIDTH", "RIM_OPENING", "rounded_rim",
+           "FREE_TOP", "FLAT_TOL", "lies_flat", "top_lies_flat", "TOP_BAND", "RIM_WIDTH", "RIM_OPENING", "rounded_rim",
            "free_top", "LAYER", "RANKED_SLOTS", "boards_hold", "too_tall_failure", "room_failure",
            "alternative_instance", "flush_edges", "part_overhang", "draw_instance",
            "instance_scale"]
@@ -211,6 +211,9 @@ def lacks(asset: Asset, reqs) -> str | None:
             if not any(lies_flat(asset, p) for p in asset.parts):
                 return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "
                         f"to stack on ({text})")
+            if not top_lies_flat(asset):
+                return (f"{asset.asset_id}'s uppermost part is not flat: the next one of its "
+                        f"kind would balance on it (a hanger's hook) ({text})")
             continue
         ps = asset.parts_by_label(label)
         if not ps:
@@ -284,6 +287,23 @@ def lies_flat(asset: Asset, part) -> bool:
             _LIES_FLAT.clear()
         got = _LIES_FLAT[key] = any(_flat_enough(part, lb, tol=FLAT_TOL, frac=0.5)
                                     for lb in ("top", "bottom"))
+    return got
+
+
+#: Metres below an asset's highest point within which its parts make its top (what the next
+#: one of its kind rests on).
+TOP_BAND = 0.01
+
+
+def top_lies_flat(asset: Asset) -> bool:
+    """Whether a part making the asset's top (within ``TOP_BAND`` of its highest point) lies
+    flat: a folded shirt's top fold, not a hanger's hook above a dress."""
+    key = (asset.asset_id, "<top>")
+    got = _LIES_FLAT.get(key)
+    if got is None:
+        zs = [float(part_points([p])[:, 2].max()) for p in asset.parts]
+        got = _LIES_FLAT[key] = any(lies_flat(asset, p) for p, z
+                                    in zip(asset.parts, zs, strict=True) if z > max(zs) - TOP_BAND)
     return got
 
 
