@@ -44,3 +44,13 @@ def test_a_screen_and_a_sign_are_mounted_by_their_backs(seed):
     e = scene.pag.relations[screen_rel.index]
     placed = e if screen_rel.relaxed is None else whole_object(e)
     assert check_edge(scene, placed, display, settled=True)[0]
+
+
+@pytest.mark.parametrize("seed", [1, 6, 12, 13])  # boards with notes and pins modelled
+def test_notes_go_on_the_cork_beside_the_modelled_ones(seed):
+    """A corkboard whose own notes and pins are parts on its face: notes written on it fit on
+    the cork between them, so they are not mounted onto a pin's head (9 mm off the cork)."""
+    scene = solved("notes_on_a_corkboard", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.child, c.residual_settled) for c in scene.relations if c.holds_settled is not True]
+    assert not broken, broken

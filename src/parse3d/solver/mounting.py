@@ -86,11 +86,16 @@ def _named_back(d: Any, Y: np.ndarray, hN: np.ndarray) -> np.ndarray:
 
 def mounts(d: Any) -> bool:
     """Whether the child of ``d`` (a :class:`~parse3d.solver.placement._OnSupport`) is
-    mounted: ``SECURED_TO`` an object's part whose face its footprint does not fit, or on
-    whose face other parts are fixed."""
+    mounted: ``SECURED_TO`` an object's part whose face its footprint does not fit, or does
+    not fit clear of the other parts fixed on that face."""
     if d.edge.relation != "SECURED_TO" or d.sup.owner == "room" or d.edge.parent.part is None:
         return False
-    return RG.erode(d.region0, [], d.F).is_empty or bool(_mounted(d))
+    if RG.erode(d.region0, [], d.F).is_empty:
+        return True
+    # parts on the face hold the child only where it does not fit between them: a note goes
+    # on a corkboard's cork beside the notes and pins modelled there, not onto a pin's head
+    fixed = _mounted(d)
+    return bool(fixed) and RG.erode(d.region0, [fp for _, _, fp in fixed], d.F).is_empty
 
 
 def mount_region(d: Any) -> BaseGeometry:
