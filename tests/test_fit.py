@@ -42,3 +42,18 @@ def test_a_rug_is_drawn_with_room_for_a_table_and_its_chairs(seed):
     broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
               if c.relation == "ON" and c.holds_settled is not True]
     assert not broken, broken
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_microwave_overhangs_a_mini_fridge_on_its_feet(seed):
+    """A microwave ON a mini fridge whose top is smaller than any microwave: it is placed,
+    its ON relation holds after settling (its feet on the top, its centre of mass over it),
+    and it stays upright."""
+    import numpy as np
+
+    scene = solved("microwave_on_mini_fridge", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    held = {(c.relation, c.child): c.holds_settled for c in scene.relations}
+    assert held[("ON", "microwave")] is True, held
+    up = scene.objects["microwave"].transform(True)[:3, 2] / scene.objects["microwave"].scale
+    assert up[2] >= np.cos(np.radians(5.0)), up

@@ -14,7 +14,7 @@ from parse3d.measure.checks import object_centroid
 from parse3d.pag import load_pag
 from parse3d.pipeline import settle_and_repair
 from parse3d.solver import solve
-from test_rooms import solved
+from test_rooms import ROOMS, solved
 
 EXAMPLES = Path(__file__).parent.parent / "examples"
 NESTED = (("bowl1", "bowl0"), ("mug1", "mug0"), ("plate1", "plate0"), ("plate2", "plate1"),
@@ -160,3 +160,27 @@ def test_a_plant_in_a_basket_has_the_free_height_it_needs(seed):
         box = world_points(b, hull_only=True, settled=True)
         assert box[:, 2].min() <= pts[:, 2].min() < box[:, 2].max(), (child, seed)
         assert pts[:, 2].max() > box[:, 2].max(), (child, seed)
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3, 4))
+def test_toothbrushes_share_a_tumbler(seed):
+    """Two toothbrushes written IN one tumbler both stand there, their IN relations holding
+    after settling: the first drawn leaves the second its share of the floor (together their
+    lower ends are no wider than the floor), nothing falls."""
+    from parse3d.solver.standing import end_width
+
+    scene = solved("toothbrushes_share_a_tumbler", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    pag = load_pag(ROOMS / "toothbrushes_share_a_tumbler.json")
+    cup = scene.objects["tumbler"]
+    floor = max(min(np.ptp(np.asarray(i.surface.polygon.envelope.exterior.coords), axis=0))
+                for i in cup.asset.internal if abs(float(i.surface.normal[2])) >= 0.99)
+    edges = {e.child.object: e for e in pag.relations if e.relation == "IN"}
+    widths = [end_width(scene.objects[k].asset, scene.objects[k].scale, edges[k])
+              for k in ("toothbrush1", "toothbrush2")]
+    assert sum(widths) <= floor * cup.scale * (1 + 1e-6), (widths, floor)
+    for k in ("toothbrush1", "toothbrush2"):
+        assert scene.objects[k].rests_on is not None, k

@@ -18,7 +18,8 @@ from ..measure.checks import BOARD_LABELS
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
-from .fit import roomy_scale, top_fit
+from .fit import FIT_SHARE, roomy_scale, top_fit
+from .fit import _sides as sup_sides
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
 from .hanging import edge_up, rail_scale, thinness, typical_size
 from .intent import names_part, overhang, soft
@@ -575,6 +576,53 @@ def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Gen
     return category, asset, reqs
 
 
+def top_short(st: SolveState, edge: Edge, asset: Asset, scale: float, axis: int) -> float:
+    """How much wider ``asset`` at ``scale`` is than the largest top it may stand ON (the
+    larger of its two side ratios; <= 1: it fits); 0 for anything not ON an object's top and
+    for a stack of one category (a loaf on a loaf may overhang it)."""
+    if edge.relation != "ON" or edge.parent.is_room_element \
+            or edge.parent.object not in st.scene.objects:
+        return 0.0
+    if set(st.pag.objects[edge.child.object].candidates) \
+            & set(st.pag.objects[edge.parent.object].candidates):
+        return 0.0
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return 0.0
+    ext = hull_extents(asset)[0]
+    c0, c1 = sorted(scale * float(ext[k]) for k in range(3) if k != axis)
+    best = float("inf")
+    for sup in sups:
+        s0, s1 = sup_sides(sup.region)
+        if s0 < LEDGE_SHARE * c0:
+            return 0.0  # a ledge it leans on (a score on a music rest), not a top to stand on
+        best = min(best, max(c0 / s0, c1 / s1))
+    return best if np.isfinite(best) else 0.0
+
+
+#: A top narrower than this share of the child's short side is a ledge the child leans on.
+LEDGE_SHARE = 0.3
+
+
+def cramped_scale(st: SolveState, library, oid: str, asset: Asset, scale: float) -> float:
+    """The largest scale the node allows ``asset`` when what is written ON its top (only ON,
+    not IN a tray) is wider than that top both ways even then (:func:`.fit.roomy_scale` keeps
+    ``scale``): a microwave's feet on a mini fridge need all of it. Else ``scale``."""
+    from .fit import _max_scale, _needs, top_sides
+
+    needs = _needs(st, library, oid, asset)
+    if not needs or any(e.relation != "ON" for e, _ in needs):
+        return scale
+    top = _max_scale(st, oid, asset)
+    # wider than the top both ways even at that scale: the feet need all of it
+    for e, (w0, w1) in needs:
+        a, b = top_sides(asset, e)
+        if a > 0 and w0 > a * top and w1 > b * top:
+            return top
+    return scale
+
+
 def instance_scale(st: SolveState, oid: str, library, node, category: str, asset: Asset,
                    reqs: list, tried: set[str], rng: np.random.Generator, *, attempt: int,
                    keep, support_edge: Edge, axis: int, headroom: float):
@@ -597,7 +645,12 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
     # and a rail with several things hung below it long enough for them (towels on a bar)
     scale = max(scale, min(rail_scale(pag, oid, asset), hi / max(size, 1e-6)))
     scale *= 0.92 ** max(0, attempt - 2)  # other instances first, then smaller ones
-    scale = roomy_scale(st, library, oid, asset, scale)  # room on its top (fit.py)
+    roomy = roomy_scale(st, library, oid, asset, scale)  # room on its top (fit.py)
+    if roomy == scale and keep is None:
+        # no scale allowed gives what goes ON its top room (a microwave on a small fridge):
+        # the largest allowed, so the rest overhangs as little as it can
+        roomy = max(scale, cramped_scale(st, library, oid, asset, scale))
+    scale = roomy
     if keep is not None and attempt == 0:
         scale = keep.scale
     elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:
@@ -619,6 +672,18 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
         scale = floor_fit(st, support_edge, asset, scale, axis)
         if span_need(st, support_edge) <= 0:  # not resting across several parts
             scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
+            if keep is None and top_short(st, support_edge, asset, scale, axis) > 1.0:
+                # wider than the top even so: the smallest untried instance, at the least
+                # size its category allows (it overhangs, its feet on the top)
+                alt = alternative_instance(library, node.candidates, reqs, tried, rng,
+                                           smallest=True)
+                if alt is not None and top_short(st, support_edge, alt[1], 1.0, axis) \
+                        < top_short(st, support_edge, asset, 1.0, axis):
+                    category, asset = alt
+                    tried.add(asset.asset_id)
+                lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+                r = top_short(st, support_edge, asset, 1.0, axis)
+                scale = max(lo, min(scale, FIT_SHARE / r)) if r > 0 else scale
     reach = span_need(st, support_edge)
     if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
         # too short to rest across the parts it must span (a keyboard on a stand's two

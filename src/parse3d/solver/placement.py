@@ -43,6 +43,7 @@ from .sampling import (
     HANGS_OFF,
     ROLL_EDGE,
     THIN_LOW,
+    base_centred,
     base_supported,
     covered_centres,
     face_target,
@@ -571,6 +572,10 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
         seats.sort(key=lambda a: covered_centres(F, a, centres))
         if seats:
             samples = np.vstack([np.array(seats), samples])[:len(samples)]
+    if d.overhang and rel == "ON" and not sup.spans and not d.stack:
+        # wider than its support (a microwave on a small fridge): its base centred over the
+        # support first, where its feet have the most room (sampling.py)
+        samples = np.vstack([base_centred(asset, scale, R, s, d.base_solid), samples])
     # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
     return concentric_first(st, oid, sup, asset, scale, R, samples)
 

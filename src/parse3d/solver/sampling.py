@@ -333,6 +333,19 @@ def never_upright(asset: Asset, scale: float, R: np.ndarray, s, solid) -> bool:
     return held < 0.3 * rect_sides(base)[0] * (1.0 - 1e-6)
 
 
+def base_centred(asset: Asset, scale: float, R: np.ndarray, s, solid) -> np.ndarray:
+    """The position (plane coordinates of the child's origin) that puts the middle of the
+    child's base (its points within 3 mm of its lowest, turned by ``R``) over the middle of
+    ``solid``: where an overhanging child's feet have the most room."""
+    n = s.normal
+    w = np.vstack([part_points([p]) for p in asset.parts]) * scale @ R.T
+    h = w @ n
+    low = w[h <= h.min() + 3e-3]
+    base = shapely.MultiPoint(np.c_[low @ s.u, low @ s.v]).convex_hull.centroid
+    mid = solid.centroid
+    return np.array([mid.x - base.x, mid.y - base.y])
+
+
 def resting_part(st: SolveState, sup: Support, cand: PlacedObject) -> str | None:
     """The part of ``sup``'s owner that the child rests on: among the owner's pieces under the
     child's base (its points within 3 mm of its lowest), the one whose top is within 3 mm of

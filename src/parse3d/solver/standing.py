@@ -31,7 +31,7 @@ from .nesting import pieces_drop
 from .state import SolveState
 from .support import Support
 
-__all__ = ["may_stand_in", "place_standing", "stands_upright", "standing_instance",
+__all__ = ["end_width", "may_stand_in", "place_standing", "stands_upright", "standing_instance",
            "STAND_TILT_DEG", "LONG"]
 
 #: A child is long when its longest extent is at least this multiple of its middle one.
@@ -60,6 +60,9 @@ _FEET = ((0.6, 0.0), (0.5, 0.5), (0.5, -0.5), (0.2, 0.0), (-0.3, 0.0), (0.0, 0.0
 _ANYWHERE = 10
 #: The same, for a child leaning the way one already standing there leans (beside it).
 _BESIDE = ((0.4, 0.7), (0.4, -0.7), (0.0, 0.75), (0.0, -0.75))
+
+#: Metres of the lower end of a standing child that make its footprint (:func:`end_width`).
+_END = 0.01
 
 #: Metres above the floor at which the tilt is found (before sliding down onto it).
 HOVER = 0.01
@@ -213,6 +216,16 @@ def stands_upright(container: Asset, c_scale: float, child: Asset, scale: float,
     return False
 
 
+def end_width(child: Asset, scale: float, edge: Edge) -> float:
+    """Widest horizontal extent (metres) of the lower end of ``child`` (scaled by ``scale``)
+    standing upright: the floor its handle or stems take."""
+    hull = asset_geometry(child).hull * scale
+    axis, sign = _down_end(child, edge)
+    Y = hull @ _rotation(axis, sign, 0.0, 0.0, 0.0).T
+    end = Y[Y[:, 2] <= Y[:, 2].min() + _END]
+    return float(np.ptp(end[:, :2], axis=0).max()) if len(end) > 1 else 0.0
+
+
 def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: str,
                       asset: Asset, usable, tried: set[str],
                       rng: np.random.Generator) -> tuple[str, Asset]:
@@ -239,8 +252,24 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
     parent = st.scene.objects.get(edge.parent.object)
     if edge.relation == "IN" and not edge.parent.is_room_element and parent is not None \
             and parent.placed and parent.asset is not None:
+        # what is written to stand there shares its floor: each long child not placed yet
+        # gets as wide a share of it (two toothbrushes in a tumbler: neither takes over half)
+        coming = 1 + sum(1 for e in st.pag.relations
+                         if e.relation == "IN" and e.parent.object == parent.id
+                         and e.child.object != oid and st.pag.supporter(e.child.object) is e
+                         and not getattr(st.scene.objects.get(e.child.object), "placed", False))
+        floors = [ins.surface.polygon for ins in parent.asset.internal
+                  if abs(float(ins.surface.normal[2])) >= 0.99]
+        wide = max((min(np.ptp(np.asarray(f.envelope.exterior.coords), axis=0)) for f in floors),
+                   default=0.0) * parent.scale
+
         def fits(a: Asset) -> bool | None:
-            return stands_upright(parent.asset, parent.scale, a, _unit_scale(a), edge)
+            up = stands_upright(parent.asset, parent.scale, a, _unit_scale(a), edge)
+            if up is None:
+                return up
+            if up and coming > 1 and end_width(a, _unit_scale(a), edge) * coming > wide:
+                return False
+            return up
 
         if fits(asset) is not False:
             return category, asset
