@@ -57,21 +57,3 @@ def test_microwave_overhangs_a_mini_fridge_on_its_feet(seed):
     assert held[("ON", "microwave")] is True, held
     up = scene.objects["microwave"].transform(True)[:3, 2] / scene.objects["microwave"].scale
     assert up[2] >= np.cos(np.radians(5.0)), up
-
-
-#: Why seed 2 of the two suitcases on a cart fails (not strict: a fix turns it green).
-LYING_CASE = ("the lying suitcase drawn is too long for what is left of the deck beside the "
-              "upright one: it is neither turned nor drawn smaller to fit the rest")
-
-
-@pytest.mark.parametrize("seed", (0, 1, pytest.param(2, marks=pytest.mark.xfail(
-    reason=LYING_CASE, strict=False))))
-def test_children_on_one_top_are_packed_from_one_end(seed):
-    """Two suitcases ON a luggage cart's deck, one upright, one lying: the first is packed to
-    one end of the deck's long side, so the second finds room beside it; both placed, nothing
-    fell, and both ON relations hold after settling."""
-    scene = solved("cases_side_by_side", seed)
-    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
-    on = [c for c in scene.relations if c.relation == "ON" and str(c.parent).startswith("luggage_cart")]
-    assert len(on) == 2, on
-    assert all(c.holds_settled for c in on), [(c.child, c.residual_settled) for c in on]

@@ -32,8 +32,6 @@ KNOWN: dict[str, str] = {
                           "stand 6 mm above its top fold, and tilts 2 deg in settling",
     "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
                        "(relaxed, or failed)",
-    "cases_side_by_side": "seed 2: the lying suitcase drawn is too long for what is left of the "
-                          "deck beside the upright one (neither turned nor drawn smaller)",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

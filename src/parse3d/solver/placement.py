@@ -59,7 +59,6 @@ from .sampling import (
     middle_first,
     never_upright,
     no_space,
-    on_siblings,
     owner_pieces,
     reach_box,
     region_context,
@@ -554,7 +553,7 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
     st, oid, sup, asset, scale, R, F = d.st, d.oid, d.sup, d.asset, d.scale, d.R, d.F
     s, rel, region0 = sup.surface, d.edge.relation, d.region0
     samples = leave_room(st, oid, sup, R, F, region0, samples)
-    if (RULES[rel].hangs and hung_siblings(st, oid, d.edge)) or on_siblings(st, oid, d.edge):
+    if RULES[rel].hangs and hung_siblings(st, oid, d.edge):
         samples = from_one_end(samples, region0)
     if rel == "IN" and sup.owner != "room" and round_asset(asset):
         samples = middle_first(samples, region0, F, asset, scale, R, s)

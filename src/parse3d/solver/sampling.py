@@ -23,7 +23,7 @@ from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
 
-__all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces", "on_siblings",
+__all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces",
            "round_asset", "middle_first", "inset", "reach_box", "step_height", "step_under",
            "hung_siblings", "from_one_end", "leave_room", "base_supported", "never_upright",
            "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
@@ -193,20 +193,6 @@ def hung_siblings(st: SolveState, oid: str, edge: Edge) -> bool:
         return False
     return any(e.relation == "HANGING_BELOW" and e.parent.object == edge.parent.object
                and e.child.object != oid and e.child.object not in st.xy
-               for e in touching(st.pag, edge.parent.object))
-
-
-def on_siblings(st: SolveState, oid: str, edge: Edge) -> bool:
-    """Whether other objects still to be placed stand ON the same top of the same object as
-    ``oid`` (two suitcases on a luggage cart's deck, cases on one shelf): packed from one end
-    of its long side, each leaves the rest of it free for the others."""
-    if edge.relation != "ON" or edge.parent.is_room_element:
-        return False
-    where = (edge.parent.part, edge.parent.index, edge.parent.surface or "top")
-    return any(e.relation == "ON" and e.parent.object == edge.parent.object
-               and (e.parent.part, e.parent.index, e.parent.surface or "top") == where
-               and e.child.object != oid and e.child.object not in st.xy
-               and st.pag.supporter(e.child.object) is e
                for e in touching(st.pag, edge.parent.object))
 
 
