@@ -65,8 +65,21 @@ class _Stage:
         self.name, self._t, self._c = name, now, cpu
 
 
+#: Seconds between repeated alarms after the time limit: a SceneTimeout raised where Python
+#: drops exceptions (a finaliser run by the garbage collector at that moment) is raised again.
+ALARM_REPEAT = 0.05
+
+_ALARM = {"armed": False}
+
+
 def _on_alarm(signum, frame):
-    raise SceneTimeout()
+    if _ALARM["armed"]:
+        raise SceneTimeout()
+
+
+def _disarm() -> None:
+    _ALARM["armed"] = False
+    signal.setitimer(signal.ITIMER_REAL, 0.0)
 
 
 def _base_record(plan: ScenePlan, config: BuildConfig) -> dict[str, Any]:
@@ -115,7 +128,8 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
     old = None
     if use_alarm:
         old = signal.signal(signal.SIGALRM, _on_alarm)
-        signal.setitimer(signal.ITIMER_REAL, float(config.time_limit))
+        _ALARM["armed"] = True
+        signal.setitimer(signal.ITIMER_REAL, float(config.time_limit), ALARM_REPEAT)
     tmp = None
     try:
         stage.enter("expand")
@@ -147,6 +161,8 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         record["scene"] = scene_folder(plan.index)
         return SceneOutcome(_finish(record, stage, wall, cpu), files)
     except SceneTimeout:
+        if use_alarm:
+            _disarm()
         where = stage.name
         stage.enter("done")
         record["status"] = "timeout"
@@ -159,7 +175,7 @@ def build_scene(config: BuildConfig, index: int, *, source: SceneSource | None =
         return SceneOutcome(_finish(record, stage, wall, cpu), error=traceback.format_exc())
     finally:
         if use_alarm:
-            signal.setitimer(signal.ITIMER_REAL, 0.0)
+            _disarm()
             signal.signal(signal.SIGALRM, old)
         if tmp is not None:
             shutil.rmtree(tmp, ignore_errors=True)
