@@ -89,30 +89,37 @@ STANDING = (("pen1", "mug"), ("pen2", "mug"), ("pen3", "mug"), ("toothbrush1", "
             ("toothbrush2", "tumbler"))
 
 
+def _stands_in(scene, child: str, container: str, max_tilt_deg: float):
+    """Assert ``child`` stands within ``max_tilt_deg`` of vertical (its longest axis) with its
+    lowest point inside ``container``'s box, after settling; returns both hulls' points."""
+    from parse3d.measure.checks import world_points
+    from parse3d.measure.geometry import hull_extents
+
+    o, c = scene.objects[child], scene.objects[container]
+    _, order = hull_extents(o.asset)
+    axis = o.transform(True)[:3, :3][:, order[2]] / o.scale
+    assert abs(axis[2]) >= np.cos(np.radians(max_tilt_deg)), (child, axis)
+    pts, box = world_points(o, hull_only=True, settled=True), \
+        world_points(c, hull_only=True, settled=True)
+    low = pts[np.argmin(pts[:, 2])]
+    assert np.all(low[:2] >= box[:, :2].min(axis=0) - 1e-3), (child, low)
+    assert np.all(low[:2] <= box[:, :2].max(axis=0) + 1e-3), (child, low)
+    assert box[:, 2].min() <= low[2] < box[:, 2].max(), (child, low)
+    return pts, box
+
+
 @pytest.mark.parametrize("seed", (0, 1, 2))
 def test_long_things_stand_in_narrow_containers(seed):
     """Pens in a mug, toothbrushes in a tumbler (too long to lie on its floor): each is placed,
     stands with its long axis within 45 degrees of vertical, its lower end inside the
     container below its rim, and its IN relation holds after settling."""
-    from parse3d.measure.checks import world_points
-    from parse3d.measure.geometry import hull_extents
-
     scene = solved("standing_in_cups", seed)
     assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
     broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
               if c.holds_settled is not True]
     assert not broken, broken
     for child, cup in STANDING:
-        o, c = scene.objects[child], scene.objects[cup]
-        _, order = hull_extents(o.asset)
-        axis = o.transform(True)[:3, :3][:, order[2]] / o.scale
-        assert abs(axis[2]) >= np.cos(np.radians(45.0)), (child, axis)
-        pts, box = world_points(o, hull_only=True, settled=True), \
-            world_points(c, hull_only=True, settled=True)
-        low = pts[np.argmin(pts[:, 2])]
-        assert np.all(low[:2] >= box[:, :2].min(axis=0) - 1e-3), (child, low)
-        assert np.all(low[:2] <= box[:, :2].max(axis=0) + 1e-3), (child, low)
-        assert box[:, 2].min() <= low[2] < box[:, 2].max(), (child, low)
+        _stands_in(scene, child, cup, 45.0)
 
 
 @pytest.mark.parametrize("seed", (0, 1, 2, 3, 4))
@@ -121,25 +128,12 @@ def test_long_things_stand_through_a_containers_mouth(seed):
     takes them (no shelf over a rack's slots, no bud vase for a bouquet), each stands within
     10 degrees of vertical with its lower end inside the container and its top above the
     container's, and its IN relation holds after settling."""
-    from parse3d.measure.checks import world_points
-    from parse3d.measure.geometry import hull_extents
-
     scene = solved("standing_through_mouths", seed)
     assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
     held = {(c.relation, c.child): c.holds_settled for c in scene.relations}
     for child, box_id in (("cue1", "cue_rack"), ("cue2", "cue_rack"), ("flowers", "vase")):
         assert held[("IN", child)] is True, (child, seed)
-        o, c = scene.objects[child], scene.objects[box_id]
-        _, order = hull_extents(o.asset)
-        axis = o.transform(True)[:3, :3][:, order[2]] / o.scale
-        assert abs(axis[2]) >= np.cos(np.radians(10.0 if box_id == "cue_rack" else 45.0)), \
-            (child, axis)
-        pts, box = world_points(o, hull_only=True, settled=True), \
-            world_points(c, hull_only=True, settled=True)
-        low = pts[np.argmin(pts[:, 2])]
-        assert np.all(low[:2] >= box[:, :2].min(axis=0) - 1e-3), (child, low)
-        assert np.all(low[:2] <= box[:, :2].max(axis=0) + 1e-3), (child, low)
-        assert box[:, 2].min() <= low[2] < box[:, 2].max(), (child, low)
+        pts, box = _stands_in(scene, child, box_id, 10.0 if box_id == "cue_rack" else 45.0)
         assert pts[:, 2].max() > box[:, 2].max(), (child, seed)
 
 
