@@ -495,12 +495,29 @@ def rolling_tv_stand(rng: np.random.Generator, variant: str) -> list[Part]:
 # ---------------------------------------------------------- pub, café, bathroom, tea room
 
 
-@register("pint_glass", parts=("body",), extra_parts=("beer", "foam"), size_range=(0.14, 0.18), density=2500,
+@register("pint_glass", parts=("body",), extra_parts=("beer", "foam", "rim", "heel", "logo", "fill_line"), size_range=(0.14, 0.18), density=2500,
           variants=("empty", "full", "nonic"), placement="surface")
 def pint_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     h, r0, r1 = rng.uniform(0.145, 0.16), 0.03, rng.uniform(0.042, 0.045)
     prof = [(r0, 0.0), (r1, h)] if variant != "nonic" else [(r0, 0.0), (r1, h * 0.82), (r1 * 1.06, h * 0.88), (r1, h)]
-    out = [make_part("body", "body", shell(prof, 0.003, bottom=0.01, sections=24), M.glass(rng))]
+    glass = M.glass(rng)
+    out = [make_part("body", "body", shell(prof, 0.003, bottom=0.01, sections=24), glass)]
+    # the rolled lip at the top, where the drinker's mouth goes, and the thick heel it stands on
+    rt = prof[-1][0]
+    out.append(make_part("rim", "rim", ring([(rt - 0.003, h - 0.003), (rt, h - 0.003), (rt, h), (rt - 0.003, h)],
+                                             sections=16), glass))
+    out.append(make_part("heel", "heel", ring([(r0 - 0.005, 0.0), (r0, 0.0), (r0, 0.006), (r0 - 0.005, 0.006)],
+                                               sections=16), glass))
+    # the brewery's printed logo on the front and the etched fill line above it
+    zl = h * 0.45
+    rl = r0 + (r1 - r0) * zl / h
+    out.append(make_part("logo", "logo", S.box((0.02, 0.0006, 0.03), center=(0, rl - 0.0008, zl)),
+                         white(rng, "paint")))
+    zf = h * (0.74 if variant == "nonic" else 0.9)
+    rf = r0 + (r1 - r0) * zf / (h * 0.82 if variant == "nonic" else h)
+    rf = min(rf, r1)
+    out.append(make_part("fill_line", "fill_line", ring([(rf - 0.0004, zf), (rf + 0.0002, zf), (rf + 0.0002, zf + 0.0008),
+                                                         (rf - 0.0004, zf + 0.0008)], sections=16), white(rng, "paint")))
     if variant == "full":
         out.append(make_part("beer", "beer", S.frustum(r0 - 0.003, r1 * 0.94, h * 0.8, center=(0, 0, 0.01), sections=20),
                              M.food(rng, (0.8, 0.5, 0.1))))

@@ -19,7 +19,7 @@ from ._household import ring, shell
 from ._kit import revolute, rot
 
 
-@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "dry_foot"),
+@register("saucer", parts=("body",), extra_parts=("well", "rim", "foot_ring", "trim", "dry_foot", "backstamp"),
           size_range=(0.11, 0.18), density=2000, variants=("tea", "coffee", "espresso"),
           placement="surface", groups={"body": ("well", "rim", "foot_ring")})
 def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -46,7 +46,10 @@ def saucer(rng: np.random.Generator, variant: str) -> list[Part]:
             # the unglazed ring under the foot it was fired standing on
             make_part("dry_foot", "dry_foot", ring([(well * 0.71, 0.0), (well * 0.81, 0.0), (well * 0.81, 0.0006),
                                                     (well * 0.71, 0.0006)], sections=24),
-                      Material((0.85, 0.8, 0.72, 1.0), 0.9, 0.0, "ceramic"))]
+                      Material((0.85, 0.8, 0.72, 1.0), 0.9, 0.0, "ceramic")),
+            # the maker's mark printed under the well, inside the foot ring, clear of the table
+            make_part("backstamp", "backstamp", S.cylinder(well * 0.45, 0.0003, center=(0, 0, fh - 0.00015), sections=16),
+                      M.solid(M.jitter(rng, (0.2, 0.3, 0.6), 0.05)[:3], "paint", 0.5))]
 
 
 @register("bookend", parts=("base", "upright"), extra_parts=("brace", "ornament", "pad", "foot", "screw", "hem"),

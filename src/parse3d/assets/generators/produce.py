@@ -68,8 +68,9 @@ def onion(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("neck", "neck", neck, mat))
     plate = S.cylinder(r * 0.3, z0 + 0.001, center=(0, 0, (z0 + 0.001) / 2), sections=12)
     parts.append(make_part("root_plate", "root_plate", plate, dry))
-    for k in range(3):
-        a = 2 * np.pi * k / 3 + rng.uniform(-0.3, 0.3)
+    nr = 6 if variant != "shallot" else 4  # the dried root tuft under the plate
+    for k in range(nr):
+        a = 2 * np.pi * k / nr + rng.uniform(-0.3, 0.3)
         d = np.array([np.cos(a), np.sin(a), 0.0])
         path = [d * r * 0.15 + (0, 0, z0 * 0.5), d * r * 0.45 + (0, 0, z0 * 0.5)]
         parts.append(make_part(f"root_{k}", "root", S.tube(path, min(0.0008, z0 * 0.4), sections=6),
@@ -124,7 +125,8 @@ def potato(rng: np.random.Generator, variant: str) -> list[Part]:
     body = S.ellipsoid((rx, ry, rz), center=(0, 0, rz), subdivisions=2)
     parts = [make_part("body", "body", body, mat)]
     eye_mat = M.food(rng, (0.35, 0.25, 0.15))
-    n = 3 if variant == "fingerling" else int(rng.integers(4, 6))
+    # a tuber has six to a dozen eyes, a small fingerling four or five
+    n = int(rng.integers(4, 6)) if variant == "fingerling" else int(rng.integers(6, 9))
     for k in range(n):
         # eyes on the upper half, spread along the tuber
         u = -0.75 + 1.5 * (k + rng.uniform(0.2, 0.8)) / n
