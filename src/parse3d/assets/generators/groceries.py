@@ -137,7 +137,8 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("cereal_box", parts=("body",),
-          extra_parts=("label", "flap", "nutrition_panel", "tuck_tab", "ingredients_panel"),
+          extra_parts=("label", "flap", "nutrition_panel", "tuck_tab", "ingredients_panel", "logo", "barcode",
+                       "back_panel"),
           size_range=(0.2, 0.4),
           density=250, variants=("standard", "family", "slim"), placement="surface")
 def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -163,6 +164,13 @@ def cereal_box(rng: np.random.Generator, variant: str) -> list[Part]:
     # the ingredients above the barcode on the left side, and the lot code stamped on the top
     parts.append(make_part("ingredients_panel", "ingredients_panel",
                            S.box((0.001, d * 0.8, h * 0.3), center=(-w / 2 - 0.0005, 0, h * 0.55)), white))
+    # the brand's logo band above the picture, the barcode low on the left side and the game
+    # printed on the back
+    parts.append(make_part("logo", "logo", S.box((w * 0.7, 0.001, h * 0.1), center=(0, d / 2 + 0.0005, h * 0.83)),
+                           M.paper(rng)))
+    parts.append(make_part("barcode", "barcode", S.box((0.001, d * 0.5, 0.025), center=(-w / 2 - 0.0005, 0, h * 0.2)), white))
+    parts.append(make_part("back_panel", "back_panel", S.box((w * 0.8, 0.001, h * 0.6), center=(0, -d / 2 - 0.0005, h * 0.5)),
+                           M.paper(rng)))
     return parts
 
 

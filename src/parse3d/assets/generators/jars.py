@@ -15,7 +15,8 @@ from ..registry import register
 from ._household import ring
 
 
-@register("jar", parts=("body", "lid"), extra_parts=("band", "label", "knob", "clamp", "ear", "neck", "gasket", "hinge", "foot_ring"),
+@register("jar", parts=("body", "lid"), extra_parts=("band", "label", "knob", "clamp", "ear", "neck", "gasket", "hinge", "foot_ring",
+                                                       "button", "scale"),
           size_range=(0.08, 0.75), density=900, variants=("mason", "canister", "ceramic", "water"), placement="surface")
 def jar(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "mason":
@@ -51,6 +52,11 @@ def jar(rng: np.random.Generator, variant: str) -> list[Part]:
                                                      (rl + 0.001, h + 0.004)], sections=16), metal))
         parts.append(make_part("label", "label", ring([(r, h * 0.3), (r + 0.0006, h * 0.3), (r + 0.0006, h * 0.55), (r, h * 0.55)],
                                                       sections=16), M.paper(rng)))
+        # the lid's vacuum button, below the band's top, and the cup marks moulded up the back
+        parts.append(make_part("button", "button", S.cylinder(rl * 0.35, 0.0005, center=(0, 0, h + 0.00325), sections=12), metal))
+        parts.append(make_part("scale", "scale", [S.box((0.012 if k % 2 else 0.007, 0.0006, 0.0012),
+                                                        center=(0, -(r + 0.0002), h * (0.6 + 0.06 * k))) for k in range(4)],
+                               mat))
     elif variant == "canister":  # a wooden or glass lid with a seal, a wire clamp at the front
         lidm = M.wood(rng) if rng.random() < 0.5 else mat
         parts.append(make_part("lid", "lid", S.cylinder(r + 0.003, 0.02, center=(0, 0, h + 0.01), sections=24), lidm))
