@@ -91,8 +91,7 @@ def bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam", "bottom", "score",
-                                                         "barcode"),
+@register("canned_food", parts=("body",), extra_parts=("label", "lid", "pull_tab", "rivet", "seam"),
           size_range=(0.06, 0.18),
           density=1100, variants=("standard", "tall", "flat"), placement="surface")
 def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -123,16 +122,6 @@ def canned_food(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("pull_tab", "pull_tab", S.box((0.011, tab_l, 0.0002),
                                                          center=(0, tab_l / 2 - 0.004, h - 0.00006)),
                            tin))
-    # the score line round the lid that the ring pull tears along, in the same low relief
-    parts.append(make_part("score", "score", ring([(r - 0.0085, h - 0.00008), (r - 0.0075, h - 0.00008),
-                                                   (r - 0.0075, h + 0.00002), (r - 0.0085, h + 0.00002)],
-                                                  sections=24), tin))
-    # the bottom end, domed up inside the lower rim (the can stands on the rim, not on it), and the
-    # barcode printed flush on the label's side
-    parts.append(make_part("bottom", "bottom", S.cylinder(r - 0.005, 0.001, center=(0, 0, 0.0015), sections=24), tin))
-    parts.append(make_part("barcode", "barcode", S.box((0.0006, 0.012, min(0.02, h * 0.3)),
-                                                       center=(r - 0.0005, 0, h / 2)),
-                           M.paper(rng)))
     return parts
 
 

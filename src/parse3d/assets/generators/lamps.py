@@ -287,7 +287,7 @@ def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
             shade, *_harp(top, z_s + h_s, metal), *_shade_fittings(shade, metal)]
 
 
-@register("pendant_lamp", parts=("cord", "shade"), extra_parts=("canopy", "socket", "bulb", "cord_grip", "screw"),
+@register("pendant_lamp", parts=("cord", "shade"), extra_parts=("canopy", "socket", "bulb", "cord_grip", "screw", "shade_ring"),
           size_range=(0.4, 1.45), density=800, variants=("dome", "cylinder", "globe"),
           placement="ceiling")
 def pendant_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -312,6 +312,14 @@ def pendant_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
         glass = M.glass(rng)
         parts += [make_part("socket", "socket", collar, metal),
                   make_part("shade", "shade", shade, glass)]
+        # the three thumb screws round the fitter that grip the globe's neck, and the bulb inside
+        for k in range(3):
+            a = 2 * np.pi * k / 3
+            d = np.array([np.cos(a), np.sin(a), 0.0])
+            parts.append(make_part(f"screw_{k + 2}", "screw", S.cylinder(0.003, 0.008, center=tuple(d * 0.033 + (0, 0, z_cord - 0.02)),
+                                                                         axis=tuple(d), sections=8), metal))
+        parts.append(make_part("bulb", "bulb", S.ellipsoid((0.03, 0.03, 0.038), center=(0, 0, z_cord - 0.025 - 0.045),
+                                                           subdivisions=1), bulb_material()))
         return parts
     if variant == "dome":
         r, h = rng.uniform(0.15, 0.25), rng.uniform(0.12, 0.2)
@@ -328,5 +336,8 @@ def pendant_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=12), metal),
               make_part("bulb", "bulb", S.ellipsoid((0.03, 0.03, 0.038),
                                                     center=(0, 0, sock_top - 0.085), subdivisions=1),
-                        bulb_material())]
+                        bulb_material()),
+              # the threaded ring on the socket that clamps the shade's top from below
+              make_part("shade_ring", "shade_ring", S.cylinder(0.023, 0.006, center=(0, 0, sock_top - 0.003),
+                                                                sections=12), metal)]
     return parts
