@@ -83,7 +83,8 @@ def iron(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("mop", parts=("handle", "head"), extra_parts=("strand", "pad", "grip", "hanger", "socket"),
+@register("mop", parts=("handle", "head"), extra_parts=("strand", "pad", "grip", "hanger", "socket", "collar", "pin",
+                                                                 "lever_grip"),
           size_range=(1.0, 1.6), density=500, variants=("string", "flat", "sponge"), placement="floor")
 def mop(rng: np.random.Generator, variant: str) -> list[Part]:
     """Upright on its head; the pole along +Z."""
@@ -114,6 +115,9 @@ def mop(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("head", "head", frame, plastic))
         joint = S.box((0.03, 0.03, 0.05), center=(0, 0, 0.06), bevel=0.005)
         parts.append(make_part("socket", "socket", joint, plastic))
+        # the pin the flat head swivels on, through the socket
+        parts.append(make_part("pin", "pin", S.cylinder(0.005, 0.04, center=(0, 0, 0.05), axis=(1, 0, 0), sections=8),
+                               M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)))
         z_top = 0.085
     else:
         sponge = Material(M.jitter(rng, (0.9, 0.8, 0.2), 0.05), 0.95, 0.0, "fabric")
@@ -125,10 +129,15 @@ def mop(rng: np.random.Generator, variant: str) -> list[Part]:
         lever = S.tube([(0.02, 0.04, 0.07), (0.02, 0.04, 0.45)], 0.006, sections=8)
         parts.append(make_part("socket", "socket", [S.box((0.04, 0.04, 0.04), center=(0, 0, 0.09), bevel=0.004),
                                                    lever], plastic))
+        # the grip moulded on the lever's end, where the hand pulls it down
+        parts.append(make_part("lever_grip", "lever_grip", S.cylinder(0.01, 0.05, center=(0.02, 0.04, 0.43), sections=10),
+                               plastic))
         z_top = 0.1
     parts.append(make_part("handle", "handle", S.cylinder(0.012, H - z_top, center=(0, 0, (H + z_top) / 2 - 0.002),
                                                           sections=12), pole))
     parts.append(make_part("grip", "grip", S.cylinder(0.015, 0.16, center=(0, 0, H - 0.1), sections=12), plastic))
+    # the threaded collar where the pole screws into the head
+    parts.append(make_part("collar", "collar", S.cylinder(0.016, 0.025, center=(0, 0, z_top + 0.0125), sections=12), plastic))
     parts.append(make_part("hanger", "hanger", S.tube([(0, 0, H - 0.01), (0, 0, H + 0.02), (0, 0.015, H + 0.035),
                                                        (0, 0.03, H + 0.02), (0, 0.03, H + 0.005)], 0.003,
                                                       sections=6), plastic))

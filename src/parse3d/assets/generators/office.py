@@ -173,7 +173,7 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("desk_organizer", parts=("base",), extra_parts=("divider", "pen_cup", "tray", "wall"), size_range=(0.12, 0.4),
+@register("desk_organizer", parts=("base",), extra_parts=("divider", "pen_cup", "tray", "wall", "riser"), size_range=(0.12, 0.4),
           density=500, variants=("compartments", "trays", "pen_cups"), placement="surface")
 def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng) if rng.random() < 0.5 else M.plastic(rng)
@@ -188,6 +188,10 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
             tray += [S.box((t, d, 0.05), center=(s * (w / 2 - t / 2), 0, z + 0.025)) for s in (-1, 1)]
             tray.append(S.box((w - 2 * t, t, 0.05), center=(0, -d / 2 + t / 2, z + 0.025)))
             parts.append(make_part(f"tray_{k}", "tray", tray, mat))
+            if k:  # the two risers at the open front that carry this tray on the one below
+                parts += [make_part(f"riser_{2 * (k - 1) + i}", "riser",
+                                    S.box((t, 0.012, 0.02), center=(s * (w / 2 - t / 2), d / 2 - 0.006, z - 0.01)), mat)
+                          for i, s in enumerate((-1, 1))]
         for i, s in enumerate((-1, 1)):
             parts.append(make_part(f"wall_{i}", "wall", S.box((0.01, 0.02, n * 0.07), center=(s * (w / 2 + 0.005), d / 2 - 0.02,
                                                                                                t + n * 0.035)), mat))
