@@ -13,7 +13,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 
 
-@register("service_bell", parts=("bell", "base", "button"), extra_parts=("foot", "post"),
+@register("service_bell", parts=("bell", "base", "button"), extra_parts=("foot", "post", "pad"),
           size_range=(0.07, 0.13), density=2500, variants=("classic", "square_base", "wooden_base"), placement="surface")
 def service_bell(rng: np.random.Generator, variant: str) -> list[Part]:
     chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.2, 0.95) if rng.random() < 0.6 else M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
@@ -42,4 +42,10 @@ def service_bell(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("post", "post", S.cylinder(0.0025, 0.012, center=(0, 0, z0 + hd + 0.006), sections=8), chrome))
     parts.append(make_part("button", "button", S.cylinder(0.007, 0.004, center=(0, 0, z0 + hd + 0.014), sections=12),
                            Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.3, "metal")))
+    # the four felt pads set flush into the base's underside
+    felt = M.solid((0.12, 0.12, 0.12), "fabric", 0.95)
+    for k in range(4):
+        a = 2 * np.pi * k / 4 + np.pi / 4
+        parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.005, 0.0015, center=(rb * 0.7 * np.cos(a), rb * 0.7 * np.sin(a), 0.00075),
+                                                             sections=10), felt))
     return parts
