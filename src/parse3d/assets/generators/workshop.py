@@ -167,7 +167,7 @@ def _grip(rng) -> M.Material:
                                   (0.1, 0.1, 0.1)][int(rng.integers(4))], 0.03), "rubber", 0.8)
 
 
-@register("hammer", parts=("head", "handle"), extra_parts=("grip", "claw", "face", "wedge", "end_cap"),
+@register("hammer", parts=("head", "handle"), extra_parts=("grip", "claw", "face", "wedge", "end_cap", "neck", "collar"),
           size_range=(0.24, 0.42), density=2500, variants=("claw", "ball_peen", "mallet"),
           placement="surface")
 def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -187,10 +187,18 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "mallet":
         out.append(make_part("head", "head", S.cylinder(0.03, 0.11, center=(x, 0, 0.03), axis=(0, 1, 0),
                                                         sections=16), M.solid((0.1, 0.1, 0.1), "rubber")))
+        # the two hard striking faces capping the rubber head, and the collar binding the handle
+        # where it enters the head
+        out += [make_part(f"face_{k}", "face", S.cylinder(0.028, 0.006, center=(x, sy * 0.052, 0.03), axis=(0, 1, 0), sections=16),
+                          M.solid((0.9, 0.9, 0.88), "plastic", 0.5)) for k, sy in enumerate((-1, 1))]
+        out.append(make_part("collar", "collar", S.cylinder(r * 1.25, 0.012, center=(x - 0.036, 0, hr), axis=(1, 0, 0), sections=12),
+                             steel))
         return out
     out.append(make_part("head", "head", S.box((0.03, 0.06, 0.03), center=(x, 0, hr)), steel))
-    out.append(make_part("face", "face", S.cylinder(0.014, 0.035, center=(x, 0.045, hr), axis=(0, 1, 0),
+    out.append(make_part("face", "face", S.cylinder(0.014, 0.008, center=(x, 0.058, hr), axis=(0, 1, 0),
                                                     sections=14), steel))
+    # the round neck between the head's cheeks and its striking face
+    out.append(make_part("neck", "neck", S.cylinder(0.0125, 0.027, center=(x, 0.0405, hr), axis=(0, 1, 0), sections=14), steel))
     # the wedge driven into the handle's end across the head's eye
     out.append(make_part("wedge", "wedge", S.box((0.0015, 0.02, 0.006), center=(x + 0.0155, 0, hr)), M.solid((0.55, 0.55, 0.58),
                                                                                                           "metal", 0.4, 0.8)))
@@ -203,7 +211,7 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("screwdriver", parts=("handle", "shaft"), extra_parts=("tip", "grip", "ferrule", "end_cap"),
+@register("screwdriver", parts=("handle", "shaft"), extra_parts=("tip", "grip", "ferrule", "end_cap", "bolster", "hang_hole"),
           size_range=(0.08, 0.36), density=2000, variants=("flat", "phillips", "stubby"),
           placement="surface")
 def screwdriver(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -228,10 +236,16 @@ def screwdriver(rng: np.random.Generator, variant: str) -> list[Part]:
                          steel))
     out.append(make_part("end_cap", "end_cap", S.cylinder(r * 0.7, 0.004, center=(x0 - 0.002, 0, r), axis=(1, 0, 0), sections=10),
                          M.solid((0.1, 0.1, 0.1), "rubber")))
+    # the hex bolster forged on the shaft (a spanner turns it for more torque) and the hole
+    # through the handle's end to hang it by
+    out.append(make_part("bolster", "bolster", S.cylinder(0.0055, 0.008, center=(x0 + hl + 0.009, 0, r), axis=(1, 0, 0), sections=6),
+                         steel))
+    out.append(make_part("hang_hole", "hang_hole", S.cylinder(0.0025, 2 * r * 0.92, center=(x0 + hl * 0.1, 0, r), axis=(0, 1, 0),
+                                                              sections=8), M.solid((0.05, 0.05, 0.05), "plastic", 0.8)))
     return out
 
 
-@register("wrench", parts=("handle", "jaw"), extra_parts=("ring", "adjuster", "lower_jaw", "pin", "hang_hole"),
+@register("wrench", parts=("handle", "jaw"), extra_parts=("ring", "adjuster", "lower_jaw", "pin", "hang_hole", "neck"),
           size_range=(0.12, 0.36), density=7800, variants=("combination", "adjustable", "open_end"),
           placement="surface")
 def wrench(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -248,6 +262,9 @@ def wrench(rng: np.random.Generator, variant: str) -> list[Part]:
                                         for sy in (-1, 1)] + [S.box((0.008 * s, 0.033 * s, t),
                                                                     center=(xh + 0.004 * s, 0, t / 2))],
                      steel))
+    # the necks where the shank flares into each head
+    out += [make_part(f"neck_{k}", "neck", S.box((0.008 * s, 0.018 * s, t), center=(sx * (xh - 0.004 * s - 0.008 * s), 0, t / 2)), steel)
+            for k, sx in enumerate((1, -1) if variant != "adjustable" else (1,))]
     if variant == "combination":
         out.append(make_part("ring", "ring", S.cylinder(jw * 0.7, t, center=(-xh - jw * 0.3, 0, t / 2),
                                                         sections=12), steel))
