@@ -74,7 +74,7 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
     rmax = L * 0.22
     bend = 0.0 if variant == "straight" else L * 0.25
     parts = []
-    n = 5
+    n = 5 if variant == "mini" else 7  # a full-size croissant shows seven rolls of dough, a mini five
     for k in range(n):  # rolled segments, fattest in the middle, bending towards -Y at the ends
         f = (k - (n - 1) / 2) / ((n - 1) / 2)
         x = f * L * 0.38

@@ -222,7 +222,7 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "seal"), size_range=(0.18, 0.55),
+@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "seal", "timer"), size_range=(0.18, 0.55),
           density=400, variants=("boxed", "set_up", "card_deck"), placement="surface")
 def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     art = M.paper(rng)
@@ -250,6 +250,9 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
                                           S.box((w, 0.003, 0.04), center=(0, d / 2 - 0.0015, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(-w / 2 + 0.0015, 0, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(w / 2 - 0.0015, 0, h - 0.02))], art)]
+        # the round clear seals taping the lid shut at both ends
+        parts += [make_part(f"seal_{k}", "seal", S.box((0.0005, 0.025, 0.025), center=(sx * (w / 2 + 0.00025), 0, h - 0.02)),
+                            M.solid((0.9, 0.92, 0.95), "plastic", 0.2)) for k, sx in enumerate((-1, 1))]
         return parts
     b = rng.uniform(0.4, 0.5)
     parts = [make_part("board", "board", S.box((b, b, 0.004), center=(0, 0, 0.002)), art),
@@ -266,6 +269,13 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"die_{k}", "die", S.box((0.016, 0.016, 0.016), center=(b * 0.3 + k * 0.025, b * 0.3, 0.004 + 0.008),
                                                       bevel=0.002, R=rot((0, 0, 1), 0.3 * k)), M.solid((0.95, 0.95, 0.93), "plastic", 0.4)))
     parts.append(make_part("card", "card", S.box((0.06, 0.09, 0.012), center=(-b * 0.25, b * 0.25, 0.004 + 0.006)), art))
+    # the discard pile beside the draw pile, and the sand timer lying on the board
+    parts.append(make_part("card_1", "card", S.box((0.06, 0.09, 0.003), center=(-b * 0.25 + 0.075, b * 0.25, 0.004 + 0.0015),
+                                                   R=rot((0, 0, 1), 0.15)), art))
+    parts.append(make_part("timer", "timer", [S.cylinder(0.012, 0.004, center=(b * 0.05 + dx, -b * 0.3, 0.004 + 0.012), axis=(1, 0, 0),
+                                                         sections=10) for dx in (-0.028, 0.028)]
+                           + [S.cylinder(0.009, 0.052, center=(b * 0.05, -b * 0.3, 0.004 + 0.012), axis=(1, 0, 0), sections=10)],
+                           M.glass(rng)))
     parts.append(make_part("rules", "rules", S.box((0.15, 0.21, 0.003), center=(b / 2 - w * 0.4 - 0.01, b * 0.12, 0.0055)),
                            M.solid((0.95, 0.95, 0.93), "paper", 0.8)))
     return parts

@@ -16,7 +16,7 @@ from ._household import ring
 from ._kit import OPEN_DOOR, hinge_parts, mount, revolute
 
 
-@register("tea_tray", parts=("base", "rim"), extra_parts=("handle", "foot", "slat"), size_range=(0.28, 0.65), density=600,
+@register("tea_tray", parts=("base", "rim"), extra_parts=("handle", "foot", "slat", "spline"), size_range=(0.28, 0.65), density=600,
           variants=("rect", "round", "slatted"), placement="surface")
 def tea_tray(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng) if variant != "round" else M.solid(M.jitter(rng, (0.15, 0.08, 0.05), 0.02), "wood", 0.3)
@@ -47,6 +47,18 @@ def tea_tray(rng: np.random.Generator, variant: str) -> list[Part]:
     rim += [S.box((t, d - 2 * t, rh), center=(s * (w / 2 - t / 2), 0, fh + rh / 2)) for s in (-1, 1)]
     # the four rails round the floor, each board its own (mitred at the corners)
     parts += [make_part("rim" if k == 0 else f"rim_{k}", "rim", b, wood) for k, b in enumerate(rim)]
+    # two contrasting keys let across each mitred corner: thin triangles in saw kerfs, flush
+    # with both rails' outer faces
+    key = M.solid(M.jitter(rng, (0.25, 0.15, 0.1), 0.03), "wood", 0.5)
+    k = 0
+    for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]:
+        cx, cy, e = sx * w / 2, sy * d / 2, 0.014
+        tri = [(cx, cy), (cx - sx * e, cy), (cx, cy - sy * e)]
+        if sx * sy < 0:
+            tri = tri[::-1]
+        for zk in (fh + rh / 3, fh + 2 * rh / 3):
+            parts.append(make_part(f"spline_{k}", "spline", S.prism(tri, zk - 0.001, zk + 0.001), key))
+            k += 1
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"handle_{i}", "handle", S.box((0.012, 0.1, 0.02), center=(s * (w / 2 + 0.006), 0, fh + rh - 0.012)),
                                wood))
@@ -86,6 +98,13 @@ def floor_cushion(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                                      h / 2)), trim))
     for k, (x, y) in enumerate(pts):
         parts.append(make_part(f"button_{k}", "button", S.cylinder(0.012, 0.01, center=(x, y, top - 0.003), sections=10), trim))
+    # the tufting thread runs through to a twin button on the underside, sunk into the
+    # cushion flush with its bottom
+    for k, (x, y) in enumerate(pts):
+        parts.append(make_part(f"button_{len(pts) + k}", "button", S.cylinder(0.012, 0.006, center=(x, y, 0.003), sections=10), trim))
+    if variant == "round":  # the piped seam round the middle of the side
+        parts.append(make_part("piping", "piping", ring([(r - 0.003, h / 2 - 0.004), (r + 0.004, h / 2 - 0.004), (r + 0.004, h / 2 + 0.004),
+                                                         (r - 0.003, h / 2 + 0.004)], sections=32), trim))
     return parts
 
 
