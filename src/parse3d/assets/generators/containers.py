@@ -221,7 +221,7 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("trash_can", parts=("body",),
-          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle", "handle"),
+          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle", "handle", "rod", "damper"),
           size_range=(0.28, 0.8),
           density=900, variants=("round", "square", "pedal"), placement="floor")
 def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -291,6 +291,14 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
                                S.box((0.04, 0.012, 0.006), center=(0, r + 0.009, h + 0.004)), mat))
         bucket = shell([(r - 0.012, 0.012), (r - 0.006, h - 0.004)], 0.002, bottom=0.002, sections=20)
         parts.append(make_part("liner", "liner", bucket, M.plastic(rng)))
+        # the inner bucket's carrying bail folded down inside its rim, the rod from the pedal up
+        # the back to the lid, and the soft-close damper beside the hinge
+        parts.append(make_part("handle", "handle", S.tube([(-(r - 0.02), 0, h - 0.012), (0, -(r - 0.03) * 0.3, h - 0.01),
+                                                           ((r - 0.02), 0, h - 0.012)], 0.0025, sections=6), M.metal(rng)))
+        parts.append(make_part("rod", "rod", S.cylinder(0.004, h - 0.06, center=(0, -r - 0.001, 0.03 + (h - 0.06) / 2), sections=8),
+                               M.metal(rng)))
+        parts.append(make_part("damper", "damper", S.cylinder(0.008, 0.05, center=(0.045, -r + 0.002, h - 0.04), sections=10),
+                               M.plastic(rng)))
     else:
         # the bin bag folded over the rim, and a moulded hand grip each side under it
         parts.append(make_part("liner", "liner", ring([(r + 0.004, h - 0.05), (r + 0.0055, h - 0.05),

@@ -302,7 +302,7 @@ def vent(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("ceiling_light", parts=("canopy", "diffuser"), extra_parts=("trim", "bulb", "screw", "thumbscrew", "finial"),
+@register("ceiling_light", parts=("canopy", "diffuser"), extra_parts=("trim", "bulb", "screw", "thumbscrew", "finial", "socket"),
           size_range=(0.2, 0.65), density=800, variants=("dome", "flat_panel", "drum"),
           placement="ceiling")
 def ceiling_light(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -335,6 +335,14 @@ def ceiling_light(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                          sections=8), metal))
     if variant == "dome":
         out.append(make_part("finial", "finial", S.cylinder(0.01, 0.012, center=(0, 0, -0.004), sections=10), metal))
+    # the two bulbs in their sockets under the canopy, inside the glass
+    frosted = M.solid((0.98, 0.97, 0.92), "glass", 0.1)
+    for k, sx in enumerate((-1, 1)):
+        x = sx * r * 0.3
+        out.append(make_part(f"socket_{k}", "socket", S.cylinder(0.014, 0.025, center=(x, 0, h - 0.0125), sections=10),
+                             M.solid((0.9, 0.9, 0.88), "ceramic", 0.5)))
+        out.append(make_part(f"bulb_{k}", "bulb", S.ellipsoid((0.03, 0.03, 0.04), center=(x, 0, h - 0.025 - 0.04), subdivisions=1),
+                             frosted))
     return out
 
 
