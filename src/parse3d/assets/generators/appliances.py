@@ -512,7 +512,7 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("copier", parts=("body", "scanner", "drawer"),
           extra_parts=("lid", "output_tray", "control_panel", "display", "drawer_box", "handle",
-                       "caster", "hinge"),
+                       "caster", "hinge", "key", "button"),
           size_range=(0.9, 1.3), density=350, variants=("floor", "floor_finisher", "cabinet"))
 def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d = rng.uniform(0.58, 0.68), rng.uniform(0.6, 0.72)
@@ -544,6 +544,20 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("control_panel", "control_panel", S.box((w * 0.45, 0.1, 0.03),
                                                                  center=(w * 0.2, d / 2 - 0.05, ch + bh + sh + 0.016)),
                          black()))
+    # on the control panel: the touch screen, the twelve-key number pad beside it and the
+    # green start and red stop buttons, each key let into the panel and standing a millimetre
+    # proud of it
+    zp = ch + bh + sh + 0.031
+    out.append(make_part("display", "display", S.box((w * 0.2, 0.07, 0.002), center=(w * 0.2 - w * 0.1, d / 2 - 0.05, zp)),
+                         M.solid((0.15, 0.3, 0.45), "glass", 0.1)))
+    xk = w * 0.2 + w * 0.06
+    for k in range(12):
+        col, row = k % 3, k // 3
+        out.append(make_part(f"key_{k}", "key", S.box((0.012, 0.012, 0.003), center=(xk + (col - 1) * 0.016, d / 2 - 0.026 - row * 0.016, zp),
+                                                      bevel=0.001), M.solid((0.85, 0.85, 0.85), "plastic", 0.4)))
+    for k, colr in enumerate(((0.1, 0.7, 0.2), (0.85, 0.1, 0.1))):
+        out.append(make_part(f"button_{k}", "button", S.cylinder(0.009, 0.003, center=(xk + 0.05, d / 2 - 0.035 - k * 0.03, zp), sections=10),
+                             M.solid(colr, "plastic", 0.3)))
     out.append(make_part("output_tray", "output_tray", S.box((w * 0.5, d * 0.6, 0.01),
                                                              center=(-w * 0.1, 0.0, ch + bh - 0.02)),
                          M.plastic(rng)))

@@ -17,7 +17,8 @@ from ._kit import OPEN_DOOR, hinge_parts, legs4, revolute, rot
 
 
 @register("arcade_cabinet", parts=("body", "screen", "control_panel"),
-          extra_parts=("bezel", "marquee", "joystick", "button", "coin_door", "side_panel"),
+          extra_parts=("bezel", "marquee", "joystick", "button", "coin_door", "side_panel", "coin_slot", "coin_return", "lock",
+                       "speaker", "t_molding"),
           size_range=(1.5, 2.0), density=300, variants=("upright", "cocktail_top", "twin"))
 def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 0.7) if variant != "twin" else rng.uniform(0.8, 0.9)
@@ -62,6 +63,23 @@ def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid(M.jitter(rng, (0.95, 0.85, 0.3), 0.05), "plastic", 0.2)))
     parts.append(make_part("coin_door", "coin_door", S.box((0.2, 0.01, 0.22), center=(0, d / 2 + 0.004 - 0.025, 0.62)),
                            M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    # the one- and two-player start buttons, the coin door's two slots with their return
+    # buttons and its lock, the speaker grilles under the marquee, and the T-moulding capping
+    # each side panel's front edge
+    for p in range(2):
+        parts.append(make_part(f"button_{k + p}", "button", S.cylinder(0.01, 0.025, center=((p - 0.5) * 0.06, d / 2 - 0.25, 0.97), sections=10),
+                               M.solid((0.95, 0.95, 0.95), "plastic", 0.3)))
+    metal = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    yd = d / 2 + 0.009 - 0.025
+    for j, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"coin_slot_{j}", "coin_slot", S.box((0.05, 0.006, 0.07), center=(sx * 0.05, yd + 0.003, 0.68)), metal))
+        parts.append(make_part(f"coin_return_{j}", "coin_return", S.box((0.04, 0.006, 0.03), center=(sx * 0.05, yd + 0.003, 0.57)), black()))
+    parts.append(make_part("lock", "lock", S.cylinder(0.01, 0.006, center=(0, yd + 0.003, 0.62), axis=(0, 1, 0), sections=10), metal))
+    parts += [make_part(f"speaker_{j}", "speaker", S.box((0.12, 0.004, 0.08), center=(sx * iw * 0.3, d / 2 - 0.17, h - 0.26)), black())
+              for j, sx in enumerate((-1, 1))]
+    for j, x in enumerate((-w / 2 + t / 2, w / 2 - t / 2)):
+        parts.append(make_part(f"t_molding_{j}", "t_molding", S.box((t + 0.004, 0.006, 0.9), center=(x, d / 2 + 0.003 - 0.006, 0.45)),
+                               black()))
     if variant == "cocktail_top":
         parts.append(make_part("top_panel", "body", S.box((w, 0.35, 0.02), center=(0, -d / 2 + 0.175, h + 0.01)), paint))
     return parts

@@ -97,7 +97,7 @@ def _rx(a: float) -> np.ndarray:
 
 @register("checkout_counter", parts=("body", "countertop"), extra_parts=("conveyor", "register", "screen", "card_terminal",
                                                                           "divider", "bag_well", "kick_plate", "scanner",
-                                                                          "printer", "cash_drawer"),
+                                                                          "printer", "cash_drawer", "key", "roller"),
           size_range=(1.4, 2.6), density=400, variants=("conveyor", "compact"))
 def checkout_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.8, 2.5) if variant == "conveyor" else rng.uniform(1.4, 1.7)
@@ -131,6 +131,16 @@ def checkout_counter(rng: np.random.Generator, variant: str) -> list[Part]:
                            black()))
     parts.append(make_part("cash_drawer", "cash_drawer", S.box((0.4, 0.02, 0.1), center=(x_reg, -d / 2 - 0.01, h - 0.03 - 0.07)),
                            black()))
+    # the register's sixteen-key pad on its top, towards the cashier
+    for k in range(16):
+        col, row = k % 4, k // 4
+        parts.append(make_part(f"key_{k}", "key", S.box((0.03, 0.03, 0.006), center=(x_reg - 0.06 + col * 0.04, -d / 2 + 0.08 + row * 0.04,
+                                                                                     h + 0.1 + 0.002), bevel=0.002),
+                               M.solid((0.8, 0.8, 0.8), "plastic", 0.4)))
+    if variant == "conveyor":  # the belt's end rollers, their tops level with the belt
+        cl = L * 0.55
+        parts += [make_part(f"roller_{k}", "roller", S.cylinder(0.0095, d * 0.72, center=(x, 0, h + 0.0095), axis=(0, 1, 0), sections=10),
+                            M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.8)) for k, x in enumerate((-L / 2 + 0.03 - 0.006, -L / 2 + 0.03 + cl + 0.006))]
     return parts
 
 
