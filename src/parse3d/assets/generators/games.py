@@ -338,7 +338,8 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye", "nose", "paw_pad", "bow"),
+@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye", "nose", "paw_pad", "bow",
+                                                                                       "ear_lining", "tail", "tag"),
           size_range=(0.15, 0.6), density=150, variants=("sitting", "small", "large"), placement="surface")
 def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     s = {"small": rng.uniform(0.16, 0.22), "sitting": rng.uniform(0.25, 0.35), "large": rng.uniform(0.45, 0.55)}[variant]
@@ -368,4 +369,18 @@ def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     bow = M.solid(M.jitter(rng, (0.75, 0.1, 0.15), 0.1), "fabric", 0.8)
     parts.append(make_part("bow", "bow", [S.ellipsoid((0.05 * s, 0.02 * s, 0.03 * s), center=(sx * 0.045 * s, 0.17 * s, 0.55 * s),
                                                       subdivisions=1) for sx in (-1, 1)], bow))
+    # the pale linings inside the ears, a pad on each paw's inside, the stub of a tail and the
+    # maker's cloth tag sewn into the side seam
+    pale = parts[2].material
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"ear_lining_{i}", "ear_lining", S.ellipsoid((0.04 * s, 0.008 * s, 0.04 * s),
+                                                                           center=(sx * 0.13 * s, 0.026 * s, 0.85 * s), subdivisions=1),
+                               pale))
+        parts.append(make_part(f"paw_pad_{i + 2}", "paw_pad", S.ellipsoid((0.035 * s, 0.01 * s, 0.045 * s),
+                                                                          center=(sx * 0.24 * s, 0.115 * s, 0.3 * s), subdivisions=1),
+                               pale))
+    parts.append(make_part("tail", "tail", S.ellipsoid((0.035 * s, 0.03 * s, 0.035 * s), center=(0, -0.185 * s, 0.1 * s), subdivisions=1),
+                           fur))
+    parts.append(make_part("tag", "tag", S.box((0.002, 0.03 * s, 0.05 * s), center=(0.216 * s, -0.02 * s, 0.2 * s)),
+                           M.solid((0.95, 0.95, 0.9), "fabric", 0.8)))
     return parts

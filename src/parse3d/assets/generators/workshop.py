@@ -18,7 +18,7 @@ from ._kit import legs4, rot
 from ._rods import leg_caps
 
 
-@register("ladder", parts=("rail", "step"), extra_parts=("top_cap", "rear_leg", "spreader", "foot"),
+@register("ladder", parts=("rail", "step"), extra_parts=("top_cap", "rear_leg", "spreader", "foot", "end_cap", "rivet", "pail_shelf"),
           size_range=(0.9, 3.1), density=900, variants=("step", "straight", "library"))
 def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
     metal = M.metal(rng) if variant != "library" else M.wood(rng)
@@ -39,6 +39,9 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(make_part(f"step_{i}", "step",
                                  S.cylinder(0.015, w - 0.05, center=(0, 0, z), axis=(1, 0, 0),
                                             sections=12), metal))
+        # the plastic caps closing the rails' top ends
+        out += [make_part(f"end_cap_{k}", "end_cap", S.box((0.027, 0.072, 0.02), center=(sx * (w / 2 - 0.0135), 0, h - 0.01)),
+                          M.solid((0.1, 0.1, 0.1), "plastic", 0.6)) for k, sx in enumerate((-1, 1))]
         return out
     # an A-frame: front rails with treads leaning back, rear legs leaning forward
     h = rng.uniform(0.95, 1.9) if variant == "step" else rng.uniform(0.9, 1.3)
@@ -55,11 +58,21 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"rear_leg_{k}", "rear_leg",
                              S.box((0.03, 0.03, length), R=tilt_b,
                                    center=(sx * (w / 2 - 0.015), -spread / 4, h / 2)), metal))
+    fast = M.solid((0.6, 0.6, 0.62), "metal", 0.35, 0.9) if variant != "library" else M.solid((0.75, 0.6, 0.3), "metal", 0.3, 0.9)
+    nr = 0
     for i in range(n):
         z = h * (i + 1) / (n + 1)
         y = spread / 2 * (1 - z / h)
         out.append(make_part(f"step_{i}", "step", S.box((w - 0.06, 0.09, 0.025), center=(0, y - 0.01, z)),
                              metal))
+        # two rivets (bolts on a wooden ladder) through each rail into the step's end, their
+        # heads on the rail's outer face
+        yr = y - 0.01
+        for sx in (-1, 1):
+            for dy in (-0.02, 0.02):
+                out.append(make_part(f"rivet_{nr}", "rivet", S.cylinder(0.005, 0.003, center=(sx * (w / 2 - 0.0015), yr + dy, z), axis=(1, 0, 0),
+                                                                        sections=8), fast))
+                nr += 1
     # non-slip rubber shoes sleeving the bottom of each rail and rear leg (set a hair up the
     # leg, so the ladder still stands on its legs' ends)
     rubber = M.solid((0.1, 0.1, 0.1), "rubber")
@@ -75,6 +88,10 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
                                                      bevel=0.005), M.plastic(rng)))
     out.append(make_part("spreader", "spreader", S.box((0.02, spread * 0.55, 0.01),
                                                        center=(-w / 2 + 0.05, 0, h * 0.45)), metal))
+    # its twin on the right, locking the frames open from both sides
+    out.append(make_part("spreader_1", "spreader", S.box((0.02, spread * 0.55, 0.01), center=(w / 2 - 0.05, 0, h * 0.45)), metal))
+    if variant == "step":  # the fold-down pail shelf between the rear legs, below the top cap
+        out.append(make_part("pail_shelf", "pail_shelf", S.box((w - 0.08, 0.12, 0.012), center=(0, -0.08, h - 0.12)), M.plastic(rng)))
     return out
 
 
