@@ -87,7 +87,7 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray", "button", "cord"),
+@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray", "button", "cord", "end_cap", "tab"),
           size_range=(0.2, 0.42), density=300, variants=("two_slot", "four_slot", "long_slot"),
           placement="surface")
 def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -126,6 +126,14 @@ def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("cord", "cord", S.tube([(0, -d / 2 + 0.002, fh + 0.02), (0, -d / 2 - 0.025, fh + 0.012),
                                                  (0.04, -d / 2 - 0.03, 0.004)], 0.003, sections=6), black("rubber")))
     out += feet4("foot", w=w, d=d, r=0.01, h=fh, mat=black("rubber"), inset=0.02)
+    # the crumb tray's pull tab at the front, the moulded end caps on the two short sides, and
+    # a four-slot toaster's second lever and browning knob for its other pair of slots
+    out.append(make_part("tab", "tab", S.box((0.03, 0.006, 0.006), center=(0, d / 2 + 0.003, fh + 0.004)), black()))
+    out += [make_part(f"end_cap_{k}", "end_cap", S.box((0.006, d * 0.85, (h - fh) * 0.85), center=(sx * (w / 2 - 0.001), 0, fh + (h - fh) / 2),
+                                                      bevel=0.002), black()) for k, sx in enumerate((-1, 1))]
+    if n == 4:
+        out.append(make_part("lever_1", "lever", S.box((0.03, 0.03, 0.015), center=(-w / 2 - 0.012, 0, h * 0.7)), black()))
+        out.append(make_part("knob_1", "knob", knob((-w / 2, 0, h * 0.35), 0.012, 0.01, axis=(-1, 0, 0)), black()))
     return out
 
 
@@ -169,7 +177,7 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 @register("coffee_maker", parts=("base", "reservoir", "head"),
           extra_parts=("carafe", "handle", "button", "drip_tray", "lid", "foot", "warming_plate", "carafe_lid",
                        "water_window", "portafilter", "steam_wand", "pod_holder", "power_switch", "spout",
-                       "brew_basket"),
+                       "brew_basket", "display"),
           size_range=(0.25, 0.45), density=400, variants=("drip", "pod", "espresso"),
           placement="surface")
 def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -221,7 +229,13 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                 center=(w / 2 + 0.0005, -d / 2 + d * 0.175, bh + (h - bh) * 0.45)),
                          M.solid((0.6, 0.75, 0.9), "glass", 0.1)))
     out += _pads(w, d)
-    out += _buttons("button", w * 0.3, d / 2, [h - h * 0.11], black(), r=0.007)
+    # the row of buttons on the head's front (power, and the cup sizes or the clock's setting
+    # keys) and the small display beside them
+    out += [make_part(f"button_{k}", "button", S.cylinder(0.007, 0.006, center=(x, d / 2 + 0.002, h - h * 0.11), axis=(0, 1, 0),
+                                                          sections=12), black())
+            for k, x in enumerate(np.linspace(w * 0.3, -w * 0.3, 4))]
+    out.append(make_part("display", "display", S.box((0.05, 0.002, 0.018), center=(0, d / 2 + 0.001, h - h * 0.11 + 0.022)),
+                         M.solid((0.2, 0.4, 0.6), "glass", 0.1)))
     # the rocker switch on the base's right side and the outlet under the head the coffee
     # runs from; a drip machine's swing-out brew basket in the head over the carafe
     out.append(make_part("power_switch", "power_switch", S.box((0.004, 0.02, 0.012), center=(w / 2 + 0.001, d * 0.2, bh / 2)),

@@ -116,7 +116,8 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail"),
+@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail",
+                                                                                          "end_cap", "kick_plate"),
           size_range=(1.4, 3.3), density=600, variants=("straight", "l_shaped"))
 def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(1.4, 2.6), rng.uniform(0.45, 0.6), rng.uniform(1.02, 1.1)
@@ -170,11 +171,21 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("speed_rail", "speed_rail", [S.box((w * 0.5, 0.1, 0.006), center=(-w * 0.2, d / 2 - t - 0.05, zb * 0.6)),
                                                         S.box((w * 0.5, 0.006, 0.06), center=(-w * 0.2, d / 2 - t - 0.1, zb * 0.6 + 0.027))],
                            steel))
+    # the foot rail's two domed end caps, the steel kick plate along the customer wall's foot
+    # and the bartender's lower shelf just above the plinth floor
+    ends = [np.asarray(rail_path[0], float), np.asarray(rail_path[-1], float)]
+    dirs = [ends[0] - np.asarray(rail_path[1], float), ends[1] - np.asarray(rail_path[-2], float)]
+    for k, (e, u) in enumerate(zip(ends, dirs, strict=True)):
+        u = u / np.linalg.norm(u)
+        parts.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.027, 0.02, center=tuple(e + u * 0.008), axis=tuple(u), sections=12), steel))
+    parts.append(make_part("kick_plate", "kick_plate", S.box((w - 0.01, 0.003, 0.15), center=(0, d / 2 + 0.0015, 0.075)), steel))
+    parts.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - t - 0.02, t), center=(0, -t / 2 - 0.01, zb * 0.25)), mat))
     return parts
 
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
-                                                                     "thermostat", "gasket"),
+                                                                     "thermostat", "gasket", "toe_grille", "hinge_cover",
+                                                                     "dispenser"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -232,6 +243,18 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
     parts.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(x_mid + iw * 0.25, y0 + 0.1, z_hi - 0.006),
                                                                   sections=12), liner))
+    # the toe grille over the compressor's air inlet at the front foot, the cover over each
+    # door's top hinge on the cabinet's top, and on a side-by-side the water and ice
+    # dispenser let into the freezer door
+    parts.append(make_part("toe_grille", "toe_grille", S.box((w - 2 * t, 0.006, 0.07), center=(0, yf - 0.003, 0.04)), black()))
+    hinge_x = {"single": [-w / 2 + 0.04], "top_freezer": [-w / 2 + 0.04], "side_by_side": [-w / 2 + 0.04, w / 2 - 0.04]}[variant]
+    parts += [make_part(f"hinge_cover_{k}", "hinge_cover", S.box((0.06, 0.08, 0.012), center=(x, yf - 0.035, h - 0.006 + 0.0), bevel=0.003),
+                        shell) for k, x in enumerate(hinge_x)]
+    if variant == "side_by_side":
+        fw_c = (-w / 2 + xs - gap) / 2
+        parts.append(make_part("dispenser", "dispenser", S.box((fw * 0.6, 0.012, 0.3), center=(fw_c, yf + dt + 0.006 - 0.012, h * 0.55)),
+                               black()))
+        parts.append(mount("freezer_door", "dispenser"))
     return parts + _door_gaskets(parts)
 
 

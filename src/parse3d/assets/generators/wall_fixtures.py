@@ -570,7 +570,7 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator"),
+@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "slot", "ground_hole", "screw"),
           size_range=(0.2, 0.56), density=900, variants=("four", "six", "surge"),
           placement="floor")
 def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -584,6 +584,12 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
         x = -L / 2 + 0.03 + pitch * (k + 0.5)
         out.append(make_part(f"socket_{k}", "socket", S.cylinder(0.016, 0.002, center=(x, 0, h + 0.001), sections=14),
                              M.solid((0.85, 0.85, 0.85))))
+        # each socket's two blade slots and round earth hole (dark, just proud of its face)
+        for j, sy in enumerate((-1, 1)):
+            out.append(make_part(f"slot_{2 * k + j}", "slot", S.box((0.009, 0.0025, 0.0008), center=(x + 0.003, sy * 0.0065, h + 0.0024)),
+                                 black()))
+        out.append(make_part(f"ground_hole_{k}", "ground_hole", S.cylinder(0.0025, 0.0008, center=(x - 0.009, 0, h + 0.0024), sections=8),
+                             black()))
     out.append(make_part("switch", "switch", S.box((0.02, 0.03, 0.008), center=(L / 2 - 0.018, 0, h + 0.004)),
                          M.solid((0.85, 0.1, 0.1))))
     out.append(make_part("cord", "cord", S.tube([(-L / 2 + 0.002, 0, h / 2), (-L / 2 - 0.05, 0.0, 0.005), (-L / 2 - 0.08, 0.04, 0.005)],
@@ -594,6 +600,8 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
                          mat))
     out.append(make_part("indicator", "indicator", S.cylinder(0.003, 0.002, center=(L / 2 - 0.018, -0.02, h + 0.001), sections=8),
                          M.solid((0.9, 0.2, 0.1), "plastic", 0.2)))
+    # the two screws closing the case from underneath, their heads sunk flush with its bottom
+    out += studs("screw", "screw", [(sx * L * 0.3, 0, 0.001) for sx in (-1, 1)], r=0.003, h=0.002, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4))
     return out
 
 
