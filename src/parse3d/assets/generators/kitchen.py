@@ -285,7 +285,8 @@ def _ring_path(center, radius: float, n: int, *, plane: str = "xy") -> np.ndarra
 
 
 @register("stove", parts=("body", "cooktop", "burner"),
-          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box"), size_range=(0.85, 1.15),
+          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box", "display", "indicator",
+                       "vent"), size_range=(0.85, 1.15),
           density=400, variants=("gas", "electric", "double_oven"))
 def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.5, 0.76), rng.uniform(0.6, 0.66)
@@ -329,12 +330,19 @@ def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant != "double_oven":
         parts += drawer_parts("drawer", x0=-w / 2 + 0.01, x1=w / 2 - 0.01, z0=0.02, z1=0.11, y_front=yf + 0.02,
                               depth=d - 0.12, thick=0.02, mat=enamel, handle_mat=hmat)
+    # the oven clock between the middle knobs, the hot-surface and oven-on lights above it, and the oven's vent slot along the cooktop's back edge (flush with it)
+    zk = h_body - 0.05
+    parts.append(make_part("display", "display", S.box((0.07, 0.003, 0.025), center=(0, yf + 0.0015, zk)), black("glass")))
+    parts += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.004, 0.003, center=(sx * 0.025, yf + 0.0015, zk + 0.027), axis=(0, 1, 0),
+                                                                  sections=8), M.solid((0.95, 0.4, 0.1), "glass", 0.2))
+              for k, sx in enumerate((-1, 1))]
+    parts.append(make_part("vent", "vent", S.box((w * 0.5, 0.03, 0.002), center=(0, -d / 2 + 0.06, z - 0.0009)), black()))
     return parts
 
 
 @register("washing_machine", parts=("body", "door"), extra_parts=("control_panel", "knob", "window", "drawer",
                                                                    "display", "foot", "hinge", "button", "gasket", "filter_cover",
-                                                                   "handle"),
+                                                                   "handle", "lid_lock", "dispenser"),
           size_range=(0.8, 1.0), density=250, variants=("front_loader", "top_loader"))
 def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.58, 0.62), rng.uniform(0.52, 0.64), rng.uniform(0.82, 0.88)
@@ -393,4 +401,11 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(mount("door", "handle"))
         parts += [make_part(f"button_{k}", "button", S.box((0.018, 0.008, 0.012), center=(-w / 2 + 0.08 + 0.025 * k, -d / 2 + 0.114, h + 0.06)),
                             black()) for k in range(3)]
+        # the lid lock's catch in the body's top beside the lid's front edge, and the bleach and
+        # softener dispensers in the top's front corners, under the lid
+        parts.append(make_part("lid_lock", "lid_lock", S.box((0.03, 0.012, 0.004), center=(0.09, 0.04 + (d - 0.16) / 2 + 0.012, h - 0.0019)),
+                               black()))
+        parts += [make_part(f"dispenser_{k}", "dispenser", S.cylinder(0.025, 0.004, center=(sx * (w / 2 - 0.07), 0.04 + (d - 0.16) / 2 - 0.04,
+                                                                                             h - 0.0019), sections=12), trim)
+                  for k, sx in enumerate((-1, 1))]
     return parts
