@@ -97,7 +97,7 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("workbench", parts=("worktop", "leg"),
           extra_parts=("shelf", "drawer", "drawer_box", "handle", "vise", "back_panel", "stretcher", "vise_jaw",
-                       "vise_screw", "vise_handle", "screw", "leg_cap"),
+                       "vise_screw", "vise_handle", "screw", "leg_cap", "bolt"),
           size_range=(1.1, 2.1), density=650, variants=("plain", "drawers", "pegboard_back"))
 def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.2, 2.0), rng.uniform(0.6, 0.8), rng.uniform(0.86, 0.95)
@@ -143,6 +143,17 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         out.append(make_part("back_panel", "back_panel",
                              S.box((w, 0.012, ph), center=(0, -d / 2 + 0.006, h + ph / 2)),
                              M.solid(M.jitter(rng, (0.72, 0.58, 0.4), 0.03), "wood", 0.8)))
+    # the carriage bolts through each leg into the stretchers: the upper side rails' from the
+    # ends, the low shelf rails' from the front and back, heads domed on the legs' faces
+    xl, yl = w / 2 - 0.03 - leg / 2, d / 2 - 0.03 - leg / 2
+    nb = 0
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            out.append(make_part(f"bolt_{nb}", "bolt", S.cylinder(0.009, 0.004, center=(sx * (w / 2 - 0.03 + 0.002), sy * yl, h - t - 0.1),
+                                                                  axis=(1, 0, 0), sections=10), M.metal(rng)))
+            out.append(make_part(f"bolt_{nb + 1}", "bolt", S.cylinder(0.009, 0.004, center=(sx * xl, sy * (d / 2 - 0.03 + 0.002), zs - 0.035),
+                                                                      axis=(0, 1, 0), sections=10), M.metal(rng)))
+            nb += 2
     # rubber caps on the legs' feet
     return out + leg_caps(out, label="leg_cap", mat=M.solid((0.08, 0.08, 0.08), "rubber", 0.8))
 
@@ -163,7 +174,7 @@ def pegboard(rng: np.random.Generator, variant: str) -> list[Part]:
     out += studs("screw", "screw", [(sx * (w / 2 - 0.03), t + 0.0105, z) for z in (0.015, h - 0.015) for sx in (-1, 1)],
                  r=0.005, h=0.001, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8), axis=(0, 1, 0))
     steel = M.metal(rng)
-    n = int(rng.integers(3, 8))
+    n = int(rng.integers(5, 11))
     for k in range(n):
         x = -w / 2 + 0.06 + (w - 0.12) * rng.uniform()
         z = 0.1 + (h - 0.2) * rng.uniform()
