@@ -87,7 +87,7 @@ def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher", "pivot", "leg_cap"), size_range=(0.5, 0.8), density=600,
+@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher", "pivot", "leg_cap", "tack"), size_range=(0.5, 0.8), density=600,
           variants=("folding", "bench"))
 def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.6, 0.75), rng.uniform(0.38, 0.45), rng.uniform(0.5, 0.58)
@@ -111,9 +111,17 @@ def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, sy in enumerate((-1, 1)):
             parts.append(make_part(f"stretcher_{i}", "stretcher", S.box((w - 0.08, 0.025, 0.025), center=(0, sy * (d / 2 - 0.02), 0.12)),
                                    frame))
+    brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
     for k in range(3):
         x = (k - 1) * w * 0.3
         parts.append(make_part(f"strap_{k}", "strap", S.box((0.05, d - 0.01, 0.004), center=(x, 0, h + 0.002)), strap))
+        # the strap's ends wrap under the rails, each held by a tack on the rail's outer face
+        parts += [make_part(f"tack_{2 * k + j}", "tack", S.cylinder(0.006, 0.003, center=(x, sy * (d / 2 + 0.0015 - (0.0 if variant == "bench" else 0.005)),
+                                                                                       h - 0.02), axis=(0, 1, 0), sections=8), brass)
+                  for j, sy in enumerate((-1, 1))]
+    if variant == "folding":  # the bars joining the crossed legs' feet across the rack
+        parts += [make_part(f"stretcher_{i}", "stretcher", S.cylinder(0.01, w - 0.1 + 0.06, center=(0, sy * (d / 2 - 0.014), 0.014), axis=(1, 0, 0),
+                                                                      sections=10), frame) for i, sy in enumerate((-1, 1))]
     if variant == "folding":  # the bolt each side where the crossed legs pivot
         steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
         for i, sx in enumerate((-1, 1)):
