@@ -167,11 +167,24 @@ def _slatted_crate(prefix: str, *, w: float, d: float, h: float, n: int, t: floa
     for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
         parts.append(make_part(f"post_{i}", "post", S.box((post, post, h), center=(sx * (w / 2 - post / 2), sy * (d / 2 - post / 2), h / 2)),
                                mat))
+    # each slat is nailed through the corner posts into its end grain: a nail head on each
+    # post's two outer faces at every row
+    steel = M.solid((0.35, 0.35, 0.37), "metal", 0.5, 0.7)
+    k = 0
+    for j in range(n):
+        z = pitch * j + pitch * 0.65 / 2 + 0.002
+        for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]:
+            x, y = sx * (w / 2 - post / 2), sy * (d / 2 - post / 2)
+            parts.append(make_part(f"nail_{k}", "nail", S.cylinder(0.003, 0.001, center=(x, sy * (d / 2 - 0.0005), z), axis=(0, 1, 0), sections=8),
+                                   steel))
+            parts.append(make_part(f"nail_{k + 1}", "nail", S.cylinder(0.003, 0.001, center=(sx * (w / 2 - 0.0005), y, z), axis=(1, 0, 0),
+                                                                       sections=8), steel))
+            k += 2
     parts.append(make_part(f"{prefix}", "bottom", S.box((w - 2 * t, d - 2 * t, t), center=(0, 0, t / 2)), mat))
     return parts
 
 
-@register("produce_crate", parts=("bottom", "slat"), extra_parts=("post", "handle", "wall"), size_range=(0.3, 0.7),
+@register("produce_crate", parts=("bottom", "slat"), extra_parts=("post", "handle", "wall", "nail"), size_range=(0.3, 0.7),
           density=500, variants=("wooden", "plastic", "display_bin"), placement="surface")
 def produce_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.4, 0.6), rng.uniform(0.3, 0.4)
@@ -200,7 +213,7 @@ def produce_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wooden_crate", parts=("bottom", "slat"), extra_parts=("post", "lid"), size_range=(0.3, 0.9), density=450,
+@register("wooden_crate", parts=("bottom", "slat"), extra_parts=("post", "lid", "nail"), size_range=(0.3, 0.9), density=450,
           variants=("open", "lidded"))
 def wooden_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.4, 0.8), rng.uniform(0.3, 0.6), rng.uniform(0.28, 0.55)
