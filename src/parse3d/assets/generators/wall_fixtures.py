@@ -249,7 +249,7 @@ def closet_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("smoke_detector", parts=("base", "cover"), extra_parts=("light", "grille", "test_button", "vent"),
+@register("smoke_detector", parts=("base", "cover"), extra_parts=("light", "grille", "test_button", "vent", "hush_button"),
           size_range=(0.09, 0.16), density=600, variants=("round", "square", "combo"),
           placement="ceiling")
 def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -265,6 +265,13 @@ def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
            make_part("light", "light", S.cylinder(0.003, 0.004, center=(r * 0.35, 0, 0.002), sections=8),
                      M.solid((0.9, 0.1, 0.1), "plastic", 0.2)),
            make_part("test_button", "test_button", S.cylinder(0.01, 0.003, center=(0, 0, 0.0015)), mat)]
+    # the green power light beside the red alarm light, the hush button beside the test
+    # button, and the sounder's grille in the face
+    out.append(make_part("light_1", "light", S.cylinder(0.003, 0.004, center=(r * 0.35, 0.012, 0.002), sections=8),
+                         M.solid((0.1, 0.8, 0.2), "plastic", 0.2)))
+    out.append(make_part("hush_button", "hush_button", S.cylinder(0.007, 0.003, center=(-r * 0.4, 0, 0.0015), sections=10), mat))
+    out.append(make_part("grille", "grille", S.box((r * 0.5, 0.012, 0.002), center=(0, -r * 0.45, 0.001)),
+                         M.solid((0.25, 0.25, 0.27), "plastic", 0.6)))
     # the smoke enters through vents round the cover's side
     dark = M.solid((0.25, 0.25, 0.27), "plastic", 0.6)
     if variant == "square":
@@ -396,7 +403,8 @@ def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("sign", parts=("panel",),
-          extra_parts=("lettering", "frame", "standoff", "post", "base", "clamp", "pictogram", "arrow", "foot"),
+          extra_parts=("lettering", "frame", "standoff", "post", "base", "clamp", "pictogram", "arrow", "foot", "end_cap",
+                       "test_button", "indicator"),
           size_range=(0.15, 1.9), density=900, variants=("wall_plaque", "exit", "standing"),
           placement="wall")
 def sign(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -416,7 +424,9 @@ def sign(rng: np.random.Generator, variant: str) -> list[Part]:
                 *[make_part(f"clamp_{k}", "clamp", S.box((0.04, 0.02, 0.025), center=(0, 0.005, 0.03 + ph + z)), metal)
                   for k, z in enumerate((h * 0.15, h * 0.85))],
                 make_part("foot", "foot", ring([(0.15, 0.0), (0.182, 0.0), (0.182, 0.004), (0.15, 0.004)], sections=24),
-                          black("rubber"))]
+                          black("rubber")),
+                # the cap closing the post's top end, behind the panel
+                make_part("end_cap", "end_cap", S.cylinder(0.017, 0.01, center=(0, 0, 0.03 + ph + h * 0.95), sections=10), black())]
     w, h = (rng.uniform(0.2, 0.5), rng.uniform(0.1, 0.3)) if variant == "wall_plaque" else (0.36, 0.18)
     col = (0.1, 0.6, 0.2) if variant == "exit" else M.jitter(rng, (0.2, 0.3, 0.5), 0.1)[:3]
     out = [make_part("panel", "panel", S.box((w, 0.006, h), center=(0, 0.015, h / 2)), M.solid(col, "plastic", 0.4)),
@@ -434,6 +444,11 @@ def sign(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("pictogram", "pictogram", S.box((h * 0.3, 0.002, h * 0.5), center=(-w * 0.42, 0.019, h / 2)), white_))
         out.append(make_part("arrow", "arrow", S.prism([(0, 0.02), (0.03, 0), (0, -0.02)], 0, 0.002).apply(
             np.array([[1, 0, 0, w * 0.4], [0, 0, -1, 0.02], [0, 1, 0, h / 2], [0, 0, 0, 1.0]])), white_))
+        # the emergency battery's test button and charge light low on the panel's face
+        out.append(make_part("test_button", "test_button", S.cylinder(0.004, 0.003, center=(w * 0.3, 0.0195, h * 0.1), axis=(0, 1, 0),
+                                                                      sections=8), black()))
+        out.append(make_part("indicator", "indicator", S.cylinder(0.0025, 0.002, center=(w * 0.38, 0.019, h * 0.1), axis=(0, 1, 0),
+                                                                  sections=8), M.solid((0.1, 0.8, 0.2), "plastic", 0.2)))
     return out
 
 
@@ -513,7 +528,7 @@ def _board(rng, *, w: float, h: float, surface_mat, frame_mat, label: str) -> li
                                          S.box((f, t, h - 2 * f), center=(w / 2 - f / 2, t / 2, h / 2))], frame_mat)]
 
 
-@register("bulletin_board", parts=("board", "frame"), extra_parts=("pin", "note"),
+@register("bulletin_board", parts=("board", "frame"), extra_parts=("pin", "note", "screw"),
           size_range=(0.4, 1.85), density=400, variants=("cork", "fabric", "large"),
           placement="wall")
 def bulletin_board(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -529,10 +544,13 @@ def bulletin_board(rng: np.random.Generator, variant: str) -> list[Part]:
                              M.solid(M.jitter(rng, (0.95, 0.9, 0.5), 0.1)[:3], "paper", 0.9)))
         out.append(make_part(f"pin_{k}", "pin", S.cylinder(0.005, 0.008, center=(x, 0.016, z + 0.05), axis=(0, 1, 0),
                                                           sections=8), M.solid((0.9, 0.1, 0.1))))
+    # the four screws through the frame's corners into the wall
+    out += studs("screw", "screw", [(sx * (w / 2 - 0.01), 0.0185, z) for z in (0.01, h - 0.01) for sx in (-1, 1)], r=0.003, h=0.001,
+                 mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4), axis=(0, 1, 0))
     return out
 
 
-@register("blackboard", parts=("board", "frame"), extra_parts=("tray", "chalk", "eraser", "leg", "map_rail", "hook"),
+@register("blackboard", parts=("board", "frame"), extra_parts=("tray", "chalk", "eraser", "leg", "map_rail", "hook", "screw", "bracket"),
           size_range=(0.5, 3.1), density=700, variants=("wall", "classroom", "easel"),
           placement="wall")
 def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -563,6 +581,13 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("eraser", "eraser", [S.box((0.12, 0.045, 0.012), center=(-w * 0.25, 0.03, z0 + 0.0185), bevel=0.002),
                                               S.box((0.12, 0.045, 0.018), center=(-w * 0.25, 0.03, z0 + 0.0335), bevel=0.004)],
                          M.solid((0.55, 0.4, 0.25), "wood", 0.7)))
+    if z0:  # the tray's two brackets under it, and the hinge bracket joining the back leg
+        wood = out[2].material
+        out += [make_part(f"bracket_{k}", "bracket", S.box((0.02, 0.05, 0.04), center=(sx * w * 0.35, 0.025, z0 - 0.02)), wood)
+                for k, sx in enumerate((-1, 1))]
+    else:  # the four screws through the frame's corners into the wall
+        out += studs("screw", "screw", [(sx * (w / 2 - 0.01), t + 0.0005, z) for z in (0.01, h - 0.01) for sx in (-1, 1)], r=0.003,
+                     h=0.001, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4), axis=(0, 1, 0))
     if variant == "classroom":  # a map rail along the top with hooks for maps and charts
         out.append(make_part("map_rail", "map_rail", S.box((w, 0.025, 0.04), center=(0, 0.0125, h + 0.02)), out[1].material))
         out += [make_part(f"hook_{k}", "hook", S.box((0.01, 0.012, 0.03), center=(x, 0.031, h + 0.02)), M.metal(rng))
