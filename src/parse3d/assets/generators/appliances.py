@@ -250,7 +250,7 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("mini_fridge", parts=("body", "door"),
           extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass", "thermostat", "crisper",
-                       "vent", "gasket", "door_shelf"),
+                       "vent", "gasket", "door_shelf", "light"),
           size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
           placement="floor")
 def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -281,6 +281,12 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                      center=(0, -0.025 + 0.01, fh + t + 0.04 + 0.001)), M.glass(rng)))
     out.append(make_part("vent", "vent", S.box((w * 0.7, 0.004, (h - fh) * 0.5), center=(0, -d / 2 - 0.002, fh + (h - fh) * 0.4)),
                          black()))
+    # the lamp in the cabinet's roof beside the thermostat, and a tall fridge's second shelf
+    out.append(make_part("light", "light", S.box((0.05, 0.03, 0.01), center=(-w * 0.15, d / 2 - 0.15, h - t - 0.005)),
+                         M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
+    if variant != "cube":
+        out.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - 0.05 - t - 0.02, 0.006),
+                                                       center=(0, -0.025 + t / 2 - 0.01, fh + (h - fh) * 0.28)), M.glass(rng)))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
                       else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
@@ -302,7 +308,7 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("dishwasher", parts=("body", "door"),
           extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket",
-                       "filter", "detergent_dispenser", "foot"),
+                       "filter", "detergent_dispenser", "foot", "indicator", "rinse_aid_cap"),
           size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
 def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
@@ -326,6 +332,13 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("control_panel", "control_panel",
                          S.box((w, 0.03, 0.08), center=(0, d / 2 - 0.015, h - 0.04)), mat))
     out += _buttons("button", w * 0.3, d / 2, [h - 0.04], black(), r=0.006)
+    # the programme buttons in a row beside the power button, each with its light above it
+    for k in range(4):
+        x = w * 0.3 - 0.035 * (k + 1)
+        out.append(make_part(f"button_{k + 1}", "button", S.cylinder(0.006, 0.006, center=(x, d / 2 + 0.002, h - 0.045), axis=(0, 1, 0),
+                                                                     sections=12), black()))
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.0025, 0.002, center=(x, d / 2 + 0.001, h - 0.025), axis=(0, 1, 0),
+                                                                        sections=8), M.solid((0.2, 0.6, 0.95), "glass", 0.1)))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=tk, z1=h - 0.08, y_back=d / 2 - 0.03,
                       thick=0.03, mat=mat, handle_mat=M.metal(rng), hinge_left=True, style="flat",
                       handle_len=w * 0.6, handle_at="top")
@@ -336,6 +349,10 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("detergent_dispenser", "detergent_dispenser",
                          S.box((0.12, 0.02, 0.07), center=(0, d / 2 - 0.03 - 0.01, tk + (h - 0.08 - tk) * 0.55)), grey))
     out.append(mount("door", "detergent_dispenser"))
+    # the rinse-aid reservoir's screw cap beside the dispenser, riding on the door too
+    out.append(make_part("rinse_aid_cap", "rinse_aid_cap", S.cylinder(0.018, 0.012, center=(0.1, d / 2 - 0.03 - 0.006, tk + (h - 0.08 - tk) * 0.55),
+                                                                      axis=(0, 1, 0), sections=12), grey))
+    out.append(mount("door", "rinse_aid_cap"))
     out += [make_part(f"foot_{k}", "foot", S.cylinder(0.012, tk * 0.5, center=(sx * (w / 2 - 0.04), d / 2 - 0.13, tk * 0.25),
                                                       sections=10), black("rubber"))
             for k, sx in enumerate((-1, 1))]
@@ -344,7 +361,7 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("clothes_dryer", parts=("body", "door"),
           extra_parts=("control_panel", "knob", "display", "drum", "foot", "hinge", "lint_filter", "button", "handle",
-                       "gasket", "exhaust_vent"),
+                       "gasket", "exhaust_vent", "indicator"),
           size_range=(0.8, 1.0), density=300, variants=("front_load", "stacked_steel", "compact"))
 def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "compact":
@@ -381,6 +398,13 @@ def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("gasket", "gasket", ring([(r * 0.92, 0.0), (r * 1.04, 0.0), (r * 1.04, 0.003), (r * 0.92, 0.003)],
                                                   sections=20).apply(_facing_front(d / 2, zc)), black("rubber")))
     out += _buttons("button", w * 0.3, d / 2, [h - 0.085, h - 0.035], black(), r=0.007)
+    # the option buttons under the display (dryness, delay), their lights beside them
+    for k in range(2):
+        out.append(make_part(f"button_{k + 2}", "button", S.cylinder(0.007, 0.006, center=(w * 0.15 + (k - 0.5) * 0.05, d / 2 + 0.002, h - 0.1),
+                                                                     axis=(0, 1, 0), sections=12), black()))
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.0025, 0.002, center=(w * 0.15 + (k - 0.5) * 0.05 + 0.015, d / 2 + 0.001,
+                                                                                               h - 0.1), axis=(0, 1, 0), sections=8),
+                             M.solid((0.95, 0.6, 0.1), "glass", 0.1)))
     out.append(make_part("exhaust_vent", "exhaust_vent", S.cylinder(0.05, 0.02, center=(0, -d / 2 - 0.01 + 0.015, fh + 0.12),
                                                                     axis=(0, 1, 0), sections=12), M.metal(rng)))
     return out
@@ -396,7 +420,7 @@ def _facing_front(y: float, z: float) -> np.ndarray:
 
 @register("water_cooler", parts=("body", "bottle"),
           extra_parts=("tap", "drip_tray", "cabinet_door", "collar", "foot", "indicator", "vent", "cup_dispenser",
-                       "power_switch"),
+                       "power_switch", "child_lock", "grille"),
           size_range=(0.55, 1.55), density=300, variants=("top_load", "bottom_load", "countertop"))
 def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.34)
@@ -422,6 +446,11 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
                              M.solid(col)))
     out.append(make_part("drip_tray", "drip_tray", S.box((w * 0.6, 0.06, 0.015),
                                                          center=(0, w / 2 + 0.03, h * 0.65)), black()))
+    # the removable grille on the tray, and the hot tap's child-safety catch on its top
+    out.append(make_part("grille", "grille", S.box((w * 0.55, 0.05, 0.003), center=(0, w / 2 + 0.03, h * 0.65 + 0.006)),
+                         M.solid((0.6, 0.6, 0.62), "plastic", 0.5)))
+    out.append(make_part("child_lock", "child_lock", S.box((0.012, 0.02, 0.006), center=(w * 0.2, w / 2 + 0.02, h * 0.85 + 0.023)),
+                         M.solid((0.85, 0.85, 0.85), "plastic", 0.4)))
     # the power and heating lights, the condenser vent at the back, the levelling feet
     for k, col in enumerate(((0.2, 0.9, 0.2), (0.95, 0.3, 0.1))):
         out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.004, 0.002, center=((k - 0.5) * 0.03, w / 2 + 0.001, h * 0.93),
@@ -479,7 +508,7 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("printer", parts=("body", "paper_tray"),
           extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port",
-                       "paper_guide", "power_inlet"),
+                       "paper_guide", "power_inlet", "indicator"),
           size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
           placement="surface")
 def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -515,6 +544,13 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                      center=(w * 0.3, d / 2 + 0.0005, bh - 0.015)),
                          M.solid((0.2, 0.4, 0.6), "glass", 0.1)))
     out += _buttons("button", w * 0.42, d / 2, [bh - 0.015], M.solid((0.3, 0.8, 0.3)), r=0.005)
+    # the cancel, copy and Wi-Fi buttons below the display, and the power and ink lights
+    for k in range(3):
+        out.append(make_part(f"button_{k + 1}", "button", S.cylinder(0.004, 0.004, center=(w * 0.3 + (k - 1) * 0.02, d / 2 + 0.002, bh - 0.027),
+                                                                     axis=(0, 1, 0), sections=10), black()))
+    for k, col in enumerate(((0.2, 0.9, 0.2), (0.95, 0.6, 0.1))):
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.002, 0.002, center=(w * 0.42 + (k * 2 - 1) * 0.012, d / 2 + 0.001, bh - 0.027),
+                                                                        axis=(0, 1, 0), sections=8), M.solid(col, "glass", 0.1)))
     if variant == "all_in_one":
         out.append(make_part("lid", "lid", S.box((w, d * 0.8, lid_h), center=(0, -d * 0.1, bh + lid_h / 2),
                                                  bevel=0.004), mat))
