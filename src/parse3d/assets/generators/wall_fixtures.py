@@ -354,7 +354,8 @@ def ceiling_light(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("mailbox", parts=("body", "door"),
-          extra_parts=("flag", "post", "hinge", "slot", "lock", "handle", "name_plate", "flag_pivot", "bracket"),
+          extra_parts=("flag", "post", "hinge", "slot", "lock", "handle", "name_plate", "flag_pivot", "bracket", "flap", "window",
+                       "reflector", "latch"),
           size_range=(0.3, 1.35), density=900, variants=("wall", "post", "locker"),
           placement="wall")
 def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -382,6 +383,11 @@ def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                                     axis=(1, 0, 0), sections=10), metal))
         out += [make_part(f"bracket_{k}", "bracket", S.box((0.006, 0.08, 0.06), center=(sx * 0.048, 0, ph - 0.03)), metal)
                 for k, sx in enumerate((-1, 1))]
+        # the red reflector on the door, and the spring latch on the body's lip the door snaps onto
+        out.append(make_part("reflector", "reflector", S.cylinder(0.02, 0.003, center=(0, d / 2 + 0.0015, ph + h * 0.55), axis=(0, 1, 0),
+                                                                  sections=12), M.solid((0.85, 0.1, 0.1), "glass", 0.2)))
+        out.append(mount("door", "reflector"))
+        out.append(make_part("latch", "latch", S.box((0.02, 0.012, 0.008), center=(0, d / 2 - 0.016, ph + h * 0.6 + w / 2 - 0.004)), metal))
         return out
     w, d, h = rng.uniform(0.3, 0.4), rng.uniform(0.1, 0.14), rng.uniform(0.35, 0.45)
     out = [make_part("body", "body", S.box((w, d - 0.012, h), center=(0, (d - 0.012) / 2, h / 2)), metal),
@@ -399,6 +405,12 @@ def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("handle", "handle", S.cylinder(0.009, 0.015, center=(w * 0.35, d + 0.0075, h * 0.35), axis=(0, 1, 0),
                                                         sections=10), metal))
     out.append(mount("door", "handle"))
+    # the hinged flap over the letter slot, and the row of viewing slots in the door that show
+    # when post is in
+    out.append(make_part("flap", "flap", S.box((w * 0.74, 0.004, 0.032), center=(0, d + 0.002 - 0.004, h * 0.88)), metal))
+    out += [make_part(f"window_{k}", "window", S.box((w * 0.08, 0.002, 0.012), center=(x, d + 0.001, h * 0.2)), black())
+            for k, x in enumerate(np.linspace(-w * 0.25, w * 0.05, 3))]
+    out += [mount("door", f"window_{k}") for k in range(3)]
     return out
 
 
