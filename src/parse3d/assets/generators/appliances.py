@@ -619,7 +619,8 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("computer_tower", parts=("case",),
           extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel", "usb_port",
-                       "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet"),
+                       "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet", "reset_button", "indicator",
+                       "thumbscrew", "slot_cover"),
           size_range=(0.3, 0.58), density=400, variants=("mid_tower", "full_tower", "mini"),
           placement="floor")
 def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -658,5 +659,17 @@ def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
                                                   sections=16), black()))
     out.append(make_part("psu_grille", "psu_grille", S.box((0.1, 0.002, 0.07), center=(-w / 2 + 0.06, yb - 0.001, fh + 0.05)), io))
     out.append(make_part("power_inlet", "power_inlet", S.box((0.03, 0.003, 0.02), center=(w / 2 - 0.02, yb - 0.0015, fh + 0.05)), black()))
+    # the reset button and the power and disk lights beside the power button; at the back the
+    # two thumbscrews holding the side panel and the expansion slot covers under the I/O shield
+    out.append(make_part("reset_button", "reset_button", S.cylinder(0.004, 0.004, center=(0.02, d / 2 + 0.002, h - 0.04), axis=(0, 1, 0),
+                                                                    sections=10), black()))
+    out += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.002, 0.002, center=(-0.02 - 0.008 * k, d / 2 + 0.001, h - 0.04), axis=(0, 1, 0),
+                                                                sections=8), M.solid(col, "glass", 0.1))
+            for k, col in enumerate(((0.2, 0.5, 0.95), (0.95, 0.5, 0.1)))]
+    out += [make_part(f"thumbscrew_{k}", "thumbscrew", S.cylinder(0.005, 0.006, center=(w / 2 - 0.008, yb - 0.003, z), axis=(0, 1, 0),
+                                                                  sections=10), io) for k, z in enumerate((h * 0.35, h * 0.8))]
+    n_slots = 2 if variant == "mini" else 4
+    out += [make_part(f"slot_cover_{k}", "slot_cover", S.box((0.1, 0.002, 0.014), center=(-w * 0.05, yb - 0.001, h - 0.22 - 0.02 * k)), io)
+            for k in range(n_slots)]
     return out
 

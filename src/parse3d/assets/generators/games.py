@@ -299,7 +299,9 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper", "hubcap", "headlight", "tail_light"), size_range=(0.08, 0.45),
+@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper", "hubcap", "headlight", "tail_light", "grille",
+                                                                    "mirror", "license_plate", "axle", "seat", "steering_wheel"),
+          size_range=(0.08, 0.45),
           density=600, variants=("sedan", "truck", "ride_on"), placement="surface")
 def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.1, 0.16) if variant != "ride_on" else rng.uniform(0.35, 0.42)
@@ -335,6 +337,25 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.solid((1.0, 0.95, 0.7), "glass", 0.1)))
         parts.append(make_part(f"tail_light_{i}", "tail_light", S.box((s * 0.01, W * 0.18, s * 0.04), center=(-L / 2 - s * 0.005 + s * 0.01, sy * W * 0.3, zl)),
                                M.solid((0.9, 0.1, 0.1), "glass", 0.1)))
+    # the radiator grille between the headlights, a wing mirror on each side of the cabin, the
+    # number plates front and back, and the two axles the wheels turn on
+    parts.append(make_part("grille", "grille", S.box((s * 0.008, W * 0.34, s * 0.035), center=(L / 2 - s * 0.002, 0, zl)), chrome))
+    xm = L * 0.2 if variant != "truck" else L * 0.43
+    for i, sy in enumerate((-1, 1)):
+        parts.append(make_part(f"mirror_{i}", "mirror", S.box((s * 0.03, W * 0.06, s * 0.025), center=(xm, sy * (W * 0.45 + W * 0.03), r + s * 0.19)),
+                               paint))
+    for i, sx in enumerate((1, -1)):
+        parts.append(make_part(f"license_plate_{i}", "license_plate", S.box((s * 0.006, W * 0.3, s * 0.03),
+                                                                            center=(sx * (L / 2 + s * 0.015 + s * 0.003), 0, r + s * 0.02 - s * 0.045)),
+                               M.solid((0.95, 0.95, 0.9), "metal", 0.4)))
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"axle_{i}", "axle", S.cylinder(r * 0.18, W * 1.0, center=(sx * L * 0.32, 0, r), axis=(0, 1, 0), sections=8),
+                               chrome))
+    if variant == "ride_on":  # the seat a child sits on and the steering wheel in front of it
+        parts.append(make_part("seat", "seat", S.box((L * 0.2, W * 0.6, s * 0.02), center=(-L * 0.12, 0, r + s * 0.31), bevel=s * 0.005),
+                               black()))
+        parts.append(make_part("steering_wheel", "steering_wheel", S.cylinder(W * 0.15, s * 0.015, center=(L * 0.12, 0, r + s * 0.33),
+                                                                            axis=(1, 0, 0.6), sections=12), black()))
     return parts
 
 
