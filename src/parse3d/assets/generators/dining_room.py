@@ -218,7 +218,7 @@ def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("flowers", parts=("stem", "bloom"), extra_parts=("leaf", "wrap", "ribbon"),
+@register("flowers", parts=("stem", "bloom"), extra_parts=("leaf", "wrap", "ribbon", "calyx"),
           size_range=(0.25, 0.7), density=400, variants=("roses", "tulips", "wrapped", "wildflowers"),
           placement="surface")
 def flowers(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -254,7 +254,10 @@ def flowers(rng: np.random.Generator, variant: str) -> list[Part]:
                             sections=12)
         bloom = bloom.moved(top - (0, 0, 0.002))
         parts.append(make_part(f"bloom_{k}", "bloom", bloom, col))
-        if k % 2 == 0:
+        if variant != "tulips":  # the green calyx cupping the bloom's base, where the sepals are
+            parts.append(make_part(f"calyx_{k}", "calyx", S.frustum(0.003, 0.0065, 0.006, center=tuple(top - (0, 0, 0.006)), sections=8),
+                                   green))
+        if k % 2 == 0 or variant == "roses":
             leaf = S.ellipsoid((0.03, 0.008, 0.0015), center=(0.03, 0, 0), subdivisions=1)
             p = mid + (top - mid) * 0.3
             leaf = leaf.apply(np.vstack([np.c_[rot((0, 0, 1), a) @ rot((0, 1, 0), -0.5), p],

@@ -198,7 +198,8 @@ def foosball_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot", "corner_block"), size_range=(0.7, 1.3),
+@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot", "corner_block", "screw"),
+          size_range=(0.7, 1.3),
           density=500, variants=("square", "octagon", "round"))
 def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.8, 1.2)
@@ -231,6 +232,9 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
         c = lw / 2 - 0.05 - 0.025
         parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.05, 0.05, ah * 0.6), center=(sx * c, sy * c, h - t - ah * 0.3)),
                                wood))
+        # the screw driven through the block's inner corner up into the top
+        parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.0045, 0.003, center=(sx * (c - 0.012), sy * (c - 0.012), h - t - ah * 0.6 - 0.0015),
+                                                                 sections=8), M.solid((0.6, 0.6, 0.62), "metal", 0.4)))
     if variant == "octagon":
         for i in range(4):
             a = np.pi / 4 + i * np.pi / 2
