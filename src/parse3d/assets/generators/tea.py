@@ -108,7 +108,7 @@ def floor_cushion(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_caddy", parts=("body", "lid"), extra_parts=("knob", "hinge", "label", "bead"), size_range=(0.07, 0.2), density=500,
+@register("tea_caddy", parts=("body", "lid"), extra_parts=("knob", "hinge", "label", "bead", "inner_lid", "clasp"), size_range=(0.07, 0.2), density=500,
           variants=("round", "square_hinged"), placement="surface")
 def tea_caddy(rng: np.random.Generator, variant: str) -> list[Part]:
     tin = M.solid(M.jitter(rng, [(0.1, 0.3, 0.2), (0.6, 0.1, 0.1), (0.1, 0.1, 0.1), (0.8, 0.65, 0.3)][int(rng.integers(4))],
@@ -120,15 +120,22 @@ def tea_caddy(rng: np.random.Generator, variant: str) -> list[Part]:
                 make_part("knob", "knob", S.ellipsoid((0.01, 0.01, 0.008), center=(0, 0, h + 0.02)), tin),
                 make_part("label", "label", S.cylinder(r + 0.0008, h * 0.4, center=(0, 0, h * 0.45), sections=24),
                           M.paper(rng)),
-                # the rolled beads stiffening the tin near its foot and under the lid
+                # the rolled beads stiffening the tin near its foot and under the lid, and the one
+                # rolled round the lid's own lower edge
                 *[make_part(f"bead_{k}", "bead", ring([(r - 0.001, z - 0.002), (r + 0.0015, z), (r - 0.001, z + 0.002)], sections=24), tin)
-                  for k, z in enumerate((0.006, h - 0.03))]]
+                  for k, z in enumerate((0.006, h - 0.03))],
+                make_part("bead_2", "bead", ring([(r + 0.001, h - 0.0015), (r + 0.0035, h - 0.0005), (r + 0.001, h + 0.0015)], sections=24), tin),
+                # the tight-fitting inner lid's pull ring, seen when the outer lid is off
+                make_part("inner_lid", "inner_lid", ring([(r * 0.3, h - 0.001), (r * 0.4, h - 0.001), (r * 0.4, h), (r * 0.3, h)], sections=16),
+                          tin)]
     w, h = rng.uniform(0.07, 0.1), rng.uniform(0.09, 0.15)
     parts = [make_part("body", "body", S.box((w, w, h), center=(0, 0, h / 2), bevel=0.003), tin),
              make_part("lid", "lid", S.box((w + 0.002, w + 0.002, 0.015), center=(0, 0, h + 0.0075), bevel=0.003), tin),
              make_part("knob", "knob", S.cylinder(0.008, 0.01, center=(0, 0.01, h + 0.02), sections=10), tin),
              make_part("label", "label", S.box((w * 0.7, 0.001, h * 0.4), center=(0, w / 2 + 0.0004, h * 0.45)), M.paper(rng))]
     parts += hinge_parts("hinge", x=h, y=-w / 2 - 0.003, z0=-w / 2, z1=w / 2, mat=tin, radius=0.003, length=0.015, axis="x")
+    # the spring clasp on the front that holds the lid shut, on the body under the lid's edge
+    parts.append(make_part("clasp", "clasp", S.box((0.018, 0.003, 0.012), center=(0, w / 2 + 0.0015, h - 0.007)), tin))
     parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -w / 2 - 0.001, h), opens=OPEN_DOOR))
     parts.append(mount("lid", "knob"))
     return parts

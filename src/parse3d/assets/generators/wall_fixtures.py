@@ -642,7 +642,8 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("toilet_seat_cover_dispenser", parts=("housing", "slot"), extra_parts=("cover_stack", "window", "lock", "label", "flange"),
+@register("toilet_seat_cover_dispenser", parts=("housing", "slot"), extra_parts=("cover_stack", "window", "lock", "label", "flange",
+                                                                                  "hinge", "tab"),
           size_range=(0.3, 0.48), density=700, variants=("steel", "plastic", "recessed"),
           placement="wall")
 def toilet_seat_cover_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -662,6 +663,11 @@ def toilet_seat_cover_dispenser(rng: np.random.Generator, variant: str) -> list[
                          M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     out.append(make_part("label", "label", S.box((w * 0.4, 0.001, 0.025), center=(0, d + 0.0005, h * 0.66)),
                          M.solid((0.2, 0.3, 0.6), "plastic", 0.5)))
+    # the front opens down on a piano hinge along its bottom edge to refill it; the first cover's
+    # tab hangs out of the slot for the next user
+    out.append(make_part("hinge", "hinge", S.cylinder(0.003, w * 0.8, center=(0, d + 0.001, 0.004), axis=(1, 0, 0), sections=8),
+                         M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+    out.append(make_part("tab", "tab", S.box((0.05, 0.001, 0.03), center=(0, d + 0.0065, h * 0.4 - 0.04)), white(rng, "paper")))
     if variant == "recessed":
         f = 0.015
         out.append(make_part("flange", "flange", [S.box((w + 2 * f, 0.003, f), center=(0, d - 0.0015, z)) for z in (-f / 2, h + f / 2)]
