@@ -49,7 +49,8 @@ def _basin(x0: float, x1: float, y0: float, y1: float, z_top: float, depth: floa
 
 
 @register("kitchen_counter", parts=("countertop", "body", "door"),
-          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_box"), size_range=(0.85, 2.5),
+          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_box", "shelf_pin", "strainer"),
+          size_range=(0.85, 2.5),
           density=600, variants=("doors", "drawer_bank", "sink"))
 def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     n_bays = int(rng.integers(2, 5)) if variant == "drawer_bank" else int(rng.integers(1, 5))
@@ -92,6 +93,12 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"shelf_{b}", "shelf",
                                    S.box((bay - t - 0.004, d - 0.03, t),
                                          center=((x0 + x1) / 2, -0.01, (KICK_H + t + zs) / 2)), mat))
+            # the four pins in the side panels' hole rows the shelf rests on
+            zp = (KICK_H + t + zs) / 2 - t / 2 - 0.003
+            half = (bay - t - 0.004) / 2
+            xs_ = ((x0 + x1) / 2 - half + 0.005, (x0 + x1) / 2 + half - 0.005)
+            parts += [make_part(f"shelf_pin_{4 * b + j}", "shelf_pin", S.cylinder(0.0025, 0.012, center=(x, y, zp), axis=(1, 0, 0), sections=8),
+                                hmat) for j, (x, y) in enumerate((x, y) for x in xs_ for y in (-d * 0.35, d * 0.3))]
         else:
             cx = (x0 + x1) / 2
             hole = (cx - bay * 0.32, cx + bay * 0.32, -0.19, 0.19)
@@ -102,6 +109,9 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
             hx0, hx1, hy0, hy1 = hole
             parts.append(make_part("sink", "sink", _basin(hx0, hx1, hy0 + oh / 2, hy1 + oh / 2, H_COUNTER - top_t,
                                                           0.18, 0.006), M.metal(rng)))
+            # the basket strainer in the basin's floor, flush with it
+            parts.append(make_part("strainer", "strainer", S.cylinder(0.045, 0.003, center=(cx, (hy0 + hy1) / 2 + oh / 2, H_COUNTER - top_t - 0.18 + 0.0045),
+                                                                      sections=16), M.metal(rng)))
             path = [[cx, -d / 2 + 0.05, H_COUNTER], [cx, -d / 2 + 0.05, H_COUNTER + 0.3],
                     [cx, -d / 2 + 0.12, H_COUNTER + 0.36], [cx, -d / 2 + 0.2, H_COUNTER + 0.3],
                     [cx, -d / 2 + 0.21, H_COUNTER + 0.24]]
