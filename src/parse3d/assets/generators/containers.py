@@ -370,6 +370,14 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
             for k, x in enumerate(np.linspace(-w * 0.38, w * 0.38, 6)):
                 rib = S.box((0.014, 0.004, h * 0.7), center=(x, s * (d / 2 + 0.002), h * 0.45))
                 parts.append(make_part(f"rib_{6 * i + k}", "rib", rib, mat))
+        # two more on each end either side of the hand hold (below it), and the rolled rim round the top
+        for i, s in enumerate((1, -1)):
+            for k, sy in enumerate((-1, 1)):
+                rib = S.box((0.004, 0.014, z_slot - slot_h / 2 - 0.03), center=(s * (w / 2 + 0.002), sy * inner_d * 0.35, (z_slot - slot_h / 2) / 2))
+                parts.append(make_part(f"rib_{12 + 2 * i + k}", "rib", rib, mat))
+        rim = [S.box((w + 0.008, 0.01, 0.012), center=(0, sy * (d / 2 - 0.001), h - 0.006)) for sy in (-1, 1)]
+        rim += [S.box((0.01, d - 0.012, 0.012), center=(sx * (w / 2 - 0.001), 0, h - 0.006)) for sx in (-1, 1)]
+        parts.append(make_part("rim", "rim", rim, mat))
         return parts
     r = rng.uniform(0.2, 0.26)
     h = rng.uniform(0.3, 0.45)
@@ -391,4 +399,10 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
                                               sections=20), mat))
     parts.append(make_part("foot_ring", "foot_ring", ring([(rb - 0.008, 0.0), (rb + 0.003, 0.0), (rb + 0.003, 0.012),
                                                            (rb - 0.008, 0.012)], sections=20), mat))
+    # moulded vertical ribs round the wall between the bands, clear of the handles
+    for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8):
+        zc = h * 0.475
+        rr = r_at(zc)
+        parts.append(make_part(f"rib_{k}", "rib", S.box((0.004, 0.014, h * 0.3), center=(np.cos(a) * (rr + 0.002), np.sin(a) * (rr + 0.002), zc),
+                                                        R=rot((0, 0, 1), a)), mat))
     return parts

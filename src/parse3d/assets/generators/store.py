@@ -27,7 +27,7 @@ def _walls(w: float, d: float, h: float, t: float, z0: float = 0.0) -> list[S.Sh
             S.box((t, d - 2 * t, h), center=(w / 2 - t / 2, 0, z0 + h / 2))]
 
 
-@register("shopping_basket", parts=("basket", "handle"), extra_parts=("rim", "base", "pivot", "label"), size_range=(0.3, 0.55), density=300,
+@register("shopping_basket", parts=("basket", "handle"), extra_parts=("rim", "base", "pivot", "label", "grip"), size_range=(0.3, 0.55), density=300,
           variants=("plastic", "wire"), placement="surface")
 def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.4, 0.47), rng.uniform(0.28, 0.33), rng.uniform(0.2, 0.25)
@@ -47,6 +47,11 @@ def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
                    r=0.009, h=0.006, mat=black(), axis=(0, 1, 0))
     parts.append(make_part("label", "label", S.box((0.12, 0.002, 0.04), center=(0, d / 2 + 0.001, h * 0.5)),
                            M.solid((0.95, 0.95, 0.95), "plastic", 0.4)))
+    # the moulded grip sleeve round the middle of each handle
+    for i, s in enumerate((-1, 1)):
+        y = s * (d / 2 - 0.02)
+        parts.append(make_part(f"grip_{i}", "grip", S.cylinder(0.011, w * 0.3, center=(0, y * 0.5, h + 0.12), axis=(1, 0, 0), sections=10),
+                               black()))
     return parts
 
 

@@ -233,13 +233,16 @@ def curtain_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial", "screw", "support"),
+@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial", "screw", "support", "end_cap"),
           size_range=(0.6, 2.5), density=2000, variants=("round", "oval", "wooden"),
           placement="wall")
 def closet_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     span = rng.uniform(0.6, 2.4)
     r = 0.016 if variant != "oval" else 0.013
     out = _rod(rng, label_rod="rod", span=span, y=0.3, z=0.03, r=r, variant_finials=False)
+    # the plastic caps closing the rod's two cut ends
+    out += [make_part(f"end_cap_{k}", "end_cap", S.cylinder(r + 0.001, 0.006, center=(sx * (span / 2 - 0.003), 0.3, 0.03), axis=(1, 0, 0),
+                                                            sections=12), M.solid((0.9, 0.9, 0.9), "plastic", 0.4)) for k, sx in enumerate((-1, 1))]
     if span > 1.2:  # a long rod sags without a centre support: a plate on the wall, an arm, a hook under the rod
         metal = out[0].material
         out.append(make_part("support", "support", [S.box((0.05, 0.006, 0.1), center=(0, 0.003, 0.06)),
@@ -286,7 +289,7 @@ def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("vent", parts=("frame", "louver"), extra_parts=("damper", "screw"),
+@register("vent", parts=("frame", "louver"), extra_parts=("damper", "screw", "lever"),
           size_range=(0.15, 0.65), density=2000, variants=("wall_grille", "ceiling_diffuser", "floor_register"),
           placement="wall")
 def vent(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -303,6 +306,8 @@ def vent(rng: np.random.Generator, variant: str) -> list[Part]:
                                                             center=(0, t * 0.6, z)), mat))
     out += studs("screw", "screw", [(sx * (w / 2 - f / 2), t + 0.0005, z) for z in (f / 2, h - f / 2) for sx in (-1, 1)],
                  r=0.0035, h=0.001, mat=mat, axis=(0, 1, 0))
+    if variant == "wall_grille":  # the damper's lever in a slot between two louvres
+        out.append(make_part("lever", "lever", S.box((0.012, 0.008, 0.01), center=(w / 2 - f - 0.03, t + 0.004, h / 2)), black("metal")))
     if variant == "floor_register":
         out.append(make_part("damper", "damper", S.box((0.03, 0.006, 0.015), center=(w / 2 - f - 0.03, t + 0.003, h / 2)),
                              black("metal")))
