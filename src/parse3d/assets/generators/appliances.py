@@ -465,7 +465,7 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("range_hood", parts=("canopy", "chimney"), extra_parts=("filter", "light", "button", "filter_handle", "grease_channel",
-                                                                 "screw"),
+                                                                 "screw", "indicator", "filter_latch"),
           size_range=(0.6, 1.25), density=200, variants=("chimney", "slim", "island"),
           placement="wall")
 def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -500,6 +500,11 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"filter_handle_{k}", "filter_handle", S.box((0.05, 0.012, 0.004), center=(sx * w * 0.2, d * 0.3, 0.0)),
                              M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8)))
     out.append(make_part("grease_channel", "grease_channel", S.box((w * 0.8, 0.015, 0.008), center=(0, -d * 0.35, 0.005)), steel))
+    # the fan-on light beside the buttons, and the spring latch at each filter's front edge
+    out.append(make_part("indicator", "indicator", S.cylinder(0.003, 0.003, center=(0.075, d / 2 + 0.0015, ch * 0.2), axis=(0, 1, 0),
+                                                              sections=8), M.solid((0.2, 0.6, 0.95), "glass", 0.1)))
+    out += [make_part(f"filter_latch_{k}", "filter_latch", S.box((0.03, 0.01, 0.004), center=(sx * w * 0.2, d * 0.35 + 0.01, 0.0)),
+                      M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8)) for k, sx in enumerate((-1, 1))]
     for k, sx in enumerate((-1, 1)):
         out.append(make_part(f"screw_{k}", "screw", S.cylinder(0.003, 0.002, center=(sx * top_w * 0.3, -d / 2 + 0.125 + 0.111, ch + 0.1),
                                                               axis=(0, 1, 0), sections=8), steel))
