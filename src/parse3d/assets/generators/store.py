@@ -284,7 +284,7 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel",
-                                                              "lock", "drain_plug", "grille", "light"),
+                                                              "lock", "drain_plug", "grille", "light", "spacer"),
           size_range=(0.7, 1.8), density=300, variants=("small", "large", "glass_top"))
 def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = {"small": rng.uniform(0.7, 0.95), "large": rng.uniform(1.2, 1.6), "glass_top": rng.uniform(1.4, 1.75)}[variant]
@@ -333,6 +333,9 @@ def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts.append(make_part("grille", "grille", S.box((0.004, d * 0.4, 0.12), center=(w / 2 + 0.002, -d * 0.1, fh + 0.1)), black()))
     parts.append(make_part("drain_plug", "drain_plug", S.cylinder(0.012, 0.008, center=(-w / 2 + 0.1, d / 2 + 0.004, fh + 0.04),
                                                                   axis=(0, 1, 0), sections=10), black()))
+    # the two plastic spacers on the back that keep the condenser off the wall
+    parts += [make_part(f"spacer_{k}", "spacer", S.box((0.04, 0.006, 0.04), center=(sx * (w / 2 - 0.1), -d / 2 - 0.003 + 0.0, fh + hb * 0.75)),
+                        black()) for k, sx in enumerate((-1, 1))]
     return parts
 
 

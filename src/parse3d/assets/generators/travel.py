@@ -133,7 +133,8 @@ def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button", "ferrule"),
+@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button", "ferrule", "corner_block",
+                                                           "piping"),
           size_range=(0.8, 1.7), density=400, variants=("upholstered", "slatted_shelf", "tufted"))
 def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.9, 1.6), rng.uniform(0.35, 0.48), rng.uniform(0.42, 0.5)
@@ -160,6 +161,13 @@ def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(int(rng.integers(4, 8))):
             x = -w / 2 + w * (k + 0.5) / 7 if k < 7 else 0.0
             parts.append(make_part(f"button_{k}", "button", S.cylinder(0.01, 0.008, center=(x, 0, h + ch - 0.002), sections=8), cloth))
+    # the glued blocks in the seat frame's corners behind the aprons, and the piping round the
+    # cushion's top seam
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.04, 0.04, 0.05), center=(sx * (w / 2 - 0.045 - 0.02), sy * (d / 2 - 0.045 - 0.02),
+                                                                                                   h - st - 0.025)), wood))
+    parts.append(make_part("piping", "piping", [S.box((w - 0.02, 0.008, 0.008), center=(0, sy * (d / 2 - 0.014), h + ch - ch / 3)) for sy in (-1, 1)]
+                           + [S.box((0.008, d - 0.036, 0.008), center=(sx * (w / 2 - 0.014), 0, h + ch - ch / 3)) for sx in (-1, 1)], cloth))
     # brass ferrules capping the legs' feet
     return parts + leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), height=0.04)
 

@@ -125,7 +125,7 @@ def paper_towel_roll(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("grab_bar", parts=("bar", "flange"), extra_parts=("screw_cover", "screw"),
+@register("grab_bar", parts=("bar", "flange"), extra_parts=("screw_cover", "screw", "grip"),
           size_range=(0.3, 0.95), density=3000, variants=("straight", "angled", "l_shaped"),
           placement="wall")
 def grab_bar(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -142,6 +142,11 @@ def grab_bar(rng: np.random.Generator, variant: str) -> list[Part]:
         path = [(-L / 2, y, 0.04), (L / 2, y, 0.04), (L / 2, y, 0.04 + L * 0.7)]
         ends = [(-L / 2, 0.04), (L / 2, 0.04 + L * 0.7)]
     out = [make_part("bar", "bar", S.tube(path, 0.016, sections=14), metal)]
+    # the knurled grip band round the middle of the first run, a hair proud of the tube
+    p0, p1 = np.asarray(path[0], float), np.asarray(path[1], float)
+    u = (p1 - p0) / np.linalg.norm(p1 - p0)
+    out.append(make_part("grip", "grip", S.cylinder(0.0168, float(np.linalg.norm(p1 - p0)) * 0.35, center=tuple((p0 + p1) / 2), axis=tuple(u),
+                                                    sections=14), metal))
     for k, (x, z) in enumerate(ends):
         out.append(make_part(f"flange_{k}", "flange", [S.cylinder(0.035, 0.008, center=(x, 0.004, z), axis=(0, 1, 0)),
                                                        S.cylinder(0.014, y - 0.008, center=(x, 0.008 + (y - 0.008) / 2, z),
