@@ -134,12 +134,6 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
         parts.append(make_part("ring_roll" if k == 0 else f"ring_roll_{k}", "ring_roll",
                                S.cylinder(min(0.009, td * 0.13), tw / 3 - 0.012, center=(-tw / 3, dy, zt + 0.004 + min(0.009, td * 0.13)),
                                           axis=(1, 0, 0), sections=10), velvet))
-    # the wider right-hand part of the tray is split into a front and a back bay, the back one
-    # halved again for earrings
-    parts.append(make_part("divider_1", "divider", S.box((tw * 2 / 3 - 0.006, 0.004, ht - 0.006),
-                                                         center=(tw / 6 - 0.001, 0, zt + 0.004 + (ht - 0.006) / 2)), velvet))
-    parts.append(make_part("divider_2", "divider", S.box((0.004, td / 2 - 0.008, ht - 0.006),
-                                                         center=(tw / 6 + tw / 3, -td / 4, zt + 0.004 + (ht - 0.006) / 2)), velvet))
     zl = z + h
     hl = rng.uniform(0.02, 0.03) if variant != "chest" else rng.uniform(0.05, 0.06)
     if variant == "chest":  # a rounded chest lid
