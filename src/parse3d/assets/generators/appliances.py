@@ -49,7 +49,7 @@ def _buttons(prefix: str, x: float, y: float, zs, mat, r: float = 0.008) -> list
 
 @register("microwave", parts=("body", "door"),
           extra_parts=("control_panel", "button", "handle", "glass", "hinge", "foot", "turntable", "display", "vent",
-                       "waveguide_cover", "latch", "roller_ring"),
+                       "waveguide_cover", "latch", "roller_ring", "key"),
           size_range=(0.42, 0.62), density=250, variants=("countertop", "white", "steel"),
           placement="surface")
 def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -62,6 +62,11 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("control_panel", "control_panel",
                          S.box((panel, d, h - fh), center=(xc + panel / 2, 0, fh + (h - fh) / 2)), mat))
     out += _buttons("button", xc + panel / 2, d / 2, np.linspace(fh + 0.06, h - 0.06, 4), black())
+    # the ten number keys in two columns either side of the function buttons
+    for k, z in enumerate(np.repeat(np.linspace(fh + 0.05, h - 0.08, 5), 2)):
+        x = xc + panel / 2 + (0.03 if k % 2 else -0.03)
+        out.append(make_part(f"key_{k}", "key", S.box((0.014, 0.004, 0.012), center=(x, d / 2 + 0.002, z), bevel=0.001),
+                             M.solid((0.85, 0.85, 0.85), "plastic", 0.4)))
     out += feet4("foot", w=w, d=d, r=0.012, h=fh, mat=black("rubber"), inset=0.02)
     out.append(make_part("turntable", "turntable", S.cylinder(min(xc + w / 2, d) * 0.4, 0.006,
                                                               center=((xc - w / 2) / 2, 0, fh + 0.018)),
