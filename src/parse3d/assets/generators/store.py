@@ -56,7 +56,7 @@ def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("shopping_cart", parts=("basket", "wheel", "handle"), extra_parts=("frame", "base", "child_seat", "bumper", "fork",
-                                                                            "coin_lock", "end_cap"),
+                                                                            "coin_lock", "end_cap", "hub", "hinge", "ad_panel"),
           size_range=(0.85, 1.15), density=250, variants=("full_size", "compact"))
 def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     k = 1.0 if variant == "full_size" else 0.8
@@ -92,6 +92,16 @@ def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.85, 0.7, 0.1), "plastic", 0.4)))
     parts += [make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.017, 0.012, center=(xb, sy * (W / 2 - 0.01 + 0.006), H), axis=(0, 1, 0),
                                                               sections=12), black()) for k, sy in enumerate((-1, 1))]
+    # the grey hub in each wheel's outer face, the advertising board across the handle's front,
+    # and the child seat's two hinges on the back wall it folds up on
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"hub_{i}", "hub", S.cylinder(0.02, 0.034, center=(sx * (L / 2 - 0.08), sy * (W / 2 - 0.06), 0.05), axis=(0, 1, 0),
+                                                            sections=10), M.solid((0.5, 0.5, 0.52), "plastic", 0.5)))
+    parts.append(make_part("ad_panel", "ad_panel", S.box((0.006, W * 0.5, 0.08), center=(xb + 0.04, 0, H - 0.08)),
+                           M.solid((0.95, 0.95, 0.95), "plastic", 0.4)))
+    if variant == "full_size":
+        parts += [make_part(f"hinge_{k}", "hinge", S.cylinder(0.008, 0.05, center=(-L * 0.3 - 0.125, sy * (W / 2 - 0.1), H - 0.18), axis=(0, 1, 0),
+                                                              sections=10), steel) for k, sy in enumerate((-1, 1))]
     return parts
 
 

@@ -19,7 +19,7 @@ from ._household import ring
 from ._kit import hinge_parts, mount, revolute
 
 
-@register("toilet_paper", parts=("roll",), extra_parts=("core", "sheet"),
+@register("toilet_paper", parts=("roll",), extra_parts=("core", "sheet", "wrapper"),
           size_range=(0.09, 0.2), density=300, variants=("standard", "double", "flat_packed"),
           placement="surface")
 def toilet_paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -35,6 +35,9 @@ def toilet_paper(rng: np.random.Generator, variant: str) -> list[Part]:
                                                          (0.02, w / 2 - 0.001), (0.018, w / 2 - 0.001)],
                                                         sections=20), T), M.paper(rng))]
     out.append(make_part("sheet", "sheet", S.box((w * 0.98, 0.06, 0.001), center=(0, r + 0.03, 0.0005)), white_p))
+    if variant == "flat_packed":  # a hotel roll comes in its own paper band round the middle
+        band = ring([(r, -w * 0.2), (r + 0.0008, -w * 0.2), (r + 0.0008, w * 0.2), (r, w * 0.2)], sections=28)
+        out.append(make_part("wrapper", "wrapper", S.transformed(band, T), M.solid((0.85, 0.85, 0.8), "paper", 0.8)))
     return out
 
 
