@@ -125,6 +125,8 @@ def paper_towel_roll(rng: np.random.Generator, variant: str) -> list[Part]:
     elif variant == "roll":
         out.append(make_part("sheet", "sheet", S.box((0.002, 0.06, h * 0.95), center=(r * 0.7, r + 0.03 - 0.03, h / 2),
                                                      ), white(rng, "paper")))
+    else:  # lying, its loose sheet unrolled flat in front of it
+        out.append(make_part("sheet", "sheet", S.box((h * 0.95, 0.08, 0.001), center=(0, r * 0.9 + 0.04, 0.0005)), white(rng, "paper")))
     return out
 
 
@@ -523,9 +525,18 @@ def calendar(rng: np.random.Generator, variant: str) -> list[Part]:
                                 [-w / 2, -0.002, h], [w / 2, -0.002, h], [-w / 2, 0.001, h], [w / 2, 0.001, h]]))
         page = S.hull(np.array([[-w / 2, d / 2, 0], [w / 2, d / 2, 0], [-w / 2, d / 2 - 0.003, 0], [w / 2, d / 2 - 0.003, 0],
                                 [-w / 2, 0.002, h], [w / 2, 0.002, h], [-w / 2, 0.005, h], [w / 2, 0.005, h]]))
-        return [make_part("backing", "backing", back, M.paper(rng)), make_part("page", "page", page, white(rng, "paper")),
-                make_part("binding", "binding", S.cylinder(0.006, w, center=(0, 0.0015, h), axis=(1, 0, 0), sections=10),
-                          black("metal"))]
+        paper = white(rng, "paper")
+        out = [make_part("backing", "backing", back, M.paper(rng)), make_part("page", "page", page, paper),
+               make_part("binding", "binding", S.cylinder(0.006, w, center=(0, 0.0015, h), axis=(1, 0, 0), sections=10),
+                         black("metal"))]
+        # the other eleven months' pages under this month's, on the same rings
+        pt = 0.0002
+        for k in range(1, 12):
+            yb0, yb1 = d / 2 - 0.003 - pt * k, d / 2 - 0.003 - pt * (k - 1)
+            yt0, yt1 = 0.002 - pt * k, 0.002 - pt * (k - 1)
+            out.append(make_part(f"page_{k}", "page", S.hull(np.array([[sx * w / 2, y, 0.0] for sx in (-1, 1) for y in (yb0, yb1)]
+                                                                      + [[sx * w / 2, y, h] for sx in (-1, 1) for y in (yt0, yt1)])), paper))
+        return out
     w = rng.uniform(0.22, 0.32) if variant == "wall" else rng.uniform(0.4, 0.6)
     h = w * (1.4 if variant == "wall" else 1.0)
     # the twelve month pages under the binding, this month's in front; the month's picture on
