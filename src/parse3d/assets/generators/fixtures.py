@@ -213,7 +213,7 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("ceiling_fan", parts=("blade", "motor"), extra_parts=("canopy", "downrod", "blade_arm", "light", "pull_chain", "blade_screw",
-                                                                 "coupling_cover", "switch_housing"),
+                                                                 "coupling_cover", "switch_housing", "screw"),
           size_range=(0.8, 1.45), density=600, variants=("four_blade", "five_blade", "with_light"), placement="ceiling")
 def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
     D = rng.uniform(0.9, 1.4)
@@ -239,6 +239,10 @@ def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
             cs = R @ np.array([rx, (-1) ** j * 0.008, 0])
             parts.append(make_part(f"blade_screw_{2 * k + j}", "blade_screw",
                                    S.cylinder(0.004, 0.003, center=(cs[0], cs[1], zm - 0.0815), sections=8), metal))
+    # the two screws through the canopy's side into the ceiling bracket
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.004, center=(sx * 0.062, 0, top - 0.03), axis=(1, 0, 0), sections=8),
+                               metal))
     # the cover over the downrod's coupling on the motor, and the switch housing under the motor
     parts.append(make_part("coupling_cover", "coupling_cover", S.frustum(0.045, 0.02, 0.04, center=(0, 0, zm), sections=16), metal))
     parts.append(make_part("switch_housing", "switch_housing", S.cylinder(0.06, 0.03, center=(0, 0, zm - 0.09 - 0.015 + 0.03), sections=20),
