@@ -57,3 +57,15 @@ def test_microwave_overhangs_a_mini_fridge_on_its_feet(seed):
     assert held[("ON", "microwave")] is True, held
     up = scene.objects["microwave"].transform(True)[:3, 2] / scene.objects["microwave"].scale
     assert up[2] >= np.cos(np.radians(5.0)), up
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3))
+def test_a_television_leaves_room_for_the_speakers_beside_it(seed):
+    """A television ON a small stand's top with a speaker SIDE_OF it left and right on the
+    same top: the television is drawn no wider than the top leaves after the speakers (down to
+    its category's least size); both speakers placed, every relation held after settling."""
+    scene = solved("speakers_beside_a_tv", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken

@@ -671,7 +671,7 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
         # longer than a container's floor: shrunk to lie in it, within its size range
         scale = floor_fit(st, support_edge, asset, scale, axis)
         if span_need(st, support_edge) <= 0:  # not resting across several parts
-            scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
+            scale = top_fit(st, support_edge, asset, scale, axis, library)  # a small top (fit.py)
             if keep is None and top_short(st, support_edge, asset, scale, axis) > 1.0:
                 # wider than the top even so: the smallest untried instance, at the least
                 # size its category allows (it overhangs, its feet on the top)
