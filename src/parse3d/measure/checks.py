@@ -918,13 +918,24 @@ OPEN_SUPPORT_LABELS = frozenset({"shelf"})
 BOARD_LABELS = frozenset({"shelf", "tier", "board", "plank", "ledge"})
 
 
+def board_parts(asset) -> list:
+    """The boards (:data:`BOARD_LABELS`) of an asset that holds nothing inside (a wall shelf):
+    ``IN`` the whole object means ON one of them; empty for anything with an inside."""
+    if asset.internal:
+        return []
+    return [p for p in asset.parts if p.label in BOARD_LABELS]
+
+
 def on_board(pobj: PlacedObject, ref: Ref, part_name: str | None = None) -> bool:
     """Whether ``IN`` the parent part ``ref`` (or the resolved ``part_name``) means ON its top:
-    a board (:data:`BOARD_LABELS`) of which no named part holds an internal surface."""
+    a board (:data:`BOARD_LABELS`) of which no named part holds an internal surface; ``IN``
+    the whole object when it holds nothing inside and has boards (plates in a wall shelf)."""
     if part_name is not None:
         parts = [p for p in pobj.asset.parts if p.name == part_name]
+    elif ref.part is None:
+        parts = board_parts(pobj.asset)
     else:
-        parts = select_parts(pobj, ref) if ref.part is not None else []
+        parts = select_parts(pobj, ref)
     names = {p.name for p in parts}
     return bool(parts) and all(p.label in BOARD_LABELS for p in parts) \
         and not any(i.part in names for i in pobj.asset.internal)

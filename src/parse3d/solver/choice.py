@@ -14,7 +14,7 @@ from shapely.geometry import Polygon
 
 from ..assets.model import Asset
 from ..geometry import regions as RG
-from ..measure.checks import BOARD_LABELS
+from ..measure.checks import BOARD_LABELS, board_parts
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
@@ -205,9 +205,9 @@ def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
     for label, idx, text, kind in reqs:
         if kind == "internal" and label is None:
-            if not asset.internal:
+            if not asset.internal and not any(free_top(asset, p) for p in board_parts(asset)):
                 return f"{asset.asset_id} holds nothing inside ({text})"
-            continue
+            continue  # an inside, or boards that hold what is IN it on their tops
         if kind == "stack_base" and label is None:
             if not any(lies_flat(asset, p) for p in asset.parts):
                 return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "

@@ -11,7 +11,7 @@ from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface, hull_area_2d
-from ..measure.checks import on_board
+from ..measure.checks import board_parts, on_board
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
@@ -349,6 +349,8 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
             raise Fail(f"IN: {ref} has no internal support surface"
                        f" (parts: {', '.join(sorted({p.label for p in parts}))})")
         rel, label = "ON", "top"  # a board holds what is IN it on its top (a wall shelf)
+        if ref.part is None:
+            parts = board_parts(parent.asset)  # IN the whole shelf: on its boards
     want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
     slanted = []
     if rel == "ON" and ref.part is not None and label == "top":
