@@ -489,14 +489,15 @@ def part_overhang(asset: Asset, e: Edge) -> float:
 
 def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Generator,
                   reasons: list[str], *, attempt: int, keep, loosen: dict[int, Edge],
-                  support_edge: Edge, smallest: bool):
+                  support_edge: Edge, smallest: bool, own: frozenset[str] = frozenset()):
     """The instance of one placement attempt: drawn from the library, or picked by a rule
     (the last one kept for a repair, the least overhung for a relaxed contact, the thinnest
     for a flat thing hung edge-up, the smallest after a failure for room, the lowest after
     a height band), replaced by one that meets ``reqs`` when it lacks something; added to
     ``tried``. Returns ``(category, asset, reqs)`` (``reqs`` loosened when no instance meets
-    them as written), or None when every suitable instance was tried; ``Fail`` when none in
-    the pool is suitable."""
+    them as written: what the object's children ask of it, from relations other than the
+    texts ``own``, is dropped last), or None when every suitable instance was tried; ``Fail``
+    when none in the pool is suitable."""
     category = node.candidates[int(rng.integers(len(node.candidates)))]
     asset = library.get(category, rng)
     picked = True  # by a rule below, else drawn
@@ -554,6 +555,12 @@ def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Gen
                                        every=True)
             if alt is not None:
                 reqs = boards
+        if alt is None and own and (mine := [r for r in reqs if r[2] in own]) != reqs:
+            # no instance has what a child names on it (a second shelf no fridge of the pool
+            # has): the object is placed all the same, and that child fails or relaxes alone
+            alt = alternative_instance(library, node.candidates, mine, tried, rng)
+            if alt is not None:
+                reqs = mine
         if alt is None:
             if asset.asset_id in tried:
                 return None  # every suitable instance was tried
