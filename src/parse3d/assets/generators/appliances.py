@@ -286,12 +286,13 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                      center=(0, -0.025 + 0.01, fh + t + 0.04 + 0.001)), M.glass(rng)))
     out.append(make_part("vent", "vent", S.box((w * 0.7, 0.004, (h - fh) * 0.5), center=(0, -d / 2 - 0.002, fh + (h - fh) * 0.4)),
                          black()))
-    # the lamp in the cabinet's roof beside the thermostat, and a tall fridge's second shelf
+    # the lamp in the cabinet's roof beside the thermostat, and a tall fridge's second shelf:
+    # the glass cover over the crisper drawer (a bottle still stands on it below the shelf)
     out.append(make_part("light", "light", S.box((0.05, 0.03, 0.01), center=(-w * 0.15, d / 2 - 0.15, h - t - 0.005)),
                          M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
     if variant != "cube":
         out.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - 0.05 - t - 0.02, 0.006),
-                                                       center=(0, -0.025 + t / 2 - 0.01, fh + (h - fh) * 0.28)), M.glass(rng)))
+                                                       center=(0, -0.025 + t / 2 - 0.01, fh + t + 0.085)), M.glass(rng)))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
                       else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
