@@ -361,6 +361,11 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         labels = [label] if (ref.surface or rel != "ON") else ["top"]
         for lb in labels:
             s = p.surfaces[lb].transformed(T)
+            if rel == "ON" and lb == "top" and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
+                # the parent lies on another face (a notebook on its cover): its part's top
+                # is the face that is up now (its front cover's outer face)
+                lb = _world_top(p, T) or lb
+                s = p.surfaces[lb].transformed(T)
             if want is not None and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
                 continue
             if rel == "ON" and not _flat_cached(parent.asset.asset_id, p, lb):
@@ -502,3 +507,13 @@ def _span(sups: list[Support]) -> Support | None:
     holes = [np.asarray(g.exterior.coords)[:-1] for g in getattr(gaps, "geoms", [gaps])
              if isinstance(g, Polygon) and not g.is_empty and g.area > 1e-8]
     return Support(replace(s0, polygon=hull), sups[0].choice, hull, holes=holes, spans=True)
+
+
+def _world_top(part, T: np.ndarray) -> str | None:
+    """The label of ``part``'s surface whose normal points up under the pose ``T`` (within
+    5 degrees), or None."""
+    for lb, n in SURFACES.items():
+        if lb in part.surfaces and float((T[:3, :3] @ np.asarray(n, float))[2]) \
+                >= np.cos(np.deg2rad(5)):
+            return lb
+    return None
