@@ -30,8 +30,6 @@ KNOWN: dict[str, str] = {
                            "seat and no longer leans on the back",
     "clothes_on_clothes": "seed 0: the upper pile rests on the lower sweater's cuffs, which "
                           "stand 6 mm above its top fold, and tilts 2 deg in settling",
-    "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
-                       "(relaxed, or failed)",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

@@ -48,6 +48,7 @@ from .sampling import (
     base_centred,
     base_supported,
     covered_centres,
+    covering_region,
     face_target,
     footprint_widths,
     free_positions,
@@ -361,6 +362,16 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     """Place the child on one support: turn it (stage 3), draw positions of its origin from
     the feasible region (4 and 5), order them and try each (6); ``Fail`` with the reason."""
     d = _turned(st, oid, asset, scale, hull, sup, support_edge, others, rng, cfg)
+    try:
+        samples = _ordered(d, _positions(d, rng), rng)
+        return _try_poses(d, samples, body, rng, proposal)
+    except Fail:  # a rug or a mat: what finds no room on it may reach onto the floor
+        grown = covering_region(st, sup, d.region0, d.F) \
+            if support_edge.relation == "ON" and cfg.strategy == "constrained" else None
+        if grown is None:
+            raise
+    d = _turned(st, oid, asset, scale, hull, sup, support_edge, others, rng, cfg)
+    d.region0 = grown
     samples = _ordered(d, _positions(d, rng), rng)
     return _try_poses(d, samples, body, rng, proposal)
 
