@@ -194,3 +194,26 @@ def test_a_coat_hung_by_its_collar_hangs_by_its_hanger(seed):
     assert c.relaxed["instead"] == "name coat:hook@top or coat@top"
     e = scene.pag.relations[c.index]
     assert check_edge(scene, whole_object(e), scene.objects["coat"])[0]
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_notebooks_written_on_their_cover_lie_on_it(seed):
+    """Notebooks and magazines are modelled standing; written ``ON pad:back_cover@bottom``
+    they lie on the back cover (recorded as resting on its outer face), and a pen ON the
+    front cover's top rests on the cover's face that is up, not on its 1 cm edge. Every
+    relation holds after settling."""
+    from test_rooms import solved
+
+    scene = solved("notebooks_lie_on_covers", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    for oid in ("pad1", "pad2", "mag1", "mag2"):
+        o = scene.objects[oid]
+        assert o.rests_on == "back", (oid, o.rests_on)
+        # lying: the asset's thin y axis is vertical
+        T = o.transform(True)
+        assert abs(T[2, 1]) > 0.95, (oid, T[:3, 1])
+    for pen, pad in (("pen1", "pad1"), ("pen2", "pad2")):
+        assert scene.objects[pen].position[2] > scene.objects[pad].position[2]

@@ -30,17 +30,16 @@ KNOWN: dict[str, str] = {
                            "seat and no longer leans on the back",
     "clothes_on_clothes": "seed 0: the upper pile rests on the lower sweater's cuffs, which "
                           "stand 6 mm above its top fold, and tilts 2 deg in settling",
-    "dining_on_a_rug": "seeds 0 and 1: chairs at a long table's ends or back reach past the rug "
-                       "(relaxed, or failed)",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part
-#: overhangs): tests/test_relax.py, tests/test_intent.py and tests/test_mounting.py check that
-#: the relation is relaxed with what blocks it and what to write instead.
+#: overhangs): tests/test_relax.py, tests/test_intent.py, tests/test_mounting.py and
+#: tests/test_against_flush.py check that the relation is relaxed with what blocks it and what
+#: to write instead.
 IMPOSSIBLE = {"living_sofa_wall", "shelf_panel_set_in", "named_support_parts",
               "heap_of_round_things", "hung_by_a_named_part", "hung_by_collar",
               "iron_on_a_leaning_board", "flat_things_fall_flat", "backpack_leans_further",
-              "layout_emptied", "mounted_on_small_parts"}
+              "layout_emptied", "mounted_on_small_parts", "flush_by_what_sticks_out"}
 
 
 def room_files() -> list[Path]:

@@ -810,12 +810,14 @@ def test_probe_trains_from_scratch_and_answers_the_test_split(bench, tmp_path):
 
     test_ids = {r["id"] for r in read_jsonl(bench / "test.jsonl") if r["task"] != "sgg"}
     for image in (True, False):
-        opts = ProbeOptions(size=(64, 48), epochs=100, batch=4, width=8, max_items=8,
-                            lr=3e-3, image=image, threads=1)
+        # lr 1e-3 for 300 epochs: at 3e-3 the loss oscillates and what is memorised depends
+        # on the rendered images' last bits
+        opts = ProbeOptions(size=(64, 48), epochs=300, batch=4, width=8, max_items=8,
+                            lr=1e-3, image=image, threads=1)
         res = train_probe(bench, opts)
         assert set(res.responses) == test_ids
         assert set(res.responses.values()) <= set("ABCD")
-        assert res.items["train"] == 8 and len(res.losses) == 100
+        assert res.items["train"] == 8 and len(res.losses) == 300
         assert all(math.isfinite(x) for x in res.losses)
         if image:  # the images tell eight questions apart: memorised
             assert res.losses[-1] < 0.5 * res.losses[0]

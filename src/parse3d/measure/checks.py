@@ -51,7 +51,8 @@ from .reach import (
     stands_to_lean,
 )
 
-__all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "Check", "CheckContext",
+__all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "COVER_THICK", "COVER_FLAT",
+           "covering_thickness", "Check", "CheckContext",
            "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
            "world_points", "select_parts", "end_pads", "END_DEPTH"]
 
@@ -124,6 +125,35 @@ CheckRule = Callable[[CheckContext], Check]
 _RULES: dict[str, CheckRule] = {}
 #: Relation name -> the rule that checks it (one rule per relation family).
 CHECK_RULES: MappingProxyType[str, CheckRule] = MappingProxyType(_RULES)
+
+
+#: A floor covering (a rug, a mat): a thin flat object lying on the floor, at most
+#: ``COVER_THICK`` m thick and ``COVER_FLAT`` of its narrower side. What stands on one may
+#: reach past its edge onto the floor, tilted by the covering's thickness across its base.
+COVER_THICK, COVER_FLAT = 0.03, 0.05
+
+
+def covering_thickness(lo: float, hi: float, narrow: float, floor_z: float) -> float:
+    """The thickness of an object spanning heights ``lo`` to ``hi`` with narrower horizontal
+    side ``narrow`` (m) if it is a floor covering on the floor at ``floor_z``, else 0."""
+    thick = hi - lo
+    covers = abs(lo - floor_z) <= 0.01 and thick <= min(COVER_THICK, COVER_FLAT * narrow)
+    return float(thick) if covers else 0.0
+
+
+def _covering_tilt(scene: Scene, child: PlacedObject, pobj: PlacedObject, settled) -> float:
+    """Degrees ``child`` may tilt ON ``pobj`` when ``pobj`` is a floor covering: its thickness
+    across the child's feet, at least half its narrower base side apart (a chair's legs are set
+    in from its seat's edge), one degree more; 0 elsewhere."""
+    floor = scene.room.elements.get("floor")
+    if floor is None:
+        return 0.0
+    pts = world_points(pobj, hull_only=True, settled=settled)
+    thick = covering_thickness(float(pts[:, 2].min()), float(pts[:, 2].max()),
+                               float(np.ptp(pts[:, :2], axis=0).min()),
+                               float(floor.surface.origin[2]))
+    base = float(np.min((child.asset.bounds[1] - child.asset.bounds[0])[:2])) * child.scale
+    return float(np.degrees(np.arctan2(thick, 0.5 * base))) + 1.0 if thick > 0 else 0.0
 
 
 def check_rule(*names: str) -> Callable[[CheckRule], CheckRule]:
@@ -581,6 +611,8 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
                 # lean relaxed) still stands on its support
                 hi = max(lean_range(le, on_obj)[1], WIDE_LEAN_DEG[1] if on_obj else 0.0)
                 ang_tol = max(ang_tol, hi + 1.0)
+    if rel == "ON" and settled and pobj is not None:  # partly on a rug, partly on the floor
+        ang_tol = max(ang_tol, _covering_tilt(ctx.scene, child, pobj, settled))
     if pile is not None or on_wall:  # on a pile (a rolled towel on towels) or on the
         ang_tol = max(ang_tol, PILE_TILT_DEG)  # container's wall (a bowl in a bowl), as it lands
     res = {"distance": round(gap - target, 6), "angle_deg": round(ang, 4)}
@@ -787,7 +819,9 @@ def _check_on(ctx: CheckContext) -> Check:
         com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
     inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3]) \
         or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3]) \
-        or _across_like(ctx, sB, com[:3])
+        or _across_like(ctx, sB, com[:3]) or (  # partly on a rug, the floor holds the rest
+            ctx.parent is not None and _covering_tilt(ctx.scene, ctx.child, ctx.parent,
+                                                      ctx.settled) > 0)
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
@@ -918,13 +952,24 @@ OPEN_SUPPORT_LABELS = frozenset({"shelf"})
 BOARD_LABELS = frozenset({"shelf", "tier", "board", "plank", "ledge"})
 
 
+def board_parts(asset) -> list:
+    """The boards (:data:`BOARD_LABELS`) of an asset that holds nothing inside (a wall shelf):
+    ``IN`` the whole object means ON one of them; empty for anything with an inside."""
+    if asset.internal:
+        return []
+    return [p for p in asset.parts if p.label in BOARD_LABELS]
+
+
 def on_board(pobj: PlacedObject, ref: Ref, part_name: str | None = None) -> bool:
     """Whether ``IN`` the parent part ``ref`` (or the resolved ``part_name``) means ON its top:
-    a board (:data:`BOARD_LABELS`) of which no named part holds an internal surface."""
+    a board (:data:`BOARD_LABELS`) of which no named part holds an internal surface; ``IN``
+    the whole object when it holds nothing inside and has boards (plates in a wall shelf)."""
     if part_name is not None:
         parts = [p for p in pobj.asset.parts if p.name == part_name]
+    elif ref.part is None:
+        parts = board_parts(pobj.asset)
     else:
-        parts = select_parts(pobj, ref) if ref.part is not None else []
+        parts = select_parts(pobj, ref)
     names = {p.name for p in parts}
     return bool(parts) and all(p.label in BOARD_LABELS for p in parts) \
         and not any(i.part in names for i in pobj.asset.internal)

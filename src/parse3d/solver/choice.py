@@ -14,7 +14,7 @@ from shapely.geometry import Polygon
 
 from ..assets.model import Asset
 from ..geometry import regions as RG
-from ..measure.checks import BOARD_LABELS
+from ..measure.checks import BOARD_LABELS, board_parts
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
@@ -205,9 +205,9 @@ def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
     for label, idx, text, kind in reqs:
         if kind == "internal" and label is None:
-            if not asset.internal:
+            if not asset.internal and not any(free_top(asset, p) for p in board_parts(asset)):
                 return f"{asset.asset_id} holds nothing inside ({text})"
-            continue
+            continue  # an inside, or boards that hold what is IN it on their tops
         if kind == "stack_base" and label is None:
             if not any(lies_flat(asset, p) for p in asset.parts):
                 return (f"{asset.asset_id} would roll: neither its top nor its bottom is flat "
@@ -489,14 +489,15 @@ def part_overhang(asset: Asset, e: Edge) -> float:
 
 def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Generator,
                   reasons: list[str], *, attempt: int, keep, loosen: dict[int, Edge],
-                  support_edge: Edge, smallest: bool):
+                  support_edge: Edge, smallest: bool, own: frozenset[str] = frozenset()):
     """The instance of one placement attempt: drawn from the library, or picked by a rule
     (the last one kept for a repair, the least overhung for a relaxed contact, the thinnest
     for a flat thing hung edge-up, the smallest after a failure for room, the lowest after
     a height band), replaced by one that meets ``reqs`` when it lacks something; added to
     ``tried``. Returns ``(category, asset, reqs)`` (``reqs`` loosened when no instance meets
-    them as written), or None when every suitable instance was tried; ``Fail`` when none in
-    the pool is suitable."""
+    them as written: what the object's children ask of it, from relations other than the
+    texts ``own``, is dropped last), or None when every suitable instance was tried; ``Fail``
+    when none in the pool is suitable."""
     category = node.candidates[int(rng.integers(len(node.candidates)))]
     asset = library.get(category, rng)
     picked = True  # by a rule below, else drawn
@@ -554,6 +555,12 @@ def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Gen
                                        every=True)
             if alt is not None:
                 reqs = boards
+        if alt is None and own and (mine := [r for r in reqs if r[2] in own]) != reqs:
+            # no instance has what a child names on it (a second shelf no fridge of the pool
+            # has): the object is placed all the same, and that child fails or relaxes alone
+            alt = alternative_instance(library, node.candidates, mine, tried, rng)
+            if alt is not None:
+                reqs = mine
         if alt is None:
             if asset.asset_id in tried:
                 return None  # every suitable instance was tried
@@ -671,7 +678,7 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
         # longer than a container's floor: shrunk to lie in it, within its size range
         scale = floor_fit(st, support_edge, asset, scale, axis)
         if span_need(st, support_edge) <= 0:  # not resting across several parts
-            scale = top_fit(st, support_edge, asset, scale, axis)  # a small top (fit.py)
+            scale = top_fit(st, support_edge, asset, scale, axis, library)  # a small top (fit.py)
             if keep is None and top_short(st, support_edge, asset, scale, axis) > 1.0:
                 # wider than the top even so: the smallest untried instance, at the least
                 # size its category allows (it overhangs, its feet on the top)

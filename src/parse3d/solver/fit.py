@@ -25,7 +25,7 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import filled
 
-__all__ = ["instance_for", "need", "roomy_instance", "roomy_scale", "top_fit", "top_sides"]
+__all__ = ["beside", "instance_for", "need", "roomy_instance", "roomy_scale", "top_fit", "top_sides"]
 
 #: Pool slots per candidate category looked at for a child's smallest footprint and for a
 #: parent with room on its top.
@@ -231,14 +231,43 @@ def roomy_scale(st: SolveState, library, oid: str, asset: Asset, scale: float) -
     return scale * g
 
 
-def top_fit(st: SolveState, edge: Edge, asset: Asset, scale: float, axis: int) -> float:
+#: Sides of a child that the objects written SIDE_OF it stand along (beside it on its top).
+_BESIDE = ("left", "right")
+
+
+def beside(st: SolveState, library, edge: Edge) -> float:
+    """Metres the unplaced objects written ``SIDE_OF`` the child of ``edge`` (left or right of
+    it) on the same support take along the top: the short side of the smallest footprint each
+    comes in (speakers either side of a television on a console)."""
+    if library is None:
+        return 0.0
+    kid, total = edge.child.object, 0.0
+    for e in st.pag.relations:
+        if e.relation != "SIDE_OF" or e.parent.object != kid or e.param("side") not in _BESIDE:
+            continue
+        other = st.scene.objects.get(e.child.object)
+        if other is not None and other.placed:
+            continue
+        sup = st.pag.supporter(e.child.object)
+        if sup is None or sup.relation != "ON" or sup.parent.object != edge.parent.object \
+                or sup.parent.part != edge.parent.part:
+            continue
+        want = need(st, library, sup)
+        if want is not None:
+            total += want[0]
+    return total
+
+
+def top_fit(st: SolveState, edge: Edge, asset: Asset, scale: float, axis: int,
+            library=None) -> float:
     """``scale``, or less so that the child ``ON`` an object's top fits the largest of its
     supports (a herb pot on a 12 cm window sill): down to the least scale the node's own
     ``scale`` range allows, which the writer said is meant (when even that does not fit, the
     smaller child overhangs under the stability rule); without a node range, only when
     shrinking within the category's size range makes it fit (a television wider than its
     stand keeps its size). Unchanged for a stack of one category (a child may overhang one
-    of its kind) and anything not ON an object."""
+    of its kind) and anything not ON an object. With ``library``, the objects written beside
+    the child on the same top (:func:`beside`) take their share of its long side first."""
     from .config import Fail
     from .support import support_candidates
 
@@ -255,16 +284,19 @@ def top_fit(st: SolveState, edge: Edge, asset: Asset, scale: float, axis: int) -
     ext = hull_extents(asset)[0]
     c0, c1 = sorted(scale * float(ext[k]) for k in range(3) if k != axis)
     best = float("inf")
+    side = beside(st, library, edge)
     for sup in sups:
         s0, s1 = _sides(sup.region)
-        if s0 > 0:
-            best = min(best, max(c0 / (FIT_SHARE * s0), c1 / (FIT_SHARE * s1)))
+        if s0 > 0 and FIT_SHARE * s1 > side:
+            best = min(best, max(c0 / (FIT_SHARE * s0), c1 / (FIT_SHARE * s1 - side)))
     if best <= 1.0 or not np.isfinite(best):
         return scale
     target = scale / best
     if node.scale is not None:
         return max(target, min(scale, node.scale[0] * _unit_scale(asset)))
     lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+    if side > 0:  # room beside it: as small as its category allows, if not small enough
+        return max(target, min(scale, lo))
     return target if target >= lo else scale
 
 

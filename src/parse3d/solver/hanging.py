@@ -143,6 +143,21 @@ END_SHARE = 0.3
 
 _END_LABELS = {0: ("left", "right"), 1: ("back", "front")}
 
+#: Share of the length within which a part's bounds must reach an end of the child for the
+#: part to count as that end though its centre lies further in (a stubby screwdriver's handle
+#: is half its length).
+END_REACH = 0.05
+
+
+def _end_at(centre: float, lo: float, hi: float) -> float:
+    """Where along the child's length (0 to 1) a part hung by sits for :func:`hung_lengthwise`:
+    its centre, or the end it reaches when it spans from that end to short of the middle."""
+    if lo <= END_REACH and centre < 0.5 - END_REACH:
+        return 0.0
+    if hi >= 1 - END_REACH and centre > 0.5 + END_REACH:
+        return 1.0
+    return centre
+
 
 def hung_lengthwise(edge: Edge, asset: Asset) -> Edge | None:
     """The support edge by which a long child lying along its x or y axis (a hammer, a
@@ -168,7 +183,9 @@ def hung_lengthwise(edge: Edge, asset: Asset) -> Edge | None:
     # heads at both ends: it hangs by one)
     groups = [np.vstack([np.asarray(p.bounds, float) for p in parts])] + \
         [np.asarray(p.bounds, float) for p in parts]
-    ats = [(float(np.mean(b[:, a])) - float(hull[:, a].min())) / max(float(ext[a]), 1e-9)
+    lo, length = float(hull[:, a].min()), max(float(ext[a]), 1e-9)
+    ats = [_end_at((float(np.mean(b[:, a])) - lo) / length,
+                   (float(b[:, a].min()) - lo) / length, (float(b[:, a].max()) - lo) / length)
            for b in groups]
     at = next((x for x in ats if not END_SHARE < x < 1 - END_SHARE), None)
     if at is None:

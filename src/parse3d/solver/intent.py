@@ -28,7 +28,7 @@ from ..relations import SURFACES
 from .geometry import part_points
 
 __all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
-           "beside"]
+           "beside", "lies_on_cover"]
 
 #: Support relations whose named child part is placed by the whole object when another part
 #: of the instance reaches further toward the support.
@@ -147,3 +147,55 @@ def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
            f"beside it, {under.relation} {under.parent} (write {under.relation} {cid} -> "
            f"{under.parent}, a heap, or stack on a flat base)")
     return sup, near, why
+
+
+#: A part is a panel when its thinnest extent is at most this share of its middle one.
+PANEL_THIN = 0.25
+#: An object lies on a cover panel when its extent across the panel is at most this share of
+#: its smaller other extent (a notebook, a magazine; not a cabinet by its side panel).
+FLAT_OBJECT = 0.5
+#: Metres within which a panel's outer face counts as the object's outside.
+OUTSIDE_TOL = 2e-3
+
+
+def lies_on_cover(edge: Edge, asset: Asset) -> Edge | None:
+    """The support edge by which a flat object modelled standing (a notebook, a magazine)
+    lies on one of its outer panels when written ``ON obj:panel@bottom`` (``ON
+    notebook:back_cover@bottom -> desk:top``): the panel's outer face, its large face on the
+    object's outside, so the object lies on it as the writer meant rather than standing on
+    the panel's lower edge; None for anything else (the edge as written). The placed object
+    records the face as ``rests_on``, which the ``ON`` check measures."""
+    c = edge.child
+    if edge.relation != "ON" or c.part is None or c.surface != "bottom":
+        return None
+    ps = asset.parts_by_label(c.part)
+    if c.index is not None:
+        ps = ps[c.index:c.index + 1]
+    if not ps:
+        return None
+    b = np.vstack([np.asarray(p.bounds, float) for p in ps])
+    lo, hi = b.min(axis=0), b.max(axis=0)
+    ext = hi - lo
+    axis = int(np.argmin(ext))
+    if axis == 2 or ext[axis] > PANEL_THIN * float(np.sort(ext)[1]):
+        return None
+    ob = np.asarray(asset_bounds(asset), float)
+    oext = ob[1] - ob[0]
+    if oext[axis] > FLAT_OBJECT * min(float(oext[k]) for k in range(3) if k != axis):
+        return None
+    if hi[axis] >= ob[1][axis] - OUTSIDE_TOL and lo[axis] > ob[0][axis] + OUTSIDE_TOL:
+        side = ("right", "front")[axis]
+    elif lo[axis] <= ob[0][axis] + OUTSIDE_TOL and hi[axis] < ob[1][axis] - OUTSIDE_TOL:
+        side = ("left", "back")[axis]
+    else:
+        return None  # the panel spans the object (a record's sleeve): it stands as written
+    from ..pag.refs import format_ref
+
+    return replace(edge, child=replace(c, surface=side,
+                                       text=format_ref(c.object, c.part, c.index, side)))
+
+
+def asset_bounds(asset: Asset) -> np.ndarray:
+    """(2, 3) bounds of all of ``asset``'s parts (unit scale)."""
+    b = np.vstack([np.asarray(p.bounds, float) for p in asset.parts])
+    return np.stack([b.min(axis=0), b.max(axis=0)])

@@ -18,6 +18,7 @@ from ..pag.model import Edge
 from ..scene.model import PlacedObject, SupportChoice
 from .choice import (
     SURFACE_AXES,
+    alternative_instance,
     draw_instance,
     edge_text,
     free_headroom,
@@ -29,9 +30,10 @@ from .choice import (
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .fit import instance_for
+from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
-from .intent import beside, loose_reason, names_part, overhang, whole_object
+from .intent import beside, lies_on_cover, loose_reason, names_part, overhang, whole_object
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
@@ -46,6 +48,7 @@ from .sampling import (
     base_centred,
     base_supported,
     covered_centres,
+    covering_region,
     face_target,
     footprint_widths,
     free_positions,
@@ -90,6 +93,9 @@ class Placement:
     #: why the support edge was placed otherwise than written (by the whole object when its
     #: named part cannot touch, beside a round parent), recorded as relaxed; None when not
     loose_support: str | None = None
+    #: contacts placed flush by another part than the one named (edge index -> why),
+    #: recorded as relaxed (:mod:`parse3d.solver.flush`)
+    flush: dict[int, str] = field(default_factory=dict)
 
 
 def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: SolverConfig,
@@ -129,10 +135,21 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     axis = SURFACE_AXES[support_edge.child.surface or support_edge.spec.child_surface]
     for attempt in range(cfg.asset_attempts):
         got = draw_instance(library, node, reqs, tried, rng, reasons, attempt=attempt, keep=keep,
-                            loosen=loosen, support_edge=support_edge, smallest=smallest)
+                            loosen=loosen, support_edge=support_edge, smallest=smallest,
+                            own=frozenset(map(edge_text, edges)))
         if got is None:
             break  # every suitable instance was tried
         category, asset, reqs = got
+        if keep is None and (key := least_overhung_key(
+                [e for i, e in enumerate(edges[1:], 1) if i not in skip and i not in loosen])) \
+                and key(asset) > 0:
+            # a contact named on a part another part overhangs: every slot ranked, the
+            # instance whose named part comes nearest its parent first (flush.py)
+            alt = alternative_instance(library, node.candidates, reqs, tried, rng, key=key,
+                                       every=True)
+            if alt is not None and key(alt[1]) < key(asset):
+                category, asset = alt
+                tried.add(asset.asset_id)
         if keep is None and attempt == 0:  # nests, has room on its top (fit.py)
             category, asset = instance_for(st, library, oid, support_edge, category, asset,
                                            lambda a, r=reqs: lacks(a, r) is None, tried, rng)
@@ -148,7 +165,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(short)
             intrinsic.append(False)
             continue
-        hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset)
+        hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
+            or lies_on_cover(support_edge, asset)  # a notebook ON its cover lies on it
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale,
                          SURFACE_AXES[hang.child.surface] if hang is not None else 2)
@@ -162,10 +180,15 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             # even the best instance is overhung: it rests by the part that reaches furthest
             loose = loose_reason(asset, support_edge, scale)
             placed_edge = whole_object(support_edge)
+        # a contact named on a part another part overhangs: flush by that part (flush.py)
+        flushed = flush_plan(asset, scale, edges, {*skip, *loosen}) if cfg.relax else {}
+        placed = [flushed[i][0] if i in flushed else loosen.get(i, e)
+                  for i, e in enumerate(edges[1:], 1) if i not in skip]
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale,
-                                                       hang or placed_edge, others, rng, cfg,
-                                                       proposal if attempt == 0 else None)
+                                                       hang or placed_edge,
+                                                       [*placed, *others[len(placed):]], rng,
+                                                       cfg, proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
             intrinsic.append(f.intrinsic)
@@ -181,11 +204,11 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         obj.fixed = RULES[support_edge.relation].fixed
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
-        for i in loosen:
+        for i in (*loosen, *flushed):
             full[i] = None
         if loose is not None:
             full[0] = None  # measured on the edge as written afterwards
-        return Placement(obj, body, full, loose)
+        return Placement(obj, body, full, loose, {i: why for i, (_, why) in flushed.items()})
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
 
 
@@ -339,6 +362,16 @@ def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.nda
     """Place the child on one support: turn it (stage 3), draw positions of its origin from
     the feasible region (4 and 5), order them and try each (6); ``Fail`` with the reason."""
     d = _turned(st, oid, asset, scale, hull, sup, support_edge, others, rng, cfg)
+    try:
+        samples = _ordered(d, _positions(d, rng), rng)
+        return _try_poses(d, samples, body, rng, proposal)
+    except Fail:  # a rug or a mat: what finds no room on it may reach onto the floor
+        grown = covering_region(st, sup, d.region0, d.F) \
+            if support_edge.relation == "ON" and cfg.strategy == "constrained" else None
+        if grown is None:
+            raise
+    d = _turned(st, oid, asset, scale, hull, sup, support_edge, others, rng, cfg)
+    d.region0 = grown
     samples = _ordered(d, _positions(d, rng), rng)
     return _try_poses(d, samples, body, rng, proposal)
 

@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 from ..assets.model import Asset
 from ..geometry import regions as RG
 from ..geometry.frames import axis_angle
-from ..measure.checks import EPS, world_points
+from ..measure.checks import EPS, covering_thickness, world_points
 from ..pag.model import Edge
 from ..scene.model import PlacedObject
 from .choice import touching
@@ -28,7 +28,8 @@ __all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pie
            "hung_siblings", "from_one_end", "leave_room", "base_supported", "never_upright",
            "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
            "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller",
-           "footprint_widths", "well_inside", "face_target", "no_space"]
+           "footprint_widths", "well_inside", "face_target", "no_space", "floor_covering",
+           "covering_region"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
@@ -135,6 +136,35 @@ def inset(sup: Support, margin: float):
     (they are bounded by walls in the collision world)."""
     region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else margin), join_style="mitre")
     return sup.region if region0.is_empty else region0  # tiny supports (a burner): see overhang
+
+
+def floor_covering(st: SolveState, sup: Support) -> bool:
+    """Whether ``sup`` faces up on a floor covering (a rug, a mat: a thin flat object lying
+    on the floor, :func:`parse3d.measure.checks.covering_thickness`)."""
+    floor = st.scene.room.elements.get("floor")
+    if sup.owner == "room" or sup.owner not in st.zr or floor is None \
+            or float(sup.surface.normal[2]) < 0.99:
+        return False
+    lo, hi = st.zr[sup.owner]
+    narrow = rect_sides(Polygon(st.xy[sup.owner]))[0]
+    return covering_thickness(lo, hi, narrow, float(floor.surface.origin[2])) > 0
+
+
+def covering_region(st: SolveState, sup: Support, region0, F: np.ndarray):
+    """The region a child with footprint ``F`` (plane coordinates about its origin) may take
+    ON a floor covering: ``region0`` grown by 0.8 of the footprint's narrower extent (a fifth
+    of the child at least stays over the covering) and clipped to the floor, where the rest
+    stands (chairs pulled up to a table on a rug, its ends past the rug's edge); None when
+    ``sup`` is no floor covering or the child fits on it. Tried only when no pose is found on
+    the covering itself, so what fits stands wholly on it."""
+    if not floor_covering(st, sup):
+        return None
+    reach = 0.8 * float(np.min(np.ptp(F, axis=0)))
+    room = st.scene.room.elements["floor"].surface
+    floor = Polygon(plane_coords(sup.surface, room.to_3d(np.asarray(
+        room.polygon.exterior.coords)))).buffer(-EPS / 2, join_style="mitre")
+    grown = region0.buffer(reach, join_style="mitre").intersection(floor)
+    return None if grown.is_empty or grown.area <= region0.area else grown
 
 
 def reach_box(region, F: np.ndarray, pad: float) -> tuple[float, float, float, float]:

@@ -248,11 +248,17 @@ class _Search:
             raise _internal(self.st.scene, oid, e) from e
 
     def commit(self, p: Placement) -> None:
-        key = str(self.edge_index[id(self.pag.edges_of(p.obj.id)[0])])
+        edges = self.pag.edges_of(p.obj.id)
+        key = str(self.edge_index[id(edges[0])])
         if p.loose_support is not None:
             self.relaxed[key] = p.loose_support
         else:
             self.relaxed.pop(key, None)
+        for i, why in p.flush.items():  # flush by another part than the one named
+            k = str(self.edge_index[id(edges[i])])
+            self.relaxed[k] = why
+            if k not in self.whole:  # a re-placement places it so again, not without it
+                self.whole.append(k)
         self.placements[p.obj.id] = p
         self.failed.pop(p.obj.id, None)
         self.st.add(p.obj, p.body)

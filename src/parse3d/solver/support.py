@@ -11,7 +11,7 @@ from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface, hull_area_2d
-from ..measure.checks import on_board
+from ..measure.checks import board_parts, on_board
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
@@ -349,6 +349,8 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
             raise Fail(f"IN: {ref} has no internal support surface"
                        f" (parts: {', '.join(sorted({p.label for p in parts}))})")
         rel, label = "ON", "top"  # a board holds what is IN it on its top (a wall shelf)
+        if ref.part is None:
+            parts = board_parts(parent.asset)  # IN the whole shelf: on its boards
     want = {"ON": np.array([0, 0, 1.0]), "HANGING_BELOW": np.array([0, 0, -1.0])}.get(rel)
     slanted = []
     if rel == "ON" and ref.part is not None and label == "top":
@@ -359,6 +361,11 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         labels = [label] if (ref.surface or rel != "ON") else ["top"]
         for lb in labels:
             s = p.surfaces[lb].transformed(T)
+            if rel == "ON" and lb == "top" and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
+                # the parent lies on another face (a notebook on its cover): its part's top
+                # is the face that is up now (its front cover's outer face)
+                lb = _world_top(p, T) or lb
+                s = p.surfaces[lb].transformed(T)
             if want is not None and np.dot(s.normal, want) < np.cos(np.deg2rad(5)):
                 continue
             if rel == "ON" and not _flat_cached(parent.asset.asset_id, p, lb):
@@ -500,3 +507,13 @@ def _span(sups: list[Support]) -> Support | None:
     holes = [np.asarray(g.exterior.coords)[:-1] for g in getattr(gaps, "geoms", [gaps])
              if isinstance(g, Polygon) and not g.is_empty and g.area > 1e-8]
     return Support(replace(s0, polygon=hull), sups[0].choice, hull, holes=holes, spans=True)
+
+
+def _world_top(part, T: np.ndarray) -> str | None:
+    """The label of ``part``'s surface whose normal points up under the pose ``T`` (within
+    5 degrees), or None."""
+    for lb, n in SURFACES.items():
+        if lb in part.surfaces and float((T[:3, :3] @ np.asarray(n, float))[2]) \
+                >= np.cos(np.deg2rad(5)):
+            return lb
+    return None

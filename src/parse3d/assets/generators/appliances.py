@@ -49,7 +49,7 @@ def _buttons(prefix: str, x: float, y: float, zs, mat, r: float = 0.008) -> list
 
 @register("microwave", parts=("body", "door"),
           extra_parts=("control_panel", "button", "handle", "glass", "hinge", "foot", "turntable", "display", "vent",
-                       "waveguide_cover", "latch", "roller_ring"),
+                       "waveguide_cover", "latch", "roller_ring", "key"),
           size_range=(0.42, 0.62), density=250, variants=("countertop", "white", "steel"),
           placement="surface")
 def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -62,6 +62,11 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("control_panel", "control_panel",
                          S.box((panel, d, h - fh), center=(xc + panel / 2, 0, fh + (h - fh) / 2)), mat))
     out += _buttons("button", xc + panel / 2, d / 2, np.linspace(fh + 0.06, h - 0.06, 4), black())
+    # the ten number keys in two columns either side of the function buttons
+    for k, z in enumerate(np.repeat(np.linspace(fh + 0.05, h - 0.08, 5), 2)):
+        x = xc + panel / 2 + (0.03 if k % 2 else -0.03)
+        out.append(make_part(f"key_{k}", "key", S.box((0.014, 0.004, 0.012), center=(x, d / 2 + 0.002, z), bevel=0.001),
+                             M.solid((0.85, 0.85, 0.85), "plastic", 0.4)))
     out += feet4("foot", w=w, d=d, r=0.012, h=fh, mat=black("rubber"), inset=0.02)
     out.append(make_part("turntable", "turntable", S.cylinder(min(xc + w / 2, d) * 0.4, 0.006,
                                                               center=((xc - w / 2) / 2, 0, fh + 0.018)),
@@ -87,7 +92,7 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray", "button", "cord"),
+@register("toaster", parts=("body", "slot"), extra_parts=("lever", "knob", "foot", "crumb_tray", "button", "cord", "end_cap", "tab"),
           size_range=(0.2, 0.42), density=300, variants=("two_slot", "four_slot", "long_slot"),
           placement="surface")
 def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -126,6 +131,14 @@ def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("cord", "cord", S.tube([(0, -d / 2 + 0.002, fh + 0.02), (0, -d / 2 - 0.025, fh + 0.012),
                                                  (0.04, -d / 2 - 0.03, 0.004)], 0.003, sections=6), black("rubber")))
     out += feet4("foot", w=w, d=d, r=0.01, h=fh, mat=black("rubber"), inset=0.02)
+    # the crumb tray's pull tab at the front, the moulded end caps on the two short sides, and
+    # a four-slot toaster's second lever and browning knob for its other pair of slots
+    out.append(make_part("tab", "tab", S.box((0.03, 0.006, 0.006), center=(0, d / 2 + 0.003, fh + 0.004)), black()))
+    out += [make_part(f"end_cap_{k}", "end_cap", S.box((0.006, d * 0.85, (h - fh) * 0.85), center=(sx * (w / 2 - 0.001), 0, fh + (h - fh) / 2),
+                                                      bevel=0.002), black()) for k, sx in enumerate((-1, 1))]
+    if n == 4:
+        out.append(make_part("lever_1", "lever", S.box((0.03, 0.03, 0.015), center=(-w / 2 - 0.012, 0, h * 0.7)), black()))
+        out.append(make_part("knob_1", "knob", knob((-w / 2, 0, h * 0.35), 0.012, 0.01, axis=(-1, 0, 0)), black()))
     return out
 
 
@@ -169,7 +182,7 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 @register("coffee_maker", parts=("base", "reservoir", "head"),
           extra_parts=("carafe", "handle", "button", "drip_tray", "lid", "foot", "warming_plate", "carafe_lid",
                        "water_window", "portafilter", "steam_wand", "pod_holder", "power_switch", "spout",
-                       "brew_basket"),
+                       "brew_basket", "display"),
           size_range=(0.25, 0.45), density=400, variants=("drip", "pod", "espresso"),
           placement="surface")
 def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -221,7 +234,13 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                 center=(w / 2 + 0.0005, -d / 2 + d * 0.175, bh + (h - bh) * 0.45)),
                          M.solid((0.6, 0.75, 0.9), "glass", 0.1)))
     out += _pads(w, d)
-    out += _buttons("button", w * 0.3, d / 2, [h - h * 0.11], black(), r=0.007)
+    # the row of buttons on the head's front (power, and the cup sizes or the clock's setting
+    # keys) and the small display beside them
+    out += [make_part(f"button_{k}", "button", S.cylinder(0.007, 0.006, center=(x, d / 2 + 0.002, h - h * 0.11), axis=(0, 1, 0),
+                                                          sections=12), black())
+            for k, x in enumerate(np.linspace(w * 0.3, -w * 0.3, 4))]
+    out.append(make_part("display", "display", S.box((0.05, 0.002, 0.018), center=(0, d / 2 + 0.001, h - h * 0.11 + 0.022)),
+                         M.solid((0.2, 0.4, 0.6), "glass", 0.1)))
     # the rocker switch on the base's right side and the outlet under the head the coffee
     # runs from; a drip machine's swing-out brew basket in the head over the carafe
     out.append(make_part("power_switch", "power_switch", S.box((0.004, 0.02, 0.012), center=(w / 2 + 0.001, d * 0.2, bh / 2)),
@@ -236,7 +255,7 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("mini_fridge", parts=("body", "door"),
           extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass", "thermostat", "crisper",
-                       "vent", "gasket", "door_shelf"),
+                       "vent", "gasket", "door_shelf", "light"),
           size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
           placement="floor")
 def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -267,6 +286,13 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                      center=(0, -0.025 + 0.01, fh + t + 0.04 + 0.001)), M.glass(rng)))
     out.append(make_part("vent", "vent", S.box((w * 0.7, 0.004, (h - fh) * 0.5), center=(0, -d / 2 - 0.002, fh + (h - fh) * 0.4)),
                          black()))
+    # the lamp in the cabinet's roof beside the thermostat, and a tall fridge's second shelf:
+    # the glass cover over the crisper drawer (a bottle still stands on it below the shelf)
+    out.append(make_part("light", "light", S.box((0.05, 0.03, 0.01), center=(-w * 0.15, d / 2 - 0.15, h - t - 0.005)),
+                         M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
+    if variant != "cube":
+        out.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - 0.05 - t - 0.02, 0.006),
+                                                       center=(0, -0.025 + t / 2 - 0.01, fh + t + 0.085)), M.glass(rng)))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y_back=d / 2 - 0.05, thick=0.05, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=False, style="glass" if variant == "glass_door"
                       else "flat", glass=M.glass(rng), handle_len=min(0.3, (h - fh) * 0.4))
@@ -288,7 +314,7 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("dishwasher", parts=("body", "door"),
           extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket",
-                       "filter", "detergent_dispenser", "foot"),
+                       "filter", "detergent_dispenser", "foot", "indicator", "rinse_aid_cap"),
           size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
 def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
@@ -312,6 +338,13 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("control_panel", "control_panel",
                          S.box((w, 0.03, 0.08), center=(0, d / 2 - 0.015, h - 0.04)), mat))
     out += _buttons("button", w * 0.3, d / 2, [h - 0.04], black(), r=0.006)
+    # the programme buttons in a row beside the power button, each with its light above it
+    for k in range(4):
+        x = w * 0.3 - 0.035 * (k + 1)
+        out.append(make_part(f"button_{k + 1}", "button", S.cylinder(0.006, 0.006, center=(x, d / 2 + 0.002, h - 0.045), axis=(0, 1, 0),
+                                                                     sections=12), black()))
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.0025, 0.002, center=(x, d / 2 + 0.001, h - 0.025), axis=(0, 1, 0),
+                                                                        sections=8), M.solid((0.2, 0.6, 0.95), "glass", 0.1)))
     out += door_parts("door", x0=-w / 2, x1=w / 2, z0=tk, z1=h - 0.08, y_back=d / 2 - 0.03,
                       thick=0.03, mat=mat, handle_mat=M.metal(rng), hinge_left=True, style="flat",
                       handle_len=w * 0.6, handle_at="top")
@@ -322,6 +355,10 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("detergent_dispenser", "detergent_dispenser",
                          S.box((0.12, 0.02, 0.07), center=(0, d / 2 - 0.03 - 0.01, tk + (h - 0.08 - tk) * 0.55)), grey))
     out.append(mount("door", "detergent_dispenser"))
+    # the rinse-aid reservoir's screw cap beside the dispenser, riding on the door too
+    out.append(make_part("rinse_aid_cap", "rinse_aid_cap", S.cylinder(0.018, 0.012, center=(0.1, d / 2 - 0.03 - 0.006, tk + (h - 0.08 - tk) * 0.55),
+                                                                      axis=(0, 1, 0), sections=12), grey))
+    out.append(mount("door", "rinse_aid_cap"))
     out += [make_part(f"foot_{k}", "foot", S.cylinder(0.012, tk * 0.5, center=(sx * (w / 2 - 0.04), d / 2 - 0.13, tk * 0.25),
                                                       sections=10), black("rubber"))
             for k, sx in enumerate((-1, 1))]
@@ -330,7 +367,7 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("clothes_dryer", parts=("body", "door"),
           extra_parts=("control_panel", "knob", "display", "drum", "foot", "hinge", "lint_filter", "button", "handle",
-                       "gasket", "exhaust_vent"),
+                       "gasket", "exhaust_vent", "indicator"),
           size_range=(0.8, 1.0), density=300, variants=("front_load", "stacked_steel", "compact"))
 def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "compact":
@@ -367,6 +404,13 @@ def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("gasket", "gasket", ring([(r * 0.92, 0.0), (r * 1.04, 0.0), (r * 1.04, 0.003), (r * 0.92, 0.003)],
                                                   sections=20).apply(_facing_front(d / 2, zc)), black("rubber")))
     out += _buttons("button", w * 0.3, d / 2, [h - 0.085, h - 0.035], black(), r=0.007)
+    # the option buttons under the display (dryness, delay), their lights beside them
+    for k in range(2):
+        out.append(make_part(f"button_{k + 2}", "button", S.cylinder(0.007, 0.006, center=(w * 0.15 + (k - 0.5) * 0.05, d / 2 + 0.002, h - 0.1),
+                                                                     axis=(0, 1, 0), sections=12), black()))
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.0025, 0.002, center=(w * 0.15 + (k - 0.5) * 0.05 + 0.015, d / 2 + 0.001,
+                                                                                               h - 0.1), axis=(0, 1, 0), sections=8),
+                             M.solid((0.95, 0.6, 0.1), "glass", 0.1)))
     out.append(make_part("exhaust_vent", "exhaust_vent", S.cylinder(0.05, 0.02, center=(0, -d / 2 - 0.01 + 0.015, fh + 0.12),
                                                                     axis=(0, 1, 0), sections=12), M.metal(rng)))
     return out
@@ -382,7 +426,7 @@ def _facing_front(y: float, z: float) -> np.ndarray:
 
 @register("water_cooler", parts=("body", "bottle"),
           extra_parts=("tap", "drip_tray", "cabinet_door", "collar", "foot", "indicator", "vent", "cup_dispenser",
-                       "power_switch"),
+                       "power_switch", "child_lock", "grille"),
           size_range=(0.55, 1.55), density=300, variants=("top_load", "bottom_load", "countertop"))
 def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.34)
@@ -408,6 +452,11 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
                              M.solid(col)))
     out.append(make_part("drip_tray", "drip_tray", S.box((w * 0.6, 0.06, 0.015),
                                                          center=(0, w / 2 + 0.03, h * 0.65)), black()))
+    # the removable grille on the tray, and the hot tap's child-safety catch on its top
+    out.append(make_part("grille", "grille", S.box((w * 0.55, 0.05, 0.003), center=(0, w / 2 + 0.03, h * 0.65 + 0.006)),
+                         M.solid((0.6, 0.6, 0.62), "plastic", 0.5)))
+    out.append(make_part("child_lock", "child_lock", S.box((0.012, 0.02, 0.006), center=(w * 0.2, w / 2 + 0.02, h * 0.85 + 0.023)),
+                         M.solid((0.85, 0.85, 0.85), "plastic", 0.4)))
     # the power and heating lights, the condenser vent at the back, the levelling feet
     for k, col in enumerate(((0.2, 0.9, 0.2), (0.95, 0.3, 0.1))):
         out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.004, 0.002, center=((k - 0.5) * 0.03, w / 2 + 0.001, h * 0.93),
@@ -422,7 +471,7 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("range_hood", parts=("canopy", "chimney"), extra_parts=("filter", "light", "button", "filter_handle", "grease_channel",
-                                                                 "screw"),
+                                                                 "screw", "indicator", "filter_latch"),
           size_range=(0.6, 1.25), density=200, variants=("chimney", "slim", "island"),
           placement="wall")
 def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -457,6 +506,11 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"filter_handle_{k}", "filter_handle", S.box((0.05, 0.012, 0.004), center=(sx * w * 0.2, d * 0.3, 0.0)),
                              M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8)))
     out.append(make_part("grease_channel", "grease_channel", S.box((w * 0.8, 0.015, 0.008), center=(0, -d * 0.35, 0.005)), steel))
+    # the fan-on light beside the buttons, and the spring latch at each filter's front edge
+    out.append(make_part("indicator", "indicator", S.cylinder(0.003, 0.003, center=(0.075, d / 2 + 0.0015, ch * 0.2), axis=(0, 1, 0),
+                                                              sections=8), M.solid((0.2, 0.6, 0.95), "glass", 0.1)))
+    out += [make_part(f"filter_latch_{k}", "filter_latch", S.box((0.03, 0.01, 0.004), center=(sx * w * 0.2, d * 0.35 + 0.01, 0.0)),
+                      M.solid((0.5, 0.5, 0.52), "metal", 0.5, 0.8)) for k, sx in enumerate((-1, 1))]
     for k, sx in enumerate((-1, 1)):
         out.append(make_part(f"screw_{k}", "screw", S.cylinder(0.003, 0.002, center=(sx * top_w * 0.3, -d / 2 + 0.125 + 0.111, ch + 0.1),
                                                               axis=(0, 1, 0), sections=8), steel))
@@ -465,7 +519,7 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("printer", parts=("body", "paper_tray"),
           extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port",
-                       "paper_guide", "power_inlet"),
+                       "paper_guide", "power_inlet", "indicator"),
           size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
           placement="surface")
 def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -501,6 +555,13 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                      center=(w * 0.3, d / 2 + 0.0005, bh - 0.015)),
                          M.solid((0.2, 0.4, 0.6), "glass", 0.1)))
     out += _buttons("button", w * 0.42, d / 2, [bh - 0.015], M.solid((0.3, 0.8, 0.3)), r=0.005)
+    # the cancel, copy and Wi-Fi buttons below the display, and the power and ink lights
+    for k in range(3):
+        out.append(make_part(f"button_{k + 1}", "button", S.cylinder(0.004, 0.004, center=(w * 0.3 + (k - 1) * 0.02, d / 2 + 0.002, bh - 0.027),
+                                                                     axis=(0, 1, 0), sections=10), black()))
+    for k, col in enumerate(((0.2, 0.9, 0.2), (0.95, 0.6, 0.1))):
+        out.append(make_part(f"indicator_{k}", "indicator", S.cylinder(0.002, 0.002, center=(w * 0.42 + (k * 2 - 1) * 0.012, d / 2 + 0.001, bh - 0.027),
+                                                                        axis=(0, 1, 0), sections=8), M.solid(col, "glass", 0.1)))
     if variant == "all_in_one":
         out.append(make_part("lid", "lid", S.box((w, d * 0.8, lid_h), center=(0, -d * 0.1, bh + lid_h / 2),
                                                  bevel=0.004), mat))
@@ -512,7 +573,7 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("copier", parts=("body", "scanner", "drawer"),
           extra_parts=("lid", "output_tray", "control_panel", "display", "drawer_box", "handle",
-                       "caster", "hinge"),
+                       "caster", "hinge", "key", "button"),
           size_range=(0.9, 1.3), density=350, variants=("floor", "floor_finisher", "cabinet"))
 def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d = rng.uniform(0.58, 0.68), rng.uniform(0.6, 0.72)
@@ -544,6 +605,20 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("control_panel", "control_panel", S.box((w * 0.45, 0.1, 0.03),
                                                                  center=(w * 0.2, d / 2 - 0.05, ch + bh + sh + 0.016)),
                          black()))
+    # on the control panel: the touch screen, the twelve-key number pad beside it and the
+    # green start and red stop buttons, each key let into the panel and standing a millimetre
+    # proud of it
+    zp = ch + bh + sh + 0.031
+    out.append(make_part("display", "display", S.box((w * 0.2, 0.07, 0.002), center=(w * 0.2 - w * 0.1, d / 2 - 0.05, zp)),
+                         M.solid((0.15, 0.3, 0.45), "glass", 0.1)))
+    xk = w * 0.2 + w * 0.06
+    for k in range(12):
+        col, row = k % 3, k // 3
+        out.append(make_part(f"key_{k}", "key", S.box((0.012, 0.012, 0.003), center=(xk + (col - 1) * 0.016, d / 2 - 0.026 - row * 0.016, zp),
+                                                      bevel=0.001), M.solid((0.85, 0.85, 0.85), "plastic", 0.4)))
+    for k, colr in enumerate(((0.1, 0.7, 0.2), (0.85, 0.1, 0.1))):
+        out.append(make_part(f"button_{k}", "button", S.cylinder(0.009, 0.003, center=(xk + 0.05, d / 2 - 0.035 - k * 0.03, zp), sections=10),
+                             M.solid(colr, "plastic", 0.3)))
     out.append(make_part("output_tray", "output_tray", S.box((w * 0.5, d * 0.6, 0.01),
                                                              center=(-w * 0.1, 0.0, ch + bh - 0.02)),
                          M.plastic(rng)))
@@ -555,7 +630,8 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("computer_tower", parts=("case",),
           extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel", "usb_port",
-                       "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet"),
+                       "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet", "reset_button", "indicator",
+                       "thumbscrew", "slot_cover"),
           size_range=(0.3, 0.58), density=400, variants=("mid_tower", "full_tower", "mini"),
           placement="floor")
 def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -594,5 +670,17 @@ def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
                                                   sections=16), black()))
     out.append(make_part("psu_grille", "psu_grille", S.box((0.1, 0.002, 0.07), center=(-w / 2 + 0.06, yb - 0.001, fh + 0.05)), io))
     out.append(make_part("power_inlet", "power_inlet", S.box((0.03, 0.003, 0.02), center=(w / 2 - 0.02, yb - 0.0015, fh + 0.05)), black()))
+    # the reset button and the power and disk lights beside the power button; at the back the
+    # two thumbscrews holding the side panel and the expansion slot covers under the I/O shield
+    out.append(make_part("reset_button", "reset_button", S.cylinder(0.004, 0.004, center=(0.02, d / 2 + 0.002, h - 0.04), axis=(0, 1, 0),
+                                                                    sections=10), black()))
+    out += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.002, 0.002, center=(-0.02 - 0.008 * k, d / 2 + 0.001, h - 0.04), axis=(0, 1, 0),
+                                                                sections=8), M.solid(col, "glass", 0.1))
+            for k, col in enumerate(((0.2, 0.5, 0.95), (0.95, 0.5, 0.1)))]
+    out += [make_part(f"thumbscrew_{k}", "thumbscrew", S.cylinder(0.005, 0.006, center=(w / 2 - 0.008, yb - 0.003, z), axis=(0, 1, 0),
+                                                                  sections=10), io) for k, z in enumerate((h * 0.35, h * 0.8))]
+    n_slots = 2 if variant == "mini" else 4
+    out += [make_part(f"slot_cover_{k}", "slot_cover", S.box((0.1, 0.002, 0.014), center=(-w * 0.05, yb - 0.001, h - 0.22 - 0.02 * k)), io)
+            for k in range(n_slots)]
     return out
 

@@ -20,7 +20,8 @@ from ._kit import hinge_parts, mount, prismatic, revolute
 
 
 @register("shower", parts=("base", "wall_panel", "glass"),
-          extra_parts=("door", "handle", "shower_head", "arm", "mixer", "drain", "niche", "hinge", "track", "clamp", "sweep"),
+          extra_parts=("door", "handle", "shower_head", "arm", "mixer", "drain", "niche", "hinge", "track", "clamp", "sweep",
+                       "flange", "trim_plate", "wall_channel", "support_bar"),
           size_range=(1.9, 2.3), density=300, variants=("corner_slider", "hinged", "walk_in"),
           placement="floor")
 def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -59,6 +60,12 @@ def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     mixer = [S.cylinder(0.035, 0.02, center=(xs - 0.01, -d * 0.1, 1.1), axis=(1, 0, 0), sections=16),
              S.box((0.02, 0.08, 0.015), center=(xs - 0.035, -d * 0.1, 1.1))]
     parts.append(make_part("mixer", "mixer", mixer, chrome))
+    # the round flange where the arm leaves the wall, the square trim plate behind the mixer,
+    # and the aluminium channel holding the side screen's back edge against the wall
+    parts.append(make_part("flange", "flange", S.cylinder(0.03, 0.008, center=(xs - 0.004, -d * 0.1, zh), axis=(1, 0, 0), sections=16), chrome))
+    parts.append(make_part("trim_plate", "trim_plate", S.box((0.004, 0.14, 0.14), center=(xs - 0.002, -d * 0.1, 1.1), bevel=0.001), chrome))
+    parts.append(make_part("wall_channel", "wall_channel", S.box((0.02, 0.012, H - tb - 0.02),
+                                                                 center=(-w / 2 + 0.013, -d / 2 + tp + 0.006, (H + tb) / 2)), chrome))
     # the glass: a left screen along the side, then the front
     tg = 0.008
     xl = -w / 2 + tg / 2 + 0.005
@@ -71,6 +78,9 @@ def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "walk_in":
         parts.append(make_part("glass_1", "glass", S.box((w * 0.45, tg, H - tb - 0.01),
                                                           center=(-w / 2 + w * 0.225 + 0.01, yf, (H + tb) / 2)), glass))
+        # the stabiliser bar from the front screen's top edge back to the side screen
+        parts.append(make_part("support_bar", "support_bar", S.cylinder(0.009, d - tp - 0.03, center=(-w / 2 + w * 0.3, tp / 2, H - 0.03),
+                                                                        axis=(0, 1, 0), sections=10), chrome))
         return parts
     xg0 = -w / 2 + 0.01
     if variant == "corner_slider":

@@ -119,7 +119,7 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 
 @register("nightstand", parts=("body", "top_panel", "drawer"),
           extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner",
-                       "dust_panel", "divider"), size_range=(0.4, 0.75),
+                       "dust_panel", "divider", "shelf_pin"), size_range=(0.4, 0.75),
           density=450, variants=("two_drawer", "drawer_shelf", "legged"), groups=CARCASS_GROUP)
 def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
@@ -152,6 +152,10 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         z_shelf = z0 + t + (inner_top - dh - z0 - t) * 0.5
         shelf = S.box((w - 2 * t, d - 0.02, t), center=(0, -0.005, z_shelf))
         parts.append(make_part("shelf", "shelf", shelf, mat))
+        # the four pins in the side panels the shelf rests on, under its corners
+        parts += [make_part(f"shelf_pin_{k}", "shelf_pin", S.cylinder(0.0025, 0.012, center=(sx * (w / 2 - t - 0.004), sy * d * 0.3, z_shelf - t / 2 - 0.003),
+                                                                      axis=(1, 0, 0), sections=8), pull_mat)
+                  for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
     else:
         n = 2 if variant == "two_drawer" else int(rng.integers(1, 3))
         parts += _drawer_grid(rng, x0=x0, x1=x1, z0=z0 + t, z1=inner_top, rows=[1] * n,

@@ -16,7 +16,7 @@ from ._casework import black
 
 
 @register("alarm_clock", parts=("body", "face"), extra_parts=("bell", "hand", "foot", "button", "display", "grille", "hub", "bezel",
-                                                               "key", "battery_cover", "power_inlet", "hammer", "alarm_switch"),
+                                                               "key", "battery_cover", "power_inlet", "hammer", "alarm_switch", "marker"),
           size_range=(0.07, 0.22), density=700, variants=("twin_bell", "digital", "cube"), placement="surface")
 def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = M.plastic(rng) if variant != "twin_bell" else M.metal(rng)
@@ -68,6 +68,15 @@ def alarm_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     R = np.array([[np.cos(a), 0, -np.sin(a)], [0, 1, 0], [np.sin(a), 0, np.cos(a)]])
     parts.append(make_part("hand_2", "hand", S.box((r * 0.4, 0.0012, 0.002), center=(np.cos(a) * r * 0.2, yf + 0.0065, zc + np.sin(a) * r * 0.2),
                                                    R=R), M.solid((0.8, 0.1, 0.1), "metal", 0.4)))
+    # the twelve applied hour markers round the dial, longer at 12, 3, 6 and 9
+    for k in range(12):
+        a_k = np.pi / 2 - k * np.pi / 6
+        ln = r * (0.16 if k % 3 == 0 else 0.1)
+        rc = r * 0.9 - 0.004 - ln / 2
+        R_k = np.array([[np.cos(a_k), 0, -np.sin(a_k)], [0, 1, 0], [np.sin(a_k), 0, np.cos(a_k)]])
+        parts.append(make_part(f"marker_{k}", "marker", S.box((ln, 0.0008, 0.0025 if k % 3 == 0 else 0.0016),
+                                                              center=(np.cos(a_k) * rc, yf + 0.0029, zc + np.sin(a_k) * rc), R=R_k),
+                               black("metal")))
     parts.append(make_part("hub", "hub", S.cylinder(0.003, 0.004, center=(0, yf + 0.007, zc), axis=(0, 1, 0), sections=8), black()))
     parts.append(make_part("bezel", "bezel", S.cylinder(r * 0.97, 0.004, center=(0, yf + 0.0005, zc), axis=(0, 1, 0), sections=28), shell))
     yb = -0.02 if variant == "twin_bell" else -yf
@@ -108,6 +117,8 @@ def tissue_box(rng: np.random.Generator, variant: str) -> list[Part]:
                       Material((0.9, 0.92, 0.95, 0.5), 0.1, 0.0, "plastic")),
             # the glued end flap on the left end
             make_part("flap", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(-w / 2 - 0.0004, 0, h * 0.3)), card),
+            # its twin glued over the right end
+            make_part("flap_1", "flap", S.box((0.0008, d * 0.9, h * 0.45), center=(w / 2 + 0.0004, 0, h * 0.3)), card),
             # the pattern printed on the back too, and the perforated panel torn out round the slot
             make_part("perforation", "perforation",
                       [S.box((op_w + 0.02, 0.002, 0.0005), center=(0, sy * 0.0275, h + 0.00025)) for sy in (-1, 1)]

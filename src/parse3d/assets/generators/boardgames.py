@@ -58,7 +58,7 @@ def chess_board(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("chess_piece", parts=("base", "body", "head"), extra_parts=("collar", "felt", "cross", "finial", "merlon", "ear", "bead",
-                                                                      "mane"),
+                                                                      "mane", "point"),
           size_range=(0.03, 0.12), density=900,
           variants=("royal", "minor", "rook", "pawn"), placement="surface")
 def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -135,4 +135,10 @@ def chess_piece(rng: np.random.Generator, variant: str) -> list[Part]:
     elif variant in ("queen", "bishop"):  # the ball finial on top
         rf = H * 0.045
         parts.append(make_part("finial", "finial", S.ellipsoid((rf, rf, rf), center=(0, 0, top + rf * 0.6), subdivisions=1), mat))
+    if variant == "queen":  # the eight carved points of the coronet round the crown's rim
+        zc_ = top - H * 0.08
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False)):
+            c = np.array([np.cos(a), np.sin(a)]) * rs1 * 1.5
+            parts.append(make_part(f"point_{k}", "point", S.frustum(H * 0.018, H * 0.004, H * 0.05, center=(c[0], c[1], zc_ - H * 0.01),
+                                                                   sections=6), mat))
     return parts

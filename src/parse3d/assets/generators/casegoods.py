@@ -100,7 +100,7 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("locker", parts=("body", "door"), extra_parts=("handle", "hinge", "shelf", "hook", "vent",
-                                                          "nameplate"),
+                                                          "nameplate", "hasp"),
           size_range=(1.2, 2.0), density=400, variants=("single", "two_tier", "bank"), placement="floor",
           groups={"body": ("top_panel", "bottom_panel", "back_panel", "side_panel", "partition", "tier_panel",
                            "plinth")})
@@ -144,9 +144,9 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             parts += door_parts(name, x0=x0 + 0.002, x1=x1 - 0.002, z0=z0 + 0.002, z1=z1 - 0.002,
                                 y_back=yf, thick=0.012, mat=steel, handle_mat=hmat, hinge_left=c < cols / 2,
                                 style="flat", handle_len=0.08)
-            # vent louvres pressed into the top of the door, mounted on it
-            for j in range(3):
-                zv = z1 - 0.06 - j * 0.025
+            # vent louvres pressed into the top and the bottom of the door, mounted on it
+            for j in range(6):
+                zv = z1 - 0.06 - j * 0.025 if j < 3 else z0 + 0.06 + (j - 3) * 0.025
                 vent = S.box(((x1 - x0) * 0.6, 0.004, 0.008), center=((x0 + x1) / 2, yf + 0.013, zv))
                 parts.append(make_part(f"{name}_vent_{j}", "vent", vent, Material((0.1, 0.1, 0.1, 1.0), 0.6, 0.3,
                                                                                   "metal")))
@@ -154,6 +154,11 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             plate = S.box((0.06, 0.003, 0.025), center=((x0 + x1) / 2, yf + 0.0135, z1 - 0.16))
             parts.append(make_part(f"{name}_nameplate", "nameplate", plate, hmat))
             parts.append(mount(name, f"{name}_nameplate"))
+            # the padlock hasp beside the handle: a staple on the frame through a slot in the door
+            xh = (x1 - 0.045) if c < cols / 2 else (x0 + 0.045)
+            xh += 0.03 if c < cols / 2 else -0.03
+            parts.append(make_part(f"{name}_hasp", "hasp", S.box((0.012, 0.012, 0.03), center=(xh, yf + 0.018, (z0 + z1) / 2 - 0.07)), hmat))
+            parts.append(mount(name, f"{name}_hasp"))
             if z1 - z0 > 0.6:  # a hat shelf and a coat hook under it
                 zs = z1 - 0.3
                 parts.append(make_part(f"shelf_{k_shelf}", "shelf",
@@ -162,5 +167,11 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                 hook = S.tube([((x0 + x1) / 2, -d / 2 + 0.006, zs - 0.05), ((x0 + x1) / 2, -d / 2 + 0.05, zs - 0.05),
                                ((x0 + x1) / 2, -d / 2 + 0.06, zs - 0.035)], 0.004, sections=6)
                 parts.append(make_part(f"hook_{k_shelf}", "hook", hook, hmat))
+                # a single-prong hook on each side wall under the shelf
+                for j, sx in enumerate((-1, 1)):
+                    xs_ = (x0 + 0.004) if sx < 0 else (x1 - 0.004)
+                    side = S.tube([(xs_, yc - 0.05, zs - 0.04), (xs_ - sx * 0.04, yc - 0.05, zs - 0.04), (xs_ - sx * 0.05, yc - 0.05, zs - 0.025)],
+                                  0.0035, sections=6)
+                    parts.append(make_part(f"hook_{k_shelf}_{j}", "hook", side, hmat))
                 k_shelf += 1
     return parts

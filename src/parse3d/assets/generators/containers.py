@@ -14,7 +14,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._household import arc, open_box, ring, shell
-from ._kit import OPEN_DOOR, hinge_parts, revolute
+from ._kit import OPEN_DOOR, hinge_parts, revolute, rot
 
 
 def _wicker(rng: np.random.Generator) -> Material:
@@ -34,7 +34,7 @@ def _hoops(r_at, zs, *, bulge: float, width: float, sections: int = 20) -> list[
     return out
 
 
-@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim", "stake", "post", "foot_ring"),
+@register("basket", parts=("body",), extra_parts=("handle", "slat", "band", "rim", "stake", "post", "foot_ring", "lashing"),
           size_range=(0.18, 0.46),
           density=500, variants=("round", "rectangular", "handled"), placement="surface")
 def basket(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -82,7 +82,7 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
         parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
         parts.append(make_part("rim", "rim", rim, mat))
         # the stakes the weave runs round, standing proud of the wall, and the foot ring
-        for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8):
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 12, endpoint=False) + np.pi / 12):
             d0, d1 = np.array([np.cos(a), np.sin(a)]) * (r * 0.78 + 0.002), np.array([np.cos(a), np.sin(a)]) * (r + 0.002)
             parts.append(make_part(f"stake_{k}", "stake", S.tube([(*d0, 0.012), (*d1, h - 0.006)], 0.003, sections=6), mat))
         parts.append(make_part("foot_ring", "foot_ring", ring([(r * 0.78 - 0.008, 0.0), (r * 0.78 + 0.004, 0.0),
@@ -96,11 +96,15 @@ def basket(rng: np.random.Generator, variant: str) -> list[Part]:
         path = arc((0, 0, top - 0.03), span, 0.0, np.pi, n=9, u=(0, 1, 0),
                    squash=(rise + 0.03) / span)
         parts.append(make_part("handle", "handle", S.tube(path, 0.008, sections=8), mat))
+        # the cane lashing wrapped round each handle end where it is bound to the rim
+        parts += [make_part(f"lashing_{k}", "lashing", S.cylinder(0.012, 0.03, center=tuple(p), axis=tuple(q - p), sections=8), mat)
+                  for k, (p, q) in enumerate(((path[1], path[2]), (path[-2], path[-3])))]
     return parts
 
 
 @register("storage_box", parts=("body", "lid"),
-          extra_parts=("handle", "label", "latch", "hinge", "hasp", "tape", "foot"), size_range=(0.2, 0.7),
+          extra_parts=("handle", "label", "latch", "hinge", "hasp", "tape", "foot", "hand_hole", "staple", "corner"),
+          size_range=(0.2, 0.7),
           density=700, variants=("plastic_bin", "wooden", "cardboard"), placement="surface")
 def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.6)
@@ -161,11 +165,20 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
                              radius=0.005, length=0.05, axis="x")
         parts.append(make_part("hasp", "hasp", S.box((0.03, 0.004, 0.05),
                                                      center=(0, d / 2 + 0.002, h - 0.02)), metal))
+        # the staple the hasp drops over, and the brass corner guards on the lid's corners
+        parts.append(make_part("staple", "staple", S.box((0.012, 0.008, 0.02), center=(0, d / 2 + 0.004 + 0.002, h - 0.045)), metal))
+        parts += [make_part(f"corner_{k}", "corner", S.box((0.03, 0.03, lt + 0.002), center=(sx * (tw / 2 + ov - 0.015), sy * (td / 2 + ov - 0.015),
+                                                                                           h + (lt + 0.002) / 2 - 0.002)),
+                            M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9))
+                  for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
     else:
         # the packing tape along the lid's front edge, down onto the front wall
         tape = Material(M.jitter(rng, (0.75, 0.6, 0.4), 0.03)[:3] + (0.8,), 0.3, 0.0, "plastic")
         parts.append(make_part("tape", "tape", S.box((0.05, 0.001, 0.04),
                                                      center=(0, d / 2 + 0.0005, h - skirt - 0.02)), tape))
+        # the punched hand holes in the two ends, below the lid's skirt
+        parts += [make_part(f"hand_hole_{k}", "hand_hole", S.box((0.001, 0.09, 0.025), center=(sx * (w / 2 + 0.0005), 0, h - skirt - 0.035)),
+                            M.solid((0.2, 0.15, 0.1), "paper", 0.9)) for k, sx in enumerate((-1, 1))]
     if variant != "cardboard":  # four feet set into the floor's underside
         pad = Material((0.1, 0.1, 0.1, 1.0), 0.8, 0.0, "rubber")
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
@@ -174,7 +187,7 @@ def storage_box(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear", "spout", "foot_ring"),
+@register("bucket", parts=("body", "handle"), extra_parts=("grip", "rim", "band", "ear", "spout", "foot_ring", "rivet", "rib"),
           size_range=(0.22, 0.42),
           density=900, variants=("metal", "plastic"), placement="surface")
 def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -192,9 +205,19 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     rim = ring([(r - t, h - 0.008), (r + 0.004, h - 0.006), (r + 0.004, h + 0.002),
                 (r - t, h + 0.002)], sections=20)
     parts.append(make_part("rim", "rim", rim, mat))
-    if variant == "metal":
-        hoops = _hoops(r_at, [h * 0.45], bulge=0.002, width=0.014)
+    if variant == "metal":  # two pressed hoops stiffening the wall
+        hoops = _hoops(r_at, [h * 0.45, h * 0.2], bulge=0.002, width=0.014)
         parts += [make_part(f"band_{i}", "band", hp, mat) for i, hp in enumerate(hoops)]
+        # each ear riveted to the wall, a rivet above and below the pivot
+        for i, sx in enumerate((1, -1)):
+            x = sx * (r_at(h - 0.03) + 0.0105)
+            parts += [make_part(f"rivet_{2 * i + j}", "rivet", S.cylinder(0.0035, 0.002, center=(x, 0, h - 0.03 + dz), axis=(1, 0, 0),
+                                                                          sections=8), mat) for j, dz in enumerate((-0.01, 0.01))]
+    else:  # the moulded ribs under the rim that stiffen it, between the ears
+        for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8):
+            rr = r_at(h - 0.025)
+            parts.append(make_part(f"rib_{k}", "rib", S.box((0.008, 0.004, 0.03), center=(np.cos(a) * (rr + 0.0015), np.sin(a) * (rr + 0.0015),
+                                                                                          h - 0.025), R=rot((0, 0, 1), a)), mat))
     # the ears the handle pivots in
     for i, sx in enumerate((1, -1)):
         ear = S.box((0.012, 0.03, 0.03), center=(sx * (r_at(h - 0.03) + 0.004), 0, h - 0.03))
@@ -221,7 +244,7 @@ def bucket(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("trash_can", parts=("body",),
-          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle", "handle"),
+          extra_parts=("lid", "pedal", "rim", "liner", "base", "label", "hinge", "lid_handle", "handle", "rod", "damper"),
           size_range=(0.28, 0.8),
           density=900, variants=("round", "square", "pedal"), placement="floor")
 def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -291,6 +314,14 @@ def trash_can(rng: np.random.Generator, variant: str) -> list[Part]:
                                S.box((0.04, 0.012, 0.006), center=(0, r + 0.009, h + 0.004)), mat))
         bucket = shell([(r - 0.012, 0.012), (r - 0.006, h - 0.004)], 0.002, bottom=0.002, sections=20)
         parts.append(make_part("liner", "liner", bucket, M.plastic(rng)))
+        # the inner bucket's carrying bail folded down inside its rim, the rod from the pedal up
+        # the back to the lid, and the soft-close damper beside the hinge
+        parts.append(make_part("handle", "handle", S.tube([(-(r - 0.02), 0, h - 0.012), (0, -(r - 0.03) * 0.3, h - 0.01),
+                                                           ((r - 0.02), 0, h - 0.012)], 0.0025, sections=6), M.metal(rng)))
+        parts.append(make_part("rod", "rod", S.cylinder(0.004, h - 0.06, center=(0, -r - 0.001, 0.03 + (h - 0.06) / 2), sections=8),
+                               M.metal(rng)))
+        parts.append(make_part("damper", "damper", S.cylinder(0.008, 0.05, center=(0.045, -r + 0.002, h - 0.04), sections=10),
+                               M.plastic(rng)))
     else:
         # the bin bag folded over the rim, and a moulded hand grip each side under it
         parts.append(make_part("liner", "liner", ring([(r + 0.004, h - 0.05), (r + 0.0055, h - 0.05),
@@ -339,6 +370,14 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
             for k, x in enumerate(np.linspace(-w * 0.38, w * 0.38, 6)):
                 rib = S.box((0.014, 0.004, h * 0.7), center=(x, s * (d / 2 + 0.002), h * 0.45))
                 parts.append(make_part(f"rib_{6 * i + k}", "rib", rib, mat))
+        # two more on each end either side of the hand hold (below it), and the rolled rim round the top
+        for i, s in enumerate((1, -1)):
+            for k, sy in enumerate((-1, 1)):
+                rib = S.box((0.004, 0.014, z_slot - slot_h / 2 - 0.03), center=(s * (w / 2 + 0.002), sy * inner_d * 0.35, (z_slot - slot_h / 2) / 2))
+                parts.append(make_part(f"rib_{12 + 2 * i + k}", "rib", rib, mat))
+        rim = [S.box((w + 0.008, 0.01, 0.012), center=(0, sy * (d / 2 - 0.001), h - 0.006)) for sy in (-1, 1)]
+        rim += [S.box((0.01, d - 0.012, 0.012), center=(sx * (w / 2 - 0.001), 0, h - 0.006)) for sx in (-1, 1)]
+        parts.append(make_part("rim", "rim", rim, mat))
         return parts
     r = rng.uniform(0.2, 0.26)
     h = rng.uniform(0.3, 0.45)
@@ -360,4 +399,10 @@ def laundry_basket(rng: np.random.Generator, variant: str) -> list[Part]:
                                               sections=20), mat))
     parts.append(make_part("foot_ring", "foot_ring", ring([(rb - 0.008, 0.0), (rb + 0.003, 0.0), (rb + 0.003, 0.012),
                                                            (rb - 0.008, 0.012)], sections=20), mat))
+    # moulded vertical ribs round the wall between the bands, clear of the handles
+    for k, a in enumerate(np.linspace(0, 2 * np.pi, 8, endpoint=False) + np.pi / 8):
+        zc = h * 0.475
+        rr = r_at(zc)
+        parts.append(make_part(f"rib_{k}", "rib", S.box((0.004, 0.014, h * 0.3), center=(np.cos(a) * (rr + 0.002), np.sin(a) * (rr + 0.002), zc),
+                                                        R=rot((0, 0, 1), a)), mat))
     return parts

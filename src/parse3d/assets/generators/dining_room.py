@@ -160,7 +160,7 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel", "label"),
+@register("table_runner", parts=("runner",), extra_parts=("hem", "border", "tassel", "label", "binding", "tassel_cap"),
           size_range=(0.9, 2.8), density=300, variants=("plain", "bordered", "tasselled"),
           placement="surface", groups={"body": ("runner", "hem", "border")})
 def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -200,10 +200,25 @@ def table_runner(rng: np.random.Generator, variant: str) -> list[Part]:
             tassel = S.frustum(0.004, 0.009, 0.05, center=(sx * L / 2, 0, 0.0045), axis=(sx, 0, 0),
                                sections=10)
             parts.append(make_part(f"tassel_{k}", "tassel", tassel, cloth))
+            # the wrapped cap binding the tassel's threads where it hangs from the point
+            parts.append(make_part(f"tassel_cap_{k}", "tassel_cap", S.cylinder(0.006, 0.01, center=(sx * (L / 2 + 0.005), 0, 0.0045),
+                                                                               axis=(1, 0, 0), sections=10), cloth))
+        # the bias binding round the six edges, lying along them on the top face
+        edge = Material(M.jitter(rng, (0.3, 0.25, 0.2), 0.05), 0.7, 0.0, "fabric")
+        pts = np.asarray(outline, float)
+        for k in range(len(pts)):
+            p0, p1 = pts[k], pts[(k + 1) % len(pts)]
+            u = (p1 - p0) / np.linalg.norm(p1 - p0)
+            inward = np.array([-u[1], u[0]])  # the outline runs anticlockwise
+            c = (p0 + p1) / 2 + inward * 0.004
+            a = float(np.arctan2(u[1], u[0]))
+            R = np.array([[np.cos(a), -np.sin(a), 0], [np.sin(a), np.cos(a), 0], [0, 0, 1]])
+            parts.append(make_part(f"binding_{k}", "binding", S.box((float(np.linalg.norm(p1 - p0)) - 0.004, 0.008, 0.001),
+                                                                    center=(c[0], c[1], t), R=R), edge))
     return parts
 
 
-@register("flowers", parts=("stem", "bloom"), extra_parts=("leaf", "wrap", "ribbon"),
+@register("flowers", parts=("stem", "bloom"), extra_parts=("leaf", "wrap", "ribbon", "calyx"),
           size_range=(0.25, 0.7), density=400, variants=("roses", "tulips", "wrapped", "wildflowers"),
           placement="surface")
 def flowers(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -239,7 +254,10 @@ def flowers(rng: np.random.Generator, variant: str) -> list[Part]:
                             sections=12)
         bloom = bloom.moved(top - (0, 0, 0.002))
         parts.append(make_part(f"bloom_{k}", "bloom", bloom, col))
-        if k % 2 == 0:
+        if variant != "tulips":  # the green calyx cupping the bloom's base, where the sepals are
+            parts.append(make_part(f"calyx_{k}", "calyx", S.frustum(0.003, 0.0065, 0.006, center=tuple(top - (0, 0, 0.006)), sections=8),
+                                   green))
+        if k % 2 == 0 or variant == "roses":
             leaf = S.ellipsoid((0.03, 0.008, 0.0015), center=(0.03, 0, 0), subdivisions=1)
             p = mid + (top - mid) * 0.3
             leaf = leaf.apply(np.vstack([np.c_[rot((0, 0, 1), a) @ rot((0, 1, 0), -0.5), p],

@@ -96,7 +96,7 @@ def _rim(r_out: float, z: float, t: float, bead: float) -> S.Shape:
                 sections=16)
 
 
-@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "handle_join"), size_range=(0.08, 0.14),
+@register("cup", parts=("body",), extra_parts=("base", "rim", "handle", "handle_join", "stacking_ring"), size_range=(0.08, 0.14),
           density=900, variants=("tumbler", "tapered", "handled"), placement="surface")
 def cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.04)
@@ -118,10 +118,16 @@ def cup(rng: np.random.Generator, variant: str) -> list[Part]:
         handle = _handle(rng, r, h, th).moved((0, 0, zb))
         parts.append(make_part("handle", "handle", handle, mat))
         parts += _handle_joins(handle, r, th, mat)
+    else:  # the moulded ring round the wall a stacked cup rests on when nested
+        zs = zb + h * 0.72
+        rs = r0 + (r - r0) * 0.72
+        parts.append(make_part("stacking_ring", "stacking_ring", ring([(rs - 0.0005, zs - 0.003), (rs + 0.0012, zs - 0.0015),
+                                                                       (rs + 0.0012, zs + 0.0015), (rs - 0.0005, zs + 0.003)],
+                                                                      sections=16), mat))
     return parts
 
 
-@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim"),
+@register("tea_cup", parts=("body",), extra_parts=("handle", "foot_ring", "rim", "trim", "handle_join"),
           size_range=(0.06, 0.11), density=900, variants=("bowl", "handled"), placement="surface")
 def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     r = rng.uniform(0.03, 0.042)
@@ -135,7 +141,9 @@ def tea_cup(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = [make_part("body", "body", body, mat), make_part("foot_ring", "foot_ring", foot, mat),
              make_part("rim", "rim", _rim(r, fh + h, t, 0.001), mat)]
     if variant == "handled":
-        parts.append(make_part("handle", "handle", _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh)), mat))
+        handle = _handle(rng, r * 0.9, h, 0.004).moved((0, 0, fh))
+        parts.append(make_part("handle", "handle", handle, mat))
+        parts += _handle_joins(handle, r * 0.9, 0.004, mat)
     # the gilded band under the rim and a painted spray of flowers on the front
     zt = fh + h * 0.88
     rt = r * 0.9 + (r - r * 0.9) * (zt - fh - h * 0.5) / (h * 0.5)

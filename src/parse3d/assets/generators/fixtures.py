@@ -18,7 +18,7 @@ from ._casework import black, white
 from ._kit import rot
 
 
-@register("curtain", parts=("panel", "rod"), extra_parts=("finial", "ring", "tieback", "bracket"), size_range=(1.0, 3.2),
+@register("curtain", parts=("panel", "rod"), extra_parts=("finial", "ring", "tieback", "bracket", "screw"), size_range=(1.0, 3.2),
           density=200, variants=("pair", "single", "tied_back"), placement="wall")
 def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     W, H = rng.uniform(1.0, 2.6), rng.uniform(1.4, 2.6)
@@ -29,6 +29,9 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"finial_{i}", "finial", S.ellipsoid((0.03, 0.025, 0.025), center=(s * (W / 2 + 0.12), yr, H)), metal))
         parts.append(make_part(f"bracket_{i}", "bracket", S.box((0.02, yr, 0.03), center=(s * (W / 2 + 0.04), yr / 2, H)), metal))
+        # two screws through each bracket's foot into the wall, above and below the arm
+        parts += [make_part(f"screw_{2 * i + j}", "screw", S.cylinder(0.004, 0.003, center=(s * (W / 2 + 0.04), 0.0015, H + dz), axis=(0, 1, 0),
+                                                                      sections=8), metal) for j, dz in enumerate((-0.02, 0.02))]
     panels = [(-W / 2, 0.0), (0.0, W / 2)] if variant != "single" else [(-W / 2, W / 2)]
     k = 0
     for i, (x0, x1) in enumerate(panels):
@@ -109,7 +112,7 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("radiator", parts=("section",), extra_parts=("pipe", "valve", "bracket", "panel"), size_range=(0.4, 1.7), density=900,
+@register("radiator", parts=("section",), extra_parts=("pipe", "valve", "bracket", "panel", "bleed_valve"), size_range=(0.4, 1.7), density=900,
           variants=("column", "panel", "towel_rail"), placement="wall")
 def radiator(rng: np.random.Generator, variant: str) -> list[Part]:
     enamel = white(rng)
@@ -145,6 +148,14 @@ def radiator(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("valve", "valve", S.cylinder(0.02, 0.06, center=(x_end + 0.03, 0.07, z_pipe + 0.05), sections=12), chrome))
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"bracket_{i}", "bracket", S.box((0.03, 0.04, 0.05), center=(s * (x_end - 0.08), 0.02, z_pipe + 0.2)), black()))
+    # the return pipe and its lockshield valve at the other end, and the air bleed valve in
+    # the top corner above the flow valve
+    parts.append(make_part("pipe_1", "pipe", S.cylinder(0.01, z_pipe + 0.02, center=(-x_end - 0.03, 0.07, (z_pipe + 0.02) / 2), sections=10),
+                           chrome))
+    parts.append(make_part("valve_1", "valve", S.cylinder(0.017, 0.045, center=(-x_end - 0.03, 0.07, z_pipe + 0.0425), sections=10), chrome))
+    zt = max(float(p.bounds[1, 2]) for p in parts if p.label in ("section", "panel"))
+    parts.append(make_part("bleed_valve", "bleed_valve", S.cylinder(0.006, 0.014, center=(x_end + 0.007, 0.07, zt - 0.03), axis=(1, 0, 0),
+                                                                    sections=8), chrome))
     return parts
 
 
@@ -202,7 +213,7 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("ceiling_fan", parts=("blade", "motor"), extra_parts=("canopy", "downrod", "blade_arm", "light", "pull_chain", "blade_screw",
-                                                                 "coupling_cover", "switch_housing"),
+                                                                 "coupling_cover", "switch_housing", "screw"),
           size_range=(0.8, 1.45), density=600, variants=("four_blade", "five_blade", "with_light"), placement="ceiling")
 def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
     D = rng.uniform(0.9, 1.4)
@@ -228,6 +239,10 @@ def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
             cs = R @ np.array([rx, (-1) ** j * 0.008, 0])
             parts.append(make_part(f"blade_screw_{2 * k + j}", "blade_screw",
                                    S.cylinder(0.004, 0.003, center=(cs[0], cs[1], zm - 0.0815), sections=8), metal))
+    # the two screws through the canopy's side into the ceiling bracket
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.004, 0.004, center=(sx * 0.062, 0, top - 0.03), axis=(1, 0, 0), sections=8),
+                               metal))
     # the cover over the downrod's coupling on the motor, and the switch housing under the motor
     parts.append(make_part("coupling_cover", "coupling_cover", S.frustum(0.045, 0.02, 0.04, center=(0, 0, zm), sections=16), metal))
     parts.append(make_part("switch_housing", "switch_housing", S.cylinder(0.06, 0.03, center=(0, 0, zm - 0.09 - 0.015 + 0.03), sections=20),
@@ -242,7 +257,8 @@ def ceiling_fan(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("air_conditioner", parts=("body",), extra_parts=("front_panel", "louver", "vent", "display", "pipe", "vane", "filter",
-                                                            "knob", "button", "exhaust_port", "handle"),
+                                                            "knob", "button", "exhaust_port", "handle", "side_curtain", "drain_plug",
+                                                            "indicator"),
           size_range=(0.45, 1.2), density=500, variants=("split", "window", "portable"), placement="wall")
 def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = white(rng, "plastic")
@@ -266,6 +282,10 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"filter_{k}", "filter", S.box((w * 0.42, 0.004, h * 0.45), center=(sx * w * 0.23, d - 0.003, h * 0.6)),
                                    M.solid((0.6, 0.65, 0.7), "fabric", 0.8)))
+        # the power, timer and sleep lights beside the display
+        parts += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.003, 0.003, center=(w / 2 - 0.15 - 0.015 * k, d + 0.0075, h * 0.35),
+                                                                      axis=(0, 1, 0), sections=8), M.solid((0.2, 0.8, 0.3), "glass", 0.2))
+                  for k in range(3)]
         return parts
     if variant == "window":
         w, d, h = rng.uniform(0.48, 0.66), rng.uniform(0.45, 0.6), rng.uniform(0.32, 0.42)
@@ -285,10 +305,16 @@ def air_conditioner(rng: np.random.Generator, variant: str) -> list[Part]:
     # back and the recessed grips on its sides
     parts.append(make_part("filter", "filter", S.box((w * 0.6, 0.004, h * 0.3), center=(-w * 0.05, d - 0.003, h * 0.45)),
                            M.solid((0.6, 0.65, 0.7), "fabric", 0.8)))
+    # the condensate drain plug low on the back
+    parts.append(make_part("drain_plug", "drain_plug", S.cylinder(0.012, 0.01, center=(w * 0.3, -0.005 + 0.002, 0.04), axis=(0, 1, 0),
+                                                                  sections=10), black()))
     if variant == "window":
         for k, z in enumerate((h * 0.55, h * 0.3)):
             parts.append(make_part(f"knob_{k}", "knob", S.cylinder(0.02, 0.015, center=(w / 2 - 0.08, d + 0.0125, z), axis=(0, 1, 0),
                                                                   sections=12), M.solid((0.8, 0.8, 0.8), "plastic")))
+        # the folded accordion side curtains that fill the window opening either side, drawn in
+        parts += [make_part(f"side_curtain_{k}", "side_curtain", S.box((0.012, 0.06, h * 0.9), center=(sx * (w / 2 - 0.006), d * 0.35, h * 0.5)),
+                            black()) for k, sx in enumerate((-1, 1))]
     else:
         for k in range(3):
             parts.append(make_part(f"button_{k}", "button", S.cylinder(0.008, 0.004, center=((k - 1) * 0.03, d * 0.75, h + 0.001),

@@ -74,7 +74,7 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
     rmax = L * 0.22
     bend = 0.0 if variant == "straight" else L * 0.25
     parts = []
-    n = 5
+    n = 5 if variant == "mini" else 7  # a full-size croissant shows seven rolls of dough, a mini five
     for k in range(n):  # rolled segments, fattest in the middle, bending towards -Y at the ends
         f = (k - (n - 1) / 2) / ((n - 1) / 2)
         x = f * L * 0.38
@@ -93,7 +93,7 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("jewelry_box", parts=("body", "lid"), extra_parts=("tray", "mirror", "clasp", "hinge", "foot", "drawer", "drawer_box",
-                                                             "knob", "lining", "divider", "ring_roll"),
+                                                             "knob", "lining", "divider", "ring_roll", "lid_stay"),
           size_range=(0.12, 0.4), density=600, variants=("hinged", "drawers", "chest"), placement="surface")
 def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     wood = M.wood(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -129,8 +129,11 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     tw, td, zt = w - 2 * t - 0.004, d - 2 * t - 0.004, z + h - ht - 0.002
     parts.append(make_part("divider", "divider", S.box((0.004, td - 0.008, ht - 0.006),
                                                        center=(-tw / 6, 0, zt + 0.004 + (ht - 0.006) / 2)), velvet))
-    parts.append(make_part("ring_roll", "ring_roll", S.cylinder(0.009, tw / 3 - 0.012, center=(-tw / 3, 0, zt + 0.004 + 0.009),
-                                                               axis=(1, 0, 0), sections=10), velvet))
+    # three rows of ring rolls side by side across the compartment's depth
+    for k, dy in enumerate((-td * 0.28, 0.0, td * 0.28)):
+        parts.append(make_part("ring_roll" if k == 0 else f"ring_roll_{k}", "ring_roll",
+                               S.cylinder(min(0.009, td * 0.13), tw / 3 - 0.012, center=(-tw / 3, dy, zt + 0.004 + min(0.009, td * 0.13)),
+                                          axis=(1, 0, 0), sections=10), velvet))
     zl = z + h
     hl = rng.uniform(0.02, 0.03) if variant != "chest" else rng.uniform(0.05, 0.06)
     if variant == "chest":  # a rounded chest lid
@@ -145,6 +148,8 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
                                M.solid((0.8, 0.85, 0.9), "glass", 0.05, 0.9)))
         parts.append(mount("lid", "mirror"))
     parts.append(make_part("clasp", "clasp", S.box((0.02, 0.004, 0.02), center=(0, d / 2 + 0.002, zl)), brass))
+    # the folding brass stay inside the right wall that holds the lid open, folded down
+    parts.append(make_part("lid_stay", "lid_stay", S.box((0.003, d * 0.45, 0.004), center=(w / 2 - t - 0.0025, -d * 0.15, zl - 0.004)), brass))
     parts += hinge_parts("hinge", x=zl, y=-d / 2 - 0.003, z0=-w / 2 + 0.02, z1=w / 2 - 0.02, mat=brass, axis="x", radius=0.003,
                          length=0.025)
     parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR * 0.6))
@@ -254,7 +259,7 @@ def _grip_dots(xy) -> list[Part]:
             for k, (x, y) in enumerate(xy)]
 
 
-@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge", "foot"),
+@register("laptop_stand", parts=("platform", "base"), extra_parts=("lip", "arm", "leg", "pad", "hinge", "foot", "screw", "knob"),
           size_range=(0.2, 0.4), density=1500, variants=("angled", "adjustable", "riser"), placement="surface")
 def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     alu = M.solid(M.jitter(rng, (0.78, 0.78, 0.8), 0.03)[:3], "metal", 0.3, 0.9)
@@ -285,11 +290,19 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
                                    [S.box((0.012, d * 0.85, 0.012), center=(sx * w * 0.4, 0, (hf + hb_) / 2 - 0.01), R=R),
                                     S.box((0.012, 0.012, hb_ - 0.01), center=(sx * w * 0.4, -d * 0.4 * np.cos(tilt),
                                                                               (hb_ - 0.01) / 2 + 0.004))], alu))
+            # the two screws fixing each arm's upright to the base, heads on its outer face
+            parts += [make_part(f"screw_{2 * k + j}", "screw", S.cylinder(0.003, 0.0015, center=(sx * (w * 0.4 + 0.00675), -d * 0.4 * np.cos(tilt),
+                                                                                             zs), axis=(1, 0, 0), sections=8), alu)
+                      for j, zs in enumerate((0.014, 0.014 + (hb_ - 0.02) * 0.5))]
     else:  # an arm on hinges: one strut from the base's front to the platform's back
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"arm_{k}", "arm", S.tube([(sx * w * 0.35, d * 0.35, 0.008), (sx * w * 0.35, -d * 0.35, hb_ - 0.012)],
                                                              0.008, sections=8), alu))
         parts += hinge_parts("hinge", x=0.012, y=d * 0.35, z0=-w * 0.4, z1=w * 0.4, mat=alu, axis="x", radius=0.008, length=0.03)
+        # the tension knob on each hinge's outer end that locks the angle
+        parts += [make_part(f"knob_{k}", "knob", S.cylinder(0.012, 0.008, center=(sx * (w * 0.4 + 0.015 + 0.004), d * 0.35, 0.012), axis=(1, 0, 0),
+                                                            sections=12), M.solid((0.1, 0.1, 0.1), "plastic", 0.5))
+                  for k, sx in enumerate((-1, 1))]
     for k, (x, y) in enumerate([(-w * 0.3, -d * 0.2), (w * 0.3, -d * 0.2), (-w * 0.3, d * 0.3), (w * 0.3, d * 0.3)]):
         parts.append(make_part(f"pad_{k}", "pad", S.cylinder(0.012, 0.002, center=(x, y, hf + (hb_ - hf) * (0.5 - y / d) + 0.004),
                                                              sections=10), rubber))

@@ -17,7 +17,8 @@ from ._kit import OPEN_DOOR, hinge_parts, legs4, revolute, rot
 
 
 @register("arcade_cabinet", parts=("body", "screen", "control_panel"),
-          extra_parts=("bezel", "marquee", "joystick", "button", "coin_door", "side_panel"),
+          extra_parts=("bezel", "marquee", "joystick", "button", "coin_door", "side_panel", "coin_slot", "coin_return", "lock",
+                       "speaker", "t_molding"),
           size_range=(1.5, 2.0), density=300, variants=("upright", "cocktail_top", "twin"))
 def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 0.7) if variant != "twin" else rng.uniform(0.8, 0.9)
@@ -62,6 +63,23 @@ def arcade_cabinet(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid(M.jitter(rng, (0.95, 0.85, 0.3), 0.05), "plastic", 0.2)))
     parts.append(make_part("coin_door", "coin_door", S.box((0.2, 0.01, 0.22), center=(0, d / 2 + 0.004 - 0.025, 0.62)),
                            M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+    # the one- and two-player start buttons, the coin door's two slots with their return
+    # buttons and its lock, the speaker grilles under the marquee, and the T-moulding capping
+    # each side panel's front edge
+    for p in range(2):
+        parts.append(make_part(f"button_{k + p}", "button", S.cylinder(0.01, 0.025, center=((p - 0.5) * 0.06, d / 2 - 0.25, 0.97), sections=10),
+                               M.solid((0.95, 0.95, 0.95), "plastic", 0.3)))
+    metal = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    yd = d / 2 + 0.009 - 0.025
+    for j, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"coin_slot_{j}", "coin_slot", S.box((0.05, 0.006, 0.07), center=(sx * 0.05, yd + 0.003, 0.68)), metal))
+        parts.append(make_part(f"coin_return_{j}", "coin_return", S.box((0.04, 0.006, 0.03), center=(sx * 0.05, yd + 0.003, 0.57)), black()))
+    parts.append(make_part("lock", "lock", S.cylinder(0.01, 0.006, center=(0, yd + 0.003, 0.62), axis=(0, 1, 0), sections=10), metal))
+    parts += [make_part(f"speaker_{j}", "speaker", S.box((0.12, 0.004, 0.08), center=(sx * iw * 0.3, d / 2 - 0.17, h - 0.26)), black())
+              for j, sx in enumerate((-1, 1))]
+    for j, x in enumerate((-w / 2 + t / 2, w / 2 - t / 2)):
+        parts.append(make_part(f"t_molding_{j}", "t_molding", S.box((t + 0.004, 0.006, 0.9), center=(x, d / 2 + 0.003 - 0.006, 0.45)),
+                               black()))
     if variant == "cocktail_top":
         parts.append(make_part("top_panel", "body", S.box((w, 0.35, 0.02), center=(0, -d / 2 + 0.175, h + 0.01)), paint))
     return parts
@@ -180,7 +198,8 @@ def foosball_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot", "corner_block"), size_range=(0.7, 1.3),
+@register("card_table", parts=("tabletop", "leg"), extra_parts=("apron", "felt", "cup_holder", "foot", "corner_block", "screw"),
+          size_range=(0.7, 1.3),
           density=500, variants=("square", "octagon", "round"))
 def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.8, 1.2)
@@ -213,6 +232,9 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
         c = lw / 2 - 0.05 - 0.025
         parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.05, 0.05, ah * 0.6), center=(sx * c, sy * c, h - t - ah * 0.3)),
                                wood))
+        # the screw driven through the block's inner corner up into the top
+        parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.0045, 0.003, center=(sx * (c - 0.012), sy * (c - 0.012), h - t - ah * 0.6 - 0.0015),
+                                                                 sections=8), M.solid((0.6, 0.6, 0.62), "metal", 0.4)))
     if variant == "octagon":
         for i in range(4):
             a = np.pi / 4 + i * np.pi / 2
@@ -222,7 +244,7 @@ def card_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "seal"), size_range=(0.18, 0.55),
+@register("board_game", parts=("box",), extra_parts=("lid", "board", "piece", "card", "die", "rules", "seal", "timer"), size_range=(0.18, 0.55),
           density=400, variants=("boxed", "set_up", "card_deck"), placement="surface")
 def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
     art = M.paper(rng)
@@ -250,6 +272,9 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
                                           S.box((w, 0.003, 0.04), center=(0, d / 2 - 0.0015, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(-w / 2 + 0.0015, 0, h - 0.02)),
                                           S.box((0.003, d - 0.006, 0.04), center=(w / 2 - 0.0015, 0, h - 0.02))], art)]
+        # the round clear seals taping the lid shut at both ends
+        parts += [make_part(f"seal_{k}", "seal", S.box((0.0005, 0.025, 0.025), center=(sx * (w / 2 + 0.00025), 0, h - 0.02)),
+                            M.solid((0.9, 0.92, 0.95), "plastic", 0.2)) for k, sx in enumerate((-1, 1))]
         return parts
     b = rng.uniform(0.4, 0.5)
     parts = [make_part("board", "board", S.box((b, b, 0.004), center=(0, 0, 0.002)), art),
@@ -266,12 +291,21 @@ def board_game(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"die_{k}", "die", S.box((0.016, 0.016, 0.016), center=(b * 0.3 + k * 0.025, b * 0.3, 0.004 + 0.008),
                                                       bevel=0.002, R=rot((0, 0, 1), 0.3 * k)), M.solid((0.95, 0.95, 0.93), "plastic", 0.4)))
     parts.append(make_part("card", "card", S.box((0.06, 0.09, 0.012), center=(-b * 0.25, b * 0.25, 0.004 + 0.006)), art))
+    # the discard pile beside the draw pile, and the sand timer lying on the board
+    parts.append(make_part("card_1", "card", S.box((0.06, 0.09, 0.003), center=(-b * 0.25 + 0.075, b * 0.25, 0.004 + 0.0015),
+                                                   R=rot((0, 0, 1), 0.15)), art))
+    parts.append(make_part("timer", "timer", [S.cylinder(0.012, 0.004, center=(b * 0.05 + dx, -b * 0.3, 0.004 + 0.012), axis=(1, 0, 0),
+                                                         sections=10) for dx in (-0.028, 0.028)]
+                           + [S.cylinder(0.009, 0.052, center=(b * 0.05, -b * 0.3, 0.004 + 0.012), axis=(1, 0, 0), sections=10)],
+                           M.glass(rng)))
     parts.append(make_part("rules", "rules", S.box((0.15, 0.21, 0.003), center=(b / 2 - w * 0.4 - 0.01, b * 0.12, 0.0055)),
                            M.solid((0.95, 0.95, 0.93), "paper", 0.8)))
     return parts
 
 
-@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper", "hubcap", "headlight", "tail_light"), size_range=(0.08, 0.45),
+@register("toy_car", parts=("body", "wheel"), extra_parts=("cabin", "window", "bumper", "hubcap", "headlight", "tail_light", "grille",
+                                                                    "mirror", "license_plate", "axle", "seat", "steering_wheel"),
+          size_range=(0.08, 0.45),
           density=600, variants=("sedan", "truck", "ride_on"), placement="surface")
 def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
     s = rng.uniform(0.1, 0.16) if variant != "ride_on" else rng.uniform(0.35, 0.42)
@@ -307,10 +341,30 @@ def toy_car(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.solid((1.0, 0.95, 0.7), "glass", 0.1)))
         parts.append(make_part(f"tail_light_{i}", "tail_light", S.box((s * 0.01, W * 0.18, s * 0.04), center=(-L / 2 - s * 0.005 + s * 0.01, sy * W * 0.3, zl)),
                                M.solid((0.9, 0.1, 0.1), "glass", 0.1)))
+    # the radiator grille between the headlights, a wing mirror on each side of the cabin, the
+    # number plates front and back, and the two axles the wheels turn on
+    parts.append(make_part("grille", "grille", S.box((s * 0.008, W * 0.34, s * 0.035), center=(L / 2 - s * 0.002, 0, zl)), chrome))
+    xm = L * 0.2 if variant != "truck" else L * 0.43
+    for i, sy in enumerate((-1, 1)):
+        parts.append(make_part(f"mirror_{i}", "mirror", S.box((s * 0.03, W * 0.06, s * 0.025), center=(xm, sy * (W * 0.45 + W * 0.03), r + s * 0.19)),
+                               paint))
+    for i, sx in enumerate((1, -1)):
+        parts.append(make_part(f"license_plate_{i}", "license_plate", S.box((s * 0.006, W * 0.3, s * 0.03),
+                                                                            center=(sx * (L / 2 + s * 0.015 + s * 0.003), 0, r + s * 0.02 - s * 0.045)),
+                               M.solid((0.95, 0.95, 0.9), "metal", 0.4)))
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"axle_{i}", "axle", S.cylinder(r * 0.18, W * 1.0, center=(sx * L * 0.32, 0, r), axis=(0, 1, 0), sections=8),
+                               chrome))
+    if variant == "ride_on":  # the seat a child sits on and the steering wheel in front of it
+        parts.append(make_part("seat", "seat", S.box((L * 0.2, W * 0.6, s * 0.02), center=(-L * 0.12, 0, r + s * 0.31), bevel=s * 0.005),
+                               black()))
+        parts.append(make_part("steering_wheel", "steering_wheel", S.cylinder(W * 0.15, s * 0.015, center=(L * 0.12, 0, r + s * 0.33),
+                                                                            axis=(1, 0, 0.6), sections=12), black()))
     return parts
 
 
-@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye", "nose", "paw_pad", "bow"),
+@register("teddy_bear", parts=("body", "head"), extra_parts=("ear", "arm", "leg", "snout", "eye", "nose", "paw_pad", "bow",
+                                                                                       "ear_lining", "tail", "tag"),
           size_range=(0.15, 0.6), density=150, variants=("sitting", "small", "large"), placement="surface")
 def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     s = {"small": rng.uniform(0.16, 0.22), "sitting": rng.uniform(0.25, 0.35), "large": rng.uniform(0.45, 0.55)}[variant]
@@ -340,4 +394,18 @@ def teddy_bear(rng: np.random.Generator, variant: str) -> list[Part]:
     bow = M.solid(M.jitter(rng, (0.75, 0.1, 0.15), 0.1), "fabric", 0.8)
     parts.append(make_part("bow", "bow", [S.ellipsoid((0.05 * s, 0.02 * s, 0.03 * s), center=(sx * 0.045 * s, 0.17 * s, 0.55 * s),
                                                       subdivisions=1) for sx in (-1, 1)], bow))
+    # the pale linings inside the ears, a pad on each paw's inside, the stub of a tail and the
+    # maker's cloth tag sewn into the side seam
+    pale = parts[2].material
+    for i, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"ear_lining_{i}", "ear_lining", S.ellipsoid((0.04 * s, 0.008 * s, 0.04 * s),
+                                                                           center=(sx * 0.13 * s, 0.026 * s, 0.85 * s), subdivisions=1),
+                               pale))
+        parts.append(make_part(f"paw_pad_{i + 2}", "paw_pad", S.ellipsoid((0.035 * s, 0.01 * s, 0.045 * s),
+                                                                          center=(sx * 0.24 * s, 0.115 * s, 0.3 * s), subdivisions=1),
+                               pale))
+    parts.append(make_part("tail", "tail", S.ellipsoid((0.035 * s, 0.03 * s, 0.035 * s), center=(0, -0.185 * s, 0.1 * s), subdivisions=1),
+                           fur))
+    parts.append(make_part("tag", "tag", S.box((0.002, 0.03 * s, 0.05 * s), center=(0.216 * s, -0.02 * s, 0.2 * s)),
+                           M.solid((0.95, 0.95, 0.9), "fabric", 0.8)))
     return parts

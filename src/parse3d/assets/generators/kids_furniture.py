@@ -13,10 +13,11 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._kit import rot
 
 
 @register("high_chair", parts=("seat", "leg", "tray"),
-          extra_parts=("back", "armrest", "footrest", "stretcher", "strap", "tray_rim", "leg_cap"),
+          extra_parts=("back", "armrest", "footrest", "stretcher", "strap", "tray_rim", "leg_cap", "buckle", "latch"),
           size_range=(0.85, 1.15), density=500, variants=("wooden", "plastic", "folding"),
           placement="floor")
 def high_chair(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -67,7 +68,24 @@ def high_chair(rng: np.random.Generator, variant: str) -> list[Part]:
            S.box((0.012, td - 0.024, 0.018), center=(-tw / 2 + 0.006, ty, zt_ + 0.009))]
     parts.append(make_part("tray_rim", "tray_rim", rim, shell))
     strap = S.box((0.04, 0.012, za - zs - 0.02), center=(0, sd * 0.1, (zs + za) / 2 - 0.01))
-    parts.append(make_part("strap", "strap", strap, Material(M.jitter(rng, (0.2, 0.3, 0.5), 0.1), 0.9, 0.0, "fabric")))
+    webbing = Material(M.jitter(rng, (0.2, 0.3, 0.5), 0.1), 0.9, 0.0, "fabric")
+    parts.append(make_part("strap", "strap", strap, webbing))
+    # the rest of the harness: the two waist straps from the back to the buckle where they
+    # meet the crotch strap; the tray's two release latches under its side edges; and the
+    # side stretchers joining front and back legs at the footrest's height
+    zw = zs + 0.04
+    for k, sx in enumerate((-1, 1)):
+        parts.append(make_part(f"strap_{k + 1}", "strap", S.box((sw * 0.42, 0.008, 0.03),
+                                                                center=(sx * sw * 0.21, -sd * 0.05, zw), R=rot((0, 0, 1), -sx * 0.5)), webbing))
+    parts.append(make_part("buckle", "buckle", S.box((0.045, 0.014, 0.035), center=(0, sd * 0.1 + 0.002, zw), bevel=0.004),
+                           Material((0.15, 0.15, 0.16, 1.0), 0.5, 0.0, "plastic")))
+    parts += [make_part(f"latch_{k}", "latch", S.box((0.02, 0.04, 0.01), center=(sx * (tw / 2 - 0.03), sd / 2, zt_ - 0.005)), shell)
+              for k, sx in enumerate((-1, 1))]
+    for k, sx in enumerate((-1, 1)):
+        a = top[0 if sx < 0 else 1] + (sx * splay, -splay * 1.1) * np.array(1 - f)
+        b = top[2 if sx < 0 else 3] + (sx * splay, splay * 1.1) * np.array(1 - f)
+        parts.append(make_part(f"stretcher_{k + 1}", "stretcher", S.tube([(a[0], a[1] + 0.01, zf), (b[0], b[1] - 0.01, zf)], 0.009,
+                                                                         sections=8), frame))
     # non-slip rubber caps sleeving the splayed legs just above their ends (the legs still
     # stand on the floor)
     rubber = M.solid((0.1, 0.1, 0.1), "rubber", 0.85)

@@ -49,7 +49,8 @@ def _basin(x0: float, x1: float, y0: float, y1: float, z_top: float, depth: floa
 
 
 @register("kitchen_counter", parts=("countertop", "body", "door"),
-          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_box"), size_range=(0.85, 2.5),
+          extra_parts=("drawer", "handle", "shelf", "toe_kick", "sink", "faucet", "hinge", "drawer_box", "shelf_pin", "strainer"),
+          size_range=(0.85, 2.5),
           density=600, variants=("doors", "drawer_bank", "sink"))
 def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     n_bays = int(rng.integers(2, 5)) if variant == "drawer_bank" else int(rng.integers(1, 5))
@@ -92,6 +93,12 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"shelf_{b}", "shelf",
                                    S.box((bay - t - 0.004, d - 0.03, t),
                                          center=((x0 + x1) / 2, -0.01, (KICK_H + t + zs) / 2)), mat))
+            # the four pins in the side panels' hole rows the shelf rests on
+            zp = (KICK_H + t + zs) / 2 - t / 2 - 0.003
+            half = (bay - t - 0.004) / 2
+            xs_ = ((x0 + x1) / 2 - half + 0.005, (x0 + x1) / 2 + half - 0.005)
+            parts += [make_part(f"shelf_pin_{4 * b + j}", "shelf_pin", S.cylinder(0.0025, 0.012, center=(x, y, zp), axis=(1, 0, 0), sections=8),
+                                hmat) for j, (x, y) in enumerate((x, y) for x in xs_ for y in (-d * 0.35, d * 0.3))]
         else:
             cx = (x0 + x1) / 2
             hole = (cx - bay * 0.32, cx + bay * 0.32, -0.19, 0.19)
@@ -102,6 +109,9 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
             hx0, hx1, hy0, hy1 = hole
             parts.append(make_part("sink", "sink", _basin(hx0, hx1, hy0 + oh / 2, hy1 + oh / 2, H_COUNTER - top_t,
                                                           0.18, 0.006), M.metal(rng)))
+            # the basket strainer in the basin's floor, flush with it
+            parts.append(make_part("strainer", "strainer", S.cylinder(0.045, 0.003, center=(cx, (hy0 + hy1) / 2 + oh / 2, H_COUNTER - top_t - 0.18 + 0.0045),
+                                                                      sections=16), M.metal(rng)))
             path = [[cx, -d / 2 + 0.05, H_COUNTER], [cx, -d / 2 + 0.05, H_COUNTER + 0.3],
                     [cx, -d / 2 + 0.12, H_COUNTER + 0.36], [cx, -d / 2 + 0.2, H_COUNTER + 0.3],
                     [cx, -d / 2 + 0.21, H_COUNTER + 0.24]]
@@ -116,7 +126,8 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail"),
+@register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail",
+                                                                                          "end_cap", "kick_plate"),
           size_range=(1.4, 3.3), density=600, variants=("straight", "l_shaped"))
 def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(1.4, 2.6), rng.uniform(0.45, 0.6), rng.uniform(1.02, 1.1)
@@ -170,11 +181,21 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("speed_rail", "speed_rail", [S.box((w * 0.5, 0.1, 0.006), center=(-w * 0.2, d / 2 - t - 0.05, zb * 0.6)),
                                                         S.box((w * 0.5, 0.006, 0.06), center=(-w * 0.2, d / 2 - t - 0.1, zb * 0.6 + 0.027))],
                            steel))
+    # the foot rail's two domed end caps, the steel kick plate along the customer wall's foot
+    # and the bartender's lower shelf just above the plinth floor
+    ends = [np.asarray(rail_path[0], float), np.asarray(rail_path[-1], float)]
+    dirs = [ends[0] - np.asarray(rail_path[1], float), ends[1] - np.asarray(rail_path[-2], float)]
+    for k, (e, u) in enumerate(zip(ends, dirs, strict=True)):
+        u = u / np.linalg.norm(u)
+        parts.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.027, 0.02, center=tuple(e + u * 0.008), axis=tuple(u), sections=12), steel))
+    parts.append(make_part("kick_plate", "kick_plate", S.box((w - 0.01, 0.003, 0.15), center=(0, d / 2 + 0.0015, 0.075)), steel))
+    parts.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - t - 0.02, t), center=(0, -t / 2 - 0.01, zb * 0.25)), mat))
     return parts
 
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
-                                                                     "thermostat", "gasket"),
+                                                                     "thermostat", "gasket", "toe_grille", "hinge_cover",
+                                                                     "dispenser"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -232,6 +253,18 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((1.0, 0.98, 0.9), "glass", 0.1)))
     parts.append(make_part("thermostat", "thermostat", S.cylinder(0.018, 0.012, center=(x_mid + iw * 0.25, y0 + 0.1, z_hi - 0.006),
                                                                   sections=12), liner))
+    # the toe grille over the compressor's air inlet at the front foot, the cover over each
+    # door's top hinge on the cabinet's top, and on a side-by-side the water and ice
+    # dispenser let into the freezer door
+    parts.append(make_part("toe_grille", "toe_grille", S.box((w - 2 * t, 0.006, 0.07), center=(0, yf - 0.003, 0.04)), black()))
+    hinge_x = {"single": [-w / 2 + 0.04], "top_freezer": [-w / 2 + 0.04], "side_by_side": [-w / 2 + 0.04, w / 2 - 0.04]}[variant]
+    parts += [make_part(f"hinge_cover_{k}", "hinge_cover", S.box((0.06, 0.08, 0.012), center=(x, yf - 0.035, h - 0.006 + 0.0), bevel=0.003),
+                        shell) for k, x in enumerate(hinge_x)]
+    if variant == "side_by_side":
+        fw_c = (-w / 2 + xs - gap) / 2
+        parts.append(make_part("dispenser", "dispenser", S.box((fw * 0.6, 0.012, 0.3), center=(fw_c, yf + dt + 0.006 - 0.012, h * 0.55)),
+                               black()))
+        parts.append(mount("freezer_door", "dispenser"))
     return parts + _door_gaskets(parts)
 
 
@@ -262,7 +295,8 @@ def _ring_path(center, radius: float, n: int, *, plane: str = "xy") -> np.ndarra
 
 
 @register("stove", parts=("body", "cooktop", "burner"),
-          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box"), size_range=(0.85, 1.15),
+          extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box", "display", "indicator",
+                       "vent"), size_range=(0.85, 1.15),
           density=400, variants=("gas", "electric", "double_oven"))
 def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.5, 0.76), rng.uniform(0.6, 0.66)
@@ -306,12 +340,19 @@ def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant != "double_oven":
         parts += drawer_parts("drawer", x0=-w / 2 + 0.01, x1=w / 2 - 0.01, z0=0.02, z1=0.11, y_front=yf + 0.02,
                               depth=d - 0.12, thick=0.02, mat=enamel, handle_mat=hmat)
+    # the oven clock between the middle knobs, the hot-surface and oven-on lights above it, and the oven's vent slot along the cooktop's back edge (flush with it)
+    zk = h_body - 0.05
+    parts.append(make_part("display", "display", S.box((0.07, 0.003, 0.025), center=(0, yf + 0.0015, zk)), black("glass")))
+    parts += [make_part(f"indicator_{k}", "indicator", S.cylinder(0.004, 0.003, center=(sx * 0.025, yf + 0.0015, zk + 0.027), axis=(0, 1, 0),
+                                                                  sections=8), M.solid((0.95, 0.4, 0.1), "glass", 0.2))
+              for k, sx in enumerate((-1, 1))]
+    parts.append(make_part("vent", "vent", S.box((w * 0.5, 0.03, 0.002), center=(0, -d / 2 + 0.06, z - 0.0009)), black()))
     return parts
 
 
 @register("washing_machine", parts=("body", "door"), extra_parts=("control_panel", "knob", "window", "drawer",
                                                                    "display", "foot", "hinge", "button", "gasket", "filter_cover",
-                                                                   "handle"),
+                                                                   "handle", "lid_lock", "dispenser"),
           size_range=(0.8, 1.0), density=250, variants=("front_loader", "top_loader"))
 def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.58, 0.62), rng.uniform(0.52, 0.64), rng.uniform(0.82, 0.88)
@@ -370,4 +411,11 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(mount("door", "handle"))
         parts += [make_part(f"button_{k}", "button", S.box((0.018, 0.008, 0.012), center=(-w / 2 + 0.08 + 0.025 * k, -d / 2 + 0.114, h + 0.06)),
                             black()) for k in range(3)]
+        # the lid lock's catch in the body's top beside the lid's front edge, and the bleach and
+        # softener dispensers in the top's front corners, under the lid
+        parts.append(make_part("lid_lock", "lid_lock", S.box((0.03, 0.012, 0.004), center=(0.09, 0.04 + (d - 0.16) / 2 + 0.012, h - 0.0019)),
+                               black()))
+        parts += [make_part(f"dispenser_{k}", "dispenser", S.cylinder(0.025, 0.004, center=(sx * (w / 2 - 0.07), 0.04 + (d - 0.16) / 2 - 0.04,
+                                                                                             h - 0.0019), sections=12), trim)
+                  for k, sx in enumerate((-1, 1))]
     return parts

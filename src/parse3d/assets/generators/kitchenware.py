@@ -37,7 +37,7 @@ def _knob(z: float, *, r: float = 0.016, h: float = 0.022) -> S.Shape:
                    sections=16)
 
 
-@register("cooking_pot", parts=("body", "lid", "handle"), extra_parts=("lid_knob", "rivet", "base", "vent"),
+@register("cooking_pot", parts=("body", "lid", "handle"), extra_parts=("lid_knob", "rivet", "base", "vent", "rim", "screw"),
           size_range=(0.2, 0.45), density=2500,
           variants=("stock", "casserole", "dutch_oven"), placement="surface")
 def cooking_pot(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -70,10 +70,15 @@ def cooking_pot(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
     parts.append(make_part("vent", "vent", S.cylinder(0.004, 0.003, center=(r * 0.5, 0, h + dome * 0.55), sections=8),
                            M.solid((0.05, 0.05, 0.05), "metal", 0.8)))
+    # the rolled rim round the wall's top, under the lid's flange, and the screw under the lid
+    # holding its knob on
+    parts.append(make_part("rim", "rim", ring([(r - t, h - 0.006), (r + 0.002, h - 0.003), (r - t, h - 0.0005)], sections=24), mat))
+    parts.append(make_part("screw", "screw", S.cylinder(0.004, 0.003, center=(0, 0, h + dome - 0.0015 - 0.002), sections=8),
+                           M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
     return parts
 
 
-@register("frying_pan", parts=("body", "handle"), extra_parts=("grip", "rivet", "hang_hole", "base", "spout"),
+@register("frying_pan", parts=("body", "handle"), extra_parts=("grip", "rivet", "hang_hole", "base", "spout", "rim", "flame_guard"),
           size_range=(0.3, 0.62),
           density=2500, variants=("nonstick", "cast_iron", "wok"), placement="surface")
 def frying_pan(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -100,6 +105,8 @@ def frying_pan(rng: np.random.Generator, variant: str) -> list[Part]:
     grip_mat = M.plastic(rng) if variant != "cast_iron" else mat
     grip = S.tube(path[1:], thick * 1.35, sections=10)
     parts.append(make_part("grip", "grip", grip, grip_mat))
+    # the rolled rim round the pan's lip
+    parts.append(make_part("rim", "rim", ring([(r - t, h - 0.005), (r + 0.0015, h - 0.0025), (r - t, h - 0.0005)], sections=24), mat))
     if variant == "cast_iron":
         helper = loop_handle(np.array([-(r - 0.004), 0.0, h * 0.85]), (-1, 0, 0), reach=0.03,
                              width=0.05, thick=0.006)
@@ -108,6 +115,10 @@ def frying_pan(rng: np.random.Generator, variant: str) -> list[Part]:
         # the two pouring lips cast into the rim
         parts += [make_part(f"spout_{k}", "spout", S.box((0.03, 0.012, 0.006), center=(0, sy * (r + 0.003), h - 0.003)), mat)
                   for k, sy in enumerate((-1, 1))]
+        # the hole cast through the handle's end to hang it by
+        parts.append(make_part("hang_hole", "hang_hole", S.cylinder(0.006, thick * 2 * 1.35 * 0.9, center=path[-1] - d * 0.02,
+                                                                    axis=(0, 0, 1), sections=10),
+                               M.solid((0.05, 0.05, 0.05), "metal", 0.8)))
     else:  # riveted handle, a hole in the grip's end to hang it by, the induction base disc
         parts += studs("rivet", "rivet", [(r - t - 0.001, 0, z0 + dz) for dz in (-0.006, 0.006)], r=0.0045, h=0.002, mat=mat,
                        axis=(1, 0, 0), sections=8)
@@ -116,6 +127,12 @@ def frying_pan(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.solid((0.05, 0.05, 0.05), "metal", 0.8)))
         parts.append(make_part("base", "base", S.cylinder(prof[0][0] * 0.92, 0.002, center=(0, 0, 0.001), sections=24),
                                M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
+        # the steel collar shielding the grip where it meets the handle's stem
+        parts.append(make_part("flame_guard", "flame_guard", S.cylinder(thick * 1.5, 0.008, center=tuple(path[1] + d * 0.004),
+                                                                        axis=tuple(d), sections=10), mat))
+        if variant == "wok":  # the loop helper handle opposite the long one
+            helper = loop_handle(np.array([-(r - 0.004), 0.0, h * 0.85]), (-1, 0, 0), reach=0.03, width=0.05, thick=0.006)
+            parts.append(make_part("handle_1", "handle", helper, grip_mat))
     return parts
 
 
@@ -129,7 +146,7 @@ def _spout(base, *, length: float, rise: float, r0: float, r1: float) -> list[S.
 
 
 @register("kettle", parts=("body", "spout", "handle"), extra_parts=("lid", "lid_knob", "base", "whistle", "pivot", "switch",
-                                                                  "window", "lid_button", "cord"),
+                                                                  "window", "lid_button", "cord", "trigger", "indicator", "filter"),
           size_range=(0.16, 0.34), density=1500, variants=("stovetop", "electric"),
           placement="surface")
 def kettle(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -177,6 +194,11 @@ def kettle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("whistle", "whistle", S.cylinder(0.011, 0.02, center=tuple(tip + (0, -0.008, 0.006)), axis=(0, 0, 1),
                                                                 sections=10), dark))
         parts += studs("pivot", "pivot", [(0, sy * span, zc) for sy in (-1, 1)], r=0.01, h=0.012, mat=mat, axis=(0, 1, 0))
+        # the thumb trigger on the handle that lifts the whistle cap, and the encapsulated base
+        # disc under the body
+        parts.append(make_part("trigger", "trigger", S.box((0.012, 0.03, 0.006), center=(0, span * 0.55, top - 0.004)), dark))
+        parts.append(make_part("base", "base", S.cylinder(r * 0.8, 0.002, center=(0, 0, 0.001), sections=24),
+                               M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
     else:
         # the on switch at the handle's foot, the water gauge window, the lid's release button and
         # the cord leaving the base
@@ -187,12 +209,17 @@ def kettle(rng: np.random.Generator, variant: str) -> list[Part]:
                                M.glass(rng)))
         parts.append(make_part("lid_button", "lid_button", S.box((0.02, 0.02, 0.008), center=(0, -(r * 0.92) - 0.02, zt + 0.004)),
                                dark))
+        # the power light beside the switch and the limescale filter in the spout's mouth
+        parts.append(make_part("indicator", "indicator", S.cylinder(0.003, 0.002, center=(0.014, -(r * 0.92) - 0.04, 0.02 + h * 0.2 + 0.005),
+                                                                    sections=8), M.solid((0.2, 0.5, 0.95), "plastic", 0.2)))
+        parts.append(make_part("filter", "filter", S.cylinder(0.012, 0.002, center=(0, r * 0.8 + 0.02, zt - 0.03 + 0.01), axis=(0, 1, 0),
+                                                              sections=10), M.solid((0.85, 0.85, 0.85), "plastic", 0.5)))
         parts.append(make_part("cord", "cord", S.tube([(-r * 1.1, 0, 0.008), (-r * 1.1 - 0.04, 0.02, 0.005), (-r * 1.1 - 0.06, 0.06, 0.005)],
                                                       0.003, sections=6), dark))
     return parts
 
 
-@register("teapot", parts=("body", "spout", "handle", "lid"), extra_parts=("lid_knob", "foot_ring", "vent"),
+@register("teapot", parts=("body", "spout", "handle", "lid"), extra_parts=("lid_knob", "foot_ring", "vent", "gallery", "handle_join"),
           size_range=(0.14, 0.34), density=1800, variants=("round", "tall", "squat"),
           placement="surface")
 def teapot(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -219,4 +246,11 @@ def teapot(rng: np.random.Generator, variant: str) -> list[Part]:
                                                           sections=24), mat))
     parts.append(make_part("vent", "vent", S.cylinder(0.0025, 0.003, center=(rl * 0.7, 0, h + 0.008 + 0.0), sections=8),
                            M.solid((0.05, 0.05, 0.05), "plastic", 0.8)))
+    # the gallery the lid sits in round the opening, and the pads where the handle is luted on
+    parts.append(make_part("gallery", "gallery", ring([(rl * 1.02, h - 0.006), (rl * 1.14, h - 0.004), (rl * 1.14, h), (rl * 1.02, h)],
+                                                      sections=20), mat))
+    hb = handle.mesh.bounds
+    parts += [make_part(f"handle_join_{k}", "handle_join", S.cylinder(0.0105, 0.004, center=(0, -(r * 0.9) - 0.001, z), axis=(0, 1, 0),
+                                                                      sections=10), mat)
+              for k, z in enumerate((float(hb[1, 2]) - 0.007, float(hb[0, 2]) + 0.007))]
     return parts

@@ -14,7 +14,7 @@ from ..model import Part, make_part
 from ..registry import register
 
 
-@register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "hanger_bar", "basket", "flange", "hook"),
+@register("luggage_cart", parts=("deck", "post", "rail"), extra_parts=("caster", "bumper", "hanger_bar", "basket", "flange", "hook", "bolt"),
           groups={"wheel": ("caster",)},
           size_range=(1.6, 2.0), density=300, variants=("arched", "square", "two_tier"))
 def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -56,6 +56,11 @@ def luggage_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     parts += [make_part(f"hook_{k}", "hook", S.tube([(sx * (w / 2 - 0.03 - r * 0.5), 0, z0 - 0.15), (sx * (w / 2 - 0.09), 0, z0 - 0.14),
                                                      (sx * (w / 2 - 0.1), 0, z0 - 0.11)], 0.005, sections=6), brass)
               for k, sx in enumerate((-1, 1))]
+    # three bolts through each flange into the deck
+    for k, sx in enumerate((-1, 1)):
+        for j, a in enumerate(np.linspace(0, 2 * np.pi, 3, endpoint=False) + np.pi / 2):
+            c = (sx * (w / 2 - 0.03) + 0.033 * np.cos(a), 0.033 * np.sin(a), zt + 0.0115)
+            parts.append(make_part(f"bolt_{3 * k + j}", "bolt", S.cylinder(0.006, 0.003, center=c, sections=8), brass))
     if variant == "two_tier":
         parts.append(make_part("basket", "basket", [S.box((w * 0.6, d * 0.5, 0.01), center=(0, 0, zt + 0.7))]
                                + [S.box((w * 0.6, 0.01, 0.08), center=(0, sy * d * 0.25, zt + 0.74)) for sy in (-1, 1)]

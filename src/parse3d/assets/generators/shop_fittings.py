@@ -16,7 +16,8 @@ from ..registry import register
 from ._household import ring, shell
 
 
-@register("hanging_scale", parts=("hook", "dial", "pan"), extra_parts=("chain", "face", "pointer", "hanger", "glass", "bezel", "ring", "knob", "hub"),
+@register("hanging_scale", parts=("hook", "dial", "pan"), extra_parts=("chain", "face", "pointer", "hanger", "glass", "bezel", "ring", "knob", "hub",
+                                                                                "s_hook", "rim"),
           size_range=(0.45, 0.9), density=1500, variants=("dish", "basket", "deep_pan"), placement="ceiling")
 def hanging_scale(rng: np.random.Generator, variant: str) -> list[Part]:
     metal = M.metal(rng) if rng.random() < 0.6 else Material(M.jitter(rng, (0.85, 0.2, 0.15), 0.05), 0.4, 0.3, "metal")
@@ -55,4 +56,10 @@ def hanging_scale(rng: np.random.Generator, variant: str) -> list[Part]:
                            Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.0, "plastic")))
     parts.append(make_part("ring", "ring", ring([(0.006, zr), (0.009, zr - 0.003), (0.012, zr), (0.009, zr + 0.003)],
                                                 sections=12), steel))
+    # the rolled rim round the pan's edge, and the S-hook joining each chain to it
+    parts.append(make_part("rim", "rim", ring([(rp - 0.003, hp - 0.004), (rp + 0.002, hp - 0.002), (rp - 0.003, hp)], sections=28), steel))
+    for k in range(3):
+        a = 2 * np.pi * k / 3
+        c = np.array([rp * 0.97 * np.cos(a), rp * 0.97 * np.sin(a), hp + 0.008])
+        parts.append(make_part(f"s_hook_{k}", "s_hook", S.tube([c - (0, 0, 0.01), c + (0, 0, 0.008)], 0.0025, sections=6), steel))
     return parts

@@ -52,10 +52,19 @@ def _faucet(prefix: str, x: float, y: float, z: float, *, reach: float, h: float
     else:
         out.append(make_part(f"{prefix}indicator", "indicator", S.cylinder(0.005, 0.002, center=(x + 0.017 + 0.05, y, zt - 0.023), sections=10),
                              red))
+    if style != "gooseneck":  # the pop-up drain's lift rod behind the column, a knob on its top
+        out.append(make_part(f"{prefix}lift_rod", "lift_rod", [S.cylinder(0.003, h * 0.55, center=(x, y - 0.022, z + 0.008 + h * 0.275), sections=8),
+                                                               S.cylinder(0.005, 0.012, center=(x, y - 0.022, z + 0.008 + h * 0.55 + 0.006),
+                                                                          sections=8)], mat))
+    else:  # a kitchen tap's pull-down spray head round the spout's end, and its spray button
+        out.append(make_part(f"{prefix}spray_head", "spray_head", S.cylinder(0.015, 0.045, center=tuple(tip + (0, 0, 0.0295)), sections=10),
+                             mat))
+        out.append(make_part(f"{prefix}button", "button", S.box((0.01, 0.004, 0.016), center=tuple(tip + (0, 0.017, 0.03))),
+                             M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
     return out
 
 
-@register("faucet", parts=("base", "spout"), extra_parts=("body", "handle", "collar", "aerator", "indicator"),
+@register("faucet", parts=("base", "spout"), extra_parts=("body", "handle", "collar", "aerator", "indicator", "lift_rod", "spray_head", "button"),
           size_range=(0.15, 0.45), density=4000, variants=("single_lever", "two_handle", "gooseneck"), placement="surface")
 def faucet(rng: np.random.Generator, variant: str) -> list[Part]:
     chrome = M.solid(M.jitter(rng, (0.8, 0.8, 0.82), 0.02)[:3], "metal", 0.15, 0.95) if rng.random() < 0.7 else \
@@ -118,7 +127,7 @@ def _vessel_drain(variant: str, h: float, zb: float, half_in: float | None, prof
 
 
 @register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow",
-                                                                 "collar", "aerator", "indicator"),
+                                                                 "collar", "aerator", "indicator", "lift_rod"),
           groups={"basin": ("bowl", "deck")},
           size_range=(0.85, 1.05), density=1400, variants=("round", "square", "console"))
 def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -156,7 +165,7 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("utility_sink", parts=("basin", "rim"), extra_parts=("leg", "faucet", "spout", "handle", "base", "body", "drain",
                                                                "backsplash", "stretcher", "collar", "aerator", "indicator",
-                                                               "leg_cap"),
+                                                               "leg_cap", "spray_head", "button"),
           size_range=(0.85, 1.2), density=600, variants=("legs", "cabinet", "double"))
 def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     tub = M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "plastic", 0.5) if rng.random() < 0.6 else \

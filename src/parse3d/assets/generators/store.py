@@ -27,7 +27,7 @@ def _walls(w: float, d: float, h: float, t: float, z0: float = 0.0) -> list[S.Sh
             S.box((t, d - 2 * t, h), center=(w / 2 - t / 2, 0, z0 + h / 2))]
 
 
-@register("shopping_basket", parts=("basket", "handle"), extra_parts=("rim", "base", "pivot", "label"), size_range=(0.3, 0.55), density=300,
+@register("shopping_basket", parts=("basket", "handle"), extra_parts=("rim", "base", "pivot", "label", "grip"), size_range=(0.3, 0.55), density=300,
           variants=("plastic", "wire"), placement="surface")
 def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.4, 0.47), rng.uniform(0.28, 0.33), rng.uniform(0.2, 0.25)
@@ -47,11 +47,16 @@ def shopping_basket(rng: np.random.Generator, variant: str) -> list[Part]:
                    r=0.009, h=0.006, mat=black(), axis=(0, 1, 0))
     parts.append(make_part("label", "label", S.box((0.12, 0.002, 0.04), center=(0, d / 2 + 0.001, h * 0.5)),
                            M.solid((0.95, 0.95, 0.95), "plastic", 0.4)))
+    # the moulded grip sleeve round the middle of each handle
+    for i, s in enumerate((-1, 1)):
+        y = s * (d / 2 - 0.02)
+        parts.append(make_part(f"grip_{i}", "grip", S.cylinder(0.011, w * 0.3, center=(0, y * 0.5, h + 0.12), axis=(1, 0, 0), sections=10),
+                               black()))
     return parts
 
 
 @register("shopping_cart", parts=("basket", "wheel", "handle"), extra_parts=("frame", "base", "child_seat", "bumper", "fork",
-                                                                            "coin_lock", "end_cap"),
+                                                                            "coin_lock", "end_cap", "hub", "hinge", "ad_panel"),
           size_range=(0.85, 1.15), density=250, variants=("full_size", "compact"))
 def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
     k = 1.0 if variant == "full_size" else 0.8
@@ -87,6 +92,16 @@ def shopping_cart(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.85, 0.7, 0.1), "plastic", 0.4)))
     parts += [make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.017, 0.012, center=(xb, sy * (W / 2 - 0.01 + 0.006), H), axis=(0, 1, 0),
                                                               sections=12), black()) for k, sy in enumerate((-1, 1))]
+    # the grey hub in each wheel's outer face, the advertising board across the handle's front,
+    # and the child seat's two hinges on the back wall it folds up on
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"hub_{i}", "hub", S.cylinder(0.02, 0.034, center=(sx * (L / 2 - 0.08), sy * (W / 2 - 0.06), 0.05), axis=(0, 1, 0),
+                                                            sections=10), M.solid((0.5, 0.5, 0.52), "plastic", 0.5)))
+    parts.append(make_part("ad_panel", "ad_panel", S.box((0.006, W * 0.5, 0.08), center=(xb + 0.04, 0, H - 0.08)),
+                           M.solid((0.95, 0.95, 0.95), "plastic", 0.4)))
+    if variant == "full_size":
+        parts += [make_part(f"hinge_{k}", "hinge", S.cylinder(0.008, 0.05, center=(-L * 0.3 - 0.125, sy * (W / 2 - 0.1), H - 0.18), axis=(0, 1, 0),
+                                                              sections=10), steel) for k, sy in enumerate((-1, 1))]
     return parts
 
 
@@ -97,7 +112,7 @@ def _rx(a: float) -> np.ndarray:
 
 @register("checkout_counter", parts=("body", "countertop"), extra_parts=("conveyor", "register", "screen", "card_terminal",
                                                                           "divider", "bag_well", "kick_plate", "scanner",
-                                                                          "printer", "cash_drawer"),
+                                                                          "printer", "cash_drawer", "key", "roller"),
           size_range=(1.4, 2.6), density=400, variants=("conveyor", "compact"))
 def checkout_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(1.8, 2.5) if variant == "conveyor" else rng.uniform(1.4, 1.7)
@@ -131,6 +146,16 @@ def checkout_counter(rng: np.random.Generator, variant: str) -> list[Part]:
                            black()))
     parts.append(make_part("cash_drawer", "cash_drawer", S.box((0.4, 0.02, 0.1), center=(x_reg, -d / 2 - 0.01, h - 0.03 - 0.07)),
                            black()))
+    # the register's sixteen-key pad on its top, towards the cashier
+    for k in range(16):
+        col, row = k % 4, k // 4
+        parts.append(make_part(f"key_{k}", "key", S.box((0.03, 0.03, 0.006), center=(x_reg - 0.06 + col * 0.04, -d / 2 + 0.08 + row * 0.04,
+                                                                                     h + 0.1 + 0.002), bevel=0.002),
+                               M.solid((0.8, 0.8, 0.8), "plastic", 0.4)))
+    if variant == "conveyor":  # the belt's end rollers, their tops level with the belt
+        cl = L * 0.55
+        parts += [make_part(f"roller_{k}", "roller", S.cylinder(0.0095, d * 0.72, center=(x, 0, h + 0.0095), axis=(0, 1, 0), sections=10),
+                            M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.8)) for k, x in enumerate((-L / 2 + 0.03 - 0.006, -L / 2 + 0.03 + cl + 0.006))]
     return parts
 
 
@@ -157,11 +182,24 @@ def _slatted_crate(prefix: str, *, w: float, d: float, h: float, n: int, t: floa
     for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
         parts.append(make_part(f"post_{i}", "post", S.box((post, post, h), center=(sx * (w / 2 - post / 2), sy * (d / 2 - post / 2), h / 2)),
                                mat))
+    # each slat is nailed through the corner posts into its end grain: a nail head on each
+    # post's two outer faces at every row
+    steel = M.solid((0.35, 0.35, 0.37), "metal", 0.5, 0.7)
+    k = 0
+    for j in range(n):
+        z = pitch * j + pitch * 0.65 / 2 + 0.002
+        for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]:
+            x, y = sx * (w / 2 - post / 2), sy * (d / 2 - post / 2)
+            parts.append(make_part(f"nail_{k}", "nail", S.cylinder(0.003, 0.001, center=(x, sy * (d / 2 - 0.0005), z), axis=(0, 1, 0), sections=8),
+                                   steel))
+            parts.append(make_part(f"nail_{k + 1}", "nail", S.cylinder(0.003, 0.001, center=(sx * (w / 2 - 0.0005), y, z), axis=(1, 0, 0),
+                                                                       sections=8), steel))
+            k += 2
     parts.append(make_part(f"{prefix}", "bottom", S.box((w - 2 * t, d - 2 * t, t), center=(0, 0, t / 2)), mat))
     return parts
 
 
-@register("produce_crate", parts=("bottom", "slat"), extra_parts=("post", "handle", "wall"), size_range=(0.3, 0.7),
+@register("produce_crate", parts=("bottom", "slat"), extra_parts=("post", "handle", "wall", "nail"), size_range=(0.3, 0.7),
           density=500, variants=("wooden", "plastic", "display_bin"), placement="surface")
 def produce_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.4, 0.6), rng.uniform(0.3, 0.4)
@@ -190,7 +228,7 @@ def produce_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wooden_crate", parts=("bottom", "slat"), extra_parts=("post", "lid"), size_range=(0.3, 0.9), density=450,
+@register("wooden_crate", parts=("bottom", "slat"), extra_parts=("post", "lid", "nail"), size_range=(0.3, 0.9), density=450,
           variants=("open", "lidded"))
 def wooden_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.4, 0.8), rng.uniform(0.3, 0.6), rng.uniform(0.28, 0.55)
@@ -202,7 +240,7 @@ def wooden_crate(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("cardboard_box", parts=("body",), extra_parts=("flap", "tape", "label", "wall", "bottom", "hand_hole"), size_range=(0.15, 0.75),
+@register("cardboard_box", parts=("body",), extra_parts=("flap", "tape", "label", "wall", "bottom", "hand_hole", "tissue", "pouch"), size_range=(0.15, 0.75),
           density=150, variants=("closed", "open", "shoebox"), placement="floor")
 def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     card = M.solid(M.jitter(rng, (0.72, 0.56, 0.38), 0.03), "paper", 0.9)
@@ -213,7 +251,12 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                           S.box((w, 0.003, 0.03), center=(0, d / 2 - 0.0015, h - 0.015)),
                                           S.box((w, 0.003, 0.03), center=(0, -d / 2 + 0.0015, h - 0.015))], M.paper(rng)),
                 make_part("label", "label", S.box((0.08, 0.001, 0.05), center=(w / 4, d / 2 + 0.0005, h / 2)), M.solid((0.95, 0.95, 0.95),
-                                                                                                                          "paper"))]
+                                                                                                                          "paper")),
+                # the size label on one end, and the tissue paper folded over the shoes under the lid
+                make_part("label_1", "label", S.box((0.001, d * 0.5, 0.04), center=(w / 2 - 0.002 + 0.0005, 0, h * 0.45)),
+                          M.solid((0.95, 0.95, 0.95), "paper")),
+                make_part("tissue", "tissue", S.box((w * 0.9, d * 0.9, 0.001), center=(0, 0, h - 0.0045 - 0.0005)),
+                          M.solid((0.97, 0.97, 0.97), "paper", 0.9))]
     w, d, h = rng.uniform(0.25, 0.6), rng.uniform(0.2, 0.45), rng.uniform(0.15, 0.45)
     t = 0.005
     if variant == "closed":
@@ -228,7 +271,10 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                 make_part("tape_2", "tape", S.box((0.05, 0.001, h * 0.3), center=(0, -d / 2 - 0.0005, h * 0.85)),
                           M.solid((0.75, 0.62, 0.4), "plastic", 0.2)),
                 *[make_part(f"hand_hole_{k}", "hand_hole", S.box((0.001, 0.09, 0.03), center=(sx * (w / 2 + 0.0005), 0, h * 0.75)),
-                            M.solid((0.2, 0.15, 0.1), "paper", 0.9)) for k, sx in enumerate((-1, 1))]]
+                            M.solid((0.2, 0.15, 0.1), "paper", 0.9)) for k, sx in enumerate((-1, 1))],
+                # the clear pouch holding the packing list, stuck on the front beside the label
+                make_part("pouch", "pouch", S.box((0.12, 0.002, 0.09), center=(-w / 4, d / 2 + 0.001, h * 0.45)),
+                          M.solid((0.9, 0.92, 0.95), "plastic", 0.2))]
     # open: the floor keeps the required label (it carries the internal support for IN)
     parts: list[Part | Joint] = [make_part("body", "body", S.box((w - 2 * t, d - 2 * t, t), center=(0, 0, t / 2)), card)]
     for nm, sh in zip(["wall_back", "wall_front", "wall_left", "wall_right"], _walls(w, d, h, t), strict=True):
@@ -248,7 +294,7 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel",
-                                                              "lock", "drain_plug", "grille", "light"),
+                                                              "lock", "drain_plug", "grille", "light", "spacer"),
           size_range=(0.7, 1.8), density=300, variants=("small", "large", "glass_top"))
 def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = {"small": rng.uniform(0.7, 0.95), "large": rng.uniform(1.2, 1.6), "glass_top": rng.uniform(1.4, 1.75)}[variant]
@@ -297,10 +343,13 @@ def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts.append(make_part("grille", "grille", S.box((0.004, d * 0.4, 0.12), center=(w / 2 + 0.002, -d * 0.1, fh + 0.1)), black()))
     parts.append(make_part("drain_plug", "drain_plug", S.cylinder(0.012, 0.008, center=(-w / 2 + 0.1, d / 2 + 0.004, fh + 0.04),
                                                                   axis=(0, 1, 0), sections=10), black()))
+    # the two plastic spacers on the back that keep the condenser off the wall
+    parts += [make_part(f"spacer_{k}", "spacer", S.box((0.04, 0.006, 0.04), center=(sx * (w / 2 - 0.1), -d / 2 - 0.003 + 0.0, fh + hb * 0.75)),
+                        black()) for k, sx in enumerate((-1, 1))]
     return parts
 
 
-@register("bread", parts=("loaf",), extra_parts=("bag", "score", "crust"), size_range=(0.12, 0.65), density=250,
+@register("bread", parts=("loaf",), extra_parts=("bag", "score", "crust", "heel", "label", "twist_tie"), size_range=(0.12, 0.65), density=250,
           variants=("sandwich_loaf", "baguette", "round"), placement="surface")
 def bread(rng: np.random.Generator, variant: str) -> list[Part]:
     crust = M.food(rng, (0.72, 0.48, 0.22))
@@ -310,12 +359,21 @@ def bread(rng: np.random.Generator, variant: str) -> list[Part]:
                                                    S.ellipsoid((L / 2, W / 2, H * 0.3), center=(0, 0, H * 0.7))]), crust),
                 make_part("bag", "bag", S.box((L + 0.04, W + 0.01, H + 0.01), center=(0.02, 0, (H + 0.01) / 2), bevel=0.01),
                           M.solid((0.9, 0.92, 0.95), "plastic", 0.3)),
-                make_part("clip", "bag", S.box((0.01, 0.03, 0.025), center=(L / 2 + 0.045, 0, H / 2)), M.plastic(rng))]
+                make_part("clip", "bag", S.box((0.01, 0.03, 0.025), center=(L / 2 + 0.045, 0, H / 2)), M.plastic(rng)),
+                # the bakery's paper label on the bag's side, the twisted neck of the bag the clip
+                # closes, and the two crusty heels at the loaf's ends inside it
+                make_part("label", "label", S.box((L * 0.4, 0.0006, H * 0.4), center=(-L * 0.1, -(W + 0.01) / 2 - 0.0003, H * 0.5)),
+                          M.solid((0.95, 0.92, 0.8), "paper", 0.8)),
+                make_part("twist_tie", "twist_tie", S.cylinder(0.006, 0.02, center=(L / 2 + 0.03, 0, H / 2), axis=(1, 0, 0), sections=8),
+                          M.solid((0.9, 0.92, 0.95), "plastic", 0.3)),
+                *[make_part(f"heel_{k}", "heel", S.box((0.004, W * 0.9, H * 0.6), center=(sx * (L / 2 + 0.002), 0, H * 0.35)), crust)
+                  for k, sx in enumerate((-1, 1))]]
     if variant == "baguette":
         L, r = rng.uniform(0.5, 0.62), rng.uniform(0.028, 0.035)
-        parts = [make_part("loaf", "loaf", S.union([S.cylinder(r, L - 2 * r, center=(0, 0, r), axis=(1, 0, 0), sections=16),
-                                                    S.ellipsoid((r, r, r), center=(-(L / 2 - r), 0, r)),
-                                                    S.ellipsoid((r, r, r), center=(L / 2 - r, 0, r))]), crust)]
+        # the loaf between its two pointed heels (the crusty ends people break off first)
+        parts = [make_part("loaf", "loaf", S.cylinder(r, L - 2 * r, center=(0, 0, r), axis=(1, 0, 0), sections=16), crust),
+                 *[make_part(f"heel_{k}", "heel", S.ellipsoid((r, r, r), center=(sx * (L / 2 - r), 0, r)), crust)
+                   for k, sx in enumerate((-1, 1))]]
         for k in range(int(rng.integers(3, 6))):
             x = -L * 0.35 + k * L * 0.7 / 5
             parts.append(make_part(f"score_{k}", "score", S.box((0.06, 0.012, 0.004), center=(x, 0, 2 * r - 0.001), R=_rz(0.3)),
@@ -323,20 +381,26 @@ def bread(rng: np.random.Generator, variant: str) -> list[Part]:
         return parts
     R_ = rng.uniform(0.08, 0.12)
     parts = [make_part("loaf", "loaf", S.ellipsoid((R_, R_, R_ * 0.6), center=(0, 0, R_ * 0.6)), crust)]
-    for k in range(2):
-        parts.append(make_part(f"score_{k}", "score", S.box((R_ * 1.2, 0.01, 0.005), center=(0, 0, R_ * 1.2 - 0.001), R=_rz(k * np.pi / 2)),
-                               M.food(rng, (0.85, 0.7, 0.45))))
+    # a boule's cross-hatch: two cuts each way, opened up in the oven
+    k = 0
+    for a in (0.0, np.pi / 2):
+        for off in (-0.25, 0.25):
+            c = _rz(a) @ np.array([0.0, off * R_, 0.0])
+            dz = R_ * 0.6 * (1 - np.sqrt(max(0.0, 1 - (off ** 2))))
+            parts.append(make_part(f"score_{k}", "score", S.box((R_ * 1.0, 0.01, 0.005), center=(c[0], c[1], R_ * 1.2 - 0.001 - dz),
+                                                               R=_rz(a)), M.food(rng, (0.85, 0.7, 0.45))))
+            k += 1
     return parts
 
 
-@register("banana_bunch", parts=("finger",), extra_parts=("stem", "tip", "crown"), size_range=(0.14, 0.26), density=950,
+@register("banana_bunch", parts=("finger",), extra_parts=("stem", "tip", "crown", "neck", "sticker"), size_range=(0.14, 0.26), density=950,
           variants=("bunch", "single"), placement="surface")
 def banana_bunch(rng: np.random.Generator, variant: str) -> list[Part]:
     skin = M.food(rng, (0.95, 0.82, 0.2))
-    n = 1 if variant == "single" else int(rng.integers(3, 7))
+    n = 1 if variant == "single" else int(rng.integers(4, 8))
     L, r = rng.uniform(0.16, 0.22), rng.uniform(0.016, 0.019)
     parts = []
-    tips = []
+    tips, necks = [], []
     for k in range(n):
         a = (k - (n - 1) / 2) * 0.28
         t = np.linspace(0, 1, 7)
@@ -346,6 +410,7 @@ def banana_bunch(rng: np.random.Generator, variant: str) -> list[Part]:
         path[:, 2] += k * 0.002
         parts.append(make_part(f"finger_{k}", "finger", S.tube(path, r, sections=10), skin))
         tips.append(path[-1] + (path[-1] - path[-2]) / np.linalg.norm(path[-1] - path[-2]) * 0.004)
+        necks.append((path[0], path[1]))
     stalk = M.food(rng, (0.4, 0.3, 0.15))
     parts.append(make_part("stem", "stem", S.cylinder(0.01, 0.03, center=(-0.012, 0, 0.035), axis=(1, 0, 0), sections=8),
                            stalk))
@@ -353,10 +418,20 @@ def banana_bunch(rng: np.random.Generator, variant: str) -> list[Part]:
     dark = M.solid((0.2, 0.15, 0.08), "plastic", 0.8)
     parts += studs("tip", "tip", tips, r=r * 0.35, h=0.008, mat=dark, axis=(1, 0, 0), sections=8)
     parts.append(make_part("crown", "crown", S.ellipsoid((0.012, 0.016 + 0.004 * (n - 1), 0.014), center=(0.004, 0, 0.035)), stalk))
+    # each finger's green neck (the short stalk between it and the crown), and the grower's
+    # paper sticker on the middle finger
+    for k, (a, b) in enumerate(necks):
+        u = (b - a) / np.linalg.norm(b - a)
+        parts.append(make_part(f"neck_{k}", "neck", S.cylinder(r * 0.55, 0.02, center=tuple(a + u * 0.012), axis=tuple(u),
+                                                               sections=8), M.food(rng, (0.55, 0.6, 0.25))))
+    mid = parts[n // 2].mesh.vertices
+    top = mid[np.argmax(mid[:, 2])]
+    parts.append(make_part("sticker", "sticker", S.cylinder(0.009, 0.0006, center=(top[0], top[1], top[2] + 0.0003), sections=10),
+                           M.solid((0.2, 0.35, 0.75), "paper", 0.6)))
     return parts
 
 
-@register("citrus_fruit", parts=("body",), extra_parts=("stem", "leaf", "calyx", "blossom_end"), size_range=(0.05, 0.13), density=950,
+@register("citrus_fruit", parts=("body",), extra_parts=("stem", "leaf", "calyx", "blossom_end", "sticker"), size_range=(0.05, 0.13), density=950,
           variants=("orange", "lemon", "lime", "grapefruit"), placement="surface")
 def citrus_fruit(rng: np.random.Generator, variant: str) -> list[Part]:
     col, r, ex = {"orange": ((0.95, 0.55, 0.1), rng.uniform(0.035, 0.045), 1.0),
@@ -376,4 +451,7 @@ def citrus_fruit(rng: np.random.Generator, variant: str) -> list[Part]:
     nub = 0.006 if variant == "lemon" else 0.003
     parts.append(make_part("blossom_end", "blossom_end", S.frustum(0.005, 0.002, nub, center=(r * ex - 0.0015, 0, r * 0.95),
                                                                  axis=(1, 0, 0), sections=8), parts[0].material))
+    # the grower's oval paper sticker on the shoulder, facing the front
+    parts.append(make_part("sticker", "sticker", S.cylinder(0.009, 0.0006, center=(0, -r * 0.999 + 0.0003 - 0.0006, r * 0.95),
+                                                            axis=(0, 1, 0), sections=10), M.solid((0.95, 0.95, 0.9), "paper", 0.6)))
     return parts

@@ -18,7 +18,8 @@ from ._rods import leg_caps
 
 
 @register("suitcase", parts=("shell",), extra_parts=("handle", "wheel", "zipper", "corner", "trolley_handle", "pull", "lock", "tag",
-                                                     "foot", "side_handle", "latch"),
+                                                     "foot", "side_handle", "latch", "wheel_housing", "sleeve", "button",
+                                                     "hinge"),
           size_range=(0.45, 0.95), density=180, variants=("spinner", "two_wheel", "hard_trunk"), placement="floor")
 def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.36, 0.5), rng.uniform(0.2, 0.3), rng.uniform(0.52, 0.78)
@@ -66,10 +67,27 @@ def suitcase(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("trolley_handle", "trolley_handle",
                                S.tube([(-w * 0.3, y, top - 0.01), (-w * 0.3, y, top + tz), (w * 0.3, y, top + tz),
                                        (w * 0.3, y, top - 0.01)], 0.011), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
+        # the release button on the trolley's grip, the two sleeves its tubes slide out of on
+        # the shell's top, the moulded housing over each wheel, and the four feet on the
+        # right side it lies on
+        parts.append(make_part("button", "button", S.box((0.04, 0.012, 0.006), center=(0, y, top + tz + 0.012)), dark))
+        parts += [make_part(f"sleeve_{k}", "sleeve", S.cylinder(0.016, 0.01, center=(sx * w * 0.3, y, top - 0.004), sections=10), dark)
+                  for k, sx in enumerate((-1, 1))]
+        wheels = [p for p in parts if p.label == "wheel"]
+        for k, p in enumerate(wheels):
+            c = p.mesh.bounds.mean(axis=0)
+            parts.append(make_part(f"wheel_housing_{k}", "wheel_housing", S.box((0.04, 0.05, 0.012), center=(c[0], c[1], wz - 0.006)),
+                                   dark))
+        parts += [make_part(f"foot_{k}", "foot", S.cylinder(0.01, 0.006, center=(w / 2 + 0.003, sy * (d / 2 - 0.045), wz + z), axis=(1, 0, 0),
+                                                            sections=8), dark)
+                  for k, (sy, z) in enumerate((sy, z) for sy in (-1, 1) for z in (0.06, h - 0.06))]
+    else:  # the two hinges along the back of the lid's seam
+        parts += [make_part(f"hinge_{k}", "hinge", S.box((0.06, 0.006, 0.04), center=(sx * w * 0.3, -d / 2 - 0.001, h * 0.62)),
+                            M.solid((0.7, 0.55, 0.3), "metal", 0.4, 0.8)) for k, sx in enumerate((-1, 1))]
     return parts
 
 
-@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher", "pivot", "leg_cap"), size_range=(0.5, 0.8), density=600,
+@register("luggage_rack", parts=("strap", "leg"), extra_parts=("rail", "stretcher", "pivot", "leg_cap", "tack"), size_range=(0.5, 0.8), density=600,
           variants=("folding", "bench"))
 def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.6, 0.75), rng.uniform(0.38, 0.45), rng.uniform(0.5, 0.58)
@@ -93,9 +111,17 @@ def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, sy in enumerate((-1, 1)):
             parts.append(make_part(f"stretcher_{i}", "stretcher", S.box((w - 0.08, 0.025, 0.025), center=(0, sy * (d / 2 - 0.02), 0.12)),
                                    frame))
+    brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
     for k in range(3):
         x = (k - 1) * w * 0.3
         parts.append(make_part(f"strap_{k}", "strap", S.box((0.05, d - 0.01, 0.004), center=(x, 0, h + 0.002)), strap))
+        # the strap's ends wrap under the rails, each held by a tack on the rail's outer face
+        parts += [make_part(f"tack_{2 * k + j}", "tack", S.cylinder(0.006, 0.003, center=(x, sy * (d / 2 + 0.0015 - (0.0 if variant == "bench" else 0.005)),
+                                                                                       h - 0.02), axis=(0, 1, 0), sections=8), brass)
+                  for j, sy in enumerate((-1, 1))]
+    if variant == "folding":  # the bars joining the crossed legs' feet across the rack
+        parts += [make_part(f"stretcher_{i}", "stretcher", S.cylinder(0.01, w - 0.1 + 0.06, center=(0, sy * (d / 2 - 0.014), 0.014), axis=(1, 0, 0),
+                                                                      sections=10), frame) for i, sy in enumerate((-1, 1))]
     if variant == "folding":  # the bolt each side where the crossed legs pivot
         steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
         for i, sx in enumerate((-1, 1)):
@@ -107,7 +133,8 @@ def luggage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button", "ferrule"),
+@register("bed_bench", parts=("seat", "leg"), extra_parts=("cushion", "shelf", "stretcher", "apron", "button", "ferrule", "corner_block",
+                                                           "piping"),
           size_range=(0.8, 1.7), density=400, variants=("upholstered", "slatted_shelf", "tufted"))
 def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.9, 1.6), rng.uniform(0.35, 0.48), rng.uniform(0.42, 0.5)
@@ -134,12 +161,19 @@ def bed_bench(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(int(rng.integers(4, 8))):
             x = -w / 2 + w * (k + 0.5) / 7 if k < 7 else 0.0
             parts.append(make_part(f"button_{k}", "button", S.cylinder(0.01, 0.008, center=(x, 0, h + ch - 0.002), sections=8), cloth))
+    # the glued blocks in the seat frame's corners behind the aprons, and the piping round the
+    # cushion's top seam
+    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+        parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.04, 0.04, 0.05), center=(sx * (w / 2 - 0.045 - 0.02), sy * (d / 2 - 0.045 - 0.02),
+                                                                                                   h - st - 0.025)), wood))
+    parts.append(make_part("piping", "piping", [S.box((w - 0.02, 0.008, 0.008), center=(0, sy * (d / 2 - 0.014), h + ch - ch / 3)) for sy in (-1, 1)]
+                           + [S.box((0.008, d - 0.036, 0.008), center=(sx * (w / 2 - 0.014), 0, h + ch - ch / 3)) for sx in (-1, 1)], cloth))
     # brass ferrules capping the legs' feet
     return parts + leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), height=0.04)
 
 
 @register("backpack", parts=("body",), extra_parts=("front_pocket", "strap", "top_handle", "flap", "zipper", "pull", "side_pocket",
-                                                   "buckle", "back_panel", "sternum_strap"),
+                                                   "buckle", "back_panel", "sternum_strap", "hip_belt"),
           size_range=(0.3, 0.65), density=150, variants=("daypack", "rucksack", "school"), placement="floor")
 def backpack(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.28, 0.34), rng.uniform(0.14, 0.2), rng.uniform(0.38, 0.48)
@@ -173,10 +207,23 @@ def backpack(rng: np.random.Generator, variant: str) -> list[Part]:
                            black("fabric")))
     parts.append(make_part("sternum_strap", "sternum_strap", S.box((w * 0.5 * 1.0, 0.008, 0.02), center=(0, -d / 2 - 0.035, h * 0.62)),
                            black()))
+    # the sternum strap's clip, the ladder-lock adjuster low on each shoulder strap, and the
+    # front pocket's own zip and pull
+    nb = sum(p.label == "buckle" for p in parts)
+    parts.append(make_part(f"buckle_{nb}", "buckle", S.box((0.03, 0.01, 0.024), center=(0, -d / 2 - 0.04, h * 0.62)), black()))
+    parts += [make_part(f"buckle_{nb + 1 + k}", "buckle", S.box((0.034, 0.012, 0.02), center=(sx * w * 0.25 * 1.25, -d / 2 - 0.01, h * 0.14)),
+                        black()) for k, sx in enumerate((-1, 1))]
+    zy = d / 2 + 0.045
+    parts.append(make_part("zipper_1", "zipper", S.box((w * 0.6, 0.004, 0.01), center=(0, zy, h * 0.44)), black()))
+    parts.append(make_part("pull_2", "pull", S.box((0.01, 0.005, 0.03), center=(w * 0.28, zy, h * 0.44 - 0.02)), black()))
+    if variant == "rucksack":  # a padded hip belt round the bottom of the back panel
+        parts.append(make_part("hip_belt", "hip_belt", S.box((w * 0.95, 0.03, 0.08), center=(0, -d / 2 - 0.02, h * 0.12), bevel=0.01),
+                               black("fabric")))
     return parts
 
 
-@register("handbag", parts=("body", "handle"), extra_parts=("flap", "clasp", "strap", "foot", "ring", "zipper", "pull"),
+@register("handbag", parts=("body", "handle"), extra_parts=("flap", "clasp", "strap", "foot", "ring", "zipper", "pull", "buckle",
+                                                                             "clip"),
           size_range=(0.18, 0.45),
           density=200, variants=("tote", "satchel", "clutch"), placement="surface")
 def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -217,6 +264,15 @@ def handbag(rng: np.random.Generator, variant: str) -> list[Part]:
     else:  # the D-ring on the side the wrist strap is clipped to
         parts.append(make_part("ring", "ring", S.cylinder(0.008, 0.005, center=(w / 2 * 0.9, 0, h * 0.6), axis=(1, 0, 0), sections=10),
                                metal))
+    if variant == "satchel":  # the two buckled straps over the flap either side of the clasp
+        R = rot_x(0.12)
+        for k, sx in enumerate((-1, 1)):
+            c = np.array([sx * w * 0.25, d / 2 * 0.85 + 0.009, h * 0.75])
+            parts.append(make_part(f"strap_{k}", "strap", S.box((0.025, 0.003, h * 0.4), center=c, R=R), leather))
+            parts.append(make_part(f"buckle_{k}", "buckle", S.box((0.032, 0.005, 0.022), center=c + R @ np.array([0, 0.003, -h * 0.12]), R=R),
+                                   metal))
+    elif variant == "clutch":  # the clip on the wrist strap's end, hooked on the D-ring
+        parts.append(make_part("clip", "clip", S.box((0.006, 0.01, 0.022), center=(w / 2 * 0.9 + 0.004, 0, h * 0.6 - 0.014)), metal))
     if variant == "satchel":  # it stands on four metal feet, like a tote
         parts += [make_part(f"foot_{i}", "foot", S.cylinder(0.006, 0.004, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.02), -0.002),
                                                             sections=8), metal)

@@ -19,7 +19,7 @@ from ._household import ring
 from ._kit import hinge_parts, mount, revolute
 
 
-@register("toilet_paper", parts=("roll",), extra_parts=("core", "sheet"),
+@register("toilet_paper", parts=("roll",), extra_parts=("core", "sheet", "wrapper"),
           size_range=(0.09, 0.2), density=300, variants=("standard", "double", "flat_packed"),
           placement="surface")
 def toilet_paper(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -35,6 +35,9 @@ def toilet_paper(rng: np.random.Generator, variant: str) -> list[Part]:
                                                          (0.02, w / 2 - 0.001), (0.018, w / 2 - 0.001)],
                                                         sections=20), T), M.paper(rng))]
     out.append(make_part("sheet", "sheet", S.box((w * 0.98, 0.06, 0.001), center=(0, r + 0.03, 0.0005)), white_p))
+    if variant == "flat_packed":  # a hotel roll comes in its own paper band round the middle
+        band = ring([(r, -w * 0.2), (r + 0.0008, -w * 0.2), (r + 0.0008, w * 0.2), (r, w * 0.2)], sections=28)
+        out.append(make_part("wrapper", "wrapper", S.transformed(band, T), M.solid((0.85, 0.85, 0.8), "paper", 0.8)))
     return out
 
 
@@ -122,10 +125,12 @@ def paper_towel_roll(rng: np.random.Generator, variant: str) -> list[Part]:
     elif variant == "roll":
         out.append(make_part("sheet", "sheet", S.box((0.002, 0.06, h * 0.95), center=(r * 0.7, r + 0.03 - 0.03, h / 2),
                                                      ), white(rng, "paper")))
+    else:  # lying, its loose sheet unrolled flat in front of it
+        out.append(make_part("sheet", "sheet", S.box((h * 0.95, 0.08, 0.001), center=(0, r * 0.9 + 0.04, 0.0005)), white(rng, "paper")))
     return out
 
 
-@register("grab_bar", parts=("bar", "flange"), extra_parts=("screw_cover", "screw"),
+@register("grab_bar", parts=("bar", "flange"), extra_parts=("screw_cover", "screw", "grip"),
           size_range=(0.3, 0.95), density=3000, variants=("straight", "angled", "l_shaped"),
           placement="wall")
 def grab_bar(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -142,6 +147,11 @@ def grab_bar(rng: np.random.Generator, variant: str) -> list[Part]:
         path = [(-L / 2, y, 0.04), (L / 2, y, 0.04), (L / 2, y, 0.04 + L * 0.7)]
         ends = [(-L / 2, 0.04), (L / 2, 0.04 + L * 0.7)]
     out = [make_part("bar", "bar", S.tube(path, 0.016, sections=14), metal)]
+    # the knurled grip band round the middle of the first run, a hair proud of the tube
+    p0, p1 = np.asarray(path[0], float), np.asarray(path[1], float)
+    u = (p1 - p0) / np.linalg.norm(p1 - p0)
+    out.append(make_part("grip", "grip", S.cylinder(0.0168, float(np.linalg.norm(p1 - p0)) * 0.35, center=tuple((p0 + p1) / 2), axis=tuple(u),
+                                                    sections=14), metal))
     for k, (x, z) in enumerate(ends):
         out.append(make_part(f"flange_{k}", "flange", [S.cylinder(0.035, 0.008, center=(x, 0.004, z), axis=(0, 1, 0)),
                                                        S.cylinder(0.014, y - 0.008, center=(x, 0.008 + (y - 0.008) / 2, z),
@@ -233,13 +243,16 @@ def curtain_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial", "screw", "support"),
+@register("closet_rod", parts=("rod", "bracket"), extra_parts=("finial", "screw", "support", "end_cap"),
           size_range=(0.6, 2.5), density=2000, variants=("round", "oval", "wooden"),
           placement="wall")
 def closet_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     span = rng.uniform(0.6, 2.4)
     r = 0.016 if variant != "oval" else 0.013
     out = _rod(rng, label_rod="rod", span=span, y=0.3, z=0.03, r=r, variant_finials=False)
+    # the plastic caps closing the rod's two cut ends
+    out += [make_part(f"end_cap_{k}", "end_cap", S.cylinder(r + 0.001, 0.006, center=(sx * (span / 2 - 0.003), 0.3, 0.03), axis=(1, 0, 0),
+                                                            sections=12), M.solid((0.9, 0.9, 0.9), "plastic", 0.4)) for k, sx in enumerate((-1, 1))]
     if span > 1.2:  # a long rod sags without a centre support: a plate on the wall, an arm, a hook under the rod
         metal = out[0].material
         out.append(make_part("support", "support", [S.box((0.05, 0.006, 0.1), center=(0, 0.003, 0.06)),
@@ -249,7 +262,7 @@ def closet_rod(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("smoke_detector", parts=("base", "cover"), extra_parts=("light", "grille", "test_button", "vent"),
+@register("smoke_detector", parts=("base", "cover"), extra_parts=("light", "grille", "test_button", "vent", "hush_button"),
           size_range=(0.09, 0.16), density=600, variants=("round", "square", "combo"),
           placement="ceiling")
 def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -265,6 +278,13 @@ def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
            make_part("light", "light", S.cylinder(0.003, 0.004, center=(r * 0.35, 0, 0.002), sections=8),
                      M.solid((0.9, 0.1, 0.1), "plastic", 0.2)),
            make_part("test_button", "test_button", S.cylinder(0.01, 0.003, center=(0, 0, 0.0015)), mat)]
+    # the green power light beside the red alarm light, the hush button beside the test
+    # button, and the sounder's grille in the face
+    out.append(make_part("light_1", "light", S.cylinder(0.003, 0.004, center=(r * 0.35, 0.012, 0.002), sections=8),
+                         M.solid((0.1, 0.8, 0.2), "plastic", 0.2)))
+    out.append(make_part("hush_button", "hush_button", S.cylinder(0.007, 0.003, center=(-r * 0.4, 0, 0.0015), sections=10), mat))
+    out.append(make_part("grille", "grille", S.box((r * 0.5, 0.012, 0.002), center=(0, -r * 0.45, 0.001)),
+                         M.solid((0.25, 0.25, 0.27), "plastic", 0.6)))
     # the smoke enters through vents round the cover's side
     dark = M.solid((0.25, 0.25, 0.27), "plastic", 0.6)
     if variant == "square":
@@ -279,7 +299,7 @@ def smoke_detector(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("vent", parts=("frame", "louver"), extra_parts=("damper", "screw"),
+@register("vent", parts=("frame", "louver"), extra_parts=("damper", "screw", "lever"),
           size_range=(0.15, 0.65), density=2000, variants=("wall_grille", "ceiling_diffuser", "floor_register"),
           placement="wall")
 def vent(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -296,13 +316,15 @@ def vent(rng: np.random.Generator, variant: str) -> list[Part]:
                                                             center=(0, t * 0.6, z)), mat))
     out += studs("screw", "screw", [(sx * (w / 2 - f / 2), t + 0.0005, z) for z in (f / 2, h - f / 2) for sx in (-1, 1)],
                  r=0.0035, h=0.001, mat=mat, axis=(0, 1, 0))
+    if variant == "wall_grille":  # the damper's lever in a slot between two louvres
+        out.append(make_part("lever", "lever", S.box((0.012, 0.008, 0.01), center=(w / 2 - f - 0.03, t + 0.004, h / 2)), black("metal")))
     if variant == "floor_register":
         out.append(make_part("damper", "damper", S.box((0.03, 0.006, 0.015), center=(w / 2 - f - 0.03, t + 0.003, h / 2)),
                              black("metal")))
     return out
 
 
-@register("ceiling_light", parts=("canopy", "diffuser"), extra_parts=("trim", "bulb", "screw", "thumbscrew", "finial"),
+@register("ceiling_light", parts=("canopy", "diffuser"), extra_parts=("trim", "bulb", "screw", "thumbscrew", "finial", "socket"),
           size_range=(0.2, 0.65), density=800, variants=("dome", "flat_panel", "drum"),
           placement="ceiling")
 def ceiling_light(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -335,11 +357,20 @@ def ceiling_light(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                          sections=8), metal))
     if variant == "dome":
         out.append(make_part("finial", "finial", S.cylinder(0.01, 0.012, center=(0, 0, -0.004), sections=10), metal))
+    # the two bulbs in their sockets under the canopy, inside the glass
+    frosted = M.solid((0.98, 0.97, 0.92), "glass", 0.1)
+    for k, sx in enumerate((-1, 1)):
+        x = sx * r * 0.3
+        out.append(make_part(f"socket_{k}", "socket", S.cylinder(0.014, 0.025, center=(x, 0, h - 0.0125), sections=10),
+                             M.solid((0.9, 0.9, 0.88), "ceramic", 0.5)))
+        out.append(make_part(f"bulb_{k}", "bulb", S.ellipsoid((0.03, 0.03, 0.04), center=(x, 0, h - 0.025 - 0.04), subdivisions=1),
+                             frosted))
     return out
 
 
 @register("mailbox", parts=("body", "door"),
-          extra_parts=("flag", "post", "hinge", "slot", "lock", "handle", "name_plate", "flag_pivot", "bracket"),
+          extra_parts=("flag", "post", "hinge", "slot", "lock", "handle", "name_plate", "flag_pivot", "bracket", "flap", "window",
+                       "reflector", "latch"),
           size_range=(0.3, 1.35), density=900, variants=("wall", "post", "locker"),
           placement="wall")
 def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -367,6 +398,11 @@ def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                                     axis=(1, 0, 0), sections=10), metal))
         out += [make_part(f"bracket_{k}", "bracket", S.box((0.006, 0.08, 0.06), center=(sx * 0.048, 0, ph - 0.03)), metal)
                 for k, sx in enumerate((-1, 1))]
+        # the red reflector on the door, and the spring latch on the body's lip the door snaps onto
+        out.append(make_part("reflector", "reflector", S.cylinder(0.02, 0.003, center=(0, d / 2 + 0.0015, ph + h * 0.55), axis=(0, 1, 0),
+                                                                  sections=12), M.solid((0.85, 0.1, 0.1), "glass", 0.2)))
+        out.append(mount("door", "reflector"))
+        out.append(make_part("latch", "latch", S.box((0.02, 0.012, 0.008), center=(0, d / 2 - 0.016, ph + h * 0.6 + w / 2 - 0.004)), metal))
         return out
     w, d, h = rng.uniform(0.3, 0.4), rng.uniform(0.1, 0.14), rng.uniform(0.35, 0.45)
     out = [make_part("body", "body", S.box((w, d - 0.012, h), center=(0, (d - 0.012) / 2, h / 2)), metal),
@@ -384,11 +420,18 @@ def mailbox(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("handle", "handle", S.cylinder(0.009, 0.015, center=(w * 0.35, d + 0.0075, h * 0.35), axis=(0, 1, 0),
                                                         sections=10), metal))
     out.append(mount("door", "handle"))
+    # the hinged flap over the letter slot, and the row of viewing slots in the door that show
+    # when post is in
+    out.append(make_part("flap", "flap", S.box((w * 0.74, 0.004, 0.032), center=(0, d + 0.002 - 0.004, h * 0.88)), metal))
+    out += [make_part(f"window_{k}", "window", S.box((w * 0.08, 0.002, 0.012), center=(x, d + 0.001, h * 0.2)), black())
+            for k, x in enumerate(np.linspace(-w * 0.25, w * 0.05, 3))]
+    out += [mount("door", f"window_{k}") for k in range(3)]
     return out
 
 
 @register("sign", parts=("panel",),
-          extra_parts=("lettering", "frame", "standoff", "post", "base", "clamp", "pictogram", "arrow", "foot"),
+          extra_parts=("lettering", "frame", "standoff", "post", "base", "clamp", "pictogram", "arrow", "foot", "end_cap",
+                       "test_button", "indicator"),
           size_range=(0.15, 1.9), density=900, variants=("wall_plaque", "exit", "standing"),
           placement="wall")
 def sign(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -408,7 +451,9 @@ def sign(rng: np.random.Generator, variant: str) -> list[Part]:
                 *[make_part(f"clamp_{k}", "clamp", S.box((0.04, 0.02, 0.025), center=(0, 0.005, 0.03 + ph + z)), metal)
                   for k, z in enumerate((h * 0.15, h * 0.85))],
                 make_part("foot", "foot", ring([(0.15, 0.0), (0.182, 0.0), (0.182, 0.004), (0.15, 0.004)], sections=24),
-                          black("rubber"))]
+                          black("rubber")),
+                # the cap closing the post's top end, behind the panel
+                make_part("end_cap", "end_cap", S.cylinder(0.017, 0.01, center=(0, 0, 0.03 + ph + h * 0.95), sections=10), black())]
     w, h = (rng.uniform(0.2, 0.5), rng.uniform(0.1, 0.3)) if variant == "wall_plaque" else (0.36, 0.18)
     col = (0.1, 0.6, 0.2) if variant == "exit" else M.jitter(rng, (0.2, 0.3, 0.5), 0.1)[:3]
     out = [make_part("panel", "panel", S.box((w, 0.006, h), center=(0, 0.015, h / 2)), M.solid(col, "plastic", 0.4)),
@@ -426,6 +471,11 @@ def sign(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("pictogram", "pictogram", S.box((h * 0.3, 0.002, h * 0.5), center=(-w * 0.42, 0.019, h / 2)), white_))
         out.append(make_part("arrow", "arrow", S.prism([(0, 0.02), (0.03, 0), (0, -0.02)], 0, 0.002).apply(
             np.array([[1, 0, 0, w * 0.4], [0, 0, -1, 0.02], [0, 1, 0, h / 2], [0, 0, 0, 1.0]])), white_))
+        # the emergency battery's test button and charge light low on the panel's face
+        out.append(make_part("test_button", "test_button", S.cylinder(0.004, 0.003, center=(w * 0.3, 0.0195, h * 0.1), axis=(0, 1, 0),
+                                                                      sections=8), black()))
+        out.append(make_part("indicator", "indicator", S.cylinder(0.0025, 0.002, center=(w * 0.38, 0.019, h * 0.1), axis=(0, 1, 0),
+                                                                  sections=8), M.solid((0.1, 0.8, 0.2), "plastic", 0.2)))
     return out
 
 
@@ -475,9 +525,18 @@ def calendar(rng: np.random.Generator, variant: str) -> list[Part]:
                                 [-w / 2, -0.002, h], [w / 2, -0.002, h], [-w / 2, 0.001, h], [w / 2, 0.001, h]]))
         page = S.hull(np.array([[-w / 2, d / 2, 0], [w / 2, d / 2, 0], [-w / 2, d / 2 - 0.003, 0], [w / 2, d / 2 - 0.003, 0],
                                 [-w / 2, 0.002, h], [w / 2, 0.002, h], [-w / 2, 0.005, h], [w / 2, 0.005, h]]))
-        return [make_part("backing", "backing", back, M.paper(rng)), make_part("page", "page", page, white(rng, "paper")),
-                make_part("binding", "binding", S.cylinder(0.006, w, center=(0, 0.0015, h), axis=(1, 0, 0), sections=10),
-                          black("metal"))]
+        paper = white(rng, "paper")
+        out = [make_part("backing", "backing", back, M.paper(rng)), make_part("page", "page", page, paper),
+               make_part("binding", "binding", S.cylinder(0.006, w, center=(0, 0.0015, h), axis=(1, 0, 0), sections=10),
+                         black("metal"))]
+        # the other eleven months' pages under this month's, on the same rings
+        pt = 0.0002
+        for k in range(1, 12):
+            yb0, yb1 = d / 2 - 0.003 - pt * k, d / 2 - 0.003 - pt * (k - 1)
+            yt0, yt1 = 0.002 - pt * k, 0.002 - pt * (k - 1)
+            out.append(make_part(f"page_{k}", "page", S.hull(np.array([[sx * w / 2, y, 0.0] for sx in (-1, 1) for y in (yb0, yb1)]
+                                                                      + [[sx * w / 2, y, h] for sx in (-1, 1) for y in (yt0, yt1)])), paper))
+        return out
     w = rng.uniform(0.22, 0.32) if variant == "wall" else rng.uniform(0.4, 0.6)
     h = w * (1.4 if variant == "wall" else 1.0)
     # the twelve month pages under the binding, this month's in front; the month's picture on
@@ -505,7 +564,7 @@ def _board(rng, *, w: float, h: float, surface_mat, frame_mat, label: str) -> li
                                          S.box((f, t, h - 2 * f), center=(w / 2 - f / 2, t / 2, h / 2))], frame_mat)]
 
 
-@register("bulletin_board", parts=("board", "frame"), extra_parts=("pin", "note"),
+@register("bulletin_board", parts=("board", "frame"), extra_parts=("pin", "note", "screw"),
           size_range=(0.4, 1.85), density=400, variants=("cork", "fabric", "large"),
           placement="wall")
 def bulletin_board(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -521,10 +580,13 @@ def bulletin_board(rng: np.random.Generator, variant: str) -> list[Part]:
                              M.solid(M.jitter(rng, (0.95, 0.9, 0.5), 0.1)[:3], "paper", 0.9)))
         out.append(make_part(f"pin_{k}", "pin", S.cylinder(0.005, 0.008, center=(x, 0.016, z + 0.05), axis=(0, 1, 0),
                                                           sections=8), M.solid((0.9, 0.1, 0.1))))
+    # the four screws through the frame's corners into the wall
+    out += studs("screw", "screw", [(sx * (w / 2 - 0.01), 0.0185, z) for z in (0.01, h - 0.01) for sx in (-1, 1)], r=0.003, h=0.001,
+                 mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4), axis=(0, 1, 0))
     return out
 
 
-@register("blackboard", parts=("board", "frame"), extra_parts=("tray", "chalk", "eraser", "leg", "map_rail", "hook"),
+@register("blackboard", parts=("board", "frame"), extra_parts=("tray", "chalk", "eraser", "leg", "map_rail", "hook", "screw", "bracket"),
           size_range=(0.5, 3.1), density=700, variants=("wall", "classroom", "easel"),
           placement="wall")
 def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -555,6 +617,13 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("eraser", "eraser", [S.box((0.12, 0.045, 0.012), center=(-w * 0.25, 0.03, z0 + 0.0185), bevel=0.002),
                                               S.box((0.12, 0.045, 0.018), center=(-w * 0.25, 0.03, z0 + 0.0335), bevel=0.004)],
                          M.solid((0.55, 0.4, 0.25), "wood", 0.7)))
+    if z0:  # the tray's two brackets under it, and the hinge bracket joining the back leg
+        wood = out[2].material
+        out += [make_part(f"bracket_{k}", "bracket", S.box((0.02, 0.05, 0.04), center=(sx * w * 0.35, 0.025, z0 - 0.02)), wood)
+                for k, sx in enumerate((-1, 1))]
+    else:  # the four screws through the frame's corners into the wall
+        out += studs("screw", "screw", [(sx * (w / 2 - 0.01), t + 0.0005, z) for z in (0.01, h - 0.01) for sx in (-1, 1)], r=0.003,
+                     h=0.001, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4), axis=(0, 1, 0))
     if variant == "classroom":  # a map rail along the top with hooks for maps and charts
         out.append(make_part("map_rail", "map_rail", S.box((w, 0.025, 0.04), center=(0, 0.0125, h + 0.02)), out[1].material))
         out += [make_part(f"hook_{k}", "hook", S.box((0.01, 0.012, 0.03), center=(x, 0.031, h + 0.02)), M.metal(rng))
@@ -562,7 +631,7 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator"),
+@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "slot", "ground_hole", "screw"),
           size_range=(0.2, 0.56), density=900, variants=("four", "six", "surge"),
           placement="floor")
 def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -576,6 +645,12 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
         x = -L / 2 + 0.03 + pitch * (k + 0.5)
         out.append(make_part(f"socket_{k}", "socket", S.cylinder(0.016, 0.002, center=(x, 0, h + 0.001), sections=14),
                              M.solid((0.85, 0.85, 0.85))))
+        # each socket's two blade slots and round earth hole (dark, just proud of its face)
+        for j, sy in enumerate((-1, 1)):
+            out.append(make_part(f"slot_{2 * k + j}", "slot", S.box((0.009, 0.0025, 0.0008), center=(x + 0.003, sy * 0.0065, h + 0.0024)),
+                                 black()))
+        out.append(make_part(f"ground_hole_{k}", "ground_hole", S.cylinder(0.0025, 0.0008, center=(x - 0.009, 0, h + 0.0024), sections=8),
+                             black()))
     out.append(make_part("switch", "switch", S.box((0.02, 0.03, 0.008), center=(L / 2 - 0.018, 0, h + 0.004)),
                          M.solid((0.85, 0.1, 0.1))))
     out.append(make_part("cord", "cord", S.tube([(-L / 2 + 0.002, 0, h / 2), (-L / 2 - 0.05, 0.0, 0.005), (-L / 2 - 0.08, 0.04, 0.005)],
@@ -586,10 +661,13 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
                          mat))
     out.append(make_part("indicator", "indicator", S.cylinder(0.003, 0.002, center=(L / 2 - 0.018, -0.02, h + 0.001), sections=8),
                          M.solid((0.9, 0.2, 0.1), "plastic", 0.2)))
+    # the two screws closing the case from underneath, their heads sunk flush with its bottom
+    out += studs("screw", "screw", [(sx * L * 0.3, 0, 0.001) for sx in (-1, 1)], r=0.003, h=0.002, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4))
     return out
 
 
-@register("toilet_seat_cover_dispenser", parts=("housing", "slot"), extra_parts=("cover_stack", "window", "lock", "label", "flange"),
+@register("toilet_seat_cover_dispenser", parts=("housing", "slot"), extra_parts=("cover_stack", "window", "lock", "label", "flange",
+                                                                                  "hinge", "tab"),
           size_range=(0.3, 0.48), density=700, variants=("steel", "plastic", "recessed"),
           placement="wall")
 def toilet_seat_cover_dispenser(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -609,6 +687,11 @@ def toilet_seat_cover_dispenser(rng: np.random.Generator, variant: str) -> list[
                          M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     out.append(make_part("label", "label", S.box((w * 0.4, 0.001, 0.025), center=(0, d + 0.0005, h * 0.66)),
                          M.solid((0.2, 0.3, 0.6), "plastic", 0.5)))
+    # the front opens down on a piano hinge along its bottom edge to refill it; the first cover's
+    # tab hangs out of the slot for the next user
+    out.append(make_part("hinge", "hinge", S.cylinder(0.003, w * 0.8, center=(0, d + 0.001, 0.004), axis=(1, 0, 0), sections=8),
+                         M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+    out.append(make_part("tab", "tab", S.box((0.05, 0.001, 0.03), center=(0, d + 0.0065, h * 0.4 - 0.04)), white(rng, "paper")))
     if variant == "recessed":
         f = 0.015
         out.append(make_part("flange", "flange", [S.box((w + 2 * f, 0.003, f), center=(0, d - 0.0015, z)) for z in (-f / 2, h + f / 2)]

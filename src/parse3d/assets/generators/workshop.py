@@ -18,7 +18,7 @@ from ._kit import legs4, rot
 from ._rods import leg_caps
 
 
-@register("ladder", parts=("rail", "step"), extra_parts=("top_cap", "rear_leg", "spreader", "foot"),
+@register("ladder", parts=("rail", "step"), extra_parts=("top_cap", "rear_leg", "spreader", "foot", "end_cap", "rivet", "pail_shelf"),
           size_range=(0.9, 3.1), density=900, variants=("step", "straight", "library"))
 def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
     metal = M.metal(rng) if variant != "library" else M.wood(rng)
@@ -39,6 +39,9 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
             out.append(make_part(f"step_{i}", "step",
                                  S.cylinder(0.015, w - 0.05, center=(0, 0, z), axis=(1, 0, 0),
                                             sections=12), metal))
+        # the plastic caps closing the rails' top ends
+        out += [make_part(f"end_cap_{k}", "end_cap", S.box((0.027, 0.072, 0.02), center=(sx * (w / 2 - 0.0135), 0, h - 0.01)),
+                          M.solid((0.1, 0.1, 0.1), "plastic", 0.6)) for k, sx in enumerate((-1, 1))]
         return out
     # an A-frame: front rails with treads leaning back, rear legs leaning forward
     h = rng.uniform(0.95, 1.9) if variant == "step" else rng.uniform(0.9, 1.3)
@@ -55,11 +58,21 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"rear_leg_{k}", "rear_leg",
                              S.box((0.03, 0.03, length), R=tilt_b,
                                    center=(sx * (w / 2 - 0.015), -spread / 4, h / 2)), metal))
+    fast = M.solid((0.6, 0.6, 0.62), "metal", 0.35, 0.9) if variant != "library" else M.solid((0.75, 0.6, 0.3), "metal", 0.3, 0.9)
+    nr = 0
     for i in range(n):
         z = h * (i + 1) / (n + 1)
         y = spread / 2 * (1 - z / h)
         out.append(make_part(f"step_{i}", "step", S.box((w - 0.06, 0.09, 0.025), center=(0, y - 0.01, z)),
                              metal))
+        # two rivets (bolts on a wooden ladder) through each rail into the step's end, their
+        # heads on the rail's outer face
+        yr = y - 0.01
+        for sx in (-1, 1):
+            for dy in (-0.02, 0.02):
+                out.append(make_part(f"rivet_{nr}", "rivet", S.cylinder(0.005, 0.003, center=(sx * (w / 2 - 0.0015), yr + dy, z), axis=(1, 0, 0),
+                                                                        sections=8), fast))
+                nr += 1
     # non-slip rubber shoes sleeving the bottom of each rail and rear leg (set a hair up the
     # leg, so the ladder still stands on its legs' ends)
     rubber = M.solid((0.1, 0.1, 0.1), "rubber")
@@ -75,12 +88,16 @@ def ladder(rng: np.random.Generator, variant: str) -> list[Part]:
                                                      bevel=0.005), M.plastic(rng)))
     out.append(make_part("spreader", "spreader", S.box((0.02, spread * 0.55, 0.01),
                                                        center=(-w / 2 + 0.05, 0, h * 0.45)), metal))
+    # its twin on the right, locking the frames open from both sides
+    out.append(make_part("spreader_1", "spreader", S.box((0.02, spread * 0.55, 0.01), center=(w / 2 - 0.05, 0, h * 0.45)), metal))
+    if variant == "step":  # the fold-down pail shelf between the rear legs, below the top cap
+        out.append(make_part("pail_shelf", "pail_shelf", S.box((w - 0.08, 0.12, 0.012), center=(0, -0.08, h - 0.12)), M.plastic(rng)))
     return out
 
 
 @register("workbench", parts=("worktop", "leg"),
           extra_parts=("shelf", "drawer", "drawer_box", "handle", "vise", "back_panel", "stretcher", "vise_jaw",
-                       "vise_screw", "vise_handle", "screw", "leg_cap"),
+                       "vise_screw", "vise_handle", "screw", "leg_cap", "bolt"),
           size_range=(1.1, 2.1), density=650, variants=("plain", "drawers", "pegboard_back"))
 def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.2, 2.0), rng.uniform(0.6, 0.8), rng.uniform(0.86, 0.95)
@@ -126,6 +143,17 @@ def workbench(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         out.append(make_part("back_panel", "back_panel",
                              S.box((w, 0.012, ph), center=(0, -d / 2 + 0.006, h + ph / 2)),
                              M.solid(M.jitter(rng, (0.72, 0.58, 0.4), 0.03), "wood", 0.8)))
+    # the carriage bolts through each leg into the stretchers: the upper side rails' from the
+    # ends, the low shelf rails' from the front and back, heads domed on the legs' faces
+    xl, yl = w / 2 - 0.03 - leg / 2, d / 2 - 0.03 - leg / 2
+    nb = 0
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            out.append(make_part(f"bolt_{nb}", "bolt", S.cylinder(0.009, 0.004, center=(sx * (w / 2 - 0.03 + 0.002), sy * yl, h - t - 0.1),
+                                                                  axis=(1, 0, 0), sections=10), M.metal(rng)))
+            out.append(make_part(f"bolt_{nb + 1}", "bolt", S.cylinder(0.009, 0.004, center=(sx * xl, sy * (d / 2 - 0.03 + 0.002), zs - 0.035),
+                                                                      axis=(0, 1, 0), sections=10), M.metal(rng)))
+            nb += 2
     # rubber caps on the legs' feet
     return out + leg_caps(out, label="leg_cap", mat=M.solid((0.08, 0.08, 0.08), "rubber", 0.8))
 
@@ -146,7 +174,7 @@ def pegboard(rng: np.random.Generator, variant: str) -> list[Part]:
     out += studs("screw", "screw", [(sx * (w / 2 - 0.03), t + 0.0105, z) for z in (0.015, h - 0.015) for sx in (-1, 1)],
                  r=0.005, h=0.001, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8), axis=(0, 1, 0))
     steel = M.metal(rng)
-    n = int(rng.integers(3, 8))
+    n = int(rng.integers(5, 11))
     for k in range(n):
         x = -w / 2 + 0.06 + (w - 0.12) * rng.uniform()
         z = 0.1 + (h - 0.2) * rng.uniform()
@@ -167,7 +195,7 @@ def _grip(rng) -> M.Material:
                                   (0.1, 0.1, 0.1)][int(rng.integers(4))], 0.03), "rubber", 0.8)
 
 
-@register("hammer", parts=("head", "handle"), extra_parts=("grip", "claw", "face", "wedge", "end_cap"),
+@register("hammer", parts=("head", "handle"), extra_parts=("grip", "claw", "face", "wedge", "end_cap", "neck", "collar"),
           size_range=(0.24, 0.42), density=2500, variants=("claw", "ball_peen", "mallet"),
           placement="surface")
 def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -187,10 +215,18 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "mallet":
         out.append(make_part("head", "head", S.cylinder(0.03, 0.11, center=(x, 0, 0.03), axis=(0, 1, 0),
                                                         sections=16), M.solid((0.1, 0.1, 0.1), "rubber")))
+        # the two hard striking faces capping the rubber head, and the collar binding the handle
+        # where it enters the head
+        out += [make_part(f"face_{k}", "face", S.cylinder(0.028, 0.006, center=(x, sy * 0.052, 0.03), axis=(0, 1, 0), sections=16),
+                          M.solid((0.9, 0.9, 0.88), "plastic", 0.5)) for k, sy in enumerate((-1, 1))]
+        out.append(make_part("collar", "collar", S.cylinder(r * 1.25, 0.012, center=(x - 0.036, 0, hr), axis=(1, 0, 0), sections=12),
+                             steel))
         return out
     out.append(make_part("head", "head", S.box((0.03, 0.06, 0.03), center=(x, 0, hr)), steel))
-    out.append(make_part("face", "face", S.cylinder(0.014, 0.035, center=(x, 0.045, hr), axis=(0, 1, 0),
+    out.append(make_part("face", "face", S.cylinder(0.014, 0.008, center=(x, 0.058, hr), axis=(0, 1, 0),
                                                     sections=14), steel))
+    # the round neck between the head's cheeks and its striking face
+    out.append(make_part("neck", "neck", S.cylinder(0.0125, 0.027, center=(x, 0.0405, hr), axis=(0, 1, 0), sections=14), steel))
     # the wedge driven into the handle's end across the head's eye
     out.append(make_part("wedge", "wedge", S.box((0.0015, 0.02, 0.006), center=(x + 0.0155, 0, hr)), M.solid((0.55, 0.55, 0.58),
                                                                                                           "metal", 0.4, 0.8)))
@@ -203,7 +239,7 @@ def hammer(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("screwdriver", parts=("handle", "shaft"), extra_parts=("tip", "grip", "ferrule", "end_cap"),
+@register("screwdriver", parts=("handle", "shaft"), extra_parts=("tip", "grip", "ferrule", "end_cap", "bolster", "hang_hole"),
           size_range=(0.08, 0.36), density=2000, variants=("flat", "phillips", "stubby"),
           placement="surface")
 def screwdriver(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -228,10 +264,16 @@ def screwdriver(rng: np.random.Generator, variant: str) -> list[Part]:
                          steel))
     out.append(make_part("end_cap", "end_cap", S.cylinder(r * 0.7, 0.004, center=(x0 - 0.002, 0, r), axis=(1, 0, 0), sections=10),
                          M.solid((0.1, 0.1, 0.1), "rubber")))
+    # the hex bolster forged on the shaft (a spanner turns it for more torque) and the hole
+    # through the handle's end to hang it by
+    out.append(make_part("bolster", "bolster", S.cylinder(0.0055, 0.008, center=(x0 + hl + 0.009, 0, r), axis=(1, 0, 0), sections=6),
+                         steel))
+    out.append(make_part("hang_hole", "hang_hole", S.cylinder(0.0025, 2 * r * 0.92, center=(x0 + hl * 0.1, 0, r), axis=(0, 1, 0),
+                                                              sections=8), M.solid((0.05, 0.05, 0.05), "plastic", 0.8)))
     return out
 
 
-@register("wrench", parts=("handle", "jaw"), extra_parts=("ring", "adjuster", "lower_jaw", "pin", "hang_hole"),
+@register("wrench", parts=("handle", "jaw"), extra_parts=("ring", "adjuster", "lower_jaw", "pin", "hang_hole", "neck"),
           size_range=(0.12, 0.36), density=7800, variants=("combination", "adjustable", "open_end"),
           placement="surface")
 def wrench(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -248,6 +290,9 @@ def wrench(rng: np.random.Generator, variant: str) -> list[Part]:
                                         for sy in (-1, 1)] + [S.box((0.008 * s, 0.033 * s, t),
                                                                     center=(xh + 0.004 * s, 0, t / 2))],
                      steel))
+    # the necks where the shank flares into each head
+    out += [make_part(f"neck_{k}", "neck", S.box((0.008 * s, 0.018 * s, t), center=(sx * (xh - 0.004 * s - 0.008 * s), 0, t / 2)), steel)
+            for k, sx in enumerate((1, -1) if variant != "adjustable" else (1,))]
     if variant == "combination":
         out.append(make_part("ring", "ring", S.cylinder(jw * 0.7, t, center=(-xh - jw * 0.3, 0, t / 2),
                                                         sections=12), steel))

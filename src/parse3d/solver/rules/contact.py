@@ -8,13 +8,13 @@ from __future__ import annotations
 import numpy as np
 from shapely.geometry.base import BaseGeometry
 
-from ...assets.model import Asset, Part
+from ...assets.model import Asset
 from ...measure.checks import EPS
 from ...measure.reach import STAND, stands_to_lean
 from ...pag.model import Edge
-from ...pag.refs import Ref
 from ...relations import PART, SURFACES
 from ..config import Fail
+from ..flush import excess, flush_reason, over_tolerance, touching_parts
 from ..geometry import asset_geometry, part_points
 from ..state import SolveState
 from .base import (
@@ -43,15 +43,10 @@ class ContactRule(RelationRule):
 @register
 class Against(ContactRule):
     """The named child surface faces the parent surface, its part's extreme point ``gap``
-    from it; the named part must be the child's extreme along that normal."""
+    from it; no other part may reach further than that gap (an instance whose other part
+    does is placed flush by that part, the relation relaxed: :mod:`parse3d.solver.flush`)."""
 
     names = ("AGAINST",)
-
-    def part_needs(self, e: Edge, ref: Ref, role: str, text: str) -> list[tuple]:
-        # a child part reaches furthest along its surface normal (else another part touches)
-        if role == "child":
-            return [(ref.part, ref.index, text, f"extreme:{ref.surface or e.spec.child_surface}")]
-        return []
 
     def rotate(self, st: SolveState, asset: Asset, o: Orientation, e: Edge) -> None:
         turn_to_face(st, o, e, contact_normal(e.child, e.spec.child_surface), -1.0)
@@ -60,11 +55,14 @@ class Against(ContactRule):
         sB, g, parts, pts, base = touching_frame(ctx, e)
         nB = sB.normal
         label = e.child.surface or e.spec.child_surface
-        # contact: the named part's extreme point along its (rotated) surface normal
+        # contact: the extreme point along its (rotated) surface normal of the named part
+        # with the pads ending it (a fridge's vent grille on its back touches for the back)
         nA_w = ctx.R @ np.array(SURFACES[label])
+        if e.child.part is not None:
+            pts = (part_points(touching_parts(ctx.asset, e)) * ctx.scale) @ ctx.R.T
         pa = pts[int(np.argmax(pts @ nA_w))]
         gap = e.param("gap") + EPS
-        check_extreme(ctx, e, parts, nA_w, label)
+        check_extreme(ctx, e)
         c = float(sB.origin @ nB) + gap - float((base + pa) @ nB)
         return clip_to_line(ctx, e, region, g, c)
 
@@ -102,23 +100,10 @@ class LeaningAgainst(ContactRule):
         return clip_to_line(ctx, e, region, -g, c)
 
 
-def check_extreme(ctx: RegionContext, e: Edge, parts: list[Part], n: np.ndarray,
-                  label: str) -> None:
+def check_extreme(ctx: RegionContext, e: Edge) -> None:
     """Fail when another part of the child reaches further along the contact normal than the
-    named part: the named part could never touch (a sofa's frame behind its back cushion)."""
-    if e.child.part is None:
+    named part by more than the gap written: it would enter the parent while the named part
+    keeps its gap (the placement goes flush by that part first: :mod:`parse3d.solver.flush`)."""
+    if e.child.part is None or not over_tolerance(excess(ctx.asset, e, ctx.scale)):
         return
-    R, scale = ctx.R, ctx.scale
-    mine = float(np.max((part_points(parts) * scale) @ R.T @ n))
-    worst, who = 0.0, None
-    for p in ctx.asset.parts:
-        if p in parts:
-            continue
-        r = float(np.max((part_points([p]) * scale) @ R.T @ n)) - mine
-        if r > worst:
-            worst, who = r, p
-    if who is not None and worst > 2e-3:
-        raise Fail(f"{e.relation} {e.child} -> {e.parent}: {e.child.object}:{who.label} reaches "
-                   f"{worst:.2f} m further {label} than {e.child.part} in this "
-                   f"{ctx.asset.category} asset: name {e.child.object}:{who.label}@{label} or "
-                   f"{e.child.object}@{label}", intrinsic=True)
+    raise Fail(flush_reason(ctx.asset, e, ctx.scale), intrinsic=True)
