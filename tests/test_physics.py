@@ -226,6 +226,50 @@ def test_an_unsupported_object_is_flagged():
     assert "floor" in {b for (_, b) in touching(extract_contacts(sc), "mug", "room")}
 
 
+def test_a_fallen_object_leaves_the_simulation_once_it_has_landed():
+    sc = desk_scene()
+    (cx, cy), ztop = top_of(sc, "desk", "tabletop")
+    put(sc, "mug", "mug", 2, xy=(cx, cy), z=ztop, lift=0.003, support="desk:tabletop@top")
+    put(sc, "bowl", "bowl", 1, xy=(0.5, 0.5), z=0.8, support="desk:tabletop@top")
+    report = settle(sc)
+    assert sc.meta["settle"]["dropped_out"] == ["bowl"]
+    assert {"fell", "left_support"} <= set(report.objects["bowl"].flags)
+    # it left where it landed, on the floor, not in the air
+    assert sc.objects["bowl"].settled_position[2] < 0.05
+    assert "floor" in {b for (_, b) in touching(extract_contacts(sc), "bowl", "room")}
+    # the rest settled as before and the run stopped once it slept
+    assert report.early_exit and not report.objects["mug"].flags
+    off = settle(sc, config=SettleConfig(drop_out=0.0))
+    assert sc.meta["settle"]["dropped_out"] == [] and "fell" in off.objects["bowl"].flags
+
+
+def test_objects_of_many_pieces_make_contacts_only_when_near():
+    """A vessel of many wall pieces (a saucer) gets the settling's small contact offset; a
+    book of four pieces keeps PhysX's default."""
+    sc = desk_scene()
+    (cx, cy), ztop = top_of(sc, "desk", "tabletop")
+    put(sc, "saucer", "saucer", 0, xy=(cx, cy), z=ztop, support="desk:tabletop@top")
+    put(sc, "book", "book", 0, xy=(cx - 0.3, cy), z=ztop, R=rot_x(np.pi / 2),
+        support="desk:tabletop@top")
+    cfg = SettleConfig()
+    assert len(asset_collision(sc.objects["saucer"].asset).pieces) >= cfg.many_pieces
+    assert len(asset_collision(sc.objects["book"].asset).pieces) < cfg.many_pieces
+    world = build_world(sc, timestep=cfg.dt, linear_damping=cfg.linear_damping,
+                        angular_damping=cfg.angular_damping,
+                        max_depenetration_velocity=cfg.max_depenetration_velocity,
+                        sleep_threshold=cfg.sleep_threshold,
+                        solver_position_iterations=cfg.solver_position_iterations,
+                        solver_velocity_iterations=cfg.solver_velocity_iterations,
+                        many_pieces=(cfg.many_pieces, cfg.many_pieces_offset))
+    offsets = {}
+    for sh in world.shapes:
+        offsets.setdefault(world.owner(sh)[0], set()).add(round(sh.get_contact_offset(), 4))
+    assert offsets["saucer"] == {0.003}
+    assert offsets["book"] == {0.01}
+    report = settle(sc)
+    assert not report.objects["saucer"].flags and not report.objects["book"].flags
+
+
 # ------------------------------------------------------------ a furnished corner
 
 

@@ -138,7 +138,8 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
                 max_depenetration_velocity: float, sleep_threshold: float,
                 solver_position_iterations: int, solver_velocity_iterations: int,
                 settled: bool = False, origin: np.ndarray | None = None,
-                free_joints: bool = False) -> PhysxWorld:
+                free_joints: bool = False, contact_offset: float = 0.01,
+                many_pieces: tuple[int, float] | None = None) -> PhysxWorld:
     """Build the PhysX (CPU) world of ``scene``.
 
     Parameters
@@ -163,6 +164,15 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
         Simulate objects whose assets have joints as articulations (doors swing, drawers
         slide; :mod:`parse3d.physics.articulation`) instead of one rigid body each; they are
         listed in :attr:`PhysxWorld.articulations`, not in ``bodies``.
+    contact_offset : float
+        Metres: shapes closer than this get contacts (PhysX's default 0.01; a pair of shapes
+        gets contacts within the sum of their offsets).
+    many_pieces : (int, float), optional
+        ``(n, offset)``: the shapes of an object of at least ``n`` convex pieces get this
+        contact offset instead. Nested dishes and stacked saucers (vessels of fifty to a
+        hundred wall pieces) lie within 2 cm of each other over their whole area, and every
+        pair of their pieces then makes contacts each step; settling passes a smaller offset
+        for them (:class:`~parse3d.physics.settle.SettleConfig`).
 
     Returns
     -------
@@ -173,6 +183,7 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
     # SAPIEN reads its scene configuration when the system is created; cpu_workers=0 runs
     # PhysX on the calling thread, which keeps runs deterministic and one core per scene.
     physx.set_scene_config(gravity=np.array([0.0, 0.0, -9.81], np.float32), cpu_workers=0)
+    physx.set_shape_config(contact_offset=float(contact_offset), rest_offset=0.0)
     system = physx.PhysxCpuSystem()
     world = PhysxWorld(sapien.Scene(systems=[system]), system)
     o = np.zeros(3) if origin is None else np.asarray(origin, np.float64).reshape(3)
@@ -215,6 +226,9 @@ def build_world(scene: Scene, *, timestep: float, linear_damping: float, angular
         data = asset_collision(obj.asset)
         shapes = _shapes(physx, data.pieces, [material(m) for m in data.materials], obj.scale,
                          data.density)
+        if many_pieces is not None and len(shapes) >= many_pieces[0]:
+            for sh in shapes:
+                sh.set_contact_offset(float(many_pieces[1]))
         body = physx.PhysxRigidDynamicComponent()
         for sh, part in zip(shapes, data.pieces.parts, strict=True):
             body.attach(sh)
