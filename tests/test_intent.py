@@ -217,3 +217,29 @@ def test_notebooks_written_on_their_cover_lie_on_it(seed):
         assert abs(T[2, 1]) > 0.95, (oid, T[:3, 1])
     for pen, pad in (("pen1", "pad1"), ("pen2", "pad2")):
         assert scene.objects[pen].position[2] > scene.objects[pad].position[2]
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_books_written_on_one_another_lie_in_a_stack(seed):
+    """Books written ON one another with no part named lie on their back covers, each on the
+    one below, and glasses ON the top one rest on it; books ON a bookcase's shelf with no
+    stack stand as modelled. Every relation holds after settling."""
+    from test_rooms import solved
+
+    scene = solved("books_stacked_on_a_table", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    z = []
+    for oid in ("book1", "book2", "book3"):
+        o = scene.objects[oid]
+        assert o.rests_on == "back", (oid, o.rests_on)
+        T = o.transform(True)
+        assert abs(T[2, 1]) > 0.95, (oid, T[:3, 1])  # lying: its thin axis vertical
+        z.append(float(o.world_bounds()[1, 2]))
+    assert z == sorted(z)
+    assert scene.objects["glasses"].position[2] > z[-1] - 0.01
+    for oid in ("book4", "book5"):
+        o = scene.objects[oid]
+        assert o.rests_on is None and abs(o.transform(True)[2, 2]) > 0.95, oid  # standing

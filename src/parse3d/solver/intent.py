@@ -28,7 +28,7 @@ from ..relations import SURFACES
 from .geometry import part_points
 
 __all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
-           "beside", "lies_on_cover"]
+           "beside", "lies_on_cover", "lies_in_stack"]
 
 #: Support relations whose named child part is placed by the whole object when another part
 #: of the instance reaches further toward the support.
@@ -193,6 +193,35 @@ def lies_on_cover(edge: Edge, asset: Asset) -> Edge | None:
 
     return replace(edge, child=replace(c, surface=side,
                                        text=format_ref(c.object, c.part, c.index, side)))
+
+
+#: The outer panel a flat object modelled standing lies on in a stack.
+STACK_PANEL = "back_cover"
+
+
+def lies_in_stack(edge: Edge, asset: Asset, parent: Asset | None, above: list[str],
+                  category: str) -> Edge | None:
+    """The support edge by which a flat object modelled standing (a book, a notebook, a
+    magazine) lies on its back cover in a stack, when written ``ON`` with no part of its own:
+    on another such object (``ON book2 -> book1``), or with another of its category written
+    ``ON`` it (the bottom book of a stack on a side table). ``parent`` is the placed parent's
+    asset (None for the room or an unplaced one), ``above`` the categories written ``ON`` the
+    object. A person writing a stack of books means them lying, not each standing on the
+    top edge of the one below; None for anything else (the edge as written)."""
+    c = edge.child
+    if edge.relation != "ON" or c.part is not None or not asset.parts_by_label(STACK_PANEL):
+        return None
+    from ..pag.refs import format_ref
+
+    lying = replace(edge, child=replace(c, part=STACK_PANEL, index=None, surface="bottom",
+                                        text=format_ref(c.object, STACK_PANEL, None, "bottom")))
+    cover = lies_on_cover(lying, asset)
+    if cover is None:
+        return None
+    on_like = parent is not None and lies_on_cover(lying, parent) is not None
+    if not on_like and category not in above:
+        return None
+    return cover
 
 
 def asset_bounds(asset: Asset) -> np.ndarray:

@@ -33,7 +33,15 @@ from .fit import instance_for
 from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
-from .intent import beside, lies_on_cover, loose_reason, names_part, overhang, whole_object
+from .intent import (
+    beside,
+    lies_in_stack,
+    lies_on_cover,
+    loose_reason,
+    names_part,
+    overhang,
+    whole_object,
+)
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
@@ -166,7 +174,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             intrinsic.append(False)
             continue
         hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
-            or lies_on_cover(support_edge, asset)  # a notebook ON its cover lies on it
+            or lies_on_cover(support_edge, asset) \
+            or _in_stack(st, support_edge, asset, category)  # a notebook ON its cover lies on it
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale,
                          SURFACE_AXES[hang.child.surface] if hang is not None else 2)
@@ -210,6 +219,18 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             full[0] = None  # measured on the edge as written afterwards
         return Placement(obj, body, full, loose, {i: why for i, (_, why) in flushed.items()})
     raise Fail(_summarise(reasons, node), intrinsic=bool(intrinsic) and all(intrinsic))
+
+
+def _in_stack(st: SolveState, edge: Edge, asset: Asset, category: str) -> Edge | None:
+    """``lies_in_stack`` for ``edge``: a book written ON a book, or under one, lies on its
+    cover (intent.py)."""
+    if edge.relation != "ON" or edge.child.part is not None:
+        return None
+    parent = st.scene.objects.get(edge.parent.object)
+    above = [c for e in st.pag.relations if e.relation == "ON" and e.parent.object == edge.child.object
+             for c in st.pag.objects[e.child.object].candidates]
+    return lies_in_stack(edge, asset, parent.asset if parent is not None and parent.placed
+                         else None, above, category)
 
 
 def _full_checks(edges: list[Edge], skip: frozenset[int], checks: list[tuple]) -> list[tuple]:
