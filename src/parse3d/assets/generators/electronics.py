@@ -16,6 +16,7 @@ from ...geometry.frames import rot_x, rot_z
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._detail_b import studs
 
 
 def _screen_glass() -> Material:
@@ -171,7 +172,7 @@ def laptop(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("keyboard", parts=("body", "keys"), extra_parts=(), size_range=(0.28, 0.48), density=600,
+@register("keyboard", parts=("body", "keys"), extra_parts=("foot", "bumper"), size_range=(0.28, 0.48), density=600,
           variants=("full", "tenkeyless", "compact"), placement="surface")
 def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
     w = {"full": rng.uniform(0.43, 0.46), "tenkeyless": rng.uniform(0.35, 0.37),
@@ -217,6 +218,12 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
         rows += blocks
     if rows:  # navigation and number blocks, one part per row
         parts += [make_part(f"key_block_{i}", "keys", b, key_mat) for i, b in enumerate(rows)]
+    # underneath: the two flip-out feet at the back and the rubber pads at the front, folded
+    # flush into the bottom
+    parts += [make_part(f"foot_{k}", "foot", S.box((0.03, 0.012, 0.002), center=(sx * (w / 2 - 0.035), -d / 2 + 0.015, 0.001)),
+                        key_mat) for k, sx in enumerate((-1, 1))]
+    parts += studs("bumper", "bumper", [(sx * (w / 2 - 0.03), d / 2 - 0.012, 0.001) for sx in (-1, 1)], r=0.005, h=0.002,
+                   mat=M.solid((0.1, 0.1, 0.1), "rubber", 0.8))
     return parts
 
 
@@ -309,7 +316,7 @@ def _rounded_slab(length: float, width: float, height: float, r: float, b: float
     return S.hull(np.concatenate(pts))
 
 
-@register("remote_control", parts=("body",), extra_parts=("button",), size_range=(0.1, 0.25),
+@register("remote_control", parts=("body",), extra_parts=("button", "ir_window", "battery_cover"), size_range=(0.1, 0.25),
           density=700, variants=("tv", "slim"), placement="surface")
 def remote_control(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "tv":
@@ -335,5 +342,17 @@ def remote_control(rng: np.random.Generator, variant: str) -> list[Part]:
         for i in range(4):
             for j in range(3):
                 keys.append(button(0.0038, (j - 1) * W * 0.28, dpad_y - W * 0.95 - i * 0.014))
+    if variant == "tv":  # the four colour keys between the power button and the d-pad
+        parts += [make_part(f"colour_button_{j}", "button", S.box((W * 0.14, 0.003, 0.0025), center=((j - 1.5) * W * 0.2, L / 2 - 0.026,
+                                                                                                   H + 0.00075)),
+                            M.solid(c, "plastic", 0.5))
+                  for j, c in enumerate(((0.8, 0.15, 0.12), (0.15, 0.6, 0.2), (0.9, 0.8, 0.15), (0.15, 0.3, 0.8)))]
+    else:  # home, back, play and mute under the d-pad's pair
+        keys += [button(0.0038, x, dpad_y - W * 0.45 - 0.012 * (i + 1)) for i in range(2) for x in (-W * 0.25, W * 0.25)]
     parts += [make_part(f"button_{k}", "button", key, btn) for k, key in enumerate(keys)]
+    # the infrared window at the pointing end and the battery cover in the back, both flush
+    parts.append(make_part("ir_window", "ir_window", S.box((W * 0.3, 0.003, H * 0.3), center=(0, L / 2 - 0.0025, H * 0.5)),
+                           M.solid((0.15, 0.02, 0.02), "glass", 0.2)))
+    parts.append(make_part("battery_cover", "battery_cover", S.box((W * 0.7, L * 0.35, 0.0008), center=(0, -L * 0.25, 0.0004)),
+                           parts[0].material))
     return parts
