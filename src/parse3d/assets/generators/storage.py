@@ -61,6 +61,33 @@ def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0, 
     return out
 
 
+def _glides(xs, ys) -> list[Part]:
+    """A levelling glide under each corner (at every x of ``xs`` and y of ``ys``): a plastic foot
+    pressed into the bottom edge, flush with it (the cabinet stands on its glides)."""
+    grey = M.solid((0.25, 0.25, 0.26), "plastic", 0.6)
+    return [make_part(f"glide_{k}", "glide", S.cylinder(0.007, 0.003, center=(x, y, 0.0015), sections=10), grey)
+            for k, (x, y) in enumerate((x, y) for x in xs for y in ys)]
+
+
+def _cams(zs, *, iw: float, ys, start: int = 0) -> list[Part]:
+    """The cam locks that draw a fixed panel to the sides: a metal disc let flush into the panel's
+    underside (at height ``zs``) near each side, at every y of ``ys``."""
+    zinc = M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)
+    out = []
+    for z in zs:
+        for y in ys:
+            for sx in (-1, 1):
+                out.append(make_part(f"cam_lock_{start + len(out)}", "cam_lock",
+                                     S.cylinder(0.0075, 0.001, center=(sx * (iw / 2 - 0.012), y, z + 0.0005), sections=10), zinc))
+    return out
+
+
+def _wall_strap(*, z: float, y: float) -> Part:
+    """The anti-tip bracket screwed to the top of the back, which ties a tall case to the wall."""
+    return make_part("wall_strap", "wall_strap", S.box((0.04, 0.002, 0.03), center=(0, y + 0.001, z)),
+                     M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9))
+
+
 def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: int, mat, hmat,
               style: str, glass=None, start: int = 0, gap: float = 0.003,
               parents: tuple[str, str] = ("body", "body")) -> list[Part | Joint]:
@@ -79,7 +106,8 @@ def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: 
 
 
 @register("bookcase", parts=("shelf", "side_panel", "back_panel"),
-          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin"), size_range=(0.9, 2.3),
+          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin", "glide", "cam_lock", "wall_strap"),
+          size_range=(0.9, 2.3),
           density=550, variants=("open", "doored", "glass_doored"))
 def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
@@ -106,6 +134,11 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     levels = plinth + t + shelf_heights(0.0, inner, n)
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t, mat=mat)
     parts += _pins(levels[1:], iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t)
+    # glides under the side panels; cam locks under the fixed bottom shelf and the top; the
+    # wall strap on the back's top edge (the back ends under the top panel)
+    parts += _glides((-w / 2 + t / 2, w / 2 - t / 2), (-d / 2 + 0.03, d / 2 - 0.03))
+    parts += _cams((levels[0] - t, h - t), iw=w - 2 * t, ys=(-d / 2 + bt + 0.04, d / 2 - 0.04))
+    parts.append(_wall_strap(z=h_side - 0.02, y=-d / 2 + bt))
     if variant == "doored":
         k = max(1, n // 2)
         z_top = plinth + k * inner / n + t
@@ -119,7 +152,7 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("storage_cabinet", parts=("body", "door", "shelf"),
-          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin"),
+          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin", "glide", "cam_lock", "wall_strap"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
 def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
@@ -148,6 +181,10 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
     levels = plinth + t + shelf_heights(0.0, inner, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t, mat=mat)
     parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t)
+    # glides under the plinth's corners, cam locks under the top, the wall strap at the back
+    parts += _glides((-w / 2 + t + 0.02, w / 2 - t - 0.02), (-d / 2 + 0.03, d / 2 - 0.06))
+    parts += _cams((h - t,), iw=w - 2 * t, ys=(-d / 2 + 0.05, d / 2 - 0.05))
+    parts.append(_wall_strap(z=h - t - 0.02, y=-d / 2 + 0.008))
     return parts
 
 
