@@ -17,6 +17,9 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_heights
+from ._dB_case import cams as _cams
+from ._dB_case import glides as _glides
+from ._dB_case import wall_strap as _wall_strap
 from ._rods import leg_caps
 
 
@@ -59,33 +62,6 @@ def _pins(levels, *, iw: float, y0: float, y1: float, t: float, start: int = 0, 
                                                 sections=8), pin))
                 k += 1
     return out
-
-
-def _glides(xs, ys) -> list[Part]:
-    """A levelling glide under each corner (at every x of ``xs`` and y of ``ys``): a plastic foot
-    pressed into the bottom edge, flush with it (the cabinet stands on its glides)."""
-    grey = M.solid((0.25, 0.25, 0.26), "plastic", 0.6)
-    return [make_part(f"glide_{k}", "glide", S.cylinder(0.007, 0.003, center=(x, y, 0.0015), sections=10), grey)
-            for k, (x, y) in enumerate((x, y) for x in xs for y in ys)]
-
-
-def _cams(zs, *, iw: float, ys, start: int = 0) -> list[Part]:
-    """The cam locks that draw a fixed panel to the sides: a metal disc let flush into the panel's
-    underside (at height ``zs``) near each side, at every y of ``ys``."""
-    zinc = M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)
-    out = []
-    for z in zs:
-        for y in ys:
-            for sx in (-1, 1):
-                out.append(make_part(f"cam_lock_{start + len(out)}", "cam_lock",
-                                     S.cylinder(0.0075, 0.001, center=(sx * (iw / 2 - 0.012), y, z + 0.0005), sections=10), zinc))
-    return out
-
-
-def _wall_strap(*, z: float, y: float) -> Part:
-    """The anti-tip bracket screwed to the top of the back, which ties a tall case to the wall."""
-    return make_part("wall_strap", "wall_strap", S.box((0.04, 0.002, 0.03), center=(0, y + 0.001, z)),
-                     M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9))
 
 
 def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: int, mat, hmat,
