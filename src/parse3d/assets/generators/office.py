@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import bar_pull, black, white
+from ._dB_case import glides
 from ._kit import DRAWER_TRAVEL, feet4, mount, prismatic, rot
 
 
@@ -237,14 +238,21 @@ def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
                   handle_mat),
         make_part(f"{name}_label", "label_holder", S.box((0.08, 0.004, 0.04), center=(cx, y_front + 0.002, cz + h * 0.33)),
                   handle_mat),
+        # the paper card in the holder, and the steel slide rail along each side of the box
+        make_part(f"{name}_label_card", "label_card", S.box((0.07, 0.001, 0.03), center=(cx, y_front + 0.0025, cz + h * 0.33)),
+                  M.solid((0.97, 0.96, 0.9), "paper", 0.8)),
+        *[make_part(f"{name}_rail_{i}", "slide_rail", S.box((0.0018, depth * 0.9, min(0.03, bh * 0.5)),
+                                                            center=(cx + sx * (bw / 2 + 0.001), yb - depth * 0.5, z0 + 0.01 + bh * 0.5)),
+                    M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)) for i, sx in enumerate((-1, 1))],
         prismatic(f"{name}_slide", parent, f"{name}_box", travel=DRAWER_TRAVEL * depth),
         mount(f"{name}_box", name), mount(name, f"{name}_handle"), mount(name, f"{name}_label"),
+        mount(f"{name}_label", f"{name}_label_card"), mount(f"{name}_box", f"{name}_rail_0"), mount(f"{name}_box", f"{name}_rail_1"),
     ]
     return out
 
 
 @register("filing_cabinet", parts=("body", "drawer"), extra_parts=("drawer_box", "handle", "label_holder", "top_panel",
-                                                                    "caster"),
+                                                                    "caster", "label_card", "slide_rail", "lock", "glide"),
           size_range=(0.45, 1.45), density=400, variants=("vertical", "lateral", "mobile_pedestal"))
 def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "vertical":
@@ -279,4 +287,11 @@ def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]
     for k in range(n):
         parts += _file_drawer(f"drawer_{k}", x0=-w / 2 + 0.003, x1=w / 2 - 0.003, z0=zs[k] + 0.002, z1=zs[k + 1] - 0.002,
                               y_front=yf, depth=db - 0.06, mat=steel, handle_mat=hmat, parent="body")
+    # the key lock in the top drawer's front corner, which locks every drawer
+    top = f"drawer_{n - 1}"
+    parts.append(make_part("lock", "lock", S.cylinder(0.009, 0.006, center=(w / 2 - 0.04, yf + 0.003, zs[n] - 0.03), axis=(0, 1, 0),
+                                                      sections=12), hmat))
+    parts.append(mount(top, "lock"))
+    if variant != "mobile_pedestal":  # levelling glides under the base's corners
+        parts += glides((-w / 2 + 0.03, w / 2 - 0.03), (-d / 2 + 0.04, d / 2 - 0.06))
     return parts
