@@ -165,7 +165,8 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
 
 
 @register("tv_stand", parts=("top_panel", "body"),
-          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin", "ferrule"),
+          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin", "ferrule",
+                       "glide"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
 def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
@@ -218,6 +219,8 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                                      axis=(0, 1, 0), sections=12), black()))
     if variant == "legged":  # brass ferrules on the tapered legs' feet
         parts += leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9))
+    else:  # glides under the plinth's corners
+        parts += _glides((-w / 2 + 0.045, w / 2 - 0.045), (-d / 2 + 0.03, d / 2 - 0.05))
     return parts
 
 
