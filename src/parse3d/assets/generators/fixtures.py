@@ -53,6 +53,7 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull", "end_cap",
+                                                                  "vane_weight", "cord_plug",
                                                                   "carrier", "chain", "lift_cord", "tassel"),
           size_range=(0.5, 2.0),
           density=400, variants=("venetian", "roller", "vertical"), placement="wall")
@@ -89,6 +90,9 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(n):
             x = -W / 2 + 0.02 + 0.09 * (k + 0.5)
             parts.append(make_part(f"carrier_{k}", "carrier", S.box((0.012, 0.012, 0.012), center=(x, 0.025, H - 0.05 - 0.006)), metal))
+            # the weight in the vane's bottom hem that keeps it hanging straight
+            parts.append(make_part(f"vane_weight_{k}", "vane_weight", S.box((0.07, 0.004, 0.018), center=(x, 0.025, 0.03),
+                                                                            R=rot((0, 0, 1), 0.5)), mat))
         parts.append(make_part("chain", "chain", S.cylinder(0.0015, 0.09 * (n - 1), center=(-W / 2 + 0.02 + 0.09 * n / 2, 0.025, 0.035),
                                                             axis=(1, 0, 0), sections=6), metal))
         return parts
@@ -98,6 +102,11 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         z = 0.04 + k * 0.025
         parts.append(make_part(f"slat_{k}", "slat", S.box((W - 0.02, 0.025, 0.0015), center=(0, 0.025, z + 0.01), R=tilt), mat))
     parts.append(make_part("bottom_rail", "bottom_rail", S.box((W - 0.01, 0.03, 0.02), center=(0, 0.025, 0.01)), mat))
+    # the caps on the bottom rail's ends, and the plugs closing the ladder cords' holes under it
+    parts += [make_part(f"end_cap_{k}", "end_cap", S.box((0.004, 0.03, 0.02), center=(sx * ((W - 0.01) / 2 - 0.002), 0.025, 0.01)), mat)
+              for k, sx in enumerate((-1, 1))]
+    parts += [make_part(f"cord_plug_{k}", "cord_plug", S.cylinder(0.006, 0.002, center=(sx * W * 0.3, 0.025, 0.001), sections=8), mat)
+              for k, sx in enumerate((-1, 1))]
     # the ladder cords running down through the slats from the headrail to the bottom rail
     for k, sx in enumerate((-1, 1)):
         parts.append(make_part(f"cord_{k}", "cord", S.cylinder(0.0015, H - 0.07, center=(sx * W * 0.3, 0.025, 0.02 + (H - 0.07) / 2),

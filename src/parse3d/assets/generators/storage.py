@@ -303,7 +303,8 @@ def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail", "end_cap"),
+@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail", "end_cap", "price_tag",
+                                                                    "glide"),
           size_range=(1.3, 2.3), density=800, variants=("single_sided", "double_sided"))
 def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w, h = rng.uniform(0.9, 1.33), rng.uniform(1.4, 2.2)
@@ -346,5 +347,12 @@ def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"price_rail_{k}", "price_rail",
                                    S.box((w - 0.08, 0.012, 0.045), center=(0, y_rail, z + 0.045 / 2 - 0.025)),
                                    rail_mat))
+            # the paper price tickets slid into the rail's channel, flush with its face
+            parts += [make_part(f"price_tag_{2 * k + i}", "price_tag", S.box((0.07, 0.001, 0.03),
+                                                                            center=(x, y_rail + s * 0.0055, z + 0.045 / 2 - 0.025)),
+                                M.solid((0.97, 0.96, 0.9), "paper", 0.8))
+                      for i, x in enumerate((-(w - 0.08) * 0.25, (w - 0.08) * 0.25))]
             k += 1
+    # a levelling foot under each upright
+    parts += _glides((-w / 2 + 0.02, w / 2 - 0.02), (0.0,))
     return parts
