@@ -99,7 +99,8 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("monitor", parts=("screen", "stand", "base"),
-          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "hinge"), size_range=(0.45, 0.85),
+          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "hinge", "foot"),
+          size_range=(0.45, 0.85),
           density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
 def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.48, 0.8)
@@ -125,13 +126,26 @@ def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         L, a = rng.uniform(0.18, 0.26), np.deg2rad(rng.uniform(20, 35))
         base = []
+        v_pads = [(0.0, yb - 0.03 + 0.012)]  # the heel, then each arm's tip
         for s in (-1, 1):
             R = rot_z(s * a)
             c = np.array([0.0, yb - 0.03, t / 2]) + R @ np.array([0.0, L / 2, 0.0])
             base.append(S.box((0.03, L, t), center=c, R=R, bevel=0.003))
+            tip = np.array([0.0, yb - 0.03, 0.0]) + R @ np.array([0.0, L - 0.02, 0.0])
+            v_pads.append((float(tip[0]), float(tip[1])))
     # the stand's arm, the tilt hinge it carries the display on, and the base
     parts += [make_part("stand", "stand", arm, mat), make_part("hinge", "hinge", hinge, mat),
               make_part("base", "base", base, mat)]
+    # the rubber pads set into the base's underside
+    bb = parts[-1].bounds
+    cx, cy = (bb[0, :2] + bb[1, :2]) / 2
+    hx, hy = (bb[1, :2] - bb[0, :2]) / 2
+    if variant == "v_base":  # under the tips of the V and its heel
+        pads = v_pads
+    else:
+        f = 0.55 if variant == "round_base" else 0.75
+        pads = [(cx + sx * hx * f, cy + sy * hy * f) for sx in (-1, 1) for sy in (-1, 1)]
+    parts += studs("foot", "foot", [(x, y, 0.001) for x, y in pads], r=0.006, h=0.002, mat=M.solid((0.1, 0.1, 0.1), "rubber", 0.8))
     return parts
 
 

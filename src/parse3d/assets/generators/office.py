@@ -95,7 +95,8 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("conference_phone", parts=("body",), extra_parts=("display", "key", "speaker_grille", "microphone"),
+@register("conference_phone", parts=("body",), extra_parts=("display", "key", "speaker_grille", "microphone", "status_light",
+                                                             "foot"),
           size_range=(0.18, 0.4), density=700, variants=("triangle", "round"), placement="surface")
 def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     s, h = rng.uniform(0.2, 0.34), rng.uniform(0.035, 0.05)
@@ -121,6 +122,11 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, (x, y) in enumerate(mics):
         parts.append(make_part(f"microphone_{i}", "microphone", S.cylinder(0.005, 0.003, center=(x, y, h * 0.95), sections=8),
                                black()))
+        # the status light beside each microphone, flush with the top, and a rubber foot under it
+        parts.append(make_part(f"status_light_{i}", "status_light", S.cylinder(0.003, 0.003, center=(x * 1.12, y * 1.12, h - 0.0015),
+                                                                               sections=8), M.solid((0.2, 0.8, 0.3), "glass", 0.1)))
+        parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.008, 0.002, center=(x, y, 0.001), sections=8),
+                               M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
     return parts
 
 
