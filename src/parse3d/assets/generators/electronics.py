@@ -67,7 +67,8 @@ def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> 
 
 
 @register("tv", parts=("screen", "stand"),
-          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount"), size_range=(0.7, 1.75),
+          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "pad"),
+          size_range=(0.7, 1.75),
           density=350, variants=("feet", "pedestal"))
 def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.72, 1.65)
@@ -86,6 +87,9 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
             bot = [(x + dx, dy, z) for dx in (-0.02, 0.02) for dy in (-reach / 2, reach / 2)
                    for z in (0.0, 0.012)]
             parts.append(make_part(f"stand_{k}", "stand", S.hull(np.array(top + bot)), metal))
+            # a felt pad under each end of the foot
+            parts += studs("pad", "pad", [(x, sy * (reach / 2 - 0.015), 0.001) for sy in (-1, 1)], r=0.008, h=0.002,
+                           mat=M.solid((0.1, 0.1, 0.1), "fabric", 0.9), start=2 * k)
         return parts
     z0 = rng.uniform(0.06, 0.12)
     parts = _display(rng, w, h, depth, z0, bezel)
@@ -95,6 +99,8 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     neck = S.box((neck_w, 0.03, z0 + 0.08 - plate_t), center=(0, -0.01, (z0 + 0.08 + plate_t) / 2))
     plate = S.box((plate_w, plate_d, plate_t), center=(0, -0.01, plate_t / 2), bevel=0.004)
     parts.append(make_part("stand", "stand", [neck, plate], metal))
+    parts += studs("pad", "pad", [(sx * (plate_w / 2 - 0.02), -0.01 + sy * (plate_d / 2 - 0.02), 0.001) for sx in (-1, 1) for sy in (-1, 1)],
+                   r=0.008, h=0.002, mat=M.solid((0.1, 0.1, 0.1), "fabric", 0.9))
     return parts
 
 

@@ -631,7 +631,8 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "slot", "ground_hole", "screw"),
+@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "slot", "ground_hole", "screw",
+                                                              "keyhole", "foot", "reset_button"),
           size_range=(0.2, 0.56), density=900, variants=("four", "six", "surge"),
           placement="floor")
 def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -663,6 +664,16 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid((0.9, 0.2, 0.1), "plastic", 0.2)))
     # the two screws closing the case from underneath, their heads sunk flush with its bottom
     out += studs("screw", "screw", [(sx * L * 0.3, 0, 0.001) for sx in (-1, 1)], r=0.003, h=0.002, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4))
+    # underneath: the two keyhole slots it hangs on a wall by and four rubber feet, all flush
+    out += [make_part(f"keyhole_{k}", "keyhole", S.box((0.012, 0.006, 0.001), center=(sx * L * 0.4, 0.01, 0.0005)), black())
+            for k, sx in enumerate((-1, 1))]
+    out += studs("foot", "foot", [(sx * (L / 2 - 0.015), sy * (w / 2 - 0.012), 0.001) for sx in (-1, 1) for sy in (-1, 1)],
+                 r=0.004, h=0.002, mat=M.solid((0.1, 0.1, 0.1), "rubber", 0.8))
+    if variant == "surge":  # the overload breaker's reset button and the "protected" light, flush in the top
+        out.append(make_part("reset_button", "reset_button", S.cylinder(0.006, 0.004, center=(L / 2 - 0.018, 0.018, h - 0.002),
+                                                                        sections=10), black()))
+        out.append(make_part("protected_light", "indicator", S.cylinder(0.003, 0.002, center=(-L / 2 + 0.015, -0.018, h - 0.001),
+                                                                        sections=8), M.solid((0.2, 0.8, 0.3), "plastic", 0.2)))
     return out
 
 
