@@ -224,7 +224,7 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin"),
+@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin", "hanger", "screw"),
           size_range=(0.45, 1.1), density=550, variants=("solid", "glass", "lift_up"), placement="wall")
 def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.4, 1.0), rng.uniform(0.28, 0.36), rng.uniform(0.5, 0.9)
@@ -241,6 +241,13 @@ def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     levels = t + shelf_heights(0.0, h - 2 * t, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t, mat=mat)
     parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t)
+    # the two hanger brackets in the top back corners that hook it on its wall rail, and the
+    # screws through the back's bottom corners (heads flush with the back's inner face)
+    steel = M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)
+    parts += [make_part(f"hanger_{k}", "hanger", S.box((0.03, 0.02, 0.05), center=(sx * (w / 2 - t - 0.015), -d / 2 + 0.02, h - t - 0.025)),
+                        steel) for k, sx in enumerate((-1, 1))]
+    parts += [make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.002, center=(sx * (w / 2 - t - 0.03), -d / 2 + 0.009, t + 0.03),
+                                                          axis=(0, 1, 0), sections=8), steel) for k, sx in enumerate((-1, 1))]
     if variant == "lift_up":
         return parts + door_parts("door", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y_back=yf, thick=0.018,
                                   mat=mat, handle_mat=hmat, hinge_left=True, style="flat",
