@@ -131,7 +131,7 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel",
-                                                          "windscreen", "reading_light", "plaque", "flange"),
+                                                          "windscreen", "reading_light", "plaque", "flange", "glide"),
           size_range=(1.0, 1.45), density=500, variants=("box", "pedestal", "acrylic"), placement="floor")
 def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.5, 0.7), rng.uniform(0.4, 0.55), rng.uniform(1.05, 1.25)
@@ -142,11 +142,13 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     if variant == "pedestal":
         parts.append(make_part("base", "base", S.box((w * 0.8, d * 0.8, 0.05), center=(0, 0, 0.025), bevel=0.01), mat))
+        parts += glides((-w * 0.4 + 0.04, w * 0.4 - 0.04), (-d * 0.4 + 0.04, d * 0.4 - 0.04))
         parts.append(make_part("body", "body", S.box((0.18, 0.18, z_desk - 0.1), center=(0, 0, 0.05 + (z_desk - 0.1) / 2)), mat))
         parts.append(make_part("shelf", "shelf", S.box((w * 0.6, d * 0.5, t), center=(0, -0.02, z_desk * 0.55)), mat))
     else:
         zb = z_desk - 0.06
         parts.append(make_part("base", "base", S.box((w, d, 0.06), center=(0, 0, 0.03)), mat))
+        parts += glides((-w / 2 + 0.04, w / 2 - 0.04), (-d / 2 + 0.04, d / 2 - 0.04))
         for i, s in enumerate((-1, 1)):
             parts.append(make_part(f"side_panel_{i}", "side_panel", S.box((t, d * 0.9, zb - 0.06),
                                                                            center=(s * (w / 2 - t / 2), -d * 0.05, (zb + 0.06) / 2)), mat))
@@ -180,7 +182,7 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("desk_organizer", parts=("base",), extra_parts=("divider", "pen_cup", "tray", "wall", "riser"), size_range=(0.12, 0.4),
+@register("desk_organizer", parts=("base",), extra_parts=("divider", "pen_cup", "tray", "wall", "riser", "pad"), size_range=(0.12, 0.4),
           density=500, variants=("compartments", "trays", "pen_cups"), placement="surface")
 def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng) if rng.random() < 0.5 else M.plastic(rng)
@@ -202,7 +204,7 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, s in enumerate((-1, 1)):
             parts.append(make_part(f"wall_{i}", "wall", S.box((0.01, 0.02, n * 0.07), center=(s * (w / 2 + 0.005), d / 2 - 0.02,
                                                                                                t + n * 0.035)), mat))
-        return parts
+        return parts + _pads(w, d)
     w, d, h = rng.uniform(0.2, 0.32), rng.uniform(0.1, 0.15), rng.uniform(0.08, 0.12)
     parts = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2)), mat)]
     walls = [S.box((w, t, h), center=(0, s * (d / 2 - t / 2), h / 2)) for s in (-1, 1)]
@@ -220,7 +222,14 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
             x = -w / 2 + 0.04 + k * 0.07
             parts.append(make_part(f"pen_cup_{k}", "pen_cup", S.vessel([(0.03, t), (0.032, t + h * 1.2)], thickness=0.006,
                                                                        piece_sections=24).moved((x, 0, 0)), M.plastic(rng)))
-    return parts
+    return parts + _pads(w, d)
+
+
+def _pads(w: float, d: float) -> list[Part]:
+    """The four felt pads under a desk organizer's base, set flush into it."""
+    felt = M.solid((0.15, 0.15, 0.15), "fabric", 0.9)
+    return [make_part(f"pad_{k}", "pad", S.cylinder(0.006, 0.002, center=(sx * (w / 2 - 0.012), sy * (d / 2 - 0.012), 0.001), sections=8),
+                      felt) for k, (sx, sy) in enumerate((sx, sy) for sx in (-1, 1) for sy in (-1, 1))]
 
 
 def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_front: float, depth: float,
