@@ -18,7 +18,8 @@ from ._casework import black, white
 from ._kit import rot
 
 
-@register("curtain", parts=("panel", "rod"), extra_parts=("finial", "ring", "tieback", "bracket", "screw"), size_range=(1.0, 3.2),
+@register("curtain", parts=("panel", "rod"), extra_parts=("finial", "ring", "tieback", "bracket", "screw", "clip", "tieback_hook"),
+          size_range=(1.0, 3.2),
           density=200, variants=("pair", "single", "tied_back"), placement="wall")
 def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     W, H = rng.uniform(1.0, 2.6), rng.uniform(1.4, 2.6)
@@ -46,9 +47,15 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
         for j in range(0, folds, 2):
             parts.append(make_part(f"ring_{k}", "ring", S.cylinder(0.02, 0.01, center=(x0 + pitch * (j + 0.5), yr, H - 0.02), axis=(1, 0, 0),
                                                                   sections=10), metal))
+            # the clip hanging from the ring's eyelet that grips the panel's heading
+            parts.append(make_part(f"clip_{k}", "clip", S.box((0.008, 0.006, 0.022), center=(x0 + pitch * (j + 0.5), yr, H - 0.045)), metal))
             k += 1
         if variant == "tied_back":
             parts.append(make_part(f"tieback_{i}", "tieback", S.box((0.34, 0.09, 0.04), center=((x0 + x1) / 2, yr, H * 0.45)), cloth))
+            # the wall hook the tieback is looped over, at the panel's outer side
+            xh = x0 - 0.02 if i == 0 else x1 + 0.02
+            parts.append(make_part(f"tieback_hook_{i}", "tieback_hook", S.box((0.015, yr - 0.045, 0.015), center=(xh, (yr - 0.045) / 2, H * 0.45)),
+                                   metal))
     return parts
 
 
