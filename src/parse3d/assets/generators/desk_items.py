@@ -712,7 +712,7 @@ def paper_cutter(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("case_of_water_bottles", parts=("bottle", "wrap"), extra_parts=("tray", "cap"),
+@register("case_of_water_bottles", parts=("bottle", "wrap"), extra_parts=("tray", "cap", "label"),
           size_range=(0.25, 0.42), density=900, variants=("6x4", "4x3", "6x2"),
           placement="floor")
 def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -721,7 +721,7 @@ def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.2, 0.23)
     clear = M.solid(M.jitter(rng, (0.75, 0.85, 0.95), 0.02), "plastic", 0.1)
     out: list[Part] = []
-    caps = []
+    caps, labels = [], []
     for i in range(nx):
         for j in range(ny):
             x = (i - (nx - 1) / 2) * 2 * r
@@ -730,8 +730,10 @@ def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
                 S.lathe([(r * 0.97, 0.0), (r * 0.97, h * 0.75), (r * 0.4, h * 0.92), (r * 0.4, h - 0.012)], sections=14),
                 np.array([[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, 0.004], [0, 0, 0, 1.0]])), clear))
             caps.append(S.cylinder(r * 0.42, 0.012, center=(x, y, h - 0.006 + 0.004), sections=12))
-    # each bottle's own cap (``cap``, ``cap_1``, ...)
+            labels.append(S.cylinder(r * 0.975, h * 0.22, center=(x, y, 0.004 + h * 0.45), sections=14))
+    # each bottle's own cap (``cap``, ``cap_1``, ...) and its printed label wrapped round the body
     out += each("cap", "cap", caps, M.solid(M.jitter(rng, (0.1, 0.3, 0.8), 0.05)))
+    out += each("label", "label", labels, M.solid(M.jitter(rng, (0.2, 0.5, 0.85), 0.05), "paper", 0.6))
     W, D = nx * 2 * r, ny * 2 * r
     out.append(make_part("tray", "tray", S.box((W + 0.004, D + 0.004, 0.004), center=(0, 0, 0.002)), M.paper(rng)))
     out.append(make_part("wrap", "wrap", [S.box((W + 0.004, 0.001, h * 0.5), center=(0, sy * (D / 2 + 0.0025), h * 0.4))
