@@ -183,6 +183,10 @@ def shower_head(rng: np.random.Generator, variant: str) -> list[Part]:
         zf = L * 0.75 + 0.12 + 0.015
         out += studs("nozzle", "nozzle", np.vstack([ring_points(6, 0.028, center=(0, 0.1, zf + 0.0015)), [(0, 0.1, zf + 0.0015)]]),
                      r=0.0035, h=0.003, mat=black("rubber"), sections=8)
+        # the inner ring round the centre nozzle and the outer ring near the face's edge
+        out += studs("nozzle", "nozzle", np.vstack([ring_points(4, 0.014, center=(0, 0.1, zf + 0.0015), phase=0.4),
+                                                    ring_points(10, 0.039, center=(0, 0.1, zf + 0.0015), phase=0.3)]),
+                     r=0.0035, h=0.003, mat=black("rubber"), sections=8, start=7)
         out.append(make_part("hose_nut", "hose_nut", S.cylinder(0.013, 0.02, center=(0, 0.1, L * 0.75 - 0.08 + 0.01), sections=8),
                              metal))
         out.append(make_part("outlet", "outlet", S.cylinder(0.014, 0.05, center=(0, 0.055, 0.1), axis=(0, 1, 0),
@@ -205,6 +209,11 @@ def shower_head(rng: np.random.Generator, variant: str) -> list[Part]:
         rings.append(ring_points(10, r * 0.78, center=(0, reach, zc - 0.0355), phase=0.3))
     out += studs("nozzle", "nozzle", np.vstack(rings + [[(0, reach, zc - 0.0355)]]), r=0.0035, h=0.003,
                  mat=black("rubber"), sections=8)
+    # the outer ring of nozzles (a fixed head's second ring, a rain head's third)
+    n0 = sum(len(rg) for rg in rings) + 1
+    outer = ring_points(10, r * 0.78, center=(0, reach, zc - 0.0355), phase=0.3) if variant != "rain" else \
+        ring_points(14, r * 0.9, center=(0, reach, zc - 0.0355), phase=0.1)
+    out += studs("nozzle", "nozzle", outer, r=0.0035, h=0.003, mat=black("rubber"), sections=8, start=n0)
     return out
 
 
