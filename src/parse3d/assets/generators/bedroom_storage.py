@@ -171,7 +171,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("dresser", parts=("body", "top_panel", "drawer"),
           extra_parts=("handle", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner", "dust_panel",
-                       "divider", "drawer_guide", "glide"), size_range=(0.75, 1.8), density=450,
+                       "divider", "drawer_guide", "glide", "wall_strap"), size_range=(0.75, 1.8), density=450,
           variants=("wide", "tall", "mixed"), groups=CARCASS_GROUP)
 def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":
@@ -200,6 +200,8 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         parts.append(make_part("plinth", "plinth",
                                S.box((w - 0.03, d - 0.03, z0), center=(0, -0.01, z0 / 2)), mat))
         parts += glides((-w / 2 + 0.03, w / 2 - 0.03), (-d / 2 + 0.02, d / 2 - 0.04))
+    # the anti-tip strap on the back under the top, which ties the chest to the wall
+    parts.append(wall_strap(z=h - top_t - 0.02, y=-d / 2))
     weights = [1.0] * len(rows)
     if variant == "mixed":
         weights[-1] = 0.7  # the row of small drawers at the top is shallower
