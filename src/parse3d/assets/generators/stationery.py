@@ -162,7 +162,7 @@ def _notebook_lying(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("chalk", parts=("stick",), extra_parts=("box", "lid", "sleeve", "label"),
+@register("chalk", parts=("stick",), extra_parts=("box", "lid", "sleeve"),
           size_range=(0.06, 0.16), density=1500, variants=("stick", "box", "sidewalk"), placement="surface")
 def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
     colours = [(0.96, 0.96, 0.94), (0.95, 0.85, 0.3), (0.95, 0.5, 0.6), (0.5, 0.75, 0.95), (0.6, 0.9, 0.5)]
@@ -188,9 +188,7 @@ def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
     walls += [S.box((0.0015, d - 0.003, h), center=(sx * (w / 2 - 0.00075), 0, h / 2)) for sx in (-1, 1)]
     walls.append(S.box((w - 0.003, d - 0.003, 0.0015), center=(0, 0, 0.00075)))
     parts = [make_part("box", "box", walls, card),
-             make_part("lid", "lid", S.box((w, 0.0015, h * 0.9), center=(0, -d / 2 - 0.00075 - 0.0003, h * 0.45)), card),
-             make_part("label", "label", S.box((w * 0.7, 0.0004, h * 0.4), center=(0, d / 2 - 0.0002, h * 0.5)),
-                       M.solid((0.95, 0.95, 0.9), "paper", 0.8))]
+             make_part("lid", "lid", S.box((w, 0.0015, h * 0.9), center=(0, -d / 2 - 0.00075 - 0.0003, h * 0.45)), card)]
     for i in range(n_x):
         for j in range(n_y):
             parts.append(make_part(f"stick_{i}_{j}", "stick",
@@ -328,7 +326,7 @@ def _x_out(x: float, y: float, z: float) -> np.ndarray:
     return T
 
 
-@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "mailing_label", "barcode", "insert_card"),
+@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "mailing_label", "insert_card"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.2, 0.42), density=800, variants=("glossy", "stapled", "tabloid"), placement="surface")
 def magazine(rng: np.random.Generator, variant: str) -> list:
@@ -350,8 +348,6 @@ def magazine(rng: np.random.Generator, variant: str) -> list:
     # the barcode box printed in the front cover's corner, and a subscriber's address label
     parts.append(make_part("mailing_label", "mailing_label", S.box((0.08, 0.03, 0.0002), center=(w * 0.15, -d / 2 + 0.03, T + 0.0001)),
                            M.solid((0.98, 0.98, 0.96), "paper", 0.7)))
-    parts.append(make_part("barcode", "barcode", S.box((0.035, 0.022, 0.0002), center=(-w / 2 + 0.03, d / 2 - 0.025, T - 0.0001)),
-                           M.solid((0.98, 0.98, 0.98), "paper", 0.7)))
     # the subscription card bound in among the pages, its edge showing at the fore-edge
     parts.append(make_part("insert_card", "insert_card", S.box((w * 0.6, d * 0.5, 0.0003), center=(w * 0.2 - 0.0005, 0, T * 0.6)),
                            M.solid((0.9, 0.75, 0.3), "paper", 0.7)))
