@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._bedbath_common import CARCASS_GROUP, bar_handle, bevel_box, carcass_panels, knob, scaled
+from ._dB_case import glides
 from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 _WHITE = (0.96, 0.96, 0.95)
@@ -232,7 +233,7 @@ def _holed_top(w: float, d: float, t: float, z: float, hole_w: float, hole_d: fl
 
 @register("bathroom_vanity", parts=("countertop", "basin", "faucet"),
           extra_parts=("body", "door", "drawer", "handle", "plinth", "backsplash", "drawer_box", "hinge", "runner",
-                       "trap", "valve"),
+                       "trap", "valve", "glide"),
           size_range=(0.7, 1.4), density=500, variants=("vessel", "undermount", "drawers"), groups=CARCASS_GROUP)
 def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.6, 1.2)
@@ -249,7 +250,9 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     parts: list[Part] = [
         *carcass_panels(w, d, body_h, t, wood, z0=plinth, top=False),
         make_part("plinth", "plinth", S.box((w - 0.04, d - 0.05, plinth),
-                                            center=(0, -0.02, plinth / 2)), wood)]
+                                            center=(0, -0.02, plinth / 2)), wood),
+        # levelling glides under the plinth's corners
+        *glides((-w / 2 + 0.045, w / 2 - 0.045), (-d / 2 + 0.03, d / 2 - 0.07))]
     y_face = d / 2 + 0.018
     if variant == "drawers":
         rows = int(rng.integers(2, 4))

@@ -130,7 +130,7 @@ def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("mirror_cabinet", parts=("body", "door", "mirror", "shelf"),
-          extra_parts=("hinge", "light", "handle", "glass", "shelf_pin", "bumper"),
+          extra_parts=("hinge", "light", "handle", "glass", "shelf_pin", "bumper", "screw"),
           size_range=(0.35, 1.25), density=600, variants=("single", "double", "lit"), placement="wall")
 def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     """A shallow wall cabinet whose doors are mirrors; glass shelves inside; ``lit`` adds a
@@ -158,6 +158,11 @@ def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]
             parts.append(make_part(f"shelf_pin_{4 * k + j}", "shelf_pin",
                                    S.cylinder(0.0025, 0.012, center=(sx * (w / 2 - t - 0.005), -0.02 + fy * (db - 0.03) * 0.35, zs - 0.0055),
                                               axis=(1, 0, 0), sections=8), M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)))
+    # the four screws through the back into the wall, their heads flush with its inner face
+    steel = M.solid((0.75, 0.75, 0.77), "metal", 0.3, 0.9)
+    parts += [make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.002, center=(sx * (w / 2 - t - 0.03), -d / 2 + 0.005, zc),
+                                                          axis=(0, 1, 0), sections=8), steel)
+              for k, (sx, zc) in enumerate((sx, zc) for sx in (-1, 1) for zc in (t + 0.03, hb - t - 0.03))]
     yf = d / 2 - 0.02
     hmat = M.metal(rng)
     dw = w / n

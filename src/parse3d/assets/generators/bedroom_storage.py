@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._bedbath_common import CARCASS_GROUP, bar_handle, bevel_box, carcass_panels, knob
+from ._dB_case import cams, glides, wall_strap
 from ._kit import DRAWER_TRAVEL, OPEN_DOOR, hinge_parts, mount, prismatic, revolute
 
 
@@ -85,9 +86,13 @@ def _drawer_grid(rng: np.random.Generator, *, x0: float, x1: float, z0: float, z
             parts.append(make_part(f"backplate_{k}", "backplate", plate, pull_mat))
             parts.append(make_part(f"runner_{k}", "runner",
                                    S.box((0.025, bd, 0.008), center=(x, yc, z + 0.004)), mat))
+            # the plastic shoe under the box's back that straddles the runner
+            parts.append(make_part(f"drawer_guide_{k}", "drawer_guide",
+                                   S.box((0.045, 0.04, 0.004), center=(x, yc - bd / 2 + 0.03, bz0 - 0.002)),
+                                   M.solid((0.9, 0.9, 0.88), "plastic", 0.5)))
             parts += [prismatic(f"drawer_{k}_slide", "body", f"drawer_{k}_box", travel=DRAWER_TRAVEL * bd),
                       mount(f"drawer_{k}_box", f"drawer_{k}"), mount(f"drawer_{k}", f"handle_{k}"),
-                      mount(f"drawer_{k}", f"backplate_{k}")]
+                      mount(f"drawer_{k}", f"backplate_{k}"), mount(f"drawer_{k}_box", f"drawer_guide_{k}")]
             k += 1
         z += h
     return parts
@@ -119,7 +124,7 @@ def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
 
 @register("nightstand", parts=("body", "top_panel", "drawer"),
           extra_parts=("handle", "shelf", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner",
-                       "dust_panel", "divider", "shelf_pin"), size_range=(0.4, 0.75),
+                       "dust_panel", "divider", "shelf_pin", "drawer_guide", "glide"), size_range=(0.4, 0.75),
           density=450, variants=("two_drawer", "drawer_shelf", "legged"), groups=CARCASS_GROUP)
 def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.42, 0.6)
@@ -140,6 +145,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     else:
         parts.append(make_part("plinth", "plinth",
                                S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)), mat))
+        parts += glides((-w / 2 + 0.035, w / 2 - 0.035), (-d / 2 + 0.025, d / 2 - 0.045))
     y_face = d / 2 + 0.018
     x0, x1 = -w / 2 + t, w / 2 - t
     inner_top = h - top_t
@@ -165,7 +171,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("dresser", parts=("body", "top_panel", "drawer"),
           extra_parts=("handle", "leg", "plinth", "drawer_box", "ferrule", "backplate", "runner", "dust_panel",
-                       "divider"), size_range=(0.75, 1.8), density=450,
+                       "divider", "drawer_guide", "glide", "wall_strap"), size_range=(0.75, 1.8), density=450,
           variants=("wide", "tall", "mixed"), groups=CARCASS_GROUP)
 def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "tall":
@@ -193,6 +199,9 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     else:
         parts.append(make_part("plinth", "plinth",
                                S.box((w - 0.03, d - 0.03, z0), center=(0, -0.01, z0 / 2)), mat))
+        parts += glides((-w / 2 + 0.03, w / 2 - 0.03), (-d / 2 + 0.02, d / 2 - 0.04))
+    # the anti-tip strap on the back under the top, which ties the chest to the wall
+    parts.append(wall_strap(z=h - top_t - 0.02, y=-d / 2))
     weights = [1.0] * len(rows)
     if variant == "mixed":
         weights[-1] = 0.7  # the row of small drawers at the top is shallower
@@ -203,7 +212,7 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("wardrobe", parts=("body", "door", "shelf"), extra_parts=("handle", "rod", "plinth", "hinge", "track", "shelf_pin",
-                                                                     "rod_socket"),
+                                                                     "rod_socket", "glide", "cam_lock", "wall_strap"),
           size_range=(1.7, 2.3), density=300, variants=("two_door", "three_door", "sliding"), groups=CARCASS_GROUP)
 def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     n_doors = {"two_door": 2, "three_door": 3, "sliding": 2}[variant]
@@ -221,6 +230,10 @@ def wardrobe(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts = [*carcass_panels(w, d, h - plinth, t, mat, z0=plinth, dividers=(x_div,)),
              make_part("plinth", "plinth",
                        S.box((w - 0.02, d - 0.03, plinth), center=(0, -0.015, plinth / 2)), mat)]
+    # glides under the plinth, cam locks under the top board, the anti-tip strap on the back
+    parts += glides((-w / 2 + 0.03, w / 2 - 0.03), (-d / 2 + 0.02, d / 2 - 0.05))
+    parts += cams((h - t,), iw=w - 2 * t, ys=(-d / 2 + 0.05, d / 2 - 0.05))
+    parts.append(wall_strap(z=h - t - 0.02, y=-d / 2))
     z_in0, z_in1 = plinth + t, h - t
     # shelves in the left section
     n_sh = int(rng.integers(3, 6))

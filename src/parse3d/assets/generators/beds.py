@@ -58,6 +58,11 @@ def _bed_frame_rails(w: float, d: float, z_top: float, rail_h: float, rail_t: fl
                      mat) for k, sx in enumerate((-1, 1))]
     out.append(make_part("frame", "foot_rail", bevel_box((w + 2 * rail_t, rail_t, rail_h), center=(0, d / 2 + rail_t / 2, zc),
                                                          bevel=0.004), mat))
+    # the hook-on bracket at each end of each side rail, let into its inner face
+    steel = M.solid((0.3, 0.3, 0.32), "metal", 0.4, 0.8)
+    out += [make_part(f"rail_bracket_{2 * k + j}", "rail_bracket", S.box((0.004, 0.05, rail_h * 0.7),
+                                                                        center=(sx * (w / 2 + 0.002), fy * (d / 2 - 0.03), zc)), steel)
+            for k, sx in enumerate((-1, 1)) for j, fy in enumerate((-1, 1))]
     if w >= 1.4 - 0.03:
         zr = z_top - 0.03 - 0.02  # under the slats
         out.append(make_part("center_rail", "center_rail", S.box((0.05, d, 0.06), center=(0, 0, zr - 0.03)), mat))
@@ -76,7 +81,7 @@ def _slats(w: float, d: float, z: float, mat, *, pitch: float = 0.16) -> list[Pa
 
 @register("bed", parts=("frame", "mattress", "headboard"),
           extra_parts=("leg", "post", "canopy", "footboard", "drawer", "handle", "slat", "button", "mattress_handle",
-                       "tape_edge", "vent", "tag", "glide", "finial", "caster"),
+                       "tape_edge", "vent", "tag", "glide", "finial", "caster", "rail_bracket"),
           size_range=(1.9, 2.5), density=250, variants=("platform", "four_poster", "storage"),
           groups={"frame": ("frame", "side_rail", "foot_rail", "center_rail", "support_leg", "plinth", "deck")})
 def bed(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -206,7 +211,7 @@ def _tufting(w: float, y_face: float, z0: float, z1: float, cloth) -> list[Part]
 
 
 @register("bunk_bed", parts=("frame", "mattress", "ladder"),
-          extra_parts=("guard_rail", "end_panel", "drawer", "handle", "slat", "tape_edge", "vent", "tag"),
+          extra_parts=("guard_rail", "end_panel", "drawer", "handle", "slat", "tape_edge", "vent", "tag", "bolt_cap", "glide"),
           size_range=(1.9, 2.4), density=300,
           variants=("front_ladder", "end_ladder", "trundle"))
 def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -271,6 +276,19 @@ def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
         rungs = [S.cylinder(rung_r, lw, center=(x0, ly, z), axis=(1, 0, 0), sections=10)
                  for z in z_rungs]
     parts.append(make_part("ladder", "ladder", stiles + rungs, wood))
+    # the bed bolts drawing each rail end to its post, their caps let flush into the post's
+    # outer face; a glide under each post
+    metal = M.solid((0.72, 0.7, 0.66), "metal", 0.3, 0.9)
+    k = 0
+    for z in (z_low, z_up):
+        for y in ys:
+            for x in xs:
+                sx = 1.0 if x > 0 else -1.0
+                parts.append(make_part(f"bolt_cap_{k}", "bolt_cap", S.cylinder(0.011, 0.002, center=(x + sx * (ps / 2 - 0.001), y, z - rail_h / 2),
+                                                                             axis=(1, 0, 0), sections=10), metal))
+                k += 1
+    parts += [make_part(f"glide_{i}", "glide", S.cylinder(min(0.012, ps * 0.3), 0.003, center=(x, y, 0.0015), sections=10),
+                        M.solid((0.25, 0.25, 0.26), "plastic", 0.6)) for i, (x, y) in enumerate((x, y) for y in ys for x in xs)]
     if variant == "trundle":
         dh = z_low - 0.1
         dw = length * 0.9

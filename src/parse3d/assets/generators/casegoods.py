@@ -17,12 +17,13 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import door_parts, drawer_parts
+from ._dB_case import cams, glides, wall_strap
 from ._kit import mount
 
 
 @register("hutch", parts=("countertop", "body", "shelf", "back_panel"),
           extra_parts=("side_panel", "top_panel", "door", "drawer", "drawer_box", "handle", "hinge",
-                       "plate_rail", "glass", "shelf_pin"),
+                       "plate_rail", "glass", "shelf_pin", "glide", "cam_lock"),
           size_range=(1.5, 2.3), density=550, variants=("open", "glass_doors", "drawers"),
           placement="floor",
           groups={"body": ("cabinet_side", "bottom_panel", "cabinet_top", "cabinet_back", "drawer_rail", "plinth")})
@@ -50,6 +51,9 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if zd < hb - t - 1e-6:  # the rail between the drawers and the doors
         parts.append(make_part("drawer_rail", "drawer_rail", S.box((w - 2 * t, d - 0.008, t), center=(0, 0.004, zd + t / 2)), mat))
     parts.append(make_part("body", "plinth", S.box((w - 0.04, d - 0.04, z0), center=(0, -0.01, z0 / 2)), mat))
+    # glides under the plinth and cam locks under the bottom panel
+    parts += glides((-w / 2 + 0.045, w / 2 - 0.045), (-d / 2 + 0.03, d / 2 - 0.05))
+    parts += cams((z0,), iw=w - 2 * t, ys=(-d / 2 + 0.05, d / 2 - 0.05))
     parts.append(make_part("countertop", "countertop",
                            S.box((w + 0.03, d + 0.02, t), center=(0, 0.01, hl - t / 2), bevel=0.004), mat))
     dw = (w - 2 * t) / 2
@@ -100,7 +104,7 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("locker", parts=("body", "door"), extra_parts=("handle", "hinge", "shelf", "hook", "vent",
-                                                          "nameplate", "hasp"),
+                                                          "nameplate", "hasp", "glide", "wall_strap"),
           size_range=(1.2, 2.0), density=400, variants=("single", "two_tier", "bank"), placement="floor",
           groups={"body": ("top_panel", "bottom_panel", "back_panel", "side_panel", "partition", "tier_panel",
                            "plinth")})
@@ -132,6 +136,9 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     for k in range(1, tiers):
         parts.append(make_part(f"tier_panel_{k - 1}", "tier_panel", S.box((w - 2 * t, dc, t), center=(0, yc, zt[k])), steel))
     parts.append(make_part("body", "plinth", S.box((w - 0.02, dc - 0.03, zb), center=(0, yc - 0.015, zb / 2)), steel))
+    # levelling glides under the base; the anchor bracket that ties the top to the wall
+    parts += glides((-w / 2 + 0.035, w / 2 - 0.035), (yc - dc / 2 + 0.03, yc + dc / 2 - 0.06))
+    parts.append(wall_strap(z=H - t - 0.02, y=-d / 2 + 0.006))
     yf = yc + dc / 2
     hmat = Material((0.7, 0.7, 0.72, 1.0), 0.3, 0.9, "metal")
     k_shelf = 0

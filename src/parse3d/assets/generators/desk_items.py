@@ -100,7 +100,7 @@ def _felt_feet(w: float, d: float, inset: float, t: float) -> list[Part]:
 
 
 @register("mouse", parts=("body", "button"),
-          extra_parts=("scroll_wheel", "cable", "foot", "side_button", "sensor", "switch"),
+          extra_parts=("scroll_wheel", "cable", "foot", "side_button", "sensor", "switch", "dpi_button"),
           size_range=(0.08, 0.14), density=500, variants=("wired", "wireless", "ergonomic"),
           placement="surface")
 def mouse(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -117,6 +117,8 @@ def mouse(rng: np.random.Generator, variant: str) -> list[Part]:
                                                              center=(sx * w * 0.2, L * 0.28, h * 0.72)), mat))
     out.append(make_part("scroll_wheel", "scroll_wheel", S.cylinder(0.009, 0.006, center=(0, L * 0.3, h * 0.78),
                                                                     axis=(1, 0, 0), sections=14), black()))
+    # the sensitivity (dpi) button behind the wheel, flush with the shell
+    out.append(make_part("dpi_button", "dpi_button", S.box((0.006, 0.009, 0.003), center=(0, L * 0.12, h * 0.955)), black()))
     # four glide pads underneath, round the optical sensor's window
     glide = M.solid((0.9, 0.9, 0.9), "plastic", 0.2)
     for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
@@ -605,7 +607,8 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("scale", parts=("platform",), extra_parts=("display", "foot", "button", "electrode", "dial", "needle"),
+@register("scale", parts=("platform",), extra_parts=("display", "foot", "button", "electrode", "dial", "needle", "battery_cover",
+                                                          "unit_button"),
           size_range=(0.25, 0.38), density=800, variants=("glass", "analog", "kitchen"),
           placement="floor")
 def scale(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -622,6 +625,10 @@ def scale(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
         out.append(make_part(f"foot_{k}", "foot", S.cylinder(0.012, fh, center=(sx * (w / 2 - 0.03), sy * (d / 2 - 0.03),
                                                                               fh / 2), sections=10), black("rubber")))
+    # underneath, flush with the platform's bottom: the battery door and the kg/lb unit button
+    out.append(make_part("battery_cover", "battery_cover", S.box((0.06, 0.035, 0.001), center=(0, -d * 0.15, fh + 0.0005)), mat))
+    out.append(make_part("unit_button", "button" if variant == "kitchen" else "unit_button",
+                         S.cylinder(0.004, 0.001, center=(0.05, -d * 0.15, fh + 0.0005), sections=8), black()))
     if variant == "glass":
         # the four steel pads the bare feet stand on (body-fat electrodes)
         for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
@@ -712,7 +719,7 @@ def paper_cutter(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("case_of_water_bottles", parts=("bottle", "wrap"), extra_parts=("tray", "cap"),
+@register("case_of_water_bottles", parts=("bottle", "wrap"), extra_parts=("tray", "cap", "label"),
           size_range=(0.25, 0.42), density=900, variants=("6x4", "4x3", "6x2"),
           placement="floor")
 def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -721,7 +728,7 @@ def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.2, 0.23)
     clear = M.solid(M.jitter(rng, (0.75, 0.85, 0.95), 0.02), "plastic", 0.1)
     out: list[Part] = []
-    caps = []
+    caps, labels = [], []
     for i in range(nx):
         for j in range(ny):
             x = (i - (nx - 1) / 2) * 2 * r
@@ -730,8 +737,10 @@ def case_of_water_bottles(rng: np.random.Generator, variant: str) -> list[Part]:
                 S.lathe([(r * 0.97, 0.0), (r * 0.97, h * 0.75), (r * 0.4, h * 0.92), (r * 0.4, h - 0.012)], sections=14),
                 np.array([[1, 0, 0, x], [0, 1, 0, y], [0, 0, 1, 0.004], [0, 0, 0, 1.0]])), clear))
             caps.append(S.cylinder(r * 0.42, 0.012, center=(x, y, h - 0.006 + 0.004), sections=12))
-    # each bottle's own cap (``cap``, ``cap_1``, ...)
+            labels.append(S.cylinder(r * 0.975, h * 0.22, center=(x, y, 0.004 + h * 0.45), sections=14))
+    # each bottle's own cap (``cap``, ``cap_1``, ...) and its printed label wrapped round the body
     out += each("cap", "cap", caps, M.solid(M.jitter(rng, (0.1, 0.3, 0.8), 0.05)))
+    out += each("label", "label", labels, M.solid(M.jitter(rng, (0.2, 0.5, 0.85), 0.05), "paper", 0.6))
     W, D = nx * 2 * r, ny * 2 * r
     out.append(make_part("tray", "tray", S.box((W + 0.004, D + 0.004, 0.004), center=(0, 0, 0.002)), M.paper(rng)))
     out.append(make_part("wrap", "wrap", [S.box((W + 0.004, 0.001, h * 0.5), center=(0, sy * (D / 2 + 0.0025), h * 0.4))

@@ -16,6 +16,7 @@ from ...geometry.frames import rot_x, rot_z
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._detail_b import studs
 
 
 def _screen_glass() -> Material:
@@ -66,7 +67,8 @@ def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> 
 
 
 @register("tv", parts=("screen", "stand"),
-          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount"), size_range=(0.7, 1.75),
+          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "pad"),
+          size_range=(0.7, 1.75),
           density=350, variants=("feet", "pedestal"))
 def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.72, 1.65)
@@ -85,6 +87,9 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
             bot = [(x + dx, dy, z) for dx in (-0.02, 0.02) for dy in (-reach / 2, reach / 2)
                    for z in (0.0, 0.012)]
             parts.append(make_part(f"stand_{k}", "stand", S.hull(np.array(top + bot)), metal))
+            # a felt pad under each end of the foot
+            parts += studs("pad", "pad", [(x, sy * (reach / 2 - 0.015), 0.001) for sy in (-1, 1)], r=0.008, h=0.002,
+                           mat=M.solid((0.1, 0.1, 0.1), "fabric", 0.9), start=2 * k)
         return parts
     z0 = rng.uniform(0.06, 0.12)
     parts = _display(rng, w, h, depth, z0, bezel)
@@ -94,11 +99,14 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     neck = S.box((neck_w, 0.03, z0 + 0.08 - plate_t), center=(0, -0.01, (z0 + 0.08 + plate_t) / 2))
     plate = S.box((plate_w, plate_d, plate_t), center=(0, -0.01, plate_t / 2), bevel=0.004)
     parts.append(make_part("stand", "stand", [neck, plate], metal))
+    parts += studs("pad", "pad", [(sx * (plate_w / 2 - 0.02), -0.01 + sy * (plate_d / 2 - 0.02), 0.001) for sx in (-1, 1) for sy in (-1, 1)],
+                   r=0.008, h=0.002, mat=M.solid((0.1, 0.1, 0.1), "fabric", 0.9))
     return parts
 
 
 @register("monitor", parts=("screen", "stand", "base"),
-          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "hinge"), size_range=(0.45, 0.85),
+          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "hinge", "foot"),
+          size_range=(0.45, 0.85),
           density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
 def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.48, 0.8)
@@ -124,13 +132,26 @@ def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
     else:
         L, a = rng.uniform(0.18, 0.26), np.deg2rad(rng.uniform(20, 35))
         base = []
+        v_pads = [(0.0, yb - 0.03 + 0.012)]  # the heel, then each arm's tip
         for s in (-1, 1):
             R = rot_z(s * a)
             c = np.array([0.0, yb - 0.03, t / 2]) + R @ np.array([0.0, L / 2, 0.0])
             base.append(S.box((0.03, L, t), center=c, R=R, bevel=0.003))
+            tip = np.array([0.0, yb - 0.03, 0.0]) + R @ np.array([0.0, L - 0.02, 0.0])
+            v_pads.append((float(tip[0]), float(tip[1])))
     # the stand's arm, the tilt hinge it carries the display on, and the base
     parts += [make_part("stand", "stand", arm, mat), make_part("hinge", "hinge", hinge, mat),
               make_part("base", "base", base, mat)]
+    # the rubber pads set into the base's underside
+    bb = parts[-1].bounds
+    cx, cy = (bb[0, :2] + bb[1, :2]) / 2
+    hx, hy = (bb[1, :2] - bb[0, :2]) / 2
+    if variant == "v_base":  # under the tips of the V and its heel
+        pads = v_pads
+    else:
+        f = 0.55 if variant == "round_base" else 0.75
+        pads = [(cx + sx * hx * f, cy + sy * hy * f) for sx in (-1, 1) for sy in (-1, 1)]
+    parts += studs("foot", "foot", [(x, y, 0.001) for x, y in pads], r=0.006, h=0.002, mat=M.solid((0.1, 0.1, 0.1), "rubber", 0.8))
     return parts
 
 
@@ -171,7 +192,7 @@ def laptop(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("keyboard", parts=("body", "keys"), extra_parts=(), size_range=(0.28, 0.48), density=600,
+@register("keyboard", parts=("body", "keys"), extra_parts=("foot", "bumper"), size_range=(0.28, 0.48), density=600,
           variants=("full", "tenkeyless", "compact"), placement="surface")
 def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
     w = {"full": rng.uniform(0.43, 0.46), "tenkeyless": rng.uniform(0.35, 0.37),
@@ -217,6 +238,12 @@ def keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
         rows += blocks
     if rows:  # navigation and number blocks, one part per row
         parts += [make_part(f"key_block_{i}", "keys", b, key_mat) for i, b in enumerate(rows)]
+    # underneath: the two flip-out feet at the back and the rubber pads at the front, folded
+    # flush into the bottom
+    parts += [make_part(f"foot_{k}", "foot", S.box((0.03, 0.012, 0.002), center=(sx * (w / 2 - 0.035), -d / 2 + 0.015, 0.001)),
+                        key_mat) for k, sx in enumerate((-1, 1))]
+    parts += studs("bumper", "bumper", [(sx * (w / 2 - 0.03), d / 2 - 0.012, 0.001) for sx in (-1, 1)], r=0.005, h=0.002,
+                   mat=M.solid((0.1, 0.1, 0.1), "rubber", 0.8))
     return parts
 
 
@@ -309,7 +336,7 @@ def _rounded_slab(length: float, width: float, height: float, r: float, b: float
     return S.hull(np.concatenate(pts))
 
 
-@register("remote_control", parts=("body",), extra_parts=("button",), size_range=(0.1, 0.25),
+@register("remote_control", parts=("body",), extra_parts=("button", "ir_window", "battery_cover"), size_range=(0.1, 0.25),
           density=700, variants=("tv", "slim"), placement="surface")
 def remote_control(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "tv":
@@ -335,5 +362,17 @@ def remote_control(rng: np.random.Generator, variant: str) -> list[Part]:
         for i in range(4):
             for j in range(3):
                 keys.append(button(0.0038, (j - 1) * W * 0.28, dpad_y - W * 0.95 - i * 0.014))
+    if variant == "tv":  # the four colour keys between the power button and the d-pad
+        parts += [make_part(f"colour_button_{j}", "button", S.box((W * 0.14, 0.003, 0.0025), center=((j - 1.5) * W * 0.2, L / 2 - 0.026,
+                                                                                                   H + 0.00075)),
+                            M.solid(c, "plastic", 0.5))
+                  for j, c in enumerate(((0.8, 0.15, 0.12), (0.15, 0.6, 0.2), (0.9, 0.8, 0.15), (0.15, 0.3, 0.8)))]
+    else:  # home, back, play and mute under the d-pad's pair
+        keys += [button(0.0038, x, dpad_y - W * 0.45 - 0.012 * (i + 1)) for i in range(2) for x in (-W * 0.25, W * 0.25)]
     parts += [make_part(f"button_{k}", "button", key, btn) for k, key in enumerate(keys)]
+    # the infrared window at the pointing end and the battery cover in the back, both flush
+    parts.append(make_part("ir_window", "ir_window", S.box((W * 0.3, 0.003, H * 0.3), center=(0, L / 2 - 0.0025, H * 0.5)),
+                           M.solid((0.15, 0.02, 0.02), "glass", 0.2)))
+    parts.append(make_part("battery_cover", "battery_cover", S.box((W * 0.7, L * 0.35, 0.0008), center=(0, -L * 0.25, 0.0004)),
+                           parts[0].material))
     return parts

@@ -18,7 +18,8 @@ from ._casework import black, white
 from ._kit import rot
 
 
-@register("curtain", parts=("panel", "rod"), extra_parts=("finial", "ring", "tieback", "bracket", "screw"), size_range=(1.0, 3.2),
+@register("curtain", parts=("panel", "rod"), extra_parts=("finial", "ring", "tieback", "bracket", "screw", "clip", "tieback_hook"),
+          size_range=(1.0, 3.2),
           density=200, variants=("pair", "single", "tied_back"), placement="wall")
 def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
     W, H = rng.uniform(1.0, 2.6), rng.uniform(1.4, 2.6)
@@ -46,13 +47,20 @@ def curtain(rng: np.random.Generator, variant: str) -> list[Part]:
         for j in range(0, folds, 2):
             parts.append(make_part(f"ring_{k}", "ring", S.cylinder(0.02, 0.01, center=(x0 + pitch * (j + 0.5), yr, H - 0.02), axis=(1, 0, 0),
                                                                   sections=10), metal))
+            # the clip hanging from the ring's eyelet that grips the panel's heading
+            parts.append(make_part(f"clip_{k}", "clip", S.box((0.008, 0.006, 0.022), center=(x0 + pitch * (j + 0.5), yr, H - 0.045)), metal))
             k += 1
         if variant == "tied_back":
             parts.append(make_part(f"tieback_{i}", "tieback", S.box((0.34, 0.09, 0.04), center=((x0 + x1) / 2, yr, H * 0.45)), cloth))
+            # the wall hook the tieback is looped over, at the panel's outer side
+            xh = x0 - 0.02 if i == 0 else x1 + 0.02
+            parts.append(make_part(f"tieback_hook_{i}", "tieback_hook", S.box((0.015, yr - 0.045, 0.015), center=(xh, (yr - 0.045) / 2, H * 0.45)),
+                                   metal))
     return parts
 
 
 @register("window_blind", parts=("slat", "headrail"), extra_parts=("bottom_rail", "cord", "wand", "bracket", "pull", "end_cap",
+                                                                  "vane_weight", "cord_plug",
                                                                   "carrier", "chain", "lift_cord", "tassel"),
           size_range=(0.5, 2.0),
           density=400, variants=("venetian", "roller", "vertical"), placement="wall")
@@ -89,6 +97,9 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         for k in range(n):
             x = -W / 2 + 0.02 + 0.09 * (k + 0.5)
             parts.append(make_part(f"carrier_{k}", "carrier", S.box((0.012, 0.012, 0.012), center=(x, 0.025, H - 0.05 - 0.006)), metal))
+            # the weight in the vane's bottom hem that keeps it hanging straight
+            parts.append(make_part(f"vane_weight_{k}", "vane_weight", S.box((0.07, 0.004, 0.018), center=(x, 0.025, 0.03),
+                                                                            R=rot((0, 0, 1), 0.5)), mat))
         parts.append(make_part("chain", "chain", S.cylinder(0.0015, 0.09 * (n - 1), center=(-W / 2 + 0.02 + 0.09 * n / 2, 0.025, 0.035),
                                                             axis=(1, 0, 0), sections=6), metal))
         return parts
@@ -98,6 +109,11 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
         z = 0.04 + k * 0.025
         parts.append(make_part(f"slat_{k}", "slat", S.box((W - 0.02, 0.025, 0.0015), center=(0, 0.025, z + 0.01), R=tilt), mat))
     parts.append(make_part("bottom_rail", "bottom_rail", S.box((W - 0.01, 0.03, 0.02), center=(0, 0.025, 0.01)), mat))
+    # the caps on the bottom rail's ends, and the plugs closing the ladder cords' holes under it
+    parts += [make_part(f"end_cap_{k}", "end_cap", S.box((0.004, 0.03, 0.02), center=(sx * ((W - 0.01) / 2 - 0.002), 0.025, 0.01)), mat)
+              for k, sx in enumerate((-1, 1))]
+    parts += [make_part(f"cord_plug_{k}", "cord_plug", S.cylinder(0.006, 0.002, center=(sx * W * 0.3, 0.025, 0.001), sections=8), mat)
+              for k, sx in enumerate((-1, 1))]
     # the ladder cords running down through the slats from the headrail to the bottom rail
     for k, sx in enumerate((-1, 1)):
         parts.append(make_part(f"cord_{k}", "cord", S.cylinder(0.0015, H - 0.07, center=(sx * W * 0.3, 0.025, 0.02 + (H - 0.07) / 2),

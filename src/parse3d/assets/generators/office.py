@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import bar_pull, black, white
+from ._dB_case import glides
 from ._kit import DRAWER_TRAVEL, feet4, mount, prismatic, rot
 
 
@@ -94,7 +95,8 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("conference_phone", parts=("body",), extra_parts=("display", "key", "speaker_grille", "microphone"),
+@register("conference_phone", parts=("body",), extra_parts=("display", "key", "speaker_grille", "microphone", "status_light",
+                                                             "foot"),
           size_range=(0.18, 0.4), density=700, variants=("triangle", "round"), placement="surface")
 def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     s, h = rng.uniform(0.2, 0.34), rng.uniform(0.035, 0.05)
@@ -120,11 +122,16 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, (x, y) in enumerate(mics):
         parts.append(make_part(f"microphone_{i}", "microphone", S.cylinder(0.005, 0.003, center=(x, y, h * 0.95), sections=8),
                                black()))
+        # the status light beside each microphone, flush with the top, and a rubber foot under it
+        parts.append(make_part(f"status_light_{i}", "status_light", S.cylinder(0.003, 0.003, center=(x * 1.12, y * 1.12, h - 0.0015),
+                                                                               sections=8), M.solid((0.2, 0.8, 0.3), "glass", 0.1)))
+        parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.008, 0.002, center=(x, y, 0.001), sections=8),
+                               M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
     return parts
 
 
 @register("lectern", parts=("body", "desk"), extra_parts=("ledge", "shelf", "base", "side_panel", "microphone", "front_panel",
-                                                          "windscreen", "reading_light", "plaque", "flange"),
+                                                          "windscreen", "reading_light", "plaque", "flange", "glide"),
           size_range=(1.0, 1.45), density=500, variants=("box", "pedestal", "acrylic"), placement="floor")
 def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.5, 0.7), rng.uniform(0.4, 0.55), rng.uniform(1.05, 1.25)
@@ -135,11 +142,13 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     if variant == "pedestal":
         parts.append(make_part("base", "base", S.box((w * 0.8, d * 0.8, 0.05), center=(0, 0, 0.025), bevel=0.01), mat))
+        parts += glides((-w * 0.4 + 0.04, w * 0.4 - 0.04), (-d * 0.4 + 0.04, d * 0.4 - 0.04))
         parts.append(make_part("body", "body", S.box((0.18, 0.18, z_desk - 0.1), center=(0, 0, 0.05 + (z_desk - 0.1) / 2)), mat))
         parts.append(make_part("shelf", "shelf", S.box((w * 0.6, d * 0.5, t), center=(0, -0.02, z_desk * 0.55)), mat))
     else:
         zb = z_desk - 0.06
         parts.append(make_part("base", "base", S.box((w, d, 0.06), center=(0, 0, 0.03)), mat))
+        parts += glides((-w / 2 + 0.04, w / 2 - 0.04), (-d / 2 + 0.04, d / 2 - 0.04))
         for i, s in enumerate((-1, 1)):
             parts.append(make_part(f"side_panel_{i}", "side_panel", S.box((t, d * 0.9, zb - 0.06),
                                                                            center=(s * (w / 2 - t / 2), -d * 0.05, (zb + 0.06) / 2)), mat))
@@ -173,7 +182,7 @@ def lectern(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("desk_organizer", parts=("base",), extra_parts=("divider", "pen_cup", "tray", "wall", "riser"), size_range=(0.12, 0.4),
+@register("desk_organizer", parts=("base",), extra_parts=("divider", "pen_cup", "tray", "wall", "riser", "pad"), size_range=(0.12, 0.4),
           density=500, variants=("compartments", "trays", "pen_cups"), placement="surface")
 def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng) if rng.random() < 0.5 else M.plastic(rng)
@@ -195,7 +204,7 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, s in enumerate((-1, 1)):
             parts.append(make_part(f"wall_{i}", "wall", S.box((0.01, 0.02, n * 0.07), center=(s * (w / 2 + 0.005), d / 2 - 0.02,
                                                                                                t + n * 0.035)), mat))
-        return parts
+        return parts + _pads(w, d)
     w, d, h = rng.uniform(0.2, 0.32), rng.uniform(0.1, 0.15), rng.uniform(0.08, 0.12)
     parts = [make_part("base", "base", S.box((w, d, t), center=(0, 0, t / 2)), mat)]
     walls = [S.box((w, t, h), center=(0, s * (d / 2 - t / 2), h / 2)) for s in (-1, 1)]
@@ -213,7 +222,14 @@ def desk_organizer(rng: np.random.Generator, variant: str) -> list[Part]:
             x = -w / 2 + 0.04 + k * 0.07
             parts.append(make_part(f"pen_cup_{k}", "pen_cup", S.vessel([(0.03, t), (0.032, t + h * 1.2)], thickness=0.006,
                                                                        piece_sections=24).moved((x, 0, 0)), M.plastic(rng)))
-    return parts
+    return parts + _pads(w, d)
+
+
+def _pads(w: float, d: float) -> list[Part]:
+    """The four felt pads under a desk organizer's base, set flush into it."""
+    felt = M.solid((0.15, 0.15, 0.15), "fabric", 0.9)
+    return [make_part(f"pad_{k}", "pad", S.cylinder(0.006, 0.002, center=(sx * (w / 2 - 0.012), sy * (d / 2 - 0.012), 0.001), sections=8),
+                      felt) for k, (sx, sy) in enumerate((sx, sy) for sx in (-1, 1) for sy in (-1, 1))]
 
 
 def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_front: float, depth: float,
@@ -237,14 +253,21 @@ def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
                   handle_mat),
         make_part(f"{name}_label", "label_holder", S.box((0.08, 0.004, 0.04), center=(cx, y_front + 0.002, cz + h * 0.33)),
                   handle_mat),
+        # the paper card in the holder, and the steel slide rail along each side of the box
+        make_part(f"{name}_label_card", "label_card", S.box((0.07, 0.001, 0.03), center=(cx, y_front + 0.0025, cz + h * 0.33)),
+                  M.solid((0.97, 0.96, 0.9), "paper", 0.8)),
+        *[make_part(f"{name}_rail_{i}", "slide_rail", S.box((0.0018, depth * 0.9, min(0.03, bh * 0.5)),
+                                                            center=(cx + sx * (bw / 2 + 0.001), yb - depth * 0.5, z0 + 0.01 + bh * 0.5)),
+                    M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)) for i, sx in enumerate((-1, 1))],
         prismatic(f"{name}_slide", parent, f"{name}_box", travel=DRAWER_TRAVEL * depth),
         mount(f"{name}_box", name), mount(name, f"{name}_handle"), mount(name, f"{name}_label"),
+        mount(f"{name}_label", f"{name}_label_card"), mount(f"{name}_box", f"{name}_rail_0"), mount(f"{name}_box", f"{name}_rail_1"),
     ]
     return out
 
 
 @register("filing_cabinet", parts=("body", "drawer"), extra_parts=("drawer_box", "handle", "label_holder", "top_panel",
-                                                                    "caster"),
+                                                                    "caster", "label_card", "slide_rail", "lock", "glide"),
           size_range=(0.45, 1.45), density=400, variants=("vertical", "lateral", "mobile_pedestal"))
 def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "vertical":
@@ -279,4 +302,11 @@ def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]
     for k in range(n):
         parts += _file_drawer(f"drawer_{k}", x0=-w / 2 + 0.003, x1=w / 2 - 0.003, z0=zs[k] + 0.002, z1=zs[k + 1] - 0.002,
                               y_front=yf, depth=db - 0.06, mat=steel, handle_mat=hmat, parent="body")
+    # the key lock in the top drawer's front corner, which locks every drawer
+    top = f"drawer_{n - 1}"
+    parts.append(make_part("lock", "lock", S.cylinder(0.009, 0.006, center=(w / 2 - 0.04, yf + 0.003, zs[n] - 0.03), axis=(0, 1, 0),
+                                                      sections=12), hmat))
+    parts.append(mount(top, "lock"))
+    if variant != "mobile_pedestal":  # levelling glides under the base's corners
+        parts += glides((-w / 2 + 0.03, w / 2 - 0.03), (-d / 2 + 0.04, d / 2 - 0.06))
     return parts

@@ -162,7 +162,7 @@ def _notebook_lying(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("chalk", parts=("stick",), extra_parts=("box", "lid"),
+@register("chalk", parts=("stick",), extra_parts=("box", "lid", "sleeve"),
           size_range=(0.06, 0.16), density=1500, variants=("stick", "box", "sidewalk"), placement="surface")
 def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
     colours = [(0.96, 0.96, 0.94), (0.95, 0.85, 0.3), (0.95, 0.5, 0.6), (0.5, 0.75, 0.95), (0.6, 0.9, 0.5)]
@@ -172,11 +172,13 @@ def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
 
     if variant == "stick":
         L, r = rng.uniform(0.07, 0.085), 0.0055
-        return [make_part("stick", "stick", S.frustum(r, r * 0.9, L, center=(-L / 2, 0, r), axis=(1, 0, 0), sections=12), chalk_mat())]
-    if variant == "sidewalk":
+        return [make_part("stick", "stick", S.frustum(r, r * 0.9, L, center=(-L / 2, 0, r), axis=(1, 0, 0), sections=12), chalk_mat()),
+                _sleeve("sleeve", r, L * 0.4, (-L / 2 + L * 0.2, 0, r), rng)]
+    if variant == "sidewalk":  # each stick in the paper sleeve that keeps the hand clean
         L, r = rng.uniform(0.1, 0.12), rng.uniform(0.012, 0.014)
-        return [make_part(f"stick_{k}", "stick", S.cylinder(r, L, center=(0, (k - 1) * 2.1 * r, r), axis=(1, 0, 0), sections=16),
-                          chalk_mat()) for k in range(3)]
+        return ([make_part(f"stick_{k}", "stick", S.cylinder(r, L, center=(0, (k - 1) * 2.1 * r, r), axis=(1, 0, 0), sections=16),
+                           chalk_mat()) for k in range(3)]
+                + [_sleeve(f"sleeve_{k}", r, L * 0.45, (-L * 0.275, (k - 1) * 2.1 * r, r), rng) for k in range(3)])
     # an open box of a dozen sticks standing in rows
     n_x, n_y = 4, 3
     r, L = 0.0055, 0.08
@@ -193,6 +195,21 @@ def chalk(rng: np.random.Generator, variant: str) -> list[Part]:
                                    S.cylinder(r, L, center=(-w / 2 + 0.003 + 2.2 * r * (i + 0.5), -d / 2 + 0.003 + 2.2 * r * (j + 0.5),
                                                             0.0015 + L / 2), sections=10), chalk_mat()))
     return parts
+
+
+def _sleeve(name: str, r: float, length: float, center, rng) -> Part:
+    """A paper sleeve of ``length`` wrapped flush round a chalk stick of radius ``r`` lying
+    along X (the sleeve's outside is the stick's)."""
+    return make_part(name, "sleeve", ring([(r * 0.92, -length / 2), (r, -length / 2), (r, length / 2), (r * 0.92, length / 2)],
+                                          sections=12).apply(_x_along(center)), M.paper(rng))
+
+
+def _x_along(center) -> np.ndarray:
+    """A shape about +Z turned to lie along X, centred at ``center``."""
+    T = np.eye(4)
+    T[:3, :3] = rot((0, 1, 0), np.pi / 2)
+    T[:3, 3] = center
+    return T
 
 
 @register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial", "horizon", "post"),
@@ -309,7 +326,7 @@ def _x_out(x: float, y: float, z: float) -> np.ndarray:
     return T
 
 
-@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "mailing_label"),
+@register("magazine", parts=("front_cover", "back_cover", "pages"), extra_parts=("spine", "staple", "mailing_label", "insert_card"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.2, 0.42), density=800, variants=("glossy", "stapled", "tabloid"), placement="surface")
 def magazine(rng: np.random.Generator, variant: str) -> list:
@@ -331,6 +348,9 @@ def magazine(rng: np.random.Generator, variant: str) -> list:
     # the barcode box printed in the front cover's corner, and a subscriber's address label
     parts.append(make_part("mailing_label", "mailing_label", S.box((0.08, 0.03, 0.0002), center=(w * 0.15, -d / 2 + 0.03, T + 0.0001)),
                            M.solid((0.98, 0.98, 0.96), "paper", 0.7)))
+    # the subscription card bound in among the pages, its edge showing at the fore-edge
+    parts.append(make_part("insert_card", "insert_card", S.box((w * 0.6, d * 0.5, 0.0003), center=(w * 0.2 - 0.0005, 0, T * 0.6)),
+                           M.solid((0.9, 0.75, 0.3), "paper", 0.7)))
     return _stand_up(parts)
 
 
@@ -363,7 +383,7 @@ def marker(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("sticky_note", parts=("sheet",), extra_parts=("pad", "holder", "adhesive"),
-          size_range=(0.04, 0.13), density=700, variants=("pad", "cube", "single"), placement="surface")
+          size_range=(0.04, 0.135), density=700, variants=("pad", "cube", "single"), placement="surface")
 def sticky_note(rng: np.random.Generator, variant: str) -> list[Part]:
     s = [0.076, 0.076, 0.051, 0.127][int(rng.integers(4))]
     col = M.solid(M.jitter(rng, [(0.98, 0.92, 0.4), (0.98, 0.6, 0.7), (0.6, 0.85, 0.95), (0.7, 0.95, 0.5)][int(rng.integers(4))],
@@ -376,7 +396,10 @@ def sticky_note(rng: np.random.Generator, variant: str) -> list[Part]:
     # the pad's block, and its top sheets each a part (the top one is what gets written on)
     n_top, ts = 4, 0.0003
     h0 = h - n_top * ts
-    parts = [make_part("pad", "pad", S.box((s, s, h0), center=(0, 0, h0 / 2)), col)]
+    parts = [make_part("pad", "pad", S.box((s, s, h0), center=(0, 0, h0 / 2)), col),
+             # the gummed edge of the block, where every sheet is stuck to the next
+             make_part("adhesive", "adhesive", S.box((s, 0.0004, h0), center=(0, -s / 2 + 0.0002, h0 / 2)),
+                       M.solid((0.9, 0.88, 0.7), "paper", 0.6))]
     for k in range(n_top):
         parts.append(make_part(f"sheet_{k}", "sheet", S.box((s, s, ts), center=(0, 0, h0 + ts * (k + 0.5))), col))
     if variant == "cube":  # in a clear holder open at the top
@@ -387,7 +410,7 @@ def sticky_note(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("whiteboard_eraser", parts=("body", "pad"), extra_parts=("grip", "felt_layer"),
+@register("whiteboard_eraser", parts=("body", "pad"), extra_parts=("grip", "felt_layer", "side_grip", "end_cap"),
           size_range=(0.1, 0.17), density=400, variants=("block", "handled", "magnetic"), placement="surface")
 def whiteboard_eraser(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.12, 0.155), rng.uniform(0.05, 0.06)
@@ -400,6 +423,13 @@ def whiteboard_eraser(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "handled":
         parts.append(make_part("grip", "grip", [S.box((w * 0.7, 0.025, 0.02), center=(0, 0, hp + hb + 0.02), bevel=0.006)]
                                + [S.box((0.015, 0.02, 0.012), center=(sx * w * 0.3, 0, hp + hb + 0.006)) for sx in (-1, 1)], shell))
+    # the rubber finger grips set flush into both long sides; a plastic shell's end caps
+    rubber = M.solid((0.12, 0.12, 0.13), "rubber", 0.8)
+    parts += [make_part(f"side_grip_{k}", "side_grip", S.box((w * 0.5, 0.0012, hb * 0.5), center=(0, sy * (d / 2 - 0.0006), hp + hb / 2)),
+                        rubber) for k, sy in enumerate((-1, 1))]
+    if variant != "block":
+        parts += [make_part(f"end_cap_{k}", "end_cap", S.box((0.002, d - 0.006, hb - 0.006), center=(sx * (w / 2 - 0.001), 0, hp + hb / 2)),
+                            shell) for k, sx in enumerate((-1, 1))]
     if variant == "magnetic":
         parts.append(make_part("felt_layer", "felt_layer", S.box((w - 0.01, d - 0.01, 0.004), center=(0, 0, hp + hb + 0.002)),
                                M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))

@@ -17,6 +17,9 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_heights
+from ._dB_case import cams as _cams
+from ._dB_case import glides as _glides
+from ._dB_case import wall_strap as _wall_strap
 from ._rods import leg_caps
 
 
@@ -79,7 +82,8 @@ def _door_row(prefix: str, *, w: float, z0: float, z1: float, y_back: float, n: 
 
 
 @register("bookcase", parts=("shelf", "side_panel", "back_panel"),
-          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin"), size_range=(0.9, 2.3),
+          extra_parts=("top_panel", "base", "door", "handle", "glass", "hinge", "shelf_pin", "glide", "cam_lock", "wall_strap"),
+          size_range=(0.9, 2.3),
           density=550, variants=("open", "doored", "glass_doored"))
 def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.6, 1.2), rng.uniform(0.28, 0.4), rng.uniform(1.0, 2.2)
@@ -106,6 +110,11 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     levels = plinth + t + shelf_heights(0.0, inner, n)
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t, mat=mat)
     parts += _pins(levels[1:], iw=w - 2 * t, y0=-d / 2 + bt, y1=d / 2 - 0.002, t=t)
+    # glides under the side panels; cam locks under the fixed bottom shelf and the top; the
+    # wall strap on the back's top edge (the back ends under the top panel)
+    parts += _glides((-w / 2 + t / 2, w / 2 - t / 2), (-d / 2 + 0.03, d / 2 - 0.03))
+    parts += _cams((levels[0] - t, h - t), iw=w - 2 * t, ys=(-d / 2 + bt + 0.04, d / 2 - 0.04))
+    parts.append(_wall_strap(z=h_side - 0.02, y=-d / 2 + bt))
     if variant == "doored":
         k = max(1, n // 2)
         z_top = plinth + k * inner / n + t
@@ -119,7 +128,7 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("storage_cabinet", parts=("body", "door", "shelf"),
-          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin"),
+          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin", "glide", "cam_lock", "wall_strap"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
 def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
@@ -148,11 +157,16 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
     levels = plinth + t + shelf_heights(0.0, inner, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t, mat=mat)
     parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.008, y1=d / 2 - 0.01, t=t)
+    # glides under the plinth's corners, cam locks under the top, the wall strap at the back
+    parts += _glides((-w / 2 + t + 0.02, w / 2 - t - 0.02), (-d / 2 + 0.03, d / 2 - 0.06))
+    parts += _cams((h - t,), iw=w - 2 * t, ys=(-d / 2 + 0.05, d / 2 - 0.05))
+    parts.append(_wall_strap(z=h - t - 0.02, y=-d / 2 + 0.008))
     return parts
 
 
 @register("tv_stand", parts=("top_panel", "body"),
-          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin", "ferrule"),
+          extra_parts=("drawer", "handle", "shelf", "leg", "door", "hinge", "drawer_box", "grommet", "shelf_pin", "ferrule",
+                       "glide"),
           size_range=(0.9, 2.1), density=550, variants=("drawers", "cubbies", "legged"))
 def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(1.0, 2.0), rng.uniform(0.35, 0.5), rng.uniform(0.4, 0.6)
@@ -205,10 +219,12 @@ def tv_stand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                                      axis=(0, 1, 0), sections=12), black()))
     if variant == "legged":  # brass ferrules on the tapered legs' feet
         parts += leg_caps(parts, label="ferrule", mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9))
+    else:  # glides under the plinth's corners
+        parts += _glides((-w / 2 + 0.045, w / 2 - 0.045), (-d / 2 + 0.03, d / 2 - 0.05))
     return parts
 
 
-@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin"),
+@register("wall_cabinet", parts=("body", "door", "shelf"), extra_parts=("handle", "glass", "hinge", "shelf_pin", "hanger", "screw"),
           size_range=(0.45, 1.1), density=550, variants=("solid", "glass", "lift_up"), placement="wall")
 def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.4, 1.0), rng.uniform(0.28, 0.36), rng.uniform(0.5, 0.9)
@@ -225,6 +241,13 @@ def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     levels = t + shelf_heights(0.0, h - 2 * t, n + 1)[1:] + t
     parts += _shelves(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t, mat=mat)
     parts += _pins(levels, iw=w - 2 * t, y0=-d / 2 + 0.01, y1=yf - 0.01, t=t)
+    # the two hanger brackets in the top back corners that hook it on its wall rail, and the
+    # screws through the back's bottom corners (heads flush with the back's inner face)
+    steel = M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)
+    parts += [make_part(f"hanger_{k}", "hanger", S.box((0.03, 0.02, 0.05), center=(sx * (w / 2 - t - 0.015), -d / 2 + 0.02, h - t - 0.025)),
+                        steel) for k, sx in enumerate((-1, 1))]
+    parts += [make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.002, center=(sx * (w / 2 - t - 0.03), -d / 2 + 0.009, t + 0.03),
+                                                          axis=(0, 1, 0), sections=8), steel) for k, sx in enumerate((-1, 1))]
     if variant == "lift_up":
         return parts + door_parts("door", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y_back=yf, thick=0.018,
                                   mat=mat, handle_mat=hmat, hinge_left=True, style="flat",
@@ -287,7 +310,8 @@ def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail", "end_cap"),
+@register("grocery_shelf", parts=("shelf", "back_panel"), extra_parts=("post", "base", "price_rail", "end_cap", "price_tag",
+                                                                    "glide"),
           size_range=(1.3, 2.3), density=800, variants=("single_sided", "double_sided"))
 def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     w, h = rng.uniform(0.9, 1.33), rng.uniform(1.4, 2.2)
@@ -330,5 +354,12 @@ def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"price_rail_{k}", "price_rail",
                                    S.box((w - 0.08, 0.012, 0.045), center=(0, y_rail, z + 0.045 / 2 - 0.025)),
                                    rail_mat))
+            # the paper price tickets slid into the rail's channel, flush with its face
+            parts += [make_part(f"price_tag_{2 * k + i}", "price_tag", S.box((0.07, 0.001, 0.03),
+                                                                            center=(x, y_rail + s * 0.0055, z + 0.045 / 2 - 0.025)),
+                                M.solid((0.97, 0.96, 0.9), "paper", 0.8))
+                      for i, x in enumerate((-(w - 0.08) * 0.25, (w - 0.08) * 0.25))]
             k += 1
+    # a levelling foot under each upright
+    parts += _glides((-w / 2 + 0.02, w / 2 - 0.02), (0.0,))
     return parts

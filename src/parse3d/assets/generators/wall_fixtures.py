@@ -183,6 +183,10 @@ def shower_head(rng: np.random.Generator, variant: str) -> list[Part]:
         zf = L * 0.75 + 0.12 + 0.015
         out += studs("nozzle", "nozzle", np.vstack([ring_points(6, 0.028, center=(0, 0.1, zf + 0.0015)), [(0, 0.1, zf + 0.0015)]]),
                      r=0.0035, h=0.003, mat=black("rubber"), sections=8)
+        # the inner ring round the centre nozzle and the outer ring near the face's edge
+        out += studs("nozzle", "nozzle", np.vstack([ring_points(4, 0.014, center=(0, 0.1, zf + 0.0015), phase=0.4),
+                                                    ring_points(10, 0.039, center=(0, 0.1, zf + 0.0015), phase=0.3)]),
+                     r=0.0035, h=0.003, mat=black("rubber"), sections=8, start=7)
         out.append(make_part("hose_nut", "hose_nut", S.cylinder(0.013, 0.02, center=(0, 0.1, L * 0.75 - 0.08 + 0.01), sections=8),
                              metal))
         out.append(make_part("outlet", "outlet", S.cylinder(0.014, 0.05, center=(0, 0.055, 0.1), axis=(0, 1, 0),
@@ -205,6 +209,11 @@ def shower_head(rng: np.random.Generator, variant: str) -> list[Part]:
         rings.append(ring_points(10, r * 0.78, center=(0, reach, zc - 0.0355), phase=0.3))
     out += studs("nozzle", "nozzle", np.vstack(rings + [[(0, reach, zc - 0.0355)]]), r=0.0035, h=0.003,
                  mat=black("rubber"), sections=8)
+    # the outer ring of nozzles (a fixed head's second ring, a rain head's third)
+    n0 = sum(len(rg) for rg in rings) + 1
+    outer = ring_points(10, r * 0.78, center=(0, reach, zc - 0.0355), phase=0.3) if variant != "rain" else \
+        ring_points(14, r * 0.9, center=(0, reach, zc - 0.0355), phase=0.1)
+    out += studs("nozzle", "nozzle", outer, r=0.0035, h=0.003, mat=black("rubber"), sections=8, start=n0)
     return out
 
 
@@ -631,7 +640,8 @@ def blackboard(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "slot", "ground_hole", "screw"),
+@register("power_strip", parts=("body", "socket"), extra_parts=("switch", "cord", "plug", "indicator", "slot", "ground_hole", "screw",
+                                                              "keyhole", "foot", "reset_button"),
           size_range=(0.2, 0.56), density=900, variants=("four", "six", "surge"),
           placement="floor")
 def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -663,6 +673,16 @@ def power_strip(rng: np.random.Generator, variant: str) -> list[Part]:
                          M.solid((0.9, 0.2, 0.1), "plastic", 0.2)))
     # the two screws closing the case from underneath, their heads sunk flush with its bottom
     out += studs("screw", "screw", [(sx * L * 0.3, 0, 0.001) for sx in (-1, 1)], r=0.003, h=0.002, mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4))
+    # underneath: the two keyhole slots it hangs on a wall by and four rubber feet, all flush
+    out += [make_part(f"keyhole_{k}", "keyhole", S.box((0.012, 0.006, 0.001), center=(sx * L * 0.4, 0.01, 0.0005)), black())
+            for k, sx in enumerate((-1, 1))]
+    out += studs("foot", "foot", [(sx * (L / 2 - 0.015), sy * (w / 2 - 0.012), 0.001) for sx in (-1, 1) for sy in (-1, 1)],
+                 r=0.004, h=0.002, mat=M.solid((0.1, 0.1, 0.1), "rubber", 0.8))
+    if variant == "surge":  # the overload breaker's reset button and the "protected" light, flush in the top
+        out.append(make_part("reset_button", "reset_button", S.cylinder(0.006, 0.004, center=(L / 2 - 0.018, 0.018, h - 0.002),
+                                                                        sections=10), black()))
+        out.append(make_part("protected_light", "indicator", S.cylinder(0.003, 0.002, center=(-L / 2 + 0.015, -0.018, h - 0.001),
+                                                                        sections=8), M.solid((0.2, 0.8, 0.3), "plastic", 0.2)))
     return out
 
 
