@@ -129,7 +129,7 @@ def test_the_contract_rejects_an_upward_import(low, high):
 SOLVER_LEVELS: dict[str, int] = {
     "config": 0, "geometry": 0, "collision": 0, "library": 0, "walls": 0,
     "state": 1, "intent": 1,
-    "support": 2, "flush": 2,
+    "support": 2, "flush": 2, "bars": 2,
     "rules.base": 3,
     "rules.support": 4, "rules.contact": 4, "rules.alignment": 4, "rules.layout": 4,
     "rules": 5,

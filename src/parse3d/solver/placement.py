@@ -16,6 +16,7 @@ from ..geometry.meshes import MeshArrays, scaled_vertices
 from ..measure.checks import EPS, STEP, world_points
 from ..pag.model import Edge
 from ..scene.model import PlacedObject, SupportChoice
+from .bars import held_across
 from .choice import (
     SURFACE_AXES,
     alternative_instance,
@@ -489,7 +490,7 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
         region = RG.erode(region0, d.obst + holes, F)
         if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                 and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
-                and Polygon(F).area <= (STACK_OVER if d.stack else 1.5) \
+                and Polygon(F).area <= (STACK_OVER if d.stack or sup.spans else 1.5) \
                 * Polygon(st.xy[sup.owner]).area:
             region = _overhanging_region(d, step)
     if region.is_empty or region.area < 1e-10:
@@ -672,8 +673,9 @@ def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Ge
             # above the owner's low parts; the drop below brings it onto them or the surface
             t = s.origin + ab[0] * s.u + ab[1] * s.v + (h + d.lift + rise) * s.normal
         cand = PlacedObject(oid, asset.category, asset, scale, Rt, t)
-        if d.overhang and not base_supported(asset, scale, Rt, t, s, d.base_solid,
-                                             upright=rel == "ON"):
+        if d.overhang and not (
+                held_across(asset, scale, Rt, t, s, d.base_solid) if sup.spans and rel == "ON"
+                else base_supported(asset, scale, Rt, t, s, d.base_solid, upright=rel == "ON")):
             # tested before the drop, which moves the child along the normal only (the test
             # reads positions in the plane and heights relative to the lowest point)
             hung = hung + 1 if last == HANGS_OFF else 1
@@ -687,6 +689,9 @@ def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Ge
         if (rel == "ON" or rise) and sup.owner != "room":
             cand, dropped, why = _onto_parent(d, cand, rise)
             t = cand.position
+            if not why and d.overhang and sup.spans and rel == "ON" \
+                    and not held_across(asset, scale, Rt, t, s, d.base_solid, rests=True):
+                why = HANGS_OFF  # caught by something below the parts (a wheel on a rail)
             if why:
                 last = why
                 continue

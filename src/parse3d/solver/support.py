@@ -503,7 +503,10 @@ def _span(sups: list[Support]) -> Support | None:
             pieces.append(Polygon(np.c_[w @ s0.u, w @ s0.v]).buffer(0))
     union = shapely.union_all(pieces)
     hull = union.convex_hull
-    gaps = hull.difference(union)
+    # opened by a micrometre: the difference leaves zero-width spikes along the hull's edge,
+    # which would turn a gap's convex footprint over a part (a strap's corner cut off)
+    gaps = hull.difference(union).buffer(-1e-6, join_style="mitre").buffer(1e-6,
+                                                                          join_style="mitre")
     holes = [np.asarray(g.exterior.coords)[:-1] for g in getattr(gaps, "geoms", [gaps])
              if isinstance(g, Polygon) and not g.is_empty and g.area > 1e-8]
     return Support(replace(s0, polygon=hull), sups[0].choice, hull, holes=holes, spans=True)
