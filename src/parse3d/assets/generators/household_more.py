@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, drawer_parts, white
+from ._dC_keys import white_keys
 from ._detail_b import each, studs, tufts
 from ._household import ring, shell
 from ._kit import hinge_parts, revolute, rot
@@ -400,7 +401,9 @@ def digital_piano(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = black() if rng.uniform() < 0.7 else M.wood(rng)
     kh = rng.uniform(0.72, 0.78)
     out = [make_part("body", "body", S.box((w, d, 0.1), center=(0, 0, kh + 0.05), bevel=0.006), mat),
-           make_part("keyboard", "keyboard", S.box((w * 0.9, d * 0.5, 0.02), center=(0, d * 0.2, kh + 0.1 + 0.01)), white(rng, "plastic")),
+           # the key bed, the 52 white keys on it and the black keys above them
+           make_part("keyboard", "keyboard", S.box((w * 0.9, d * 0.5, 0.005), center=(0, d * 0.2, kh + 0.1 + 0.0025)), black()),
+           *white_keys(-w * 0.45, w * 0.45, y_front=d * 0.45, depth=d * 0.5, z0=kh + 0.105, z1=kh + 0.12, mat=white(rng, "plastic")),
            *each("key", "key", [S.box((0.012, d * 0.28, 0.012), center=(x, d * 0.08, kh + 0.126))
                                 for x in np.linspace(-w * 0.43, w * 0.43, 36)], black()),
            make_part("music_rest", "music_rest", S.box((w * 0.5, 0.01, 0.2), center=(0, -d * 0.3, kh + 0.2 + 0.1), R=rot((1, 0, 0), 0.2)),

@@ -14,15 +14,17 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._casework import black, felt
+from ._dC_keys import white_keys
 
 _BLACK_KEYS = (1, 3, 6, 8, 10)  # semitones of an octave that are black keys
 
 
 def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivory, ebony) -> list[Part]:
-    """The keys: the white key bed (``keyboard``) and the 36 raised black keys, each its own part
-    (``black_key_k``, label ``key``); ``z`` is the top of the white keys, ``y_front`` their front."""
+    """The keys: the key bed they rest on (``keyboard``), the 52 white keys on it and the 36
+    raised black keys, each key its own part (``white_key_k`` and ``black_key_k``, label ``key``);
+    ``z`` is the top of the white keys, ``y_front`` their front."""
     w = x1 - x0
-    shapes = [S.box((w, depth, 0.025), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.0125), bevel=0.002)]
+    shapes = [S.box((w, depth, 0.01), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.02), bevel=0.002)]
     n_white = 52
     kw = w / n_white
     octave_w = 7 * kw
@@ -35,8 +37,9 @@ def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivor
                 continue
             shapes.append(S.box((kw * 0.55, depth * 0.62, 0.012),
                                 center=(x, y_front - depth + depth * 0.31, z + 0.006)))
-    white = make_part("keyboard", "keyboard", shapes[0], ivory)
-    return [white] + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
+    bed = make_part("keyboard", "keyboard", shapes[0], ivory)
+    whites = white_keys(x0, x1, y_front=y_front, depth=depth, z0=z - 0.015, z1=z, mat=ivory, n=n_white)
+    return [bed] + whites + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
 
 
 def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndarray]:
