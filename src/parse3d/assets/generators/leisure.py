@@ -118,7 +118,7 @@ def piano(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pool_table", parts=("playing_surface", "rail", "leg"), extra_parts=("pocket", "body", "ball"),
+@register("pool_table", parts=("playing_surface", "rail", "leg"), extra_parts=("pocket", "body", "ball", "sight"),
           size_range=(1.8, 3.0), density=700, variants=("four_leg", "six_leg", "pedestal"))
 def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     pl = rng.uniform(1.8, 2.54) if variant != "four_leg" else rng.uniform(1.6, 2.0)  # play field length
@@ -153,6 +153,13 @@ def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, (x, y) in enumerate([(sx * pl / 2, sy * pw / 2) for sy in (-1, 1) for sx in (-1, 0, 1)]):
         cup = S.cylinder(pr, 0.1, center=(x, y, z_play + 0.001 - 0.05), sections=16)
         parts.append(make_part(f"pocket_{i}", "pocket", cup, pocket_m))
+    # the eighteen diamond sights inlaid flush in the rail tops, three between each pair of
+    # pockets
+    pearl = M.solid((0.93, 0.92, 0.88), "plastic", 0.2)
+    sights = [(pl * f, sy * (pw / 2 + rail_w / 2)) for sy in (-1, 1) for f in (-0.375, -0.25, -0.125, 0.125, 0.25, 0.375)]
+    sights += [(sx * (pl / 2 + rail_w / 2), pw * f) for sx in (-1, 1) for f in (-0.25, 0.0, 0.25)]
+    parts += [make_part(f"sight_{k}", "sight", S.box((0.012, 0.012, 0.0015), center=(x, y, h - 0.00075), R=axis_angle((0, 0, 1), np.pi / 4)),
+                        pearl) for k, (x, y) in enumerate(sights)]
     # a racked set of sixteen balls: fifteen in the triangle at the foot spot, the cue ball
     br = 0.0286
     ball_cols = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.8, 0.1, 0.1), (0.4, 0.1, 0.5), (0.95, 0.45, 0.1),
