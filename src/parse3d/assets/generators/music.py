@@ -198,7 +198,8 @@ def violin(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("amplifier", parts=("cabinet", "grille"), extra_parts=("knob", "handle", "control_panel", "foot", "head"),
+@register("amplifier", parts=("cabinet", "grille"), extra_parts=("knob", "handle", "control_panel", "foot", "head", "jack", "switch",
+                                                                 "light"),
           size_range=(0.3, 1.4), density=350, variants=("combo", "stack", "practice"))
 def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
     tolex = M.solid(M.jitter(rng, [(0.08, 0.08, 0.08), (0.85, 0.8, 0.7), (0.5, 0.1, 0.1)][int(rng.integers(3))], 0.02),
@@ -232,6 +233,15 @@ def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
         x = -w / 2 + 0.06 + (w - 0.12) * k / max(n - 1, 1)
         parts.append(make_part(f"knob_{k}", "knob", S.cylinder(0.01, 0.02, center=(x, yp + 0.012, zp), axis=(0, 1, 0),
                                                                sections=10), M.solid((0.05, 0.05, 0.05), "plastic")))
+    # beside the knobs: the two input jacks at the left end, the power switch and its jewel pilot
+    # light at the right
+    for k, x in enumerate((-w / 2 + 0.015, -w / 2 + 0.035)):
+        parts.append(make_part(f"jack_{k}", "jack", S.cylinder(0.006, 0.008, center=(x, yp + 0.008, zp), axis=(0, 1, 0), sections=10),
+                               chrome))
+    parts.append(make_part("switch", "switch", S.box((0.012, 0.012, 0.02), center=(w / 2 - 0.04, yp + 0.01, zp)),
+                           M.solid((0.05, 0.05, 0.05), "plastic")))
+    parts.append(make_part("light", "light", S.cylinder(0.006, 0.008, center=(w / 2 - 0.018, yp + 0.008, zp), axis=(0, 1, 0),
+                                                        sections=10), M.solid((0.8, 0.1, 0.1), "glass", 0.1)))
     hl = min(0.25, w * 0.4)
     parts.append(make_part("handle", "handle", S.tube([(-hl / 2, 0, zt - 0.002), (-hl / 2, 0, zt + 0.02),
                                                        (hl / 2, 0, zt + 0.02), (hl / 2, 0, zt - 0.002)], 0.008), tolex))
