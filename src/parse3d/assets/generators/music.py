@@ -45,8 +45,36 @@ def _drum(r: float, h: float, center, *, axis=(0, 0, 1)) -> S.Shape:
     return S.cylinder(r, h, center=center, axis=axis, sections=24)
 
 
+def _drum_hardware(name: str, r: float, h: float, center, mat: Material, *, n_lugs: int, lying: bool = False) -> list[Part]:
+    """A drum's two hoops (one each end) and its tension lugs round the shell: a standing drum's
+    hoops clamp outside the shell; a lying bass drum's sit flush with it, so the drum still rests
+    on its shell, and lugs that would reach the floor are left out."""
+    c = np.asarray(center, float)
+    out = []
+    T = np.eye(4)
+    T[:3, 3] = c
+    if lying:
+        T[:3, :3] = rot((1, 0, 0), np.pi / 2)
+    r0, r1 = (r - 0.01, r) if lying else (r, r + 0.008)
+    for k, e in enumerate((-1, 1)):
+        z = e * (h / 2 - 0.008)
+        sec = [(r0, z - 0.008), (r1, z - 0.008), (r1, z + 0.008), (r0, z + 0.008)]
+        out.append(make_part(f"hoop_{name}_{k}", "hoop", S.transformed(ring(sec, sections=16), T), mat))
+    rl = r + 0.006
+    lh = min(0.05, h * 0.35)
+    for a in np.linspace(0, 2 * np.pi, n_lugs, endpoint=False) + np.pi / n_lugs:
+        if lying:
+            if c[2] + np.sin(a) * rl - 0.01 < 0.002:
+                continue
+            lug = S.box((0.012, lh, 0.014), center=(c[0] + np.cos(a) * rl, c[1], c[2] + np.sin(a) * rl), R=rot((0, 1, 0), -a))
+        else:
+            lug = S.box((0.012, 0.014, lh), center=(c[0] + np.cos(a) * rl, c[1] + np.sin(a) * rl, c[2]), R=rot((0, 0, 1), a))
+        out.append(make_part(f"lug_{name}_{len(out) - 2}", "lug", lug, mat))
+    return out
+
+
 @register("drum_kit", parts=("bass_drum", "snare_drum", "cymbal", "seat"),
-          extra_parts=("tom", "stand", "leg", "pedal"), size_range=(1.0, 2.0), density=150,
+          extra_parts=("tom", "stand", "leg", "pedal", "hoop", "lug", "spur", "beater"), size_range=(1.0, 2.0), density=150,
           variants=("rock", "compact", "jazz"))
 def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = Material(M.jitter(rng, [(0.7, 0.1, 0.1), (0.1, 0.1, 0.12), (0.15, 0.25, 0.6),
@@ -55,13 +83,22 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
     k = {"rock": 1.0, "compact": 0.85, "jazz": 0.9}[variant]
     rb = {"rock": rng.uniform(0.25, 0.28), "compact": rng.uniform(0.2, 0.23), "jazz": rng.uniform(0.22, 0.25)}[variant]
-    parts = [make_part("bass_drum", "bass_drum", _drum(rb, rng.uniform(0.35, 0.45) * k, (0, 0.15, rb),
+    lb = rng.uniform(0.35, 0.45) * k
+    parts = [make_part("bass_drum", "bass_drum", _drum(rb, lb, (0, 0.15, rb),
                                                        axis=(0, 1, 0)), shell),
              make_part("pedal", "pedal", S.box((0.09, 0.28, 0.04), center=(0, -0.2, 0.02), bevel=0.005), chrome)]
+    parts += _drum_hardware("bass", rb, lb, (0, 0.15, rb), shell, n_lugs=10, lying=True)
+    # the two spurs bracing the bass drum, and the pedal's beater resting against its head
+    parts += [make_part(f"spur_{j}", "spur", S.tube([(sx * rb * 0.95, 0.15 - lb / 2 + 0.08, rb * 0.7), (sx * (rb + 0.06), -0.05, 0.008)],
+                                                     0.007, sections=8), chrome) for j, sx in enumerate((-1, 1))]
+    parts.append(make_part("beater", "beater", [S.tube([(0, -0.12, 0.04), (0, 0.15 - lb / 2 - 0.03, rb * 0.75)], 0.004, sections=6),
+                                                S.cylinder(0.025, 0.03, center=(0, 0.15 - lb / 2 - 0.017, rb * 0.75), axis=(0, 1, 0),
+                                                           sections=10)], chrome))
     zs = rng.uniform(0.58, 0.66)
     xs = -0.32 * k
     parts.append(make_part("snare_drum", "snare_drum", _drum(0.178, 0.14, (xs, -0.2, zs + 0.07)),
                            M.solid((0.75, 0.75, 0.76), "metal", 0.3, 0.8)))
+    parts += _drum_hardware("snare", 0.178, 0.14, (xs, -0.2, zs + 0.07), chrome, n_lugs=8)
     parts.append(make_part("stand_0", "stand", S.cylinder(0.011, zs - 0.02, center=(xs, -0.2, (zs - 0.02) / 2 + 0.01),
                                                           sections=10), chrome))
     parts += _tripod("leg_snare", xs, -0.2, top=0.3, spread=0.22, r=0.008, mat=chrome)
@@ -70,12 +107,14 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
         x = (t - (n_toms - 1) / 2) * 0.3
         parts.append(make_part(f"tom_{t}", "tom", _drum(0.14 - 0.01 * t, 0.18, (x, 0.1, 2 * rb + 0.12),
                                                          axis=(0, 0, 1)), shell))
+        parts += _drum_hardware(f"tom_{t}", 0.14 - 0.01 * t, 0.18, (x, 0.1, 2 * rb + 0.12), chrome, n_lugs=6)
     parts.append(make_part("stand_1", "stand", S.cylinder(0.012, 0.14, center=(0, 0.1, 2 * rb + 0.05), sections=10),
                            chrome))
     # floor tom on three legs
     rf = 0.19 * k
     fx = 0.45 * k
     parts.append(make_part("tom_floor", "tom", _drum(rf, 0.32 * k, (fx, -0.15, 0.28 + 0.16 * k)), shell))
+    parts += _drum_hardware("floor_tom", rf, 0.32 * k, (fx, -0.15, 0.28 + 0.16 * k), chrome, n_lugs=8)
     for i, (dx, dy) in enumerate([(rf + 0.01, 0.0), (-0.5 * rf, 0.87 * rf + 0.01), (-0.5 * rf, -0.87 * rf - 0.01)]):
         parts.append(make_part(f"leg_floor_tom_{i}", "leg",
                                S.tube([(fx + dx, -0.15 + dy, 0.55), (fx + dx * 1.25, -0.15 + dy * 1.25, 0.008)],
