@@ -335,8 +335,8 @@ def storage_organizer(rng: np.random.Generator, variant: str) -> list[Part | Joi
                             depth=d - 0.04, thick=0.012, mat=M.solid(M.jitter(rng, (0.9, 0.9, 0.92), 0.05), "plastic", 0.3),
                             handle_mat=mat, parent="frame")
     if ch:
-        out.append(make_part("caster", "caster", [S.cylinder(ch / 2, 0.02, center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), ch / 2),
-                                                             axis=(1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)], black("rubber")))
+        out += each("caster", "caster", [S.cylinder(ch / 2, 0.02, center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), ch / 2),
+                                                    axis=(1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)], black("rubber"))
     return out
 
 
@@ -358,6 +358,11 @@ def room_divider(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         c = np.array([x + pw * np.cos(ang) / 2, 0.0, h / 2 + 0.03])
         R = rot((0, 0, 1), a)
         out.append(make_part(f"panel_{k}", "panel", [S.box((pw, t, h), center=c, R=R)], fill))
+        # the panel's wooden frame round the fill: two stiles and the top and bottom rails
+        members = [((0.035, t + 0.006, h), (sx * (pw / 2 - 0.0175), 0.0, 0.0)) for sx in (-1, 1)]
+        members += [((pw - 0.07, t + 0.006, 0.05), (0.0, 0.0, sz * (h / 2 - 0.025))) for sz in (-1, 1)]
+        out += [make_part(f"panel_{k}_{nm}", "frame", S.box(size, center=c + R @ np.asarray(off), R=R), wood)
+                for nm, (size, off) in zip(("stile_0", "stile_1", "bottom_rail", "top_rail"), members, strict=True)]
         out.append(make_part(f"panel_{k}_foot", "foot", S.box((0.05, 0.06, 0.03), center=(c[0], 0, 0.015)), wood))
         if prev is not None:
             xh = x
