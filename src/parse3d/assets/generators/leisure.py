@@ -16,8 +16,6 @@ from ..registry import register
 from ._casework import black, felt
 from ._dC_keys import white_keys
 
-_BLACK_KEYS = (1, 3, 6, 8, 10)  # semitones of an octave that are black keys
-
 
 def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivory, ebony) -> list[Part]:
     """The keys: the key bed they rest on (``keyboard``), the 52 white keys on it and the 36
@@ -27,16 +25,11 @@ def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivor
     shapes = [S.box((w, depth, 0.01), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.02), bevel=0.002)]
     n_white = 52
     kw = w / n_white
-    octave_w = 7 * kw
-    for o in range(int(np.ceil(n_white / 7))):
-        for s in _BLACK_KEYS:
-            # black keys sit between white keys: C# after white 0, D# after 1, F# after 3 ...
-            after = {1: 0, 3: 1, 6: 3, 8: 4, 10: 5}[s]
-            x = x0 + o * octave_w + (after + 1) * kw
-            if x > x1 - kw * 0.5:
-                continue
+    for i in range(n_white - 1):
+        # the keyboard runs A0 to C8: a black key follows every A, C, D, F and G (A#0 to A#7)
+        if "ABCDEFG"[i % 7] in "ACDFG":
             shapes.append(S.box((kw * 0.55, depth * 0.62, 0.012),
-                                center=(x, y_front - depth + depth * 0.31, z + 0.006)))
+                                center=(x0 + (i + 1) * kw, y_front - depth + depth * 0.31, z + 0.006)))
     bed = make_part("keyboard", "keyboard", shapes[0], ivory)
     whites = white_keys(x0, x1, y_front=y_front, depth=depth, z0=z - 0.015, z1=z, mat=ivory, n=n_white)
     return [bed] + whites + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
