@@ -47,19 +47,21 @@ def _drum(r: float, h: float, center, *, axis=(0, 0, 1)) -> S.Shape:
 
 def _drum_hardware(name: str, r: float, h: float, center, mat: Material, *, n_lugs: int, lying: bool = False) -> list[Part]:
     """A drum's two hoops (one each end) and its tension lugs round the shell: a standing drum's
-    hoops clamp outside the shell; a lying bass drum's sit flush with it, so the drum still rests
+    hoops clamp outside the shell, flush with its ends (each hoop with the head inside it, one
+    collision piece); a lying bass drum's are rings flush with its shell, so the drum still rests
     on its shell, and lugs that would reach the floor are left out."""
     c = np.asarray(center, float)
     out = []
     T = np.eye(4)
     T[:3, 3] = c
-    if lying:
-        T[:3, :3] = rot((1, 0, 0), np.pi / 2)
-    r0, r1 = (r - 0.01, r) if lying else (r, r + 0.008)
+    T[:3, :3] = rot((1, 0, 0), np.pi / 2)
     for k, e in enumerate((-1, 1)):
         z = e * (h / 2 - 0.008)
-        sec = [(r0, z - 0.008), (r1, z - 0.008), (r1, z + 0.008), (r0, z + 0.008)]
-        out.append(make_part(f"hoop_{name}_{k}", "hoop", S.transformed(ring(sec, sections=16), T), mat))
+        if lying:
+            hoop = S.transformed(ring([(r - 0.01, z - 0.008), (r, z - 0.008), (r, z + 0.008), (r - 0.01, z + 0.008)], sections=16), T)
+        else:
+            hoop = S.cylinder(r + 0.008, 0.016, center=c + (0, 0, z), sections=24)
+        out.append(make_part(f"hoop_{name}_{k}", "hoop", hoop, mat))
     rl = r + 0.006
     lh = min(0.05, h * 0.35)
     for a in np.linspace(0, 2 * np.pi, n_lugs, endpoint=False) + np.pi / n_lugs:
