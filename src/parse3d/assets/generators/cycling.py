@@ -111,9 +111,9 @@ def bicycle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("handlebar", "handlebar", segments([bar_c + (back, -hw, 0.02), bar_c + (0, -0.1, 0), bar_c + (0, 0.1, 0),
                                                                    bar_c + (back, hw, 0.02)], 0.012), alu))
         grips = [bar_c + (back, sy * (hw - 0.05), 0.02) for sy in (-1, 1)]
-    for k, g in enumerate(grips):  # each grip with its brake lever
+    for k, g in enumerate(grips):  # each grip with its brake lever (no wider than the bar it is on)
         sy = 1 if k == 1 else -1
-        lever = (S.box((0.025, 0.03, 0.06), center=tuple(bar_c + (0.075, sy * hw, -0.055)), R=rot((0, 1, 0), 0.3)) if variant == "road"
+        lever = (S.box((0.025, 0.022, 0.06), center=tuple(bar_c + (0.075, sy * hw, -0.055)), R=rot((0, 1, 0), 0.3)) if variant == "road"
                  else S.box((0.014, 0.1, 0.012), center=tuple(g + (0.045, -sy * 0.01, -0.005)), R=rot((0, 0, 1), -sy * 0.2)))
         parts.append(make_part(f"brake_lever_{k}", "brake_lever", lever, alu))
         if variant == "road":
