@@ -104,7 +104,7 @@ def cello(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("drum", parts=("shell", "head"), extra_parts=("rim", "lug", "stand", "leg", "ring", "rope", "strainer", "tension_rod",
-                                                     "badge", "vent"), size_range=(0.3, 0.75), density=300,
+                                                     "badge", "vent", "resonant_head"), size_range=(0.3, 0.75), density=300,
           variants=("snare", "floor_tom", "djembe"), placement="floor")
 def drum(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "djembe":
@@ -155,6 +155,13 @@ def drum(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                            center=(np.cos(a) * rr, np.sin(a) * rr,
                                                                                    z0 + dh - (dh / 2 - lh / 2 + 0.004) / 2 + 0.002),
                                                                            sections=6), steel))
+        # and the bottom hoop's rod up into the same lug
+        out.append(make_part(f"tension_rod_{n_lugs + k}", "tension_rod", S.cylinder(0.003, dh / 2 - lh / 2 + 0.004,
+                                                                                    center=(np.cos(a) * rr, np.sin(a) * rr,
+                                                                                            z0 + (dh / 2 - lh / 2 + 0.004) / 2 - 0.002),
+                                                                                    sections=6), steel))
+    # the resonant head under the shell, held by the bottom hoop
+    out.append(_c("resonant_head", "resonant_head", r * 1.01, 0.004, (0, 0, z0 - 0.002 + 0.004), white(rng, "plastic"), sections=28))
     # the maker's badge with the air vent through the shell, on the back
     out.append(_b("badge", "badge", (0.04, 0.002, 0.025), (0, -r - 0.001, z0 + dh * 0.5), M.solid((0.8, 0.7, 0.3), "metal", 0.3, 0.9)))
     out.append(make_part("vent", "vent", S.cylinder(0.005, 0.003, center=(0, -r - 0.0025, z0 + dh * 0.5 + 0.02), axis=(0, 1, 0),

@@ -31,7 +31,7 @@ def _wheel_ring(c, R: float, half: float) -> S.Shape:
 
 @register("bicycle", parts=("wheel", "frame", "handlebar", "saddle"),
           extra_parts=("rim", "hub", "spoke", "fork", "stem", "seat_post", "crank", "pedal", "chainring", "grip", "kickstand",
-                       "fender", "basket", "chain"),
+                       "fender", "basket", "chain", "valve", "brake", "brake_lever", "cassette", "derailleur"),
           size_range=(1.4, 1.95), density=120, variants=("city", "road", "mountain"))
 def bicycle(rng: np.random.Generator, variant: str) -> list[Part]:
     paint = Material(M.jitter(rng, [(0.1, 0.3, 0.6), (0.7, 0.1, 0.1), (0.1, 0.1, 0.1), (0.85, 0.85, 0.85), (0.2, 0.45, 0.3)]
@@ -51,12 +51,26 @@ def bicycle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"hub_{k}", "hub", S.cylinder(0.022, 0.1, center=c, axis=(0, 1, 0), sections=12), alu))
         rs = R - 2 * tyre - 0.018
         spokes = []
-        for s in range(8):
-            a = 2 * np.pi * s / 8
+        for s in range(32):  # 32 spokes, laced alternately to the left and right hub flanges
+            a = 2 * np.pi * s / 32
             side = 0.03 if s % 2 else -0.03
             spokes.append(rod((x + 0.02 * np.cos(a), side, zA + 0.02 * np.sin(a)), (x + rs * np.cos(a), 0.0, zA + rs * np.sin(a)),
                               0.0015, sections=5))
         parts += each(f"spoke_{k}", "spoke", spokes, alu)  # each spoke a piece of its own
+        # the tyre's valve through the rim at the bottom, and the rim-brake caliper gripping the
+        # rim just behind the top of the wheel
+        r_in = R - 2 * tyre - 0.018
+        parts.append(make_part(f"valve_{k}", "valve", S.cylinder(0.003, 0.026, center=(x, 0.0, zA - r_in + 0.011), sections=8),
+                               M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+        ab = np.deg2rad(100 if k == 1 else 80)
+        rb = R - 2 * tyre - 0.009
+        parts.append(make_part(f"brake_{k}", "brake", S.box((0.03, 0.05, 0.035), center=(x + rb * np.cos(ab), 0.0, zA + rb * np.sin(ab)),
+                                                              R=rot((0, 1, 0), np.pi / 2 - ab)), M.solid((0.2, 0.2, 0.22), "metal", 0.4, 0.7)))
+    # the sprocket cassette on the rear hub's drive side and the rear derailleur hanging below it
+    parts.append(make_part("cassette", "cassette", S.cylinder(0.05, 0.03, center=(xr, 0.045, zA), axis=(0, 1, 0), sections=16),
+                           M.solid((0.6, 0.6, 0.62), "metal", 0.3, 0.9)))
+    parts.append(make_part("derailleur", "derailleur", S.box((0.03, 0.015, 0.07), center=(xr + 0.01, 0.07, zA - 0.075)),
+                           M.solid((0.25, 0.25, 0.27), "metal", 0.4, 0.8)))
     # frame geometry: bottom bracket, seat cluster, head tube
     bb = np.array([xr + 0.42, 0.0, 0.28])
     st_top = np.array([bb[0] - 0.12, 0.0, bb[2] + 0.5])
@@ -97,7 +111,11 @@ def bicycle(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("handlebar", "handlebar", segments([bar_c + (back, -hw, 0.02), bar_c + (0, -0.1, 0), bar_c + (0, 0.1, 0),
                                                                    bar_c + (back, hw, 0.02)], 0.012), alu))
         grips = [bar_c + (back, sy * (hw - 0.05), 0.02) for sy in (-1, 1)]
-    for k, g in enumerate(grips):
+    for k, g in enumerate(grips):  # each grip with its brake lever (no wider than the bar it is on)
+        sy = 1 if k == 1 else -1
+        lever = (S.box((0.025, 0.022, 0.06), center=tuple(bar_c + (0.075, sy * hw, -0.055)), R=rot((0, 1, 0), 0.3)) if variant == "road"
+                 else S.box((0.014, 0.1, 0.012), center=tuple(g + (0.045, -sy * 0.01, -0.005)), R=rot((0, 0, 1), -sy * 0.2)))
+        parts.append(make_part(f"brake_lever_{k}", "brake_lever", lever, alu))
         if variant == "road":
             parts.append(make_part(f"grip_{k}", "grip", S.cylinder(0.016, 0.06, center=tuple(g), axis=(1, 0, 0), sections=10), rubber))
         else:

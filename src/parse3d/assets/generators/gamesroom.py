@@ -270,6 +270,11 @@ def game_controller(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"button_{k}", "button", S.cylinder(0.004, 0.004, center=(w * 0.3 + dx, 0.012 + dy, zt + 0.002),
                                                                     sections=10),
                                M.solid([(0.9, 0.75, 0.1), (0.8, 0.15, 0.15), (0.1, 0.6, 0.2), (0.15, 0.3, 0.8)][k], "plastic", 0.3)))
+    # the select and start buttons either side of the centre and the home button between the sticks
+    small = M.solid((0.2, 0.2, 0.22), "plastic", 0.4)
+    parts += [make_part(f"button_{4 + k}", "button", S.box((0.007, 0.004, 0.003), center=(sx * 0.024, 0.018, zt + 0.0015)), small)
+              for k, sx in enumerate((-1, 1))]
+    parts.append(make_part("button_6", "button", S.cylinder(0.005, 0.003, center=(0, -0.01, zt + 0.0015), sections=12), small))
     if variant == "gamepad":
         parts.append(make_part("touchpad", "touchpad", S.box((0.035, 0.02, 0.002), center=(0, 0.022, zt + 0.001)), dark))
         parts.append(make_part("light", "light", S.box((0.02, 0.002, 0.003), center=(0, 0.01 + d / 2 + 0.001, h * 0.5)),

@@ -251,6 +251,12 @@ def coat_hook(rng: np.random.Generator, variant: str) -> list[Part]:
         # out from the plate, down a little, then up to a knobbed tip: coats hang from the bottom bend
         path = [(x, y0 - 0.002, zc), (x, y0 + reach * 0.7, zc - 0.02), (x, y0 + reach, zc + 0.01)]
         parts.append(make_part(f"hook_{k}", "hook", segments(path, r), metal))
+        if variant == "rail":  # each hook's own base plate screwed to the board, a screw above and below
+            parts.append(make_part(f"hook_plate_{k}", "plate", S.box((0.02, 0.003, 0.05), center=(x, y0 + 0.0015, zc), bevel=0.001),
+                                   metal))
+            parts += [make_part(f"hook_screw_{k}_{j}", "screw", S.cylinder(0.0035, 0.0015, center=(x, y0 + 0.00375, zc + sz * 0.018),
+                                                                           axis=(0, 1, 0), sections=8), metal)
+                      for j, sz in enumerate((-1, 1))]
         parts.append(make_part(f"tip_{k}", "tip", S.ellipsoid((r * 1.6, r * 1.6, r * 1.6), center=(x, y0 + reach, zc + 0.01 + r),
                                                               subdivisions=1), metal))
         if variant == "double":  # the upper, shorter arm for a hat

@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, drawer_parts, white
+from ._dC_keys import white_keys
 from ._detail_b import each, studs, tufts
 from ._household import ring, shell
 from ._kit import hinge_parts, revolute, rot
@@ -334,8 +335,8 @@ def storage_organizer(rng: np.random.Generator, variant: str) -> list[Part | Joi
                             depth=d - 0.04, thick=0.012, mat=M.solid(M.jitter(rng, (0.9, 0.9, 0.92), 0.05), "plastic", 0.3),
                             handle_mat=mat, parent="frame")
     if ch:
-        out.append(make_part("caster", "caster", [S.cylinder(ch / 2, 0.02, center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), ch / 2),
-                                                             axis=(1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)], black("rubber")))
+        out += each("caster", "caster", [S.cylinder(ch / 2, 0.02, center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), ch / 2),
+                                                    axis=(1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)], black("rubber"))
     return out
 
 
@@ -357,6 +358,11 @@ def room_divider(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         c = np.array([x + pw * np.cos(ang) / 2, 0.0, h / 2 + 0.03])
         R = rot((0, 0, 1), a)
         out.append(make_part(f"panel_{k}", "panel", [S.box((pw, t, h), center=c, R=R)], fill))
+        # the panel's wooden frame round the fill: two stiles and the top and bottom rails
+        members = [((0.035, t + 0.006, h), (sx * (pw / 2 - 0.0175), 0.0, 0.0)) for sx in (-1, 1)]
+        members += [((pw - 0.07, t + 0.006, 0.05), (0.0, 0.0, sz * (h / 2 - 0.025))) for sz in (-1, 1)]
+        out += [make_part(f"panel_{k}_{nm}", "frame", S.box(size, center=c + R @ np.asarray(off), R=R), wood)
+                for nm, (size, off) in zip(("stile_0", "stile_1", "bottom_rail", "top_rail"), members, strict=True)]
         out.append(make_part(f"panel_{k}_foot", "foot", S.box((0.05, 0.06, 0.03), center=(c[0], 0, 0.015)), wood))
         if prev is not None:
             xh = x
@@ -400,7 +406,9 @@ def digital_piano(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = black() if rng.uniform() < 0.7 else M.wood(rng)
     kh = rng.uniform(0.72, 0.78)
     out = [make_part("body", "body", S.box((w, d, 0.1), center=(0, 0, kh + 0.05), bevel=0.006), mat),
-           make_part("keyboard", "keyboard", S.box((w * 0.9, d * 0.5, 0.02), center=(0, d * 0.2, kh + 0.1 + 0.01)), white(rng, "plastic")),
+           # the key bed, the 52 white keys on it and the black keys above them
+           make_part("keyboard", "keyboard", S.box((w * 0.9, d * 0.5, 0.005), center=(0, d * 0.2, kh + 0.1 + 0.0025)), black()),
+           *white_keys(-w * 0.45, w * 0.45, y_front=d * 0.45, depth=d * 0.5, z0=kh + 0.105, z1=kh + 0.12, mat=white(rng, "plastic")),
            *each("key", "key", [S.box((0.012, d * 0.28, 0.012), center=(x, d * 0.08, kh + 0.126))
                                 for x in np.linspace(-w * 0.43, w * 0.43, 36)], black()),
            make_part("music_rest", "music_rest", S.box((w * 0.5, 0.01, 0.2), center=(0, -d * 0.3, kh + 0.2 + 0.1), R=rot((1, 0, 0), 0.2)),

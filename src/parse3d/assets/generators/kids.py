@@ -16,7 +16,7 @@ from ..registry import register
 from ._kit import rot
 
 
-@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=(),
+@register("picture_book", parts=("front_cover", "back_cover", "spine", "pages"), extra_parts=("endpaper", "headband"),
           size_range=(0.15, 0.36), density=650,
           variants=("square", "landscape", "board_book"), placement="surface")
 def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -27,11 +27,20 @@ def picture_book(rng: np.random.Generator, variant: str) -> list[Part]:
     c = 0.003 if variant != "board_book" else 0.004
     art = M.paper(rng)
     pages = M.solid((0.96, 0.95, 0.9), "paper", 0.9)
-    return [make_part("front_cover", "front_cover", S.box((w - c, c, h), center=(c / 2, t / 2 - c / 2, h / 2)), art),
-            make_part("back_cover", "back_cover", S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2)), art),
-            make_part("spine", "spine", S.box((c, t, h), center=(-w / 2 + c / 2, 0, h / 2)), art),
-            make_part("pages", "pages", S.box((w - c - 0.003, t - 2 * c, h - 0.006), center=(-w / 2 + c + (w - c - 0.003) / 2, 0, h / 2)),
-                      pages)]
+    pw = w - c - 0.003
+    out = [make_part("front_cover", "front_cover", S.box((w - c, c, h), center=(c / 2, t / 2 - c / 2, h / 2)), art),
+           make_part("back_cover", "back_cover", S.box((w - c, c, h), center=(c / 2, -t / 2 + c / 2, h / 2)), art),
+           make_part("spine", "spine", S.box((c, t, h), center=(-w / 2 + c / 2, 0, h / 2)), art),
+           make_part("pages", "pages", S.box((pw, t - 2 * c, h - 0.006), center=(-w / 2 + c + pw / 2, 0, h / 2)), pages)]
+    # the coloured endpapers pasted inside each cover, the first and last leaves of the block
+    endpaper = M.paper(rng)
+    out += [make_part(f"endpaper_{k}", "endpaper", S.box((pw, 0.0004, h - 0.006), center=(-w / 2 + c + pw / 2, sy * (t / 2 - c - 0.0002), h / 2)),
+                      endpaper) for k, sy in enumerate((1, -1))]
+    if variant != "board_book":  # a cased book: the headbands at the head and tail of the spine
+        band = M.solid((0.7, 0.15, 0.15), "fabric", 0.8)
+        out += [make_part(f"headband_{k}", "headband", S.box((0.003, t - 2 * c, 0.0025), center=(-w / 2 + c + 0.0015, 0, z)), band)
+                for k, z in enumerate((0.0015, h - 0.0015))]
+    return out
 
 
 @register("toy_blocks", parts=("block",), extra_parts=("letter",), size_range=(0.08, 0.4), density=600,

@@ -14,29 +14,25 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._casework import black, felt
-
-_BLACK_KEYS = (1, 3, 6, 8, 10)  # semitones of an octave that are black keys
+from ._dC_keys import white_keys
 
 
 def _keyboard(x0: float, x1: float, y_front: float, z: float, depth: float, ivory, ebony) -> list[Part]:
-    """The keys: the white key bed (``keyboard``) and the 36 raised black keys, each its own part
-    (``black_key_k``, label ``key``); ``z`` is the top of the white keys, ``y_front`` their front."""
+    """The keys: the key bed they rest on (``keyboard``), the 52 white keys on it and the 36
+    raised black keys, each key its own part (``white_key_k`` and ``black_key_k``, label ``key``);
+    ``z`` is the top of the white keys, ``y_front`` their front."""
     w = x1 - x0
-    shapes = [S.box((w, depth, 0.025), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.0125), bevel=0.002)]
+    shapes = [S.box((w, depth, 0.01), center=((x0 + x1) / 2, y_front - depth / 2, z - 0.02), bevel=0.002)]
     n_white = 52
     kw = w / n_white
-    octave_w = 7 * kw
-    for o in range(int(np.ceil(n_white / 7))):
-        for s in _BLACK_KEYS:
-            # black keys sit between white keys: C# after white 0, D# after 1, F# after 3 ...
-            after = {1: 0, 3: 1, 6: 3, 8: 4, 10: 5}[s]
-            x = x0 + o * octave_w + (after + 1) * kw
-            if x > x1 - kw * 0.5:
-                continue
+    for i in range(n_white - 1):
+        # the keyboard runs A0 to C8: a black key follows every A, C, D, F and G (A#0 to A#7)
+        if "ABCDEFG"[i % 7] in "ACDFG":
             shapes.append(S.box((kw * 0.55, depth * 0.62, 0.012),
-                                center=(x, y_front - depth + depth * 0.31, z + 0.006)))
-    white = make_part("keyboard", "keyboard", shapes[0], ivory)
-    return [white] + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
+                                center=(x0 + (i + 1) * kw, y_front - depth + depth * 0.31, z + 0.006)))
+    bed = make_part("keyboard", "keyboard", shapes[0], ivory)
+    whites = white_keys(x0, x1, y_front=y_front, depth=depth, z0=z - 0.015, z1=z, mat=ivory, n=n_white)
+    return [bed] + whites + [make_part(f"black_key_{k}", "key", sh, ebony) for k, sh in enumerate(shapes[1:])]
 
 
 def _grand_outline(w: float, length: float, n: int) -> tuple[np.ndarray, np.ndarray]:
@@ -115,7 +111,7 @@ def piano(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pool_table", parts=("playing_surface", "rail", "leg"), extra_parts=("pocket", "body", "ball"),
+@register("pool_table", parts=("playing_surface", "rail", "leg"), extra_parts=("pocket", "body", "ball", "sight"),
           size_range=(1.8, 3.0), density=700, variants=("four_leg", "six_leg", "pedestal"))
 def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     pl = rng.uniform(1.8, 2.54) if variant != "four_leg" else rng.uniform(1.6, 2.0)  # play field length
@@ -150,6 +146,13 @@ def pool_table(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, (x, y) in enumerate([(sx * pl / 2, sy * pw / 2) for sy in (-1, 1) for sx in (-1, 0, 1)]):
         cup = S.cylinder(pr, 0.1, center=(x, y, z_play + 0.001 - 0.05), sections=16)
         parts.append(make_part(f"pocket_{i}", "pocket", cup, pocket_m))
+    # the eighteen diamond sights inlaid flush in the rail tops, three between each pair of
+    # pockets
+    pearl = M.solid((0.93, 0.92, 0.88), "plastic", 0.2)
+    sights = [(pl * f, sy * (pw / 2 + rail_w / 2)) for sy in (-1, 1) for f in (-0.375, -0.25, -0.125, 0.125, 0.25, 0.375)]
+    sights += [(sx * (pl / 2 + rail_w / 2), pw * f) for sx in (-1, 1) for f in (-0.25, 0.0, 0.25)]
+    parts += [make_part(f"sight_{k}", "sight", S.box((0.012, 0.012, 0.0015), center=(x, y, h - 0.00075), R=axis_angle((0, 0, 1), np.pi / 4)),
+                        pearl) for k, (x, y) in enumerate(sights)]
     # a racked set of sixteen balls: fifteen in the triangle at the foot spot, the cue ball
     br = 0.0286
     ball_cols = [(0.95, 0.8, 0.1), (0.1, 0.2, 0.7), (0.8, 0.1, 0.1), (0.4, 0.1, 0.5), (0.95, 0.45, 0.1),

@@ -45,8 +45,38 @@ def _drum(r: float, h: float, center, *, axis=(0, 0, 1)) -> S.Shape:
     return S.cylinder(r, h, center=center, axis=axis, sections=24)
 
 
+def _drum_hardware(name: str, r: float, h: float, center, mat: Material, *, n_lugs: int, lying: bool = False) -> list[Part]:
+    """A drum's two hoops (one each end) and its tension lugs round the shell: a standing drum's
+    hoops clamp outside the shell, flush with its ends (each hoop with the head inside it, one
+    collision piece); a lying bass drum's are rings flush with its shell, so the drum still rests
+    on its shell, and lugs that would reach the floor are left out."""
+    c = np.asarray(center, float)
+    out = []
+    T = np.eye(4)
+    T[:3, 3] = c
+    T[:3, :3] = rot((1, 0, 0), np.pi / 2)
+    for k, e in enumerate((-1, 1)):
+        z = e * (h / 2 - 0.008)
+        if lying:
+            hoop = S.transformed(ring([(r - 0.01, z - 0.008), (r, z - 0.008), (r, z + 0.008), (r - 0.01, z + 0.008)], sections=16), T)
+        else:
+            hoop = S.cylinder(r + 0.008, 0.016, center=c + (0, 0, z), sections=24)
+        out.append(make_part(f"hoop_{name}_{k}", "hoop", hoop, mat))
+    rl = r + 0.006
+    lh = min(0.05, h * 0.35)
+    for a in np.linspace(0, 2 * np.pi, n_lugs, endpoint=False) + np.pi / n_lugs:
+        if lying:
+            if c[2] + np.sin(a) * rl - 0.01 < 0.002:
+                continue
+            lug = S.box((0.012, lh, 0.014), center=(c[0] + np.cos(a) * rl, c[1], c[2] + np.sin(a) * rl), R=rot((0, 1, 0), -a))
+        else:
+            lug = S.box((0.012, 0.014, lh), center=(c[0] + np.cos(a) * rl, c[1] + np.sin(a) * rl, c[2]), R=rot((0, 0, 1), a))
+        out.append(make_part(f"lug_{name}_{len(out) - 2}", "lug", lug, mat))
+    return out
+
+
 @register("drum_kit", parts=("bass_drum", "snare_drum", "cymbal", "seat"),
-          extra_parts=("tom", "stand", "leg", "pedal"), size_range=(1.0, 2.0), density=150,
+          extra_parts=("tom", "stand", "leg", "pedal", "hoop", "lug", "spur", "beater"), size_range=(1.0, 2.0), density=150,
           variants=("rock", "compact", "jazz"))
 def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     shell = Material(M.jitter(rng, [(0.7, 0.1, 0.1), (0.1, 0.1, 0.12), (0.15, 0.25, 0.6),
@@ -55,13 +85,22 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
     brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
     k = {"rock": 1.0, "compact": 0.85, "jazz": 0.9}[variant]
     rb = {"rock": rng.uniform(0.25, 0.28), "compact": rng.uniform(0.2, 0.23), "jazz": rng.uniform(0.22, 0.25)}[variant]
-    parts = [make_part("bass_drum", "bass_drum", _drum(rb, rng.uniform(0.35, 0.45) * k, (0, 0.15, rb),
+    lb = rng.uniform(0.35, 0.45) * k
+    parts = [make_part("bass_drum", "bass_drum", _drum(rb, lb, (0, 0.15, rb),
                                                        axis=(0, 1, 0)), shell),
              make_part("pedal", "pedal", S.box((0.09, 0.28, 0.04), center=(0, -0.2, 0.02), bevel=0.005), chrome)]
+    parts += _drum_hardware("bass", rb, lb, (0, 0.15, rb), shell, n_lugs=10, lying=True)
+    # the two spurs bracing the bass drum, and the pedal's beater resting against its head
+    parts += [make_part(f"spur_{j}", "spur", S.tube([(sx * rb * 0.95, 0.15 - lb / 2 + 0.08, rb * 0.7), (sx * (rb + 0.06), -0.05, 0.008)],
+                                                     0.007, sections=8), chrome) for j, sx in enumerate((-1, 1))]
+    parts.append(make_part("beater", "beater", [S.tube([(0, -0.12, 0.04), (0, 0.15 - lb / 2 - 0.03, rb * 0.75)], 0.004, sections=6),
+                                                S.cylinder(0.025, 0.03, center=(0, 0.15 - lb / 2 - 0.017, rb * 0.75), axis=(0, 1, 0),
+                                                           sections=10)], chrome))
     zs = rng.uniform(0.58, 0.66)
     xs = -0.32 * k
     parts.append(make_part("snare_drum", "snare_drum", _drum(0.178, 0.14, (xs, -0.2, zs + 0.07)),
                            M.solid((0.75, 0.75, 0.76), "metal", 0.3, 0.8)))
+    parts += _drum_hardware("snare", 0.178, 0.14, (xs, -0.2, zs + 0.07), chrome, n_lugs=8)
     parts.append(make_part("stand_0", "stand", S.cylinder(0.011, zs - 0.02, center=(xs, -0.2, (zs - 0.02) / 2 + 0.01),
                                                           sections=10), chrome))
     parts += _tripod("leg_snare", xs, -0.2, top=0.3, spread=0.22, r=0.008, mat=chrome)
@@ -70,12 +109,14 @@ def drum_kit(rng: np.random.Generator, variant: str) -> list[Part]:
         x = (t - (n_toms - 1) / 2) * 0.3
         parts.append(make_part(f"tom_{t}", "tom", _drum(0.14 - 0.01 * t, 0.18, (x, 0.1, 2 * rb + 0.12),
                                                          axis=(0, 0, 1)), shell))
+        parts += _drum_hardware(f"tom_{t}", 0.14 - 0.01 * t, 0.18, (x, 0.1, 2 * rb + 0.12), chrome, n_lugs=6)
     parts.append(make_part("stand_1", "stand", S.cylinder(0.012, 0.14, center=(0, 0.1, 2 * rb + 0.05), sections=10),
                            chrome))
     # floor tom on three legs
     rf = 0.19 * k
     fx = 0.45 * k
     parts.append(make_part("tom_floor", "tom", _drum(rf, 0.32 * k, (fx, -0.15, 0.28 + 0.16 * k)), shell))
+    parts += _drum_hardware("floor_tom", rf, 0.32 * k, (fx, -0.15, 0.28 + 0.16 * k), chrome, n_lugs=8)
     for i, (dx, dy) in enumerate([(rf + 0.01, 0.0), (-0.5 * rf, 0.87 * rf + 0.01), (-0.5 * rf, -0.87 * rf - 0.01)]):
         parts.append(make_part(f"leg_floor_tom_{i}", "leg",
                                S.tube([(fx + dx, -0.15 + dy, 0.55), (fx + dx * 1.25, -0.15 + dy * 1.25, 0.008)],
@@ -198,7 +239,8 @@ def violin(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("amplifier", parts=("cabinet", "grille"), extra_parts=("knob", "handle", "control_panel", "foot", "head"),
+@register("amplifier", parts=("cabinet", "grille"), extra_parts=("knob", "handle", "control_panel", "foot", "head", "jack", "switch",
+                                                                 "light"),
           size_range=(0.3, 1.4), density=350, variants=("combo", "stack", "practice"))
 def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
     tolex = M.solid(M.jitter(rng, [(0.08, 0.08, 0.08), (0.85, 0.8, 0.7), (0.5, 0.1, 0.1)][int(rng.integers(3))], 0.02),
@@ -232,6 +274,15 @@ def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
         x = -w / 2 + 0.06 + (w - 0.12) * k / max(n - 1, 1)
         parts.append(make_part(f"knob_{k}", "knob", S.cylinder(0.01, 0.02, center=(x, yp + 0.012, zp), axis=(0, 1, 0),
                                                                sections=10), M.solid((0.05, 0.05, 0.05), "plastic")))
+    # beside the knobs: the two input jacks at the left end, the power switch and its jewel pilot
+    # light at the right
+    for k, x in enumerate((-w / 2 + 0.015, -w / 2 + 0.035)):
+        parts.append(make_part(f"jack_{k}", "jack", S.cylinder(0.006, 0.008, center=(x, yp + 0.008, zp), axis=(0, 1, 0), sections=10),
+                               chrome))
+    parts.append(make_part("switch", "switch", S.box((0.012, 0.012, 0.02), center=(w / 2 - 0.04, yp + 0.01, zp)),
+                           M.solid((0.05, 0.05, 0.05), "plastic")))
+    parts.append(make_part("light", "light", S.cylinder(0.006, 0.008, center=(w / 2 - 0.018, yp + 0.008, zp), axis=(0, 1, 0),
+                                                        sections=10), M.solid((0.8, 0.1, 0.1), "glass", 0.1)))
     hl = min(0.25, w * 0.4)
     parts.append(make_part("handle", "handle", S.tube([(-hl / 2, 0, zt - 0.002), (-hl / 2, 0, zt + 0.02),
                                                        (hl / 2, 0, zt + 0.02), (hl / 2, 0, zt - 0.002)], 0.008), tolex))

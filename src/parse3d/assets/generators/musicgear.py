@@ -84,7 +84,7 @@ def record_player(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("vinyl_record", parts=("disc",), extra_parts=("label", "sleeve", "inner_sleeve"),
+@register("vinyl_record", parts=("disc",), extra_parts=("label", "sleeve", "inner_sleeve", "spine"),
           size_range=(0.17, 0.32), density=900, variants=("lp", "single", "bare"), placement="surface")
 def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
     r = 0.1524 if variant != "single" else 0.0889
@@ -107,6 +107,8 @@ def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("label_1", "label", ring([(hole, z), (rl, z), (rl, z + 0.0011), (hole, z + 0.0011)], sections=16),
                            M.paper(rng)))
     if variant != "bare":
+        # the sleeve's spine along its closed edge (-X), where the title is printed
+        parts.append(make_part("spine", "spine", S.box((0.003, s, 0.0045), center=(-s / 2 + 0.0015, 0, 0.00225)), M.paper(rng)))
         # (its edge showing at the card sleeve's open side)
         parts.append(make_part("inner_sleeve", "inner_sleeve", S.box((0.024, r * 2 * 0.9, 0.0006), center=(s / 2 - 0.008, 0, 0.0039)),
                                M.solid((0.95, 0.94, 0.9), "paper", 0.8)))
