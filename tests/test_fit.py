@@ -104,3 +104,28 @@ def test_a_small_mat_leaves_seats_partly_on_the_floor():
                                          settled=True)[:, :2]).convex_hull
             off += fp.difference(mat).area > 0.05 * fp.area
     assert off >= 1
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_room_on_a_top_counts_a_container_at_the_size_it_is_drawn(seed):
+    """A bowl with four apples IN it is drawn big enough to hold them, so the room the
+    nightstand's top must have for it is the bowl at that size, not its category's smallest
+    (a dish rack grown for its plates left no room for the coffee maker beside it); the bowl,
+    the lamp and the book all placed on the nightstand and held after settling."""
+    from types import SimpleNamespace
+
+    from parse3d.solver.fit import _smallest_footprint, need
+    from parse3d.solver.library import AssetLibrary
+
+    scene = solved("nightstand_with_a_full_bowl", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    library = AssetLibrary()
+    want = need(SimpleNamespace(pag=scene.pag), library, scene.pag.supporter("bowl"), True)
+    bare = _smallest_footprint(library, "bowl", 2, 8)
+    assert want[0] * want[1] > 1.5 * bare[0] * bare[1], (want, bare)
+    bowl = scene.objects["bowl"]
+    ext = sorted(bowl.scale * (bowl.asset.bounds[1] - bowl.asset.bounds[0])[:2])
+    assert ext[0] * ext[1] > bare[0] * bare[1], (ext, bare)

@@ -18,10 +18,10 @@ from ..measure.checks import BOARD_LABELS, board_parts
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
-from .fit import FIT_SHARE, roomy_scale, top_fit
+from .fit import CONTENTS_AREA, FIT_SHARE, contents_scale, roomy_scale, top_fit
 from .fit import _sides as sup_sides
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .hanging import edge_up, rail_scale, thinness, typical_size
+from .hanging import edge_up, rail_scale, thinness
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
 from .rules import RULES
@@ -137,27 +137,6 @@ def _free_height(st: SolveState, edge: Edge) -> float:
     if edge.relation == "ON":  # up to the ceiling (a wine rack on a tall cabinet)
         return max(st.scene.room.height - float(s.surface.origin[2]) for s in sups)
     return max(s.clearance for s in sups)
-
-
-#: Footprint area a container needs per child IN it, in units of the child's typical size
-#: squared (room to lie side by side, with the gaps round things leave).
-CONTENTS_AREA = 2.5
-
-
-def contents_scale(pag, oid: str, asset: Asset) -> float:
-    """Scale at which ``asset``'s footprint has room for the children IN the object as a whole
-    (not on a named part: shelves of a rack hold their own), at ``CONTENTS_AREA`` times their
-    typical size squared each; 0 with fewer than two such children."""
-    kids = [e.child.object for e in touching(pag, oid)
-            if e.relation == "IN" and e.parent.object == oid and e.parent.part is None]
-    if len(kids) < 2:
-        return 0.0
-    need = 0.0
-    for k in kids:
-        need += CONTENTS_AREA * typical_size(pag, k) ** 2
-    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
-    area = float(ext[0] * ext[1])
-    return float(np.sqrt(need / area)) if area > 0 else 0.0
 
 
 def edge_text(e: Edge) -> str:

@@ -15,6 +15,8 @@ instance (``placement.place_object``), which now fits.
 
 from __future__ import annotations
 
+import operator
+import zlib
 from functools import cache
 
 import numpy as np
@@ -25,7 +27,7 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import filled
 
-__all__ = ["beside", "instance_for", "need", "roomy_instance", "roomy_scale", "top_fit", "top_sides"]
+__all__ = ["CONTENTS_AREA", "beside", "contents_scale", "instance_for", "need", "roomy_instance", "roomy_scale", "top_fit", "top_sides"]
 
 #: Pool slots per candidate category looked at for a child's smallest footprint and for a
 #: parent with room on its top.
@@ -76,10 +78,67 @@ def _smallest_footprint(library, category: str, axis: int, n: int) -> tuple[floa
     return best
 
 
-def need(st: SolveState, library, e: Edge) -> tuple[float, float] | None:
+#: Footprint area a container needs per child IN it, in units of the child's typical size
+#: squared (room to lie side by side, with the gaps round things leave).
+CONTENTS_AREA = 2.5
+
+
+def _contents(pag, oid: str) -> list[str]:
+    """The children written IN ``oid`` as a whole (an index kept on the graph, rebuilt
+    whenever its relations change)."""
+    rel = pag.relations
+    got = pag.__dict__.get("_contents_index")
+    if got is None or len(got[0]) != len(rel) or not all(map(operator.is_, got[0], rel)):
+        idx: dict[str, list[str]] = {}
+        for e in rel:
+            if e.relation == "IN" and e.parent.part is None and not e.parent.is_room_element:
+                idx.setdefault(e.parent.object, []).append(e.child.object)
+        got = (list(rel), idx)
+        pag.__dict__["_contents_index"] = got
+    return got[1].get(oid, [])
+
+
+def contents_scale(pag, oid: str, asset: Asset) -> float:
+    """Scale at which ``asset``'s footprint has room for the children IN the object as a whole
+    (not on a named part: shelves of a rack hold their own), at ``CONTENTS_AREA`` times their
+    typical size squared each; 0 with fewer than two such children."""
+    from .hanging import typical_size
+
+    kids = _contents(pag, oid)
+    if len(kids) < 2:
+        return 0.0
+    need = sum(CONTENTS_AREA * typical_size(pag, k) ** 2 for k in kids)
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    area = float(ext[0] * ext[1])
+    return float(np.sqrt(need / area)) if area > 0 else 0.0
+
+
+def _grown_footprint(st: SolveState, library, oid: str, category: str, axis: int,
+                     n: int) -> tuple[float, float] | None:
+    """As :func:`_smallest_footprint`, each slot at the scale the child is drawn at to hold
+    what is IN it or hangs below it (``choice.instance_scale``: a dish rack with plates and a
+    glass in it, towels on a bar), for a child that holds such things; None for any other."""
+    from .hanging import rail_scale
+
+    best = None
+    for slot in range(n):
+        a = library.load(category, slot)
+        grow = max(contents_scale(st.pag, oid, a), rail_scale(st.pag, oid, a))
+        if grow <= 0 and best is None and slot == 0:
+            return None  # holds nothing: the category's own sizes
+        hi = a.size_range[1] / max(asset_geometry(a).size, 1e-6)
+        ext = hull_extents(a)[0] * max(_unit_scale(a), min(grow, hi))
+        sides = sorted(float(ext[k]) for k in range(3) if k != axis)
+        if best is None or sides[0] * sides[1] < best[0] * best[1]:
+            best = (sides[0], sides[1])
+    return best
+
+
+def need(st: SolveState, library, e: Edge, grown: bool = False) -> tuple[float, float] | None:
     """``(short, long)`` sides (m) of the smallest footprint the child of ``e`` comes in: over
     its candidate categories and the first :data:`FIT_SLOTS` pool slots, at the least scale its
-    node allows. None when the library cannot be looked through."""
+    node allows; with ``grown``, at the size a child holding things IN it is drawn to hold
+    them (:func:`_grown_footprint`). None when the library cannot be looked through."""
     if getattr(library, "load", None) is None:
         return None
     node = st.pag.objects[e.child.object]
@@ -88,7 +147,8 @@ def need(st: SolveState, library, e: Edge) -> tuple[float, float] | None:
     lo = node.scale[0] if node.scale is not None else 1.0
     best = None
     for cat in node.candidates:
-        a, b = _smallest_footprint(library, cat, axis, n)
+        a, b = grown and _grown_footprint(st, library, e.child.object, cat, axis, n) \
+            or _smallest_footprint(library, cat, axis, n)
         if best is None or a * b < best[0] * best[1]:
             best = (a * lo, b * lo)
     return best
@@ -163,13 +223,13 @@ def _main_top(asset: Asset, e: Edge) -> bool:
     return a * b >= MAIN_TOP * float(ext[0] * ext[1])
 
 
-def _needs(st: SolveState, library, oid: str, asset: Asset
+def _needs(st: SolveState, library, oid: str, asset: Asset, grown: bool = False
            ) -> list[tuple[Edge, tuple[float, float]]]:
     out = []
     for e in _on_top_edges(st, oid):
         if not _main_top(asset, e):
             continue
-        want = need(st, library, e)
+        want = need(st, library, e, grown)
         if want is not None:
             out.append((e, want))
     return out
@@ -190,31 +250,43 @@ def roomy_instance(st: SolveState, library, oid: str, category: str, asset: Asse
     instance that does (over the node's candidate categories, :data:`FIT_SLOTS` random pool
     slots each, ``usable(asset)`` true), or the one that comes closest. Only tops that are
     the object's own (at least :data:`MAIN_TOP` of its footprint) count: a pot is wider than
-    any burner and overhangs it."""
-    needs = _needs(st, library, oid, asset)
-    if not needs or getattr(library, "load", None) is None:
+    any burner and overhangs it. The instances are first looked through (from a draw of their
+    own) for room for the children at the size they are drawn to hold what is IN them
+    (:func:`need` ``grown``), then, when none has it, at their smallest."""
+    if getattr(library, "load", None) is None:
         return category, asset
-
-    def gap(a: Asset) -> float:
-        return _gap(a, _max_scale(st, oid, a), needs)
-
-    here = gap(asset)
-    if here <= 1.0:
+    best = None
+    # room for the children at the size they are drawn (a bowl grown for its apples), else
+    # at their smallest (they shrink to fit the top)
+    bare = _needs(st, library, oid, asset, False)
+    if not bare:
         return category, asset
-    best = (here, category, asset)
-    k = int(getattr(library, "per_category", 20))
-    cands = st.pag.objects[oid].candidates
-    for ci in rng.permutation(len(cands)):
-        cat = cands[int(ci)]
-        for slot in rng.permutation(k)[:FIT_SLOTS]:
-            a = library.load(cat, int(slot))
-            if a.asset_id in tried or not usable(a):
-                continue
-            g = gap(a)
-            if g < best[0]:
-                best = (g, cat, a)
-            if g <= 1.0:
-                return cat, a
+    grown = _needs(st, library, oid, asset, True)
+    for needs in ([grown, bare] if grown != bare else [bare]):
+        def gap(a: Asset, needs=needs) -> float:
+            return _gap(a, _max_scale(st, oid, a), needs)
+
+        here = gap(asset)
+        if here <= 1.0:
+            return category, asset
+        best = (here, category, asset)
+        k = int(getattr(library, "per_category", 20))
+        cands = st.pag.objects[oid].candidates
+        # the first pass draws from its own stream: when it finds nothing, the second draws
+        # as if it had not run
+        draw = rng if needs is bare else np.random.default_rng(
+            zlib.crc32(f"{oid} {asset.asset_id}".encode()))
+        for ci in draw.permutation(len(cands)):
+            cat = cands[int(ci)]
+            for slot in draw.permutation(k)[:FIT_SLOTS]:
+                a = library.load(cat, int(slot))
+                if a.asset_id in tried or not usable(a):
+                    continue
+                g = gap(a)
+                if g < best[0]:
+                    best = (g, cat, a)
+                if g <= 1.0:
+                    return cat, a
     return best[1], best[2]
 
 

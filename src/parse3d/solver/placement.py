@@ -82,7 +82,17 @@ from .sampling import (
     step_under,
     well_inside,
 )
-from .stacking import STACK_CENTRE, STACK_OVER, may_stack, place_stacked, stack_centre
+from .stacking import (
+    STACK_CENTRE,
+    STACK_OVER,
+    hollow_like,
+    may_stack,
+    nest_edge,
+    nest_reason,
+    place_stacked,
+    stack_centre,
+    written_choice,
+)
 from .standing import may_stand_in, place_standing, standing_instance
 from .state import SolveState, plane_coords, plane_key, support_chain
 from .support import Support
@@ -136,10 +146,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     reqs = [r for r in requirements(pag, oid) if r[2] not in dropped]
     tried: set[str] = set()
     # ON a round thing of its kind (an apple on an apple): beside it, a heap
-    heap = beside(pag, st.scene, support_edge,
-                  lambda a, ref: lacks(a, [(ref.part, ref.index, "", "stack_base")]) is not None)
+    heap = None if hollow_like(st, support_edge) else beside(
+        pag, st.scene, support_edge,
+        lambda a, ref: lacks(a, [(ref.part, ref.index, "", "stack_base")]) is not None)
     if heap is not None:
         others = [*others, heap[1]]
+    nest = nest_edge(st, support_edge)  # ON a hollow one of its kind: nests in it (stacking.py)
     headroom = free_headroom(st, support_edge)
     axis = SURFACE_AXES[support_edge.child.surface or support_edge.spec.child_surface]
     for attempt in range(cfg.asset_attempts):
@@ -185,6 +197,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         placed_edge = support_edge
         if heap is not None:
             placed_edge, loose = heap[0], heap[2]
+        elif nest is not None and attempt == cfg.asset_attempts - 1 and reasons:
+            # the stack as written found no pose: nested in the one below instead
+            placed_edge, loose = nest, nest_reason(support_edge, reasons)
         elif hang is None and names_part(support_edge) \
                 and 0 < overhang(asset, support_edge)[0] < np.inf:
             # even the best instance is overhung: it rests by the part that reaches furthest
@@ -214,6 +229,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         obj.fixed = RULES[support_edge.relation].fixed
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
+        if placed_edge is nest:  # measured on the edge as written afterwards
+            obj.support_choice = written_choice(st, support_edge, sup.choice)
         for i in (*loosen, *flushed):
             full[i] = None
         if loose is not None:

@@ -3,6 +3,8 @@ can, a plate on a plate), or is dropped into a small container onto what is in i
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import shapely
 from shapely.geometry import Polygon
@@ -23,7 +25,8 @@ from .state import SolveState, plane_coords
 from .support import Support
 from .validation import relations_and_collisions, resolution
 
-__all__ = ["drop_into", "drop_onto", "PILE_BASES", "PILE_AREA", "STACK_ON", "may_stack",
+__all__ = ["drop_into", "drop_onto", "hollow_like", "nest_edge", "nest_reason",
+           "written_choice", "PILE_BASES", "PILE_AREA", "STACK_ON", "may_stack",
            "place_stacked", "rest_across", "ACROSS_DRAWS", "STACK_CENTRE", "STACK_OVER", "stack_centre"]
 
 
@@ -114,6 +117,58 @@ def may_stack(st: SolveState, edge: Edge) -> bool:
     parent = st.scene.objects.get(edge.parent.object)
     return edge.relation == "ON" and parent is not None and (
         parent.category in STACK_ON or _like(st, edge.child.object, parent.id))
+
+
+def hollow_like(st: SolveState, edge: Edge) -> bool:
+    """Whether ``ON child -> parent`` puts the child on a placed object of its own kind that
+    holds things inside (an internal support surface: a shopping basket, a bowl, a crate): it
+    nests in or rests on it, and however round its outline it does not roll, so it is never
+    a heap beside it (:func:`parse3d.solver.intent.beside`, for apples and oranges)."""
+    if edge.relation != "ON" or edge.parent.is_room_element:
+        return False
+    parent = st.scene.objects.get(edge.parent.object)
+    return bool(parent is not None and parent.placed and parent.asset is not None
+                and parent.asset.internal and _like(st, edge.child.object, parent.id))
+
+
+def nest_edge(st: SolveState, edge: Edge) -> Edge | None:
+    """``IN child -> parent`` (whole objects) for ``ON child -> parent[:part]`` where the parent
+    is a hollow one of the child's kind (:func:`hollow_like`): a shopping basket written ON the
+    rim of the one below nests in it, as a stack of baskets (or of paper cups, of crates)
+    does, resting on its inside or, when as wide, on its rim (:mod:`parse3d.solver.nesting`).
+    The relation as written is measured afterwards: resting inside the parent's hollow, the
+    ``ON`` contact is the free drop onto it. None for anything else."""
+    if not hollow_like(st, edge):
+        return None
+    c, p = edge.child, edge.parent
+    return Edge("IN", replace(c, part=None, index=None, surface=None, text=c.object),
+                replace(p, part=None, index=None, surface=None, text=p.object))
+
+
+def nest_reason(edge: Edge, reasons: list[str]) -> str:
+    """Why a child written ``ON`` a hollow one of its kind was nested in it instead
+    (:func:`nest_edge`), recorded as relaxed."""
+    why = reasons[-1].split("; ")[0]
+    return (f"{edge.child.object} found no pose ON {edge.parent} as written ({why}), so it "
+            f"nests in {edge.parent.object}, a hollow one of its kind, as stacked baskets do "
+            f"(write IN {edge.child.object} -> {edge.parent.object} for a nested stack)")
+
+
+def written_choice(st: SolveState, edge: Edge, choice):
+    """The support choice recorded for a child nested by :func:`nest_edge`: the parent's part
+    as written (its rim's top), so the ``ON`` as written is measured on it; ``choice`` when
+    no part is named or the asset has no such part."""
+    from ..scene.model import SupportChoice
+
+    ref = edge.parent
+    parent = st.scene.objects.get(ref.object)
+    if ref.part is None or choice is None or parent is None or parent.asset is None:
+        return choice
+    ps = parent.asset.parts_by_label(ref.part)
+    ps = ps[ref.index:ref.index + 1] if ref.index is not None else ps
+    if len(ps) != 1:
+        return choice
+    return SupportChoice(choice.owner, ps[0].name, ref.surface or "top")
 
 
 def _like(st: SolveState, a: str, b: str) -> bool:
