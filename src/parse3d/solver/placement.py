@@ -33,7 +33,15 @@ from .fit import instance_for
 from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
-from .intent import beside, lies_on_cover, loose_reason, names_part, overhang, whole_object
+from .intent import (
+    beside,
+    lies_flat,
+    lies_on_cover,
+    loose_reason,
+    names_part,
+    overhang,
+    whole_object,
+)
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
@@ -166,7 +174,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             intrinsic.append(False)
             continue
         hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
-            or lies_on_cover(support_edge, asset)  # a notebook ON its cover lies on it
+            or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag)
+        # a notebook ON its cover, or ON a desk, lies on it
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale,
                          SURFACE_AXES[hang.child.surface] if hang is not None else 2)
