@@ -504,8 +504,9 @@ PILE_TILT_DEG = 15.0
 #: Degrees a child standing on a ledge on another face (``rests_on``) may lean back.
 LEDGE_LEAN_DEG = 35.0
 #: Degrees a long child standing in a container on its lower end (``rests_on``: a toothbrush
-#: in a tumbler, pens in a mug) may lean on the rim.
-STAND_LEAN_DEG = 45.0
+#: in a tumbler, pens in a mug) may lean on the rim: up to 70 degrees, a spoon in a shallow
+#: cereal bowl (``solver.standing.SHALLOW_TILT_DEG``), and a degree of settling.
+STAND_LEAN_DEG = 71.0
 
 
 def _placed_lying(child: PlacedObject) -> bool:

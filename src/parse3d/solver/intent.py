@@ -28,7 +28,7 @@ from ..relations import SURFACES
 from .geometry import part_points
 
 __all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
-           "beside", "lies_on_cover", "lies_in_stack"]
+           "beside", "lies_on_cover", "lies_flat", "lies_in_stack"]
 
 #: Support relations whose named child part is placed by the whole object when another part
 #: of the instance reaches further toward the support.
@@ -156,6 +156,60 @@ PANEL_THIN = 0.25
 FLAT_OBJECT = 0.5
 #: Metres within which a panel's outer face counts as the object's outside.
 OUTSIDE_TOL = 2e-3
+
+
+def _covered(asset: Asset) -> int | None:
+    """The thin axis of a flat object modelled standing whose both large outsides are panels
+    each spanning at least :data:`COVER_SPAN` of the object (a book's, a notebook's, a
+    magazine's covers; not a picture frame's back, a monitor's screen or a box's side); None
+    for anything else."""
+    ob = asset_bounds(asset)
+    ext = ob[1] - ob[0]
+    axis = int(np.argmin(ext))
+    rest = [k for k in range(3) if k != axis]
+    if axis == 2 or ext[axis] > FLAT_OBJECT * min(float(ext[k]) for k in rest):
+        return None
+    sides = set()
+    for p in asset.parts:
+        b = np.asarray(p.bounds, float)
+        pe = b[1] - b[0]
+        if pe[axis] > PANEL_THIN * min(float(pe[k]) for k in rest) \
+                or any(pe[k] < COVER_SPAN * ext[k] for k in rest):
+            continue
+        if b[1][axis] >= ob[1][axis] - OUTSIDE_TOL and b[0][axis] > ob[0][axis] + OUTSIDE_TOL:
+            sides.add(1)
+        elif b[0][axis] <= ob[0][axis] + OUTSIDE_TOL and b[1][axis] < ob[1][axis] - OUTSIDE_TOL:
+            sides.add(0)
+    return axis if sides == {0, 1} else None
+
+
+#: Share of an object's extents a cover panel spans (:func:`_covered`).
+COVER_SPAN = 0.9
+
+#: Relations by which a flat object stands in a row (books side by side on a shelf, leaning on
+#: a bookend): written with one of them it keeps standing as modelled.
+_ROW = ("SIDE_OF", "AGAINST", "LEANING_AGAINST", "ALONG")
+
+
+def lies_flat(edge: Edge, asset: Asset, pag) -> Edge | None:
+    """``ON`` with no child part named, for a covered flat object modelled standing (a
+    notebook, a magazine: :func:`_covered`): the edge by which it lies on its back cover's
+    outer face, as a person means a notebook on a desk; None (standing as modelled) when the
+    object stands in a row (a relation of :data:`_ROW` of its own), and for anything else."""
+    c = edge.child
+    if edge.relation != "ON" or c.part is not None or c.surface not in (None, "bottom"):
+        return None
+    if any(e.relation in _ROW and c.object in (e.child.object, e.parent.object)
+           for e in pag.relations):
+        return None
+    axis = _covered(asset)
+    if axis is None:
+        return None
+    from ..pag.refs import format_ref
+
+    side = ("left", "back")[axis]
+    return replace(edge, child=replace(c, surface=side,
+                                       text=format_ref(c.object, None, None, side)))
 
 
 def lies_on_cover(edge: Edge, asset: Asset) -> Edge | None:

@@ -36,6 +36,7 @@ from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
 from .intent import (
     beside,
+    lies_flat,
     lies_in_stack,
     lies_on_cover,
     loose_reason,
@@ -187,8 +188,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             intrinsic.append(False)
             continue
         hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
-            or lies_on_cover(support_edge, asset) \
-            or _in_stack(st, support_edge, asset, category)  # a notebook ON its cover lies on it
+            or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
+            or _in_stack(st, support_edge, asset, category)
+        # a notebook ON its cover, or ON a desk, lies on it; so do books stacked ON one another
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale,
                          SURFACE_AXES[hang.child.surface] if hang is not None else 2)

@@ -32,13 +32,18 @@ from .state import SolveState
 from .support import Support
 
 __all__ = ["end_width", "may_stand_in", "place_standing", "stands_upright", "standing_instance",
-           "STAND_TILT_DEG", "LONG"]
+           "STAND_TILT_DEG", "SHALLOW_TILT_DEG", "LONG"]
 
 #: A child is long when its longest extent is at least this multiple of its middle one.
 LONG = 1.5
 
 #: Largest tilt from vertical (degrees) of a child standing in a container.
 STAND_TILT_DEG = 40.0
+
+#: Largest tilt from vertical (degrees) of a child standing in a shallow container, tried when
+#: at :data:`STAND_TILT_DEG` it would not yet lean on the rim anywhere: a spoon in a cereal
+#: bowl, its bowl at the bottom, its handle on the rim.
+SHALLOW_TILT_DEG = 70.0
 
 #: Tilts tried from upright to :data:`STAND_TILT_DEG` before the steepest free one is bisected.
 _TILT_GRID = 8
@@ -335,9 +340,24 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
                    edge: Edge, others: list[Edge], body: Body, rng: np.random.Generator,
                    validate) -> tuple:
     """Stand the long child in the container ``sup`` belongs to, its lower end on the floor
-    and its body leaning on the rim. ``validate(cand, sup)`` returns ``(ok, why, checks)`` as
-    the solver's relation checks do. Returns ``((R, t, sup, body, rests_on), trials, checks,
-    None)`` like the solver's other placements; raises ``Fail`` when no pose holds."""
+    and its body leaning on the rim, tilted up to :data:`STAND_TILT_DEG`, or up to
+    :data:`SHALLOW_TILT_DEG` where at that tilt it would nowhere lean on the rim yet (a spoon
+    in a shallow bowl). ``validate(cand, sup)`` returns ``(ok, why, checks)`` as the solver's
+    relation checks do. Returns ``((R, t, sup, body, rests_on), trials, checks, None)`` like
+    the solver's other placements; raises ``Fail`` when no pose holds."""
+    try:
+        return _stand(st, oid, asset, scale, sup, edge, body, rng, validate, STAND_TILT_DEG)
+    except _Shallow:
+        return _stand(st, oid, asset, scale, sup, edge, body, rng, validate, SHALLOW_TILT_DEG)
+
+
+class _Shallow(Fail):
+    """No pose held, and at every place tried the child would not yet lean on the rim."""
+
+
+def _stand(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support, edge: Edge,
+           body: Body, rng: np.random.Generator, validate, limit: float) -> tuple:
+    """:func:`place_standing` with tilts up to ``limit`` degrees."""
     s = sup.surface
     if abs(float(s.normal[2])) < 0.99:
         raise Fail(f"no room to stand {oid} in {sup.name}: its floor is not level",
@@ -354,8 +374,13 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
     floor = float(s.origin @ s.normal)
     trials = 0
     last = "no pose reaches the floor"
+    shallow = True  # so far, nowhere does it lean on the rim at the largest tilt
     mine = piece_data(asset, asset.parts)
     theirs = [(piece_data(o.asset, o.asset.parts), o.transform(False)) for o in inside]
+    Tp = parent.transform(False)
+    P = asset_geometry(parent.asset).hull @ Tp[:3, :3].T + Tp[:3, 3]
+    # what the container stands on: its points within a centimetre of its lowest
+    base = shapely.MultiPoint(P[P[:, 2] <= P[:, 2].min() + 0.01][:, :2]).convex_hull
 
     def pose(R: np.ndarray, foot3: np.ndarray, hover: float):
         """``(T, t)``: the child turned by ``R``, its lowest point ``hover`` over ``foot3``."""
@@ -407,7 +432,7 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
 
             # the steepest tilt at which it stands there free, before one where it does not:
             # it leans on the rim (or on what stands in the container already)
-            grid = np.radians(np.linspace(0.0, STAND_TILT_DEG, _TILT_GRID))
+            grid = np.radians(np.linspace(0.0, limit, round(_TILT_GRID * limit / STAND_TILT_DEG)))
             hits = []
             for g in grid:
                 trials += 1
@@ -415,10 +440,12 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
             k = next((i for i in range(len(grid) - 1, 0, -1)
                       if hits[i - 1] is None and hits[i] is not None), None)
             if k is None:
-                last = f"at {STAND_TILT_DEG:.0f} degrees it would not yet lean on the rim of " \
+                shallow = shallow and hits[-1] is None
+                last = f"at {limit:.0f} degrees it would not yet lean on the rim of " \
                        f"{sup.owner}" if hits[-1] is None else \
                        f"standing there it would run into {hits[0]}"
                 continue
+            shallow = False
             lo, hi = float(grid[k - 1]), float(grid[k])
             while hi - lo > np.radians(_TILT_STEP_DEG):
                 mid = 0.5 * (lo + hi)
@@ -435,7 +462,16 @@ def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Su
                 last = f"its lower end would stay {h_low * 1000:.0f} mm above the floor of " \
                        f"{sup.owner}"
                 continue
+            if limit > STAND_TILT_DEG and not base.contains(shapely.Point(
+                    (hull @ R.T + t).mean(axis=0)[:2])):
+                # leaning that far, its weight outside what the container stands on would tip
+                # the container over
+                last = f"leaning {np.degrees(lo):.0f} degrees its weight would be outside the " \
+                       f"base of {sup.owner} and tip it"
+                continue
             checks, last = accept(st, oid, asset, scale, R, t, rests, sup, body, validate)
             if checks is not None:
                 return (R, t, sup, body, rests), trials, checks, None
+    if shallow and trials and limit < SHALLOW_TILT_DEG:
+        raise _Shallow(last)
     raise Fail(f"no room to stand {oid} in {sup.name} ({trials} trials, last: {last})")

@@ -355,8 +355,10 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     slanted = []
     if rel == "ON" and ref.part is not None and label == "top":
         # a part whose top another part covers (a dryer's body under its control panel):
-        # what is ON it stands on that part
-        parts = [cover_part(parent.asset, p) or p for p in parts]
+        # what is ON it stands on that part; not when the parent lies on another face (a
+        # notebook on its cover: its spine along the cover's upper edge covers no top)
+        parts = [(cover_part(parent.asset, p) if _world_top(p, T) == "top" else None) or p
+                 for p in parts]
     for p in parts:
         labels = [label] if (ref.surface or rel != "ON") else ["top"]
         for lb in labels:
