@@ -83,12 +83,14 @@ class SettleConfig:
         The contact offset (m) of the shapes of an object of at least ``many_pieces`` convex
         pieces (a vessel's wall segments: a saucer, a bowl, a jar); other shapes keep PhysX's
         default of 1 cm. Two shapes get contacts within the sum of their offsets, so a stack
-        of four saucers made 12,000 contacts a step at the default and settled four times
-        slower; at 3 mm only the pieces that nearly touch make contacts.
+        of four saucers made 12,000 contacts a step at the default and settled several times
+        slower; at 4 mm only the pieces that nearly touch make contacts (at 3 mm glass jars
+        standing on a shelf never came to sleep).
     drop_out : float
         An awake body whose origin has dropped more than this (m) at a sleep check, and that
-        has landed (vertical speed under 5 cm/s), has fallen for certain (far past
-        ``fall_distance``): it leaves the simulation where it is, and that pose is its settled one, so a bowl rolling about the floor does not keep the
+        has landed (vertical speed under 5 cm/s), or that has dropped more than
+        ``fall_distance`` and no longer goes down, has fallen for certain: it is frozen where it
+        is (kinematic, so what rests on it stays held), and that pose is its settled one, so a bowl rolling about the floor does not keep the
         rest of the room simulating to the last step. 0 keeps every body to the end.
     """
 
@@ -107,7 +109,7 @@ class SettleConfig:
     contact_threshold: float = 0.001
     free_joints: bool = False
     many_pieces: int = 40
-    many_pieces_offset: float = 0.003
+    many_pieces_offset: float = 0.004
     drop_out: float = 0.25
 
     def __post_init__(self):
@@ -322,17 +324,31 @@ def local_origin(scene: Scene) -> np.ndarray:
     return np.array([c[0], c[1], 0.0])
 
 
-def _drop_out(world, dyn: dict, start_z: dict[str, float], drop: float,
-              gone: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
-    """Take out of ``world`` every awake body of ``dyn`` whose origin is more than ``drop``
-    below where it started and that has landed (no longer falling: vertical speed under
-    5 cm/s), remembering its pose in ``gone`` (and removing it from ``dyn``)."""
+def _drop_out(world, dyn: dict, start_z: dict[str, float], heights: dict[str, list[float]],
+              cfg: "SettleConfig", gone: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
+    """Freeze where it is (kinematic: what rests on it stays held) every awake body of ``dyn``
+    that has fallen for certain: dropped more than ``cfg.drop_out`` and landed (vertical speed
+    under 5 cm/s), or dropped more than ``cfg.fall_distance`` and no longer going down (its
+    height within 1 mm over the last :data:`STILL_CHECKS` checks: a can rolling about the shelf
+    it fell to). Its pose goes into ``gone`` and it leaves ``dyn``."""
     for oid in [i for i, b in dyn.items() if not b.is_sleeping]:
         R, t = world.pose(oid)
-        if start_z[oid] - t[2] > drop and abs(float(dyn[oid].get_linear_velocity()[2])) < 0.05:
+        h = heights.setdefault(oid, [])
+        h.append(float(t[2]))
+        del h[:-STILL_CHECKS]
+        drop = start_z[oid] - float(t[2])
+        landed = drop > cfg.drop_out and abs(float(dyn[oid].get_linear_velocity()[2])) < 0.05
+        rolling = drop > cfg.fall_distance and len(h) == STILL_CHECKS and max(h) - min(h) < 1e-3
+        if landed or rolling:
             gone[oid] = (R, t)
-            world.sapien_scene.remove_entity(world.entities[oid])
-            del dyn[oid]
+            body = dyn.pop(oid)
+            body.set_linear_velocity(np.zeros(3, np.float32))
+            body.set_angular_velocity(np.zeros(3, np.float32))
+            body.set_kinematic(True)
+
+
+#: Sleep checks over which a fallen body's height must stay within 1 mm to be frozen.
+STILL_CHECKS = 6
 
 
 def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None = None,
@@ -374,7 +390,8 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
     t1 = time.perf_counter()
     dyn = {i: world.bodies[i] for i in world.dynamic}
     start_z = {i: float(scene.objects[i].position[2]) for i in dyn}
-    gone: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # dropped out: pose when it left
+    gone: dict[str, tuple[np.ndarray, np.ndarray]] = {}  # dropped out: pose when frozen
+    heights: dict[str, list[float]] = {}
     n = 0
     early = False
     step = world.sapien_scene.step
@@ -384,7 +401,7 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
             step()
         n += k
         if cfg.drop_out > 0:
-            _drop_out(world, dyn, start_z, cfg.drop_out, gone)
+            _drop_out(world, dyn, start_z, heights, cfg, gone)
         if cfg.early_exit and n < cfg.steps and all(b.is_sleeping for b in dyn.values()) \
                 and all(a.sleeping for a in world.articulations.values()):
             early = True
