@@ -2,9 +2,10 @@
 
 Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
 ``handle`` and a ``modesty_panel``. Under the top: a four-leg table's glued ``corner_block`` s
-between its aprons and low ``stretcher`` s joining its legs; a pedestal table's two crossed
+between its aprons, each fixed by a ``screw`` into the top, a ``fastener`` (Z-clip) on each
+apron holding the top, and low ``stretcher`` s joining its legs; a pedestal table's two crossed
 ``cleat`` s the column's ``mounting_plate`` is fixed to by four ``screw`` s; a trestle table's ``corbel`` s bracing each upright under the
-top and the ``wedge`` s locking the stretcher's ``tenon`` s.
+top, the ``wedge`` s locking the stretcher's ``tenon`` s and the ``screw`` s up through each cap.
 """
 
 from __future__ import annotations
@@ -86,6 +87,39 @@ def _corner_blocks(w, d, h_leg, inset: float, leg: float, mat) -> list[Part]:
                       S.box((b, b, ah * 0.7), center=(sx * (w / 2 - inset - leg / 2 - b / 2), sy * (d / 2 - inset - 0.015 - b / 2),
                                                       h_leg - ah * 0.35)), mat)
             for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
+
+
+def _block_screws(w, d, h_leg, inset: float, leg: float) -> list[Part]:
+    """The screw through each corner block up into the top; its head sits just under the block."""
+    ah = min(0.09, h_leg * 0.14)
+    b = 0.045
+    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+    return [make_part(f"screw_{k}", "screw",
+                      S.cylinder(0.005, 0.002, center=(sx * (w / 2 - inset - leg / 2 - b / 2), sy * (d / 2 - inset - 0.015 - b / 2),
+                                                      h_leg - ah * 0.7 - 0.001), sections=8), steel)
+            for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
+
+
+def _top_clips(w, d, h_leg, inset: float, *, sides: str) -> list[Part]:
+    """The steel tabletop fasteners (Z-clips) on each apron's inner face, at its middle, holding
+    the top down while letting the wood move."""
+    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+    t, c = 0.03, 0.004
+    spots = []
+    if "x" in sides:
+        spots += [((0.0, s * (d / 2 - inset - t / 2 - c / 2)), (0.035, c)) for s in (-1, 1)]
+    if "y" in sides:
+        spots += [((s * (w / 2 - inset - t / 2 - c / 2), 0.0), (c, 0.035)) for s in (-1, 1)]
+    return [make_part(f"fastener_{k}", "fastener", S.box((sx, sy, 0.02), center=(x, y, h_leg - 0.01)), steel)
+            for k, ((x, y), (sx, sy)) in enumerate(spots)]
+
+
+def _cap_screws(w, d, h_leg) -> list[Part]:
+    """Two screws up through each trestle's cap into the top, near its ends; heads under the cap."""
+    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+    return [make_part(f"screw_{2 * i + j}", "screw",
+                      S.cylinder(0.006, 0.002, center=(x, sy * d * 0.33, h_leg - 0.041), sections=8), steel)
+            for i, x in enumerate((-w / 2 + 0.12, w / 2 - 0.12)) for j, sy in enumerate((-1, 1))]
 
 
 def _stretchers(w, d, h_leg, inset: float, leg: float, mat, *, centre: bool) -> list[Part]:
@@ -171,11 +205,14 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
         parts += _four_legs(rng, w, d, h_leg, leg_mat, inset=inset, leg=leg, tapered=rng.random() < 0.4)
         parts += _aprons(w, d, h_leg, inset, leg, top_mat, sides="y" if desk else "xy")
         parts += _corner_blocks(w, d, h_leg, inset, leg, top_mat)
+        parts += _block_screws(w, d, h_leg, inset, leg)
+        parts += _top_clips(w, d, h_leg, inset, sides="y" if desk else "xy")
         parts += _stretchers(w, d, h_leg, inset, leg, leg_mat, centre=not desk and not shelf)
     elif variant == "pedestal":
         parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
     elif variant == "trestle":
         parts += _trestle(rng, w, d, h_leg, leg_mat, leg)
+        parts += _cap_screws(w, d, h_leg)
     if desk:
         # between the legs, or between the trestle caps
         span = w - 2 * leg - 0.06 if variant == "four_leg" else w - 0.24 - leg * 1.2 - 0.02
@@ -200,25 +237,25 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
 
 
 @register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot",
-                                                       "corner_block", "corbel", "wedge", "tenon"),
+                                                       "corner_block", "screw", "fastener", "corbel", "wedge", "tenon"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
 
 
-@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
+@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
           size_range=(1.2, 2.2), density=600, variants=("four_leg", "pedestal", "trestle"))
 def dining_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.3, 2.0), d_rng=(0.8, 1.0), h_rng=(0.73, 0.77), round_ok=True)
 
 
-@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
+@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
           size_range=(0.8, 1.4), density=600, variants=("four_leg", "pedestal"))
 def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
 
 
-@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
           size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
 def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True,
@@ -235,13 +272,13 @@ def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
+@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
           size_range=(0.6, 1.2), density=650, variants=("four_leg", "pedestal"))
 def tea_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.7, 1.1), d_rng=(0.5, 0.7), h_rng=(0.32, 0.5), round_ok=True)
 
 
-@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
+@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
           size_range=(2.0, 4.0), density=600, variants=("four_leg", "trestle"))
 def conference_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(2.2, 3.6), d_rng=(1.0, 1.4), h_rng=(0.73, 0.76))
