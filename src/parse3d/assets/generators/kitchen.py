@@ -195,7 +195,7 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
                                                                      "thermostat", "gasket", "toe_grille", "hinge_cover",
-                                                                     "dispenser"),
+                                                                     "dispenser", "trim", "shelf_support"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -245,6 +245,13 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, z in enumerate(levels):
         parts.append(make_part(f"shelf_{i}", "shelf",
                                S.box((iw - 0.004, y1 - y0, 0.008), center=(x_mid, (y0 + y1) / 2, z - 0.004)), glass))
+        # the plastic trim along the glass's front edge (flush with its top) and the two rails
+        # moulded in the liner's side walls it rests on
+        parts.append(make_part(f"shelf_{i}_trim", "trim",
+                               S.box((iw - 0.004, 0.008, 0.014), center=(x_mid, y1 + 0.004, z - 0.007)), liner))
+        parts += [make_part(f"shelf_{i}_support_{j}", "shelf_support",
+                            S.box((0.012, y1 - y0 - 0.04, 0.01), center=(x_mid + sx * (iw / 2 - 0.006), (y0 + y1) / 2 - 0.01, z - 0.013)),
+                            liner) for j, sx in enumerate((-1, 1))]
     crisper = S.union([S.box((iw - 0.02, y1 - y0 - 0.02, 0.006), center=(x_mid, (y0 + y1) / 2, z_lo + 0.003)),
                        S.box((iw - 0.02, 0.01, 0.16), center=(x_mid, y1 - 0.015, z_lo + 0.08))])
     parts.append(make_part("drawer", "drawer", crisper, liner))
