@@ -154,6 +154,10 @@ def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
     screws = [make_part(f"screw_{k}", "screw", S.cylinder(head, 0.003, center=(x, y, z_plate - pt / 2 - 0.0015), sections=8),
                         steel)
               for k, (x, y) in enumerate([(pw * 0.4, 0), (-pw * 0.4, 0), (0, pw * 0.4), (0, -pw * 0.4)])]
+    # the cleats are screwed up into the top near each end: the heads on their undersides
+    ce = cl / 2 - 0.03
+    screws += [make_part(f"screw_{4 + k}", "screw", S.cylinder(0.005, 0.002, center=(x, y, h_leg - 0.025 - 0.001), sections=8), steel)
+               for k, (x, y) in enumerate([(ce, 0), (-ce, 0), (0, ce), (0, -ce)])]
     return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12)), *cleats, plate, *screws]
 
 
