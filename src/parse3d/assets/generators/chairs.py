@@ -13,6 +13,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
+from ._dA_fixings import screws_under
 from ._kit import legs4, rot
 
 
@@ -240,7 +241,8 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
                                  wood))
         out.append(make_part("dust_cover", "dust_cover", S.box((w - 0.02, d - 0.02, 0.002), center=(0, 0, hs - 0.119)),
                              M.solid((0.06, 0.06, 0.07), "fabric", 0.9)))
-        return out
+        # each corner block is screwed up into the frame (heads under the blocks)
+        return out + screws_under(out, "corner_block")
     n = int(rng.integers(3, 6))
     gap = 0.012
     sw = (d - gap * (n - 1)) / n

@@ -376,6 +376,11 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
         c = _leaning(c, lean, (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean),
                                z_seat + 0.005))
         parts.append(make_part(f"back_cushion_{k}", "back_cushion", c, pad))
+        # the cord piping along the cushion's top front seam
+        welt = S.cylinder(0.006, cw - 0.07, center=(0, bc_t / 2 - 0.01, bc_h - 0.012), axis=(1, 0, 0), sections=8)
+        parts.append(make_part(f"piping_{n + k}", "piping",
+                               _leaning(welt, lean, (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean), z_seat + 0.005)),
+                               pad))
         # each back cushion is buttoned in its middle
         parts.append(make_part(f"button_{k}", "button", _leaning(S.cylinder(0.01, 0.008, center=(0, bc_t / 2, bc_h * 0.55), axis=(0, 1, 0),
                                                                            sections=8), lean,
