@@ -287,6 +287,10 @@ def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
                    round_xy=0.04, round_z=0.04)
     parts.append(make_part("back", "back", _leaning(back, lean, (0, -d / 2 + back_t / 2, deck_z)),
                            pad))
+    # the cord piping along the back's top front seam
+    bw = inner_w if variant != "mid_century" else w - 0.02
+    welt = S.cylinder(0.006, bw - 0.08, center=(0, back_t / 2 - 0.012, bh - 0.014), axis=(1, 0, 0), sections=8)
+    parts.append(make_part("piping_back", "piping", _leaning(welt, lean, (0, -d / 2 + back_t / 2, deck_z)), pad))
     if variant == "wingback":
         for i, sx in enumerate((-1, 1)):
             wing = cushion(0.08, d * 0.35, back_h - arm_h, (0, 0, (back_h - arm_h) / 2),
