@@ -127,7 +127,7 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail",
-                                                                                          "end_cap", "kick_plate"),
+                                                                                          "end_cap", "kick_plate", "flange", "shelf_pin"),
           size_range=(1.4, 3.3), density=600, variants=("straight", "l_shaped"))
 def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(1.4, 2.6), rng.uniform(0.45, 0.6), rng.uniform(1.02, 1.1)
@@ -190,6 +190,17 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.027, 0.02, center=tuple(e + u * 0.008), axis=tuple(u), sections=12), steel))
     parts.append(make_part("kick_plate", "kick_plate", S.box((w - 0.01, 0.003, 0.15), center=(0, d / 2 + 0.0015, 0.075)), steel))
     parts.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - t - 0.02, t), center=(0, -t / 2 - 0.01, zb * 0.25)), mat))
+    # the round flange screwing each foot-rail bracket to the customer wall (or the return's end)
+    for k, (p, (dx, dy)) in enumerate(supports):
+        u = np.array([dx, dy, 0.0]) / np.hypot(dx, dy)
+        c = np.array([p[0] + dx, p[1] + dy, rz + 0.04]) - u * 0.003
+        parts.append(make_part(f"flange_{k}", "flange", S.cylinder(0.03, 0.006, center=tuple(c), axis=tuple(u), sections=12), steel))
+    # the four pins in the end panels each shelf rests on, under its corners
+    ys = (-t / 2 - 0.01 - (d - t - 0.02) / 2 + 0.04, -t / 2 - 0.01 + (d - t - 0.02) / 2 - 0.04)
+    for i, zs in enumerate((zb * 0.55, zb * 0.25)):
+        parts += [make_part(f"shelf_pin_{4 * i + j}", "shelf_pin",
+                            S.cylinder(0.0025, 0.012, center=(sx * (w / 2 - t - 0.006), y, zs - t / 2 - 0.0025), axis=(1, 0, 0), sections=8),
+                            steel) for j, (sx, y) in enumerate((sx, y) for sx in (-1, 1) for y in ys)]
     return parts
 
 
