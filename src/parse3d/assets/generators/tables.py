@@ -2,8 +2,8 @@
 
 Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
 ``handle`` and a ``modesty_panel``. Under the top: a four-leg table's glued ``corner_block`` s
-between its aprons, each fixed by a ``screw`` into the top, a ``fastener`` (Z-clip) on each
-apron holding the top, and low ``stretcher`` s joining its legs; a pedestal table's two crossed
+between its aprons, each fixed by a ``screw`` into the top, and low ``stretcher`` s joining its
+legs; a pedestal table's two crossed
 ``cleat`` s the column's ``mounting_plate`` is fixed to by four ``screw`` s; a trestle table's ``corbel`` s bracing each upright under the
 top, the ``wedge`` s locking the stretcher's ``tenon`` s and the ``screw`` s up through each cap.
 """
@@ -100,20 +100,6 @@ def _block_screws(w, d, h_leg, inset: float, leg: float) -> list[Part]:
             for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
 
 
-def _top_clips(w, d, h_leg, inset: float, *, sides: str) -> list[Part]:
-    """The steel tabletop fasteners (Z-clips) on each apron's inner face, at its middle, holding
-    the top down while letting the wood move."""
-    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
-    t, c = 0.03, 0.004
-    spots = []
-    if "x" in sides:
-        spots += [((0.0, s * (d / 2 - inset - t / 2 - c / 2)), (0.035, c)) for s in (-1, 1)]
-    if "y" in sides:
-        spots += [((s * (w / 2 - inset - t / 2 - c / 2), 0.0), (c, 0.035)) for s in (-1, 1)]
-    return [make_part(f"fastener_{k}", "fastener", S.box((sx, sy, 0.02), center=(x, y, h_leg - 0.01)), steel)
-            for k, ((x, y), (sx, sy)) in enumerate(spots)]
-
-
 def _cap_screws(w, d, h_leg) -> list[Part]:
     """Two screws up through each trestle's cap into the top, near its ends; heads under the cap."""
     steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
@@ -154,10 +140,6 @@ def _pedestal(rng, h_leg, leg_mat, r_base: float) -> list[Part]:
     screws = [make_part(f"screw_{k}", "screw", S.cylinder(head, 0.003, center=(x, y, z_plate - pt / 2 - 0.0015), sections=8),
                         steel)
               for k, (x, y) in enumerate([(pw * 0.4, 0), (-pw * 0.4, 0), (0, pw * 0.4), (0, -pw * 0.4)])]
-    # the cleats are screwed up into the top near each end: the heads on their undersides
-    ce = cl / 2 - 0.03
-    screws += [make_part(f"screw_{4 + k}", "screw", S.cylinder(0.005, 0.002, center=(x, y, h_leg - 0.025 - 0.001), sections=8), steel)
-               for k, (x, y) in enumerate([(ce, 0), (-ce, 0), (0, ce), (0, -ce)])]
     return [make_part("leg_0", "leg", col, leg_mat), *_glides(pts, min(0.02, r_base * 0.12)), *cleats, plate, *screws]
 
 
@@ -210,7 +192,6 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
         parts += _aprons(w, d, h_leg, inset, leg, top_mat, sides="y" if desk else "xy")
         parts += _corner_blocks(w, d, h_leg, inset, leg, top_mat)
         parts += _block_screws(w, d, h_leg, inset, leg)
-        parts += _top_clips(w, d, h_leg, inset, sides="y" if desk else "xy")
         parts += _stretchers(w, d, h_leg, inset, leg, leg_mat, centre=not desk and not shelf)
     elif variant == "pedestal":
         parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
@@ -241,25 +222,25 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
 
 
 @register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot",
-                                                       "corner_block", "screw", "fastener", "corbel", "wedge", "tenon"),
+                                                       "corner_block", "screw", "corbel", "wedge", "tenon"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
 
 
-@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
+@register("dining_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(1.2, 2.2), density=600, variants=("four_leg", "pedestal", "trestle"))
 def dining_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.3, 2.0), d_rng=(0.8, 1.0), h_rng=(0.73, 0.77), round_ok=True)
 
 
-@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
+@register("coffee_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(0.8, 1.4), density=600, variants=("four_leg", "pedestal"))
 def coffee_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.9, 1.3), d_rng=(0.5, 0.7), h_rng=(0.38, 0.46), round_ok=True)
 
 
-@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
+@register("side_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "shelf", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(0.4, 0.7), density=600, variants=("four_leg", "pedestal"))
 def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = _table(rng, variant, w_rng=(0.4, 0.6), d_rng=(0.4, 0.6), h_rng=(0.5, 0.62), round_ok=True,
@@ -276,13 +257,13 @@ def side_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
+@register("tea_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(0.6, 1.2), density=650, variants=("four_leg", "pedestal"))
 def tea_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(0.7, 1.1), d_rng=(0.5, 0.7), h_rng=(0.32, 0.5), round_ok=True)
 
 
-@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "fastener", "corbel", "wedge", "tenon"),
+@register("conference_table", parts=("tabletop", "leg"), extra_parts=("stretcher", "apron", "foot", "corner_block", "cleat", "mounting_plate", "screw", "corbel", "wedge", "tenon"),
           size_range=(2.0, 4.0), density=600, variants=("four_leg", "trestle"))
 def conference_table(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(2.2, 3.6), d_rng=(1.0, 1.4), h_rng=(0.73, 0.76))
