@@ -141,7 +141,7 @@ def cocktail_shaker(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid", "knob", "rim", "foot_ring", "liner", "handle_plate"), size_range=(0.14, 0.32), density=600,
+@register("ice_bucket", parts=("body",), extra_parts=("handle", "tongs", "lid", "knob", "rim", "foot_ring", "liner", "handle_plate", "rivet"), size_range=(0.14, 0.32), density=600,
           variants=("open", "lidded"), placement="surface")
 def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     r, h = rng.uniform(0.08, 0.11), rng.uniform(0.16, 0.22)
@@ -156,6 +156,10 @@ def ice_bucket(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"handle_plate_{i}", "handle_plate", S.box((0.003, 0.05, 0.02), center=(sx * (r * 0.95 + 0.0035), 0, h * 0.75)),
                                steel))
+        # its two rivets, a domed head at each end of the plate
+        parts += [make_part(f"rivet_{2 * i + j}", "rivet", S.cylinder(0.0035, 0.002, center=(sx * (r * 0.95 + 0.006), sy * 0.02, h * 0.75),
+                                                                      axis=(1, 0, 0), sections=8), steel)
+                  for j, sy in enumerate((-1, 1))]
     # the rolled rim, the foot ring and the insulated inner liner
     parts.append(make_part("rim", "rim", ring([(r - 0.008, h - 0.006), (r + 0.003, h - 0.005), (r + 0.003, h),
                                                (r - 0.008, h)], sections=24), steel))

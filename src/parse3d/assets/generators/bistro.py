@@ -19,7 +19,7 @@ from ._household import ring
 from ._kit import rot
 
 
-@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar"),
+@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar", "screw"),
           size_range=(0.95, 1.5), density=600, variants=("pedestal", "four_leg", "square_pedestal"),
           placement="floor")
 def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -87,6 +87,10 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
     # column meets the base
     parts.append(make_part("top_plate", "top_plate", [S.box((0.4, 0.05, 0.012), center=(0, 0, h - t - 0.006)),
                                                       S.box((0.05, 0.4, 0.012), center=(0, 0, h - t - 0.006))], metal))
+    # the four screws through the cross plate's arm ends into the top, heads under the plate
+    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+    parts += [make_part(f"screw_{k}", "screw", S.cylinder(0.006, 0.003, center=(x, y, h - t - 0.012 - 0.0015), sections=8), steel)
+              for k, (x, y) in enumerate([(0.175, 0), (-0.175, 0), (0, 0.175), (0, -0.175)])]
     z_base = 0.036 if variant == "pedestal" else 0.02
     parts.append(make_part("collar", "collar", S.cylinder(0.05, 0.03, center=(0, 0, z_base + 0.015), sections=16), metal))
     return parts

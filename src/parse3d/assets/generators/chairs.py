@@ -13,6 +13,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
+from ._dA_fixings import screws_under
 from ._kit import legs4, rot
 
 
@@ -31,7 +32,8 @@ def _aprons(w: float, d: float, z_top: float, leg: float, inset: float, mat, *, 
             thick: float = 0.02, blocks: bool = True) -> list[Part]:
     """The seat frame under a seat whose underside is at ``z_top``: four apron boards between the
     tops of four corner legs (``leg`` wide, ``inset`` from the edges), flush with the legs'
-    outer faces, and a glued corner block inside each corner."""
+    outer faces, and a glued corner block inside each corner, screwed up into the seat (the
+    ``screw`` heads just under the blocks)."""
     xs, ys = w / 2 - inset - leg / 2, d / 2 - inset - leg / 2
     zc = z_top - height / 2
     boards = [S.box((thick, 2 * ys - leg, height), center=(sx * (xs + leg / 2 - thick / 2), 0, zc)) for sx in (-1, 1)]
@@ -43,11 +45,16 @@ def _aprons(w: float, d: float, z_top: float, leg: float, inset: float, mat, *, 
             out.append(make_part(f"corner_block_{k}", "corner_block",
                                  S.box((c, c, height * 0.6), center=(sx * (xs - leg / 2 - c / 2), sy * (ys - leg / 2 - c / 2),
                                                                      z_top - height * 0.3)), mat))
+        steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+        for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
+            out.append(make_part(f"screw_{k}", "screw",
+                                 S.cylinder(0.0045, 0.002, center=(sx * (xs - leg / 2 - c / 2), sy * (ys - leg / 2 - c / 2),
+                                                                   z_top - height * 0.6 - 0.001), sections=8), steel))
     return out
 
 
 @register("chair", parts=("seat", "back", "leg"),
-          extra_parts=("stretcher", "back_post", "slat", "foot", "apron", "corner_block", "bracket", "rail"),
+          extra_parts=("stretcher", "back_post", "slat", "foot", "apron", "corner_block", "bracket", "rail", "screw"),
           size_range=(0.72, 1.0),
           density=600, variants=("wooden", "shell", "stacking"))
 def chair(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -130,10 +137,14 @@ def chair(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"bracket_{k + (0 if shell else 2)}", "bracket",
                              S.box((0.05, 0.05, 0.004), center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), hs - st - 0.002)),
                              metal))
+        # the screw up through each plate's outer corner into the seat, its head under the plate
+        out.append(make_part(f"screw_{k}", "screw",
+                             S.cylinder(0.0045, 0.002, center=(sx * (w / 2 - 0.035), sy * (d / 2 - 0.035), hs - st - 0.005),
+                                        sections=8), metal))
     return out
 
 
-@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step", "apron", "tread", "corner_block"),
+@register("stool", parts=("seat", "leg"), extra_parts=("stretcher", "foot", "step", "apron", "tread", "corner_block", "screw"),
           size_range=(0.28, 0.68), density=600, variants=("round", "square", "step"))
 def stool(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.wood(rng)
@@ -230,7 +241,8 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
                                  wood))
         out.append(make_part("dust_cover", "dust_cover", S.box((w - 0.02, d - 0.02, 0.002), center=(0, 0, hs - 0.119)),
                              M.solid((0.06, 0.06, 0.07), "fabric", 0.9)))
-        return out
+        # each corner block is screwed up into the frame (heads under the blocks)
+        return out + screws_under(out, "corner_block")
     n = int(rng.integers(3, 6))
     gap = 0.012
     sw = (d - gap * (n - 1)) / n

@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
 from ._casework import door_parts, drawer_parts
+from ._dA_fixings import screws_under
 from ._kit import rot
 
 
@@ -88,7 +89,7 @@ def sideboard(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("display_table", parts=("tabletop", "leg"),
-          extra_parts=("shelf", "riser", "apron", "foot", "collar", "top_plate", "glide", "corner_block"), size_range=(0.8, 2.0),
+          extra_parts=("shelf", "riser", "apron", "foot", "collar", "top_plate", "glide", "corner_block", "screw"), size_range=(0.8, 2.0),
           density=500,
           variants=("two_tier", "riser", "round"), placement="floor")
 def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -149,6 +150,7 @@ def display_table(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
         x, y = sx * (w / 2 - leg - 0.02 - 0.025), sy * (d / 2 - leg - 0.02 - 0.025)
         parts.append(make_part(f"corner_block_{i}", "corner_block", S.box((0.05, 0.05, ah * 0.6), center=(x, y, h - t - ah * 0.3)), mat))
+    parts += screws_under(parts, "corner_block")
     if variant == "two_tier":
         zs = rng.uniform(0.15, 0.25)
         parts.append(make_part("shelf", "shelf", S.box((w - 2 * leg - 0.04, d - 2 * leg - 0.04, 0.02),

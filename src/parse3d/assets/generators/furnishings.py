@@ -17,6 +17,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
+from ._dA_fixings import screws_under
 from ._detail_b import each
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
@@ -317,7 +318,7 @@ def _stand_feet(xy, rubber) -> list[Part]:
 
 
 @register("console_table", parts=("tabletop", "leg"), extra_parts=("shelf", "apron", "drawer", "drawer_box", "knob", "stretcher", "foot",
-                                                             "tenon", "corbel", "corner_block", "kicker"),
+                                                             "tenon", "corbel", "corner_block", "kicker", "screw"),
           size_range=(0.8, 1.6), density=600, variants=("shelf", "drawers", "trestle"))
 def console_table(rng: np.random.Generator, variant: str) -> list:
     w, d, h = rng.uniform(0.9, 1.5), rng.uniform(0.3, 0.42), rng.uniform(0.74, 0.82)
@@ -382,7 +383,8 @@ def console_table(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1)):
             parts.append(make_part(f"stretcher_{k}", "stretcher", S.box((0.03, d - 0.1, 0.04), center=(sx * (w / 2 - 0.03), 0, zs - 0.03)),
                                    wood))
-    return parts
+    # each corner block is screwed up into the top
+    return parts + screws_under(parts, "corner_block")
 
 
 @register("dais", parts=("top", "base"), extra_parts=("fascia", "foot", "nosing", "handle"),

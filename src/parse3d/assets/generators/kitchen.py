@@ -127,7 +127,7 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("bar_counter", parts=("countertop", "body"), extra_parts=("foot_rail", "shelf", "panel", "bracket", "corbel", "speed_rail",
-                                                                                          "end_cap", "kick_plate"),
+                                                                                          "end_cap", "kick_plate", "flange", "shelf_pin"),
           size_range=(1.4, 3.3), density=600, variants=("straight", "l_shaped"))
 def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(1.4, 2.6), rng.uniform(0.45, 0.6), rng.uniform(1.02, 1.1)
@@ -190,12 +190,23 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(0.027, 0.02, center=tuple(e + u * 0.008), axis=tuple(u), sections=12), steel))
     parts.append(make_part("kick_plate", "kick_plate", S.box((w - 0.01, 0.003, 0.15), center=(0, d / 2 + 0.0015, 0.075)), steel))
     parts.append(make_part("shelf_1", "shelf", S.box((w - 2 * t, d - t - 0.02, t), center=(0, -t / 2 - 0.01, zb * 0.25)), mat))
+    # the round flange screwing each foot-rail bracket to the customer wall (or the return's end)
+    for k, (p, (dx, dy)) in enumerate(supports):
+        u = np.array([dx, dy, 0.0]) / np.hypot(dx, dy)
+        c = np.array([p[0] + dx, p[1] + dy, rz + 0.04]) - u * 0.003
+        parts.append(make_part(f"flange_{k}", "flange", S.cylinder(0.03, 0.006, center=tuple(c), axis=tuple(u), sections=12), steel))
+    # the four pins in the end panels each shelf rests on, under its corners
+    ys = (-t / 2 - 0.01 - (d - t - 0.02) / 2 + 0.04, -t / 2 - 0.01 + (d - t - 0.02) / 2 - 0.04)
+    for i, zs in enumerate((zb * 0.55, zb * 0.25)):
+        parts += [make_part(f"shelf_pin_{4 * i + j}", "shelf_pin",
+                            S.cylinder(0.0025, 0.012, center=(sx * (w / 2 - t - 0.006), y, zs - t / 2 - 0.0025), axis=(1, 0, 0), sections=8),
+                            steel) for j, (sx, y) in enumerate((sx, y) for sx in (-1, 1) for y in ys)]
     return parts
 
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
                                                                      "thermostat", "gasket", "toe_grille", "hinge_cover",
-                                                                     "dispenser"),
+                                                                     "dispenser", "trim", "shelf_support"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -245,6 +256,13 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, z in enumerate(levels):
         parts.append(make_part(f"shelf_{i}", "shelf",
                                S.box((iw - 0.004, y1 - y0, 0.008), center=(x_mid, (y0 + y1) / 2, z - 0.004)), glass))
+        # the plastic trim along the glass's front edge (flush with its top) and the two rails
+        # moulded in the liner's side walls it rests on
+        parts.append(make_part(f"shelf_{i}_trim", "trim",
+                               S.box((iw - 0.004, 0.008, 0.014), center=(x_mid, y1 + 0.004, z - 0.007)), liner))
+        parts += [make_part(f"shelf_{i}_support_{j}", "shelf_support",
+                            S.box((0.012, y1 - y0 - 0.04, 0.01), center=(x_mid + sx * (iw / 2 - 0.006), (y0 + y1) / 2 - 0.01, z - 0.013)),
+                            liner) for j, sx in enumerate((-1, 1))]
     crisper = S.union([S.box((iw - 0.02, y1 - y0 - 0.02, 0.006), center=(x_mid, (y0 + y1) / 2, z_lo + 0.003)),
                        S.box((iw - 0.02, 0.01, 0.16), center=(x_mid, y1 - 0.015, z_lo + 0.08))])
     parts.append(make_part("drawer", "drawer", crisper, liner))

@@ -237,7 +237,7 @@ def thermos(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("pot_rail", parts=("rail", "hook"), extra_parts=("bracket", "end_cap"),
+@register("pot_rail", parts=("rail", "hook"), extra_parts=("bracket", "end_cap", "screw"),
           size_range=(0.4, 1.25), density=3000, variants=("round_bar", "flat_bar", "double"),
           placement="wall", groups={"bar": ("rail", "hook")})
 def pot_rail(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -274,6 +274,10 @@ def pot_rail(rng: np.random.Generator, variant: str) -> list[Part]:
                           sections=10)
         plate = S.cylinder(0.025, 0.008, center=(x, 0.004, zr), axis=(0, 1, 0), sections=16)
         parts.append(make_part(f"bracket_{j}", "bracket", [plate, post], mat))
+        # the two screws fixing the bracket's round plate to the wall, above and below the post
+        parts += [make_part(f"screw_{2 * j + i}", "screw", S.cylinder(0.0045, 0.002, center=(x, 0.009, zr + sz * 0.016), axis=(0, 1, 0),
+                                                                      sections=8), mat)
+                  for i, sz in enumerate((1, -1))]
     nh = max(3, int(L / 0.12))
     y, z = rails[-1]
     top_r = (0.015 if variant == "flat_bar" else rr) + 0.004

@@ -142,8 +142,13 @@ def _harp(z_socket: float, z_top: float, mat: Material) -> list[Part]:
                     [sx * 0.012, 0, z_top - 0.004], [0, 0, z_top - 0.004]], 0.0025, sections=6)
             for sx in (-1, 1)]
     finial = S.ellipsoid((0.012, 0.012, 0.015), center=(0, 0, z_top + 0.012), subdivisions=1)
+    # the two sleeves slid down over the harp legs' ends that lock them in the saddle
+    zs = z_socket + 0.03
+    xs = 0.018 + 0.032 * (zs - z_socket - 0.012) / 0.078
+    sleeves = [make_part(f"sleeve_{k}", "sleeve", S.cylinder(0.0042, 0.014, center=(sx * xs, 0, zs), sections=8), mat)
+               for k, sx in enumerate((-1, 1))]
     return [make_part("switch", "switch", switch, mat), make_part("harp", "harp", harp, mat),
-            make_part("finial", "finial", finial, mat)]
+            make_part("finial", "finial", finial, mat), *sleeves]
 
 
 def _shade_fittings(shade: Part, metal: Material) -> list[Part]:
@@ -238,7 +243,7 @@ def _tripod(rng, shade_mat: Material) -> list[Part]:
 
 
 @register("floor_lamp", parts=("base", "pole", "shade"),
-          extra_parts=("bulb", "socket", "switch", "harp", "finial", "trim", "spider", "collar"),
+          extra_parts=("bulb", "socket", "switch", "harp", "finial", "trim", "spider", "collar", "sleeve"),
           size_range=(1.2, 2.1), density=700, variants=("straight", "arc", "tripod"))
 def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     shade_mat = shade_material(rng)
@@ -249,7 +254,7 @@ def floor_lamp(rng: np.random.Generator, variant: str) -> list[Part]:
     return _straight(rng, M.metal(rng), shade_mat)
 
 
-@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial", "trim", "spider"),
+@register("table_lamp", parts=("base", "stem", "shade"), extra_parts=("bulb", "socket", "switch", "harp", "finial", "trim", "spider", "sleeve"),
           size_range=(0.3, 0.8), density=900, variants=("vase", "column", "candlestick"),
           placement="surface")
 def table_lamp(rng: np.random.Generator, variant: str) -> list[Part]:

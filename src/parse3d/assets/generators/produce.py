@@ -103,7 +103,7 @@ def carrot(rng: np.random.Generator, variant: str) -> list[Part]:
             path = [start, start + d * ll * 0.5 + (0, 0, r * 0.2), start + d * ll + (0, 0, -r * 0.6)]
             parts.append(make_part(f"leaf_{k}", "leaf", S.tube(path, 0.0025, sections=6), green))
     # the fine side roots growing out of the root's lower half, alternately left and right
-    for k, u in enumerate((0.35, 0.55, 0.72)):
+    for k, u in enumerate((0.26, 0.35, 0.45, 0.55, 0.64, 0.72)):
         x = L * u
         rr = float(np.interp(x, [p_[1] for p_ in prof], [p_[0] for p_ in prof]))
         sy = 1 if k % 2 == 0 else -1

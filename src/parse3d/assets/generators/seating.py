@@ -42,7 +42,7 @@ def _upholstery(rng: np.random.Generator) -> Material:
 
 
 @register("office_chair", parts=("seat", "back", "base"),
-          extra_parts=("column", "caster", "armrest", "headrest", "shell", "lever", "knob"), size_range=(0.8, 1.35),
+          extra_parts=("column", "caster", "armrest", "headrest", "shell", "lever", "knob", "hub_cap"), size_range=(0.8, 1.35),
           density=400, variants=("task", "arms", "executive"))
 def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     sw, sd = rng.uniform(0.46, 0.52), rng.uniform(0.44, 0.5)
@@ -69,6 +69,10 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
         fork = S.box((0.03, 0.03, 0.03), center=tip + [0, 0, z_spoke - 0.025])
         wheel = S.cylinder(wheel_r, 0.022, center=tip + [0, 0, wheel_r], axis=tangent, sections=12)
         parts.append(make_part(f"caster_{k}", "caster", [fork, wheel], shell))
+        # the cap over the wheel's axle on its outer face
+        cap_c = tip + np.array(tangent) * (0.011 + 0.0015) + [0, 0, wheel_r]
+        parts.append(make_part(f"hub_cap_{k}", "hub_cap", S.cylinder(0.011, 0.003, center=tuple(cap_c), axis=tangent, sections=10),
+                               chrome))
     z_under = z_seat - st - 0.05
     col = [S.cylinder(0.034, 0.16, center=(0, 0, z_spoke + 0.045 + 0.08), sections=14),
            S.cylinder(0.014, z_under - z_spoke - 0.1, center=(0, 0, (z_under + z_spoke + 0.1) / 2),
@@ -117,7 +121,7 @@ def office_chair(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("dining_chair", parts=("seat", "back", "leg"),
-          extra_parts=("stretcher", "back_post", "spindle", "splat", "foot", "apron", "corner_block", "button"),
+          extra_parts=("stretcher", "back_post", "spindle", "splat", "foot", "apron", "corner_block", "button", "screw"),
           size_range=(0.75, 1.1), density=550, variants=("spindle", "solid", "upholstered"))
 def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     sw, sd = rng.uniform(0.42, 0.5), rng.uniform(0.42, 0.48)
@@ -162,6 +166,12 @@ def dining_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     cb = 0.035
     parts += [make_part(f"corner_block_{k}", "corner_block",
                         S.box((cb, cb, ah * 0.7), center=(sx * (xa - leg / 2 - cb / 2), sy * (ya - 0.01 - cb / 2), z_leg - ah * 0.35)), wood)
+              for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
+    # the screw up through each block into the seat, its head just under the block
+    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+    parts += [make_part(f"screw_{k}", "screw",
+                        S.cylinder(0.0045, 0.002, center=(sx * (xa - leg / 2 - cb / 2), sy * (ya - 0.01 - cb / 2), z_leg - ah * 0.7 - 0.001),
+                                   sections=8), steel)
               for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
     if rng.random() < 0.5:
         z_st = z_leg * 0.3
@@ -277,6 +287,10 @@ def armchair(rng: np.random.Generator, variant: str) -> list[Part]:
                    round_xy=0.04, round_z=0.04)
     parts.append(make_part("back", "back", _leaning(back, lean, (0, -d / 2 + back_t / 2, deck_z)),
                            pad))
+    # the cord piping along the back's top front seam
+    bw = inner_w if variant != "mid_century" else w - 0.02
+    welt = S.cylinder(0.006, bw - 0.08, center=(0, back_t / 2 - 0.012, bh - 0.014), axis=(1, 0, 0), sections=8)
+    parts.append(make_part("piping_back", "piping", _leaning(welt, lean, (0, -d / 2 + back_t / 2, deck_z)), pad))
     if variant == "wingback":
         for i, sx in enumerate((-1, 1)):
             wing = cushion(0.08, d * 0.35, back_h - arm_h, (0, 0, (back_h - arm_h) / 2),
@@ -337,6 +351,10 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
     if chaise:
         parts += _short_legs(rng, (w / 2 - arm_w - cw, w / 2 - 0.06), (depth_r - d / 2 - 0.05,),
                              h_leg, wood, start=4)
+    # the centre support legs under the frame's middle rail, front and back (the same height as
+    # the corner legs, so the sofa stands level on them all)
+    n_leg = sum(p.label == "leg" for p in parts)
+    parts += [p for p in _short_legs(rng, (0.0,), ys, h_leg, wood, start=n_leg)]
     roll = rng.uniform(0.03, 0.06)
     parts.append(_arm_block("armrest_0", -w / 2 + arm_w / 2, arm_w, d, deck_z - 0.001, arm_h, 0,
                             pad, roll))
@@ -362,6 +380,11 @@ def sofa(rng: np.random.Generator, variant: str) -> list[Part]:
         c = _leaning(c, lean, (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean),
                                z_seat + 0.005))
         parts.append(make_part(f"back_cushion_{k}", "back_cushion", c, pad))
+        # the cord piping along the cushion's top front seam
+        welt = S.cylinder(0.006, cw - 0.07, center=(0, bc_t / 2 - 0.01, bc_h - 0.012), axis=(1, 0, 0), sections=8)
+        parts.append(make_part(f"piping_{n + k}", "piping",
+                               _leaning(welt, lean, (x, -d / 2 + back_t + bc_t / 2 - 0.005 + bc_h * 0.5 * np.sin(lean), z_seat + 0.005)),
+                               pad))
         # each back cushion is buttoned in its middle
         parts.append(make_part(f"button_{k}", "button", _leaning(S.cylinder(0.01, 0.008, center=(0, bc_t / 2, bc_h * 0.55), axis=(0, 1, 0),
                                                                            sections=8), lean,

@@ -83,7 +83,7 @@ def plate(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("foot_ring", "foot_ring", foot, mat)]
 
 
-@register("wine_glass", parts=("bowl", "stem", "foot"), extra_parts=("rim",), size_range=(0.13, 0.26), density=2500,
+@register("wine_glass", parts=("bowl", "stem", "foot"), extra_parts=("rim", "knop"), size_range=(0.13, 0.26), density=2500,
           variants=("red", "white", "flute"), placement="surface")
 def wine_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     mat = M.glass(rng)
@@ -112,8 +112,12 @@ def wine_glass(rng: np.random.Generator, variant: str) -> list[Part]:
     r_top = prof[-1][0]
     rim = ring([(r_top - t, z_bowl + h - 0.002), (r_top + 0.0004, z_bowl + h - 0.001), (r_top - t * 0.5, z_bowl + h - 0.0001)],
                sections=20)
+    # the knop: the bead blown round the stem a third of the way up, where fingers hold it
+    zk = foot_h + stem_h * 0.35
+    knop = S.lathe([(stem_r * 0.9, zk - 0.004), (stem_r * 1.9, zk), (stem_r * 0.9, zk + 0.004)], sections=12)
     return [make_part("bowl", "bowl", cup, mat), make_part("stem", "stem", stem, mat),
-            make_part("foot", "foot", foot, mat), make_part("rim", "rim", rim, mat)]
+            make_part("foot", "foot", foot, mat), make_part("rim", "rim", rim, mat),
+            make_part("knop", "knop", knop, mat)]
 
 
 @register("vase", parts=("body",), extra_parts=("neck", "lip", "foot_ring"),

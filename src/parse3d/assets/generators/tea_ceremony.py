@@ -36,7 +36,7 @@ def tea_whisk(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.05, 0.06)
     spread = 0.026 if variant != "wide" else 0.032
     parts.append(make_part("core", "core", S.frustum(0.004, 0.006, L * 0.7, center=(0, 0, hh - 0.001), sections=10), mat))
-    n = 10
+    n = 16  # the outer ring of tines (a real whisk splits its bamboo into 16 to 120)
     for k in range(n):
         a = 2 * np.pi * k / n
         d = np.array([np.cos(a), np.sin(a), 0.0])
