@@ -325,7 +325,7 @@ def local_origin(scene: Scene) -> np.ndarray:
 
 
 def _drop_out(world, dyn: dict, start_z: dict[str, float], heights: dict[str, list[float]],
-              cfg: "SettleConfig", gone: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
+              cfg: SettleConfig, gone: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
     """Freeze where it is (kinematic: what rests on it stays held) every awake body of ``dyn``
     that has fallen for certain: dropped more than ``cfg.drop_out`` and landed (vertical speed
     under 5 cm/s), or dropped more than ``cfg.fall_distance`` and no longer going down (its
