@@ -36,7 +36,9 @@ def test_round_trip_is_exact(tmp_path, category, seed):
             assert sb.source == sa.source
         for qa, qb in zip(pa.pieces, pb.pieces, strict=True):
             assert qb.is_convex
-            assert abs(qb.volume - qa.volume) <= 1e-6 * max(qa.volume, 1e-9) + 1e-12
+            # vertices are kept to 1 um: a piece's volume to its area times that (a screw of a
+            # few cubic millimetres moves by more than a millionth of itself)
+            assert abs(qb.volume - qa.volume) <= 1e-6 * max(qa.volume, 1e-9) + 2e-6 * qa.area
     assert len(b.internal) == len(a.internal)
     for ia, ib in zip(a.internal, b.internal, strict=True):
         assert (ib.part, ib.clearance, ib.depth) == (ia.part, ia.clearance, ia.depth)

@@ -47,7 +47,9 @@ def _on(child, parent):
     return {"relation": "ON", "child": child, "parent": parent}
 
 
+# the book stands beside the mug (written in a row; alone ON the top it would lie on its cover)
 BASE = [_on("desk", "floor"), _on("mug", "desk:tabletop"), _on("book", "desk:tabletop"),
+        {"relation": "SIDE_OF", "child": "book", "parent": "mug", "side": "right"},
         _on("chair", "floor")]
 PAGS = [
     _pag("desk-wall", BASE + [{"relation": "AGAINST", "child": "desk:tabletop@back",

@@ -26,6 +26,7 @@ from ..measure import check_relations
 from ..pag.model import PAG
 from ..scene.model import PlacedObject, Scene
 from ..scene.shell import build_shell
+from ..solver.intent import lying_face
 from .data import graph_arrays, pag_relations, support_parents
 from .guide import PASSES, grounded, guide_push, pag_supports, piece_boxes, still
 from .pose import denormalise_poses, room_box, rotation_from_6d
@@ -239,6 +240,8 @@ def layout_scene(pag: PAG, object_ids: list[str], categories: list[str], poses: 
             oid, cat, asset, s, R[k], np.asarray(poses[k, :3], float), "placed",
             support=None if sup is None else str(sup.parent),
             fixed=sup is not None and sup.relation in _FIXED)
+        if sup is not None and sup.relation == "ON":  # a notebook lying on its cover
+            scene.objects[oid].rests_on = lying_face(asset, R[k])
     if fit:  # contacts first: what the PAG can place exactly it places
         from .fit import fit_scene
 

@@ -28,7 +28,7 @@ from ..relations import SURFACES
 from .geometry import part_points
 
 __all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
-           "beside", "lies_on_cover", "lies_flat", "lies_in_stack"]
+           "beside", "lies_on_cover", "lies_flat", "lies_in_stack", "lying_face"]
 
 #: Support relations whose named child part is placed by the whole object when another part
 #: of the instance reaches further toward the support.
@@ -181,6 +181,21 @@ def _covered(asset: Asset) -> int | None:
         elif b[0][axis] <= ob[0][axis] + OUTSIDE_TOL and b[1][axis] < ob[1][axis] - OUTSIDE_TOL:
             sides.add(0)
     return axis if sides == {0, 1} else None
+
+
+def lying_face(asset: Asset, R: np.ndarray) -> str | None:
+    """The face (``back``/``front``/``left``/``right``) a covered flat object modelled standing
+    (:func:`_covered`: a book, a notebook, a magazine) lies on at the rotation ``R`` (its thin
+    axis within 18 degrees of vertical), as the solver records it in ``rests_on``; None when it
+    stands or is no such object. For scenes whose poses come from elsewhere (generated
+    layouts), so the ``ON`` check measures the face it lies on."""
+    axis = _covered(asset)
+    if axis is None:
+        return None
+    up = float(np.asarray(R, float)[2, axis])
+    if abs(up) < 0.95:
+        return None
+    return (("left", "back") if up > 0 else ("right", "front"))[axis]
 
 
 #: Share of an object's extents a cover panel spans (:func:`_covered`).
