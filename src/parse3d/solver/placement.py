@@ -752,6 +752,11 @@ def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Ge
     raise Fail(f"no valid pose on {sup.name} in {trials} trials (last: {last})")
 
 
+#: Metres below a named surface that a child dropped onto its owner's geometry may sink
+#: (into a tray inside its rim, into a plate's well); further, it fell through.
+FALL_THROUGH = 0.1
+
+
 def _onto_parent(d: _OnSupport, cand: PlacedObject, rise: float
                  ) -> tuple[PlacedObject, bool, str]:
     """``cand`` settled onto the parent's actual geometry (a plate on a plate sits in its
@@ -765,6 +770,11 @@ def _onto_parent(d: _OnSupport, cand: PlacedObject, rise: float
     if rise and np.isfinite(dist):  # nested: rays miss curved walls touching between vertices
         dist = pieces_drop(asset, cand.transform(), parent, -s.normal, dist + 5e-3)
     dropped = bool(np.isfinite(dist) and dist > 2 * EPS)
+    if dropped and sup.owner != "room" and dist - (d.drop + d.lift + rise) > FALL_THROUGH:
+        # through the named surface, far down onto another part of the owner (a keyboard
+        # between a stand's arms down onto its floor rails): not resting on what was named
+        return cand, False, (f"it would fall {dist:.2f} m through {sup.name} onto a lower "
+                             f"part of {sup.owner}")
     if dropped:
         t = t - (dist - EPS) * s.normal
         cand = PlacedObject(d.oid, asset.category, asset, scale, Rt, t)
