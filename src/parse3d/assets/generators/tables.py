@@ -2,10 +2,9 @@
 
 Every table has a ``tabletop`` and at least one ``leg``; desks may add a ``drawer`` with a
 ``handle`` and a ``modesty_panel``. Under the top: a four-leg table's glued ``corner_block`` s
-between its aprons, each fixed by a ``screw`` into the top, and low ``stretcher`` s joining its
-legs; a pedestal table's two crossed
+between its aprons and low ``stretcher`` s joining its legs; a pedestal table's two crossed
 ``cleat`` s the column's ``mounting_plate`` is fixed to by four ``screw`` s; a trestle table's ``corbel`` s bracing each upright under the
-top, the ``wedge`` s locking the stretcher's ``tenon`` s and the ``screw`` s up through each cap.
+top and the ``wedge`` s locking the stretcher's ``tenon`` s.
 """
 
 from __future__ import annotations
@@ -87,25 +86,6 @@ def _corner_blocks(w, d, h_leg, inset: float, leg: float, mat) -> list[Part]:
                       S.box((b, b, ah * 0.7), center=(sx * (w / 2 - inset - leg / 2 - b / 2), sy * (d / 2 - inset - 0.015 - b / 2),
                                                       h_leg - ah * 0.35)), mat)
             for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
-
-
-def _block_screws(w, d, h_leg, inset: float, leg: float) -> list[Part]:
-    """The screw through each corner block up into the top; its head sits just under the block."""
-    ah = min(0.09, h_leg * 0.14)
-    b = 0.045
-    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
-    return [make_part(f"screw_{k}", "screw",
-                      S.cylinder(0.005, 0.002, center=(sx * (w / 2 - inset - leg / 2 - b / 2), sy * (d / 2 - inset - 0.015 - b / 2),
-                                                      h_leg - ah * 0.7 - 0.001), sections=8), steel)
-            for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
-
-
-def _cap_screws(w, d, h_leg) -> list[Part]:
-    """Two screws up through each trestle's cap into the top, near its ends; heads under the cap."""
-    steel = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
-    return [make_part(f"screw_{2 * i + j}", "screw",
-                      S.cylinder(0.006, 0.002, center=(x, sy * d * 0.33, h_leg - 0.041), sections=8), steel)
-            for i, x in enumerate((-w / 2 + 0.12, w / 2 - 0.12)) for j, sy in enumerate((-1, 1))]
 
 
 def _stretchers(w, d, h_leg, inset: float, leg: float, mat, *, centre: bool) -> list[Part]:
@@ -191,13 +171,11 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
         parts += _four_legs(rng, w, d, h_leg, leg_mat, inset=inset, leg=leg, tapered=rng.random() < 0.4)
         parts += _aprons(w, d, h_leg, inset, leg, top_mat, sides="y" if desk else "xy")
         parts += _corner_blocks(w, d, h_leg, inset, leg, top_mat)
-        parts += _block_screws(w, d, h_leg, inset, leg)
         parts += _stretchers(w, d, h_leg, inset, leg, leg_mat, centre=not desk and not shelf)
     elif variant == "pedestal":
         parts += _pedestal(rng, h_leg, leg_mat, r_base=min(w, d) * rng.uniform(0.28, 0.36))
     elif variant == "trestle":
         parts += _trestle(rng, w, d, h_leg, leg_mat, leg)
-        parts += _cap_screws(w, d, h_leg)
     if desk:
         # between the legs, or between the trestle caps
         span = w - 2 * leg - 0.06 if variant == "four_leg" else w - 0.24 - leg * 1.2 - 0.02
@@ -222,7 +200,7 @@ def _table(rng, variant: str, *, w_rng, d_rng, h_rng, round_ok: bool = False,
 
 
 @register("desk", parts=("tabletop", "leg"), extra_parts=("drawer", "handle", "modesty_panel", "stretcher", "drawer_box", "apron", "foot",
-                                                       "corner_block", "screw", "corbel", "wedge", "tenon"),
+                                                       "corner_block", "corbel", "wedge", "tenon"),
           size_range=(1.0, 1.7), density=600, variants=("four_leg", "trestle"))
 def desk(rng: np.random.Generator, variant: str) -> list[Part]:
     return _table(rng, variant, w_rng=(1.1, 1.6), d_rng=(0.6, 0.8), h_rng=(0.72, 0.76), desk=True)
