@@ -9,6 +9,10 @@ edge-up (a folded towel) is drawn thinnest-first among the instances looked at
 with several things to hang below it is drawn long enough for them, within its category's
 size range (:func:`rail_scale`).
 
+Cloth written ``ON`` a rod (a towel on a drying rack's rod, a sock on a rail) cannot lie on a
+bar a centimetre thick: it hangs over it, held by the rod like a towel on a towel bar, and the
+``ON`` is recorded relaxed with what to write instead (:func:`draped_over`).
+
 Cloth hung on one rack drapes over what already hangs there (:func:`hung_over`): a second coat
 on a coat tree whose hooks sit a hand apart goes on its hook over the first coat's shoulder,
 as real coats do, instead of failing with "jacket1 in the way".
@@ -29,8 +33,9 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["drapes", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook",
-           "rail_fit", "rail_scale", "thinness", "typical_size", "RAIL_GAP", "DRAPING"]
+__all__ = ["drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook",
+           "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
+           "DRAPING", "ROD_THICK", "ROD_LONG"]
 
 #: Share of a rail's length the objects hung on it may fill together (the rest: its brackets
 #: and the gaps between them).
@@ -307,3 +312,55 @@ def other_hook(st: SolveState, edge: Edge, sup, loose: str | None = None) -> str
     return (f"{loose}; " if loose else "") + (f"no room to hang {edge.child.object} below "
             f"{format_ref(ref.object, ref.part, ref.index, ref.surface)} (others hang there, "
             f"or it faces a wall): it hangs on {ref.object}:{sup.choice.part} instead")
+
+
+#: Metres: a part no thicker than this across its length is a rod or a rail (a drying rack's
+#: rod, a towel rail), too thin for cloth to lie on.
+ROD_THICK = 0.04
+#: A rod is at least this many times longer than it is thick.
+ROD_LONG = 6.0
+
+
+def rod_thickness(scene, edge: Edge) -> float | None:
+    """The thickness in metres of the parent parts ``edge`` names (on ``scene``'s placed
+    parent) when every one of them is a rod (long and thin in its two other axes: :data:`ROD_THICK`, :data:`ROD_LONG`), at the
+    placed parent's scale; None for anything else (a shelf, a whole object, the floor)."""
+    ref = edge.parent
+    if ref.is_room_element or ref.part is None:
+        return None
+    pobj = scene.objects.get(ref.object)
+    if pobj is None or not pobj.placed or pobj.asset is None:
+        return None
+    parts = pobj.asset.parts_by_label(ref.part)
+    if ref.index is not None:
+        parts = parts[ref.index:ref.index + 1]
+    if not parts:
+        return None
+    thick = 0.0
+    for p in parts:
+        ext = np.sort(np.ptp(np.asarray(p.bounds, float), axis=0)) * pobj.scale
+        if ext[1] > ROD_THICK or ext[2] < ROD_LONG * ext[1]:
+            return None
+        thick = max(thick, float(ext[1]))
+    return thick
+
+
+def draped_over(scene, edge: Edge, asset: Asset) -> tuple[Edge, str] | None:
+    """For cloth (:func:`drapes`) written ``ON`` a rod (:func:`rod_thickness`): the edge it is
+    placed by instead, ``HANGING_BELOW`` the same rod parts (edge-up when it is thin, as a
+    towel on a towel bar), and why the ``ON`` as written is relaxed; None for anything else."""
+    if edge.relation != "ON" or not drapes(asset):
+        return None
+    thick = rod_thickness(scene, edge)
+    if thick is None:
+        return None
+    from ..pag.refs import format_ref
+
+    c, p = edge.child, edge.parent
+    parent = replace(p, surface="bottom", text=format_ref(p.object, p.part, p.index, "bottom"))
+    child = replace(c, surface=None, text=format_ref(c.object, c.part, c.index, None))
+    hung = Edge("HANGING_BELOW", child, parent, {})
+    rod = format_ref(p.object, p.part, p.index, None)
+    why = (f"{rod} is a rod {thick * 1000:.0f} mm thick: {c.object} cannot lie on it, so it "
+           f"hangs over it (write HANGING_BELOW {c.object} -> {rod})")
+    return hung, why

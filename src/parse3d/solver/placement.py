@@ -33,7 +33,7 @@ from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .fit import instance_for
 from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
-from .hanging import hang_over, hung_lengthwise, other_hook, rail_fit
+from .hanging import draped_over, hang_over, hung_lengthwise, other_hook, rail_fit
 from .intent import (
     beside,
     lies_flat,
@@ -191,9 +191,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
         # a notebook ON its cover, or ON a desk, lies on it; so do books stacked ON one another
+        # cloth ON a rod hangs over it, the ON relaxed (hanging.py)
+        drape = None if hang is not None else draped_over(st.scene, support_edge, asset)
+        if drape is not None:
+            hang = hung_edge_up(drape[0], asset) or drape[0]
         # several hung below one rail share its length (towels along a bar)
         scale = rail_fit(st, oid, support_edge, asset, scale,
-                         SURFACE_AXES[hang.child.surface] if hang is not None else 2)
+                         SURFACE_AXES.get(hang.child.surface, 2) if hang is not None else 2)
         scale = lean_fit(st, oid, others, asset, scale)  # side by side along a face
         loose = None
         placed_edge = support_edge
@@ -202,6 +206,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         elif nest is not None and attempt == cfg.asset_attempts - 1 and reasons:
             # the stack as written found no pose: nested in the one below instead
             placed_edge, loose = nest, nest_reason(support_edge, reasons)
+        elif drape is not None:
+            loose = drape[1]
         elif hang is None and names_part(support_edge) \
                 and 0 < overhang(asset, support_edge)[0] < np.inf:
             # even the best instance is overhung: it rests by the part that reaches furthest
@@ -228,7 +234,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                            support_choice=sup.choice)
         obj.rests_on = pose[4] if len(pose) > 4 else (hang.child.surface if hang is not None
                                                        else None)
-        obj.fixed = RULES[support_edge.relation].fixed
+        obj.fixed = RULES[(hang or support_edge).relation].fixed
         obj.stacked_on = under
         full = _full_checks(edges, skip, checks)
         if placed_edge is nest:  # measured on the edge as written afterwards
