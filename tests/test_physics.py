@@ -32,6 +32,7 @@ from parse3d.physics.contacts import (
     signed_distance,
 )
 from parse3d.physics.mujoco import mujoco_motion
+from parse3d.physics.settle import settle_world
 from parse3d.scene.model import PlacedObject, Scene
 from parse3d.scene.shell import build_shell
 
@@ -254,13 +255,7 @@ def test_objects_of_many_pieces_make_contacts_only_when_near():
     cfg = SettleConfig()
     assert len(asset_collision(sc.objects["saucer"].asset).pieces) >= cfg.many_pieces
     assert len(asset_collision(sc.objects["book"].asset).pieces) < cfg.many_pieces
-    world = build_world(sc, timestep=cfg.dt, linear_damping=cfg.linear_damping,
-                        angular_damping=cfg.angular_damping,
-                        max_depenetration_velocity=cfg.max_depenetration_velocity,
-                        sleep_threshold=cfg.sleep_threshold,
-                        solver_position_iterations=cfg.solver_position_iterations,
-                        solver_velocity_iterations=cfg.solver_velocity_iterations,
-                        many_pieces=(cfg.many_pieces, cfg.many_pieces_offset))
+    world = settle_world(sc, cfg)
     offsets = {}
     for sh in world.shapes:
         offsets.setdefault(world.owner(sh)[0], set()).add(round(sh.get_contact_offset(), 4))

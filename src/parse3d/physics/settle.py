@@ -351,6 +351,19 @@ def _drop_out(world, dyn: dict, start_z: dict[str, float], heights: dict[str, li
 STILL_CHECKS = 6
 
 
+def settle_world(scene: Scene, cfg: SettleConfig):
+    """The PhysX world :func:`settle` simulates ``scene`` in with ``cfg``'s parameters (in the
+    room's local frame, :func:`local_origin`)."""
+    return build_world(scene, timestep=cfg.dt, linear_damping=cfg.linear_damping,
+                       angular_damping=cfg.angular_damping,
+                       max_depenetration_velocity=cfg.max_depenetration_velocity,
+                       sleep_threshold=cfg.sleep_threshold,
+                       solver_position_iterations=cfg.solver_position_iterations,
+                       solver_velocity_iterations=cfg.solver_velocity_iterations,
+                       origin=local_origin(scene), free_joints=cfg.free_joints,
+                       many_pieces=(cfg.many_pieces, cfg.many_pieces_offset))
+
+
 def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None = None,
            steps: int | None = None, linear_damping: float | None = None,
            angular_damping: float | None = None) -> SettleReport:
@@ -379,14 +392,7 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
     if over:
         cfg = replace(cfg, **over)
     t0 = time.perf_counter()
-    world = build_world(scene, timestep=cfg.dt, linear_damping=cfg.linear_damping,
-                        angular_damping=cfg.angular_damping,
-                        max_depenetration_velocity=cfg.max_depenetration_velocity,
-                        sleep_threshold=cfg.sleep_threshold,
-                        solver_position_iterations=cfg.solver_position_iterations,
-                        solver_velocity_iterations=cfg.solver_velocity_iterations,
-                        origin=local_origin(scene), free_joints=cfg.free_joints,
-                        many_pieces=(cfg.many_pieces, cfg.many_pieces_offset))
+    world = settle_world(scene, cfg)
     t1 = time.perf_counter()
     dyn = {i: world.bodies[i] for i in world.dynamic}
     start_z = {i: float(scene.objects[i].position[2]) for i in dyn}
