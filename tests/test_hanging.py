@@ -143,3 +143,19 @@ def test_a_foreign_pub_hangs_every_jacket_and_leans_every_cushion(seed):
             part = scene.objects[c.child.split(":")[0]].support_choice.part
             assert f"it hangs on coat_rack:{part} instead" in why, why
     assert not [i for i in verify_settled(scene) if i.cause == "fell"]
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_a_curtain_hangs_from_a_ring_millimetres_wide(seed):
+    """A curtain named below its rod's rings: a ring's underside is narrower than the margin
+    kept from a support's edge, yet the curtain hangs from a ring, every relation held after
+    settling and nothing fell."""
+    scene = solved("hung_from_rings", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    curtain = scene.objects["curtain"]
+    assert curtain.support_choice.owner == "rod"
+    assert curtain.support_choice.part.startswith("ring"), curtain.support_choice.part
+    assert not [o.id for o in scene.objects.values() if "fell" in o.flags]
+    broken = [(c.relation, c.child, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken

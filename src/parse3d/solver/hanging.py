@@ -33,7 +33,7 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook",
+__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -364,3 +364,11 @@ def draped_over(scene, edge: Edge, asset: Asset) -> tuple[Edge, str] | None:
     why = (f"{rod} is a rod {thick * 1000:.0f} mm thick: {c.object} cannot lie on it, so it "
            f"hangs over it (write HANGING_BELOW {c.object} -> {rod})")
     return hung, why
+
+
+def attachment_region(region0, region):
+    """Where on a support's underside a hung child's attachment may be: the support's region
+    less its margin (``region0``), or the whole region when the margin leaves nothing (the
+    bottom of a curtain ring or of a rack's tine, a few millimetres wide: the hook hangs from
+    it all the same)."""
+    return region if region0.is_empty or region0.area < 1e-10 else region0

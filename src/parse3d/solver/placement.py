@@ -33,7 +33,14 @@ from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .fit import instance_for
 from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
-from .hanging import draped_over, hang_over, hung_lengthwise, other_hook, rail_fit
+from .hanging import (
+    attachment_region,
+    draped_over,
+    hang_over,
+    hung_lengthwise,
+    other_hook,
+    rail_fit,
+)
 from .intent import (
     beside,
     lies_flat,
@@ -531,6 +538,7 @@ def _hanging_region(d: _OnSupport):
     centre over it); the owner's other parts (a towel bar's brackets) block only what hangs
     at their depth: the hook, not the shoulders below."""
     st, sup, F, region0 = d.st, d.sup, d.F, d.region0
+    region0 = attachment_region(region0, sup.region)  # a ring, a tine: hung from its bottom
     s = sup.surface
     Y = d.hull @ d.R.T
     hN = Y @ s.normal
