@@ -115,3 +115,37 @@ def test_gallery_writes_a_contact_sheet(capsys, tmp_path):
     img = Image.open(out)
     assert img.width > 100 and img.height > 100
     assert len(set(img.convert("RGB").getdata())) > 10  # something was drawn
+
+
+def test_words_lists_synonyms_and_hypernyms(capsys):
+    code, out, _ = run(capsys, "assets", "words", "--json")
+    assert code == 0
+    rows = {r["word"]: r for r in json.loads(out)}
+    assert rows["couch"] == {"word": "couch", "kind": "synonym", "categories": ["sofa"]}
+    assert rows["chair"]["kind"] == "hypernym"
+    assert {"chair", "armchair", "office_chair"} <= set(rows["chair"]["categories"])
+    cats = set(registry.categories())
+    assert all(set(r["categories"]) <= cats for r in rows.values())
+
+
+def test_words_looks_up_words_and_part_references(capsys):
+    code, out, _ = run(capsys, "assets", "words", "Couches", "desks", "table:top@top",
+                       "book:cover@front", "--json")
+    assert code == 0
+    couch, desk, top, cover = json.loads(out)
+    assert couch["kind"] == "synonym" and couch["categories"] == ["sofa"]
+    assert "seat_cushion" in couch["part_words"]["sofa"]
+    assert desk["kind"] == "category" and desk["categories"] == ["desk"]
+    assert top["kind"] == "hypernym" and top["part"]["desk"] == "tabletop"
+    assert set(top["part"]) == set(top["categories"])
+    assert cover["part"] == {"book": "front_cover"}
+    code, out, _ = run(capsys, "assets", "words", "throw")
+    assert code == 0 and "throw: a synonym of blanket" in out
+
+
+def test_words_that_name_nothing_exit_2_with_what_to_write(capsys):
+    code, out, err = run(capsys, "assets", "words", "book:cover", "mugg")
+    assert code == 2
+    assert "write cover@front or cover@back" in out
+    assert "no category 'mugg'" in out and "did you mean 'mug'" in out
+    assert "Traceback" not in out + err

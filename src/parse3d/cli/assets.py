@@ -266,6 +266,97 @@ def add(src: Path = typer.Argument(..., help="Folder of .glb/.gltf files and/or 
                       f"{', '.join(cat.vocabulary)}; size {cat.size_range[0]:.2f}–{cat.size_range[1]:.2f} m")
 
 
+# --------------------------------------------------------------------------- assets words
+def _look_up(resolver, text: str) -> dict:
+    """What one word (``throw``) or reference (``book:cover@front``) names: a category, a
+    synonym's or hypernym's categories, or a part label; else the problem with suggestions."""
+    from ..words import normalize, singulars, suggest
+
+    ref, _, surface = text.partition("@")
+    word, _, part = ref.partition(":")
+    part = part.split("#", 1)[0]
+    row: dict = {"word": text}
+    cats = resolver.categories_for(word)
+    if cats is None:
+        row["problem"] = f"no category {word!r}" + (
+            suggest(word, resolver.words()) or " (see `parse3d assets words`)")
+        return row
+    w = normalize(word)
+    lex = resolver.lex
+    form = next((f for f in [w, *singulars(w)]
+                 if f in lex.hypernyms or f in cats or f in lex.synonyms), w)
+    row["kind"] = ("hypernym" if form in lex.hypernyms else
+                   "category" if form in cats else "synonym")
+    row["categories"] = list(cats)
+    if not part:
+        row["part_words"] = {c: resolver.part_words(c) for c in cats}
+        return row
+    labels, problems = {}, []
+    for c in cats:
+        r = resolver.part(c, part, surface or None)
+        if r.label is not None:
+            labels[c] = r.label
+        else:
+            problems.append(r.problem)
+    row["part"] = labels
+    if not labels:
+        row["problem"] = problems[0]
+    return row
+
+
+@assets_app.command("words")
+def words(items: list[str] = typer.Argument(None, help="Words or references to look up "
+                                            "(`throw`, `chair`, `book:cover@front`)."),
+          json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> None:
+    """The words a PAG may use besides category names: with no argument every synonym and
+    hypernym of the vocabulary file; with words, what each names (its categories, and for
+    `object:part@surface` the part label), or suggestions. Exits 2 when a word names nothing.
+
+    Example: parse3d assets words throw chair book:cover@front
+    """
+    from ..words import Resolver
+    from ._vocab import cli_vocabulary
+
+    resolver = Resolver(cli_vocabulary())
+    if not items:
+        lex = resolver.lex
+        rows = ([{"word": w, "kind": "synonym", "categories": list(resolver.categories_for(w))}
+                 for w in sorted(lex.synonyms) if resolver.categories_for(w)]
+                + [{"word": w, "kind": "hypernym", "categories": list(resolver.categories_for(w))}
+                   for w in sorted(lex.hypernyms) if resolver.categories_for(w)])
+        if json_:
+            print_json(rows)
+            return
+        for r in rows:
+            arrow = "any of" if r["kind"] == "hypernym" else "is"
+            console.print(f"{r['word']:<24} {arrow} {', '.join(r['categories'])}", highlight=False,
+                          markup=False, soft_wrap=True)
+        console.print(f"{sum(r['kind'] == 'synonym' for r in rows)} synonyms, "
+                      f"{sum(r['kind'] == 'hypernym' for r in rows)} hypernyms; a category's own "
+                      "name, its plural and any case, spaces or hyphens work too", highlight=False)
+        return
+    rows = [_look_up(resolver, t) for t in items]
+    if json_:
+        print_json(rows)
+    else:
+        for r in rows:
+            if "problem" in r:
+                console.print(f"{r['word']}: {r['problem']}", highlight=False, markup=False)
+            elif "part" in r:
+                got = ", ".join(f"{c}:{lab}" for c, lab in r["part"].items())
+                console.print(f"{r['word']}: the part {got}", highlight=False, markup=False)
+            else:
+                say = {"category": "the category", "synonym": "a synonym of",
+                       "hypernym": "any of (one is drawn)"}[r["kind"]]
+                console.print(f"{r['word']}: {say} {', '.join(r['categories'])}",
+                              highlight=False, markup=False)
+                for c, ws in r["part_words"].items():
+                    console.print(f"    {c} parts: {', '.join(ws)}", highlight=False,
+                                  markup=False, soft_wrap=True)
+    if any("problem" in r for r in rows):
+        raise typer.Exit(2)
+
+
 # --------------------------------------------------------------------------- assets stats
 @assets_app.command("stats")
 def stats(seeds: int = typer.Option(3, "--seeds", min=1, help="Assets per category (the first pool slots)."),
