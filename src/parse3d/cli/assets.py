@@ -59,11 +59,12 @@ def list_(json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> No
     from rich.text import Text
 
     def parts_of(r: dict) -> str:
-        return ", ".join(f"[bold]{p}[/bold]" if p in r["required"] else p for p in r["parts"])
+        # required parts in bold, and starred for output without styles (a pipe, a file)
+        return ", ".join(f"[bold]{p}*[/bold]" if p in r["required"] else p for p in r["parts"])
 
     out = console.get()
     if out.width >= 140:
-        t = Table("category", "parts (required in bold)", "size (m)", "placement", "variants")
+        t = Table("category", "parts (* every variant has it)", "size (m)", "placement", "variants")
         for r in rows:
             t.add_row(r["category"], parts_of(r),
                       f"{r['size_range'][0]:.2f}–{r['size_range'][1]:.2f}", r["placement"],
@@ -72,7 +73,7 @@ def list_(json_: bool = typer.Option(False, "--json", help="Print JSON.")) -> No
     else:
         # a narrow terminal: one heading line per category, its parts wrapped beneath
         out.print("[dim]category  size range (m)  placement  (variants)\n"
-                  "    parts (required in bold)[/dim]")
+                  "    parts (* every variant has it)[/dim]")
         for r in rows:
             variants = f"  [dim]({', '.join(r['variants'])})[/dim]" if r["variants"] else ""
             out.print(f"[bold cyan]{r['category']}[/bold cyan]  "
