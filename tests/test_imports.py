@@ -136,7 +136,7 @@ SOLVER_LEVELS: dict[str, int] = {
     "regions": 6, "rotation": 6,
     "nesting": 6,
     "hanging": 7, "ledge": 7,
-    "standing": 8, "leaning": 8, "fit": 8,
+    "standing": 8, "leaning": 8, "fit": 8, "slots": 8,
     "choice": 9, "validation": 9,
     "sampling": 10,
     "stacking": 11, "mounting": 11,

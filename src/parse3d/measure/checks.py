@@ -947,7 +947,7 @@ def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
 
 
 #: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.
-OPEN_SUPPORT_LABELS = frozenset({"shelf"})
+OPEN_SUPPORT_LABELS = frozenset({"shelf", "rack"})
 #: Part labels of boards: ``IN`` one that holds nothing inside (a wall shelf's board) means ON
 #: its top.
 BOARD_LABELS = frozenset({"shelf", "tier", "board", "plank", "ledge"})

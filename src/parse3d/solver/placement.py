@@ -90,6 +90,7 @@ from .sampling import (
     step_under,
     well_inside,
 )
+from .slots import may_slot, place_in_slots
 from .stacking import (
     STACK_CENTRE,
     STACK_OVER,
@@ -298,6 +299,12 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
     body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
+    if cfg.strategy == "constrained" and support_edge.relation == "IN":
+        # flat, IN a rack of tines: on edge between two of them first, as a rack holds plates
+        got = _slotted(st, oid, asset, scale, sups, order, support_edge, others, body, rng,
+                       reasons, inner)
+        if got is not None:
+            return got
     for variant in _wall_choices(st, others, rng):
         for si in order:
             sup = sups[int(si)]
@@ -340,6 +347,12 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and support_edge.relation != "IN":
+        # flat, ON a rack of tines, and lying there failed: on edge between two of them
+        got = _slotted(st, oid, asset, scale, sups, order, support_edge, others, body, rng,
+                       reasons, inner)
+        if got is not None:
+            return got
     if cfg.strategy == "constrained" and may_stack(st, support_edge):
         # crowding: rest on an object of the same category already on that support
         for si in order:
@@ -351,6 +364,23 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                 inner.append(f.intrinsic)
     raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)),
                intrinsic=all(inner))
+
+
+def _slotted(st: SolveState, oid: str, asset: Asset, scale: float, sups: list, order,
+             edge: Edge, others: list[Edge], body: Body, rng: np.random.Generator,
+             reasons: list, inner: list):
+    """The child stood on edge in the slots of a rack of tines (solver/slots.py) on the first
+    support that has them, or None (the reasons of what was tried added to ``reasons``)."""
+    for si in order:
+        if not may_slot(st, asset, scale, sups[int(si)], edge):
+            continue
+        try:
+            return place_in_slots(st, oid, asset, scale, sups[int(si)], edge, body, rng,
+                                  lambda c, sp: validate_pose(st, c, edge, others, sp))
+        except Fail as f:
+            reasons.append(str(f))
+            inner.append(f.intrinsic)
+    return None
 
 
 def _wall_choices(st: SolveState, edges: list[Edge], rng: np.random.Generator) -> list[list[Edge]]:

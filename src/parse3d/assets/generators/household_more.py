@@ -262,6 +262,9 @@ def dish_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     rails = [S.tube([(-w / 2, sy * d / 2, z), (w / 2, sy * d / 2, z)], 0.003, sections=6) for sy in (-1, 1) for z in (0.03, h)]
     rails += [S.tube([(sx * w / 2, -d / 2, z), (sx * w / 2, d / 2, z)], 0.003, sections=6) for sx in (-1, 1) for z in (0.03, h)]
     rails += [S.tube([(sx * w / 2, sy * d / 2, 0.015), (sx * w / 2, sy * d / 2, h)], 0.003, sections=6) for sx in (-1, 1) for sy in (-1, 1)]
+    # the floor grid plates and glasses stand on, the tines' feet on it
+    rails += [S.tube([(-w / 2, y, 0.03), (w / 2, y, 0.03)], 0.0025, sections=6)
+              for y in np.linspace(-d / 2, d / 2, round(d / 0.016) + 1)[1:-1]]
     out.append(make_part("rack", "rack", rails, wire))
     # the row of tines plates stand between, each its own wire
     out += each("tine", "tine", [S.tube([(x, -d * 0.3, 0.03), (x, -d * 0.3, 0.03 + h * 0.7)], 0.0025, sections=6)
@@ -272,8 +275,9 @@ def dish_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("cutlery_holder", "cutlery_holder", S.box((0.08, 0.1, h * 0.9), center=(w / 2 - 0.05, d * 0.2, 0.015 + h * 0.45)),
                          M.plastic(rng)))
     if variant == "two_tier":
-        out.append(make_part("rack_upper", "rack", S.box((w * 0.6, d * 0.9, 0.004), center=(-w * 0.15, 0, h + 0.12)), wire))
-        out.append(make_part("post", "rack", [S.tube([(sx * w * 0.3 - w * 0.15, 0, h), (sx * w * 0.3 - w * 0.15, 0, h + 0.12)], 0.003)
+        # the cup tier on posts high enough for a dinner plate standing in the tines below
+        out.append(make_part("rack_upper", "rack", S.box((w * 0.6, d * 0.9, 0.004), center=(-w * 0.15, 0, h + 0.2)), wire))
+        out.append(make_part("post", "rack", [S.tube([(sx * w * 0.3 - w * 0.15, 0, h), (sx * w * 0.3 - w * 0.15, 0, h + 0.2)], 0.003)
                                               for sx in (-1, 1)], wire))
     return out
 
