@@ -1,0 +1,27 @@
+"""What falls after placing, and floors that are full: a cup that finds no room on a crowded
+tray rests only where it is held; a rug lies under furniture standing on legs. Solved,
+settled and repaired as ``parse3d solve`` does (real SAPIEN physics)."""
+
+from __future__ import annotations
+
+import pytest
+
+from test_rooms import solved
+
+
+def _fell(scene) -> list:
+    return [(o.id, o.flags) for o in scene.objects.values()
+            if {"fell", "tipped", "left_support"} & set(o.flags)]
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_cups_on_a_crowded_tray_are_not_balanced_on_the_kettle(seed):
+    """A kettle and two cups IN a tea tray on a small fridge: every cup is placed and stays
+    (a pile rest on the kettle's knob or lid slid off in settling), IN the tray after settling,
+    and nothing fell."""
+    scene = solved("cups_beside_a_kettle", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not _fell(scene), _fell(scene)
+    for c in scene.relations:
+        if c.relation == "IN":
+            assert c.holds_settled is True, (c.child, c.parent, c.residual_settled)
