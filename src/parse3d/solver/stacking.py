@@ -79,9 +79,10 @@ def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarra
         gaps = {o.id: drop_distance(pts, asset, cand.transform(), st.hulls[o.id], o.asset,
                                     o.transform(), -n) for o in onto}
         under = min(gaps, key=gaps.get)
-        if under != owner.id and not _rests(cand, pts, asset, onto, st, n, c3 + t, s,
-                                                 min(np.ptp(Y @ s.u), np.ptp(Y @ s.v))):
-            # on a knob, a lid's dome or the edge of another content: it would slide off
+        if under != owner.id and not _rolls(asset) and not _rests(
+                cand, pts, asset, onto, st, n, c3 + t, s, min(np.ptp(Y @ s.u), np.ptp(Y @ s.v))):
+            # on a knob, a lid's dome or the edge of another content: it would slide off (a
+            # round thing rolls among the others into the container's hollow, where it rests)
             last = f"it would balance on {under} in {owner.id} and slide off"
             continue
         holds, res, detail = check_edge(st.scene, support_edge, cand,
@@ -92,6 +93,14 @@ def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarra
         return (R, t, sup, body), 1, [(holds, res, detail), *checks], \
             None if under == owner.id else under
     raise Fail(f"no free space on {sup.name} and no room in a pile: {last}")
+
+
+def _rolls(asset: Asset) -> bool:
+    """Round (:func:`parse3d.solver.sampling.round_asset`) with no large part lying flat: an
+    apple, an orange; not a cup as tall as it is wide, which stands on its flat base."""
+    size = float(np.ptp(asset_geometry(asset).hull, axis=0).max())
+    return round_asset(asset) and not any(
+        lies_flat(asset, p) for p in asset.parts if float(np.ptp(p.vertices, axis=0).max()) >= 0.5 * size)
 
 
 def _rests(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedObject],
