@@ -25,3 +25,21 @@ def test_cups_on_a_crowded_tray_are_not_balanced_on_the_kettle(seed):
     for c in scene.relations:
         if c.relation == "IN":
             assert c.holds_settled is True, (c.child, c.parent, c.residual_settled)
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3))
+def test_a_rug_written_after_the_furniture_lies_between_it(seed):
+    """A rug ON the floor of a small furnished bedroom, written after the bed, wardrobe, desk,
+    chair and nightstand: it is placed (under the bed's frame or between the chair's feet,
+    drawn as large as fits), it rests flat on the floor, nothing fell, and each of its
+    relations holds after settling or is recorded relaxed with what blocked it."""
+    scene = solved("rug_in_a_furnished_room", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not _fell(scene), _fell(scene)
+    relaxed = scene.meta.get("relaxed", {})
+    for c in scene.relations:
+        if c.child == "rug":
+            assert c.holds_settled is True or str(c.index) in relaxed, (c.relation, c.parent)
+    rug = scene.objects["rug"]
+    assert rug.settled_position is not None
+    assert abs(rug.settled_position[2] - rug.position[2]) < 0.01
