@@ -43,3 +43,16 @@ def test_a_rug_written_after_the_furniture_lies_between_it(seed):
     rug = scene.objects["rug"]
     assert rug.settled_position is not None
     assert abs(rug.settled_position[2] - rug.position[2]) < 0.01
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3))
+def test_a_register_on_raised_parts_of_a_counter_stays(seed):
+    """A cash register ON a checkout counter whose top carries a conveyor and other raised
+    parts: it is placed, stays (its centre of mass over what it touches on the raised part,
+    not half over the conveyor's end), its ON holds after settling, and nothing fell."""
+    scene = solved("register_on_a_checkout", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    assert not _fell(scene), _fell(scene)
+    for c in scene.relations:
+        if c.child == "register" and c.relation == "ON":
+            assert c.holds_settled is True, c.residual_settled

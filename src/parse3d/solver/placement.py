@@ -57,6 +57,7 @@ from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, obstacles
+from .resting import rests_on
 from .rotation import solve_rotation
 from .rules import RULES
 from .sampling import (
@@ -733,6 +734,11 @@ def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Ge
             if not why and d.overhang and sup.spans and rel == "ON" \
                     and not held_across(asset, scale, Rt, t, s, d.base_solid, rests=True):
                 why = HANGS_OFF  # caught by something below the parts (a wheel on a rail)
+            if not why and (d.overhang or d.lift > 0) and not sup.spans and rel == "ON" \
+                    and not rests_on(cand, st.scene.objects[sup.owner],
+                                     np.vstack([p for _, p in st.world_pieces(sup.owner)]),
+                                     s.normal, s.u, s.v):
+                why = HANGS_OFF  # over the edge of a raised part it came to rest on (resting.py)
             if why:
                 last = why
                 continue

@@ -14,9 +14,11 @@ import numpy as np
 import shapely
 
 from ..assets.model import Asset
-from ..measure.geometry import ray_caster
+from ..measure.checks import world_points
+from ..measure.geometry import asset_geometry, ray_caster
+from ..scene.model import PlacedObject
 
-__all__ = ["REST_TOL", "REST_MARGIN", "rest_points", "held_at_rest"]
+__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "rest_points", "held_at_rest", "rests_on"]
 
 
 #: Metres above the first contact within which a point of a dropped child counts as touching
@@ -27,6 +29,11 @@ REST_TOL = 3e-3
 #: Fraction of the child's narrowest width its centre of mass keeps inside the hull of its
 #: contacts (an unstable balance on an edge tips at the first push of settling).
 REST_MARGIN = 0.05
+
+
+#: Metres from a line (or point) of contact within which a centre of mass is over it: a pen
+#: lying on its side rests along a line, as the ``ON`` check reads it (2 mm).
+LINE_TOL = 2e-3
 
 
 def _hits(pts: np.ndarray, asset: Asset, T: np.ndarray, d: np.ndarray) -> np.ndarray:
@@ -80,10 +87,32 @@ def held_at_rest(com: np.ndarray, points: np.ndarray, u: np.ndarray, v: np.ndarr
     """Whether the centre of mass ``com`` (3,) lies over the contact ``points`` (M, 3): inside
     their convex hull seen along the support normal (in-plane axes ``u``, ``v``), at least
     ``margin`` times ``width`` (metres, the child's narrowest width) from its edge."""
-    if len(points) < 3:
+    if not len(points):
         return False
     hull = shapely.MultiPoint(np.c_[points @ u, points @ v]).convex_hull
-    if hull.geom_type != "Polygon":
-        return False
     p = shapely.Point(float(com @ u), float(com @ v))
+    if hull.geom_type != "Polygon":  # on a line or a point (a pen lying on a pad): over it
+        return bool(hull.distance(p) <= LINE_TOL)
     return bool(hull.contains(p) and hull.exterior.distance(p) >= margin * width)
+
+
+def rests_on(child: PlacedObject, parent: PlacedObject, parent_pts: np.ndarray,
+             normal: np.ndarray, u: np.ndarray, v: np.ndarray) -> bool:
+    """Whether ``child``, dropped onto ``parent`` along ``-normal``, is held where it came to
+    rest: its centre of mass over the points where it touches the parent's mesh, by
+    ``REST_MARGIN`` of its narrowest width (:func:`held_at_rest`). A register dropped
+    half over a counter's edge onto a conveyor raised on the counter rests on the conveyor,
+    whose edge is inside the counter's: its centre of mass over the counter is not over the
+    conveyor, and it tips off in settling. ``parent_pts`` (K, 3) are the vertices of the
+    parent's convex pieces, world frame; ``u``, ``v`` the support plane's axes."""
+    T = child.transform()
+    pts = world_points(child, hull_only=True)
+    # the parent's points under the child's footprint (the tops of a keyboard's keys)
+    a, b = pts @ u, pts @ v
+    pa, pb = parent_pts @ u, parent_pts @ v
+    under = parent_pts[(pa >= a.min()) & (pa <= a.max()) & (pb >= b.min()) & (pb <= b.max())]
+    touch = rest_points(pts, child.asset, T, [(under, parent.asset, parent.transform())],
+                        -np.asarray(normal, float))
+    com = T[:3, :3] @ asset_geometry(child.asset).com + T[:3, 3]
+    width = float(min(np.ptp(pts @ u), np.ptp(pts @ v)))
+    return held_at_rest(com, touch, u, v, width)
