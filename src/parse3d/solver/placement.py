@@ -737,7 +737,7 @@ def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Ge
             if not why and (d.overhang or d.lift > 0) and not sup.spans and rel == "ON" \
                     and not rests_on(cand, st.scene.objects[sup.owner],
                                      np.vstack([p for _, p in st.world_pieces(sup.owner)]),
-                                     s.normal, s.u, s.v):
+                                     s.origin, s.normal, s.u, s.v):
                 why = HANGS_OFF  # over the edge of a raised part it came to rest on (resting.py)
             if why:
                 last = why

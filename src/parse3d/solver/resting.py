@@ -18,7 +18,7 @@ from ..measure.checks import world_points
 from ..measure.geometry import asset_geometry, ray_caster
 from ..scene.model import PlacedObject
 
-__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "rest_points", "held_at_rest", "rests_on"]
+__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "RAISED", "rest_points", "held_at_rest", "rests_on"]
 
 
 #: Metres above the first contact within which a point of a dropped child counts as touching
@@ -96,17 +96,26 @@ def held_at_rest(com: np.ndarray, points: np.ndarray, u: np.ndarray, v: np.ndarr
     return bool(hull.contains(p) and hull.exterior.distance(p) >= margin * width)
 
 
+#: Metres above the named surface from which a child rests on something raised on it (as
+#: the low parts a child is raised onto are read, ``docs/solver.md``).
+RAISED = 3e-3
+
+
 def rests_on(child: PlacedObject, parent: PlacedObject, parent_pts: np.ndarray,
-             normal: np.ndarray, u: np.ndarray, v: np.ndarray) -> bool:
+             origin: np.ndarray, normal: np.ndarray, u: np.ndarray, v: np.ndarray) -> bool:
     """Whether ``child``, dropped onto ``parent`` along ``-normal``, is held where it came to
     rest: its centre of mass over the points where it touches the parent's mesh, by
     ``REST_MARGIN`` of its narrowest width (:func:`held_at_rest`). A register dropped
     half over a counter's edge onto a conveyor raised on the counter rests on the conveyor,
     whose edge is inside the counter's: its centre of mass over the counter is not over the
     conveyor, and it tips off in settling. ``parent_pts`` (K, 3) are the vertices of the
-    parent's convex pieces, world frame; ``u``, ``v`` the support plane's axes."""
+    parent's convex pieces, world frame; ``origin``, ``normal``, ``u``, ``v`` the named
+    support plane's point, normal and axes. A child resting on the named surface itself (its
+    lowest point within ``RAISED`` of it) is left to the support polygon's test (True)."""
     T = child.transform()
     pts = world_points(child, hull_only=True)
+    if float(np.min((pts - origin) @ normal)) <= RAISED:
+        return True
     # the parent's points under the child's footprint (the tops of a keyboard's keys)
     a, b = pts @ u, pts @ v
     pa, pb = parent_pts @ u, parent_pts @ v
