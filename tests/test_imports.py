@@ -127,9 +127,9 @@ def test_the_contract_rejects_an_upward_import(low, high):
 #: Inside the solver, each module's level: a module imports only modules of lower levels (the
 #: stages of Algorithm 1 build on the relation rules, the rules on the solver's state).
 SOLVER_LEVELS: dict[str, int] = {
-    "config": 0, "geometry": 0, "collision": 0, "library": 0, "walls": 0,
+    "config": 0, "geometry": 0, "collision": 0, "library": 0, "walls": 0, "resting": 0,
     "state": 1, "intent": 1,
-    "support": 2, "flush": 2, "bars": 2,
+    "support": 2, "flush": 2, "bars": 2, "coverings": 3,
     "rules.base": 3,
     "rules.support": 4, "rules.contact": 4, "rules.alignment": 4, "rules.layout": 4,
     "rules": 5,

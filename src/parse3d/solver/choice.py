@@ -18,6 +18,7 @@ from ..measure.checks import BOARD_LABELS, board_parts
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
+from .coverings import covering_scale
 from .fit import CONTENTS_AREA, FIT_SHARE, contents_scale, roomy_scale, top_fit
 from .fit import _sides as sup_sides
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
@@ -637,6 +638,8 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
         # the largest allowed, so the rest overhangs as little as it can
         roomy = max(scale, cramped_scale(st, library, oid, asset, scale))
     scale = roomy
+    # a rug for a furnished room: one that fits between what stands on the floor (coverings.py)
+    scale = covering_scale(st, support_edge, asset, scale, lo / max(size, 1e-6))
     if keep is not None and attempt == 0:
         scale = keep.scale
     elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:

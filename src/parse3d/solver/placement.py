@@ -30,6 +30,7 @@ from .choice import (
 )
 from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
+from .coverings import covers_floor, lay_covering
 from .fit import instance_for
 from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
@@ -56,6 +57,7 @@ from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, obstacles
+from .resting import rests_on
 from .rotation import solve_rotation
 from .rules import RULES
 from .sampling import (
@@ -522,6 +524,13 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
     # a stack: ON an object of the same kind (their PAG nodes share a category)
     d.stack = rel == "ON" and sup.owner != "room" and bool(
         set(st.pag.objects[d.oid].candidates) & set(st.pag.objects[sup.owner].candidates))
+    if covers_floor(sup, rel, d.height, F):  # a rug: only what reaches into its slab (coverings.py)
+        region, d.R, d.F, d.obst = lay_covering(st, sup, d.exclude, d.height + EPS, region0,
+                                                holes, F, d.R)
+        if region.is_empty or region.area < 1e-10:
+            raise Fail(no_space(st, sup, F, region0, d.obst + holes),
+                       intrinsic=RG.erode(region0, holes, F).is_empty)
+        return _clip_by_relations(d, region), None
     ruled = None if d.stack else rules_region(st, d.oid, d.asset, d.scale, d.R, d.h, sup,
                                               d.edge, d.others, region0, F, holes)
     # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
@@ -755,6 +764,11 @@ def _try_poses(d: _OnSupport, samples: np.ndarray, body: Body, rng: np.random.Ge
             if not why and d.overhang and sup.spans and rel == "ON" \
                     and not held_across(asset, scale, Rt, t, s, d.base_solid, rests=True):
                 why = HANGS_OFF  # caught by something below the parts (a wheel on a rail)
+            if not why and (d.overhang or d.lift > 0) and not sup.spans and rel == "ON" \
+                    and not rests_on(cand, st.scene.objects[sup.owner],
+                                     np.vstack([p for _, p in st.world_pieces(sup.owner)]),
+                                     s.origin, s.normal, s.u, s.v):
+                why = HANGS_OFF  # over the edge of a raised part it came to rest on (resting.py)
             if why:
                 last = why
                 continue

@@ -19,6 +19,7 @@ from .choice import lies_flat
 from .collision import Body
 from .config import Fail
 from .geometry import asset_geometry, drop_distance
+from .resting import held_at_rest, rest_points
 from .rotation import solve_rotation
 from .sampling import round_asset
 from .state import SolveState, plane_coords
@@ -44,7 +45,8 @@ def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarra
     top = max(float(np.max((st.hulls[o.id] - s.origin) @ n)) for o in onto)
     cu = np.array(own_fp.centroid.coords[0])
     radius = max(np.sqrt(own_fp.area / np.pi), 1e-3)
-    r_child = max(float(np.ptp((hull @ R.T) @ s.u)), float(np.ptp((hull @ R.T) @ s.v))) / 2
+    Y = hull @ R.T
+    r_child = max(float(np.ptp(Y @ s.u)), float(np.ptp(Y @ s.v))) / 2
     inner = own_fp.buffer(-r_child)
     found = []
     last = f"no room left in {sup.owner}"
@@ -77,6 +79,12 @@ def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarra
         gaps = {o.id: drop_distance(pts, asset, cand.transform(), st.hulls[o.id], o.asset,
                                     o.transform(), -n) for o in onto}
         under = min(gaps, key=gaps.get)
+        if under != owner.id and not _rolls(asset) and not _rests(
+                cand, pts, asset, onto, st, n, c3 + t, s, min(np.ptp(Y @ s.u), np.ptp(Y @ s.v))):
+            # on a knob, a lid's dome or the edge of another content: it would slide off (a
+            # round thing rolls among the others into the container's hollow, where it rests)
+            last = f"it would balance on {under} in {owner.id} and slide off"
+            continue
         holds, res, detail = check_edge(st.scene, support_edge, cand,
                                         resolved=resolution(support_edge, sup.choice))
         if not holds and under != owner.id:
@@ -85,6 +93,23 @@ def drop_into(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarra
         return (R, t, sup, body), 1, [(holds, res, detail), *checks], \
             None if under == owner.id else under
     raise Fail(f"no free space on {sup.name} and no room in a pile: {last}")
+
+
+def _rolls(asset: Asset) -> bool:
+    """Round (:func:`parse3d.solver.sampling.round_asset`) with no large part lying flat: an
+    apple, an orange; not a cup as tall as it is wide, which stands on its flat base."""
+    size = float(np.ptp(asset_geometry(asset).hull, axis=0).max())
+    return round_asset(asset) and not any(
+        lies_flat(asset, p) for p in asset.parts if float(np.ptp(p.vertices, axis=0).max()) >= 0.5 * size)
+
+
+def _rests(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedObject],
+           st: SolveState, n: np.ndarray, com: np.ndarray, s, width: float) -> bool:
+    """Whether ``cand``, dropped into a pile, is held by what it touches (its centre of mass
+    over the points where it rests on ``onto``: :func:`parse3d.solver.resting.held_at_rest`)."""
+    below = [(st.hulls[o.id], o.asset, o.transform()) for o in onto]
+    touch = rest_points(pts, asset, cand.transform(), below, -n)
+    return held_at_rest(com, touch, s.u, s.v, float(width))
 
 
 def drop_onto(cand: PlacedObject, pts: np.ndarray, asset: Asset, onto: list[PlacedObject],
