@@ -1,6 +1,7 @@
 """Flat things filed on a shelf that does not hold them lying stand on an edge in a row
-(solved, settled and repaired as ``parse3d solve`` does): records written ``IN`` one shelf side
-by side, scores ``IN`` another."""
+(records written ``IN`` one shelf side by side, scores ``IN`` another), and bottles ``IN`` a
+wine rack's cradles lie on their side (solved, settled and repaired as ``parse3d solve``
+does)."""
 
 from __future__ import annotations
 
@@ -58,3 +59,28 @@ def test_what_is_filed_on_edge(category, variant, filed):
     filed on its edge when crowded; a bare disc and a plate (round: they pile) and a book
     (modelled standing already) are not."""
     assert filed_flat(generate(category, 1, variant)) is filed
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_bottles_lie_in_a_wine_rack_and_stand_on_a_table(seed):
+    """Every bottle placed and every
+    relation held after settling; those IN the rack's cradles (free height below a bottle's
+    height) lie on their side (``rests_on`` recorded, their long axis level) along the rack's
+    depth, neck to the front; the one ON the table stands."""
+    scene = solved("bottles_in_a_wine_rack", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    broken = [(c.relation, c.child, c.parent) for c in scene.relations
+              if c.holds_settled is not True]
+    assert not broken, broken
+    rack = scene.objects["rack"]
+    front = rack.rotation[:, 1]
+    for oid in ("bottle1", "bottle2", "bottle3"):
+        o = scene.objects[oid]
+        R = o.settled_rotation if o.settled_rotation is not None else o.rotation
+        axis = R[:, 2]  # the bottle's base-to-neck axis
+        assert o.rests_on == "back", (oid, seed, o.rests_on)
+        assert abs(float(axis[2])) < np.sin(np.deg2rad(10)), (oid, seed, axis)
+        assert float(axis @ front) > np.cos(np.deg2rad(15)), (oid, seed, axis, front)
+    o = scene.objects["bottle4"]
+    R = o.settled_rotation if o.settled_rotation is not None else o.rotation
+    assert o.rests_on is None and float(R[2, 2]) > np.cos(np.deg2rad(5)), seed

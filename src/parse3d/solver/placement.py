@@ -104,7 +104,7 @@ from .stacking import (
 from .standing import may_stand_in, place_standing, standing_instance
 from .state import SolveState, plane_coords, plane_key, support_chain
 from .support import Support
-from .upright import filed_instance, stands_in_row, upright_axis
+from .upright import filed_instance, lies_in_cradle, stands_in_row, upright_axis
 from .validation import resolution, validate_pose
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
@@ -203,7 +203,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
         # flat things filed on a shelf that holds them only standing: on edge in a row
-        row = None if hang is not None else stands_in_row(st, support_edge, asset, scale)
+        # a bottle in a rack's cradle lies on its side, neck out
+        row = None if hang is not None else (stands_in_row(st, support_edge, asset, scale)
+                                             or lies_in_cradle(st, support_edge, asset, scale))
         if row is not None:
             hang = row[0]
         # a notebook ON its cover, or ON a desk, lies on it; so do books stacked ON one another

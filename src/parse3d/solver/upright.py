@@ -29,7 +29,8 @@ from .geometry import asset_geometry
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["FILED_THIN", "SLAB_FILL", "filed_flat", "stands_in_row", "upright_axis", "filed_instance"]
+__all__ = ["FILED_THIN", "SLAB_FILL", "filed_flat", "stands_in_row", "upright_axis", "filed_instance",
+           "lies_in_cradle"]
 
 #: A filed flat thing's thickness is at most this share of its smaller other extent (as the
 #: checks read a flat thing standing on an edge: :func:`parse3d.measure.geometry.side_frame`).
@@ -143,13 +144,80 @@ def filed_instance(st: SolveState, library, edge: Edge, category: str, asset: As
 
 
 def upright_axis(st: SolveState, edge: Edge, asset: Asset) -> int | None:
-    """The asset axis a filed flat thing crowded on its shelf (:func:`stands_in_row`) stands
-    along (:func:`_edges`), for choosing an instance and a scale that fit under the shelf
-    above; None when it lies as written."""
+    """The asset axis that is vertical as the object is placed: for a filed flat thing crowded
+    on its shelf (:func:`stands_in_row`) the edge it stands on (:func:`_edges`), for a bottle
+    in a cradle (:func:`lies_in_cradle`) its diameter; for choosing an instance and a scale
+    that fit under the part above. None when it is placed as modelled."""
+    if _cradled(st, edge, asset, 1.0) is not None:
+        return 1
     got = _crowded(st, edge, asset, 1.0)
     if got is None:
         return None
     return _edges(np.ptp(asset_geometry(asset).bounds, axis=0), got[3])[0]
+
+
+#: A long round thing: its length at least this many times its larger other extent, ...
+LONG_ROUND = 1.8
+#: ... and its other two extents within this ratio of each other (a bottle, a rolled poster).
+ROUND_RATIO = 1.3
+
+
+def _cradled(st: SolveState, edge: Edge, asset: Asset, scale: float):
+    """The support when ``edge`` puts a long round thing modelled upright (a bottle) ``ON`` or
+    ``IN`` a part of a placed object whose free height is below its height: it lies there
+    (:func:`lies_in_cradle`); None otherwise."""
+    c, p = edge.child, edge.parent
+    if edge.relation not in ("ON", "IN") or c.part is not None \
+            or c.surface not in (None, "bottom") or p.is_room_element or p.part is None:
+        return None
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0)
+    lo, hi = sorted((float(ext[0]), float(ext[1])))
+    if ext[2] < LONG_ROUND * hi or hi > ROUND_RATIO * lo:
+        return None
+    parent = st.scene.objects.get(p.object)
+    if parent is None or not parent.placed:
+        return None
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return None
+    if not sups:
+        return None
+    sup = max(sups, key=lambda s: s.clearance)
+    return sup if sup.clearance < ext[2] * scale else None
+
+
+def _depth(st: SolveState, owner: str) -> float:
+    """Metres the placed ``owner`` (a wine rack) spans along its front."""
+    o = st.scene.objects[owner]
+    return float(np.ptp(st.hulls[owner] @ o.rotation[:, 1]))
+
+
+def lies_in_cradle(st: SolveState, edge: Edge, asset: Asset, scale: float
+                   ) -> tuple[Edge, ...] | None:
+    """For a long round thing modelled upright (a wine bottle) written ``ON``/``IN`` a part of a
+    placed object whose free height is below its height but takes its diameter (a wine
+    rack's cradle): the support edge by which it lies on its side there, and a
+    ``PARALLEL_TO`` of its top to the part's front, so it lies along the part's depth, neck
+    out, as such racks hold bottles (when it is longer than the owner is deep: at the turn that
+    fits, along a shelf). None for anything else, and when even its diameter does
+    not fit (it is placed as written, and fails with the free height)."""
+    sup = _cradled(st, edge, asset, scale)
+    if sup is None:
+        return None
+    ext = np.ptp(asset_geometry(asset).bounds, axis=0) * scale
+    if ext[1] > sup.clearance:
+        return None
+    c, p = edge.child, edge.parent
+    lying = replace(edge, child=replace(c, surface="back",
+                                        text=format_ref(c.object, None, None, "back")))
+    if ext[2] > _depth(st, p.object):
+        return (lying,)  # longer than its owner is deep: the turn that fits (along a shelf)
+    out = Edge("PARALLEL_TO", replace(c, part=None, index=None, surface="top",
+                                      text=format_ref(c.object, None, None, "top")),
+               replace(p, surface="front", text=format_ref(p.object, p.part, p.index, "front")),
+               {})
+    return lying, out
 
 
 def stands_in_row(st: SolveState, edge: Edge, asset: Asset, scale: float
