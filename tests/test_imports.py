@@ -138,7 +138,7 @@ SOLVER_LEVELS: dict[str, int] = {
     "hanging": 7, "ledge": 7,
     "standing": 8, "leaning": 8, "fit": 8, "slots": 8,
     "choice": 9, "validation": 9,
-    "sampling": 10,
+    "sampling": 10, "upright": 10,
     "stacking": 11, "mounting": 11,
     "placement": 12,
     "search": 13,

@@ -37,6 +37,7 @@ from .geometry import (
     is_round,
     part_points,
     ray_caster,
+    side_frame,
 )
 from .reach import (
     MOUNTED_DEPTH,
@@ -390,6 +391,8 @@ def _side_offset(ctx: CheckContext) -> tuple[np.ndarray, np.ndarray, np.ndarray,
         pag = ctx.scene.pag
         n = np.array(pag.viewpoint.side_direction(pag.room, ctx.param("side")))
     else:
+        parent = ctx.scene.objects.get(ctx.edge.parent.object)
+        RB = RB if parent is None else side_frame(parent, RB)  # a record on edge: along its row
         n = RB @ np.array(_SIDE[ctx.param("side")])
     n[2] = 0
     n /= max(np.linalg.norm(n), 1e-9)

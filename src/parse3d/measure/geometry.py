@@ -165,6 +165,30 @@ def is_round(obj) -> bool:
     return float(ext.max()) <= 1.3 * float(ext.min())
 
 
+#: A flat thing standing on an edge is at most this thick for its smaller other extent.
+ON_EDGE_THIN = 0.2
+
+
+def side_frame(obj, R: np.ndarray) -> np.ndarray:
+    """The frame (columns: right, front, up) in which the sides of ``obj`` at rotation ``R``
+    are read: ``R`` itself, except for a flat thing modelled lying that stands on an edge face
+    (``rests_on`` a side: a record filed on a shelf), whose right is its thin axis across the
+    row (horizontal) and whose up is the world's, as a book standing in a row has them."""
+    if getattr(obj, "rests_on", None) not in ("left", "right", "front", "back"):
+        return R
+    ext = hull_extents(obj.asset)[0]
+    if float(ext[2]) > ON_EDGE_THIN * float(min(ext[0], ext[1])):
+        return R
+    right = np.asarray(R, float)[:, 2].copy()
+    right[2] = 0.0
+    norm = float(np.linalg.norm(right))
+    if norm < 0.5:  # not standing on an edge after all
+        return R
+    right /= norm
+    up = np.array([0.0, 0.0, 1.0])
+    return np.c_[right, np.cross(up, right), up]
+
+
 def drop_distance(child_pts: np.ndarray, child_asset: Asset, T_child: np.ndarray,
                   parent_pts: np.ndarray, parent_asset: Asset, T_parent: np.ndarray,
                   down: np.ndarray) -> float:

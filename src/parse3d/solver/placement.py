@@ -107,6 +107,7 @@ from .stacking import (
 from .standing import may_stand_in, place_standing, standing_instance
 from .state import SolveState, plane_coords, plane_key, support_chain
 from .support import Support
+from .upright import filed_instance, lies_in_cradle, stands_in_row, upright_axis
 from .validation import resolution, validate_pose
 
 __all__ = ["Placement", "place_object", "requirements", "lacks", "scaled_mesh", "resolution"]
@@ -190,9 +191,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                                 asset, lambda a, r=reqs: lacks(a, r) is None,
                                                 tried, rng)
             tried.add(asset.asset_id)
+        # a filed thing on a crowded shelf: a slab that stands in the row (upright.py)
+        category, asset = filed_instance(st, library, support_edge, category, asset, reqs,
+                                         tried, rng)
         category, asset, scale, short = instance_scale(
             st, oid, library, node, category, asset, reqs, tried, rng, attempt=attempt,
-            keep=keep, support_edge=support_edge, axis=axis, headroom=headroom)
+            keep=keep, support_edge=support_edge, headroom=headroom,
+            axis=axis if (up := upright_axis(st, support_edge, asset)) is None else up)
         if short is not None:
             reasons.append(short)
             intrinsic.append(False)
@@ -200,6 +205,12 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
+        # flat things filed on a shelf that holds them only standing: on edge in a row
+        # a bottle in a rack's cradle lies on its side, neck out
+        row = None if hang is not None else (stands_in_row(st, support_edge, asset, scale)
+                                             or lies_in_cradle(st, support_edge, asset, scale))
+        if row is not None:
+            hang = row[0]
         # a notebook ON its cover, or ON a desk, lies on it; so do books stacked ON one another
         # cloth ON a rod hangs over it, the ON relaxed (hanging.py)
         drape = None if hang is not None else draped_over(st.scene, support_edge, asset)
@@ -230,7 +241,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         try:
             pose, trials, checks, under = _place_asset(st, oid, asset, scale,
                                                        hang or placed_edge,
-                                                       [*placed, *others[len(placed):]], rng,
+                                                       [*placed, *others[len(placed):],
+                                                        *(row[1:] if row else ())], rng,
                                                        cfg, proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))

@@ -14,6 +14,7 @@ from shapely.geometry.base import BaseGeometry
 
 from ...assets.model import Asset
 from ...geometry import regions as RG
+from ...measure.geometry import side_frame
 from ...pag.model import Edge
 from ...relations import OBJECT
 from ..config import Fail
@@ -230,4 +231,7 @@ def side_vector(st: SolveState, e, R: np.ndarray) -> np.ndarray:
     (rotation ``R``), or with ``frame: camera`` as the PAG's viewpoint sees it."""
     if e.param("frame") == "camera":  # the side as the photograph shows it
         return np.array(st.pag.viewpoint.side_direction(st.pag.room, e.param("side")))
+    parent = st.scene.objects.get(e.parent.object)
+    if parent is not None and parent.placed:  # a record on edge: along its row
+        R = side_frame(parent, R)
     return R @ np.array(_SIDE_DIRS[e.param("side")])
