@@ -55,6 +55,7 @@ from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
+from .over import OverEdge, over_edge, place_over
 from .regions import apply_region_rules, obstacles
 from .rotation import solve_rotation
 from .rules import RULES
@@ -194,7 +195,14 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(short)
             intrinsic.append(False)
             continue
-        hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
+        # a soft thing ON a narrow top, or HANGING_BELOW a part that does not face down,
+        # hangs over it, folded to fit (over.py); cloth ON a rod hangs below it (hanging.py)
+        over = None if draped_over(st.scene, support_edge, asset) is not None \
+            else over_edge(st, oid, support_edge, asset, scale)
+        if over is not None:
+            scale = over[1]
+        hang = (over[0] if over is not None else None) \
+            or hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
         # a notebook ON its cover, or ON a desk, lies on it; so do books stacked ON one another
@@ -215,6 +223,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             placed_edge, loose = nest, nest_reason(support_edge, reasons)
         elif drape is not None:
             loose = drape[1]
+        elif over is not None:
+            loose = over[2]
         elif hang is None and names_part(support_edge) \
                 and 0 < overhang(asset, support_edge)[0] < np.inf:
             # even the best instance is overhung: it rests by the part that reaches furthest
@@ -290,12 +300,14 @@ def _summarise(reasons: list[str], node) -> str:
 
 def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_edge: Edge,
                  others: list[Edge], rng: np.random.Generator, cfg: SolverConfig, proposal):
+    body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
+    if isinstance(support_edge, OverEdge):  # over a bar (over.py)
+        return place_over(st, oid, asset, scale, support_edge, others, body, rng)
     geom = asset_geometry(asset)
     hull = geom.hull * scale
     rule = RULES[support_edge.relation]
     sups = rule.surfaces(st, support_edge)
     order = rule.order(sups, support_edge, asset, scale, rng)
-    body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
     for variant in _wall_choices(st, others, rng):
