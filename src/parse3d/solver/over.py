@@ -13,10 +13,11 @@ relation recorded relaxed with that reading:
   thin, :data:`THIN_CLOTH`: a throw, a towel, a shirt; not a cushion) or a bag with straps
   (:data:`STRAPS`: a backpack, a tote);
 - **the part is a bar** (:func:`bar_of`): its top, the part's points within :data:`TOP_BAND`
-  of its highest, is narrower than the child lying flat (``ON``), or any part named for
-  ``HANGING_BELOW`` by a surface that does not face down, or a handle or rod too small to hang
-  below (``@bottom``); an object named by a side (``stove@front``) hangs it on the rod-like
-  part (a handle) furthest along that side;
+  of its highest, is narrower than the child lying flat and than :data:`BAR_WIDE` (``ON``), or
+  any part named for ``HANGING_BELOW`` by a surface that does not face down, or a handle or a
+  knob on a door or a drawer (``@bottom``, :func:`_on_a_door`; any rod or knob once hanging below
+  it as written found no room, :func:`over_after`); an object named by a side
+  (``stove@front``) hangs it on the rod-like part (a handle) furthest along that side;
 - **the pose** (:func:`place_over`): the child hangs edge-up, its thin side against the bar's
   outer face, its top level with the bar's top, down the side away from the parent's centre
   (or the side the writer named; the other side when that one is blocked); a strap bag hangs
@@ -24,6 +25,9 @@ relation recorded relaxed with that reading:
   high, is shown folded: scaled down to fit (never below its category's size range), the size
   recorded in the reason. It is fixed where it hangs, like everything hung, so settling keeps
   it held.
+
+A roll (:func:`_core`: a toilet roll) ``HANGING_BELOW`` a rod hangs threaded on it, its core
+around the rod (:func:`threaded_edge`), not below it where the toilet beside it is in the way.
 """
 
 from __future__ import annotations
@@ -41,29 +45,38 @@ from ..scene.model import PlacedObject, SupportChoice
 from .config import Fail
 from .geometry import asset_geometry
 from .hanging import ROD_LONG, ROD_THICK, drapes
+from .rules.layout import relaxed_to_nearest
 from .state import SolveState, parts_for
 from .support import Support, support_candidates
 from .validation import relations_and_collisions
 
-__all__ = ["OverEdge", "over_edge", "place_over", "soft", "bar_of", "STRAPS", "THIN_CLOTH",
-           "TOP_BAND", "BAR_WIDE"]
+__all__ = ["OverEdge", "over_after", "over_edge", "place_over", "soft", "bar_of",
+           "threaded_edge", "BAR_WIDE", "CLOTH", "CORES", "KNOB", "STRAPS",
+           "THIN_CLOTH", "TOP_BAND"]
 
 #: Metres: cloth is thin: the thinnest extent of its largest part (a folded throw's layer, a
 #: towel) is at most this (a cushion or a pillow is thicker).
 THIN_CLOTH = 0.08
 #: Materials of cloth that hangs over a bar (not paper: a book, a paper bag).
 CLOTH = frozenset({"fabric", "leather"})
+#: Part labels of a roll's core: a roll hangs threaded on a rod through it.
+CORES = ("core", "tube")
 #: Part labels of a bag's straps or handles: a bag that has one hangs by it.
 STRAPS = ("strap", "straps", "shoulder_strap", "handle", "handles")
 #: Metres below a part's highest point within which its points make its top (a chair back's
 #: top rail, an armrest's upper face).
 TOP_BAND = 0.02
+#: Metres: a part no larger than this in any direction is a knob: a towel hangs over it.
+KNOB = 0.06
 #: Metres: a top at most this wide is a bar or a ledge (a chair back's rail, an armrest, a tub's
 #: rim), not a table's top.
 BAR_WIDE = 0.25
 #: Metres from a part's side, as a share of the object's extent, within which a rod-like part
 #: lies on that side (an oven's handle on its front).
 SIDE_SHARE = 0.25
+#: A top shorter than this multiple of its width, or than the part is tall, is a post's or an
+#: upright handle's end: the child hangs along the parent's face it stands out from.
+SQUARE = 2.0
 #: Metres: what hangs over a bar keeps this far above the floor.
 FLOOR_CLEAR = 0.03
 #: Metres the child is moved out from the bar's face, in turn, when something of the parent
@@ -102,9 +115,19 @@ def _world_vertices(parent, part) -> np.ndarray:
     return v @ T[:3, :3].T + T[:3, 3]
 
 
-def _is_rod(parent, part) -> bool:
+def _is_rod(parent, part, knob: bool = True) -> bool:
+    """Whether a part is a rod (no thicker than :data:`ROD_THICK` across, at least half
+    :data:`ROD_LONG` times longer: a handle, a bar) or, with ``knob``, a knob (no extent over
+    :data:`KNOB`)."""
     ext = np.sort(np.ptp(np.asarray(part.bounds, float), axis=0)) * parent.scale
-    return bool(ext[1] <= ROD_THICK and ext[2] >= ROD_LONG * max(ext[1], 1e-6) * 0.5)
+    return bool(ext[1] <= ROD_THICK and ext[2] >= ROD_LONG * max(ext[1], 1e-6) * 0.5
+                or knob and ext[2] <= KNOB)
+
+
+def _on_a_door(asset: Asset, part) -> bool:
+    """Whether ``part`` moves with a door, a drawer or a lid (a joint moves it: a vanity's
+    handle or knob), not a hook made to hang things below it (a coat rack's, a pegboard's)."""
+    return any(j.child_part == part.name for j in asset.joints)
 
 
 def _side_rod(parent, side: str):
@@ -117,7 +140,7 @@ def _side_rod(parent, side: str):
     span = float(abs((hi - lo) @ n))
     best, at = None, (-np.inf, -np.inf)
     for p in parent.asset.parts:
-        if not _is_rod(parent, p):
+        if not _is_rod(parent, p, knob=False):
             continue
         b = np.mean(np.asarray(p.bounds, float), axis=0)
         c = float(b @ n)
@@ -130,10 +153,11 @@ def _side_rod(parent, side: str):
     return best, next(i for i, q in enumerate(same) if q is best)
 
 
-def bar_of(st: SolveState, edge: Edge, asset: Asset, scale: float):
+def bar_of(st: SolveState, edge: Edge, asset: Asset, scale: float, *, after: bool = False):
     """The bar ``edge``'s soft child hangs over: ``(ref, parts, side)`` with the reference of
     the bar's part (surface ``top``), its parts and the world direction the writer named (or
-    None); None when ``edge`` does not read as "over a bar" (module docstring)."""
+    None); None when ``edge`` does not read as "over a bar" (module docstring). ``after``:
+    hanging below a rod as written failed (:func:`over_after`), any rod reads so."""
     if edge.relation not in ("ON", "HANGING_BELOW") or edge.parent.is_room_element:
         return None
     parent = st.scene.objects.get(edge.parent.object)
@@ -158,8 +182,9 @@ def bar_of(st: SolveState, edge: Edge, asset: Asset, scale: float):
         return None
     top = _top(parent, parts[0])
     if edge.relation == "HANGING_BELOW":
-        if surface == "bottom" and not all(
-                _is_rod(parent, p) and _top(parent, p)[3] < _width(asset, scale) for p in parts):
+        if surface == "bottom" and not (
+                all(_is_rod(parent, p) and (after or _on_a_door(parent.asset, p))
+                    for p in parts)):
             return None  # a shelf's underside, a towel bar: hung below it as written
     else:
         if surface != "top":
@@ -171,11 +196,6 @@ def bar_of(st: SolveState, edge: Edge, asset: Asset, scale: float):
         side = parent.rotation @ np.asarray(SURFACES[surface], float)
     ref = replace(ref, surface="top", text=format_ref(ref.object, ref.part, ref.index, "top"))
     return ref, parts, side, top
-
-
-def _width(asset: Asset, scale: float) -> float:
-    """The longest extent (m) of ``asset`` at ``scale``: a towel's width hung edge-up."""
-    return float(np.max(np.ptp(asset_geometry(asset).hull, axis=0))) * scale
 
 
 def hull_lying(asset: Asset, scale: float) -> float:
@@ -244,21 +264,131 @@ def _top(parent, part):
     return z, c, min(l0, l1), max(l0, l1), axis, part.name
 
 
-def over_edge(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float
-              ) -> tuple[OverEdge, float, str] | None:
+def _along_face(parent, c: np.ndarray) -> np.ndarray:
+    """The unit horizontal along the parent's face nearest ``c`` (world x, y): across the
+    parent's own x or y axis, whichever ``c`` lies furthest along from its centre."""
+    R = np.asarray(parent.rotation, float)
+    d = R.T @ np.r_[np.asarray(c, float) - np.asarray(parent.position, float)[:2], 0.0]
+    k = 0 if abs(d[0]) >= abs(d[1]) else 1
+    a = R[:, 1 - k][:2]
+    return a / max(float(np.linalg.norm(a)), 1e-9)
+
+
+def _core(asset: Asset):
+    """``(axis, centre)`` of a roll's core (a part labelled in :data:`CORES`, round across its
+    longest extent: a toilet roll's cardboard tube), in the asset's frame at unit scale;
+    None for anything else."""
+    for p in asset.parts:
+        if p.label not in CORES:
+            continue
+        b = np.asarray(p.bounds, float)
+        ext = np.ptp(b, axis=0)
+        k = int(np.argmax(ext))
+        other = np.delete(ext, k)
+        if abs(float(other[0] - other[1])) <= 0.15 * float(other.max()):
+            return k, b.mean(axis=0), float(other.min())
+    return None
+
+
+def threaded_edge(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float
+                  ) -> tuple[OverEdge, float, str] | None:
+    """For a roll (:func:`_core`) ``HANGING_BELOW`` a rod (a toilet roll below its holder's
+    bar): the edge it is placed by, threaded on the rod (its core around it, as a real roll
+    hangs: not below the bar, where the toilet under it is in the way), and why the edge as
+    written is recorded relaxed; None for anything else."""
+    if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
+            or edge.parent.part is None:
+        return None
+    core = _core(asset)
+    parent = st.scene.objects.get(edge.parent.object)
+    if core is None or parent is None or not parent.placed or parent.asset is None:
+        return None
+    parts = parts_for(parent.asset, edge.parent)
+    rods = [p for p in parts if _is_rod(parent, p, knob=False)]
+    if not rods:
+        return None
+    ext = np.sort(np.ptp(np.asarray(rods[0].bounds, float), axis=0)) * parent.scale
+    if ext[1] >= core[2] * scale:
+        return None  # the rod is thicker than the core's hole
+    ref, c = edge.parent, edge.child
+    bar = format_ref(ref.object, ref.part, ref.index, None)
+    child = replace(c, surface=None, text=format_ref(c.object, c.part, c.index, None))
+    hung = OverEdge("HANGING_BELOW", child, ref, {"thread": rods[0].name})
+    why = (f"{c.object} is a roll: it hangs threaded on {bar}, its core around the rod, not "
+           f"below it (write it as is: a roll HANGING_BELOW a rod is threaded on it)")
+    return hung, scale, why
+
+
+def _place_threaded(st: SolveState, oid: str, asset: Asset, scale: float, edge: OverEdge,
+                    others: list[Edge], body):
+    """A roll threaded on its rod (:func:`threaded_edge`): its core's axis along the rod's,
+    its core's centre on the rod's middle; clear of everything but the rod's owner."""
+    from ..measure.checks import check_edge
+
+    parent = st.scene.objects[edge.parent.object]
+    part = next(p for p in parent.asset.parts if p.name == edge.params["thread"])
+    V = _world_vertices(parent, part)
+    mid = 0.5 * (V.min(axis=0) + V.max(axis=0))
+    a = np.linalg.svd(V - V.mean(axis=0), full_matrices=False)[2][0]
+    k, cc, _ = _core(asset)
+    up = np.array([0.0, 0.0, 1.0])
+    if abs(float(a @ up)) > 0.9:
+        raise Fail(f"no room to thread {oid} on {part.name}: the rod is upright")
+    a = a - (a @ up) * up
+    a /= np.linalg.norm(a)
+    j = 2 if k != 2 else 0
+    m = 3 - k - j
+    last = ""
+    for sign in (1.0, -1.0):  # its loose sheet toward the room first, else the other way
+        R = np.zeros((3, 3))
+        R[:, k], R[:, j] = sign * a, up
+        R[:, m] = np.cross(R[:, (m + 1) % 3], R[:, (m + 2) % 3])  # right-handed
+        t = mid - R @ (cc * scale)
+        cand = PlacedObject(oid, asset.category, asset, scale, R, t)
+        checks = []
+        for e in others:
+            holds, res, detail = check_edge(st.scene, e, cand)
+            if not holds and not relaxed_to_nearest(e):
+                last = f"{e.relation} {e.child} -> {e.parent}: {detail}"
+                break
+            checks.append((holds, res, detail))
+        else:
+            body.move(R, t)
+            hit = st.world.collides(body, ignore=frozenset({parent.id}))
+            if hit is None:
+                top = part.surfaces["bottom"].transformed(parent.transform())
+                sup = Support(top, SupportChoice(parent.id, part.name, "bottom"), top.polygon)
+                sup.over = True
+                return (R, t, sup, body), 2, [(True, {}, ""), *checks], None
+            last = f"{hit} in the way"
+    raise Fail(f"no room to thread {oid} on {part.name}: {last}")
+
+
+def over_edge(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float, *,
+              after: bool = False) -> tuple[OverEdge, float, str] | None:
     """For a soft child (:func:`soft`) of ``edge`` that reads as over a bar (:func:`bar_of`):
     the edge it is placed by (:class:`OverEdge`), the scale it hangs at (less when shown
     folded) and why the edge as written is relaxed; None for anything else."""
+    if not after and (got := threaded_edge(st, oid, edge, asset, scale)) is not None:
+        return got
     kind = soft(asset, scale)
     if kind is None:
         return None
-    got = bar_of(st, edge, asset, scale)
+    got = bar_of(st, edge, asset, scale, after=after)
     if got is None:
         return None
     ref, parts, side, top = got
     z, c, w, length, ax, name = top
-    new, folded = _fold(asset, scale, kind, length, z)
-    params = {"bar": [z, float(c[0]), float(c[1]), w, length, float(ax[0]), float(ax[1])],
+    parent = st.scene.objects[edge.parent.object]
+    part = next((p for p in parts if p.name == name), parts[0])
+    V = _world_vertices(parent, part)
+    if length < SQUARE * w or np.ptp(V[:, 2]) >= length:
+        # a post's top, an upright handle's end: along the parent's face it stands out from
+        ax = _along_face(parent, c)
+        length = np.inf  # nothing to fold it to: it hangs from the handle's end
+    new, folded = (scale, None) if after else _fold(asset, scale, kind, length, z)
+    params = {"bar": [z, float(c[0]), float(c[1]), w,
+                      float(length) if np.isfinite(length) else 0.0, float(ax[0]), float(ax[1])],
               "part": name}
     if side is not None:
         params["side"] = [float(x) for x in side]
@@ -270,8 +400,8 @@ def over_edge(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float
     if edge.relation == "ON":
         blocked = f"the top of {bar} is {w * 100:.0f} cm wide, too narrow for {c.object} to lie on"
     elif (edge.parent.surface or edge.spec.parent_surface) == "bottom":
-        blocked = (f"{bar} is a handle or rod {length * 100:.0f} cm long, shorter than "
-                   f"{c.object}: it cannot hang below it")
+        blocked = (f"{bar} is a handle or a knob on a door or a drawer of {ref.object}: "
+                   f"{c.object} cannot hang below it")
     else:
         blocked = f"nothing of {bar} faces down for {c.object} to hang below"
     size = ""
@@ -335,6 +465,8 @@ def place_over(st: SolveState, oid: str, asset: Asset, scale: float, edge: OverE
                others: list[Edge], body, rng: np.random.Generator):
     """Hang ``oid`` over the bar ``edge`` names (module docstring): ``((R, t, sup, body),
     trials, checks, None)`` as placement's own poses, or ``Fail`` saying what is in the way."""
+    if "thread" in edge.params:
+        return _place_threaded(st, oid, asset, scale, edge, others, body)
     parent = st.scene.objects[edge.parent.object]
     parts = parts_for(parent.asset, replace(edge.parent, index=None)) \
         if edge.params.get("part") else parts_for(parent.asset, edge.parent)
@@ -388,3 +520,22 @@ def place_over(st: SolveState, oid: str, asset: Asset, scale: float, edge: OverE
                 return (R, t, sup, body), trials, [(True, {}, ""), *checks], None
     bar = format_ref(edge.parent.object, part.label, index, None)
     raise Fail(f"no room to hang {oid} over {bar}: {last}")
+
+
+def over_after(st: SolveState, oid: str, asset: Asset, scale: float, edge: Edge,
+               others: list[Edge], body, rng: np.random.Generator):
+    """Where hanging a soft child ``HANGING_BELOW`` a rod's bottom as written found no room (a
+    towel below a drawer's handle, a door in the way): hung over the rod instead, at its scale,
+    as :func:`place_over`, the support carrying why (``why``, for :func:`.hanging.other_hook`);
+    None when that reading does not apply or finds no room either."""
+    if edge.relation != "HANGING_BELOW" or isinstance(edge, OverEdge):
+        return None
+    got = over_edge(st, oid, edge, asset, scale, after=True)
+    if got is None:
+        return None
+    try:
+        pose, trials, checks, under = place_over(st, oid, asset, scale, got[0], others, body, rng)
+    except Fail:
+        return None
+    pose[2].why = got[2]
+    return pose, trials, checks, under

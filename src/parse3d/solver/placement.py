@@ -55,7 +55,7 @@ from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
-from .over import OverEdge, over_edge, place_over
+from .over import OverEdge, over_after, over_edge, place_over
 from .regions import apply_region_rules, obstacles
 from .rotation import solve_rotation
 from .rules import RULES
@@ -243,7 +243,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(str(f))
             intrinsic.append(f.intrinsic)
             total_trials += cfg.max_trials
-            continue
+            # no room below a handle as written, at the last instance: over it (over.py)
+            got = None if attempt < cfg.asset_attempts - 1 else over_after(
+                st, oid, asset, scale, hang or placed_edge, [*placed, *others[len(placed):]],
+                cached_body(asset, scale, lambda a=asset, s=scale: scaled_mesh(a, s)), rng)
+            if got is None:
+                continue
+            pose, trials, checks, under = got
         total_trials += trials
         R, t, sup, body = pose[:4]
         loose = other_hook(st, support_edge, sup, loose)  # the next free hook
