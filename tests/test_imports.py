@@ -139,7 +139,7 @@ SOLVER_LEVELS: dict[str, int] = {
     "standing": 8, "leaning": 8, "fit": 8, "slots": 8,
     "choice": 9, "validation": 9,
     "sampling": 10, "upright": 10,
-    "stacking": 11, "mounting": 11,
+    "stacking": 11, "mounting": 11, "over": 11,
     "placement": 12,
     "search": 13,
     "__init__": 14,

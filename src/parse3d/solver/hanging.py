@@ -298,8 +298,10 @@ def other_hook(st: SolveState, edge: Edge, sup, loose: str | None = None) -> str
     (HANGING_BELOW a part) is recorded relaxed when its child hangs on ``sup``, another part of
     the same label (the named hook taken, or facing a wall)."""
     if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
-            or edge.parent.part is None or sup.choice is None:
-        return loose
+            or edge.parent.part is None or sup.choice is None or getattr(sup, "over", False):
+        # hung over a bar: its own reason (over.py)
+        why = getattr(sup, "why", None)
+        return loose if why is None else (f"{loose}; " if loose else "") + why
     try:
         named = {sp.choice.part for sp in support_candidates(st, edge)}
     except Fail:

@@ -56,6 +56,7 @@ from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, place_leaning
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
+from .over import OverEdge, over_after, over_edge, place_over
 from .regions import apply_region_rules, obstacles
 from .resting import rests_on
 from .rotation import solve_rotation
@@ -202,7 +203,14 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(short)
             intrinsic.append(False)
             continue
-        hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
+        # a soft thing ON a narrow top, or HANGING_BELOW a part that does not face down,
+        # hangs over it, folded to fit (over.py); cloth ON a rod hangs below it (hanging.py)
+        over = None if draped_over(st.scene, support_edge, asset) is not None \
+            else over_edge(st, oid, support_edge, asset, scale)
+        if over is not None:
+            scale = over[1]
+        hang = (over[0] if over is not None else None) \
+            or hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
         # flat things filed on a shelf that holds them only standing: on edge in a row
@@ -229,6 +237,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             placed_edge, loose = nest, nest_reason(support_edge, reasons)
         elif drape is not None:
             loose = drape[1]
+        elif over is not None:
+            loose = over[2]
         elif hang is None and names_part(support_edge) \
                 and 0 < overhang(asset, support_edge)[0] < np.inf:
             # even the best instance is overhung: it rests by the part that reaches furthest
@@ -248,7 +258,13 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(str(f))
             intrinsic.append(f.intrinsic)
             total_trials += cfg.max_trials
-            continue
+            # no room below a handle as written, at the last instance: over it (over.py)
+            got = None if attempt < cfg.asset_attempts - 1 else over_after(
+                st, oid, asset, scale, hang or placed_edge, [*placed, *others[len(placed):]],
+                cached_body(asset, scale, lambda a=asset, s=scale: scaled_mesh(a, s)), rng)
+            if got is None:
+                continue
+            pose, trials, checks, under = got
         total_trials += trials
         R, t, sup, body = pose[:4]
         loose = other_hook(st, support_edge, sup, loose)  # the next free hook
@@ -305,12 +321,14 @@ def _summarise(reasons: list[str], node) -> str:
 
 def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_edge: Edge,
                  others: list[Edge], rng: np.random.Generator, cfg: SolverConfig, proposal):
+    body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
+    if isinstance(support_edge, OverEdge):  # over a bar (over.py)
+        return place_over(st, oid, asset, scale, support_edge, others, body, rng)
     geom = asset_geometry(asset)
     hull = geom.hull * scale
     rule = RULES[support_edge.relation]
     sups = rule.surfaces(st, support_edge)
     order = rule.order(sups, support_edge, asset, scale, rng)
-    body = cached_body(asset, scale, lambda: scaled_mesh(asset, scale))
     reasons = []
     inner: list[bool] = []
     if cfg.strategy == "constrained" and support_edge.relation == "IN":
