@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._dA_fixings import screws_under
+from ._dD_detail import flush_screws, rivets_through
 from ._kit import legs4, rot
 
 
@@ -351,7 +352,7 @@ def _underside(z: float, xy, cloth: S.Shape) -> list[Part]:
     return out
 
 
-@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot", "rail", "link"),
+@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot", "rail", "link", "rivet", "screw"),
           size_range=(0.72, 0.95), density=700, variants=("open", "folded"))
 def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.42, 0.46)
@@ -382,6 +383,7 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sx in enumerate((-1, 1)):
             out.append(make_part(f"pivot_{k}", "pivot", S.cylinder(0.006, 0.006, center=(sx * (w / 2 - r), r + 0.003, hs),
                                                                    axis=(0, 1, 0), sections=8), metal))
+        out += _back_rivets(w, 0.0, hs, hb, r)
         return out
     d = rng.uniform(0.4, 0.45)
     out.append(make_part("seat", "seat", S.box((w - 4 * r, d, 0.015), center=(0, 0, hs - 0.0075),
@@ -413,10 +415,22 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=8), metal))
         out.append(make_part(f"link_{k}", "link", S.box((0.004, 0.09, 0.018), center=(x * 0.96, -d / 2 + 0.1, hs - 0.06),
                                                         R=rot((1, 0, 0), 0.6)), metal))
+    out += _back_rivets(w, -d / 2 + 0.02, hs, hb, r)
+    # the four screws up through the side rails into the seat's underside, near each end
+    out += flush_screws("screw", [(sx * (w / 2 - 2 * r - 0.004), y, zr - r * 0.8) for sx in (-1, 1)
+                                  for y in (-d / 2 + 0.05, d / 2 - 0.06)], axis=(0, 0, -1), radius=0.0035)
     xc = 0.93 * (w / 2 - r)
     out.append(make_part("crossbar_1", "crossbar", S.tube([(-xc, d / 2 - 0.045, 0.14), (xc, d / 2 - 0.045, 0.14)], r * 0.8),
                          metal))
     return out
+
+
+def _back_rivets(w: float, y: float, hs: float, hb: float, r: float) -> list[Part]:
+    """The four rivets through the back posts into the back panel's ends, two a side, their
+    heads flush with the posts' outer faces."""
+    zs = (hs + hb * 0.7 - hb * 0.14, hs + hb * 0.7 + hb * 0.14)
+    return rivets_through("rivet", [(sx * (w / 2 - r), y, z) for sx in (-1, 1) for z in zs], length=2 * r,
+                          axis=(1, 0, 0), radius=0.003)
 
 
 def _tube_feet(xy, r: float) -> list[Part]:

@@ -16,11 +16,12 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
+from ._dD_detail import rivets_through
 from ._household import ring, shell
 from ._kit import feet4, mount, revolute
 
 
-@register("knife_block", parts=("block", "handle"), extra_parts=("slot", "foot", "bolster"),
+@register("knife_block", parts=("block", "handle"), extra_parts=("slot", "foot", "bolster", "rivet"),
           size_range=(0.2, 0.42), density=700, variants=("slanted", "upright", "round"),
           placement="surface")
 def knife_block(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -60,6 +61,11 @@ def knife_block(rng: np.random.Generator, variant: str) -> list[Part]:
         hl = rng.uniform(0.09, 0.12)
         handle = S.box((0.02, 0.013, hl), center=(x, y, h + bl + hl / 2), bevel=0.003)
         parts.append(make_part(f"handle_{k}", "handle", handle, handle_mat))
+        # the two rivets through the handle's scales and the tang between them, their heads
+        # flush with both faces
+        zr = [h + bl + hl * f for f in (0.3, 0.72)]
+        parts += rivets_through(f"rivet_{k}", [(x, y, z) for z in zr], length=0.013, radius=0.002,
+                                start=0)
     if variant != "round":
         parts += feet4("foot", w=w, d=d, r=0.008, h=0.004, mat=dark, inset=0.005)
         for p in parts[-4:]:
