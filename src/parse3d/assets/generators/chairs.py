@@ -284,7 +284,7 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle", "dust_cover"),
+@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle", "dust_cover", "plate"),
           size_range=(0.35, 1.0), density=300, variants=("cube", "round", "tufted"))
 def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.38, 0.46)
@@ -319,6 +319,9 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"foot_{k}", "foot",
                              S.cylinder(0.02, foot_h, center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05),
                                                              foot_h / 2), sections=12), wood))
+        # the steel mounting plate screwed under the frame that the foot's hanger bolt threads into
+        out.append(make_part(f"plate_{k}", "plate", S.box((0.06, 0.06, 0.002), center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), foot_h - 0.001)),
+                             M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)))
     # the piping along the cushion's bottom seam
     zp = h - top
     pipe = [S.box((w + 0.008, 0.008, 0.012), center=(0, sy * (d / 2 + 0.002), zp)) for sy in (-1, 1)]

@@ -19,6 +19,7 @@ from ..registry import register
 from ._casework import black
 from ._dA_fixings import screws_under
 from ._detail_b import each
+from ._dD_detail import flush_screws
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 
@@ -94,7 +95,7 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("jewelry_box", parts=("body", "lid"), extra_parts=("tray", "mirror", "clasp", "hinge", "foot", "drawer", "drawer_box",
-                                                             "knob", "lining", "divider", "ring_roll", "lid_stay"),
+                                                             "knob", "lining", "divider", "ring_roll", "lid_stay", "screw"),
           size_range=(0.12, 0.4), density=600, variants=("hinged", "drawers", "chest"), placement="surface")
 def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     wood = M.wood(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -154,6 +155,14 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     parts += hinge_parts("hinge", x=zl, y=-d / 2 - 0.003, z0=-w / 2 + 0.02, z1=w / 2 - 0.02, mat=brass, axis="x", radius=0.003,
                          length=0.025)
     parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR * 0.6))
+    # a brass screw through each hinge's lower leaf into the back wall and, on a flat lid, one
+    # through its upper leaf into the lid's back edge (it turns with the lid)
+    xs = [-w / 2 + 0.02 + (w - 0.04) * f for f in (0.12, 0.88)]
+    parts += flush_screws("screw", [(x, -d / 2, zl - 0.007) for x in xs], axis=(0.0, -1.0, 0.0), radius=0.002, mat=brass)
+    if variant != "chest":
+        parts += flush_screws("screw", [(x, -d / 2, zl + hl * 0.5) for x in xs], axis=(0.0, -1.0, 0.0), radius=0.002, mat=brass,
+                              start=2)
+        parts += [mount("lid", "screw_2"), mount("lid", "screw_3")]
     return parts
 
 
@@ -276,6 +285,9 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part("base" if k == 0 else "base_1", "base",
                                    S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)), alu))
         parts += _stand_feet([(sx * w * 0.4, sy * (d / 2 - 0.01)) for sy in (-1, 1) for sx in (-1, 1)], rubber)
+        # a countersunk screw up through each runner into the foot of the leg above it
+        parts += flush_screws("screw", [(sx * (w / 2 - 0.01), sy * (d / 2 - 0.01), 0.0) for sy in (-1, 1) for sx in (-1, 1)],
+                              axis=(0.0, 0.0, -1.0), radius=0.003)
         return parts
     tilt = np.deg2rad(rng.uniform(15, 25))
     hf = 0.03  # the platform's front edge height
