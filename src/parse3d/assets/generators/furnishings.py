@@ -18,8 +18,8 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
 from ._dA_fixings import screws_under
-from ._detail_b import each
 from ._dD_detail import flush_screws
+from ._detail_b import each
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
 

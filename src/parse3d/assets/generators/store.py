@@ -16,8 +16,8 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import bar_pull, black, white
-from ._detail_b import studs
 from ._dD_detail import back_screws
+from ._detail_b import studs
 from ._kit import OPEN_DOOR, feet4, hinge_parts, mount, revolute
 
 
