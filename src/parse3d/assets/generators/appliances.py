@@ -540,7 +540,7 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("printer", parts=("body", "paper_tray"),
           extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port",
-                       "paper_guide", "power_inlet", "indicator"),
+                       "paper_guide", "power_inlet", "indicator", "screw"),
           size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
           placement="surface")
 def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -567,6 +567,8 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.007), center=(w * 0.3, -d / 2 - 0.001, bh * 0.3)),
                          M.solid((0.2, 0.2, 0.2), "metal", 0.4, 0.6)))
     out += _pads(w, d, inset=0.04)
+    # the four screws holding the rear cover at its corners
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=0.0, z1=bh, y=-d / 2, inset=0.02, radius=0.003)
     out.append(make_part("output_tray", "output_tray", S.box((w * 0.6, 0.12, 0.006),
                                                              center=(0, d / 2 + 0.06, bh * 0.55)), mat))
     out.append(make_part("control_panel", "control_panel", S.box((w * 0.3, 0.04, 0.03),
@@ -594,7 +596,7 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("copier", parts=("body", "scanner", "drawer"),
           extra_parts=("lid", "output_tray", "control_panel", "display", "drawer_box", "handle",
-                       "caster", "hinge", "key", "button"),
+                       "caster", "hinge", "key", "button", "screw"),
           size_range=(0.9, 1.3), density=350, variants=("floor", "floor_finisher", "cabinet"))
 def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d = rng.uniform(0.58, 0.68), rng.uniform(0.6, 0.72)
@@ -606,6 +608,8 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out: list[Part | Joint] = [make_part("body", "body", S.box((w, d - 0.03, bh - 0.05), center=(0, -0.015, ch + 0.05 + (bh - 0.05) / 2)),
                                          mat)]
     out.append(make_part("body_plinth", "body", S.box((w, d, 0.05), center=(0, 0, ch + 0.025)), mat))
+    # the four screws holding the rear cover at its corners
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=ch + 0.05, z1=ch + bh, y=-d / 2, inset=0.03)
     n = 3 if variant != "cabinet" else 2
     zt = ch + 0.05
     dh = (bh * 0.55 - 0.05) / n

@@ -19,7 +19,8 @@ from ._household import ring
 from ._kit import rot
 
 
-@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar", "screw"),
+@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar", "screw",
+                                                               "corner_block"),
           size_range=(0.95, 1.5), density=600, variants=("pedestal", "four_leg", "square_pedestal"),
           placement="floor")
 def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -55,6 +56,12 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"foot_{i}", "foot", S.box((leg + 0.006, leg + 0.006, 0.012),
                                                              center=(sx * (w / 2 - 0.05), sy * (w / 2 - 0.05), 0.006)),
                                    black("rubber")))
+            # the corner block glued across the inside corner of the aprons behind the leg, under
+            # the top (not touching it)
+            q = w / 2 - 0.05 - 0.01 - 0.03
+            parts.append(make_part(f"corner_block_{i}", "corner_block",
+                                   S.box((0.08, 0.02, ha * 0.7), center=(sx * q, sy * q, h - t - 0.002 - ha * 0.35),
+                                         R=rot((0, 0, 1), float(np.arctan2(sx, -sy)))), top_mat))
         return parts
     if variant == "square_pedestal":
         w = rng.uniform(0.6, 0.75)
