@@ -104,7 +104,7 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light", "record", "tonearm",
-                                                   "coin_slot", "title_strip", "grille_bar"),
+                                                   "coin_slot", "title_strip", "grille_bar", "coin_return", "lock"),
           size_range=(1.0, 1.7), density=400, variants=("bubbler", "wallbox_cabinet", "retro"),
           placement="floor")
 def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -165,6 +165,12 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(3):
         z = zs0 + (zs1 - zs0) * (k + 1) / 4
         parts.append(make_part(f"grille_bar_{k}", "grille_bar", S.box((w * 0.57, 0.008, 0.01), center=(0, d / 2 + 0.013, z)), chrome))
+    # the coin-return cup under the coin slot, and the key lock of the front door beside the
+    # speaker
+    parts.append(make_part("coin_return", "coin_return", S.box((0.03, 0.01, 0.025), center=(w * 0.3, d / 2 + 0.005, zbtn - 0.05),
+                                                               bevel=0.002), chrome))
+    parts.append(make_part("lock", "lock", S.cylinder(0.01, 0.008, center=(w * 0.36, d / 2 + 0.004, (zs0 + zs1) / 2), axis=(0, 1, 0),
+                                                      sections=10), chrome))
     return parts
 
 
