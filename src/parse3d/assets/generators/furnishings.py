@@ -166,7 +166,7 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     return parts
 
 
-@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "glide"),
+@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "glide", "screw"),
           size_range=(1.2, 2.4), density=400, variants=("three_panel", "four_panel", "shoji"))
 def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 4 if variant == "four_panel" else 3
@@ -178,6 +178,7 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     x = -n * pw * np.cos(ang) / 2
     y = 0.0
+    prev = 0.0  # the previous panel's direction
     for k in range(n):
         s = 1 if k % 2 == 0 else -1  # a zigzag: each panel turns back the other way
         dx, dy = pw * np.cos(ang), s * pw * np.sin(ang)
@@ -199,8 +200,20 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
                                    S.cylinder(0.01, 0.004, center=(cx + sgn * (pw / 2 - 0.015) * ca, cy + sgn * (pw / 2 - 0.015) * sa, 0.002),
                                               sections=8), M.solid((0.85, 0.85, 0.82), "plastic", 0.4)))
         if k > 0:
-            parts += hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), n=3,
-                                 radius=0.008, length=0.06)
+            brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
+            hinges = hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=brass, n=3, radius=0.008, length=0.06)
+            parts += hinges
+            # each hinge's two leaves lie on the front faces of the stiles either side of it, a
+            # brass screw through each leaf into its stile
+            a0, a1 = prev, float(np.arctan2(dy, dx))
+            for j, hp in enumerate(hinges):
+                zc = float(hp.mesh.bounds[:, 2].mean())
+                pts = [((x - 0.015 * np.cos(a0)) - np.sin(a0) * t / 2, (y - 0.015 * np.sin(a0)) + np.cos(a0) * t / 2, zc, a0),
+                       ((x + 0.015 * np.cos(a1)) - np.sin(a1) * t / 2, (y + 0.015 * np.sin(a1)) + np.cos(a1) * t / 2, zc, a1)]
+                for i, (px, py, pz, a) in enumerate(pts):
+                    parts += flush_screws(f"screw_{k}_{j}", [(px, py, pz)], axis=(-np.sin(a), np.cos(a), 0.0), radius=0.003,
+                                          mat=brass, start=i)
+        prev = float(np.arctan2(dy, dx))
         x, y = x + dx, y + dy
     return parts
 
