@@ -130,7 +130,7 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("cash_register", parts=("body", "cash_drawer"),
           extra_parts=("keypad", "key", "display", "screen", "printer", "drawer_box", "stand", "handle", "receipt",
-                       "card_reader", "coin_cup", "bill_clip"),
+                       "card_reader"),
           size_range=(0.3, 0.6), density=700, variants=("classic", "pos_terminal"),
           placement="surface")
 def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -162,19 +162,6 @@ def cash_register(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                            black()))
     parts += [prismatic("cash_drawer_slide", "body", "cash_drawer_box", travel=DRAWER_TRAVEL * dd * 0.8),
               mount("cash_drawer_box", "cash_drawer"), mount("cash_drawer", "cash_drawer_handle")]
-    # in the till: a row of four coin cups at the front, and a spring bill clip lying over each
-    # note compartment behind them, hinged at its back end; all ride with the drawer
-    zf = t + 0.007
-    steel = Material((0.7, 0.7, 0.72, 1.0), 0.3, 0.9, "metal")
-    for k in range(4):
-        x = -(w - 0.03) / 2 + (w - 0.03) * (k + 0.5) / 4
-        rc = min(0.03, (w - 0.03) / 8 - 0.006)
-        parts.append(make_part(f"coin_cup_{k}", "coin_cup", S.frustum(rc * 0.85, rc, 0.02, center=(x, d / 2 - 0.012 - 0.05, zf),
-                                                                      sections=12), black()))
-        parts.append(make_part(f"bill_clip_{k}", "bill_clip", S.box((0.012, dd * 0.4, 0.003),
-                                                                    center=(x, d / 2 - 0.012 - dd + 0.006 + dd * 0.2, zf + 0.006)),
-                               steel))
-        parts += [mount("cash_drawer_box", f"coin_cup_{k}"), mount("cash_drawer_box", f"bill_clip_{k}")]
     if variant == "classic":
         # the register housing on the drawer: a wedge sloping down to the cashier
         hh = rng.uniform(0.08, 0.1)
