@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, knob, white
+from ._dD_detail import back_screws, flush_screws
 from ._household import ring
 from ._kit import feet4, hinge_parts, mount, prismatic, revolute
 
@@ -49,7 +50,7 @@ def _buttons(prefix: str, x: float, y: float, zs, mat, r: float = 0.008) -> list
 
 @register("microwave", parts=("body", "door"),
           extra_parts=("control_panel", "button", "handle", "glass", "hinge", "foot", "turntable", "display", "vent",
-                       "waveguide_cover", "latch", "roller_ring", "key"),
+                       "waveguide_cover", "latch", "roller_ring", "key", "screw"),
           size_range=(0.42, 0.62), density=250, variants=("countertop", "white", "steel"),
           placement="surface")
 def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -86,6 +87,8 @@ def microwave(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                          black()))
     out += [make_part(f"latch_{k}", "latch", S.box((0.008, 0.02, 0.025), center=(xc - 0.01, d / 2 - 0.006, z)), black())
             for k, z in enumerate((fh + (h - fh) * 0.3, fh + (h - fh) * 0.7))]
+    # the four screws holding the outer cabinet's wrap at the corners of the back
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y=-d / 2)
     out += door_parts("door", x0=-w / 2, x1=xc, z0=fh, z1=h, y_back=d / 2, thick=0.02, mat=mat,
                       handle_mat=mat, hinge_left=True, style="glass", glass=M.glass(rng),
                       handle_len=(h - fh) * 0.6)
@@ -144,7 +147,7 @@ def toaster(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("toaster_oven", parts=("body", "door"),
           extra_parts=("control_panel", "knob", "handle", "glass", "hinge", "rack", "foot", "heating_element",
-                       "crumb_tray", "vent"),
+                       "crumb_tray", "vent", "screw"),
           size_range=(0.38, 0.56), density=300, variants=("steel", "black", "white"),
           placement="surface")
 def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -173,6 +176,8 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("crumb_tray", "crumb_tray", S.box((cw, d - 0.05, 0.004), center=((xc - w / 2) / 2, 0.0, fh + 0.015 + 0.002)),
                          M.metal(rng)))
     out.append(make_part("vent", "vent", S.box((w * 0.6, 0.04, 0.002), center=(0, -d / 2 + 0.04, h - 0.0009)), black()))
+    # the four screws holding the outer cabinet at the corners of the back
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y=-d / 2)
     out += door_parts("door", x0=-w / 2, x1=xc, z0=fh, z1=h, y_back=d / 2, thick=0.015, mat=mat,
                       handle_mat=M.metal(rng), hinge_left=True, style="glass", glass=M.glass(rng),
                       handle_len=(xc + w / 2) * 0.7, handle_at="top")
@@ -182,7 +187,7 @@ def toaster_oven(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 @register("coffee_maker", parts=("base", "reservoir", "head"),
           extra_parts=("carafe", "handle", "button", "drip_tray", "lid", "foot", "warming_plate", "carafe_lid",
                        "water_window", "portafilter", "steam_wand", "pod_holder", "power_switch", "spout",
-                       "brew_basket", "display"),
+                       "brew_basket", "display", "screw"),
           size_range=(0.25, 0.45), density=400, variants=("drip", "pod", "espresso"),
           placement="surface")
 def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -234,6 +239,9 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                 center=(w / 2 + 0.0005, -d / 2 + d * 0.175, bh + (h - bh) * 0.45)),
                          M.solid((0.6, 0.75, 0.9), "glass", 0.1)))
     out += _pads(w, d)
+    # the four screws up into the base's underside, between the pads, holding its bottom plate
+    out += flush_screws("screw", [(sx * w * 0.25, sy * d * 0.25, 0.0) for sy in (-1, 1) for sx in (-1, 1)],
+                        axis=(0.0, 0.0, -1.0), radius=0.0035)
     # the row of buttons on the head's front (power, and the cup sizes or the clock's setting
     # keys) and the small display beside them
     out += [make_part(f"button_{k}", "button", S.cylinder(0.007, 0.006, center=(x, d / 2 + 0.002, h - h * 0.11), axis=(0, 1, 0),
@@ -255,7 +263,7 @@ def coffee_maker(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("mini_fridge", parts=("body", "door"),
           extra_parts=("handle", "shelf", "hinge", "foot", "freezer_compartment", "glass", "thermostat", "crisper",
-                       "vent", "gasket", "door_shelf", "light"),
+                       "vent", "gasket", "door_shelf", "light", "screw"),
           size_range=(0.45, 0.95), density=250, variants=("cube", "under_counter", "glass_door"),
           placement="floor")
 def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -286,6 +294,8 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                                                      center=(0, -0.025 + 0.01, fh + t + 0.04 + 0.001)), M.glass(rng)))
     out.append(make_part("vent", "vent", S.box((w * 0.7, 0.004, (h - fh) * 0.5), center=(0, -d / 2 - 0.002, fh + (h - fh) * 0.4)),
                          black()))
+    # the four screws holding the back panel at its corners, outside the grille
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=fh, z1=h, y=-d / 2)
     # the lamp in the cabinet's roof beside the thermostat, and a tall fridge's second shelf:
     # the glass cover over the crisper drawer (a bottle still stands on it below the shelf)
     out.append(make_part("light", "light", S.box((0.05, 0.03, 0.01), center=(-w * 0.15, d / 2 - 0.15, h - t - 0.005)),
@@ -314,7 +324,7 @@ def mini_fridge(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("dishwasher", parts=("body", "door"),
           extra_parts=("handle", "control_panel", "rack", "hinge", "toe_kick", "button", "spray_arm", "cutlery_basket",
-                       "filter", "detergent_dispenser", "foot", "indicator", "rinse_aid_cap"),
+                       "filter", "detergent_dispenser", "foot", "indicator", "rinse_aid_cap", "bracket", "screw"),
           size_range=(0.8, 0.9), density=300, variants=("steel", "white", "panel_ready"))
 def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d, h = rng.uniform(0.45, 0.6), rng.uniform(0.55, 0.62), rng.uniform(0.82, 0.88)
@@ -362,12 +372,19 @@ def dishwasher(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out += [make_part(f"foot_{k}", "foot", S.cylinder(0.012, tk * 0.5, center=(sx * (w / 2 - 0.04), d / 2 - 0.13, tk * 0.25),
                                                       sections=10), black("rubber"))
             for k, sx in enumerate((-1, 1))]
+    # the two mounting brackets let into the top's front corners, each screwed up into the
+    # underside of the counter above through its tab (flush with the top)
+    zt = h - 0.001
+    for k, sx in enumerate((-1, 1)):
+        x = sx * (w / 2 - 0.05)
+        out.append(make_part(f"bracket_{k}", "bracket", S.box((0.03, 0.03, 0.002), center=(x, d / 2 - 0.05, zt)), M.metal(rng)))
+        out += flush_screws("screw", [(x, d / 2 - 0.05, h)], axis=(0.0, 0.0, 1.0), radius=0.004, start=k)
     return out
 
 
 @register("clothes_dryer", parts=("body", "door"),
           extra_parts=("control_panel", "knob", "display", "drum", "foot", "hinge", "lint_filter", "button", "handle",
-                       "gasket", "exhaust_vent", "indicator"),
+                       "gasket", "exhaust_vent", "indicator", "screw"),
           size_range=(0.8, 1.0), density=300, variants=("front_load", "stacked_steel", "compact"))
 def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "compact":
@@ -413,6 +430,8 @@ def clothes_dryer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                              M.solid((0.95, 0.6, 0.1), "glass", 0.1)))
     out.append(make_part("exhaust_vent", "exhaust_vent", S.cylinder(0.05, 0.02, center=(0, -d / 2 - 0.01 + 0.015, fh + 0.12),
                                                                     axis=(0, 1, 0), sections=12), M.metal(rng)))
+    # the four screws holding the back panel at its corners
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=fh, z1=h - 0.12, y=-d / 2, inset=0.03)
     return out
 
 
@@ -426,7 +445,7 @@ def _facing_front(y: float, z: float) -> np.ndarray:
 
 @register("water_cooler", parts=("body", "bottle"),
           extra_parts=("tap", "drip_tray", "cabinet_door", "collar", "foot", "indicator", "vent", "cup_dispenser",
-                       "power_switch", "child_lock", "grille"),
+                       "power_switch", "child_lock", "grille", "screw"),
           size_range=(0.55, 1.55), density=300, variants=("top_load", "bottom_load", "countertop"))
 def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.3, 0.34)
@@ -467,6 +486,8 @@ def water_cooler(rng: np.random.Generator, variant: str) -> list[Part]:
     out.append(make_part("cup_dispenser", "cup_dispenser", S.cylinder(0.04, h * 0.3, center=(w / 2 + 0.04, 0.0, h * 0.55), sections=12),
                          M.plastic(rng)))
     out.append(make_part("power_switch", "power_switch", S.box((0.02, 0.004, 0.012), center=(w * 0.25, -w / 2 - 0.002, h * 0.6)), black()))
+    # the four screws holding the back panel at its corners
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y=-w / 2, inset=0.03)
     return out
 
 
@@ -519,7 +540,7 @@ def range_hood(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("printer", parts=("body", "paper_tray"),
           extra_parts=("lid", "output_tray", "control_panel", "button", "display", "hinge", "foot", "paper", "usb_port",
-                       "paper_guide", "power_inlet", "indicator"),
+                       "paper_guide", "power_inlet", "indicator", "screw"),
           size_range=(0.35, 0.6), density=400, variants=("inkjet", "laser", "all_in_one"),
           placement="surface")
 def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -546,6 +567,8 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.007), center=(w * 0.3, -d / 2 - 0.001, bh * 0.3)),
                          M.solid((0.2, 0.2, 0.2), "metal", 0.4, 0.6)))
     out += _pads(w, d, inset=0.04)
+    # the four screws holding the rear cover at its corners
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=0.0, z1=bh, y=-d / 2, inset=0.02, radius=0.003)
     out.append(make_part("output_tray", "output_tray", S.box((w * 0.6, 0.12, 0.006),
                                                              center=(0, d / 2 + 0.06, bh * 0.55)), mat))
     out.append(make_part("control_panel", "control_panel", S.box((w * 0.3, 0.04, 0.03),
@@ -573,7 +596,7 @@ def printer(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 @register("copier", parts=("body", "scanner", "drawer"),
           extra_parts=("lid", "output_tray", "control_panel", "display", "drawer_box", "handle",
-                       "caster", "hinge", "key", "button"),
+                       "caster", "hinge", "key", "button", "screw"),
           size_range=(0.9, 1.3), density=350, variants=("floor", "floor_finisher", "cabinet"))
 def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w, d = rng.uniform(0.58, 0.68), rng.uniform(0.6, 0.72)
@@ -585,6 +608,8 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     out: list[Part | Joint] = [make_part("body", "body", S.box((w, d - 0.03, bh - 0.05), center=(0, -0.015, ch + 0.05 + (bh - 0.05) / 2)),
                                          mat)]
     out.append(make_part("body_plinth", "body", S.box((w, d, 0.05), center=(0, 0, ch + 0.025)), mat))
+    # the four screws holding the rear cover at its corners
+    out += back_screws("screw", x0=-w / 2, x1=w / 2, z0=ch + 0.05, z1=ch + bh, y=-d / 2, inset=0.03)
     n = 3 if variant != "cabinet" else 2
     zt = ch + 0.05
     dh = (bh * 0.55 - 0.05) / n
@@ -631,7 +656,7 @@ def copier(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 @register("computer_tower", parts=("case",),
           extra_parts=("front_panel", "power_button", "drive_bay", "vent", "foot", "side_panel", "usb_port",
                        "audio_jack", "io_shield", "fan", "psu_grille", "power_inlet", "reset_button", "indicator",
-                       "thumbscrew", "slot_cover"),
+                       "thumbscrew", "slot_cover", "screw"),
           size_range=(0.3, 0.58), density=400, variants=("mid_tower", "full_tower", "mini"),
           placement="floor")
 def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -682,5 +707,11 @@ def computer_tower(rng: np.random.Generator, variant: str) -> list[Part]:
     n_slots = 2 if variant == "mini" else 4
     out += [make_part(f"slot_cover_{k}", "slot_cover", S.box((0.1, 0.002, 0.014), center=(-w * 0.05, yb - 0.001, h - 0.22 - 0.02 * k)), io)
             for k in range(n_slots)]
+    # the four screws holding the power supply at the corners of its grille, and the four
+    # through the corners of the rear fan's frame into the case
+    xp, zp = -w / 2 + 0.06, fh + 0.05
+    pts = [(xp + sx * 0.056, yb, zp + sz * 0.04) for sz in (-1, 1) for sx in (-1, 1)]
+    pts += [(w * 0.15 + sx * 0.045, yb, h - 0.12 + sz * 0.045) for sz in (-1, 1) for sx in (-1, 1)]
+    out += flush_screws("screw", pts, axis=(0.0, -1.0, 0.0), radius=0.0035)
     return out
 

@@ -15,6 +15,7 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
+from ._dD_detail import flush_screws
 from ._household import ring, shell
 from ._kit import feet4
 
@@ -75,7 +76,7 @@ def liquor_bottle(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("wine_rack", parts=("shelf", "side_panel"), extra_parts=("top_panel", "foot", "cradle"), size_range=(0.3, 1.9),
+@register("wine_rack", parts=("shelf", "side_panel"), extra_parts=("top_panel", "foot", "cradle", "screw"), size_range=(0.3, 1.9),
           density=550, variants=("floor", "countertop", "tall"))
 def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     cols = {"floor": int(rng.integers(4, 7)), "countertop": int(rng.integers(3, 5)), "tall": int(rng.integers(2, 4))}[variant]
@@ -98,6 +99,10 @@ def wine_rack(rng: np.random.Generator, variant: str) -> list[Part]:
         yb = min(d / 2 - 0.03, 0.065)
         bars = [S.box((iw, 0.015, 0.02), center=(0, y, z + 0.022)) for y in (-yb, yb)]
         parts.append(make_part(f"cradle_{k}", "cradle", bars, wood))
+        # a screw through each side panel into the shelf's end, its head flush with the side
+        for j, sx in enumerate((-1, 1)):
+            parts += flush_screws(f"screw_{k}", [(sx * w / 2, 0.0, z + 0.006)], axis=(sx, 0, 0), radius=0.0045,
+                                  start=j)
     parts += feet4("foot", w=w, d=d, r=0.015, h=0.04 - 0.0, mat=wood)
     return parts
 

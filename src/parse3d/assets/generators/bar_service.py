@@ -118,6 +118,10 @@ def beer_tap(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     top = max(p.mesh.bounds[1, 2] for p in parts if getattr(p, "label", None) == "tower")
     if variant != "t_bar":
         parts.append(make_part("cap", "cap", S.cylinder(0.042, 0.01, center=(0, 0, top + 0.004), sections=20), chrome))
+    else:  # a chrome end cap on each end of the T's bar
+        parts += [make_part("cap" if k == 0 else f"cap_{k}", "cap",
+                            S.cylinder(0.042, 0.01, center=(sx * (wt / 2 + 0.003), 0, H - 0.035), axis=(1, 0, 0), sections=20), chrome)
+                  for k, sx in enumerate((-1, 1))]
     for k, a in enumerate(np.radians([-160, -90, -20])):  # the back half: the drip tray covers the front
         parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(0.048 * np.cos(a), 0.048 * np.sin(a), 0.0155),
                                                                  sections=8), chrome))

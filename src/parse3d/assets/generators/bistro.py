@@ -19,7 +19,8 @@ from ._household import ring
 from ._kit import rot
 
 
-@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar", "screw"),
+@register("bar_table", parts=("tabletop", "leg"), extra_parts=("base", "footrest", "stretcher", "foot", "apron", "top_plate", "collar", "screw",
+                                                               "corner_block"),
           size_range=(0.95, 1.5), density=600, variants=("pedestal", "four_leg", "square_pedestal"),
           placement="floor")
 def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -55,6 +56,12 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"foot_{i}", "foot", S.box((leg + 0.006, leg + 0.006, 0.012),
                                                              center=(sx * (w / 2 - 0.05), sy * (w / 2 - 0.05), 0.006)),
                                    black("rubber")))
+            # the corner block glued across the inside corner of the aprons behind the leg, under
+            # the top (not touching it)
+            q = w / 2 - 0.05 - 0.01 - 0.03
+            parts.append(make_part(f"corner_block_{i}", "corner_block",
+                                   S.box((0.08, 0.02, ha * 0.7), center=(sx * q, sy * q, h - t - 0.002 - ha * 0.35),
+                                         R=rot((0, 0, 1), float(np.arctan2(sx, -sy)))), top_mat))
         return parts
     if variant == "square_pedestal":
         w = rng.uniform(0.6, 0.75)
@@ -97,7 +104,7 @@ def bar_table(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("jukebox", parts=("body",), extra_parts=("glass", "speaker", "button", "crest", "light", "record", "tonearm",
-                                                   "coin_slot", "title_strip", "grille_bar"),
+                                                   "coin_slot", "title_strip", "grille_bar", "coin_return", "lock"),
           size_range=(1.0, 1.7), density=400, variants=("bubbler", "wallbox_cabinet", "retro"),
           placement="floor")
 def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -158,6 +165,12 @@ def jukebox(rng: np.random.Generator, variant: str) -> list[Part]:
     for k in range(3):
         z = zs0 + (zs1 - zs0) * (k + 1) / 4
         parts.append(make_part(f"grille_bar_{k}", "grille_bar", S.box((w * 0.57, 0.008, 0.01), center=(0, d / 2 + 0.013, z)), chrome))
+    # the coin-return cup under the coin slot, and the key lock of the front door beside the
+    # speaker
+    parts.append(make_part("coin_return", "coin_return", S.box((0.03, 0.01, 0.025), center=(w * 0.3, d / 2 + 0.005, zbtn - 0.05),
+                                                               bevel=0.002), chrome))
+    parts.append(make_part("lock", "lock", S.cylinder(0.01, 0.008, center=(w * 0.36, d / 2 + 0.004, (zs0 + zs1) / 2), axis=(0, 1, 0),
+                                                      sections=10), chrome))
     return parts
 
 

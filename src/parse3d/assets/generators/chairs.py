@@ -14,6 +14,7 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._dA_fixings import screws_under
+from ._dD_detail import flush_screws, rivets_through
 from ._kit import legs4, rot
 
 
@@ -283,7 +284,7 @@ def bench(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle", "dust_cover"),
+@register("ottoman", parts=("body", "cushion"), extra_parts=("foot", "button", "piping", "glide", "handle", "dust_cover", "plate"),
           size_range=(0.35, 1.0), density=300, variants=("cube", "round", "tufted"))
 def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(0.38, 0.46)
@@ -318,6 +319,9 @@ def ottoman(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"foot_{k}", "foot",
                              S.cylinder(0.02, foot_h, center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05),
                                                              foot_h / 2), sections=12), wood))
+        # the steel mounting plate screwed under the frame that the foot's hanger bolt threads into
+        out.append(make_part(f"plate_{k}", "plate", S.box((0.06, 0.06, 0.002), center=(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), foot_h - 0.001)),
+                             M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)))
     # the piping along the cushion's bottom seam
     zp = h - top
     pipe = [S.box((w + 0.008, 0.008, 0.012), center=(0, sy * (d / 2 + 0.002), zp)) for sy in (-1, 1)]
@@ -351,7 +355,7 @@ def _underside(z: float, xy, cloth: S.Shape) -> list[Part]:
     return out
 
 
-@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot", "rail", "link"),
+@register("folding_chair", parts=("seat", "back", "leg"), extra_parts=("crossbar", "foot", "pivot", "rail", "link", "rivet", "screw"),
           size_range=(0.72, 0.95), density=700, variants=("open", "folded"))
 def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.42, 0.46)
@@ -382,6 +386,7 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
         for k, sx in enumerate((-1, 1)):
             out.append(make_part(f"pivot_{k}", "pivot", S.cylinder(0.006, 0.006, center=(sx * (w / 2 - r), r + 0.003, hs),
                                                                    axis=(0, 1, 0), sections=8), metal))
+        out += _back_rivets(w, 0.0, hs, hb, r)
         return out
     d = rng.uniform(0.4, 0.45)
     out.append(make_part("seat", "seat", S.box((w - 4 * r, d, 0.015), center=(0, 0, hs - 0.0075),
@@ -413,10 +418,22 @@ def folding_chair(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=8), metal))
         out.append(make_part(f"link_{k}", "link", S.box((0.004, 0.09, 0.018), center=(x * 0.96, -d / 2 + 0.1, hs - 0.06),
                                                         R=rot((1, 0, 0), 0.6)), metal))
+    out += _back_rivets(w, -d / 2 + 0.02, hs, hb, r)
+    # the four screws up through the side rails into the seat's underside, near each end
+    out += flush_screws("screw", [(sx * (w / 2 - 2 * r - 0.004), y, zr - r * 0.8) for sx in (-1, 1)
+                                  for y in (-d / 2 + 0.05, d / 2 - 0.06)], axis=(0, 0, -1), radius=0.0035)
     xc = 0.93 * (w / 2 - r)
     out.append(make_part("crossbar_1", "crossbar", S.tube([(-xc, d / 2 - 0.045, 0.14), (xc, d / 2 - 0.045, 0.14)], r * 0.8),
                          metal))
     return out
+
+
+def _back_rivets(w: float, y: float, hs: float, hb: float, r: float) -> list[Part]:
+    """The four rivets through the back posts into the back panel's ends, two a side, their
+    heads flush with the posts' outer faces."""
+    zs = (hs + hb * 0.7 - hb * 0.14, hs + hb * 0.7 + hb * 0.14)
+    return rivets_through("rivet", [(sx * (w / 2 - r), y, z) for sx in (-1, 1) for z in zs], length=2 * r,
+                          axis=(1, 0, 0), radius=0.003)
 
 
 def _tube_feet(xy, r: float) -> list[Part]:

@@ -18,6 +18,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
 from ._dA_fixings import screws_under
+from ._dD_detail import flush_screws
 from ._detail_b import each
 from ._household import open_box, ring
 from ._kit import OPEN_DOOR, feet4, hinge_parts, legs4, mount, prismatic, revolute, rot
@@ -94,7 +95,7 @@ def croissant(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("jewelry_box", parts=("body", "lid"), extra_parts=("tray", "mirror", "clasp", "hinge", "foot", "drawer", "drawer_box",
-                                                             "knob", "lining", "divider", "ring_roll", "lid_stay"),
+                                                             "knob", "lining", "divider", "ring_roll", "lid_stay", "screw"),
           size_range=(0.12, 0.4), density=600, variants=("hinged", "drawers", "chest"), placement="surface")
 def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     wood = M.wood(rng) if rng.random() < 0.7 else M.leather(rng)
@@ -154,10 +155,18 @@ def jewelry_box(rng: np.random.Generator, variant: str) -> list:
     parts += hinge_parts("hinge", x=zl, y=-d / 2 - 0.003, z0=-w / 2 + 0.02, z1=w / 2 - 0.02, mat=brass, axis="x", radius=0.003,
                          length=0.025)
     parts.append(revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR * 0.6))
+    # a brass screw through each hinge's lower leaf into the back wall and, on a flat lid, one
+    # through its upper leaf into the lid's back edge (it turns with the lid)
+    xs = [-w / 2 + 0.02 + (w - 0.04) * f for f in (0.12, 0.88)]
+    parts += flush_screws("screw", [(x, -d / 2, zl - 0.007) for x in xs], axis=(0.0, -1.0, 0.0), radius=0.002, mat=brass)
+    if variant != "chest":
+        parts += flush_screws("screw", [(x, -d / 2, zl + hl * 0.5) for x in xs], axis=(0.0, -1.0, 0.0), radius=0.002, mat=brass,
+                              start=2)
+        parts += [mount("lid", "screw_2"), mount("lid", "screw_3")]
     return parts
 
 
-@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "glide"),
+@register("folding_screen", parts=("panel",), extra_parts=("frame", "hinge", "glide", "screw"),
           size_range=(1.2, 2.4), density=400, variants=("three_panel", "four_panel", "shoji"))
 def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     n = 4 if variant == "four_panel" else 3
@@ -169,6 +178,7 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     x = -n * pw * np.cos(ang) / 2
     y = 0.0
+    prev = 0.0  # the previous panel's direction
     for k in range(n):
         s = 1 if k % 2 == 0 else -1  # a zigzag: each panel turns back the other way
         dx, dy = pw * np.cos(ang), s * pw * np.sin(ang)
@@ -190,8 +200,20 @@ def folding_screen(rng: np.random.Generator, variant: str) -> list[Part]:
                                    S.cylinder(0.01, 0.004, center=(cx + sgn * (pw / 2 - 0.015) * ca, cy + sgn * (pw / 2 - 0.015) * sa, 0.002),
                                               sections=8), M.solid((0.85, 0.85, 0.82), "plastic", 0.4)))
         if k > 0:
-            parts += hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9), n=3,
-                                 radius=0.008, length=0.06)
+            brass = M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
+            hinges = hinge_parts(f"hinge_{k}", x=x, y=y, z0=zf, z1=h, mat=brass, n=3, radius=0.008, length=0.06)
+            parts += hinges
+            # each hinge's two leaves lie on the front faces of the stiles either side of it, a
+            # brass screw through each leaf into its stile
+            a0, a1 = prev, float(np.arctan2(dy, dx))
+            for j, hp in enumerate(hinges):
+                zc = float(hp.mesh.bounds[:, 2].mean())
+                pts = [((x - 0.015 * np.cos(a0)) - np.sin(a0) * t / 2, (y - 0.015 * np.sin(a0)) + np.cos(a0) * t / 2, zc, a0),
+                       ((x + 0.015 * np.cos(a1)) - np.sin(a1) * t / 2, (y + 0.015 * np.sin(a1)) + np.cos(a1) * t / 2, zc, a1)]
+                for i, (px, py, pz, a) in enumerate(pts):
+                    parts += flush_screws(f"screw_{k}_{j}", [(px, py, pz)], axis=(-np.sin(a), np.cos(a), 0.0), radius=0.003,
+                                          mat=brass, start=i)
+        prev = float(np.arctan2(dy, dx))
         x, y = x + dx, y + dy
     return parts
 
@@ -276,6 +298,9 @@ def laptop_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part("base" if k == 0 else "base_1", "base",
                                    S.box((w, 0.02, 0.01), center=(0, sy * (d / 2 - 0.01), 0.005)), alu))
         parts += _stand_feet([(sx * w * 0.4, sy * (d / 2 - 0.01)) for sy in (-1, 1) for sx in (-1, 1)], rubber)
+        # a countersunk screw up through each runner into the foot of the leg above it
+        parts += flush_screws("screw", [(sx * (w / 2 - 0.01), sy * (d / 2 - 0.01), 0.0) for sy in (-1, 1) for sx in (-1, 1)],
+                              axis=(0.0, 0.0, -1.0), radius=0.003)
         return parts
     tilt = np.deg2rad(rng.uniform(15, 25))
     hf = 0.03  # the platform's front edge height

@@ -13,7 +13,7 @@ from ..model import Material, Part, make_part
 from ..registry import register
 
 
-@register("service_bell", parts=("bell", "base", "button"), extra_parts=("foot", "post", "pad"),
+@register("service_bell", parts=("bell", "base", "button"), extra_parts=("foot", "post", "pad", "hammer", "spring"),
           size_range=(0.07, 0.13), density=2500, variants=("classic", "square_base", "wooden_base"), placement="surface")
 def service_bell(rng: np.random.Generator, variant: str) -> list[Part]:
     chrome = M.solid((0.8, 0.8, 0.82), "metal", 0.2, 0.95) if rng.random() < 0.6 else M.solid((0.78, 0.62, 0.3), "metal", 0.3, 0.9)
@@ -42,6 +42,12 @@ def service_bell(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("post", "post", S.cylinder(0.0025, 0.012, center=(0, 0, z0 + hd + 0.006), sections=8), chrome))
     parts.append(make_part("button", "button", S.cylinder(0.007, 0.004, center=(0, 0, z0 + hd + 0.014), sections=12),
                            Material((0.1, 0.1, 0.1, 1.0), 0.5, 0.3, "metal")))
+    # under the dome: the spring the plunger returns on, round the post's foot, and the
+    # hammer arm that strikes the dome's inside wall when the plunger is pressed
+    parts.append(make_part("spring", "spring", S.cylinder(0.004, hd * 0.45, center=(0, 0, z0 + hd * 0.5), sections=8),
+                           M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)))
+    parts.append(make_part("hammer", "hammer", S.box((rd * 0.7, 0.004, 0.004), center=(rd * 0.4, 0, z0 + hd * 0.3)),
+                           M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)))
     # the four felt pads set flush into the base's underside
     felt = M.solid((0.12, 0.12, 0.12), "fabric", 0.95)
     for k in range(4):

@@ -13,6 +13,7 @@ from .. import materials as M
 from ..model import Part, make_part
 from ..registry import register
 from ._casework import black, door_parts, drawer_parts, glass_pane, knob, white
+from ._dD_detail import back_screws
 from ._kit import OPEN_DOOR, mount, revolute
 
 H_COUNTER = 0.9
@@ -206,7 +207,7 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
                                                                      "thermostat", "gasket", "toe_grille", "hinge_cover",
-                                                                     "dispenser", "trim", "shelf_support"),
+                                                                     "dispenser", "trim", "shelf_support", "screw"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -275,6 +276,8 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     # door's top hinge on the cabinet's top, and on a side-by-side the water and ice
     # dispenser let into the freezer door
     parts.append(make_part("toe_grille", "toe_grille", S.box((w - 2 * t, 0.006, 0.07), center=(0, yf - 0.003, 0.04)), black()))
+    # the four screws holding the back panel at its corners
+    parts += back_screws("screw", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y=yb, inset=0.04)
     hinge_x = {"single": [-w / 2 + 0.04], "top_freezer": [-w / 2 + 0.04], "side_by_side": [-w / 2 + 0.04, w / 2 - 0.04]}[variant]
     parts += [make_part(f"hinge_cover_{k}", "hinge_cover", S.box((0.06, 0.08, 0.012), center=(x, yf - 0.035, h - 0.006 + 0.0), bevel=0.003),
                         shell) for k, x in enumerate(hinge_x)]
@@ -314,7 +317,7 @@ def _ring_path(center, radius: float, n: int, *, plane: str = "xy") -> np.ndarra
 
 @register("stove", parts=("body", "cooktop", "burner"),
           extra_parts=("door", "handle", "knob", "window", "drawer", "backguard", "hinge", "drawer_box", "display", "indicator",
-                       "vent"), size_range=(0.85, 1.15),
+                       "vent", "screw"), size_range=(0.85, 1.15),
           density=400, variants=("gas", "electric", "double_oven"))
 def stove(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d = rng.uniform(0.5, 0.76), rng.uniform(0.6, 0.66)
@@ -365,12 +368,14 @@ def stove(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                   sections=8), M.solid((0.95, 0.4, 0.1), "glass", 0.2))
               for k, sx in enumerate((-1, 1))]
     parts.append(make_part("vent", "vent", S.box((w * 0.5, 0.03, 0.002), center=(0, -d / 2 + 0.06, z - 0.0009)), black()))
+    # the four screws holding the back panel at its corners
+    parts += back_screws("screw", x0=-w / 2, x1=w / 2, z0=0.0, z1=h_body, y=-d / 2, inset=0.03)
     return parts
 
 
 @register("washing_machine", parts=("body", "door"), extra_parts=("control_panel", "knob", "window", "drawer",
                                                                    "display", "foot", "hinge", "button", "gasket", "filter_cover",
-                                                                   "handle", "lid_lock", "dispenser"),
+                                                                   "handle", "lid_lock", "dispenser", "screw"),
           size_range=(0.8, 1.0), density=250, variants=("front_loader", "top_loader"))
 def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.58, 0.62), rng.uniform(0.52, 0.64), rng.uniform(0.82, 0.88)
@@ -436,4 +441,6 @@ def washing_machine(rng: np.random.Generator, variant: str) -> list[Part]:
         parts += [make_part(f"dispenser_{k}", "dispenser", S.cylinder(0.025, 0.004, center=(sx * (w / 2 - 0.07), 0.04 + (d - 0.16) / 2 - 0.04,
                                                                                              h - 0.0019), sections=12), trim)
                   for k, sx in enumerate((-1, 1))]
+    # the four screws holding the back panel at its corners
+    parts += back_screws("screw", x0=-w / 2, x1=w / 2, z0=fz, z1=h, y=-d / 2, inset=0.04)
     return parts

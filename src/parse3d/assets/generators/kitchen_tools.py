@@ -16,11 +16,12 @@ from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
 from ._casework import black
+from ._dD_detail import rivets_through
 from ._household import ring, shell
 from ._kit import feet4, mount, revolute
 
 
-@register("knife_block", parts=("block", "handle"), extra_parts=("slot", "foot", "bolster"),
+@register("knife_block", parts=("block", "handle"), extra_parts=("slot", "foot", "bolster", "rivet"),
           size_range=(0.2, 0.42), density=700, variants=("slanted", "upright", "round"),
           placement="surface")
 def knife_block(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -60,6 +61,11 @@ def knife_block(rng: np.random.Generator, variant: str) -> list[Part]:
         hl = rng.uniform(0.09, 0.12)
         handle = S.box((0.02, 0.013, hl), center=(x, y, h + bl + hl / 2), bevel=0.003)
         parts.append(make_part(f"handle_{k}", "handle", handle, handle_mat))
+        # the two rivets through the handle's scales and the tang between them, their heads
+        # flush with both faces
+        zr = [h + bl + hl * f for f in (0.3, 0.72)]
+        parts += rivets_through(f"rivet_{k}", [(x, y, z) for z in zr], length=0.013, radius=0.002,
+                                start=0)
     if variant != "round":
         parts += feet4("foot", w=w, d=d, r=0.008, h=0.004, mat=dark, inset=0.005)
         for p in parts[-4:]:
@@ -129,7 +135,7 @@ def _beyond_board(parts: list[Part]) -> float:
 
 
 @register("stand_mixer", parts=("base", "column", "head", "bowl"),
-          extra_parts=("beater", "bowl_plate", "bowl_arm", "speed_lever", "hinge", "hub", "foot"),
+          extra_parts=("beater", "bowl_plate", "bowl_arm", "speed_lever", "hinge", "hub", "foot", "lock_lever", "hub_knob"),
           size_range=(0.3, 0.46), density=900, variants=("tilt_head", "bowl_lift"),
           placement="surface")
 def stand_mixer(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -188,9 +194,16 @@ def stand_mixer(rng: np.random.Generator, variant: str) -> list[Part]:
     pivot = (0.0, yc - cd * 0.1, zh0)
     parts.append(make_part("hinge", "hinge", S.cylinder(0.008, cw * 1.02, center=pivot, axis=(1, 0, 0),
                                                         sections=12), steel))
+    # on the column's left side the lever that locks the head down (a bowl-lift's lever that
+    # raises the bowl), and on top of the attachment hub the knob that clamps an attachment in
+    zl = bh + ch * 0.55
+    lock = S.box((0.01, 0.04, 0.012), center=(-cw / 2 - 0.004, yc, zl), bevel=0.002)
+    parts.append(make_part("lock_lever", "lock_lever", lock, steel))
+    parts.append(make_part("hub_knob", "hub_knob", S.cylinder(0.009, 0.012, center=(0, y1 + 0.03, zh0 + hh * 0.5 + 0.03 + 0.005),
+                                                              sections=10), steel))
     if variant == "tilt_head":
         parts += [revolute("head_tilt", "column", "head", axis=(1, 0, 0), origin=pivot, opens=1.0),
-                  mount("head", "hub"), mount("head", "beater"), mount("head", "speed_lever")]
+                  mount("head", "hub"), mount("head", "beater"), mount("head", "speed_lever"), mount("head", "hub_knob")]
     else:
         # bowl-lift models raise the bowl on arms instead; the head is fixed
         arm = S.box((cw * 1.1, 0.03, 0.02), center=(0, yb - rb + 0.005, zp + 0.01 + hb * 0.5), bevel=0.004)

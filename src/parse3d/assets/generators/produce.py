@@ -68,7 +68,7 @@ def onion(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("neck", "neck", neck, mat))
     plate = S.cylinder(r * 0.3, z0 + 0.001, center=(0, 0, (z0 + 0.001) / 2), sections=12)
     parts.append(make_part("root_plate", "root_plate", plate, dry))
-    nr = 6 if variant != "shallot" else 4  # the dried root tuft under the plate
+    nr = 10 if variant != "shallot" else 6  # the dried root tuft under the plate
     for k in range(nr):
         a = 2 * np.pi * k / nr + rng.uniform(-0.3, 0.3)
         d = np.array([np.cos(a), np.sin(a), 0.0])

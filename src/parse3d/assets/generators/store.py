@@ -16,6 +16,7 @@ from .. import materials as M
 from ..model import Joint, Part, make_part
 from ..registry import register
 from ._casework import bar_pull, black, white
+from ._dD_detail import back_screws
 from ._detail_b import studs
 from ._kit import OPEN_DOOR, feet4, hinge_parts, mount, revolute
 
@@ -294,7 +295,7 @@ def cardboard_box(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("freezer_chest", parts=("body", "lid"), extra_parts=("handle", "hinge", "foot", "gasket", "basket", "control_panel",
-                                                              "lock", "drain_plug", "grille", "light", "spacer"),
+                                                              "lock", "drain_plug", "grille", "light", "spacer", "screw"),
           size_range=(0.7, 1.8), density=300, variants=("small", "large", "glass_top"))
 def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = {"small": rng.uniform(0.7, 0.95), "large": rng.uniform(1.2, 1.6), "glass_top": rng.uniform(1.4, 1.75)}[variant]
@@ -308,6 +309,8 @@ def freezer_chest(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     parts: list[Part | Joint] = [make_part("body", "body", body, enamel)]
     parts += feet4("foot", w=w, d=d, r=0.025, h=fh, mat=black(), inset=0.03)
     parts.append(make_part("gasket", "gasket", _walls(w - 0.02, d - 0.02, 0.006, 0.02, z0=fh + hb - 0.003), black()))
+    # the four screws holding the cabinet's back sheet at its corners
+    parts += back_screws("screw", x0=-w / 2, x1=w / 2, z0=fh, z1=fh + hb, y=-d / 2, inset=0.04)
     zt = fh + hb + 0.003
     if variant == "glass_top":
         lid = [S.box((w / 2 - 0.01, d - 0.02, lid_t), center=(-w / 4, 0, zt + lid_t / 2))]

@@ -95,7 +95,7 @@ def wagashi(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("brazier", parts=("body", "trivet"), extra_parts=("ash", "foot", "ear", "liner", "prong", "bar"),
+@register("brazier", parts=("body", "trivet"), extra_parts=("ash", "foot", "ear", "liner", "prong", "bar", "charcoal"),
           size_range=(0.25, 0.65), density=1500, variants=("hibachi", "furo", "box"), placement="floor")
 def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
     """A charcoal brazier: a bed of ``ash`` inside the ``body`` and a ``trivet`` plate over the
@@ -119,6 +119,7 @@ def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=24), ash))
         top = h
         r_open = ri
+        z_ash = t + h * 0.35 - 0.001
     else:
         r = rng.uniform(0.16, 0.22)
         h = rng.uniform(0.2, 0.26)
@@ -130,6 +131,7 @@ def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
                                                         sections=24), ash))
         top = zf + h
         r_open = r * 0.85 - 0.012
+        z_ash = zf + 0.012 + h * 0.45 - 0.001
         if variant == "furo":
             for k in range(3):
                 a = 2 * np.pi * k / 3 + np.pi / 2
@@ -140,6 +142,12 @@ def brazier(rng: np.random.Generator, variant: str) -> list[Part]:
                 parts.append(make_part(f"ear_{k}", "ear", S.ellipsoid((0.02, 0.012, 0.025),
                                                                       center=(sx * r * 0.99, 0, zf + h * 0.7),
                                                                       subdivisions=1), dark))
+    # the sticks of charcoal laid on the ash under the trivet, side by side
+    coal = Material((0.06, 0.06, 0.06, 1.0), 0.95, 0.0, "stone")
+    rc = 0.012
+    for k, y in enumerate((-2.2 * rc, 0.0, 2.2 * rc)):
+        parts.append(make_part(f"charcoal_{k}", "charcoal", S.cylinder(rc, min(0.07, r_open), center=(0, y, z_ash + rc - 0.002),
+                                                                       axis=(1, 0, 0), sections=8), coal))
     # the trivet: a plate over the opening with three prongs down into the ash
     rt = r_open * 0.85
     parts.append(make_part("trivet", "trivet", S.cylinder(rt, 0.006, center=(0, 0, top + 0.003), sections=24), dark))
