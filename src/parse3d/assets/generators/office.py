@@ -60,7 +60,7 @@ def projector(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("projector_screen", parts=("screen",), extra_parts=("case", "bottom_bar", "frame", "pull_handle", "end_cap", "bracket",
-                                                              "corner"),
+                                                              "corner", "spring", "screw"),
           size_range=(1.2, 3.2), density=300, variants=("pull_down", "fixed_frame"), placement="wall")
 def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(1.5, 3.0)
@@ -74,7 +74,21 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         # the frame's mitred corners are joined by corner brackets on its back; it hangs on two
         # wall brackets along its top
         steel = M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)
-        return [make_part("frame", "frame", frame, M.solid((0.05, 0.05, 0.05), "fabric", 0.95)),
+        # behind the screen, the tension springs round its edge pulling the fabric taut onto the
+        # frame, about every 30 cm
+        springs = []
+        for horizontal in (True, False):
+            span = (w if horizontal else h) - 2 * f
+            n = max(2, int(span / 0.3))
+            for s in np.linspace(-span / 2, span / 2, n + 2)[1:-1]:
+                for side in (-1, 1):
+                    if horizontal:
+                        c, axis = (s, 0.014, h / 2 + side * (h / 2 - f - 0.02)), (0, 0, 1)
+                    else:
+                        c, axis = (side * (w / 2 - f - 0.02), 0.014, h / 2 + s), (1, 0, 0)
+                    springs.append(make_part(f"spring_{len(springs)}", "spring", S.cylinder(0.004, 0.04, center=c, axis=axis, sections=8),
+                                             steel))
+        return [make_part("frame", "frame", frame, M.solid((0.05, 0.05, 0.05), "fabric", 0.95)), *springs,
                 make_part("screen", "screen", S.box((w - 2 * f, 0.004, h - 2 * f), center=(0, 0.03, h / 2)), fabric),
                 *[make_part(f"corner_{k}", "corner", S.box((0.12, 0.004, 0.12), center=(sx * (w / 2 - 0.06), -0.002, z)), steel)
                   for k, (sx, z) in enumerate([(-1, 0.06), (1, 0.06), (-1, h - 0.06), (1, h - 0.06)])],
@@ -89,9 +103,16 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.02, 0.1, 0.1), center=(s * (w / 2 + 0.05), 0.05, zc)), black()))
     parts.append(make_part("pull_handle", "pull_handle", S.box((0.04, 0.02, 0.06), center=(0, 0.05, zc - case_r - h - 0.06)), black()))
-    # the case hangs on a bracket at each end
-    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.05, 0.02, 0.12), center=(s * (w / 2 - 0.05), -0.01, zc)),
-                        M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)) for k, s in enumerate((-1, 1))]
+    # the case hangs on a bracket at each end, each screwed to the wall above and below the case;
+    # a plastic cap closes each end of the bottom bar
+    steel = M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)
+    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.05, 0.02, 0.12), center=(s * (w / 2 - 0.05), -0.01, zc)), steel)
+              for k, s in enumerate((-1, 1))]
+    parts += [make_part(f"screw_{2 * k + j}", "screw", S.cylinder(0.004, 0.002, center=(s * (w / 2 - 0.05), 0.001, zc + sz * 0.0525), axis=(0, 1, 0),
+                                                                  sections=8), steel)
+              for k, s in enumerate((-1, 1)) for j, sz in enumerate((-1, 1))]
+    parts += [make_part(f"end_cap_{2 + k}", "end_cap", S.box((0.006, 0.022, 0.032), center=(s * (w / 2 + 0.013), 0.05, zc - case_r - h - 0.015)),
+                        black()) for k, s in enumerate((-1, 1))]
     return parts
 
 
