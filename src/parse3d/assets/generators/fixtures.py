@@ -223,8 +223,13 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                             axis=(0, 1, 0), sections=8), black()))
     if variant == "usb":
         parts.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.006), center=(0, 0.0085, h * 0.15)), black()))
-    parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h * 0.85), axis=(0, 1, 0), sections=8),
-                           M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
+    steel = M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)
+    if n == 1:  # one screw between the sockets' top and the plate's edge
+        parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h * 0.85), axis=(0, 1, 0), sections=8), steel))
+    else:  # a double plate is screwed at both ends
+        parts += [make_part("screw" if k == 0 else f"screw_{k}", "screw", S.cylinder(0.003, 0.002, center=(sx * (w / 2 - 0.008), 0.0085, h / 2),
+                                                                                      axis=(0, 1, 0), sections=8), steel)
+                  for k, sx in enumerate((-1, 1))]
     return parts
 
 

@@ -20,7 +20,8 @@ from ._kit import DRAWER_TRAVEL, feet4, mount, prismatic, rot
 
 
 @register("projector", parts=("body", "lens"), extra_parts=("foot", "vent", "button", "focus_ring", "zoom_ring", "sensor", "indicator",
-                                                          "port"), size_range=(0.2, 0.45),
+                                                          "port", "lamp_cover", "screw", "lock_slot", "release_button"),
+          size_range=(0.2, 0.45),
           density=600, variants=("compact", "business", "short_throw"), placement="surface")
 def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = {"compact": (rng.uniform(0.2, 0.26), rng.uniform(0.15, 0.2), rng.uniform(0.07, 0.09)),
@@ -56,6 +57,14 @@ def projector(rng: np.random.Generator, variant: str) -> list[Part]:
               for k, c in enumerate(((0.1, 0.8, 0.2), (0.9, 0.5, 0.1)))]
     parts += [make_part(f"port_{k}", "port", S.box((0.016, 0.003, 0.008), center=(-w * 0.25 + 0.03 * k, -d / 2 - 0.0015, fh + h * 0.4)),
                         black()) for k in range(3)]
+    # underneath, flush with the shell: the lamp door and the screw holding it shut; the
+    # security lock slot at the back; the button on the front releasing the tilt foot
+    parts.append(make_part("lamp_cover", "lamp_cover", S.box((w * 0.35, d * 0.35, 0.001), center=(-w * 0.1, 0, fh + 0.0005)), shell))
+    parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.001, center=(-w * 0.1 + w * 0.15, 0, fh + 0.0005), sections=8),
+                           M.solid((0.6, 0.6, 0.62), "metal", 0.4)))
+    parts.append(make_part("lock_slot", "lock_slot", S.box((0.007, 0.002, 0.003), center=(w * 0.4, -d / 2 + 0.0008, fh + h * 0.3)), black()))
+    parts.append(make_part("release_button", "release_button", S.box((0.014, 0.002, 0.008), center=(-w * 0.3, d / 2 - 0.0008, fh + h * 0.2)),
+                           black()))
     return parts
 
 
@@ -284,11 +293,15 @@ def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
         mount(f"{name}_box", name), mount(name, f"{name}_handle"), mount(name, f"{name}_label"),
         mount(f"{name}_label", f"{name}_label_card"), mount(f"{name}_box", f"{name}_rail_0"), mount(f"{name}_box", f"{name}_rail_1"),
     ]
+    if bh > 0.15:  # a file drawer's follower: the plate near the back that keeps the files upright
+        out += [make_part(f"{name}_follower", "follower", S.box((bw - 2 * t - 0.004, 0.003, bh * 0.6),
+                                                                  center=(cx, yb - depth + t + 0.06, z0 + 0.01 + t + bh * 0.3)), M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)),
+                mount(f"{name}_box", f"{name}_follower")]
     return out
 
 
 @register("filing_cabinet", parts=("body", "drawer"), extra_parts=("drawer_box", "handle", "label_holder", "top_panel",
-                                                                    "caster", "label_card", "slide_rail", "lock", "glide"),
+                                                                    "caster", "label_card", "slide_rail", "lock", "glide", "follower"),
           size_range=(0.45, 1.45), density=400, variants=("vertical", "lateral", "mobile_pedestal"))
 def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "vertical":
