@@ -206,6 +206,14 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("hook_switch", "hook_switch", S.box((0.012, 0.01, 0.012),
                                                                   center=(-w / 2 + 0.06, 0, h * 0.75 - 0.002)),
                              keycol))
+    # a column of keys at the right edge of the top: an office phone's three line keys, a desk
+    # phone's redial and flash keys, a cordless base's page and speaker keys
+    names = {"office": ("line_key_0", "line_key_1", "line_key_2"), "desk": ("redial_key", "flash_key"),
+             "cordless": ("page_key", "speaker_key")}[variant]
+    for k, name in enumerate(names):
+        y = d * 0.1 - 0.02 * k
+        out.append(make_part(name, "key", S.box((0.012, 0.01, 0.006), center=(w / 2 - 0.009, y, top_z(y) - 0.002),
+                                                R=rot((1, 0, 0), -slope)), keycol))
     out.append(make_part("speaker_grille", "speaker_grille",
                          S.box((0.04, 0.03, 0.003), center=(w * 0.35, d * 0.25, top_z(d * 0.25) - 0.0005),
                                R=rot((1, 0, 0), -slope)), black()))
