@@ -126,7 +126,7 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("conference_phone", parts=("body",), extra_parts=("display", "key", "speaker_grille", "microphone", "status_light",
-                                                             "foot"),
+                                                             "foot", "mute_button"),
           size_range=(0.18, 0.4), density=700, variants=("triangle", "round"), placement="surface")
 def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     s, h = rng.uniform(0.2, 0.34), rng.uniform(0.035, 0.05)
@@ -157,6 +157,12 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                                sections=8), M.solid((0.2, 0.8, 0.3), "glass", 0.1)))
         parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.008, 0.002, center=(x, y, 0.001), sections=8),
                                M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
+        # the mute button by each microphone (inward of it on a triangle, beside it on a round one)
+        u = np.array([x, y]) / np.hypot(x, y)
+        c = np.array([x, y]) * 0.8 if variant == "triangle" else np.array([x, y]) + 0.015 * np.array([-u[1], u[0]])
+        parts.append(make_part(f"mute_button_{i}", "mute_button", S.box((0.012, 0.008, 0.003), center=(c[0], c[1], h),
+                                                                         R=rot((0, 0, 1), float(np.arctan2(u[1], u[0])) + np.pi / 2)),
+                               M.solid((0.75, 0.1, 0.1), "plastic", 0.4)))
     return parts
 
 
