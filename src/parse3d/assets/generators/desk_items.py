@@ -602,8 +602,8 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
         out = [make_part("crown", "crown", crown, mat),
                make_part("brim", "brim", S.box((r * 1.6, r * 0.9, 0.004), center=(0, r * 1.1 + r * 0.4, 0.004)), mat),
                make_part("button", "button", S.cylinder(0.008, 0.006, center=(0, 0, r * 0.9 + 0.003)), mat)]
-        # the stitched eyelets on the crown's panels and the adjuster strap at the back
-        for k, a in enumerate(np.radians([45, 135, 225, 315])):
+        # the stitched eyelet in each of the crown's six panels and the adjuster strap at the back
+        for k, a in enumerate(np.radians([0, 60, 120, 180, 240, 300])):
             el = np.array([np.cos(a) * r * 0.55, np.sin(a) * r * 1.1 * 0.55, r * 0.9 * np.sqrt(1 - 0.55 ** 2)])
             n = el / np.array([r, r * 1.1, r * 0.9]) ** 2
             n /= np.linalg.norm(n)
