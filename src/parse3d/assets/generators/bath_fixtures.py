@@ -16,12 +16,13 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Joint, Material, Part, make_part
 from ..registry import register
+from ._detail_b import ring_points, studs
 from ._kit import hinge_parts, mount, prismatic, revolute
 
 
 @register("shower", parts=("base", "wall_panel", "glass"),
           extra_parts=("door", "handle", "shower_head", "arm", "mixer", "drain", "niche", "hinge", "track", "clamp", "sweep",
-                       "flange", "trim_plate", "wall_channel", "support_bar"),
+                       "flange", "trim_plate", "wall_channel", "support_bar", "nozzle", "roller"),
           size_range=(1.9, 2.3), density=300, variants=("corner_slider", "hinged", "walk_in"),
           placement="floor")
 def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -57,6 +58,10 @@ def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
                            chrome))
     parts.append(make_part("shower_head", "shower_head", S.cylinder(0.1, 0.012, center=(xs - 0.3, -d * 0.1, zh - 0.016),
                                                                    sections=24), chrome))
+    # the rubber nozzles on the head's face: a ring of six round the centre one
+    face = (xs - 0.3, -d * 0.1, zh - 0.022)
+    parts += studs("nozzle", "nozzle", np.vstack([ring_points(6, 0.05, center=face), [face]]), r=0.0035, h=0.003,
+                   mat=Material((0.1, 0.1, 0.1, 1.0), 0.8, 0.0, "rubber"), sections=8)
     mixer = [S.cylinder(0.035, 0.02, center=(xs - 0.01, -d * 0.1, 1.1), axis=(1, 0, 0), sections=16),
              S.box((0.02, 0.08, 0.015), center=(xs - 0.035, -d * 0.1, 1.1))]
     parts.append(make_part("mixer", "mixer", mixer, chrome))
@@ -96,8 +101,12 @@ def shower(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         handle = S.tube([(xd1 - dw + 0.05, yf + 0.008, 1.0), (xd1 - dw + 0.05, yf + 0.04, 1.0),
                          (xd1 - dw + 0.05, yf + 0.04, 1.3), (xd1 - dw + 0.05, yf + 0.008, 1.3)], 0.01, sections=8)
         parts.append(make_part("handle", "handle", handle, chrome))
+        # the two rollers on the door's top edge that run in the track
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"roller_{k}", "roller", S.cylinder(0.012, 0.008, center=(xd1 - dw / 2 + sx * dw * 0.35, yf + 0.004, H - 0.037),
+                                                                      axis=(0, 1, 0), sections=10), chrome))
         parts += [prismatic("door_slide", "track", "door", travel=dw * 0.85, axis=(-1, 0, 0)),
-                  mount("door", "handle")]
+                  mount("door", "handle"), mount("door", "roller_0"), mount("door", "roller_1")]
         return parts
     # hinged: a fixed panel on the right of the front, the door hinged on the left edge
     fw = (w - tp) * 0.35

@@ -130,7 +130,7 @@ def toilet_brush(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("mirror_cabinet", parts=("body", "door", "mirror", "shelf"),
-          extra_parts=("hinge", "light", "handle", "glass", "shelf_pin", "bumper", "screw"),
+          extra_parts=("hinge", "light", "handle", "glass", "shelf_pin", "bumper", "screw", "switch", "socket"),
           size_range=(0.35, 1.25), density=600, variants=("single", "double", "lit"), placement="wall")
 def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     """A shallow wall cabinet whose doors are mirrors; glass shelves inside; ``lit`` adds a
@@ -185,4 +185,8 @@ def mirror_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]
         parts.append(make_part("light_housing", "body", S.box((w, d - 0.02, h - hb), center=(0, -0.01, (h + hb) / 2)), mat))
         parts.append(make_part("light", "light", S.box((w * 0.8, 0.01, 0.025), center=(0, d / 2 - 0.02 + 0.005, (h + hb) / 2)),
                                Material((1.0, 0.97, 0.9, 1.0), 0.2, 0.0, "glass")))
+        # the light's switch in the housing's right end and the shaver socket in its left end,
+        # flush with them
+        parts.append(make_part("switch", "switch", S.box((0.002, 0.012, 0.02), center=(w / 2 - 0.001, -0.01, (h + hb) / 2)), white(rng, "plastic")))
+        parts.append(make_part("socket", "socket", S.box((0.002, 0.03, 0.04), center=(-w / 2 + 0.001, -0.01, (h + hb) / 2)), white(rng, "plastic")))
     return parts

@@ -287,6 +287,18 @@ def bunk_bed(rng: np.random.Generator, variant: str) -> list[Part]:
                 parts.append(make_part(f"bolt_cap_{k}", "bolt_cap", S.cylinder(0.011, 0.002, center=(x + sx * (ps / 2 - 0.001), y, z - rail_h / 2),
                                                                              axis=(1, 0, 0), sections=10), metal))
                 k += 1
+    # the bolts holding the guard rails to the upper posts: both ends of the back rail, and the
+    # front rail's ends that meet a post (one where the ladder leaves a gap)
+    ends = [(x, ys[0]) for x in xs] + ([(x, ys[1]) for x in xs] if variant == "end_ladder" else [(xs[0], ys[1])])
+    for x, y in ends:
+        sx = 1.0 if x > 0 else -1.0
+        parts.append(make_part(f"bolt_cap_{k}", "bolt_cap", S.cylinder(0.011, 0.002, center=(x + sx * (ps / 2 - 0.001), y, g_z),
+                                                                     axis=(1, 0, 0), sections=10), metal))
+        k += 1
+    # a glide under the foot of each ladder stile
+    parts += [make_part(f"ladder_glide_{i}", "glide", S.cylinder(0.012, 0.003, center=(float(s.mesh.bounds[:, 0].mean()), float(s.mesh.bounds[:, 1].mean()), 0.0015),
+                                                                 sections=10), M.solid((0.25, 0.25, 0.26), "plastic", 0.6))
+              for i, s in enumerate(stiles)]
     parts += [make_part(f"glide_{i}", "glide", S.cylinder(min(0.012, ps * 0.3), 0.003, center=(x, y, 0.0015), sections=10),
                         M.solid((0.25, 0.25, 0.26), "plastic", 0.6)) for i, (x, y) in enumerate((x, y) for y in ys for x in xs)]
     if variant == "trundle":

@@ -70,6 +70,9 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, sx in enumerate((-1, 1)):
         parts.append(make_part(f"tray_bracket_{i}", "tray_bracket", S.box((0.03, 0.004, 0.05), center=(sx * tw * 0.35, y0 + 0.008, z_tray - 0.005)),
                                alu))
+        # the screw through its foot below the tray into the wall
+        parts.append(make_part(f"bracket_screw_{i}", "screw", S.cylinder(0.0035, 0.0015, center=(sx * tw * 0.35, y0 + 0.01 + 0.00075, z_tray - 0.025),
+                                                                                axis=(0, 1, 0), sections=8), alu))
     if variant == "wood_frame":  # the screws through the frame's corners into the wall
         for i, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"screw_{i}", "screw", S.cylinder(0.004, 0.002, center=(sx * (w / 2 + 0.02), 0.026, zc + sz * (h / 2 + 0.02)),

@@ -104,7 +104,7 @@ def hutch(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("locker", parts=("body", "door"), extra_parts=("handle", "hinge", "shelf", "hook", "vent",
-                                                          "nameplate", "hasp", "glide", "wall_strap"),
+                                                          "nameplate", "hasp", "glide", "wall_strap", "rivet"),
           size_range=(1.2, 2.0), density=400, variants=("single", "two_tier", "bank"), placement="floor",
           groups={"body": ("top_panel", "bottom_panel", "back_panel", "side_panel", "partition", "tier_panel",
                            "plinth")})
@@ -161,6 +161,11 @@ def locker(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
             plate = S.box((0.06, 0.003, 0.025), center=((x0 + x1) / 2, yf + 0.0135, z1 - 0.16))
             parts.append(make_part(f"{name}_nameplate", "nameplate", plate, hmat))
             parts.append(mount(name, f"{name}_nameplate"))
+            # the two rivets through the number plate's ends
+            for j, sx in enumerate((-1, 1)):
+                parts.append(make_part(f"{name}_rivet_{j}", "rivet", S.cylinder(0.0025, 0.001, center=((x0 + x1) / 2 + sx * 0.024, yf + 0.0155, z1 - 0.16),
+                                                                               axis=(0, 1, 0), sections=8), hmat))
+                parts.append(mount(f"{name}_nameplate", f"{name}_rivet_{j}"))
             # the padlock hasp beside the handle: a staple on the frame through a slot in the door
             xh = (x1 - 0.045) if c < cols / 2 else (x0 + 0.045)
             xh += 0.03 if c < cols / 2 else -0.03

@@ -100,7 +100,8 @@ def _felt_feet(w: float, d: float, inset: float, t: float) -> list[Part]:
 
 
 @register("mouse", parts=("body", "button"),
-          extra_parts=("scroll_wheel", "cable", "foot", "side_button", "sensor", "switch", "dpi_button"),
+          extra_parts=("scroll_wheel", "cable", "foot", "side_button", "sensor", "switch", "dpi_button", "battery_cover",
+                       "strain_relief"),
           size_range=(0.08, 0.14), density=500, variants=("wired", "wireless", "ergonomic"),
           placement="surface")
 def mouse(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -136,10 +137,15 @@ def mouse(rng: np.random.Generator, variant: str) -> list[Part]:
         # the power switch underneath, behind the sensor
         out.append(make_part("switch", "switch", S.box((0.006, 0.01, 0.002), center=(0, -L * 0.15, 0.001)),
                              black()))
+        # the battery door in the shell's underside, between the front glide pads
+        out.append(make_part("battery_cover", "battery_cover", S.box((w * 0.3, L * 0.15, 0.001), center=(0, L * 0.14, 0.0025)), mat))
     else:
         out.append(make_part("cable", "cable", S.tube([(0, L / 2 - 0.004, h * 0.3), (0, L / 2 + 0.006, h * 0.15),
                                                        (0.002, L / 2 + 0.009, 0.003)], 0.0018, sections=6),
                              black("rubber")))
+        # the rubber sleeve round the cable where it leaves the shell
+        out.append(make_part("strain_relief", "strain_relief", S.cylinder(0.003, 0.008, center=(0, L / 2, h * 0.3), axis=(0, 1, 0),
+                                                                          sections=8), black("rubber")))
     return out
 
 
@@ -200,6 +206,14 @@ def telephone(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("hook_switch", "hook_switch", S.box((0.012, 0.01, 0.012),
                                                                   center=(-w / 2 + 0.06, 0, h * 0.75 - 0.002)),
                              keycol))
+    # a column of keys at the right edge of the top: an office phone's three line keys, a desk
+    # phone's redial and flash keys, a cordless base's page and speaker keys
+    names = {"office": ("line_key_0", "line_key_1", "line_key_2"), "desk": ("redial_key", "flash_key"),
+             "cordless": ("page_key", "speaker_key")}[variant]
+    for k, name in enumerate(names):
+        y = d * 0.1 - 0.02 * k
+        out.append(make_part(name, "key", S.box((0.012, 0.01, 0.006), center=(w / 2 - 0.009, y, top_z(y) - 0.002),
+                                                R=rot((1, 0, 0), -slope)), keycol))
     out.append(make_part("speaker_grille", "speaker_grille",
                          S.box((0.04, 0.03, 0.003), center=(w * 0.35, d * 0.25, top_z(d * 0.25) - 0.0005),
                                R=rot((1, 0, 0), -slope)), black()))
@@ -287,7 +301,7 @@ def cd_case(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("headphones", parts=("headband", "ear_cup"),
-          extra_parts=("cushion", "cable", "slider", "yoke", "band_pad", "jack"),
+          extra_parts=("cushion", "cable", "slider", "yoke", "band_pad", "jack", "pivot", "button", "port"),
           size_range=(0.15, 0.24), density=500, variants=("over_ear", "on_ear", "studio"),
           placement="surface")
 def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -313,9 +327,27 @@ def headphones(rng: np.random.Generator, variant: str) -> list[Part]:
                              M.metal(rng)))
         fork = [(x + 1.05 * r * np.cos(t), y + 1.05 * r * np.sin(t), 0.012) for t in np.radians([35, 70, 110, 145])]
         out.append(make_part(f"yoke_{k}", "yoke", S.tube(fork, 0.003, sections=6), mat))
+        # the two pivot pins the cup tilts on, where the yoke's arms meet its rim
+        metal = M.solid((0.55, 0.55, 0.57), "metal", 0.35, 0.9)
+        for j, t in enumerate(np.radians([35, 145])):
+            u = np.array([np.cos(t), np.sin(t), 0.0])
+            out.append(make_part(f"pivot_{2 * k + j}", "pivot", S.cylinder(0.0035, 0.004, center=(x + u[0] * (r + 0.001), y + u[1] * (r + 0.001), 0.012),
+                                                                        axis=tuple(u), sections=8), metal))
     # the padded cushion under the top of the band
     top = arc[3:6]
     out.append(make_part("band_pad", "band_pad", S.tube(top - [0, 0.008, 0], 0.007, sections=8), M.leather(rng)))
+    if variant != "studio":
+        # a wireless set: the power and two volume buttons round the right cup's rim, flush with
+        # it, and the charging port below them
+        xr = R * np.cos(0.15 * np.pi)
+        yr = -R * 0.35 + R * np.sin(0.15 * np.pi) * 0.9 - r * 0.7
+        for j, a in enumerate(np.radians([-35, -50, -65])):
+            u = np.array([np.cos(a), np.sin(a), 0.0])
+            out.append(make_part(f"button_{j}", "button", S.cylinder(0.003, 0.0015, center=(xr + u[0] * (r - 0.0003), yr + u[1] * (r - 0.0003),
+                                                                                            cup_h * 0.3), axis=tuple(u), sections=8), black()))
+        out.append(make_part("port", "port", S.box((0.0015, 0.008, 0.003), center=(xr + np.cos(np.radians(-20)) * (r - 0.0012),
+                                                                                   yr + np.sin(np.radians(-20)) * (r - 0.0012), cup_h * 0.3),
+                                                   R=rot((0, 0, 1), np.radians(-20))), black()))
     if variant == "studio":
         # the coiled cable leaves the left cup, ending in its jack plug
         xl = -R * np.cos(0.15 * np.pi)
@@ -570,8 +602,8 @@ def hat(rng: np.random.Generator, variant: str) -> list[Part]:
         out = [make_part("crown", "crown", crown, mat),
                make_part("brim", "brim", S.box((r * 1.6, r * 0.9, 0.004), center=(0, r * 1.1 + r * 0.4, 0.004)), mat),
                make_part("button", "button", S.cylinder(0.008, 0.006, center=(0, 0, r * 0.9 + 0.003)), mat)]
-        # the stitched eyelets on the crown's panels and the adjuster strap at the back
-        for k, a in enumerate(np.radians([45, 135, 225, 315])):
+        # the stitched eyelet in each of the crown's six panels and the adjuster strap at the back
+        for k, a in enumerate(np.radians([0, 60, 120, 180, 240, 300])):
             el = np.array([np.cos(a) * r * 0.55, np.sin(a) * r * 1.1 * 0.55, r * 0.9 * np.sqrt(1 - 0.55 ** 2)])
             n = el / np.array([r, r * 1.1, r * 0.9]) ** 2
             n /= np.linalg.norm(n)
@@ -664,7 +696,12 @@ def dumbbell(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part(f"plate_{k}", "plate", S.cylinder(r, pw, center=(sx * (L / 2 - pw / 2), 0, r),
                                                               axis=(1, 0, 0), sections=sec), body))
         if variant == "adjustable":
-            out.append(make_part(f"collar_{k}", "collar", S.cylinder(0.025, 0.02, center=(sx * (L / 2 - pw - 0.01), 0, r),
+            # two smaller plates inside the big one, then the spin-lock collar clamping them
+            ti = 0.006
+            for j, f in enumerate((0.8, 0.62)):
+                out.append(make_part(f"plate_{2 + 2 * k + j}", "plate", S.cylinder(r * f, ti, center=(sx * (L / 2 - pw - ti * (j + 0.5)), 0, r),
+                                                                                   axis=(1, 0, 0), sections=sec), body))
+            out.append(make_part(f"collar_{k}", "collar", S.cylinder(0.025, 0.018, center=(sx * (L / 2 - pw - 2 * ti - 0.009), 0, r),
                                                                     axis=(1, 0, 0), sections=16), steel))
         else:
             # the steel cap on each head's outer face, stamped with the weight

@@ -128,7 +128,8 @@ def window_blind(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("radiator", parts=("section",), extra_parts=("pipe", "valve", "bracket", "panel", "bleed_valve"), size_range=(0.4, 1.7), density=900,
+@register("radiator", parts=("section",), extra_parts=("pipe", "valve", "bracket", "panel", "bleed_valve", "top_grille", "side_cover"),
+          size_range=(0.4, 1.7), density=900,
           variants=("column", "panel", "towel_rail"), placement="wall")
 def radiator(rng: np.random.Generator, variant: str) -> list[Part]:
     enamel = white(rng)
@@ -139,6 +140,11 @@ def radiator(rng: np.random.Generator, variant: str) -> list[Part]:
                  for i in range(2)]
         fins = [S.box((W - 0.04, 0.02, H - 0.06), center=(0, 0.0625, H / 2 + 0.1))]
         parts.append(make_part("section", "section", fins, enamel))
+        # the slotted grille over the gap between the panels, flush with their tops, and the
+        # cover closing each end of the gap
+        parts.append(make_part("top_grille", "top_grille", S.box((W - 0.008, 0.02, 0.004), center=(0, 0.0625, H + 0.1 - 0.002)), enamel))
+        parts += [make_part(f"side_cover_{k}", "side_cover", S.box((0.004, 0.02, H - 0.004), center=(sx * (W / 2 - 0.002), 0.0625, H / 2 + 0.1 - 0.002)),
+                            enamel) for k, sx in enumerate((-1, 1))]
         z_pipe, x_end = 0.1, W / 2
     elif variant == "towel_rail":
         W, H = rng.uniform(0.45, 0.6), rng.uniform(0.8, 1.5)
@@ -223,8 +229,13 @@ def power_outlet(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                             axis=(0, 1, 0), sections=8), black()))
     if variant == "usb":
         parts.append(make_part("usb_port", "usb_port", S.box((0.014, 0.002, 0.006), center=(0, 0.0085, h * 0.15)), black()))
-    parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h * 0.85), axis=(0, 1, 0), sections=8),
-                           M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)))
+    steel = M.solid((0.8, 0.8, 0.8), "metal", 0.3, 0.9)
+    if n == 1:  # one screw between the sockets' top and the plate's edge
+        parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.002, center=(0, 0.0085, h * 0.85), axis=(0, 1, 0), sections=8), steel))
+    else:  # a double plate is screwed at both ends
+        parts += [make_part("screw" if k == 0 else f"screw_{k}", "screw", S.cylinder(0.003, 0.002, center=(sx * (w / 2 - 0.008), 0.0085, h / 2),
+                                                                                      axis=(0, 1, 0), sections=8), steel)
+                  for k, sx in enumerate((-1, 1))]
     return parts
 
 

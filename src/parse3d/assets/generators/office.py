@@ -20,7 +20,8 @@ from ._kit import DRAWER_TRAVEL, feet4, mount, prismatic, rot
 
 
 @register("projector", parts=("body", "lens"), extra_parts=("foot", "vent", "button", "focus_ring", "zoom_ring", "sensor", "indicator",
-                                                          "port"), size_range=(0.2, 0.45),
+                                                          "port", "lamp_cover", "screw", "lock_slot", "release_button"),
+          size_range=(0.2, 0.45),
           density=600, variants=("compact", "business", "short_throw"), placement="surface")
 def projector(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = {"compact": (rng.uniform(0.2, 0.26), rng.uniform(0.15, 0.2), rng.uniform(0.07, 0.09)),
@@ -56,11 +57,19 @@ def projector(rng: np.random.Generator, variant: str) -> list[Part]:
               for k, c in enumerate(((0.1, 0.8, 0.2), (0.9, 0.5, 0.1)))]
     parts += [make_part(f"port_{k}", "port", S.box((0.016, 0.003, 0.008), center=(-w * 0.25 + 0.03 * k, -d / 2 - 0.0015, fh + h * 0.4)),
                         black()) for k in range(3)]
+    # underneath, flush with the shell: the lamp door and the screw holding it shut; the
+    # security lock slot at the back; the button on the front releasing the tilt foot
+    parts.append(make_part("lamp_cover", "lamp_cover", S.box((w * 0.35, d * 0.35, 0.001), center=(-w * 0.1, 0, fh + 0.0005)), shell))
+    parts.append(make_part("screw", "screw", S.cylinder(0.003, 0.001, center=(-w * 0.1 + w * 0.15, 0, fh + 0.0005), sections=8),
+                           M.solid((0.6, 0.6, 0.62), "metal", 0.4)))
+    parts.append(make_part("lock_slot", "lock_slot", S.box((0.007, 0.002, 0.003), center=(w * 0.4, -d / 2 + 0.0008, fh + h * 0.3)), black()))
+    parts.append(make_part("release_button", "release_button", S.box((0.014, 0.002, 0.008), center=(-w * 0.3, d / 2 - 0.0008, fh + h * 0.2)),
+                           black()))
     return parts
 
 
 @register("projector_screen", parts=("screen",), extra_parts=("case", "bottom_bar", "frame", "pull_handle", "end_cap", "bracket",
-                                                              "corner"),
+                                                              "corner", "spring", "screw"),
           size_range=(1.2, 3.2), density=300, variants=("pull_down", "fixed_frame"), placement="wall")
 def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(1.5, 3.0)
@@ -74,7 +83,21 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
         # the frame's mitred corners are joined by corner brackets on its back; it hangs on two
         # wall brackets along its top
         steel = M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)
-        return [make_part("frame", "frame", frame, M.solid((0.05, 0.05, 0.05), "fabric", 0.95)),
+        # behind the screen, the tension springs round its edge pulling the fabric taut onto the
+        # frame, about every 30 cm
+        springs = []
+        for horizontal in (True, False):
+            span = (w if horizontal else h) - 2 * f
+            n = max(2, int(span / 0.3))
+            for s in np.linspace(-span / 2, span / 2, n + 2)[1:-1]:
+                for side in (-1, 1):
+                    if horizontal:
+                        c, axis = (s, 0.014, h / 2 + side * (h / 2 - f - 0.02)), (0, 0, 1)
+                    else:
+                        c, axis = (side * (w / 2 - f - 0.02), 0.014, h / 2 + s), (1, 0, 0)
+                    springs.append(make_part(f"spring_{len(springs)}", "spring", S.cylinder(0.004, 0.04, center=c, axis=axis, sections=8),
+                                             steel))
+        return [make_part("frame", "frame", frame, M.solid((0.05, 0.05, 0.05), "fabric", 0.95)), *springs,
                 make_part("screen", "screen", S.box((w - 2 * f, 0.004, h - 2 * f), center=(0, 0.03, h / 2)), fabric),
                 *[make_part(f"corner_{k}", "corner", S.box((0.12, 0.004, 0.12), center=(sx * (w / 2 - 0.06), -0.002, z)), steel)
                   for k, (sx, z) in enumerate([(-1, 0.06), (1, 0.06), (-1, h - 0.06), (1, h - 0.06)])],
@@ -89,14 +112,21 @@ def projector_screen(rng: np.random.Generator, variant: str) -> list[Part]:
     for i, s in enumerate((-1, 1)):
         parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.02, 0.1, 0.1), center=(s * (w / 2 + 0.05), 0.05, zc)), black()))
     parts.append(make_part("pull_handle", "pull_handle", S.box((0.04, 0.02, 0.06), center=(0, 0.05, zc - case_r - h - 0.06)), black()))
-    # the case hangs on a bracket at each end
-    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.05, 0.02, 0.12), center=(s * (w / 2 - 0.05), -0.01, zc)),
-                        M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)) for k, s in enumerate((-1, 1))]
+    # the case hangs on a bracket at each end, each screwed to the wall above and below the case;
+    # a plastic cap closes each end of the bottom bar
+    steel = M.solid((0.5, 0.5, 0.52), "metal", 0.4, 0.8)
+    parts += [make_part(f"bracket_{k}", "bracket", S.box((0.05, 0.02, 0.12), center=(s * (w / 2 - 0.05), -0.01, zc)), steel)
+              for k, s in enumerate((-1, 1))]
+    parts += [make_part(f"screw_{2 * k + j}", "screw", S.cylinder(0.004, 0.002, center=(s * (w / 2 - 0.05), 0.001, zc + sz * 0.0525), axis=(0, 1, 0),
+                                                                  sections=8), steel)
+              for k, s in enumerate((-1, 1)) for j, sz in enumerate((-1, 1))]
+    parts += [make_part(f"end_cap_{2 + k}", "end_cap", S.box((0.006, 0.022, 0.032), center=(s * (w / 2 + 0.013), 0.05, zc - case_r - h - 0.015)),
+                        black()) for k, s in enumerate((-1, 1))]
     return parts
 
 
 @register("conference_phone", parts=("body",), extra_parts=("display", "key", "speaker_grille", "microphone", "status_light",
-                                                             "foot"),
+                                                             "foot", "mute_button"),
           size_range=(0.18, 0.4), density=700, variants=("triangle", "round"), placement="surface")
 def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
     s, h = rng.uniform(0.2, 0.34), rng.uniform(0.035, 0.05)
@@ -127,6 +157,12 @@ def conference_phone(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                                sections=8), M.solid((0.2, 0.8, 0.3), "glass", 0.1)))
         parts.append(make_part(f"foot_{i}", "foot", S.cylinder(0.008, 0.002, center=(x, y, 0.001), sections=8),
                                M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
+        # the mute button by each microphone (inward of it on a triangle, beside it on a round one)
+        u = np.array([x, y]) / np.hypot(x, y)
+        c = np.array([x, y]) * 0.8 if variant == "triangle" else np.array([x, y]) + 0.015 * np.array([-u[1], u[0]])
+        parts.append(make_part(f"mute_button_{i}", "mute_button", S.box((0.012, 0.008, 0.003), center=(c[0], c[1], h),
+                                                                         R=rot((0, 0, 1), float(np.arctan2(u[1], u[0])) + np.pi / 2)),
+                               M.solid((0.75, 0.1, 0.1), "plastic", 0.4)))
     return parts
 
 
@@ -263,11 +299,15 @@ def _file_drawer(name: str, *, x0: float, x1: float, z0: float, z1: float, y_fro
         mount(f"{name}_box", name), mount(name, f"{name}_handle"), mount(name, f"{name}_label"),
         mount(f"{name}_label", f"{name}_label_card"), mount(f"{name}_box", f"{name}_rail_0"), mount(f"{name}_box", f"{name}_rail_1"),
     ]
+    if bh > 0.15:  # a file drawer's follower: the plate near the back that keeps the files upright
+        out += [make_part(f"{name}_follower", "follower", S.box((bw - 2 * t - 0.004, 0.003, bh * 0.6),
+                                                                  center=(cx, yb - depth + t + 0.06, z0 + 0.01 + t + bh * 0.3)), M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)),
+                mount(f"{name}_box", f"{name}_follower")]
     return out
 
 
 @register("filing_cabinet", parts=("body", "drawer"), extra_parts=("drawer_box", "handle", "label_holder", "top_panel",
-                                                                    "caster", "label_card", "slide_rail", "lock", "glide"),
+                                                                    "caster", "label_card", "slide_rail", "lock", "glide", "follower"),
           size_range=(0.45, 1.45), density=400, variants=("vertical", "lateral", "mobile_pedestal"))
 def filing_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     if variant == "vertical":

@@ -127,7 +127,8 @@ def _vessel_drain(variant: str, h: float, zb: float, half_in: float | None, prof
 
 
 @register("pedestal_sink", parts=("basin", "pedestal"), extra_parts=("bowl", "deck", "base", "spout", "handle", "body", "overflow",
-                                                                 "collar", "aerator", "indicator", "lift_rod"),
+                                                                 "collar", "aerator", "indicator", "lift_rod", "drain", "bolt_cap",
+                                                                 "foot"),
           groups={"basin": ("bowl", "deck")},
           size_range=(0.85, 1.05), density=1400, variants=("round", "square", "console"))
 def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -141,9 +142,14 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "console":  # a basin slab on two front legs
         parts += legs4("pedestal", "pedestal", w=w * 0.9, d=d * 0.8, h=zb, size=0.035, mat=chrome, round_=True)[2:]
         parts.append(make_part("base", "base", S.box((w * 0.9, 0.02, 0.02), center=(0, d * 0.4 - 0.0175, 0.15)), chrome))
+        # the levelling foot sleeving each leg's end
+        parts += leg_caps(parts, label="foot", legs=("pedestal",), mat=chrome, height=0.03)
     else:
         parts.append(make_part("base", "base", S.box((0.24, 0.22, 0.04), center=(0, -d * 0.1, 0.02), bevel=0.01), porcelain))
         parts.append(make_part("pedestal", "pedestal", S.frustum(0.09, 0.12, zb - 0.04, center=(0, -d * 0.1, 0.04), sections=20), porcelain))
+        # the caps over the two floor bolts at the base's front corners
+        parts += [make_part(f"bolt_cap_{k}", "bolt_cap", S.cylinder(0.008, 0.006, center=(sx * 0.1, -d * 0.1 + 0.09, 0.043), sections=10),
+                            porcelain) for k, sx in enumerate((-1, 1))]
     # the basin: a bowl in front, the flat deck behind it where the faucet stands
     dd = 0.12
     parts.append(make_part("deck", "deck", S.box((w, dd, hb), center=(0, -d / 2 + dd / 2, zb + hb / 2), bevel=0.01), porcelain))
@@ -159,13 +165,15 @@ def pedestal_sink(rng: np.random.Generator, variant: str) -> list[Part]:
         T[2, 3] = zb
         parts.append(make_part("bowl", "bowl", S.transformed(bowl, T), porcelain))
     parts.append(make_part("overflow", "overflow", S.box((0.03, 0.004, 0.012), center=(0, -d / 2 + dd + 0.002, zb + hb - 0.04)), chrome))
+    # the drain's chrome flange in the bowl's floor, half a millimetre proud of it
+    parts.append(make_part("drain", "drain", S.cylinder(0.02, 0.003, center=(0, -d / 2 + dd + (d - dd) / 2, zb + 0.029), sections=12), chrome))
     parts += _faucet("faucet_", 0.0, -d / 2 + dd / 2 + 0.005, H, reach=dd * 0.8, h=0.1, mat=chrome, style="single_lever")
     return parts
 
 
 @register("utility_sink", parts=("basin", "rim"), extra_parts=("leg", "faucet", "spout", "handle", "base", "body", "drain",
                                                                "backsplash", "stretcher", "collar", "aerator", "indicator",
-                                                               "leg_cap", "spray_head", "button"),
+                                                               "leg_cap", "spray_head", "button", "trap"),
           size_range=(0.85, 1.2), density=600, variants=("legs", "cabinet", "double"))
 def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
     tub = M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "plastic", 0.5) if rng.random() < 0.6 else \
@@ -191,6 +199,11 @@ def utility_sink(rng: np.random.Generator, variant: str) -> list[Part]:
                                tub))
         parts.append(make_part("drain" if n == 1 else f"drain_{k}", "drain",
                                S.cylinder(0.025, 0.003, center=(-w / 2 + bw * (k + 0.5), 0.05, zb + 0.0165), sections=12), chrome))
+        if variant != "cabinet":  # the waste pipe's trap under the drain, back into the wall
+            xk = -w / 2 + bw * (k + 0.5)
+            parts.append(make_part("trap" if n == 1 else f"trap_{k}", "trap",
+                                   S.tube([(xk, 0.05, zb + 0.005), (xk, 0.05, zb - 0.18), (xk, -0.02, zb - 0.18), (xk, -0.02, zb - 0.1),
+                                           (xk, -d / 2, zb - 0.1)], 0.019, sections=10), M.solid((0.9, 0.9, 0.88), "plastic", 0.5)))
     # the rim: a narrow lip at the front and sides, a deck at the back (soap stands on it)
     rim = [S.box((w, 0.03, 0.015), center=(0, d / 2 - 0.015, H + 0.0075)), S.box((w, 0.12, 0.015), center=(0, -d / 2 + 0.06, H + 0.0075))]
     rim += [S.box((0.03, d - 0.06, 0.015), center=(sx * (w / 2 - 0.015), 0, H + 0.0075)) for sx in (-1, 1)]

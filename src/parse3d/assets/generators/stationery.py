@@ -212,7 +212,7 @@ def _x_along(center) -> np.ndarray:
     return T
 
 
-@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial", "horizon", "post"),
+@register("globe", parts=("sphere", "base"), extra_parts=("meridian", "stand", "leg", "axle", "finial", "horizon", "post", "pad", "hour_circle"),
           size_range=(0.2, 1.1), density=250, variants=("desk", "floor", "cradle"), placement="surface")
 def globe(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -248,6 +248,10 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("stand", "stand", ring([(R * 0.62, 0.03), (R * 0.7, 0.03), (R * 0.7, zc - R * 0.6),
                                                        (R * 0.62, zc - R * 0.6)]), brass))
         parts.append(make_part("sphere", "sphere", S.ellipsoid((R, R, R), center=(0, 0, zc), subdivisions=2), sea))
+        # three felt pads let into the ring's underside
+        parts += [make_part(f"pad_{k}", "pad", S.cylinder(R * 0.06, 0.0015, center=(R * 0.675 * np.cos(a), R * 0.675 * np.sin(a), 0.00075),
+                                                          sections=10), M.solid((0.2, 0.2, 0.2), "fabric", 0.95))
+                  for k, a in enumerate(np.pi / 2 + 2 * np.pi * np.arange(3) / 3)]
         return parts
     else:
         zc = R + rng.uniform(0.12, 0.16)
@@ -255,6 +259,9 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
                                                        sections=24), wood))
         parts.append(make_part("stand", "stand", S.cylinder(0.012, zc - R - 0.045 - 0.01, center=(0, 0, 0.045 + (zc - R - 0.055) / 2),
                                                             sections=12), wood))
+        # the felt pad let into the base's underside
+        parts.append(make_part("pad", "pad", S.cylinder(R * 0.55, 0.0015, center=(0, 0, 0.00075), sections=20),
+                               M.solid((0.2, 0.2, 0.2), "fabric", 0.95)))
     # the meridian: a half ring around the sphere in the x-z plane tilted about y, with axle pins
     rm = R + 0.012
     Rm = rot((0, 1, 0), tilt) @ rot((1, 0, 0), np.pi / 2)
@@ -269,13 +276,16 @@ def globe(rng: np.random.Generator, variant: str) -> list[Part]:
     for k, s in enumerate((-1, 1)):
         c = np.array([0, 0, zc]) + s * ax * (R + 0.006)
         parts.append(make_part(f"axle_{k}", "axle", S.cylinder(0.004, 0.014, center=tuple(c), axis=tuple(ax), sections=8), brass))
+    # the hour circle, the small dial round the axle at the north pole
+    c = np.array([0, 0, zc]) + ax * (R + 0.003)
+    parts.append(make_part("hour_circle", "hour_circle", S.cylinder(0.02, 0.002, center=tuple(c), axis=tuple(ax), sections=16), brass))
     top = np.array([0, 0, zc]) + ax * (rm + 0.012)
     parts.append(make_part("finial", "finial", S.ellipsoid((0.008, 0.008, 0.008), center=tuple(top), subdivisions=1), brass))
     return parts
 
 
 @register("binder", parts=("front_cover", "back_cover", "spine"),
-          extra_parts=("ring", "mechanism", "pages", "label", "finger_hole", "lever"),
+          extra_parts=("ring", "mechanism", "pages", "label", "finger_hole", "lever", "rivet"),
           groups={"cover": ("front_cover", "back_cover")},
           size_range=(0.24, 0.34), density=450, variants=("ring", "slim", "lever_arch"), placement="surface")
 def binder(rng: np.random.Generator, variant: str) -> list:
@@ -295,6 +305,9 @@ def _binder_lying(rng: np.random.Generator, variant: str) -> list:
     # the ring mechanism on the back cover near the spine, the rings through the punched pages
     xm = -w / 2 + 0.03
     parts.append(make_part("mechanism", "mechanism", S.box((0.03, d * 0.7, 0.004), center=(xm, 0, tc + 0.002)), metal))
+    # the two rivets fixing it through the back cover, their heads on its plate
+    parts += [make_part(f"rivet_{k}", "rivet", S.cylinder(0.003, 0.0015, center=(xm, sy * d * 0.3, tc + 0.004 + 0.00075), sections=8), metal)
+              for k, sy in enumerate((-1, 1))]
     n = 2 if variant != "ring" else 3
     rr = min(T / 2 - tc - 0.002, 0.03)
     Tr = np.eye(4)

@@ -20,6 +20,7 @@ from ._casework import black, door_parts, drawer_parts, glass_pane, shelf_height
 from ._dB_case import cams as _cams
 from ._dB_case import glides as _glides
 from ._dB_case import wall_strap as _wall_strap
+from ._kit import mount
 from ._rods import leg_caps
 
 
@@ -128,7 +129,8 @@ def bookcase(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
 
 
 @register("storage_cabinet", parts=("body", "door", "shelf"),
-          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin", "glide", "cam_lock", "wall_strap"),
+          extra_parts=("handle", "drawer", "glass", "hinge", "drawer_box", "shelf_pin", "glide", "cam_lock", "wall_strap", "catch",
+                       "strike_plate"),
           size_range=(0.7, 2.1), density=550, variants=("two_door", "single_door", "drawer_top"))
 def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     w = rng.uniform(0.45, 0.6) if variant == "single_door" else rng.uniform(0.7, 1.2)
@@ -152,6 +154,16 @@ def storage_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint
     n_door = 1 if variant == "single_door" else 2
     parts += _door_row("door", w=w, z0=plinth, z1=z_door_top, y_back=d / 2, n=n_door, mat=mat, hmat=hmat,
                        style="shaker" if rng.random() < 0.5 else "flat")
+    # a magnetic catch under the top at each door's free edge, and the steel strike plate on the
+    # door's back that it holds shut
+    z_in = z_door_top - t
+    for i in range(n_door):
+        x0, x1 = -w / 2 + i * w / n_door + 0.003, -w / 2 + (i + 1) * w / n_door - 0.003
+        xf = x1 - 0.04 if (i < n_door / 2 if n_door > 1 else True) else x0 + 0.04
+        parts.append(make_part(f"catch_{i}", "catch", S.box((0.03, 0.02, 0.012), center=(xf, d / 2 - 0.012, z_in - 0.006)), black()))
+        parts.append(make_part(f"door_{i}_strike_plate", "strike_plate", S.box((0.02, 0.002, 0.01), center=(xf, d / 2 - 0.001, z_in - 0.006)),
+                               M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
+        parts.append(mount(f"door_{i}", f"door_{i}_strike_plate"))
     inner = z_door_top - t - (plinth + t)
     n = int(np.clip(np.floor(inner / 0.32), 1, 5))
     levels = plinth + t + shelf_heights(0.0, inner, n + 1)[1:] + t

@@ -72,6 +72,9 @@ def deodorant(rng: np.random.Generator, variant: str) -> list[Part]:
         base = base.moved((0, 0, 0.005))
         cap = cap.moved((0, 0, 0.005))
         r_label, zl = None, None
+        # the printed label wrapped round the oval case
+        parts.append(make_part("label", "label", ring([(0.97, 0.005 + h * 0.2), (1.0, 0.005 + h * 0.2), (1.0, 0.005 + h * 0.7),
+                                                       (0.97, 0.005 + h * 0.7)], sections=20).apply(s), M.paper(rng)))
     else:
         r = rng.uniform(0.022, 0.027)
         h = rng.uniform(0.11, 0.15) if variant == "spray" else rng.uniform(0.07, 0.09)
