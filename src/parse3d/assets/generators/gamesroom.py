@@ -15,6 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._dF_slots import slots
 from ._kit import feet4, rot
 from ._rods import rod, segments
 
@@ -167,6 +168,9 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("light", "light", S.box((0.01, 0.002, 0.003), center=(w / 2 - 0.02, d / 2 + 0.001, 0.02)), light))
         parts.append(make_part("port", "port", S.box((0.012, 0.002, 0.005), center=(-w / 2 + 0.025, d / 2 + 0.001, 0.03)),
                                black))
+        # the dock's vent slots in its back
+        parts += slots("vent", "vent", n=4, x0=-w * 0.3, x1=w * 0.3, z0=h * 0.3, z1=h * 0.65, y=-d / 2 - 0.001, thick=0.002,
+                       mat=black)
         # each controller's thumbstick and face button on its front
         zc = h * 0.8 + 0.012 + 0.051
         yc = d * 0.1 + 0.007
@@ -195,7 +199,9 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                   center=(w / 2 - 0.03 - 0.02 * k, d / 2 + 0.0015, zf + h * 0.6)),
                                    black))
         parts.append(make_part("light", "light", S.box((w * 0.8, 0.002, 0.002), center=(0, d / 2 + 0.001, zf + h * 0.25)), light))
-        parts.append(make_part("vent", "vent", S.box((w * 0.6, 0.002, h * 0.5), center=(0, -d / 2 - 0.001, zf + h / 2)), black))
+        # the exhaust grille across the back, six slots
+        parts += slots("vent", "vent", n=6, x0=-w * 0.3, x1=w * 0.3, z0=zf + h / 4, z1=zf + 3 * h / 4, y=-d / 2 - 0.001, thick=0.002,
+                       mat=black)
         _back_sockets(parts, x0=w / 2 - 0.03, y=-d / 2 - 0.001, z=zf + 0.0075, mat=black, start=2)
         for k in range(2):
             parts.append(make_part(f"port_{k}", "port", S.box((0.014, 0.002, 0.006),
@@ -207,7 +213,9 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
     zs = 0.012
     parts.append(make_part("stand", "stand", S.box((ww + 0.04, d * 0.6, zs), center=(0, 0, zs / 2), bevel=0.003), black))
     parts.append(make_part("body", "body", [S.box((ww, d, hh), center=(0, 0, zs + hh / 2), bevel=0.008)], shell))
-    parts.append(make_part("vent", "vent", S.box((ww * 0.7, 0.002, hh * 0.7), center=(0, -d / 2 - 0.001, zs + hh / 2)), black))
+    # the exhaust grille on the back, eight slots
+    parts += slots("vent", "vent", n=8, x0=-ww * 0.35, x1=ww * 0.35, z0=zs + hh * 0.15, z1=zs + hh * 0.85, y=-d / 2 - 0.001,
+                   thick=0.002, mat=black)
     parts.append(make_part("disc_slot", "disc_slot", S.box((0.004, 0.002, 0.13), center=(ww * 0.2, d / 2 + 0.001, zs + hh * 0.55)),
                            black))
     for k in range(2):

@@ -336,7 +336,8 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("microphone_stand", parts=("pole", "microphone"), extra_parts=("leg", "base", "boom", "clip", "clutch", "foot", "hub",
-                                                                       "counterweight", "boom_clutch", "cable"),
+                                                                       "counterweight", "boom_clutch", "cable", "knob",
+                                                                       "connector"),
           size_range=(1.0, 1.9), density=900, variants=("tripod_boom", "round_base", "tripod_straight"))
 def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.0, 1.45)
@@ -370,6 +371,14 @@ def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     body = S.union([S.cylinder(0.02, 0.12, center=head + (0, 0.07, 0.0), axis=(0, 1, 0), sections=12),
                     S.ellipsoid((0.026, 0.028, 0.026), center=head + (0, 0.14, 0.0), subdivisions=2)])
     parts.append(make_part("microphone", "microphone", body, mic))
+    # the thumbscrew on the clip's side that sets its angle, and the connector on the cable's
+    # end, plugged into the microphone's tail inside the clip
+    parts.append(make_part("knob", "knob", S.cylinder(0.01, 0.012, center=head - (-0.021, 0.015, 0.0), axis=(1, 0, 0), sections=10),
+                           steel))
+    cdir = np.array([0.02, -0.025, -0.068])
+    parts.append(make_part("connector", "connector", S.cylinder(0.009, 0.028, center=head + (0.008, -0.005, -0.039),
+                                                                axis=tuple(cdir / np.linalg.norm(cdir)), sections=10),
+                           M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     # the cable plugged into the microphone's tail, running down beside the clip
     parts.append(make_part("cable", "cable", S.tube([head + (0, 0.005, -0.012), head + (0.02, -0.02, -0.08), head + (0.03, -0.03, -0.2)],
                                                     0.003, sections=6), M.solid((0.03, 0.03, 0.03), "rubber", 0.8)))
