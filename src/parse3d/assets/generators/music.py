@@ -289,7 +289,7 @@ def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("keyboard_stand", parts=("arm", "leg"), extra_parts=("foot", "knob", "rail", "end_cap"), size_range=(0.6, 1.2),
+@register("keyboard_stand", parts=("arm", "leg"), extra_parts=("foot", "knob", "rail", "end_cap", "bolt"), size_range=(0.6, 1.2),
           density=700, variants=("x_frame", "table", "z_frame"))
 def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     w, h = rng.uniform(0.7, 1.0), rng.uniform(0.62, 0.9)
@@ -310,6 +310,8 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"foot_{i}", "foot", S.box((0.04, d * 0.9, 0.025), center=(x, 0, 0.0125), bevel=0.005),
                                    rubber))
         arm_x = (-w * 0.32, w * 0.32)
+        # the bolts pinning each leg's lower end in its foot, heads on the legs' outer faces
+        bolts = [((sx * (w / 2 - r), sy * (0.04 + r + 0.001), r + 0.002), (0, 1, 0)) for sx in (-1, 1) for sy in (-1, 1)]
     elif variant == "z_frame":
         for i, x in enumerate((-w / 2 + 0.03, w / 2 - 0.03)):
             parts.append(make_part(f"leg_{i}", "leg", S.tube([(x, d / 2 - 0.03, 0.02), (x, -d / 2 + 0.03, h * 0.5),
@@ -319,6 +321,8 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("rail", "rail", S.tube([(-w / 2 + 0.03, -d / 2 + 0.03, h * 0.5),
                                                        (w / 2 - 0.03, -d / 2 + 0.03, h * 0.5)], 0.012), steel))
         arm_x = (-w / 2 + 0.03, w / 2 - 0.03)
+        # the bolt through each foot into its leg, its head flush with the foot's outer face
+        bolts = [((sx * (w / 2 - 0.005 - 0.0005), d / 2 - 0.03, 0.0125), (1, 0, 0)) for sx in (-1, 1)]
     else:
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"leg_{i}", "leg", S.box((0.03, 0.03, h - 0.03),
@@ -327,6 +331,13 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, y in enumerate((-d / 2 + 0.02, d / 2 - 0.02)):
             parts.append(make_part(f"rail_{i}", "rail", S.box((w - 0.07, 0.025, 0.025), center=(0, y, 0.15)), steel))
         arm_x = (-w / 2 + 0.02, w / 2 - 0.02)
+        # the bolts through each leg: into the arm above (outer face, just under it) and into
+        # the low rail (front or back face)
+        bolts = [((sx * (w / 2 - 0.004), sy * (d / 2 - 0.02), h - 0.045), (1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)]
+        bolts += [((sx * (w / 2 - 0.02), sy * (d / 2 - 0.004), 0.15), (0, 1, 0)) for sx in (-1, 1) for sy in (-1, 1)]
+    for k, (c, ax) in enumerate(bolts):
+        parts.append(make_part(f"bolt_{k}", "bolt", S.cylinder(0.007, 0.002, center=c, axis=ax, sections=8),
+                               M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
     for i, x in enumerate(arm_x):
         parts.append(make_part(f"arm_{i}", "arm", S.box((0.035, d, 0.03), center=(x, 0, h - 0.015), bevel=0.003), steel))
         # the caps closing the arm tube's ends
