@@ -371,6 +371,9 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
         path = _sign_stroke(_SHAPES[name], h / 2, s, yt)
         parts.append(make_part("tube_0", "tube", segments(path, rt), glow))
         holds = [path[i] for i in np.linspace(0, len(path) - 1, 4).astype(int)[:3]]
+        # two more clips half way between those, so the long tube is held every few bends
+        holds += [tuple((np.asarray(path[i]) + np.asarray(path[i + 1])) / 2)
+                  for i in np.linspace(0, len(path) - 1, 4).astype(int)[1:3]]
     else:  # a word: letters as zigzag strokes side by side
         n = int(rng.integers(3, 7))
         lw, lh = rng.uniform(0.08, 0.12), rng.uniform(0.14, 0.2)
@@ -384,6 +387,8 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
                       (xa + lw, yt, 0.05)]
             parts.append(make_part(f"tube_{k}", "tube", segments(stroke, rt), glow))
             holds.append((xa, yt, 0.05 + lh * 0.5))
+        # and a second clip on each letter's last stroke: every letter is held at both sides
+        holds += [(x0 + k * lw * 1.25 + lw, yt, 0.05 + lh * 0.5) for k in range(n)]
     parts.append(make_part("backplate", "backplate", S.box((w, t, h), center=(0, t / 2, h / 2)), acrylic))
     # the clear clips holding the tubes off the plate
     for k, (x, _, z) in enumerate(holds):

@@ -14,6 +14,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._dF_slots import slots
 from ._household import ring
 from ._kit import feet4, rot
 
@@ -240,7 +241,7 @@ def violin(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("amplifier", parts=("cabinet", "grille"), extra_parts=("knob", "handle", "control_panel", "foot", "head", "jack", "switch",
-                                                                 "light"),
+                                                                 "light", "vent", "power_inlet"),
           size_range=(0.3, 1.4), density=350, variants=("combo", "stack", "practice"))
 def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
     tolex = M.solid(M.jitter(rng, [(0.08, 0.08, 0.08), (0.85, 0.8, 0.7), (0.5, 0.1, 0.1)][int(rng.integers(3))], 0.02),
@@ -283,6 +284,13 @@ def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.05, 0.05, 0.05), "plastic")))
     parts.append(make_part("light", "light", S.cylinder(0.006, 0.008, center=(w / 2 - 0.018, yp + 0.008, zp), axis=(0, 1, 0),
                                                         sections=10), M.solid((0.8, 0.1, 0.1), "glass", 0.1)))
+    # on the back: the vent slots over the valves or the power stage, and the mains inlet below them
+    yb = -(hd if variant == "stack" else d) / 2 - 0.001
+    zv = zp if variant == "stack" else fh + h * 0.8
+    parts += slots("vent", "vent", n=4, x0=-w * 0.3, x1=w * 0.3, z0=zv - 0.04, z1=zv + 0.04, y=yb, thick=0.002,
+                   mat=M.solid((0.05, 0.05, 0.05), "plastic"))
+    parts.append(make_part("power_inlet", "power_inlet", S.box((0.028, 0.003, 0.022), center=(w * 0.35, yb - 0.0005, zv - 0.06)),
+                           M.solid((0.05, 0.05, 0.05), "plastic")))
     hl = min(0.25, w * 0.4)
     parts.append(make_part("handle", "handle", S.tube([(-hl / 2, 0, zt - 0.002), (-hl / 2, 0, zt + 0.02),
                                                        (hl / 2, 0, zt + 0.02), (hl / 2, 0, zt - 0.002)], 0.008), tolex))
