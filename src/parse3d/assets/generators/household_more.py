@@ -300,7 +300,7 @@ def dish_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("storage_bin", parts=("body",), extra_parts=("lid", "handle", "label", "wheel", "latch", "rim", "foot"),
+@register("storage_bin", parts=("body",), extra_parts=("lid", "handle", "label", "wheel", "latch", "rim", "foot", "rib"),
           size_range=(0.3, 0.8), density=400, variants=("lidded", "open", "wheeled"),
           placement="floor")
 def storage_bin(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -318,6 +318,9 @@ def storage_bin(rng: np.random.Generator, variant: str) -> list[Part]:
     rim = [S.box((w + 0.01, 0.005, 0.012), center=(0, sy * (d / 2 + 0.0025), wh + h - 0.006)) for sy in (-1, 1)]
     rim += [S.box((0.005, d, 0.012), center=(sx * (w / 2 + 0.0025), 0, wh + h - 0.006)) for sx in (-1, 1)]
     out.append(make_part("rim", "rim", rim, mat))
+    # the moulded ribs stiffening the long walls outside, two on each, under the rim's overhang
+    out += [make_part(f"rib_{k}", "rib", S.box((0.012, 0.004, h * 0.8), center=(sx * w / 4, sy * (d / 2 + 0.002), wh + h * 0.5 - 0.006)),
+                      mat) for k, (sy, sx) in enumerate((sy, sx) for sy in (-1, 1) for sx in (-1, 1))]
     if variant == "lidded":
         out.append(make_part("lid", "lid", S.box((w + 0.01, d + 0.01, 0.02), center=(0, 0, wh + h + 0.01), bevel=0.004), mat))
         # a latch clipping the lid down at each end
@@ -395,7 +398,7 @@ def room_divider(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("cart", parts=("shelf", "post"), extra_parts=("caster", "handle", "rail"),
+@register("cart", parts=("shelf", "post"), extra_parts=("caster", "handle", "rail", "bolt"),
           size_range=(0.6, 1.25), density=400, variants=("utility", "rolling_kitchen", "service"))
 def cart(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.6, 1.0), rng.uniform(0.38, 0.55), rng.uniform(0.75, 0.95)
@@ -415,6 +418,11 @@ def cart(rng: np.random.Generator, variant: str) -> list[Part]:
                                                 axis=(1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)], black("rubber"))
     out += each("caster_fork", "caster", [S.box((0.04, 0.04, 0.02), center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), ch - 0.01))
                                           for sx in (-1, 1) for sy in (-1, 1)], M.metal(rng))
+    # the bolt through each post into the socket under each shelf's corner, its head on the post's outer face
+    zs = [ch + 0.03 + (h - ch - 0.06) * k / (n - 1) for k in range(n)]
+    out += [make_part(f"bolt_{k}", "bolt", S.cylinder(0.006, 0.002, center=(sx * (w / 2 - 0.004), sy * (d / 2 - 0.02), z - 0.02), axis=(1, 0, 0),
+                                                      sections=8), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8))
+            for k, (z, sx, sy) in enumerate((z, sx, sy) for z in zs for sx in (-1, 1) for sy in (-1, 1))]
     out.append(make_part("handle", "handle", S.tube([(-w / 2 - 0.005, -d * 0.35, h - 0.05), (-w / 2 - 0.08, -d * 0.35, h),
                                                      (-w / 2 - 0.08, d * 0.35, h), (-w / 2 - 0.005, d * 0.35, h - 0.05)], 0.012), black()))
     return out
