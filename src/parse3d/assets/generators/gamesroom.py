@@ -138,8 +138,9 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "wall_shelf":  # a small shelf at the top for the balls and chalk
         parts.append(make_part("shelf", "shelf", S.box((w, 0.1, 0.02), center=(0, t + 0.05, h - 0.06)), wood))
         parts.append(make_part("shelf_lip", "lip", S.box((w, 0.012, 0.03), center=(0, t + 0.094, h - 0.035)), wood))
-    for k, x in enumerate((-w / 2 + 0.015, w / 2 - 0.015)):
-        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(x, t + 0.0015, h - 0.03), axis=(0, 1, 0),
+    # the screws fixing the back panel to the wall: two at its top, two just above the rest
+    for k, (x, z) in enumerate(((-w / 2 + 0.015, h - 0.03), (w / 2 - 0.015, h - 0.03), (-w / 2 + 0.015, 0.06), (w / 2 - 0.015, 0.06))):
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(x, t + 0.0015, z), axis=(0, 1, 0),
                                                                  sections=8), brass))
     return parts
 

@@ -117,7 +117,8 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("hanging_scroll", parts=("paper", "roller"), extra_parts=("border", "top_rod", "knob", "cord", "futai", "seal", "eye"),
+@register("hanging_scroll", parts=("paper", "roller"), extra_parts=("border", "top_rod", "knob", "cord", "futai", "seal", "eye",
+                                                                   "ichimonji", "tie"),
           size_range=(0.6, 2.2), density=300, variants=("vertical", "wide", "narrow"), placement="wall")
 def hanging_scroll(rng: np.random.Generator, variant: str) -> list[Part]:
     w = {"vertical": rng.uniform(0.4, 0.6), "wide": rng.uniform(0.8, 1.3), "narrow": rng.uniform(0.25, 0.35)}[variant]
@@ -156,4 +157,13 @@ def hanging_scroll(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.75, 0.1, 0.08), "paper", 0.8)))
     parts += [make_part(f"eye_{k}", "eye", S.cylinder(0.004, 0.006, center=(sx * w * 0.3, t + 0.004, zt + 0.001), sections=8),
                         M.solid((0.8, 0.65, 0.3), "metal", 0.3, 0.9)) for k, sx in enumerate((-1, 1))]
+    # the narrow brocade strips (ichimonji) across the paper's top and bottom edges, and the flat
+    # tie cord that wraps the rolled scroll, hanging from the top rod's middle
+    pw, ph = w - 2 * b, h - bt - bb
+    brocade = M.solid((0.8, 0.68, 0.35), "fabric", 0.7)
+    parts += [make_part(f"ichimonji_{k}", "ichimonji", S.box((pw, 0.0006, min(0.02, ph * 0.04)),
+                                                             center=(0, t + 0.0003, z0 + bb + zc)), brocade)
+              for k, zc in enumerate((ph - min(0.01, ph * 0.02), min(0.01, ph * 0.02)))]
+    parts.append(make_part("tie", "tie", S.box((0.008, 0.0008, bt * 0.6), center=(0, t + 0.0004, zt - 0.012 - bt * 0.3)),
+                           M.solid((0.6, 0.5, 0.3), "fabric", 0.9)))
     return parts
