@@ -30,7 +30,7 @@ def _lid_box(w: float, d: float, h: float, t: float, z0: float) -> list[S.Shape]
 
 @register("record_player", parts=("base", "platter", "tonearm"),
           extra_parts=("dust_cover", "spindle", "headshell", "counterweight", "knob", "button", "foot",
-                       "hinge", "handle", "arm_rest", "lever"),
+                       "hinge", "handle", "lever"),
           size_range=(0.3, 0.52), density=450, variants=("hifi", "open", "suitcase"), placement="surface")
 def record_player(rng: np.random.Generator, variant: str) -> list:
     w, d = rng.uniform(0.40, 0.46), rng.uniform(0.33, 0.37)
@@ -64,9 +64,7 @@ def record_player(rng: np.random.Generator, variant: str) -> list:
                                                                                      zt + 0.033)), black))
     parts.append(make_part("counterweight", "counterweight", S.cylinder(0.013, 0.025, center=(ax, ay - 0.035, zt + 0.035),
                                                                         axis=(0, 1, 0), sections=12), alu))
-    # the post the arm lies on at rest, and the cueing lever in front of the arm's pivot
-    parts.append(make_part("arm_rest", "arm_rest", S.cylinder(0.004, 0.031, center=(tip[0], tip[1] - 0.03, zt + 0.0155), sections=8),
-                           black))
+    # the cueing lever in front of the arm's pivot, lower than the platter's top
     parts.append(make_part("lever", "lever", S.box((0.006, 0.02, 0.016), center=(ax - 0.012, ay + 0.035, zt + 0.008), bevel=0.001),
                            alu))
     parts.append(make_part("knob", "knob", S.cylinder(0.012, 0.012, center=(w / 2 - 0.035, d / 2 - 0.04, zt + 0.006),
