@@ -27,7 +27,7 @@ def _outline(variant: str, L: float, W: float) -> np.ndarray:
 
 
 @register("violin_case", parts=("shell", "lid"),
-          extra_parts=("handle", "latch", "hinge", "foot", "strap_ring", "lock", "name_tag", "trim"),
+          extra_parts=("handle", "latch", "hinge", "foot", "strap_ring", "lock", "name_tag", "trim", "handle_mount"),
           size_range=(0.6, 0.9), density=350, variants=("oblong", "shaped", "viola"), placement="floor")
 def violin_case(rng: np.random.Generator, variant: str) -> list:
     L = rng.uniform(0.76, 0.8) if variant != "viola" else rng.uniform(0.8, 0.86)
@@ -50,6 +50,9 @@ def violin_case(rng: np.random.Generator, variant: str) -> list:
     yf = ymax * 0.92
     parts.append(make_part("handle", "handle", S.tube([(-0.06, yf, zs), (-0.05, yf + 0.03, zs), (0.05, yf + 0.03, zs), (0.06, yf, zs)],
                                                       0.008, sections=8), black))
+    # the two metal mounts the handle's ends are held in on the side of the shell
+    parts += [make_part(f"handle_mount_{k}", "handle_mount", S.box((0.016, 0.012, 0.022), center=(sx * 0.06, yf + 0.002, zs)), metal)
+              for k, sx in enumerate((-1, 1))]
     for k, x in enumerate((-0.16, 0.16)):
         parts.append(make_part(f"latch_{k}", "latch", S.box((0.03, 0.008, 0.03), center=(x, yf + 0.004, zs)), metal))
     parts.append(make_part("strap_ring", "strap_ring", S.box((0.02, 0.01, 0.012), center=(-L * 0.42, 0, zf + h + 0.006)), metal))

@@ -114,7 +114,8 @@ def _frame_material(rng) -> Material:
     return M.solid((0.1, 0.1, 0.1) if rng.random() < 0.5 else (0.95, 0.95, 0.93), "plastic", 0.5)
 
 
-@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger", "turn_button", "bumper", "wire"),
+@register("picture_frame", parts=("frame", "canvas"), extra_parts=("mat", "glazing", "hanger", "turn_button", "bumper", "wire",
+                                                                    "screw"),
           size_range=(0.2, 1.2), density=500, variants=("landscape", "portrait", "square"),
           placement="wall", groups={"frame": ("rail", "stile", "backing")})
 def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -152,14 +153,36 @@ def picture_frame(rng: np.random.Generator, variant: str) -> list[Part]:
     ib = min(bk, 0.0015)
     for k, (x, z) in enumerate([(0, bar * 0.6), (0, h - bar * 0.6), (-w / 2 + bar * 0.6, h / 2), (w / 2 - bar * 0.6, h / 2)]):
         parts.append(make_part(f"turn_button_{k}", "turn_button", S.box((0.012, ib, 0.012), center=(x, ib / 2, z)), steel))
+    parts += _more_turn_buttons(w, h, bar, ib, steel, start=4)
+    parts += _hanger_screws(w, h, bk, 1 if w < 0.5 else 2)
     return parts
+
+
+def _more_turn_buttons(w: float, h: float, bar: float, ib: float, mat: Material, *, start: int) -> list[Part]:
+    """The second pair of turn buttons on each side of a frame's back: a frame is held shut
+    every quarter of its length, not only mid-way (``ib`` thick, flush with the back)."""
+    spots = [(sx * w / 4, z) for z in (bar * 0.6, h - bar * 0.6) for sx in (-1, 1)]
+    spots += [(sx * (w / 2 - bar * 0.6), z) for sx in (-1, 1) for z in (h / 4, 3 * h / 4)]
+    return [make_part(f"turn_button_{start + k}", "turn_button", S.box((0.012, ib, 0.012), center=(x, ib / 2, z)), mat)
+            for k, (x, z) in enumerate(spots)]
+
+
+def _hanger_screws(w: float, h: float, bk: float, n: int, *, start: int = 0) -> list[Part]:
+    """The screw through the strap of each of the ``n`` D-ring hangers of :func:`_hangers`,
+    just below the ring, its head flush with the back."""
+    metal = M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)
+    xs = [0.0] if n == 1 else [-w * 0.3, w * 0.3]
+    tb = min(bk, 0.002)
+    return [make_part(f"screw_{start + k}", "screw", S.cylinder(0.003, tb, center=(x, tb / 2, h * 0.82 - 0.005), axis=(0, 1, 0),
+                                                                sections=8), metal) for k, x in enumerate(xs)]
 
 
 def _mirror_glass() -> Material:
     return Material((0.86, 0.89, 0.91, 1.0), 0.02, 1.0, "glass")
 
 
-@register("mirror", parts=("frame", "glass"), extra_parts=("hanger", "bevel", "screw", "bumper", "wire"), size_range=(0.3, 1.8),
+@register("mirror", parts=("frame", "glass"), extra_parts=("hanger", "bevel", "screw", "bumper", "wire", "turn_button"),
+          size_range=(0.3, 1.8),
           density=1200, variants=("rectangular", "round", "oval"), placement="wall",
           groups={"frame": ("frame", "rail", "stile", "backing")})
 def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -182,7 +205,11 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
                  S.box((bw, 0.001, ih - 2 * bw), center=(iw / 2 - bw / 2, yb, h / 2))]
         return [*_frame_parts(frame, mat, rng), make_part("glass", "glass", glass, _mirror_glass()),
                 make_part("bevel", "bevel", bevel, _mirror_glass()),
-                *_hangers(w, h, bk, 2), *_back_fittings(w, h, bk, wire=True, z_bottom=bar * 0.5)]
+                *_hangers(w, h, bk, 2), *_back_fittings(w, h, bk, wire=True, z_bottom=bar * 0.5),
+                # the turn buttons holding the glass and its backing in the frame, and the
+                # screw through each hanger's strap
+                *_more_turn_buttons(w, h, bar, 0.0015, M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8), start=0),
+                *_hanger_screws(w, h, bk, 2)]
     r = rng.uniform(0.2, 0.45)
     width = r * rng.uniform(0.08, 0.18)
     k = rng.uniform(1.3, 1.7) if variant == "oval" else 1.0
@@ -200,7 +227,11 @@ def mirror(rng: np.random.Generator, variant: str) -> list[Part]:
             make_part("hanger", "hanger", hanger, metal),
             *[make_part(f"screw_{j}", "screw", S.cylinder(0.0025, 0.0015, center=(sx * 0.01, 0.00275, zh), axis=(0, 1, 0),
                                                           sections=8), metal) for j, sx in enumerate((-1, 1))],
-            *_back_fittings(r * 1.2, 2 * r * k, 0.0015, wire=False, z_bottom=-r * k * 0.7)]
+            *_back_fittings(r * 1.2, 2 * r * k, 0.0015, wire=False, z_bottom=-r * k * 0.7),
+            # the four turn buttons on the frame's back holding the glass in, on its diagonals
+            *[make_part(f"turn_button_{j}", "turn_button",
+                        S.box((0.012, 0.0015, 0.012), center=(sx * (r - width / 2) * 0.7071, 0.00075, sz * (r - width / 2) * 0.7071 * k)),
+                        metal) for j, (sx, sz) in enumerate(((-1, 1), (1, 1), (-1, -1), (1, -1)))]]
 
 
 def _hands(rng, r_face: float, y: float, cz: float) -> list[Part]:

@@ -15,6 +15,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._dF_slots import slots
 from ._kit import feet4, rot
 from ._rods import rod, segments
 
@@ -137,8 +138,9 @@ def cue_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     if variant == "wall_shelf":  # a small shelf at the top for the balls and chalk
         parts.append(make_part("shelf", "shelf", S.box((w, 0.1, 0.02), center=(0, t + 0.05, h - 0.06)), wood))
         parts.append(make_part("shelf_lip", "lip", S.box((w, 0.012, 0.03), center=(0, t + 0.094, h - 0.035)), wood))
-    for k, x in enumerate((-w / 2 + 0.015, w / 2 - 0.015)):
-        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(x, t + 0.0015, h - 0.03), axis=(0, 1, 0),
+    # the screws fixing the back panel to the wall: two at its top, two just above the rest
+    for k, (x, z) in enumerate(((-w / 2 + 0.015, h - 0.03), (w / 2 - 0.015, h - 0.03), (-w / 2 + 0.015, 0.06), (w / 2 - 0.015, 0.06))):
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.005, 0.003, center=(x, t + 0.0015, z), axis=(0, 1, 0),
                                                                  sections=8), brass))
     return parts
 
@@ -167,6 +169,9 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("light", "light", S.box((0.01, 0.002, 0.003), center=(w / 2 - 0.02, d / 2 + 0.001, 0.02)), light))
         parts.append(make_part("port", "port", S.box((0.012, 0.002, 0.005), center=(-w / 2 + 0.025, d / 2 + 0.001, 0.03)),
                                black))
+        # the dock's vent slots in its back
+        parts += slots("vent", "vent", n=4, x0=-w * 0.3, x1=w * 0.3, z0=h * 0.3, z1=h * 0.65, y=-d / 2 - 0.001, thick=0.002,
+                       mat=black)
         # each controller's thumbstick and face button on its front
         zc = h * 0.8 + 0.012 + 0.051
         yc = d * 0.1 + 0.007
@@ -195,7 +200,9 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                   center=(w / 2 - 0.03 - 0.02 * k, d / 2 + 0.0015, zf + h * 0.6)),
                                    black))
         parts.append(make_part("light", "light", S.box((w * 0.8, 0.002, 0.002), center=(0, d / 2 + 0.001, zf + h * 0.25)), light))
-        parts.append(make_part("vent", "vent", S.box((w * 0.6, 0.002, h * 0.5), center=(0, -d / 2 - 0.001, zf + h / 2)), black))
+        # the exhaust grille across the back, six slots
+        parts += slots("vent", "vent", n=6, x0=-w * 0.3, x1=w * 0.3, z0=zf + h / 4, z1=zf + 3 * h / 4, y=-d / 2 - 0.001, thick=0.002,
+                       mat=black)
         _back_sockets(parts, x0=w / 2 - 0.03, y=-d / 2 - 0.001, z=zf + 0.0075, mat=black, start=2)
         for k in range(2):
             parts.append(make_part(f"port_{k}", "port", S.box((0.014, 0.002, 0.006),
@@ -207,7 +214,9 @@ def game_console(rng: np.random.Generator, variant: str) -> list[Part]:
     zs = 0.012
     parts.append(make_part("stand", "stand", S.box((ww + 0.04, d * 0.6, zs), center=(0, 0, zs / 2), bevel=0.003), black))
     parts.append(make_part("body", "body", [S.box((ww, d, hh), center=(0, 0, zs + hh / 2), bevel=0.008)], shell))
-    parts.append(make_part("vent", "vent", S.box((ww * 0.7, 0.002, hh * 0.7), center=(0, -d / 2 - 0.001, zs + hh / 2)), black))
+    # the exhaust grille on the back, eight slots
+    parts += slots("vent", "vent", n=8, x0=-ww * 0.35, x1=ww * 0.35, z0=zs + hh * 0.15, z1=zs + hh * 0.85, y=-d / 2 - 0.001,
+                   thick=0.002, mat=black)
     parts.append(make_part("disc_slot", "disc_slot", S.box((0.004, 0.002, 0.13), center=(ww * 0.2, d / 2 + 0.001, zs + hh * 0.55)),
                            black))
     for k in range(2):
@@ -363,6 +372,9 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
         path = _sign_stroke(_SHAPES[name], h / 2, s, yt)
         parts.append(make_part("tube_0", "tube", segments(path, rt), glow))
         holds = [path[i] for i in np.linspace(0, len(path) - 1, 4).astype(int)[:3]]
+        # two more clips half way between those, so the long tube is held every few bends
+        holds += [tuple((np.asarray(path[i]) + np.asarray(path[i + 1])) / 2)
+                  for i in np.linspace(0, len(path) - 1, 4).astype(int)[1:3]]
     else:  # a word: letters as zigzag strokes side by side
         n = int(rng.integers(3, 7))
         lw, lh = rng.uniform(0.08, 0.12), rng.uniform(0.14, 0.2)
@@ -376,6 +388,8 @@ def neon_sign(rng: np.random.Generator, variant: str) -> list[Part]:
                       (xa + lw, yt, 0.05)]
             parts.append(make_part(f"tube_{k}", "tube", segments(stroke, rt), glow))
             holds.append((xa, yt, 0.05 + lh * 0.5))
+        # and a second clip on each letter's last stroke: every letter is held at both sides
+        holds += [(x0 + k * lw * 1.25 + lw, yt, 0.05 + lh * 0.5) for k in range(n)]
     parts.append(make_part("backplate", "backplate", S.box((w, t, h), center=(0, t / 2, h / 2)), acrylic))
     # the clear clips holding the tubes off the plate
     for k, (x, _, z) in enumerate(holds):

@@ -21,7 +21,7 @@ from ._rods import rod, segments
 
 
 @register("vise", parts=("jaw", "base"),
-          extra_parts=("body", "jaw_plate", "screw", "handle", "anvil", "bolt", "clamp"),
+          extra_parts=("body", "jaw_plate", "screw", "handle", "anvil", "bolt", "clamp", "jaw_screw"),
           size_range=(0.18, 0.42), density=5000, variants=("bench", "swivel", "clamp_on"), placement="surface")
 def vise(rng: np.random.Generator, variant: str) -> list:
     iron = Material(M.jitter(rng, [(0.15, 0.3, 0.6), (0.2, 0.35, 0.2), (0.55, 0.1, 0.1), (0.25, 0.25, 0.27)][int(rng.integers(4))],
@@ -74,9 +74,17 @@ def vise(rng: np.random.Generator, variant: str) -> list:
                                                 S.ellipsoid((0.01, 0.01, 0.01), center=(-hx - 0.005, yj + 0.09, zb + hj * 0.3), subdivisions=1),
                                                 S.ellipsoid((0.01, 0.01, 0.01), center=(hx + 0.005, yj + 0.09, zb + hj * 0.3), subdivisions=1)],
                            steel))
+    # the two countersunk screws holding each hardened jaw plate on its jaw, flush with its face
+    zs = zb + hj * 0.82
+    for k, (yc, sy) in enumerate(((yf + 0.0055, 1), (yj - 0.0055, -1))):
+        for j, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"jaw_screw_{2 * k + j}", "jaw_screw",
+                                   S.frustum(0.0025, 0.0045, 0.001, center=(sx * jw * 0.3, yc, zs), axis=(0, sy, 0), sections=8),
+                                   steel))
     travel = L * 0.3
     parts += [prismatic("jaw_1_slide", "body", "jaw_1", travel=travel),
-              mount("jaw_1", "jaw_plate_1"), mount("jaw_1", "screw"), mount("jaw_1", "handle")]
+              mount("jaw_1", "jaw_plate_1"), mount("jaw_1", "screw"), mount("jaw_1", "handle"),
+              mount("jaw_1", "jaw_screw_2"), mount("jaw_1", "jaw_screw_3")]
     return parts
 
 
@@ -160,7 +168,8 @@ def _rz(a: float) -> np.ndarray:
     return np.array([[c, -s_, 0], [s_, c, 0], [0, 0, 1]])
 
 
-@register("toolbox", parts=("body", "handle"), extra_parts=("lid", "tray", "latch", "hinge", "foot", "divider", "hasp"),
+@register("toolbox", parts=("body", "handle"), extra_parts=("lid", "tray", "latch", "hinge", "foot", "divider", "hasp", "rivet",
+                                                            "nail"),
           size_range=(0.3, 0.62), density=500, variants=("metal", "plastic", "tote"), placement="floor")
 def toolbox(rng: np.random.Generator, variant: str) -> list:
     w, d = rng.uniform(0.4, 0.56), rng.uniform(0.2, 0.26)
@@ -186,6 +195,12 @@ def toolbox(rng: np.random.Generator, variant: str) -> list:
         for k, sx in enumerate((-1, 1), start=2):
             parts.append(make_part(f"divider_{k}", "divider", S.box((t, d / 2 - 1.5 * t, h * 0.7),
                                                                     center=(sx * w / 4, -d / 4, t + h * 0.35)), shell))
+        # the nails through each end board into the front, the back and the bottom, their heads
+        # flush with the end's outer face
+        nails = [(sx * (w / 2 - 0.0005), sy * (d / 2 - t / 2), z) for sx in (-1, 1) for sy in (-1, 1) for z in (h * 0.3, h * 0.75)]
+        nails += [(sx * (w / 2 - 0.0005), 0.0, t / 2) for sx in (-1, 1)]
+        parts += [make_part(f"nail_{k}", "nail", S.cylinder(0.003, 0.001, center=c, axis=(1, 0, 0), sections=8),
+                            M.solid((0.35, 0.35, 0.37), "metal", 0.5, 0.8)) for k, c in enumerate(nails)]
         return parts
     h = rng.uniform(0.18, 0.24)
     hl = 0.045  # the lid's depth
@@ -216,6 +231,10 @@ def toolbox(rng: np.random.Generator, variant: str) -> list:
     # the hasp for a padlock between the latches
     steel = M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)
     parts.append(make_part("hasp", "hasp", S.box((0.02, 0.006, 0.03), center=(0, d / 2 + 0.003, zl), bevel=0.002), steel))
+    # the two rivets fixing each latch's base plate to the front, below the latch
+    parts += [make_part(f"rivet_{2 * k + j}", "rivet", S.cylinder(0.0025, 0.002, center=(sx * w * 0.3 + dx, d / 2 + 0.001, zl - 0.028),
+                                                                  axis=(0, 1, 0), sections=8), steel)
+              for k, sx in enumerate((-1, 1)) for j, dx in enumerate((-0.011, 0.011))]
     parts += [revolute("lid_hinge", "body", "lid", axis=(1, 0, 0), origin=(0, -d / 2, zl), opens=OPEN_DOOR),
               mount("lid", "handle")]
     return parts

@@ -18,7 +18,8 @@ from ._household import ring
 
 
 @register("lantern", parts=("body", "base"), extra_parts=("cord", "cap", "rib", "frame", "pane", "handle", "roof", "post",
-                                                          "candle", "finial", "light_box"),
+                                                          "candle", "finial", "light_box", "socket", "bulb", "wick", "window",
+                                                          "collar"),
           size_range=(0.2, 1.3), density=200, variants=("paper", "candle", "stone"), placement="ceiling")
 def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
@@ -37,8 +38,19 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
             rr = r * np.sqrt(max(1 - ((f - 0.5) * 2) ** 2, 0.05)) + 0.002
             parts.append(make_part(f"rib_{k}", "rib", ring([(rr - 0.003, zr - 0.002), (rr, zr - 0.002), (rr, zr + 0.002),
                                                             (rr - 0.003, zr + 0.002)], sections=20), black))
+        # the wire ribs nearer the ends that keep the paper's shoulders round
+        for k, f in enumerate((0.15, 0.85), start=3):
+            zr = z0 - 0.01 + hb * f
+            rr = r * np.sqrt(max(1 - ((f - 0.5) * 2) ** 2, 0.05)) + 0.002
+            parts.append(make_part(f"rib_{k}", "rib", ring([(rr - 0.003, zr - 0.002), (rr, zr - 0.002), (rr, zr + 0.002),
+                                                            (rr - 0.003, zr + 0.002)], sections=20), black))
         zt = z0 + hb - 0.02
         parts.append(make_part("cap", "cap", S.cylinder(r * 0.5, 0.02, center=(0, 0, zt + 0.01), sections=20), black))
+        # inside, the lamp socket hanging from the cap and its bulb
+        parts.append(make_part("socket", "socket", S.cylinder(0.016, 0.05, center=(0, 0, zt - 0.025), sections=12),
+                               M.solid((0.9, 0.9, 0.88), "plastic", 0.5)))
+        parts.append(make_part("bulb", "bulb", S.ellipsoid((0.03, 0.03, 0.045), center=(0, 0, zt - 0.05 - 0.04), subdivisions=1),
+                               Material((0.98, 0.97, 0.92, 1.0), 0.1, 0.0, "glass")))
         lc = rng.uniform(0.3, 0.6)
         parts.append(make_part("cord", "cord", S.cylinder(0.004, lc, center=(0, 0, zt + 0.02 + lc / 2), sections=8),
                                M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
@@ -68,6 +80,12 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                       sections=12), Tr), metal))
         parts.append(make_part("candle", "candle", S.cylinder(0.025, 0.08, center=(0, 0, hb + 0.04), sections=16),
                                M.solid((0.95, 0.93, 0.85), "wax", 0.7)))
+        # the candle's wick, and the four top rails of the frame holding the panes under the roof
+        parts.append(make_part("wick", "wick", S.cylinder(0.0015, 0.012, center=(0, 0, hb + 0.08 + 0.006), sections=6),
+                               M.solid((0.1, 0.1, 0.1), "fabric", 0.9)))
+        rails = [S.box((w - 0.032, 0.008, 0.01), center=(0, sy * (w / 2 - 0.01), zr - 0.005)) for sy in (-1, 1)]
+        rails += [S.box((0.008, w - 0.032, 0.01), center=(sx * (w / 2 - 0.01), 0, zr - 0.005)) for sx in (-1, 1)]
+        parts += [make_part(f"frame_{4 + k}", "frame", sh, metal) for k, sh in enumerate(rails)]
         return parts
     # a stone garden lantern (toro): a base, a post, the light box with windows, a wide roof, a finial
     stone = M.stone(rng)
@@ -81,7 +99,15 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("light_box", "light_box", S.box((wb * 0.55, wb * 0.55, h * 0.2), center=(0, 0, zb + h * 0.1)), stone))
     parts.append(make_part("body", "body", S.box((wb * 0.3, 0.004, h * 0.1), center=(0, wb * 0.275 + 0.002, zb + h * 0.1)),
                            M.solid((0.15, 0.12, 0.1), "stone", 0.9)))
+    # the light box's other three windows (the front one is ``body``): back, left and right
+    dark = M.solid((0.15, 0.12, 0.1), "stone", 0.9)
+    parts += [make_part(f"window_{k}", "window", shp, dark) for k, shp in enumerate([
+        S.box((wb * 0.3, 0.004, h * 0.1), center=(0, -wb * 0.275 - 0.002, zb + h * 0.1)),
+        S.box((0.004, wb * 0.3, h * 0.1), center=(-wb * 0.275 - 0.002, 0, zb + h * 0.1)),
+        S.box((0.004, wb * 0.3, h * 0.1), center=(wb * 0.275 + 0.002, 0, zb + h * 0.1))])]
     zr = zb + h * 0.2
+    # the lotus collar the finial sits in on the roof's top
+    parts.append(make_part("collar", "collar", S.cylinder(wb * 0.1, h * 0.02, center=(0, 0, zr + h * 0.14 + h * 0.01), sections=12), stone))
     parts.append(make_part("roof", "roof", S.hull(np.array([[wb * 0.6 * np.cos(a), wb * 0.6 * np.sin(a), zr] for a in
                                                             np.linspace(0, 2 * np.pi, 6, endpoint=False)]
                                                            + [[wb * 0.1 * np.cos(a), wb * 0.1 * np.sin(a), zr + h * 0.14] for a in
@@ -91,7 +117,8 @@ def lantern(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("hanging_scroll", parts=("paper", "roller"), extra_parts=("border", "top_rod", "knob", "cord", "futai", "seal", "eye"),
+@register("hanging_scroll", parts=("paper", "roller"), extra_parts=("border", "top_rod", "knob", "cord", "futai", "seal", "eye",
+                                                                   "ichimonji", "tie"),
           size_range=(0.6, 2.2), density=300, variants=("vertical", "wide", "narrow"), placement="wall")
 def hanging_scroll(rng: np.random.Generator, variant: str) -> list[Part]:
     w = {"vertical": rng.uniform(0.4, 0.6), "wide": rng.uniform(0.8, 1.3), "narrow": rng.uniform(0.25, 0.35)}[variant]
@@ -130,4 +157,13 @@ def hanging_scroll(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.75, 0.1, 0.08), "paper", 0.8)))
     parts += [make_part(f"eye_{k}", "eye", S.cylinder(0.004, 0.006, center=(sx * w * 0.3, t + 0.004, zt + 0.001), sections=8),
                         M.solid((0.8, 0.65, 0.3), "metal", 0.3, 0.9)) for k, sx in enumerate((-1, 1))]
+    # the narrow brocade strips (ichimonji) across the paper's top and bottom edges, and the flat
+    # tie cord that wraps the rolled scroll, hanging from the top rod's middle
+    pw, ph = w - 2 * b, h - bt - bb
+    brocade = M.solid((0.8, 0.68, 0.35), "fabric", 0.7)
+    parts += [make_part(f"ichimonji_{k}", "ichimonji", S.box((pw, 0.0006, min(0.02, ph * 0.04)),
+                                                             center=(0, t + 0.0003, z0 + bb + zc)), brocade)
+              for k, zc in enumerate((ph - min(0.01, ph * 0.02), min(0.01, ph * 0.02)))]
+    parts.append(make_part("tie", "tie", S.box((0.008, 0.0008, bt * 0.6), center=(0, t + 0.0004, zt - 0.012 - bt * 0.3)),
+                           M.solid((0.6, 0.5, 0.3), "fabric", 0.9)))
     return parts

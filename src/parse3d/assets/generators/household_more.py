@@ -22,7 +22,7 @@ from ._kit import hinge_parts, revolute, rot
 
 @register("vacuum_cleaner", parts=("body", "hose"),
           extra_parts=("wand", "nozzle", "wheel", "handle", "bin", "bumper", "side_brush", "caster", "button", "sensor",
-                       "grip", "switch", "cord_hook", "cuff"),
+                       "grip", "switch", "cord_hook", "cuff", "cord", "plug", "contact"),
           size_range=(0.3, 1.45), density=300, variants=("canister", "upright", "robot"),
           placement="floor")
 def vacuum_cleaner(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -46,7 +46,10 @@ def vacuum_cleaner(rng: np.random.Generator, variant: str) -> list[Part]:
                                      R=rot((0, 0, 1), a)) for a in (0.3, 2.4, 4.5)], black())
                   for k, sx in enumerate((-1, 1))],
                 make_part("button", "button", S.cylinder(0.012, 0.004, center=(0, r * 0.35, 0.082), sections=12), white(rng, "plastic")),
-                make_part("sensor", "sensor", S.cylinder(0.04, 0.025, center=(0, r * 0.1, 0.0925), sections=16), black())]
+                make_part("sensor", "sensor", S.cylinder(0.04, 0.025, center=(0, r * 0.1, 0.0925), sections=16), black()),
+                # the two charging contacts under the front, flush with the underside
+                *studs("contact", "contact", [(sx * r * 0.3, r * 0.55, 0.0105) for sx in (-1, 1)], r=0.008, h=0.001,
+                       mat=M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9))]
     if variant == "upright":
         h = rng.uniform(1.05, 1.2)
         return [make_part("nozzle", "nozzle", S.box((0.32, 0.25, 0.08), center=(0, 0.05, 0.04), bevel=0.01), mat),
@@ -60,7 +63,10 @@ def vacuum_cleaner(rng: np.random.Generator, variant: str) -> list[Part]:
                 make_part("grip", "grip", S.cylinder(0.02, 0.1, center=(0, -0.12, h - 0.07), sections=12), black("rubber")),
                 make_part("switch", "switch", S.box((0.05, 0.04, 0.02), center=(0.1, -0.17, 0.09)), black()),
                 *[make_part(f"cord_hook_{k}", "cord_hook", S.box((0.03, 0.03, 0.015), center=(0, -0.185, z)), mat)
-                  for k, z in enumerate((0.08 + h * 0.08, 0.08 + h * 0.45))]]
+                  for k, z in enumerate((0.08 + h * 0.08, 0.08 + h * 0.45))],
+                # the power cord wound between the two hooks, and its plug clipped to the upper one
+                make_part("cord", "cord", S.box((0.024, 0.016, h * 0.37 - 0.015), center=(0, -0.188, 0.08 + h * 0.265)), black()),
+                make_part("plug", "plug", S.box((0.02, 0.012, 0.03), center=(0.027, -0.185, 0.08 + h * 0.45 - 0.02)), black())]
     L = rng.uniform(0.38, 0.45)
     out = [make_part("body", "body", S.ellipsoid((0.14, L / 2, 0.13), center=(0, 0, 0.14)), mat),
            *each("wheel", "wheel", [S.cylinder(0.07, 0.03, center=(sx * 0.13, -L * 0.25, 0.07), axis=(1, 0, 0)) for sx in (-1, 1)],
@@ -77,6 +83,8 @@ def vacuum_cleaner(rng: np.random.Generator, variant: str) -> list[Part]:
                                                  sections=8), black()),
             make_part("button", "button", S.cylinder(0.015, 0.01, center=(0.07, -L * 0.3, 0.222), sections=10), black()),
             make_part("cuff", "cuff", S.cylinder(0.028, 0.04, center=(0, L / 2 - 0.01, 0.2), axis=(0, 1, 0), sections=12), black())]
+    # the plug of the cord wound in on its reel, resting in the cord outlet low on the back
+    out.append(make_part("plug", "plug", S.box((0.03, 0.02, 0.02), center=(0, -L * 0.475 + 0.002, 0.1), bevel=0.002), black()))
     return out
 
 
@@ -180,7 +188,8 @@ def hair_dryer(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("fire_extinguisher", parts=("cylinder", "valve"),
-          extra_parts=("hose", "handle", "gauge", "bracket", "lever", "pin", "pull_ring", "nozzle", "label", "strap"),
+          extra_parts=("hose", "handle", "gauge", "bracket", "lever", "pin", "pull_ring", "nozzle", "label", "strap", "hose_clip",
+                       "tag", "screw"),
           size_range=(0.3, 0.75), density=1200, variants=("standing", "wall_bracket", "small"),
           placement="floor")
 def fire_extinguisher(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -197,6 +206,10 @@ def fire_extinguisher(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(make_part("bracket", "bracket", S.box((r * 1.2, 0.01, h * 0.3), center=(0, -r - 0.005, h * 0.55)), M.metal(rng)))
         out.append(make_part("strap", "strap", ring([(r, h * 0.6 - 0.01), (r + 0.003, h * 0.6 - 0.01), (r + 0.003, h * 0.6 + 0.01),
                                                      (r, h * 0.6 + 0.01)], sections=20), black("metal")))
+        # the two screws through the bracket into the wall, their heads on its front between
+        # the bracket's edge and the cylinder
+        out += studs("screw", "screw", [(sx * r * 0.45, -r - 0.0005, z) for sx in (-1, 1) for z in (h * 0.45,)], r=0.004, h=0.001,
+                     mat=M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8), axis=(0, 1, 0))
     # the squeeze lever above the carrying handle, the safety pin through both with its pull
     # ring, the horn at the hose's end and the instruction label (sections with no flat
     # annulus, the costliest surface to resolve)
@@ -212,11 +225,16 @@ def fire_extinguisher(rng: np.random.Generator, variant: str) -> list[Part]:
                                                     axis=(0, 0, -1), sections=10), black()),
             make_part("label", "label", ring([(r - 0.0005, h * 0.3), (r + 0.0008, h * 0.3 + 0.002), (r + 0.0008, h * 0.65 - 0.002),
                                               (r - 0.0005, h * 0.65)], sections=24), M.solid((0.95, 0.95, 0.9), "paper", 0.6))]
+    # the clip on the cylinder's side holding the hose's end, and the inspection tag hanging
+    # from the safety pin
+    out.append(make_part("hose_clip", "hose_clip", S.box((0.03, 0.012, 0.014), center=(0, -r - 0.002, h * 0.3 + 0.01)), black()))
+    out.append(make_part("tag", "tag", S.box((0.03, 0.001, 0.045), center=(0.0, r * 0.25 + 0.004, h * 1.035 - 0.026)),
+                         M.solid((0.95, 0.85, 0.2), "paper", 0.7)))
     return out
 
 
 @register("guitar_case", parts=("shell", "handle"), extra_parts=("latch", "lid", "hinge", "strap", "foot", "zipper", "pull",
-                                                                "pocket"),
+                                                                "pocket", "handle_mount"),
           size_range=(0.95, 1.3), density=200, variants=("hard", "gig_bag", "electric"),
           placement="floor")
 def guitar_case(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
@@ -238,6 +256,10 @@ def guitar_case(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
         out += hinge_parts("lid_hinge", x=t * 0.6, y=-wl / 2, z0=-L / 2 + 0.05, z1=-L / 2 + 0.3, mat=M.metal(rng), axis="x",
                            radius=0.005, length=0.03)
         out.append(revolute("lid_hinge", "shell", "lid", axis=(1, 0, 0), origin=(0, -wl / 2, t * 0.6), opens=1.3))
+        # the two end mounts holding the handle on the side of the shell
+        xh, yh = -L / 2 + 0.5, wu / 2 + 0.02
+        out += each("handle_mount", "handle_mount", [S.box((0.014, 0.02, 0.03), center=(xh + sx * 0.066, yh - 0.004, t * 0.5))
+                                                     for sx in (-1, 1)], M.metal(rng))
         # four bumper feet on the body end, the case stands upright on them
         out += studs("foot", "foot", [(-L / 2 - 0.004, y, z) for y in (-wl * 0.3, wl * 0.3) for z in (t * 0.25, t * 0.75)],
                      r=0.012, h=0.008, mat=black("rubber"), axis=(1, 0, 0))
@@ -282,7 +304,7 @@ def dish_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     return out
 
 
-@register("storage_bin", parts=("body",), extra_parts=("lid", "handle", "label", "wheel", "latch", "rim", "foot"),
+@register("storage_bin", parts=("body",), extra_parts=("lid", "handle", "label", "wheel", "latch", "rim", "foot", "rib"),
           size_range=(0.3, 0.8), density=400, variants=("lidded", "open", "wheeled"),
           placement="floor")
 def storage_bin(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -300,6 +322,9 @@ def storage_bin(rng: np.random.Generator, variant: str) -> list[Part]:
     rim = [S.box((w + 0.01, 0.005, 0.012), center=(0, sy * (d / 2 + 0.0025), wh + h - 0.006)) for sy in (-1, 1)]
     rim += [S.box((0.005, d, 0.012), center=(sx * (w / 2 + 0.0025), 0, wh + h - 0.006)) for sx in (-1, 1)]
     out.append(make_part("rim", "rim", rim, mat))
+    # the moulded ribs stiffening the long walls outside, two on each, under the rim's overhang
+    out += [make_part(f"rib_{k}", "rib", S.box((0.012, 0.004, h * 0.8), center=(sx * w / 4, sy * (d / 2 + 0.002), wh + h * 0.5 - 0.006)),
+                      mat) for k, (sy, sx) in enumerate((sy, sx) for sy in (-1, 1) for sx in (-1, 1))]
     if variant == "lidded":
         out.append(make_part("lid", "lid", S.box((w + 0.01, d + 0.01, 0.02), center=(0, 0, wh + h + 0.01), bevel=0.004), mat))
         # a latch clipping the lid down at each end
@@ -377,7 +402,7 @@ def room_divider(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return out
 
 
-@register("cart", parts=("shelf", "post"), extra_parts=("caster", "handle", "rail"),
+@register("cart", parts=("shelf", "post"), extra_parts=("caster", "handle", "rail", "bolt"),
           size_range=(0.6, 1.25), density=400, variants=("utility", "rolling_kitchen", "service"))
 def cart(rng: np.random.Generator, variant: str) -> list[Part]:
     w, d, h = rng.uniform(0.6, 1.0), rng.uniform(0.38, 0.55), rng.uniform(0.75, 0.95)
@@ -397,6 +422,11 @@ def cart(rng: np.random.Generator, variant: str) -> list[Part]:
                                                 axis=(1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)], black("rubber"))
     out += each("caster_fork", "caster", [S.box((0.04, 0.04, 0.02), center=(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), ch - 0.01))
                                           for sx in (-1, 1) for sy in (-1, 1)], M.metal(rng))
+    # the bolt through each post into the socket under each shelf's corner, its head on the post's outer face
+    zs = [ch + 0.03 + (h - ch - 0.06) * k / (n - 1) for k in range(n)]
+    out += [make_part(f"bolt_{k}", "bolt", S.cylinder(0.006, 0.002, center=(sx * (w / 2 - 0.004), sy * (d / 2 - 0.02), z - 0.02), axis=(1, 0, 0),
+                                                      sections=8), M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8))
+            for k, (z, sx, sy) in enumerate((z, sx, sy) for z in zs for sx in (-1, 1) for sy in (-1, 1))]
     out.append(make_part("handle", "handle", S.tube([(-w / 2 - 0.005, -d * 0.35, h - 0.05), (-w / 2 - 0.08, -d * 0.35, h),
                                                      (-w / 2 - 0.08, d * 0.35, h), (-w / 2 - 0.005, d * 0.35, h - 0.05)], 0.012), black()))
     return out

@@ -26,7 +26,7 @@ def _sole_outline(L: float, W: float, n: int = 9) -> np.ndarray:
 
 
 @register("iron", parts=("soleplate", "body", "handle"),
-          extra_parts=("water_tank", "dial", "cord", "heel", "button", "dock", "fill_cap", "nozzle", "light"),
+          extra_parts=("water_tank", "dial", "cord", "heel", "button", "dock", "fill_cap", "nozzle", "light", "cord_guard"),
           size_range=(0.18, 0.37), density=900, variants=("steam", "travel", "cordless"),
           placement="surface")
 def iron(rng: np.random.Generator, variant: str) -> list[Part]:
@@ -66,6 +66,9 @@ def iron(rng: np.random.Generator, variant: str) -> list[Part]:
                                                       sections=16), black()))
     parts.append(make_part("button", "button", S.cylinder(0.006, 0.006, center=(0, L * 0.1, zt + 0.011),
                                                           sections=10), M.plastic(rng)))
+    # the steam-burst button behind the spray button
+    parts.append(make_part("button_1", "button", S.cylinder(0.006, 0.006, center=(0, L * 0.04, zt + 0.011), sections=10),
+                           parts[-1].material))
     heel = S.box((W * 0.8, 0.012, hb * 0.45), center=(0, -L / 2 + 0.004, z0 + ts + hb * 0.22), bevel=0.003)
     parts.append(make_part("heel", "heel", heel, shell_mat))
     # the tank's fill cap under the handle's front, the spray nozzle at the nose and the
@@ -80,6 +83,9 @@ def iron(rng: np.random.Generator, variant: str) -> list[Part]:
         cord = S.tube([(0, -L / 2 - 0.002, z0 + ts + hb * 0.35), (0, -L / 2 - 0.03, z0 + ts + hb * 0.3),
                        (0.01, -L / 2 - 0.06, 0.005)], 0.004, sections=8)
         parts.append(make_part("cord", "cord", cord, black()))
+        # the swivelling strain relief where the cord leaves the heel
+        parts.append(make_part("cord_guard", "cord_guard", S.cylinder(0.008, 0.025, center=(0, -L / 2 - 0.008, z0 + ts + hb * 0.35),
+                                                                      axis=(0, 1, 0), sections=10), black("rubber")))
     return parts
 
 

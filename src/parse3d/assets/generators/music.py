@@ -14,6 +14,7 @@ from ...geometry import shapes as S
 from .. import materials as M
 from ..model import Material, Part, make_part
 from ..registry import register
+from ._dF_slots import slots
 from ._household import ring
 from ._kit import feet4, rot
 
@@ -240,7 +241,7 @@ def violin(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("amplifier", parts=("cabinet", "grille"), extra_parts=("knob", "handle", "control_panel", "foot", "head", "jack", "switch",
-                                                                 "light"),
+                                                                 "light", "vent", "power_inlet"),
           size_range=(0.3, 1.4), density=350, variants=("combo", "stack", "practice"))
 def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
     tolex = M.solid(M.jitter(rng, [(0.08, 0.08, 0.08), (0.85, 0.8, 0.7), (0.5, 0.1, 0.1)][int(rng.integers(3))], 0.02),
@@ -283,13 +284,20 @@ def amplifier(rng: np.random.Generator, variant: str) -> list[Part]:
                            M.solid((0.05, 0.05, 0.05), "plastic")))
     parts.append(make_part("light", "light", S.cylinder(0.006, 0.008, center=(w / 2 - 0.018, yp + 0.008, zp), axis=(0, 1, 0),
                                                         sections=10), M.solid((0.8, 0.1, 0.1), "glass", 0.1)))
+    # on the back: the vent slots over the valves or the power stage, and the mains inlet below them
+    yb = -(hd if variant == "stack" else d) / 2 - 0.001
+    zv = zp if variant == "stack" else fh + h * 0.8
+    parts += slots("vent", "vent", n=4, x0=-w * 0.3, x1=w * 0.3, z0=zv - 0.04, z1=zv + 0.04, y=yb, thick=0.002,
+                   mat=M.solid((0.05, 0.05, 0.05), "plastic"))
+    parts.append(make_part("power_inlet", "power_inlet", S.box((0.028, 0.003, 0.022), center=(w * 0.35, yb - 0.0005, zv - 0.06)),
+                           M.solid((0.05, 0.05, 0.05), "plastic")))
     hl = min(0.25, w * 0.4)
     parts.append(make_part("handle", "handle", S.tube([(-hl / 2, 0, zt - 0.002), (-hl / 2, 0, zt + 0.02),
                                                        (hl / 2, 0, zt + 0.02), (hl / 2, 0, zt - 0.002)], 0.008), tolex))
     return parts
 
 
-@register("keyboard_stand", parts=("arm", "leg"), extra_parts=("foot", "knob", "rail", "end_cap"), size_range=(0.6, 1.2),
+@register("keyboard_stand", parts=("arm", "leg"), extra_parts=("foot", "knob", "rail", "end_cap", "bolt"), size_range=(0.6, 1.2),
           density=700, variants=("x_frame", "table", "z_frame"))
 def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     w, h = rng.uniform(0.7, 1.0), rng.uniform(0.62, 0.9)
@@ -310,6 +318,8 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             parts.append(make_part(f"foot_{i}", "foot", S.box((0.04, d * 0.9, 0.025), center=(x, 0, 0.0125), bevel=0.005),
                                    rubber))
         arm_x = (-w * 0.32, w * 0.32)
+        # the bolts pinning each leg's lower end in its foot, heads on the legs' outer faces
+        bolts = [((sx * (w / 2 - r), sy * (0.04 + r + 0.001), r + 0.002), (0, 1, 0)) for sx in (-1, 1) for sy in (-1, 1)]
     elif variant == "z_frame":
         for i, x in enumerate((-w / 2 + 0.03, w / 2 - 0.03)):
             parts.append(make_part(f"leg_{i}", "leg", S.tube([(x, d / 2 - 0.03, 0.02), (x, -d / 2 + 0.03, h * 0.5),
@@ -319,6 +329,8 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("rail", "rail", S.tube([(-w / 2 + 0.03, -d / 2 + 0.03, h * 0.5),
                                                        (w / 2 - 0.03, -d / 2 + 0.03, h * 0.5)], 0.012), steel))
         arm_x = (-w / 2 + 0.03, w / 2 - 0.03)
+        # the bolt through each foot into its leg, its head flush with the foot's outer face
+        bolts = [((sx * (w / 2 - 0.005 - 0.0005), d / 2 - 0.03, 0.0125), (1, 0, 0)) for sx in (-1, 1)]
     else:
         for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
             parts.append(make_part(f"leg_{i}", "leg", S.box((0.03, 0.03, h - 0.03),
@@ -327,6 +339,13 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, y in enumerate((-d / 2 + 0.02, d / 2 - 0.02)):
             parts.append(make_part(f"rail_{i}", "rail", S.box((w - 0.07, 0.025, 0.025), center=(0, y, 0.15)), steel))
         arm_x = (-w / 2 + 0.02, w / 2 - 0.02)
+        # the bolts through each leg: into the arm above (outer face, just under it) and into
+        # the low rail (front or back face)
+        bolts = [((sx * (w / 2 - 0.004), sy * (d / 2 - 0.02), h - 0.045), (1, 0, 0)) for sx in (-1, 1) for sy in (-1, 1)]
+        bolts += [((sx * (w / 2 - 0.02), sy * (d / 2 - 0.004), 0.15), (0, 1, 0)) for sx in (-1, 1) for sy in (-1, 1)]
+    for k, (c, ax) in enumerate(bolts):
+        parts.append(make_part(f"bolt_{k}", "bolt", S.cylinder(0.007, 0.002, center=c, axis=ax, sections=8),
+                               M.solid((0.6, 0.6, 0.62), "metal", 0.4, 0.8)))
     for i, x in enumerate(arm_x):
         parts.append(make_part(f"arm_{i}", "arm", S.box((0.035, d, 0.03), center=(x, 0, h - 0.015), bevel=0.003), steel))
         # the caps closing the arm tube's ends
@@ -336,7 +355,8 @@ def keyboard_stand(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("microphone_stand", parts=("pole", "microphone"), extra_parts=("leg", "base", "boom", "clip", "clutch", "foot", "hub",
-                                                                       "counterweight", "boom_clutch", "cable"),
+                                                                       "counterweight", "boom_clutch", "cable", "knob",
+                                                                       "connector"),
           size_range=(1.0, 1.9), density=900, variants=("tripod_boom", "round_base", "tripod_straight"))
 def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     h = rng.uniform(1.0, 1.45)
@@ -370,6 +390,14 @@ def microphone_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     body = S.union([S.cylinder(0.02, 0.12, center=head + (0, 0.07, 0.0), axis=(0, 1, 0), sections=12),
                     S.ellipsoid((0.026, 0.028, 0.026), center=head + (0, 0.14, 0.0), subdivisions=2)])
     parts.append(make_part("microphone", "microphone", body, mic))
+    # the thumbscrew on the clip's side that sets its angle, and the connector on the cable's
+    # end, plugged into the microphone's tail inside the clip
+    parts.append(make_part("knob", "knob", S.cylinder(0.01, 0.012, center=head - (-0.021, 0.015, 0.0), axis=(1, 0, 0), sections=10),
+                           steel))
+    cdir = np.array([0.02, -0.025, -0.068])
+    parts.append(make_part("connector", "connector", S.cylinder(0.009, 0.028, center=head + (0.008, -0.005, -0.039),
+                                                                axis=tuple(cdir / np.linalg.norm(cdir)), sections=10),
+                           M.solid((0.7, 0.7, 0.72), "metal", 0.3, 0.9)))
     # the cable plugged into the microphone's tail, running down beside the clip
     parts.append(make_part("cable", "cable", S.tube([head + (0, 0.005, -0.012), head + (0.02, -0.02, -0.08), head + (0.03, -0.03, -0.2)],
                                                     0.003, sections=6), M.solid((0.03, 0.03, 0.03), "rubber", 0.8)))

@@ -30,7 +30,7 @@ def _lid_box(w: float, d: float, h: float, t: float, z0: float) -> list[S.Shape]
 
 @register("record_player", parts=("base", "platter", "tonearm"),
           extra_parts=("dust_cover", "spindle", "headshell", "counterweight", "knob", "button", "foot",
-                       "hinge", "handle"),
+                       "hinge", "handle", "lever"),
           size_range=(0.3, 0.52), density=450, variants=("hifi", "open", "suitcase"), placement="surface")
 def record_player(rng: np.random.Generator, variant: str) -> list:
     w, d = rng.uniform(0.40, 0.46), rng.uniform(0.33, 0.37)
@@ -64,6 +64,9 @@ def record_player(rng: np.random.Generator, variant: str) -> list:
                                                                                      zt + 0.033)), black))
     parts.append(make_part("counterweight", "counterweight", S.cylinder(0.013, 0.025, center=(ax, ay - 0.035, zt + 0.035),
                                                                         axis=(0, 1, 0), sections=12), alu))
+    # the cueing lever in front of the arm's pivot, lower than the platter's top
+    parts.append(make_part("lever", "lever", S.box((0.006, 0.02, 0.016), center=(ax - 0.012, ay + 0.035, zt + 0.008), bevel=0.001),
+                           alu))
     parts.append(make_part("knob", "knob", S.cylinder(0.012, 0.012, center=(w / 2 - 0.035, d / 2 - 0.04, zt + 0.006),
                                                       sections=12), alu))
     for k in range(2):
@@ -116,7 +119,7 @@ def vinyl_record(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("metronome", parts=("body", "pendulum"), extra_parts=("base", "weight", "scale", "key", "lid", "foot", "button", "speaker",
-                                                                "dial"),
+                                                                "dial", "screw", "clip", "battery_cover"),
           size_range=(0.1, 0.26), density=600, variants=("pyramid", "digital"), placement="surface")
 def metronome(rng: np.random.Generator, variant: str) -> list[Part]:
     wood = M.wood(rng)
@@ -142,6 +145,9 @@ def metronome(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                 sections=12), dark))
         parts.append(make_part("dial", "dial", S.cylinder(0.01, 0.005, center=(w / 2 + 0.0025, -d * 0.1, h * 0.5), axis=(1, 0, 0),
                                                           sections=12), dark))
+        # the battery compartment's cover on the back, flush with it
+        parts.append(make_part("battery_cover", "battery_cover",
+                               S.box((w * 0.6, 0.001, h * 0.3), center=(0, -d * 0.45 + 0.0005, h * 0.35)), body))
         return parts
     h = rng.uniform(0.2, 0.24)
     bw, bd = rng.uniform(0.1, 0.12), rng.uniform(0.09, 0.11)
@@ -162,6 +168,15 @@ def metronome(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("weight", "weight", S.box((0.014, 0.008, 0.016), center=(0, ff + 0.007 - 0.04 * np.tan(tilt),
                                                                                      zc + 0.04), R=Rf), brass))
     parts.append(make_part("key", "key", S.box((0.004, 0.02, 0.014), center=(bw / 2 - 0.015, 0, 0.05)), brass))
+    # the two brass screws pinning the scale to the face, at its top and bottom ends, and the
+    # clip at the top that locks the pendulum still
+    ls = (h - 0.015) * 0.35
+    for k, dz in enumerate((-ls, ls)):
+        c = np.array([0.0, ff + 0.001, zc]) + Rf @ np.array([0.0, 0.0015, dz * 0.97])
+        parts.append(make_part(f"screw_{k}", "screw", S.cylinder(0.0025, 0.0015, center=tuple(c), axis=tuple(Rf @ np.array([0, 1.0, 0])),
+                                                                 sections=8), brass))
+    cc = np.array([0.0, ff + 0.001, zc]) + Rf @ np.array([0.0, 0.002, (h - 0.015) * 0.45])
+    parts.append(make_part("clip", "clip", S.box((0.012, 0.004, 0.006), center=tuple(cc), R=Rf), brass))
     return parts
 
 
@@ -281,7 +296,7 @@ def midi_keyboard(rng: np.random.Generator, variant: str) -> list[Part]:
 
 
 @register("guitar_stand", parts=("cradle", "leg"),
-          extra_parts=("neck_rest", "post", "yoke", "padding", "knob", "foot", "frame"),
+          extra_parts=("neck_rest", "post", "yoke", "padding", "knob", "foot", "frame", "collar", "hinge"),
           size_range=(0.3, 1.0), density=600, variants=("tripod", "a_frame", "wooden"))
 def guitar_stand(rng: np.random.Generator, variant: str) -> list[Part]:
     metal = M.solid((0.06, 0.06, 0.07), "metal", 0.5, 0.6)
@@ -301,6 +316,8 @@ def guitar_stand(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("padding", "padding", S.box((0.08, 0.025, 0.1), center=(0, -0.01, h - 0.06)), rubber))
         parts += [make_part(f"foot_{k}", "foot", S.cylinder(0.014, 0.012, center=c, sections=10), rubber)
                   for k, c in enumerate([(-wide / 2, 0.12, 0.006), (wide / 2, 0.12, 0.006), (0, -0.2, 0.006)])]
+        # the hinge block at the top where the three legs fold together
+        parts.append(make_part("hinge", "hinge", S.cylinder(0.014, 0.1, center=(0, -0.02, h), axis=(1, 0, 0), sections=10), metal))
         return parts
     h = rng.uniform(0.7, 0.85)
     if variant == "wooden":
@@ -319,6 +336,11 @@ def guitar_stand(rng: np.random.Generator, variant: str) -> list[Part]:
             a = np.pi / 2 + 2 * np.pi * k / 3 + np.pi / 3
             parts.append(make_part(f"leg_{k}", "leg", S.tube([(0, -0.05, 0.25), (0.25 * np.cos(a), -0.05 + 0.25 * np.sin(a), 0.01)],
                                                            0.008, sections=8), metal))
+            # the rubber foot capping the leg's end, flush with its underside
+            parts.append(make_part(f"foot_{k}", "foot", S.cylinder(0.011, 0.012, center=(0.245 * np.cos(a), -0.05 + 0.245 * np.sin(a),
+                                                                                           0.0081), sections=10), rubber))
+        # the collar on the post that the legs are pinned to
+        parts.append(make_part("collar", "collar", S.cylinder(0.018, 0.04, center=(0, -0.05, 0.24), sections=10), metal))
         parts.append(make_part("post", "post", S.cylinder(0.012, h - 0.05, center=(0, -0.05, 0.05 + (h - 0.05) / 2),
                                                           sections=10), metal))
         parts.append(make_part("yoke", "frame", S.tube([(-0.13, 0.06, 0.2), (0, -0.05, 0.24), (0.13, 0.06, 0.2)], 0.009,
