@@ -57,6 +57,7 @@ from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, obstacles
 from .rotation import solve_rotation
+from .rows import in_a_row, walled
 from .rules import RULES
 from .sampling import (
     HANGS_OFF,
@@ -408,6 +409,8 @@ class _OnSupport:
     base_solid: BaseGeometry | None = None
     #: ``(region, samples)`` of a child leaning on an object or nested in one, else None
     leaned: tuple | None = None
+    #: the support is a channel's floor, held in by its walls (rows.py)
+    walled: bool = False
 
 
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
@@ -448,14 +451,15 @@ def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarr
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
+    walls = walled(st, sup)  # a channel's floor (rows.py)
     region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, plane_key(s),
-                                  cfg.margin), lambda: inset(sup, cfg.margin))
+                                  cfg.margin, walls), lambda: inset(sup, cfg.margin, walls))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
                           outline_indices(asset, R.T @ s.normal))
     return _OnSupport(st, oid, asset, scale, hull, sup, support_edge, others, cfg, R, toward,
-                      lean, drop, h, height, region0, exclude, F)
+                      lean, drop, h, height, region0, exclude, F, walled=walls)
 
 
 def _positions(d: _OnSupport, rng: np.random.Generator) -> np.ndarray:
@@ -495,13 +499,13 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
     ruled = None if d.stack else rules_region(st, d.oid, d.asset, d.scale, d.R, d.h, sup,
                                               d.edge, d.others, region0, F, holes)
     # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
-    step = STEP if rel == "ON" and sup.owner != "room" else 0.0
+    step = STEP if rel == "ON" and sup.owner != "room" and not d.walled else 0.0
     if step:
         d.lift = st.memo(sup.owner, ("step", plane_key(s), step),
                          lambda: step_height(st, sup, step))
     samples = None
     if ruled is not None and d.lift == 0 and (
-            sup.owner == "room" or rel == "IN" or inside_margin(F, d.height) == 0):
+            sup.owner == "room" or rel == "IN" or inside_margin(F, d.height, d.walled) == 0):
         # drawn from the relations' region less the obstacles near it, without building
         # it (the obstacles whose grown footprint can reach the region are those listed)
         d.obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(ruled, F, 0.0),
@@ -513,7 +517,7 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
                            step=step)
         if not d.stack:
             samples = free_positions(rel, sup, d.others, region0, d.obst + holes, F, d.height,
-                                     d.lift, rng, cfg.max_trials)
+                                     d.lift, rng, cfg.max_trials, d.walled)
     if samples is not None:
         return None, samples  # drawn from the free space without building the region
     if RULES[rel].hangs:
@@ -612,7 +616,7 @@ def _clip_by_relations(d: _OnSupport, region):
     region = apply_region_rules(ctx, d.others, region, "part")
     if rel == "ON" and sup.owner != "room":
         if not d.overhang:
-            region = well_inside(region, F, d.height)
+            region = well_inside(region, F, d.height, d.walled)
         elif is_roller(F, d.height) and not d.stack:  # a loaf on a loaf: centred below
             # a roller overhanging the support (a baguette longer than the side table)
             # keeps its centre of mass ROLL_EDGE widths from the edge
@@ -640,6 +644,8 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
         return samples
     st, oid, sup, asset, scale, R, F = d.st, d.oid, d.sup, d.asset, d.scale, d.R, d.F
     s, rel, region0 = sup.surface, d.edge.relation, d.region0
+    if in_a_row(st, oid, d.edge, sup, F, region0):  # side by side along a strip (rows.py)
+        samples = from_one_end(samples, region0)
     samples = leave_room(st, oid, sup, R, F, region0, samples)
     if RULES[rel].hangs and hung_siblings(st, oid, d.edge):
         samples = from_one_end(samples, region0)

@@ -130,11 +130,12 @@ def middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, scal
     return out
 
 
-def inset(sup: Support, margin: float):
+def inset(sup: Support, margin: float, walled: bool = False):
     """The support's region less a margin: objects keep ``margin`` from an object support's
     edge, and a hair's breadth (less than the contact gap EPS) from a room element's corners
-    (they are bounded by walls in the collision world)."""
-    region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else margin), join_style="mitre")
+    or a channel's walls (``walled``: bounded by walls in the collision world)."""
+    edge = EPS / 2 if sup.owner == "room" or walled else margin
+    region0 = sup.region.buffer(-edge, join_style="mitre")
     return sup.region if region0.is_empty else region0  # tiny supports (a burner): see overhang
 
 
@@ -434,7 +435,7 @@ TIPPY = 1.5
 
 def free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: list[np.ndarray],
                    F: np.ndarray, height: float, lift: float, rng: np.random.Generator,
-                   n: int) -> np.ndarray | None:
+                   n: int, walled: bool = False) -> np.ndarray | None:
     """(n, 2) positions drawn from the free space of a plain support (ON or IN, no relation
     clipping the region, no low parts to stand on) without building the region: the region
     ``_place_on`` would build, with a tippy child kept well inside (see :func:`well_inside`);
@@ -443,14 +444,17 @@ def free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: li
     if rel not in ("ON", "IN") or lift > 0 \
             or any(RULES[e.relation].region_phase != "none" for e in others):
         return None
-    margin = inside_margin(F, height) if rel == "ON" and sup.owner != "room" else 0.0
+    margin = inside_margin(F, height, walled) if rel == "ON" and sup.owner != "room" else 0.0
     return RG.free_samples(region0, obst, F, rng, n, margin=margin)
 
 
-def inside_margin(F: np.ndarray, height: float) -> float:
+def inside_margin(F: np.ndarray, height: float, walled: bool = False) -> float:
     """Metres a child's footprint ``F`` keeps inside an object's support: a quarter of its
     narrowest width for a tippy child (a TV on its stand, taller than ``TIPPY`` times that
-    width), half of it for a roller (:func:`is_roller`), else 0."""
+    width), half of it for a roller (:func:`is_roller`), else 0; 0 between a channel's walls
+    (``walled``: the lip holds a marker lying on its round side)."""
+    if walled:
+        return 0.0
     w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
     if height > TIPPY * w:
         return 0.25 * w
@@ -494,10 +498,10 @@ def _shrunk(region, margin: float):
     return inner if not inner.is_empty and inner.area > 1e-10 else region
 
 
-def well_inside(region, F: np.ndarray, height: float):
+def well_inside(region, F: np.ndarray, height: float, walled: bool = False):
     """Keep a tippy child's or a roller's base well inside the support: the region shrunk by
     :func:`inside_margin`, when anything is left."""
-    return _shrunk(region, inside_margin(F, height))
+    return _shrunk(region, inside_margin(F, height, walled))
 
 
 def face_target(st, toward, R, hull, s, ab, h, drop, others):
