@@ -52,7 +52,7 @@ from .intent import (
     whole_object,
 )
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
-from .ledge import may_lean, place_leaning
+from .ledge import may_lean, may_lean_on_wall, place_leaning, place_on_wall
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .regions import apply_region_rules, obstacles
@@ -338,6 +338,20 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                 return place_standing(st, oid, asset, scale, sups[int(si)], support_edge,
                                       others, body, rng,
                                       lambda c, sp: validate_pose(st, c, support_edge, others, sp))
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
+    if cfg.strategy == "constrained" and any(
+            may_lean_on_wall(st, asset, scale, sups[int(si)], support_edge) for si in order):
+        # a thin thing that cannot stand on its edge (a picture frame with no easel on a
+        # chest): stand it on the top leaning back on the wall behind (ledge.py)
+        for si in order:
+            if not may_lean_on_wall(st, asset, scale, sups[int(si)], support_edge):
+                continue
+            try:
+                return place_on_wall(st, oid, asset, scale, sups[int(si)], support_edge,
+                                     others, body, rng,
+                                     lambda c, sp: validate_pose(st, c, support_edge, others, sp))
             except Fail as f:
                 reasons.append(str(f))
                 inner.append(f.intrinsic)
