@@ -102,7 +102,7 @@ from .stacking import (
     stack_centre,
     written_choice,
 )
-from .standing import may_stand_in, place_standing, standing_instance
+from .standing import lies_down, may_stand_in, place_standing, standing_instance
 from .state import SolveState, plane_coords, plane_key, support_chain
 from .support import Support
 from .validation import resolution, validate_pose
@@ -197,6 +197,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             continue
         hang = hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
+            or lies_down(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
         # a notebook ON its cover, or ON a desk, lies on it; so do books stacked ON one another
         # cloth ON a rod hangs over it, the ON relaxed (hanging.py)
