@@ -63,6 +63,7 @@ from .sampling import (
     HANGS_OFF,
     ROLL_EDGE,
     THIN_LOW,
+    across_low_parts,
     base_centred,
     base_supported,
     covered_centres,
@@ -539,6 +540,9 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
         region = _hanging_region(d)
     else:
         region = RG.erode(region0, d.obst + holes, F)
+        if (region.is_empty or region.area < 1e-10) and step and not d.stack and not d.walled \
+                and (over := across_low_parts(d, step)) is not None:
+            region, d.obst, d.lift = over  # across a plate's rim (sampling.py)
         if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                 and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
                 and Polygon(F).area <= (STACK_OVER if d.stack or sup.spans else 1.5) \

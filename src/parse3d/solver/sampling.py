@@ -18,7 +18,7 @@ from ..scene.model import PlacedObject
 from .choice import touching
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .regions import apply_region_rules, steps_on
+from .regions import apply_region_rules, obstacles, steps_on
 from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
@@ -29,7 +29,7 @@ __all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pie
            "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
            "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller",
            "footprint_widths", "well_inside", "face_target", "no_space", "floor_covering",
-           "covering_region"]
+           "covering_region", "across_low_parts"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
@@ -553,3 +553,47 @@ def no_space(st: SolveState, sup: Support, F: np.ndarray, region0, obst) -> str:
     return (f"no free space on {sup.name} for a {fx:.2f} x {fy:.2f} m footprint: it holds "
             f"{len(there)} objects already ({names})")
 
+
+
+def across_low_parts(d, step: float):
+    """``(region, obstacles, lift)`` for a child ``d`` (placement's ``_OnSupport``) that finds
+    no room between the owner's low parts around its support (a folded napkin longer than a
+    plate's well, inside the rim): it lies across them, so they are no obstacles, and ``lift``
+    is the height of the highest of them within its reach, above which it is drawn and then
+    dropped onto them; only on a support at least as wide as the child (along its length it
+    may be longer). Anywhere on the support when it fits there between the other
+    obstacles; else, longer than the support, centred on it (within ``ACROSS_CENTRE``), so
+    that the low parts on both sides hold it level. None when no such part rises there or no
+    position is left."""
+    st, sup, region0, F = d.st, d.sup, d.region0, d.F
+    s = sup.surface
+    if region0.is_empty or rect_sides(region0)[0] < footprint_widths(F)[0]:
+        return None  # narrower than the child's width (a tray's lip): nothing to lie across
+    reach = float(np.max(np.ptp(F, axis=0)))
+    near = region0.buffer(reach)
+    lift = 0.0
+    for _, pts in st.world_pieces(sup.owner):
+        h = (pts - s.origin) @ s.normal
+        if not 1e-3 < float(h.max()) <= step:
+            continue
+        if near.intersects(shapely.MultiPoint(plane_coords(s, pts)).convex_hull):
+            lift = max(lift, float(h.max()))
+    if lift <= 0:
+        return None
+    obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(region0, F, reach), step=step,
+                     across=True)
+    holes = list(d.holes)
+    region = RG.erode(region0, obst + holes, F)
+    if region.is_empty or region.area < 1e-10:
+        com = (asset_geometry(d.asset).com * d.scale) @ d.R.T
+        c = np.asarray(region0.centroid.coords[0]) - np.array([com @ s.u, com @ s.v])
+        region = RG.clip(shapely.Point(float(c[0]), float(c[1])).buffer(ACROSS_CENTRE),
+                         RG.erode(RG.bounding_square(region0, pad=reach), obst + holes, F))
+    if region.is_empty or region.area < 1e-10:
+        return None
+    return region, obst, lift
+
+
+#: Metres from the middle of a support within which a child longer than it, lying across the
+#: owner's low parts on both sides (a napkin across a plate's rim), keeps its centre of mass.
+ACROSS_CENTRE = 0.01
