@@ -42,3 +42,25 @@ def test_markers_lie_in_a_row_on_the_floor_of_a_tray(seed):
         assert c.holds_settled is True, (mid, c.detail, c.residual_settled)
     assert not [i for i in verify_settled(scene) if i.cause == "fell"]
     assert not [o.id for o in scene.objects.values() if {"fell", "tipped"} & set(o.flags)]
+
+
+@pytest.mark.parametrize("seed", [1, 3])
+def test_a_far_from_in_one_tray_is_relaxed_as_far_as_the_tray_allows(seed):
+    """Two markers FAR_FROM each other by more than the tray is long: the marker is placed,
+    the relation recorded relaxed (what blocked it, what to write instead), and the marker
+    lies as far from the other as the free tray allows, not beside it."""
+    from parse3d.pag import PAG
+    from parse3d.solver import solve
+
+    pag = load_pag(ROOMS / "markers_in_a_row.json")
+    data = pag.to_dict()
+    data["relations"].append({"relation": "FAR_FROM", "child": "black_marker",
+                              "parent": "red_marker", "distance": 0.9})
+    scene = solve(PAG.from_dict(data), seed=seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    c = next(c for c in scene.relations if c.relation == "FAR_FROM")
+    assert c.holds is False and c.relaxed is not None
+    assert "FAR_FROM black_marker -> red_marker" in c.relaxed["blocked"]
+    black, red = scene.objects["black_marker"], scene.objects["red_marker"]
+    gap = float(np.linalg.norm(black.position[:2] - red.position[:2]))
+    assert gap > 0.2  # farther than a marker's length: not packed beside it

@@ -90,6 +90,7 @@ from .sampling import (
     step_centres,
     step_height,
     step_under,
+    toward_relaxed,
     well_inside,
 )
 from .stacking import (
@@ -665,6 +666,8 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
     s, rel, region0 = sup.surface, d.edge.relation, d.region0
     if in_a_row(st, oid, d.edge, sup, F, region0):  # side by side along a strip (rows.py)
         samples = from_one_end(samples, region0)
+    # a relaxed FAR_FROM or NEAR: as far (near) as the support allows (sampling.py)
+    samples = toward_relaxed(st, oid, asset, scale, R, sup, d.others, samples)
     samples = leave_room(st, oid, sup, R, F, region0, samples)
     if RULES[rel].hangs and hung_siblings(st, oid, d.edge):
         samples = from_one_end(samples, region0)

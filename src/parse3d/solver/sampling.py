@@ -29,7 +29,7 @@ __all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pie
            "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
            "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller",
            "footprint_widths", "well_inside", "face_target", "no_space", "floor_covering",
-           "covering_region", "across_low_parts"]
+           "covering_region", "across_low_parts", "toward_relaxed"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
@@ -597,3 +597,30 @@ def across_low_parts(d, step: float):
 #: Metres from the middle of a support within which a child longer than it, lying across the
 #: owner's low parts on both sides (a napkin across a plate's rim), keeps its centre of mass.
 ACROSS_CENTRE = 0.01
+
+
+def toward_relaxed(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+                   sup: Support, others: list[Edge], samples: np.ndarray) -> np.ndarray:
+    """Samples ordered to come as close as the support allows to what a relaxed ``FAR_FROM``
+    or ``NEAR`` of the child asked (left out of ``others``: it could not be met, a marker 0.9 m
+    from another in a 0.7 m tray): farthest from its parent first, or nearest; the order
+    otherwise kept. The distance is the child's centre of mass's to the parent's origin, in
+    the support's plane."""
+    if not len(samples):
+        return samples
+    kept = {id(e) for e in others}
+    relaxed = [e for e in st.pag.edges_of(oid)[1:] if e.relation in ("FAR_FROM", "NEAR")
+               and id(e) not in kept and not e.parent.is_room_element
+               and e.parent.object in st.scene.objects
+               and st.scene.objects[e.parent.object].placed]
+    if not relaxed:
+        return samples
+    s = sup.surface
+    com = (asset_geometry(asset).com * scale) @ R.T
+    at = samples + np.array([com @ s.u, com @ s.v])
+    key = np.zeros(len(samples))
+    for e in relaxed:
+        p = plane_coords(s, st.scene.objects[e.parent.object].position[None])[0]
+        dist = np.linalg.norm(at - p, axis=1)
+        key += -dist if e.relation == "FAR_FROM" else dist
+    return samples[np.argsort(key, kind="stable")]
