@@ -130,7 +130,7 @@ SOLVER_LEVELS: dict[str, int] = {
     "config": 0, "geometry": 0, "collision": 0, "library": 0, "walls": 0, "resting": 0,
     "state": 1, "intent": 1,
     "support": 2, "flush": 2, "bars": 2, "coverings": 3,
-    "rules.base": 3,
+    "rules.base": 3, "rows": 3,
     "rules.support": 4, "rules.contact": 4, "rules.alignment": 4, "rules.layout": 4,
     "rules": 5,
     "regions": 6, "rotation": 6,

@@ -28,7 +28,8 @@ from .geometry import asset_geometry, part_points
 from .state import SolveState, parts_for, plane_coords
 from .support import Support
 
-__all__ = ["place_leaning", "may_lean", "THIN", "LEAN_RANGE_DEG"]
+__all__ = ["place_leaning", "may_lean", "THIN", "LEAN_RANGE_DEG", "may_lean_on_wall", "place_on_wall",
+           "WALL_REACH", "WALL_LEAN_DEG"]
 
 #: A child is thin when its smallest extent is at most this fraction of its middle one.
 THIN = 0.2
@@ -330,3 +331,109 @@ def _stepped_drop(pieces_drop, asset: Asset, T: np.ndarray, parent, reach: float
             return done + got
         done += step
     return reach
+
+
+#: Metres between an object's top and a room wall behind it within which a thin child ON the
+#: top that cannot stand on its edge leans on the wall (a chest against the wall).
+WALL_REACH = 0.15
+
+#: Tilt (degrees from vertical) of a thin child leaning on a room wall from an object's top.
+WALL_LEAN_DEG = (10.0, 20.0)
+
+
+def may_lean_on_wall(st: SolveState, asset: Asset, scale: float, sup: Support,
+                     edge: Edge) -> bool:
+    """Whether :func:`place_on_wall` applies: ON an object's upward top (no child part or
+    other face named), a thin child (its thinnest extent at most ``THIN`` times the next) with
+    nothing ON or IN it, a room wall within ``WALL_REACH`` of the top's edge."""
+    if edge.relation != "ON" or sup.owner == "room" or edge.child.part is not None \
+            or edge.child.surface not in (None, "bottom") or float(sup.surface.normal[2]) < 0.99:
+        return False
+    if any(e.relation in ("ON", "IN") and e.parent.object == edge.child.object
+           for e in st.pag.relations):
+        return False  # what rests on it needs it as modelled (a pen on a notebook)
+    ext = np.sort(np.ptp(asset_geometry(asset).hull, axis=0) * scale)
+    return ext[0] <= THIN * ext[1] and _wall_behind(st, sup) is not None
+
+
+def _wall_behind(st: SolveState, sup: Support):
+    """``(wall name, its normal into the room (3,), its offset along it)`` of the room wall
+    nearest the support's edge, within ``WALL_REACH``; None when there is none."""
+    s = sup.surface
+    uv = shapely.get_coordinates(sup.region)
+    pts = s.origin + uv[:, :1] * s.u + uv[:, 1:] * s.v
+    best = None
+    for name, el in st.scene.room.elements.items():
+        if not name.startswith("wall_"):
+            continue
+        n = np.asarray(el.surface.normal, float)
+        if abs(float(n[2])) > 0.1:
+            continue
+        off = float(el.surface.origin @ n)
+        d = float(np.min(pts @ n)) - off
+        if not -1e-3 <= d <= WALL_REACH:
+            continue
+        # the top lies in front of the wall's face, not past its end
+        a = (pts - el.surface.origin) @ el.surface.u
+        lo, hi = (float(x) for x in el.surface.polygon.bounds[::2])
+        if float(a.max()) < lo or float(a.min()) > hi:
+            continue
+        if best is None or d < best[0]:
+            best = (d, name, n, off)
+    return None if best is None else best[1:]
+
+
+def place_on_wall(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
+                  edge: Edge, others: list[Edge], body: Body, rng: np.random.Generator,
+                  validate) -> tuple:
+    """Stand a thin child that cannot stand on its edge (a wall picture frame with no easel
+    ON a chest of drawers) on its lower edge on the top, its back leaning on the room wall
+    behind by ``WALL_LEAN_DEG``. Returns as :func:`place_leaning`; ``Fail`` when no pose
+    holds."""
+    got = _wall_behind(st, sup)
+    if got is None:
+        raise Fail(f"no wall behind {sup.name} to lean {oid} on", intrinsic=True)
+    wall, nw, off = got
+    s = sup.surface
+    hull = asset_geometry(asset).hull * scale
+    along = np.cross(s.normal, nw)
+    along /= np.linalg.norm(along)
+    uv = shapely.get_coordinates(sup.region)
+    top3 = s.origin + uv[:, :1] * s.u + uv[:, 1:] * s.v
+    lo, hi = float(np.min(top3 @ along)), float(np.max(top3 @ along))
+    stood = stands_to_lean(asset, st.pag, oid)
+    # upright as modelled first (a landscape frame stays landscape)
+    turns = (None,) if stood else \
+        ((True, False) if int(np.argmax(np.ptp(hull, axis=0))) == 2 else (False, True))
+    trials, last = 0, "no tilt tried"
+    for th in rng.permutation(np.deg2rad(np.linspace(*WALL_LEAN_DEG, 3))):
+        # the child's face plane leans back: its normal tilted up from the wall's
+        nt = np.cos(th) * nw + np.sin(th) * s.normal
+        for portrait in turns:
+            R, rests = _lean_rotation(asset, nt, s.normal, portrait)
+            Y = hull @ R.T
+            # its back 1 mm (plus EPS) off the wall, its lower edge EPS above the top
+            t = (off + EPS + 1e-3 - float(np.min(Y @ nw))) * nw
+            t = t + (float(s.origin @ s.normal) + EPS - float(np.min((Y + t) @ s.normal))) \
+                * s.normal
+            ylo, yhi = float(np.min(Y @ along)), float(np.max(Y @ along))
+            room = (hi - lo) - (yhi - ylo)
+            if room < 0:
+                last = f"{oid} standing is wider than {sup.name}"
+                continue
+            cur = float(t @ along)
+            for k in range(LEAN_TRIALS):
+                trials += 1
+                g = lo - ylo + (rng.uniform(0.0, 1.0) * room if k else 0.5 * room)
+                tt = t + (g - cur) * along
+                Yt = Y + tt
+                h = (Yt - s.origin) @ s.normal
+                foot = plane_coords(s, Yt[h <= h.min() + 3e-3])
+                if not sup.region.buffer(1e-4).contains(shapely.MultiPoint(foot).convex_hull):
+                    last = f"its lower edge would miss {sup.name} in front of {wall}"
+                    continue
+                checks, last = accept(st, oid, asset, scale, R, tt, rests, sup, body, validate)
+                if checks is not None:
+                    return (R, tt, sup, body, rests), trials, checks, None
+    raise Fail(f"no valid pose standing on {sup.name} leaning on {wall} ({trials} trials, "
+               f"last: {last})")

@@ -53,18 +53,20 @@ from .intent import (
     whole_object,
 )
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
-from .ledge import may_lean, place_leaning
+from .ledge import may_lean, may_lean_on_wall, place_leaning, place_on_wall
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
 from .over import OverEdge, over_after, over_edge, place_over
 from .regions import apply_region_rules, obstacles
 from .resting import rests_on
 from .rotation import solve_rotation
+from .rows import in_a_row, walled
 from .rules import RULES
 from .sampling import (
     HANGS_OFF,
     ROLL_EDGE,
     THIN_LOW,
+    across_low_parts,
     base_centred,
     base_supported,
     covered_centres,
@@ -91,6 +93,7 @@ from .sampling import (
     step_centres,
     step_height,
     step_under,
+    toward_relaxed,
     well_inside,
 )
 from .slots import may_slot, place_in_slots
@@ -105,7 +108,7 @@ from .stacking import (
     stack_centre,
     written_choice,
 )
-from .standing import may_stand_in, place_standing, standing_instance
+from .standing import lies_down, may_stand_in, place_standing, standing_instance
 from .state import SolveState, plane_coords, plane_key, support_chain
 from .support import Support
 from .upright import filed_instance, lies_in_cradle, stands_in_row, upright_axis
@@ -212,6 +215,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         hang = (over[0] if over is not None else None) \
             or hung_lengthwise(support_edge, asset) or hung_edge_up(support_edge, asset) \
             or lies_on_cover(support_edge, asset) or lies_flat(support_edge, asset, pag) \
+            or lies_down(support_edge, asset, pag) \
             or _in_stack(st, support_edge, asset, category)
         # flat things filed on a shelf that holds them only standing: on edge in a row
         # a bottle in a rack's cradle lies on its side, neck out
@@ -385,6 +389,20 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                        reasons, inner)
         if got is not None:
             return got
+    if cfg.strategy == "constrained" and any(
+            may_lean_on_wall(st, asset, scale, sups[int(si)], support_edge) for si in order):
+        # a thin thing that cannot stand on its edge (a picture frame with no easel on a
+        # chest): stand it on the top leaning back on the wall behind (ledge.py)
+        for si in order:
+            if not may_lean_on_wall(st, asset, scale, sups[int(si)], support_edge):
+                continue
+            try:
+                return place_on_wall(st, oid, asset, scale, sups[int(si)], support_edge,
+                                     others, body, rng,
+                                     lambda c, sp: validate_pose(st, c, support_edge, others, sp))
+            except Fail as f:
+                reasons.append(str(f))
+                inner.append(f.intrinsic)
     if cfg.strategy == "constrained" and may_stack(st, support_edge):
         # crowding: rest on an object of the same category already on that support
         for si in order:
@@ -470,6 +488,8 @@ class _OnSupport:
     base_solid: BaseGeometry | None = None
     #: ``(region, samples)`` of a child leaning on an object or nested in one, else None
     leaned: tuple | None = None
+    #: the support is a channel's floor, held in by its walls (rows.py)
+    walled: bool = False
 
 
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
@@ -510,14 +530,15 @@ def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarr
     h = -float(hN.min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
+    walls = walled(st, sup)  # a channel's floor (rows.py)
     region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, plane_key(s),
-                                  cfg.margin), lambda: inset(sup, cfg.margin))
+                                  cfg.margin, walls), lambda: inset(sup, cfg.margin, walls))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
                           outline_indices(asset, R.T @ s.normal))
     return _OnSupport(st, oid, asset, scale, hull, sup, support_edge, others, cfg, R, toward,
-                      lean, drop, h, height, region0, exclude, F)
+                      lean, drop, h, height, region0, exclude, F, walled=walls)
 
 
 def _positions(d: _OnSupport, rng: np.random.Generator) -> np.ndarray:
@@ -564,13 +585,13 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
     ruled = None if d.stack else rules_region(st, d.oid, d.asset, d.scale, d.R, d.h, sup,
                                               d.edge, d.others, region0, F, holes)
     # low parts of the support's owner (burners on a cooktop) are stood on, not avoided
-    step = STEP if rel == "ON" and sup.owner != "room" else 0.0
+    step = STEP if rel == "ON" and sup.owner != "room" and not d.walled else 0.0
     if step:
         d.lift = st.memo(sup.owner, ("step", plane_key(s), step),
                          lambda: step_height(st, sup, step))
     samples = None
     if ruled is not None and d.lift == 0 and (
-            sup.owner == "room" or rel == "IN" or inside_margin(F, d.height) == 0):
+            sup.owner == "room" or rel == "IN" or inside_margin(F, d.height, d.walled) == 0):
         # drawn from the relations' region less the obstacles near it, without building
         # it (the obstacles whose grown footprint can reach the region are those listed)
         d.obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(ruled, F, 0.0),
@@ -582,13 +603,16 @@ def _feasible(d: _OnSupport, rng: np.random.Generator):
                            step=step)
         if not d.stack:
             samples = free_positions(rel, sup, d.others, region0, d.obst + holes, F, d.height,
-                                     d.lift, rng, cfg.max_trials)
+                                     d.lift, rng, cfg.max_trials, d.walled)
     if samples is not None:
         return None, samples  # drawn from the free space without building the region
     if RULES[rel].hangs:
         region = _hanging_region(d)
     else:
         region = RG.erode(region0, d.obst + holes, F)
+        if (region.is_empty or region.area < 1e-10) and step and not d.stack and not d.walled \
+                and (over := across_low_parts(d, step)) is not None:
+            region, d.obst, d.lift = over  # across a plate's rim (sampling.py)
         if (region.is_empty or region.area < 1e-10) and rel in ("ON", "IN") \
                 and sup.owner != "room" and RG.erode(region0, holes, F).is_empty \
                 and Polygon(F).area <= (STACK_OVER if d.stack or sup.spans else 1.5) \
@@ -681,7 +705,7 @@ def _clip_by_relations(d: _OnSupport, region):
     region = apply_region_rules(ctx, d.others, region, "part")
     if rel == "ON" and sup.owner != "room":
         if not d.overhang:
-            region = well_inside(region, F, d.height)
+            region = well_inside(region, F, d.height, d.walled)
         elif is_roller(F, d.height) and not d.stack:  # a loaf on a loaf: centred below
             # a roller overhanging the support (a baguette longer than the side table)
             # keeps its centre of mass ROLL_EDGE widths from the edge
@@ -709,6 +733,10 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
         return samples
     st, oid, sup, asset, scale, R, F = d.st, d.oid, d.sup, d.asset, d.scale, d.R, d.F
     s, rel, region0 = sup.surface, d.edge.relation, d.region0
+    if in_a_row(st, oid, d.edge, sup, F, region0):  # side by side along a strip (rows.py)
+        samples = from_one_end(samples, region0)
+    # a relaxed FAR_FROM or NEAR: as far (near) as the support allows (sampling.py)
+    samples = toward_relaxed(st, oid, asset, scale, R, sup, d.others, samples)
     samples = leave_room(st, oid, sup, R, F, region0, samples)
     if RULES[rel].hangs and hung_siblings(st, oid, d.edge):
         samples = from_one_end(samples, region0)

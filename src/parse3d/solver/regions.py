@@ -46,11 +46,12 @@ def polygonal(region: BaseGeometry) -> BaseGeometry:
 
 def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
               within: tuple[float, float, float, float] | None = None,
-              step: float = 0.0, parts: bool = True) -> list[np.ndarray]:
+              step: float = 0.0, parts: bool = True, across: bool = False) -> list[np.ndarray]:
     """Footprints (in the support plane) of placed objects in the slab above the support, and
     (with ``parts``) the other parts of the supporting objects (``exclude``) in that slab,
-    except pieces of theirs rising at most ``step`` above the support (burners on a cooktop:
-    the child stands on them).
+    except pieces of theirs rising at most ``step`` above the support that the child stands on
+    (burners on a cooktop, :func:`steps_on`), or with ``across`` all those low pieces (a
+    folded napkin longer than a plate's well lies across its rim).
 
     ``within`` is a box ``(a0, b0, a1, b1)`` in plane coordinates: footprints that cannot meet
     it are left out (on horizontal supports, found through the state's spatial index; a
@@ -100,8 +101,8 @@ def obstacles(st: SolveState, sup: Support, exclude: set[str], height: float,
                 continue
             if fp is None:  # footprints are made when first needed, then kept
                 fp = piece[3] = RG.convex_outline(plane_coords(sup.surface, pts), piece[4])
-            if hi_h <= step and steps_on(sup, fp):
-                continue
+            if hi_h <= step and (across or steps_on(sup, fp)):
+                continue  # stood on; with ``across`` all of them (a napkin across a rim)
             out.append(fp)
     return out
 

@@ -18,7 +18,7 @@ from ..scene.model import PlacedObject
 from .choice import touching
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .regions import apply_region_rules, steps_on
+from .regions import apply_region_rules, obstacles, steps_on
 from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
@@ -29,7 +29,7 @@ __all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pie
            "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
            "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller",
            "footprint_widths", "well_inside", "face_target", "no_space", "floor_covering",
-           "covering_region"]
+           "covering_region", "across_low_parts", "toward_relaxed"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
@@ -130,11 +130,12 @@ def middle_first(samples: np.ndarray, region0, F: np.ndarray, asset: Asset, scal
     return out
 
 
-def inset(sup: Support, margin: float):
+def inset(sup: Support, margin: float, walled: bool = False):
     """The support's region less a margin: objects keep ``margin`` from an object support's
     edge, and a hair's breadth (less than the contact gap EPS) from a room element's corners
-    (they are bounded by walls in the collision world)."""
-    region0 = sup.region.buffer(-(EPS / 2 if sup.owner == "room" else margin), join_style="mitre")
+    or a channel's walls (``walled``: bounded by walls in the collision world)."""
+    edge = EPS / 2 if sup.owner == "room" or walled else margin
+    region0 = sup.region.buffer(-edge, join_style="mitre")
     return sup.region if region0.is_empty else region0  # tiny supports (a burner): see overhang
 
 
@@ -434,7 +435,7 @@ TIPPY = 1.5
 
 def free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: list[np.ndarray],
                    F: np.ndarray, height: float, lift: float, rng: np.random.Generator,
-                   n: int) -> np.ndarray | None:
+                   n: int, walled: bool = False) -> np.ndarray | None:
     """(n, 2) positions drawn from the free space of a plain support (ON or IN, no relation
     clipping the region, no low parts to stand on) without building the region: the region
     ``_place_on`` would build, with a tippy child kept well inside (see :func:`well_inside`);
@@ -443,14 +444,17 @@ def free_positions(rel: str, sup: Support, others: list[Edge], region0, obst: li
     if rel not in ("ON", "IN") or lift > 0 \
             or any(RULES[e.relation].region_phase != "none" for e in others):
         return None
-    margin = inside_margin(F, height) if rel == "ON" and sup.owner != "room" else 0.0
+    margin = inside_margin(F, height, walled) if rel == "ON" and sup.owner != "room" else 0.0
     return RG.free_samples(region0, obst, F, rng, n, margin=margin)
 
 
-def inside_margin(F: np.ndarray, height: float) -> float:
+def inside_margin(F: np.ndarray, height: float, walled: bool = False) -> float:
     """Metres a child's footprint ``F`` keeps inside an object's support: a quarter of its
     narrowest width for a tippy child (a TV on its stand, taller than ``TIPPY`` times that
-    width), half of it for a roller (:func:`is_roller`), else 0."""
+    width), half of it for a roller (:func:`is_roller`), else 0; 0 between a channel's walls
+    (``walled``: the lip holds a marker lying on its round side)."""
+    if walled:
+        return 0.0
     w = float(min(np.ptp(F[:, 0]), np.ptp(F[:, 1])))
     if height > TIPPY * w:
         return 0.25 * w
@@ -494,10 +498,10 @@ def _shrunk(region, margin: float):
     return inner if not inner.is_empty and inner.area > 1e-10 else region
 
 
-def well_inside(region, F: np.ndarray, height: float):
+def well_inside(region, F: np.ndarray, height: float, walled: bool = False):
     """Keep a tippy child's or a roller's base well inside the support: the region shrunk by
     :func:`inside_margin`, when anything is left."""
-    return _shrunk(region, inside_margin(F, height))
+    return _shrunk(region, inside_margin(F, height, walled))
 
 
 def face_target(st, toward, R, hull, s, ab, h, drop, others):
@@ -549,3 +553,74 @@ def no_space(st: SolveState, sup: Support, F: np.ndarray, region0, obst) -> str:
     return (f"no free space on {sup.name} for a {fx:.2f} x {fy:.2f} m footprint: it holds "
             f"{len(there)} objects already ({names})")
 
+
+
+def across_low_parts(d, step: float):
+    """``(region, obstacles, lift)`` for a child ``d`` (placement's ``_OnSupport``) that finds
+    no room between the owner's low parts around its support (a folded napkin longer than a
+    plate's well, inside the rim): it lies across them, so they are no obstacles, and ``lift``
+    is the height of the highest of them within its reach, above which it is drawn and then
+    dropped onto them; only on a support at least as wide as the child (along its length it
+    may be longer). Anywhere on the support when it fits there between the other
+    obstacles; else, longer than the support, centred on it (within ``ACROSS_CENTRE``), so
+    that the low parts on both sides hold it level. None when no such part rises there or no
+    position is left."""
+    st, sup, region0, F = d.st, d.sup, d.region0, d.F
+    s = sup.surface
+    if region0.is_empty or rect_sides(region0)[0] < footprint_widths(F)[0]:
+        return None  # narrower than the child's width (a tray's lip): nothing to lie across
+    reach = float(np.max(np.ptp(F, axis=0)))
+    near = region0.buffer(reach)
+    lift = 0.0
+    for _, pts in st.world_pieces(sup.owner):
+        h = (pts - s.origin) @ s.normal
+        if not 1e-3 < float(h.max()) <= step:
+            continue
+        if near.intersects(shapely.MultiPoint(plane_coords(s, pts)).convex_hull):
+            lift = max(lift, float(h.max()))
+    if lift <= 0:
+        return None
+    obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(region0, F, reach), step=step,
+                     across=True)
+    holes = list(d.holes)
+    region = RG.erode(region0, obst + holes, F)
+    if region.is_empty or region.area < 1e-10:
+        com = (asset_geometry(d.asset).com * d.scale) @ d.R.T
+        c = np.asarray(region0.centroid.coords[0]) - np.array([com @ s.u, com @ s.v])
+        region = RG.clip(shapely.Point(float(c[0]), float(c[1])).buffer(ACROSS_CENTRE),
+                         RG.erode(RG.bounding_square(region0, pad=reach), obst + holes, F))
+    if region.is_empty or region.area < 1e-10:
+        return None
+    return region, obst, lift
+
+
+#: Metres from the middle of a support within which a child longer than it, lying across the
+#: owner's low parts on both sides (a napkin across a plate's rim), keeps its centre of mass.
+ACROSS_CENTRE = 0.01
+
+
+def toward_relaxed(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
+                   sup: Support, others: list[Edge], samples: np.ndarray) -> np.ndarray:
+    """Samples ordered to come as close as the support allows to what a relaxed ``FAR_FROM``
+    or ``NEAR`` of the child asked (left out of ``others``: it could not be met, a marker 0.9 m
+    from another in a 0.7 m tray): farthest from its parent first, or nearest; the order
+    otherwise kept. The distance is the child's centre of mass's to the parent's origin, in
+    the support's plane."""
+    if not len(samples):
+        return samples
+    kept = {id(e) for e in others}
+    relaxed = [e for e in st.pag.edges_of(oid)[1:] if e.relation in ("FAR_FROM", "NEAR")
+               and id(e) not in kept and not e.parent.is_room_element
+               and e.parent.object in st.scene.objects
+               and st.scene.objects[e.parent.object].placed]
+    if not relaxed:
+        return samples
+    s = sup.surface
+    com = (asset_geometry(asset).com * scale) @ R.T
+    at = samples + np.array([com @ s.u, com @ s.v])
+    key = np.zeros(len(samples))
+    for e in relaxed:
+        p = plane_coords(s, st.scene.objects[e.parent.object].position[None])[0]
+        dist = np.linalg.norm(at - p, axis=1)
+        key += -dist if e.relation == "FAR_FROM" else dist
+    return samples[np.argsort(key, kind="stable")]

@@ -32,7 +32,7 @@ from .state import SolveState
 from .support import Support
 
 __all__ = ["end_width", "may_stand_in", "place_standing", "stands_upright", "standing_instance",
-           "STAND_TILT_DEG", "SHALLOW_TILT_DEG", "LONG"]
+           "STAND_TILT_DEG", "SHALLOW_TILT_DEG", "LONG", "lies_down", "TOPPLE_DEG", "STICK"]
 
 #: A child is long when its longest extent is at least this multiple of its middle one.
 LONG = 1.5
@@ -475,3 +475,49 @@ def _stand(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support, e
     if shallow and trials and limit < SHALLOW_TILT_DEG:
         raise _Shallow(last)
     raise Fail(f"no room to stand {oid} in {sup.name} ({trials} trials, last: {last})")
+
+
+#: Degrees a child standing on its base may lean before its centre of mass leaves the base:
+#: below this it topples at a touch (a pool cue on its butt, a pen on its end).
+TOPPLE_DEG = 3.0
+
+#: A stick: modelled standing, its height at least this multiple of its horizontal extents.
+STICK = 4.0
+
+#: A stick's cross-section is round-ish: its two horizontal extents within this ratio.
+ROUND_SECTION = 1.5
+
+
+def lies_down(edge: Edge, asset: Asset, pag) -> Edge | None:
+    """``ON`` with no child part named, for a stick modelled standing (its height at least
+    ``STICK`` times its width, its section round-ish: ``ROUND_SECTION``) that would topple from its base (its centre of mass within
+    ``TOPPLE_DEG`` of the base's edge, seen from the base: a pool cue on its butt): the edge
+    by which it lies on its side (its thinner horizontal axis down), as a person means a cue
+    ON a pool table; None for anything else (the edge as written), and for a child that also
+    leans (``LEANING_AGAINST``: it stands leaning)."""
+    c = edge.child
+    if edge.relation != "ON" or c.part is not None or c.surface not in (None, "bottom"):
+        return None
+    if any(e.relation == "LEANING_AGAINST" and e.child.object == c.object
+           for e in pag.relations):
+        return None
+    g = asset_geometry(asset)
+    ext = np.ptp(g.hull, axis=0)
+    w, d = sorted((float(ext[0]), float(ext[1])))
+    if ext[2] < STICK * d or d > ROUND_SECTION * w:
+        return None  # not a stick, or a flat one (a ladder: it leans, it does not roll)
+    low = float(g.hull[:, 2].min())
+    base = g.hull[g.hull[:, 2] <= low + 3e-3][:, :2]
+    foot = shapely.MultiPoint(base).convex_hull
+    at = shapely.Point(float(g.com[0]), float(g.com[1]))
+    r = float(foot.exterior.distance(at)) if foot.geom_type == "Polygon" \
+        and foot.contains(at) else 0.0
+    if np.degrees(np.arctan2(r, max(float(g.com[2]) - low, 1e-6))) >= TOPPLE_DEG:
+        return None
+    from dataclasses import replace
+
+    from ..pag.refs import format_ref
+
+    side = "left" if ext[0] <= ext[1] else "back"  # the thinner way down
+    return replace(edge, child=replace(c, surface=side,
+                                       text=format_ref(c.object, None, None, side)))

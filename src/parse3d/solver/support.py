@@ -120,6 +120,13 @@ def channel_floor(asset, part) -> Surface | None:
                     best = (z, face)
             if best is not None:
                 z, face = best
+                # between its walls: less the pieces rising above the floor (the lips)
+                walls = [shapely.MultiPoint(pc.vertices[:, :2]).convex_hull
+                         for pc in part.piece_arrays if float(pc.vertices[:, 2].max()) > z + 2e-3]
+                inner = face.difference(shapely.union_all(walls)) if walls else face
+                if inner.geom_type == "Polygon" and not inner.is_empty \
+                        and _sides(inner)[0] >= 0.03:
+                    face = inner
                 c = np.array([face.centroid.x, face.centroid.y])
                 poly = shapely.affinity.translate(face, -c[0], -c[1])
                 got = Surface("top", np.array([c[0], c[1], z]), np.array([0.0, 0.0, 1.0]),
