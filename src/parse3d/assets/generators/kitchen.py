@@ -207,7 +207,7 @@ def bar_counter(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("refrigerator", parts=("body", "door", "shelf"), extra_parts=("handle", "freezer_door", "drawer", "hinge", "light",
                                                                      "thermostat", "gasket", "toe_grille", "hinge_cover",
-                                                                     "dispenser", "trim", "shelf_support", "screw"),
+                                                                     "dispenser", "trim", "shelf_support"),
           size_range=(1.4, 2.0), density=300, variants=("single", "top_freezer", "side_by_side"))
 def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     w = rng.uniform(0.8, 0.92) if variant == "side_by_side" else rng.uniform(0.55, 0.75)
@@ -276,8 +276,6 @@ def refrigerator(rng: np.random.Generator, variant: str) -> list[Part]:
     # door's top hinge on the cabinet's top, and on a side-by-side the water and ice
     # dispenser let into the freezer door
     parts.append(make_part("toe_grille", "toe_grille", S.box((w - 2 * t, 0.006, 0.07), center=(0, yf - 0.003, 0.04)), black()))
-    # the four screws holding the back panel at its corners
-    parts += back_screws("screw", x0=-w / 2, x1=w / 2, z0=0.0, z1=h, y=yb, inset=0.04)
     hinge_x = {"single": [-w / 2 + 0.04], "top_freezer": [-w / 2 + 0.04], "side_by_side": [-w / 2 + 0.04, w / 2 - 0.04]}[variant]
     parts += [make_part(f"hinge_cover_{k}", "hinge_cover", S.box((0.06, 0.08, 0.012), center=(x, yf - 0.035, h - 0.006 + 0.0), bevel=0.003),
                         shell) for k, x in enumerate(hinge_x)]
