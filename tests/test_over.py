@@ -123,3 +123,25 @@ def test_a_roll_hangs_threaded_on_its_holders_bar(seed):
             assert c.relaxed is not None and "threaded" in c.relaxed["blocked"], c
         else:
             assert c.holds_settled, (c.relation, c.child, c.parent, c.residual_settled)
+
+
+def test_a_soft_thing_on_a_soft_thing_lies_stacked():
+    """Towels written ON one another (`ON towel2:body@bottom -> towel1:body@top`, a room of
+    tests/data/foreign) lie stacked, each on the one below: a soft thing hangs over a narrow top
+    only when what it is ON is not soft itself (a folded towel's top is narrow, and towel2 was
+    hung over it and failed)."""
+    import json
+    from pathlib import Path
+
+    from parse3d.assets.registry import vocabulary
+    from parse3d.pag import PAG
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    room = Path(__file__).parent / "data" / "foreign" / "laundry-room.json"
+    pag = PAG.from_dict(json.loads(room.read_text())).validate(vocabulary=vocabulary())
+    scene = run_pipeline(pag, seed=0, out=None,
+                         options=PipelineOptions(settle=False, preview=False))
+    for oid, below in (("towel2", "towel1"), ("towel3", "towel2")):
+        o = scene.objects[oid]
+        assert o.placed, (oid, o.reason)
+        assert not o.fixed and o.support_choice.owner == below, (oid, o.support_choice)

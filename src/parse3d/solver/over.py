@@ -163,6 +163,8 @@ def bar_of(st: SolveState, edge: Edge, asset: Asset, scale: float, *, after: boo
     parent = st.scene.objects.get(edge.parent.object)
     if parent is None or not parent.placed or parent.asset is None:
         return None
+    if soft(parent.asset, parent.scale) is not None:
+        return None  # soft on soft (a towel ON a folded towel): a stack, lying as written
     ref = edge.parent
     surface = ref.surface or edge.spec.parent_surface
     side = None
