@@ -366,6 +366,29 @@ def _place_threaded(st: SolveState, oid: str, asset: Asset, scale: float, edge: 
     raise Fail(f"no room to thread {oid} on {part.name}: {last}")
 
 
+def over_instance(st: SolveState, library, edge: Edge, category: str, asset: Asset,
+                  reqs: list, tried: set[str]) -> tuple[str, Asset]:
+    """``(category, asset)``: for a child drawn as an instance that is not soft (a rolled towel)
+    on a part that reads as a bar (:func:`bar_of`: a towel written ``ON`` a tub's rim), an
+    untried soft instance of its candidates (a flat towel), which hangs over it; the instance
+    drawn otherwise (also when none of its candidates is soft)."""
+    if soft(asset, 1.0) is not None or edge.relation not in ("ON", "HANGING_BELOW") \
+            or bar_of(st, edge, asset, 1.0) is None:
+        return category, asset
+    import zlib
+
+    from .choice import alternative_instance
+
+    # a generator of its own, so that looking leaves the solve's draws as they were
+    look = np.random.default_rng(zlib.crc32(asset.asset_id.encode()))
+    alt = alternative_instance(library, st.pag.objects[edge.child.object].candidates, reqs,
+                               tried, look, key=lambda a: 0.0 if soft(a, 1.0) else 1.0)
+    if alt is None or soft(alt[1], 1.0) is None or bar_of(st, edge, alt[1], 1.0) is None:
+        return category, asset
+    tried.add(alt[1].asset_id)
+    return alt
+
+
 def over_edge(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float, *,
               after: bool = False) -> tuple[OverEdge, float, str] | None:
     """For a soft child (:func:`soft`) of ``edge`` that reads as over a bar (:func:`bar_of`):

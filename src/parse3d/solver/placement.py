@@ -56,7 +56,7 @@ from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, may_lean_on_wall, place_leaning, place_on_wall
 from .mounting import mount_region, mounts
 from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
-from .over import OverEdge, over_after, over_edge, place_over
+from .over import OverEdge, over_after, over_edge, over_instance, place_over
 from .regions import apply_region_rules, obstacles
 from .resting import rests_on
 from .rotation import solve_rotation
@@ -195,6 +195,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
                                                 asset, lambda a, r=reqs: lacks(a, r) is None,
                                                 tried, rng)
             tried.add(asset.asset_id)
+        # a towel ON a tub's rim drawn rolled: a flat one, which hangs over it (over.py)
+        category, asset = over_instance(st, library, support_edge, category, asset, reqs, tried)
         # a filed thing on a crowded shelf: a slab that stands in the row (upright.py)
         category, asset = filed_instance(st, library, support_edge, category, asset, reqs,
                                          tried, rng)
