@@ -26,6 +26,7 @@ from .hanging import edge_up, rail_scale, thinness
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
 from .rules import RULES
+from .standing import floor_takes
 from .state import SolveState, plane_coords
 from .support import _flat_cached, _flat_enough, cover_part, filled, support_candidates
 
@@ -645,9 +646,12 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
     elif scale * extent_along(asset, axis) > HEADROOM_FIT * headroom:
         # taller than every shelf it may go IN (a cereal box on a grocery shelf): the lowest
         # untried instance, then shrunk to the free height within its category's range
+        # (one whose floor takes the flat things written IN it first: standing.py)
+        holds = floor_takes(st, library, oid, support_edge, HEADROOM_FIT) or (lambda a: True)
         alt = alternative_instance(library, node.candidates, reqs, tried, rng,
-                                   key=lambda a: extent_along(a, axis))
-        if alt is not None and extent_along(alt[1], axis) < extent_along(asset, axis):
+                                   key=lambda a: extent_along(a, axis) + (0.0 if holds(a) else 1e3))
+        if alt is not None and extent_along(alt[1], axis) < extent_along(asset, axis) \
+                and (holds(alt[1]) or not holds(asset)):
             category, asset = alt
             tried.add(asset.asset_id)
             lo, hi = asset.size_range

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 import shapely
+import shapely.affinity
 
 from ..assets.model import Asset
 from ..measure.checks import EPS
@@ -29,9 +30,9 @@ from .geometry import asset_geometry
 from .ledge import accept
 from .nesting import pieces_drop
 from .state import SolveState
-from .support import Support
+from .support import Support, support_candidates
 
-__all__ = ["end_width", "may_stand_in", "place_standing", "stands_upright", "standing_instance",
+__all__ = ["end_width", "floor_takes", "may_stand_in", "place_standing", "stands_upright", "standing_instance",
            "STAND_TILT_DEG", "SHALLOW_TILT_DEG", "LONG", "lies_down", "TOPPLE_DEG", "STICK"]
 
 #: A child is long when its longest extent is at least this multiple of its middle one.
@@ -248,8 +249,10 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
     A container with children written ``IN`` it that would not stand there (a potted plant in
     a basket) is drawn likewise with a floor whose free height takes the lowest of each
     child's first :data:`MOUTH_SLOTS` pool slots, at the least scale its node allows (a
-    basket whose handle leaves the leaves no room is passed over). Unchanged for anything
-    else, and when no instance looked at does better."""
+    basket whose handle leaves the leaves no room is passed over), and with flat children
+    (picture books) with a floor that takes them standing (:func:`floor_takes`); so is one
+    that goes ``IN`` a placed object itself (a basket of books on a shelf). Unchanged for
+    anything else, and when no instance looked at does better."""
     if getattr(library, "load", None) is None:
         return category, asset
     k = int(getattr(library, "per_category", 20))
@@ -276,15 +279,18 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
                 return False
             return up
 
-        if fits(asset) is not False:
+        up = fits(asset)
+        if up is True:
             return category, asset
-        for ci in rng.permutation(len(cands)):
-            cat = cands[int(ci)]
-            for slot in rng.permutation(k)[:MOUTH_SLOTS]:
-                a = library.load(cat, int(slot))
-                if a.asset_id not in tried and usable(a) and fits(a):
-                    return cat, a
-        return category, asset
+        if up is False:
+            for ci in rng.permutation(len(cands)):
+                cat = cands[int(ci)]
+                for slot in rng.permutation(k)[:MOUTH_SLOTS]:
+                    a = library.load(cat, int(slot))
+                    if a.asset_id not in tried and usable(a) and fits(a):
+                        return cat, a
+            return category, asset
+        # not a thing that stands there (a basket on a shelf): drawn for what goes in it
     inside = [e for e in st.pag.relations
               if e.relation == "IN" and e.parent.object == oid
               and st.pag.supporter(e.child.object) is e
@@ -307,15 +313,20 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
         if not _long(ka):
             h = float(np.ptp(asset_geometry(ka).hull[:, 2])) * least(e.child.object, ka)
             low[e.child.object] = min(low.get(e.child.object, np.inf), h)
+    # ... and flat ones a floor that takes them standing (picture books in a basket)
+    floor_ok = floor_takes(st, library, oid, edge)
 
     def takes(a: Asset) -> tuple[int, int]:
         """Verdicts ``(yes, no)``: of each child slot that would stand in ``a`` whether it
         goes through its mouth, and of each child that would not whether the lowest of its
-        slots has the free height on one of its floors."""
+        slots has the free height on one of its floors; and for flat children whether a
+        floor takes them standing (:func:`floor_takes`)."""
         s_ = least(oid, a)
         got = [stands_upright(a, s_, ka, _unit_scale(ka), e) for e, ka in kids]
         room = max((ins.clearance for ins in a.internal), default=0.0) * s_
         got += [room >= h for h in low.values()]
+        if floor_ok is not None:
+            got.append(floor_ok(a))
         return sum(g is True for g in got), sum(g is False for g in got)
 
     yes, no = takes(asset)
@@ -334,6 +345,89 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
             if y > 0 and n == 0:
                 return cat, a
     return best[1], best[2]
+
+
+#: A child is flat (a book, a board) when its thinnest extent is at most this share of its
+#: middle one: such a thing needs a floor that takes its footprint, not only the height.
+FLAT_THIN = 0.25
+
+
+def floor_takes(st: SolveState, library, oid: str, edge: Edge, share: float = 1.0):
+    """For a container ``oid`` (its support edge ``edge``) with flat things written ``IN`` it
+    (:data:`FLAT_THIN`: picture books in a basket), a predicate on its instances: whether one
+    of its floors takes the smallest footprint of each such child's first
+    :data:`MOUTH_SLOTS` pool slots standing as modelled, at the scale the instance gets where
+    it goes (its category's size, capped by the depth, width and free height of the shelf it
+    goes in, as :func:`parse3d.solver.choice.instance_scale` shrinks it, to ``share`` of the
+    free height). None when it has no flat children."""
+    if getattr(library, "load", None) is None:
+        return None
+    foot = {}
+    for e in st.pag.relations:
+        if e.relation != "IN" or e.parent.object != oid or st.pag.supporter(e.child.object) is not e:
+            continue
+        node = st.pag.objects[e.child.object]
+        for c in node.candidates:
+            for slot in range(MOUTH_SLOTS):
+                ka = library.load(c, slot)
+                ext = np.ptp(asset_geometry(ka).hull, axis=0)
+                if _long(ka) or min(ext) > FLAT_THIN * float(np.median(ext)):
+                    continue
+                s_ = _unit_scale(ka) * (float(node.scale[0]) if node.scale is not None else 1.0)
+                foot.setdefault(e.child.object, []).append(tuple(sorted(ext[:2] * s_)))
+    if not foot:
+        return None
+    # the smallest of each child's footprints (by its longer side): the drawn one is shrunk
+    # to the floor within its category's size range (nesting.floor_fit)
+    foot = {k: min(v, key=lambda f: f[1]) for k, v in foot.items()}
+    room = _room_at(st, edge)
+    node = st.pag.objects[oid]
+
+    def takes(a: Asset) -> bool:
+        s_ = _unit_scale(a) * (float(node.scale[0]) if node.scale is not None else 1.0)
+        if room is not None:
+            ext = np.ptp(asset_geometry(a).hull, axis=0)
+            w, d, hgt = room
+            lo, hi = sorted(ext[:2])
+            s_ = min(s_, d / max(lo, 1e-6), w / max(hi, 1e-6),
+                     share * hgt / max(float(ext[2]), 1e-6))
+        return all(takes_footprint(a, s_, f) for f in foot.values())
+
+    return takes
+
+
+def _room_at(st: SolveState, edge: Edge) -> tuple[float, float, float] | None:
+    """``(width, depth, free height)`` of the largest surface ``edge`` puts its child on
+    (its width the longer side), or None when that is not known yet (an unplaced parent, the
+    room)."""
+    if edge.relation not in ("ON", "IN") or edge.parent.is_room_element:
+        return None
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return None
+    if not sups:
+        return None
+    sup = max(sups, key=lambda s_: s_.region.area)
+    x0, y0, x1, y1 = sup.region.bounds
+    d, w = sorted((x1 - x0, y1 - y0))
+    return float(w), float(d), float(sup.clearance)
+
+
+def takes_footprint(container: Asset, scale: float, foot: tuple[float, float]) -> bool:
+    """Whether a floor of ``container`` (at ``scale``) holds an ``a`` x ``b`` footprint
+    ``foot`` round its centre, along its own axes either way round (a book standing in a round
+    basket whose floor is narrower than the book is wide: no)."""
+    a, b = foot
+    for ins in container.internal:
+        if abs(float(ins.surface.normal[2])) < 0.99:
+            continue
+        poly = shapely.affinity.scale(ins.surface.polygon, scale, scale, origin=(0, 0))
+        c = poly.representative_point() if not poly.contains(poly.centroid) else poly.centroid
+        for w, d in ((a, b), (b, a)):
+            if poly.contains(shapely.box(c.x - w / 2, c.y - d / 2, c.x + w / 2, c.y + d / 2)):
+                return True
+    return False
 
 
 def place_standing(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
