@@ -372,8 +372,10 @@ def over_instance(st: SolveState, library, edge: Edge, category: str, asset: Ass
     on a part that reads as a bar (:func:`bar_of`: a towel written ``ON`` a tub's rim), an
     untried soft instance of its candidates (a flat towel), which hangs over it; the instance
     drawn otherwise (also when none of its candidates is soft)."""
-    if soft(asset, 1.0) is not None or edge.relation not in ("ON", "HANGING_BELOW") \
+    if not drapes(asset) or not asset.parts or _largest(asset).material.name not in CLOTH \
+            or soft(asset, 1.0) is not None or edge.relation not in ("ON", "HANGING_BELOW") \
             or bar_of(st, edge, asset, 1.0) is None:
+        # (a cloth thing too thick to drape only: a book is never drawn again as cloth)
         return category, asset
     import zlib
 
