@@ -34,7 +34,11 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     gap = 0.02 if variant == "frameless" else 0.0  # glass boards stand off the wall on pins
     y_board = gap + t / 2
-    zc = h / 2 + 0.06
+    # the front face of the board or its frame, and the lowest point of either: the tray runs below
+    # them and reaches in front of them, so its usable floor lies wholly in front of the frame
+    y_face, below = {"frameless": (gap + t, 0.0), "framed": (y_board + 0.012, 0.012), "wood_frame": (0.025, 0.04)}[variant]
+    drop = max(0.02, below + 0.008)  # the tray's floor top sits a few millimetres under the frame
+    zc = h / 2 + 0.06 + drop - 0.02
     if variant == "frameless":
         parts.append(make_part("board", "board", S.box((w, t, h), center=(0, y_board, zc), bevel=0.003), face))
         for i, (sx, sz) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
@@ -58,12 +62,14 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
                     S.box((fw, 0.025, h), center=(-w / 2 - fw / 2, 0.0125, zc), bevel=0.004),
                     S.box((fw, 0.025, h), center=(w / 2 + fw / 2, 0.0125, zc), bevel=0.004)]
             parts.append(make_part("frame", "frame", bars, wood))
-    # the marker tray: a ledge with a lip along the bottom front edge
+    # the marker tray: a ledge with a lip along the bottom front edge; 7 cm of floor in front of the frame
     tw = min(w * 0.6, 0.8) if variant == "frameless" else w * 0.9
-    z_tray = zc - h / 2 - 0.02
+    z_tray = zc - h / 2 - drop
     y0 = gap + t if variant == "frameless" else 0.0
-    tray = [S.box((tw, 0.07, 0.008), center=(0, y0 + 0.035, z_tray)),
-            S.box((tw, 0.006, 0.022), center=(0, y0 + 0.067, z_tray + 0.011)),
+    td = max(y_face, y0 + 0.006) - y0 + 0.076  # the tray's depth: its back plate, 7 cm of floor, its lip
+    y_use = y0 + td - 0.041  # the middle of the usable floor, in front of the frame
+    tray = [S.box((tw, td, 0.008), center=(0, y0 + td / 2, z_tray)),
+            S.box((tw, 0.006, 0.022), center=(0, y0 + td - 0.003, z_tray + 0.011)),
             S.box((tw, 0.006, 0.04), center=(0, y0 + 0.003, z_tray))]
     parts.append(make_part("tray", "tray", tray, alu))
     # the two brackets screwing the tray's back plate to the wall
@@ -79,15 +85,15 @@ def whiteboard(rng: np.random.Generator, variant: str) -> list[Part]:
                                                                      axis=(0, 1, 0), sections=8), alu))
     # the tray's end caps and the eraser lying in it
     for i, sx in enumerate((-1, 1)):
-        parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.008, 0.07, 0.03), center=(sx * (tw / 2 + 0.004), y0 + 0.035, z_tray + 0.007)),
+        parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.008, td, 0.03), center=(sx * (tw / 2 + 0.004), y0 + td / 2, z_tray + 0.007)),
                                black()))
-    parts.append(make_part("eraser", "eraser", S.box((0.12, 0.05, 0.03), center=(tw / 2 - 0.1, y0 + 0.035, z_tray + 0.004 + 0.015),
+    parts.append(make_part("eraser", "eraser", S.box((0.12, 0.05, 0.03), center=(tw / 2 - 0.1, y_use, z_tray + 0.004 + 0.015),
                                                      bevel=0.004), M.solid((0.15, 0.15, 0.16), "fabric", 0.9)))
     for i in range(int(rng.integers(0, 3))):
         mx = -tw / 2 + 0.1 + i * 0.05
         cap = M.solid([(0.1, 0.1, 0.1), (0.8, 0.15, 0.15), (0.15, 0.3, 0.8)][i], "plastic")
         parts.append(make_part(f"marker_{i}", "marker",
-                               S.cylinder(0.009, 0.13, center=(mx, y0 + 0.035, z_tray + 0.004 + 0.009), axis=(1, 0, 0),
+                               S.cylinder(0.009, 0.13, center=(mx, y_use, z_tray + 0.004 + 0.009), axis=(1, 0, 0),
                                           sections=10), cap))
     return parts
 
