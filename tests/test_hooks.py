@@ -35,5 +35,3 @@ def test_pots_wider_than_the_gap_to_the_wall_hang_out_from_it(seed):
         if pts[:, 1].min() > rail[:, 1].max() + 0.01:  # out from the rail: said so
             (c,) = [c for c in scene.relations if c.child.startswith(oid)]
             assert c.holds_settled is True or "out from it, on its hook" in c.relaxed["blocked"]
-    (cas,) = [c for c in scene.relations if c.child.startswith("casserole")]
-    assert cas.relaxed is not None and "instead" in cas.relaxed
