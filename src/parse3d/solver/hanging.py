@@ -16,6 +16,9 @@ bar a centimetre thick: it hangs over it, held by the rod like a towel on a towe
 Cloth hung on one rack drapes over what already hangs there (:func:`hung_over`): a second coat
 on a coat tree whose hooks sit a hand apart goes on its hook over the first coat's shoulder,
 as real coats do, instead of failing with "jacket1 in the way".
+
+What hangs below a part keeps clear of the walls (:func:`off_wall`): a lidded pot wider than
+the gap between a pot rail and the wall behind it hangs out from the wall on its hook.
 """
 
 from __future__ import annotations
