@@ -16,6 +16,9 @@ bar a centimetre thick: it hangs over it, held by the rod like a towel on a towe
 Cloth hung on one rack drapes over what already hangs there (:func:`hung_over`): a second coat
 on a coat tree whose hooks sit a hand apart goes on its hook over the first coat's shoulder,
 as real coats do, instead of failing with "jacket1 in the way".
+
+What hangs below a part keeps clear of the walls (:func:`off_wall`): a lidded pot wider than
+the gap between a pot rail and the wall behind it hangs out from the wall on its hook.
 """
 
 from __future__ import annotations
@@ -33,7 +36,7 @@ from .geometry import asset_geometry, hull_extents
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "other_hook",
+__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -296,7 +299,11 @@ def _same_label(st: SolveState, edge: Edge) -> list:
 def other_hook(st: SolveState, edge: Edge, sup, loose: str | None = None) -> str | None:
     """``loose`` (why the support edge is already relaxed, or None), and why ``edge``
     (HANGING_BELOW a part) is recorded relaxed when its child hangs on ``sup``, another part of
-    the same label (the named hook taken, or facing a wall)."""
+    the same label (the named hook taken, or facing a wall), or hung out from a part too close
+    to the wall (:func:`off_wall`)."""
+    out = getattr(sup, "out", None)
+    if out is not None:
+        loose = (f"{loose}; " if loose else "") + out
     if edge.relation != "HANGING_BELOW" or edge.parent.is_room_element \
             or edge.parent.part is None or sup.choice is None or getattr(sup, "over", False):
         # hung over a bar: its own reason (over.py)
@@ -374,3 +381,42 @@ def attachment_region(region0, region):
     bottom of a curtain ring or of a rack's tine, a few millimetres wide: the hook hangs from
     it all the same)."""
     return region if region0.is_empty or region0.area < 1e-10 else region0
+
+
+#: Metres: the furthest out from its support a hung thing's attachment may be drawn when its
+#: body, hung right below, would reach into the wall behind (a pot on an S-hook of a rail
+#: a few centimetres off the wall).
+HOOK_REACH = 0.15
+
+
+def off_wall(st: SolveState, sup, region0, Fc: np.ndarray, free, F: np.ndarray):
+    """``(region, reach)``: the positions of a hung child's origin whose attachment (``Fc``,
+    a point) is within ``region0``, in ``free`` (clear of obstacles), with its footprint ``F``
+    inside the room's floor; and the metres its attachment lies out from ``region0`` (0 when
+    some positions are right below it). A pot wider than the gap between a rail and the wall
+    behind hangs out from the wall on its hook, by the least reach that clears it (up to
+    :data:`HOOK_REACH`); None when nothing within that reach clears the walls."""
+    from shapely.geometry import Polygon
+
+    from ..geometry import regions as RG
+    from .state import plane_coords
+
+    floor = st.scene.room.elements["floor"].surface
+    fp = Polygon(plane_coords(sup.surface, floor.to_3d(
+        np.asarray(floor.polygon.exterior.coords))))
+    room = RG.clip(free, RG.erode(fp, [], F))
+    for reach in (0.0, *np.arange(0.01, HOOK_REACH + 1e-9, 0.01)):
+        grown = region0.buffer(float(reach)) if reach else region0
+        region = RG.clip(RG.erode(grown, [], Fc), room)
+        if not region.is_empty and region.area > 1e-10:
+            return region, float(reach)
+    return None
+
+
+def off_wall_reason(edge: Edge, sup, reach: float) -> str:
+    """Why ``edge`` is recorded relaxed when its child hangs ``reach`` metres out from
+    ``sup`` (:func:`off_wall`): what it hangs from is too close to the wall behind it."""
+    c = edge.child.object
+    return (f"{sup.name} is too close to the wall behind it for {c} to hang right below it: "
+            f"{c} hangs {reach * 100:.0f} cm out from it, on its hook (write HANGING_BELOW "
+            f"{c} -> a part further from the wall, or a smaller {c})")

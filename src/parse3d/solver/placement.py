@@ -3,6 +3,7 @@ positions in the feasible region and validate each (relation checks, FCL collisi
 
 from __future__ import annotations
 
+from copy import copy
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -39,6 +40,8 @@ from .hanging import (
     draped_over,
     hang_over,
     hung_lengthwise,
+    off_wall,
+    off_wall_reason,
     other_hook,
     rail_fit,
 )
@@ -643,8 +646,13 @@ def _hanging_region(d: _OnSupport):
                                                         (1e-4, 1e-4))]))
     d.obst = obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(region0, F, 5.0),
                               parts=False)
-    region = RG.clip(RG.erode(region0, [], Fc),
-                     RG.erode(RG.bounding_square(region0, pad=5.0), obst, F))
+    free = RG.erode(RG.bounding_square(region0, pad=5.0), obst, F)
+    # a pot too wide for the gap to the wall behind: out from it on its hook (hanging.py)
+    got = off_wall(st, sup, region0, Fc, free, F)
+    region = got[0] if got is not None else RG.clip(RG.erode(region0, [], Fc), free)
+    if got is not None and got[1] > 0:
+        d.sup = copy(sup)
+        d.sup.out = off_wall_reason(d.edge, sup, got[1])
     depth = hN + d.h
     for lo_h, hi_h, fp in owner_pieces(st, sup, d.exclude, d.height + EPS):
         at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
