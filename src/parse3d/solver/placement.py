@@ -340,10 +340,20 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
     order = rule.order(sups, support_edge, asset, scale, rng)
     reasons = []
     inner: list[bool] = []
-    if cfg.strategy == "constrained" and support_edge.relation == "IN":
+    constrained = cfg.strategy == "constrained"
+
+    def holds(c, sp):
+        return validate_pose(st, c, support_edge, others, sp)
+
+    def slotted():
+        return _fallback(lambda sp: may_slot(st, asset, scale, sp, support_edge),
+                         lambda sp: place_in_slots(st, oid, asset, scale, sp, support_edge,
+                                                   body, rng, holds),
+                         sups, order, reasons, inner)
+
+    if constrained and support_edge.relation == "IN":
         # flat, IN a rack of tines: on edge between two of them first, as a rack holds plates
-        got = _slotted(st, oid, asset, scale, sups, order, support_edge, others, body, rng,
-                       reasons, inner)
+        got = slotted()
         if got is not None:
             return got
     for variant in _wall_choices(st, others, rng):
@@ -361,77 +371,50 @@ def _place_asset(st: SolveState, oid: str, asset: Asset, scale: float, support_e
                                          variant, body, rng, cfg, proposal))
     if got is not None:
         return got
-    if cfg.strategy == "constrained" and any(
-            may_lean(st, asset, scale, sups[int(si)], support_edge) for si in order):
-        # too big to lie flat on a ledge: stand it on its edge, leaning back (sheet music)
-        for si in order:
-            if not may_lean(st, asset, scale, sups[int(si)], support_edge):
-                continue
-            try:
-                return place_leaning(st, oid, asset, scale, sups[int(si)], support_edge, others,
-                                     body, rng, lambda c, sp: validate_pose(st, c, support_edge,
-                                                                            others, sp))
-            except Fail as f:
-                reasons.append(str(f))
-                inner.append(f.intrinsic)
-    if cfg.strategy == "constrained" and any(
-            may_stand_in(st, asset, scale, sups[int(si)], support_edge) for si in order):
-        # too long to lie in a narrow container: stand it up, leaning on the rim (a toothbrush
-        # in a tumbler, flowers in a vase)
-        for si in order:
-            if not may_stand_in(st, asset, scale, sups[int(si)], support_edge):
-                continue
-            try:
-                return place_standing(st, oid, asset, scale, sups[int(si)], support_edge,
-                                      others, body, rng,
-                                      lambda c, sp: validate_pose(st, c, support_edge, others, sp))
-            except Fail as f:
-                reasons.append(str(f))
-                inner.append(f.intrinsic)
-    if cfg.strategy == "constrained" and support_edge.relation != "IN":
-        # flat, ON a rack of tines, and lying there failed: on edge between two of them
-        got = _slotted(st, oid, asset, scale, sups, order, support_edge, others, body, rng,
-                       reasons, inner)
-        if got is not None:
-            return got
-    if cfg.strategy == "constrained" and any(
-            may_lean_on_wall(st, asset, scale, sups[int(si)], support_edge) for si in order):
-        # a thin thing that cannot stand on its edge (a picture frame with no easel on a
-        # chest): stand it on the top leaning back on the wall behind (ledge.py)
-        for si in order:
-            if not may_lean_on_wall(st, asset, scale, sups[int(si)], support_edge):
-                continue
-            try:
-                return place_on_wall(st, oid, asset, scale, sups[int(si)], support_edge,
-                                     others, body, rng,
-                                     lambda c, sp: validate_pose(st, c, support_edge, others, sp))
-            except Fail as f:
-                reasons.append(str(f))
-                inner.append(f.intrinsic)
-    if cfg.strategy == "constrained" and may_stack(st, support_edge):
-        # crowding: rest on an object of the same category already on that support
-        for si in order:
-            try:
-                return place_stacked(st, oid, asset, scale, hull, sups[int(si)], support_edge,
-                                     others, body, rng)
-            except Fail as f:
-                reasons.append(str(f))
-                inner.append(f.intrinsic)
+    if constrained:
+        fallbacks = (
+            # too big to lie flat on a ledge: stand it on its edge, leaning back (sheet music)
+            (lambda sp: may_lean(st, asset, scale, sp, support_edge),
+             lambda sp: place_leaning(st, oid, asset, scale, sp, support_edge, others, body,
+                                      rng, holds)),
+            # too long to lie in a narrow container: stand it up, leaning on the rim (a
+            # toothbrush in a tumbler, flowers in a vase)
+            (lambda sp: may_stand_in(st, asset, scale, sp, support_edge),
+             lambda sp: place_standing(st, oid, asset, scale, sp, support_edge, others, body,
+                                       rng, holds)),
+            # flat, ON a rack of tines, and lying there failed: on edge between two of them
+            (lambda sp: support_edge.relation != "IN"
+             and may_slot(st, asset, scale, sp, support_edge),
+             lambda sp: place_in_slots(st, oid, asset, scale, sp, support_edge, body, rng,
+                                       holds)),
+            # a thin thing that cannot stand on its edge (a picture frame with no easel on a
+            # chest): stand it on the top leaning back on the wall behind (ledge.py)
+            (lambda sp: may_lean_on_wall(st, asset, scale, sp, support_edge),
+             lambda sp: place_on_wall(st, oid, asset, scale, sp, support_edge, others, body,
+                                      rng, holds)),
+            # crowding: rest on an object of the same category already on that support
+            (lambda sp: may_stack(st, support_edge),
+             lambda sp: place_stacked(st, oid, asset, scale, hull, sp, support_edge, others,
+                                      body, rng)),
+        )
+        for may, place in fallbacks:
+            got = _fallback(may, place, sups, order, reasons, inner)
+            if got is not None:
+                return got
     raise Fail(reasons[0] if len(reasons) == 1 else "; ".join(dict.fromkeys(reasons)),
                intrinsic=all(inner))
 
 
-def _slotted(st: SolveState, oid: str, asset: Asset, scale: float, sups: list, order,
-             edge: Edge, others: list[Edge], body: Body, rng: np.random.Generator,
-             reasons: list, inner: list):
-    """The child stood on edge in the slots of a rack of tines (solver/slots.py) on the first
-    support that has them, or None (the reasons of what was tried added to ``reasons``)."""
+def _fallback(may, place, sups: list, order, reasons: list, inner: list):
+    """``place(support)`` on the first support, in ``order``, that ``may(support)`` admits and
+    where the placement holds, or None; the reason of each that failed is added to
+    ``reasons`` (and whether it was intrinsic to ``inner``)."""
     for si in order:
-        if not may_slot(st, asset, scale, sups[int(si)], edge):
+        sup = sups[int(si)]
+        if not may(sup):
             continue
         try:
-            return place_in_slots(st, oid, asset, scale, sups[int(si)], edge, body, rng,
-                                  lambda c, sp: validate_pose(st, c, edge, others, sp))
+            return place(sup)
         except Fail as f:
             reasons.append(str(f))
             inner.append(f.intrinsic)

@@ -30,7 +30,7 @@ from .geometry import asset_geometry
 from .ledge import accept
 from .nesting import pieces_drop
 from .state import SolveState
-from .support import Support, support_candidates
+from .support import Support, best_support
 
 __all__ = ["end_width", "floor_takes", "may_stand_in", "place_standing", "stands_upright", "standing_instance",
            "STAND_TILT_DEG", "SHALLOW_TILT_DEG", "LONG", "lies_down", "TOPPLE_DEG", "STICK"]
@@ -402,13 +402,9 @@ def _room_at(st: SolveState, edge: Edge) -> tuple[float, float, float] | None:
     room)."""
     if edge.relation not in ("ON", "IN") or edge.parent.is_room_element:
         return None
-    try:
-        sups = support_candidates(st, edge)
-    except Fail:
+    sup = best_support(st, edge, key=lambda s_: s_.region.area)
+    if sup is None:
         return None
-    if not sups:
-        return None
-    sup = max(sups, key=lambda s_: s_.region.area)
     x0, y0, x1, y1 = sup.region.bounds
     d, w = sorted((x1 - x0, y1 - y0))
     return float(w), float(d), float(sup.clearance)

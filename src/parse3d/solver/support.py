@@ -308,6 +308,16 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     return list(st.memo(owner, key, lambda: _support_candidates(st, edge)))
 
 
+
+def best_support(st: SolveState, edge: Edge, key) -> Support | None:
+    """The candidate support of ``edge`` (:func:`support_candidates`) with the largest
+    ``key(support)``, or None when it has none yet (an unplaced parent, none that fits)."""
+    try:
+        sups = support_candidates(st, edge)
+    except Fail:
+        return None
+    return max(sups, key=key) if sups else None
+
 def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     scene = st.scene
     ref = edge.parent

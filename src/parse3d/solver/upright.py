@@ -24,10 +24,9 @@ from ..assets.model import Asset
 from ..measure.geometry import ON_EDGE_THIN
 from ..pag.model import Edge
 from ..pag.refs import format_ref
-from .config import Fail
 from .geometry import asset_geometry
 from .state import SolveState
-from .support import support_candidates
+from .support import best_support
 
 __all__ = ["FILED_THIN", "SLAB_FILL", "filed_flat", "stands_in_row", "upright_axis", "filed_instance",
            "lies_in_cradle"]
@@ -92,13 +91,9 @@ def _crowded(st: SolveState, edge: Edge, asset: Asset, scale: float, shape: bool
     parent = st.scene.objects.get(p.object)
     if parent is None or not parent.placed or (shape and not filed_flat(asset)):
         return None
-    try:
-        sups = support_candidates(st, edge)
-    except Fail:
+    sup = best_support(st, edge, key=lambda s: s.region.area)
+    if sup is None:
         return None
-    if not sups:
-        return None
-    sup = max(sups, key=lambda s: s.region.area)
     # the support's extent along the owner's right and front (the shelf's width and depth)
     R, s = parent.rotation, sup.surface
     x0, y0, x1, y1 = sup.region.bounds
@@ -177,14 +172,8 @@ def _cradled(st: SolveState, edge: Edge, asset: Asset, scale: float):
     parent = st.scene.objects.get(p.object)
     if parent is None or not parent.placed:
         return None
-    try:
-        sups = support_candidates(st, edge)
-    except Fail:
-        return None
-    if not sups:
-        return None
-    sup = max(sups, key=lambda s: s.clearance)
-    return sup if sup.clearance < ext[2] * scale else None
+    sup = best_support(st, edge, key=lambda s: s.clearance)
+    return sup if sup is not None and sup.clearance < ext[2] * scale else None
 
 
 def _depth(st: SolveState, owner: str) -> float:
