@@ -1,8 +1,10 @@
-"""Two surfaces parallel to the support written ALIGNED_WITH (two desks' tops flush) and units
-side by side against one wall (counters and a stove, two bookcases).
+"""Two surfaces parallel to the support written ALIGNED_WITH (two desks' tops flush), fronts in
+line while the backs are against one wall (lockers in a row), and units side by side against
+one wall (counters and a stove, two bookcases).
 
-The tops are a height, met by the instance and its scale; when none comes level the relation
-is recorded relaxed with the height difference and the object keeps its other relations. A
+The tops are a height, and the fronts a depth, met by the instance and its scale; when none
+comes in line the relation is recorded relaxed with the difference and the object keeps its
+other relations. A
 unit beside another touches the neighbour's outer part of the label named, or, where another
 part of the neighbour reaches past it (a countertop over its cabinet), that part, the contact
 recorded relaxed naming it; every unit keeps its wall.
@@ -73,6 +75,38 @@ def test_a_scale_that_cannot_come_level_relaxes_only_the_level(seed):
     assert level.relaxed is not None and "mm below that of desk_a" in level.relaxed["blocked"]
     assert level.residual_settled["distance"] < -0.05  # lower by more than 5 cm, as recorded
     for text in ("AGAINST desk_b:tabletop@back -> wall_0", "SIDE_OF desk_b -> desk_a"):
+        assert checks[text].holds_settled is True, (text, checks[text].residual_settled)
+    _nothing_fell(scene)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_fronts_in_line_with_backs_against_the_wall(seed):
+    scene = _settled(load_pag(ROOMS / "fronts_in_line.json"), seed)
+    assert all(o.placed for o in scene.objects.values()), [o.id for o in scene.failed]
+    checks = _checks(scene)
+    for a, b in (("locker_b", "locker_a"), ("locker_c", "locker_b")):
+        c = checks[f"ALIGNED_WITH {a}:door@front -> {b}:door@front"]
+        assert c.holds_settled is True, (a, c.residual_settled)
+        assert checks[f"AGAINST {a}:body@back -> wall_0"].holds_settled is True
+        assert checks[f"SIDE_OF {a} -> {b}"].holds_settled is True
+    _nothing_fell(scene)
+
+
+@pytest.mark.parametrize("seed", (0, 1))
+def test_a_front_that_cannot_come_in_line_relaxes_only_that(seed):
+    data = json.loads((ROOMS / "fronts_in_line.json").read_text())
+    for o in data["objects"]:
+        if o["id"] == "locker_b":
+            o["scale"] = [0.8, 0.85]  # shallower than any locker at full size
+    scene = _settled(PAG.from_dict(data), seed)
+    assert all(o.placed for o in scene.objects.values()), [o.id for o in scene.failed]
+    checks = _checks(scene)
+    c = checks["ALIGNED_WITH locker_b:door@front -> locker_a:door@front"]
+    assert c.holds_settled is False
+    assert c.relaxed is not None and "nearer wall_0 than that of locker_a" in c.relaxed["blocked"]
+    assert c.residual_settled["distance"] < -0.02
+    for text in ("AGAINST locker_b:body@back -> wall_0", "SIDE_OF locker_b -> locker_a",
+                 "AGAINST locker_c:body@back -> wall_0", "SIDE_OF locker_c -> locker_b"):
         assert checks[text].holds_settled is True, (text, checks[text].residual_settled)
     _nothing_fell(scene)
 

@@ -9,9 +9,13 @@ counter_b:countertop@top -> counter_a:countertop@top``) are coplanar at one heig
 a line: no position on the support changes it. The region is left alone and the height is met
 by the instance and its scale (:func:`level_miss`, :func:`level_scale`, used when the instance
 is drawn); when none comes level, the relation is placed as written but not checked against
-the pose, and recorded relaxed with the height difference (:func:`level_plan`)."""
+the pose, and recorded relaxed with the height difference (:func:`level_plan`). Likewise a
+surface parallel to the wall the child is ``AGAINST`` (a counter's front in line with a
+stove's, both backs against the wall): a depth, met by the instance."""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
 
 import numpy as np
 from shapely.geometry.base import BaseGeometry
@@ -38,7 +42,7 @@ from .base import (
 )
 
 __all__ = ["AlignedWith", "OppositeTo", "ParallelTo", "LEVEL_RELATIONS", "LEVEL_SCALE",
-           "level_edges", "level_miss", "level_scale", "level_plan"]
+           "Level", "level_edges", "child_height", "level_miss", "level_scale", "level_plan"]
 
 
 class AlignmentRule(RelationRule):
@@ -63,6 +67,8 @@ class Coplanar(AlignmentRule):
         if _parallel(ctx.sup.surface.normal, sB.normal):
             return region  # a height, met by the instance and its scale (level_plan)
         sB, g, parts, pts, base = touching_frame(ctx, e)
+        if _along(region, g):
+            return region  # a depth from the wall another contact holds it on (level_plan)
         nB = sB.normal
         label = e.child.surface or e.spec.child_surface
         pa = ctx.R @ child_surface_point(parts, label, ctx.scale)
@@ -111,6 +117,18 @@ LEVEL_RELATIONS = ("ALIGNED_WITH", "OPPOSITE_TO")
 LEVEL_SCALE = 0.1
 
 
+def _along(region: BaseGeometry, g: np.ndarray) -> bool:
+    """Whether ``region`` is already a line (another contact clipped it) parallel to the line
+    of normal ``g`` (plane coordinates): the two would meet nowhere or everywhere."""
+    if region.geom_type not in ("LineString", "MultiLineString"):
+        return False
+    line = region if region.geom_type == "LineString" else region.geoms[0]
+    xy = np.asarray(line.coords, float)
+    d = xy[-1] - xy[0]
+    nd = float(np.linalg.norm(d))
+    return nd > 1e-9 and abs(float(d @ g)) < 1e-3 * nd * float(np.linalg.norm(g))
+
+
 def _parallel(n_s: np.ndarray, nB: np.ndarray) -> bool:
     """Whether a parent surface normal ``nB`` is parallel to the support normal ``n_s``
     (within 0.06 deg): no position on the support moves the child's surface toward it."""
@@ -119,15 +137,43 @@ def _parallel(n_s: np.ndarray, nB: np.ndarray) -> bool:
     return float(np.linalg.norm(nB - (nB @ n_s) * n_s)) < 1e-3
 
 
-def level_edges(st: SolveState, edges: list[Edge], leave=frozenset()
-                ) -> list[tuple[int, Edge, float]]:
+@dataclass(frozen=True)
+class Level:
+    """A level relation of one object: its named surface must come to ``target`` metres from
+    ``plane`` along the plane's normal, measured from the child's contact with that plane (its
+    extreme point along ``contact``, asset frame); ``on_support``: the plane is the child's
+    support (a height, which the scale may meet), else the parent of an ``AGAINST`` of the
+    child (a depth from a wall: fronts in line, backs against it)."""
+
+    index: int
+    edge: Edge
+    target: float
+    contact: np.ndarray
+    on_support: bool
+    plane: str
+    vertical: bool
+
+
+def level_edges(st: SolveState, edges: list[Edge], leave=frozenset()) -> list[Level]:
     """The level relations among one object's ``edges`` (``pag.edges_of``: the support
-    first) but the indices in ``leave``: ``(index, edge, height)`` for each
-    :data:`LEVEL_RELATIONS` edge whose parent surface is parallel to the child's support,
-    ``height`` the parent surface's height above the support plane (m, along its normal)."""
+    first) but the indices in ``leave``: each :data:`LEVEL_RELATIONS` edge whose parent
+    surface is parallel to the child's support, or to the parent surface of one of its
+    ``AGAINST`` edges (the two lines would be parallel: ``counter:body@front`` in line with a
+    stove's front while both backs are against the wall)."""
+    planes = []  # (surface, child contact normal, gap, on support, name)
     sup = support_plane(st, edges[0])
-    if sup is None:
-        return []
+    if sup is not None:
+        planes.append((sup, edges[0].child.surface or edges[0].spec.child_surface, 0.0, True,
+                       edges[0].parent.object))
+    for j, f in enumerate(edges[1:], 1):
+        if j in leave or f.relation != "AGAINST":
+            continue
+        try:
+            P = parent_surface_world(st, f.parent, f.spec.parent_surface)[0]
+        except Fail:
+            continue
+        planes.append((P, f.child.surface or f.spec.child_surface, float(f.param("gap")), False,
+                       f.parent.object))
     out = []
     for i, e in enumerate(edges[1:], 1):
         if i in leave or e.relation not in LEVEL_RELATIONS:
@@ -136,24 +182,28 @@ def level_edges(st: SolveState, edges: list[Edge], leave=frozenset()
             sB = parent_surface_world(st, e.parent, e.spec.parent_surface)[0]
         except Fail:
             continue
-        if _parallel(sup.normal, sB.normal):
-            out.append((i, e, float((sB.origin - sup.origin) @ sup.normal)))
+        for P, label, gap, on_sup, name in planes:
+            if _parallel(P.normal, sB.normal):
+                out.append(Level(i, e, float((sB.origin - P.origin) @ P.normal) - gap,
+                                 np.array(SURFACES[label], float), on_sup, name,
+                                 abs(float(P.normal[2])) > 0.9))
+                break
     return out
 
 
-def child_height(asset: Asset, e: Edge, support_edge: Edge) -> float | None:
-    """Height (m, unscaled) of the surface ``e`` names on the child above the child's support
-    contact (its extreme point along the support edge's child surface normal, asset frame);
+def child_height(asset: Asset, lv: Level) -> float | None:
+    """Distance (m, unscaled) of the surface ``lv`` names on the child from the child's
+    contact with the level's plane (its extreme point along ``lv.contact``, asset frame);
     None when the named part is missing or its surface is not parallel to that contact."""
-    n_c = np.array(SURFACES[support_edge.child.surface or support_edge.spec.child_surface], float)
+    e = lv.edge
     label = e.child.surface or e.spec.child_surface
-    if abs(abs(float(np.array(SURFACES[label], float) @ n_c)) - 1.0) > 1e-6:
+    if abs(abs(float(np.array(SURFACES[label], float) @ lv.contact)) - 1.0) > 1e-6:
         return None
     parts = parts_for(asset, e.child)
     if not parts:
         return None
     pa = child_surface_point(parts, label, 1.0)
-    return float(np.max(part_points(asset.parts) @ n_c)) - float(pa @ n_c)
+    return float(np.max(part_points(asset.parts) @ lv.contact)) - float(pa @ lv.contact)
 
 
 def _scale_bounds(node: ObjectNode, asset: Asset, scale: float) -> tuple[float, float]:
@@ -171,21 +221,22 @@ def _scale_bounds(node: ObjectNode, asset: Asset, scale: float) -> tuple[float, 
 
 def level_scale(st: SolveState, node: ObjectNode, asset: Asset, scale: float,
                 edges: list[Edge], leave=frozenset()) -> float:
-    """``scale`` changed so that the first level relation's named child surface comes to its
-    parent's height, or as near as the scales :func:`_scale_bounds` allows; ``scale`` when
-    the object has no level relation."""
-    for _, e, target in level_edges(st, edges, leave):
-        h = child_height(asset, e, edges[0])
+    """``scale`` changed so that the first level relation on the child's support (a height),
+    else the first one from a wall (a depth), brings its named child surface to its parent's,
+    or as near as the scales :func:`_scale_bounds` allows; ``scale`` when the object has
+    none."""
+    for lv in sorted(level_edges(st, edges, leave), key=lambda x: not x.on_support):
+        h = child_height(asset, lv)
         if h is not None and h > 1e-6:
             a, b = _scale_bounds(node, asset, scale)
-            return float(np.clip(target / h, a, b))
+            return float(np.clip(lv.target / h, a, b))
     return scale
 
 
 def level_miss(st: SolveState, node: ObjectNode, edges: list[Edge], leave=frozenset()):
     """A key ranking instances by how far (m) their named surfaces stay from their parents'
-    heights at the best scale :func:`level_scale` gives them (inf: the part is missing), or
-    None when the object has no level relation."""
+    heights (or depths) at the scale :func:`level_scale` gives them (inf: the part is
+    missing), or None when the object has no level relation."""
     lv = level_edges(st, edges, leave)
     if not lv:
         return None
@@ -195,9 +246,9 @@ def level_miss(st: SolveState, node: ObjectNode, edges: list[Edge], leave=frozen
         size = max(asset_geometry(asset).size, 1e-6)
         s = level_scale(st, node, asset, float(np.clip(1.0, lo / size, hi / size)), edges, leave)
         miss = 0.0
-        for _, e, target in lv:
-            h = child_height(asset, e, edges[0])
-            miss = max(miss, float("inf") if h is None else abs(target - s * h))
+        for x in lv:
+            h = child_height(asset, x)
+            miss = max(miss, float("inf") if h is None else abs(x.target - s * h))
         return miss
 
     return key
@@ -207,21 +258,29 @@ def level_plan(st: SolveState, asset: Asset, scale: float, edges: list[Edge],
                leave=frozenset()) -> dict[int, tuple[Edge, str]]:
     """For one object's ``edges`` but ``leave``, the level relations that ``asset`` at
     ``scale`` does not bring within half the checks' distance tolerance of their parents'
-    heights: index -> (the edge placed instead: the same, not rejecting a pose; why, recorded
-    as the relation's relaxation, naming the height difference)."""
+    heights (or depths): index -> (the edge placed instead: the same, not rejecting a pose;
+    why, recorded as the relation's relaxation, naming the difference)."""
     out = {}
-    for i, e, target in level_edges(st, edges, leave):
-        h = child_height(asset, e, edges[0])
+    for lv in level_edges(st, edges, leave):
+        h = child_height(asset, lv)
         if h is None:
             continue
-        d = target - scale * h
+        d = lv.target - scale * h
         if abs(d) <= DIST_TOL / 2:
             continue
+        e = lv.edge
         label = e.child.surface or e.spec.child_surface
-        out[i] = (measured_after(e), (
-            f"{e.relation} {e.child} -> {e.parent}: the {label} of {e.child.object} stands "
-            f"{abs(d) * 1000:.0f} mm {'below' if d > 0 else 'above'} that of {e.parent.object} "
-            f"(asset {asset.asset_id} at scale {scale:.3f}; no instance looked at comes level "
-            f"within {LEVEL_SCALE:.0%} of its size) (write a scale range on {e.child.object} "
-            f"that reaches it, or PARALLEL_TO)"))
+        if lv.vertical:
+            where = f"stands {abs(d) * 1000:.0f} mm {'below' if d > 0 else 'above'} that of"
+        else:
+            where = (f"lies {abs(d) * 1000:.0f} mm {'nearer' if d > 0 else 'further from'} "
+                     f"{lv.plane} than that of")
+        node = st.pag.objects[e.child.object]
+        written = "" if node.scale is None else \
+            f", its scale {node.scale[0]:g}-{node.scale[1]:g} as written"
+        out[lv.index] = (measured_after(e), (
+            f"{e.relation} {e.child} -> {e.parent}: the {label} of {e.child.object} {where} "
+            f"{e.parent.object} (asset {asset.asset_id} at scale {scale:.3f}{written}; no "
+            f"instance looked at comes in line within {LEVEL_SCALE:.0%} of its size) (write "
+            f"a scale range on {e.child.object} that reaches it, or PARALLEL_TO)"))
     return out
