@@ -21,10 +21,11 @@ import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ...assets.model import Asset, Part
+from ...geometry import regions as RG
 from ...measure.checks import DIST_TOL
 from ...pag.model import Edge, ObjectNode
 from ...relations import PART, SURFACES
-from ..config import Fail
+from ..config import Fail, SolverConfig
 from ..geometry import asset_geometry, part_points
 from ..state import SolveState, parts_for
 from .base import (
@@ -73,6 +74,8 @@ class Coplanar(AlignmentRule):
         label = e.child.surface or e.spec.child_surface
         pa = ctx.R @ child_surface_point(parts, label, ctx.scale)
         c = float(sB.origin @ nB) - float((base + pa) @ nB)
+        if e.parent.object == ctx.sup.owner:
+            region = _to_edge(region, g, c)
         return clip_to_line(ctx, e, region, g, c)
 
 
@@ -115,6 +118,23 @@ LEVEL_RELATIONS = ("ALIGNED_WITH", "OPPOSITE_TO")
 #: The most the scale of an instance may change (either way) to bring its named surface level
 #: with the parent's, within its category's size range (and the node's ``scale`` when written).
 LEVEL_SCALE = 0.1
+
+
+#: How far past the free positions a surface flush with its own support's side may take the
+#: child: the margin objects keep from an object support's edge (``SolverConfig.margin``).
+EDGE_SLACK = SolverConfig.margin + 1e-4
+
+
+def _to_edge(region: BaseGeometry, g: np.ndarray, c: float) -> BaseGeometry:
+    """``region`` grown to reach the line ``g . x = c`` when it misses it by no more than
+    :data:`EDGE_SLACK`: a child flush with the side of the top it stands on (a keyboard's front
+    with the desk's) stands at the edge, not the margin kept from it."""
+    nrm = float(np.linalg.norm(g))
+    ln = RG.line(np.zeros(2), g / nrm, c / nrm)
+    if region.is_empty or not RG.clip(region, ln).is_empty:
+        return region
+    d = float(region.distance(ln))
+    return region.buffer(d + 1e-6, join_style="mitre") if d <= EDGE_SLACK else region
 
 
 def _along(region: BaseGeometry, g: np.ndarray) -> bool:
