@@ -52,7 +52,7 @@ from .reach import (
     stands_to_lean,
 )
 
-__all__ = ["EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "COVER_THICK", "COVER_FLAT",
+__all__ = ["outer_part", "EPS", "DIST_TOL", "PENETRATION_TOL", "ANGLE_TOL_DEG", "COVER_THICK", "COVER_FLAT",
            "covering_thickness", "Check", "CheckContext",
            "CHECK_RULES", "check_rule", "check_edge", "check_relations", "object_centroid",
            "world_points", "select_parts", "end_pads", "END_DEPTH"]
@@ -227,7 +227,20 @@ def _surface(scene: Scene, obj: PlacedObject | None, ref: Ref, label: str,
         return None
     if ref.part is None:
         return surface_from_bbox(label, asset_geometry(obj.asset).bounds).transformed(T)
-    return _world_surface(parts[0].surfaces[label], T)
+    return _world_surface(outer_part(parts, label).surfaces[label], T)
+
+
+def outer_part(parts: list, label: str):
+    """The part among ``parts`` (one label's, in ``#k`` order) whose surface ``label`` lies
+    furthest out along that surface's normal (asset frame; the first within 1 mm): a
+    bookcase's ``side_panel@right`` is the right panel's outer face, not the left panel's
+    inner one."""
+    if len(parts) == 1:
+        return parts[0]
+    n = np.array(SURFACES[label], float)
+    far = [float(p.surfaces[label].origin @ n) for p in parts]
+    top = max(far)
+    return next(p for p, f in zip(parts, far, strict=True) if f >= top - 1e-3)
 
 
 _WORLD: dict[tuple, tuple] = {}

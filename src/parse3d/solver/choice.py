@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 import operator
+import zlib
 from dataclasses import replace
 
 import numpy as np
@@ -14,7 +15,7 @@ from shapely.geometry import Polygon
 
 from ..assets.model import Asset
 from ..geometry import regions as RG
-from ..measure.checks import BOARD_LABELS, board_parts
+from ..measure.checks import BOARD_LABELS, DIST_TOL, board_parts
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
@@ -26,6 +27,7 @@ from .hanging import edge_up, rail_scale, thinness
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
 from .rules import RULES
+from .rules.alignment import level_miss
 from .standing import floor_takes
 from .state import SolveState, plane_coords
 from .support import _flat_cached, _flat_enough, cover_part, filled, support_candidates
@@ -35,7 +37,7 @@ __all__ = ["THIN_HANG", "hung_edge_up", "HEADROOM_FIT", "SURFACE_AXES", "extent_
            "CONTENTS_AREA", "contents_scale", "edge_text", "touching", "requirements", "lacks",
            "FREE_TOP", "FLAT_TOL", "lies_flat", "top_lies_flat", "TOP_BAND", "RIM_WIDTH", "RIM_OPENING", "rounded_rim",
            "free_top", "LAYER", "RANKED_SLOTS", "boards_hold", "too_tall_failure", "room_failure",
-           "alternative_instance", "flush_edges", "part_overhang", "draw_instance",
+           "alternative_instance", "level_instance", "flush_edges", "part_overhang", "draw_instance",
            "instance_scale"]
 
 
@@ -466,6 +468,25 @@ def part_overhang(asset: Asset, e: Edge) -> float:
     n = np.asarray(SURFACES[e.child.surface or e.spec.child_surface], float)
     return float(np.max(part_points(asset.parts) @ n) - np.max(part_points(ps) @ n))
 
+
+
+def level_instance(st: SolveState, library, oid: str, edges: list[Edge], leave, reqs: list,
+                   tried: set[str], category: str, asset: Asset) -> tuple[str, Asset]:
+    """For an object with surfaces to bring level with its parents' (two countertops flush:
+    :mod:`.rules.alignment`), the instance of every pool slot whose named surfaces come nearest
+    their parents' heights at a scale it allows, when ``asset`` does not come within half the
+    checks' tolerance; ``(category, asset)`` unchanged otherwise. The lookup draws from a
+    generator of its own (seeded from the object id), not the solve's."""
+    node = st.pag.objects[oid]
+    key = level_miss(st, node, edges, leave)
+    if key is None or key(asset) <= DIST_TOL / 2:
+        return category, asset
+    rng = np.random.default_rng(zlib.crc32(f"level:{oid}".encode()))
+    alt = alternative_instance(library, node.candidates, reqs, tried, rng, key=key, every=True)
+    if alt is None or key(alt[1]) >= key(asset):
+        return category, asset
+    tried.add(alt[1].asset_id)
+    return alt
 
 
 def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Generator,

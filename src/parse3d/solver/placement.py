@@ -27,6 +27,7 @@ from .choice import (
     hung_edge_up,
     instance_scale,
     lacks,
+    level_instance,
     requirements,
 )
 from .collision import Body, cached_body
@@ -65,6 +66,8 @@ from .resting import rests_on
 from .rotation import solve_rotation
 from .rows import in_a_row, walled
 from .rules import RULES
+from .rules.alignment import level_plan, level_scale
+from .rules.contact import overhung_plan
 from .sampling import (
     HANGS_OFF,
     ROLL_EDGE,
@@ -190,6 +193,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             if alt is not None and key(alt[1]) < key(asset):
                 category, asset = alt
                 tried.add(asset.asset_id)
+        if keep is None and attempt == 0:  # surfaces level with their parents' (alignment.py)
+            category, asset = level_instance(st, library, oid, edges, skip, reqs, tried,
+                                             category, asset)
         if keep is None and attempt == 0:  # nests, has room on its top (fit.py)
             category, asset = instance_for(st, library, oid, support_edge, category, asset,
                                            lambda a, r=reqs: lacks(a, r) is None, tried, rng)
@@ -211,6 +217,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             reasons.append(short)
             intrinsic.append(False)
             continue
+        if keep is None or attempt > 0:  # a surface level with its parent's (alignment.py)
+            scale = level_scale(st, node, asset, scale, edges, skip)
         # a soft thing ON a narrow top, or HANGING_BELOW a part that does not face down,
         # hangs over it, folded to fit (over.py); cloth ON a rod hangs below it (hanging.py)
         over = None if draped_over(st.scene, support_edge, asset) is not None \
@@ -255,6 +263,9 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             placed_edge = whole_object(support_edge)
         # a contact named on a part another part overhangs: flush by that part (flush.py)
         flushed = flush_plan(asset, scale, edges, {*skip, *loosen}) if cfg.relax else {}
+        if cfg.relax:  # a surface that does not come level with its parent's (alignment.py)
+            flushed.update(level_plan(st, asset, scale, edges, {*skip, *flushed}))
+            flushed.update(overhung_plan(st, asset, scale, edges, skip, flushed, loosen))
         placed = [flushed[i][0] if i in flushed else loosen.get(i, e)
                   for i, e in enumerate(edges[1:], 1) if i not in skip]
         try:

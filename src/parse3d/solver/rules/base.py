@@ -11,7 +11,7 @@ contact", "symmetric") stay on the relation data in :mod:`parse3d.relations`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 from shapely.geometry.base import BaseGeometry
@@ -19,7 +19,7 @@ from shapely.geometry.base import BaseGeometry
 from ...assets.model import Asset
 from ...geometry import regions as RG
 from ...geometry.surfaces import Surface, surface_from_bbox
-from ...measure.checks import object_centroid
+from ...measure.checks import object_centroid, outer_part
 from ...pag.model import PAG, Edge
 from ...pag.refs import Ref
 from ...relations import SURFACES
@@ -30,7 +30,7 @@ from ..support import Support
 
 __all__ = ["RelationRule", "RULES", "register", "Orientation", "RegionContext",
            "contact_normal", "parent_surface_world", "parent_frame", "emptied",
-           "free_room_text", "turn_to_face", "touching_frame", "clip_to_line"]
+           "free_room_text", "turn_to_face", "touching_frame", "clip_to_line", "support_plane", "measured_after"]
 
 
 @dataclass
@@ -190,7 +190,7 @@ def parent_surface_world(st: SolveState, ref: Ref, default_label: str) -> tuple[
     if ref.part is None:  # the whole object's face: the bbox face of the asset
         s = surface_from_bbox(label, asset_geometry(parent.asset).bounds)
         return s.transformed(parent.transform()), "", label
-    p = parts[0]
+    p = outer_part(parts, label)  # a label several parts share: the outermost face
     return p.surfaces[label].transformed(parent.transform()), p.name, label
 
 
@@ -273,3 +273,28 @@ def clip_to_line(ctx: RegionContext, e: Edge, region: BaseGeometry, gg: np.ndarr
     if new.is_empty:
         raise emptied(e, ctx.sup, f"where {e.child} touches {e.parent}, {free_room_text(region)}")
     return new
+
+
+def support_plane(st: SolveState, support_edge: Edge) -> Surface | None:
+    """The plane the child's support edge puts it on, when it is known before the support is
+    chosen: a room element's, or the named surface of an ``ON`` parent; else None."""
+    ref = support_edge.parent
+    if ref.is_room_element:
+        el = st.scene.room.elements.get(ref.object)
+        return None if el is None else el.surface
+    if support_edge.relation != "ON":
+        return None
+    try:
+        return parent_surface_world(st, ref, support_edge.spec.parent_surface)[0]
+    except Fail:
+        return None
+
+
+def measured_after(e: Edge) -> Edge:
+    """``e`` as written, marked so that its check does not reject a pose (the mark
+    :func:`.layout.relaxed_to_nearest` reads, as for a layout relation relaxed to its nearest
+    positions): the relation is measured on the placed object and recorded relaxed when it
+    does not hold."""
+    out = replace(e)
+    object.__setattr__(out, "_nearest", True)
+    return out

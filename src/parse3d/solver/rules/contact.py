@@ -9,26 +9,30 @@ import numpy as np
 from shapely.geometry.base import BaseGeometry
 
 from ...assets.model import Asset
-from ...measure.checks import EPS
+from ...geometry.surfaces import Surface
+from ...measure.checks import DIST_TOL, EPS
 from ...measure.reach import STAND, stands_to_lean
 from ...pag.model import Edge
 from ...relations import PART, SURFACES
 from ..config import Fail
 from ..flush import excess, flush_reason, over_tolerance, touching_parts
 from ..geometry import asset_geometry, part_points
-from ..state import SolveState
+from ..state import SolveState, parts_for
 from .base import (
     Orientation,
     RegionContext,
     RelationRule,
     clip_to_line,
     contact_normal,
+    measured_after,
+    parent_surface_world,
     register,
+    support_plane,
     touching_frame,
     turn_to_face,
 )
 
-__all__ = ["Against", "LeaningAgainst"]
+__all__ = ["Against", "LeaningAgainst", "parent_overhang", "overhung_plan"]
 
 
 class ContactRule(RelationRule):
@@ -63,7 +67,12 @@ class Against(ContactRule):
         pa = pts[int(np.argmax(pts @ nA_w))]
         gap = e.param("gap") + EPS
         check_extreme(ctx, e)
-        c = float(sB.origin @ nB) + gap - float((base + pa) @ nB)
+        # another part of the parent reaching past the named one at the child's heights (a
+        # countertop over its cabinet's side): the child stops at that part
+        n = ctx.sup.surface.normal
+        hts = (base + (asset_geometry(ctx.asset).hull * ctx.scale) @ ctx.R.T) @ n
+        over = parent_overhang(ctx.st, e, sB, float(hts.min()), float(hts.max()), n)[0]
+        c = float(sB.origin @ nB) + max(gap, over + EPS) - float((base + pa) @ nB)
         return clip_to_line(ctx, e, region, g, c)
 
 
@@ -107,3 +116,74 @@ def check_extreme(ctx: RegionContext, e: Edge) -> None:
     if e.child.part is None or not over_tolerance(excess(ctx.asset, e, ctx.scale)):
         return
     raise Fail(flush_reason(ctx.asset, e, ctx.scale), intrinsic=True)
+
+
+def parent_overhang(st: SolveState, e: Edge, sB: Surface, lo: float, hi: float,
+                    n: np.ndarray) -> tuple[float, str]:
+    """How far (m) another part of ``e``'s parent object reaches past the named parent surface
+    ``sB`` (world) toward the child, among the parts reaching into the child's heights ``lo``
+    to ``hi`` along the support normal ``n`` (world), and that part's label: a countertop 1 cm
+    over its cabinet's side, where a unit beside it touches the countertop, not the cabinet.
+    ``(0, "")`` for a room element, a parent named without a part, or none reaching past."""
+    ref = e.parent
+    if ref.is_room_element or ref.part is None:
+        return 0.0, ""
+    pobj = st.scene.objects.get(ref.object)
+    if pobj is None or not pobj.placed:
+        return 0.0, ""
+    named = {p.name for p in parts_for(pobj.asset, ref)}
+    T = pobj.transform()
+    d0 = float(sB.origin @ sB.normal)
+    best, who = 0.0, ""
+    for p in pobj.asset.parts:
+        if p.name in named:
+            continue
+        P = part_points([p]) @ T[:3, :3].T + T[:3, 3]
+        h = P @ n
+        if h.max() <= lo + EPS or h.min() >= hi - EPS:
+            continue  # above or below the child: it passes under or over it
+        reach = float(np.max(P @ sB.normal)) - d0
+        if reach > best:
+            best, who = reach, p.label
+    return best, who
+
+
+def overhung_plan(st: SolveState, asset: Asset, scale: float, edges: list[Edge], leave,
+                  placed: dict[int, tuple[Edge, str]], loosen: dict[int, Edge]
+                  ) -> dict[int, tuple[Edge, str]]:
+    """For one object's ``edges`` (the support first) but ``leave``, the ``AGAINST`` contacts
+    whose named parent part another part of the parent overhangs toward the child by more
+    than the ``gap`` written, at the heights of ``asset`` at ``scale`` on its support (units
+    side by side whose countertops reach past their cabinets): index -> (the edge placed
+    instead: as placed so far, ``placed`` or ``loosen``, not rejecting a pose, the child
+    flush with the overhanging part by :meth:`Against.region`; why, recorded as the
+    relation's relaxation, after the reason already in ``placed``)."""
+    sup = support_plane(st, edges[0])
+    if sup is None:
+        return {}
+    n = sup.normal
+    n_c = np.array(SURFACES[edges[0].child.surface or edges[0].spec.child_surface], float)
+    hp = asset_geometry(asset).hull @ n_c
+    lo = float(sup.origin @ n)
+    hi = lo + scale * float(hp.max() - hp.min())
+    out = {}
+    for i, e in enumerate(edges[1:], 1):
+        if i in leave or e.relation != "AGAINST" or e.parent.part is None \
+                or e.parent.is_room_element:
+            continue
+        try:
+            sB = parent_surface_world(st, e.parent, e.spec.parent_surface)[0]
+        except Fail:
+            continue
+        over, who = parent_overhang(st, e, sB, lo, hi, n)
+        if over <= float(e.param("gap")) + DIST_TOL:
+            continue
+        side = e.parent.surface or e.spec.parent_surface
+        po = e.parent.object
+        why = (f"{e.relation} {e.child} -> {e.parent}: {po}:{who} reaches {over:.3f} m further "
+               f"{side} than {po}:{e.parent.part}, so {e.child.object} touches {po}:{who}: "
+               f"name {po}:{who}@{side} or {po}@{side}")
+        before = placed.get(i)
+        edge = before[0] if before is not None else loosen.get(i, e)
+        out[i] = (measured_after(edge), why if before is None else f"{before[1]}; {why}")
+    return out
