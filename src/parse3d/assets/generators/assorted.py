@@ -421,11 +421,12 @@ def fireplace(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(_b(f"corbel_{k}", "corbel", (0.06, 0.06, 0.1), (sx * (w / 2 - 0.05), d / 2 + 0.03, h - 0.06 - 0.05),
                       M.wood(rng), bevel=0.004))
     # the frieze board under the mantel shelf, and the plinth blocks the surround's legs stand on
+    # (proud of the legs at the front and the sides, flush with them at the back, on the wall)
     trim = out[3].material
     out.append(_b("frieze", "frieze", (w - 0.2, 0.02, 0.08), (0, d / 2 + 0.01, h - 0.06 - 0.04), trim))
     for k, sx in enumerate((-1, 1)):
         out.append(_b(f"plinth_{k}", "plinth", ((w - ow) / 2 + 0.02, d + 0.02, 0.1),
-                      (sx * (w / 2 - (w - ow) / 4), 0.0, hearth_h + 0.05), mat))
+                      (sx * (w / 2 - (w - ow) / 4), 0.01, hearth_h + 0.05), mat))
     if variant == "electric":
         out.append(_b("screen", "screen", (ow, 0.01, oh), (0, d / 2 - 0.005, hearth_h + oh / 2), M.glass(rng)))
         # the heater's outlet grille below the screen

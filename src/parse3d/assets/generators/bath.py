@@ -289,18 +289,21 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
             parts += [revolute(f"door_{i}_hinge", "body", f"door_{i}", axis=(0, 0, 1), origin=(xh, y_face - 0.018, dz0),
                                opens=OPEN_DOOR if side == 1 else -OPEN_DOOR),
                       mount(f"door_{i}", f"handle_{i}")]
+    # the countertop overhangs the front and the sides; its back is flush with the carcass's
+    # (and its backsplash stands on it), as the vanity stands against the wall by its back
     ct_w, ct_d = w + 0.02, d + 0.02
+    ct_y = (ct_d - d) / 2
     basin_y = 0.03
     rb = min(0.2, w * 0.3, d * 0.38)
     if variant == "undermount":
         hole_w, hole_d = rb * 2 * 1.15, rb * 2 * 0.9
-        top = _holed_top(ct_w, ct_d, top_t, h - top_t, hole_w, hole_d, basin_y)
+        top = _holed_top(ct_w, ct_d, top_t, h - top_t, hole_w, hole_d, basin_y - ct_y).moved((0, ct_y, 0))
         depth = rng.uniform(0.14, 0.18)
         prof = [(rb * 0.55, 0.0), (rb * 0.85, depth * 0.5), (rb * 1.1, depth)]
         basin = _oval_vessel(prof, 0.015, 1.15, 0.92, h - top_t - depth).moved((0, basin_y, 0))
         spout_z = h
     else:
-        top = bevel_box((ct_w, ct_d, top_t), center=(0, 0, h - top_t / 2), bevel=0.005)
+        top = bevel_box((ct_w, ct_d, top_t), center=(0, ct_y, h - top_t / 2), bevel=0.005)
         depth = rng.uniform(0.12, 0.16)
         rv = min(rb, 0.2)
         if rng.random() < 0.5:
@@ -313,7 +316,7 @@ def bathroom_vanity(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("basin", "basin", basin, basin_mat))
     if rng.random() < 0.6:
         parts.append(make_part("backsplash", "backsplash", bevel_box(
-            (ct_w, 0.02, 0.1), center=(0, -ct_d / 2 + 0.01, h + 0.05), bevel=0.004), stone))
+            (ct_w, 0.02, 0.1), center=(0, ct_y - ct_d / 2 + 0.01, h + 0.05), bevel=0.004), stone))
     y_tap = basin_y - (rb + 0.05 if variant == "undermount" else rb + 0.04)
     tall = 0.12 if variant == "undermount" else 0.12 + depth
     reach = basin_y - y_tap - 0.03

@@ -116,9 +116,14 @@ def _legs(rng: np.random.Generator, w: float, d: float, h_leg: float, mat: Mater
     return parts
 
 
-def _case_top(w: float, d: float, z: float, t: float, mat: Material) -> Part:
+def _case_top(w: float, d: float, z: float, t: float, mat: Material, *, side: float = 0.01,
+              front: float = 0.015) -> Part:
+    """The ``top_panel`` of a ``w`` x ``d`` case at height ``z``, ``t`` thick: it overhangs
+    both sides by ``side`` and the front by ``front`` (metres) and is flush with the back, as
+    on a chest made to stand against a wall by its back (``body@back``)."""
     return make_part("top_panel", "top_panel",
-                     bevel_box((w, d, t), center=(0, 0, z + t / 2), bevel=min(0.006, t / 3)),
+                     bevel_box((w + 2 * side, d + front, t), center=(0, front / 2, z + t / 2),
+                               bevel=min(0.006, t / 3)),
                      mat)
 
 
@@ -139,7 +144,7 @@ def nightstand(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     body_h = h - top_t - z0
     parts: list[Part] = []
     parts += carcass_panels(w, d, body_h, t, mat, z0=z0, top=False)
-    parts.append(_case_top(w + 0.02, d + 0.015, h - top_t, top_t, mat))
+    parts.append(_case_top(w, d, h - top_t, top_t, mat))
     if variant == "legged":
         parts += _legs(rng, w, d, z0, mat, splay=True)
     else:
@@ -193,7 +198,7 @@ def dresser(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     z0 = rng.uniform(0.12, 0.18) if legged else rng.uniform(0.06, 0.09)
     body_h = h - top_t - z0
     parts = [*carcass_panels(w, d, body_h, t, mat, z0=z0, top=False),
-             _case_top(w + 0.02, d + 0.015, h - top_t, top_t, mat)]
+             _case_top(w, d, h - top_t, top_t, mat)]
     if legged:
         parts += _legs(rng, w, d, z0, mat, splay=False)
     else:

@@ -97,23 +97,26 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
     parts: list[Part] = []
     head_t = rng.uniform(0.06, 0.1)
     y_head = -d / 2 - head_t / 2
+    # a platform's deck and a storage bed's base are as wide as the headboard at their head:
+    # the bed goes flush along a wall by its frame's side (``frame@left``/``frame@right``)
+    fw = w + 2 * rail_t + 0.04
     if variant == "platform":
         z_top = rng.uniform(0.16, 0.28)
         plinth_h = z_top * 0.35
-        base = S.box((w + 2 * rail_t - 0.16, d - 0.16, plinth_h), center=(0, 0, plinth_h / 2))
-        deck = cushion(w + 2 * rail_t, d + rail_t, z_top - plinth_h,
+        base = S.box((fw - 0.16, d - 0.16, plinth_h), center=(0, 0, plinth_h / 2))
+        deck = cushion(fw, d + rail_t, z_top - plinth_h,
                        (0, rail_t / 2, (z_top + plinth_h) / 2), round_xy=0.03, round_z=0.015)
         # the recessed plinth and the upholstered deck on it (``frame`` covers both)
         parts.append(make_part("plinth", "plinth", base, cloth))
         parts.append(make_part("frame", "deck", deck, cloth))
         # the glides under the plinth's corners, set into it
-        bx, by = (w + 2 * rail_t - 0.16) / 2 - 0.03, (d - 0.16) / 2 - 0.03
+        bx, by = (fw - 0.16) / 2 - 0.03, (d - 0.16) / 2 - 0.03
         nylon = M.solid((0.85, 0.85, 0.82), "plastic", 0.4)
         parts += [make_part(f"glide_{k}", "glide", S.cylinder(0.015, 0.005, center=(sx * bx, sy * by, 0.0025), sections=10), nylon)
                   for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)])]
         head_h = rng.uniform(0.9, 1.25)
         parts.append(make_part("headboard", "headboard", cushion(
-            w + 2 * rail_t + 0.04, head_t, head_h, (0, y_head, head_h / 2),
+            fw, head_t, head_h, (0, y_head, head_h / 2),
             round_xy=0.02, round_z=0.04), head_mat))
     elif variant == "four_poster":
         z_top = rng.uniform(0.35, 0.45)
@@ -151,17 +154,17 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
         parts.append(make_part("footboard", "footboard", foot, wood))
     else:  # storage
         z_top = rng.uniform(0.38, 0.48)
-        base = bevel_box((w + 2 * rail_t, d + rail_t, z_top - 0.03),
+        base = bevel_box((fw, d + rail_t, z_top - 0.03),
                      center=(0, rail_t / 2 - 0.025, (z_top - 0.03) / 2), bevel=0.006)
         base_mat = cloth if upholstered else wood
         parts.append(make_part("frame", "frame", base, base_mat))
         y_face = d / 2 + rail_t - 0.025
         n_dr = 2
-        dw = (w + 2 * rail_t - 0.12) / n_dr
+        dw = (fw - 0.12) / n_dr
         dh = (z_top - 0.03) * 0.62
         zc = 0.05 + dh / 2
         for k in range(n_dr):
-            x = -(w + 2 * rail_t) / 2 + 0.06 + dw * (k + 0.5)
+            x = -fw / 2 + 0.06 + dw * (k + 0.5)
             parts.append(make_part(f"drawer_{k}", "drawer", drawer_shape(
                 x, zc, dw - 0.02, dh, y_face + 0.02, 0.5), base_mat))
             parts.append(make_part(f"handle_{k}", "handle",
@@ -173,7 +176,7 @@ def bed(rng: np.random.Generator, variant: str) -> list[Part]:
                                        S.cylinder(0.02, 0.015, center=(x + sx * (dw / 2 - 0.06), y_face - 0.25, 0.02),
                                                   axis=(1, 0, 0), sections=10), M.solid((0.1, 0.1, 0.1), "rubber", 0.8)))
         head_h = rng.uniform(1.0, 1.3)
-        head = cushion(w + 2 * rail_t + 0.04, head_t, head_h, (0, y_head, head_h / 2),
+        head = cushion(fw, head_t, head_h, (0, y_head, head_h / 2),
                        round_xy=0.02, round_z=0.03 if upholstered else 0.008)
         parts.append(make_part("headboard", "headboard", head, head_mat))
     parts.append(_mattress("mattress", w - 0.01, d - 0.02, t_mat,

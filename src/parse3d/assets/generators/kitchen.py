@@ -62,8 +62,11 @@ def kitchen_counter(rng: np.random.Generator, variant: str) -> list[Part]:
     z_top = H_COUNTER - top_t
     mat = M.wood(rng) if rng.random() < 0.6 else M.solid(M.jitter(rng, (0.9, 0.9, 0.88), 0.03)[:3], "wood")
     hmat = M.metal(rng)
-    body = [S.box((t, d, z_top), center=(-w / 2 + t / 2, 0, z_top / 2)),
-            S.box((t, d, z_top), center=(w / 2 - t / 2, 0, z_top / 2)),
+    # the end panels are 1 cm thicker than the carcass's sides, flush with the countertop's
+    # ends: units stand side by side (or against a wall) by their sides, the top a continuous run
+    end_t = t + 0.01
+    body = [S.box((end_t, d, z_top), center=(-w / 2 - 0.01 + end_t / 2, 0, z_top / 2)),
+            S.box((end_t, d, z_top), center=(w / 2 + 0.01 - end_t / 2, 0, z_top / 2)),
             S.box((w - 2 * t, d - 0.01, t), center=(0, 0.005, KICK_H + t / 2)),
             S.box((w - 2 * t, 0.01, z_top - KICK_H - t), center=(0, -d / 2 + 0.005, (KICK_H + t + z_top) / 2)),
             S.box((w - 2 * t, 0.08, t), center=(0, d / 2 - 0.04, z_top - t / 2))]

@@ -66,7 +66,9 @@ def piano(rng: np.random.Generator, variant: str) -> list[Part]:
                 S.box((0.05, d - cd, 0.7), center=(w / 2 - 0.025, yb + cd + (d - cd) / 2, 0.35)),
                 S.box((w - 0.1, d - cd - 0.02, 0.07), center=(0, yb + cd + (d - cd - 0.02) / 2, 0.665))]
         parts.append(make_part("body", "body", body, case))
-        parts.append(make_part("lid", "lid", S.box((w + 0.02, cd + 0.02, 0.02), center=(0, yb + cd / 2, h - 0.01),
+        # the lid overhangs the front and the sides; its back is flush with the cabinet's, which
+        # stands against the wall
+        parts.append(make_part("lid", "lid", S.box((w + 0.02, cd + 0.02, 0.02), center=(0, yb + cd / 2 + 0.01, h - 0.01),
                                                     bevel=0.004), case))
         parts += _keyboard(-w / 2 + 0.06, w / 2 - 0.06, d / 2 - 0.01, 0.725, kd, ivory, ebony)
         parts.append(make_part("music_rest", "music_rest",

@@ -271,14 +271,22 @@ def wall_cabinet(rng: np.random.Generator, variant: str) -> list[Part | Joint]:
     return parts
 
 
-def _lip(w: float, d: float, z: float, hgt: float, t: float) -> list[S.Shape]:
-    """Four bars of height ``hgt`` standing on level ``z`` just outside a ``w x d`` deck."""
+def _lip(w: float, d: float, z: float, hgt: float, t: float, *, y_back: float | None = None) -> list[S.Shape]:
+    """Four bars of height ``hgt`` standing on level ``z`` just outside a ``w x d`` deck; with
+    ``y_back`` the deck reaches back to ``y_back`` and the back bar stands on its back edge."""
     zc = z + hgt / 2 - 0.015
     hh = hgt + 0.015
+    y0 = -d / 2 if y_back is None else y_back + t  # where the side bars meet the back bar
     return [S.box((w + 2 * t, t, hh), center=(0, d / 2 + t / 2, zc)),
-            S.box((w + 2 * t, t, hh), center=(0, -d / 2 - t / 2, zc)),
-            S.box((t, d, hh), center=(w / 2 + t / 2, 0, zc)),
-            S.box((t, d, hh), center=(-w / 2 - t / 2, 0, zc))]
+            S.box((w + 2 * t, t, hh), center=(0, y0 - t / 2, zc)),
+            S.box((t, d / 2 - y0, hh), center=(w / 2 + t / 2, (d / 2 + y0) / 2, zc)),
+            S.box((t, d / 2 - y0, hh), center=(-w / 2 - t / 2, (d / 2 + y0) / 2, zc))]
+
+
+def _sleeve(x: float, y: float, z: float) -> S.Shape:
+    """The tapered plastic sleeve clamped round a wire rack's post at ``(x, y)`` under a shelf
+    whose underside is at ``z``."""
+    return S.frustum(0.017, 0.0145, 0.035, center=(x, y, z - 0.035), sections=10)
 
 
 @register("storage_rack", parts=("shelf", "post"), extra_parts=("beam", "foot", "sleeve", "bracket"), size_range=(1.0, 2.1),
@@ -291,9 +299,9 @@ def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
     lip_h = 0.03 if variant == "wire" else 0.04
     z_first = rng.uniform(0.12, 0.2)
     levels = np.linspace(z_first, h - 0.06, n)
+    corners = [(sx * (w / 2 + 0.01), sy * (d / 2 + 0.01), sx, sy) for sx, sy in [(-1, -1), (1, -1), (-1, 1), (1, 1)]]
     parts = []
-    for i, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
-        x, y = sx * (w / 2 + 0.01), sy * (d / 2 + 0.01)
+    for i, (x, y, sx, sy) in enumerate(corners):
         if variant == "wire":
             post = S.cylinder(0.0125, h - 0.02, center=(x, y, 0.01 + (h - 0.02) / 2), sections=12)
             parts.append(make_part(f"foot_{i}", "foot", S.frustum(0.016, 0.013, 0.02, center=(x, y, 0),
@@ -303,19 +311,27 @@ def storage_rack(rng: np.random.Generator, variant: str) -> list[Part]:
             post = S.union([S.box((a, th, h), center=(x - sx * (a / 2 - 0.01), y + sy * (0.01 - th / 2), h / 2)),
                             S.box((th, a, h), center=(x + sx * (0.01 - th / 2), y - sy * (a / 2 - 0.01), h / 2))])
         parts.append(make_part(f"post_{i}", "post", post, steel))
+    # each shelf reaches back to the backs of the posts (a wire rack's to its sleeves'), its back
+    # beam standing on its back edge, so the rack stands flush against a wall by its shelves
+    # (``shelf@back``); the deck ends at the beam (a wall round what the shelf holds) and a
+    # strip of the shelf runs on under the beam
+    x0, y0 = corners[0][:2]
+    y_back = min([float(p.bounds[0, 1]) for p in parts]
+                 + ([float(_sleeve(x0, y0, 0.0).mesh.bounds[0, 1])] if variant == "wire" else []))
     for i, z in enumerate(levels):
         tk = 0.008 if variant == "wire" else 0.016
         top = z + (0.0 if variant == "wire" else -0.02)
-        parts.append(make_part(f"shelf_{i}", "shelf", S.box((w, d, tk), center=(0, 0, top - tk / 2)), deck))
-        parts.append(make_part(f"beam_{i}", "beam", _lip(w, d, top, lip_h, 0.01 if variant == "wire" else 0.02),
-                               steel))
+        t = 0.01 if variant == "wire" else 0.02
+        y_in = y_back + t
+        parts.append(make_part(f"shelf_{i}", "shelf",
+                               [S.box((w, d / 2 - y_in, tk), center=(0, (d / 2 + y_in) / 2, top - tk / 2)),
+                                S.box((w, t, tk), center=(0, y_back + t / 2, top - tk / 2))], deck))
+        parts.append(make_part(f"beam_{i}", "beam", _lip(w, d, top, lip_h, t, y_back=y_back), steel))
         # where the shelf meets each post: a tapered plastic sleeve clamped round a wire rack's
         # post, a gusset bracket bolted inside an angle post's corner
-        for j, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
-            x, y = sx * (w / 2 + 0.01), sy * (d / 2 + 0.01)
+        for j, (x, y, sx, sy) in enumerate(corners):
             if variant == "wire":
-                parts.append(make_part(f"sleeve_{4 * i + j}", "sleeve", S.frustum(0.017, 0.0145, 0.035, center=(x, y, top - tk - 0.035),
-                                                                                sections=10), black()))
+                parts.append(make_part(f"sleeve_{4 * i + j}", "sleeve", _sleeve(x, y, top - tk), black()))
             else:
                 parts.append(make_part(f"bracket_{4 * i + j}", "bracket",
                                        S.prism([(x, y), (x - sx * 0.06, y), (x, y - sy * 0.06)], top - tk - 0.006, top - tk), steel))
@@ -333,11 +349,15 @@ def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
                                                              0.4, 0.3)
     sides = (1, -1) if variant == "double_sided" else (1,)
     pt = 0.05  # upright / back-panel assembly depth
-    parts = [make_part("back_panel", "back_panel", S.box((w - 0.08, 0.012, h - 0.15), center=(0, 0, 0.15 + (h - 0.15) / 2)),
+    # a wall gondola's back panel is flush with the backs of its uprights (it stands against
+    # the wall by it); an island gondola's stands between the uprights, shelved both ways
+    y_bp = 0.0 if variant == "double_sided" else -pt / 2 + 0.006
+    parts = [make_part("back_panel", "back_panel", S.box((w - 0.08, 0.012, h - 0.15), center=(0, y_bp, 0.15 + (h - 0.15) / 2)),
                        steel)]
     for i, x in enumerate((-w / 2 + 0.02, w / 2 - 0.02)):
         parts.append(make_part(f"post_{i}", "post", S.box((0.04, pt, h - 0.01), center=(x, 0, (h - 0.01) / 2), bevel=0.003), steel))
-        parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.042, pt + 0.002, 0.01), center=(x, 0, h - 0.005)),
+        # the cap closing the upright's top, 1 mm proud of its sides
+        parts.append(make_part(f"end_cap_{i}", "end_cap", S.box((0.042, pt, 0.01), center=(x, 0, h - 0.005)),
                                black()))
     base_h = rng.uniform(0.1, 0.15)
     bd = sd + 0.1
@@ -346,16 +366,18 @@ def grocery_shelf(rng: np.random.Generator, variant: str) -> list[Part]:
     k = 0
     for si, s in enumerate(sides):
         y_in = s * 0.006
+        # the decks reach back to the back panel's face (their fronts where an island's are)
+        y_back = y_bp + s * 0.006
         kick = S.box((w - 0.08, 0.02, base_h - 0.02), center=(0, s * (bd - 0.004), (base_h - 0.02) / 2))
         parts.append(make_part(f"base_{si}", "base", kick, steel))
         for j, z in enumerate(levels):
             dd = bd if j == 0 else sd
-            y0, y1 = sorted((y_in, y_in + s * dd))
-            deck = S.box((w - 0.08, dd, 0.02), center=(0, (y0 + y1) / 2, z - 0.01))
+            y0, y1 = sorted((y_back, y_in + s * dd))
+            deck = S.box((w - 0.08, y1 - y0, 0.02), center=(0, (y0 + y1) / 2, z - 0.01))
             shapes = [deck]
             if j > 0:
                 for x in (-w / 2 + 0.06, w / 2 - 0.06):
-                    yb = y_in + s * 0.002
+                    yb = y_back + s * 0.002
                     shapes.append(S.hull([[x - 0.005, yb, z - 0.02], [x + 0.005, yb, z - 0.02],
                                           [x - 0.005, y_in + s * dd * 0.8, z - 0.02],
                                           [x + 0.005, y_in + s * dd * 0.8, z - 0.02],
