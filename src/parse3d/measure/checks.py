@@ -44,6 +44,7 @@ from .reach import (
     WIDE_LEAN_DEG,
     face_slabs,
     lean_range,
+    lean_up,
     mounted_parts,
     nearest_in_prism,
     piece_data,
@@ -1136,9 +1137,9 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
                             piece_data(ctx.parent.asset, pp + on), Tp)
         if d <= DIST_TOL:
             gap = d
-    # a flat child standing on its front edge to lean (a pillow) has its back as its up axis
-    up_local = np.array([0, -1.0, 0]) if stands_to_lean(child.asset, ctx.scene.pag, child.id) \
-        else np.array([0, 0, 1.0])
+    # a flat child standing on its front edge to lean (a pillow) has its back as its up axis, a
+    # plate written ON its rim's front the opposite of that face
+    up_local = lean_up(child.asset, ctx.scene.pag, child.id)
     up = T[:3, :3] @ up_local / child.scale
     tilt = float(np.degrees(angle_between(up, [0, 0, 1.0])))
     face = float(np.degrees(angle_between(_child_normal(child, _child_label(ctx), settled),

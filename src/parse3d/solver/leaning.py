@@ -26,6 +26,7 @@ from ..measure.reach import (
     mounted_parts,
     nearest_in_prism,
     piece_data,
+    pieces_distance,
     stands_to_lean,
 )
 from ..pag.model import Edge
@@ -447,6 +448,8 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     T[:3, :3] = R * scale
     T[:3, 3] = start
     reach = SLIDE_BACK + 0.05
+    if e.parent.part is not None:
+        return _slide_onto_part(st, e, asset, T, parent, d, reach, t)
     # the rays of the mesh vertices first (fast), then the pieces near where they meet
     ray = drop_distance((asset_geometry(asset).hull * scale) @ R.T + start, asset, T,
                         st.hulls[parent.id], parent.asset, parent.transform(), d)
@@ -459,6 +462,33 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     if got >= SLIDE_BACK + 0.05:
         return t
     return start + max(got - EPS, 0.0) * d
+
+
+def _slide_onto_part(st: SolveState, e: Edge, asset: Asset, T: np.ndarray, parent, d: np.ndarray,
+                     reach: float, t: np.ndarray) -> np.ndarray:
+    """:func:`lean_slide` onto the parent's named part (and what is mounted on its face) alone:
+    its other parts in the way (a plate rail along a hutch's shelf, in front of the back panel
+    the plate leans on) are the collision test's to judge, not a stop short of the face."""
+    Tp = parent.transform()
+    own = parts_for(parent.asset, e.parent)
+    faces = _faces(st, e)
+    on = mounted_parts(parent, own, faces[0][0], Tp)[0] if faces else []
+    mine = piece_data(asset, asset.parts)
+    theirs = piece_data(parent.asset, own + [p for p in on if p not in own])
+
+    def hits(shift: float) -> bool:
+        Ts = np.array(T, float)
+        Ts[:3, 3] += shift * d
+        return pieces_distance(mine, Ts, theirs, Tp, limit=1e-3) <= 0.0
+
+    if not hits(reach):
+        return t
+    lo, hi = 0.0, reach
+    if not hits(0.0):
+        while hi - lo > 5e-4:
+            mid = 0.5 * (lo + hi)
+            lo, hi = (lo, mid) if hits(mid) else (mid, hi)
+    return T[:3, 3] + max(lo - EPS, 0.0) * d
 
 
 def lean_fit(st: SolveState, oid: str, edges: list[Edge], asset: Asset, scale: float) -> float:
