@@ -136,6 +136,8 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
                 ok.append(th)
             elif ahead > worst[0]:
                 worst = (ahead, th)
+        if ok and sup.owner != "room":  # resting on an object: where its base lands on it
+            ok = _landing(st, sup, asset, scale, R, k, named, faces[0], ok) or ok
         if ok and stood:
             return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
@@ -158,6 +160,69 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     # not intrinsic, so the search may re-place the parent
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {ranges[-1][0]:g}-"
                f"{ranges[-1][1]:g} deg {why}")
+
+
+def _landing(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.ndarray,
+             k: np.ndarray, named, face, tilts: list[float]) -> list[float]:
+    """The tilts among ``tilts`` at which the child, its named part touching ``face``, can
+    rest its base on ``sup`` (an object's), clear of the owner's parts rising through the
+    base (a padded bar across a guitar stand's cradle): resting on an object and leaning on
+    another, the tilt fixes how far from the face the base stands (a guitar's neck on its
+    stand's neck rest puts its body in the cradle only at some tilts)."""
+    s = sup.surface
+    sB, (zlo, zhi), _, _, front = face
+    g = np.array([s.u @ sB.normal, s.v @ sB.normal])
+    if np.linalg.norm(g) < 1e-6:
+        return tilts
+    region = _base_region(st, sup)
+    if region.is_empty:
+        return tilts
+    hull = asset_geometry(asset).hull * scale
+    z0 = float(s.origin[2])
+    p0 = plane_coords(s, np.array([[0.0, 0.0, z0]]))[0]
+    out = []
+    for th in tilts:
+        Rt = axis_angle(k, th) @ R
+        Y = hull @ Rt.T
+        T = np.eye(4)
+        T[:3, :3] = Rt * scale
+        T[2, 3] = z0 - float(Y[:, 2].min())
+        got = nearest_in_prism(named, T, sB.normal, sB.origin, [(_UP, zlo, zhi)])
+        if got is None:
+            continue
+        base = Y[Y[:, 2] <= Y[:, 2].min() + BASE_BAND]
+        Fb = np.c_[base @ s.u, base @ s.v]
+        Fb = RG.convex_footprint(np.vstack([Fb, Fb + 1e-4, Fb + [1e-4, 0.0]]))
+        c = Fb.mean(axis=0)
+        free = shapely.affinity.translate(RG.erode(region, [], Fb - c), -float(c[0]),
+                                          -float(c[1]))
+        if free.is_empty:
+            continue
+        gn = float(np.linalg.norm(g))
+        ln = RG.line(p0, g / gn, (EPS + front - got[0]) / gn)
+        if not RG.clip(free, ln).is_empty:
+            out.append(th)
+    return out
+
+
+def _base_region(st: SolveState, sup: Support):
+    """``sup``'s region, 3 mm in from its edge, less the footprints of its owner's parts that
+    rise through the base of what rests on it (a padded bar across a guitar stand's cradle, a
+    plate rail along a shelf), in the support plane's coordinates."""
+    s = sup.surface
+    owner = st.scene.objects.get(sup.owner)
+    region = sup.region.buffer(-3e-3, join_style="mitre")
+    if owner is None or region.is_empty:
+        return region
+    T = owner.transform()
+    z0 = float(s.origin[2])
+    cut = []
+    for p in owner.asset.parts:
+        P = part_points([p]) @ T[:3, :3].T + T[:3, 3]
+        if float(P[:, 2].max()) <= z0 + BASE_BAND or float(P[:, 2].min()) >= z0 + BASE_BAND:
+            continue
+        cut.append(shapely.Polygon(RG.convex_footprint(plane_coords(s, P))).buffer(1e-4))
+    return region.difference(shapely.union_all(cut)) if cut else region
 
 
 #: Degrees from up within which a surface still holds what is ON it (the support test's).
