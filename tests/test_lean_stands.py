@@ -1,8 +1,9 @@
-"""Things resting on one part of an object and leaning on another (tests/data/rooms/
-guitars_in_stands): a guitar stands by its body in a stand's two cradle arms and leans by its
-neck on the stand's neck rest. Its centre of mass lies behind the cradle, between the cradle
-and the neck rest: the base and the lean hold it together, so its support holds while the
-lean touches, and not once it stops touching."""
+"""Things leaning on an object's face (tests/data/rooms/guitars_in_stands,
+cushions_against_chair_backs, ladder_against_a_bookcase): a guitar stands by its body in a
+stand's cradle, leaning by its neck on the neck rest, at a tilt whose base lands in the
+cradle; a cushion at the back of an armchair's seat overhangs it toward the back, held by
+the seat and the back together; a ladder leans on a whole bookcase, its rails resting behind
+the plane of the bookcase's foremost point. All stay so after settling."""
 
 from __future__ import annotations
 
@@ -11,7 +12,9 @@ from dataclasses import replace
 
 import pytest
 
+from parse3d.geometry.surfaces import surface_from_bbox
 from parse3d.measure import check_edge
+from parse3d.measure.reach import face_slabs, nearest_in_prism, piece_data
 from test_rooms import solved
 
 GUITARS = {"guitar_a": "stand_a", "guitar_b": "stand_b"}
@@ -69,3 +72,28 @@ def test_a_cushion_overhanging_the_seat_is_held_by_what_it_leans_on():
                 assert "centre of mass outside" in bare.detail, bare.detail
                 held.append((seed, cid))
     assert held, "no cushion overhangs its seat: the rule is not exercised"
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_ladder_leans_on_a_whole_bookcase(seed):
+    scene = solved("ladder_against_a_bookcase", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    lean = next(c for c in scene.relations if c.relation == "LEANING_AGAINST")
+    assert lean.relaxed is None and lean.holds_settled is True, lean.residual_settled
+    assert 9.0 <= lean.residual_settled["angle_deg"] <= 21.0
+
+
+def test_ladder_rests_behind_the_bookcase_fronts_plane():
+    """The front of a whole bookcase is the plane of its foremost point (a door's handle): the
+    ladder's rails pass behind it, resting on the doors or the top, and the check takes their
+    exact distance to the bookcase there."""
+    behind = []
+    for seed in (0, 1, 2):
+        scene = solved("ladder_against_a_bookcase", seed)
+        case, ladder = scene.objects["bookcase"], scene.objects["ladder"]
+        face = surface_from_bbox("front", case.asset.bounds).transformed(case.transform(True))
+        got = nearest_in_prism(piece_data(ladder.asset, ladder.asset.parts_by_label("rail")),
+                               ladder.transform(True), face.normal, face.origin,
+                               face_slabs(face))
+        behind.append(got[0])
+    assert min(behind) < -1e-3, behind

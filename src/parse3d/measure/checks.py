@@ -1186,11 +1186,12 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
                      f"{ctx.edge.child} is not in front of {ctx.edge.parent} (beside or past "
                      f"the face's extent)")
     gap = near[0]
-    if not -PENETRATION_TOL <= gap <= DIST_TOL and ctx.parent is not None \
-            and ctx.edge.parent.part is not None:
+    if not -PENETRATION_TOL <= gap <= DIST_TOL and ctx.parent is not None:
         # past the face's plane, resting on the parent's real surface behind it (a sofa's back
-        # cushion slanted back from the front of its box), or in front of it on what is
-        # mounted on it (an amplifier's grille and knobs): the exact distance decides
+        # cushion slanted back from the front of its box; a whole bookcase's front, open
+        # between its shelves, a ladder's rail resting on a shelf's edge behind it), or in
+        # front of it on what is mounted on it (an amplifier's grille and knobs): the exact
+        # distance decides
         pp = select_parts(ctx.parent, ctx.edge.parent)
         Tp = ctx.parent.transform(settled)
         on, _ = mounted_parts(ctx.parent, pp, sB, Tp)
