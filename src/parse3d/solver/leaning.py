@@ -33,7 +33,7 @@ from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points
 from .rotation import _pressing, parent_surface_world
-from .state import SolveState, parts_for, plane_coords
+from .state import SolveState, parts_for, plane_coords, plane_key
 from .support import Support
 
 __all__ = ["lean_tilt", "lean_line", "lean_fit", "lean_samples", "involves_object", "LEAN_GAP"]
@@ -209,10 +209,18 @@ def _base_region(st: SolveState, sup: Support):
     """``sup``'s region, 3 mm in from its edge, less the footprints of its owner's parts that
     rise through the base of what rests on it (a padded bar across a guitar stand's cradle, a
     plate rail along a shelf), in the support plane's coordinates."""
-    s = sup.surface
     owner = st.scene.objects.get(sup.owner)
+    if owner is None:
+        return sup.region.buffer(-3e-3, join_style="mitre")
+    return st.memo(sup.owner, ("lean_base", plane_key(sup.surface), sup.choice, sup.spans),
+                   lambda: _clear_of_parts(sup, owner))
+
+
+def _clear_of_parts(sup: Support, owner):
+    """:func:`_base_region` for the owner's current pose."""
+    s = sup.surface
     region = sup.region.buffer(-3e-3, join_style="mitre")
-    if owner is None or region.is_empty:
+    if region.is_empty:
         return region
     T = owner.transform()
     z0 = float(s.origin[2])
@@ -540,20 +548,18 @@ def _slide_onto_part(st: SolveState, e: Edge, asset: Asset, T: np.ndarray, paren
     on = mounted_parts(parent, own, faces[0][0], Tp)[0] if faces else []
     mine = piece_data(asset, asset.parts)
     theirs = piece_data(parent.asset, own + [p for p in on if p not in own])
-
-    def hits(shift: float) -> bool:
-        Ts = np.array(T, float)
-        Ts[:3, 3] += shift * d
-        return pieces_distance(mine, Ts, theirs, Tp, limit=1e-3) <= 0.0
-
-    if not hits(reach):
-        return t
-    lo, hi = 0.0, reach
-    if not hits(0.0):
-        while hi - lo > 5e-4:
-            mid = 0.5 * (lo + hi)
-            lo, hi = (lo, mid) if hits(mid) else (mid, hi)
-    return T[:3, 3] + max(lo - EPS, 0.0) * d
+    # conservative advancement: moving by the pieces' distance cannot make them overlap
+    shift = 0.0
+    Ts = np.array(T, float)
+    for _ in range(40):
+        Ts[:3, 3] = T[:3, 3] + shift * d
+        gap = pieces_distance(mine, Ts, theirs, Tp, limit=reach - shift + 1e-3)
+        if gap > reach - shift:
+            return t
+        if gap <= 5e-4:
+            break
+        shift += gap
+    return T[:3, 3] + max(shift - EPS, 0.0) * d
 
 
 def lean_fit(st: SolveState, oid: str, edges: list[Edge], asset: Asset, scale: float) -> float:
