@@ -26,8 +26,6 @@ SEEDS = (0, 1, 2)
 #: Rooms that fail today, with the failure class that makes them fail (see the report of the
 #: robustness benchmark); the solver's fixes for those classes turn them green.
 KNOWN: dict[str, str] = {
-    "contents_and_slumps": "seed 0: the cushion, repaired into a bolster, settles lying on the "
-                           "seat and no longer leans on the back",
     "clothes_on_clothes": "seed 0: the upper pile rests on the lower sweater's cuffs, which "
                           "stand 6 mm above its top fold, and tilts 2 deg in settling",
 }

@@ -1,5 +1,5 @@
 """A flat thing stood on its edge with nothing that holds it up (a plate on its rim whose lean
-on the hutch's back panel cannot be met) falls flat in settling: the repair keeps the rest it
+on the wall behind the hutch's back panel cannot be met) falls flat in settling: the repair keeps the rest it
 fell into on its support rather than failing it, and records the relations it broke as relaxed,
 saying why (tests/data/rooms/flat_things_fall_flat)."""
 

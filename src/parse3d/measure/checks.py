@@ -44,6 +44,7 @@ from .reach import (
     WIDE_LEAN_DEG,
     face_slabs,
     lean_range,
+    lean_up,
     mounted_parts,
     nearest_in_prism,
     piece_data,
@@ -811,6 +812,52 @@ def _leans_on_board(ctx: CheckContext, sB: Surface, base: np.ndarray) -> bool:
     return d <= DIST_TOL
 
 
+#: Metres from the face it leans on within which a leaning child's points are its lean contact.
+LEAN_CONTACT = 3e-3
+
+
+def _held_by_lean(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
+    """A child that leans on a face and touches it (its ``LEANING_AGAINST`` holds) is held by
+    its base and by that face: whether ``p3`` (its centre of mass) projects inside the convex
+    hull of the support polygon (with every part the parent reference names at its level, as
+    :func:`_in_span`) and the child's points touching the face (a guitar in a stand, its weight
+    between the cradle's arms and the neck rest; a cushion at the back of a seat, its top on
+    the chair's back)."""
+    from ..geometry.regions import convex_footprint, inside_convex
+
+    pag, child = ctx.scene.pag, ctx.child
+    leans = [le for le in pag.edges_of(child.id) if le.relation == "LEANING_AGAINST"]
+    if not leans:
+        return False
+    base = [np.asarray(shell.exterior.coords)[:, :2] for shell in _shells(sB.polygon)]
+    base += [_span_points(ctx, sB)]
+    T = child.transform(ctx.settled)
+    for le in leans:
+        pobj = None if le.parent.is_room_element else ctx.scene.objects.get(le.parent.object)
+        if pobj is not None and not pobj.placed:
+            continue
+        lctx = CheckContext(ctx.scene, le, child, pobj, {}, ctx.settled)
+        face = _parent_surface(lctx)
+        if isinstance(face, str) or not _check_leaning(lctx).holds:
+            continue
+        parts = select_parts(child, le.child) if le.child.part is not None else \
+            child.asset.parts
+        touch = []
+        for f in _lean_faces(lctx, face):  # a fork's two prongs: the one it touches
+            got = nearest_in_prism(piece_data(child.asset, parts), T, f.normal, f.origin,
+                                   face_slabs(f), band=LEAN_CONTACT)
+            if got is not None and got[0] <= DIST_TOL:
+                q = got[2] - sB.origin
+                touch.append(np.c_[q @ sB.u, q @ sB.v])
+        if not touch:
+            continue
+        pts = np.vstack(base + touch)
+        d = p3 - sB.origin
+        if inside_convex(convex_footprint(pts), np.array([d @ sB.u, d @ sB.v]), 1e-3):
+            return True
+    return False
+
+
 def _resolve_or_fail(ctx: CheckContext) -> Surface | Check:
     sB = _target_surface(ctx)
     return Check(False, {}, sB) if isinstance(sB, str) else sB
@@ -836,7 +883,7 @@ def _check_on(ctx: CheckContext) -> Check:
         com = np.r_[pts[h <= h.min() + 3e-3].mean(axis=0), 1.0]
     inside = _in_polygon(sB, com[:3]) or _in_span(ctx, sB, com[:3]) \
         or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3]) \
-        or _across_like(ctx, sB, com[:3]) or (  # partly on a rug, the floor holds the rest
+        or _across_like(ctx, sB, com[:3]) or _held_by_lean(ctx, sB, com[:3]) or (  # partly on a rug, the floor holds the rest
             ctx.parent is not None and _covering_tilt(ctx.scene, ctx.child, ctx.parent,
                                                       ctx.settled) > 0)
     res["com_inside"] = float(inside)
@@ -942,11 +989,22 @@ def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
     """Whether ``p3`` projects inside the convex hull of the tops of every part the parent
     reference names (a label without ``#k``) at the level of ``sB``: what rests across a
     luggage rack's straps has them all as its support polygon."""
-    ref, pobj = ctx.edge.parent, ctx.parent
-    if pobj is None or ref.part is None or ref.index is not None:
-        return False
     from shapely.geometry import MultiPoint, Point
 
+    pts = _span_points(ctx, sB)
+    if not len(pts):
+        return False
+    hull = MultiPoint(pts).convex_hull
+    return bool(hull.distance(Point(float((p3 - sB.origin) @ sB.u),
+                                     float((p3 - sB.origin) @ sB.v))) <= 1e-3)
+
+
+def _span_points(ctx: CheckContext, sB: Surface) -> np.ndarray:
+    """(N, 2) outline points, in ``sB``'s plane, of the tops of every part the parent reference
+    names (a label without ``#k``) at the level of ``sB``; empty unless there are two or more."""
+    ref, pobj = ctx.edge.parent, ctx.parent
+    if pobj is None or ref.part is None or ref.index is not None:
+        return np.zeros((0, 2))
     T = pobj.transform(ctx.settled)
     pts = []
     for p in select_parts(pobj, ref):
@@ -955,11 +1013,9 @@ def _in_span(ctx: CheckContext, sB: Surface, p3: np.ndarray) -> bool:
                 and float(s.normal @ sB.normal) > 0.999:
             pts.append(s.outline_3d())
     if len(pts) < 2:
-        return False
+        return np.zeros((0, 2))
     d = np.vstack(pts) - sB.origin
-    hull = MultiPoint(np.c_[d @ sB.u, d @ sB.v]).convex_hull
-    return bool(hull.distance(Point(float((p3 - sB.origin) @ sB.u),
-                                     float((p3 - sB.origin) @ sB.v))) <= 1e-3)
+    return np.c_[d @ sB.u, d @ sB.v]
 
 
 #: Part labels whose internal surfaces are open shelves or racks: IN on them needs no enclosure.
@@ -1099,15 +1155,7 @@ def _check_leaning(ctx: CheckContext) -> Check:
         return sB
     if not select_parts(ctx.child, ctx.edge.child):
         return Check(False, {}, f"child has no part {ctx.edge.child.part!r}")
-    faces = [sB]
-    ref, pobj = ctx.edge.parent, ctx.parent
-    if pobj is not None and ref.part is not None and ref.index is None \
-            and not ctx.resolved.get("parent_part"):
-        label = ref.surface or ctx.edge.spec.parent_surface
-        T = pobj.transform(ctx.settled)
-        more = [_world_surface(p.surfaces[label], T) for p in select_parts(pobj, ref)
-                if label in p.surfaces]
-        faces = more or faces
+    faces = _lean_faces(ctx, sB)
     best = None
     if len(faces) > 1:  # faces the child's box comes nowhere near cannot hold it: skip them
         H = world_points(ctx.child, hull_only=True, settled=ctx.settled)
@@ -1125,6 +1173,20 @@ def _check_leaning(ctx: CheckContext) -> Check:
     return best[1]
 
 
+def _lean_faces(ctx: CheckContext, sB: Surface) -> list[Surface]:
+    """The faces a ``LEANING_AGAINST`` may lean on: ``sB``, or one per part a parent label
+    without ``#k`` names (a sofa's back cushions, a guitar stand's neck-rest prongs)."""
+    ref, pobj = ctx.edge.parent, ctx.parent
+    if pobj is None or ref.part is None or ref.index is not None \
+            or ctx.resolved.get("parent_part"):
+        return [sB]
+    label = ref.surface or ctx.edge.spec.parent_surface
+    T = pobj.transform(ctx.settled)
+    more = [_world_surface(p.surfaces[label], T) for p in select_parts(pobj, ref)
+            if label in p.surfaces]
+    return more or [sB]
+
+
 def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
     """:func:`_check_leaning` against one face."""
     child, settled = ctx.child, ctx.settled
@@ -1137,11 +1199,12 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
                      f"{ctx.edge.child} is not in front of {ctx.edge.parent} (beside or past "
                      f"the face's extent)")
     gap = near[0]
-    if not -PENETRATION_TOL <= gap <= DIST_TOL and ctx.parent is not None \
-            and ctx.edge.parent.part is not None:
+    if not -PENETRATION_TOL <= gap <= DIST_TOL and ctx.parent is not None:
         # past the face's plane, resting on the parent's real surface behind it (a sofa's back
-        # cushion slanted back from the front of its box), or in front of it on what is
-        # mounted on it (an amplifier's grille and knobs): the exact distance decides
+        # cushion slanted back from the front of its box; a whole bookcase's front, open
+        # between its shelves, a ladder's rail resting on a shelf's edge behind it), or in
+        # front of it on what is mounted on it (an amplifier's grille and knobs): the exact
+        # distance decides
         pp = select_parts(ctx.parent, ctx.edge.parent)
         Tp = ctx.parent.transform(settled)
         on, _ = mounted_parts(ctx.parent, pp, sB, Tp)
@@ -1149,9 +1212,9 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
                             piece_data(ctx.parent.asset, pp + on), Tp)
         if d <= DIST_TOL:
             gap = d
-    # a flat child standing on its front edge to lean (a pillow) has its back as its up axis
-    up_local = np.array([0, -1.0, 0]) if stands_to_lean(child.asset, ctx.scene.pag, child.id) \
-        else np.array([0, 0, 1.0])
+    # a flat child standing on its front edge to lean (a pillow) has its back as its up axis, a
+    # plate written ON its rim's front the opposite of that face
+    up_local = lean_up(child.asset, ctx.scene.pag, child.id)
     up = T[:3, :3] @ up_local / child.scale
     tilt = float(np.degrees(angle_between(up, [0, 0, 1.0])))
     face = float(np.degrees(angle_between(_child_normal(child, _child_label(ctx), settled),

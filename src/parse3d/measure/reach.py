@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["piece_data", "nearest_in_prism", "face_slabs", "lean_range", "WIDE_LEAN_DEG",
-           "stands_to_lean", "STAND", "THIN_SHARE", "standing_label",
+           "stands_to_lean", "STAND", "THIN_SHARE", "standing_label", "lean_up",
            "pieces_distance", "mounted_parts", "MOUNTED_DEPTH"]
 
 #: Tilts (degrees) a child may lean at against an object's face when the PAG gives no
@@ -247,6 +247,24 @@ def stands_to_lean(asset, pag, oid: str) -> bool:
 
     ext = np.ptp(asset_geometry(asset).bounds, axis=0)
     return bool(ext[2] <= THIN_SHARE * min(ext[0], ext[1]))
+
+
+def lean_up(asset, pag, oid: str) -> np.ndarray:
+    """The asset-frame axis a leaning child's tilt is measured from (its up, standing
+    untilted): its back for a flat child standing on its front edge (:func:`stands_to_lean`);
+    the opposite of the side it is written ``ON`` or ``IN`` by (a plate ``ON`` its
+    ``rim@front``, its underside leaning on a hutch's back panel, stands on its edge: the
+    solver turns that side down before it tilts); else its top."""
+    if stands_to_lean(asset, pag, oid):
+        return np.array([0.0, -1.0, 0.0])
+    sup = pag.supporter(oid)
+    label = None if sup is None or sup.relation not in ("ON", "IN") else \
+        sup.child.surface or sup.spec.child_surface
+    if label in ("front", "back", "left", "right"):
+        from ..relations import SURFACES
+
+        return -np.array(SURFACES[label], float)
+    return np.array([0.0, 0.0, 1.0])
 
 
 def standing_label(label: str) -> str:

@@ -45,7 +45,7 @@ import numpy as np
 from ..scene.model import Scene
 from .checks import check_edge, select_parts, world_points
 from .geometry import asset_geometry, hull_extents, is_round
-from .reach import piece_data, pieces_distance, stands_to_lean
+from .reach import lean_up, piece_data, pieces_distance
 
 __all__ = ["INSTABILITY_CAUSES", "Instability", "verify_settled", "supported_by", "is_round",
            "SettledSummary", "summarize_settled", "broken_after_settling", "settled_rest",
@@ -321,9 +321,7 @@ def _lying(obj) -> bool:
 def _lean_tilt(scene: Scene, obj) -> float:
     """Degrees between vertical and the settled up axis a leaning child leans by (its back for a
     flat child standing on its edge, as the ``LEANING_AGAINST`` check reads it)."""
-    up = np.array([0, -1.0, 0]) if stands_to_lean(obj.asset, scene.pag, obj.id) \
-        else np.array([0, 0, 1.0])
-    u = np.asarray(obj.settled_rotation) @ up
+    u = np.asarray(obj.settled_rotation) @ lean_up(obj.asset, scene.pag, obj.id)
     return float(np.degrees(np.arccos(np.clip(u[2] / np.linalg.norm(u), -1, 1))))
 
 

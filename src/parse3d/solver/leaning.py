@@ -26,13 +26,14 @@ from ..measure.reach import (
     mounted_parts,
     nearest_in_prism,
     piece_data,
+    pieces_distance,
     stands_to_lean,
 )
 from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points
 from .rotation import _pressing, parent_surface_world
-from .state import SolveState, parts_for, plane_coords
+from .state import SolveState, parts_for, plane_coords, plane_key
 from .support import Support
 
 __all__ = ["lean_tilt", "lean_line", "lean_fit", "lean_samples", "involves_object", "LEAN_GAP"]
@@ -135,6 +136,8 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
                 ok.append(th)
             elif ahead > worst[0]:
                 worst = (ahead, th)
+        if ok and sup.owner != "room":  # resting on an object: where its base lands on it
+            ok = _landing(st, sup, asset, scale, R, k, named, faces[0], ok) or ok
         if ok and stood:
             return _firm(asset, scale, R, k, d, ok, rng)
         if ok:
@@ -157,6 +160,77 @@ def lean_tilt(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.nd
     # not intrinsic, so the search may re-place the parent
     raise Fail(f"LEANING_AGAINST {e.child} -> {e.parent}: at every tilt in {ranges[-1][0]:g}-"
                f"{ranges[-1][1]:g} deg {why}")
+
+
+def _landing(st: SolveState, sup: Support, asset: Asset, scale: float, R: np.ndarray,
+             k: np.ndarray, named, face, tilts: list[float]) -> list[float]:
+    """The tilts among ``tilts`` at which the child, its named part touching ``face``, can
+    rest its base on ``sup`` (an object's), clear of the owner's parts rising through the
+    base (a padded bar across a guitar stand's cradle): resting on an object and leaning on
+    another, the tilt fixes how far from the face the base stands (a guitar's neck on its
+    stand's neck rest puts its body in the cradle only at some tilts)."""
+    s = sup.surface
+    sB, (zlo, zhi), _, _, front = face
+    g = np.array([s.u @ sB.normal, s.v @ sB.normal])
+    if np.linalg.norm(g) < 1e-6:
+        return tilts
+    region = _base_region(st, sup)
+    if region.is_empty:
+        return tilts
+    hull = asset_geometry(asset).hull * scale
+    z0 = float(s.origin[2])
+    p0 = plane_coords(s, np.array([[0.0, 0.0, z0]]))[0]
+    out = []
+    for th in tilts:
+        Rt = axis_angle(k, th) @ R
+        Y = hull @ Rt.T
+        T = np.eye(4)
+        T[:3, :3] = Rt * scale
+        T[2, 3] = z0 - float(Y[:, 2].min())
+        got = nearest_in_prism(named, T, sB.normal, sB.origin, [(_UP, zlo, zhi)])
+        if got is None:
+            continue
+        base = Y[Y[:, 2] <= Y[:, 2].min() + BASE_BAND]
+        Fb = np.c_[base @ s.u, base @ s.v]
+        Fb = RG.convex_footprint(np.vstack([Fb, Fb + 1e-4, Fb + [1e-4, 0.0]]))
+        c = Fb.mean(axis=0)
+        free = shapely.affinity.translate(RG.erode(region, [], Fb - c), -float(c[0]),
+                                          -float(c[1]))
+        if free.is_empty:
+            continue
+        gn = float(np.linalg.norm(g))
+        ln = RG.line(p0, g / gn, (EPS + front - got[0]) / gn)
+        if not RG.clip(free, ln).is_empty:
+            out.append(th)
+    return out
+
+
+def _base_region(st: SolveState, sup: Support):
+    """``sup``'s region, 3 mm in from its edge, less the footprints of its owner's parts that
+    rise through the base of what rests on it (a padded bar across a guitar stand's cradle, a
+    plate rail along a shelf), in the support plane's coordinates."""
+    owner = st.scene.objects.get(sup.owner)
+    if owner is None:
+        return sup.region.buffer(-3e-3, join_style="mitre")
+    return st.memo(sup.owner, ("lean_base", plane_key(sup.surface), sup.choice, sup.spans),
+                   lambda: _clear_of_parts(sup, owner))
+
+
+def _clear_of_parts(sup: Support, owner):
+    """:func:`_base_region` for the owner's current pose."""
+    s = sup.surface
+    region = sup.region.buffer(-3e-3, join_style="mitre")
+    if region.is_empty:
+        return region
+    T = owner.transform()
+    z0 = float(s.origin[2])
+    cut = []
+    for p in owner.asset.parts:
+        P = part_points([p]) @ T[:3, :3].T + T[:3, 3]
+        if float(P[:, 2].max()) <= z0 + BASE_BAND or float(P[:, 2].min()) >= z0 + BASE_BAND:
+            continue
+        cut.append(shapely.Polygon(RG.convex_footprint(plane_coords(s, P))).buffer(1e-4))
+    return region.difference(shapely.union_all(cut)) if cut else region
 
 
 #: Degrees from up within which a surface still holds what is ON it (the support test's).
@@ -447,6 +521,8 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     T[:3, :3] = R * scale
     T[:3, 3] = start
     reach = SLIDE_BACK + 0.05
+    if e.parent.part is not None:
+        return _slide_onto_part(st, e, asset, T, parent, d, reach, t)
     # the rays of the mesh vertices first (fast), then the pieces near where they meet
     ray = drop_distance((asset_geometry(asset).hull * scale) @ R.T + start, asset, T,
                         st.hulls[parent.id], parent.asset, parent.transform(), d)
@@ -459,6 +535,31 @@ def lean_slide(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarr
     if got >= SLIDE_BACK + 0.05:
         return t
     return start + max(got - EPS, 0.0) * d
+
+
+def _slide_onto_part(st: SolveState, e: Edge, asset: Asset, T: np.ndarray, parent, d: np.ndarray,
+                     reach: float, t: np.ndarray) -> np.ndarray:
+    """:func:`lean_slide` onto the parent's named part (and what is mounted on its face) alone:
+    its other parts in the way (a plate rail along a hutch's shelf, in front of the back panel
+    the plate leans on) are the collision test's to judge, not a stop short of the face."""
+    Tp = parent.transform()
+    own = parts_for(parent.asset, e.parent)
+    faces = _faces(st, e)
+    on = mounted_parts(parent, own, faces[0][0], Tp)[0] if faces else []
+    mine = piece_data(asset, asset.parts)
+    theirs = piece_data(parent.asset, own + [p for p in on if p not in own])
+    # conservative advancement: moving by the pieces' distance cannot make them overlap
+    shift = 0.0
+    Ts = np.array(T, float)
+    for _ in range(40):
+        Ts[:3, 3] = T[:3, 3] + shift * d
+        gap = pieces_distance(mine, Ts, theirs, Tp, limit=reach - shift + 1e-3)
+        if gap > reach - shift:
+            return t
+        if gap <= 5e-4:
+            break
+        shift += gap
+    return T[:3, 3] + max(shift - EPS, 0.0) * d
 
 
 def lean_fit(st: SolveState, oid: str, edges: list[Edge], asset: Asset, scale: float) -> float:
