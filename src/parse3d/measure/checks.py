@@ -1158,6 +1158,18 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
     return Check(ok, res, detail)
 
 
+def _support_tilt(ctx: CheckContext) -> float:
+    """Degrees the settled child may tilt because it stands ON a floor covering, partly past
+    its edge (:func:`_covering_tilt`); 0 before settling and on anything else."""
+    sup = ctx.scene.pag.supporter(ctx.child.id)
+    if not ctx.settled or sup is None or sup.relation != "ON" or sup.parent.is_room_element:
+        return 0.0
+    pobj = ctx.scene.objects.get(sup.parent.object)
+    if pobj is None or not pobj.placed:
+        return 0.0
+    return _covering_tilt(ctx.scene, ctx.child, pobj, ctx.settled)
+
+
 @check_rule("ALIGNED_WITH", "OPPOSITE_TO", "PARALLEL_TO")
 def _check_planes(ctx: CheckContext) -> Check:
     """Normals parallel (anti-parallel for OPPOSITE_TO); coplanar except PARALLEL_TO."""
@@ -1171,6 +1183,16 @@ def _check_planes(ctx: CheckContext) -> Check:
     ang = float(np.degrees(angle_between(nA, sign * sB.normal)))
     res = {"angle_deg": round(ang, 4)}
     if rel == "PARALLEL_TO":
+        tilt = _support_tilt(ctx)
+        if tilt > 0 and abs(float(nA[2])) < 0.5 and abs(float(sB.normal[2])) < 0.5:
+            # side faces of a child standing partly on a rug: the rug's thickness tilts it
+            # (as ON allows), so its face turns as written (about the vertical, as the
+            # parent's face) and tilts no more than the rug makes it
+            yaw = float(np.degrees(angle_between(np.r_[nA[:2], 0.0], np.r_[sB.normal[:2], 0.0])))
+            res["yaw_deg"] = round(yaw, 4)
+            return Check(yaw <= ANGLE_TOL_DEG and ang <= tilt + ANGLE_TOL_DEG, res,
+                         f"normals off by {ang:.2f} deg, {yaw:.2f} deg about the vertical "
+                         f"(standing partly on a floor covering: tilted up to {tilt:.1f} deg)")
         return Check(ang <= ANGLE_TOL_DEG, res, f"normals off by {ang:.2f} deg")
     # coplanar: the child's surface plane passes through the parent's plane
     sA = _surface(ctx.scene, ctx.child, ctx.edge.child, label, ctx.settled)
