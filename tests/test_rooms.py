@@ -28,8 +28,6 @@ SEEDS = (0, 1, 2)
 KNOWN: dict[str, str] = {
     "contents_and_slumps": "seed 0: the cushion, repaired into a bolster, settles lying on the "
                            "seat and no longer leans on the back",
-    "clothes_on_clothes": "seed 0: the upper pile rests on the lower sweater's cuffs, which "
-                          "stand 6 mm above its top fold, and tilts 2 deg in settling",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

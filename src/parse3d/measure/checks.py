@@ -297,7 +297,8 @@ def _shells(poly) -> list:
 
 def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> bool:
     """Whether the centre of mass projects inside the convex hull of the child's lowest
-    points (its base), along the support normal ``n``."""
+    points (its base), along the support normal ``n`` (along the child's own axis nearest
+    it, :func:`_own_up`)."""
     from ..geometry.regions import convex_footprint, inside_convex
 
     # the answer depends only on the normal and the centre of mass in the asset's frame (the
@@ -305,6 +306,7 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     # about the normal, every candidate of an asset shares one answer
     T = child.transform(settled)
     M = T[:3, :3]
+    n = _own_up(M, n)
     key = (child.asset.asset_id, *(M.T @ n).round(9).tolist(),
            *np.linalg.solve(M, com - T[:3, 3]).round(9).tolist())
     got = _STANDS.get(key)
@@ -329,6 +331,23 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
 
 
 _STANDS: dict[tuple, bool] = {}
+
+#: Degrees within which a child's own axis is taken for its support's normal when its base is
+#: found: a soft stack settled drooping a degree or two over its support's edge still stands on
+#: its bottom face, not on the edge that hangs lowest.
+OWN_AXIS_DEG = 10.0
+
+
+def _own_up(M: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """The world direction of the child's own axis (pose rotation and scale ``M``) nearest the
+    support normal ``n``, where it lies within ``OWN_AXIS_DEG`` of it; else ``n``."""
+    a = M.T @ n
+    k = int(np.argmax(np.abs(a)))
+    axis = np.zeros(3)
+    axis[k] = np.sign(a[k])
+    w = M @ axis
+    w /= np.linalg.norm(w)
+    return w if float(np.degrees(angle_between(w, n))) <= OWN_AXIS_DEG else n
 
 
 def _enclosure(child: PlacedObject, parent: PlacedObject, settled, floor: Surface | None = None) -> float:
