@@ -5,6 +5,7 @@ they settle tilted by the rug's thickness (as ``ON`` allows on a floor covering)
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
 from parse3d.measure.checks import ANGLE_TOL_DEG
@@ -35,3 +36,24 @@ def test_some_chair_stands_past_the_rug():
              for c in solved("settled_chairs_past_a_rug", seed).relations
              if c.relation == "PARALLEL_TO" and c.child.startswith("chair")]
     assert max(tilts) > ANGLE_TOL_DEG
+
+
+def test_a_chair_wholly_past_the_rug_is_not_on_it():
+    """ON a floor covering lets a child reach past its edge onto the floor, not stand wholly
+    beside it: the same chair moved a metre past the rug's far edge at the rug's height fails
+    its ON, with its centre of mass outside the support."""
+    from dataclasses import replace
+
+    from parse3d.measure.checks import check_edge, world_points
+
+    scene = solved("settled_chairs_past_a_rug", 0)
+    chair = scene.objects["chair1"]
+    edge = next(e for e in scene.pag.relations if e.relation == "ON" and e.child.object == "chair1")
+    assert check_edge(scene, edge, chair, settled=False).holds
+    rug = world_points(scene.objects["rug"], hull_only=True, settled=False)
+    pts = world_points(chair, hull_only=True, settled=False)
+    dx = rug[:, 0].max() - pts[:, 0].min() + 1.0
+    away = replace(chair, position=chair.position + np.array([dx, 0.0, 0.0]),
+                   settled_position=None, settled_rotation=None)
+    got = check_edge(scene, edge, away, settled=False)
+    assert not got.holds and got.residual.get("com_inside") == 0.0, got

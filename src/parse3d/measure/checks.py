@@ -142,6 +142,19 @@ def covering_thickness(lo: float, hi: float, narrow: float, floor_z: float) -> f
     return float(thick) if covers else 0.0
 
 
+def _base_over(child: PlacedObject, s: Surface, settled) -> bool:
+    """Whether the child's base (its points within ``COVER_THICK`` of its lowest, as it
+    stands partly on a floor covering and partly on the floor) reaches over the surface
+    polygon of ``s``: a child wholly past a rug's edge is not ON it."""
+    from shapely.geometry import MultiPoint
+
+    pts = world_points(child, hull_only=True, settled=settled)
+    h = pts @ s.normal
+    low = pts[h <= h.min() + COVER_THICK] - s.origin
+    base = MultiPoint(np.c_[low @ s.u, low @ s.v]).convex_hull
+    return any(base.intersects(shell) for shell in _shells(s.polygon))
+
+
 def _covering_tilt(scene: Scene, child: PlacedObject, pobj: PlacedObject, settled) -> float:
     """Degrees ``child`` may tilt ON ``pobj`` when ``pobj`` is a floor covering: its thickness
     across the child's feet, at least half its narrower base side apart (a chair's legs are set
@@ -844,7 +857,8 @@ def _check_on(ctx: CheckContext) -> Check:
         or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3]) \
         or _across_like(ctx, sB, com[:3]) or (  # partly on a rug, the floor holds the rest
             ctx.parent is not None and _covering_tilt(ctx.scene, ctx.child, ctx.parent,
-                                                      ctx.settled) > 0)
+                                                      ctx.settled) > 0
+            and _base_over(ctx.child, sB, ctx.settled))
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
