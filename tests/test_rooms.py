@@ -26,8 +26,6 @@ SEEDS = (0, 1, 2)
 #: Rooms that fail today, with the failure class that makes them fail (see the report of the
 #: robustness benchmark); the solver's fixes for those classes turn them green.
 KNOWN: dict[str, str] = {
-    "clothes_on_clothes": "seed 0: the upper pile rests on the lower sweater's cuffs, which "
-                          "stand 6 mm above its top fold, and tilts 2 deg in settling",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

@@ -143,6 +143,19 @@ def covering_thickness(lo: float, hi: float, narrow: float, floor_z: float) -> f
     return float(thick) if covers else 0.0
 
 
+def _base_over(child: PlacedObject, s: Surface, settled) -> bool:
+    """Whether the child's base (its points within ``COVER_THICK`` of its lowest, as it
+    stands partly on a floor covering and partly on the floor) reaches over the surface
+    polygon of ``s``: a child wholly past a rug's edge is not ON it."""
+    from shapely.geometry import MultiPoint
+
+    pts = world_points(child, hull_only=True, settled=settled)
+    h = pts @ s.normal
+    low = pts[h <= h.min() + COVER_THICK] - s.origin
+    base = MultiPoint(np.c_[low @ s.u, low @ s.v]).convex_hull
+    return any(base.intersects(shell) for shell in _shells(s.polygon))
+
+
 def _covering_tilt(scene: Scene, child: PlacedObject, pobj: PlacedObject, settled) -> float:
     """Degrees ``child`` may tilt ON ``pobj`` when ``pobj`` is a floor covering: its thickness
     across the child's feet, at least half its narrower base side apart (a chair's legs are set
@@ -311,7 +324,8 @@ def _shells(poly) -> list:
 
 def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> bool:
     """Whether the centre of mass projects inside the convex hull of the child's lowest
-    points (its base), along the support normal ``n``."""
+    points (its base), along the support normal ``n`` (along the child's own axis nearest
+    it, :func:`_own_up`)."""
     from ..geometry.regions import convex_footprint, inside_convex
 
     # the answer depends only on the normal and the centre of mass in the asset's frame (the
@@ -319,6 +333,7 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
     # about the normal, every candidate of an asset shares one answer
     T = child.transform(settled)
     M = T[:3, :3]
+    n = _own_up(M, n)
     key = (child.asset.asset_id, *(M.T @ n).round(9).tolist(),
            *np.linalg.solve(M, com - T[:3, 3]).round(9).tolist())
     got = _STANDS.get(key)
@@ -343,6 +358,23 @@ def _stands(child: PlacedObject, com: np.ndarray, n: np.ndarray, settled) -> boo
 
 
 _STANDS: dict[tuple, bool] = {}
+
+#: Degrees within which a child's own axis is taken for its support's normal when its base is
+#: found: a soft stack settled drooping a degree or two over its support's edge still stands on
+#: its bottom face, not on the edge that hangs lowest.
+OWN_AXIS_DEG = 10.0
+
+
+def _own_up(M: np.ndarray, n: np.ndarray) -> np.ndarray:
+    """The world direction of the child's own axis (pose rotation and scale ``M``) nearest the
+    support normal ``n``, where it lies within ``OWN_AXIS_DEG`` of it; else ``n``."""
+    a = M.T @ n
+    k = int(np.argmax(np.abs(a)))
+    axis = np.zeros(3)
+    axis[k] = np.sign(a[k])
+    w = M @ axis
+    w /= np.linalg.norm(w)
+    return w if float(np.degrees(angle_between(w, n))) <= OWN_AXIS_DEG else n
 
 
 def _enclosure(child: PlacedObject, parent: PlacedObject, settled, floor: Surface | None = None) -> float:
@@ -885,7 +917,8 @@ def _check_on(ctx: CheckContext) -> Check:
         or _in_hollow(ctx, sB, com[:3]) or _leans_on_board(ctx, sB, com[:3]) \
         or _across_like(ctx, sB, com[:3]) or _held_by_lean(ctx, sB, com[:3]) or (  # partly on a rug, the floor holds the rest
             ctx.parent is not None and _covering_tilt(ctx.scene, ctx.child, ctx.parent,
-                                                      ctx.settled) > 0)
+                                                      ctx.settled) > 0
+            and _base_over(ctx.child, sB, ctx.settled))
     res["com_inside"] = float(inside)
     if not inside:
         return Check(False, res, "centre of mass outside the support polygon")
@@ -1234,6 +1267,18 @@ def _lean_on(ctx: CheckContext, sB: Surface) -> Check:
     return Check(ok, res, detail)
 
 
+def _support_tilt(ctx: CheckContext) -> float:
+    """Degrees the settled child may tilt because it stands ON a floor covering, partly past
+    its edge (:func:`_covering_tilt`); 0 before settling and on anything else."""
+    sup = ctx.scene.pag.supporter(ctx.child.id)
+    if not ctx.settled or sup is None or sup.relation != "ON" or sup.parent.is_room_element:
+        return 0.0
+    pobj = ctx.scene.objects.get(sup.parent.object)
+    if pobj is None or not pobj.placed:
+        return 0.0
+    return _covering_tilt(ctx.scene, ctx.child, pobj, ctx.settled)
+
+
 @check_rule("ALIGNED_WITH", "OPPOSITE_TO", "PARALLEL_TO")
 def _check_planes(ctx: CheckContext) -> Check:
     """Normals parallel (anti-parallel for OPPOSITE_TO); coplanar except PARALLEL_TO."""
@@ -1247,6 +1292,16 @@ def _check_planes(ctx: CheckContext) -> Check:
     ang = float(np.degrees(angle_between(nA, sign * sB.normal)))
     res = {"angle_deg": round(ang, 4)}
     if rel == "PARALLEL_TO":
+        tilt = _support_tilt(ctx)
+        if tilt > 0 and abs(float(nA[2])) < 0.5 and abs(float(sB.normal[2])) < 0.5:
+            # side faces of a child standing partly on a rug: the rug's thickness tilts it
+            # (as ON allows), so its face turns as written (about the vertical, as the
+            # parent's face) and tilts no more than the rug makes it
+            yaw = float(np.degrees(angle_between(np.r_[nA[:2], 0.0], np.r_[sB.normal[:2], 0.0])))
+            res["yaw_deg"] = round(yaw, 4)
+            return Check(yaw <= ANGLE_TOL_DEG and ang <= tilt + ANGLE_TOL_DEG, res,
+                         f"normals off by {ang:.2f} deg, {yaw:.2f} deg about the vertical "
+                         f"(standing partly on a floor covering: tilted up to {tilt:.1f} deg)")
         return Check(ang <= ANGLE_TOL_DEG, res, f"normals off by {ang:.2f} deg")
     # coplanar: the child's surface plane passes through the parent's plane
     sA = _surface(ctx.scene, ctx.child, ctx.edge.child, label, ctx.settled)

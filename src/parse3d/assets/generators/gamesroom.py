@@ -302,7 +302,7 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     parts = []
     if variant == "lounger":  # a long flat pad with a raised head end
         L = rng.uniform(1.1, 1.3)
-        parts.append(make_part("body", "body", S.ellipsoid((r, L / 2, 0.12), center=(0, 0, 0.12), subdivisions=2), cover))
+        parts.append(make_part("body", "body", _sack(r, L / 2, 0.24), cover))
         parts.append(make_part("seat", "seat", S.ellipsoid((r * 0.8, L * 0.35, 0.06), center=(0, 0.08, 0.18), subdivisions=2), cover))
         parts.append(make_part("back", "back", S.ellipsoid((r * 0.85, 0.18, 0.16), center=(0, -L / 2 + 0.2, 0.2), subdivisions=2),
                                cover))
@@ -311,7 +311,7 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
         rx, ry, zc = r, L / 2, 0.12
     else:
         hb = rng.uniform(0.3, 0.4)
-        parts.append(make_part("base", "base", S.ellipsoid((r, r, hb * 0.5), center=(0, 0, hb * 0.5), subdivisions=2), cover))
+        parts.append(make_part("base", "base", _sack(r, r, hb), cover))
         parts.append(make_part("body", "body", S.ellipsoid((r * 0.9, r * 0.9, hb * 0.55), center=(0, 0, hb * 0.7), subdivisions=2),
                                cover))
         parts.append(make_part("seat", "seat", S.ellipsoid((r * 0.65, r * 0.55, 0.07), center=(0, 0.08, hb + 0.1), subdivisions=2),
@@ -326,7 +326,8 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
         rx, ry, zc = r, r, hb * 0.5
     # the piping round the cover's widest seam, the safety zip at the back, the sewn-in tag
     t = np.linspace(0, 2 * np.pi, 25)
-    seam = np.c_[rx * 1.005 * np.cos(t), ry * 1.005 * np.sin(t), np.full(len(t), zc)]
+    fc = 1.005 * _sack_share(zc, 2 * zc)
+    seam = np.c_[rx * fc * np.cos(t), ry * fc * np.sin(t), np.full(len(t), zc)]
     parts.append(make_part("piping", "piping", S.tube(seam[:-1], 0.007, sections=6, closed=True), cover))
     parts.append(make_part("zipper", "zipper", S.box((0.25, 0.006, 0.012), center=(0, -ry * 0.97, zc * 0.55)),
                            M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
@@ -334,12 +335,39 @@ def beanbag(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("zipper_pull", "zipper_pull", S.box((0.012, 0.004, 0.03), center=(0.1, -ry * 0.97 - 0.004, zc * 0.55 - 0.012)),
                            M.solid((0.1, 0.1, 0.1), "plastic", 0.5)))
     zs = zc * 0.25
-    fs = np.sqrt(max(1 - ((zs - zc) / zc) ** 2, 0.05))
+    fs = _sack_share(zs, 2 * zc)
     seam2 = np.c_[rx * fs * 1.005 * np.cos(t), ry * fs * 1.005 * np.sin(t), np.full(len(t), zs)]
     parts.append(make_part("piping_1", "piping", S.tube(seam2[:-1], 0.006, sections=6, closed=True), cover))
     parts.append(make_part("tag", "tag", S.box((0.05, 0.003, 0.03), center=(rx * 0.7, ry * 0.7 + 0.001, zc * 0.7)),
                            M.solid((0.95, 0.95, 0.92), "fabric", 0.8)))
     return parts
+
+
+#: Radius of a bean bag's flat bottom panel, as a share of the sack's widest radius: a sack of
+#: beads spreads on the floor and stands on that panel (an ellipsoid would touch the floor at
+#: one point and roll).
+SACK_BOTTOM = 0.7
+
+
+def _sack_cut(h: float) -> float:
+    """Height (m) at which the ellipse of height ``h`` is as wide as the bottom panel."""
+    return (1 - np.sqrt(1 - SACK_BOTTOM ** 2)) * h / 2
+
+
+def _sack_share(z: float, h: float) -> float:
+    """Radius of the sack of height ``h`` at height ``z`` (m above its bottom), as a share of
+    its widest radius."""
+    zc = _sack_cut(h)
+    u = 2 * (zc + z * (h - zc) / h) / h - 1  # the ellipse's height, cut and stretched to h
+    return float(np.sqrt(max(1 - u * u, 0.05)))
+
+
+def _sack(rx: float, ry: float, h: float) -> S.Shape:
+    """A bean bag's sack: an ellipsoid of semi-axes (rx, ry) with its bottom cut flat (the
+    panel of radius ``SACK_BOTTOM``) and stretched back to height ``h``, standing on z = 0."""
+    zs = h * (1 - np.cos(np.linspace(0.0, np.pi, 12))) / 2  # finer near the bottom and top
+    prof = [(_sack_share(z, h), z) for z in zs[:-1]] + [(0.0, h)]
+    return S.transformed(S.lathe(prof, sections=24), np.diag([rx, ry, 1.0, 1.0]))
 
 
 def _sign_stroke(points, z0: float, scale: float, y: float) -> list[tuple[float, float, float]]:

@@ -6,6 +6,7 @@ target)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
@@ -31,7 +32,8 @@ from .base import (
 )
 
 __all__ = ["Distance", "Side", "Toward", "side_vector", "nearest", "relaxed_to_nearest",
-           "SQUARE_SHARE",
+           "SQUARE_SHARE", "LAYOUT_MARGIN", "MARGIN_SHARE", "SIDE_MARGIN", "MARGIN_KEEP",
+           "layout_margin", "with_margin",
            "SQUARE_MIN_TOLERANCE", "NEAREST_BAND"]
 
 _SIDE_DIRS = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
@@ -61,6 +63,28 @@ class Distance(LayoutRule):
         xB, frame, hull = parent_frame(st, e.parent.object)
         cB = plane_coords(s, xB[None])[0] - ctx.off
         dist = e.param("distance")
+        clip = self._clip(ctx, e, region, dist, cB, frame, hull)
+        new = RG.clip(region, clip)
+        if new.is_empty or new.area < 1e-10:
+            if relaxed_to_nearest(e):
+                return closest(region, clip)
+            raise emptied(e, ctx.sup, f"nothing within {dist:g} m of {e.parent.object} is free "
+                           f"({free_room_text(region)})" if rel == "NEAR" else
+                           f"nothing {dist:g} m or more from {e.parent.object} is free")
+        # settling moves things by millimetres to centimetres: a child placed on the limit's
+        # edge would not meet it afterwards, so the region keeps a margin inside the limit
+        # where enough of it is free
+        m = layout_margin(dist) * (1.0 if rel == "NEAR" else -1.0)
+        return with_margin(new, lambda k: RG.clip(
+            region, self._clip(ctx, e, region, dist - k * m, cB, frame, hull)))
+
+    @staticmethod
+    def _clip(ctx: RegionContext, e: Edge, region: BaseGeometry, dist: float, cB: np.ndarray,
+              frame: np.ndarray, hull) -> BaseGeometry:
+        """The positions of the child's origin (support plane coordinates) within ``dist`` of
+        the parent (NEAR) or beyond it (FAR_FROM)."""
+        st, s, rel = ctx.st, ctx.sup.surface, e.relation
+        xB = parent_frame(st, e.parent.object)[0]
         vertical = abs(float(s.normal[2])) < 0.5 and abs(float(s.v[2])) > 0.99
         if vertical:
             # on a wall the plane's v axis is vertical: the horizontal distance (or the distance
@@ -101,14 +125,7 @@ class Distance(LayoutRule):
         else:
             d = RG.disk(cB, dist, 48)
             clip = d if rel == "NEAR" else RG.bounding_square(region).difference(d)
-        new = RG.clip(region, clip)
-        if new.is_empty or new.area < 1e-10:
-            if relaxed_to_nearest(e):
-                return closest(region, clip)
-            raise emptied(e, ctx.sup, f"nothing within {dist:g} m of {e.parent.object} is free "
-                           f"({free_room_text(region)})" if rel == "NEAR" else
-                           f"nothing {dist:g} m or more from {e.parent.object} is free")
-        return new
+        return clip
 
 
 @register
@@ -138,21 +155,36 @@ class Side(LayoutRule):
                           if rel == "SIDE_OF" else ": no strip beside that face lies on it"))
         g /= np.linalg.norm(g)
         if rel == "SIDE_OF":
-            clip = RG.half_plane(cB, g)
+            def within(m: float) -> BaseGeometry:
+                return RG.half_plane(cB + m * g, g)
+            # no limit but the parent's centroid: the margin scales with the child's own width
+            # along the side (a record filed beside another keeps a millimetre, a chair 3 cm)
+            ext = (ctx.asset.bounds[1] - ctx.asset.bounds[0]) * ctx.scale
+            margin = min(SIDE_MARGIN, MARGIN_SHARE * float(np.abs(ctx.R.T @ nw) @ ext))
         else:
             hB = 0.0 if hull is None else float(np.max(plane_coords(s, hull) @ g - (cB + ctx.off) @ g))
-            clip = RG.strip(cB, g, max(hB, 0.0), max(hB, 0.0) + e.param("width"))
-            if hull is not None:  # within the parent's extent along the face
-                gp = np.array([g[1], -g[0]])
-                along = plane_coords(s, hull) @ gp - (cB + ctx.off) @ gp
-                clip = RG.clip(clip, RG.strip(cB, gp, float(along.min()), float(along.max())))
+            hB, w = max(hB, 0.0), e.param("width")
+            gp = np.array([g[1], -g[0]])
+            along = None if hull is None else plane_coords(s, hull) @ gp - (cB + ctx.off) @ gp
+
+            def within(m: float) -> BaseGeometry:
+                # the strip's far edge and its ends come in by m (its near edge is the face:
+                # settling does not push a child into its parent)
+                strip = RG.strip(cB, g, hB, hB + w - m)
+                if along is None:
+                    return strip
+                lo, hi = float(along.min()), float(along.max())
+                m = min(m, 0.25 * (hi - lo))
+                return RG.clip(strip, RG.strip(cB, gp, lo + m, hi - m))
+            margin = layout_margin(w)
+        clip = within(0.0)
         new = RG.clip(region, clip)
         if new.is_empty or new.area < 1e-10:
             if relaxed_to_nearest(e):
                 return closest(region, clip)
             raise emptied(e, ctx.sup, f"the {side} of {e.parent.object} is taken or outside "
                           f"{ctx.sup.name}", f" side {side}")
-        return new
+        return with_margin(new, lambda k: RG.clip(region, within(k * margin)))
 
 
 @register
@@ -192,6 +224,34 @@ class Toward(LayoutRule):
                                           tuple(cB + far * np.array([np.cos(a + half), np.sin(a + half)]))]))
         new = RG.clip(region, shapely.union_all(cones)) if cones else region
         return region if new.is_empty or new.area < 1e-10 else new
+
+
+#: Margin (m) that a layout relation's region keeps inside its limit where the region allows
+#: (settling moves things by millimetres to centimetres), at most ``MARGIN_SHARE`` of the limit.
+LAYOUT_MARGIN = 0.05
+MARGIN_SHARE = 0.2
+#: Margin (m) beyond the parent's centroid that a ``SIDE_OF`` region keeps where it allows, at
+#: most ``MARGIN_SHARE`` of the child's width along the side.
+SIDE_MARGIN = 0.03
+#: Least share of a layout relation's exact region that its region with the margin keeps to be
+#: used instead (a sliver would crowd the sampled positions).
+MARGIN_KEEP = 0.1
+
+
+def layout_margin(limit: float) -> float:
+    """The margin (m) kept inside a distance or width ``limit`` (m)."""
+    return min(LAYOUT_MARGIN, MARGIN_SHARE * float(limit))
+
+
+def with_margin(exact: BaseGeometry, inner: Callable[[float], BaseGeometry]) -> BaseGeometry:
+    """The region ``inner(k)`` with the full margin (k = 1) or half of it, whichever first keeps
+    at least ``MARGIN_KEEP`` of the ``exact`` region's area; else the exact region (the child
+    then goes on the limit's edge, as the free room allows)."""
+    for k in (1.0, 0.5):
+        got = inner(k)
+        if not got.is_empty and got.area >= max(MARGIN_KEEP * exact.area, 1e-10):
+            return got
+    return exact
 
 
 #: Width (m) of the band of free positions nearest an emptied layout region that a relaxed
