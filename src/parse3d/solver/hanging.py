@@ -19,6 +19,10 @@ as real coats do, instead of failing with "jacket1 in the way".
 
 What hangs below a part keeps clear of the walls (:func:`off_wall`): a lidded pot wider than
 the gap between a pot rail and the wall behind it hangs out from the wall on its hook.
+
+A wall hook with something to hang below it keeps that room free (:func:`room_below`): a
+second hook is put up where its hat will hang clear of the first hook's hat, not a hand beside
+it, where the hat finds "hat1 in the way".
 """
 
 from __future__ import annotations
@@ -33,10 +37,10 @@ from ..assets.model import Asset
 from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry, hull_extents
-from .state import SolveState
+from .state import SolveState, plane_coords
 from .support import support_candidates
 
-__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook",
+__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -420,3 +424,55 @@ def off_wall_reason(edge: Edge, sup, reach: float) -> str:
     return (f"{sup.name} is too close to the wall behind it for {c} to hang right below it: "
             f"{c} hangs {reach * 100:.0f} cm out from it, on its hook (write HANGING_BELOW "
             f"{c} -> a part further from the wall, or a smaller {c})")
+
+
+def hung_size(pag, oid: str) -> float:
+    """The largest :func:`typical_size` of what is written ``HANGING_BELOW`` ``oid`` (0 when
+    nothing is): the room a hook takes on its wall with its hat."""
+    return max((typical_size(pag, e.child.object) for e in pag.relations
+                if e.relation == "HANGING_BELOW" and e.parent.object == oid), default=0.0)
+
+
+def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray) -> np.ndarray:
+    """Samples of an object put up on an upright surface (a hook on a wall) with things still
+    to hang below it, those whose room below is clear of what is placed first (a stable
+    partition; unchanged otherwise).
+
+    ``samples`` (N, 2) are positions of the object's origin and ``F`` its outline about it,
+    in the plane coordinates of ``sup``'s surface. The room below is as wide as the outline
+    or the largest of its hung children's :func:`typical_size` (whichever is wider), centred
+    on the outline, and that size tall below its lowest point; what is placed within that
+    size in front of the surface and overlaps it (seen on the surface) is in the way.
+    """
+    s = sup.surface
+    n = np.asarray(s.normal, float)
+    if abs(float(n[2])) > 0.5 or not len(samples):
+        return samples
+    kids = [e.child.object for e in st.pag.relations
+            if e.relation == "HANGING_BELOW" and e.parent.object == oid]
+    kids = [k for k in kids if not (k in st.scene.objects and st.scene.objects[k].placed)]
+    size = max((typical_size(st.pag, k) for k in kids), default=0.0)
+    if size <= 0:
+        return samples
+    up = np.array([float(s.u[2]), float(s.v[2])])
+    if np.linalg.norm(up) < 1e-6:
+        return samples
+    up /= np.linalg.norm(up)
+    along = np.array([-up[1], up[0]])
+    fa, fz = F @ along, F @ up
+    half = 0.5 * max(float(np.ptp(fa)), size)
+    mid = samples @ along + 0.5 * float(fa.min() + fa.max())
+    top = samples @ up + float(fz.min())
+    free = np.ones(len(samples), bool)
+    for o in st.scene.objects.values():
+        if not o.placed or o.id in (oid, sup.owner) or o.id not in st.hulls:
+            continue
+        H = st.hulls[o.id]
+        depth = (H - s.origin) @ n
+        if float(depth.min()) > size or float(depth.max()) < 0.0:
+            continue
+        P = plane_coords(s, H)
+        pa, pz = P @ along, P @ up
+        free &= ~((mid - half < pa.max()) & (mid + half > pa.min())
+                  & (top - size < pz.max()) & (top > pz.min()))
+    return np.vstack([samples[free], samples[~free]])

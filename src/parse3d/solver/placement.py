@@ -45,6 +45,7 @@ from .hanging import (
     off_wall_reason,
     other_hook,
     rail_fit,
+    room_below,
 )
 from .intent import (
     beside,
@@ -64,7 +65,7 @@ from .over import OverEdge, over_after, over_edge, over_instance, place_over
 from .regions import apply_region_rules, obstacles
 from .resting import rests_on
 from .rotation import solve_rotation
-from .rows import in_a_row, walled
+from .rows import in_a_row, packed, walled
 from .rules import RULES
 from .rules.alignment import level_plan, level_scale
 from .rules.contact import overhung_plan
@@ -739,9 +740,12 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
     s, rel, region0 = sup.surface, d.edge.relation, d.region0
     if in_a_row(st, oid, d.edge, sup, F, region0):  # side by side along a strip (rows.py)
         samples = from_one_end(samples, region0)
+    else:  # a crowded row of like things: against its ends and one another (rows.py)
+        samples = packed(st, oid, d.edge, sup, F, region0, samples)
     # a relaxed FAR_FROM or NEAR: as far (near) as the support allows (sampling.py)
     samples = toward_relaxed(st, oid, asset, scale, R, sup, d.others, samples)
     samples = leave_room(st, oid, sup, R, F, region0, samples)
+    samples = room_below(st, oid, sup, F, samples)  # a hook's hat clear of others (hanging.py)
     if RULES[rel].hangs and hung_siblings(st, oid, d.edge):
         samples = from_one_end(samples, region0)
     if rel == "IN" and sup.owner != "room" and round_asset(asset):

@@ -19,6 +19,7 @@ from ..pag.model import Edge
 from ..relations import SURFACES
 from .config import Fail
 from .geometry import asset_geometry, outline_indices, part_points
+from .rows import like_siblings, row_turns
 from .rules import RULES, Orientation, parent_surface_world
 from .state import SolveState, angle_to, parts_for, wrap
 from .support import Support
@@ -67,7 +68,8 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
             angles = wall_angles(st, R0, n_s)
             phi = angles[int(rng.integers(len(angles)))] + rng.integers(4) * np.pi / 2
         elif strategy == "constrained" and not free:
-            phi = _fitting_angle(st, asset, scale, sup, R0, n_s, rng)
+            phi = _fitting_angle(st, asset, scale, sup, R0, n_s, rng,
+                                 row=like_siblings(st, oid, support_edge))
         else:
             phi = rng.uniform(0, 2 * np.pi)
     R = axis_angle(n_s, phi) @ R0 if phi is not None else R0
@@ -101,10 +103,12 @@ def _base_rotation(label: str, n_s: np.ndarray) -> np.ndarray:
 
 
 def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0: np.ndarray,
-                   n_s: np.ndarray, rng: np.random.Generator) -> float:
+                   n_s: np.ndarray, rng: np.random.Generator, row: int = 1) -> float:
     """A free angle on an object's surface: three times in four square to the support's owner
     (else uniform), preferring the quarter turns whose footprint sits well inside the support
-    (a TV along its stand, not across it); a uniform angle is kept only if it fits as well."""
+    (a TV along its stand, not across it); a uniform angle is kept only if it fits as well.
+    ``row`` like things sharing the part: only the turns that take them all side by side
+    (rows.row_turns), when some do and some do not."""
     s = sup.surface
     owner = st.scene.objects.get(sup.owner)
     ref = owner.rotation[:, 1] if owner is not None and owner.placed else None
@@ -145,12 +149,27 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
         fit = overlap
         a0, a1 = fit(quarter[0]), fit(quarter[1])
         areas = np.array([a0, a1, a0, a1])
-    good = [p for p, a in zip(quarter, areas, strict=True) if a >= 0.7 * areas.max()]
+    rows = row_turns(sup.region, [_outline(asset, hull, R0, n_s, s, q) for q in quarter[:2]],
+                     row) if row > 1 else None
+    keep = rows + rows if rows is not None else [True] * 4
+    if rows is not None:  # like things in a row: the turns that take them all (rows.py)
+        areas = np.where(keep, areas, -1.0)
+    good = [p for p, a, k in zip(quarter, areas, keep, strict=True)
+            if k and a >= 0.7 * areas.max()]
     if rng.random() >= 0.75:
         phi = rng.uniform(0, 2 * np.pi)
-        if areas.min() == areas.max() == 1.0 or fit(phi) >= 0.7 * areas.max():
+        if rows is None and (areas.min() == areas.max() == 1.0 or fit(phi) >= 0.7 * areas.max()):
             return float(phi)
     return float(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
+
+
+def _outline(asset: Asset, hull: np.ndarray, R0: np.ndarray, n_s: np.ndarray, s,
+             phi: float) -> np.ndarray:
+    """The child's footprint in the plane coordinates of ``s``, turned ``phi`` about ``n_s``."""
+    R = axis_angle(n_s, phi) @ R0
+    Y = hull @ R.T
+    return RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
+                             outline_indices(asset, R.T @ s.normal))
 
 
 def _lean_angle(asset: Asset, scale: float, R: np.ndarray, k: np.ndarray, d: np.ndarray, e: Edge,

@@ -18,6 +18,7 @@ from ..scene.model import PlacedObject
 from .choice import touching
 from .config import Fail
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
+from .hanging import hung_size
 from .regions import apply_region_rules, obstacles, steps_on
 from .rules import RULES, RegionContext, parent_frame, side_vector
 from .state import SolveState, angle_to, plane_coords, plane_key
@@ -273,7 +274,8 @@ def leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndar
                 continue
         more = [need(e.child.object, seen | {kid}) for e in beside(kid)
                 if e.child.object not in seen]
-        return min(sizes, default=0.0) + max(more, default=0.0)
+        # a hook with a hat to hang: the hat's room (hanging.py)
+        return max(min(sizes, default=0.0), hung_size(pag, kid)) + max(more, default=0.0)
 
     wants: list[tuple[np.ndarray, float]] = []
     for e in beside(oid):

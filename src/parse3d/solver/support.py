@@ -535,7 +535,7 @@ def _world_top(part, T: np.ndarray) -> str | None:
     """The label of ``part``'s surface whose normal points up under the pose ``T`` (within
     5 degrees), or None."""
     for lb, n in SURFACES.items():
-        if lb in part.surfaces and float((T[:3, :3] @ np.asarray(n, float))[2]) \
-                >= np.cos(np.deg2rad(5)):
+        d = T[:3, :3] @ np.asarray(n, float)  # T scales the object: its direction only
+        if lb in part.surfaces and float(d[2]) >= np.cos(np.deg2rad(5)) * np.linalg.norm(d):
             return lb
     return None
