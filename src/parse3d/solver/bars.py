@@ -15,7 +15,7 @@ import numpy as np
 import shapely
 
 from ..assets.model import Asset
-from .geometry import asset_geometry
+from .geometry import asset_geometry, rect_sides
 from .state import plane_coords
 
 __all__ = ["across_need", "across_opening", "held_across", "opening"]
@@ -96,11 +96,17 @@ def across_opening(hole, samples: np.ndarray, mid: np.ndarray, F: np.ndarray) ->
 BEARING = 0.03
 
 
-def across_need(sups, length: float) -> float:
-    """The least length (m) an ``ON`` child ``length`` long needs to rest across the opening
-    of a ring support among ``sups`` (a tray across a tub: the opening's narrow width and
-    ``BEARING`` onto the ring on each side), when it is at least half that width (a tray, not
-    a bottle on the rim) and falls short of it; 0 otherwise."""
+def across_need(sups, length: float, width: float) -> float:
+    """The least length (m) an ``ON`` child with a ``length`` x ``width`` footprint needs to
+    rest across the opening of a ring support among ``sups`` (a tray across a tub: the
+    opening's narrow width and ``BEARING`` onto the ring on each side), when it is at least
+    half that width (a tray, not a bottle on the rim), falls short of it and fits none of the
+    other supports (a bag on a bench's seat, not across the frame round it); 0 otherwise."""
+    for sup in sups:
+        if not sup.ring:
+            short, long = rect_sides(sup.region)
+            if width <= short and length <= long:
+                return 0.0
     need = 0.0
     for sup in sups:
         hole = opening(sup)

@@ -682,8 +682,9 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
     if not reach and support_edge.relation == "ON" and not support_edge.parent.is_room_element:
         # across a ring round an opening (a tray across a tub, bars.py)
         try:
-            reach = across_need(support_candidates(st, support_edge),
-                                scale * extent_across(asset, axis))
+            ext = sorted(float(e) for k, e in enumerate(hull_extents(asset)[0]) if k != axis)
+            reach = across_need(support_candidates(st, support_edge), scale * ext[1],
+                                scale * ext[0])
         except Fail:
             reach = 0.0
     if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
