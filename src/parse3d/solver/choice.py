@@ -18,6 +18,7 @@ from ..geometry import regions as RG
 from ..measure.checks import BOARD_LABELS, DIST_TOL, board_parts
 from ..pag.model import Edge
 from ..relations import SURFACES
+from .bars import across_need
 from .config import Fail
 from .coverings import covering_scale
 from .fit import CONTENTS_AREA, FIT_SHARE, contents_scale, roomy_scale, top_fit
@@ -699,6 +700,14 @@ def instance_scale(st: SolveState, oid: str, library, node, category: str, asset
                 r = top_short(st, support_edge, asset, 1.0, axis)
                 scale = max(lo, min(scale, FIT_SHARE / r)) if r > 0 else scale
     reach = span_need(st, support_edge)
+    if not reach and support_edge.relation == "ON" and not support_edge.parent.is_room_element:
+        # across a ring round an opening (a tray across a tub, bars.py)
+        try:
+            ext = sorted(float(e) for k, e in enumerate(hull_extents(asset)[0]) if k != axis)
+            reach = across_need(support_candidates(st, support_edge), scale * ext[1],
+                                scale * ext[0])
+        except Fail:
+            reach = 0.0
     if reach > 0 and keep is None and scale * extent_across(asset, axis) < reach:
         # too short to rest across the parts it must span (a keyboard on a stand's two
         # arms): the widest untried instance, then as large as the node's scale allows

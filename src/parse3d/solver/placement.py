@@ -17,7 +17,7 @@ from ..geometry.meshes import MeshArrays, scaled_vertices
 from ..measure.checks import EPS, STEP, world_points
 from ..pag.model import Edge
 from ..scene.model import PlacedObject, SupportChoice
-from .bars import held_across
+from .bars import across_opening, held_across, opening
 from .choice import (
     SURFACE_AXES,
     alternative_instance,
@@ -769,6 +769,9 @@ def _ordered(d: _OnSupport, samples: np.ndarray, rng: np.random.Generator) -> np
         # wider than its support (a microwave on a small fridge): its base centred over the
         # support first, where its feet have the most room (sampling.py)
         samples = np.vstack([base_centred(asset, scale, R, s, d.base_solid), samples])
+    if d.overhang and rel == "ON" and (hole := opening(sup)) is not None:
+        # across a ring round an opening (a tray on a tub's rim): centred on its long axis
+        samples = across_opening(hole, samples, base_centred(asset, scale, R, s, hole), F)
     # a plate on a plate, a bowl in a bowl: on the parent's axis first (solver/nesting.py)
     return concentric_first(st, oid, sup, asset, scale, R, samples)
 

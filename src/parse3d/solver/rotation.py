@@ -17,6 +17,7 @@ from ..geometry.frames import axis_angle, rotation_between
 from ..measure.reach import STAND, stands_to_lean
 from ..pag.model import Edge
 from ..relations import SURFACES
+from .bars import opening
 from .config import Fail
 from .geometry import asset_geometry, outline_indices, part_points
 from .rows import like_siblings, row_turns
@@ -132,9 +133,10 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
     else:  # a half turn fits (nearly) as well as its opposite: two erosions, not four
         a0, a1 = fit(quarter[0]), fit(quarter[1])
         areas = np.array([a0, a1, a0, a1])
-    if areas.max() <= 0.0 and sup.spans:
+    if sup.spans and (areas.max() <= 0.0 or opening(sup) is not None):
         # no turn fits inside a support joining several parts (a keyboard on a stand's two
-        # arms): the turns whose footprint, centred on it, lies most over the parts (across)
+        # arms), or it spans a ring round an opening (a tray on a tub's rim, bars.py): the
+        # turns whose footprint, centred on it, lies most over the parts (across)
         solid = sup.region.difference(shapely.union_all([shapely.Polygon(h) for h in sup.holes])) \
             if sup.holes else sup.region
 

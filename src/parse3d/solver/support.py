@@ -17,7 +17,7 @@ from ..relations import SURFACES
 from ..scene.model import SupportChoice
 from .config import Fail
 from .geometry import ray_caster
-from .state import SolveState, parts_for
+from .state import SolveState, parts_for, plane_coords
 
 __all__ = ["Support", "support_candidates"]
 
@@ -43,6 +43,9 @@ class Support:
         The surface spans several parts at one level (a luggage rack's straps): ``region`` is
         their convex hull, ``holes`` the gaps between them; what rests on it may straddle the
         gaps with its base on the parts.
+    ring : bool
+        The surface is a part's top that is a ring round an opening (a tub's rim; ``spans``,
+        ``holes`` the opening): what is too big for the ring rests across the opening.
     """
 
     surface: Surface
@@ -51,6 +54,7 @@ class Support:
     clearance: float = float("inf")
     holes: list = field(default_factory=list)
     spans: bool = False
+    ring: bool = False
 
     @property
     def owner(self) -> str:
@@ -280,6 +284,43 @@ def _hole_depths(s: Surface, holes: list[np.ndarray], parent) -> list[bool]:
     return out
 
 
+#: Metres: the pieces of a part whose tops lie this close to the level of its top surface
+#: make its rim together (a built-in tub's four walls).
+RIM_LEVEL = 5e-3
+
+#: Metres: gaps between the pieces' flat tops up to twice this wide are closed (the chamfers
+#: where a built-in tub's bevelled walls meet at the corners).
+RIM_GAP = 0.015
+
+#: Metres below a piece's top within which its points make its flat top.
+RIM_TOL = 3e-3
+
+
+def ring_top(part, T: np.ndarray, s):
+    """The top of ``part`` posed by ``T`` at the level of its top surface ``s`` when it is a
+    ring around an opening, as a polygon with holes in the plane coordinates of ``s``; else
+    None. The surface itself, when it has a hole (a freestanding tub's rolled rim); else the
+    union of the flat tops of the part's convex pieces at that level (each piece's points
+    within ``RIM_TOL`` of its top: a built-in tub's four walls), the gaps between them up to
+    ``2 * RIM_GAP`` wide closed (their chamfers where they meet at the corners)."""
+    if any(g.interiors for g in getattr(s.polygon, "geoms", [s.polygon])):
+        return s.polygon
+    n = s.normal
+    tops = []
+    for v in [pc.vertices for pc in part.piece_arrays] or [part.vertices]:
+        w = np.asarray(v, float) @ T[:3, :3].T + T[:3, 3]
+        h = (w - s.origin) @ n
+        hi = float(h.max())
+        if abs(hi) > RIM_LEVEL:
+            continue
+        tops.append(shapely.MultiPoint(plane_coords(s, w[h >= hi - RIM_TOL])).convex_hull)
+    if len(tops) < 2:
+        return None
+    ring = shapely.union_all([g.buffer(RIM_GAP, join_style="mitre") for g in tops])
+    ring = ring.buffer(-RIM_GAP, join_style="mitre")
+    return ring if any(g.interiors for g in getattr(ring, "geoms", [ring])) else None
+
+
 def _carrier(asset, ins) -> str:
     """The part whose geometry carries an internal surface: a drawer's floor is listed under
     its front (the part a PAG names) and under its box, and the box is what a child IN the
@@ -342,7 +383,7 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     if rel == "ON" and label == "top" and ref.index is None \
             and ref.part in parent.asset.label_groups:
         parts = outer_tops(parent.asset, parts)  # a carcass's top panel, not its floor
-    out = []
+    out, rings, like = [], [], rel == "ON" and _like(st, edge)
     if rel == "IN":
         names = {p.name for p in parts}
         seen: set[tuple] = set()
@@ -401,6 +442,13 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 f = floor.transformed(T)
                 out.append(Support(f, SupportChoice(parent.id, p.name, lb), f.polygon))
             out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
+            if rel == "ON" and lb == "top" and not like and (ring := ring_top(p, T, s)) is not None \
+                    and (deep := _deep_holes(s, _holes(ring), parent, (p.name, "ring"))):
+                # a ring round an opening (a tub's rim): across it, after the rest (bars.py);
+                # not for one of the parent's kind (a basket on a basket nests or stacks)
+                whole = filled(ring)
+                rings.append(Support(replace(s, polygon=whole), SupportChoice(parent.id, p.name, lb),
+                                     whole, holes=deep, spans=True, ring=True))
     if not out:
         if slanted:
             raise Fail(f"{rel}: {ref} has no flat upward surface ({', '.join(slanted)} only "
@@ -421,7 +469,7 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         named = {(o.choice.part, o.surface.label) for o in out}
         out += [o for o in _support_candidates(st, whole)
                 if (o.choice.part, o.surface.label) not in named]
-    return out
+    return out + rings
 
 
 def _inside_of(parent, parts, T) -> list[Support]:
