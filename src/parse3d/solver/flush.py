@@ -13,7 +13,8 @@ the relation's check: a grille 4 mm proud of the back does not keep the back off
 
 A part hung below a small part (a mug by its handle on a cup hook, a saucepan by its handle on
 a pot rail's bar) is overhung only by what comes under that part: the mug's rim, a centimetre
-higher than its handle, stands beside the hook, not under it (:func:`clears_beside`). The
+higher than its handle, stands beside the hook, not under it (:func:`clears_beside`; placed by
+:func:`parse3d.solver.hanging.hung_by_part`). The
 test is local to the parent surface's extent for a finite parent part; a wall, the floor, the
 ceiling or a large face is an unbounded plane to it.
 """
@@ -33,7 +34,7 @@ from .intent import whole_object
 
 __all__ = ["FLUSH_RELATIONS", "reach", "touching_parts", "excess", "flush_edge",
            "flush_reason", "flush_edges", "least_overhung_key", "over_tolerance",
-           "flush_plan", "clears_beside", "hangs_beside", "hung_by_part", "BESIDE_TURNS"]
+           "flush_plan", "clears_beside", "BESIDE_TURNS"]
 
 #: Contact relations whose named child part goes flush with what overhangs it.
 FLUSH_RELATIONS = ("AGAINST",)
@@ -198,32 +199,3 @@ def _beside(asset: Asset, part, scale: float, w: float, length: float) -> bool:
                or float((q @ v).max()) < cv - length / 2 for q in up):
             return True
     return False
-
-
-def _hung_part(st, asset: Asset, scale: float, e: Edge):
-    from .config import Fail
-    from .geometry import rect_sides
-    from .support import support_candidates
-
-    if e.parent.is_room_element or e.relation != "HANGING_BELOW" or e.child.part is None:
-        return None
-    try:
-        sups = support_candidates(st, e)
-    except Fail:
-        return None
-    got = [clears_beside(asset, e, scale, rect_sides(s.region)) for s in sups]
-    return got[0] if got and all(p is not None for p in got) else None
-
-
-def hangs_beside(st, asset: Asset, scale: float, e: Edge) -> bool:
-    """Whether :func:`clears_beside` finds a part below each surface the parent part of
-    ``e`` resolves to (a room element is an unbounded plane: False)."""
-    return _hung_part(st, asset, scale, e) is not None
-
-
-def hung_by_part(st, asset: Asset, scale: float, e: Edge) -> np.ndarray | None:
-    """``(N, 3)`` points (asset frame, at ``scale``) of the named child part of ``e`` the
-    child hangs by when the parts reaching higher stand beside the parent
-    (:func:`hangs_beside`): its top then touches the parent, not the object's; else None."""
-    p = _hung_part(st, asset, scale, e)
-    return None if p is None else part_points([p]) * scale

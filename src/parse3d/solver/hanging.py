@@ -32,11 +32,12 @@ import numpy as np
 from ..assets.model import Asset
 from ..pag.model import Edge
 from .config import Fail
-from .geometry import asset_geometry, hull_extents
+from .flush import clears_beside
+from .geometry import asset_geometry, hull_extents, part_points, rect_sides
 from .state import SolveState
 from .support import support_candidates
 
-__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook",
+__all__ = ["attachment_region", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -420,3 +421,29 @@ def off_wall_reason(edge: Edge, sup, reach: float) -> str:
     return (f"{sup.name} is too close to the wall behind it for {c} to hang right below it: "
             f"{c} hangs {reach * 100:.0f} cm out from it, on its hook (write HANGING_BELOW "
             f"{c} -> a part further from the wall, or a smaller {c})")
+
+
+def _hung_part(st: SolveState, asset: Asset, scale: float, e: Edge):
+    if e.parent.is_room_element or e.relation != "HANGING_BELOW" or e.child.part is None:
+        return None
+    try:
+        sups = support_candidates(st, e)
+    except Fail:
+        return None
+    got = [clears_beside(asset, e, scale, rect_sides(s.region)) for s in sups]
+    return got[0] if got and all(p is not None for p in got) else None
+
+
+def hangs_beside(st: SolveState, asset: Asset, scale: float, e: Edge) -> bool:
+    """Whether :func:`.flush.clears_beside` finds a part of ``asset`` at ``scale`` to hang by
+    below each surface the parent part of ``e`` resolves to (a room element is an unbounded
+    plane: False): a mug by its handle on a cup hook, its rim beside the hook."""
+    return _hung_part(st, asset, scale, e) is not None
+
+
+def hung_by_part(st: SolveState, asset: Asset, scale: float, e: Edge) -> np.ndarray | None:
+    """``(N, 3)`` points (asset frame, at ``scale``) of the named child part of ``e`` the
+    child hangs by when the parts reaching higher stand beside the parent
+    (:func:`hangs_beside`): its top then touches the parent, not the object's; else None."""
+    p = _hung_part(st, asset, scale, e)
+    return None if p is None else part_points([p]) * scale

@@ -33,12 +33,14 @@ from .collision import Body, cached_body
 from .config import STRUCTURAL_FAILURES, Fail, SolverConfig
 from .coverings import covers_floor, lay_covering
 from .fit import instance_for
-from .flush import flush_plan, hangs_beside, hung_by_part, least_overhung_key
+from .flush import flush_plan, least_overhung_key
 from .geometry import asset_geometry, drop_distance, outline_indices
 from .hanging import (
     attachment_region,
     draped_over,
     hang_over,
+    hangs_beside,
+    hung_by_part,
     hung_lengthwise,
     off_wall,
     off_wall_reason,
