@@ -34,6 +34,8 @@ from ..pag.model import Edge
 from .config import Fail
 from .flush import clears_beside
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
+from .intent import overhang
+from .rotation import HOOK_REACH
 from .state import SolveState
 from .support import support_candidates
 
@@ -384,10 +386,6 @@ def attachment_region(region0, region):
     return region if region0.is_empty or region0.area < 1e-10 else region0
 
 
-#: Metres: the furthest out from its support a hung thing's attachment may be drawn when its
-#: body, hung right below, would reach into the wall behind (a pot on an S-hook of a rail
-#: a few centimetres off the wall).
-HOOK_REACH = 0.15
 
 
 def off_wall(st: SolveState, sup, region0, Fc: np.ndarray, free, F: np.ndarray):
@@ -424,8 +422,9 @@ def off_wall_reason(edge: Edge, sup, reach: float) -> str:
 
 
 def _hung_part(st: SolveState, asset: Asset, scale: float, e: Edge):
-    if e.parent.is_room_element or e.relation != "HANGING_BELOW" or e.child.part is None:
-        return None
+    if e.parent.is_room_element or e.relation != "HANGING_BELOW" or e.child.part is None \
+            or not 0 < overhang(asset, e)[0] < np.inf:
+        return None  # the named part (with its end pads: a collar's loop) is the top already
     try:
         sups = support_candidates(st, e)
     except Fail:

@@ -178,7 +178,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     for attempt in range(cfg.asset_attempts):
         got = draw_instance(library, node, reqs, tried, rng, reasons, attempt=attempt, keep=keep,
                             loosen=loosen, support_edge=support_edge, smallest=smallest,
-                            own=frozenset(map(edge_text, edges)))
+                            own=frozenset(map(edge_text, edges)),
+                            leans=any(e.relation == "LEANING_AGAINST" for e in edges))
         if got is None:
             break  # every suitable instance was tried
         category, asset, reqs = got
