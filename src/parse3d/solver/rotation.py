@@ -8,6 +8,8 @@ furniture) unless the object asks for ``"yaw": "free"``.
 
 from __future__ import annotations
 
+import zlib
+
 import numpy as np
 import shapely
 
@@ -111,8 +113,9 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
     """A free angle on an object's surface: three times in four square to the support's owner
     (else uniform), preferring the quarter turns whose footprint sits well inside the support
     (a TV along its stand, not across it); a uniform angle is kept only if it fits as well.
-    Something hung below a smaller part takes a quarter turn that keeps it clear
-    (:func:`_in_room`) three times in four when only some are. ``oid`` is the child."""
+    Something hung below a smaller part drawn turned into a wall or the furniture takes the
+    nearest quarter turn that keeps it clear (:func:`_in_room`) three times in four, when
+    some do. ``oid`` is the child."""
     s = sup.surface
     owner = st.scene.objects.get(sup.owner)
     ref = owner.rotation[:, 1] if owner is not None and owner.placed else None
@@ -153,20 +156,29 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
         fit = overlap
         a0, a1 = fit(quarter[0]), fit(quarter[1])
         areas = np.array([a0, a1, a0, a1])
+    turn = lambda phi: float(phi)  # noqa: E731
     if areas.max() <= 0.0 and float(n_s[2]) < -0.9:  # hung below it
-        # wider than its support every way (a coat on a wall hook): three times in four, when
-        # some quarter turns are clear and some not, a clear one (_in_room): along the wall
-        # behind the hook, not into it (else as before: another ring or hook may take it)
+        # wider than its support every way (a coat on a wall hook): when some quarter turns
+        # are clear and some not (_in_room), a turn drawn into a wall or the furniture is,
+        # three times in four, the nearest clear quarter turn instead (else kept: another
+        # ring or hook may take it); decided by a generator of the child's own, so the
+        # solve's draws stay as they were
         inside = _in_room(st, oid, asset, scale, sup, R0, n_s)
         clear = [p for p in quarter if inside(p)]
-        if 0 < len(clear) < 4 and rng.random() < 0.75:
-            return float(clear[int(rng.integers(len(clear)))] + rng.normal(0, np.deg2rad(2.0)))
+        if 0 < len(clear) < 4:
+            own = np.random.default_rng([zlib.crc32(f"{oid} {asset.asset_id}".encode()),
+                                         zlib.crc32(sup.name.encode())])
+
+            def turn(phi: float) -> float:
+                if inside(phi) or own.random() >= 0.75:
+                    return float(phi)
+                return float(min(clear, key=lambda p: abs(wrap(p - phi))))
     good = [p for p, a in zip(quarter, areas, strict=True) if a >= 0.7 * areas.max()]
     if rng.random() >= 0.75:
         phi = rng.uniform(0, 2 * np.pi)
         if areas.min() == areas.max() == 1.0 or fit(phi) >= 0.7 * areas.max():
-            return float(phi)
-    return float(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
+            return turn(phi)
+    return turn(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
 
 
 def _in_room(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
