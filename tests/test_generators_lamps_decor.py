@@ -118,6 +118,10 @@ def _probe(asset, variant: str) -> None:
         screen = _box(asset, "screen")
         assert abs(screen[1, 1] - _box(asset, "body")[1, 1]) < 0.003  # the screen is the front
         assert _one(asset, "screen").surfaces["front"].area > 0.5 * ext[0] * (screen[1, 2] - screen[0, 2])
+        if variant == "wall_mount":  # no stand: its VESA plate is its furthest back
+            assert not asset.parts_by_label("stand") and not asset.parts_by_label("base")
+            assert _box(asset, "vesa_plate")[0, 1] <= b[0, 1] + EPS
+            return
         assert screen[0, 2] > _box(asset, "stand")[0, 2]
         if c == "monitor":
             assert _box(asset, "base")[0, 2] < EPS

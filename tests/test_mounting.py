@@ -14,9 +14,10 @@ from test_rooms import solved
 def test_a_screen_and_a_sign_are_mounted_by_their_backs(seed):
     """Both placed and fixed; the sign's SECURED_TO holds after settling (its back on the face
     set in the frame); the screen, far wider than the plate, hangs with its middle in front of
-    the plate, its relation held (its back on the arms fixed on the plate) or, where its stand
-    reaches further back than its back cover (every screen of the pool has one), recorded
-    relaxed saying what to name instead; nothing else broken."""
+    the plate, its relation held (its back on the arms fixed on the plate: a screen made for a
+    mount, its VESA plate touching, is drawn for the back cover named) or, where its stand
+    reaches further back than its back cover, recorded relaxed saying what to name instead;
+    nothing else broken."""
     from parse3d.measure import check_edge
     from parse3d.measure.checks import world_points
     from parse3d.solver.intent import whole_object

@@ -36,7 +36,7 @@ KNOWN: dict[str, str] = {
 #: to write instead (tests/test_drape.py: cloth ON a rod;
 #: tests/test_over.py: soft things over a bar).
 IMPOSSIBLE = {"living_sofa_wall", "named_support_parts",
-              "heap_of_round_things", "hung_by_a_named_part", "hung_by_collar",
+              "heap_of_round_things",
               "iron_on_a_leaning_board", "flat_things_fall_flat", "backpack_leans_further",
               "layout_emptied", "mounted_on_small_parts", "flush_by_what_sticks_out",
               "cloth_over_rods", "soft_things_over_a_bar", "towel_over_a_handle",

@@ -684,8 +684,10 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
     return Check(ok, res, detail), ang_tol != ANGLE_TOL_DEG or leans
 
 
-#: Relations whose named child part may touch through pads at its end (:func:`_ends`).
-END_RELATIONS = ("ON", "AGAINST", "SECURED_TO")
+#: Relations whose named child part may touch through pads at its end (:func:`_ends`): a
+#: chair leg's glide, a screen's VESA plate on its back cover, the hanging loop rising from a
+#: coat's collar (as the solver reads them: ``solver.intent.overhang``).
+END_RELATIONS = ("ON", "AGAINST", "SECURED_TO", "HANGING_BELOW")
 #: Metres a pad at the end of a named part (a chair leg's glide, a table foot, a bumper on a
 #: cabinet's back) may reach beyond it; a part reaching further (an armchair's legs under its
 #: frame) is a part of its own, not the named part's end.

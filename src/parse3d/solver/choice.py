@@ -492,7 +492,8 @@ def level_instance(st: SolveState, library, oid: str, edges: list[Edge], leave, 
 
 def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Generator,
                   reasons: list[str], *, attempt: int, keep, loosen: dict[int, Edge],
-                  support_edge: Edge, smallest: bool, own: frozenset[str] = frozenset()):
+                  support_edge: Edge, smallest: bool, own: frozenset[str] = frozenset(),
+                  leans: bool = False):
     """The instance of one placement attempt: drawn from the library, or picked by a rule
     (the last one kept for a repair, the least overhung for a relaxed contact, the thinnest
     for a flat thing hung edge-up, the smallest after a failure for room, the lowest after
@@ -500,7 +501,8 @@ def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Gen
     ``tried``. Returns ``(category, asset, reqs)`` (``reqs`` loosened when no instance meets
     them as written: what the object's children ask of it, from relations other than the
     texts ``own``, is dropped last), or None when every suitable instance was tried; ``Fail``
-    when none in the pool is suitable."""
+    when none in the pool is suitable. Set ``leans`` when the object leans on something: an
+    instance that cannot stand on its own base is then kept."""
     category = node.candidates[int(rng.integers(len(node.candidates)))]
     asset = library.get(category, rng)
     picked = True  # by a rule below, else drawn
@@ -582,8 +584,46 @@ def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Gen
         if alt is not None and overhang(alt[1], support_edge)[0] < overhang(
                 asset, support_edge)[0]:
             category, asset = alt
+    if keep is None and not leans and stood_on_base(support_edge, node.id) \
+            and not stands(asset):
+        # ON by the whole object, an instance that cannot stand on its base (a TV made for the
+        # wall, without feet): one that stands, of every slot, looked up without the solve's
+        # generator (what leans on something needs no base of its own)
+        alt = alternative_instance(library, node.candidates, reqs, tried | {asset.asset_id},
+                                   np.random.default_rng(zlib.crc32(node.id.encode())),
+                                   key=lambda a: not stands(a), every=True)
+        if alt is not None and stands(alt[1]):
+            category, asset = alt
     tried.add(asset.asset_id)
     return category, asset, reqs
+
+
+def stood_on_base(e: Edge, oid: str) -> bool:
+    """Whether the support ``e`` stands its child ``oid`` on its own base: ``ON`` by the whole
+    object's bottom."""
+    return e.relation == "ON" and e.child.object == oid and e.child.part is None \
+        and (e.child.surface or "bottom") == "bottom"
+
+
+_STANDS: dict[str, bool] = {}
+
+
+def stands(asset: Asset) -> bool:
+    """Whether ``asset`` stands on its base as modelled: its centre of mass lies over the
+    convex hull (grown by 1 mm) of its points within 3 mm of its lowest (a TV's feet, a book's
+    bottom edge; not a wall TV's buttons under its bottom edge, nor a picture frame's edge
+    with the frame's back bulging behind it)."""
+    got = _STANDS.get(asset.asset_id)
+    if got is None:
+        pts = part_points(asset.parts)
+        low = pts[pts[:, 2] <= pts[:, 2].min() + 3e-3][:, :2]
+        com = asset_geometry(asset).com
+        base = shapely.MultiPoint(low).convex_hull.buffer(1e-3)
+        got = bool(base.contains(shapely.Point(com[0], com[1])))
+        if len(_STANDS) > 8192:
+            _STANDS.clear()
+        _STANDS[asset.asset_id] = got
+    return got
 
 
 def top_short(st: SolveState, edge: Edge, asset: Asset, scale: float, axis: int) -> float:

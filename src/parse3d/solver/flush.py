@@ -10,6 +10,13 @@ goes on.
 Pads ending the named part toward the contact (a fridge's vent grille on its back, a chair
 leg's glide: :func:`parse3d.measure.checks.end_pads`) count as the named part, as they do in
 the relation's check: a grille 4 mm proud of the back does not keep the back off the wall.
+
+A part hung below a small part (a mug by its handle on a cup hook, a saucepan by its handle on
+a pot rail's bar) is overhung only by what comes under that part: the mug's rim, a centimetre
+higher than its handle, stands beside the hook, not under it (:func:`clears_beside`; placed by
+:func:`parse3d.solver.hanging.hung_by_part`). The
+test is local to the parent surface's extent for a finite parent part; a wall, the floor, the
+ceiling or a large face is an unbounded plane to it.
 """
 
 from __future__ import annotations
@@ -27,7 +34,7 @@ from .intent import whole_object
 
 __all__ = ["FLUSH_RELATIONS", "reach", "touching_parts", "excess", "flush_edge",
            "flush_reason", "flush_edges", "least_overhung_key", "over_tolerance",
-           "flush_plan"]
+           "flush_plan", "clears_beside", "BESIDE_TURNS"]
 
 #: Contact relations whose named child part goes flush with what overhangs it.
 FLUSH_RELATIONS = ("AGAINST",)
@@ -146,3 +153,49 @@ def flush_plan(asset: Asset, scale: float, edges: list[Edge],
             for i, e in enumerate(edges) if i > 0 and i not in leave
             and e in flush_edges([e]) and over_tolerance(excess(asset, e, scale))}
 
+
+
+#: Headings (over a half turn) tried for the side of the named part its overhanging parts lie
+#: beyond, by :func:`clears_beside`.
+BESIDE_TURNS = 24
+
+
+def clears_beside(asset: Asset, e: Edge, scale: float, sides: tuple[float, float]):
+    """The named child part of ``e`` (``HANGING_BELOW`` naming a child part by its ``top``)
+    by which ``asset`` at ``scale`` can hang below a parent surface of ``sides`` (short, long;
+    metres): at some heading, with the parent centred over that part, every other part
+    reaching further up than it lies beside the parent's extent, not under it (a mug's rim
+    beside a cup hook, a saucepan's lid knob off a pot rail's bar); of several parts of that
+    name (a casserole's two handles), the first that can. None when none can, and for a
+    support of another kind or side (judged as against a plane: :func:`.intent.overhang`)."""
+    if e.relation != "HANGING_BELOW" or e.child.part is None \
+            or (e.child.surface or e.spec.child_surface) != "top":
+        return None
+    ps = asset.parts_by_label(e.child.part)
+    if e.child.index is not None:
+        ps = ps[e.child.index:e.child.index + 1]
+    w, length = (max(float(x), 1e-3) for x in sides)
+    for p in ps:
+        if _beside(asset, p, scale, w, length):
+            return p
+    return None
+
+
+def _beside(asset: Asset, part, scale: float, w: float, length: float) -> bool:
+    mine = part_points([part]) * scale
+    top = float(mine[:, 2].max())
+    up = [q for q in (part_points([o]) * scale for o in asset.parts if o is not part)
+          if float(q[:, 2].max()) > top + DIST_TOL]
+    if not up:
+        return True
+    for a in np.linspace(0.0, np.pi, BESIDE_TURNS, endpoint=False):
+        u = np.array([np.cos(a), np.sin(a), 0.0])
+        v = np.array([-np.sin(a), np.cos(a), 0.0])
+        # the parent's rectangle (short side across u) centred over the part's middle
+        cu = 0.5 * float((mine @ u).min() + (mine @ u).max())
+        cv = 0.5 * float((mine @ v).min() + (mine @ v).max())
+        if all(float((q @ u).min()) > cu + w / 2 or float((q @ u).max()) < cu - w / 2
+               or float((q @ v).min()) > cv + length / 2
+               or float((q @ v).max()) < cv - length / 2 for q in up):
+            return True
+    return False

@@ -36,11 +36,14 @@ import numpy as np
 from ..assets.model import Asset
 from ..pag.model import Edge
 from .config import Fail
-from .geometry import asset_geometry, hull_extents
+from .flush import clears_beside
+from .geometry import asset_geometry, hull_extents, part_points, rect_sides
+from .intent import overhang
+from .rotation import HOOK_REACH
 from .state import SolveState, plane_coords
 from .support import support_candidates
 
-__all__ = ["attachment_region", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
+__all__ = ["attachment_region", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -387,10 +390,6 @@ def attachment_region(region0, region):
     return region if region0.is_empty or region0.area < 1e-10 else region0
 
 
-#: Metres: the furthest out from its support a hung thing's attachment may be drawn when its
-#: body, hung right below, would reach into the wall behind (a pot on an S-hook of a rail
-#: a few centimetres off the wall).
-HOOK_REACH = 0.15
 
 
 def off_wall(st: SolveState, sup, region0, Fc: np.ndarray, free, F: np.ndarray):
@@ -476,3 +475,30 @@ def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray
         free &= ~((mid - half < pa.max()) & (mid + half > pa.min())
                   & (top - size < pz.max()) & (top > pz.min()))
     return np.vstack([samples[free], samples[~free]])
+
+
+def _hung_part(st: SolveState, asset: Asset, scale: float, e: Edge):
+    if e.parent.is_room_element or e.relation != "HANGING_BELOW" or e.child.part is None \
+            or not 0 < overhang(asset, e)[0] < np.inf:
+        return None  # the named part (with its end pads: a collar's loop) is the top already
+    try:
+        sups = support_candidates(st, e)
+    except Fail:
+        return None
+    got = [clears_beside(asset, e, scale, rect_sides(s.region)) for s in sups]
+    return got[0] if got and all(p is not None for p in got) else None
+
+
+def hangs_beside(st: SolveState, asset: Asset, scale: float, e: Edge) -> bool:
+    """Whether :func:`.flush.clears_beside` finds a part of ``asset`` at ``scale`` to hang by
+    below each surface the parent part of ``e`` resolves to (a room element is an unbounded
+    plane: False): a mug by its handle on a cup hook, its rim beside the hook."""
+    return _hung_part(st, asset, scale, e) is not None
+
+
+def hung_by_part(st: SolveState, asset: Asset, scale: float, e: Edge) -> np.ndarray | None:
+    """``(N, 3)`` points (asset frame, at ``scale``) of the named child part of ``e`` the
+    child hangs by when the parts reaching higher stand beside the parent
+    (:func:`hangs_beside`): its top then touches the parent, not the object's; else None."""
+    p = _hung_part(st, asset, scale, e)
+    return None if p is None else part_points([p]) * scale

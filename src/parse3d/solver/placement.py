@@ -40,6 +40,8 @@ from .hanging import (
     attachment_region,
     draped_over,
     hang_over,
+    hangs_beside,
+    hung_by_part,
     hung_lengthwise,
     off_wall,
     off_wall_reason,
@@ -180,7 +182,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     for attempt in range(cfg.asset_attempts):
         got = draw_instance(library, node, reqs, tried, rng, reasons, attempt=attempt, keep=keep,
                             loosen=loosen, support_edge=support_edge, smallest=smallest,
-                            own=frozenset(map(edge_text, edges)))
+                            own=frozenset(map(edge_text, edges)),
+                            leans=any(e.relation == "LEANING_AGAINST" for e in edges))
         if got is None:
             break  # every suitable instance was tried
         category, asset, reqs = got
@@ -258,7 +261,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         elif over is not None:
             loose = over[2]
         elif hang is None and names_part(support_edge) \
-                and 0 < overhang(asset, support_edge)[0] < np.inf:
+                and 0 < overhang(asset, support_edge)[0] < np.inf \
+                and not hangs_beside(st, asset, scale, support_edge):
             # even the best instance is overhung: it rests by the part that reaches furthest
             loose = loose_reason(asset, support_edge, scale)
             placed_edge = whole_object(support_edge)
@@ -490,6 +494,9 @@ class _OnSupport:
     leaned: tuple | None = None
     #: the support is a channel's floor, held in by its walls (rows.py)
     walled: bool = False
+    #: ``(N, 3)`` points (turned) of the part a child hangs by when what reaches higher stands
+    #: beside the parent (flush.py), else None: the whole child's top
+    attach: np.ndarray | None = None
 
 
 def _place_on(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarray,
@@ -528,6 +535,10 @@ def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarr
                    f"{sup.clearance:.2f} m of free height")
     drop = RULES[rel].offset(support_edge, rng)
     h = -float(hN.min()) + EPS + drop
+    attach = hung_by_part(st, asset, scale, support_edge) if RULES[rel].hangs else None
+    if attach is not None:  # by its named part, what reaches higher beside the parent (flush.py)
+        attach = attach @ R.T
+        h = -float((attach @ s.normal).min()) + EPS + drop
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
     walls = walled(st, sup)  # a channel's floor (rows.py)
@@ -538,7 +549,8 @@ def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarr
     F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),
                           outline_indices(asset, R.T @ s.normal))
     return _OnSupport(st, oid, asset, scale, hull, sup, support_edge, others, cfg, R, toward,
-                      lean, drop, h, height, region0, exclude, F, walled=walls)
+                      lean, drop, h, height, region0, exclude, F, walled=walls,
+                      attach=attach)
 
 
 def _positions(d: _OnSupport, rng: np.random.Generator) -> np.ndarray:
@@ -636,6 +648,9 @@ def _hanging_region(d: _OnSupport):
     Y = d.hull @ d.R.T
     hN = Y @ s.normal
     top = Y[hN <= hN.min() + 2e-3]
+    if d.attach is not None:
+        aN = d.attach @ s.normal
+        top = d.attach[aN <= aN.min() + 2e-3]
     c = np.array([float(np.mean(top @ s.u)), float(np.mean(top @ s.v))])
     Fc = RG.convex_footprint(np.vstack([c + o for o in ((0, 0), (1e-4, 0), (0, 1e-4),
                                                         (1e-4, 1e-4))]))

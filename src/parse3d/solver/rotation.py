@@ -8,6 +8,8 @@ furniture) unless the object asks for ``"yaw": "free"``.
 
 from __future__ import annotations
 
+import zlib
+
 import numpy as np
 import shapely
 
@@ -25,7 +27,13 @@ from .rules import RULES, Orientation, parent_surface_world
 from .state import SolveState, angle_to, parts_for, wrap
 from .support import Support
 
-__all__ = ["Orientation", "solve_rotation", "parent_surface_world"]
+__all__ = ["Orientation", "solve_rotation", "parent_surface_world", "HOOK_REACH"]
+
+#: Metres: the furthest out from its support a hung thing's attachment may be drawn when its
+#: body, hung right below, would reach into the wall behind (a pot on an S-hook of a rail
+#: a few centimetres off the wall; ``hanging.off_wall``). A turn of a hung child that reaches
+#: further into a wall than this is not drawn (a coat on a wall hook hangs along the wall).
+HOOK_REACH = 0.15
 
 
 def wall_angles(st: SolveState, R0: np.ndarray, n_s: np.ndarray) -> list[float]:
@@ -70,7 +78,7 @@ def solve_rotation(st: SolveState, oid: str, asset: Asset, sup: Support, support
             phi = angles[int(rng.integers(len(angles)))] + rng.integers(4) * np.pi / 2
         elif strategy == "constrained" and not free:
             phi = _fitting_angle(st, asset, scale, sup, R0, n_s, rng,
-                                 row=like_siblings(st, oid, support_edge))
+                                 row=like_siblings(st, oid, support_edge), oid=oid)
         else:
             phi = rng.uniform(0, 2 * np.pi)
     R = axis_angle(n_s, phi) @ R0 if phi is not None else R0
@@ -104,12 +112,15 @@ def _base_rotation(label: str, n_s: np.ndarray) -> np.ndarray:
 
 
 def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0: np.ndarray,
-                   n_s: np.ndarray, rng: np.random.Generator, row: int = 1) -> float:
+                   n_s: np.ndarray, rng: np.random.Generator, row: int = 1,
+                   oid: str = "") -> float:
     """A free angle on an object's surface: three times in four square to the support's owner
     (else uniform), preferring the quarter turns whose footprint sits well inside the support
     (a TV along its stand, not across it); a uniform angle is kept only if it fits as well.
     ``row`` like things sharing the part: only the turns that take them all side by side
-    (rows.row_turns), when some do and some do not."""
+    (rows.row_turns), when some do and some do not. Something hung below a smaller part drawn
+    turned into a wall or the furniture takes the nearest quarter turn that keeps it clear
+    (:func:`_in_room`) three times in four, when some do. ``oid`` is the child."""
     s = sup.surface
     owner = st.scene.objects.get(sup.owner)
     ref = owner.rotation[:, 1] if owner is not None and owner.placed else None
@@ -156,13 +167,77 @@ def _fitting_angle(st: SolveState, asset: Asset, scale: float, sup: Support, R0:
     keep = rows + rows if rows is not None else [True] * 4
     if rows is not None:  # like things in a row: the turns that take them all (rows.py)
         areas = np.where(keep, areas, -1.0)
+    turn = lambda phi: float(phi)  # noqa: E731
+    if areas.max() <= 0.0 and float(n_s[2]) < -0.9:  # hung below it
+        # wider than its support every way (a coat on a wall hook): when some quarter turns
+        # are clear and some not (_in_room), a turn drawn into a wall or the furniture is,
+        # three times in four, the nearest clear quarter turn instead (else kept: another
+        # ring or hook may take it); decided by a generator of the child's own, so the
+        # solve's draws stay as they were
+        inside = _in_room(st, oid, asset, scale, sup, R0, n_s)
+        clear = [p for p in quarter if inside(p)]
+        if 0 < len(clear) < 4:
+            own = np.random.default_rng([zlib.crc32(f"{oid} {asset.asset_id}".encode()),
+                                         zlib.crc32(sup.name.encode())])
+
+            def turn(phi: float) -> float:
+                if inside(phi) or own.random() >= 0.75:
+                    return float(phi)
+                return float(min(clear, key=lambda p: abs(wrap(p - phi))))
     good = [p for p, a, k in zip(quarter, areas, keep, strict=True)
             if k and a >= 0.7 * areas.max()]
     if rng.random() >= 0.75:
         phi = rng.uniform(0, 2 * np.pi)
         if rows is None and (areas.min() == areas.max() == 1.0 or fit(phi) >= 0.7 * areas.max()):
-            return float(phi)
-    return float(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
+            return turn(phi)
+    return turn(good[int(rng.integers(len(good)))] + rng.normal(0, np.deg2rad(2.0)))
+
+
+def _in_room(st: SolveState, oid: str, asset: Asset, scale: float, sup: Support,
+             R0: np.ndarray, n_s: np.ndarray):
+    """Whether (1.0) or not (0.0) the child hung right below ``sup`` by its top (the middle of
+    its highest points below the middle of ``sup``), turned by an angle about ``n_s`` from
+    ``R0``, keeps its footprint inside the room's floor grown by :data:`HOOK_REACH` and clear of the
+    placed objects at its heights (but what holds the support up, and what else hangs from
+    its owner: a coat goes over another coat) and of the owner's other parts there (a coat
+    tree's pole), as a function of that angle."""
+    from .state import support_chain
+
+    floor = st.scene.room.elements["floor"].surface
+    room = shapely.Polygon(floor.to_3d(np.asarray(floor.polygon.exterior.coords))[:, :2])
+    room = room.buffer(HOOK_REACH, join_style="mitre")
+    hull = asset_geometry(asset).hull * scale
+    s = sup.surface
+    at = s.to_3d(np.asarray(sup.region.centroid.coords))[0]
+    height = float(np.ptp(hull @ R0.T @ n_s))
+    lo, hi = float(at[2]) - height, float(at[2])
+    skip = support_chain(st.pag, sup.owner) | {oid} | {
+        o for o in st.pag.objects if (e := st.pag.supporter(o)) is not None
+        and e.parent.object == sup.owner}
+    near = [shapely.Polygon(xy) for o, xy in st.xy.items()
+            if o not in skip and o in st.zr and st.zr[o][0] < hi and st.zr[o][1] > lo]
+    # the owner's other parts below the support (a coat tree's pole, its other hooks): what
+    # hangs at their depth keeps clear of them
+    own = [] if sup.owner not in st.xy else [
+        (float(d.min()), float(d.max()), shapely.MultiPoint(pts[:, :2]).convex_hull)
+        for name, pts in st.world_pieces(sup.owner) if name != sup.part
+        and float((d := (pts - s.origin) @ s.normal).max()) > 1e-3 and float(d.min()) < height]
+
+    def inside(phi: float) -> float:
+        Y = hull @ (axis_angle(n_s, phi) @ R0).T
+        hN = Y @ s.normal
+        top = Y[hN <= hN.min() + 2e-3, :2].mean(axis=0)  # hung by its top, as it is placed
+        xy, depth = Y[:, :2] - top + at[:2], hN - hN.min()
+        F = shapely.MultiPoint(xy).convex_hull
+        if not room.contains(F) or any(F.intersects(p) for p in near):
+            return 0.0
+        for d0, d1, fp in own:
+            m = (depth >= d0 - 1e-3) & (depth <= d1 + 1e-3)
+            if m.sum() >= 3 and shapely.MultiPoint(xy[m]).convex_hull.intersects(fp):
+                return 0.0
+        return 1.0
+
+    return inside
 
 
 def _outline(asset: Asset, hull: np.ndarray, R0: np.ndarray, n_s: np.ndarray, s,

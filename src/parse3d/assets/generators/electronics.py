@@ -1,6 +1,7 @@
 """Electronics: televisions, monitors, laptops, keyboards, speakers and remote controls.
 
-Screens and speaker drivers face +Y. Displays are a bevelled housing (``body``) with a glass
+Screens and speaker drivers face +Y. TVs and monitors come on feet, a pedestal or a stand and
+base, or made for a wall or a mount (``wall_mount``: no stand, a VESA plate on the back). Displays are a bevelled housing (``body``) with a glass
 ``screen`` panel standing 1–2 mm proud of it, so the screen's front surface is the part's +Y face.
 
 Speakers are registered with placement ``floor``: a bookshelf speaker is at home on the floor or a
@@ -66,16 +67,35 @@ def _display(rng, w: float, h: float, depth: float, z0: float, bezel: float) -> 
     return parts
 
 
-@register("tv", parts=("screen", "stand"),
-          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "pad"),
+def _vesa_plate(rng, parts: list[Part]) -> Part:
+    """The wall plate of a screen made for a wall or a mount: a steel plate over the four VESA
+    points on the back of its rear bump (``back_cover``), its back the screen's furthest back."""
+    back = next(p for p in parts if p.name == "back_cover")
+    pts = [p.bounds for p in parts if p.label == "vesa_mount"]
+    lo, hi = np.min([b[0] for b in pts], axis=0), np.max([b[1] for b in pts], axis=0)
+    t = rng.uniform(0.006, 0.012)
+    yb = float(back.bounds[0][1])
+    plate = S.box((hi[0] - lo[0] + 0.04, t, hi[2] - lo[2] + 0.04), center=((lo[0] + hi[0]) / 2, yb - t / 2, (lo[2] + hi[2]) / 2),
+                  bevel=0.001)
+    return make_part("vesa_plate", "vesa_plate", plate, M.solid((0.12, 0.12, 0.13), "metal", 0.4, 0.8))
+
+
+@register("tv", parts=("screen",),
+          extra_parts=("stand", "body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "pad",
+                       "vesa_plate"),
           size_range=(0.7, 1.75),
-          density=350, variants=("feet", "pedestal"))
+          density=350, variants=("feet", "pedestal", "wall_mount"))
 def tv(rng: np.random.Generator, variant: str) -> list[Part]:
+    """A flat TV on two feet or a pedestal, or made for a wall or a mount (``wall_mount``: no
+    stand, a VESA plate on its back)."""
     w = rng.uniform(0.72, 1.65)
     bezel = rng.uniform(0.006, 0.015)
     h = w * 9 / 16 + 2 * bezel
     depth = rng.uniform(0.025, 0.05)
     metal = M.metal(rng) if rng.random() < 0.5 else _housing(rng)
+    if variant == "wall_mount":
+        parts = _display(rng, w, h, depth, 0.0, bezel)
+        return [*parts, _vesa_plate(rng, parts)]
     if variant == "feet":
         z0 = rng.uniform(0.04, 0.09)
         reach = rng.uniform(0.16, 0.26)
@@ -104,16 +124,22 @@ def tv(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("monitor", parts=("screen", "stand", "base"),
-          extra_parts=("body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount", "hinge", "foot"),
+@register("monitor", parts=("screen",),
+          extra_parts=("stand", "base", "body", "back_cover", "button", "indicator", "logo", "port", "power_inlet", "vesa_mount",
+                       "hinge", "foot", "vesa_plate"),
           size_range=(0.45, 0.85),
-          density=400, variants=("rect_base", "round_base", "v_base"), placement="surface")
+          density=400, variants=("rect_base", "round_base", "v_base", "wall_mount"), placement="surface")
 def monitor(rng: np.random.Generator, variant: str) -> list[Part]:
+    """A monitor on a stand's arm and base, or made for a monitor arm, a cart's mount or a wall
+    (``wall_mount``: no stand, a VESA plate on its back)."""
     w = rng.uniform(0.48, 0.8)
     bezel = rng.uniform(0.006, 0.014)
     h = w * rng.uniform(0.54, 0.62)
     depth = rng.uniform(0.015, 0.03)
     z0 = rng.uniform(0.08, 0.16)
+    if variant == "wall_mount":
+        parts = _display(rng, w, h, depth, 0.0, bezel)
+        return [*parts, _vesa_plate(rng, parts)]
     parts = _display(rng, w, h, depth, z0, bezel)
     mat = _housing(rng) if rng.random() < 0.6 else M.metal(rng)
     t = rng.uniform(0.008, 0.016)

@@ -1,7 +1,8 @@
 """Laundry rooms and wardrobes: ironing boards, drying racks, hangers, clothes on hangers and
 shoes.
 
-A hanger's hook is its top: clothes hang ``HANGING_BELOW`` a rail or ``IN`` a wardrobe by it. A
+A hanger's hook is its top: clothes hang ``HANGING_BELOW`` a rail or ``IN`` a wardrobe by it; a
+jacket or a coat without a hanger hangs on a wall hook or a coat stand by the loop in its collar. A
 pair of shoes is one asset (two shoes side by side, each with its sole, upper and laces).
 """
 
@@ -137,24 +138,33 @@ def clothes_hanger(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-@register("hanging_clothes", parts=("garment", "hook"), extra_parts=("bar", "sleeve", "collar", "button", "strap", "sash", "pocket",
-                                                                   "cuff"),
-          size_range=(0.5, 1.3), density=150, variants=("shirt", "coat", "dress"), placement="inside")
+@register("hanging_clothes", parts=("garment",), extra_parts=("hook", "bar", "loop", "sleeve", "collar", "button", "strap",
+                                                           "sash", "pocket", "cuff"),
+          size_range=(0.5, 1.3), density=150, variants=("shirt", "coat", "dress", "jacket_loop", "coat_loop"),
+          placement="inside")
 def hanging_clothes(rng: np.random.Generator, variant: str) -> list[Part]:
+    """A garment on a coat hanger (``shirt``, ``coat``, ``dress``: the hanger's hook is its top),
+    or a jacket or a coat without one (``*_loop``): it hangs on a wall hook or a coat stand by the
+    hanging loop sewn into the back of its collar, the loop its top."""
+    kind, looped = variant.removesuffix("_loop"), variant.endswith("_loop")
     w = rng.uniform(0.4, 0.46)
     cloth = M.fabric(rng)
-    hook, bar = _hanger(0.0, 0.0, 0.0, w, M.wood(rng), wire=False)
-    parts = [make_part("hook", "hook", hook, M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)), make_part("bar", "bar", bar, M.wood(rng))]
-    L = {"shirt": rng.uniform(0.6, 0.75), "coat": rng.uniform(0.85, 1.1), "dress": rng.uniform(0.9, 1.15)}[variant]
-    th = 0.06 if variant == "coat" else 0.03
+    parts = []
+    if not looped:
+        hook, bar = _hanger(0.0, 0.0, 0.0, w, M.wood(rng), wire=False)
+        parts += [make_part("hook", "hook", hook, M.solid((0.8, 0.8, 0.82), "metal", 0.3, 0.9)),
+                  make_part("bar", "bar", bar, M.wood(rng))]
+    L = {"shirt": rng.uniform(0.6, 0.75), "jacket": rng.uniform(0.62, 0.78), "coat": rng.uniform(0.85, 1.1),
+         "dress": rng.uniform(0.9, 1.15)}[kind]
+    th = {"coat": 0.06, "jacket": 0.045}.get(kind, 0.03)
     zt = -0.09
-    if variant == "dress":
+    if kind == "dress":
         body = S.hull([[-w * 0.42, -th, zt], [w * 0.42, -th, zt], [-w * 0.42, th, zt], [w * 0.42, th, zt],
                        [-w * 0.7, -th, zt - L], [w * 0.7, -th, zt - L], [-w * 0.7, th, zt - L], [w * 0.7, th, zt - L]])
     else:
         body = S.box((w * 0.95, 2 * th, L), center=(0, 0, zt - L / 2), bevel=0.01)
     parts.append(make_part("garment", "garment", body, cloth))
-    if variant == "dress":  # its shoulder straps over the bar, and the sash at the waist
+    if kind == "dress":  # its shoulder straps over the bar, and the sash at the waist
         parts += [make_part(f"strap_{k}", "strap", S.box((0.025, 2 * th + 0.004, 0.05), center=(sx * w * 0.3, 0, zt + 0.015)), cloth)
                   for k, sx in enumerate((-1, 1))]
         zw = zt - L * 0.3
@@ -165,15 +175,22 @@ def hanging_clothes(rng: np.random.Generator, variant: str) -> list[Part]:
         for i, sx in enumerate((-1, 1)):
             c = np.array([sx * (w * 0.475 + 0.06), 0, zt - 0.03 - L * 0.375]) + _rot_y(sx * 0.08) @ np.array([0, 0, -L * 0.375 + 0.03])
             parts.append(make_part(f"cuff_{i}", "cuff", S.box((0.13, 2 * th * 0.85, 0.06), center=c, R=_rot_y(sx * 0.08)), cloth))
-    if variant != "dress":
+    if kind != "dress":
         for i, s in enumerate((-1, 1)):
             sl = S.box((0.12, 2 * th * 0.8, L * 0.75), center=(s * (w * 0.475 + 0.06), 0, zt - 0.03 - L * 0.375), R=_rot_y(s * 0.08))
             parts.append(make_part(f"sleeve_{i}", "sleeve", sl, cloth))
-        parts.append(make_part("collar", "collar", S.box((0.16, 2 * th + 0.01, 0.04), center=(0, 0.003, zt - 0.01)), cloth))
-        nb = 5 if variant == "shirt" else 3
+        # on a hanger the collar stands over the shoulders; hung by its loop it folds down level with them
+        zc = zt - 0.02 if looped else zt - 0.01
+        parts.append(make_part("collar", "collar", S.box((0.16, 2 * th + 0.01, 0.04), center=(0, 0.003, zc)), cloth))
+        nb = 5 if kind == "shirt" else 3
         for k in range(nb):
             parts.append(make_part(f"button_{k}", "button", S.cylinder(0.006, 0.004, center=(0, th + 0.001, zt - 0.08 - k * L * 0.8 / nb),
                                                                        axis=(0, 1, 0), sections=8), M.plastic(rng)))
+    if looped:  # the hanging loop, a tape arc rising from the back of the collar
+        yb = -th + 0.008
+        loop = S.tube([(-0.02, yb, zt - 0.006), (-0.012, yb, zt + 0.01), (0.012, yb, zt + 0.01), (0.02, yb, zt - 0.006)], 0.003,
+                      sections=6)
+        parts.append(make_part("loop", "loop", loop, cloth))
     return parts
 
 
