@@ -220,8 +220,8 @@ def _region_top(st: SolveState, edge: Edge):
     best = None
     for sp in sups:
         s = sp.surface
-        if sp.region.is_empty or float(s.normal[2]) < 0.9:
-            continue
+        if sp.region.is_empty or float(s.normal[2]) < 0.9 or sp.ring:
+            continue  # a ring round an opening spans it (bars.py): not a top to lie on
         rect = sp.region.minimum_rotated_rectangle
         if rect.geom_type != "Polygon":
             continue

@@ -140,13 +140,14 @@ def clothes_hanger(rng: np.random.Generator, variant: str) -> list[Part]:
 
 @register("hanging_clothes", parts=("garment",), extra_parts=("hook", "bar", "loop", "sleeve", "collar", "button", "strap",
                                                            "sash", "pocket", "cuff"),
-          size_range=(0.5, 1.3), density=150, variants=("shirt", "coat", "dress", "jacket_loop", "coat_loop"),
+          size_range=(0.5, 1.3), density=150, variants=("shirt", "coat", "dress", "loop"),
           placement="inside")
 def hanging_clothes(rng: np.random.Generator, variant: str) -> list[Part]:
     """A garment on a coat hanger (``shirt``, ``coat``, ``dress``: the hanger's hook is its top),
-    or a jacket or a coat without one (``*_loop``): it hangs on a wall hook or a coat stand by the
+    or a jacket or a coat without one (``loop``): it hangs on a wall hook or a coat stand by the
     hanging loop sewn into the back of its collar, the loop its top."""
-    kind, looped = variant.removesuffix("_loop"), variant.endswith("_loop")
+    looped = variant == "loop"
+    kind = ("jacket", "coat")[int(rng.integers(2))] if looped else variant
     w = rng.uniform(0.4, 0.46)
     cloth = M.fabric(rng)
     parts = []
