@@ -86,3 +86,29 @@ def test_one_culprit_among_several_relations_is_relaxed_and_the_others_hold(seed
     assert all(c.holds_settled for c in others), \
         [(c.relation, c.child, c.parent, c.detail) for c in others if not c.holds_settled]
 
+
+def test_a_relaxed_relation_that_holds_after_settling_is_not_reported_relaxed():
+    """The record states the final state: the soap relaxed NEAR a wall the counter does not
+    reach, moved (as settling might move it) to 5 cm from that wall, is measured to hold on
+    its settled pose and is no longer listed relaxed; the bottle's relaxed FAR_FROM stays."""
+    import copy
+
+    import numpy as np
+
+    from parse3d.measure.checks import check_relations, object_centroid
+    from parse3d.solver.search import mark_unmet
+
+    scene = copy.deepcopy(solved("layout_emptied", 0))
+    assert sorted(c.child for c in scene.relaxed) == ["bottle", "soap"]
+    soap = scene.objects["soap"]
+    wall = scene.room.elements["wall_2"].surface
+    at = object_centroid(soap, settled=True)
+    gap = float((at - wall.origin) @ wall.normal)
+    soap.settled_position = np.asarray(soap.settled_position, float) \
+        - (gap - 0.05) * np.asarray(wall.normal, float)
+    check_relations(scene, settled=True)
+    mark_unmet(scene)
+    near = next(c for c in scene.relations if c.relation == "NEAR" and c.child == "soap")
+    assert near.holds_settled is True
+    np.testing.assert_allclose(near.residual_settled["distance"], 0.05, atol=2e-3)
+    assert [c.child for c in scene.relaxed] == ["bottle"]

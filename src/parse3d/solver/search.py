@@ -949,13 +949,16 @@ def _finish(scene: Scene, srch: _Search) -> None:
 def mark_unmet(scene: Scene) -> None:
     """Relations of a placed child whose (non-support) parent failed: ``holds`` None and
     ``detail`` ``unmet: parent 'x' failed`` (after settling too); relaxed relations
-    (``scene.meta["relaxed"]``) that do not hold get ``relaxed`` (what blocked them and what
-    to write instead)."""
+    (``scene.meta["relaxed"]``) that do not hold when solved get ``relaxed`` (what blocked
+    them and what to write instead), unless they hold after settling (the record states the
+    final state)."""
     relaxed = scene.meta.get("relaxed") or {}
     for c in scene.relations:
         why = relaxed.get(str(c.index))
         if why is not None and c.holds is False:
             c.relaxed = {"blocked": why, "instead": _instead(scene.pag.relations[c.index], why)}
+        if scene.settled and c.holds_settled is True:
+            c.relaxed = None  # relaxed, and it holds after all: the record says what is
     for c in scene.relations:
         e = scene.pag.relations[c.index]
         child = scene.objects.get(e.child.object)
