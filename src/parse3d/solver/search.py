@@ -202,7 +202,8 @@ class _Search:
         object, layout relations only at their nearest positions, then every one left out);
         after a failed step, that step with what its own failure names relaxed as well
         (:func:`chase`) comes next. Each step is one placement with half the draws and two
-        assets, at most ``MAX_RELAX_STEPS`` (the last, every relation left out, always);
+        assets, at most ``MAX_RELAX_STEPS`` (the last, every relation left out, always, with
+        all the draws);
         the relaxed edges are recorded in ``relaxed`` (global index as text: what blocked
         them, the last failure that names them, else ``reason``). None when even with every non-support relation relaxed the support cannot
         hold the object."""
@@ -231,8 +232,10 @@ class _Search:
             loose = {i: loosened(edges[i]) for i, how in step.items() if how == "loose"}
             self.whole.extend(keys[i] for i in loose)
             try:
-                p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"), cheap,
-                               loosen=loose)
+                # the last step, every relation left out, is the object's last chance: all
+                # the draws
+                p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"),
+                               cheap if last is not None else cfg, loosen=loose)
             except Fail as f:
                 for key in keys.values():
                     self.relaxed.pop(key, None)
