@@ -20,6 +20,7 @@ from ..geometry.hulls import hull_indices_2d
 from ..pag.model import Edge
 from .geometry import outline_indices
 from .rules import RULES, RegionContext
+from .rules.layout import relaxed_to_nearest
 from .state import SolveState, frame_key, plane_coords, plane_key
 from .support import Support
 
@@ -28,11 +29,17 @@ __all__ = ["RegionContext", "obstacles", "apply_region_rules", "polygonal", "ste
 
 def apply_region_rules(ctx: RegionContext, edges: list[Edge], region: BaseGeometry,
                        phase: str) -> BaseGeometry:
-    """Clip ``region`` by the rules of ``phase`` for each edge, in edge order."""
+    """Clip ``region`` by the rules of ``phase`` for each edge, in edge order; a layout edge
+    relaxed to its nearest positions (:func:`~.rules.layout.relaxed_to_nearest`) clips last,
+    after the part-level contacts, so that it takes the positions nearest its region among
+    those the contacts leave."""
+    late = [e for e in edges if relaxed_to_nearest(e)]
     for e in edges:
         rule = RULES[e.relation]
-        if rule.region_phase == phase:
+        if rule.region_phase == phase and not any(e is x for x in late):
             region = rule.region(ctx, e, polygonal(region) if phase == "object" else region)
+    for e in late if phase == "part" else ():
+        region = RULES[e.relation].region(ctx, e, region)
     return region
 
 

@@ -30,7 +30,7 @@ __all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pie
            "resting_part", "low_parts", "covered_centres", "step_centres", "TIPPY",
            "free_positions", "inside_margin", "ROLLER_RATIO", "ROLL_EDGE", "is_roller",
            "footprint_widths", "well_inside", "face_target", "no_space", "floor_covering",
-           "covering_region", "across_low_parts", "toward_relaxed"]
+           "covering_region", "across_low_parts", "toward_relaxed", "layout_miss"]
 
 
 #: Metres up to which low parts under a child's base (a box's tape, a label) need not hold
@@ -603,26 +603,70 @@ ACROSS_CENTRE = 0.01
 
 def toward_relaxed(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray,
                    sup: Support, others: list[Edge], samples: np.ndarray) -> np.ndarray:
-    """Samples ordered to come as close as the support allows to what a relaxed ``FAR_FROM``
-    or ``NEAR`` of the child asked (left out of ``others``: it could not be met, a marker 0.9 m
-    from another in a 0.7 m tray): farthest from its parent first, or nearest; the order
-    otherwise kept. The distance is the child's centre of mass's to the parent's origin, in
-    the support's plane."""
+    """Samples ordered to come as close as the support allows to what a relaxed layout
+    relation of the child asked (left out of ``others``: it could not be met, a marker 0.9 m
+    from another in a 0.7 m tray), the order otherwise kept: a ``FAR_FROM`` or ``NEAR`` an
+    object farthest from its parent first, or nearest (the distance of the child's centre of
+    mass to the parent's origin, in the support's plane); to a wall, by how far the distance
+    to its plane misses; a ``SIDE_OF`` or ``ALONG`` by how far (horizontally, m) the centre of
+    mass misses the half-plane or the strip the relation asks (:func:`layout_miss`)."""
     if not len(samples):
         return samples
     kept = {id(e) for e in others}
-    relaxed = [e for e in st.pag.edges_of(oid)[1:] if e.relation in ("FAR_FROM", "NEAR")
-               and id(e) not in kept and not e.parent.is_room_element
-               and e.parent.object in st.scene.objects
-               and st.scene.objects[e.parent.object].placed]
+    relaxed = [e for e in st.pag.edges_of(oid)[1:]
+               if e.relation in ("FAR_FROM", "NEAR", "SIDE_OF", "ALONG")
+               and id(e) not in kept and (e.parent.object in st.scene.room.elements or (
+                   e.parent.object in st.scene.objects
+                   and st.scene.objects[e.parent.object].placed))]
     if not relaxed:
         return samples
     s = sup.surface
     com = (asset_geometry(asset).com * scale) @ R.T
     at = samples + np.array([com @ s.u, com @ s.v])
+    X = s.origin + com @ s.normal * s.normal + at[:, :1] * s.u + at[:, 1:2] * s.v
     key = np.zeros(len(samples))
     for e in relaxed:
-        p = plane_coords(s, st.scene.objects[e.parent.object].position[None])[0]
-        dist = np.linalg.norm(at - p, axis=1)
-        key += -dist if e.relation == "FAR_FROM" else dist
+        if e.relation in ("FAR_FROM", "NEAR") and not e.parent.is_room_element:
+            p = plane_coords(s, st.scene.objects[e.parent.object].position[None])[0]
+            dist = np.linalg.norm(at - p, axis=1)
+            key += -dist if e.relation == "FAR_FROM" else dist
+        else:
+            key += layout_miss(st, e, X)
     return samples[np.argsort(key, kind="stable")]
+
+
+def layout_miss(st: SolveState, e: Edge, X: np.ndarray) -> np.ndarray:
+    """(N,) metres by which child centroids ``X`` (N, 3) miss what the layout edge ``e``
+    asks, measured as :mod:`parse3d.measure` checks it: ``NEAR`` / ``FAR_FROM`` a wall, the
+    distance to its plane beyond (within) ``distance``; ``SIDE_OF``, how far behind the
+    parent's centroid along the side's horizontal direction; ``ALONG``, how far outside the
+    strip beside the parent's ``side`` face (out from the face up to ``width``, within the
+    parent's extent along it). 0 where it is met; 0 everywhere for a parent it cannot read
+    (the room itself)."""
+    name = e.parent.object
+    if e.relation in ("NEAR", "FAR_FROM"):
+        if name not in st.scene.room.elements or name == "wall":
+            return np.zeros(len(X))
+        w = st.scene.room.elements[name].surface
+        d = np.abs((X - w.origin) @ w.normal)
+        gap = d - e.param("distance")
+        return np.maximum(gap, 0.0) if e.relation == "NEAR" else np.maximum(-gap, 0.0)
+    if name not in st.scene.objects or name not in st.hulls:
+        return np.zeros(len(X))
+    xB, frame, hull = parent_frame(st, name)
+    n = np.array(side_vector(st, e, frame), float)
+    n[2] = 0.0
+    if np.linalg.norm(n) < 1e-9:
+        return np.zeros(len(X))
+    n /= np.linalg.norm(n)
+    proj = (X - xB) @ n
+    if e.relation == "SIDE_OF":
+        return np.maximum(-proj, 0.0)
+    hB = float(np.max((hull - xB) @ n))
+    perp = np.array([n[1], -n[0], 0.0])
+    along = (hull - xB) @ perp
+    mid, half = 0.5 * float(along.max() + along.min()), 0.5 * float(np.ptp(along))
+    out = proj - hB
+    lat = np.abs((X - xB) @ perp - mid)
+    return np.maximum(-out, 0.0) + np.maximum(out - e.param("width"), 0.0) \
+        + np.maximum(lat - half, 0.0)

@@ -36,7 +36,7 @@ from .state import SolveState, support_chain
 from .walls import Window, free_runs, occupants, wall_length, windows
 
 __all__ = ["SolveProgress", "solve_scene", "replace_objects", "support_descendants",
-           "wall_conflicts", "mark_unmet", "relax_plan"]
+           "wall_conflicts", "mark_unmet", "relax_plan", "chase"]
 
 log = logging.getLogger("parse3d.solver")
 
@@ -197,31 +197,61 @@ class _Search:
 
     def relax(self, oid: str, reason: str) -> Placement | None:
         """Place ``oid`` with its unmet relations relaxed, step by step as
-        :func:`relax_plan` orders them (the relation the failure names, then object-level
-        relations, then part-level contacts by the whole object, then dropped), each step one
-        placement with half the draws and two assets; the relaxed edges are recorded in
-        ``relaxed`` (global index as text: what blocked them). None when even with every
-        non-support relation relaxed the support cannot hold the object."""
+        :func:`relax_plan` orders them (the relations the failure names, then the culprit
+        among the others, then object-level relations, part-level contacts by the whole
+        object, layout relations only at their nearest positions, then every one left out);
+        after a failed step, that step with what its own failure names relaxed as well
+        (:func:`chase`) comes next. Each step is one placement with half the draws and two
+        assets, at most ``MAX_RELAX_STEPS`` (the last, every relation left out, always, with
+        all the draws);
+        the relaxed edges are recorded in ``relaxed`` (global index as text: what blocked
+        them, the last failure that names them, else ``reason``). None when even with every non-support relation relaxed the support cannot
+        hold the object."""
         cfg = self.cfg
         cheap = SolverConfig(**{**cfg.to_dict(), "max_trials": max(1, cfg.max_trials // 2),
                                 "asset_attempts": min(2, cfg.asset_attempts)})
         edges = self.pag.edges_of(oid)
-        for k, step in enumerate(relax_plan(self.pag, oid, reason, self.skipped(oid))):
+        done = self.skipped(oid)
+        plan = relax_plan(self.pag, oid, reason, done)
+        last = plan.pop() if plan else None
+        tried: list[dict[int, str]] = []
+        # what blocked each edge: the last failure that names it, else the object's
+        why = dict.fromkeys(_named_edges(self.pag, oid, reason), reason)
+        k = 0
+        while last is not None:
+            if plan and len(tried) < MAX_RELAX_STEPS - 1:
+                step = plan.pop(0)
+                if step in tried:
+                    continue
+            else:
+                step, last = last, None
+            tried.append(step)
             keys = {i: str(self.edge_index[id(edges[i])]) for i in step}
-            for key in keys.values():
-                self.relaxed[key] = reason
+            for i, key in keys.items():
+                self.relaxed[key] = why.get(i, reason)
             loose = {i: loosened(edges[i]) for i, how in step.items() if how == "loose"}
             self.whole.extend(keys[i] for i in loose)
             try:
-                p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"), cheap,
-                               loosen=loose)
+                # the last step, every relation left out, is the object's last chance: all
+                # the draws
+                p = self.place(oid, stage_rng(self.seed, f"object:{oid}:relax{k}"),
+                               cheap if last is not None else cfg, loosen=loose)
             except Fail as f:
                 for key in keys.values():
                     self.relaxed.pop(key, None)
                 self.whole[:] = [w for w in self.whole if w not in keys.values()]
                 if str(f).startswith(INTERNAL):
                     return None
+                why.update(dict.fromkeys(_named_edges(self.pag, oid, str(f)), str(f)))
+                nxt = chase(self.pag, oid, step, str(f), done)
+                if nxt is not None and nxt not in tried and nxt != last:
+                    # first among the steps relaxing as many relations
+                    plan = [x for x in plan if x != nxt]
+                    at = next((j for j, x in enumerate(plan) if len(x) >= len(nxt)), len(plan))
+                    plan.insert(at, nxt)
                 continue
+            finally:
+                k += 1
             self.commit(p)
             return p
         return None
@@ -680,11 +710,21 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
                ) -> list[dict[int, str]]:
     """The steps by which ``oid``'s non-support relations are relaxed, each ``{edge index:
     "skip" | "loose"}`` (``loose``: a part-level contact named by a part, placed by the whole
-    object instead; a layout relation, placed at the free positions nearest its region): each
-    edge the failure ``reason`` names alone first (the last named
-    first), then every object-level relation, then part-level contacts as well by the whole
-    object, and last every one left out (at most ``MAX_RELAX_STEPS`` steps). Support
-    relations are never relaxed; ``done`` (edges already left out) is left out."""
+    object instead; a layout relation, placed at the free positions nearest its region):
+
+    1. each edge the failure ``reason`` names alone (the last named first), loose first;
+    2. the culprit among the others: each other edge alone relaxed (a layout relation loose,
+       a contact left out), object-level ones first; then each with the named ones left out;
+    3. every object-level relation loose;
+    4. part-level contacts as well by the whole object;
+    5. every layout relation loose and every contact left out;
+    6. last, every one left out.
+
+    Steps relaxing fewer relations come first (stable: in the order above), the last always
+    last. Support relations are never relaxed; ``done`` (edges already left out) is left
+    out. The search (:meth:`_Search.relax`) tries at most ``MAX_RELAX_STEPS`` of them (the
+    last always), adding after a failed step that step with the edge its failure names
+    relaxed as well (:func:`chase`), among the steps relaxing as many."""
     edges = pag.edges_of(oid)
     order = [RULES[e.relation].relax_order for e in edges]  # None: never relaxed (support)
     free = [i for i in range(1, len(edges)) if i not in done and order[i] is not None]
@@ -693,7 +733,10 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
 
     def soft(i: int) -> str:
         return "loose" if (edges[i].child.part is not None and order[i] > 0) \
-            or RULES[edges[i].relation].family == "layout" else "skip"
+            or _layout(edges[i]) else "skip"
+
+    def out_(i: int) -> str:  # left out: a layout relation still at its nearest positions
+        return "loose" if _layout(edges[i]) else "skip"
 
     steps: list[dict[int, str]] = []
     named = [i for i in _named_edges(pag, oid, reason) if i in free]
@@ -703,17 +746,49 @@ def relax_plan(pag: PAG, oid: str, reason: str, done: frozenset[int] = frozenset
         steps.append({i: soft(i)})
         if soft(i) == "loose":
             steps.append({i: "skip"})
+    # the culprit is another edge, or the named one with another: each other one alone
+    # relaxed, then each beside the named ones left out, cheapest (object-level) first
+    others = sorted((i for i in free if i not in named), key=lambda i: (order[i], i))
+    base = {i: "skip" for i in named}
+    steps += [{i: out_(i)} for i in others]
+    if base:
+        steps += [{**base, i: out_(i)} for i in others]
     if obj:
-        steps.append({i: soft(i) for i in obj})
+        steps.append({**base, **{i: soft(i) for i in obj}})
     if any(soft(i) == "loose" for i in part):
         steps.append({**{i: soft(i) for i in obj}, **{i: soft(i) for i in part}})
+    if any(_layout(edges[i]) for i in free):
+        steps.append({i: out_(i) for i in free})
     out: list[dict[int, str]] = []
     for st in steps:
         if st and st not in out:
             out.append(st)
-    last = dict.fromkeys(obj + part, "skip")  # every one left out: always tried, last
-    out = [st for st in out if st != last][:MAX_RELAX_STEPS - 1]
+    last = dict.fromkeys(free, "skip")  # every one left out: always tried, last
+    # fewest relations relaxed first: every edge that can still be met is kept
+    out = sorted((st for st in out if st != last), key=len)
     return out + ([last] if last else [])
+
+
+def chase(pag: PAG, oid: str, step: dict[int, str], reason: str,
+          done: frozenset[int] = frozenset()) -> dict[int, str] | None:
+    """The step after ``step`` failed with ``reason``: ``step`` with the edges that reason
+    names relaxed as well (a layout relation at its nearest positions, a contact left out,
+    also one that was placed by the whole object), or None when it names no edge it could
+    still relax."""
+    edges = pag.edges_of(oid)
+    new = dict(step)
+    for i in _named_edges(pag, oid, reason):
+        if i in done or RULES[edges[i].relation].relax_order is None:
+            continue
+        if i not in new:  # a layout relation at its nearest positions, a contact left out
+            new[i] = "loose" if _layout(edges[i]) else "skip"
+        elif new[i] == "loose" and not _layout(edges[i]):
+            new[i] = "skip"
+    return None if new == step else new
+
+
+def _layout(e) -> bool:
+    return RULES[e.relation].family == "layout"
 
 
 def loosened(e):
@@ -724,8 +799,8 @@ def loosened(e):
 
 
 #: Placements tried when relaxing one object's relations (each with half the draws and two
-#: assets; the last one leaves every non-support relation out).
-MAX_RELAX_STEPS = 5
+#: assets, a quarter of a full placement; the last one leaves every non-support relation out).
+MAX_RELAX_STEPS = 8
 
 
 def solve_scene(pag: PAG, *, seed: int = 0, library=None, config: SolverConfig | None = None,
@@ -877,13 +952,16 @@ def _finish(scene: Scene, srch: _Search) -> None:
 def mark_unmet(scene: Scene) -> None:
     """Relations of a placed child whose (non-support) parent failed: ``holds`` None and
     ``detail`` ``unmet: parent 'x' failed`` (after settling too); relaxed relations
-    (``scene.meta["relaxed"]``) that do not hold get ``relaxed`` (what blocked them and what
-    to write instead)."""
+    (``scene.meta["relaxed"]``) that do not hold when solved get ``relaxed`` (what blocked
+    them and what to write instead), unless they hold after settling (the record states the
+    final state)."""
     relaxed = scene.meta.get("relaxed") or {}
     for c in scene.relations:
         why = relaxed.get(str(c.index))
         if why is not None and c.holds is False:
             c.relaxed = {"blocked": why, "instead": _instead(scene.pag.relations[c.index], why)}
+        if scene.settled and c.holds_settled is True:
+            c.relaxed = None  # relaxed, and it holds after all: the record says what is
     for c in scene.relations:
         e = scene.pag.relations[c.index]
         child = scene.objects.get(e.child.object)

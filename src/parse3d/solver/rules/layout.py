@@ -278,11 +278,14 @@ def relaxed_to_nearest(e: Edge) -> bool:
 
 def closest(region: BaseGeometry, clip: BaseGeometry) -> BaseGeometry:
     """The part of ``region`` within ``NEAREST_BAND`` of its positions nearest ``clip`` (the
-    whole region when ``clip`` is empty or the band leaves no area)."""
+    whole region when ``clip`` is empty or the band leaves no area; of a region without area,
+    the lines or points a part-level contact left, the part within that band)."""
     if clip.is_empty or region.is_empty:
         return region
     d = float(region.distance(clip))
     near = RG.clip(region, clip.buffer(d + NEAREST_BAND, 16))
+    if region.area < 1e-10:  # the lines or points part-level contacts leave
+        return region if near.is_empty else near
     return region if near.is_empty or near.area < 1e-10 else near
 
 
