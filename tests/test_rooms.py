@@ -26,8 +26,6 @@ SEEDS = (0, 1, 2)
 #: Rooms that fail today, with the failure class that makes them fail (see the report of the
 #: robustness benchmark); the solver's fixes for those classes turn them green.
 KNOWN: dict[str, str] = {
-    "bag_on_a_cushioned_bench": "seed 0: the bag lies over a tufted cushion's button, 2 mm "
-                                "proud of it, and settles 1 deg tilted on the button",
 }
 
 #: Rooms that ask for the impossible on purpose (a contact named on a part another part

@@ -19,7 +19,7 @@ from parse3d.solver import solve
 ROOM = Path(__file__).parent / "data" / "rooms" / "flat_things_fall_flat.json"
 
 
-@pytest.mark.parametrize("seed", [0, 2])
+@pytest.mark.parametrize("seed", [2, 5])  # seeds where a plate stood on its rim falls flat
 def test_plate_that_falls_flat_keeps_its_rest(seed):
     scene = solve(load_pag(ROOM), seed=seed)
     stats = settle_and_repair(scene)
