@@ -666,6 +666,8 @@ def _hanging_region(d: _OnSupport):
         d.sup.out = off_wall_reason(d.edge, sup, got[1])
     depth = hN + d.h
     for lo_h, hi_h, fp in owner_pieces(st, sup, d.exclude, d.height + EPS):
+        if region.is_empty:
+            break  # nothing left for the owner's other pieces to block
         at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
         if len(at):
             Fs = RG.convex_footprint(np.vstack([np.c_[at @ s.u, at @ s.v],
