@@ -408,12 +408,25 @@ def off_wall(st: SolveState, sup, region0, Fc: np.ndarray, free, F: np.ndarray):
     fp = Polygon(plane_coords(sup.surface, floor.to_3d(
         np.asarray(floor.polygon.exterior.coords))))
     room = RG.clip(free, RG.erode(fp, [], F))
-    for reach in (0.0, *np.arange(0.01, HOOK_REACH + 1e-9, 0.01)):
-        grown = region0.buffer(float(reach)) if reach else region0
-        region = RG.clip(RG.erode(grown, [], Fc), room)
-        if not region.is_empty and region.area > 1e-10:
-            return region, float(reach)
-    return None
+    reaches = (0.0, *np.arange(0.01, HOOK_REACH + 1e-9, 0.01))
+    got = {}
+
+    def clears(k: int) -> bool:
+        grown = region0.buffer(float(reaches[k])) if reaches[k] else region0
+        got[k] = RG.clip(RG.erode(grown, [], Fc), room)
+        return not got[k].is_empty and got[k].area > 1e-10
+
+    if clears(0):
+        return got[0], 0.0
+    # the positions only grow with the reach: none at the longest, none at all; otherwise
+    # the least reach that clears, halving the interval (not every centimetre in turn)
+    lo, hi = 0, len(reaches) - 1
+    if not clears(hi):
+        return None
+    while hi - lo > 1:
+        mid = (lo + hi) // 2
+        lo, hi = (lo, mid) if clears(mid) else (mid, hi)
+    return got[hi], float(reaches[hi])
 
 
 def off_wall_reason(edge: Edge, sup, reach: float) -> str:

@@ -50,7 +50,18 @@ _UP = np.array([0.0, 0.0, 1.0])
 def _faces(st: SolveState, e: Edge) -> list:
     """The parent's world faces (one per part its reference names: a sofa's back cushions),
     each ``(surface, (z low, z high), width axis, outline along it)``; empty when the face is
-    not upright (the plain plane test applies)."""
+    not upright (the plain plane test applies). Kept while the parent keeps its pose (every
+    sample of a leaning child asks again)."""
+    ref = e.parent
+    if not ref.is_room_element and not st.scene.objects[ref.object].placed:
+        return _faces_now(st, e)
+    key = ("faces", ref.object, ref.part, ref.index, ref.surface, e.spec.parent_surface)
+    return st.memo("room" if ref.is_room_element else ref.object, key,
+                   lambda: _faces_now(st, e))
+
+
+def _faces_now(st: SolveState, e: Edge) -> list:
+    """:func:`_faces`, computed."""
     sB, _, label = parent_surface_world(st, e.parent, e.spec.parent_surface)
     if abs(float(sB.normal[2])) > 0.3:
         return []

@@ -656,7 +656,8 @@ def _hanging_region(d: _OnSupport):
                                                         (1e-4, 1e-4))]))
     d.obst = obst = obstacles(st, sup, d.exclude, d.height + EPS, reach_box(region0, F, 5.0),
                               parts=False)
-    free = RG.erode(RG.bounding_square(region0, pad=5.0), obst, F)
+    square = RG.bounding_square(region0, pad=5.0)
+    free = RG.erode(square, obst, F)
     # a pot too wide for the gap to the wall behind: out from it on its hook (hanging.py)
     got = off_wall(st, sup, region0, Fc, free, F)
     region = got[0] if got is not None else RG.clip(RG.erode(region0, [], Fc), free)
@@ -665,12 +666,13 @@ def _hanging_region(d: _OnSupport):
         d.sup.out = off_wall_reason(d.edge, sup, got[1])
     depth = hN + d.h
     for lo_h, hi_h, fp in owner_pieces(st, sup, d.exclude, d.height + EPS):
+        if region.is_empty:
+            break  # nothing left for the owner's other pieces to block
         at = Y[(depth >= lo_h - 1e-3) & (depth <= hi_h + 1e-3)]
         if len(at):
             Fs = RG.convex_footprint(np.vstack([np.c_[at @ s.u, at @ s.v],
                                                 np.c_[at @ s.u, at @ s.v] + 1e-4]))
-            region = RG.clip(region, RG.erode(RG.bounding_square(region0, pad=5.0),
-                                              [fp], Fs))
+            region = RG.clip(region, RG.erode(square, [fp], Fs))
     if region.is_empty or region.area < 1e-10:
         if RG.erode(region0, [], Fc).is_empty:
             raise Fail(f"no room to hang below {sup.name}: its attachment does not "

@@ -21,7 +21,7 @@ from .geometry import asset_geometry, hull_extents, part_points, rect_sides
 from .hanging import hung_size
 from .regions import apply_region_rules, obstacles, steps_on
 from .rules import RULES, RegionContext, parent_frame, side_vector
-from .state import SolveState, angle_to, plane_coords, plane_key
+from .state import SolveState, angle_to, frame_key, plane_coords, plane_key
 from .support import BAR_WIDTH, Support
 
 __all__ = ["THIN_LOW", "HANGS_OFF", "region_context", "rules_region", "owner_pieces",
@@ -101,13 +101,29 @@ def owner_pieces(st: SolveState, sup: Support, exclude: set[str], height: float)
     for oid in sorted(exclude):
         if oid == "room":
             continue
-        for name, pts in st.world_pieces(oid):
+        # kept per object pose and support plane: every child hung or mounted asks again
+        kept = st.memo(oid, ("pieces in", frame_key(s)), lambda oid=oid: _pieces_in(st, oid, s))
+        for k, (name, lo, hi, fp) in enumerate(kept):
             if oid == sup.owner and name == sup.part:
                 continue
-            hq = (pts - s.origin) @ s.normal
-            if float(hq.max()) <= 1e-3 or float(hq.min()) >= height - 1e-3:
+            if hi <= 1e-3 or lo >= height - 1e-3:
                 continue
-            yield float(hq.min()), float(hq.max()), RG.convex_footprint(plane_coords(s, pts))
+            if fp is None:
+                fp = RG.convex_footprint(plane_coords(s, st.world_pieces(oid)[k][1]))
+                fp.setflags(write=False)
+                kept[k] = (name, lo, hi, fp)
+            yield lo, hi, fp
+
+
+def _pieces_in(st: SolveState, oid: str, s) -> list:
+    """``[(part name, lowest, highest, None)]`` of ``oid``'s pieces along ``s``'s normal, in
+    the order of :meth:`SolveState.world_pieces` (:func:`owner_pieces` fills in each one's
+    footprint the first time it is asked for)."""
+    out = []
+    for name, pts in st.world_pieces(oid):
+        hq = (pts - s.origin) @ s.normal
+        out.append((name, float(hq.min()), float(hq.max()), None))
+    return out
 
 
 def round_asset(asset: Asset) -> bool:
