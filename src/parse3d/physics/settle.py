@@ -332,16 +332,17 @@ def _drop_out(world, dyn: dict, start_z: dict[str, float], heights: dict[str, li
     under 5 cm/s), or dropped more than ``cfg.fall_distance`` and no longer going down (its
     height within 1 mm over the last :data:`STILL_CHECKS` checks: a can rolling about the shelf
     it fell to). Its pose goes into ``gone`` and it leaves ``dyn``."""
+    oz = float(world.origin[2])
     for oid in [i for i, b in dyn.items() if not b.is_sleeping]:
-        R, t = world.pose(oid)
+        z = float(world.entities[oid].get_pose().p[2]) + oz  # the height alone, as pose() has it
         h = heights.setdefault(oid, [])
-        h.append(float(t[2]))
+        h.append(z)
         del h[:-STILL_CHECKS]
-        drop = start_z[oid] - float(t[2])
+        drop = start_z[oid] - z
         landed = drop > cfg.drop_out and abs(float(dyn[oid].get_linear_velocity()[2])) < 0.05
         rolling = drop > cfg.fall_distance and len(h) == STILL_CHECKS and max(h) - min(h) < 1e-3
         if landed or rolling:
-            gone[oid] = (R, t)
+            gone[oid] = world.pose(oid)
             body = dyn.pop(oid)
             body.set_linear_velocity(np.zeros(3, np.float32))
             body.set_angular_velocity(np.zeros(3, np.float32))
