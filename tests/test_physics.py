@@ -345,6 +345,11 @@ def test_early_exit_matches_the_full_run():
     full = settle(sc, config=SettleConfig(early_exit=False))
     assert early.early_exit and early.steps < full.steps == 1000
     assert np.allclose(pose_early, sc.objects["mug"].settled_position, atol=1e-4)
+    # sleep is checked after every step, not only at the fallen-body checks: the run stops at
+    # the step where the mug fell asleep, whatever check_every is, at the same pose
+    every = settle(sc, config=SettleConfig(check_every=1))
+    assert every.steps == early.steps
+    assert np.allclose(pose_early, sc.objects["mug"].settled_position, atol=1e-4)
 
 
 def test_contacts_agree_with_the_engine(corner):

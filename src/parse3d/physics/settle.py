@@ -9,7 +9,7 @@ Choices of this implementation (see ``docs/physics.md``):
 - objects with ``fixed`` set (the solver sets it for ``SECURED_TO`` a wall and
   ``HANGING_BELOW`` something) are kinematic: they hold their pose and push, but are not
   pushed; real wall anchors and cords are not simulated;
-- the run stops early once every dynamic body sleeps (checked every ``check_every`` steps):
+- the run stops early once every dynamic body sleeps (checked after every step):
   PhysX does not move sleeping bodies and nothing can wake them (no kinematic body moves and
   no force is applied), so the remaining steps would not change any pose;
 - PhysX runs on the calling thread (``cpu_workers=0``): one core per scene, deterministic.
@@ -63,7 +63,8 @@ class SettleConfig:
     early_exit : bool
         Stop once every dynamic body sleeps.
     check_every : int
-        Steps between sleep checks.
+        Steps between checks for fallen bodies (``drop_out``); whether everything sleeps is
+        checked after every step.
     sleep_threshold : float
         PhysX's mass-normalised kinetic energy below which a body may sleep.
     max_depenetration_velocity : float
@@ -331,16 +332,17 @@ def _drop_out(world, dyn: dict, start_z: dict[str, float], heights: dict[str, li
     under 5 cm/s), or dropped more than ``cfg.fall_distance`` and no longer going down (its
     height within 1 mm over the last :data:`STILL_CHECKS` checks: a can rolling about the shelf
     it fell to). Its pose goes into ``gone`` and it leaves ``dyn``."""
+    oz = float(world.origin[2])
     for oid in [i for i, b in dyn.items() if not b.is_sleeping]:
-        R, t = world.pose(oid)
+        z = float(world.entities[oid].get_pose().p[2]) + oz  # the height alone, as pose() has it
         h = heights.setdefault(oid, [])
-        h.append(float(t[2]))
+        h.append(z)
         del h[:-STILL_CHECKS]
-        drop = start_z[oid] - float(t[2])
+        drop = start_z[oid] - z
         landed = drop > cfg.drop_out and abs(float(dyn[oid].get_linear_velocity()[2])) < 0.05
         rolling = drop > cfg.fall_distance and len(h) == STILL_CHECKS and max(h) - min(h) < 1e-3
         if landed or rolling:
-            gone[oid] = (R, t)
+            gone[oid] = world.pose(oid)
             body = dyn.pop(oid)
             body.set_linear_velocity(np.zeros(3, np.float32))
             body.set_angular_velocity(np.zeros(3, np.float32))
@@ -401,17 +403,18 @@ def settle(scene: Scene, *, config: SettleConfig | None = None, dt: float | None
     n = 0
     early = False
     step = world.sapien_scene.step
+    awake = None  # the body found awake at the last sleep check (checked first: one call)
     while n < cfg.steps:
-        k = min(cfg.check_every, cfg.steps - n)
-        for _ in range(k):
-            step()
-        n += k
-        if cfg.drop_out > 0:
+        step()
+        n += 1
+        if cfg.drop_out > 0 and (n % cfg.check_every == 0 or n == cfg.steps):
             _drop_out(world, dyn, start_z, heights, cfg, gone)
-        if cfg.early_exit and n < cfg.steps and all(b.is_sleeping for b in dyn.values()) \
-                and all(a.sleeping for a in world.articulations.values()):
-            early = True
-            break
+        if cfg.early_exit and n < cfg.steps and (n % cfg.check_every == 0
+                                                 or awake is None or awake.is_sleeping):
+            awake = next((b for b in dyn.values() if not b.is_sleeping), None)
+            if awake is None and all(a.sleeping for a in world.articulations.values()):
+                early = True
+                break
     t2 = time.perf_counter()
 
     for oid, art in world.articulations.items():  # free joints: where they came to rest
