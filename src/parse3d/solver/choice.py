@@ -248,9 +248,6 @@ def lacks(asset: Asset, reqs) -> str | None:
 
 #: Width (m) of the smallest item a part's top must have room for (stage 1's reachability).
 FREE_TOP = 0.08
-
-
-FREE_TOP = 0.08
 _FREE_TOP: dict[tuple[str, str], bool] = {}
 
 
@@ -302,9 +299,6 @@ TOP_SPAN = 0.01
 
 
 #: Width (m) of the flat band a rim (a top around an opening) needs for things to stand on it.
-RIM_WIDTH = 0.03
-
-
 RIM_WIDTH = 0.03
 #: Width (m) of an opening no small child spans (a tub, not a burner ring a pot sits across).
 RIM_OPENING = 0.3
@@ -402,9 +396,6 @@ def clear_middle(asset: Asset, part) -> bool:
 
 #: Metres of a layer lying on a part's top (a card table's felt, a glass top) that does not
 #: cover it: what stands on the part stands on the layer (the ``ON`` check's step).
-LAYER = 0.01
-
-
 LAYER = 0.01
 #: Pool slots examined per candidate category when looking for a suitable instance.
 RANKED_SLOTS = 6

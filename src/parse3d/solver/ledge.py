@@ -186,9 +186,7 @@ def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Sup
             trials += 1
             g = mid + (0.0 if k == 0 else rng.uniform(-0.4, 0.4) * room)
             t = base + (g - cur) * along
-            Yt = Y + t
-            h = (Yt - s.origin) @ s.normal
-            foot = plane_coords(s, Yt[h <= h.min() + 3e-3]).mean(axis=0)
+            foot = lower_edge(s, Y + t).mean(axis=0)
             if not sup.region.buffer(1e-4).contains(shapely.Point(foot)):
                 last = f"its lower edge would miss {sup.name} in front of {sup.owner}:{part}"
                 continue
@@ -197,6 +195,13 @@ def place_leaning(st: SolveState, oid: str, asset: Asset, scale: float, sup: Sup
                 return (R, t, sup, body, rests), trials, checks, None
     raise Fail(f"no valid pose standing on {sup.name} against {sup.owner}:{part} "
                f"({trials} trials, last: {last})")
+
+
+def lower_edge(s, Y: np.ndarray) -> np.ndarray:
+    """The points of ``Y`` (world) within 3 mm of its lowest along the normal of surface ``s``,
+    in ``s``'s plane coordinates: the edge a leaning child stands on."""
+    h = (Y - s.origin) @ s.normal
+    return plane_coords(s, Y[h <= h.min() + 3e-3])
 
 
 def accept(st: SolveState, oid: str, asset: Asset, scale: float, R: np.ndarray, t: np.ndarray,
@@ -426,9 +431,7 @@ def place_on_wall(st: SolveState, oid: str, asset: Asset, scale: float, sup: Sup
                 trials += 1
                 g = lo - ylo + (rng.uniform(0.0, 1.0) * room if k else 0.5 * room)
                 tt = t + (g - cur) * along
-                Yt = Y + tt
-                h = (Yt - s.origin) @ s.normal
-                foot = plane_coords(s, Yt[h <= h.min() + 3e-3])
+                foot = lower_edge(s, Y + tt)
                 if not sup.region.buffer(1e-4).contains(shapely.MultiPoint(foot).convex_hull):
                     last = f"its lower edge would miss {sup.name} in front of {wall}"
                     continue

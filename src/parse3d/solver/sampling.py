@@ -482,9 +482,6 @@ def inside_margin(F: np.ndarray, height: float, walled: bool = False) -> float:
 #: A child lying with its width and height within this ratio, and its length beyond it, may
 #: roll (looser than the checks' ``ROLL_RATIO``: an oval baguette 8 x 6 cm rolls too).
 ROLLER_RATIO = 1.5
-
-
-ROLLER_RATIO = 1.5
 #: Widths a roller longer than its support keeps its centre of mass from the support's edge
 #: (as a shorter one, its footprint half its width inside).
 ROLL_EDGE = 1.0
