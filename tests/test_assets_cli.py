@@ -149,3 +149,19 @@ def test_words_that_name_nothing_exit_2_with_what_to_write(capsys):
     assert "write cover@front or cover@back" in out
     assert "no category 'mugg'" in out and "did you mean 'mug'" in out
     assert "Traceback" not in out + err
+
+
+def test_show_tells_which_parts_differ_between_variants(capsys):
+    """A writer picking `shelf#k` or `door` sees how many each draw of the category may have
+    (seeds of every variant), not only the one asset shown."""
+    code, out, _ = run(capsys, "assets", "show", "bookcase", "--json")
+    assert code == 0
+    spread = json.loads(out)["variant_parts"]
+    counts = {v: [sum(p.label == "door" for p in registry.generate("bookcase", s, v).parts)
+                  for s in range(3)] for v in registry.get("bookcase").variants}
+    assert spread["door"]["min"] == min(min(c) for c in counts.values())
+    assert spread["door"]["max"] == max(max(c) for c in counts.values())
+    assert spread["door"]["variants"] == [v for v, c in counts.items() if any(c)]
+    assert "open" not in spread["door"]["variants"]
+    code, out, _ = run(capsys, "assets", "show", "bookcase")
+    assert code == 0 and "parts that differ between assets" in out

@@ -94,6 +94,7 @@ def show(category: str = typer.Argument(..., help="Category name."),
     asset = _generate(category, seed)
     summary = asset.summary()
     summary["size"] = round(asset.size, 4)
+    summary["variant_parts"] = _variant_parts(category)
     if json_:
         print_json(summary)
         return
@@ -125,6 +126,18 @@ def show(category: str = typer.Argument(..., help="Category name."),
     if asset.joints:
         console.print("joints: " + ", ".join(
             f"{j.child_part} ({j.type} on {j.parent_part})" for j in asset.joints))
+    spread = {k: v for k, v in summary["variant_parts"].items()
+              if len(v["variants"]) < len(_variants(category)) or v["min"] != v["max"]}
+    if spread:
+        # what another draw of the category may have: counts differ by variant and seed, so a
+        # `#k` valid here may not be on every asset (the solver draws one that has it)
+        t4 = Table("label", "count", "variants that have it",
+                   title=f"parts that differ between assets ({VARIANT_SEEDS} seeds of each variant)",
+                   title_justify="left")
+        for label, v in spread.items():
+            count = str(v["min"]) if v["min"] == v["max"] else f"{v['min']}–{v['max']}"
+            t4.add_row(label, count, ", ".join(v["variants"]))
+        console.print(t4)
     # then the detail: every part's six directional surfaces
     t3 = Table("part", "label", "pieces", "surfaces (area m²; * = bounding-box fallback)",
                title="surfaces of each part", title_justify="left")
@@ -133,6 +146,33 @@ def show(category: str = typer.Argument(..., help="Category name."),
                          for k, s in p.surfaces.items())
         t3.add_row(p.name, p.label, str(len(p.pieces)), surf)
     console.print(t3)
+
+
+#: Seeds of each variant `assets show` looks at for the parts that differ between assets.
+VARIANT_SEEDS = 3
+
+
+def _variants(category: str) -> tuple[str, ...]:
+    from ..assets import registry
+
+    cat = registry.get(category)
+    return cat.variants if cat.generator is not None else ()
+
+
+def _variant_parts(category: str) -> dict[str, dict]:
+    """Label -> ``{"min", "max", "variants"}``: how many parts of each label the category's
+    assets have over ``VARIANT_SEEDS`` seeds of every variant (counts of 0 included in
+    ``min``), and the variants where some asset has one. Empty for a loaded category."""
+    from collections import Counter
+
+    from ..assets import registry
+
+    drawn = [(v, Counter(p.label for p in registry.generate(category, s, v).parts))
+             for v in _variants(category) for s in range(VARIANT_SEEDS)]
+    labels = dict.fromkeys(label for _, c in drawn for label in c)
+    return {label: {"min": min(c[label] for _, c in drawn), "max": max(c[label] for _, c in drawn),
+                    "variants": list(dict.fromkeys(v for v, c in drawn if c[label]))}
+            for label in labels}
 
 
 @assets_app.command("render")
