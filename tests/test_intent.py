@@ -243,3 +243,20 @@ def test_books_written_on_one_another_lie_in_a_stack(seed):
     for oid in ("book4", "book5"):
         o = scene.objects[oid]
         assert o.rests_on is None and abs(o.transform(True)[2, 2]) > 0.95, oid  # standing
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_a_flat_lidded_thing_round_in_outline_carries_one_of_its_kind(seed):
+    """A paint can is about as wide as it is tall, but its lid is flat (its bail handle folded
+    down): the can written ON it stands on the lid, as written, and stays there after
+    settling; boxes likewise (tests/data/rooms/paint_cans_stacked.json)."""
+    from parse3d.pipeline import PipelineOptions, run_pipeline
+
+    scene = run_pipeline(load_pag(ROOMS / "paint_cans_stacked.json"), seed=seed, out=None,
+                         options=PipelineOptions(settle=True, preview=False))
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    for child, below in (("can_b", "can_a"), ("can_d", "can_c"), ("box_b", "box_a")):
+        c = next(c for c in scene.relations if c.child.split(":")[0] == child)
+        assert c.relaxed is None, c.relaxed
+        assert c.holds_settled is True, (c.detail, c.residual_settled)
+        assert scene.objects[child].support_choice.owner == below

@@ -277,20 +277,45 @@ def lies_flat(asset: Asset, part) -> bool:
 TOP_BAND = 0.01
 
 
-def top_lies_flat(asset: Asset) -> bool:
+def top_lies_flat(asset: Asset, span: float | None = None) -> bool:
     """Whether a part making the asset's top (within ``TOP_BAND`` of its highest point) lies
-    flat and spans at least ``TOP_SPAN`` of the asset's footprint: a folded shirt's top fold,
-    not a hanger's hook above a dress nor the tape loop above a coat's collar."""
-    key = (asset.asset_id, "<top>")
+    flat and spans at least ``span`` (default ``TOP_SPAN``) of the asset's footprint: a folded
+    shirt's top fold, not a hanger's hook above a dress nor the tape loop above a coat's
+    collar."""
+    span = TOP_SPAN if span is None else span
+    key = (asset.asset_id, f"<top {span:g}>")
     got = _LIES_FLAT.get(key)
     if got is None:
         pts = [part_points([p]) for p in asset.parts]
         zs = [float(q[:, 2].max()) for q in pts]
         foot = float(np.prod(np.ptp(np.vstack(pts)[:, :2], axis=0)))
         got = _LIES_FLAT[key] = any(
-            lies_flat(asset, p) and float(np.prod(np.ptp(q[:, :2], axis=0))) >= TOP_SPAN * foot
+            lies_flat(asset, p) and float(np.prod(np.ptp(q[:, :2], axis=0))) >= span * foot
             for p, q, z in zip(asset.parts, pts, zs, strict=True) if z > max(zs) - TOP_BAND)
     return got
+
+
+#: Share of its footprint (bounding box) the flat top of a thing round in outline must span to
+#: carry the next one of its kind: a paint can's lid, a cube box's top; not a cherry tomato's
+#: calyx.
+LID_SPAN = 0.5
+
+
+def round_unlidded(asset: Asset) -> bool:
+    """Round in outline, as wide as deep and tall (extents within 30 %), with no flat top
+    spanning ``LID_SPAN`` of its footprint: an apple, a cherry tomato under its calyx; not a
+    paint can or a cube box."""
+    ext = hull_extents(asset)[0]
+    return float(ext.max()) <= 1.3 * float(ext.min()) and not top_lies_flat(asset, LID_SPAN)
+
+
+def no_stack_base(asset: Asset, ref) -> bool:
+    """Whether the next one of its kind cannot stand on ``asset`` (the part ``ref`` names, if
+    any), so it rests beside it in a heap (:func:`parse3d.solver.intent.beside`): it lacks
+    the ``stack_base`` :func:`lacks` asks for (a flat base or top, nothing standing on its
+    middle), or it is round with no lid (:func:`round_unlidded`)."""
+    return lacks(asset, [(ref.part, ref.index, "", "stack_base")]) is not None \
+        or round_unlidded(asset)
 
 
 #: Share of an asset's footprint (bounding box) a flat top part must span to carry the next

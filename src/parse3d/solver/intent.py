@@ -119,9 +119,10 @@ def soft(reqs: list) -> list:
 
 
 def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
-    """For ``ON child -> parent`` where the placed parent is of the child's kind and round
-    (extents within 30%) or rolls (``rolls(asset, ref)``: neither its top nor its bottom is
-    flat): an apple, a tomato; a heap:
+    """For ``ON child -> parent`` where the placed parent is of the child's kind and is no base
+    to stack on (``rolls(asset, ref)``: neither its top nor its bottom is flat, or its
+    uppermost part is not: an apple, a tomato; not a paint can or a tea caddy, round in
+    outline but flat-lidded, which the next one stands on); a heap:
     the child takes the parent's own support relation (the crate, the bowl) and a ``NEAR``
     to the parent close enough to touch it, so it rests beside it or, on a pile, in the hollow
     by it. Returns (the support edge placed, the NEAR edge, why), or None."""
@@ -133,8 +134,7 @@ def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
             set(pag.objects[cid].candidates) & set(pag.objects[pid].candidates)):
         return None
     under = pag.supporter(pid)
-    if under is None or under.relation not in ("ON", "IN") or not (
-            is_round(parent) or rolls(parent.asset, e.parent)):
+    if under is None or under.relation not in ("ON", "IN") or not rolls(parent.asset, e.parent):
         return None
     from .geometry import asset_geometry
 
@@ -143,7 +143,8 @@ def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
     near = Edge("NEAR", replace(e.child, part=None, index=None, surface=None, text=cid),
                 replace(e.parent, part=None, index=None, surface=None, text=pid),
                 {"distance": round(float(1.6 * max(ext[:2])), 4)})
-    why = (f"{pid} ({parent.asset.asset_id}) is round: nothing stacks on it, so {cid} rests "
+    what = "is round" if is_round(parent) else "has no flat top"
+    why = (f"{pid} ({parent.asset.asset_id}) {what}: nothing stacks on it, so {cid} rests "
            f"beside it, {under.relation} {under.parent} (write {under.relation} {cid} -> "
            f"{under.parent}, a heap, or stack on a flat base)")
     return sup, near, why

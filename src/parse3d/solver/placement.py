@@ -28,6 +28,7 @@ from .choice import (
     instance_scale,
     lacks,
     level_instance,
+    no_stack_base,
     requirements,
 )
 from .collision import Body, cached_body
@@ -172,8 +173,7 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
     tried: set[str] = set()
     # ON a round thing of its kind (an apple on an apple): beside it, a heap
     heap = None if hollow_like(st, support_edge) else beside(
-        pag, st.scene, support_edge,
-        lambda a, ref: lacks(a, [(ref.part, ref.index, "", "stack_base")]) is not None)
+        pag, st.scene, support_edge, no_stack_base)
     if heap is not None:
         others = [*others, heap[1]]
     nest = nest_edge(st, support_edge)  # ON a hollow one of its kind: nests in it (stacking.py)

@@ -129,7 +129,9 @@ def paint_can(rng: np.random.Generator, variant: str) -> list[Part]:
         body = M.solid(M.jitter(rng, (0.92, 0.92, 0.9), 0.02)[:3], "plastic", 0.5)
         parts = [make_part("body", "body", S.frustum(r * 0.9, r, h, center=(0, 0, 0), sections=32), body),
                  make_part("lid", "lid", S.cylinder(r + 0.006, 0.012, center=(0, 0, h + 0.006), sections=32), body),
-                 make_part("spout", "spout", S.cylinder(0.025, 0.012, center=(r * 0.55, 0, h + 0.018), sections=16), body)]
+                 # the pour spout folded down into a well of the lid, its cap flush with the lid's
+                 # top (buckets stack lid on lid)
+                 make_part("spout", "spout", S.cylinder(0.025, 0.008, center=(r * 0.55, 0, h + 0.008), sections=16), body)]
         hz = h * 0.85
         rim_mat = body
     else:
