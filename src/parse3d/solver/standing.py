@@ -247,7 +247,7 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
       takes a bouquet, not a bud vase).
 
     A container with children written ``IN`` it that would not stand there (a potted plant in
-    a basket) is drawn likewise with a floor whose free height takes the lowest of each
+    a basket) is drawn likewise with a floor whose free height takes the median height of each
     child's first :data:`MOUTH_SLOTS` pool slots, at the least scale its node allows (a
     basket whose handle leaves the leaves no room is passed over), and with flat children
     (picture books) with a floor that takes them standing (:func:`floor_takes`); so is one
@@ -306,13 +306,15 @@ def standing_instance(st: SolveState, library, oid: str, edge: Edge, category: s
         node = st.pag.objects[oid_]
         return _unit_scale(a) * (float(node.scale[0]) if node.scale is not None else 1.0)
 
-    # what does not stand in it lies or sits on its floor: the lowest of each child's
-    # instances looked at needs that much free height (a plant's leaves under a handle)
-    low = {}
+    # what does not stand in it lies or sits on its floor: the median height of each child's
+    # instances looked at needs that much free height (a plant's leaves under a handle; not
+    # the lowest, a herb pot among floor plants)
+    heights: dict[str, list[float]] = {}
     for e, ka in kids:
         if not _long(ka):
             h = float(np.ptp(asset_geometry(ka).hull[:, 2])) * least(e.child.object, ka)
-            low[e.child.object] = min(low.get(e.child.object, np.inf), h)
+            heights.setdefault(e.child.object, []).append(h)
+    low = {k: float(np.median(v)) for k, v in heights.items()}
     # ... and flat ones a floor that takes them standing (picture books in a basket)
     floor_ok = floor_takes(st, library, oid, edge)
 

@@ -356,11 +356,19 @@ def _blobs(rng, n: int, center, spread, size) -> list[S.Shape]:
     return out
 
 
-@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk", "saucer", "stake", "tie"), size_range=(0.3, 1.8),
-          density=400, variants=("bush", "tree", "leafy"))
+@register("potted_plant", parts=("pot", "plant"), extra_parts=("soil", "trunk", "saucer", "stake", "tie"), size_range=(0.15, 1.8),
+          density=400, variants=("bush", "tree", "leafy", "herb"))
 def potted_plant(rng: np.random.Generator, variant: str) -> list[Part]:
+    """A plant in a pot: a bush, a tree, a leafy plant on a stake, or a herb in a small pot (9-13 cm
+    across, the kind on a kitchen window sill) whose leaves reach a little past its rim."""
     green = M.plant(rng)
-    if variant == "tree":
+    if variant == "herb":
+        r_top, h_pot = rng.uniform(0.045, 0.065), rng.uniform(0.08, 0.12)
+        parts, z0, r_in = _pot(rng, r_top, h_pot)
+        size = rng.uniform(0.05, 0.08)
+        leaves = _blobs(rng, int(rng.integers(6, 10)), (0, 0, z0 + size * 1.1),
+                        (r_top * 0.7, r_top * 0.7, size * 0.7), size * 0.55)
+    elif variant == "tree":
         r_top, h_pot = rng.uniform(0.16, 0.24), rng.uniform(0.28, 0.42)
         parts, z0, r_in = _pot(rng, r_top, h_pot)
         top = rng.uniform(1.1, 1.6)
