@@ -248,9 +248,12 @@ def duffel_bag(rng: np.random.Generator, variant: str) -> list[Part]:
     L = rng.uniform(0.5, 0.75)
     r = rng.uniform(0.13, 0.18)
     fab = M.fabric(rng)
-    body = (S.cylinder(r, L, center=(0, 0, r), axis=(1, 0, 0), sections=20) if variant != "travel" else
+    # a round bag stands on its four studs, its lowest line clear of the floor (it would roll
+    # on it otherwise); the travel bag's flat bottom rests on the floor with its studs
+    lift = 0.004 if variant != "travel" else 0.0
+    body = (S.cylinder(r, L, center=(0, 0, r + lift), axis=(1, 0, 0), sections=20) if variant != "travel" else
             S.box((L, 2 * r, 1.6 * r), center=(0, 0, 0.8 * r), bevel=0.04))
-    top = 2 * r if variant != "travel" else 1.6 * r
+    top = 2 * r + lift if variant != "travel" else 1.6 * r
     web = black("fabric")
     out = [make_part("body", "body", body, fab),
            _b("zipper", "zipper", (L * 0.8, 0.012, 0.004), (0, 0.0, top + 0.001), M.metal(rng))]
@@ -271,13 +274,13 @@ def duffel_bag(rng: np.random.Generator, variant: str) -> list[Part]:
         out.append(_b(f"clip_{k}", "clip", (0.03, 0.008, 0.02), (sx * (L / 2 - 0.03), ys + 0.004, top * 0.75), M.metal(rng)))
     out.append(_b("grip", "grip", (0.1, 0.09, 0.025), (0, 0, top + 0.055), web, bevel=0.006))
     ry = r * 0.5
+    # on a round bag each stud reaches from the floor up into the curved bottom above it
+    hf = 0.004 if variant == "travel" else lift + r - float(np.sqrt(r * r - ry * ry)) + 0.002
     for k, (sx, sy) in enumerate([(-1, -1), (1, -1), (-1, 1), (1, 1)]):
-        out.append(_c(f"foot_{k}", "foot", 0.008, 0.004, (sx * L * 0.35, sy * ry, 0.002 + (r - np.sqrt(max(r * r - ry * ry, 0.0))
-                                                                                          if variant != "travel" else 0.0)),
-                      M.metal(rng), sections=8))
+        out.append(_c(f"foot_{k}", "foot", 0.008, hf, (sx * L * 0.35, sy * ry, hf / 2), M.metal(rng), sections=8))
     if variant == "gym":
         for k, sx in enumerate((-1, 1)):
-            out.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(r * 1.01, 0.01, center=(sx * (L / 2 - 0.005), 0, r),
+            out.append(make_part(f"end_cap_{k}", "end_cap", S.cylinder(r * 1.01, 0.01, center=(sx * (L / 2 - 0.005), 0, r + lift),
                                                                       axis=(1, 0, 0)), web))
     else:
         # the zipped pocket on the front
