@@ -43,7 +43,7 @@ from .rotation import HOOK_REACH
 from .state import SolveState, plane_coords
 from .support import support_candidates
 
-__all__ = ["attachment_region", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
+__all__ = ["attachment_region", "hang_room", "HANG_CLEAR", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -515,3 +515,57 @@ def hung_by_part(st: SolveState, asset: Asset, scale: float, e: Edge) -> np.ndar
     (:func:`hangs_beside`): its top then touches the parent, not the object's; else None."""
     p = _hung_part(st, asset, scale, e)
     return None if p is None else part_points([p]) * scale
+
+
+#: Metres of clearance a hung thing needs on either side of the part it hangs from, across
+#: its width: half the depth of a garment on a hanger (a rod 6 cm from a drying rack's ridge
+#: is in its way).
+HANG_CLEAR = 0.06
+
+_HANG_ROOM: dict[tuple, str | None] = {}
+
+
+def hang_room(asset: Asset, label: str | None, index: int | None, depth: float) -> str | None:
+    """The name of a part of ``asset`` (of ``label``, ``#index``, when named) with room for a
+    thing ``depth`` metres long to hang below it: no other part of the asset reaches into the
+    column of that depth below it (its outline, less :data:`HANG_CLEAR` around every part
+    below it), and, for an asset that stands on something (not put up on a wall or a
+    ceiling), its bottom at least ``depth`` above the asset's lowest point (what it stands on
+    is there). None when no part has that room: a dish rack's tines, a shoe rack's shelves,
+    a drying rack's rods with the next rod below them, a clothes horse lower than a shirt."""
+    key = (asset.asset_id, label, index, round(float(depth), 3))
+    if key in _HANG_ROOM:
+        return _HANG_ROOM[key]
+    import shapely
+    from shapely.geometry import MultiPoint
+
+    from ..assets import registry
+
+    try:
+        stands = registry.get(asset.category).placement not in ("wall", "ceiling")
+    except KeyError:
+        stands = True
+    parts = asset.parts if label is None else asset.parts_by_label(label)
+    if label is not None and index is not None:
+        parts = parts[index:index + 1]
+    low = float(part_points(asset.parts)[:, 2].min())
+    pieces = [(p, pc.vertices) for p in asset.parts for pc in p.piece_arrays]
+    got = None
+    for p in parts:
+        pts = part_points([p])
+        bottom = float(pts[:, 2].min())
+        if stands and bottom - low < depth:
+            continue
+        free = MultiPoint(pts[:, :2]).convex_hull
+        blocks = [MultiPoint(v[:, :2]).convex_hull.buffer(HANG_CLEAR) for q, v in pieces
+                  if q is not p and float(v[:, 2].min()) < bottom - 1e-3
+                  and float(v[:, 2].max()) > bottom - depth]
+        if blocks:
+            free = free.difference(shapely.union_all(blocks))
+        if not free.is_empty and free.area > 1e-6:
+            got = p.name
+            break
+    if len(_HANG_ROOM) > 8192:
+        _HANG_ROOM.clear()
+    _HANG_ROOM[key] = got
+    return got

@@ -1,0 +1,44 @@
+"""What hangs below an object needs room below one of its parts: the instance drawn for a
+group word (``rack``: a dish rack, a wine rack, a coat tree...) or for a part several
+variants name (a radiator's ``section``) is one with such a part; solved, settled and
+repaired as ``parse3d solve`` does (real SAPIEN physics)."""
+
+from __future__ import annotations
+
+import pytest
+
+from parse3d.solver.choice import lacks, requirements
+from parse3d.solver.hanging import hang_room
+from parse3d.solver.library import AssetLibrary
+from test_rooms import solved
+
+
+def test_room_below_tells_a_coat_tree_from_a_dish_rack():
+    """A coat tree's hooks have room below for a coat; a dish rack's tines and a shoe rack's
+    shelves have not (the next shelf, the counter under it)."""
+    lib = AssetLibrary()
+    assert all(hang_room(lib.load("coat_rack", s), None, None, 0.9) for s in range(4))
+    for cat in ("dish_rack", "storage_rack", "wine_rack"):
+        assert not any(hang_room(lib.load(cat, s), None, None, 0.9) for s in range(4)), cat
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_the_rack_drawn_holds_what_hangs_below_it(seed):
+    """Every object placed, none fell; the rack and the radiator drawn have room below a
+    part for what hangs there, and every relation holds after settling or is recorded
+    relaxed with its reason."""
+    from parse3d.measure import summarize_settled
+
+    scene = solved("hung_below_a_group_word", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    for oid in ("rack", "heater"):
+        reqs = requirements(scene.pag, oid)
+        assert any(r[3].startswith("hang_room:") for r in reqs), reqs
+        assert lacks(scene.objects[oid].asset, reqs) is None, scene.objects[oid].asset.asset_id
+    for oid in ("coat1", "coat2", "towel1", "towel2"):
+        assert scene.objects[oid].support_choice.owner in ("rack", "heater"), oid
+    s = summarize_settled(scene)
+    assert s.complete and s.keeps_relations()
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True and c.relaxed is None]
+    assert not broken, broken
