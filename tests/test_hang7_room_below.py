@@ -42,3 +42,28 @@ def test_the_rack_drawn_holds_what_hangs_below_it(seed):
     broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
               if c.holds_settled is not True and c.relaxed is None]
     assert not broken, broken
+
+
+@pytest.mark.parametrize("seed", (0, 1, 2))
+def test_a_garment_bag_hangs_on_the_bar_under_a_rail_with_no_room_below(seed):
+    """A garment bag written below a luggage cart's arched rail, whose hanger bar is right
+    under it: it hangs on the part below with room for it (the hanger bar), recorded relaxed
+    naming that part; every object placed, none fell, every relation holds after settling
+    or is recorded relaxed."""
+    from parse3d.measure import summarize_settled
+
+    scene = solved("garment_bag_on_a_luggage_cart", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    bag = scene.objects["garment_bag"]
+    assert bag.support_choice.owner == "cart" and bag.fixed
+    assert bag.support_choice.part.startswith("hanger_bar"), bag.support_choice.part
+    s = summarize_settled(scene)
+    assert s.complete and s.keeps_relations()
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True and c.relaxed is None]
+    assert not broken, broken
+    relaxed = scene.meta.get("relaxed") or {}
+    hung = [c for c in scene.relations if c.relation == "HANGING_BELOW"]
+    assert hung and (hung[0].holds_settled or "it hangs on cart:hanger_bar" in
+                     relaxed.get(str(hung[0].index), "")), relaxed
+

@@ -24,7 +24,7 @@ from .coverings import covering_scale
 from .fit import CONTENTS_AREA, FIT_SHARE, contents_scale, roomy_scale, top_fit
 from .fit import _sides as sup_sides
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .hanging import edge_up, hang_room, rail_scale, thinness, typical_size
+from .hanging import below_room, edge_up, hang_room, rail_scale, thinness, typical_size
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
 from .rules import RULES
@@ -203,7 +203,9 @@ def lacks(asset: Asset, reqs) -> str | None:
     for label, idx, text, kind in reqs:
         if kind.startswith(HANG_ROOM + ":"):
             depth = float(kind.split(":")[1])
-            if hang_room(asset, label, idx, depth) is None:
+            if hang_room(asset, label, idx, depth) is None \
+                    and (label is None or not below_room(asset, label, idx, depth)):
+                # (a part right below the named one with room holds it: hanging.hang_over)
                 where = "any part" if label is None else f"its {label}"
                 return (f"{asset.asset_id} has no room below {where} for a {depth:.2f} m "
                         f"thing to hang ({text})")

@@ -43,7 +43,7 @@ from .rotation import HOOK_REACH
 from .state import SolveState, plane_coords
 from .support import support_candidates
 
-__all__ = ["attachment_region", "hang_room", "HANG_CLEAR", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
+__all__ = ["attachment_region", "below_room", "below_with_room", "hang_room", "HANG_CLEAR", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -281,7 +281,45 @@ def hang_over(st: SolveState, oid: str, edge: Edge, asset: Asset, sups: list,
                         return place(sup)
                     except Fail:
                         continue
+    for sup in below_with_room(st, edge):
+        # no room below the named part (the arch of a luggage cart's rail, its hanger bar
+        # right under it): on the part below it that has room, as a garment bag hangs there
+        try:
+            return place(sup)
+        except Fail:
+            continue
     return None
+
+
+def below_with_room(st: SolveState, edge: Edge) -> list:
+    """For ``edge`` HANGING_BELOW a part of an object that has no room below it for the child
+    (:func:`hang_room` at the child's typical size), the supports of the parent's other parts
+    right below it (under its outline, lower than its bottom) that have: a luggage cart's
+    hanger bar under the arch of its rail. Nearest the named part first; empty for anything
+    else."""
+    ref = edge.parent
+    if edge.relation != "HANGING_BELOW" or ref.is_room_element or ref.part is None:
+        return []
+    pobj = st.scene.objects.get(ref.object)
+    depth = typical_size(st.pag, edge.child.object)
+    if pobj is None or not pobj.placed or pobj.asset is None or depth <= 0:
+        return []
+    asset = pobj.asset
+    d = depth / max(float(pobj.scale), 1e-6)  # the asset's own frame
+    if hang_room(asset, ref.part, ref.index, d) is not None:
+        return []
+    labels = below_room(asset, ref.part, ref.index, d)
+    from ..pag.refs import format_ref
+
+    out = []
+    for label in labels:
+        text = format_ref(ref.object, label, None, ref.surface)
+        try:
+            out += support_candidates(st, replace(edge, parent=replace(
+                ref, part=label, index=None, text=text)))
+        except Fail:
+            continue
+    return out
 
 
 def _centre(sup) -> np.ndarray:
@@ -327,7 +365,7 @@ def other_hook(st: SolveState, edge: Edge, sup, loose: str | None = None) -> str
     ref = edge.parent
     return (f"{loose}; " if loose else "") + (f"no room to hang {edge.child.object} below "
             f"{format_ref(ref.object, ref.part, ref.index, ref.surface)} (others hang there, "
-            f"or it faces a wall): it hangs on {ref.object}:{sup.choice.part} instead")
+            f"it faces a wall, or its own parts are in the way below it): it hangs on {ref.object}:{sup.choice.part} instead")
 
 
 #: Metres: a part no thicker than this across its length is a rod or a rail (a drying rack's
@@ -569,3 +607,30 @@ def hang_room(asset: Asset, label: str | None, index: int | None, depth: float) 
         _HANG_ROOM.clear()
     _HANG_ROOM[key] = got
     return got
+
+
+def below_room(asset: Asset, label: str, index: int | None, depth: float) -> list[str]:
+    """The labels of the parts of ``asset`` right below its parts ``label`` (``#index``):
+    under their outline, lower than their bottom, with room below them for a thing ``depth``
+    metres long (:func:`hang_room`), nearest first (a luggage cart's hanger bar under the arch
+    of its rail)."""
+    from shapely.geometry import MultiPoint
+
+    named = asset.parts_by_label(label)
+    named = named[index:index + 1] if index is not None else named
+    if not named:
+        return []
+    pts = part_points(named)
+    under = MultiPoint(pts[:, :2]).convex_hull
+    bottom = float(pts[:, 2].min())
+    labels: dict[str, float] = {}
+    for p in asset.parts:
+        if p.label == label or p.label in labels:
+            continue
+        q = part_points([p])
+        top = float(q[:, 2].max())
+        if top >= bottom + 1e-3 or not MultiPoint(q[:, :2]).convex_hull.intersects(under):
+            continue
+        if hang_room(asset, p.label, None, depth) is not None:
+            labels[p.label] = bottom - top
+    return sorted(labels, key=labels.get)
