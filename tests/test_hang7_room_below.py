@@ -67,3 +67,21 @@ def test_a_garment_bag_hangs_on_the_bar_under_a_rail_with_no_room_below(seed):
     assert hung and (hung[0].holds_settled or "it hangs on cart:hanger_bar" in
                      relaxed.get(str(hung[0].index), "")), relaxed
 
+
+@pytest.mark.parametrize("seed", (0, 1, 2, 3))
+def test_a_hook_between_two_headboards_keeps_room_for_its_jacket(seed):
+    """A coat hook on the wall two beds stand against, a jacket to hang below it: the hook
+    goes where the least of the jacket's room is taken, the jacket hangs from it clear of
+    both beds; every object placed, every relation holds after settling or is recorded
+    relaxed."""
+    from parse3d.measure import summarize_settled
+
+    scene = solved("hook_between_two_beds", seed)
+    assert not scene.failed, [(o.id, o.reason) for o in scene.failed]
+    jacket = scene.objects["jacket"]
+    assert jacket.support_choice.owner == "coat_hook" and jacket.fixed
+    s = summarize_settled(scene)
+    assert s.complete and s.keeps_relations()
+    broken = [(c.relation, c.child, c.parent, c.residual_settled) for c in scene.relations
+              if c.holds_settled is not True and c.relaxed is None]
+    assert not broken, broken

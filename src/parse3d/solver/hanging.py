@@ -486,13 +486,14 @@ def hung_size(pag, oid: str) -> float:
 def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray) -> np.ndarray:
     """Samples of an object put up on an upright surface (a hook on a wall) with things still
     to hang below it, those whose room below is clear of what is placed first (a stable
-    partition; unchanged otherwise).
+    order; unchanged otherwise).
 
     ``samples`` (N, 2) are positions of the object's origin and ``F`` its outline about it,
     in the plane coordinates of ``sup``'s surface. The room below is as wide as the outline
     or the largest of its hung children's :func:`typical_size` (whichever is wider), centred
     on the outline, and that size tall below its lowest point; what is placed within that
-    size in front of the surface and overlaps it (seen on the surface) is in the way.
+    size in front of the surface and overlaps it (seen on the surface) is in the way. Samples
+    whose room is taken come last, the least taken (by the area overlapped) first.
     """
     s = sup.surface
     n = np.asarray(s.normal, float)
@@ -513,7 +514,7 @@ def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray
     half = 0.5 * max(float(np.ptp(fa)), size)
     mid = samples @ along + 0.5 * float(fa.min() + fa.max())
     top = samples @ up + float(fz.min())
-    free = np.ones(len(samples), bool)
+    taken = np.zeros(len(samples))
     for o in st.scene.objects.values():
         if not o.placed or o.id in (oid, sup.owner) or o.id not in st.hulls:
             continue
@@ -523,9 +524,12 @@ def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray
             continue
         P = plane_coords(s, H)
         pa, pz = P @ along, P @ up
-        free &= ~((mid - half < pa.max()) & (mid + half > pa.min())
-                  & (top - size < pz.max()) & (top > pz.min()))
-    return np.vstack([samples[free], samples[~free]])
+        wide = np.minimum(mid + half, pa.max()) - np.maximum(mid - half, pa.min())
+        tall = np.minimum(top, pz.max()) - np.maximum(top - size, pz.min())
+        taken += np.clip(wide, 0.0, None) * np.clip(tall, 0.0, None)
+    # the free ones first, in their order; then the least taken (a gap between two beds a
+    # little narrower than the room asked: a jacket narrower than that still hangs there)
+    return samples[np.argsort(taken, kind="stable")]
 
 
 def _hung_part(st: SolveState, asset: Asset, scale: float, e: Edge):
