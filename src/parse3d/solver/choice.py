@@ -24,7 +24,7 @@ from .coverings import covering_scale
 from .fit import CONTENTS_AREA, FIT_SHARE, contents_scale, roomy_scale, top_fit
 from .fit import _sides as sup_sides
 from .geometry import asset_geometry, hull_extents, part_points, rect_sides
-from .hanging import edge_up, rail_scale, thinness
+from .hanging import below_room, edge_up, hang_room, rail_scale, thinness, typical_size
 from .intent import names_part, overhang, soft
 from .nesting import floor_fit
 from .rules import RULES
@@ -38,7 +38,7 @@ __all__ = ["THIN_HANG", "hung_edge_up", "HEADROOM_FIT", "SURFACE_AXES", "extent_
            "CONTENTS_AREA", "contents_scale", "edge_text", "touching", "requirements", "lacks",
            "FREE_TOP", "FLAT_TOL", "lies_flat", "top_lies_flat", "TOP_BAND", "RIM_WIDTH", "RIM_OPENING", "rounded_rim",
            "free_top", "LAYER", "RANKED_SLOTS", "boards_hold", "too_tall_failure", "room_failure",
-           "alternative_instance", "level_instance", "flush_edges", "part_overhang", "draw_instance",
+           "alternative_instance", "HANG_ROOM", "hang_reqs", "level_instance", "flush_edges", "part_overhang", "draw_instance",
            "instance_scale"]
 
 
@@ -182,12 +182,34 @@ def requirements(pag, oid: str) -> list[tuple[str, int | None, str, str]]:
                 continue
             out.append((ref.part, ref.index, text, "part"))
             out += rule.part_needs(e, ref, role, text)
+        if e.relation == "HANGING_BELOW" and e.parent.object == oid \
+                and e.child.object != oid and (depth := typical_size(pag, e.child.object)) > 0:
+            # a part with room below it for the child to hang (a rack's rail, not its tines)
+            out.append((e.parent.part, e.parent.index, text, f"{HANG_ROOM}:{depth:.3f}"))
     return out
+
+
+#: Requirement kind: a part with room below it for a hung child (``hang_room:<metres>``).
+HANG_ROOM = "hang_room"
+
+
+def hang_reqs(reqs) -> list:
+    """The requirements among ``reqs`` that ask room below a part for a hung child."""
+    return [r for r in reqs if r[3].startswith(HANG_ROOM + ":")]
 
 
 def lacks(asset: Asset, reqs) -> str | None:
     """Why ``asset`` cannot meet ``reqs`` (see :func:`requirements`), or None."""
     for label, idx, text, kind in reqs:
+        if kind.startswith(HANG_ROOM + ":"):
+            depth = float(kind.split(":")[1])
+            if hang_room(asset, label, idx, depth) is None \
+                    and (label is None or not below_room(asset, label, idx, depth)):
+                # (a part right below the named one with room holds it: hanging.hang_over)
+                where = "any part" if label is None else f"its {label}"
+                return (f"{asset.asset_id} has no room below {where} for a {depth:.2f} m "
+                        f"thing to hang ({text})")
+            continue
         if kind == "internal" and label is None:
             if not asset.internal and not any(free_top(asset, p) for p in board_parts(asset)):
                 return f"{asset.asset_id} holds nothing inside ({text})"
@@ -530,6 +552,18 @@ def draw_instance(library, node, reqs: list, tried: set[str], rng: np.random.Gen
     instance that cannot stand on its own base is then kept."""
     category = node.candidates[int(rng.integers(len(node.candidates)))]
     asset = library.get(category, rng)
+    if (hung := hang_reqs(reqs)) and not (keep is not None and attempt == 0) \
+            and lacks(asset, hung) is not None:
+        # something is to hang below it and the draw has no room for it (a dish rack drawn
+        # for "rack", with shirts to hang): an instance that has, looked up with a generator
+        # of its own (the solve's draws are unchanged where nothing is filtered)
+        own_rng = np.random.default_rng(zlib.crc32(f"hang:{node.id}:{attempt}".encode()))
+        alt = alternative_instance(library, node.candidates, reqs, tried, own_rng, every=True) \
+            or alternative_instance(library, node.candidates, hung, tried, own_rng, every=True)
+        if alt is not None:
+            category, asset = alt
+        else:  # none has: the draw stands, and what hangs below it relaxes or fails alone
+            reqs = [r for r in reqs if r not in hung]
     picked = True  # by a rule below, else drawn
     if keep is not None and attempt == 0:
         category, asset = keep.category, keep.asset

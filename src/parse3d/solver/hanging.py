@@ -43,7 +43,7 @@ from .rotation import HOOK_REACH
 from .state import SolveState, plane_coords
 from .support import support_candidates
 
-__all__ = ["attachment_region", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
+__all__ = ["attachment_region", "below_room", "below_with_room", "hang_room", "HANG_CLEAR", "hangs_beside", "hung_by_part", "drapes", "draped_over", "edge_up", "hang_over", "hung_lengthwise", "hung_over", "off_wall", "off_wall_reason", "other_hook", "room_below", "hung_size",
            "rail_fit", "rail_scale", "rod_thickness", "thinness", "typical_size", "RAIL_GAP",
            "DRAPING", "ROD_THICK", "ROD_LONG"]
 
@@ -281,7 +281,45 @@ def hang_over(st: SolveState, oid: str, edge: Edge, asset: Asset, sups: list,
                         return place(sup)
                     except Fail:
                         continue
+    for sup in below_with_room(st, edge):
+        # no room below the named part (the arch of a luggage cart's rail, its hanger bar
+        # right under it): on the part below it that has room, as a garment bag hangs there
+        try:
+            return place(sup)
+        except Fail:
+            continue
     return None
+
+
+def below_with_room(st: SolveState, edge: Edge) -> list:
+    """For ``edge`` HANGING_BELOW a part of an object that has no room below it for the child
+    (:func:`hang_room` at the child's typical size), the supports of the parent's other parts
+    right below it (under its outline, lower than its bottom) that have: a luggage cart's
+    hanger bar under the arch of its rail. Nearest the named part first; empty for anything
+    else."""
+    ref = edge.parent
+    if edge.relation != "HANGING_BELOW" or ref.is_room_element or ref.part is None:
+        return []
+    pobj = st.scene.objects.get(ref.object)
+    depth = typical_size(st.pag, edge.child.object)
+    if pobj is None or not pobj.placed or pobj.asset is None or depth <= 0:
+        return []
+    asset = pobj.asset
+    d = depth / max(float(pobj.scale), 1e-6)  # the asset's own frame
+    if hang_room(asset, ref.part, ref.index, d) is not None:
+        return []
+    labels = below_room(asset, ref.part, ref.index, d)
+    from ..pag.refs import format_ref
+
+    out = []
+    for label in labels:
+        text = format_ref(ref.object, label, None, ref.surface)
+        try:
+            out += support_candidates(st, replace(edge, parent=replace(
+                ref, part=label, index=None, text=text)))
+        except Fail:
+            continue
+    return out
 
 
 def _centre(sup) -> np.ndarray:
@@ -327,7 +365,7 @@ def other_hook(st: SolveState, edge: Edge, sup, loose: str | None = None) -> str
     ref = edge.parent
     return (f"{loose}; " if loose else "") + (f"no room to hang {edge.child.object} below "
             f"{format_ref(ref.object, ref.part, ref.index, ref.surface)} (others hang there, "
-            f"or it faces a wall): it hangs on {ref.object}:{sup.choice.part} instead")
+            f"it faces a wall, or its own parts are in the way below it): it hangs on {ref.object}:{sup.choice.part} instead")
 
 
 #: Metres: a part no thicker than this across its length is a rod or a rail (a drying rack's
@@ -448,13 +486,14 @@ def hung_size(pag, oid: str) -> float:
 def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray) -> np.ndarray:
     """Samples of an object put up on an upright surface (a hook on a wall) with things still
     to hang below it, those whose room below is clear of what is placed first (a stable
-    partition; unchanged otherwise).
+    order; unchanged otherwise).
 
     ``samples`` (N, 2) are positions of the object's origin and ``F`` its outline about it,
     in the plane coordinates of ``sup``'s surface. The room below is as wide as the outline
     or the largest of its hung children's :func:`typical_size` (whichever is wider), centred
     on the outline, and that size tall below its lowest point; what is placed within that
-    size in front of the surface and overlaps it (seen on the surface) is in the way.
+    size in front of the surface and overlaps it (seen on the surface) is in the way. Samples
+    whose room is taken come last, the least taken (by the area overlapped) first.
     """
     s = sup.surface
     n = np.asarray(s.normal, float)
@@ -475,7 +514,7 @@ def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray
     half = 0.5 * max(float(np.ptp(fa)), size)
     mid = samples @ along + 0.5 * float(fa.min() + fa.max())
     top = samples @ up + float(fz.min())
-    free = np.ones(len(samples), bool)
+    taken = np.zeros(len(samples))
     for o in st.scene.objects.values():
         if not o.placed or o.id in (oid, sup.owner) or o.id not in st.hulls:
             continue
@@ -485,9 +524,12 @@ def room_below(st: SolveState, oid: str, sup, F: np.ndarray, samples: np.ndarray
             continue
         P = plane_coords(s, H)
         pa, pz = P @ along, P @ up
-        free &= ~((mid - half < pa.max()) & (mid + half > pa.min())
-                  & (top - size < pz.max()) & (top > pz.min()))
-    return np.vstack([samples[free], samples[~free]])
+        wide = np.minimum(mid + half, pa.max()) - np.maximum(mid - half, pa.min())
+        tall = np.minimum(top, pz.max()) - np.maximum(top - size, pz.min())
+        taken += np.clip(wide, 0.0, None) * np.clip(tall, 0.0, None)
+    # the free ones first, in their order; then the least taken (a gap between two beds a
+    # little narrower than the room asked: a jacket narrower than that still hangs there)
+    return samples[np.argsort(taken, kind="stable")]
 
 
 def _hung_part(st: SolveState, asset: Asset, scale: float, e: Edge):
@@ -515,3 +557,84 @@ def hung_by_part(st: SolveState, asset: Asset, scale: float, e: Edge) -> np.ndar
     (:func:`hangs_beside`): its top then touches the parent, not the object's; else None."""
     p = _hung_part(st, asset, scale, e)
     return None if p is None else part_points([p]) * scale
+
+
+#: Metres of clearance a hung thing needs on either side of the part it hangs from, across
+#: its width: half the depth of a garment on a hanger (a rod 6 cm from a drying rack's ridge
+#: is in its way).
+HANG_CLEAR = 0.06
+
+_HANG_ROOM: dict[tuple, str | None] = {}
+
+
+def hang_room(asset: Asset, label: str | None, index: int | None, depth: float) -> str | None:
+    """The name of a part of ``asset`` (of ``label``, ``#index``, when named) with room for a
+    thing ``depth`` metres long to hang below it: no other part of the asset reaches into the
+    column of that depth below it (its outline, less :data:`HANG_CLEAR` around every part
+    below it), and, for an asset that stands on something (not put up on a wall or a
+    ceiling), its bottom at least ``depth`` above the asset's lowest point (what it stands on
+    is there). None when no part has that room: a dish rack's tines, a shoe rack's shelves,
+    a drying rack's rods with the next rod below them, a clothes horse lower than a shirt."""
+    key = (asset.asset_id, label, index, round(float(depth), 3))
+    if key in _HANG_ROOM:
+        return _HANG_ROOM[key]
+    import shapely
+    from shapely.geometry import MultiPoint
+
+    from ..assets import registry
+
+    try:
+        stands = registry.get(asset.category).placement not in ("wall", "ceiling")
+    except KeyError:
+        stands = True
+    parts = asset.parts if label is None else asset.parts_by_label(label)
+    if label is not None and index is not None:
+        parts = parts[index:index + 1]
+    low = float(part_points(asset.parts)[:, 2].min())
+    pieces = [(p, pc.vertices) for p in asset.parts for pc in p.piece_arrays]
+    got = None
+    for p in parts:
+        pts = part_points([p])
+        bottom = float(pts[:, 2].min())
+        if stands and bottom - low < depth:
+            continue
+        free = MultiPoint(pts[:, :2]).convex_hull
+        blocks = [MultiPoint(v[:, :2]).convex_hull.buffer(HANG_CLEAR) for q, v in pieces
+                  if q is not p and float(v[:, 2].min()) < bottom - 1e-3
+                  and float(v[:, 2].max()) > bottom - depth]
+        if blocks:
+            free = free.difference(shapely.union_all(blocks))
+        if not free.is_empty and free.area > 1e-6:
+            got = p.name
+            break
+    if len(_HANG_ROOM) > 8192:
+        _HANG_ROOM.clear()
+    _HANG_ROOM[key] = got
+    return got
+
+
+def below_room(asset: Asset, label: str, index: int | None, depth: float) -> list[str]:
+    """The labels of the parts of ``asset`` right below its parts ``label`` (``#index``):
+    under their outline, lower than their bottom, with room below them for a thing ``depth``
+    metres long (:func:`hang_room`), nearest first (a luggage cart's hanger bar under the arch
+    of its rail)."""
+    from shapely.geometry import MultiPoint
+
+    named = asset.parts_by_label(label)
+    named = named[index:index + 1] if index is not None else named
+    if not named:
+        return []
+    pts = part_points(named)
+    under = MultiPoint(pts[:, :2]).convex_hull
+    bottom = float(pts[:, 2].min())
+    labels: dict[str, float] = {}
+    for p in asset.parts:
+        if p.label == label or p.label in labels:
+            continue
+        q = part_points([p])
+        top = float(q[:, 2].max())
+        if top >= bottom + 1e-3 or not MultiPoint(q[:, :2]).convex_hull.intersects(under):
+            continue
+        if hang_room(asset, p.label, None, depth) is not None:
+            labels[p.label] = bottom - top
+    return sorted(labels, key=labels.get)
