@@ -1,5 +1,5 @@
-"""Things people name at a set table and by a fireplace: a cloth napkin, a decanter, a mantel
-clock, a log of firewood and a closed umbrella.
+"""Things people name at a set table, by a fireplace and in a hallway: a cloth napkin, a
+decanter, a mantel clock, a log of firewood, a closed umbrella and a free-standing clothes rack.
 
 Each stands or lies on its bottom at z = 0, front toward +Y. The umbrella stands furled on its
 tip with its handle up (it leans or hangs by the handle in a scene; it does not stand alone).
@@ -242,3 +242,48 @@ def umbrella(rng: np.random.Generator, variant: str) -> list[Part]:
     parts.append(make_part("handle", "handle", handle, grip))
     return parts
 
+
+
+@register("clothes_rack", parts=("rail", "upright"), extra_parts=("foot", "caster", "end_cap", "wing", "brace"),
+          size_range=(0.9, 1.8), density=800, variants=("plain", "rolling", "extendable"),
+          placement="floor")
+def clothes_rack(rng: np.random.Generator, variant: str) -> list[Part]:
+    """A free-standing garment rack: a top rail (things hang below it) on two uprights, each
+    standing on a foot bar across the depth, on the floor (plain) or on casters (rolling); the
+    extendable one has wings sliding out of the rail's ends. Long along x."""
+    steel = M.solid(M.jitter(rng, [(0.75, 0.75, 0.77), (0.1, 0.1, 0.1), (0.85, 0.85, 0.83)][int(rng.integers(3))],
+                             0.02), "metal", 0.35, 0.9)
+    rubber = M.solid((0.08, 0.08, 0.08), "rubber", 0.8)
+    w = rng.uniform(0.85, 1.3)
+    h = rng.uniform(1.45, 1.7)
+    d = rng.uniform(0.4, 0.5)
+    rt, ru = 0.0125, 0.0125
+    z_foot = 0.085 if variant != "plain" else ru
+    parts: list[Part] = []
+    for k, sx in enumerate((-1, 1)):
+        x = sx * w / 2
+        parts.append(make_part(f"upright_{k}", "upright", S.cylinder(ru, h - z_foot, center=(x, 0, z_foot + (h - z_foot) / 2),
+                                                                    sections=12), steel))
+        parts.append(make_part(f"foot_{k}", "foot", S.cylinder(ru, d, center=(x, 0, z_foot), axis=(0, 1, 0),
+                                                              sections=12), steel))
+        for j, sy in enumerate((-1, 1)):
+            y = sy * (d / 2 - 0.01)
+            if variant == "plain":  # rubber caps on the foot bar's ends, on the floor
+                parts.append(make_part(f"end_cap_{k}_{j}", "end_cap",
+                                       S.cylinder(ru * 1.2, 0.024, center=(x, y, ru), axis=(0, 1, 0), sections=12), rubber))
+            else:  # a swivel caster under each end of the foot bar
+                parts.append(make_part(f"caster_{k}_{j}", "caster",
+                                       S.union([S.cylinder(0.03, 0.022, center=(x, y, 0.03), axis=(1, 0, 0), sections=16),
+                                                S.box((0.03, 0.03, 0.03), center=(x, y, 0.06))]), rubber))
+    # the rail across the uprights' tops, and a brace low between them
+    parts.append(make_part("rail", "rail", S.cylinder(rt, w + 2 * ru, center=(0, 0, h - rt), axis=(1, 0, 0), sections=12),
+                           steel))
+    parts.append(make_part("brace", "brace", S.cylinder(0.008, w, center=(0, 0, z_foot + 0.12), axis=(1, 0, 0),
+                                                        sections=10), steel))
+    if variant == "extendable":  # the wings pulled part-way out of the rail's ends
+        reach = rng.uniform(0.1, 0.25)
+        for k, sx in enumerate((-1, 1)):
+            parts.append(make_part(f"wing_{k}", "wing",
+                                   S.cylinder(rt * 0.8, reach + 0.05, center=(sx * (w / 2 + ru + reach / 2 - 0.025), 0, h - rt),
+                                              axis=(1, 0, 0), sections=10), steel))
+    return parts
