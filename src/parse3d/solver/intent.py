@@ -26,6 +26,7 @@ from ..measure.reach import WIDE_LEAN_DEG
 from ..pag.model import Edge
 from ..relations import SURFACES
 from .geometry import part_points
+from .resting import box_like
 
 __all__ = ["LOOSE_SUPPORTS", "names_part", "overhang", "whole_object", "loose_reason", "soft",
            "beside", "lies_on_cover", "lies_flat", "lies_in_stack", "lying_face"]
@@ -120,7 +121,7 @@ def soft(reqs: list) -> list:
 
 def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
     """For ``ON child -> parent`` where the placed parent is of the child's kind and round
-    (extents within 30%) or rolls (``rolls(asset, ref)``: neither its top nor its bottom is
+    (extents within 30%, not box-like: ``resting.box_like``, a stack of towels) or rolls (``rolls(asset, ref)``: neither its top nor its bottom is
     flat): an apple, a tomato; a heap:
     the child takes the parent's own support relation (the crate, the bowl) and a ``NEAR``
     to the parent close enough to touch it, so it rests beside it or, on a pile, in the hollow
@@ -134,7 +135,7 @@ def beside(pag, scene, e: Edge, rolls) -> tuple[Edge, Edge, str] | None:
         return None
     under = pag.supporter(pid)
     if under is None or under.relation not in ("ON", "IN") or not (
-            is_round(parent) or rolls(parent.asset, e.parent)):
+            (is_round(parent) and not box_like(parent.asset)) or rolls(parent.asset, e.parent)):
         return None
     from .geometry import asset_geometry
 

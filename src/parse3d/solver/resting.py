@@ -18,7 +18,8 @@ from ..measure.checks import world_points
 from ..measure.geometry import asset_geometry, ray_caster
 from ..scene.model import PlacedObject
 
-__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "RAISED", "rest_points", "held_at_rest", "rests_on"]
+__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "RAISED", "BOX_FILL", "box_like", "rest_points", "held_at_rest",
+           "rests_on"]
 
 
 #: Metres above the first contact within which a point of a dropped child counts as touching
@@ -125,3 +126,21 @@ def rests_on(child: PlacedObject, parent: PlacedObject, parent_pts: np.ndarray,
     com = T[:3, :3] @ asset_geometry(child.asset).com + T[:3, 3]
     width = float(min(np.ptp(pts @ u), np.ptp(pts @ v)))
     return held_at_rest(com, touch, u, v, width)
+
+
+#: A round thing (extents within 30%) whose convex hull fills at least this share of its
+#: bounding box is box-like: a stack of folded towels, a squat tin (a ball fills 52%, a
+#: cylinder 79%); it stands on its flat bottom and takes one of its kind on its flat top.
+BOX_FILL = 0.75
+
+
+def box_like(asset: Asset) -> bool:
+    """Whether ``asset``'s convex hull fills :data:`BOX_FILL` of its bounding box."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    hull = asset_geometry(asset).hull
+    box = float(np.prod(np.ptp(hull, axis=0)))
+    try:
+        return box > 0 and ConvexHull(hull).volume >= BOX_FILL * box
+    except QhullError:
+        return False
