@@ -156,7 +156,9 @@ def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> fl
     """``scale``, or less when the child lying in its support orientation (``axis``, the asset
     axis of its support normal) is longer or wider than every internal floor of the object it
     goes IN but fits one shrunk within its category's size range (a rolled towel in a small
-    wicker basket, a plant in a plant basket a little narrower than its pot); unchanged for
+    wicker basket, a plant in a plant basket a little narrower than its pot), that range times
+    the low end of the node's ``scale`` range when it is below 1 (a toy loaf in a toy pot,
+    both written small); unchanged for
     anything else (a toothbrush far longer than a tumbler's floor stands in it instead). IN an
     object of its own kind that it cannot be shrunk to lie in (a basket in a basket) it rests on
     the parent's wall, so it is only shrunk (within its range) to be no wider than the
@@ -247,7 +249,11 @@ def _floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> f
     if best >= 1.0 or best <= 0.0:
         return scale
     fit = FLOOR_FIT * best
-    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+    # within its category's size range, taken down as far as the writer's own scale range goes
+    # below 1 (a toy loaf, ``scale`` 0.4-0.5, in a toy pot)
+    node = st.pag.objects[edge.child.object].scale
+    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6) \
+        * (min(1.0, float(node[0])) if node is not None else 1.0)
     return scale * fit if scale * fit >= lo else scale
 
 
