@@ -39,6 +39,7 @@ from .geometry import (
     ray_caster,
     side_frame,
 )
+from .insides import no_room_inside
 from .reach import (
     MOUNTED_DEPTH,
     WIDE_LEAN_DEG,
@@ -1160,6 +1161,12 @@ def _check_in(ctx: CheckContext) -> Check:
     if pobj is None:
         return Check(False, {}, "IN needs an object parent")
     got = _internal_surface(ctx)
+    if ctx.edge.parent.part is None and no_room_inside(pobj, ctx.child):
+        from dataclasses import replace  # no inside with room for it: on its top (insides.py)
+
+        c = _check_on(replace(ctx, edge=replace(ctx.edge, relation="ON"),
+                              resolved={**ctx.resolved, "parent_surface": "top"}))
+        return Check(c.holds, c.residual, f"{c.detail}; on its top (no inside has room for it)")
     if isinstance(got, str):
         if on_board(pobj, ctx.edge.parent, ctx.resolved.get("parent_part")):
             # a board holds what is IN it on its top (records on a wall shelf)

@@ -12,13 +12,15 @@ import numpy as np
 
 from ..assets.model import Asset
 from ..measure.checks import object_centroid, world_points
+from ..measure.insides import no_room
+from ..pag.model import Edge
 from .config import Fail
 from .geometry import asset_geometry
 from .state import SolveState
-from .support import Support
+from .support import Support, filled
 
 __all__ = ["concentric_first", "floor_fit", "like_fit", "nest_instance", "nest_rise", "nest_samples",
-           "pieces_drop", "same_kind"]
+           "in_on_top", "pieces_drop", "same_kind"]
 
 def same_kind(st: SolveState, oid: str, sup: Support) -> bool:
     """Whether the child rests on or in a placed object of its own kind (their PAG nodes share
@@ -154,7 +156,9 @@ def floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> fl
     """``scale``, or less when the child lying in its support orientation (``axis``, the asset
     axis of its support normal) is longer or wider than every internal floor of the object it
     goes IN but fits one shrunk within its category's size range (a rolled towel in a small
-    wicker basket, a plant in a plant basket a little narrower than its pot); unchanged for
+    wicker basket, a plant in a plant basket a little narrower than its pot), that range times
+    the low end of the node's ``scale`` range when it is below 1 (a toy loaf in a toy pot,
+    both written small); unchanged for
     anything else (a toothbrush far longer than a tumbler's floor stands in it instead). IN an
     object of its own kind that it cannot be shrunk to lie in (a basket in a basket) it rests on
     the parent's wall, so it is only shrunk (within its range) to be no wider than the
@@ -245,7 +249,11 @@ def _floor_fit(st: SolveState, edge, asset: Asset, scale: float, axis: int) -> f
     if best >= 1.0 or best <= 0.0:
         return scale
     fit = FLOOR_FIT * best
-    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
+    # within its category's size range, taken down as far as the writer's own scale range goes
+    # below 1 (a toy loaf, ``scale`` 0.4-0.5, in a toy pot)
+    node = st.pag.objects[edge.child.object].scale
+    lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6) \
+        * (min(1.0, float(node[0])) if node is not None else 1.0)
     return scale * fit if scale * fit >= lo else scale
 
 
@@ -332,3 +340,66 @@ def nest_instance(st: SolveState, library, edge, category: str, asset: Asset, us
                 narrow = (w, cat, a)
     got = best or narrow
     return got[1], got[2]
+
+
+#: Metres above a part's top within which another part of the asset covers it.
+COVER_REACH = 0.2
+_FREE_TOPS: dict[str, object] = {}
+
+
+def _largest_free_top(asset: Asset):
+    """The part of ``asset`` with the largest upward top of which the asset's other parts
+    leave at least half free (within :data:`COVER_REACH` above it): a bed's mattress, not the
+    deck under it; None when no part has one."""
+    if asset.asset_id in _FREE_TOPS:
+        return _FREE_TOPS[asset.asset_id]
+    from shapely.geometry import Polygon
+
+    from ..geometry import regions as RG
+
+    best, area = None, 0.0
+    for part in asset.parts:
+        s = part.surfaces.get("top")
+        if s is None or float(s.normal[2]) < 0.99:
+            continue
+        top = Polygon(s.to_3d(np.asarray(filled(s.polygon).convex_hull.exterior.coords))[:, :2])
+        free = top
+        for other in asset.parts:
+            if other is part:
+                continue
+            for pc in other.piece_arrays:
+                h = pc.vertices[:, 2] - float(s.origin[2])
+                if h.max() > 1e-3 and h.min() < COVER_REACH:
+                    free = free.difference(Polygon(RG.convex_footprint(pc.vertices[:, :2])))
+        if free.area >= 0.5 * top.area and top.area > area:
+            best, area = part, top.area
+    if len(_FREE_TOPS) > 4096:
+        _FREE_TOPS.clear()
+    _FREE_TOPS[asset.asset_id] = best
+    return best
+
+
+def in_on_top(st: SolveState, edge, asset: Asset, scale: float):
+    """For a child ``IN`` a whole placed object that has no inside with room for it (a folded
+    blanket IN a bed, whose only insides are the slivers of the tape sewn round its
+    mattress): the edge it is placed by instead, ``ON`` the object's largest free top (the
+    mattress), where the ``IN`` check measures it too (``measure.insides``); None for anything
+    else."""
+    if edge.relation != "IN" or edge.parent.is_room_element or edge.parent.part is not None:
+        return None
+    parent = st.scene.objects.get(edge.parent.object)
+    if parent is None or not parent.placed or parent.asset is None or not parent.asset.internal:
+        return None
+    if not no_room(parent.asset, parent.scale, asset, scale):
+        return None
+    from dataclasses import replace
+
+    from ..pag.refs import format_ref
+
+    best = _largest_free_top(parent.asset)
+    if best is None:
+        return None
+    p, c = edge.parent, edge.child
+    return Edge("ON", replace(c, surface=None, text=format_ref(c.object, c.part, c.index, None)),
+                replace(p, part=best.label, index=None, surface="top",
+                        text=format_ref(p.object, best.label, None, "top")), {})

@@ -20,9 +20,12 @@ relation recorded relaxed with that reading:
   (``stove@front``) hangs it on the rod-like part (a handle) furthest along that side;
 - **the pose** (:func:`place_over`): the child hangs edge-up, its thin side against the bar's
   outer face, its top level with the bar's top, down the side away from the parent's centre
-  (or the side the writer named; the other side when that one is blocked); a strap bag hangs
-  upright, its straps toward the bar. A child longer than the bar, or taller than the bar is
-  high, is shown folded: scaled down to fit (never below its category's size range), the size
+  (or the side the writer named; the other side when that one is blocked), out over what of
+  the parent or on it stands about as high as the bar on that side (:func:`_high_pieces`: a
+  sofa's back frame, the pillows leaning on its back cushions), never through a wall; a strap
+  bag hangs upright, its straps toward the bar. A child longer than the bar, or taller than
+  the bar is high above what it may reach down to (:func:`_hang_floor`: the floor, a sofa's
+  seat), is shown folded: scaled down to fit (never below its category's size range), the size
   recorded in the reason. It is fixed where it hangs, like everything hung, so settling keeps
   it held.
 
@@ -37,7 +40,7 @@ from dataclasses import replace
 import numpy as np
 
 from ..assets.model import Asset
-from ..measure.checks import EPS
+from ..measure.checks import EPS, world_points
 from ..pag.model import Edge
 from ..pag.refs import format_ref
 from ..relations import SURFACES
@@ -47,7 +50,7 @@ from .geometry import asset_geometry
 from .hanging import ROD_LONG, ROD_THICK, drapes
 from .rules.layout import relaxed_to_nearest
 from .state import SolveState, parts_for
-from .support import Support, support_candidates
+from .support import Support, filled, support_candidates
 from .validation import relations_and_collisions
 
 __all__ = ["OverEdge", "over_after", "over_edge", "place_over", "soft", "bar_of",
@@ -77,6 +80,12 @@ SIDE_SHARE = 0.25
 #: A top shorter than this multiple of its width, or than the part is tall, is a post's or an
 #: upright handle's end: the child hangs along the parent's face it stands out from.
 SQUARE = 2.0
+#: Metres below a bar's top within which the parent's pieces on the side the child hangs
+#: down stand as high as the bar: the child hangs over them too (a sofa's back frame a few
+#: centimetres below its back cushions' tops), not into them.
+HIGH = 0.1
+#: Metres out from the face a child hangs down within which what lies below it is in its way.
+NEAR_FACE = 0.15
 #: Metres: what hangs over a bar keeps this far above the floor.
 FLOOR_CLEAR = 0.03
 #: Metres the child is moved out from the bar's face, in turn, when something of the parent
@@ -220,8 +229,10 @@ def _region_top(st: SolveState, edge: Edge):
     best = None
     for sp in sups:
         s = sp.surface
-        if sp.region.is_empty or float(s.normal[2]) < 0.9 or sp.ring:
-            continue  # a ring round an opening spans it (bars.py): not a top to lie on
+        if sp.region.is_empty or float(s.normal[2]) < 0.9 or sp.ring or sp.spans:
+            # a ring round an opening spans it (bars.py), and the hull of like parts at one
+            # level (an armchair's two armrests) spans the gap between them: no top to lie on
+            continue
         rect = sp.region.minimum_rotated_rectangle
         if rect.geom_type != "Polygon":
             continue
@@ -413,7 +424,8 @@ def over_edge(st: SolveState, oid: str, edge: Edge, asset: Asset, scale: float, 
         # a post's top, an upright handle's end: along the parent's face it stands out from
         ax = _along_face(parent, c)
         length = np.inf  # nothing to fold it to: it hangs from the handle's end
-    new, folded = (scale, None) if after else _fold(asset, scale, kind, length, z)
+    drop = z - _hang_floor(st, parent, z, c, w, ax, length, side)
+    new, folded = (scale, None) if after else _fold(asset, scale, kind, length, drop)
     params = {"bar": [z, float(c[0]), float(c[1]), w,
                       float(length) if np.isfinite(length) else 0.0, float(ax[0]), float(ax[1])],
               "part": name}
@@ -452,9 +464,10 @@ def _axes(asset: Asset, kind: str) -> tuple[int, int, int]:
 
 def _fold(asset: Asset, scale: float, kind: str, length: float, z: float
           ) -> tuple[float, tuple[float, float] | None]:
-    """The scale a child hangs at over a bar ``length`` m long whose top is ``z`` m high:
-    ``scale``, or less (never below its size range) so that cloth is no longer than the bar
-    and clears the floor; with its size along the bar and down when changed."""
+    """The scale a child hangs at over a bar ``length`` m long, ``z`` m above what it may
+    reach down to (the floor, a seat: :func:`_hang_floor`): ``scale``, or less (never below
+    its size range) so that cloth is no longer than the bar and clears what is below; with its
+    size along the bar and down when changed."""
     ext = np.ptp(asset_geometry(asset).hull, axis=0)
     _, along, vert = _axes(asset, kind)
     lo = asset.size_range[0] / max(asset_geometry(asset).size, 1e-6)
@@ -488,10 +501,86 @@ def _rotation(asset: Asset, kind: str, n: np.ndarray, a: np.ndarray) -> np.ndarr
     return R
 
 
+def _on_parent(st: SolveState, parent) -> list[np.ndarray]:
+    """World hull points of what is placed on ``parent`` (cushions leaning on a sofa's back)."""
+    return [world_points(o, hull_only=True, settled=False) for o in st.scene.objects.values()
+            if o.placed and o.asset is not None and o.id != parent.id
+            and o.support_choice is not None and o.support_choice.owner == parent.id]
+
+
+def _high_pieces(st: SolveState, parent, z: float) -> list[np.ndarray]:
+    """World vertices of the parent's convex pieces, and of what is placed on it, whose tops
+    come within :data:`HIGH` of a bar's top ``z`` (and start below it): what the child hanging
+    over the bar hangs over as well (a sofa's back frame behind its back cushions, the
+    cushions leaning on them in front)."""
+    T = parent.transform()
+    pts = [pc.vertices @ T[:3, :3].T + T[:3, 3] for p in parent.asset.parts for pc in p.piece_arrays]
+    return [v for v in pts + _on_parent(st, parent)
+            if float(v[:, 2].max()) >= z - HIGH and float(v[:, 2].min()) < z]
+
+
+def _hang_floor(st: SolveState, parent, z: float, c: np.ndarray, w: float, ax: np.ndarray,
+                length: float, wrote) -> float:
+    """The height (m) a child hanging over a bar (top ``z``, centre ``c``, ``w`` wide along
+    the unit ``ax``, ``length`` long) may reach down to on the side with the most room: the
+    floor, or the top of what lies below the bar within :data:`NEAR_FACE` of where it hangs
+    on that side (a sofa's seat in front of its back cushions, the cushions on it); a side where a wall stands right behind the bar (a
+    sofa against it) has none. Only the side the writer named (``wrote``), if any."""
+    from shapely.geometry import Point
+
+    floor = st.scene.room.elements["floor"].surface
+    room = filled(floor.polygon)
+    a = np.array([ax[0], ax[1], 0.0])
+    n = np.array([-ax[1], ax[0], 0.0])
+    sides = [n, -n] if wrote is None else [np.asarray(wrote, float)]
+    high = _high_pieces(st, parent, z)
+    half = 0.5 * (length if np.isfinite(length) else w)
+    # the parent's pieces, and what is placed by it (cushions leaning on a sofa's back)
+    T = parent.transform()
+    below = [pc.vertices @ T[:3, :3].T + T[:3, 3] for part in parent.asset.parts
+             for pc in part.piece_arrays]
+    below += _on_parent(st, parent)
+    best = None
+    for side in sides:
+        face = max(_reach(high, c, side, a, -half, half), 0.5 * w)
+        p = np.r_[c + (face + 0.03) * side[:2], 0.0]
+        if not room.contains(Point(floor.to_2d(p[None, :])[0])):
+            continue  # a wall right behind: nothing hangs down there
+        low = 0.0
+        for v in below:
+            top = float(v[:, 2].max())
+            if top >= z - HIGH:
+                continue
+            rel = v[:, :2] - c
+            on, out = rel @ a[:2], rel @ side[:2]
+            if float(on.max()) < -half or float(on.min()) > half:
+                continue
+            if float(out.max()) > face and float(out.min()) < face + NEAR_FACE:
+                low = max(low, top)
+        best = low if best is None else min(best, low)
+    return 0.0 if best is None else best
+
+
+def _reach(pieces: list[np.ndarray], c: np.ndarray, side: np.ndarray, a: np.ndarray,
+           lo: float, hi: float) -> float:
+    """How far (m) beyond the bar's centre ``c`` along ``side`` the ``pieces`` reach within
+    the child's span ``[lo, hi]`` along the bar's axis ``a``; 0 when none does."""
+    best = 0.0
+    for v in pieces:
+        rel = v[:, :2] - c
+        on = rel @ a[:2]
+        if float(on.max()) < lo or float(on.min()) > hi:
+            continue
+        best = max(best, float((rel @ side[:2]).max()))
+    return best
+
+
 def place_over(st: SolveState, oid: str, asset: Asset, scale: float, edge: OverEdge,
                others: list[Edge], body, rng: np.random.Generator):
     """Hang ``oid`` over the bar ``edge`` names (module docstring): ``((R, t, sup, body),
     trials, checks, None)`` as placement's own poses, or ``Fail`` saying what is in the way."""
+    from shapely.geometry import MultiPoint, Polygon
+
     if "thread" in edge.params:
         return _place_threaded(st, oid, asset, scale, edge, others, body)
     parent = st.scene.objects[edge.parent.object]
@@ -525,19 +614,29 @@ def place_over(st: SolveState, oid: str, asset: Asset, scale: float, edge: OverE
     trials, last = 0, "no pose"
     free = max(length - float(np.ptp((hull @ _rotation(asset, kind, n, a).T) @ a)), 0.0)
     shifts = [0.0] + list(rng.uniform(-free / 2, free / 2, 5)) if free > 0 else [0.0]
+    high = _high_pieces(st, parent, z)
+    floor = st.scene.room.elements["floor"].surface
+    room = Polygon(floor.to_3d(np.asarray(filled(floor.polygon).exterior.coords))[:, :2]).buffer(EPS)
     for side in (n, -n):
         R = _rotation(asset, kind, side, a)
         Y = hull @ R.T
-        face = max(float(np.max((V[:, :2] - c) @ side[:2])), 0.5 * w)
+        face0 = max(float(np.max((V[:, :2] - c) @ side[:2])), 0.5 * w)
         for shift in shifts:
+            along = shift - float(np.mean([np.min(Y @ a), np.max(Y @ a)]))
+            # over what of the parent stands as high as the bar on that side too (a sofa's
+            # back frame behind its back cushion)
+            face = max(face0, _reach(high, c, side, a, along + float(np.min(Y @ a)),
+                                     along + float(np.max(Y @ a))))
             for step in STEPS:
                 trials += 1
                 out = face + EPS + step - float(np.min(Y @ side))
-                along = shift - float(np.mean([np.min(Y @ a), np.max(Y @ a)]))
                 t = np.r_[c, 0.0] + out * side + along * a
                 t[2] = z + EPS - float(np.max(Y[:, 2]))
                 if float(np.min(Y[:, 2])) + t[2] < 0:
                     last = f"{oid} would reach the floor"
+                    break
+                if not room.contains(MultiPoint((Y[:, :2] + t[:2]).tolist())):
+                    last = f"{oid} would reach through a wall"  # behind a sofa against it
                     break
                 cand = PlacedObject(oid, asset.category, asset, scale, R, t)
                 checks, why = relations_and_collisions(st, cand, others, body, R, t)

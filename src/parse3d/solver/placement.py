@@ -63,7 +63,7 @@ from .intent import (
 from .leaning import involves_object, lean_fit, lean_samples, lean_slide
 from .ledge import may_lean, may_lean_on_wall, place_leaning, place_on_wall
 from .mounting import mount_region, mounts
-from .nesting import concentric_first, nest_rise, nest_samples, pieces_drop
+from .nesting import concentric_first, in_on_top, nest_rise, nest_samples, pieces_drop
 from .over import OverEdge, over_after, over_edge, over_instance, place_over
 from .regions import apply_region_rules, obstacles
 from .resting import rests_on
@@ -260,6 +260,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             loose = drape[1]
         elif over is not None:
             loose = over[2]
+        elif hang is None and (on_top := in_on_top(st, support_edge, asset, scale)) is not None:
+            placed_edge = on_top  # IN an object with no inside to take it: on its top (nesting.py)
         elif hang is None and names_part(support_edge) \
                 and 0 < overhang(asset, support_edge)[0] < np.inf \
                 and not hangs_beside(st, asset, scale, support_edge):

@@ -18,7 +18,8 @@ from ..measure.checks import world_points
 from ..measure.geometry import asset_geometry, ray_caster
 from ..scene.model import PlacedObject
 
-__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "RAISED", "rest_points", "held_at_rest", "rests_on"]
+__all__ = ["REST_TOL", "REST_MARGIN", "LINE_TOL", "RAISED", "rest_points", "held_at_rest",
+           "rests_on"]
 
 
 #: Metres above the first contact within which a point of a dropped child counts as touching
