@@ -148,6 +148,37 @@ def _settle(scene: Scene) -> None:
     settle(scene)
 
 
+def _replace(scene: Scene, ids: list[str], **kw) -> dict[str, str]:
+    """:func:`parse3d.solver.search.replace_objects` for ``ids``, and for those it finds no new
+    pose for, again against the solved poses of the rest alone.
+
+    The first try sees the rest of the scene partly where it came to rest (a support's top and
+    outline from its settled pose) and partly as solved (its collision body): a stack re-placed on
+    where its base settled rests better. But a base that slid in settling (a coaster 2 cm under a
+    heavy glass) then overlaps its own collision body wherever the child is tried, and the child
+    would fail "unstable after N repairs" without another pose ever being tried. Settling starts
+    again from the solved poses, so a pose that fits those is a real one. The settled poses are
+    put back on the objects that kept their pose (or were placed again exactly where they were);
+    one placed anew has none until settled.
+    """
+    done = replace_objects(scene, ids, **kw)
+    left = [oid for oid in ids if oid not in done and scene.objects[oid].placed]
+    if not left:
+        return done
+    held = {oid: (o, o.settled_rotation, o.settled_position) for oid, o in scene.objects.items()
+            if o.settled_position is not None}
+    for o, _, _ in held.values():
+        o.settled_rotation = o.settled_position = None
+    try:
+        done.update(replace_objects(scene, left, **kw))
+    finally:
+        for oid, (o, R, t) in held.items():
+            now = scene.objects.get(oid)
+            if now is o or (now is not None and _same_pose(_pose_of(o), _pose_of(now))):
+                now.settled_rotation, now.settled_position = R, t
+    return done
+
+
 def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                       config: SolverConfig | None = None,
                       budget: float | None = REPAIR_BUDGET) -> dict[str, int]:
@@ -205,10 +236,9 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                     before[d] = (copy.deepcopy(scene.objects[d]),
                                  copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
         was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
-        done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
-                               config=cfg, new_asset=set(bad) if action == "asset" else None,
-                               stop=None if budget is None else
-                               lambda: time.process_time() - t0 > budget)
+        done = _replace(scene, list(bad), seed=scene.seed, round=rnd, library=library,
+                        config=cfg, new_asset=set(bad) if action == "asset" else None,
+                        stop=None if budget is None else lambda: time.process_time() - t0 > budget)
         over = over or (budget is not None and time.process_time() - t0 > budget)
         # placed again exactly where it was (the only pose its relations leave): not a change
         done = {k: v for k, v in done.items()
