@@ -13,7 +13,8 @@ turned (:func:`parse3d.measure.stability.settled_rest`) with their support relat
 re-placed too, and go back to where they rested if that leaves them unstable: a repair never
 makes a stable object fail. A flat object that fell over onto what held it up and that another
 pose does not make stand keeps the rest it fell into (:func:`keep_rest`), the relations it
-broke recorded relaxed.
+broke recorded relaxed; what that rest then unsettles, or what was placed against the pose it
+left (a book leaning on it), is placed once more against the rest before it can fail.
 """
 
 from __future__ import annotations
@@ -296,8 +297,27 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                     scene.meta.get("resolved", {}).pop(key, None)
         keep_rest(scene, {oid: rests[oid][0] for oid in flat})
         _settle(scene)
-        still = unstable_objects(scene, relations=False)
+        was, still = still, unstable_objects(scene, relations=False)
         touched.update(flat)
+        # what the rests unsettled or left placed against a pose that is gone (a book leaning on
+        # the one that now lies where it fell) is placed once more against them, not failed
+        kept = {d for oid in flat for d in rests[oid][1]}
+        near = {e.child.object for e in scene.pag.relations if e.parent.object in kept}
+        moved = [oid for oid in still if oid not in kept and scene.objects[oid].placed
+                 and (oid not in was or oid in near)]
+        if moved:
+            done = _replace(scene, moved, seed=scene.seed, round=rounds + 1, library=library,
+                            config=cfg)
+            for oid in moved:
+                scene.objects[oid].repairs.append(
+                    Repair(len(scene.objects[oid].repairs) + 1, still[oid], done.get(oid, "pose")))
+            if done:
+                scene.relations = []
+                scene.relations = check_relations(scene)
+                mark_unmet(scene)
+                _settle(scene)
+                still = unstable_objects(scene, relations=False)
+            touched.update(moved)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
         if not o.placed:
