@@ -149,9 +149,10 @@ def _settle(scene: Scene) -> None:
     settle(scene)
 
 
-def _replace(scene: Scene, ids: list[str], **kw) -> dict[str, str]:
-    """:func:`parse3d.solver.search.replace_objects` for ``ids``, and for those it finds no new
-    pose for, again against the solved poses of the rest alone.
+def _replace(scene: Scene, ids: list[str], *, unstable: set[str], **kw) -> dict[str, str]:
+    """:func:`parse3d.solver.search.replace_objects` for ``ids``, and for those of ``unstable``
+    (fallen, tipped, off their support) it finds no new pose for, again against the solved poses
+    of the rest alone (one that stands, re-posed for its relation only, keeps its pose).
 
     The first try sees the rest of the scene partly where it came to rest (a support's top and
     outline from its settled pose) and partly as solved (its collision body): a stack re-placed on
@@ -163,7 +164,8 @@ def _replace(scene: Scene, ids: list[str], **kw) -> dict[str, str]:
     one placed anew has none until settled.
     """
     done = replace_objects(scene, ids, **kw)
-    left = [oid for oid in ids if oid not in done and scene.objects[oid].placed]
+    left = [oid for oid in ids if oid not in done and oid in unstable
+            and scene.objects[oid].placed]
     if not left:
         return done
     held = {oid: (o, o.settled_rotation, o.settled_position) for oid, o in scene.objects.items()
@@ -237,8 +239,8 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                     before[d] = (copy.deepcopy(scene.objects[d]),
                                  copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
         was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
-        done = _replace(scene, list(bad), seed=scene.seed, round=rnd, library=library,
-                        config=cfg, new_asset=set(bad) if action == "asset" else None,
+        done = _replace(scene, list(bad), unstable=set(real), seed=scene.seed, round=rnd,
+                        library=library, config=cfg, new_asset=set(bad) if action == "asset" else None,
                         stop=None if budget is None else lambda: time.process_time() - t0 > budget)
         over = over or (budget is not None and time.process_time() - t0 > budget)
         # placed again exactly where it was (the only pose its relations leave): not a change
@@ -306,8 +308,8 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         moved = [oid for oid in still if oid not in kept and scene.objects[oid].placed
                  and (oid not in was or oid in near)]
         if moved:
-            done = _replace(scene, moved, seed=scene.seed, round=rounds + 1, library=library,
-                            config=cfg)
+            done = _replace(scene, moved, unstable=set(moved), seed=scene.seed,
+                            round=rounds + 1, library=library, config=cfg)
             for oid in moved:
                 scene.objects[oid].repairs.append(
                     Repair(len(scene.objects[oid].repairs) + 1, still[oid], done.get(oid, "pose")))
