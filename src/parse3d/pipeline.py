@@ -241,6 +241,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
         done = _replace(scene, list(bad), unstable=set(real), seed=scene.seed, round=rnd,
                         library=library, config=cfg, new_asset=set(bad) if action == "asset" else None,
+                        same_asset=set(bad) - set(real) if action == "pose" else None,
                         stop=None if budget is None else lambda: time.process_time() - t0 > budget)
         over = over or (budget is not None and time.process_time() - t0 > budget)
         # placed again exactly where it was (the only pose its relations leave): not a change
