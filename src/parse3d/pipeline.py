@@ -13,7 +13,8 @@ turned (:func:`parse3d.measure.stability.settled_rest`) with their support relat
 re-placed too, and go back to where they rested if that leaves them unstable: a repair never
 makes a stable object fail. A flat object that fell over onto what held it up and that another
 pose does not make stand keeps the rest it fell into (:func:`keep_rest`), the relations it
-broke recorded relaxed.
+broke recorded relaxed; what that rest then unsettles, or what was placed against the pose it
+left (a book leaning on it), is placed once more against the rest before it can fail.
 """
 
 from __future__ import annotations
@@ -148,6 +149,39 @@ def _settle(scene: Scene) -> None:
     settle(scene)
 
 
+def _replace(scene: Scene, ids: list[str], *, unstable: set[str], **kw) -> dict[str, str]:
+    """:func:`parse3d.solver.search.replace_objects` for ``ids``, and for those of ``unstable``
+    (fallen, tipped, off their support) it finds no new pose for, again against the solved poses
+    of the rest alone (one that stands, re-posed for its relation only, keeps its pose).
+
+    The first try sees the rest of the scene partly where it came to rest (a support's top and
+    outline from its settled pose) and partly as solved (its collision body): a stack re-placed on
+    where its base settled rests better. But a base that slid in settling (a coaster 2 cm under a
+    heavy glass) then overlaps its own collision body wherever the child is tried, and the child
+    would fail "unstable after N repairs" without another pose ever being tried. Settling starts
+    again from the solved poses, so a pose that fits those is a real one. The settled poses are
+    put back on the objects that kept their pose (or were placed again exactly where they were);
+    one placed anew has none until settled.
+    """
+    done = replace_objects(scene, ids, **kw)
+    left = [oid for oid in ids if oid not in done and oid in unstable
+            and scene.objects[oid].placed]
+    if not left:
+        return done
+    held = {oid: (o, o.settled_rotation, o.settled_position) for oid, o in scene.objects.items()
+            if o.settled_position is not None}
+    for o, _, _ in held.values():
+        o.settled_rotation = o.settled_position = None
+    try:
+        done.update(replace_objects(scene, left, **kw))
+    finally:
+        for oid, (o, R, t) in held.items():
+            now = scene.objects.get(oid)
+            if now is o or (now is not None and _same_pose(_pose_of(o), _pose_of(now))):
+                now.settled_rotation, now.settled_position = R, t
+    return done
+
+
 def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                       config: SolverConfig | None = None,
                       budget: float | None = REPAIR_BUDGET) -> dict[str, int]:
@@ -205,10 +239,10 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                     before[d] = (copy.deepcopy(scene.objects[d]),
                                  copy.deepcopy(scene.meta.get("resolved", {}).get(key)))
         was = {oid: _pose_of(scene.objects[oid]) for oid in bad}
-        done = replace_objects(scene, list(bad), seed=scene.seed, round=rnd, library=library,
-                               config=cfg, new_asset=set(bad) if action == "asset" else None,
-                               stop=None if budget is None else
-                               lambda: time.process_time() - t0 > budget)
+        done = _replace(scene, list(bad), unstable=set(real), seed=scene.seed, round=rnd,
+                        library=library, config=cfg, new_asset=set(bad) if action == "asset" else None,
+                        same_asset=set(bad) - set(real) if action == "pose" else None,
+                        stop=None if budget is None else lambda: time.process_time() - t0 > budget)
         over = over or (budget is not None and time.process_time() - t0 > budget)
         # placed again exactly where it was (the only pose its relations leave): not a change
         done = {k: v for k, v in done.items()
@@ -266,8 +300,27 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                     scene.meta.get("resolved", {}).pop(key, None)
         keep_rest(scene, {oid: rests[oid][0] for oid in flat})
         _settle(scene)
-        still = unstable_objects(scene, relations=False)
+        was, still = still, unstable_objects(scene, relations=False)
         touched.update(flat)
+        # what the rests unsettled or left placed against a pose that is gone (a book leaning on
+        # the one that now lies where it fell) is placed once more against them, not failed
+        kept = {d for oid in flat for d in rests[oid][1]}
+        near = {e.child.object for e in scene.pag.relations if e.parent.object in kept}
+        moved = [oid for oid in still if oid not in kept and scene.objects[oid].placed
+                 and (oid not in was or oid in near)]
+        if moved:
+            done = _replace(scene, moved, unstable=set(moved), seed=scene.seed,
+                            round=rounds + 1, library=library, config=cfg)
+            for oid in moved:
+                scene.objects[oid].repairs.append(
+                    Repair(len(scene.objects[oid].repairs) + 1, still[oid], done.get(oid, "pose")))
+            if done:
+                scene.relations = []
+                scene.relations = check_relations(scene)
+                mark_unmet(scene)
+                _settle(scene)
+                still = unstable_objects(scene, relations=False)
+            touched.update(moved)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first
         o = scene.objects[oid]
         if not o.placed:

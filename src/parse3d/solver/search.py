@@ -1025,14 +1025,16 @@ def _state_of(scene: Scene, leave_out: set[str]) -> SolveState:
 
 def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, library=None,
                     config: SolverConfig | None = None, new_asset: set[str] | None = None,
-                    stop: Callable[[], bool] | None = None) -> dict[str, str]:
+                    stop: Callable[[], bool] | None = None,
+                    same_asset: set[str] | None = None) -> dict[str, str]:
     """Re-place ``ids`` (and what rests on them) in ``scene``, keeping every other object fixed.
 
     Each object draws from ``stage_rng(seed, "object:<id>:repair<round>")``; objects in
     ``new_asset`` skip the asset they had (another pool draw). Objects that cannot be placed
     again keep their old pose; so does every object whose attempts begin once ``stop()`` is
-    true (the repair's time budget is spent). Returns ``{id: "pose" | "asset"}`` for those
-    re-placed.
+    true (the repair's time budget is spent). Objects in ``same_asset`` get only the attempts
+    that keep their asset, and where they find no new pose, what rests on them keeps its pose
+    too. Returns ``{id: "pose" | "asset"}`` for those re-placed.
     """
     from .library import default_library
 
@@ -1050,11 +1052,17 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
     srch.failed = {o.id: o.reason or "" for o in scene.objects.values() if not o.placed}
     done: dict[str, str] = {}
     new_asset = new_asset or set()
+    kept: set[str] = set()  # of same_asset, those that keep their pose
     for oid in todo:
         old = scene.objects[oid]
+        sup = pag.supporter(oid)
+        # what rests on one of same_asset that keeps its pose keeps its own
+        stays = oid not in ids and sup is not None and sup.parent.object in kept
         for attempt in range(4):
-            if stop is not None and stop():
-                continue  # out of time: it keeps its pose (below)
+            if stays or (stop is not None and stop()):
+                continue  # it keeps its pose (below)
+            if attempt >= 2 and oid in (same_asset or ()):
+                continue
             keep = old if oid not in new_asset and attempt < 2 else None
             try:
                 p = srch.try_place(oid, f"object:{oid}:repair{round}:{attempt}", keep=keep)
@@ -1071,6 +1079,8 @@ def replace_objects(scene: Scene, ids: list[str], *, seed: int, round: int, libr
         else:
             st.add(old, cached_body(old.asset, old.scale,
                                     lambda o=old: scaled_mesh(o.asset, o.scale)))
+            if oid in (same_asset or ()) or stays:
+                kept.add(oid)
     # fresh checks for what moved
     known: dict[int, tuple] = {}
     for oid, p in srch.placements.items():
