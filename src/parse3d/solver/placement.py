@@ -251,11 +251,21 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
         scale = lean_fit(st, oid, others, asset, scale)  # side by side along a face
         loose = None
         placed_edge = support_edge
+        late = None
         if heap is not None:
             placed_edge, loose = heap[0], heap[2]
         elif nest is not None and attempt == cfg.asset_attempts - 1 and reasons:
             # the stack as written found no pose: nested in the one below instead
             placed_edge, loose = nest, nest_reason(support_edge, reasons)
+        elif attempt == cfg.asset_attempts - 1 and reasons and (late := beside(
+                pag, st.scene, support_edge, lambda a, ref: True)) is not None:
+            # the stack on one of its kind as written found no pose (no room on it, nor
+            # across it and its neighbours): beside it on what holds it, a heap
+            placed_edge = late[0]
+            loose = (f"{oid} found no pose ON {support_edge.parent} as written "
+                     f"({reasons[-1].split('; ')[0]}), so it rests beside "
+                     f"{support_edge.parent.object}, {late[0].relation} {late[0].parent} "
+                     f"(write {late[0].relation} {oid} -> {late[0].parent}, or fewer on the stack)")
         elif drape is not None:
             loose = drape[1]
         elif over is not None:
@@ -279,7 +289,8 @@ def place_object(st: SolveState, oid: str, rng: np.random.Generator, cfg: Solver
             pose, trials, checks, under = _place_asset(st, oid, asset, scale,
                                                        hang or placed_edge,
                                                        [*placed, *others[len(placed):],
-                                                        *(row[1:] if row else ())], rng,
+                                                        *(row[1:] if row else ()),
+                                                        *((late[1],) if late else ())], rng,
                                                        cfg, proposal if attempt == 0 else None)
         except Fail as f:
             reasons.append(str(f))
