@@ -233,14 +233,17 @@ def test_centroid_and_points_follow_the_pose(room, assets):
 
 # ------------------------------------------------------------------ semantics (issue class 8)
 def test_along_is_the_strip_beside_the_face(room, assets):
-    """ALONG: 0 <= (x_A - x_B) . n_side - h_B <= width and |(x_A - x_B) . n_perp| <= e / 2,
-    with h_B the distance from the parent's centroid to its side face, e its extent along it."""
+    """ALONG: 0 <= (x_A - x_B) . n_side - h_B <= width + h_A and |(x_A - x_B) . n_perp| <= e / 2,
+    with h_B the distance from the parent's centroid to its side face, h_A the child's from its
+    centroid to its near face (the gap between the faces at most ``width``), e the parent's
+    extent along the face."""
     desk = assets["desk"]
     box = assets["storage_box"]
     front = float(desk.bounds[1, 1]) - float(desk.bounds.mean(axis=0)[1])  # h_B, side front
     half = 0.5 * float(desk.bounds[1, 0] - desk.bounds[0, 0])  # e / 2
     cy = 1.5 + float(desk.bounds.mean(axis=0)[1])  # the desk's centroid y
     by = float(box.bounds.mean(axis=0)[1])  # the box's centroid offset from its origin
+    hA = by - float(box.bounds[0, 1])  # the box's near face, behind its centroid
 
     def at(out, lateral=0.0):
         room.put("box", "storage_box", (2.0 + lateral, cy + front + out - by, GAP))
@@ -250,7 +253,8 @@ def test_along_is_the_strip_beside_the_face(room, assets):
     assert c.holds, c.detail
     assert c.residual["offset"] == pytest.approx(0.25, abs=1e-4)
     assert at(0.49).holds and at(0.01).holds
-    assert not at(0.55).holds  # beyond the strip
+    assert at(0.5 + hA - 0.01).holds  # its near face within the width of the desk's
+    assert not at(0.5 + hA + 0.05).holds  # beyond: the gap wider than the width
     assert not at(-0.2).holds  # over the desk itself: not beside its face
     assert at(0.25, lateral=half - 0.02).holds
     c = at(0.25, lateral=half + 0.05)  # past the end of the face
@@ -260,7 +264,8 @@ def test_along_is_the_strip_beside_the_face(room, assets):
     room.put("box", "storage_box", (2.0, 0.3 - by, GAP))
     c = room.check("box", "ALONG", "wall_0", side="front", width=0.5)
     assert c.holds and c.residual["offset"] == pytest.approx(0.3, abs=1e-6)
-    assert not room.check("box", "ALONG", "wall_0", side="front", width=0.2).holds
+    assert not room.check("box", "ALONG", "wall_0", side="front", width=0.25 - hA).holds
+    assert room.check("box", "ALONG", "wall_0", side="front", width=0.35 - hA).holds
 
 
 def test_in_an_open_shelf_needs_no_enclosure(room, assets):

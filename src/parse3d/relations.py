@@ -331,8 +331,10 @@ _RELATIONS = (
             _FRAME,
         ),
         "is lined up along",
-        "0 <= (x_A - x_B) . n_side - h_B <= width and |(x_A - x_B) . n_side^perp| <= e/2: the strip "
-        "beside the parent's side face (h_B from the centroid to that face, e the face's extent)",
+        "0 <= (x_A - x_B) . n_side - h_B <= width + h_A and |(x_A - x_B) . n_side^perp| <= "
+        "max(e, e_A)/2: beside the parent's side face, the gap between the faces at most width "
+        "(h_B from the parent's centroid to that face, h_A from the child's centroid to its near "
+        "face, e the face's extent, e_A the child's extent along it)",
         "along",
     ),
     Relation(

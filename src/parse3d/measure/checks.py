@@ -521,10 +521,12 @@ def _check_side_of(ctx: CheckContext) -> Check:
 
 @check_rule("ALONG")
 def _check_along(ctx: CheckContext) -> Check:
-    """The child's centroid lies in the strip beside the parent's ``side`` face: from the face
-    outwards up to ``width`` along n_side, and within the parent's extent along the face,
+    """The child's centroid lies beside the parent's ``side`` face, at most ``width`` out from
+    it or with the gap between that face and the child's near face at most ``width`` (a dryer
+    5 cm along a washer), and within the parent's extent along the face,
     ``|(x_A - x_B) . n_side^perp| <= e / 2`` (both horizontal; e the parent's extent along
-    n_side^perp)."""
+    n_side^perp), or with the face's middle within the child's own extent along it (a bed
+    beside a nightstand)."""
     xA, xB, n, proj = _side_offset(ctx)
     pts = _parent_outline(ctx, xA)
     hB = float(np.max((pts - xB) @ n))  # the face: the parent's extreme along n_side
@@ -535,10 +537,15 @@ def _check_along(ctx: CheckContext) -> Check:
     lat = float((xA - xB) @ perp) - mid
     w = ctx.param("width")
     out = proj - hB
-    ok = -1e-3 <= out <= w + 1e-3 and abs(lat) <= half + 1e-3
+    # the child's depth from its centroid toward the face: its near face within ``width``;
+    # a child longer along the face than the parent: the face's middle within its length
+    rel = xA - world_points(ctx.child, hull_only=True, settled=ctx.settled)
+    hA = max(float(np.max(rel @ n)), 0.0)
+    span = 0.5 * float(np.max(rel @ perp) - np.min(rel @ perp))
+    ok = -1e-3 <= out <= w + hA + 1e-3 and abs(lat) <= max(half, span) + 1e-3
     return Check(ok, {"offset": round(out, 5), "lateral": round(lat, 5)},
-                 f"{out:.3f} m out from the {ctx.param('side')} face (strip 0-{w:.3f} m), "
-                 f"{abs(lat):.3f} m along it (half extent {half:.3f} m)")
+                 f"{out:.3f} m out from the {ctx.param('side')} face (strip 0-{w:.3f} m, "
+                 f"gap {out - hA:.3f} m), {abs(lat):.3f} m along it (half extent {half:.3f} m)")
 
 
 def _parent_outline(ctx: CheckContext, near: np.ndarray) -> np.ndarray:

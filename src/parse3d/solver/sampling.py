@@ -260,7 +260,9 @@ def leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndar
     """Samples reordered so that those leaving room on the support for the objects still to be
     placed beside this one (``SIDE_OF`` / ``ALONG`` it, on the same support) come first: a
     stove with a counter to its right is not pushed into the corner. The room wanted on a side
-    is the smallest size of the dependent's categories; the order is otherwise kept."""
+    is the smallest size of the dependent's categories; for a unit against a wall with others
+    ``ALONG`` it on the floor (a row), where no sample leaves it all, those leaving the most
+    come first; the order is otherwise kept."""
     pag, s = st.pag, sup.surface
     owner = sup.owner if sup.owner != "room" else None
 
@@ -294,21 +296,32 @@ def leave_room(st: SolveState, oid: str, sup: Support, R: np.ndarray, F: np.ndar
         return max(min(sizes, default=0.0), hung_size(pag, kid)) + max(more, default=0.0)
 
     wants: list[tuple[np.ndarray, float]] = []
+    strips = False  # an ALONG child: it needs the room right beside the face
     for e in beside(oid):
         d = side_vector(st, e, R)
         g = np.array([d @ s.u, d @ s.v])
         if np.linalg.norm(g) < 1e-6:
             continue
         wants.append((g / np.linalg.norm(g), need(e.child.object, frozenset({oid}))))
+        strips |= e.relation == "ALONG"
     if not wants:
         return samples
     edge = np.asarray(region0.exterior.coords) if hasattr(region0, "exterior") else \
         np.vstack([np.asarray(p.exterior.coords) for p in region0.geoms])
-    ok = np.ones(len(samples), bool)
+    short = np.zeros(len(samples))
     for g, need in wants:
         room = float(np.max(edge @ g)) - (samples @ g + float(np.max(F @ g)))
-        ok &= room >= need
-    return np.vstack([samples[ok], samples[~ok]])
+        short += np.maximum(need - room, 0.0)
+    # a unit against a wall with others ALONG it: a row along that wall
+    row = strips and owner is None and any(
+        x.relation == "AGAINST" and x.parent.is_room_element for x in pag.edges_of(oid))
+    if not row:  # those leaving the room first
+        ok = short <= 0
+        return np.vstack([samples[ok], samples[~ok]])
+    # units ALONG one another against a wall: those leaving all the room first; where none does
+    # (the sizes are the categories' largest dimensions: a locker's height), those leaving the
+    # most (a row of units along a wall starts at one end)
+    return samples[np.argsort(short, kind="stable")]
 
 
 def base_supported(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s,

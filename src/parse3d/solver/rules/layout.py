@@ -19,6 +19,7 @@ from ...measure.geometry import side_frame
 from ...pag.model import Edge
 from ...relations import OBJECT
 from ..config import Fail
+from ..geometry import asset_geometry
 from ..state import SolveState, plane_coords
 from .base import (
     RULES,
@@ -33,7 +34,7 @@ from .base import (
 
 __all__ = ["Distance", "Side", "Toward", "side_vector", "nearest", "relaxed_to_nearest",
            "SQUARE_SHARE", "LAYOUT_MARGIN", "MARGIN_SHARE", "SIDE_MARGIN", "MARGIN_KEEP",
-           "layout_margin", "with_margin",
+           "layout_margin", "with_margin", "near_depth",
            "SQUARE_MIN_TOLERANCE", "NEAREST_BAND"]
 
 _SIDE_DIRS = {"front": (0.0, 1.0, 0.0), "back": (0.0, -1.0, 0.0),
@@ -136,7 +137,10 @@ class Side(LayoutRule):
         """SIDE_OF: the half-plane beyond the parent's centroid on ``side`` (parent frame, or the
         camera's with ``frame: camera``).
         ALONG: the strip beside the parent's ``side`` face, from the face outwards up to ``width``,
-        within the parent's extent along that face (as :mod:`parse3d.measure` checks it)."""
+        within the parent's extent along that face (as :mod:`parse3d.measure` checks it); where
+        it leaves nothing free, out to ``width`` plus the child's depth toward the face
+        (:func:`near_depth`): its near face within ``width`` of the parent's, and where the
+        child is the longer along the face, the face's middle within its length."""
         st, s, rel = ctx.st, ctx.sup.surface, e.relation
         xB, frame, hull = parent_frame(st, e.parent.object)
         cB = plane_coords(s, xB[None])[0] - ctx.off
@@ -166,25 +170,48 @@ class Side(LayoutRule):
             hB, w = max(hB, 0.0), e.param("width")
             gp = np.array([g[1], -g[0]])
             along = None if hull is None else plane_coords(s, hull) @ gp - (cB + ctx.off) @ gp
+            reach, span = w, 0.0
 
             def within(m: float) -> BaseGeometry:
                 # the strip's far edge and its ends come in by m (its near edge is the face:
                 # settling does not push a child into its parent)
-                strip = RG.strip(cB, g, hB, hB + w - m)
+                strip = RG.strip(cB, g, hB, hB + reach - m)
                 if along is None:
                     return strip
                 lo, hi = float(along.min()), float(along.max())
-                m = min(m, 0.25 * (hi - lo))
-                return RG.clip(strip, RG.strip(cB, gp, lo + m, hi - m))
+                mid, half = 0.5 * (lo + hi), max(0.5 * (hi - lo), span)
+                m = min(m, 0.5 * half)
+                return RG.clip(strip, RG.strip(cB, gp, mid - half + m, mid + half - m))
             margin = layout_margin(w)
         clip = within(0.0)
         new = RG.clip(region, clip)
+        if rel == "ALONG" and (new.is_empty or new.area < 1e-10):
+            # a strip narrower than the child's own depth toward the face (a dryer 5 cm along
+            # a washer): the width is the gap between the faces, the child's near face within
+            # it; a child longer along the face than the parent (a bed beside a nightstand):
+            # the face's middle within the child's length (as the check measures them)
+            gp3 = np.array([-nw[1], nw[0], 0.0])
+            reach, span = w + near_depth(ctx, nw), 0.5 * (near_depth(ctx, gp3)
+                                                          + near_depth(ctx, -gp3))
+            clip = within(0.0)
+            new = RG.clip(region, clip)
         if new.is_empty or new.area < 1e-10:
             if relaxed_to_nearest(e):
                 return closest(region, clip)
             raise emptied(e, ctx.sup, f"the {side} of {e.parent.object} is taken or outside "
                           f"{ctx.sup.name}", f" side {side}")
         return with_margin(new, lambda k: RG.clip(region, within(k * margin)))
+
+
+def near_depth(ctx: RegionContext, n: np.ndarray) -> float:
+    """How far the posed child reaches from its centroid (bounding-box centre) against the
+    horizontal direction ``n``: toward a parent it stands beside on that side (m)."""
+    n = np.array([n[0], n[1], 0.0])
+    n /= max(float(np.linalg.norm(n)), 1e-9)
+    geo = asset_geometry(ctx.asset)
+    pts = (geo.hull * ctx.scale) @ ctx.R.T
+    c = (geo.center * ctx.scale) @ ctx.R.T
+    return max(float(np.max((c - pts) @ n)), 0.0)
 
 
 @register
