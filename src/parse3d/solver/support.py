@@ -12,6 +12,7 @@ from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface, hull_area_2d
 from ..measure.checks import board_parts, on_board
+from ..measure.geometry import part_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
@@ -46,6 +47,9 @@ class Support:
     ring : bool
         The surface is a part's top that is a ring round an opening (a tub's rim; ``spans``,
         ``holes`` the opening): what is too big for the ring rests across the opening.
+    reaches : tuple of str
+        The parts of the owner ``region`` was carried up to (:func:`reach_to_parts`: a
+        mattress's top to the headboard a pillow on it is against); empty when none.
     """
 
     surface: Surface
@@ -55,6 +59,7 @@ class Support:
     holes: list = field(default_factory=list)
     spans: bool = False
     ring: bool = False
+    reaches: tuple = ()
 
     @property
     def owner(self) -> str:
@@ -441,7 +446,8 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 # its lips; the lip's top after
                 f = floor.transformed(T)
                 out.append(Support(f, SupportChoice(parent.id, p.name, lb), f.polygon))
-            out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
+            sup = Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes)
+            out.append(reach_to_parts(st, edge, parent, p, sup) if rel == "ON" else sup)
             if rel == "ON" and lb == "top" and not like and (ring := ring_top(p, T, s)) is not None \
                     and (deep := _deep_holes(s, _holes(ring), parent, (p.name, "ring"))):
                 # a ring round an opening (a tub's rim): across it, after the rest (bars.py);
@@ -470,6 +476,58 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         out += [o for o in _support_candidates(st, whole)
                 if (o.choice.part, o.surface.label) not in named]
     return out + rings
+
+
+#: How far (m) a top may end short of a part of its object rising beside it and still be
+#: carried up to it for a child against that part: a mattress's rounded edge and the seam
+#: between it and its headboard, a worktop's edge short of its upstand.
+REACH = 0.08
+
+
+def reach_to_parts(st: SolveState, edge: Edge, parent, part, sup: Support) -> Support:
+    """``sup`` (the top of ``part`` of ``parent``) with its region carried up to the face of
+    another part of ``parent`` that the child is ``AGAINST`` (a pillow ON a mattress AGAINST
+    the bed's headboard), when the region ends at most :data:`REACH` short of that face:
+    the flat of a soft top stops short of its rounded edge and the seam before the part, but
+    a child resting against the part bridges them, held by the top under its centre of mass
+    and stopped by the part. 1 cm past the face, so that the support's margin does not keep
+    the child off it (the ``AGAINST`` line stops it at the face). ``sup`` unchanged when no
+    such contact is written or the region is not one convex polygon."""
+    s, region = sup.surface, sup.region
+    if not isinstance(region, Polygon) or region.is_empty \
+            or region.area < 0.98 * region.convex_hull.area:
+        return sup
+    T = parent.transform()
+    M = T[:3, :3]
+    out, reached = region, []
+    for e in st.pag.edges_of(edge.child.object):
+        if e.relation != "AGAINST" or e.parent.object != parent.id or e.parent.part is None \
+                or e.parent.is_room_element:
+            continue
+        label = e.parent.surface or e.spec.parent_surface
+        for q in parts_for(parent.asset, e.parent):
+            if q.name == part.name or label not in q.surfaces:
+                continue
+            sB = q.surfaces[label].transformed(T)
+            g = np.array([s.u @ sB.normal, s.v @ sB.normal])
+            k = float(np.linalg.norm(g))
+            if k < 0.5 or abs(float(sB.normal @ s.normal)) > 0.5:
+                continue  # not a face standing up from the top
+            P = part_points([q]) @ M.T + T[:3, 3]
+            if float((P @ s.normal).max() - s.origin @ s.normal) <= 1e-3:
+                continue  # not rising above the top
+            g, c0 = g / k, float((sB.origin - s.origin) @ sB.normal) / k
+            xy = np.asarray(region.exterior.coords)
+            short = float((xy @ g).min()) - c0  # from the region to the face, along -g
+            if not 0.0 < short <= REACH:
+                continue
+            shift = -(short + 0.01) * g
+            out = shapely.union(out, shapely.convex_hull(shapely.union(
+                out, shapely.affinity.translate(out, *shift))))
+            reached.append(q.name)
+    if not reached:
+        return sup
+    return replace(sup, region=out, reaches=tuple(sorted(set(reached))))
 
 
 def _inside_of(parent, parts, T) -> list[Support]:
