@@ -16,7 +16,7 @@ from ..measure.geometry import part_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
-from .config import Fail
+from .config import Fail, SolverConfig
 from .geometry import ray_caster
 from .state import SolveState, parts_for, plane_coords
 
@@ -478,56 +478,71 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
     return out + rings
 
 
-#: How far (m) a top may end short of a part of its object rising beside it and still be
-#: carried up to it for a child against that part: a mattress's rounded edge and the seam
-#: between it and its headboard, a worktop's edge short of its upstand.
+#: How far (m) a top may end short of the face a child on it is against and still be carried
+#: up to it: a mattress's rounded edge and the seam between it and its headboard, a
+#: countertop's margin at the wall it stands against.
 REACH = 0.08
 
 
 def reach_to_parts(st: SolveState, edge: Edge, parent, part, sup: Support) -> Support:
-    """``sup`` (the top of ``part`` of ``parent``) with its region carried up to the face of
-    another part of ``parent`` that the child is ``AGAINST`` (a pillow ON a mattress AGAINST
-    the bed's headboard), when the region ends at most :data:`REACH` short of that face:
-    the flat of a soft top stops short of its rounded edge and the seam before the part, but
-    a child resting against the part bridges them, held by the top under its centre of mass
-    and stopped by the part. 1 cm past the face, so that the support's margin does not keep
-    the child off it (the ``AGAINST`` line stops it at the face). ``sup`` unchanged when no
+    """``sup`` (the top of ``part`` of ``parent``) with its region carried up to a face the
+    child is ``AGAINST`` that stands up beside the top, when the region ends at most
+    :data:`REACH` short of it: another part of ``parent`` (a pillow ON a mattress AGAINST the
+    bed's headboard: the flat of a soft top stops short of its rounded edge and the seam
+    before the headboard) or a room wall (a microwave ON a countertop AGAINST the wall the
+    counter stands against: an object's top keeps a margin from its edge that would keep the
+    child off the wall). The child bridges the gap, held by the top under its centre of mass
+    and stopped by the face. Past the face by the support's default margin, which the region
+    is inset by: then up to the face, not into it (the ``AGAINST`` line stops the child at it). ``sup`` unchanged when no
     such contact is written or the region is not one convex polygon."""
     s, region = sup.surface, sup.region
     if not isinstance(region, Polygon) or region.is_empty \
             or region.area < 0.98 * region.convex_hull.area:
         return sup
-    T = parent.transform()
-    M = T[:3, :3]
     out, reached = region, []
-    for e in st.pag.edges_of(edge.child.object):
-        if e.relation != "AGAINST" or e.parent.object != parent.id or e.parent.part is None \
-                or e.parent.is_room_element:
+    for name, sB in _faces_against(st, edge, parent, part, s):
+        g = np.array([s.u @ sB.normal, s.v @ sB.normal])
+        k = float(np.linalg.norm(g))
+        if k < 0.5 or abs(float(sB.normal @ s.normal)) > 0.5:
+            continue  # not a face standing up from the top
+        g, c0 = g / k, float((sB.origin - s.origin) @ sB.normal) / k
+        xy = np.asarray(region.exterior.coords)
+        short = float((xy @ g).min()) - c0  # from the region to the face, along -g
+        if not 0.0 < short <= REACH:
             continue
-        label = e.parent.surface or e.spec.parent_surface
-        for q in parts_for(parent.asset, e.parent):
-            if q.name == part.name or label not in q.surfaces:
-                continue
-            sB = q.surfaces[label].transformed(T)
-            g = np.array([s.u @ sB.normal, s.v @ sB.normal])
-            k = float(np.linalg.norm(g))
-            if k < 0.5 or abs(float(sB.normal @ s.normal)) > 0.5:
-                continue  # not a face standing up from the top
-            P = part_points([q]) @ M.T + T[:3, 3]
-            if float((P @ s.normal).max() - s.origin @ s.normal) <= 1e-3:
-                continue  # not rising above the top
-            g, c0 = g / k, float((sB.origin - s.origin) @ sB.normal) / k
-            xy = np.asarray(region.exterior.coords)
-            short = float((xy @ g).min()) - c0  # from the region to the face, along -g
-            if not 0.0 < short <= REACH:
-                continue
-            shift = -(short + 0.01) * g
-            out = shapely.union(out, shapely.convex_hull(shapely.union(
-                out, shapely.affinity.translate(out, *shift))))
-            reached.append(q.name)
+        shift = -(short + SolverConfig.margin) * g
+        out = shapely.union(out, shapely.convex_hull(shapely.union(
+            out, shapely.affinity.translate(out, *shift))))
+        reached.append(name)
     if not reached:
         return sup
     return replace(sup, region=out, reaches=tuple(sorted(set(reached))))
+
+
+def _faces_against(st: SolveState, edge: Edge, parent, part, s: Surface):
+    """``(name, world surface)`` of the faces the child of ``edge`` is ``AGAINST`` that rise
+    above the top ``s`` of ``part`` of ``parent``: the named parts of ``parent`` but ``part``,
+    and room walls."""
+    T = parent.transform()
+    for e in st.pag.edges_of(edge.child.object):
+        if e.relation != "AGAINST":
+            continue
+        ref = e.parent
+        if ref.is_room_element:
+            el = st.scene.room.elements.get(ref.object)
+            if el is not None and ref.object.startswith("wall_"):
+                yield ref.object, el.surface
+            continue
+        if ref.object != parent.id or ref.part is None:
+            continue
+        label = ref.surface or e.spec.parent_surface
+        for q in parts_for(parent.asset, ref):
+            if q.name == part.name or label not in q.surfaces:
+                continue
+            P = part_points([q]) @ T[:3, :3].T + T[:3, 3]
+            if float((P @ s.normal).max() - s.origin @ s.normal) <= 1e-3:
+                continue  # not rising above the top
+            yield q.name, q.surfaces[label].transformed(T)
 
 
 def _inside_of(parent, parts, T) -> list[Support]:
