@@ -351,7 +351,11 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         raise Fail(f"parent {ref.object!r} was not placed")
     key = ("supports", edge.relation, ref.object, ref.part, ref.index, ref.surface,
            edge.spec.parent_surface)
-    return list(st.memo(owner, key, lambda: _support_candidates(st, edge)))
+    sups = list(st.memo(owner, key, lambda: _support_candidates(st, edge)))
+    if edge.relation != "ON" or owner == "room":
+        return sups
+    # per child, after the kept surfaces: carried up to the faces this child is against
+    return [reach_to_parts(st, edge, st.scene.objects[owner], sup) for sup in sups]
 
 
 
@@ -446,8 +450,7 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
                 # its lips; the lip's top after
                 f = floor.transformed(T)
                 out.append(Support(f, SupportChoice(parent.id, p.name, lb), f.polygon))
-            sup = Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes)
-            out.append(reach_to_parts(st, edge, parent, p, sup) if rel == "ON" else sup)
+            out.append(Support(s, SupportChoice(parent.id, p.name, lb), region, holes=holes))
             if rel == "ON" and lb == "top" and not like and (ring := ring_top(p, T, s)) is not None \
                     and (deep := _deep_holes(s, _holes(ring), parent, (p.name, "ring"))):
                 # a ring round an opening (a tub's rim): across it, after the rest (bars.py);
@@ -484,8 +487,8 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
 REACH = 0.08
 
 
-def reach_to_parts(st: SolveState, edge: Edge, parent, part, sup: Support) -> Support:
-    """``sup`` (the top of ``part`` of ``parent``) with its region carried up to a face the
+def reach_to_parts(st: SolveState, edge: Edge, parent, sup: Support) -> Support:
+    """``sup`` (the top of one part of ``parent``) with its region carried up to a face the
     child is ``AGAINST`` that stands up beside the top, when the region ends at most
     :data:`REACH` short of it: another part of ``parent`` (a pillow ON a mattress AGAINST the
     bed's headboard: the flat of a soft top stops short of its rounded edge and the seam
@@ -493,10 +496,12 @@ def reach_to_parts(st: SolveState, edge: Edge, parent, part, sup: Support) -> Su
     counter stands against: an object's top keeps a margin from its edge that would keep the
     child off the wall). The child bridges the gap, held by the top under its centre of mass
     and stopped by the face. Past the face by the support's default margin, which the region
-    is inset by: then up to the face, not into it (the ``AGAINST`` line stops the child at it). ``sup`` unchanged when no
-    such contact is written or the region is not one convex polygon."""
+    is inset by: then up to the face, not into it (the ``AGAINST`` line stops the child at
+    it). Asked per child (the kept surfaces are the parent's). ``sup`` unchanged when no such
+    contact is written or the region is not one convex polygon."""
     s, region = sup.surface, sup.region
-    if not isinstance(region, Polygon) or region.is_empty \
+    part = next((p for p in parent.asset.parts if p.name == sup.part), None)
+    if part is None or sup.spans or not isinstance(region, Polygon) or region.is_empty \
             or region.area < 0.98 * region.convex_hull.area:
         return sup
     out, reached = region, []
