@@ -223,7 +223,8 @@ def _base_region(st: SolveState, sup: Support):
     owner = st.scene.objects.get(sup.owner)
     if owner is None:
         return sup.region.buffer(-3e-3, join_style="mitre")
-    return st.memo(sup.owner, ("lean_base", plane_key(sup.surface), sup.choice, sup.spans),
+    return st.memo(sup.owner, ("lean_base", plane_key(sup.surface), sup.choice, sup.spans,
+                               sup.reaches),
                    lambda: _clear_of_parts(sup, owner))
 
 

@@ -555,8 +555,9 @@ def _turned(st: SolveState, oid: str, asset: Asset, scale: float, hull: np.ndarr
     # room elements are bounded by walls in the collision world; object supports keep a margin
     # (they only keep a hair's breadth from the corners, less than the contact gap EPS)
     walls = walled(st, sup)  # a channel's floor (rows.py)
-    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, plane_key(s),
-                                  cfg.margin, walls), lambda: inset(sup, cfg.margin, walls))
+    region0 = st.memo(sup.owner, ("region0", rel, sup.choice, sup.spans, sup.reaches,
+                                  plane_key(s), cfg.margin, walls),
+                      lambda: inset(sup, cfg.margin, walls))
     # the support's owner and everything holding it up (a cabinet around a stack of plates)
     exclude = support_chain(st.pag, sup.owner) if sup.owner != "room" else set()
     F = RG.convex_outline(np.column_stack([Y @ s.u, Y @ s.v]),

@@ -12,10 +12,11 @@ from shapely.geometry.base import BaseGeometry
 
 from ..geometry.surfaces import Surface, hull_area_2d
 from ..measure.checks import board_parts, on_board
+from ..measure.geometry import part_points
 from ..pag.model import Edge
 from ..relations import SURFACES
 from ..scene.model import SupportChoice
-from .config import Fail
+from .config import Fail, SolverConfig
 from .geometry import ray_caster
 from .state import SolveState, parts_for, plane_coords
 
@@ -46,6 +47,9 @@ class Support:
     ring : bool
         The surface is a part's top that is a ring round an opening (a tub's rim; ``spans``,
         ``holes`` the opening): what is too big for the ring rests across the opening.
+    reaches : tuple of str
+        The parts of the owner ``region`` was carried up to (:func:`reach_to_parts`: a
+        mattress's top to the headboard a pillow on it is against); empty when none.
     """
 
     surface: Surface
@@ -55,6 +59,7 @@ class Support:
     holes: list = field(default_factory=list)
     spans: bool = False
     ring: bool = False
+    reaches: tuple = ()
 
     @property
     def owner(self) -> str:
@@ -346,7 +351,11 @@ def support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         raise Fail(f"parent {ref.object!r} was not placed")
     key = ("supports", edge.relation, ref.object, ref.part, ref.index, ref.surface,
            edge.spec.parent_surface)
-    return list(st.memo(owner, key, lambda: _support_candidates(st, edge)))
+    sups = list(st.memo(owner, key, lambda: _support_candidates(st, edge)))
+    if edge.relation != "ON" or owner == "room":
+        return sups
+    # per child, after the kept surfaces: carried up to the faces this child is against
+    return [reach_to_parts(st, edge, st.scene.objects[owner], sup) for sup in sups]
 
 
 
@@ -470,6 +479,75 @@ def _support_candidates(st: SolveState, edge: Edge) -> list[Support]:
         out += [o for o in _support_candidates(st, whole)
                 if (o.choice.part, o.surface.label) not in named]
     return out + rings
+
+
+#: How far (m) a top may end short of the face a child on it is against and still be carried
+#: up to it: a mattress's rounded edge and the seam between it and its headboard, a
+#: countertop's margin at the wall it stands against.
+REACH = 0.08
+
+
+def reach_to_parts(st: SolveState, edge: Edge, parent, sup: Support) -> Support:
+    """``sup`` (the top of one part of ``parent``) with its region carried up to a face the
+    child is ``AGAINST`` that stands up beside the top, when the region ends at most
+    :data:`REACH` short of it: another part of ``parent`` (a pillow ON a mattress AGAINST the
+    bed's headboard: the flat of a soft top stops short of its rounded edge and the seam
+    before the headboard) or a room wall (a microwave ON a countertop AGAINST the wall the
+    counter stands against: an object's top keeps a margin from its edge that would keep the
+    child off the wall). The child bridges the gap, held by the top under its centre of mass
+    and stopped by the face. Past the face by the support's default margin, which the region
+    is inset by: then up to the face, not into it (the ``AGAINST`` line stops the child at
+    it). Asked per child (the kept surfaces are the parent's). ``sup`` unchanged when no such
+    contact is written or the region is not one convex polygon."""
+    s, region = sup.surface, sup.region
+    part = next((p for p in parent.asset.parts if p.name == sup.part), None)
+    if part is None or sup.spans or not isinstance(region, Polygon) or region.is_empty \
+            or region.area < 0.98 * region.convex_hull.area:
+        return sup
+    out, reached = region, []
+    for name, sB in _faces_against(st, edge, parent, part, s):
+        g = np.array([s.u @ sB.normal, s.v @ sB.normal])
+        k = float(np.linalg.norm(g))
+        if k < 0.5 or abs(float(sB.normal @ s.normal)) > 0.5:
+            continue  # not a face standing up from the top
+        g, c0 = g / k, float((sB.origin - s.origin) @ sB.normal) / k
+        xy = np.asarray(region.exterior.coords)
+        short = float((xy @ g).min()) - c0  # from the region to the face, along -g
+        if not 0.0 < short <= REACH:
+            continue
+        shift = -(short + SolverConfig.margin) * g
+        out = shapely.union(out, shapely.convex_hull(shapely.union(
+            out, shapely.affinity.translate(out, *shift))))
+        reached.append(name)
+    if not reached:
+        return sup
+    return replace(sup, region=out, reaches=tuple(sorted(set(reached))))
+
+
+def _faces_against(st: SolveState, edge: Edge, parent, part, s: Surface):
+    """``(name, world surface)`` of the faces the child of ``edge`` is ``AGAINST`` that rise
+    above the top ``s`` of ``part`` of ``parent``: the named parts of ``parent`` but ``part``,
+    and room walls."""
+    T = parent.transform()
+    for e in st.pag.edges_of(edge.child.object):
+        if e.relation != "AGAINST":
+            continue
+        ref = e.parent
+        if ref.is_room_element:
+            el = st.scene.room.elements.get(ref.object)
+            if el is not None and ref.object.startswith("wall_"):
+                yield ref.object, el.surface
+            continue
+        if ref.object != parent.id or ref.part is None:
+            continue
+        label = ref.surface or e.spec.parent_surface
+        for q in parts_for(parent.asset, ref):
+            if q.name == part.name or label not in q.surfaces:
+                continue
+            P = part_points([q]) @ T[:3, :3].T + T[:3, 3]
+            if float((P @ s.normal).max() - s.origin @ s.normal) <= 1e-3:
+                continue  # not rising above the top
+            yield q.name, q.surfaces[label].transformed(T)
 
 
 def _inside_of(parent, parts, T) -> list[Support]:
