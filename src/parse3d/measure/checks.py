@@ -304,71 +304,6 @@ def _plane_dist(pts: np.ndarray, s: Surface) -> np.ndarray:
     return (pts - s.origin) @ s.normal
 
 
-#: Least share of the child's narrow width that what holds it across like parts must span.
-ACROSS_SPAN = 0.3
-
-
-def _over_outline(ctx: CheckContext, parts: list, s: Surface, gap: float) -> float:
-    """The least height above ``s`` of the child's convex pieces (of ``parts``) over the
-    outlines of the parent's named parts at that level, when they touch them (within the
-    contact tolerances) while other pieces reach below their plane past their edges, and
-    what they touch holds the child: a hull spanning ``ACROSS_SPAN`` of the child's narrow
-    width every way, its centre of mass inside (a keyboard across an X-stand's arms, its
-    rubber feet hanging beside them; not balanced on one arm). ``gap`` otherwise (a plate
-    sunk in a plate, nothing over the outlines, or a child held higher up)."""
-    import shapely
-
-    child, settled = ctx.child, ctx.settled
-    Tp = ctx.parent.transform(settled)
-    outlines = []
-    for p in select_parts(ctx.parent, ctx.edge.parent):
-        top = p.surfaces.get("top")
-        if top is None:
-            continue
-        t = top.transformed(Tp)
-        if abs(float((t.origin - s.origin) @ s.normal)) > DIST_TOL \
-                or float(t.normal @ s.normal) < 0.99:
-            continue
-        xy = np.asarray(shapely.Polygon(t.polygon.exterior).exterior.coords) \
-            if isinstance(t.polygon, shapely.Polygon) else None
-        if xy is None:
-            continue
-        w = t.origin + xy[:, :1] * t.u + xy[:, 1:2] * t.v - s.origin
-        outlines.append(shapely.Polygon(np.c_[w @ s.u, w @ s.v]).buffer(-1e-3))
-    if not outlines:
-        return gap
-    outline = shapely.union_all(outlines)
-    T = child.transform(settled)
-    h, held, foot_all = np.inf, [], []
-    for p in parts:
-        for v in [pc.vertices for pc in p.piece_arrays] or [p.vertices]:
-            d = np.asarray(v, float) @ T[:3, :3].T + T[:3, 3] - s.origin
-            foot = shapely.MultiPoint(np.c_[d @ s.u, d @ s.v]).convex_hull
-            foot_all.append(foot)
-            on = foot.intersection(outline)
-            if not on.is_empty and on.area > 0:
-                h = min(h, float((d @ s.normal).min()))
-                held.append(on)
-    if not -PENETRATION_TOL <= h <= DIST_TOL:
-        return gap
-    hull = shapely.union_all(held).convex_hull
-    narrow = _short_side(shapely.union_all(foot_all).convex_hull)
-    com = T[:3, :3] @ asset_geometry(child.asset).com + T[:3, 3] - s.origin
-    if _short_side(hull) < ACROSS_SPAN * narrow \
-            or not hull.contains(shapely.Point(float(com @ s.u), float(com @ s.v))):
-        return gap
-    return h
-
-
-def _short_side(g) -> float:
-    """The short side of the minimum rotated rectangle of ``g`` (0 for a degenerate one)."""
-    r = g.minimum_rotated_rectangle
-    if r.geom_type != "Polygon":
-        return 0.0
-    xy = np.asarray(r.exterior.coords)[:3]
-    return float(min(np.linalg.norm(xy[1] - xy[0]), np.linalg.norm(xy[2] - xy[1])))
-
-
 def _in_polygon(s: Surface, p3: np.ndarray) -> bool:
     from shapely.geometry import Point
 
@@ -654,8 +589,6 @@ def _contact(ctx: CheckContext, sB: Surface) -> tuple[Check, bool]:
         # the named parts stand on pads at their ends (a chair's legs on glides): those
         # touch for them
         ends, gap = _ends(child, parts, sB, settled, gap)
-    if rel == "ON" and pobj is not None and gap < -PENETRATION_TOL:
-        gap = _over_outline(ctx, parts, sB, gap)  # feet hanging past narrow parts (a stand's arms)
     if rel == "ON" and pobj is not None and (gap < -PENETRATION_TOL
                                              or DIST_TOL < gap <= STEP + DIST_TOL):
         # resting below the surface plane, inside the parent's hollow (a plate in a plate),

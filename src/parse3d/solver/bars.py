@@ -18,7 +18,7 @@ from ..assets.model import Asset
 from .geometry import asset_geometry, rect_sides
 from .state import plane_coords
 
-__all__ = ["across_drop", "across_need", "across_opening", "held_across", "opening"]
+__all__ = ["across_need", "across_opening", "held_across", "opening"]
 
 #: Metres: the pieces of the child whose undersides lie this close to the lowest one over the
 #: support rest on it together.
@@ -26,35 +26,6 @@ BASE_TOL = 3e-3
 
 #: Metres the centre of mass keeps inside the hull of what holds the child.
 COM_MARGIN = 5e-3
-
-
-def _undersides(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s, solid):
-    """``(height above s, underside clipped to solid)`` of each convex piece of the posed
-    child whose underside meets ``solid``."""
-    n = s.normal
-    faces = []
-    for p in asset.parts:
-        pieces = [pc.vertices for pc in p.piece_arrays] or [p.vertices]
-        for v in pieces:
-            w = (np.asarray(v, float) * scale) @ R.T + t
-            h = (w - s.origin) @ n
-            lo = float(h.min())
-            under = shapely.MultiPoint(plane_coords(s, w[h <= lo + BASE_TOL])).convex_hull
-            on = under.buffer(1e-3).intersection(solid)
-            if on.is_empty or on.area <= 0:
-                continue
-            faces.append((lo, on))
-    return faces
-
-
-def across_drop(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s, solid) -> float:
-    """Metres the child posed by ``(R, t)`` may drop along ``-s.normal`` before the lowest of
-    its pieces over the parts of a spanning support (``solid``) reaches their tops; infinite
-    when none is over them. The parent's hull, probed from the child's hull corners, misses
-    parts narrower than the child's base (a keyboard across an X-stand's arms falls past them
-    onto its legs' ends); the parts' tops are the support's plane."""
-    faces = _undersides(asset, scale, R, t, s, solid)
-    return min((lo for lo, _ in faces), default=float("inf"))
 
 
 def held_across(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s, solid,
@@ -68,8 +39,21 @@ def held_across(asset: Asset, scale: float, R: np.ndarray, t: np.ndarray, s, sol
     undersides at that level, clipped to ``solid``, hold it: its centre of mass must lie
     ``COM_MARGIN`` inside their convex hull. Pieces lower than that level over a gap or past
     the parts hang there (a suitcase's wheels between straps)."""
-    faces = _undersides(asset, scale, R, t, s, solid)
-    level = min((lo for lo, _ in faces), default=np.inf)
+    n = s.normal
+    held, level = [], np.inf
+    faces = []
+    for p in asset.parts:
+        pieces = [pc.vertices for pc in p.piece_arrays] or [p.vertices]
+        for v in pieces:
+            w = (np.asarray(v, float) * scale) @ R.T + t
+            h = (w - s.origin) @ n
+            lo = float(h.min())
+            under = shapely.MultiPoint(plane_coords(s, w[h <= lo + BASE_TOL])).convex_hull
+            on = under.buffer(1e-3).intersection(solid)
+            if on.is_empty or on.area <= 0:
+                continue
+            faces.append((lo, on))
+            level = min(level, lo)
     held = [on for lo, on in faces if lo <= level + BASE_TOL]
     if not held or (rests and level > BASE_TOL):
         return False

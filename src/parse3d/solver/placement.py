@@ -17,7 +17,7 @@ from ..geometry.meshes import MeshArrays, scaled_vertices
 from ..measure.checks import EPS, STEP, world_points
 from ..pag.model import Edge
 from ..scene.model import PlacedObject, SupportChoice
-from .bars import across_drop, across_opening, held_across, opening
+from .bars import across_opening, held_across, opening
 from .choice import (
     SURFACE_AXES,
     alternative_instance,
@@ -927,9 +927,6 @@ def _onto_parent(d: _OnSupport, cand: PlacedObject, rise: float
                          st.hulls[sup.owner], parent.asset, parent.transform(), -s.normal)
     if rise and np.isfinite(dist):  # nested: rays miss curved walls touching between vertices
         dist = pieces_drop(asset, cand.transform(), parent, -s.normal, dist + 5e-3)
-    if sup.spans and not rise and d.base_solid is not None:
-        # onto the parts' tops, which rays from the hull's corners may miss (bars.py)
-        dist = min(dist, across_drop(asset, scale, Rt, t, s, d.base_solid))
     dropped = bool(np.isfinite(dist) and dist > 2 * EPS)
     if dropped and sup.owner != "room" and dist - (d.drop + d.lift + rise) > FALL_THROUGH:
         # through the named surface, far down onto another part of the owner (a keyboard
