@@ -191,6 +191,10 @@ def bar_of(st: SolveState, edge: Edge, asset: Asset, scale: float, *, after: boo
     parts = parts_for(parent.asset, ref)
     if not parts:
         return None
+    if edge.relation == "HANGING_BELOW" and ref.index is None and len(parts) > 1:
+        # a label several parts share (a range's handles: the oven door's and the drawer's
+        # below it): over the highest, which leaves the most room to hang
+        parts = sorted(parts, key=lambda p: -_top(parent, p)[0])
     top = _top(parent, parts[0])
     if edge.relation == "HANGING_BELOW":
         if surface == "bottom" and not (
