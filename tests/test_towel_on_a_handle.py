@@ -27,4 +27,6 @@ def test_a_towel_hangs_over_the_highest_handle(seed):
     assert scene.objects["towel"].support_choice.owner == "range"
     tops = {p.name: float(world_points(rng, parts=[p])[:, 2].max()) for p in handles}
     assert tops[part] >= max(tops.values()) - 1e-6, (part, tops)
+    c = next(c for c in scene.relations if c.child == "towel")
+    assert c.relaxed is not None and "hangs over range:handle" in c.relaxed["blocked"], c.relaxed
     assert not [i for i in verify_settled(scene) if i.cause == "fell"]
