@@ -182,6 +182,27 @@ def _replace(scene: Scene, ids: list[str], *, unstable: set[str], **kw) -> dict[
     return done
 
 
+def _resettle(scene: Scene) -> None:
+    """Check the relations on the poses as they are now, mark the unmet, and settle again."""
+    scene.relations = []
+    scene.relations = check_relations(scene)
+    mark_unmet(scene)
+    _settle(scene)
+
+
+def _restore(scene: Scene, oid: str, old, res) -> None:
+    """Put back ``old``, the record of ``oid`` before a repair (keeping the repairs and flags it
+    gathered since), and the support it was resolved on (``res``, None for none)."""
+    now = scene.objects[oid]
+    old.repairs, old.flags = list(now.repairs), list(now.flags)
+    scene.objects[oid] = old
+    key = _support_key(scene, oid)
+    if res is not None:  # the support it was solved on, as it was
+        scene.meta.setdefault("resolved", {})[key] = res
+    else:
+        scene.meta.get("resolved", {}).pop(key, None)
+
+
 def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                       config: SolverConfig | None = None,
                       budget: float | None = REPAIR_BUDGET) -> dict[str, int]:
@@ -255,10 +276,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
             # nothing could be placed anew: every pose is what was settled, and settling the
             # same poses again (deterministic) would give the same scene
             continue
-        scene.relations = []
-        scene.relations = check_relations(scene)
-        mark_unmet(scene)
-        _settle(scene)
+        _resettle(scene)
         still = None
     if still is None:
         still = unstable_objects(scene, relations=False)
@@ -269,18 +287,8 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
         for oid in back:
             for d in [oid, *support_descendants(scene.pag, oid)]:
                 if d in before and scene.objects[d].placed:
-                    (old, res), now = before[d], scene.objects[d]
-                    old.repairs, old.flags = list(now.repairs), list(now.flags)
-                    scene.objects[d] = old
-                    key = _support_key(scene, d)
-                    if res is not None:  # the support it was solved on, as it was
-                        scene.meta.setdefault("resolved", {})[key] = res
-                    else:
-                        scene.meta.get("resolved", {}).pop(key, None)
-        scene.relations = []
-        scene.relations = check_relations(scene)
-        mark_unmet(scene)
-        _settle(scene)
+                    _restore(scene, d, *before[d])
+        _resettle(scene)
         still = unstable_objects(scene, relations=False)
         touched.update(back)
     # a flat object that fell over onto what held it up (a plate stood on its rim, a frame with
@@ -290,14 +298,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
     if flat:
         for oid in flat:
             for d, (old, res) in rests[oid][1].items():
-                now = scene.objects[d]
-                old.repairs, old.flags = list(now.repairs), list(now.flags)
-                scene.objects[d] = old
-                key = _support_key(scene, d)
-                if res is not None:
-                    scene.meta.setdefault("resolved", {})[key] = res
-                else:
-                    scene.meta.get("resolved", {}).pop(key, None)
+                _restore(scene, d, old, res)
         keep_rest(scene, {oid: rests[oid][0] for oid in flat})
         _settle(scene)
         was, still = still, unstable_objects(scene, relations=False)
@@ -315,10 +316,7 @@ def settle_and_repair(scene: Scene, *, rounds: int = 3, library=None,
                 scene.objects[oid].repairs.append(
                     Repair(len(scene.objects[oid].repairs) + 1, still[oid], done.get(oid, "pose")))
             if done:
-                scene.relations = []
-                scene.relations = check_relations(scene)
-                mark_unmet(scene)
-                _settle(scene)
+                _resettle(scene)
                 still = unstable_objects(scene, relations=False)
             touched.update(moved)
     for oid in [o for o in scene.objects if o in still]:  # assembly order: supports first

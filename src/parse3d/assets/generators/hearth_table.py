@@ -145,7 +145,7 @@ def mantel_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     y0 = d / 2
     face = S.cylinder(rf, 0.003, center=(0, y0 + 0.0015, zf), axis=(0, 1, 0), sections=32)
     bezel = ring([(rf, 0.0), (rf + 0.006, 0.0), (rf + 0.006, 0.006), (rf, 0.006)], sections=32)
-    bezel = S.transformed(bezel, _to_front(0, y0, zf))
+    bezel = S.transformed(bezel, _turned(ABOUT_Y, (0, y0, zf)))
     parts += [make_part("face", "face", face, dial), make_part("bezel", "bezel", bezel, brass)]
     for k, (ang, ln) in enumerate(((0.6, 0.55), (2.4, 0.8))):  # hour and minute hands
         hx, hz = np.sin(ang) * rf * ln, np.cos(ang) * rf * ln
@@ -155,11 +155,17 @@ def mantel_clock(rng: np.random.Generator, variant: str) -> list[Part]:
     return parts
 
 
-def _to_front(x: float, y: float, z: float) -> np.ndarray:
-    """The transform turning a ring about +Z into one about +Y whose back face lies at ``y``."""
+#: Rotations turning a ring about +Z into one about +Y (a clock's bezel) or about +X (a log's
+#: bark).
+ABOUT_Y = np.array([[1.0, 0, 0], [0, 0, 1.0], [0, -1.0, 0]])
+ABOUT_X = np.array([[0, 0, 1.0], [0, 1.0, 0], [-1.0, 0, 0]])
+
+
+def _turned(R: np.ndarray, at) -> np.ndarray:
+    """The (4, 4) transform rotating by ``R`` and moving the origin to ``at``."""
     T = np.eye(4)
-    T[:3, :3] = np.array([[1.0, 0, 0], [0, 0, 1.0], [0, -1.0, 0]])
-    T[:3, 3] = (x, y, z)
+    T[:3, :3] = R
+    T[:3, 3] = at
     return T
 
 
@@ -176,7 +182,7 @@ def firewood(rng: np.random.Generator, variant: str) -> list[Part]:
         core = S.cylinder(r * 0.92, length, center=(0, 0, r), axis=(1, 0, 0), sections=16)
         skin = ring([(r * 0.9, -length / 2 + 0.003), (r, -length / 2 + 0.003), (r, length / 2 - 0.003),
                      (r * 0.9, length / 2 - 0.003)], sections=16)
-        skin = S.transformed(skin, _along_x(0, 0, r))
+        skin = S.transformed(skin, _turned(ABOUT_X, (0, 0, r)))
         ends = [S.cylinder(r * 0.9, 0.002, center=(sx * (length / 2 - 0.001), 0, r), axis=(1, 0, 0), sections=16)
                 for sx in (-1, 1)]
         return [make_part("body", "body", core, wood), make_part("bark", "bark", skin, bark),
@@ -192,14 +198,6 @@ def firewood(rng: np.random.Generator, variant: str) -> list[Part]:
                              for t in (t0, t1) for r0 in (r - 0.009, r)]))
             for t0, t1 in zip(a[:-1], a[1:], strict=True)]
     return [make_part("body", "body", body, wood), make_part("bark", "bark", skin, bark)]
-
-
-def _along_x(x: float, y: float, z: float) -> np.ndarray:
-    """The transform turning a ring about +Z into one about +X centred at ``(x, y, z)``."""
-    T = np.eye(4)
-    T[:3, :3] = np.array([[0, 0, 1.0], [0, 1.0, 0], [-1.0, 0, 0]])
-    T[:3, 3] = (x, y, z)
-    return T
 
 
 @register("umbrella", parts=("canopy", "shaft", "handle"), extra_parts=("tip", "strap", "runner"),
